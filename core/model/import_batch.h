@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <string>
+#include <vector>
+
+#include "model/flops_run.h"
+
+namespace bs {
+
+// Everything one file contributed. Importers build it completely before anything touches the workspace, which
+// then stores it in a single transaction: a file is imported whole or not at all.
+struct ImportBatch {
+  std::string source_path;
+  std::string format;  // importer id, e.g. "benchscope-run-v1"
+  std::vector<FlopsRun> runs;
+  std::vector<ResultSet> result_sets;
+  std::vector<std::string> warnings;  // non-fatal, each naming file and place
+  bool empty() const { return runs.empty() && result_sets.empty(); }
+};
+
+}  // namespace bs

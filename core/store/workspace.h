@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/import_batch.h"
+#include "util/cancel.h"
+
+namespace bs {
+
+class WorkspaceError : public std::runtime_error {
+ public:
+  enum class Kind { Io, NotAWorkspace, Corrupt, NewerVersion, Constraint };
+  WorkspaceError(Kind kind, std::string message) : std::runtime_error(std::move(message)), kind_(kind) {}
+  Kind kind() const noexcept { return kind_; }
+
+ private:
+  Kind kind_;
+};
+
+struct ImportRecord {
+  std::int64_t id = 0;
+  std::string path;         // as given at import time
+  std::string format;       // importer id
+  std::string imported_at;  // ISO 8601 UTC
+  std::string content_hash; // hex digest of the file bytes; the same file is not imported twice
+  std::int64_t run_count = 0;
+  std::int64_t result_set_count = 0;
+};
+
+// A device is identified by (platform, device). Its colour index is assigned once, when it first appears, so the
+// same device keeps the same colour in every view and every session.
+struct DeviceRecord {
+  std::int64_t id = 0;
+  std::string platform;
+  std::string device;
+  DeviceKind kind = DeviceKind::Other;
+  int color_index = 0;
+};
+
+struct StoredRun {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  std::int64_t device_id = 0;
+  int color_index = 0;
+  FlopsRun run;
+};
+
+struct StoredResultSet {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  std::int64_t device_id = 0;
+  int color_index = 0;
+  ResultSet set;
+};
+
+// One SQLite file holds a whole workspace: schema version + migrations, foreign keys on, WAL journal, and one
+// transaction per import so a crash or a cancel leaves either all of an import or none of it.
+class Workspace {
+ public:
+  static constexpr int kSchemaVersion = 1;
+
+  // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
+  // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
+  explicit Workspace(const std::string& path);
+  ~Workspace();
+  Workspace(Workspace&&) noexcept;
+  Workspace& operator=(Workspace&&) noexcept;
+  Workspace(const Workspace&) = delete;
+  Workspace& operator=(const Workspace&) = delete;
+
+  const std::string& path() const;
+  int schema_version() const;
+
+  // Stores everything in `batch` in one transaction and returns the new import id. `content_hash` identifies the
+  // file bytes; when an import with the same hash exists, throws WorkspaceError(Constraint) naming that import.
+  // On any error or cancellation nothing is stored.
+  std::int64_t add_import(const ImportBatch& batch, const std::string& content_hash,
+                          const CancelToken* cancel = nullptr);
+  void remove_import(std::int64_t import_id);  // removes the import and everything it brought
+
+  std::vector<ImportRecord> imports() const;
+  std::vector<DeviceRecord> devices() const;
+  std::vector<StoredRun> runs() const;  // ordered by device colour index, backend, dims, id
+  std::vector<StoredResultSet> result_sets() const;
+
+  // Writes a consistent copy (VACUUM INTO). Refuses to overwrite an existing file.
+  void save_as(const std::string& new_path) const;
+  // "ok" when PRAGMA integrity_check finds nothing, else its messages joined by newlines.
+  std::string integrity_check() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Hex digest of a file's bytes (64-bit FNV-1a, streamed), used to recognise a file imported before.
+std::string file_content_hash(const std::string& path);
+
+}  // namespace bs

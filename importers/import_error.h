@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace bs {
+
+// What kind of problem a file has; the bad-input corpus (tests/data/bad) records the expected category per file.
+enum class ImportErrorCategory {
+  Io,             // cannot open / read
+  Empty,          // zero bytes or only whitespace
+  Binary,         // NUL bytes or not text where text is required
+  Encoding,       // not UTF-8 (e.g. UTF-16)
+  UnknownFormat,  // no importer recognises the content
+  Syntax,         // malformed JSON / CSV / text, including truncation
+  MissingField,   // a required field is absent
+  WrongType,      // a field has the wrong JSON type
+  InvalidValue,   // NaN, Infinity, negative time, out-of-range number, unknown enum text
+  TooLarge,       // file or a declared size exceeds a documented limit
+  TooDeep,        // JSON nesting beyond the limit
+  Unsupported,    // a newer format version, an unsupported variant
+};
+std::string_view to_string(ImportErrorCategory category);
+
+// Where in the file the problem is. line/column are 1-based; 0 means unknown. field is a JSON pointer
+// ("/samples/3/seconds/0") or a column name, empty when not applicable.
+struct ErrorLocation {
+  std::string file;
+  std::size_t line = 0;
+  std::size_t column = 0;
+  std::string field;
+};
+
+// what() is one line: "<file>:<line>:<column>: <field>: <reason>" (parts that are unknown are left out).
+class ImportError : public std::runtime_error {
+ public:
+  ImportError(ImportErrorCategory category, ErrorLocation location, std::string reason);
+  ImportErrorCategory category() const noexcept { return category_; }
+  const ErrorLocation& location() const noexcept { return location_; }
+  const std::string& reason() const noexcept { return reason_; }
+
+ private:
+  ImportErrorCategory category_;
+  ErrorLocation location_;
+  std::string reason_;
+};
+
+}  // namespace bs

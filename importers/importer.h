@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "import_error.h"
+#include "model/import_batch.h"
+#include "util/cancel.h"
+
+namespace bs {
+
+// Documented limits that bound what an untrusted file can make us allocate or recurse into.
+struct ImportLimits {
+  std::size_t max_json_bytes = std::size_t{256} << 20;  // whole-document formats (JSON, clpeak text)
+  std::size_t max_json_depth = 64;
+  std::size_t max_samples = 10'000'000;  // total timing values in one file
+};
+
+// One file format. Importers are stateless and pure: bytes in, ImportBatch out, or an ImportError.
+class Importer {
+ public:
+  virtual ~Importer() = default;
+  // Stable id stored in the workspace, e.g. "benchscope-run-v1", "google-benchmark-json", "clpeak-text".
+  virtual std::string_view id() const = 0;
+  virtual std::string_view description() const = 0;
+  // Confidence 0..100 that `head` (the first <= 64 KiB of the file) is this format. Content decides; the
+  // extension only breaks ties.
+  virtual int sniff(std::string_view head, std::string_view path) const = 0;
+  // Parses the whole file. Throws ImportError (or Cancelled). Never returns a partial batch.
+  virtual ImportBatch parse(const std::string& path, const ImportLimits& limits,
+                            const CancelToken& cancel) const = 0;
+};
+
+// All importers BenchScope knows, in sniffing order.
+const std::vector<std::unique_ptr<Importer>>& all_importers();
+const Importer* find_importer(std::string_view id);
+
+// Reads the head of `path`, rejects empty / binary / UTF-16 input with a clear ImportError, picks the importer
+// with the highest sniff score (ties broken by order) and parses. UnknownFormat when nothing scores above 0.
+ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits = {});
+
+// Helpers shared by importers.
+std::string read_head(const std::string& path, std::size_t max_bytes = 64 * 1024);        // throws Io
+std::string read_whole_file(const std::string& path, std::size_t max_bytes);               // throws Io/TooLarge
+// Rejects empty, binary (NUL bytes) and UTF-16/32 content with the right category; strips nothing.
+void check_text(std::string_view head, const std::string& path);
+
+}  // namespace bs
