@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "model/flops_run.h"
+#include "model/power_trace.h"
 
 namespace bs {
 
@@ -14,8 +15,9 @@ struct ImportBatch {
   std::string format;  // importer id, e.g. "benchscope-run-v1"
   std::vector<FlopsRun> runs;
   std::vector<ResultSet> result_sets;
+  std::vector<PowerTrace> power_traces;
   std::vector<std::string> warnings;  // non-fatal, each naming file and place
-  bool empty() const { return runs.empty() && result_sets.empty(); }
+  bool empty() const { return runs.empty() && result_sets.empty() && power_traces.empty(); }
 };
 
 }  // namespace bs
