@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli import WORKSPACE PATH... : files are parsed completely first; by default one bad file means
+// nothing is imported, so a workspace never holds half of a batch the user asked for.
+#include <filesystem>
+#include <iostream>
+
+#include "args.h"
+#include "command.h"
+#include "importer.h"
+#include "inputs.h"
+#include "signals.h"
+#include "store/workspace.h"
+
+namespace bs::cli {
+namespace {
+
+struct Parsed {
+  std::string path;
+  ImportBatch batch;
+};
+
+std::string summary(const ImportBatch& b) {
+  std::string s = std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
+  if (!b.result_sets.empty()) s += ", " + std::to_string(b.result_sets.size()) + " result sets";
+  if (!b.power_traces.empty()) s += ", " + std::to_string(b.power_traces.size()) + " power traces";
+  return s + " (" + b.format + ")";
+}
+
+int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  const ParsedArgs args = parse_args(raw, {"--keep-going", "--quiet"}, {});
+  if (args.positional.size() < 2) throw UsageError("import needs a workspace and at least one file or folder");
+  const std::string workspace_path = args.positional[0];
+  const bool keep_going = args.has("--keep-going");
+  const bool quiet = args.has("--quiet");
+  const CancelToken& cancel = interrupt_token();
+
+  std::vector<Parsed> parsed;
+  int failures = 0;
+  const std::vector<std::string> paths(args.positional.begin() + 1, args.positional.end());
+  for (const InputFile& in : expand_inputs(paths)) {
+    try {
+      parsed.push_back({in.path, import_file(in.path, cancel)});
+      for (const auto& w : parsed.back().batch.warnings) err << "benchscope-cli: warning: " << w << '\n';
+    } catch (const ImportError& e) {
+      if (in.from_folder && skippable_in_folder(e)) {
+        if (!quiet) out << "skipped " << in.path << ": " << e.reason() << '\n';
+        continue;
+      }
+      err << "benchscope-cli: error: " << e.what() << '\n';
+      ++failures;
+    }
+  }
+  if (failures > 0 && !keep_going) {
+    err << "benchscope-cli: error: nothing imported (" << failures << (failures == 1 ? " file" : " files")
+        << " failed; --keep-going imports the others)\n";
+    return 1;
+  }
+  if (parsed.empty()) {
+    err << "benchscope-cli: error: no importable files found\n";
+    return 1;
+  }
+
+  Workspace ws(workspace_path);
+  for (const Parsed& p : parsed) {
+    try {
+      ws.add_import(p.batch, file_content_hash(p.path), &cancel);
+      if (!quiet) out << "imported " << p.path << ": " << summary(p.batch) << '\n';
+    } catch (const WorkspaceError& e) {
+      if (e.kind() != WorkspaceError::Kind::Constraint) throw;
+      if (!quiet) out << "skipped " << p.path << ": " << e.what() << '\n';
+    }
+  }
+  return failures > 0 ? 1 : 0;
+}
+
+const CommandRegistrar registrar({
+    "import",
+    "import benchmark, power and frame files or folders into a workspace",
+    "usage: benchscope-cli import WORKSPACE PATH... [--keep-going] [--quiet]\n"
+    "  Imports files (formats recognised by content) and folders (walked recursively) into WORKSPACE (an SQLite\n"
+    "  .bsw file, created when missing). Every file is parsed before anything is written; if one fails, nothing is\n"
+    "  imported unless --keep-going is given. Each file is one transaction. A file imported before is skipped.",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+      try {
+        return run_import(args, out, err);
+      } catch (const UsageError& e) {
+        err << "benchscope-cli: error: " << e.what() << "\nusage: benchscope-cli import WORKSPACE PATH...\n";
+        return 2;
+      }
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

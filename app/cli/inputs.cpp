@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "inputs.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "import_error.h"
+#include "importer.h"
+#include "store/workspace.h"
+
+namespace bs::cli {
+namespace fs = std::filesystem;
+
+std::vector<InputFile> expand_inputs(const std::vector<std::string>& paths) {
+  std::vector<InputFile> files;
+  for (const std::string& p : paths) {
+    std::error_code ec;
+    if (!fs::is_directory(p, ec)) {
+      files.push_back({p, false});
+      continue;
+    }
+    std::vector<std::string> found;
+    for (auto it = fs::recursive_directory_iterator(p, fs::directory_options::skip_permission_denied, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (!name.empty() && name[0] == '.') {
+        if (it->is_directory()) it.disable_recursion_pending();
+        continue;
+      }
+      if (it->is_regular_file()) found.push_back(it->path().string());
+    }
+    if (ec) throw ImportError(ImportErrorCategory::Io, {p, 0, 0, {}}, "cannot list folder: " + ec.message());
+    std::sort(found.begin(), found.end());
+    for (auto& f : found) files.push_back({std::move(f), true});
+  }
+  return files;
+}
+
+bool skippable_in_folder(const ImportError& e) {
+  return e.category() == ImportErrorCategory::UnknownFormat || e.category() == ImportErrorCategory::Binary;
+}
+
+bool looks_like_workspace(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  char magic[16] = {};
+  f.read(magic, sizeof magic);
+  return f.gcount() == 16 && std::string_view(magic, 16) == std::string_view("SQLite format 3\0", 16);
+}
+
+LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken& cancel) {
+  LoadedData data;
+  if (paths.size() == 1 && looks_like_workspace(paths[0])) {
+    const Workspace ws(paths[0]);
+    for (auto& r : ws.runs()) data.runs.push_back(std::move(r.run));
+    for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
+    return data;
+  }
+  for (const InputFile& in : expand_inputs(paths)) {
+    ImportBatch batch;
+    try {
+      batch = import_file(in.path, cancel);
+    } catch (const ImportError& e) {
+      // In a folder, files no importer recognises (READMEs, scripts) are not errors.
+      if (in.from_folder && skippable_in_folder(e)) continue;
+      throw;
+    }
+    std::move(batch.runs.begin(), batch.runs.end(), std::back_inserter(data.runs));
+    std::move(batch.result_sets.begin(), batch.result_sets.end(), std::back_inserter(data.result_sets));
+    std::move(batch.power_traces.begin(), batch.power_traces.end(), std::back_inserter(data.power_traces));
+  }
+  return data;
+}
+
+}  // namespace bs::cli

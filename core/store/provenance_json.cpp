@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "store/provenance_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace bs::store {
+
+using nlohmann::json;
+
+std::string provenance_to_json(const Provenance& p) {
+  return json{{"origin", std::string(to_string(p.origin))},
+              {"host", p.host},
+              {"cpu_model", p.cpu_model},
+              {"gpu_model", p.gpu_model},
+              {"os", p.os},
+              {"compiler", p.compiler},
+              {"tool", p.tool},
+              {"git_revision", p.git_revision},
+              {"date", p.date},
+              {"note", p.note},
+              {"source_file", p.source_file}}
+      .dump();
+}
+
+Provenance provenance_from_json(const std::string& text) {
+  Provenance p;
+  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return p;
+  auto get = [&](const char* key) {
+    const auto it = j.find(key);
+    return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  p.origin = data_origin_from_string(get("origin"));
+  p.host = get("host");
+  p.cpu_model = get("cpu_model");
+  p.gpu_model = get("gpu_model");
+  p.os = get("os");
+  p.compiler = get("compiler");
+  p.tool = get("tool");
+  p.git_revision = get("git_revision");
+  p.date = get("date");
+  p.note = get("note");
+  p.source_file = get("source_file");
+  return p;
+}
+
+}  // namespace bs::store

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "store/schema.h"
+
+#include <string>
+
+namespace bs::store {
+namespace {
+
+// Version 0 -> 1: imports, devices (with their stable colour), FLOPS runs and their samples, and the result sets
+// of other benchmark tools. Samples are a WITHOUT ROWID table: the key is the data, which halves its size.
+void migrate_0_to_1(const sqlite::Db& db) {
+  db.exec(R"sql(
+    CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
+    CREATE TABLE imports(
+      id INTEGER PRIMARY KEY,
+      path TEXT NOT NULL,
+      format TEXT NOT NULL,
+      imported_at TEXT NOT NULL,
+      content_hash TEXT NOT NULL UNIQUE,
+      run_count INTEGER NOT NULL,
+      result_set_count INTEGER NOT NULL);
+    CREATE TABLE devices(
+      id INTEGER PRIMARY KEY,
+      platform TEXT NOT NULL,
+      device TEXT NOT NULL,
+      kind TEXT NOT NULL,
+      color_index INTEGER NOT NULL,
+      UNIQUE(platform, device));
+    CREATE TABLE runs(
+      id INTEGER PRIMARY KEY,
+      import_id INTEGER NOT NULL REFERENCES imports(id) ON DELETE CASCADE,
+      device_id INTEGER NOT NULL REFERENCES devices(id),
+      backend TEXT NOT NULL,
+      kernel TEXT NOT NULL,
+      variant TEXT NOT NULL,
+      iterations INTEGER NOT NULL CHECK(iterations > 0),
+      dims INTEGER NOT NULL CHECK(dims > 0),
+      reported_peak_flops REAL,
+      theoretical_peak_flops REAL,
+      provenance TEXT NOT NULL);
+    CREATE INDEX runs_by_import ON runs(import_id);
+    CREATE TABLE run_samples(
+      run_id INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,
+      workers INTEGER NOT NULL,
+      repetition INTEGER NOT NULL,
+      seconds REAL NOT NULL CHECK(seconds > 0),
+      PRIMARY KEY(run_id, workers, repetition)) WITHOUT ROWID;
+    CREATE TABLE result_sets(
+      id INTEGER PRIMARY KEY,
+      import_id INTEGER NOT NULL REFERENCES imports(id) ON DELETE CASCADE,
+      device_id INTEGER NOT NULL REFERENCES devices(id),
+      backend TEXT NOT NULL,
+      source_format TEXT NOT NULL,
+      provenance TEXT NOT NULL);
+    CREATE INDEX result_sets_by_import ON result_sets(import_id);
+    CREATE TABLE measurements(
+      id INTEGER PRIMARY KEY,
+      result_set_id INTEGER NOT NULL REFERENCES result_sets(id) ON DELETE CASCADE,
+      name TEXT NOT NULL,
+      metric TEXT NOT NULL,
+      unit TEXT NOT NULL,
+      vals TEXT NOT NULL,
+      aggregates TEXT NOT NULL);
+    CREATE INDEX measurements_by_set ON measurements(result_set_id);
+  )sql");
+}
+
+using Migration = void (*)(const sqlite::Db&);
+constexpr Migration kMigrations[] = {migrate_0_to_1};
+static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
+              "one migration per schema version");
+
+}  // namespace
+
+void migrate(const sqlite::Db& db, int from_version) {
+  for (int v = from_version; v < Workspace::kSchemaVersion; ++v) {
+    kMigrations[v](db);
+    db.exec(("PRAGMA user_version = " + std::to_string(v + 1)).c_str());
+  }
+}
+
+}  // namespace bs::store

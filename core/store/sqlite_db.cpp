@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "store/sqlite_db.h"
+
+namespace bs::sqlite {
+
+Db::Db(const std::string& path, int flags) : path_(path) {
+  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
+  if (rc != SQLITE_OK) {
+    const std::string msg = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw WorkspaceError(WorkspaceError::Kind::Io, path + ": cannot open workspace: " + msg);
+  }
+  sqlite3_extended_result_codes(db_, 1);
+  sqlite3_busy_timeout(db_, 5000);
+}
+
+Db::~Db() { sqlite3_close_v2(db_); }
+
+void Db::fail(std::string_view what, WorkspaceError::Kind kind) const {
+  const int code = sqlite3_errcode(db_);
+  if (code == SQLITE_NOTADB || (code & 0xff) == SQLITE_CORRUPT) kind = WorkspaceError::Kind::Corrupt;
+  throw WorkspaceError(kind, path_ + ": " + std::string(what) + ": " + sqlite3_errmsg(db_));
+}
+
+void Db::exec(const char* sql) const {
+  char* err = nullptr;
+  if (sqlite3_exec(db_, sql, nullptr, nullptr, &err) != SQLITE_OK) {
+    const std::string msg = err ? err : "unknown error";
+    sqlite3_free(err);
+    fail(std::string("SQL failed (") + msg + ")");
+  }
+}
+
+std::int64_t Db::pragma_int(const char* pragma) const {
+  Statement st(*this, pragma);
+  return st.step() ? st.int64(0) : 0;
+}
+
+Statement::Statement(const Db& db, const char* sql) : db_(db) {
+  if (sqlite3_prepare_v2(db.get(), sql, -1, &stmt_, nullptr) != SQLITE_OK) db.fail("cannot prepare statement");
+}
+
+Statement::~Statement() { sqlite3_finalize(stmt_); }
+
+Statement& Statement::bind(int index, std::int64_t v) {
+  if (sqlite3_bind_int64(stmt_, index, v) != SQLITE_OK) db_.fail("bind failed");
+  return *this;
+}
+
+Statement& Statement::bind(int index, double v) {
+  if (sqlite3_bind_double(stmt_, index, v) != SQLITE_OK) db_.fail("bind failed");
+  return *this;
+}
+
+Statement& Statement::bind(int index, std::string_view v) {
+  if (sqlite3_bind_text(stmt_, index, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT) != SQLITE_OK)
+    db_.fail("bind failed");
+  return *this;
+}
+
+Statement& Statement::bind(int index, const std::optional<double>& v) {
+  return v ? bind(index, *v) : bind_null(index);
+}
+
+Statement& Statement::bind_null(int index) {
+  if (sqlite3_bind_null(stmt_, index) != SQLITE_OK) db_.fail("bind failed");
+  return *this;
+}
+
+bool Statement::step() {
+  const int rc = sqlite3_step(stmt_);
+  if (rc == SQLITE_ROW) return true;
+  if (rc == SQLITE_DONE) return false;
+  const bool constraint = (rc & 0xff) == SQLITE_CONSTRAINT;
+  db_.fail("statement failed", constraint ? WorkspaceError::Kind::Constraint : WorkspaceError::Kind::Io);
+}
+
+void Statement::run() {
+  while (step()) {
+  }
+  reset();
+}
+
+void Statement::reset() {
+  sqlite3_reset(stmt_);
+  sqlite3_clear_bindings(stmt_);
+}
+
+std::int64_t Statement::int64(int column) const { return sqlite3_column_int64(stmt_, column); }
+double Statement::real(int column) const { return sqlite3_column_double(stmt_, column); }
+std::optional<double> Statement::optional_real(int column) const {
+  if (sqlite3_column_type(stmt_, column) == SQLITE_NULL) return std::nullopt;
+  return real(column);
+}
+std::string Statement::text(int column) const {
+  const auto* p = reinterpret_cast<const char*>(sqlite3_column_text(stmt_, column));
+  return p ? std::string(p, static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column))) : std::string();
+}
+
+Transaction::Transaction(const Db& db) : db_(db) { db_.exec("BEGIN IMMEDIATE"); }
+
+Transaction::~Transaction() {
+  if (!done_) sqlite3_exec(db_.get(), "ROLLBACK", nullptr, nullptr, nullptr);
+}
+
+void Transaction::commit() {
+  db_.exec("COMMIT");
+  done_ = true;
+}
+
+}  // namespace bs::sqlite

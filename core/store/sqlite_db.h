@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Thin RAII over the SQLite C API: errors become WorkspaceError with SQLite's message and the file path.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <sqlite3.h>
+
+#include "store/workspace.h"
+
+namespace bs::sqlite {
+
+class Db {
+ public:
+  Db(const std::string& path, int flags);
+  ~Db();
+  Db(const Db&) = delete;
+  Db& operator=(const Db&) = delete;
+  sqlite3* get() const { return db_; }
+  const std::string& path() const { return path_; }
+  void exec(const char* sql) const;
+  std::int64_t pragma_int(const char* pragma) const;  // "PRAGMA user_version" -> its value
+  [[noreturn]] void fail(std::string_view what, WorkspaceError::Kind kind = WorkspaceError::Kind::Io) const;
+
+ private:
+  sqlite3* db_ = nullptr;
+  std::string path_;
+};
+
+class Statement {
+ public:
+  Statement(const Db& db, const char* sql);
+  ~Statement();
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  Statement& bind(int index, std::int64_t v);
+  Statement& bind(int index, int v) { return bind(index, static_cast<std::int64_t>(v)); }
+  Statement& bind(int index, double v);
+  Statement& bind(int index, std::string_view v);
+  Statement& bind(int index, const std::optional<double>& v);
+  Statement& bind_null(int index);
+
+  bool step();        // true while a row is available
+  void run();         // step to completion, then reset for reuse
+  void reset();
+  std::int64_t int64(int column) const;
+  double real(int column) const;
+  std::optional<double> optional_real(int column) const;
+  std::string text(int column) const;
+
+ private:
+  const Db& db_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+// BEGIN IMMEDIATE ... COMMIT; rolls back in the destructor unless commit() ran (exception or cancel).
+class Transaction {
+ public:
+  explicit Transaction(const Db& db);
+  ~Transaction();
+  void commit();
+
+ private:
+  const Db& db_;
+  bool done_ = false;
+};
+
+}  // namespace bs::sqlite

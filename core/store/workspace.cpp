@@ -1,0 +1,354 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "store/workspace.h"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "store/provenance_json.h"
+#include "store/schema.h"
+#include "store/sqlite_db.h"
+
+namespace bs {
+
+using sqlite::Db;
+using sqlite::Statement;
+using sqlite::Transaction;
+
+namespace {
+
+std::string utc_now_iso() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+// Reject what is not an SQLite file before SQLite touches it, so opening never alters a foreign file.
+void check_sqlite_header(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw WorkspaceError(WorkspaceError::Kind::Io, path + ": cannot open workspace");
+  char magic[16] = {};
+  f.read(magic, sizeof magic);
+  if (f.gcount() == 0) return;  // an empty file becomes a new workspace
+  if (f.gcount() < 16 || std::string_view(magic, 16) != std::string_view("SQLite format 3\0", 16))
+    throw WorkspaceError(WorkspaceError::Kind::NotAWorkspace,
+                         path + ": is not a BenchScope workspace (not an SQLite database)");
+}
+
+constexpr int kCancelCheckRows = 1000;
+
+}  // namespace
+
+struct Workspace::Impl {
+  explicit Impl(const std::string& p) : path(p), db(p, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE) {}
+  std::string path;
+  Db db;
+  int version = 0;
+};
+
+Workspace::Workspace(const std::string& path) {
+  std::error_code ec;
+  const bool existed = std::filesystem::exists(path, ec) && std::filesystem::file_size(path, ec) > 0;
+  if (existed) check_sqlite_header(path);
+  impl_ = std::make_unique<Impl>(path);
+  const Db& db = impl_->db;
+  std::int64_t app_id = 0;
+  std::int64_t version = 0;
+  try {
+    app_id = db.pragma_int("PRAGMA application_id");
+    version = db.pragma_int("PRAGMA user_version");
+  } catch (const WorkspaceError& e) {
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt, path + ": workspace is damaged and cannot be read (" +
+                                                            std::string(e.what()) + ")");
+  }
+  if (existed && app_id != store::kApplicationId)
+    throw WorkspaceError(WorkspaceError::Kind::NotAWorkspace,
+                         path + ": is an SQLite database but not a BenchScope workspace");
+  if (version > kSchemaVersion)
+    throw WorkspaceError(WorkspaceError::Kind::NewerVersion,
+                         path + ": was written by a newer BenchScope (schema " + std::to_string(version) +
+                             ", this build reads up to " + std::to_string(kSchemaVersion) + ")");
+  db.exec("PRAGMA foreign_keys = ON");
+  db.exec("PRAGMA journal_mode = WAL");
+  db.exec("PRAGMA synchronous = NORMAL");
+  if (version < kSchemaVersion) {
+    Transaction tx(db);
+    if (!existed) {
+      db.exec(("PRAGMA application_id = " + std::to_string(store::kApplicationId)).c_str());
+    }
+    store::migrate(db, static_cast<int>(version));
+    Statement meta(db, "INSERT OR REPLACE INTO meta(key, value) VALUES (?, ?)");
+    if (!existed) {
+      meta.bind(1, std::string_view("created_at")).bind(2, std::string_view(utc_now_iso())).run();
+      meta.bind(1, std::string_view("created_by")).bind(2, std::string_view("benchscope " BENCHSCOPE_VERSION)).run();
+    }
+    meta.bind(1, std::string_view("schema_version")).bind(2, std::string_view(std::to_string(kSchemaVersion))).run();
+    tx.commit();
+  }
+  impl_->version = kSchemaVersion;
+}
+
+Workspace::~Workspace() = default;
+Workspace::Workspace(Workspace&&) noexcept = default;
+Workspace& Workspace::operator=(Workspace&&) noexcept = default;
+
+const std::string& Workspace::path() const { return impl_->path; }
+int Workspace::schema_version() const { return impl_->version; }
+
+namespace {
+
+struct DeviceIds {
+  const Db& db;
+  Statement find{db, "SELECT id, kind FROM devices WHERE platform = ? AND device = ?"};
+  Statement insert{db,
+                   "INSERT INTO devices(platform, device, kind, color_index) "
+                   "VALUES (?, ?, ?, (SELECT COUNT(*) FROM devices))"};
+  Statement update_kind{db, "UPDATE devices SET kind = ? WHERE id = ?"};
+
+  std::int64_t get(const std::string& platform, const std::string& device, DeviceKind kind) {
+    find.bind(1, std::string_view(platform)).bind(2, std::string_view(device));
+    if (find.step()) {
+      const std::int64_t id = find.int64(0);
+      const bool unknown_kind = find.text(1) == "other";
+      find.reset();
+      if (unknown_kind && kind != DeviceKind::Other) update_kind.bind(1, to_string(kind)).bind(2, id).run();
+      return id;
+    }
+    find.reset();
+    insert.bind(1, std::string_view(platform)).bind(2, std::string_view(device)).bind(3, to_string(kind)).run();
+    return sqlite3_last_insert_rowid(db.get());
+  }
+};
+
+}  // namespace
+
+std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& content_hash,
+                                   const CancelToken* cancel) {
+  const Db& db = impl_->db;
+  {
+    Statement dup(db, "SELECT path, imported_at FROM imports WHERE content_hash = ?");
+    dup.bind(1, std::string_view(content_hash));
+    if (dup.step())
+      throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                           "already imported from " + dup.text(0) + " on " + dup.text(1));
+  }
+  Transaction tx(db);
+  Statement imp(db,
+                "INSERT INTO imports(path, format, imported_at, content_hash, run_count, result_set_count) "
+                "VALUES (?, ?, ?, ?, ?, ?)");
+  imp.bind(1, std::string_view(batch.source_path))
+      .bind(2, std::string_view(batch.format))
+      .bind(3, std::string_view(utc_now_iso()))
+      .bind(4, std::string_view(content_hash))
+      .bind(5, static_cast<std::int64_t>(batch.runs.size()))
+      .bind(6, static_cast<std::int64_t>(batch.result_sets.size()))
+      .run();
+  const std::int64_t import_id = sqlite3_last_insert_rowid(db.get());
+
+  DeviceIds devices{db};
+  Statement run_st(db,
+                   "INSERT INTO runs(import_id, device_id, backend, kernel, variant, iterations, dims, "
+                   "reported_peak_flops, theoretical_peak_flops, provenance) VALUES (?,?,?,?,?,?,?,?,?,?)");
+  Statement sample_st(db, "INSERT INTO run_samples(run_id, workers, repetition, seconds) VALUES (?,?,?,?)");
+  int rows = 0;
+  auto poll = [&] {
+    if (cancel && ++rows % kCancelCheckRows == 0) cancel->throw_if_cancelled();
+  };
+  for (const FlopsRun& run : batch.runs) {
+    run_st.bind(1, import_id)
+        .bind(2, devices.get(run.platform, run.device, run.device_kind))
+        .bind(3, std::string_view(run.backend))
+        .bind(4, std::string_view(run.kernel))
+        .bind(5, std::string_view(run.variant))
+        .bind(6, run.iterations)
+        .bind(7, run.dims)
+        .bind(8, run.reported_peak_flops)
+        .bind(9, run.theoretical_peak_flops)
+        .bind(10, std::string_view(store::provenance_to_json(run.provenance)))
+        .run();
+    const std::int64_t run_id = sqlite3_last_insert_rowid(db.get());
+    for (const WorkerSample& s : run.samples)
+      for (std::size_t k = 0; k < s.seconds.size(); ++k) {
+        sample_st.bind(1, run_id).bind(2, s.workers).bind(3, static_cast<std::int64_t>(k)).bind(4, s.seconds[k]).run();
+        poll();
+      }
+  }
+  Statement set_st(db,
+                   "INSERT INTO result_sets(import_id, device_id, backend, source_format, provenance) "
+                   "VALUES (?,?,?,?,?)");
+  Statement m_st(db,
+                 "INSERT INTO measurements(result_set_id, name, metric, unit, vals, aggregates) VALUES (?,?,?,?,?,?)");
+  for (const ResultSet& set : batch.result_sets) {
+    set_st.bind(1, import_id)
+        .bind(2, devices.get(set.platform, set.device, set.device_kind))
+        .bind(3, std::string_view(set.backend))
+        .bind(4, std::string_view(set.source_format))
+        .bind(5, std::string_view(store::provenance_to_json(set.provenance)))
+        .run();
+    const std::int64_t set_id = sqlite3_last_insert_rowid(db.get());
+    for (const Measurement& m : set.measurements) {
+      nlohmann::json aggregates = nlohmann::json::array();
+      for (const auto& [name, value] : m.reported_aggregates) aggregates.push_back({name, value});
+      m_st.bind(1, set_id)
+          .bind(2, std::string_view(m.name))
+          .bind(3, std::string_view(m.metric))
+          .bind(4, std::string_view(m.unit))
+          .bind(5, std::string_view(nlohmann::json(m.values).dump()))
+          .bind(6, std::string_view(aggregates.dump()))
+          .run();
+      poll();
+    }
+  }
+  if (cancel) cancel->throw_if_cancelled();
+  tx.commit();
+  return import_id;
+}
+
+void Workspace::remove_import(std::int64_t import_id) {
+  Transaction tx(impl_->db);
+  Statement(impl_->db, "DELETE FROM imports WHERE id = ?").bind(1, import_id).run();
+  tx.commit();
+}
+
+std::vector<ImportRecord> Workspace::imports() const {
+  std::vector<ImportRecord> out;
+  Statement st(impl_->db,
+               "SELECT id, path, format, imported_at, content_hash, run_count, result_set_count FROM imports ORDER BY id");
+  while (st.step())
+    out.push_back({st.int64(0), st.text(1), st.text(2), st.text(3), st.text(4), st.int64(5), st.int64(6)});
+  return out;
+}
+
+std::vector<DeviceRecord> Workspace::devices() const {
+  std::vector<DeviceRecord> out;
+  Statement st(impl_->db, "SELECT id, platform, device, kind, color_index FROM devices ORDER BY color_index");
+  while (st.step())
+    out.push_back({st.int64(0), st.text(1), st.text(2), device_kind_from_string(st.text(3)),
+                   static_cast<int>(st.int64(4))});
+  return out;
+}
+
+std::vector<StoredRun> Workspace::runs() const {
+  std::vector<StoredRun> out;
+  std::map<std::int64_t, std::size_t> index;
+  Statement st(impl_->db,
+               "SELECT r.id, r.import_id, r.device_id, d.color_index, d.platform, d.device, d.kind, r.backend, "
+               "r.kernel, r.variant, r.iterations, r.dims, r.reported_peak_flops, r.theoretical_peak_flops, "
+               "r.provenance FROM runs r JOIN devices d ON d.id = r.device_id "
+               "ORDER BY d.color_index, r.backend, r.dims, r.id");
+  while (st.step()) {
+    StoredRun s;
+    s.id = st.int64(0);
+    s.import_id = st.int64(1);
+    s.device_id = st.int64(2);
+    s.color_index = static_cast<int>(st.int64(3));
+    s.run.platform = st.text(4);
+    s.run.device = st.text(5);
+    s.run.device_kind = device_kind_from_string(st.text(6));
+    s.run.backend = st.text(7);
+    s.run.kernel = st.text(8);
+    s.run.variant = st.text(9);
+    s.run.iterations = st.int64(10);
+    s.run.dims = static_cast<int>(st.int64(11));
+    s.run.reported_peak_flops = st.optional_real(12);
+    s.run.theoretical_peak_flops = st.optional_real(13);
+    s.run.provenance = store::provenance_from_json(st.text(14));
+    index[s.id] = out.size();
+    out.push_back(std::move(s));
+  }
+  Statement samples(impl_->db, "SELECT run_id, workers, seconds FROM run_samples ORDER BY run_id, workers, repetition");
+  while (samples.step()) {
+    const auto it = index.find(samples.int64(0));
+    if (it == index.end()) continue;
+    auto& list = out[it->second].run.samples;
+    const std::int64_t workers = samples.int64(1);
+    if (list.empty() || list.back().workers != workers) list.push_back({workers, {}});
+    list.back().seconds.push_back(samples.real(2));
+  }
+  return out;
+}
+
+std::vector<StoredResultSet> Workspace::result_sets() const {
+  std::vector<StoredResultSet> out;
+  std::map<std::int64_t, std::size_t> index;
+  Statement st(impl_->db,
+               "SELECT s.id, s.import_id, s.device_id, d.color_index, d.platform, d.device, d.kind, s.backend, "
+               "s.source_format, s.provenance FROM result_sets s JOIN devices d ON d.id = s.device_id "
+               "ORDER BY d.color_index, s.id");
+  while (st.step()) {
+    StoredResultSet s;
+    s.id = st.int64(0);
+    s.import_id = st.int64(1);
+    s.device_id = st.int64(2);
+    s.color_index = static_cast<int>(st.int64(3));
+    s.set.platform = st.text(4);
+    s.set.device = st.text(5);
+    s.set.device_kind = device_kind_from_string(st.text(6));
+    s.set.backend = st.text(7);
+    s.set.source_format = st.text(8);
+    s.set.provenance = store::provenance_from_json(st.text(9));
+    index[s.id] = out.size();
+    out.push_back(std::move(s));
+  }
+  Statement m(impl_->db,
+              "SELECT result_set_id, name, metric, unit, vals, aggregates FROM measurements ORDER BY result_set_id, id");
+  while (m.step()) {
+    const auto it = index.find(m.int64(0));
+    if (it == index.end()) continue;
+    Measurement meas{m.text(1), m.text(2), m.text(3), {}, {}};
+    const auto vals = nlohmann::json::parse(m.text(4), nullptr, false);
+    if (vals.is_array())
+      for (const auto& v : vals)
+        if (v.is_number()) meas.values.push_back(v.get<double>());
+    const auto aggs = nlohmann::json::parse(m.text(5), nullptr, false);
+    if (aggs.is_array())
+      for (const auto& a : aggs)
+        if (a.is_array() && a.size() == 2 && a[0].is_string() && a[1].is_number())
+          meas.reported_aggregates.emplace_back(a[0].get<std::string>(), a[1].get<double>());
+    out[it->second].set.measurements.push_back(std::move(meas));
+  }
+  return out;
+}
+
+void Workspace::save_as(const std::string& new_path) const {
+  std::error_code ec;
+  if (std::filesystem::exists(new_path, ec))
+    throw WorkspaceError(WorkspaceError::Kind::Io, new_path + ": already exists; choose another name");
+  Statement st(impl_->db, "VACUUM INTO ?");
+  st.bind(1, std::string_view(new_path));
+  st.run();
+}
+
+std::string Workspace::integrity_check() const {
+  Statement st(impl_->db, "PRAGMA integrity_check");
+  std::string result;
+  while (st.step()) result += (result.empty() ? "" : "\n") + st.text(0);
+  return result;
+}
+
+std::string file_content_hash(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error(path + ": cannot read file to hash it");
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  char buf[1 << 16];
+  while (f.read(buf, sizeof buf) || f.gcount() > 0) {
+    for (std::streamsize i = 0; i < f.gcount(); ++i) {
+      h ^= static_cast<unsigned char>(buf[i]);
+      h *= 1099511628211ull;
+    }
+    if (!f) break;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+}  // namespace bs
