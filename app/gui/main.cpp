@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope [WORKSPACE.bsw | FILE/FOLDER...] [--screenshot DIR]
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include "flops_plot.h"
+#include "main_window.h"
+#include "peak_table.h"
+#include "workspace_tree.h"
+
+int main(int argc, char** argv) {
+  // VTK views render through QOpenGLWidget: the default format must be set before QApplication exists.
+  QSurfaceFormat fmt;
+  fmt.setRenderableType(QSurfaceFormat::OpenGL);
+  fmt.setVersion(3, 2);
+  fmt.setProfile(QSurfaceFormat::CoreProfile);
+  fmt.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
+  fmt.setRedBufferSize(8);
+  fmt.setGreenBufferSize(8);
+  fmt.setBlueBufferSize(8);
+  fmt.setAlphaBufferSize(8);
+  fmt.setDepthBufferSize(24);
+  QSurfaceFormat::setDefaultFormat(fmt);
+
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("BenchScope");
+  QApplication::setOrganizationName("BenchScope");
+  QApplication::setApplicationVersion(BENCHSCOPE_VERSION);
+
+  QCommandLineParser cli;
+  cli.setApplicationDescription("BenchScope: compare robot computing platforms");
+  cli.addHelpOption();
+  cli.addVersionOption();
+  cli.addPositionalArgument("paths", "A workspace (.bsw) to open, or files/folders to import into a new one.");
+  QCommandLineOption shot("screenshot", "Save PNG screenshots of the window and views into DIR, then quit.", "DIR");
+  cli.addOption(shot);
+  cli.process(app);
+
+  bs::ui::MainWindow window;
+  const QStringList paths = cli.positionalArguments();
+  if (paths.size() == 1 && paths[0].endsWith(".bsw")) {
+    window.open_workspace(paths[0]);
+  } else if (!paths.isEmpty()) {
+    window.import_paths_now(paths);
+  } else {
+    window.new_untitled_workspace();
+  }
+  window.show();
+
+  if (cli.isSet(shot)) {
+    const QString dir = cli.value(shot);
+    QDir().mkpath(dir);
+    QTimer::singleShot(500, &window, [&window, dir] {
+      window.grab().save(dir + "/main-window.png");
+      window.flops_plot()->grab().save(dir + "/flops-plot.png");
+      window.peak_table()->grab().save(dir + "/peak-table.png");
+      window.tree()->grab().save(dir + "/workspace-tree.png");
+      QApplication::quit();
+    });
+  }
+  return app.exec();
+}

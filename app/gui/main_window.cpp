@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "main_window.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+#include <qcustomplot.h>
+
+#include "analysis/flops.h"
+#include "flops_plot.h"
+#include "import_controller.h"
+#include "peak_table.h"
+#include "recent_files.h"
+#include "workspace_tree.h"
+
+namespace bs::ui {
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      tree_(new WorkspaceTree(this)),
+      plot_(new FlopsPlot(this)),
+      peaks_(new PeakTableView(this)),
+      importer_(new ImportController(this)) {
+  setAcceptDrops(true);
+  setCentralWidget(plot_);
+  auto* tree_dock = new QDockWidget(tr("Workspace"), this);
+  tree_dock->setObjectName("workspaceDock");
+  tree_dock->setWidget(tree_);
+  addDockWidget(Qt::LeftDockWidgetArea, tree_dock);
+  auto* peak_dock = new QDockWidget(tr("Peak FLOPS"), this);
+  peak_dock->setObjectName("peakDock");
+  peak_dock->setWidget(peaks_);
+  addDockWidget(Qt::BottomDockWidgetArea, peak_dock);
+  resizeDocks({tree_dock}, {330}, Qt::Horizontal);
+  resizeDocks({peak_dock}, {260}, Qt::Vertical);
+  create_actions();
+  connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);
+  connect(importer_, &ImportController::finished, this, [this](const ImportReport& r) {
+    reload();
+    show_import_report(r);
+  });
+  resize(1400, 900);
+  update_title();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::create_actions() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  auto add = [this](QMenu* menu, const QString& text, const QKeySequence& key, const QString& tip, auto slot) {
+    QAction* a = menu->addAction(text, this, slot);
+    a->setShortcut(key);
+    a->setStatusTip(tip);
+    a->setToolTip(tip);
+    return a;
+  };
+  add(file, tr("&New workspace"), QKeySequence::New, tr("Start an empty, untitled workspace"),
+      [this] { new_untitled_workspace(); });
+  add(file, tr("&Open workspace…"), QKeySequence::Open, tr("Open a BenchScope workspace (.bsw)"), [this] {
+    const QString p = QFileDialog::getOpenFileName(this, tr("Open workspace"), {}, tr("BenchScope workspace (*.bsw);;All files (*)"));
+    if (!p.isEmpty()) open_workspace(p);
+  });
+  recent_ = new RecentFiles(file->addMenu(tr("Open &recent")), this);
+  connect(recent_, &RecentFiles::open_requested, this, [this](const QString& p) { open_workspace(p); });
+  add(file, tr("Save workspace &as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+      tr("Write a copy of the workspace under a new name and continue there"), [this] { save_as(); });
+  file->addSeparator();
+  add(file, tr("&Import files…"), QKeySequence(Qt::CTRL | Qt::Key_I),
+      tr("Import run JSON, Google Benchmark JSON or clpeak output (formats are recognised by content)"), [this] {
+        const QStringList files = QFileDialog::getOpenFileNames(this, tr("Import files"));
+        if (!files.isEmpty()) import_paths(files);
+      });
+  add(file, tr("Import &folder…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I),
+      tr("Import every recognised file in a folder and its subfolders"), [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Import folder"));
+        if (!dir.isEmpty()) import_paths({dir});
+      });
+  file->addSeparator();
+  add(file, tr("&Quit"), QKeySequence::Quit, tr("Quit BenchScope"), [this] { close(); });
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  QAction* log_x = add(view, tr("Log &worker axis"), QKeySequence(Qt::CTRL | Qt::Key_L), tr("Logarithmic worker axis"),
+                       [this](bool on) { plot_->set_log_x(on); });
+  log_x->setCheckable(true);
+  log_x->setChecked(plot_->log_x());
+  QAction* log_y = add(view, tr("Log &FLOPS axis"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+                       tr("Logarithmic FLOPS axis"), [this](bool on) { plot_->set_log_y(on); });
+  log_y->setCheckable(true);
+  log_y->setChecked(plot_->log_y());
+  add(view, tr("&Reset zoom"), QKeySequence(Qt::CTRL | Qt::Key_0), tr("Fit all visible series"), [this] { plot_->reset_view(); });
+  view->addSeparator();
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  add(help, tr("&About BenchScope"), QKeySequence(), tr("Version and licence"), [this] {
+    QMessageBox::about(this, tr("About BenchScope"),
+                       tr("<h3>BenchScope %1</h3><p>Which computer should this robot carry? FLOPS, power and vision "
+                          "benchmarks compared, after Biddulph et al. 2018.</p><p>Licence: GPL-3.0-or-later.</p>"
+                          "<p>Qt %2 · QCustomPlot %3 · OpenCV %4</p>")
+                           .arg(BENCHSCOPE_VERSION, qVersion(), QCUSTOMPLOT_VERSION_STR, CV_VERSION_TEXT));
+  });
+}
+
+bool MainWindow::open_workspace(const QString& path) {
+  try {
+    auto ws = std::make_unique<Workspace>(path.toStdString());
+    workspace_ = std::move(ws);
+  } catch (const WorkspaceError& e) {
+    QMessageBox::critical(this, tr("Cannot open workspace"), QString::fromUtf8(e.what()));
+    return false;
+  }
+  if (!untitled_dir_ || !path.startsWith(untitled_dir_->path())) {
+    untitled_dir_.reset();
+    recent_->add(path);
+  }
+  reload();
+  return true;
+}
+
+void MainWindow::new_untitled_workspace() {
+  auto dir = std::make_unique<QTemporaryDir>();
+  const QString path = dir->filePath("untitled.bsw");
+  untitled_dir_ = std::move(dir);
+  open_workspace(path);
+}
+
+void MainWindow::import_paths(const QStringList& paths) {
+  if (!workspace_) new_untitled_workspace();
+  importer_->start(QString::fromStdString(workspace_->path()), paths);
+}
+
+void MainWindow::import_paths_now(const QStringList& paths) {
+  if (!workspace_) new_untitled_workspace();
+  const ImportReport report = ImportController::import_now(QString::fromStdString(workspace_->path()), paths, CancelToken{});
+  reload();
+  if (!report.failures.isEmpty()) show_import_report(report);
+}
+
+void MainWindow::show_import_report(const ImportReport& r) {
+  statusBar()->showMessage(tr("Imported %n file(s)", nullptr, r.imported) +
+                               (r.skipped.isEmpty() ? QString() : tr(", skipped %n", nullptr, static_cast<int>(r.skipped.size()))) +
+                               (r.failures.isEmpty() ? QString() : tr(", %n failed", nullptr, static_cast<int>(r.failures.size()))) +
+                               (r.cancelled ? tr(" (cancelled)") : QString()),
+                           10000);
+  if (r.failures.isEmpty()) return;
+  QMessageBox box(QMessageBox::Warning, tr("Import problems"),
+                  tr("%n file(s) could not be imported; nothing of them was stored.", nullptr,
+                     static_cast<int>(r.failures.size())),
+                  QMessageBox::Ok, this);
+  box.setDetailedText(r.failures.join('\n') + (r.skipped.isEmpty() ? "" : "\n\nSkipped:\n" + r.skipped.join('\n')));
+  box.exec();
+}
+
+void MainWindow::reload() {
+  runs_ = workspace_ ? workspace_->runs() : std::vector<StoredRun>{};
+  tree_->set_runs(runs_);
+  refresh_views();
+  update_title();
+}
+
+void MainWindow::refresh_views() {
+  const QSet<qint64> visible = tree_->visible_runs();
+  std::vector<const StoredRun*> shown;
+  std::vector<FlopsRun> peak_input;
+  std::vector<int> colors;
+  for (const StoredRun& r : runs_) {
+    if (!visible.contains(r.id)) continue;
+    shown.push_back(&r);
+    peak_input.push_back(r.run);
+    colors.push_back(r.color_index);
+  }
+  plot_->set_runs(shown);
+  peaks_->peak_model()->set_rows(bs::peak_table(peak_input), colors);
+  statusBar()->showMessage(tr("%1 — %2 of %3 runs shown")
+                               .arg(workspace_ ? QString::fromStdString(workspace_->path()) : tr("no workspace"))
+                               .arg(shown.size())
+                               .arg(runs_.size()));
+}
+
+void MainWindow::save_as() {
+  if (!workspace_) return;
+  QString path = QFileDialog::getSaveFileName(this, tr("Save workspace as"), {}, tr("BenchScope workspace (*.bsw)"));
+  if (path.isEmpty()) return;
+  if (!path.endsWith(".bsw")) path += ".bsw";
+  try {
+    workspace_->save_as(path.toStdString());
+  } catch (const WorkspaceError& e) {
+    QMessageBox::critical(this, tr("Cannot save workspace"), QString::fromUtf8(e.what()));
+    return;
+  }
+  open_workspace(path);
+}
+
+void MainWindow::update_title() {
+  const QString name = !workspace_ ? tr("no workspace")
+                       : untitled_dir_ ? tr("untitled")
+                                       : QFileInfo(QString::fromStdString(workspace_->path())).fileName();
+  setWindowTitle(tr("BenchScope — %1").arg(name));
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  QStringList paths;
+  for (const QUrl& url : event->mimeData()->urls())
+    if (url.isLocalFile()) paths << url.toLocalFile();
+  if (paths.size() == 1 && paths[0].endsWith(".bsw")) {
+    open_workspace(paths[0]);
+  } else if (!paths.isEmpty()) {
+    import_paths(paths);
+  }
+  event->acceptProposedAction();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (importer_->busy()) {
+    QMessageBox::information(this, tr("Import running"), tr("Cancel the running import before quitting."));
+    event->ignore();
+    return;
+  }
+  event->accept();
+}
+
+}  // namespace bs::ui

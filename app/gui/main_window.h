@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QMainWindow>
+#include <QTemporaryDir>
+#include <memory>
+
+#include "store/workspace.h"
+
+namespace bs::ui {
+class WorkspaceTree;
+class FlopsPlot;
+class PeakTableView;
+class ImportController;
+class RecentFiles;
+struct ImportReport;
+
+// The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
+// workspace and wires actions to the views; the views compute nothing themselves.
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  bool open_workspace(const QString& path);  // shows a dialog and returns false on error
+  void new_untitled_workspace();
+  // Imports synchronously (GUI command line, tests); the menu and drag-and-drop use the background controller.
+  void import_paths_now(const QStringList& paths);
+  void import_paths(const QStringList& paths);
+
+  WorkspaceTree* tree() const { return tree_; }
+  FlopsPlot* flops_plot() const { return plot_; }
+  PeakTableView* peak_table() const { return peaks_; }
+  const Workspace* workspace() const { return workspace_.get(); }
+
+ protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void create_actions();
+  void reload();
+  void refresh_views();
+  void show_import_report(const ImportReport& report);
+  void save_as();
+  void update_title();
+
+  std::unique_ptr<Workspace> workspace_;
+  std::vector<StoredRun> runs_;
+  std::unique_ptr<QTemporaryDir> untitled_dir_;  // holds an untitled workspace until "Save As"
+  WorkspaceTree* tree_;
+  FlopsPlot* plot_;
+  PeakTableView* peaks_;
+  ImportController* importer_;
+  RecentFiles* recent_ = nullptr;
+};
+
+}  // namespace bs::ui

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "device_palette.h"
+
+#include <array>
+
+#include <qcustomplot.h>
+
+namespace bs::ui {
+
+QColor device_color(int color_index) {
+  // Okabe & Ito (2008) without black (kept for text) and with its yellow moved back (too light on white for
+  // thin lines), then Tol's muted scheme.
+  static const std::array<QColor, 15> colors = {
+      QColor(0, 114, 178),   QColor(230, 159, 0),  QColor(0, 158, 115),  QColor(213, 94, 0),
+      QColor(204, 121, 167), QColor(86, 180, 233), QColor(51, 34, 136),  QColor(153, 153, 51),
+      QColor(68, 170, 153),  QColor(240, 228, 66), QColor(17, 119, 51),  QColor(136, 204, 238),
+      QColor(204, 102, 119), QColor(136, 34, 85),  QColor(170, 68, 153)};
+  const int n = static_cast<int>(colors.size());
+  return colors[static_cast<std::size_t>(((color_index % n) + n) % n)];
+}
+
+Qt::PenStyle dims_pen_style(int dims) {
+  switch (dims) {
+    case 1: return Qt::DotLine;
+    case 2: return Qt::DashLine;
+    case 4: return Qt::SolidLine;
+    default: return Qt::DashDotLine;
+  }
+}
+
+int backend_marker_shape(const QString& backend) {
+  const QString b = backend.toLower();
+  if (b.contains("cuda")) return QCPScatterStyle::ssTriangle;
+  if (b.contains("opencl")) return QCPScatterStyle::ssDiamond;
+  if (b.contains("cpu")) return QCPScatterStyle::ssSquare;
+  return QCPScatterStyle::ssCircle;
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QWidget>
+#include <vector>
+
+#include "store/workspace.h"
+
+class QCustomPlot;
+class QCPGraph;
+class QCheckBox;
+
+namespace bs::ui {
+
+// FLOPS against workers for the visible runs: colour per device, line style per D, mean ± SD band where runs
+// are repeated, a marker at each series' peak, log/linear axes, zoom/pan and a hover read-out.
+class FlopsPlot : public QWidget {
+  Q_OBJECT
+ public:
+  explicit FlopsPlot(QWidget* parent = nullptr);
+  void set_runs(const std::vector<const StoredRun*>& runs);
+  void set_log_x(bool on);
+  void set_log_y(bool on);
+  bool log_x() const;
+  bool log_y() const;
+  void reset_view();
+
+  QCustomPlot* plot() const { return plot_; }
+  int series_count() const { return static_cast<int>(series_.size()); }
+  QString value_axis_label() const;
+  // The hover text for the data point nearest to a pixel position (empty when none is close).
+  QString read_out_at(const QPointF& pixel) const;
+
+ private:
+  struct Series {
+    QCPGraph* graph;
+    const StoredRun* run;
+  };
+  void rebuild();
+  void on_mouse_move(QMouseEvent* event);
+
+  QCustomPlot* plot_;
+  QCheckBox* log_x_box_;
+  QCheckBox* log_y_box_;
+  std::vector<const StoredRun*> runs_;
+  std::vector<Series> series_;
+  double scale_ = 1;  // FLOPS per displayed unit (1e12 when the axis reads TFLOPS)
+};
+
+}  // namespace bs::ui

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QObject>
+#include <QStringList>
+#include <memory>
+
+#include "util/cancel.h"
+
+class QWidget;
+
+namespace bs::ui {
+
+// What an import of several files did, for the status bar and the error dialog.
+struct ImportReport {
+  int imported = 0;
+  QStringList skipped;   // "file: reason" (already imported, not a data file)
+  QStringList failures;  // one line per failed file: the importer's "file:line: field: reason"
+  bool cancelled = false;
+};
+
+// Imports files and folders into a workspace file off the GUI thread, with a progress dialog and Cancel. The
+// worker opens its own connection to the workspace (SQLite in WAL mode allows a reader beside the writer), so the
+// GUI's connection is never used from two threads. Each file is one transaction.
+class ImportController : public QObject {
+  Q_OBJECT
+ public:
+  explicit ImportController(QWidget* parent_window);
+  bool busy() const { return running_; }
+  // Starts importing; finished() is emitted on the GUI thread when done.
+  void start(const QString& workspace_path, const QStringList& paths);
+  // Synchronous variant for tests and the command line of the GUI.
+  static ImportReport import_now(const QString& workspace_path, const QStringList& paths, const CancelToken& cancel,
+                                 const std::function<void(int, int, const QString&)>& progress = {});
+
+ signals:
+  void finished(const bs::ui::ImportReport& report);
+
+ private:
+  QWidget* window_;
+  bool running_ = false;
+};
+
+}  // namespace bs::ui

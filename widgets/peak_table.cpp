@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "peak_table.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QSortFilterProxyModel>
+
+#include "analysis/units.h"
+#include "device_palette.h"
+
+namespace bs::ui {
+
+void PeakTableModel::set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices) {
+  beginResetModel();
+  rows_ = std::move(rows);
+  colors_ = std::move(color_indices);
+  colors_.resize(rows_.size(), 0);
+  endResetModel();
+}
+
+int PeakTableModel::rowCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : static_cast<int>(rows_.size());
+}
+
+int PeakTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+
+QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
+  if (!index.isValid()) return {};
+  const PeakRow& r = rows_[static_cast<std::size_t>(index.row())];
+  const auto qs = [](const std::string& s) { return QString::fromStdString(s); };
+  if (role == Qt::DisplayRole) {
+    switch (index.column()) {
+      case Device: return qs(r.device);
+      case Backend: return r.variant == "paper" ? qs(r.backend) : qs(r.backend + " (" + r.variant + ")");
+      case Dims: return r.dims;
+      case Peak: {
+        QString s = qs(format_si(r.peak.flops, "FLOPS"));
+        if (r.peak.at_peak.n > 1) s += QStringLiteral(" ± ") + qs(format_si(r.peak.at_peak.sd, "FLOPS"));
+        return s;
+      }
+      case Workers: return QLocale().toString(static_cast<qlonglong>(r.peak.workers));
+      case Reported: return r.reported_flops ? qs(format_si(*r.reported_flops, "FLOPS")) : QStringLiteral("–");
+      case Ratio: return r.ratio_to_reported ? QStringLiteral("%1×").arg(*r.ratio_to_reported, 0, 'f', 2) : QStringLiteral("–");
+      case OfTheoretical:
+        return r.fraction_of_theoretical ? QStringLiteral("%1 %").arg(*r.fraction_of_theoretical * 100, 0, 'f', 1)
+                                         : QStringLiteral("–");
+      case Origin: return QString::fromUtf8(to_string(r.origin).data());
+    }
+  }
+  if (role == kSortRole) {
+    switch (index.column()) {
+      case Dims: return r.dims;
+      case Peak: return r.peak.flops;
+      case Workers: return static_cast<qlonglong>(r.peak.workers);
+      case Reported: return r.reported_flops.value_or(-1);
+      case Ratio: return r.ratio_to_reported.value_or(-1);
+      case OfTheoretical: return r.fraction_of_theoretical.value_or(-1);
+      default: return data(index, Qt::DisplayRole);
+    }
+  }
+  if (role == Qt::DecorationRole && index.column() == Device) return device_color(colors_[static_cast<std::size_t>(index.row())]);
+  if (role == Qt::TextAlignmentRole && index.column() >= Dims && index.column() <= OfTheoretical)
+    return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+  if (role == Qt::ToolTipRole) {
+    return QStringLiteral("%1 on %2\nPeak %3 at %L4 workers (n = %5)\nSource: %6")
+        .arg(qs(r.device), qs(r.platform), qs(format_si(r.peak.flops, "FLOPS", 4)))
+        .arg(static_cast<qlonglong>(r.peak.workers))
+        .arg(r.peak.at_peak.n)
+        .arg(qs(r.source_file));
+  }
+  return {};
+}
+
+QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+  if (orientation != Qt::Horizontal) return {};
+  static const char* names[] = {"Device", "Backend", "D", "Peak", "Workers at peak", "Reported", "Ratio",
+                                "% of theoretical", "Origin"};
+  static const char* tips[] = {"Compute device (colour as in every plot)",
+                               "API the kernel ran through",
+                               "2D points rotated per worker",
+                               "Highest mean FLOPS = 6·D·N·W / t",
+                               "Worker count where the peak occurred",
+                               "Vendor or literature peak figure",
+                               "Measured peak ÷ reported figure",
+                               "Measured peak ÷ this kernel's theoretical peak on the device",
+                               "measured on a machine, or reconstructed from published figures"};
+  if (role == Qt::DisplayRole) return tr(names[section]);
+  if (role == Qt::ToolTipRole) return tr(tips[section]);
+  return {};
+}
+
+PeakTableView::PeakTableView(QWidget* parent) : QTableView(parent), model_(new PeakTableModel(this)) {
+  auto* proxy = new QSortFilterProxyModel(this);
+  proxy->setSourceModel(model_);
+  proxy->setSortRole(PeakTableModel::kSortRole);
+  setModel(proxy);
+  setSortingEnabled(true);
+  sortByColumn(-1, Qt::AscendingOrder);
+  setSelectionBehavior(QAbstractItemView::SelectRows);
+  setAlternatingRowColors(true);
+  verticalHeader()->hide();
+  horizontalHeader()->setStretchLastSection(true);
+  horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  setWordWrap(false);
+}
+
+QString PeakTableView::selection_as_tsv() const {
+  QStringList lines;
+  QStringList header;
+  for (int c = 0; c < model()->columnCount(); ++c) header << model()->headerData(c, Qt::Horizontal).toString();
+  lines << header.join('\t');
+  const auto rows = selectionModel()->selectedRows();
+  for (const QModelIndex& idx : rows) {
+    QStringList cells;
+    for (int c = 0; c < model()->columnCount(); ++c) cells << model()->index(idx.row(), c).data().toString();
+    lines << cells.join('\t');
+  }
+  return lines.join('\n');
+}
+
+void PeakTableView::keyPressEvent(QKeyEvent* event) {
+  if (event->matches(QKeySequence::Copy)) {
+    QApplication::clipboard()->setText(selection_as_tsv());
+    return;
+  }
+  QTableView::keyPressEvent(event);
+}
+
+}  // namespace bs::ui

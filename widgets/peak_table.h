@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QAbstractTableModel>
+#include <QTableView>
+
+#include "analysis/flops.h"
+
+namespace bs::ui {
+
+// Rows of bs::peak_table() (paper Tables 1 and 2 plus ratios), with a numeric sort role per column.
+class PeakTableModel : public QAbstractTableModel {
+  Q_OBJECT
+ public:
+  enum Column { Device, Backend, Dims, Peak, Workers, Reported, Ratio, OfTheoretical, Origin, ColumnCount };
+  static constexpr int kSortRole = Qt::UserRole + 1;
+
+  using QAbstractTableModel::QAbstractTableModel;
+  // `color_indices` parallels `rows`: the device colour of each row.
+  void set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices);
+  const PeakRow& row_at(int row) const { return rows_[static_cast<std::size_t>(row)]; }
+
+  int rowCount(const QModelIndex& parent = {}) const override;
+  int columnCount(const QModelIndex& parent = {}) const override;
+  QVariant data(const QModelIndex& index, int role) const override;
+  QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+
+ private:
+  std::vector<PeakRow> rows_;
+  std::vector<int> colors_;
+};
+
+// Sortable view of the peak table; Ctrl+C copies the selection as tab-separated text.
+class PeakTableView : public QTableView {
+  Q_OBJECT
+ public:
+  explicit PeakTableView(QWidget* parent = nullptr);
+  PeakTableModel* peak_model() const { return model_; }
+  QString selection_as_tsv() const;
+
+ protected:
+  void keyPressEvent(QKeyEvent* event) override;
+
+ private:
+  PeakTableModel* model_;
+};
+
+}  // namespace bs::ui

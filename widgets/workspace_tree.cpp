@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "workspace_tree.h"
+
+#include <QHeaderView>
+#include <QPainter>
+#include <QPixmap>
+
+#include "device_palette.h"
+
+namespace bs::ui {
+namespace {
+
+constexpr int kRunIdRole = Qt::UserRole + 1;
+
+QIcon swatch(const QColor& color) {
+  QPixmap pm(12, 12);
+  pm.fill(Qt::transparent);
+  QPainter p(&pm);
+  p.setPen(color.darker(140));
+  p.setBrush(color);
+  p.drawRoundedRect(QRectF(0.5, 0.5, 11, 11), 2, 2);
+  return QIcon(pm);
+}
+
+QString provenance_tooltip(const FlopsRun& run) {
+  const Provenance& p = run.provenance;
+  QStringList lines;
+  lines << QStringLiteral("<b>%1</b> — %2, D = %3, N = %L4")
+               .arg(QString::fromStdString(run.device).toHtmlEscaped(),
+                    QString::fromStdString(run.backend).toHtmlEscaped())
+               .arg(run.dims)
+               .arg(run.iterations);
+  lines << QStringLiteral("Origin: <b>%1</b>").arg(QString::fromUtf8(to_string(p.origin).data()));
+  auto add = [&](const char* label, const std::string& v) {
+    if (!v.empty()) lines << QStringLiteral("%1: %2").arg(label, QString::fromStdString(v).toHtmlEscaped());
+  };
+  add("Host", p.host);
+  add("CPU", p.cpu_model);
+  add("GPU", p.gpu_model);
+  add("Compiler", p.compiler);
+  add("Tool", p.tool);
+  add("Date", p.date);
+  add("File", p.source_file);
+  add("Note", p.note);
+  return QStringLiteral("<p style='white-space:pre-wrap; width:420px'>%1</p>").arg(lines.join("<br>"));
+}
+
+QStandardItem* child_named(QStandardItem* parent, const QString& text) {
+  for (int r = 0; r < parent->rowCount(); ++r)
+    if (parent->child(r)->text() == text) return parent->child(r);
+  auto* item = new QStandardItem(text);
+  item->setCheckable(true);
+  item->setAutoTristate(true);
+  item->setCheckState(Qt::Checked);
+  item->setEditable(false);
+  parent->appendRow(item);
+  return item;
+}
+
+}  // namespace
+
+WorkspaceTree::WorkspaceTree(QWidget* parent) : QTreeView(parent) {
+  setModel(&model_);
+  setHeaderHidden(true);
+  setUniformRowHeights(true);
+  setToolTip(tr("Tick runs to show them in the plot and the peak table"));
+  connect(&model_, &QStandardItemModel::itemChanged, this, &WorkspaceTree::on_item_changed);
+}
+
+void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
+  updating_ = true;
+  model_.clear();
+  QStandardItem* root = model_.invisibleRootItem();
+  for (const StoredRun& s : runs) {
+    const FlopsRun& r = s.run;
+    QStandardItem* platform = child_named(root, QString::fromStdString(r.platform));
+    QStandardItem* device = child_named(platform, QString::fromStdString(r.device));
+    device->setIcon(swatch(device_color(s.color_index)));
+    QStandardItem* backend = child_named(device, QString::fromStdString(r.backend));
+    auto* item = new QStandardItem(QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")
+                                       .arg(r.dims)
+                                       .arg(QString::fromStdString(r.variant))
+                                       .arg(r.iterations)
+                                       .arg(r.samples.size()));
+    item->setData(QVariant::fromValue<qint64>(s.id), kRunIdRole);
+    item->setCheckable(true);
+    item->setEditable(false);
+    item->setCheckState(hidden_.contains(s.id) ? Qt::Unchecked : Qt::Checked);
+    item->setToolTip(provenance_tooltip(r));
+    backend->appendRow(item);
+  }
+  // Parent check states follow their children (autoTristate only updates on user changes).
+  std::function<Qt::CheckState(QStandardItem*)> sync = [&](QStandardItem* it) -> Qt::CheckState {
+    if (!it->hasChildren()) return it->checkState();
+    int checked = 0, unchecked = 0;
+    for (int r = 0; r < it->rowCount(); ++r) {
+      const auto st = sync(it->child(r));
+      if (st == Qt::Checked) ++checked;
+      else if (st == Qt::Unchecked) ++unchecked;
+    }
+    const auto st = checked == it->rowCount() ? Qt::Checked : unchecked == it->rowCount() ? Qt::Unchecked
+                                                                                          : Qt::PartiallyChecked;
+    if (it != model_.invisibleRootItem()) it->setCheckState(st);
+    return st;
+  };
+  sync(root);
+  updating_ = false;
+  expandToDepth(1);
+}
+
+void WorkspaceTree::on_item_changed(QStandardItem* item) {
+  if (updating_) return;
+  updating_ = true;
+  // Propagate a parent's state to its subtree, then recompute the ancestors.
+  std::function<void(QStandardItem*, Qt::CheckState)> down = [&](QStandardItem* it, Qt::CheckState st) {
+    for (int r = 0; r < it->rowCount(); ++r) {
+      it->child(r)->setCheckState(st);
+      down(it->child(r), st);
+    }
+  };
+  if (item->checkState() != Qt::PartiallyChecked) down(item, item->checkState());
+  for (QStandardItem* p = item->parent(); p; p = p->parent()) {
+    int checked = 0, unchecked = 0;
+    for (int r = 0; r < p->rowCount(); ++r) {
+      if (p->child(r)->checkState() == Qt::Checked) ++checked;
+      else if (p->child(r)->checkState() == Qt::Unchecked) ++unchecked;
+    }
+    p->setCheckState(checked == p->rowCount() ? Qt::Checked : unchecked == p->rowCount() ? Qt::Unchecked
+                                                                                          : Qt::PartiallyChecked);
+  }
+  updating_ = false;
+  // Remember hidden runs so a reload (after an import) keeps the user's choice.
+  QSet<qint64> visible = visible_runs();
+  std::function<void(QStandardItem*)> note_hidden = [&](QStandardItem* it) {
+    const QVariant id = it->data(kRunIdRole);
+    if (id.isValid()) {
+      if (visible.contains(id.toLongLong())) hidden_.remove(id.toLongLong());
+      else hidden_.insert(id.toLongLong());
+    }
+    for (int r = 0; r < it->rowCount(); ++r) note_hidden(it->child(r));
+  };
+  note_hidden(model_.invisibleRootItem());
+  emit visibility_changed();
+}
+
+void WorkspaceTree::collect(const QStandardItem* item, QSet<qint64>& out) const {
+  const QVariant id = item->data(kRunIdRole);
+  if (id.isValid() && item->checkState() == Qt::Checked) out.insert(id.toLongLong());
+  for (int r = 0; r < item->rowCount(); ++r) collect(item->child(r), out);
+}
+
+QSet<qint64> WorkspaceTree::visible_runs() const {
+  QSet<qint64> out;
+  collect(model_.invisibleRootItem(), out);
+  return out;
+}
+
+QStandardItem* WorkspaceTree::find_run(QStandardItem* parent, qint64 run_id) const {
+  for (int r = 0; r < parent->rowCount(); ++r) {
+    QStandardItem* c = parent->child(r);
+    if (c->data(kRunIdRole).isValid() && c->data(kRunIdRole).toLongLong() == run_id) return c;
+    if (QStandardItem* found = find_run(c, run_id)) return found;
+  }
+  return nullptr;
+}
+
+void WorkspaceTree::set_run_visible(qint64 run_id, bool visible) {
+  if (QStandardItem* item = find_run(model_.invisibleRootItem(), run_id))
+    item->setCheckState(visible ? Qt::Checked : Qt::Unchecked);
+}
+
+int WorkspaceTree::run_count() const {
+  int n = 0;
+  std::function<void(const QStandardItem*)> count = [&](const QStandardItem* it) {
+    if (it->data(kRunIdRole).isValid()) ++n;
+    for (int r = 0; r < it->rowCount(); ++r) count(it->child(r));
+  };
+  count(model_.invisibleRootItem());
+  return n;
+}
+
+}  // namespace bs::ui
