@@ -57,7 +57,7 @@ int ClpeakTextImporter::sniff(std::string_view head, std::string_view) const {
   const bool device = head.find("Device: ") != std::string_view::npos;
   const bool sections = head.find("(GFLOPS)") != std::string_view::npos || head.find("(GBPS)") != std::string_view::npos;
   if (platform && device && sections) return 90;
-  if (platform && device) return 50;
+  if (platform && (device || sections)) return 50;
   return 0;
 }
 

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest>
+
+namespace {
+
+const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
+const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
+
+struct Result {
+  int code;
+  QByteArray out, err;
+};
+
+Result cli(const QStringList& args) {
+  QProcess p;
+  p.start(kCli, args);
+  p.waitForFinished(120000);
+  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
+}
+
+QByteArray bytes_of(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// Finds the peak row for (device, backend, dims); fails the test when absent.
+QJsonObject row(const QJsonArray& rows, const QString& device, const QString& backend, int dims) {
+  for (const auto& v : rows) {
+    const QJsonObject o = v.toObject();
+    if (o["device"].toString() == device && o["backend"].toString() == backend && o["dims"].toInt() == dims) return o;
+  }
+  return {};
+}
+
+double rounded(double v, double unit) { return std::round(v / unit * 100.0) / 100.0; }
+
+}  // namespace
+
+class TestCli : public QObject {
+  Q_OBJECT
+ private slots:
+  void version_help_and_unknown() {
+    QCOMPARE(cli({"--version"}).code, 0);
+    QVERIFY(cli({"--version"}).out.startsWith("benchscope-cli "));
+    const Result help = cli({"help"});
+    QCOMPARE(help.code, 0);
+    QVERIFY(help.out.contains("import") && help.out.contains("peaks"));
+    QCOMPARE(cli({"help", "peaks"}).code, 0);
+    QCOMPARE(cli({"frobnicate"}).code, 2);
+    QCOMPARE(cli({}).code, 2);
+    QCOMPARE(cli({"peaks", "--no-such-option", kPaper}).code, 2);
+  }
+
+  void peaks_reproduce_tables_1_and_2_data() {
+    QTest::addColumn<bool>("via_workspace");
+    QTest::newRow("files") << false;
+    QTest::newRow("workspace") << true;
+  }
+  void peaks_reproduce_tables_1_and_2() {
+    QFETCH(bool, via_workspace);
+    QTemporaryDir dir;
+    QString source = kPaper;
+    if (via_workspace) {
+      source = dir.filePath("paper.bsw");
+      QCOMPARE(cli({"import", source, kPaper, "--quiet"}).code, 0);
+    }
+    const Result r = cli({"peaks", source, "--json"});
+    QCOMPARE(r.code, 0);
+    const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(doc["format"].toString(), QString("benchscope-peaks"));
+    QCOMPARE(doc["version"].toInt(), 1);
+    const QJsonArray rows = doc["rows"].toArray();
+    const double T = 1e12, G = 1e9;
+    struct Expect {
+      const char* device;
+      const char* backend;
+      int dims;
+      double peak, unit;
+      double reported;  // 0: none
+    };
+    // Table 1 (TFLOPS: OpenCL / CUDA / reported) and Table 2 (GFLOPS).
+    const Expect table[] = {
+        {"GTX1080Ti", "OpenCL", 4, 9.14, T, 10.61},
+        {"GTX1080Ti", "CUDA", 4, 9.34, T, 10.61},
+        {"NUC GPU (Iris Plus 650)", "OpenCL", 4, 5.25, T, 0.88},
+        {"Intel HD Graphics 630", "OpenCL", 4, 2.40, T, 0.44},
+        {"Jetson GPU (Pascal, 256 cores)", "CUDA", 4, 0.49, T, 0.75},
+        {"i7-7800X", "CPU SIMD (AVX/SSE)", 4, 49.68, G, 0},
+        {"i7-7920HQ", "CPU SIMD (AVX/SSE)", 4, 29.33, G, 0},
+        {"NUC CPU (i7-7567U)", "CPU SIMD (AVX/SSE)", 4, 15.54, G, 0},
+        {"Jetson CPU (ARM A57 + Denver2)", "CPU SIMD (NEON)", 4, 4.69, G, 0},
+    };
+    for (const Expect& e : table) {
+      const QJsonObject o = row(rows, e.device, e.backend, e.dims);
+      QVERIFY2(!o.isEmpty(), e.device);
+      QCOMPARE(rounded(o["peak_flops"].toDouble(), e.unit), e.peak);
+      QCOMPARE(o["origin"].toString(), QString("reconstructed"));
+      if (e.reported > 0) {
+        QCOMPARE(rounded(o["reported_flops"].toDouble(), e.unit), e.reported);
+        QVERIFY(std::abs(o["ratio_to_reported"].toDouble() - o["peak_flops"].toDouble() / (e.reported * e.unit)) < 1e-9);
+      } else {
+        QVERIFY(o["reported_flops"].isNull());
+      }
+    }
+    // Figure 1b's extra curves: D = 1, 2 for the NUC and Jetson GPUs.
+    QCOMPARE(rows.size(), 13);
+    QVERIFY(!row(rows, "NUC GPU (Iris Plus 650)", "OpenCL", 1).isEmpty());
+    QVERIFY(!row(rows, "Jetson GPU (Pascal, 256 cores)", "CUDA", 2).isEmpty());
+    // The human table shows the same numbers with units.
+    const Result human = cli({"peaks", source});
+    QVERIFY(human.out.contains("9.34 TFLOPS") && human.out.contains("15.54 GFLOPS") && human.out.contains("5.97x"));
+  }
+
+  void bad_files_fail_cleanly_and_leave_the_workspace_unchanged_data() {
+    QTest::addColumn<QByteArray>("content");
+    QTest::newRow("empty") << QByteArray();
+    QTest::newRow("truncated") << QByteArray("{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": [{\"platform\"");
+    QTest::newRow("nan") << QByteArray(
+        "{\"format\":\"benchscope-run\",\"version\":1,\"runs\":[{\"platform\":\"p\",\"device\":\"d\",\"backend\":\"b\","
+        "\"params\":{\"iterations\":1,\"dims\":1},\"samples\":[{\"workers\":1,\"seconds\":[NaN]}]}]}");
+    QTest::newRow("wrong types") << QByteArray(
+        "{\"format\":\"benchscope-run\",\"version\":1,\"runs\":[{\"platform\":\"p\",\"device\":\"d\",\"backend\":\"b\","
+        "\"params\":{\"iterations\":\"many\",\"dims\":1},\"samples\":[{\"workers\":1,\"seconds\":[1]}]}]}");
+    QByteArray binary;
+    for (int i = 0; i < 1000; ++i) binary.append(static_cast<char>(i * 7));
+    QTest::newRow("binary") << binary;
+  }
+  void bad_files_fail_cleanly_and_leave_the_workspace_unchanged() {
+    QFETCH(QByteArray, content);
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("bad-input.json");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(content);
+    f.close();
+    // A workspace that does not exist must still not exist afterwards.
+    const QString fresh = dir.filePath("fresh.bsw");
+    Result r = cli({"import", fresh, bad});
+    QCOMPARE(r.code, 1);
+    QVERIFY(!QFile::exists(fresh));
+    const QList<QByteArray> lines = r.err.trimmed().split('\n');
+    QVERIFY2(lines[0].contains("bad-input.json"), r.err.constData());
+    QVERIFY(lines[0].startsWith("benchscope-cli: error: "));
+    // An existing workspace keeps its bytes.
+    const QString ws = dir.filePath("existing.bsw");
+    QCOMPARE(cli({"import", ws, kPaper + "/cpu.json", "--quiet"}).code, 0);
+    const QByteArray before = bytes_of(ws);
+    r = cli({"import", ws, bad});
+    QCOMPARE(r.code, 1);
+    QCOMPARE(bytes_of(ws), before);
+  }
+
+  void folder_duplicates_and_keep_going() {
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("w.bsw");
+    Result r = cli({"import", ws, kPaper});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.out.count("imported "), 5);
+    QVERIFY(r.out.contains("skipped") && r.out.contains("README.md"));  // not a data file
+    r = cli({"import", ws, kPaper + "/cpu.json"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("already imported"));
+    QFile bad(dir.filePath("bad.json"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("{\"format\": \"benchscope-run\"");
+    bad.close();
+    QFile::copy(BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/gtx1080ti.txt", dir.filePath("clpeak.txt"));
+    r = cli({"import", ws, dir.filePath("bad.json"), dir.filePath("clpeak.txt")});
+    QCOMPARE(r.code, 1);
+    QVERIFY(!r.out.contains("imported"));  // all or nothing by default
+    r = cli({"import", ws, dir.filePath("bad.json"), dir.filePath("clpeak.txt"), "--keep-going"});
+    QCOMPARE(r.code, 1);
+    QVERIFY(r.out.contains("imported") && r.out.contains("clpeak.txt"));
+    const QJsonObject doc = QJsonDocument::fromJson(cli({"peaks", ws, "--json"}).out).object();
+    QCOMPARE(doc["throughput"].toArray().size(), 2);  // GTX 1080 Ti and PoCL from clpeak
+    QCOMPARE(doc["rows"].toArray().size(), 13);
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Opens the paper's sample data in the main window, offscreen, as a user would, and checks what is plotted.
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include "flops_plot.h"
+#include "main_window.h"
+#include "peak_table.h"
+#include "workspace_tree.h"
+
+class TestMainWindow : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_main_window");
+  }
+
+  void opens_sample_data_and_plots_every_run() {
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("paper.bsw");
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(ws));
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+
+    QCOMPARE(w.tree()->run_count(), 13);
+    QCOMPARE(w.flops_plot()->series_count(), 13);
+    QCOMPARE(w.flops_plot()->plot()->legend->itemCount(), 13);  // bands and peak markers stay out of the legend
+    QCOMPARE(w.flops_plot()->value_axis_label(), QString("Performance (TFLOPS)"));
+    QCOMPARE(w.peak_table()->model()->rowCount(), 13);
+    bool found = false;
+    for (int r = 0; r < w.peak_table()->model()->rowCount(); ++r)
+      found = found || w.peak_table()->model()->index(r, bs::ui::PeakTableModel::Peak).data().toString() == "9.34 TFLOPS";
+    QVERIFY(found);
+
+    // Hiding a run removes its series and its table row.
+    const qint64 first = *w.tree()->visible_runs().begin();
+    w.tree()->set_run_visible(first, false);
+    QCOMPARE(w.flops_plot()->series_count(), 12);
+    QCOMPARE(w.peak_table()->model()->rowCount(), 12);
+    w.tree()->set_run_visible(first, true);
+    QCOMPARE(w.flops_plot()->series_count(), 13);
+
+    // Axis toggles switch the ticker.
+    w.flops_plot()->set_log_y(false);
+    QCOMPARE(w.flops_plot()->plot()->yAxis->scaleType(), QCPAxis::stLinear);
+    QVERIFY(w.flops_plot()->plot()->yAxis->ticker().dynamicCast<QCPAxisTickerLog>().isNull());
+    w.flops_plot()->set_log_y(true);
+    QVERIFY(!w.flops_plot()->plot()->yAxis->ticker().dynamicCast<QCPAxisTickerLog>().isNull());
+  }
+
+  void hover_reads_out_the_nearest_point() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/gpu-hd630.json"});
+    w.resize(1200, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QCustomPlot* plot = w.flops_plot()->plot();
+    plot->replot();
+    const QCPGraph* g = plot->graph(0);
+    const auto it = g->data()->findBegin(100000);
+    const QPointF pixel(plot->xAxis->coordToPixel(it->key), plot->yAxis->coordToPixel(it->value));
+    const QString text = w.flops_plot()->read_out_at(pixel);
+    QVERIFY2(text.contains("Intel HD Graphics 630") && text.contains("TFLOPS") && text.contains("n = 1"), qPrintable(text));
+    QVERIFY(w.flops_plot()->read_out_at(QPointF(-500, -500)).isEmpty());
+  }
+
+  void bad_workspace_gives_an_error_not_a_crash() {
+    QTemporaryDir dir;
+    QFile f(dir.filePath("not.bsw"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("plain text");
+    f.close();
+    bs::ui::MainWindow w;
+    QTimer::singleShot(0, [] {
+      for (QWidget* top : QApplication::topLevelWidgets())
+        if (auto* box = qobject_cast<QMessageBox*>(top)) box->accept();
+    });
+    QVERIFY(!w.open_workspace(dir.filePath("not.bsw")));
+  }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"
