@@ -334,21 +334,38 @@ std::string Workspace::integrity_check() const {
   return result;
 }
 
+namespace {
+
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;  // FNV-1a, 64 bit
+
+std::uint64_t fnv1a(std::uint64_t h, const char* data, std::size_t size) {
+  for (std::size_t i = 0; i < size; ++i) {
+    h ^= static_cast<unsigned char>(data[i]);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string hex(std::uint64_t h) {
+  char out[17];
+  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+  return out;
+}
+
+}  // namespace
+
+std::string content_hash(std::string_view bytes) { return hex(fnv1a(kFnvOffset, bytes.data(), bytes.size())); }
+
 std::string file_content_hash(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   if (!f) throw std::runtime_error(path + ": cannot read file to hash it");
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  std::uint64_t h = kFnvOffset;
   char buf[1 << 16];
   while (f.read(buf, sizeof buf) || f.gcount() > 0) {
-    for (std::streamsize i = 0; i < f.gcount(); ++i) {
-      h ^= static_cast<unsigned char>(buf[i]);
-      h *= 1099511628211ull;
-    }
+    h = fnv1a(h, buf, static_cast<std::size_t>(f.gcount()));
     if (!f) break;
   }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  return hex;
+  return hex(h);
 }
 
 }  // namespace bs

@@ -99,5 +99,7 @@ class Workspace {
 
 // Hex digest of a file's bytes (64-bit FNV-1a, streamed), used to recognise a file imported before.
 std::string file_content_hash(const std::string& path);
+// The same digest of bytes in memory (for results produced in-process, e.g. a kernel sweep).
+std::string content_hash(std::string_view bytes);
 
 }  // namespace bs

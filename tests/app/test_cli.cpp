@@ -153,6 +153,24 @@ class TestCli : public QObject {
     QCOMPARE(bytes_of(ws), before);
   }
 
+  void run_flops_writes_a_measured_run() {
+    QTemporaryDir dir;
+    const QString json = dir.filePath("run.json"), ws = dir.filePath("w.bsw");
+    const Result r = cli({"run", "flops", "--workers", "1,4,16", "--points", "1,4", "--iterations", "500",
+                          "--repeats", "2", "--out", json, "--workspace", ws, "--quiet"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("D = 4: peak") && r.out.contains("% of"));
+    const QJsonArray rows = QJsonDocument::fromJson(cli({"peaks", json, "--json"}).out).object()["rows"].toArray();
+    QCOMPARE(rows.size(), 2);
+    QCOMPARE(rows[0].toObject()["origin"].toString(), QString("measured"));
+    QCOMPARE(rows[0].toObject()["n"].toInt(), 2);
+    QVERIFY(rows[0].toObject()["fraction_of_theoretical"].toDouble() > 0);
+    QCOMPARE(QJsonDocument::fromJson(cli({"peaks", ws, "--json"}).out).object()["rows"].toArray().size(), 2);
+    QCOMPARE(cli({"run", "flops", "--workers", "10:1:1"}).code, 2);
+    QCOMPARE(cli({"run", "flops", "--backend", "fpga"}).code, 2);
+    QCOMPARE(cli({"devices", "--json"}).code, 0);
+  }
+
   void folder_duplicates_and_keep_going() {
     QTemporaryDir dir;
     const QString ws = dir.filePath("w.bsw");

@@ -69,6 +69,28 @@ class TestMainWindow : public QObject {
     QVERIFY(w.flops_plot()->read_out_at(QPointF(-500, -500)).isEmpty());
   }
 
+  void repeated_runs_get_an_error_band() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
+    w.import_paths_now({BENCHSCOPE_TEST_DATA_DIR "/importers/run-json/two-runs.json"});
+    // Run 1 has 3 and 2 repetitions per point: upper + lower band graphs, the series, its peak marker.
+    // Run 2 has one repetition: the series and its peak marker only.
+    QCOMPARE(w.flops_plot()->series_count(), 2);
+    QCOMPARE(w.flops_plot()->plot()->graphCount(), 6);
+    int filled = 0;
+    for (int i = 0; i < w.flops_plot()->plot()->graphCount(); ++i)
+      filled += w.flops_plot()->plot()->graph(i)->channelFillGraph() != nullptr;
+    QCOMPARE(filled, 1);
+  }
+
+  void no_qt5_library_is_loaded() {
+    // OpenCV's highgui or Debian's VTK Qt modules would pull Qt 5 in beside Qt 6.
+    QFile maps("/proc/self/maps");
+    QVERIFY(maps.open(QIODevice::ReadOnly));
+    QVERIFY(!maps.readAll().contains("libQt5"));
+  }
+
   void bad_workspace_gives_an_error_not_a_crash() {
     QTemporaryDir dir;
     QFile f(dir.filePath("not.bsw"));

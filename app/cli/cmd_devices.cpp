@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli devices: every backend/device the kernels can run on, with its theoretical peak.
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/units.h"
+#include "args.h"
+#include "command.h"
+#include "kernels/backend.h"
+
+namespace bs::cli {
+namespace {
+
+int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
+  const ParsedArgs args = parse_args(raw, {"--json"}, {});
+  const kernels::CpuInfo cpu = kernels::detect_cpu();
+  const auto backends = kernels::cpu_backends(cpu);
+  if (args.has("--json")) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& b : backends) {
+      nlohmann::json variants = nlohmann::json::array();
+      for (auto v : b.variants) variants.push_back(kernels::variant_name(v));
+      list.push_back({{"backend", b.id}, {"label", b.label}, {"device", b.device_name},
+                      {"kind", std::string(to_string(b.kind))}, {"variants", variants},
+                      {"theoretical_peak_flops", b.theoretical_peak_flops}, {"details", b.details}});
+    }
+    out << nlohmann::json{{"format", "benchscope-devices"}, {"version", 1}, {"devices", list}}.dump(2) << '\n';
+    return 0;
+  }
+  for (const auto& b : backends)
+    out << b.id << ": " << b.label << " on " << b.device_name << "\n    " << b.details << "\n    theoretical peak "
+        << format_si(b.theoretical_peak_flops, "FLOPS") << "\n";
+  return 0;
+}
+
+const CommandRegistrar registrar({
+    "devices",
+    "list the backends and devices the kernels can run on, with theoretical peaks",
+    "usage: benchscope-cli devices [--json]",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+      try {
+        return run_devices(args, out);
+      } catch (const UsageError& e) {
+        err << "benchscope-cli: error: " << e.what() << '\n';
+        return 2;
+      }
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

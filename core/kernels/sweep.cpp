@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "kernels/sweep.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace bs::kernels {
+
+SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpec& spec, const CancelToken& cancel,
+                      const ProgressFn& progress, const std::function<void(const FlopsRun&)>& on_point) {
+  if (spec.workers.empty() || spec.dims.empty() || spec.repeats < 1 || spec.iterations < 1)
+    throw std::invalid_argument("a sweep needs workers, D values, N >= 1 and repeats >= 1");
+  SweepResult result;
+  const double total = static_cast<double>(spec.workers.size() * spec.dims.size());
+  std::size_t done = 0;
+  std::vector<float> outputs;
+  try {
+    for (int d : spec.dims) {
+      FlopsRun run;
+      run.platform = host_name();
+      run.device = backend.device_name;
+      run.device_kind = backend.kind;
+      run.backend = backend.label;
+      run.variant = variant_name(spec.variant);
+      run.iterations = spec.iterations;
+      run.dims = d;
+      if (backend.theoretical_peak_flops > 0) run.theoretical_peak_flops = backend.theoretical_peak_flops;
+      run.provenance = measured_provenance(cpu, backend);
+      result.runs.push_back(run);
+      const RotationParams params{d, spec.iterations};
+      if (spec.warmup) backend.run_point(params, spec.workers.front(), spec.variant, outputs, cancel);
+      for (std::int64_t w : spec.workers) {
+        if (progress)
+          progress(static_cast<double>(done) / total, "D=" + std::to_string(d) + ", W=" + std::to_string(w));
+        WorkerSample sample{w, {}};
+        for (int r = 0; r < spec.repeats; ++r) {
+          const double seconds = backend.run_point(params, w, spec.variant, outputs, cancel);
+          const std::int64_t bad = first_wrong_output(outputs, params);
+          if (bad >= 0)
+            throw std::runtime_error(backend.label + ": wrong result at D=" + std::to_string(d) + ", W=" +
+                                     std::to_string(w) + ", worker " + std::to_string(bad) + ": got " +
+                                     std::to_string(outputs[static_cast<std::size_t>(bad)]) + ", expected " +
+                                     std::to_string(closed_form_output(params)));
+          sample.seconds.push_back(seconds);
+        }
+        result.runs.back().samples.push_back(std::move(sample));
+        ++done;
+        if (on_point) on_point(result.runs.back());
+      }
+    }
+  } catch (const Cancelled&) {
+    result.cancelled = true;
+  }
+  // A D whose first point never completed has nothing to show.
+  std::erase_if(result.runs, [](const FlopsRun& r) { return r.samples.empty(); });
+  if (progress) progress(1.0, result.cancelled ? "cancelled" : "done");
+  return result;
+}
+
+}  // namespace bs::kernels
