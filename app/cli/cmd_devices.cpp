@@ -15,7 +15,7 @@ namespace {
 int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
   const ParsedArgs args = parse_args(raw, {"--json"}, {});
   const kernels::CpuInfo cpu = kernels::detect_cpu();
-  const auto backends = kernels::cpu_backends(cpu);
+  const auto backends = kernels::available_backends(cpu);
   if (args.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& b : backends) {

@@ -16,20 +16,10 @@
 namespace bs::cli {
 namespace {
 
-const kernels::Backend& pick_backend(const std::vector<kernels::Backend>& backends, const std::string& id) {
-  const std::string wanted = id == "cpu" ? "cpu-simd" : id;
-  for (const auto& b : backends)
-    if (b.id == wanted) return b;
-  std::string known;
-  for (const auto& b : backends) known += " " + b.id;
-  throw UsageError("unknown or unavailable backend '" + id + "' (available:" + known +
-                   "; OpenCL and CUDA are not wired into the CLI yet)");
-}
-
 int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   const ParsedArgs args = parse_args(raw, {"--json", "--no-warmup", "--quiet"},
                                      {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out",
-                                      "--workspace", "--variant"});
+                                      "--workspace", "--variant", "--device"});
   if (args.positional.size() != 1 || args.positional[0] != "flops")
     throw UsageError("expected 'run flops'");
   kernels::SweepSpec spec;
@@ -52,8 +42,16 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   spec.variant = variant == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
 
   const kernels::CpuInfo cpu = kernels::detect_cpu();
-  const auto backends = kernels::cpu_backends(cpu);
-  const kernels::Backend& backend = pick_backend(backends, args.value("--backend").value_or("cpu"));
+  const auto backends = kernels::available_backends(cpu);
+  std::string backend_id = args.value("--backend").value_or("cpu");
+  if (const auto device = args.value("--device")) backend_id += ":" + *device;  // --backend opencl --device 1
+  const kernels::Backend* found = nullptr;
+  try {
+    found = &kernels::find_backend(backends, backend_id);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const kernels::Backend& backend = *found;
   if (!args.has("--quiet"))
     err << "benchscope-cli: " << backend.label << " on " << backend.device_name << " (" << backend.details
         << "), theoretical peak " << format_si(backend.theoretical_peak_flops, "FLOPS") << '\n';
@@ -103,7 +101,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
 const CommandRegistrar registrar({
     "run",
     "measure the paper's rotation kernel on this machine (FLOPS sweep)",
-    "usage: benchscope-cli run flops [--backend cpu|cpu-simd|cpu-scalar] [--variant throughput|paper]\n"
+    "usage: benchscope-cli run flops [--backend cpu|cpu-simd|cpu-scalar|opencl [--device N]]\n"
+    "         [--variant throughput|paper]\n"
     "         [--points 1,2,4] [--iterations N] [--workers SPEC] [--repeats R] [--no-warmup]\n"
     "         [--out run.json] [--workspace W.bsw] [--json] [--quiet]\n"
     "  SPEC: 256:1024000:256 (start:stop:step), 1,2,4,8, or mixes such as 1,2,4:64:4.\n"

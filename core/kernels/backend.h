@@ -34,3 +34,14 @@ std::vector<Backend> cpu_backends(const CpuInfo& cpu);
 Provenance measured_provenance(const CpuInfo& cpu, const Backend& backend);
 
 }  // namespace bs::kernels
+
+namespace bs::kernels {
+
+// Every backend this machine has, in order: CPU SIMD, CPU scalar, then each OpenCL device ("opencl:N").
+std::vector<Backend> available_backends(const CpuInfo& cpu);
+
+// Finds a backend by id; "cpu" means "cpu-simd" and "opencl" means the first OpenCL device ("opencl:0").
+// Throws std::invalid_argument listing the available ids.
+const Backend& find_backend(const std::vector<Backend>& backends, const std::string& id);
+
+}  // namespace bs::kernels

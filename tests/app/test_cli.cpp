@@ -169,6 +169,12 @@ class TestCli : public QObject {
     QCOMPARE(cli({"run", "flops", "--workers", "10:1:1"}).code, 2);
     QCOMPARE(cli({"run", "flops", "--backend", "fpga"}).code, 2);
     QCOMPARE(cli({"devices", "--json"}).code, 0);
+    if (QJsonDocument::fromJson(cli({"devices", "--json"}).out).object()["devices"].toArray().size() > 2) {
+      const Result ocl = cli({"run", "flops", "--backend", "opencl", "--workers", "1,8", "--iterations", "300",
+                              "--repeats", "1", "--quiet"});
+      QCOMPARE(ocl.code, 0);
+      QVERIFY(ocl.out.contains("OpenCL, D = 4: peak"));
+    }
   }
 
   void folder_duplicates_and_keep_going() {

@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#define CL_TARGET_OPENCL_VERSION 120
+#include "kernels/backend_opencl.h"
+
+#include <CL/cl.h>
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+namespace bs::kernels {
+namespace {
+
+// Steps are split into launches of at most this many point-rotations so a cancel is seen within ~20 ms.
+constexpr double kPointStepsPerLaunch = 3e8;
+
+const char* kSource = R"CL(
+// VEC is float, float2 or float4 (-DVEC=...): D = 1, 2, 4 points per work-item, as in the paper.
+__kernel void rotate_paper(__global VEC* xs, __global VEC* ys, const int steps, const float c, const float s) {
+  const size_t w = get_global_id(0);
+  VEC x = xs[w], y = ys[w];
+  for (int n = 0; n < steps; ++n) {
+    const VEC nx = c * x - s * y;
+    y = s * x + c * y;
+    x = nx;
+  }
+  xs[w] = x;
+  ys[w] = y;
+}
+
+// Four independent float16 chains per work-item: 64 points, enough independent work to hide FMA latency.
+__kernel void rotate_throughput(__global float16* xs, __global float16* ys, const int steps, const float c,
+                                const float s) {
+  const size_t i = get_global_id(0) * 4;
+  float16 x0 = xs[i], x1 = xs[i + 1], x2 = xs[i + 2], x3 = xs[i + 3];
+  float16 y0 = ys[i], y1 = ys[i + 1], y2 = ys[i + 2], y3 = ys[i + 3];
+  for (int n = 0; n < steps; ++n) {
+    const float16 n0 = c * x0 - s * y0, n1 = c * x1 - s * y1, n2 = c * x2 - s * y2, n3 = c * x3 - s * y3;
+    y0 = s * x0 + c * y0; y1 = s * x1 + c * y1; y2 = s * x2 + c * y2; y3 = s * x3 + c * y3;
+    x0 = n0; x1 = n1; x2 = n2; x3 = n3;
+  }
+  xs[i] = x0; xs[i + 1] = x1; xs[i + 2] = x2; xs[i + 3] = x3;
+  ys[i] = y0; ys[i + 1] = y1; ys[i + 2] = y2; ys[i + 3] = y3;
+}
+)CL";
+
+void check(cl_int err, const char* what) {
+  if (err != CL_SUCCESS) throw std::runtime_error(std::string("OpenCL: ") + what + " failed (error " + std::to_string(err) + ")");
+}
+
+std::string device_string(cl_device_id d, cl_device_info what) {
+  std::size_t size = 0;
+  if (clGetDeviceInfo(d, what, 0, nullptr, &size) != CL_SUCCESS || size == 0) return {};
+  std::string s(size, '\0');
+  clGetDeviceInfo(d, what, size, s.data(), nullptr);
+  while (!s.empty() && s.back() == '\0') s.pop_back();
+  return s;
+}
+
+template <class T>
+T device_value(cl_device_id d, cl_device_info what) {
+  T v{};
+  clGetDeviceInfo(d, what, sizeof v, &v, nullptr);
+  return v;
+}
+
+// A device with its context, queue and one built program per VEC width, shared by the Backend's closures.
+class Device {
+ public:
+  explicit Device(cl_device_id id) : id_(id) {
+    cl_int err = CL_SUCCESS;
+    context_ = clCreateContext(nullptr, 1, &id_, nullptr, nullptr, &err);
+    check(err, "clCreateContext");
+    queue_ = clCreateCommandQueue(context_, id_, 0, &err);
+    check(err, "clCreateCommandQueue");
+  }
+  ~Device() {
+    for (auto& [key, k] : kernels_) clReleaseKernel(k);
+    for (auto& [key, p] : programs_) clReleaseProgram(p);
+    if (queue_) clReleaseCommandQueue(queue_);
+    if (context_) clReleaseContext(context_);
+  }
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+
+  double run(const RotationParams& p, std::int64_t workers, Variant variant, std::vector<float>& outputs,
+             const CancelToken& cancel) {
+    std::lock_guard lock(mutex_);
+    int width = 16;  // floats per vector element of the state buffers
+    std::int64_t items = 0, floats = 0;
+    if (variant == Variant::Paper) {
+      if (p.dims != 1 && p.dims != 2 && p.dims != 4)
+        throw std::invalid_argument("the OpenCL paper kernel runs D = 1, 2 or 4 (float, float2, float4)");
+      width = p.dims;
+      items = workers;
+      floats = workers * p.dims;
+    } else {
+      const std::int64_t points = workers * p.dims;
+      items = (points + 63) / 64;
+      floats = items * 64;
+    }
+    cl_kernel kernel = kernel_for(variant == Variant::Paper ? width : 0);
+    std::vector<float> xs(static_cast<std::size_t>(floats), 1.0f), ys(static_cast<std::size_t>(floats), 0.0f);
+    cl_int err = CL_SUCCESS;
+    const std::size_t bytes = xs.size() * sizeof(float);
+    cl_mem bx = clCreateBuffer(context_, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes, xs.data(), &err);
+    check(err, "clCreateBuffer");
+    cl_mem by = clCreateBuffer(context_, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes, ys.data(), &err);
+    if (err != CL_SUCCESS) clReleaseMemObject(bx);
+    check(err, "clCreateBuffer");
+    struct Release {
+      cl_mem a, b;
+      ~Release() { clReleaseMemObject(a); clReleaseMemObject(b); }
+    } release{bx, by};
+    const float c = rotation_cos(), s = rotation_sin();
+    check(clSetKernelArg(kernel, 0, sizeof bx, &bx), "clSetKernelArg");
+    check(clSetKernelArg(kernel, 1, sizeof by, &by), "clSetKernelArg");
+    check(clSetKernelArg(kernel, 3, sizeof c, &c), "clSetKernelArg");
+    check(clSetKernelArg(kernel, 4, sizeof s, &s), "clSetKernelArg");
+    const auto chunk = std::max<std::int64_t>(
+        1, std::min<std::int64_t>(1 << 30, static_cast<std::int64_t>(kPointStepsPerLaunch / (workers * p.dims))));
+    const std::size_t global = static_cast<std::size_t>(items);
+    check(clFinish(queue_), "clFinish");
+    const auto t0 = std::chrono::steady_clock::now();
+    for (std::int64_t done = 0; done < p.iterations; done += chunk) {
+      cancel.throw_if_cancelled();
+      const cl_int steps = static_cast<cl_int>(std::min(chunk, p.iterations - done));
+      check(clSetKernelArg(kernel, 2, sizeof steps, &steps), "clSetKernelArg");
+      check(clEnqueueNDRangeKernel(queue_, kernel, 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
+            "clEnqueueNDRangeKernel");
+      check(clFinish(queue_), "clFinish");
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    check(clEnqueueReadBuffer(queue_, bx, CL_TRUE, 0, bytes, xs.data(), 0, nullptr, nullptr), "clEnqueueReadBuffer");
+    check(clEnqueueReadBuffer(queue_, by, CL_TRUE, 0, bytes, ys.data(), 0, nullptr, nullptr), "clEnqueueReadBuffer");
+    // out = sum over the worker's points of (x + y), as the paper's kernel stores it.
+    outputs.assign(static_cast<std::size_t>(workers), 0.0f);
+    for (std::int64_t w = 0; w < workers; ++w)
+      for (int d = 0; d < p.dims; ++d) outputs[static_cast<std::size_t>(w)] += xs[w * p.dims + d] + ys[w * p.dims + d];
+    return seconds;
+  }
+
+ private:
+  // width 1/2/4: paper kernel with that VEC; 0: the throughput kernel.
+  cl_kernel kernel_for(int width) {
+    if (auto it = kernels_.find(width); it != kernels_.end()) return it->second;
+    cl_int err = CL_SUCCESS;
+    cl_program program = clCreateProgramWithSource(context_, 1, &kSource, nullptr, &err);
+    check(err, "clCreateProgramWithSource");
+    programs_[width] = program;
+    const std::string vec = width <= 1 ? "float" : "float" + std::to_string(width);
+    const std::string options = "-DVEC=" + vec + " -cl-mad-enable";
+    if (clBuildProgram(program, 1, &id_, options.c_str(), nullptr, nullptr) != CL_SUCCESS) {
+      std::size_t size = 0;
+      clGetProgramBuildInfo(program, id_, CL_PROGRAM_BUILD_LOG, 0, nullptr, &size);
+      std::string log(size, '\0');
+      clGetProgramBuildInfo(program, id_, CL_PROGRAM_BUILD_LOG, size, log.data(), nullptr);
+      throw std::runtime_error("OpenCL: kernel build failed: " + log);
+    }
+    cl_kernel k = clCreateKernel(program, width == 0 ? "rotate_throughput" : "rotate_paper", &err);
+    check(err, "clCreateKernel");
+    kernels_[width] = k;
+    return k;
+  }
+
+  cl_device_id id_;
+  cl_context context_ = nullptr;
+  cl_command_queue queue_ = nullptr;
+  std::map<int, cl_program> programs_;
+  std::map<int, cl_kernel> kernels_;
+  std::mutex mutex_;
+};
+
+}  // namespace
+
+std::vector<Backend> opencl_backends(const CpuInfo& cpu) {
+  std::vector<Backend> out;
+  cl_uint nplatforms = 0;
+  if (clGetPlatformIDs(0, nullptr, &nplatforms) != CL_SUCCESS || nplatforms == 0) return out;
+  std::vector<cl_platform_id> platforms(nplatforms);
+  clGetPlatformIDs(nplatforms, platforms.data(), nullptr);
+  int index = 0;
+  for (cl_platform_id platform : platforms) {
+    cl_uint ndevices = 0;
+    if (clGetDeviceIDs(platform, CL_DEVICE_TYPE_ALL, 0, nullptr, &ndevices) != CL_SUCCESS || ndevices == 0) continue;
+    std::vector<cl_device_id> devices(ndevices);
+    clGetDeviceIDs(platform, CL_DEVICE_TYPE_ALL, ndevices, devices.data(), nullptr);
+    for (cl_device_id id : devices) {
+      const auto type = device_value<cl_device_type>(id, CL_DEVICE_TYPE);
+      const auto units = device_value<cl_uint>(id, CL_DEVICE_MAX_COMPUTE_UNITS);
+      const auto mhz = device_value<cl_uint>(id, CL_DEVICE_MAX_CLOCK_FREQUENCY);
+      Backend b;
+      b.id = "opencl:" + std::to_string(index++);
+      b.label = "OpenCL";
+      b.device_name = device_string(id, CL_DEVICE_NAME);
+      b.kind = (type & CL_DEVICE_TYPE_GPU) ? DeviceKind::Gpu : (type & CL_DEVICE_TYPE_CPU) ? DeviceKind::Cpu
+                                                                                          : DeviceKind::Other;
+      b.variants = {Variant::Throughput, Variant::Paper};
+      b.details = device_string(id, CL_DEVICE_VENDOR) + ", driver " + device_string(id, CL_DRIVER_VERSION) + ", " +
+                  std::to_string(units) + " compute units, " + std::to_string(mhz) + " MHz";
+      if (b.kind == DeviceKind::Cpu) {
+        b.theoretical_peak_flops = cpu.peak_flops;  // a CPU device runs on the cores measured above
+      } else {
+        // Without vendor tables: one FMA lane per 32-wide SIMT group element at 32 lanes per CU, the smallest
+        // common width; 4 ops per rotation step carry 6 counted flops. A lower bound, labelled approximate.
+        b.theoretical_peak_flops = units * 32.0 * mhz * 1e6 * 6.0 / 4.0;
+        b.details += ", peak approximate (32 lanes/CU assumed)";
+      }
+      auto device = std::make_shared<Device>(id);
+      b.run_point = [device](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& outputs,
+                             const CancelToken& cancel) { return device->run(p, w, v, outputs, cancel); };
+      out.push_back(std::move(b));
+    }
+  }
+  return out;
+}
+
+}  // namespace bs::kernels
