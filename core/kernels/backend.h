@@ -40,7 +40,7 @@ namespace bs::kernels {
 // Every backend this machine has, in order: CPU SIMD, CPU scalar, then each OpenCL device ("opencl:N").
 std::vector<Backend> available_backends(const CpuInfo& cpu);
 
-// Finds a backend by id; "cpu" means "cpu-simd" and "opencl" means the first OpenCL device ("opencl:0").
+// Finds a backend by id; "cpu" means "cpu-simd", "opencl" and "cuda" the first device of each ("opencl:0").
 // Throws std::invalid_argument listing the available ids.
 const Backend& find_backend(const std::vector<Backend>& backends, const std::string& id);
 

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QtTest>
+
+#include "kernels/cuda/rotation_cuda.h"
+#include "kernels/rotation.h"
+
+using namespace bs::kernels;
+
+class TestCudaBackend : public QObject {
+  Q_OBJECT
+ private slots:
+  void matches_the_closed_form_on_every_gpu() {
+    std::string why;
+    const auto gpus = cuda::devices(&why);
+    if (gpus.empty()) QSKIP(qPrintable("CUDA backend compiled; not run: " + QString::fromStdString(why)));
+    for (const auto& g : gpus)
+      for (bool paper : {true, false})
+        for (int d : {1, 2, 4})
+          for (std::int64_t w : {1, 100, 5000}) {
+            const RotationParams p{d, 1000};
+            std::vector<float> out;
+            QVERIFY(cuda::run_point(g.index, d, p.iterations, w, paper, out, bs::CancelToken{}) > 0);
+            QCOMPARE(first_wrong_output(out, p), std::int64_t{-1});
+          }
+  }
+};
+
+QTEST_APPLESS_MAIN(TestCudaBackend)
+#include "test_cuda_backend.moc"
