@@ -7,6 +7,7 @@
 #include <QTimer>
 
 #include "flops_plot.h"
+#include "kernel_runner.h"
 #include "main_window.h"
 #include "peak_table.h"
 #include "workspace_tree.h"
@@ -37,6 +38,9 @@ int main(int argc, char** argv) {
   cli.addPositionalArgument("paths", "A workspace (.bsw) to open, or files/folders to import into a new one.");
   QCommandLineOption shot("screenshot", "Save PNG screenshots of the window and views into DIR, then quit.", "DIR");
   cli.addOption(shot);
+  QCommandLineOption sweep("sweep", "Start a Kernel Runner sweep over SPEC workers right away (with --screenshot: "
+                                    "the shots are taken mid-sweep).", "SPEC");
+  cli.addOption(sweep);
   cli.process(app);
 
   bs::ui::MainWindow window;
@@ -49,15 +53,22 @@ int main(int argc, char** argv) {
     window.new_untitled_workspace();
   }
   window.show();
+  if (cli.isSet(sweep)) {
+    window.kernel_runner()->set_workers_spec(cli.value(sweep));
+    window.kernel_runner()->start();
+  }
 
   if (cli.isSet(shot)) {
     const QString dir = cli.value(shot);
     QDir().mkpath(dir);
-    QTimer::singleShot(500, &window, [&window, dir] {
+    const int delay_ms = cli.isSet(sweep) ? 2500 : 500;
+    QTimer::singleShot(delay_ms, &window, [&window, dir] {
       window.grab().save(dir + "/main-window.png");
       window.flops_plot()->grab().save(dir + "/flops-plot.png");
       window.peak_table()->grab().save(dir + "/peak-table.png");
       window.tree()->grab().save(dir + "/workspace-tree.png");
+      window.kernel_runner()->grab().save(dir + "/kernel-runner.png");
+      window.kernel_runner()->cancel();
       QApplication::quit();
     });
   }

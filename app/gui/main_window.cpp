@@ -18,6 +18,8 @@
 #include "analysis/flops.h"
 #include "flops_plot.h"
 #include "import_controller.h"
+#include "kernel_runner.h"
+#include "run_json.h"
 #include "peak_table.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
@@ -29,7 +31,8 @@ MainWindow::MainWindow(QWidget* parent)
       tree_(new WorkspaceTree(this)),
       plot_(new FlopsPlot(this)),
       peaks_(new PeakTableView(this)),
-      importer_(new ImportController(this)) {
+      importer_(new ImportController(this)),
+      runner_(new KernelRunner(this)) {
   setAcceptDrops(true);
   setCentralWidget(plot_);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
@@ -40,7 +43,11 @@ MainWindow::MainWindow(QWidget* parent)
   peak_dock->setObjectName("peakDock");
   peak_dock->setWidget(peaks_);
   addDockWidget(Qt::BottomDockWidgetArea, peak_dock);
-  resizeDocks({tree_dock}, {330}, Qt::Horizontal);
+  auto* runner_dock = new QDockWidget(tr("Kernel Runner"), this);
+  runner_dock->setObjectName("kernelRunnerDock");
+  runner_dock->setWidget(runner_);
+  addDockWidget(Qt::RightDockWidgetArea, runner_dock);
+  resizeDocks({tree_dock, runner_dock}, {330, 300}, Qt::Horizontal);
   resizeDocks({peak_dock}, {260}, Qt::Vertical);
   create_actions();
   connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);
@@ -48,7 +55,14 @@ MainWindow::MainWindow(QWidget* parent)
     reload();
     show_import_report(r);
   });
-  resize(1400, 900);
+  connect(runner_, &KernelRunner::live_run, this, &MainWindow::show_live_run);
+  connect(runner_, &KernelRunner::finished, this, &MainWindow::store_measured_runs);
+  connect(runner_, &KernelRunner::failed, this, [this](const QString& message) {
+    live_.clear();
+    refresh_views();
+    QMessageBox::warning(this, tr("Kernel run failed"), message);
+  });
+  resize(1500, 900);
   update_title();
 }
 
@@ -178,12 +192,53 @@ void MainWindow::refresh_views() {
     peak_input.push_back(r.run);
     colors.push_back(r.color_index);
   }
+  for (const StoredRun& r : live_) {
+    shown.push_back(&r);
+    peak_input.push_back(r.run);
+    colors.push_back(r.color_index);
+  }
   plot_->set_runs(shown);
   peaks_->peak_model()->set_rows(bs::peak_table(peak_input), colors);
-  statusBar()->showMessage(tr("%1 — %2 of %3 runs shown")
+  statusBar()->showMessage(tr("%1 — %2 of %3 runs shown%4")
                                .arg(workspace_ ? QString::fromStdString(workspace_->path()) : tr("no workspace"))
-                               .arg(shown.size())
-                               .arg(runs_.size()));
+                               .arg(shown.size() - live_.size())
+                               .arg(runs_.size())
+                               .arg(live_.empty() ? QString() : tr(", plus the sweep running now")));
+}
+
+void MainWindow::show_live_run(const FlopsRun& run) {
+  // The device keeps the colour it has in the workspace; a new device gets the next free one.
+  int color = workspace_ ? static_cast<int>(workspace_->devices().size()) : 0;
+  if (workspace_)
+    for (const DeviceRecord& d : workspace_->devices())
+      if (d.platform == run.platform && d.device == run.device) color = d.color_index;
+  auto it = std::find_if(live_.begin(), live_.end(), [&](const StoredRun& s) { return s.run.dims == run.dims; });
+  if (it == live_.end()) it = live_.insert(live_.end(), StoredRun{-1 - static_cast<qint64>(live_.size()), 0, 0, color, {}});
+  it->run = run;
+  refresh_views();
+}
+
+void MainWindow::store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled) {
+  live_.clear();
+  if (runs.empty()) {
+    refresh_views();
+    statusBar()->showMessage(tr("Kernel run cancelled before any point completed"), 10000);
+    return;
+  }
+  if (!workspace_) new_untitled_workspace();
+  ImportBatch batch;
+  batch.source_path = "Kernel Runner";
+  batch.format = "benchscope-run-v1";
+  batch.runs = runs;
+  try {
+    workspace_->add_import(batch, content_hash(write_run_json(runs)));
+  } catch (const WorkspaceError& e) {
+    QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
+  }
+  reload();
+  statusBar()->showMessage(tr("Stored %n measured run(s)%1", nullptr, static_cast<int>(runs.size()))
+                               .arg(cancelled ? tr(" (cancelled: partial)") : QString()),
+                           10000);
 }
 
 void MainWindow::save_as() {

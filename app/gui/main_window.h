@@ -12,6 +12,7 @@ class FlopsPlot;
 class PeakTableView;
 class ImportController;
 class RecentFiles;
+class KernelRunner;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -31,6 +32,7 @@ class MainWindow : public QMainWindow {
   WorkspaceTree* tree() const { return tree_; }
   FlopsPlot* flops_plot() const { return plot_; }
   PeakTableView* peak_table() const { return peaks_; }
+  KernelRunner* kernel_runner() const { return runner_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -45,15 +47,19 @@ class MainWindow : public QMainWindow {
   void show_import_report(const ImportReport& report);
   void save_as();
   void update_title();
+  void show_live_run(const FlopsRun& run);
+  void store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled);
 
   std::unique_ptr<Workspace> workspace_;
   std::vector<StoredRun> runs_;
+  std::vector<StoredRun> live_;  // a sweep in progress, drawn before it is stored
   std::unique_ptr<QTemporaryDir> untitled_dir_;  // holds an untitled workspace until "Save As"
   WorkspaceTree* tree_;
   FlopsPlot* plot_;
   PeakTableView* peaks_;
   ImportController* importer_;
   RecentFiles* recent_ = nullptr;
+  KernelRunner* runner_;
 };
 
 }  // namespace bs::ui

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QWidget>
+#include <memory>
+#include <vector>
+
+#include "kernels/backend.h"
+
+class QComboBox;
+class QLineEdit;
+class QSpinBox;
+class QPushButton;
+class QProgressBar;
+class QLabel;
+
+namespace bs::ui {
+
+// Runs the paper's kernel on a chosen backend/device off the GUI thread: worker spec, D list, N, repeats and
+// variant; Run/Cancel; each completed point is reported (live_run) so the FLOPS view fills in while it runs, and
+// the finished (or cancelled, partial) runs are handed over to be stored (finished).
+class KernelRunner : public QWidget {
+  Q_OBJECT
+ public:
+  explicit KernelRunner(QWidget* parent = nullptr);
+  ~KernelRunner() override;
+  bool running() const { return cancel_ != nullptr; }
+  void set_workers_spec(const QString& spec);
+  void set_dims(const QString& dims);
+  void set_iterations(int n);
+  void set_repeats(int r);
+  void start();
+  void cancel();
+
+ signals:
+  void live_run(const bs::FlopsRun& run);
+  void finished(const std::vector<bs::FlopsRun>& runs, bool cancelled);
+  void failed(const QString& message);
+
+ private:
+  void populate();
+  void show_backend_details();
+  kernels::CpuInfo cpu_;
+  std::vector<kernels::Backend> backends_;
+  std::shared_ptr<CancelToken> cancel_;
+  QComboBox* backend_;
+  QComboBox* variant_;
+  QLineEdit* workers_;
+  QLineEdit* dims_;
+  QSpinBox* iterations_;
+  QSpinBox* repeats_;
+  QLabel* details_;
+  QPushButton* run_;
+  QPushButton* stop_;
+  QProgressBar* progress_;
+};
+
+}  // namespace bs::ui
