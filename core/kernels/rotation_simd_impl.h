@@ -10,8 +10,8 @@ namespace bs::kernels::BS_SIMD_NS {
 
 constexpr int kLanes = BS_SIMD_BYTES / 4;
 // Independent vector chains per block: a rotation step is mul -> FMA (8 cycles of latency on current x86 cores)
-// and two FMA ports retire two per cycle, so >= 4 chains (x and y each) keep both ports busy.
-constexpr int kChains = 4;  // the loop below is written out for exactly 4
+// and two FMA ports retire two per cycle, so >= 4 chains (x and y each) keep both ports busy; 8 measured best.
+constexpr int kChains = 8;  // the loop below is written out for exactly 8 (BS_CHAINS)
 typedef float vf __attribute__((vector_size(BS_SIMD_BYTES), aligned(BS_SIMD_BYTES)));
 typedef float v4 __attribute__((vector_size(16), aligned(16)));
 
@@ -28,22 +28,25 @@ void advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t st
     vf* py = reinterpret_cast<vf*>(ys) + b * kChains;
     // Named registers, not arrays: GCC keeps arrays of vectors on the stack, and the store/reload per step
     // would add latency to every chain.
-    vf x0 = px[0], x1 = px[1], x2 = px[2], x3 = px[3];
-    vf y0 = py[0], y1 = py[1], y2 = py[2], y3 = py[3];
+#define BS_CHAINS(X) X(0) X(1) X(2) X(3) X(4) X(5) X(6) X(7)
+#define BS_LOAD(k) vf x##k = px[k], y##k = py[k];
+#define BS_STEP(k)                             \
+  {                                            \
+    const vf nx = vc * x##k - vs * y##k;       \
+    y##k = vs * x##k + vc * y##k;              \
+    x##k = nx;                                 \
+  }
+#define BS_STORE(k) px[k] = x##k, py[k] = y##k;
+    BS_CHAINS(BS_LOAD)
     const vf vc = vf{} + c, vs = vf{} + s;
     for (std::int64_t n = 0; n < steps; ++n) {
-      const vf n0 = vc * x0 - vs * y0, n1 = vc * x1 - vs * y1, n2 = vc * x2 - vs * y2, n3 = vc * x3 - vs * y3;
-      y0 = vs * x0 + vc * y0;
-      y1 = vs * x1 + vc * y1;
-      y2 = vs * x2 + vc * y2;
-      y3 = vs * x3 + vc * y3;
-      x0 = n0;
-      x1 = n1;
-      x2 = n2;
-      x3 = n3;
+      BS_CHAINS(BS_STEP)
     }
-    px[0] = x0, px[1] = x1, px[2] = x2, px[3] = x3;
-    py[0] = y0, py[1] = y1, py[2] = y2, py[3] = y3;
+    BS_CHAINS(BS_STORE)
+#undef BS_STORE
+#undef BS_STEP
+#undef BS_LOAD
+#undef BS_CHAINS
   }
 }
 
