@@ -86,7 +86,7 @@ Provenance measured_provenance(const CpuInfo& cpu, const Backend& backend) {
   p.compiler = BENCHSCOPE_COMPILER;
   p.tool = std::string("benchscope ") + BENCHSCOPE_VERSION;
   p.date = utc_now();
-  p.note = backend.id + ": " + backend.details;
+  p.note = backend.id + ": " + backend.details + "; built " + BENCHSCOPE_BUILD_FLAGS;
   return p;
 }
 
