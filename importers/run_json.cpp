@@ -9,6 +9,7 @@
 
 #include "analysis/flops.h"
 #include "json_access.h"
+#include "model/provenance_json.h"
 
 namespace bs {
 namespace {
@@ -106,19 +107,6 @@ FlopsRun read_run(const Reader& r, const json& run, const std::string& at, const
   return out;
 }
 
-json provenance_json(const Provenance& p) {
-  return json{{"origin", std::string(to_string(p.origin))},
-              {"host", p.host},
-              {"cpu_model", p.cpu_model},
-              {"gpu_model", p.gpu_model},
-              {"os", p.os},
-              {"compiler", p.compiler},
-              {"tool", p.tool},
-              {"git_revision", p.git_revision},
-              {"date", p.date},
-              {"note", p.note}};
-}
-
 }  // namespace
 
 int RunJsonImporter::sniff(std::string_view head, std::string_view path) const {
@@ -184,7 +172,7 @@ std::string write_run_json(std::span<const FlopsRun> runs) {
     if (run.reported_peak_flops) j["reported_peak_flops"] = *run.reported_peak_flops;
     if (run.theoretical_peak_flops) j["theoretical_peak_flops"] = *run.theoretical_peak_flops;
     j["samples"] = std::move(samples);
-    j["provenance"] = provenance_json(run.provenance);
+    j["provenance"] = provenance_to_json(run.provenance, false);
     out_runs.push_back(std::move(j));
   }
   // nlohmann prints doubles with max_digits10, so they read back bit-exact.

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "store/provenance_json.h"
+#include "model/provenance_json.h"
 #include "store/schema.h"
 #include "store/sqlite_db.h"
 
@@ -172,7 +172,7 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
         .bind(7, run.dims)
         .bind(8, run.reported_peak_flops)
         .bind(9, run.theoretical_peak_flops)
-        .bind(10, std::string_view(store::provenance_to_json(run.provenance)))
+        .bind(10, std::string_view(provenance_to_json(run.provenance, true).dump()))
         .run();
     const std::int64_t run_id = sqlite3_last_insert_rowid(db.get());
     for (const WorkerSample& s : run.samples)
@@ -191,7 +191,7 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
         .bind(2, devices.get(set.platform, set.device, set.device_kind))
         .bind(3, std::string_view(set.backend))
         .bind(4, std::string_view(set.source_format))
-        .bind(5, std::string_view(store::provenance_to_json(set.provenance)))
+        .bind(5, std::string_view(provenance_to_json(set.provenance, true).dump()))
         .run();
     const std::int64_t set_id = sqlite3_last_insert_rowid(db.get());
     for (const Measurement& m : set.measurements) {
@@ -260,7 +260,7 @@ std::vector<StoredRun> Workspace::runs() const {
     s.run.dims = static_cast<int>(st.int64(11));
     s.run.reported_peak_flops = st.optional_real(12);
     s.run.theoretical_peak_flops = st.optional_real(13);
-    s.run.provenance = store::provenance_from_json(st.text(14));
+    s.run.provenance = provenance_from_json(nlohmann::json::parse(st.text(14), nullptr, false));
     index[s.id] = out.size();
     out.push_back(std::move(s));
   }
@@ -294,7 +294,7 @@ std::vector<StoredResultSet> Workspace::result_sets() const {
     s.set.device_kind = device_kind_from_string(st.text(6));
     s.set.backend = st.text(7);
     s.set.source_format = st.text(8);
-    s.set.provenance = store::provenance_from_json(st.text(9));
+    s.set.provenance = provenance_from_json(nlohmann::json::parse(st.text(9), nullptr, false));
     index[s.id] = out.size();
     out.push_back(std::move(s));
   }
