@@ -7,6 +7,7 @@
 
 #include "analysis/flops.h"
 #include "args.h"
+#include "bench_vision.h"
 #include "command.h"
 #include "kernels/sweep.h"
 #include "signals.h"
@@ -85,14 +86,17 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
 
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels)",
+    "benchmarks printing figures and ratios (bench kernels | bench vision)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W]\n"
+    "       benchscope-cli bench vision [--frames F]\n"
     "  Best GFLOPS per backend and variant (D = 4, N = 40,000, median of R runs), % of this machine's\n"
     "  theoretical peak, and the sweep bookkeeping overhead. Figures only: nothing passes or fails on time.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
-        if (args.empty() || args[0] != "kernels") throw UsageError("expected 'bench kernels'");
-        return bench_kernels(std::vector<std::string>(args.begin() + 1, args.end()), out);
+        const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
+        if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
+        if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
+        throw UsageError("expected 'bench kernels' or 'bench vision'");
       } catch (const UsageError& e) {
         err << "benchscope-cli: error: " << e.what() << '\n';
         return 2;
