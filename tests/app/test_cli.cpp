@@ -177,6 +177,22 @@ class TestCli : public QObject {
     }
   }
 
+  void synth_frame_writes_raw_sidecar_and_truth() {
+    QTemporaryDir dir;
+    const QString prefix = dir.filePath("frames/chart");
+    const Result r = cli({"synth-frame", "--out", prefix, "--size", "128x96", "--bits", "12", "--pattern", "RGGB"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(QFileInfo(prefix + ".raw").size(), qint64{128 * 96 * 2});  // 16-bit words
+    const QJsonObject side = QJsonDocument::fromJson(bytes_of(prefix + ".json")).object();
+    QCOMPARE(side["width"].toInt(), 128);
+    QCOMPARE(side["pattern"].toString(), QString("RGGB"));
+    QCOMPARE(side["bit_depth"].toInt(), 12);
+    QCOMPARE(side["synthetic"].toBool(), true);
+    QVERIFY(QFileInfo::exists(prefix + "-truth.png"));
+    QCOMPARE(cli({"synth-frame", "--out", prefix, "--bits", "9"}).code, 2);
+    QCOMPARE(cli({"synth-frame", "--out", prefix, "--size", "huge"}).code, 2);
+  }
+
   void folder_duplicates_and_keep_going() {
     QTemporaryDir dir;
     const QString ws = dir.filePath("w.bsw");
