@@ -8,13 +8,13 @@
 namespace bs::ui {
 
 QColor device_color(int color_index) {
-  // Okabe & Ito (2008) without black (kept for text) and with its yellow moved back (too light on white for
-  // thin lines), then Tol's muted scheme.
+  // Okabe & Ito (2008) without black (kept for text), then Tol's muted scheme, and Okabe-Ito's yellow last: it is
+  // too light on white for thin lines and bands.
   static const std::array<QColor, 15> colors = {
       QColor(0, 114, 178),   QColor(230, 159, 0),  QColor(0, 158, 115),  QColor(213, 94, 0),
       QColor(204, 121, 167), QColor(86, 180, 233), QColor(51, 34, 136),  QColor(153, 153, 51),
-      QColor(68, 170, 153),  QColor(240, 228, 66), QColor(17, 119, 51),  QColor(136, 204, 238),
-      QColor(204, 102, 119), QColor(136, 34, 85),  QColor(170, 68, 153)};
+      QColor(68, 170, 153),  QColor(17, 119, 51),  QColor(136, 204, 238), QColor(204, 102, 119),
+      QColor(136, 34, 85),   QColor(170, 68, 153), QColor(240, 228, 66)};
   const int n = static_cast<int>(colors.size());
   return colors[static_cast<std::size_t>(((color_index % n) + n) % n)];
 }

@@ -120,6 +120,7 @@ void KernelRunner::start() {
   spec.variant = variant_->currentData().toString() == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
   const kernels::Backend backend = backends_[static_cast<std::size_t>(backend_->currentIndex())];
   cancel_ = std::make_shared<CancelToken>();
+  emit started();
   run_->setEnabled(false);
   stop_->setEnabled(true);
   progress_->setValue(0);

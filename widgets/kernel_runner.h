@@ -32,6 +32,7 @@ class KernelRunner : public QWidget {
   void cancel();
 
  signals:
+  void started();
   void live_run(const bs::FlopsRun& run);
   void finished(const std::vector<bs::FlopsRun>& runs, bool cancelled);
   void failed(const QString& message);

@@ -46,8 +46,13 @@ MainWindow::MainWindow(QWidget* parent)
   auto* runner_dock = new QDockWidget(tr("Kernel Runner"), this);
   runner_dock->setObjectName("kernelRunnerDock");
   runner_dock->setWidget(runner_);
-  addDockWidget(Qt::RightDockWidgetArea, runner_dock);
-  resizeDocks({tree_dock, runner_dock}, {330, 300}, Qt::Horizontal);
+  // The runner shares the left column with the workspace tree (as a tab) so the plot keeps the window's width;
+  // it comes to the front when a sweep starts.
+  addDockWidget(Qt::LeftDockWidgetArea, runner_dock);
+  tabifyDockWidget(tree_dock, runner_dock);
+  tree_dock->raise();
+  resizeDocks({tree_dock}, {340}, Qt::Horizontal);
+  connect(runner_, &KernelRunner::started, runner_dock, &QDockWidget::raise);
   resizeDocks({peak_dock}, {260}, Qt::Vertical);
   create_actions();
   connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);
