@@ -4,6 +4,7 @@
 #include <qcustomplot.h>
 
 #include "flops_plot.h"
+#include "import_controller.h"
 #include "main_window.h"
 #include "peak_table.h"
 #include "workspace_tree.h"
@@ -82,6 +83,33 @@ class TestMainWindow : public QObject {
     for (int i = 0; i < w.flops_plot()->plot()->graphCount(); ++i)
       filled += w.flops_plot()->plot()->graph(i)->channelFillGraph() != nullptr;
     QCOMPARE(filled, 1);
+  }
+
+  void background_import_reports_per_file() {
+    QTemporaryDir dir;
+    QFile bad(dir.filePath("bad.json"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": [");
+    bad.close();
+    QWidget parent;
+    bs::ui::ImportController controller(&parent);
+    QSignalSpy done(&controller, &bs::ui::ImportController::finished);
+    controller.start(dir.filePath("w.bsw"), {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", dir.filePath("bad.json")});
+    QVERIFY(controller.busy());
+    QVERIFY(done.wait(60000));
+    QVERIFY(!controller.busy());
+    const auto report = done.first().at(0).value<bs::ui::ImportReport>();
+    QCOMPARE(report.imported, 5);
+    QCOMPARE(report.failures.size(), 1);
+    QVERIFY(report.failures[0].contains("bad.json") && report.failures[0].contains("truncated"));
+    QVERIFY(report.skipped.size() >= 1);  // the folder's README is not a data file
+    QVERIFY(!report.cancelled);
+    // A cancelled import stops before the next file and stores nothing more.
+    bs::CancelToken cancel;
+    cancel.cancel();
+    const auto cancelled = bs::ui::ImportController::import_now(dir.filePath("w2.bsw"), {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"}, cancel);
+    QVERIFY(cancelled.cancelled);
+    QCOMPARE(cancelled.imported, 0);
   }
 
   void no_qt5_library_is_loaded() {
