@@ -65,8 +65,32 @@ void migrate_0_to_1(const sqlite::Db& db) {
   )sql");
 }
 
+// Version 1 -> 2: current/power logs. Channel values are a BLOB of native doubles: a 10-million-sample trace
+// is one row, read and written without parsing.
+void migrate_1_to_2(const sqlite::Db& db) {
+  db.exec(R"sql(
+    CREATE TABLE power_traces(
+      id INTEGER PRIMARY KEY,
+      import_id INTEGER NOT NULL REFERENCES imports(id) ON DELETE CASCADE,
+      platform TEXT NOT NULL,
+      label TEXT NOT NULL,
+      start_time TEXT NOT NULL,
+      supply_voltage_v REAL,
+      time_s BLOB NOT NULL,
+      provenance TEXT NOT NULL);
+    CREATE INDEX power_traces_by_import ON power_traces(import_id);
+    CREATE TABLE power_channels(
+      id INTEGER PRIMARY KEY,
+      trace_id INTEGER NOT NULL REFERENCES power_traces(id) ON DELETE CASCADE,
+      name TEXT NOT NULL,
+      quantity TEXT NOT NULL CHECK(quantity IN ('current', 'voltage', 'power')),
+      vals BLOB NOT NULL);
+    CREATE INDEX power_channels_by_trace ON power_channels(trace_id);
+  )sql");
+}
+
 using Migration = void (*)(const sqlite::Db&);
-constexpr Migration kMigrations[] = {migrate_0_to_1};
+constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "store/sqlite_db.h"
 
+#include <cstring>
+
 namespace bs::sqlite {
 
 Db::Db(const std::string& path, int flags) : path_(path) {
@@ -61,6 +63,22 @@ Statement& Statement::bind(int index, std::string_view v) {
 
 Statement& Statement::bind(int index, const std::optional<double>& v) {
   return v ? bind(index, *v) : bind_null(index);
+}
+
+Statement& Statement::bind_doubles(int index, const std::vector<double>& values) {
+  const auto bytes = static_cast<sqlite3_uint64>(values.size() * sizeof(double));
+  if (sqlite3_bind_blob64(stmt_, index, values.empty() ? "" : static_cast<const void*>(values.data()), bytes,
+                          SQLITE_TRANSIENT) != SQLITE_OK)
+    db_.fail("bind failed");
+  return *this;
+}
+
+std::vector<double> Statement::doubles(int column) const {
+  const auto* p = static_cast<const unsigned char*>(sqlite3_column_blob(stmt_, column));
+  const auto bytes = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column));
+  std::vector<double> out(bytes / sizeof(double));
+  if (p && !out.empty()) std::memcpy(out.data(), p, out.size() * sizeof(double));
+  return out;
 }
 
 Statement& Statement::bind_null(int index) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <sqlite3.h>
 
@@ -42,6 +43,7 @@ class Statement {
   Statement& bind(int index, std::string_view v);
   Statement& bind(int index, const std::optional<double>& v);
   Statement& bind_null(int index);
+  Statement& bind_doubles(int index, const std::vector<double>& values);  // as a BLOB of native doubles
 
   bool step();        // true while a row is available
   void run();         // step to completion, then reset for reuse
@@ -50,6 +52,7 @@ class Statement {
   double real(int column) const;
   std::optional<double> optional_real(int column) const;
   std::string text(int column) const;
+  std::vector<double> doubles(int column) const;
 
  private:
   const Db& db_;

@@ -207,6 +207,26 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
       poll();
     }
   }
+  Statement trace_st(db,
+                     "INSERT INTO power_traces(import_id, platform, label, start_time, supply_voltage_v, time_s, "
+                     "provenance) VALUES (?,?,?,?,?,?,?)");
+  Statement channel_st(db, "INSERT INTO power_channels(trace_id, name, quantity, vals) VALUES (?,?,?,?)");
+  for (const PowerTrace& t : batch.power_traces) {
+    trace_st.bind(1, import_id)
+        .bind(2, std::string_view(t.platform))
+        .bind(3, std::string_view(t.label))
+        .bind(4, std::string_view(t.start_time))
+        .bind(5, t.supply_voltage_v)
+        .bind_doubles(6, t.time_s)
+        .bind(7, std::string_view(provenance_to_json(t.provenance, true).dump()))
+        .run();
+    const std::int64_t trace_id = sqlite3_last_insert_rowid(db.get());
+    for (const PowerChannel& c : t.channels) {
+      const char* q = c.quantity == PowerQuantity::Current ? "current" : c.quantity == PowerQuantity::Voltage ? "voltage" : "power";
+      channel_st.bind(1, trace_id).bind(2, std::string_view(c.name)).bind(3, std::string_view(q)).bind_doubles(4, c.values).run();
+      poll();
+    }
+  }
   if (cancel) cancel->throw_if_cancelled();
   tx.commit();
   return import_id;
@@ -314,6 +334,37 @@ std::vector<StoredResultSet> Workspace::result_sets() const {
         if (a.is_array() && a.size() == 2 && a[0].is_string() && a[1].is_number())
           meas.reported_aggregates.emplace_back(a[0].get<std::string>(), a[1].get<double>());
     out[it->second].set.measurements.push_back(std::move(meas));
+  }
+  return out;
+}
+
+std::vector<StoredPowerTrace> Workspace::power_traces() const {
+  std::vector<StoredPowerTrace> out;
+  std::map<std::int64_t, std::size_t> index;
+  Statement st(impl_->db,
+               "SELECT id, import_id, platform, label, start_time, supply_voltage_v, time_s, provenance "
+               "FROM power_traces ORDER BY id");
+  while (st.step()) {
+    StoredPowerTrace s;
+    s.id = st.int64(0);
+    s.import_id = st.int64(1);
+    s.trace.platform = st.text(2);
+    s.trace.label = st.text(3);
+    s.trace.start_time = st.text(4);
+    s.trace.supply_voltage_v = st.optional_real(5);
+    s.trace.time_s = st.doubles(6);
+    s.trace.provenance = provenance_from_json(nlohmann::json::parse(st.text(7), nullptr, false));
+    index[s.id] = out.size();
+    out.push_back(std::move(s));
+  }
+  Statement ch(impl_->db, "SELECT trace_id, name, quantity, vals FROM power_channels ORDER BY trace_id, id");
+  while (ch.step()) {
+    const auto it = index.find(ch.int64(0));
+    if (it == index.end()) continue;
+    const std::string q = ch.text(2);
+    out[it->second].trace.channels.push_back(
+        {ch.text(1), q == "current" ? PowerQuantity::Current : q == "voltage" ? PowerQuantity::Voltage : PowerQuantity::Power,
+         ch.doubles(3)});
   }
   return out;
 }

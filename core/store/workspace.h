@@ -57,11 +57,17 @@ struct StoredResultSet {
   ResultSet set;
 };
 
+struct StoredPowerTrace {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  PowerTrace trace;
+};
+
 // One SQLite file holds a whole workspace: schema version + migrations, foreign keys on, WAL journal, and one
 // transaction per import so a crash or a cancel leaves either all of an import or none of it.
 class Workspace {
  public:
-  static constexpr int kSchemaVersion = 1;
+  static constexpr int kSchemaVersion = 2;  // 2: power traces
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -86,6 +92,7 @@ class Workspace {
   std::vector<DeviceRecord> devices() const;
   std::vector<StoredRun> runs() const;  // ordered by device colour index, backend, dims, id
   std::vector<StoredResultSet> result_sets() const;
+  std::vector<StoredPowerTrace> power_traces() const;
 
   // Writes a consistent copy (VACUUM INTO). Refuses to overwrite an existing file.
   void save_as(const std::string& new_path) const;

@@ -198,7 +198,7 @@ class TestCli : public QObject {
     const QString ws = dir.filePath("w.bsw");
     Result r = cli({"import", ws, kPaper});
     QCOMPARE(r.code, 0);
-    QCOMPARE(r.out.count("imported "), 5);
+    QCOMPARE(r.out.count("imported "), 7);  // 5 run files + 2 current logs
     QVERIFY(r.out.contains("skipped") && r.out.contains("README.md"));  // not a data file
     r = cli({"import", ws, kPaper + "/cpu.json"});
     QCOMPARE(r.code, 0);

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "analysis/power.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace bs {
+namespace {
+
+const PowerChannel* find_channel(const PowerTrace& t, PowerQuantity q) {
+  for (const PowerChannel& c : t.channels)
+    if (c.quantity == q && c.values.size() == t.time_s.size()) return &c;
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<double> current_series(const PowerTrace& trace) {
+  const PowerChannel* c = find_channel(trace, PowerQuantity::Current);
+  return c ? c->values : std::vector<double>{};
+}
+
+std::vector<double> power_series(const PowerTrace& trace, std::optional<double> supply_v) {
+  if (const PowerChannel* p = find_channel(trace, PowerQuantity::Power)) return p->values;
+  const PowerChannel* i = find_channel(trace, PowerQuantity::Current);
+  if (!i) return {};
+  std::vector<double> out(i->values.size());
+  if (const PowerChannel* v = find_channel(trace, PowerQuantity::Voltage)) {
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = i->values[k] * v->values[k];
+    return out;
+  }
+  const auto volts = supply_v ? supply_v : trace.supply_voltage_v;
+  if (!volts) return {};
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = i->values[k] * *volts;
+  return out;
+}
+
+double percentile(std::vector<double> values, double q) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const double pos = std::clamp(q, 0.0, 100.0) / 100.0 * static_cast<double>(values.size() - 1);
+  const auto lo = static_cast<std::size_t>(pos);
+  const std::size_t hi = std::min(lo + 1, values.size() - 1);
+  return values[lo] + (values[hi] - values[lo]) * (pos - static_cast<double>(lo));
+}
+
+double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values) {
+  double sum = 0;
+  for (std::size_t k = 1; k < time_s.size() && k < values.size(); ++k)
+    sum += (time_s[k] - time_s[k - 1]) * (values[k] + values[k - 1]) / 2;
+  return sum;
+}
+
+TraceStats trace_stats(const PowerTrace& trace, std::optional<double> supply_v, std::optional<double> from_s,
+                       std::optional<double> to_s) {
+  std::size_t first = 0, last = trace.time_s.size();
+  if (from_s) first = static_cast<std::size_t>(std::lower_bound(trace.time_s.begin(), trace.time_s.end(), *from_s) - trace.time_s.begin());
+  if (to_s) last = static_cast<std::size_t>(std::upper_bound(trace.time_s.begin(), trace.time_s.end(), *to_s) - trace.time_s.begin());
+  TraceStats s;
+  if (first >= last) return s;
+  s.n = last - first;
+  s.duration_s = trace.time_s[last - 1] - trace.time_s[first];
+  const auto slice = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(first), v.begin() + static_cast<std::ptrdiff_t>(last)); };
+  const std::vector<double> current = current_series(trace);
+  if (!current.empty()) s.current_a = summarize(slice(current));
+  const std::vector<double> power = power_series(trace, supply_v);
+  if (!power.empty()) {
+    const std::vector<double> p = slice(power);
+    s.power_w = summarize(p);
+    s.power_p5 = percentile(p, 5);
+    s.power_p50 = percentile(p, 50);
+    s.power_p95 = percentile(p, 95);
+    s.power_p99 = percentile(p, 99);
+    s.energy_j = integrate_trapezoid(slice(trace.time_s), p);
+  }
+  return s;
+}
+
+double paper_flops_per_watt(double peak_flops, double supply_v, double max_current_a) {
+  if (!(supply_v > 0 && max_current_a > 0)) throw std::invalid_argument("supply voltage and maximum current must be > 0");
+  return peak_flops / (supply_v * max_current_a);
+}
+
+double constant_power_runtime_h(double nominal_v, double capacity_ah, double mean_power_w, double usable_fraction) {
+  if (!(nominal_v > 0 && capacity_ah > 0 && mean_power_w > 0 && usable_fraction > 0 && usable_fraction <= 1))
+    throw std::invalid_argument("battery: volts, capacity and power must be > 0 and the usable fraction in (0, 1]");
+  return nominal_v * capacity_ah * usable_fraction / mean_power_w;
+}
+
+}  // namespace bs

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Statistics of supply current/power logs, the paper's efficiency figure and its battery model.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/stats.h"
+#include "model/power_trace.h"
+
+namespace bs {
+
+// Power in W per sample: a power channel if the log has one, else current x voltage channel, else current x
+// `supply_v` (or the trace's own supply voltage). Empty when none of these is available.
+std::vector<double> power_series(const PowerTrace& trace, std::optional<double> supply_v = std::nullopt);
+std::vector<double> current_series(const PowerTrace& trace);  // empty without a current channel
+
+// Linear-interpolated percentile q in [0, 100] of `values` (copied and partially sorted).
+double percentile(std::vector<double> values, double q);
+
+// Trapezoidal integral of `values` over irregular timestamps `time_s` (J for W).
+double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values);
+
+struct TraceStats {
+  std::size_t n = 0;
+  double duration_s = 0;
+  std::optional<Summary> current_a;
+  std::optional<Summary> power_w;
+  double power_p5 = 0, power_p50 = 0, power_p95 = 0, power_p99 = 0;
+  double energy_j = 0;
+};
+// Over [from_s, to_s] (seconds from the start of the trace; unset = whole trace).
+TraceStats trace_stats(const PowerTrace& trace, std::optional<double> supply_v = std::nullopt,
+                       std::optional<double> from_s = std::nullopt, std::optional<double> to_s = std::nullopt);
+
+// The paper's GFLOPS/W: peak FLOPS / (supply V x maximum current), in FLOPS per W.
+double paper_flops_per_watt(double peak_flops, double supply_v, double max_current_a);
+
+// The paper's battery model: t = V_nominal x capacity / P_mean (constant power), in hours. `usable_fraction` is
+// the depth of discharge a LiPo is allowed (1 in the paper).
+double constant_power_runtime_h(double nominal_v, double capacity_ah, double mean_power_w, double usable_fraction = 1.0);
+
+}  // namespace bs
