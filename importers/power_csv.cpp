@@ -51,19 +51,20 @@ Column classify(std::string_view raw) {
     }
   }
   const auto has = [&](const char* word) { return n.find(word) != std::string::npos; };
-  if (n == "t" || has("time") || has("second") || n == "millis" || has("elapsed")) {
+  // English names plus the German ones that decimal-comma spreadsheet exports often carry.
+  if (n == "t" || has("time") || has("second") || n == "millis" || has("elapsed") || has("zeit")) {
     col.role = Role::Time;
     if (n == "millis" || unit == "ms") col.scale = 1e-3;
     else if (unit == "us" || unit == "\xC2\xB5s") col.scale = 1e-6;
-  } else if (n == "i" || has("current") || n == "a" || n == "ma") {
+  } else if (n == "i" || has("current") || n == "a" || n == "ma" || has("strom")) {
     col.role = Role::Current;
     if (unit == "ma" || n == "ma") col.scale = 1e-3;
     else if (unit == "ua" || unit == "\xC2\xB5" "a") col.scale = 1e-6;
-  } else if (n == "v" || has("voltage") || has("bus") || n == "mv") {
+  } else if (n == "v" || has("voltage") || has("bus") || n == "mv" || has("spannung")) {
     col.role = Role::Voltage;
     if (unit == "mv" || n == "mv") col.scale = 1e-3;
     if (has("shunt")) col.role = Role::Ignore;  // INA219's shunt drop is not the supply voltage
-  } else if (n == "p" || has("power") || n == "w" || n == "mw") {
+  } else if (n == "p" || has("power") || n == "w" || n == "mw" || has("leistung")) {
     col.role = Role::Power;
     if (unit == "mw" || n == "mw") col.scale = 1e-3;
   }
@@ -232,9 +233,15 @@ ImportBatch parse_power_csv(std::string_view text, const std::string& file, cons
         if (decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
         double v = 0;
         const auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), v);
-        if (ec != std::errc() || ptr != cell.data() + cell.size() || cell.empty() || !std::isfinite(v))
+        if (ec != std::errc() || ptr != cell.data() + cell.size() || cell.empty() || !std::isfinite(v)) {
+          const bool other_separator = raw.find_first_of(sep == ',' ? ";\t" : sep == ';' ? "\t" : ";") != std::string_view::npos;
+          if (other_separator)
+            throw ImportError(ImportErrorCategory::Syntax, {file, lines.number(), start + 1, columns[col].name},
+                              "mixed separators: '" + std::string(raw) + "' in a file whose header uses '" +
+                                  (sep == '\t' ? std::string("tab") : std::string(1, sep)) + "'");
           throw ImportError(ImportErrorCategory::InvalidValue, {file, lines.number(), start + 1, columns[col].name},
                             cell.empty() ? "empty cell" : "'" + cell + "' is not a number");
+        }
         v *= columns[col].scale;
         if (col == time_col) t = v;
         else trace.channels[static_cast<std::size_t>(channel_of[col])].values.push_back(v);

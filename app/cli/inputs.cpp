@@ -54,6 +54,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     const Workspace ws(paths[0]);
     for (auto& r : ws.runs()) data.runs.push_back(std::move(r.run));
     for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
+    for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
     return data;
   }
   for (const InputFile& in : expand_inputs(paths)) {

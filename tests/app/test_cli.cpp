@@ -177,6 +177,35 @@ class TestCli : public QObject {
     }
   }
 
+  void power_efficiency_and_battery_reproduce_the_paper() {
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("paper.bsw");
+    QCOMPARE(cli({"import", ws, kPaper, "--quiet"}).code, 0);
+    const QJsonArray traces = QJsonDocument::fromJson(cli({"power", ws, "--json"}).out).object()["traces"].toArray();
+    QCOMPARE(traces.size(), 2);
+    for (const auto& v : traces) {
+      const QJsonObject t = v.toObject();
+      const double w = t["power_w"].toObject()["mean"].toDouble();
+      QCOMPARE(rounded(w, 1.0), t["platform"].toString() == "NUC" ? 40.52 : 9.48);
+      QCOMPARE(t["origin"].toString(), QString("reconstructed"));
+    }
+    const QJsonArray eff = QJsonDocument::fromJson(cli({"efficiency", ws, "--json"}).out).object()["platforms"].toArray();
+    QCOMPARE(eff.size(), 2);
+    for (const auto& v : eff) {
+      const QJsonObject e = v.toObject();
+      QCOMPARE(rounded(e["flops_per_watt_paper"].toDouble(), 1e9), e["platform"].toString() == "NUC" ? 104.64 : 41.26);
+    }
+    const Result nuc = cli({"battery", "--power-log", kPaper + "/power/nuc-current.csv", "--json"});
+    QCOMPARE(nuc.code, 0);
+    QCOMPARE(rounded(QJsonDocument::fromJson(nuc.out).object()["runtime_min"].toDouble(), 1.0), 84.36);
+    const Result jetson = cli({"battery", "--volts", "14.8", "--capacity-mah", "3850", "--power-log",
+                               kPaper + "/power/jetson-current.csv"});
+    QVERIFY2(jetson.out.contains("360.48 min"), jetson.out.constData());
+    QCOMPARE(cli({"battery", "--watts", "0"}).code, 2);
+    QCOMPARE(cli({"battery"}).code, 2);
+    QCOMPARE(cli({"power", kPaper + "/cpu.json"}).code, 1);  // no power logs there
+  }
+
   void synth_frame_writes_raw_sidecar_and_truth() {
     QTemporaryDir dir;
     const QString prefix = dir.filePath("frames/chart");

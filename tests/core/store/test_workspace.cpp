@@ -213,6 +213,47 @@ class TestWorkspace : public QObject {
     QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, ws.save_as(copy));
   }
 
+  void power_traces_round_trip_and_v1_migrates() {
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("w.bsw").toStdString();
+    bs::PowerTrace t;
+    t.platform = "NUC";
+    t.label = "load";
+    t.supply_voltage_v = 16;
+    t.time_s = {0, 0.1, 0.25};
+    t.channels.push_back({"current_A", bs::PowerQuantity::Current, {2.5, 2.6, 1.0 / 3.0}});
+    t.channels.push_back({"power_W", bs::PowerQuantity::Power, {40, 41.6, 16.0 / 3.0}});
+    t.provenance.origin = bs::DataOrigin::Reconstructed;
+    {
+      bs::Workspace ws(path);
+      ws.add_import(batch_of({make_run("A", 4, 2, 1)}), "runs");
+      // Make it a version-1 workspace, as an older BenchScope left it: no power tables, user_version 1.
+      QCOMPARE(QProcess::execute("sqlite3", {QString::fromStdString(path),
+                                             "DROP TABLE power_channels; DROP TABLE power_traces; PRAGMA user_version = 1;"}),
+               0);
+    }
+    bs::Workspace ws(path);  // migrates 1 -> 2 and keeps the data
+    QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);
+    QCOMPARE(ws.runs().size(), std::size_t{1});
+    bs::ImportBatch b;
+    b.format = "power-csv";
+    b.power_traces.push_back(t);
+    ws.add_import(b, "trace");
+    const auto traces = ws.power_traces();
+    QCOMPARE(traces.size(), std::size_t{1});
+    const bs::PowerTrace& r = traces[0].trace;
+    QCOMPARE(r.platform, std::string("NUC"));
+    QCOMPARE(*r.supply_voltage_v, 16.0);
+    QVERIFY(r.time_s == t.time_s);
+    QCOMPARE(r.channels.size(), std::size_t{2});
+    QVERIFY(r.channels[0].values == t.channels[0].values);  // bit-exact
+    QCOMPARE(r.channels[1].quantity, bs::PowerQuantity::Power);
+    QCOMPARE(r.provenance.origin, bs::DataOrigin::Reconstructed);
+    ws.remove_import(traces[0].import_id);
+    QCOMPARE(ws.power_traces().size(), std::size_t{0});
+    QCOMPARE(ws.integrity_check(), std::string("ok"));
+  }
+
   void content_hash_depends_on_bytes() {
     QTemporaryDir dir;
     auto write = [&](const char* name, const char* text) {
