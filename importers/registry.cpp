@@ -10,6 +10,7 @@
 #include "importer.h"
 #include "power_csv.h"
 #include "run_json.h"
+#include "tegrastats.h"
 
 namespace bs {
 namespace {
@@ -20,6 +21,7 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<GoogleBenchmarkJsonImporter>());
   list.push_back(std::make_unique<ClpeakTextImporter>());
   list.push_back(std::make_unique<PowerCsvImporter>());
+  list.push_back(std::make_unique<TegrastatsImporter>());
   return list;
 }
 
