@@ -8,6 +8,7 @@
 
 #include "flops_plot.h"
 #include "kernel_runner.h"
+#include "power_view.h"
 #include "main_window.h"
 #include "peak_table.h"
 #include "workspace_tree.h"
@@ -68,6 +69,8 @@ int main(int argc, char** argv) {
       window.peak_table()->grab().save(dir + "/peak-table.png");
       window.tree()->grab().save(dir + "/workspace-tree.png");
       window.kernel_runner()->grab().save(dir + "/kernel-runner.png");
+      window.power_view()->resize(window.flops_plot()->size());
+      window.power_view()->grab().save(dir + "/power-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

@@ -21,6 +21,8 @@
 #include "kernel_runner.h"
 #include "run_json.h"
 #include "peak_table.h"
+#include "power_view.h"
+#include <QTabWidget>
 #include "recent_files.h"
 #include "workspace_tree.h"
 
@@ -32,9 +34,14 @@ MainWindow::MainWindow(QWidget* parent)
       plot_(new FlopsPlot(this)),
       peaks_(new PeakTableView(this)),
       importer_(new ImportController(this)),
-      runner_(new KernelRunner(this)) {
+      runner_(new KernelRunner(this)),
+      power_(new PowerView(this)) {
   setAcceptDrops(true);
-  setCentralWidget(plot_);
+  auto* views = new QTabWidget(this);
+  views->addTab(plot_, tr("FLOPS"));
+  views->addTab(power_, tr("Power"));
+  views->setTabToolTip(1, tr("Current/power logs: statistics, GFLOPS/W and battery life"));
+  setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
   tree_dock->setWidget(tree_);
@@ -182,6 +189,14 @@ void MainWindow::show_import_report(const ImportReport& r) {
 void MainWindow::reload() {
   runs_ = workspace_ ? workspace_->runs() : std::vector<StoredRun>{};
   tree_->set_runs(runs_);
+  std::vector<FlopsRun> all;
+  std::vector<std::pair<std::string, int>> platform_colors;
+  for (const StoredRun& r : runs_) {
+    all.push_back(r.run);
+    platform_colors.emplace_back(r.run.platform, r.color_index);
+  }
+  power_->set_data(workspace_ ? workspace_->power_traces() : std::vector<StoredPowerTrace>{}, bs::peak_table(all),
+                   platform_colors);
   refresh_views();
   update_title();
 }

@@ -13,6 +13,7 @@ class PeakTableView;
 class ImportController;
 class RecentFiles;
 class KernelRunner;
+class PowerView;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -33,6 +34,7 @@ class MainWindow : public QMainWindow {
   FlopsPlot* flops_plot() const { return plot_; }
   PeakTableView* peak_table() const { return peaks_; }
   KernelRunner* kernel_runner() const { return runner_; }
+  PowerView* power_view() const { return power_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -60,6 +62,7 @@ class MainWindow : public QMainWindow {
   ImportController* importer_;
   RecentFiles* recent_ = nullptr;
   KernelRunner* runner_;
+  PowerView* power_;
 };
 
 }  // namespace bs::ui
