@@ -23,7 +23,8 @@ QString platform_name(const PowerTrace& t) {
 }  // namespace
 
 PowerView::PowerView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)), table_(new QTableWidget(this)) {
-  auto* hint = new QLabel(tr("Zoom or pan the time axis to choose the range the table summarises; R resets"), this);
+  auto* hint = new QLabel(tr("Zoom (wheel) or pan (drag) the time axis to choose the range the table summarises; "
+                              "double-click shows the whole log"), this);
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   plot_->axisRect()->setRangeZoom(Qt::Horizontal);
   plot_->axisRect()->setRangeDrag(Qt::Horizontal);

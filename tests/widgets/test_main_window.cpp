@@ -7,6 +7,8 @@
 #include "import_controller.h"
 #include "main_window.h"
 #include "peak_table.h"
+#include "power_view.h"
+#include <QTableWidget>
 #include "workspace_tree.h"
 
 class TestMainWindow : public QObject {
@@ -50,6 +52,28 @@ class TestMainWindow : public QObject {
     QVERIFY(w.flops_plot()->plot()->yAxis->ticker().dynamicCast<QCPAxisTickerLog>().isNull());
     w.flops_plot()->set_log_y(true);
     QVERIFY(!w.flops_plot()->plot()->yAxis->ticker().dynamicCast<QCPAxisTickerLog>().isNull());
+  }
+
+  void power_tab_shows_the_paper_numbers() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    bs::ui::PowerView* view = w.power_view();
+    QCOMPARE(view->trace_count(), 2);
+    QCOMPARE(view->plot()->graphCount(), 2);
+    QStringList rows;
+    for (int r = 0; r < view->table()->rowCount(); ++r) {
+      QStringList cells;
+      for (int c = 0; c < view->table()->columnCount(); ++c) cells << view->table()->item(r, c)->text();
+      rows << cells.join(" | ");
+    }
+    const QString all = rows.join("\n");
+    QVERIFY2(all.contains("40.52") && all.contains("104.64") && all.contains("84.36"), qPrintable(all));
+    QVERIFY2(all.contains("9.48") && all.contains("41.26") && all.contains("360.48"), qPrintable(all));
+    // Zooming into the first 10 s changes the statistics to that range.
+    view->plot()->xAxis->setRange(0, 10);
+    QVERIFY(view->table()->item(0, 1)->text() != "1,200");
   }
 
   void hover_reads_out_the_nearest_point() {
