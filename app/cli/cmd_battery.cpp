@@ -50,12 +50,14 @@ int run_battery(const std::vector<std::string>& raw, std::ostream& out) {
         << '\n';
     return 0;
   }
+  char extra_note[64] = "";
+  if (extra > 0) std::snprintf(extra_note, sizeof extra_note, " incl. %g W extra load", extra);
   char line[512];
   std::snprintf(line, sizeof line,
                 "battery %.1f V x %.0f mAh = %.2f Wh (usable %.0f %%)\nload %.2f W (%s)%s\nruntime %.2f min (%.2f h), "
                 "constant-power model: t = V x capacity / P\n",
                 volts, capacity_mah, volts * capacity_mah / 1000, dod * 100, total, source.c_str(),
-                extra > 0 ? (" incl. " + std::to_string(extra).substr(0, 6) + " W extra").c_str() : "", hours * 60, hours);
+                extra_note, hours * 60, hours);
   out << line;
   return 0;
 }

@@ -53,11 +53,14 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out) {
       out << line;
     }
     if (s.power_w) {
+      // Say which supply voltage turned current into power, when one did.
+      char supply_note[64] = "";
+      if (volts && s.current_a) std::snprintf(supply_note, sizeof supply_note, " at %g V", *volts);
       std::snprintf(line, sizeof line,
                     "  power    %.2f \xC2\xB1 %.2f W (n = %zu)%s, p5 %.2f / p50 %.2f / p95 %.2f / p99 %.2f W, max %.2f W\n"
                     "  energy   %.1f J (%.4f Wh)\n",
                     s.power_w->mean, s.power_w->sd, s.power_w->n,
-                    volts && !s.current_a ? "" : volts ? (" at " + std::to_string(*volts).substr(0, 5) + " V").c_str() : "",
+                    supply_note,
                     s.power_p5, s.power_p50, s.power_p95, s.power_p99, s.power_w->max, s.energy_j, s.energy_j / 3600);
       out << line;
     } else {
