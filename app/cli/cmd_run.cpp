@@ -65,13 +65,13 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   if (!quiet) err << '\n';
   if (result.cancelled) err << "benchscope-cli: cancelled; keeping the " << result.runs.size() << " partial run(s)\n";
 
+  if (result.runs.empty()) {
+    err << "benchscope-cli: error: no point completed; nothing written\n";
+    return 1;
+  }
   if (const auto path = args.value("--out")) {
     save_run_json(*path, result.runs);
     if (!quiet) err << "benchscope-cli: wrote " << *path << '\n';
-  }
-  if (result.runs.empty()) {
-    err << "benchscope-cli: error: no point completed\n";
-    return 1;
   }
   if (const auto ws_path = args.value("--workspace")) {
     ImportBatch batch;
