@@ -26,6 +26,13 @@ std::string summary(const ImportBatch& b) {
   return s + " (" + b.format + ")";
 }
 
+// "already imported on <date> (skipped)", naming the earlier file when it had another name.
+std::string duplicate_note(const Workspace& ws, const std::string& hash, const WorkspaceError& e) {
+  for (const ImportRecord& r : ws.imports())
+    if (r.content_hash == hash) return "already imported on " + r.imported_at + " as " + r.path + " (skipped)";
+  return std::string(e.what()) + " (skipped)";
+}
+
 int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   const ParsedArgs args = parse_args(raw, {"--keep-going", "--quiet"}, {});
   if (args.positional.size() < 2) throw UsageError("import needs a workspace and at least one file or folder");
@@ -51,8 +58,10 @@ int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostr
     }
   }
   if (failures > 0 && !keep_going) {
-    err << "benchscope-cli: error: nothing imported (" << failures << (failures == 1 ? " file" : " files")
-        << " failed; --keep-going imports the others)\n";
+    // stderr keeps exactly one line per failed file (scripts grep it); the hint goes with the normal output.
+    if (!quiet)
+      out << "nothing imported: " << failures << (failures == 1 ? " file" : " files")
+          << " failed (--keep-going imports the others)\n";
     return 1;
   }
   if (parsed.empty()) {
@@ -62,12 +71,14 @@ int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostr
 
   Workspace ws(workspace_path);
   for (const Parsed& p : parsed) {
+    const std::string hash = file_content_hash(p.path);
     try {
-      ws.add_import(p.batch, file_content_hash(p.path), &cancel);
+      ws.add_import(p.batch, hash, &cancel);
       if (!quiet) out << "imported " << p.path << ": " << summary(p.batch) << '\n';
     } catch (const WorkspaceError& e) {
       if (e.kind() != WorkspaceError::Kind::Constraint) throw;
-      if (!quiet) out << "skipped " << p.path << ": " << e.what() << '\n';
+      // The same bytes are already there (under any name): not a failure, the data is in the workspace.
+      if (!quiet) out << p.path << ": " << duplicate_note(ws, hash, e) << '\n';
     }
   }
   return failures > 0 ? 1 : 0;

@@ -142,6 +142,7 @@ class TestCli : public QObject {
     QCOMPARE(r.code, 1);
     QVERIFY(!QFile::exists(fresh));
     const QList<QByteArray> lines = r.err.trimmed().split('\n');
+    QCOMPARE(lines.size(), 1);  // one line per failed file, nothing else on stderr
     QVERIFY2(lines[0].contains("bad-input.json"), r.err.constData());
     QVERIFY(lines[0].startsWith("benchscope-cli: error: "));
     // An existing workspace keeps its bytes.
@@ -231,15 +232,19 @@ class TestCli : public QObject {
     QVERIFY(r.out.contains("skipped") && r.out.contains("README.md"));  // not a data file
     r = cli({"import", ws, kPaper + "/cpu.json"});
     QCOMPARE(r.code, 0);
-    QVERIFY(r.out.contains("already imported"));
+    QVERIFY2(r.out.contains("already imported on 20") && r.out.contains("(skipped)"), r.out.constData());
+    QVERIFY(!r.out.contains("imported " + kPaper.toUtf8()));
     QFile bad(dir.filePath("bad.json"));
     QVERIFY(bad.open(QIODevice::WriteOnly));
     bad.write("{\"format\": \"benchscope-run\"");
     bad.close();
     QFile::copy(BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/gtx1080ti.txt", dir.filePath("clpeak.txt"));
+    const QByteArray before = bytes_of(ws);
     r = cli({"import", ws, dir.filePath("bad.json"), dir.filePath("clpeak.txt")});
     QCOMPARE(r.code, 1);
-    QVERIFY(!r.out.contains("imported"));  // all or nothing by default
+    QVERIFY(!r.out.contains("imported " + dir.filePath("clpeak.txt").toUtf8()));  // all or nothing by default
+    QCOMPARE(bytes_of(ws), before);
+    QCOMPARE(r.err.trimmed().split('\n').size(), 1);
     r = cli({"import", ws, dir.filePath("bad.json"), dir.filePath("clpeak.txt"), "--keep-going"});
     QCOMPARE(r.code, 1);
     QVERIFY(r.out.contains("imported") && r.out.contains("clpeak.txt"));
