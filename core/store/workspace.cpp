@@ -2,11 +2,15 @@
 #include "store/workspace.h"
 
 #include <chrono>
-#include <cstdio>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -41,9 +45,50 @@ void check_sqlite_header(const std::string& path) {
   if (f.gcount() < 16 || std::string_view(magic, 16) != std::string_view("SQLite format 3\0", 16))
     throw WorkspaceError(WorkspaceError::Kind::NotAWorkspace,
                          path + ": is not a BenchScope workspace (not an SQLite database)");
+  // A truncated file (a copy cut short, a full disk) can still open, and SQLite only notices when a query happens
+  // to read a missing page. The header records the page size (offset 16, big-endian, 1 meaning 65536) and, when
+  // the "valid-for" counter (offset 92) equals the change counter (offset 24), the page count (offset 28): a file
+  // shorter than that is damaged. A longer file is fine (SQLite does not always shrink it).
+  unsigned char hdr[100] = {};
+  std::memcpy(hdr, magic, sizeof magic);
+  f.read(reinterpret_cast<char*>(hdr) + 16, 84);
+  if (f.gcount() < 84)
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt, path + ": workspace file is truncated (header incomplete)");
+  const auto be32 = [&](int at) {
+    return (std::uint32_t{hdr[at]} << 24) | (std::uint32_t{hdr[at + 1]} << 16) | (std::uint32_t{hdr[at + 2]} << 8) |
+           std::uint32_t{hdr[at + 3]};
+  };
+  std::uint64_t page_size = (std::uint32_t{hdr[16]} << 8) | hdr[17];
+  if (page_size == 1) page_size = 65536;
+  const std::uint64_t pages = be32(28);
+  if (be32(92) != be32(24) || pages == 0 || page_size < 512) return;  // no reliable size claim to check
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size < pages * page_size)
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt,
+                         path + ": workspace file is truncated (" + std::to_string(size) + " bytes, its header says " +
+                             std::to_string(pages * page_size) + ")");
 }
 
 constexpr int kCancelCheckRows = 1000;
+
+// Measurement values are JSON text. JSON has no NaN or infinity (nlohmann writes null), so those are written as
+// the strings "nan", "inf", "-inf": a repetition that produced no number keeps its place instead of vanishing.
+nlohmann::json number_to_json(double v) {
+  if (std::isfinite(v)) return v;
+  return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+}
+
+std::optional<double> number_from_json(const nlohmann::json& j) {
+  if (j.is_number()) return j.get<double>();
+  if (j.is_string()) {
+    const auto& s = j.get_ref<const std::string&>();
+    if (s == "nan") return std::numeric_limits<double>::quiet_NaN();
+    if (s == "inf") return std::numeric_limits<double>::infinity();
+    if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  }
+  return std::nullopt;
+}
 
 }  // namespace
 
@@ -86,7 +131,7 @@ Workspace::Workspace(const std::string& path) {
     }
     store::migrate(db, static_cast<int>(version));
     Statement meta(db, "INSERT OR REPLACE INTO meta(key, value) VALUES (?, ?)");
-    if (!existed) {
+    if (version == 0) {  // a new file, or an empty one that only carries the application id
       meta.bind(1, std::string_view("created_at")).bind(2, std::string_view(utc_now_iso())).run();
       meta.bind(1, std::string_view("created_by")).bind(2, std::string_view("benchscope " BENCHSCOPE_VERSION)).run();
     }
@@ -195,13 +240,15 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
         .run();
     const std::int64_t set_id = sqlite3_last_insert_rowid(db.get());
     for (const Measurement& m : set.measurements) {
+      nlohmann::json values = nlohmann::json::array();
+      for (double v : m.values) values.push_back(number_to_json(v));
       nlohmann::json aggregates = nlohmann::json::array();
-      for (const auto& [name, value] : m.reported_aggregates) aggregates.push_back({name, value});
+      for (const auto& [name, value] : m.reported_aggregates) aggregates.push_back({name, number_to_json(value)});
       m_st.bind(1, set_id)
           .bind(2, std::string_view(m.name))
           .bind(3, std::string_view(m.metric))
           .bind(4, std::string_view(m.unit))
-          .bind(5, std::string_view(nlohmann::json(m.values).dump()))
+          .bind(5, std::string_view(values.dump()))
           .bind(6, std::string_view(aggregates.dump()))
           .run();
       poll();
@@ -327,12 +374,12 @@ std::vector<StoredResultSet> Workspace::result_sets() const {
     const auto vals = nlohmann::json::parse(m.text(4), nullptr, false);
     if (vals.is_array())
       for (const auto& v : vals)
-        if (v.is_number()) meas.values.push_back(v.get<double>());
+        if (const auto x = number_from_json(v)) meas.values.push_back(*x);
     const auto aggs = nlohmann::json::parse(m.text(5), nullptr, false);
     if (aggs.is_array())
       for (const auto& a : aggs)
-        if (a.is_array() && a.size() == 2 && a[0].is_string() && a[1].is_number())
-          meas.reported_aggregates.emplace_back(a[0].get<std::string>(), a[1].get<double>());
+        if (a.is_array() && a.size() == 2 && a[0].is_string())
+          if (const auto x = number_from_json(a[1])) meas.reported_aggregates.emplace_back(a[0].get<std::string>(), *x);
     out[it->second].set.measurements.push_back(std::move(meas));
   }
   return out;
@@ -373,9 +420,14 @@ void Workspace::save_as(const std::string& new_path) const {
   std::error_code ec;
   if (std::filesystem::exists(new_path, ec))
     throw WorkspaceError(WorkspaceError::Kind::Io, new_path + ": already exists; choose another name");
-  Statement st(impl_->db, "VACUUM INTO ?");
-  st.bind(1, std::string_view(new_path));
-  st.run();
+  try {
+    Statement st(impl_->db, "VACUUM INTO ?");
+    st.bind(1, std::string_view(new_path));
+    st.run();
+  } catch (const WorkspaceError& e) {
+    // Name the target: the failure is about where the copy goes (directory missing, no permission, disk full).
+    throw WorkspaceError(e.kind(), new_path + ": cannot save a copy of the workspace here (" + e.what() + ")");
+  }
 }
 
 std::string Workspace::integrity_check() const {
@@ -383,40 +435,6 @@ std::string Workspace::integrity_check() const {
   std::string result;
   while (st.step()) result += (result.empty() ? "" : "\n") + st.text(0);
   return result;
-}
-
-namespace {
-
-constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;  // FNV-1a, 64 bit
-
-std::uint64_t fnv1a(std::uint64_t h, const char* data, std::size_t size) {
-  for (std::size_t i = 0; i < size; ++i) {
-    h ^= static_cast<unsigned char>(data[i]);
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-std::string hex(std::uint64_t h) {
-  char out[17];
-  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
-  return out;
-}
-
-}  // namespace
-
-std::string content_hash(std::string_view bytes) { return hex(fnv1a(kFnvOffset, bytes.data(), bytes.size())); }
-
-std::string file_content_hash(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw std::runtime_error(path + ": cannot read file to hash it");
-  std::uint64_t h = kFnvOffset;
-  char buf[1 << 16];
-  while (f.read(buf, sizeof buf) || f.gcount() > 0) {
-    h = fnv1a(h, buf, static_cast<std::size_t>(f.gcount()));
-    if (!f) break;
-  }
-  return hex(h);
 }
 
 }  // namespace bs
