@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <map>
 
 #include "json_access.h"
@@ -16,14 +17,15 @@ using json_access::json;
 using json_access::Reader;
 
 // Keys of a benchmark row that are bookkeeping, not user counters.
-constexpr std::array<std::string_view, 20> kReservedKeys = {
-    "name",       "family_index", "per_family_instance_index", "run_name",        "run_type",
-    "repetitions", "repetition_index", "threads",              "iterations",      "real_time",
-    "cpu_time",   "time_unit",    "aggregate_name",            "aggregate_unit",  "error_occurred",
-    "error_message", "label",     "big_o",                     "cpu_coefficient", "real_coefficient"};
+constexpr std::array<std::string_view, 24> kReservedKeys = {
+    "name",           "family_index",    "per_family_instance_index", "run_name",       "run_type",
+    "repetitions",    "repetition_index", "threads",                  "iterations",     "real_time",
+    "cpu_time",       "time_unit",       "aggregate_name",            "aggregate_unit", "error_occurred",
+    "error_message",  "skipped",         "skip_message",              "label",          "big_o",
+    "cpu_coefficient", "real_coefficient", "rms",                     "memory"};
 
 bool is_reserved(std::string_view key) {
-  return key == "rms" || std::find(kReservedKeys.begin(), kReservedKeys.end(), key) != kReservedKeys.end();
+  return std::find(kReservedKeys.begin(), kReservedKeys.end(), key) != kReservedKeys.end();
 }
 
 std::string lower(std::string s) {
@@ -31,13 +33,37 @@ std::string lower(std::string s) {
   return s;
 }
 
-// Google Benchmark stores counters already finalised (rates divided by time), so only the unit is inferred.
-std::string counter_unit(const std::string& name) {
+struct CounterUnit {
+  std::string unit;
+  double scale = 1;  // to SI
+};
+
+// Google Benchmark stores counters already finalised (rates divided by time), so only the unit is inferred from
+// the name. A FLOP counter is a rate when its name says so ("FLOPS", "flops_per_second", "GFLOP/s"); a leading
+// G/M/T/K prefix on it ("GFLOPS") is taken as a decimal multiple.
+CounterUnit counter_unit(const std::string& name) {
   const std::string n = lower(name);
-  if (n == "bytes_per_second") return "B/s";
-  if (n == "items_per_second") return "1/s";
-  if (n.find("flop") != std::string::npos) return "FLOP/s";
-  return "";
+  if (n == "bytes_per_second") return {"B/s", 1};
+  if (n == "items_per_second") return {"1/s", 1};
+  const auto flop = n.find("flop");
+  if (flop != std::string::npos) {
+    const bool rate = n.find("flops") != std::string::npos || n.find("per_second") != std::string::npos ||
+                      n.find("/s") != std::string::npos || n.find("_s") == flop + 4;
+    if (!rate) return {"", 1};  // a count of operations, not a rate
+    double scale = 1;
+    if (flop > 0 && (flop == 1 || !std::isalnum(static_cast<unsigned char>(n[flop - 2])))) {
+      switch (n[flop - 1]) {
+        case 'k': scale = 1e3; break;
+        case 'm': scale = 1e6; break;
+        case 'g': scale = 1e9; break;
+        case 't': scale = 1e12; break;
+        case 'p': scale = 1e15; break;
+        default: break;
+      }
+    }
+    return {"FLOP/s", scale};
+  }
+  return {"", 1};
 }
 
 double time_scale(const Reader& r, const std::string& unit, const std::string& at) {
@@ -46,6 +72,30 @@ double time_scale(const Reader& r, const std::string& unit, const std::string& a
   if (unit == "ms") return 1e-3;
   if (unit == "s") return 1.0;
   r.fail(ImportErrorCategory::InvalidValue, at, "unknown time_unit '" + unit + "' (expected ns, us, ms or s)");
+}
+
+// Google Benchmark's JSON reporter prints non-finite doubles as bare NaN / Infinity, which is not JSON. Each such
+// token outside strings becomes a string of the same length (NaN -> "a"), so byte offsets and therefore error
+// locations stay exact, and the row reader reports the field as not finite.
+std::size_t quote_non_finite_tokens(std::string& text) {
+  std::size_t replaced = 0;
+  constexpr std::array<std::string_view, 4> tokens = {"-Infinity", "Infinity", "-NaN", "NaN"};
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '"') {
+      for (++i; i < text.size() && text[i] != '"'; ++i)
+        if (text[i] == '\\') ++i;
+      continue;
+    }
+    for (std::string_view token : tokens) {
+      if (std::string_view(text).substr(i, token.size()) != token) continue;
+      text[i] = '"';
+      text[i + token.size() - 1] = '"';
+      i += token.size() - 1;
+      ++replaced;
+      break;
+    }
+  }
+  return replaced;
 }
 
 class MeasurementTable {
@@ -66,98 +116,153 @@ class MeasurementTable {
   std::vector<Measurement> list_;
 };
 
+bool flag(const json& row, const char* key) {
+  const auto it = row.find(key);
+  return it != row.end() && it->is_boolean() && it->get<bool>();
+}
+
+ResultSet result_set_from_context(const Reader& r, const json& context, const std::string& file) {
+  ResultSet set;
+  set.platform = r.optional_string(context, "/context", "host_name");
+  if (set.platform.empty()) set.platform = "unknown host";
+  set.device = "CPU";
+  const auto cpus = r.optional_number(context, "/context", "num_cpus");
+  const auto mhz = r.optional_number(context, "/context", "mhz_per_cpu");
+  if (cpus && mhz && *cpus > 0 && *mhz > 0)
+    set.device += " (" + std::to_string(std::llround(*cpus)) + " x " + std::to_string(std::llround(*mhz)) + " MHz)";
+  set.device_kind = DeviceKind::Cpu;
+  set.backend = "Google Benchmark";
+  set.source_format = "google-benchmark-json";
+  set.provenance.origin = DataOrigin::Measured;
+  set.provenance.host = set.platform == "unknown host" ? std::string() : set.platform;
+  set.provenance.date = r.optional_string(context, "/context", "date");
+  set.provenance.tool = "google-benchmark";
+  if (const json* v = r.optional(context, "library_version"); v && v->is_string() && !v->get<std::string>().empty())
+    set.provenance.tool += " " + v->get<std::string>();
+  std::string note = "executable: " + r.optional_string(context, "/context", "executable", "unknown") +
+                     ", library build type: " + r.optional_string(context, "/context", "library_build_type", "unknown");
+  if (const json* scaling = r.optional(context, "cpu_scaling_enabled"); scaling && scaling->is_boolean())
+    note += scaling->get<bool>() ? ", CPU frequency scaling was on (timings may be noisy)" : ", CPU scaling off";
+  set.provenance.note = note;
+  set.provenance.source_file = file;
+  return set;
+}
+
 }  // namespace
 
 int GoogleBenchmarkJsonImporter::sniff(std::string_view head, std::string_view) const {
   const bool benchmarks = head.find("\"benchmarks\"") != std::string_view::npos;
   const bool context = head.find("\"context\"") != std::string_view::npos;
+  const bool machine = head.find("\"num_cpus\"") != std::string_view::npos ||
+                       head.find("\"library_build_type\"") != std::string_view::npos ||
+                       head.find("\"mhz_per_cpu\"") != std::string_view::npos;
   if (benchmarks && context) return 90;
-  if (context && (head.find("\"num_cpus\"") != std::string_view::npos ||
-                  head.find("\"library_build_type\"") != std::string_view::npos))
-    return 80;
+  if (context && machine) return 80;
+  if (benchmarks && (head.find("\"run_type\"") != std::string_view::npos ||
+                     head.find("\"cpu_time\"") != std::string_view::npos))
+    return 60;
   return 0;
 }
+
+bool GoogleBenchmarkJsonImporter::usual_extension(std::string_view path) const { return path.ends_with(".json"); }
 
 ImportBatch GoogleBenchmarkJsonImporter::parse(const std::string& path, const ImportLimits& limits,
                                                const CancelToken& cancel) const {
   const std::string text = read_whole_file(path, limits.max_json_bytes);
   cancel.throw_if_cancelled();
-  return parse_google_benchmark_json(text, path, limits);
+  return parse_google_benchmark_json(text, path, limits, &cancel);
 }
 
-ImportBatch parse_google_benchmark_json(std::string_view text, const std::string& file, const ImportLimits& limits) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-  const json doc = json_access::parse(text, file, limits.max_json_depth);
-  const Reader r(file);
+ImportBatch parse_google_benchmark_json(std::string_view original, const std::string& file,
+                                        const ImportLimits& limits, const CancelToken* cancel) {
+  if (original.starts_with("\xEF\xBB\xBF")) original.remove_prefix(3);
+  std::string text(original);
+  quote_non_finite_tokens(text);
+  const json doc = json_access::parse(text, file, limits, cancel);
+  const Reader r(file, text);
   r.require_object(doc, "");
   const json& context = r.require_object(r.require(doc, "", "context"), "/context");
   const json& rows = r.require_array(r.require(doc, "", "benchmarks"), "/benchmarks");
 
-  ResultSet set;
-  set.platform = r.optional_string(context, "/context", "host_name", "unknown host");
-  set.device = "CPU";
-  const auto cpus = r.optional_number(context, "/context", "num_cpus");
-  const auto mhz = r.optional_number(context, "/context", "mhz_per_cpu");
-  if (cpus && mhz)
-    set.device += " (" + std::to_string(static_cast<long long>(*cpus)) + " x " +
-                  std::to_string(static_cast<long long>(*mhz)) + " MHz)";
-  set.device_kind = DeviceKind::Cpu;
-  set.backend = "Google Benchmark";
-  set.source_format = "google-benchmark-json";
-  set.provenance.origin = DataOrigin::Measured;
-  set.provenance.host = set.platform;
-  set.provenance.date = r.optional_string(context, "/context", "date");
-  set.provenance.tool = "google-benchmark";
-  if (const json* v = r.optional(context, "library_version"); v && v->is_string())
-    set.provenance.tool += " " + v->get<std::string>();
-  set.provenance.note = "executable: " + r.optional_string(context, "/context", "executable", "unknown") +
-                        ", build type: " + r.optional_string(context, "/context", "library_build_type", "unknown");
-  set.provenance.source_file = file;
-
   ImportBatch batch;
+  ResultSet set = result_set_from_context(r, context, file);
   MeasurementTable table;
   std::size_t values = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const std::string at = child(std::string("/benchmarks"), i);
+    if (cancel && (i & 0x3FF) == 0) cancel->throw_if_cancelled();
+    const std::string at = child("/benchmarks", i);
     const json& row = r.require_object(rows[i], at);
     const std::string name = r.require_string(row, at, "name");
     const std::string run_name = r.optional_string(row, at, "run_name", name);
-    if (const json* err = r.optional(row, "error_occurred"); err && err->is_boolean() && err->get<bool>()) {
-      batch.warnings.push_back(file + ": " + at + ": benchmark '" + name + "' reported an error (" +
+    if (flag(row, "error_occurred")) {
+      batch.warnings.push_back(r.where(at) + ": benchmark '" + name + "' reported an error (" +
                                r.optional_string(row, at, "error_message", "no message") + "); row skipped");
       continue;
     }
-    const std::string run_type = r.optional_string(row, at, "run_type", "iteration");
-    const std::string aggregate = r.optional_string(row, at, "aggregate_name");
-    if (run_type == "aggregate" && aggregate != "mean" && aggregate != "median" && aggregate != "stddev" &&
-        aggregate != "cv") {
-      continue;  // BigO / RMS complexity rows describe a fit, not a measurement
+    if (flag(row, "skipped")) {
+      batch.warnings.push_back(r.where(at) + ": benchmark '" + name + "' was skipped (" +
+                               r.optional_string(row, at, "skip_message", "no message") + ")");
+      continue;
     }
-    const std::string unit_at = child(at, "time_unit");
-    const double scale = time_scale(r, r.optional_string(row, at, "time_unit", "ns"), unit_at);
-    // cv rows are ratios (aggregate_unit "percentage"), so their times carry no time unit.
-    const bool ratio = r.optional_string(row, at, "aggregate_unit") == "percentage";
+    const std::string run_type = r.optional_string(row, at, "run_type", "iteration");
+    if (run_type != "iteration" && run_type != "aggregate")
+      r.fail(ImportErrorCategory::InvalidValue, child(at, "run_type"),
+             "'" + run_type + "' is neither \"iteration\" nor \"aggregate\"");
+    const std::string aggregate = r.optional_string(row, at, "aggregate_name");
+    const bool is_aggregate = run_type == "aggregate";
+    if (is_aggregate && aggregate.empty())
+      r.fail(ImportErrorCategory::MissingField, child(at, "aggregate_name"), "an aggregate row needs its name");
+    // BigO / RMS complexity rows describe a fit over arguments, not a measurement of this run.
+    if (is_aggregate && (aggregate == "BigO" || aggregate == "RMS" || row.contains("big_o") || row.contains("rms")))
+      continue;
+    const double scale = time_scale(r, r.optional_string(row, at, "time_unit", "ns"), child(at, "time_unit"));
+    // cv rows (aggregate_unit "percentage", or named cv in versions before that key) are ratios, not times.
+    const bool ratio = r.optional_string(row, at, "aggregate_unit") == "percentage" || aggregate == "cv";
 
     auto record = [&](const std::string& metric, const std::string& unit, double value, double to_si) {
       Measurement& m = table.at(run_name, metric, unit);
-      if (run_type == "aggregate") {
+      if (is_aggregate) {
         m.reported_aggregates.emplace_back(aggregate, ratio ? value : value * to_si);
-      } else {
-        if (++values > limits.max_samples)
-          r.fail(ImportErrorCategory::TooLarge, at, "more than " + std::to_string(limits.max_samples) + " values");
-        m.values.push_back(value * to_si);
+        return;
       }
+      if (++values > limits.max_samples)
+        r.fail(ImportErrorCategory::TooLarge, at,
+               "more than " + std::to_string(limits.max_samples) + " values (the documented limit)");
+      m.values.push_back(value * to_si);
     };
-    record("real_time", "s", r.require_number(row, at, "real_time"), scale);
-    record("cpu_time", "s", r.require_number(row, at, "cpu_time"), scale);
+    // A time that is not a finite number (NaN from a benchmark that never ran) drops the row, with a warning.
+    bool times_ok = true;
+    for (const char* key : {"real_time", "cpu_time"}) {
+      const json& v = r.require(row, at, key);
+      if (v.is_string()) times_ok = false;
+    }
+    if (!times_ok) {
+      batch.warnings.push_back(r.where(at) + ": benchmark '" + name + "' has a time that is not a finite number; "
+                               "row skipped");
+      continue;
+    }
+    for (const char* key : {"real_time", "cpu_time"}) {
+      const double t = r.require_number(row, at, key);
+      if (t < 0 && !(is_aggregate && ratio))
+        r.fail(ImportErrorCategory::InvalidValue, child(at, key), "a time must not be negative");
+      record(key, "s", t, scale);
+    }
     for (const auto& [key, value] : row.items()) {
-      if (is_reserved(key) || !value.is_number()) continue;
-      record(key, counter_unit(key), r.number(value, child(at, key)), 1.0);
+      if (is_reserved(key) || value.is_boolean() || value.is_null()) continue;
+      if (value.is_string()) {
+        batch.warnings.push_back(r.where(child(at, key)) + ": counter '" + key + "' of '" + name +
+                                 "' is not a finite number (NaN, Infinity or text); left out");
+        continue;
+      }
+      if (!value.is_number()) continue;  // objects/arrays are not counters in any known version
+      const CounterUnit unit = counter_unit(key);
+      record(key, unit.unit, r.number(value, child(at, key)), unit.scale);
     }
   }
   set.measurements = table.take();
   if (set.measurements.empty())
-    r.fail(ImportErrorCategory::InvalidValue, "/benchmarks", "the file holds no benchmark results");
+    r.fail(ImportErrorCategory::InvalidValue, "/benchmarks",
+           rows.empty() ? "the file holds no benchmark rows" : "no benchmark row holds a usable result");
   batch.result_sets.push_back(std::move(set));
   return batch;
 }

@@ -17,6 +17,9 @@ struct ImportLimits {
   std::size_t max_json_bytes = std::size_t{256} << 20;  // whole-document formats (JSON, clpeak text)
   std::size_t max_json_depth = 64;
   std::size_t max_samples = 10'000'000;  // total timing values in one file
+  // Values (numbers, strings, ...) in one JSON document: each costs 16+ bytes in the parsed tree, so this bounds
+  // the tree at about half a GiB whatever the bytes are.
+  std::size_t max_json_values = 32'000'000;
 };
 
 // One file format. Importers are stateless and pure: bytes in, ImportBatch out, or an ImportError.
@@ -29,6 +32,9 @@ class Importer {
   // Confidence 0..100 that `head` (the first <= 64 KiB of the file) is this format. Content decides; the
   // extension only breaks ties.
   virtual int sniff(std::string_view head, std::string_view path) const = 0;
+  // Whether `path` has an extension this format usually carries. Used only to break a tie between equal sniff
+  // scores, never to pick a format the content does not support.
+  virtual bool usual_extension(std::string_view /*path*/) const { return false; }
   // Parses the whole file. Throws ImportError (or Cancelled). Never returns a partial batch.
   virtual ImportBatch parse(const std::string& path, const ImportLimits& limits,
                             const CancelToken& cancel) const = 0;
@@ -39,7 +45,8 @@ const std::vector<std::unique_ptr<Importer>>& all_importers();
 const Importer* find_importer(std::string_view id);
 
 // Reads the head of `path`, rejects empty / binary / UTF-16 input with a clear ImportError, picks the importer
-// with the highest sniff score (ties broken by order) and parses. UnknownFormat when nothing scores above 0.
+// with the highest sniff score (ties broken by usual_extension, then by order) and parses. UnknownFormat when
+// nothing scores above 0.
 ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits = {});
 
 // Helpers shared by importers.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Typed, located access to untrusted JSON: every failure becomes an ImportError naming the file and the JSON
-// pointer of the offending field, so JSON importers never repeat their validation boilerplate.
+// Typed, located access to untrusted JSON: every failure becomes an ImportError naming the file, the JSON pointer
+// of the offending field and its line:column, so JSON importers never repeat their validation boilerplate.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,21 +10,36 @@
 #include <nlohmann/json.hpp>
 
 #include "import_error.h"
+#include "importer.h"
 
 namespace bs::json_access {
 
 using json = nlohmann::json;
 
-// Parses `text` refusing nesting deeper than `max_depth` before the document is built. Syntax errors carry
-// line:column computed from the byte offset; NaN/Infinity literals and number overflow are rejected.
-json parse(std::string_view text, const std::string& file, std::size_t max_depth);
+// Parses `text`, refusing nesting deeper than limits.max_json_depth and more than limits.max_json_values values
+// while the document is being built (never after). Syntax errors carry line:column computed from the byte offset;
+// a truncated document says "unexpected end of file"; NaN/Infinity literals are syntax errors and numbers that
+// overflow a double (1e999) are InvalidValue with their location. Polls `cancel` while parsing when given.
+json parse(std::string_view text, const std::string& file, const ImportLimits& limits,
+           const CancelToken* cancel = nullptr);
+
+// 1-based line and column (in characters, not bytes) of byte `offset` in `text`.
+ErrorLocation location_of_offset(const std::string& file, std::string_view text, std::size_t offset);
+
+// Byte offset where the value at JSON pointer `pointer` starts in the (valid) document `text`. When the pointer
+// names something absent (a missing key), the offset of the deepest value that exists on the way, so an error
+// about a missing field points at the object that lacks it.
+std::size_t offset_of_pointer(std::string_view text, std::string_view pointer);
 
 class Reader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
+  // `text` is the parsed document's source; it lets errors carry line:column. It must outlive the Reader.
+  Reader(std::string file, std::string_view text) : file_(std::move(file)), text_(text) {}
   const std::string& file() const { return file_; }
 
   [[noreturn]] void fail(ImportErrorCategory category, const std::string& pointer, const std::string& reason) const;
+  // "file:line:col: /pointer" for warnings.
+  std::string where(const std::string& pointer) const;
 
   const json& require(const json& object, const std::string& pointer, std::string_view key) const;
   const json* optional(const json& object, std::string_view key) const;  // nullptr when absent or null
@@ -37,19 +52,18 @@ class Reader {
   double number(const json& value, const std::string& pointer) const;  // finite number
   double require_number(const json& object, const std::string& pointer, std::string_view key) const;
   std::optional<double> optional_number(const json& object, const std::string& pointer, std::string_view key) const;
+  std::int64_t integer(const json& value, const std::string& pointer, std::int64_t min, std::int64_t max) const;
   std::int64_t require_integer(const json& object, const std::string& pointer, std::string_view key,
                                std::int64_t min, std::int64_t max) const;
 
  private:
+  ErrorLocation locate(const std::string& pointer) const;
   std::string file_;
+  std::string_view text_;
 };
 
-inline std::string child(const std::string& pointer, std::string_view key) {
-  std::string out = pointer;
-  out += '/';
-  out += key;
-  return out;
-}
+// JSON pointer of a member / element (RFC 6901 escaping of '~' and '/').
+std::string child(const std::string& pointer, std::string_view key);
 inline std::string child(const std::string& pointer, std::size_t index) {
   return pointer + '/' + std::to_string(index);
 }

@@ -76,21 +76,87 @@ std::string read_whole_file(const std::string& path, std::size_t max_bytes) {
   return text;
 }
 
+namespace {
+
+// Counts bytes that cannot be text: C0 controls other than tab, LF, CR, FF, and bytes that do not form UTF-8.
+// Decoding stops short of the end of `head`, which may cut a multi-byte character in two.
+std::size_t count_non_text(std::string_view head) {
+  std::size_t bad = 0;
+  std::size_t i = 0;
+  while (i < head.size()) {
+    const auto b = static_cast<unsigned char>(head[i]);
+    if (b < 0x80) {
+      if (b < 0x20 && b != '\t' && b != '\n' && b != '\r' && b != '\f') ++bad;
+      if (b == 0x7F) ++bad;
+      ++i;
+      continue;
+    }
+    const std::size_t len = b >= 0xF0 && b <= 0xF4 ? 4 : b >= 0xE0 ? 3 : b >= 0xC2 && b <= 0xDF ? 2 : 0;
+    if (len == 0) {
+      ++bad;
+      ++i;
+      continue;
+    }
+    if (i + len > head.size()) break;  // cut at the end of the head
+    bool ok = true;
+    for (std::size_t k = 1; k < len; ++k) ok = ok && (static_cast<unsigned char>(head[i + k]) & 0xC0) == 0x80;
+    if (!ok) {
+      ++bad;
+      ++i;
+      continue;
+    }
+    i += len;
+  }
+  return bad;
+}
+
+// UTF-16 text without a byte-order mark has a NUL in every other byte (ASCII characters); UTF-32 in three of four.
+std::string_view wide_encoding(std::string_view head) {
+  if (head.size() < 8) return {};
+  std::size_t nul_at[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < head.size(); ++i)
+    if (head[i] == '\0') ++nul_at[i % 4];
+  const std::size_t per_slot = head.size() / 4;
+  auto mostly = [&](std::size_t slot) { return nul_at[slot] * 10 >= per_slot * 9; };
+  auto rarely = [&](std::size_t slot) { return nul_at[slot] * 10 <= per_slot; };
+  const int nul_slots = mostly(0) + mostly(1) + mostly(2) + mostly(3);
+  const int text_slots = rarely(0) + rarely(1) + rarely(2) + rarely(3);
+  if (nul_slots == 3 && text_slots == 1) return "UTF-32";
+  if (nul_slots == 2 && text_slots == 2 && mostly(0) == mostly(2) && mostly(1) == mostly(3)) return "UTF-16";
+  return {};
+}
+
+}  // namespace
+
 void check_text(std::string_view head, const std::string& path) {
   const ErrorLocation at{path, 0, 0, {}};
-  if (head.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    throw ImportError(ImportErrorCategory::Empty, at, head.empty() ? "file is empty" : "file holds only whitespace");
+  // Byte-order marks first: UTF-32 LE starts with the UTF-16 LE mark, so test the longer ones first.
+  constexpr std::string_view utf32_le("\xFF\xFE\0\0", 4);
+  constexpr std::string_view utf32_be("\0\0\xFE\xFF", 4);
+  if (head.starts_with(utf32_le) || head.starts_with(utf32_be))
+    throw ImportError(ImportErrorCategory::Encoding, at, "file is UTF-32 (byte-order mark); save it as UTF-8");
   if (head.starts_with("\xFF\xFE") || head.starts_with("\xFE\xFF"))
-    throw ImportError(ImportErrorCategory::Encoding, at, "file is UTF-16 (or UTF-32); save it as UTF-8");
-  const std::size_t nul = head.find('\0');
+    throw ImportError(ImportErrorCategory::Encoding, at, "file is UTF-16 (byte-order mark); save it as UTF-8");
+  std::string_view body = head;
+  if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
+  if (body.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
+    throw ImportError(ImportErrorCategory::Empty, at,
+                      head.empty() ? "file is empty (0 bytes)" : "file holds only whitespace");
+  const std::size_t nul = body.find('\0');
   if (nul != std::string_view::npos) {
-    // Text in UTF-16 without a BOM has a NUL in every other byte.
-    std::size_t nuls = std::count(head.begin(), head.end(), '\0');
-    if (head.size() >= 4 && nuls * 2 >= head.size() - 1 && nuls * 2 <= head.size() + 1)
-      throw ImportError(ImportErrorCategory::Encoding, at, "file looks like UTF-16 without a byte-order mark");
+    if (const std::string_view wide = wide_encoding(body); !wide.empty())
+      throw ImportError(ImportErrorCategory::Encoding, at,
+                        "file looks like " + std::string(wide) + " without a byte-order mark; save it as UTF-8");
     throw ImportError(ImportErrorCategory::Binary, at,
-                      "file is binary (NUL byte at offset " + std::to_string(nul) + "), not a text format");
+                      "file is binary (NUL byte at offset " + std::to_string(nul + (head.size() - body.size())) +
+                          "), not a text format");
   }
+  // Text in another 8-bit encoding (a stray Latin-1 "µ") still imports; a file mostly made of non-text does not.
+  const std::size_t bad = count_non_text(body);
+  if (bad * 10 > body.size())
+    throw ImportError(ImportErrorCategory::Binary, at,
+                      "file is not text (" + std::to_string(bad) + " of the first " + std::to_string(body.size()) +
+                          " bytes are control codes or invalid UTF-8)");
 }
 
 ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits) {
@@ -98,10 +164,13 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
   check_text(head, path);
   std::string_view view = head;
   if (view.starts_with("\xEF\xBB\xBF")) view.remove_prefix(3);
+  // Content decides; the usual extension only breaks a tie (score * 2 + 1 can never beat a higher score).
   const Importer* best = nullptr;
   int best_score = 0;
   for (const auto& imp : all_importers()) {
-    const int score = imp->sniff(view, path);
+    const int content = imp->sniff(view, path);
+    if (content <= 0) continue;
+    const int score = content * 2 + (imp->usual_extension(path) ? 1 : 0);
     if (score > best_score) {
       best_score = score;
       best = imp.get();
@@ -113,6 +182,7 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
     throw ImportError(ImportErrorCategory::UnknownFormat, {path, 0, 0, {}},
                       "not a format BenchScope reads (tried: " + tried + ")");
   }
+  cancel.throw_if_cancelled();
   ImportBatch batch = best->parse(path, limits, cancel);
   batch.source_path = path;
   batch.format = std::string(best->id());

@@ -3,15 +3,22 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <vector>
 
+#include "analysis/power_time.h"
+#include "power_line_reader.h"
+
 namespace bs {
 namespace {
 
-std::vector<std::string_view> tokens(std::string_view line) {
-  std::vector<std::string_view> out;
+// Past this many, skipped lines are counted instead of listed one by one.
+constexpr std::size_t kListedWarnings = 10;
+
+void tokens(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
@@ -19,121 +26,191 @@ std::vector<std::string_view> tokens(std::string_view line) {
     while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
     if (i > start) out.push_back(line.substr(start, i - start));
   }
-  return out;
 }
 
+// Rail names are upper case: VDD_IN, POM_5V_GPU, VIN_SYS_5V0, and on AGX Xavier plain GPU, CPU, SOC, SYS5V.
 bool rail_name(std::string_view t) {
-  return t.size() >= 3 && std::all_of(t.begin(), t.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }) &&
-         (t.starts_with("VDD") || t.starts_with("POM_") || t.starts_with("VIN"));
+  return t.size() >= 2 && t.front() >= 'A' && t.front() <= 'Z' &&
+         std::all_of(t.begin(), t.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; });
 }
 
-// "3981/3981" or "5000mW/5000mW" -> the current value in mW.
+bool whole_number(std::string_view s, double& v) {
+  if (s.ends_with("mW")) s.remove_suffix(2);
+  if (s.empty() || s.front() < '0' || s.front() > '9') return false;
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
+}
+
+// "3981/3981" or "5000mW/5000mW" -> the instantaneous value in mW ("2448/7854MB" is RAM, not a rail).
 std::optional<double> rail_value(std::string_view t) {
   const auto slash = t.find('/');
   if (slash == std::string_view::npos) return std::nullopt;
-  std::string_view cur = t.substr(0, slash), avg = t.substr(slash + 1);
-  if (cur.ends_with("mW")) cur.remove_suffix(2);
-  if (avg.ends_with("mW")) avg.remove_suffix(2);
-  double v = 0, a = 0;
-  const auto r1 = std::from_chars(cur.data(), cur.data() + cur.size(), v);
-  const auto r2 = std::from_chars(avg.data(), avg.data() + avg.size(), a);
-  if (r1.ec != std::errc() || r1.ptr != cur.data() + cur.size() || r2.ec != std::errc() || r2.ptr != avg.data() + avg.size())
-    return std::nullopt;
-  return v;
+  double cur = 0, avg = 0;
+  if (!whole_number(t.substr(0, slash), cur) || !whole_number(t.substr(slash + 1), avg)) return std::nullopt;
+  return cur;
 }
 
-// "11-22-2026" "10:00:01" -> seconds since an arbitrary epoch (days from a civil calendar + time of day).
-std::optional<double> timestamp(std::string_view date, std::string_view time) {
-  int mo = 0, d = 0, y = 0, h = 0, mi = 0;
-  double s = 0;
-  if (std::sscanf(std::string(date).c_str(), "%d-%d-%d", &mo, &d, &y) != 3) return std::nullopt;
-  if (std::sscanf(std::string(time).c_str(), "%d:%d:%lf", &h, &mi, &s) != 3) return std::nullopt;
-  if (mo < 1 || mo > 12 || d < 1 || d > 31 || h > 23 || mi > 59 || s >= 61) return std::nullopt;
-  // Days from civil (Howard Hinnant's algorithm): exact across month and year boundaries.
-  y -= mo <= 2;
-  const int era = (y >= 0 ? y : y - 399) / 400;
-  const int yoe = y - era * 400;
-  const int doy = (153 * (mo + (mo > 2 ? -3 : 9)) + 2) / 5 + d - 1;
-  const int doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  const double days = era * 146097.0 + doe - 719468;
-  return days * 86400 + h * 3600 + mi * 60 + s;
+bool input_rail(const std::string& name) { return name == "VDD_IN" || name == "POM_5V_IN" || name.starts_with("VIN"); }
+
+class TegrastatsParser {
+ public:
+  TegrastatsParser(const std::string& file, const PowerImportOptions& options, const ImportLimits& limits)
+      : file_(file), options_(options), limits_(limits) {
+    if (!(options.interval_s > 0) || !std::isfinite(options.interval_s))
+      throw ImportError(ImportErrorCategory::InvalidValue, {file, 0, 0, "interval"}, "the interval must be > 0 s");
+  }
+  // `last` says whether this is the file's final line (a cut-off line there is expected, not an error).
+  void line(std::string_view raw, std::size_t line_no, bool last);
+  ImportBatch finish();
+
+ private:
+  void skip(std::size_t line_no, const std::string& why) {
+    if (++skipped_ <= kListedWarnings) batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
+  }
+  const std::string& file_;
+  const PowerImportOptions& options_;
+  const ImportLimits& limits_;
+  std::vector<std::string_view> tok_;
+  std::vector<std::pair<std::string_view, double>> values_;
+  std::vector<std::string> rails_;  // names in file order; channel k holds rail order_[k]
+  std::vector<std::size_t> order_;
+  std::optional<bool> timestamped_;
+  double first_time_ = 0;
+  std::size_t skipped_ = 0, sample_ = 0;
+  PowerTrace trace_;
+  ImportBatch batch_;
+};
+
+void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last) {
+  tokens(raw, tok_);
+  if (tok_.empty()) return;
+  values_.clear();
+  for (std::size_t i = 0; i + 1 < tok_.size(); ++i)
+    if (rail_name(tok_[i]))
+      if (const auto v = rail_value(tok_[i + 1])) {
+        values_.emplace_back(tok_[i], *v / 1000.0);
+        ++i;
+      }
+  if (values_.empty()) return skip(line_no, "no power rails on this line");
+  if (rails_.empty()) {
+    for (const auto& [name, v] : values_) rails_.emplace_back(name);
+    // The board's input rail first: power_series() takes the first power channel as the platform's power.
+    order_.resize(rails_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = k;
+    std::stable_partition(order_.begin(), order_.end(), [&](std::size_t k) { return input_rail(rails_[k]); });
+    for (std::size_t k : order_) trace_.channels.push_back({rails_[k], PowerQuantity::Power, {}});
+  } else if (values_.size() != rails_.size() ||
+             !std::equal(values_.begin(), values_.end(), rails_.begin(), [](const auto& a, const std::string& b) { return a.first == b; })) {
+    if (last) return skip(line_no, "incomplete last line (tegrastats stopped while writing it)");
+    throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, 1, "rails"},
+                      "the rails differ from the first line's (" + std::to_string(values_.size()) + " rails vs " +
+                          std::to_string(rails_.size()) + ")");
+  }
+  if (sample_ >= limits_.max_samples)
+    throw ImportError(ImportErrorCategory::TooLarge, {file_, line_no, 1, {}},
+                      "more than " + std::to_string(limits_.max_samples) + " lines (the limit for one log)");
+  const std::optional<double> stamp = tok_.size() >= 2 ? parse_month_day_year(tok_[0], tok_[1]) : std::nullopt;
+  if (!timestamped_) timestamped_ = stamp.has_value();
+  if (*timestamped_ != stamp.has_value()) {
+    if (last) return skip(line_no, "incomplete last line (tegrastats stopped while writing it)");
+    throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, 1, "timestamp"},
+                      *timestamped_ ? "no leading MM-DD-YYYY HH:MM:SS timestamp, unlike the lines before"
+                                    : "a timestamp on this line but not on the first");
+  }
+  double t = static_cast<double>(sample_) * options_.interval_s;
+  if (stamp) {
+    if (sample_ == 0) {
+      first_time_ = *stamp;
+      trace_.start_time = format_iso8601(*stamp);
+    }
+    t = *stamp - first_time_;
+    if (!trace_.time_s.empty() && t < trace_.time_s.back())
+      throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, 1, "timestamp"},
+                        "time goes backwards (" + std::string(tok_[0]) + " " + std::string(tok_[1]) + ")");
+  }
+  trace_.time_s.push_back(t);
+  for (std::size_t k = 0; k < order_.size(); ++k) trace_.channels[k].values.push_back(values_[order_[k]].second);
+  ++sample_;
+}
+
+ImportBatch TegrastatsParser::finish() {
+  if (trace_.time_s.empty())
+    throw ImportError(ImportErrorCategory::MissingField, {file_, 0, 0, {}},
+                      "no lines with power rails (VDD_*, POM_*; tegrastats shows them only when run as root on boards "
+                      "with power monitors)");
+  if (skipped_ > kListedWarnings)
+    batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped (no power rails)");
+  if (!input_rail(trace_.channels.front().name))
+    batch_.warnings.push_back(file_ + ": no board input rail (VDD_IN, POM_5V_IN, VIN_*): the rails are parts of the "
+                              "board; their sum is a lower bound of its power");
+  trace_.platform = options_.platform.empty() ? "Jetson" : options_.platform;
+  trace_.label = file_.substr(file_.find_last_of('/') == std::string::npos ? 0 : file_.find_last_of('/') + 1);
+  trace_.provenance.origin = DataOrigin::Measured;
+  trace_.provenance.tool = "tegrastats";
+  trace_.provenance.source_file = file_;
+  trace_.provenance.date = trace_.start_time;
+  if (!*timestamped_) {
+    char note[96];
+    std::snprintf(note, sizeof note, "times from a %g s interval (the log has no timestamps)", options_.interval_s);
+    trace_.provenance.note = note;
+  }
+  batch_.power_traces.push_back(std::move(trace_));
+  return std::move(batch_);
+}
+
+template <class Lines>
+ImportBatch run(Lines& lines, TegrastatsParser& parser, const CancelToken& cancel) {
+  // One line of look-ahead, so the parser knows which line is the last (copied: the reader reuses its buffer).
+  std::string pending;
+  std::size_t pending_no = 0;
+  bool have = false;
+  while (const auto line = lines.next()) {
+    if (line->find_first_not_of(" \t") == std::string_view::npos) continue;
+    if (have) parser.line(pending, pending_no, false);
+    pending.assign(*line);
+    pending_no = lines.line_number();
+    have = true;
+    if ((pending_no & 0x3ff) == 0) cancel.throw_if_cancelled();
+  }
+  if (have) parser.line(pending, pending_no, true);
+  return parser.finish();
 }
 
 }  // namespace
 
 int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
-  const bool ram = head.find("RAM ") != std::string_view::npos;
-  const bool rails = head.find("VDD_") != std::string_view::npos || head.find("POM_") != std::string_view::npos;
-  return ram && rails ? 90 : 0;
+  PowerLineReader lines(head, {});
+  std::vector<std::string_view> tok;
+  for (int seen = 0; seen < 16; ++seen) {
+    const auto line = lines.next();
+    if (!line) break;
+    tokens(*line, tok);
+    const bool ram = std::find(tok.begin(), tok.end(), "RAM") != tok.end();
+    for (std::size_t i = 0; ram && i + 1 < tok.size(); ++i)
+      if (rail_name(tok[i]) && rail_value(tok[i + 1]) && tok[i] != "RAM" && tok[i] != "SWAP" && tok[i] != "IRAM") return 90;
+  }
+  return 0;
 }
 
 ImportBatch TegrastatsImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
-  const std::string text = read_whole_file(path, limits.max_json_bytes);
-  cancel.throw_if_cancelled();
-  return parse_tegrastats(text, path);
+  return read_tegrastats(path, {}, limits, cancel);
+}
+
+ImportBatch read_tegrastats(const std::string& path, const PowerImportOptions& options, const ImportLimits& limits,
+                            const CancelToken& cancel) {
+  PowerLineReader lines(path);
+  TegrastatsParser parser(path, options, limits);
+  return run(lines, parser, cancel);
 }
 
 ImportBatch parse_tegrastats(std::string_view text, const std::string& file, double interval_s) {
-  ImportBatch batch;
-  PowerTrace trace;
-  trace.platform = "Jetson";
-  trace.label = file.substr(file.find_last_of('/') == std::string::npos ? 0 : file.find_last_of('/') + 1);
-  trace.provenance.origin = DataOrigin::Measured;
-  trace.provenance.tool = "tegrastats";
-  trace.provenance.source_file = file;
-  std::vector<std::string> rails;
-  std::optional<double> first_time;
-  std::size_t pos = 0, line_no = 0, sample = 0;
-  while (pos < text.size()) {
-    const std::size_t end = std::min(text.find('\n', pos), text.size());
-    const std::string_view line = text.substr(pos, end - pos);
-    pos = end + 1;
-    ++line_no;
-    const auto tok = tokens(line);
-    if (tok.empty()) continue;
-    std::vector<std::pair<std::string, double>> values;
-    for (std::size_t i = 0; i + 1 < tok.size(); ++i)
-      if (rail_name(tok[i]))
-        if (const auto v = rail_value(tok[i + 1])) values.emplace_back(std::string(tok[i]), *v / 1000.0);
-    if (values.empty()) {
-      batch.warnings.push_back(file + ":" + std::to_string(line_no) + ": no power rails on this line; skipped");
-      continue;
-    }
-    // The board's input rail first: power_series() takes the first power channel as the platform's power.
-    std::stable_partition(values.begin(), values.end(), [](const auto& r) {
-      return r.first == "VDD_IN" || r.first == "POM_5V_IN" || r.first.starts_with("VIN");
-    });
-    if (rails.empty()) {
-      for (const auto& [name, v] : values) {
-        rails.push_back(name);
-        trace.channels.push_back({name, PowerQuantity::Power, {}});
-      }
-    } else if (values.size() != rails.size() ||
-               !std::equal(values.begin(), values.end(), rails.begin(), [](const auto& a, const auto& b) { return a.first == b; })) {
-      if (pos >= text.size()) {  // a last line cut short when tegrastats was stopped
-        batch.warnings.push_back(file + ":" + std::to_string(line_no) + ": incomplete last line; skipped");
-        break;
-      }
-      throw ImportError(ImportErrorCategory::InvalidValue, {file, line_no, 1, "rails"},
-                        "the rails differ from the first line's (" + std::to_string(values.size()) + " vs " +
-                            std::to_string(rails.size()) + ")");
-    }
-    double t = static_cast<double>(sample) * interval_s;
-    if (tok.size() >= 2) {
-      if (const auto ts = timestamp(tok[0], tok[1])) {
-        if (!first_time) first_time = *ts;
-        t = *ts - *first_time;
-        if (!trace.time_s.empty() && t < trace.time_s.back())
-          throw ImportError(ImportErrorCategory::InvalidValue, {file, line_no, 1, "timestamp"}, "time goes backwards");
-      }
-    }
-    trace.time_s.push_back(t);
-    for (std::size_t k = 0; k < values.size(); ++k) trace.channels[k].values.push_back(values[k].second);
-    ++sample;
-  }
-  if (trace.time_s.empty()) throw ImportError(ImportErrorCategory::MissingField, {file, 0, 0, {}}, "no lines with power rails (VDD_*, POM_*)");
-  batch.power_traces.push_back(std::move(trace));
-  return batch;
+  PowerImportOptions options;
+  options.interval_s = interval_s;
+  const ImportLimits limits;
+  const CancelToken cancel;
+  PowerLineReader lines(text, file);
+  TegrastatsParser parser(file, options, limits);
+  return run(lines, parser, cancel);
 }
 
 }  // namespace bs

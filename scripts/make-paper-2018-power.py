@@ -56,17 +56,33 @@ def write(name, platform, values, note):
             f.write(f"{i / RATE_HZ:.1f},{v!r}\n")
 
 
+def verify(name, peak_flops, mean_a, sd_a, watts, gflops_w, minutes, power_window):
+    """Reads the written file back (as text, like the importer) and checks every figure the paper reports."""
+    with open(os.path.join(OUT, name)) as f:
+        rows = [line.split(",") for line in f if line[0].isdigit()]
+    v = [float(r[1]) for r in rows]
+    n = len(v)
+    mean = sum(v) / n
+    sd = math.sqrt(sum((x - mean) ** 2 for x in v) / (n - 1))
+    p = SUPPLY_V * mean
+    got = (round(mean, 2), round(sd, 2), round(p, 2), round(peak_flops / (SUPPLY_V * max(v)) / 1e9, 2),
+           round(14.8 * 3.85 / p * 60, 2))
+    assert got == (mean_a, sd_a, watts, gflops_w, minutes), (name, got)
+    # Both roundings of the paper at once only hold in a narrow window of mean power.
+    assert power_window[0] <= p < power_window[1], (name, p)
+    print(f"{name}: n = {n}, {mean:.5f} A (SD {sd:.4f}), {p:.4f} W, max {max(v):.6f} A, "
+          f"{got[3]:.2f} GFLOPS/W, {got[4]:.2f} min")
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
     nuc = log(40.524 / SUPPLY_V, 0.35, 5.25e12 / (SUPPLY_V * 104.64e9), 2.15, 2.95, 1)
     jetson = log(9.484 / SUPPLY_V, 0.09, 0.49e12 / (SUPPLY_V * 41.26e9), 0.48, 0.70, 2)
     write("nuc-current.csv", "NUC", nuc, "mean 2.53 A, SD 0.35, 40.52 W, max current from 104.64 GFLOPS/W")
     write("jetson-current.csv", "Jetson TX2", jetson, "mean 0.59 A, SD 0.09, 9.48 W, max current from 41.26 GFLOPS/W")
-    # What the tool must show from these files.
-    for name, v, peak in (("NUC", nuc, 5.25e12), ("Jetson", jetson, 0.49e12)):
-        p = SUPPLY_V * sum(v) / len(v)
-        print(f"{name}: {sum(v) / len(v):.2f} A, {p:.2f} W, {peak / (SUPPLY_V * max(v)) / 1e9:.2f} GFLOPS/W, "
-              f"{14.8 * 3.85 / p * 60:.2f} min")
+    # What the tool must show from these files, checked on the files as written.
+    verify("nuc-current.csv", 5.25e12, 2.53, 0.35, 40.52, 104.64, 84.36, (40.5238, 40.525))
+    verify("jetson-current.csv", 0.49e12, 0.59, 0.09, 9.48, 41.26, 360.48, (9.48389, 9.48415))
 
 
 if __name__ == "__main__":

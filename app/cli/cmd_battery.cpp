@@ -1,77 +1,190 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// benchscope-cli battery: the paper's constant-power battery life (t = V x capacity / P_mean).
+// benchscope-cli battery: battery life under a constant load or a mission profile, with the paper's
+// constant-power model (t = V x capacity / P_mean) or a LiPo discharge curve with internal resistance.
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/power.h"
+#include "analysis/battery.h"
+#include "analysis/power_stats.h"
 #include "args.h"
 #include "command.h"
-#include "inputs.h"
+#include "power_import.h"
 #include "signals.h"
 
 namespace bs::cli {
 namespace {
 
-int run_battery(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {"--json"}, {"--volts", "--capacity-mah", "--watts", "--power-log",
-                                                       "--supply-volts", "--dod", "--extra-load"});
-  const double volts = args.number("--volts", 14.8), capacity_mah = args.number("--capacity-mah", 3850);
-  const double dod = args.number("--dod", 1.0), extra = args.number("--extra-load", 0);
-  if (!(volts > 0) || !(capacity_mah > 0)) throw UsageError("--volts and --capacity-mah must be > 0");
-  if (!(dod > 0 && dod <= 1)) throw UsageError("--dod must be in (0, 1]");
-  if (extra < 0) throw UsageError("--extra-load must be >= 0 W");
-  double watts = 0;
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+BatteryPack pack_from_args(const ParsedArgs& args) {
+  const std::string preset_name = args.value("--preset").value_or("paper-4s-3850");
+  const BatteryPack* preset = find_battery_preset(preset_name);
+  if (!preset) {
+    std::string names;
+    for (const BatteryPack& p : battery_presets()) names += (names.empty() ? "" : ", ") + p.name;
+    throw UsageError("unknown --preset '" + preset_name + "' (known: " + names + ")");
+  }
+  BatteryPack pack = *preset;
+  if (args.value("--volts")) {
+    const double volts = args.number("--volts", 0);
+    if (!(volts > 0)) throw UsageError("--volts must be > 0");
+    // A LiPo pack's nominal voltage is 3.7 V per series cell; the cell count follows from it.
+    pack.cells_series = std::max(1, static_cast<int>(std::lround(volts / 3.7)));
+    pack.nominal_cell_v = volts / pack.cells_series;
+    pack.name = "custom";
+  }
+  if (args.value("--capacity-mah")) {
+    pack.capacity_ah = args.number("--capacity-mah", 0) / 1000;
+    if (!(pack.capacity_ah > 0)) throw UsageError("--capacity-mah must be > 0");
+    pack.name = "custom";
+  }
+  if (args.value("--internal-mohm")) {
+    pack.internal_resistance_ohm = args.number("--internal-mohm", 0) / 1000;
+    if (!(pack.internal_resistance_ohm >= 0)) throw UsageError("--internal-mohm must be >= 0");
+  }
+  if (args.value("--cutoff-cell-volts")) {
+    pack.cutoff_cell_v = args.number("--cutoff-cell-volts", 0);
+    if (!(pack.cutoff_cell_v >= 0 && pack.cutoff_cell_v < 4.2)) throw UsageError("--cutoff-cell-volts must be in [0, 4.2)");
+  }
+  return pack;
+}
+
+int run_battery(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  const ParsedArgs args = parse_args(raw, {"--json"},
+                                     {"--preset", "--volts", "--capacity-mah", "--internal-mohm", "--cutoff-cell-volts",
+                                      "--watts", "--power-log", "--supply-volts", "--mission", "--model", "--dod",
+                                      "--extra-load", "--step", "--series"});
+  const BatteryPack pack = pack_from_args(args);
+  DischargeOptions options;
+  const std::string model = args.value("--model").value_or("constant-power");
+  if (model == "lipo") options.model = BatteryModel::Lipo;
+  else if (model != "constant-power") throw UsageError("--model must be constant-power or lipo");
+  options.depth_of_discharge = args.number("--dod", 1.0);
+  if (!(options.depth_of_discharge > 0 && options.depth_of_discharge <= 1)) throw UsageError("--dod must be in (0, 1]");
+  options.step_s = args.number("--step", 1.0);
+  if (!(options.step_s >= 1e-3 && options.step_s <= 3600)) throw UsageError("--step must be in [0.001, 3600] s");
+  const double extra = args.number("--extra-load", 0);
+  if (!(extra >= 0)) throw UsageError("--extra-load must be >= 0 W");
+  const int given = (args.value("--watts") ? 1 : 0) + (args.value("--power-log") ? 1 : 0) + (args.value("--mission") ? 1 : 0);
+  if (given != 1) throw UsageError("give exactly one of --watts P, --power-log FILE or --mission SPEC");
+
+  Mission mission;
   std::string source;
   if (args.value("--watts")) {
-    watts = args.number("--watts", 0);
+    const double watts = args.number("--watts", 0);
+    if (!(watts > 0)) throw UsageError("the load must be > 0 W");
+    mission = constant_load(watts, extra);
     source = "given";
   } else if (const auto log = args.value("--power-log")) {
-    const LoadedData data = load_inputs({*log}, interrupt_token());
-    if (data.power_traces.empty()) throw std::runtime_error(*log + ": not a current/power log");
-    std::optional<double> supply;
-    if (args.value("--supply-volts")) supply = args.number("--supply-volts", 0);
-    const TraceStats s = trace_stats(data.power_traces.front(), supply);
+    PowerImportOptions import_options;
+    if (args.value("--supply-volts")) {
+      import_options.supply_voltage_v = args.number("--supply-volts", 0);
+      if (!(*import_options.supply_voltage_v > 0)) throw UsageError("--supply-volts must be > 0");
+    }
+    const ImportBatch batch = import_power_log(*log, import_options, interrupt_token());
+    for (const std::string& w : batch.warnings) err << "warning: " << w << '\n';
+    const PowerStats s = power_stats(batch.power_traces.at(0));
     if (!s.power_w) throw std::runtime_error(*log + ": current-only log; give --supply-volts");
-    watts = s.power_w->mean;
-    source = "mean of " + *log;
+    mission = constant_load(s.power_w->summary.mean, extra);
+    source = "mean of " + *log + " (" + std::string(to_string(s.power_source)) + ")";
   } else {
-    throw UsageError("give --watts P or --power-log FILE");
+    try {
+      mission = parse_mission(*args.value("--mission"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--mission: ") + e.what());
+    }
+    mission.extra_load_w = extra;
+    source = "mission of " + std::to_string(mission.phases.size()) + " phases, repeated";
   }
-  if (!(watts > 0)) throw UsageError("the load must be > 0 W");
-  const double total = watts + extra;
-  const double hours = constant_power_runtime_h(volts, capacity_mah / 1000.0, total, dod);
+  if (!(mission.mean_load_w() > 0)) throw UsageError("the load must be > 0 W");
+  const DischargeResult r = simulate_discharge(pack, mission, options);
+  // The paper's figure for the same pack and mean load, shown beside the LiPo model's for comparison.
+  DischargeOptions paper_options = options;
+  paper_options.model = BatteryModel::ConstantPower;
+  const DischargeResult paper = simulate_discharge(pack, mission, paper_options);
+
+  if (const auto series_path = args.value("--series")) {
+    std::ofstream f(*series_path);
+    if (!f) throw std::runtime_error("cannot write " + *series_path);
+    f << "# state of charge over time, " << r.model_label << "\ntime_s,soc,terminal_V,current_A,load_W,phase\n";
+    for (const DischargePoint& p : r.series)
+      f << p.t_s << ',' << p.soc << ',' << p.terminal_v << ',' << p.current_a << ',' << p.load_w << ','
+        << mission.phases[p.phase].name << '\n';
+  }
   if (args.has("--json")) {
-    out << nlohmann::json{{"format", "benchscope-battery"}, {"version", 1}, {"model", "constant-power"},
-                          {"nominal_v", volts}, {"capacity_mah", capacity_mah}, {"usable_fraction", dod},
-                          {"load_w", watts}, {"extra_load_w", extra}, {"runtime_h", hours}, {"runtime_min", hours * 60}}
+    nlohmann::json phases = nlohmann::json::array();
+    for (const MissionPhase& p : mission.phases) phases.push_back({{"name", p.name}, {"seconds", p.duration_s}, {"load_w", p.load_w}});
+    out << nlohmann::json{{"format", "benchscope-battery"},
+                          {"version", 2},
+                          {"model", std::string(to_string(options.model))},
+                          {"model_label", r.model_label},
+                          {"preset", pack.name},
+                          {"nominal_v", pack.nominal_v()},
+                          {"cells_series", pack.cells_series},
+                          {"capacity_mah", pack.capacity_ah * 1000},
+                          {"internal_resistance_ohm", pack.internal_resistance_ohm},
+                          {"usable_fraction", options.depth_of_discharge},
+                          {"load_source", source},
+                          {"mean_load_w", mission.mean_load_w()},
+                          {"extra_load_w", mission.extra_load_w},
+                          {"mission", phases},
+                          {"runtime_h", r.runtime_s / 3600},
+                          {"runtime_min", r.runtime_s / 60},
+                          {"stop_reason", r.stop_reason},
+                          {"energy_wh", r.energy_wh},
+                          {"peak_current_a", r.peak_current_a},
+                          {"min_terminal_v", r.min_terminal_v},
+                          {"constant_power_runtime_min", paper.runtime_s / 60}}
                .dump(2)
         << '\n';
     return 0;
   }
-  char extra_note[64] = "";
-  if (extra > 0) std::snprintf(extra_note, sizeof extra_note, " incl. %g W extra load", extra);
   char line[512];
-  std::snprintf(line, sizeof line,
-                "battery %.1f V x %.0f mAh = %.2f Wh (usable %.0f %%)\nload %.2f W (%s)%s\nruntime %.2f min (%.2f h), "
-                "constant-power model: t = V x capacity / P\n",
-                volts, capacity_mah, volts * capacity_mah / 1000, dod * 100, total, source.c_str(),
-                extra_note, hours * 60, hours);
+  std::snprintf(line, sizeof line, "battery %.1f V (%dS) x %.0f mAh = %.2f Wh, usable %.0f %%\n", pack.nominal_v(),
+                pack.cells_series, pack.capacity_ah * 1000, pack.nominal_wh(), options.depth_of_discharge * 100);
   out << line;
+  out << "load " << fmt("%.2f", mission.mean_load_w()) << " W mean (" << source << ")";
+  if (mission.extra_load_w > 0) out << ", incl. " << fmt("%g", mission.extra_load_w) << " W extra load";
+  out << '\n';
+  std::snprintf(line, sizeof line, "runtime %.2f min (%.2f h): %s\n  model: %s\n", r.runtime_s / 60, r.runtime_s / 3600,
+                r.stop_reason.c_str(), r.model_label.c_str());
+  out << line;
+  if (options.model == BatteryModel::ConstantPower) {
+    out << "  t = V x capacity x DoD / P (current rises as the voltage falls, power stays constant)\n";
+  } else {
+    std::snprintf(line, sizeof line,
+                  "  energy delivered %.2f Wh, peak current %.2f A, lowest terminal voltage %.2f V\n"
+                  "  the paper's constant-power model for the same load: %.2f min\n",
+                  r.energy_wh, r.peak_current_a, r.min_terminal_v, paper.runtime_s / 60);
+    out << line;
+  }
   return 0;
 }
 
 const CommandRegistrar registrar({
     "battery",
-    "battery life under a constant load (the paper's model)",
-    "usage: benchscope-cli battery [--volts V] [--capacity-mah C] (--watts P | --power-log FILE [--supply-volts V])\n"
-    "         [--dod F] [--extra-load W] [--json]\n"
-    "  Defaults: the paper's 14.8 V 4S LiPo of 3850 mAh. --dod is the usable depth of discharge, --extra-load adds a\n"
-    "  parallel load such as servos (the paper's robot: up to 225 W).",
+    "battery life under a load or mission (the paper's constant-power model, or a LiPo curve)",
+    "usage: benchscope-cli battery [--preset NAME] [--volts V] [--capacity-mah C]\n"
+    "         (--watts P | --power-log FILE [--supply-volts V] | --mission name:s:W,...)\n"
+    "         [--model constant-power|lipo] [--dod F] [--extra-load W] [--internal-mohm R] [--cutoff-cell-volts V]\n"
+    "         [--step S] [--series FILE.csv] [--json]\n"
+    "  Default pack: the paper's 14.8 V 4S LiPo of 3850 mAh (--preset paper-4s-3850; also 4s-5000, 3s-2200,\n"
+    "  6s-10000). constant-power: t = V x capacity x DoD / P_mean (the paper). lipo: open-circuit voltage vs state\n"
+    "  of charge, internal resistance and a cut-off voltage per cell, constant-power load in --step time steps.\n"
+    "  --dod: usable depth of discharge. --extra-load: a parallel load such as servos (the paper's robot: up to\n"
+    "  225 W). --mission: phases repeated until empty, e.g. idle:60:15,walk:30:120. --series: state of charge\n"
+    "  over time as CSV.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
-        return run_battery(args, out);
+        return run_battery(args, out, err);
       } catch (const UsageError& e) {
         err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help battery)\n";
         return 2;

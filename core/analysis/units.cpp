@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/units.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace bs {
 namespace {
 
+// std::to_chars, not printf: the GUI runs under the user's locale (Qt calls setlocale), and "5,25 TFLOPS" from a
+// German desktop would differ from the CLI and from exported tables.
 std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
+  char buf[400];  // any finite double in fixed notation with up to 17 decimals fits
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, std::clamp(decimals, 0, 17));
+  return std::string(buf, r.ptr);
 }
 
 }  // namespace
@@ -42,8 +45,15 @@ std::string_view si_prefix(int exponent) noexcept {
 
 std::string format_si(double value, std::string_view unit, int decimals) {
   if (!std::isfinite(value)) return std::string(std::isnan(value) ? "NaN " : (value > 0 ? "inf " : "-inf ")) += unit;
-  const int e = si_exponent(value);
+  int e = si_exponent(value);
   std::string out = fixed(value / std::pow(10.0, e), decimals);
+  // 999.999e9 rounds to "1000.00" at two decimals: move to the next prefix so the mantissa stays below 1000.
+  double shown = 0;
+  std::from_chars(out.data(), out.data() + out.size(), shown);
+  if (e < 18 && std::fabs(shown) >= 1000.0) {
+    e += 3;
+    out = fixed(value / std::pow(10.0, e), decimals);
+  }
   out += ' ';
   out += si_prefix(e);
   out += unit;

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every delimited power-log flavour BenchScope reads, from realistic fixtures, through the same entry points the
+// app uses (import_file sniffing, import_power_log with options).
+#include <QtTest>
+
+#include "importer.h"
+#include "power_csv.h"
+#include "power_import.h"
+
+namespace {
+
+const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/power/";
+
+bs::ImportBatch import(const std::string& name) { return bs::import_file(kData + name, bs::CancelToken{}); }
+
+const bs::PowerChannel& channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
+  for (const auto& c : t.channels)
+    if (c.quantity == q) return c;
+  throw std::runtime_error("no such channel");
+}
+
+bool has_channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
+  for (const auto& c : t.channels)
+    if (c.quantity == q) return true;
+  return false;
+}
+
+}  // namespace
+
+class TestPowerFormats : public QObject {
+  Q_OBJECT
+ private slots:
+  void joulescope_export() {
+    const auto b = import("joulescope-export.csv");
+    QCOMPARE(b.format, std::string("power-csv"));
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.time_s.size(), std::size_t{50});
+    QCOMPARE(t.time_s[49], 0.049);
+    QCOMPARE(t.channels.size(), std::size_t{3});  // charge and energy are integrals, not read as channels
+    QCOMPARE(channel(t, bs::PowerQuantity::Voltage).values[0], 5.012);
+    QVERIFY(std::abs(channel(t, bs::PowerQuantity::Current).values[30] - (0.612 + 0.003 * std::sin(30.0))) < 1e-6);
+    QVERIFY(b.warnings.size() == 1 && b.warnings[0].find("'charge' (5), 'energy' (6)") != std::string::npos);
+    // The older export's '#'-prefixed header line.
+    const auto hashed = bs::parse_power_csv("#time,current,voltage,power\n0.000000,0.512,5.01,2.565\n0.001000,0.514,5.01,2.575\n", "js.csv");
+    QCOMPARE(channel(hashed.power_traces.at(0), bs::PowerQuantity::Power).values[1], 2.575);
+  }
+  void otii_export_with_irregular_times() {
+    const bs::PowerTrace t = import("otii-export.csv").power_traces.at(0);
+    QCOMPARE(t.time_s.size(), std::size_t{8});
+    QCOMPARE(t.time_s[4], 0.00175);
+    QCOMPARE(channel(t, bs::PowerQuantity::Current).values[7], 0.0895);
+    QCOMPARE(channel(t, bs::PowerQuantity::Voltage).values[0], 3.3);
+  }
+  void ina219_logger() {
+    const auto b = import("ina219-logger.csv");
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.channels.size(), std::size_t{3});  // bus V, mA, mW; the shunt drop is not the supply
+    QVERIFY(std::abs(t.time_s[11] - 1.1) < 1e-12);  // millis, relative to the first row
+    QCOMPARE(channel(t, bs::PowerQuantity::Current).values[1], 0.83);
+    QCOMPARE(channel(t, bs::PowerQuantity::Voltage).values[1], 12.09);
+    QCOMPARE(channel(t, bs::PowerQuantity::Power).values[0], 9.922);
+    QVERIFY(b.warnings.at(0).find("'shunt_mV' (2)") != std::string::npos);
+  }
+  void decimal_comma_semicolon_bom_crlf() {
+    const bs::PowerTrace t = import("spreadsheet-de.csv").power_traces.at(0);
+    QCOMPARE(t.time_s.size(), std::size_t{8});
+    QCOMPARE(t.time_s[3], 1.5);
+    QCOMPARE(channel(t, bs::PowerQuantity::Current).values[2], 1.54);
+    QCOMPARE(channel(t, bs::PowerQuantity::Voltage).values[7], 15.97);
+    QCOMPARE(t.channels[0].name, std::string("Strom [mA]"));
+  }
+  void iso_timestamps_across_midnight() {
+    const bs::PowerTrace t = import("iso-timestamps.csv").power_traces.at(0);
+    QCOMPARE(t.platform, std::string("NUC"));
+    QCOMPARE(t.start_time, std::string("2026-12-31T23:59:58.000Z"));
+    QCOMPARE(t.time_s.size(), std::size_t{16});
+    QCOMPARE(t.time_s[15], 3.75);  // into the next year
+    QCOMPARE(t.time_s[8], 2.0);
+  }
+  void tab_separated_ms_and_ma_and_supply_from_options() {
+    auto b = import("tab-ms-ma.tsv");
+    bs::PowerTrace t = b.power_traces.at(0);
+    QCOMPARE(t.time_s[9], 0.9);
+    QCOMPARE(channel(t, bs::PowerQuantity::Current).values[9], 0.599);
+    QVERIFY(!t.supply_voltage_v);  // current only, no supply: kept empty, and said so
+    QVERIFY(b.warnings.at(0).find("no supply voltage") != std::string::npos);
+    bs::PowerImportOptions options;
+    options.supply_voltage_v = 16.0;
+    options.platform = "Jetson TX2";
+    b = bs::import_power_log(kData + "tab-ms-ma.tsv", options);
+    QCOMPARE(b.format, std::string("power-csv"));
+    QCOMPARE(*b.power_traces.at(0).supply_voltage_v, 16.0);
+    QCOMPARE(b.power_traces.at(0).platform, std::string("Jetson TX2"));
+    QVERIFY(b.warnings.empty());
+  }
+  void header_aliases_and_units() {
+    struct Case {
+      const char* header;
+      double time_scale, value_scale;
+      bs::PowerQuantity quantity;
+    };
+    const Case cases[] = {
+        {"time,current", 1, 1, bs::PowerQuantity::Current},
+        {"t,I", 1, 1, bs::PowerQuantity::Current},
+        {"Time [s],Current (mA)", 1, 1e-3, bs::PowerQuantity::Current},
+        {"time_ms,current_mA", 1e-3, 1e-3, bs::PowerQuantity::Current},
+        {"timestamp,A", 1, 1, bs::PowerQuantity::Current},
+        {"time_us,current_uA", 1e-6, 1e-6, bs::PowerQuantity::Current},
+        {"\"Time [ms]\", \"Power [mW]\"", 1e-3, 1e-3, bs::PowerQuantity::Power},
+        {"Timestamp (s),Main power (W)", 1, 1, bs::PowerQuantity::Power},
+        {"elapsed_s,main_current", 1, 1, bs::PowerQuantity::Current},  // a name part after '_' that is no unit
+        {"millis,mW", 1e-3, 1e-3, bs::PowerQuantity::Power},
+    };
+    for (const Case& c : cases) {
+      const auto b = bs::parse_power_csv(std::string(c.header) + "\n0,0\n2,5\n", "aliases.csv");
+      const bs::PowerTrace& t = b.power_traces.at(0);
+      QVERIFY2(std::abs(t.time_s[1] - 2 * c.time_scale) < 1e-15, c.header);
+      QVERIFY2(has_channel(t, c.quantity), c.header);
+      QVERIFY2(std::abs(channel(t, c.quantity).values[1] - 5 * c.value_scale) < 1e-15, c.header);
+    }
+  }
+  void trailing_separator_and_comments_between_rows() {
+    const auto b = bs::parse_power_csv("time_s,current_A,\n0,1,\n# marker: load starts\n1,2,\n", "x.csv");
+    QCOMPARE(b.power_traces.at(0).time_s.size(), std::size_t{2});
+    QCOMPARE(b.power_traces.at(0).channels.at(0).values[1], 2.0);
+  }
+  void streaming_equals_in_memory() {
+    // A file larger than the reader's 1 MiB block: lines cut at block edges must parse like in memory.
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("big.csv").toStdString();
+    std::string text = "time_s,current_A,voltage_V\n";
+    for (int k = 0; k < 120000; ++k)
+      text += std::to_string(k * 0.001) + "," + std::to_string(2.0 + (k % 97) * 0.001) + ",16.0" + std::string(k % 7, ' ') + "\n";
+    QFile f(QString::fromStdString(path));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text.data(), static_cast<qint64>(text.size()));
+    f.close();
+    const auto streamed = bs::read_power_csv(path).power_traces.at(0);
+    const auto memory = bs::parse_power_csv(text, path).power_traces.at(0);
+    QCOMPARE(streamed.time_s.size(), std::size_t{120000});
+    QVERIFY(streamed.time_s == memory.time_s);
+    QVERIFY(streamed.channels[0].values == memory.channels[0].values);
+    QCOMPARE(streamed.channels[1].values[119999], 16.0);
+  }
+  void sniffing_picks_power_csv_only_for_power_logs() {
+    const bs::PowerCsvImporter imp;
+    QCOMPARE(imp.sniff("time_s,current_A\n0,1\n", "x.txt"), 70);
+    QCOMPARE(imp.sniff("# comment\n#time,current,voltage,power\n", "x"), 70);
+    QCOMPARE(imp.sniff("name,iterations,real_time,cpu_time,time_unit\n", "x.csv"), 0);  // Google Benchmark CSV
+    QCOMPARE(imp.sniff("# logged at 10 Hz, time in s\n", "x.csv"), 0);
+    QCOMPARE(imp.sniff("{\"format\": \"benchscope-run\"}", "x.csv"), 0);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestPowerFormats)
+#include "test_power_formats.moc"

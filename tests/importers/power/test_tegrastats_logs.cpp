@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tegrastats from three Jetson generations, the interval option and the rules for broken logs.
+#include <QtTest>
+
+#include "importer.h"
+#include "power_import.h"
+#include "tegrastats.h"
+
+namespace {
+
+const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/power/";
+
+bs::ImportError error_of(const std::string& text) {
+  try {
+    bs::parse_tegrastats(text, "t.log");
+  } catch (const bs::ImportError& e) {
+    return e;
+  }
+  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
+}
+
+}  // namespace
+
+class TestTegrastatsLogs : public QObject {
+  Q_OBJECT
+ private slots:
+  void nano_jetpack4_pom_rails() {
+    const auto b = bs::import_file(kData + "tegrastats-nano-jetpack4.log", bs::CancelToken{});
+    QCOMPARE(b.format, std::string("tegrastats"));
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.channels.size(), std::size_t{3});
+    QCOMPARE(t.channels[0].name, std::string("POM_5V_IN"));
+    QCOMPARE(t.channels[0].values[2], 6.421);  // instantaneous, not the running average 4283 mW
+    QCOMPARE(t.channels[1].values[3], 2.851);
+    QCOMPARE(t.time_s[3], 3.0);
+    QVERIFY(t.start_time.empty());
+    QVERIFY(b.warnings.empty());
+  }
+  void agx_xavier_plain_rail_names_warn_about_the_missing_input_rail() {
+    const auto b = bs::import_file(kData + "tegrastats-xavier-agx.log", bs::CancelToken{});
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.channels.size(), std::size_t{6});  // GPU CPU SOC CV VDDRQ SYS5V
+    QCOMPARE(t.channels[0].name, std::string("GPU"));
+    QCOMPARE(t.channels[0].values[2], 4.955);
+    QCOMPARE(t.channels[5].name, std::string("SYS5V"));
+    QCOMPARE(b.warnings.size(), std::size_t{1});
+    QVERIFY(b.warnings[0].find("no board input rail") != std::string::npos);
+  }
+  void orin_jetpack6_timestamps_across_the_new_year() {
+    const auto b = bs::import_file(kData + "tegrastats-orin-jetpack6.log", bs::CancelToken{});
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.channels[0].name, std::string("VDD_IN"));
+    QCOMPARE(t.channels[1].name, std::string("VDD_CPU_GPU_CV"));
+    QCOMPARE(t.channels[0].values[1], 7.52);
+    QCOMPARE(t.time_s[1], 1.0);
+    QCOMPARE(t.time_s[2], 3.0);  // the log's own clock: one line was never written
+    QCOMPARE(t.start_time, std::string("2026-12-31T23:59:59"));
+  }
+  void interval_option() {
+    bs::PowerImportOptions options;
+    options.interval_s = 0.25;
+    const auto b = bs::import_power_log(kData + "tegrastats-nano-jetpack4.log", options);
+    QCOMPARE(b.format, std::string("tegrastats"));
+    QCOMPARE(b.power_traces.at(0).time_s[3], 0.75);
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_tegrastats("RAM 1/2MB VDD_IN 1/1\n", "t.log", 0.0));
+  }
+  void broken_logs() {
+    // Rails that change in the middle: an error at that line; at the very end: a cut-off line, skipped.
+    auto e = error_of("RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 100/100\nRAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\n");
+    QCOMPARE(e.location().line, std::size_t{2});
+    QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
+    const auto cut = bs::parse_tegrastats("RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 120/110\n\n", "t.log");
+    QCOMPARE(cut.power_traces.at(0).time_s.size(), std::size_t{1});
+    QVERIFY(cut.warnings.at(0).find("t.log:2: incomplete last line") != std::string::npos);
+    // Timestamps going backwards, and on some lines only.
+    e = error_of("01-02-2027 10:00:05 RAM 1/2MB VDD_IN 1/1\n01-02-2027 10:00:04 RAM 1/2MB VDD_IN 1/1\n01-02-2027 10:00:06 RAM 1/2MB VDD_IN 1/1\n");
+    QCOMPARE(e.location().line, std::size_t{2});
+    QVERIFY(std::string(e.what()).find("backwards") != std::string::npos);
+    e = error_of("01-02-2027 10:00:05 RAM 1/2MB VDD_IN 1/1\nRAM 1/2MB VDD_IN 1/1\nRAM 1/2MB VDD_IN 1/1\n");
+    QCOMPARE(e.location().line, std::size_t{2});
+    // No rails at all (not run as root): an error that says why.
+    e = error_of("RAM 1/2MB CPU [1%@100] EMC_FREQ 0%\n");
+    QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
+    QVERIFY(std::string(e.what()).find("no lines with power rails") != std::string::npos);
+    // Many rail-less lines: listed up to ten, then counted.
+    std::string text = "RAM 1/2MB VDD_IN 1/1\n";
+    for (int k = 0; k < 25; ++k) text += "RAM 1/2MB CPU [1%@100]\n";
+    text += "RAM 1/2MB VDD_IN 2/1\n";
+    const auto many = bs::parse_tegrastats(text, "t.log");
+    QCOMPARE(many.warnings.size(), std::size_t{11});
+    QVERIFY(many.warnings.back().find("15 more lines skipped") != std::string::npos);
+  }
+  void sniffing() {
+    const bs::TegrastatsImporter imp;
+    QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) VDD_IN 3981/3981\n", "x.log"), 90);
+    QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) SWAP 0/3927MB CPU [3%@345]\n", "x.log"), 0);  // no rails
+    QCOMPARE(imp.sniff("time_s,current_A\n0,1\n", "x.csv"), 0);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestTegrastatsLogs)
+#include "test_tegrastats_logs.moc"
