@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
+#include <fstream>
 #include <iostream>
 
 #include "analysis/flops.h"
+#include "analysis/stats.h"
 #include "args.h"
 #include "bench_vision.h"
 #include "command.h"
@@ -13,53 +16,115 @@
 #include "signals.h"
 
 namespace bs::cli {
+
+int bench_power_csv(const std::vector<std::string>& args, std::ostream& out);  // in cmd_power.cpp
+
 namespace {
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+std::string load_average() {
+  std::ifstream f("/proc/loadavg");
+  std::string one, five;
+  f >> one >> five;
+  return one.empty() ? "unknown" : one + " (1 min), " + five + " (5 min)";
+}
+
+// Per-core peak of a backend that runs on this CPU's cores (CPU SIMD, CPU scalar, an OpenCL CPU device); 0 for
+// GPUs, where the host's CPU time says nothing about the device.
+double per_core_peak(const kernels::Backend& b, const kernels::CpuInfo& cpu) {
+  if (b.kind != DeviceKind::Cpu) return 0;
+  if (b.id == "cpu-scalar") return b.theoretical_peak_flops;  // one thread
+  return cpu.peak_flops / cpu.threads;
 }
 
 int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   const ParsedArgs args = parse_args(raw, {}, {"--runs", "--workers"});
-  const int runs = static_cast<int>(args.number("--runs", 5));
+  const int runs = static_cast<int>(args.number("--runs", 7));
   if (runs < 1 || runs > 1000) throw UsageError("--runs must be between 1 and 1000");
+  // Large W, so one run is tens of milliseconds of work and thread start-up (milliseconds on a shared machine) is
+  // a small part of it: 16384 workers x 4 points for the throughput variants (~50 ms at 300 GFLOPS), 2048 for the
+  // latency-bound paper variants (one dependent chain per worker, ~0.2 s at 10 GFLOPS).
+  const auto w_override = args.value("--workers");
+  const double w_given = args.number("--workers", 0);
+  if (w_override && (w_given < 1 || w_given > 1e6)) throw UsageError("--workers must be between 1 and 1e6");
+  const std::string load_before = load_average();
   const kernels::CpuInfo cpu = kernels::detect_cpu();
   const auto backends = kernels::available_backends(cpu);
   const kernels::RotationParams params{4, 40000};
-  char line[256];
-  std::snprintf(line, sizeof line, "CPU: %s, %d threads, %.3f GHz measured, %s\n", cpu.model.c_str(), cpu.threads,
-                cpu.clock_hz / 1e9, cpu.simd.name.c_str());
-  out << line << "D = 4, N = 40,000; GFLOPS = median of " << runs << " runs; % of the theoretical peak computed here\n\n";
-  std::snprintf(line, sizeof line, "%-40s %-11s %9s %10s %10s %8s\n", "backend", "variant", "workers", "GFLOPS",
-                "peak", "% peak");
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "CPU: %s (%s), %d threads, %.3f GHz measured (dependent imul chain, thread CPU time), %s, "
+                "%d FMA pipes assumed, %.0f flop/cycle/core\nload average before: %s\n",
+                cpu.model.c_str(), cpu.vendor.c_str(), cpu.threads, cpu.clock_hz / 1e9, cpu.simd.name.c_str(),
+                cpu.fma_ports, cpu.flops_per_cycle, load_before.c_str());
+  out << line << "D = 4, N = 40,000; GFLOPS of each of " << runs
+      << " runs after one warm-up (wall clock, steady_clock); % of the theoretical peak computed here.\n"
+         "'% peak/CPU s': the same flops per CPU-second the process got, against one core's peak: the code's\n"
+         "efficiency when other processes share the cores (CPU devices only).\n\n";
+  std::snprintf(line, sizeof line, "%-34s %-10s %7s %9s %20s %9s %8s %13s\n", "backend", "variant", "W", "median",
+                "mean \xC2\xB1 SD (n)", "peak", "% peak", "% peak/CPU s");
   out << line;
-  double simd_best = 0, opencl_best = 0;
+  double simd_best = 0, opencl_best = 0, simd_best_cpu = 0, opencl_best_cpu = 0;
   for (const auto& b : backends) {
     for (const auto v : b.variants) {
-      // Enough work for every thread: 4096 points (throughput) or 4096 tasks (paper); the scalar reference
-      // gets a few workers so the benchmark stays short.
-      const std::int64_t workers =
-          b.id == "cpu-scalar" ? 8 : static_cast<std::int64_t>(args.number("--workers", 1024));
-      std::vector<double> gflops;
+      // The single-threaded scalar reference gets 8 workers so the benchmark stays short.
+      const std::int64_t workers = b.id == "cpu-scalar"           ? 8
+                                   : w_override                    ? static_cast<std::int64_t>(w_given)
+                                   : v == kernels::Variant::Paper ? 2048
+                                                                  : 16384;
+      std::vector<double> gflops, cpu_efficiency;
       std::vector<float> outputs;
       b.run_point(params, workers, v, outputs, interrupt_token());  // warm-up
+      const double flops = rotation_flop_count(params.dims, params.iterations, workers);
       for (int r = 0; r < runs; ++r) {
+        const double c0 = process_cpu_seconds();
         const double t = b.run_point(params, workers, v, outputs, interrupt_token());
-        if (kernels::first_wrong_output(outputs, params) >= 0) throw std::runtime_error(b.label + ": wrong output");
-        gflops.push_back(rotation_flops(params.dims, params.iterations, workers, t) / 1e9);
+        const double cpu_s = process_cpu_seconds() - c0;
+        if (kernels::first_wrong_output(outputs, params) >= 0)
+          throw std::runtime_error(b.label + " " + b.variant_label(v) + ": output differs from the closed form");
+        gflops.push_back(flops / t / 1e9);
+        if (per_core_peak(b, cpu) > 0 && cpu_s > 0) cpu_efficiency.push_back(flops / cpu_s / per_core_peak(b, cpu));
       }
       const double g = median(gflops);
-      if (b.id == "cpu-simd") simd_best = std::max(simd_best, g);
-      if (b.id.starts_with("opencl")) opencl_best = std::max(opencl_best, g);
-      const std::string name = b.id.starts_with("opencl") ? b.label + " " + b.device_name.substr(0, 20) : b.label;
-      std::snprintf(line, sizeof line, "%-40s %-11s %9lld %10.2f %10.2f %7.1f%%\n", name.c_str(),
-                    kernels::variant_name(v).c_str(), static_cast<long long>(workers), g,
-                    b.theoretical_peak_flops / 1e9, 100.0 * g * 1e9 / b.theoretical_peak_flops);
+      const Summary sum = summarize(gflops);
+      const double eff = cpu_efficiency.empty() ? 0 : median(cpu_efficiency);
+      if (b.id == "cpu-simd") {
+        simd_best = std::max(simd_best, g);
+        simd_best_cpu = std::max(simd_best_cpu, eff);
+      }
+      if (b.id.starts_with("opencl")) {
+        opencl_best = std::max(opencl_best, g);
+        opencl_best_cpu = std::max(opencl_best_cpu, eff);
+      }
+      const std::string name = b.id.starts_with("opencl") || b.id.starts_with("cuda")
+                                   ? b.id + " " + b.device_name.substr(0, 24)
+                                   : b.label;
+      char spread[64], eff_text[32];
+      std::snprintf(spread, sizeof spread, "%.2f \xC2\xB1 %.2f (%zu)", sum.mean, sum.sd, sum.n);
+      if (eff > 0)
+        std::snprintf(eff_text, sizeof eff_text, "%.1f%%", 100.0 * eff);
+      else
+        std::snprintf(eff_text, sizeof eff_text, "n/a");
+      std::snprintf(line, sizeof line, "%-34s %-10s %7lld %9.2f %21s %9.2f %7.1f%% %13s\n", name.c_str(),
+                    b.variant_label(v).c_str(), static_cast<long long>(workers), g, spread,
+                    b.theoretical_peak_flops / 1e9, 100.0 * g * 1e9 / b.theoretical_peak_flops, eff_text);
       out << line;
     }
   }
-  // Sweep bookkeeping: wall time of a 100-point sweep (the paper's N) against the sum of its timed points.
+  out << "(GFLOPS; peak in GFLOPS)\n";
+  // Sweep bookkeeping: wall time of a 100-point sweep (the paper's N) against the sum of its timed points. The
+  // difference is allocation, initialisation, output checks, progress and result handling.
   const auto& simd = backends.front();
   kernels::SweepSpec spec;
   for (int i = 1; i <= 100; ++i) spec.workers.push_back(64 * i);
@@ -70,33 +135,43 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   double timed = 0;
   for (const auto& s : result.runs.front().samples) timed += s.seconds.front();
+  const double clock_after = kernels::calibrate_clock_hz();
   std::snprintf(line, sizeof line,
-                "\nsweep of 100 points (N = 40,000): wall %.3f s, timed kernel %.3f s, bookkeeping overhead %.2f %%\n"
-                "CPU SIMD best: %.2f GFLOPS = %.1f %% of the %.2f GFLOPS theoretical peak\n",
+                "\nsweep of 100 points (W = 64..6400, D = 4, N = 40,000): wall %.3f s, timed kernel %.3f s, "
+                "bookkeeping overhead %.2f %%\n"
+                "CPU SIMD best: %.2f GFLOPS = %.1f %% of the %.2f GFLOPS theoretical peak (%.1f %% per CPU-second)\n",
                 wall, timed, 100.0 * (wall - timed) / wall, simd_best, 100.0 * simd_best * 1e9 / cpu.peak_flops,
-                cpu.peak_flops / 1e9);
+                cpu.peak_flops / 1e9, 100.0 * simd_best_cpu);
   out << line;
-  if (opencl_best > 0) {
-    std::snprintf(line, sizeof line, "OpenCL best / CPU SIMD best: %.2f (%.2f / %.2f GFLOPS)\n", opencl_best / simd_best,
-                  opencl_best, simd_best);
+  if (opencl_best > 0 && simd_best > 0) {
+    std::snprintf(line, sizeof line, "OpenCL best / CPU SIMD best: %.2f (%.2f / %.2f GFLOPS; per CPU-second %.2f)\n",
+                  opencl_best / simd_best, opencl_best, simd_best,
+                  simd_best_cpu > 0 ? opencl_best_cpu / simd_best_cpu : 0.0);
     out << line;
   }
+  std::snprintf(line, sizeof line, "clock measured again at the end: %.3f GHz; load average after: %s\n",
+                clock_after / 1e9, load_average().c_str());
+  out << line;
   return 0;
 }
 
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels | bench vision)",
+    "benchmarks printing figures and ratios (bench kernels | bench vision | bench power-csv)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W]\n"
-    "       benchscope-cli bench vision [--frames F]\n"
-    "  Best GFLOPS per backend and variant (D = 4, N = 40,000, median of R runs), % of this machine's\n"
-    "  theoretical peak, and the sweep bookkeeping overhead. Figures only: nothing passes or fails on time.",
+    "       benchscope-cli bench vision [--frames F] [--threads T]\n"
+    "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
+    "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
+    "  median and mean \xC2\xB1 SD of R\n"
+    "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU SIMD\n"
+    "  ratio and the sweep bookkeeping overhead. Figures only: nothing passes or fails on time.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
         const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
         if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
         if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
-        throw UsageError("expected 'bench kernels' or 'bench vision'");
+        if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
+        throw UsageError("expected 'bench kernels', 'bench vision' or 'bench power-csv'");
       } catch (const UsageError& e) {
         err << "benchscope-cli: error: " << e.what() << '\n';
         return 2;

@@ -38,7 +38,9 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   spec.repeats = static_cast<int>(repeats);
   spec.warmup = !args.has("--no-warmup");
   const std::string variant = args.value("--variant").value_or("throughput");
-  if (variant != "paper" && variant != "throughput") throw UsageError("--variant must be paper or throughput");
+  // The throughput variant's per-backend labels (float16x4, float4x4) are accepted as its names too.
+  if (variant != "paper" && variant != "throughput" && variant != "float16x4" && variant != "float4x4")
+    throw UsageError("--variant must be paper or throughput");
   spec.variant = variant == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
 
   const kernels::CpuInfo cpu = kernels::detect_cpu();
@@ -56,12 +58,17 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     err << "benchscope-cli: " << backend.label << " on " << backend.device_name << " (" << backend.details
         << "), theoretical peak " << format_si(backend.theoretical_peak_flops, "FLOPS") << '\n';
   const bool quiet = args.has("--quiet");
-  const auto result = kernels::run_sweep(
-      backend, cpu, spec, interrupt_token(),
-      [&](double f, std::string_view step) {
-        if (!quiet) err << "\r" << std::setw(5) << std::fixed << std::setprecision(1) << f * 100 << " % " << step
-                        << "          " << std::flush;
-      });
+  kernels::SweepResult result;
+  try {
+    result = kernels::run_sweep(
+        backend, cpu, spec, interrupt_token(),
+        [&](double f, std::string_view step) {
+          if (!quiet) err << "\r" << std::setw(5) << std::fixed << std::setprecision(1) << f * 100 << " % " << step
+                          << "          " << std::flush;
+        });
+  } catch (const std::invalid_argument& e) {  // sizes or D the backend refuses before running anything
+    throw UsageError(e.what());
+  }
   if (!quiet) err << '\n';
   if (result.cancelled) err << "benchscope-cli: cancelled; keeping the " << result.runs.size() << " partial run(s)\n";
 
@@ -92,7 +99,7 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
       if (row.fraction_of_theoretical)
         out << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
             << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
-      out << '\n';
+      out << " [variant " << row.variant << "]\n";
     }
   }
   return result.cancelled ? 1 : 0;
@@ -101,11 +108,14 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
 const CommandRegistrar registrar({
     "run",
     "measure the paper's rotation kernel on this machine (FLOPS sweep)",
-    "usage: benchscope-cli run flops [--backend cpu|cpu-simd|cpu-scalar|opencl [--device N]]\n"
+    "usage: benchscope-cli run flops [--backend cpu|cpu-simd|cpu-scalar|opencl|cuda [--device N]]\n"
     "         [--variant throughput|paper]\n"
     "         [--points 1,2,4] [--iterations N] [--workers SPEC] [--repeats R] [--no-warmup]\n"
     "         [--out run.json] [--workspace W.bsw] [--json] [--quiet]\n"
     "  SPEC: 256:1024000:256 (start:stop:step), 1,2,4,8, or mixes such as 1,2,4:64:4.\n"
+    "  paper: the paper's kernel (OpenMP task / work-item / thread per worker; OpenCL and CUDA: float, float2,\n"
+    "  float4 for D = 1, 2, 4). throughput: enough independent vector chains per thread to reach the FMA pipes'\n"
+    "  peak (CPU: all W*D points packed into vectors; OpenCL: float16x4; CUDA: float4x4).\n"
     "  Every output is checked against the closed form D*(cos 2N + sin 2N). Ctrl+C keeps the completed points.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {

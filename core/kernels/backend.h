@@ -13,32 +13,46 @@
 namespace bs::kernels {
 
 struct Backend {
-  std::string id;           // "cpu-scalar", "cpu-simd"
+  std::string id;           // "cpu-simd", "cpu-scalar", "opencl:N", "cuda:N"
   std::string label;        // FlopsRun::backend, e.g. "CPU SIMD (AVX-512)"
   std::string device_name;  // FlopsRun::device
   DeviceKind kind = DeviceKind::Cpu;
   std::vector<Variant> variants;
+  // FlopsRun::variant of the throughput variant: "throughput" (CPU), "float16x4" (OpenCL), "float4x4" (CUDA).
+  std::string throughput_label = "throughput";
+  std::vector<int> paper_dims;  // D values the paper kernel has a vector type for (OpenCL, CUDA: 1, 2, 4); empty: any
   double theoretical_peak_flops = 0;  // 0 when unknown
   std::string details;                // properties shown to the user ("2 threads, 2.68 GHz measured, ...")
   // Times one point: W workers, each rotating D points N times; fills one output per worker. Polls `cancel`
-  // between chunks of work (at most ~20 ms apart) and throws Cancelled.
+  // between chunks of work (~40 ms apart, see StepChunker) and throws Cancelled; std::invalid_argument for sizes
+  // the backend cannot run (check_problem_size, or a D the paper kernel has no vector type for).
   std::function<double(const RotationParams&, std::int64_t workers, Variant, std::vector<float>& outputs,
                        const CancelToken& cancel)>
       run_point;
+
+  // The label stored in FlopsRun::variant: "paper" or throughput_label.
+  std::string variant_label(Variant v) const { return v == Variant::Paper ? "paper" : throughput_label; }
 };
 
 // The CPU backends: the scalar reference (single thread, exact paper semantics) and SIMD + OpenMP.
 std::vector<Backend> cpu_backends(const CpuInfo& cpu);
 
-// Provenance of a run measured here, naming the backend, ISA and measured clock.
+// Provenance of a run measured here: origin measured, host, CPU model, the OpenCL/CUDA device as gpu_model, OS,
+// compiler, tool, UTC date, and a note naming the backend's properties (driver version for OpenCL), the ISA, the
+// measured clock and the build flags.
 Provenance measured_provenance(const CpuInfo& cpu, const Backend& backend);
 
 }  // namespace bs::kernels
 
 namespace bs::kernels {
 
-// Every backend this machine has, in order: CPU SIMD, CPU scalar, then each OpenCL device ("opencl:N").
+// Every backend this machine has, in order: CPU SIMD, CPU scalar, each OpenCL device ("opencl:N"), each CUDA device
+// ("cuda:N").
 std::vector<Backend> available_backends(const CpuInfo& cpu);
+
+// Backends this build knows but cannot run here, each with the reason: "cuda: no CUDA device (...)", "cuda: this
+// build has no CUDA (nvcc was not found)", "opencl: no OpenCL platform installed".
+std::vector<std::string> unavailable_backends();
 
 // Finds a backend by id; "cpu" means "cpu-simd", "opencl" and "cuda" the first device of each ("opencl:0").
 // Throws std::invalid_argument listing the available ids.

@@ -4,37 +4,48 @@
 #include <ctime>
 
 #include "kernels/backend.h"
+#include "kernels/step_chunker.h"
 
 namespace bs::kernels {
 namespace {
 
-// Rotations of one point per chunk: ~20 ms of work at ~100 GFLOPS, so a cancel is seen well within 200 ms.
-constexpr double kPointStepsPerChunk = 3e8;
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Advances the scalar reference N steps in chunks of ~40 ms, polling `cancel` before each; returns the seconds of
+// all chunks.
+double advance_in_chunks(ScalarRotation& state, const RotationParams& p, std::int64_t workers, const CancelToken& cancel) {
+  StepChunker chunks(p.iterations, workers * p.dims);
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!chunks.done()) {
+    cancel.throw_if_cancelled();
+    const std::int64_t steps = chunks.next();
+    const auto c0 = std::chrono::steady_clock::now();
+    state.advance(steps);
+    chunks.completed(steps, seconds_since(c0));
+  }
+  return seconds_since(t0);
+}
 
 double run_simd(const SimdTarget& target, const RotationParams& p, std::int64_t workers, Variant variant,
                 std::vector<float>& outputs, const CancelToken& cancel) {
   SimdRotation state(target, variant, p, workers);
-  const auto per_step = static_cast<double>(workers) * p.dims;
-  const auto chunk = std::max<std::int64_t>(1, static_cast<std::int64_t>(kPointStepsPerChunk / per_step));
-  outputs.assign(static_cast<std::size_t>(workers), 0.0f);
   const auto t0 = std::chrono::steady_clock::now();
-  for (std::int64_t done = 0; done < p.iterations; done += chunk) {
-    cancel.throw_if_cancelled();
-    state.advance(std::min(chunk, p.iterations - done));
-  }
+  state.run(p.iterations, cancel);
+  const double seconds = seconds_since(t0);
+  outputs.assign(static_cast<std::size_t>(workers), 0.0f);
   state.outputs(outputs);
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return seconds;
 }
 
 double run_scalar(const RotationParams& p, std::int64_t workers, std::vector<float>& outputs,
                   const CancelToken& cancel) {
+  ScalarRotation state(p, workers);
+  const double seconds = advance_in_chunks(state, p, workers, cancel);
   outputs.assign(static_cast<std::size_t>(workers), 0.0f);
-  const auto t0 = std::chrono::steady_clock::now();
-  for (std::int64_t w = 0; w < workers; ++w) {
-    cancel.throw_if_cancelled();
-    rotate_scalar(p, std::span<float>(outputs).subspan(static_cast<std::size_t>(w), 1));
-  }
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  state.outputs(outputs);
+  return seconds;
 }
 
 std::string utc_now() {
@@ -50,8 +61,10 @@ std::string utc_now() {
 
 std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
   char details[256];
-  std::snprintf(details, sizeof details, "%d threads, %.2f GHz measured, %s (%d lanes), %.0f flop/cycle/core",
-                cpu.threads, cpu.clock_hz / 1e9, cpu.simd.name.c_str(), cpu.simd.lanes, cpu.flops_per_cycle);
+  std::snprintf(details, sizeof details,
+                "%d threads, %.2f GHz measured, %s (%d lanes%s), %d FMA pipes assumed, %.0f flop/cycle/core",
+                cpu.threads, cpu.clock_hz / 1e9, cpu.simd.name.c_str(), cpu.simd.lanes, cpu.simd.fma ? ", FMA" : "",
+                cpu.fma_ports, cpu.flops_per_cycle);
   Backend simd;
   simd.id = "cpu-simd";
   simd.label = "CPU SIMD (" + cpu.simd.name + ")";
@@ -68,10 +81,14 @@ std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
   scalar.label = "CPU scalar (reference)";
   scalar.device_name = cpu.model;
   scalar.variants = {Variant::Paper};
-  // One thread, one float per op: a worker's D points are independent chains, so the 4 FP ops of a point-step
-  // are throughput-bound on the 2 FP pipes: 6 flops per 2 cycles.
-  scalar.theoretical_peak_flops = cpu.clock_hz * 6.0 * 2 / 4.0;
-  scalar.details = "1 thread, scalar float, the paper's exact semantics";
+  // One thread, one float per op and no FMA (ISO C++ does not contract c*x - s*y, and the file is built without
+  // vectorisation): 4 mul + 2 add per point-step, the throughput bound when a worker's D points give enough
+  // independent chains (D = 1 is latency-bound far below it).
+  const double scalar_per_cycle = rotation_flops_per_cycle(1, false, cpu.fma_ports, cpu.separate_add_pipes);
+  scalar.theoretical_peak_flops = cpu.clock_hz * scalar_per_cycle;
+  std::snprintf(details, sizeof details, "1 thread, scalar float without FMA, the paper's exact semantics, "
+                "%.2f GHz measured, %.0f flop/cycle", cpu.clock_hz / 1e9, scalar_per_cycle);
+  scalar.details = details;
   scalar.run_point = [](const RotationParams& p, std::int64_t w, Variant, std::vector<float>& out,
                         const CancelToken& c) { return run_scalar(p, w, out, c); };
   return {simd, scalar};
@@ -83,10 +100,14 @@ Provenance measured_provenance(const CpuInfo& cpu, const Backend& backend) {
   p.host = host_name();
   p.cpu_model = cpu.model;
   p.os = os_name();
+  if (backend.id.starts_with("opencl") || backend.id.starts_with("cuda")) p.gpu_model = backend.device_name;
   p.compiler = BENCHSCOPE_COMPILER;
   p.tool = std::string("benchscope ") + BENCHSCOPE_VERSION;
   p.date = utc_now();
-  p.note = backend.id + ": " + backend.details + "; built " + BENCHSCOPE_BUILD_FLAGS;
+  char cpu_note[160];
+  std::snprintf(cpu_note, sizeof cpu_note, "host CPU %s, %d threads, %.3f GHz measured (dependent imul chain)",
+                cpu.simd.name.c_str(), cpu.threads, cpu.clock_hz / 1e9);
+  p.note = backend.id + ": " + backend.details + "; " + cpu_note + "; built " + BENCHSCOPE_BUILD_FLAGS;
   return p;
 }
 

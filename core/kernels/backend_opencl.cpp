@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #define CL_TARGET_OPENCL_VERSION 120
 #include "kernels/backend_opencl.h"
+#include "kernels/step_chunker.h"
 
 #include <CL/cl.h>
 
@@ -12,9 +13,6 @@
 
 namespace bs::kernels {
 namespace {
-
-// Steps are split into launches of at most this many point-rotations so a cancel is seen within ~20 ms.
-constexpr double kPointStepsPerLaunch = 3e8;
 
 const char* kSource = R"CL(
 // VEC is float, float2 or float4 (-DVEC=...): D = 1, 2, 4 points per work-item, as in the paper.
@@ -87,6 +85,7 @@ class Device {
 
   double run(const RotationParams& p, std::int64_t workers, Variant variant, std::vector<float>& outputs,
              const CancelToken& cancel) {
+    check_problem_size(p, workers);
     std::lock_guard lock(mutex_);
     int width = 16;  // floats per vector element of the state buffers
     std::int64_t items = 0, floats = 0;
@@ -119,18 +118,20 @@ class Device {
     check(clSetKernelArg(kernel, 1, sizeof by, &by), "clSetKernelArg");
     check(clSetKernelArg(kernel, 3, sizeof c, &c), "clSetKernelArg");
     check(clSetKernelArg(kernel, 4, sizeof s, &s), "clSetKernelArg");
-    const auto chunk = std::max<std::int64_t>(
-        1, std::min<std::int64_t>(1 << 30, static_cast<std::int64_t>(kPointStepsPerLaunch / (workers * p.dims))));
     const std::size_t global = static_cast<std::size_t>(items);
     check(clFinish(queue_), "clFinish");
+    // Launches of ~40 ms (StepChunker) so a cancel is seen between them; each launch ends in clFinish.
+    StepChunker chunks(p.iterations, workers * p.dims);
     const auto t0 = std::chrono::steady_clock::now();
-    for (std::int64_t done = 0; done < p.iterations; done += chunk) {
+    while (!chunks.done()) {
       cancel.throw_if_cancelled();
-      const cl_int steps = static_cast<cl_int>(std::min(chunk, p.iterations - done));
+      const cl_int steps = static_cast<cl_int>(chunks.next());
+      const auto c0 = std::chrono::steady_clock::now();
       check(clSetKernelArg(kernel, 2, sizeof steps, &steps), "clSetKernelArg");
       check(clEnqueueNDRangeKernel(queue_, kernel, 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
             "clEnqueueNDRangeKernel");
       check(clFinish(queue_), "clFinish");
+      chunks.completed(steps, std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count());
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     check(clEnqueueReadBuffer(queue_, bx, CL_TRUE, 0, bytes, xs.data(), 0, nullptr, nullptr), "clEnqueueReadBuffer");
@@ -151,13 +152,17 @@ class Device {
     check(err, "clCreateProgramWithSource");
     programs_[width] = program;
     const std::string vec = width <= 1 ? "float" : "float" + std::to_string(width);
+    // -cl-mad-enable lets c*x - s*y become mul + FMA, as the CPU SIMD code does; results stay within the
+    // closed-form tolerance, which every run checks.
     const std::string options = "-DVEC=" + vec + " -cl-mad-enable";
-    if (clBuildProgram(program, 1, &id_, options.c_str(), nullptr, nullptr) != CL_SUCCESS) {
+    if (const cl_int built = clBuildProgram(program, 1, &id_, options.c_str(), nullptr, nullptr); built != CL_SUCCESS) {
       std::size_t size = 0;
       clGetProgramBuildInfo(program, id_, CL_PROGRAM_BUILD_LOG, 0, nullptr, &size);
       std::string log(size, '\0');
       clGetProgramBuildInfo(program, id_, CL_PROGRAM_BUILD_LOG, size, log.data(), nullptr);
-      throw std::runtime_error("OpenCL: kernel build failed: " + log);
+      while (!log.empty() && log.back() == '\0') log.pop_back();
+      throw std::runtime_error("OpenCL: clBuildProgram failed (error " + std::to_string(built) + ") with options '" +
+                               options + "'; build log:\n" + log);
     }
     cl_kernel k = clCreateKernel(program, width == 0 ? "rotate_throughput" : "rotate_paper", &err);
     check(err, "clCreateKernel");
@@ -173,7 +178,46 @@ class Device {
   std::mutex mutex_;
 };
 
+struct GpuLanes {
+  int lanes = 32;
+  std::string why;
+};
+
+// Intel Gen9-Xe: a compute unit is one EU with 8 FP32 lanes (2 x SIMD-4); AMD GCN/RDNA: 64 lanes per CU; NVIDIA: a
+// compute unit is an SM, 64 lanes up to Turing and A100, 128 on Pascal consumer parts, GA10x, Ada, Hopper and later
+// (compute capability from cl_nv_device_attribute_query). Others: 32, a guess the details say is one.
+GpuLanes gpu_lanes_per_compute_unit(cl_device_id id, const std::string& vendor) {
+  constexpr cl_device_info kComputeCapabilityMajorNv = 0x4000, kComputeCapabilityMinorNv = 0x4001;
+  if (vendor.find("Intel") != std::string::npos) return {8, "Intel EU"};
+  if (vendor.find("Advanced Micro Devices") != std::string::npos || vendor.find("AMD") != std::string::npos)
+    return {64, "AMD CU"};
+  if (vendor.find("NVIDIA") != std::string::npos) {
+    cl_uint major = 0, minor = 0;
+    if (clGetDeviceInfo(id, kComputeCapabilityMajorNv, sizeof major, &major, nullptr) == CL_SUCCESS &&
+        clGetDeviceInfo(id, kComputeCapabilityMinorNv, sizeof minor, &minor, nullptr) == CL_SUCCESS) {
+      const bool narrow = major == 7 || (major == 8 && minor == 0) || (major == 6 && minor == 0);
+      return {narrow ? 64 : 128, "NVIDIA SM, compute capability " + std::to_string(major) + "." + std::to_string(minor)};
+    }
+    return {128, "NVIDIA SM, compute capability unknown"};
+  }
+  return {32, "unknown architecture, assumed"};
+}
+
 }  // namespace
+
+std::string opencl_unavailable_reason() {
+  cl_uint nplatforms = 0;
+  const cl_int err = clGetPlatformIDs(0, nullptr, &nplatforms);
+  if (err != CL_SUCCESS || nplatforms == 0)
+    return "no OpenCL platform installed (error " + std::to_string(err) + "; install an ICD such as pocl-opencl-icd)";
+  std::vector<cl_platform_id> platforms(nplatforms);
+  clGetPlatformIDs(nplatforms, platforms.data(), nullptr);
+  for (cl_platform_id platform : platforms) {
+    cl_uint ndevices = 0;
+    if (clGetDeviceIDs(platform, CL_DEVICE_TYPE_ALL, 0, nullptr, &ndevices) == CL_SUCCESS && ndevices > 0) return {};
+  }
+  return "no device on any of the " + std::to_string(nplatforms) + " OpenCL platform(s)";
+}
 
 std::vector<Backend> opencl_backends(const CpuInfo& cpu) {
   std::vector<Backend> out;
@@ -198,15 +242,19 @@ std::vector<Backend> opencl_backends(const CpuInfo& cpu) {
       b.kind = (type & CL_DEVICE_TYPE_GPU) ? DeviceKind::Gpu : (type & CL_DEVICE_TYPE_CPU) ? DeviceKind::Cpu
                                                                                           : DeviceKind::Other;
       b.variants = {Variant::Throughput, Variant::Paper};
+      b.throughput_label = "float16x4";
+      b.paper_dims = {1, 2, 4};
       b.details = device_string(id, CL_DEVICE_VENDOR) + ", driver " + device_string(id, CL_DRIVER_VERSION) + ", " +
                   std::to_string(units) + " compute units, " + std::to_string(mhz) + " MHz";
       if (b.kind == DeviceKind::Cpu) {
         b.theoretical_peak_flops = cpu.peak_flops;  // a CPU device runs on the cores measured above
       } else {
-        // Without vendor tables: one FMA lane per 32-wide SIMT group element at 32 lanes per CU, the smallest
-        // common width; 4 ops per rotation step carry 6 counted flops. A lower bound, labelled approximate.
-        b.theoretical_peak_flops = units * 32.0 * mhz * 1e6 * 6.0 / 4.0;
-        b.details += ", peak approximate (32 lanes/CU assumed)";
+        // FP32 lanes per compute unit from the vendor's architecture (OpenCL does not report it); one FMA per
+        // lane per cycle, and a rotation step is 4 ops (2 mul + 2 FMA) for 6 counted flops.
+        const GpuLanes lanes = gpu_lanes_per_compute_unit(id, device_string(id, CL_DEVICE_VENDOR));
+        b.theoretical_peak_flops = units * static_cast<double>(lanes.lanes) * mhz * 1e6 * 6.0 / 4.0;
+        b.details += ", peak approximate (" + std::to_string(lanes.lanes) + " FP32 lanes per compute unit: " +
+                     lanes.why + ")";
       }
       auto device = std::make_shared<Device>(id);
       b.run_point = [device](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& outputs,

@@ -20,6 +20,8 @@ std::vector<Backend> available_backends(const CpuInfo& cpu) {
     b.device_name = d.name;
     b.kind = DeviceKind::Gpu;
     b.variants = {Variant::Throughput, Variant::Paper};
+    b.throughput_label = "float4x4";
+    b.paper_dims = {1, 2, 4};
     // One FMA per lane per cycle; a rotation step is 4 ops for 6 counted flops.
     b.theoretical_peak_flops = d.multiprocessors * static_cast<double>(d.fp32_lanes_per_sm) * d.clock_khz * 1e3 * 6.0 / 4.0;
     b.details = std::to_string(d.multiprocessors) + " SMs x " + std::to_string(d.fp32_lanes_per_sm) + " lanes, " +
@@ -28,6 +30,7 @@ std::vector<Backend> available_backends(const CpuInfo& cpu) {
     const int index = d.index;
     b.run_point = [index](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& out,
                           const CancelToken& cancel) {
+      check_problem_size(p, w);
       return cuda::run_point(index, p.dims, p.iterations, w, v == Variant::Paper, out, cancel);
     };
     all.push_back(std::move(b));
@@ -36,18 +39,27 @@ std::vector<Backend> available_backends(const CpuInfo& cpu) {
   return all;
 }
 
+std::vector<std::string> unavailable_backends() {
+  std::vector<std::string> out;
+  if (const std::string why = opencl_unavailable_reason(); !why.empty()) out.push_back("opencl: " + why);
+#if BENCHSCOPE_WITH_CUDA
+  std::string why;
+  if (cuda::devices(&why).empty()) out.push_back("cuda: compiled, no CUDA device (" + why + ")");
+#else
+  out.push_back("cuda: this build has no CUDA (nvcc was not found at configure time)");
+#endif
+  return out;
+}
+
 const Backend& find_backend(const std::vector<Backend>& backends, const std::string& id) {
   const std::string wanted = id == "cpu" ? "cpu-simd" : id == "opencl" ? "opencl:0" : id == "cuda" ? "cuda:0" : id;
   for (const Backend& b : backends)
     if (b.id == wanted) return b;
   std::string known;
   for (const Backend& b : backends) known += " " + b.id;
-  throw std::invalid_argument("no backend '" + id + "' on this machine (available:" + known +
-                              #if BENCHSCOPE_WITH_CUDA
-                              "; CUDA needs a GPU and its driver)");
-#else
-                              "; this build has no CUDA: nvcc was not found)");
-#endif
+  std::string missing;
+  for (const std::string& why : unavailable_backends()) missing += "; " + why;
+  throw std::invalid_argument("no backend '" + id + "' on this machine (available:" + known + missing + ")");
 }
 
 }  // namespace bs::kernels

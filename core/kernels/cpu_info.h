@@ -15,17 +15,28 @@ struct CpuInfo {
   // Full-width FP ops per cycle: 2 pipes on Intel since Haswell, Zen, Apple and Neoverse cores; AMD Zen 4 splits a
   // 512-bit op over both 256-bit pipes, so AVX-512 there retires one zmm op per cycle (Zen 5 does not).
   int fma_ports = 2;
-  double flops_per_cycle = 0; // this kernel's counted flops per cycle per core
+  // Whether FP adds have pipes of their own (AMD Zen: FADD pipes 2-3 beside the FMUL/FMA pipes 0-1). Intel cores
+  // run mul, add and FMA on the same ports. Matters only for code without FMA (the scalar reference, SSE4).
+  bool separate_add_pipes = false;
+  double flops_per_cycle = 0; // this kernel's counted flops per cycle per core (SIMD backend)
   double peak_flops = 0;      // threads * clock * flops_per_cycle
 };
 
 // Measures the clock with a dependent chain of 64-bit multiplies (3 cycles latency on every x86 core since
-// Sandy Bridge; a chain of adds is folded by some cores and overstates it). Takes ~0.1 s.
+// Sandy Bridge and on AMD Zen 1-5; a chain of adds is folded by some cores and overstates it), timed in this
+// thread's CPU time so that other processes on a shared machine do not make it look slower. Best of 5, ~0.2 s.
+// On other architectures the same loop gives an estimate that assumes the same 3-cycle latency.
 double calibrate_clock_hz();
 
-// The rotation kernel's peak: one vector step is 2 mul + 2 FMA (or 2 mul + add + sub without FMA) = 4 FP ops on
-// `fma_ports` pipes for lanes * 6 counted flops, so flops/cycle/core = lanes * 6 * ports / 4
-// (AVX-512: 48, AVX2: 24, SSE/NEON: 12).
+// Counted flops (6 per point-step) per cycle per core for a vector of `lanes` floats:
+//  - with FMA, one step of a vector is 2 mul + 2 FMA = 4 ops, all on the `fma_ports` mul/FMA pipes:
+//    lanes * 6 * ports / 4 (AVX-512 with 2 ports: 48, AVX2: 24, NEON: 12);
+//  - without FMA it is 4 mul + 2 add: with separate add pipes the 4 muls bound it (lanes * 6 * ports / 4),
+//    on shared ports all 6 ops do (lanes * 6 * ports / 6).
+double rotation_flops_per_cycle(int lanes, bool fma, int fma_ports, bool separate_add_pipes);
+
+// Model, vendor, threads, best ISA and, when `calibrate`, the measured clock and the SIMD kernel's peak
+// = threads * clock * flops_per_cycle.
 CpuInfo detect_cpu(bool calibrate = true);
 
 std::string host_name();

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/rotation_simd.h"
 
+#include "kernels/step_chunker.h"
+
+#include <chrono>
 #include <cstdlib>
 #include <new>
 #include <stdexcept>
@@ -12,7 +15,8 @@ namespace bs::kernels {
   namespace ns {                                                                                             \
   int lanes();                                                                                               \
   int chains();                                                                                              \
-  void advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t steps, float c, float s);    \
+  bool advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t steps, float c, float s,      \
+                          bool (*cancelled)(const void*), const void* token);                                \
   void advance_paper(float* xs, float* ys, std::int64_t workers, int stride, std::int64_t steps, float c,    \
                      float s);                                                                               \
   }
@@ -28,7 +32,7 @@ namespace {
 
 struct IsaFunctions {
   int (*chains)();
-  void (*throughput)(float*, float*, std::int64_t, std::int64_t, float, float);
+  bool (*throughput)(float*, float*, std::int64_t, std::int64_t, float, float, bool (*)(const void*), const void*);
   void (*paper)(float*, float*, std::int64_t, int, std::int64_t, float, float);
 };
 
@@ -42,6 +46,9 @@ IsaFunctions functions_for(Isa isa) {
     default: return {generic::chains, generic::advance_throughput, generic::advance_paper};
   }
 }
+
+// Called from inside the per-ISA kernels (which must not instantiate library templates such as std::atomic).
+bool token_cancelled(const void* token) { return static_cast<const CancelToken*>(token)->cancelled(); }
 
 float* aligned_floats(std::int64_t count) {
   const std::size_t bytes = ((static_cast<std::size_t>(count) * sizeof(float) + 63) / 64) * 64;
@@ -77,8 +84,7 @@ SimdRotation::Aligned::~Aligned() { std::free(p); }
 SimdRotation::SimdRotation(const SimdTarget& target, Variant variant, const RotationParams& params,
                            std::int64_t workers)
     : target_(target), variant_(variant), params_(params), workers_(workers) {
-  if (workers < 1 || params.dims < 1 || params.iterations < 1)
-    throw std::invalid_argument("workers, D and N must all be at least 1");
+  check_problem_size(params, workers);
   std::int64_t floats = 0;
   if (variant == Variant::Paper) {
     stride_ = (params.dims + 3) / 4 * 4;
@@ -103,7 +109,26 @@ void SimdRotation::advance(std::int64_t steps) {
   if (variant_ == Variant::Paper)
     f.paper(xs_.p, ys_.p, workers_, static_cast<int>(stride_), steps, rotation_cos(), rotation_sin());
   else
-    f.throughput(xs_.p, ys_.p, vectors_, steps, rotation_cos(), rotation_sin());
+    f.throughput(xs_.p, ys_.p, vectors_, steps, rotation_cos(), rotation_sin(), nullptr, nullptr);
+}
+
+void SimdRotation::run(std::int64_t steps, const CancelToken& cancel) {
+  if (variant_ == Variant::Throughput) {
+    cancel.throw_if_cancelled();
+    if (!functions_for(target_.isa)
+             .throughput(xs_.p, ys_.p, vectors_, steps, rotation_cos(), rotation_sin(), token_cancelled, &cancel))
+      throw Cancelled();
+    return;
+  }
+  // Paper variant: one OpenMP task per worker and chunk; chunks of ~40 ms keep it cancellable.
+  StepChunker chunks(steps, workers_ * params_.dims);
+  while (!chunks.done()) {
+    cancel.throw_if_cancelled();
+    const std::int64_t n = chunks.next();
+    const auto t0 = std::chrono::steady_clock::now();
+    advance(n);
+    chunks.completed(n, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
 }
 
 void SimdRotation::outputs(std::span<float> out) const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kernels/rotation.h"
+#include "util/cancel.h"
 
 namespace bs::kernels {
 
@@ -29,6 +30,9 @@ class SimdRotation {
  public:
   SimdRotation(const SimdTarget& target, Variant variant, const RotationParams& params, std::int64_t workers);
   void advance(std::int64_t steps);         // all points, `steps` more rotations
+  // The same, polling `cancel` at least every ~40 ms of work; throws Cancelled (the state is then unusable).
+  // Throughput: one parallel region for all steps; paper: one task per worker and chunk of steps.
+  void run(std::int64_t steps, const CancelToken& cancel);
   void outputs(std::span<float> out) const; // one per worker: sum over its D points of (x + y)
 
  private:

@@ -19,10 +19,18 @@ int lanes() { return kLanes; }
 int chains() { return kChains; }
 
 // Throughput variant: all points packed kLanes to a vector, kChains vectors per block, blocks across threads.
-// `nvec` is a multiple of kChains; xs/ys are BS_SIMD_BYTES-aligned.
-void advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t steps, float c, float s) {
+// `nvec` is a multiple of kChains; xs/ys are BS_SIMD_BYTES-aligned. The whole point is ONE parallel region: a
+// barrier per chunk of steps made the threads spin-wait for each other, and on a shared machine (a descheduled
+// thread) that cost up to 3/4 of the throughput. Blocks go to threads one at a time (dynamic), so a thread that
+// runs takes the blocks of one that does not. Each block runs all `steps` in sub-chunks of ~4e6 point-steps
+// (<= 40 ms on any core doing >= 0.6 GFLOPS), asking `cancelled(token)` between them; returns false when cancelled
+// (the state is then partly advanced and must be discarded).
+bool advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t steps, float c, float s,
+                        bool (*cancelled)(const void*), const void* token) {
   const std::int64_t blocks = nvec / kChains;
-#pragma omp parallel for schedule(static)
+  const std::int64_t sub_chunk = (std::int64_t{1} << 22) / (kChains * kLanes);
+  int stopped = 0;
+#pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t b = 0; b < blocks; ++b) {
     vf* px = reinterpret_cast<vf*>(xs) + b * kChains;
     vf* py = reinterpret_cast<vf*>(ys) + b * kChains;
@@ -39,8 +47,17 @@ void advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t st
 #define BS_STORE(k) px[k] = x##k, py[k] = y##k;
     BS_CHAINS(BS_LOAD)
     const vf vc = vf{} + c, vs = vf{} + s;
-    for (std::int64_t n = 0; n < steps; ++n) {
-      BS_CHAINS(BS_STEP)
+    std::int64_t done = 0;
+    while (done < steps && !__atomic_load_n(&stopped, __ATOMIC_RELAXED)) {
+      if (cancelled && cancelled(token)) {
+        __atomic_store_n(&stopped, 1, __ATOMIC_RELAXED);
+        break;
+      }
+      const std::int64_t n_end = steps - done < sub_chunk ? steps - done : sub_chunk;
+      for (std::int64_t n = 0; n < n_end; ++n) {
+        BS_CHAINS(BS_STEP)
+      }
+      done += n_end;
     }
     BS_CHAINS(BS_STORE)
 #undef BS_STORE
@@ -48,6 +65,7 @@ void advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t st
 #undef BS_LOAD
 #undef BS_CHAINS
   }
+  return !stopped;
 }
 
 // Paper variant: one OpenMP task per worker, as in the paper; a worker's D points sit in 4-wide vectors

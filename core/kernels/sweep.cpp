@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/sweep.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -10,8 +11,21 @@ SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpe
                       const ProgressFn& progress, const std::function<void(const FlopsRun&)>& on_point) {
   if (spec.workers.empty() || spec.dims.empty() || spec.repeats < 1 || spec.iterations < 1)
     throw std::invalid_argument("a sweep needs workers, D values, N >= 1 and repeats >= 1");
+  // A run's samples are ascending and unique by worker count (run JSON v1).
+  std::vector<std::int64_t> workers = spec.workers;
+  std::sort(workers.begin(), workers.end());
+  workers.erase(std::unique(workers.begin(), workers.end()), workers.end());
+  // Refuse what a backend cannot run before the first point, not half-way through the sweep.
+  for (int d : spec.dims) {
+    check_problem_size({d, spec.iterations}, workers.back());
+    check_problem_size({d, spec.iterations}, workers.front());
+    if (spec.variant == Variant::Paper && !backend.paper_dims.empty() &&
+        std::find(backend.paper_dims.begin(), backend.paper_dims.end(), d) == backend.paper_dims.end())
+      throw std::invalid_argument(backend.label + ": the paper kernel runs D = 1, 2 or 4 (float, float2, float4), not D = " +
+                                  std::to_string(d) + "; use the throughput variant for other D");
+  }
   SweepResult result;
-  const double total = static_cast<double>(spec.workers.size() * spec.dims.size());
+  const double total = static_cast<double>(workers.size() * spec.dims.size());
   std::size_t done = 0;
   std::vector<float> outputs;
   try {
@@ -21,17 +35,17 @@ SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpe
       run.device = backend.device_name;
       run.device_kind = backend.kind;
       run.backend = backend.label;
-      run.variant = variant_name(spec.variant);
+      run.variant = backend.variant_label(spec.variant);
       run.iterations = spec.iterations;
       run.dims = d;
       if (backend.theoretical_peak_flops > 0) run.theoretical_peak_flops = backend.theoretical_peak_flops;
       run.provenance = measured_provenance(cpu, backend);
       result.runs.push_back(run);
       const RotationParams params{d, spec.iterations};
-      if (spec.warmup) backend.run_point(params, spec.workers.front(), spec.variant, outputs, cancel);
-      for (std::int64_t w : spec.workers) {
+      if (spec.warmup) backend.run_point(params, workers.front(), spec.variant, outputs, cancel);
+      for (std::int64_t w : workers) {
         if (progress)
-          progress(static_cast<double>(done) / total, "D=" + std::to_string(d) + ", W=" + std::to_string(w));
+          progress(static_cast<double>(done) / total, "W=" + std::to_string(w) + ", D=" + std::to_string(d));
         WorkerSample sample{w, {}};
         for (int r = 0; r < spec.repeats; ++r) {
           const double seconds = backend.run_point(params, w, spec.variant, outputs, cancel);

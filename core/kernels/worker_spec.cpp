@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/worker_spec.h"
 
+#include "kernels/rotation.h"
+
 #include <algorithm>
 #include <charconv>
 #include <stdexcept>
@@ -17,6 +19,14 @@ std::int64_t number(std::string_view text, std::string_view part) {
   if (ec != std::errc() || ptr != text.data() + text.size() || text.empty())
     throw std::invalid_argument("'" + std::string(part) + "': expected a whole number, got '" + std::string(text) + "'");
   if (v < 1) throw std::invalid_argument("'" + std::string(part) + "': numbers must be at least 1");
+  return v;
+}
+
+std::int64_t worker_count(std::string_view text, std::string_view part) {
+  const std::int64_t v = number(text, part);
+  if (v > kMaxStatePoints)
+    throw std::invalid_argument("'" + std::string(part) + "': more than " + std::to_string(kMaxStatePoints) +
+                                " workers (the state would not fit in memory)");
   return v;
 }
 
@@ -40,13 +50,16 @@ std::vector<std::int64_t> parse_worker_spec(std::string_view spec, std::size_t m
   for (std::string_view part : split(spec, ',')) {
     const auto range = split(part, ':');
     if (range.size() == 1) {
-      out.push_back(number(range[0], part));
+      out.push_back(worker_count(range[0], part));
     } else if (range.size() == 3) {
-      const std::int64_t start = number(range[0], part), stop = number(range[1], part), step = number(range[2], part);
+      const std::int64_t start = worker_count(range[0], part), stop = worker_count(range[1], part),
+                         step = number(range[2], part);
       if (start > stop) throw std::invalid_argument("'" + std::string(part) + "': start is greater than stop");
-      if (static_cast<std::size_t>((stop - start) / step) + 1 + out.size() > max_points)
+      const auto count = static_cast<std::size_t>((stop - start) / step) + 1;
+      if (count + out.size() > max_points)
         throw std::invalid_argument("'" + std::string(part) + "': more than " + std::to_string(max_points) + " points");
-      for (std::int64_t w = start; w <= stop; w += step) out.push_back(w);
+      // start + i * step <= stop for every i < count: no signed overflow near INT64_MAX.
+      for (std::size_t i = 0; i < count; ++i) out.push_back(start + static_cast<std::int64_t>(i) * step);
     } else {
       throw std::invalid_argument("'" + std::string(part) + "': expected N or START:STOP:STEP");
     }

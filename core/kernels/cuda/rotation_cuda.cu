@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "kernels/cuda/rotation_cuda.h"
+#include "kernels/step_chunker.h"
 
 namespace bs::kernels::cuda {
 namespace {
-
-constexpr double kPointStepsPerLaunch = 3e9;  // ~1-10 ms on a current GPU: cancel is seen between launches
 
 void check(cudaError_t e, const char* what) {
   if (e != cudaSuccess) throw std::runtime_error(std::string("CUDA: ") + what + ": " + cudaGetErrorString(e));
@@ -36,23 +36,33 @@ __global__ void rotate_paper(V* xs, V* ys, long long workers, int steps, float c
   ys[w] = y;
 }
 
-// Throughput: four independent points per thread (instruction-level parallelism hides FMA latency).
+// Throughput ("float4x4"): four independent float4 chains = 16 points per thread, so every thread has
+// instruction-level parallelism beside the warps the scheduler switches between.
 __global__ void rotate_throughput(float4* xs, float4* ys, long long items, int steps, float c, float s) {
   const long long i = blockIdx.x * static_cast<long long>(blockDim.x) + threadIdx.x;
   if (i >= items) return;
-  float4 x = xs[i], y = ys[i];
+  float4 x0 = xs[4 * i], x1 = xs[4 * i + 1], x2 = xs[4 * i + 2], x3 = xs[4 * i + 3];
+  float4 y0 = ys[4 * i], y1 = ys[4 * i + 1], y2 = ys[4 * i + 2], y3 = ys[4 * i + 3];
   for (int n = 0; n < steps; ++n) {
-    const float4 nx = c * x - s * y;
-    y = s * x + c * y;
-    x = nx;
+    const float4 n0 = c * x0 - s * y0, n1 = c * x1 - s * y1, n2 = c * x2 - s * y2, n3 = c * x3 - s * y3;
+    y0 = s * x0 + c * y0;
+    y1 = s * x1 + c * y1;
+    y2 = s * x2 + c * y2;
+    y3 = s * x3 + c * y3;
+    x0 = n0;
+    x1 = n1;
+    x2 = n2;
+    x3 = n3;
   }
-  xs[i] = x;
-  ys[i] = y;
+  xs[4 * i] = x0; xs[4 * i + 1] = x1; xs[4 * i + 2] = x2; xs[4 * i + 3] = x3;
+  ys[4 * i] = y0; ys[4 * i + 1] = y1; ys[4 * i + 2] = y2; ys[4 * i + 3] = y3;
 }
 
+// FP32 lanes per SM: 64 on GP100, Volta, Turing and A100; 128 on Pascal consumer parts, GA10x, Ada, Hopper,
+// Blackwell.
 int lanes_for(int major, int minor) {
-  if (major >= 8 && !(major == 8 && minor == 0)) return 128;  // GA10x, Ada, Hopper, Blackwell
-  return 64;                                                  // Turing, A100
+  if (major == 7 || (major == 8 && minor == 0) || (major == 6 && minor == 0)) return 64;
+  return 128;
 }
 
 }  // namespace
@@ -82,7 +92,7 @@ double run_point(int device, int dims, std::int64_t iterations, std::int64_t wor
     throw std::invalid_argument("the CUDA paper kernel runs D = 1, 2 or 4 (float, float2, float4)");
   check(cudaSetDevice(device), "cudaSetDevice");
   const long long points = workers * dims;
-  const long long floats = paper ? points : (points + 3) / 4 * 4;
+  const long long floats = paper ? points : (points + 15) / 16 * 16;
   std::vector<float> xs(static_cast<std::size_t>(floats), 1.0f), ys(static_cast<std::size_t>(floats), 0.0f);
   float *dx = nullptr, *dy = nullptr;
   const std::size_t bytes = xs.size() * sizeof(float);
@@ -96,21 +106,24 @@ double run_point(int device, int dims, std::int64_t iterations, std::int64_t wor
   check(cudaMemcpy(dx, xs.data(), bytes, cudaMemcpyHostToDevice), "cudaMemcpy");
   check(cudaMemcpy(dy, ys.data(), bytes, cudaMemcpyHostToDevice), "cudaMemcpy");
   const float c = static_cast<float>(std::cos(2.0)), s = static_cast<float>(std::sin(2.0));
-  const long long threads = paper ? workers : floats / 4;
+  const long long threads = paper ? workers : floats / 16;
   const int block = 256;
   const unsigned grid = static_cast<unsigned>((threads + block - 1) / block);
-  const long long chunk = std::max<long long>(1, std::min<long long>(1 << 30, static_cast<long long>(kPointStepsPerLaunch / static_cast<double>(points))));
   check(cudaDeviceSynchronize(), "cudaDeviceSynchronize");
+  // Launches of ~40 ms (StepChunker), each synchronised, so a cancel is seen between them.
+  StepChunker chunks(iterations, points);
   const auto t0 = std::chrono::steady_clock::now();
-  for (long long done = 0; done < iterations; done += chunk) {
+  while (!chunks.done()) {
     cancel.throw_if_cancelled();
-    const int steps = static_cast<int>(std::min<long long>(chunk, iterations - done));
+    const int steps = static_cast<int>(chunks.next());
+    const auto c0 = std::chrono::steady_clock::now();
     if (!paper) rotate_throughput<<<grid, block>>>(reinterpret_cast<float4*>(dx), reinterpret_cast<float4*>(dy), threads, steps, c, s);
     else if (dims == 1) rotate_paper<float><<<grid, block>>>(dx, dy, workers, steps, c, s);
     else if (dims == 2) rotate_paper<float2><<<grid, block>>>(reinterpret_cast<float2*>(dx), reinterpret_cast<float2*>(dy), workers, steps, c, s);
     else rotate_paper<float4><<<grid, block>>>(reinterpret_cast<float4*>(dx), reinterpret_cast<float4*>(dy), workers, steps, c, s);
     check(cudaGetLastError(), "kernel launch");
     check(cudaDeviceSynchronize(), "kernel");
+    chunks.completed(steps, std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count());
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   check(cudaMemcpy(xs.data(), dx, bytes, cudaMemcpyDeviceToHost), "cudaMemcpy");

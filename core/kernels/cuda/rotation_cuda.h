@@ -22,7 +22,8 @@ struct DeviceInfo {
 std::vector<DeviceInfo> devices(std::string* why_none = nullptr);
 
 // Times one point: W workers rotating D points N times. paper: one thread per worker, float/float2/float4 for
-// D = 1, 2, 4; otherwise four independent points per thread. Launches are split so a cancel is seen between them.
+// D = 1, 2, 4; otherwise "float4x4": four independent float4 chains (16 points) per thread. Launches are split
+// into ~40 ms chunks so a cancel is seen between them. The caller checks the problem size (check_problem_size).
 double run_point(int device, int dims, std::int64_t iterations, std::int64_t workers, bool paper,
                  std::vector<float>& outputs, const CancelToken& cancel);
 
