@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/bayer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace bs::vision {
@@ -29,51 +31,70 @@ int opencv_code(BayerPattern p, DemosaicMethod m) {
   return m == DemosaicMethod::OpenCvEdgeAware ? ea[i] : m == DemosaicMethod::OpenCvVng ? vng[i] : bilinear[i];
 }
 
+// Our demosaic of the pixel at (r, c) in integers; `at(dr, dc)` reads the mosaic at (r + dr, c + dc). The
+// arithmetic is the textbook one scaled to integers, rounded half up and clamped:
+//  bilinear  a measured channel is copied; a missing one is the mean of its 2 or 4 nearest samples;
+//  MHC       Malvar, He, Cutler (2004), eq. (and Fig. 2): bilinear estimate plus a scaled Laplacian of the
+//            measured channel, i.e. their 5x5 kernels, whose weights are multiples of 1/16.
+template <class T, class At>
+inline void demosaic_pixel(At at, int here, int row_colour, bool mhc, int maxv, T* dst) {
+  const int v = at(0, 0);
+  const int e = at(0, 1), w = at(0, -1), n = at(-1, 0), s = at(1, 0);
+  int ch[3];
+  ch[here] = v;
+  if (!mhc) {
+    if (here == 1) {
+      ch[row_colour] = (w + e + 1) >> 1;
+      ch[2 - row_colour] = (n + s + 1) >> 1;
+    } else {
+      ch[1] = (n + s + w + e + 2) >> 2;
+      ch[2 - here] = (at(-1, -1) + at(-1, 1) + at(1, -1) + at(1, 1) + 2) >> 2;
+    }
+  } else {
+    const int n2 = at(-2, 0) + at(2, 0), w2 = at(0, -2) + at(0, 2);
+    if (here == 1) {
+      const int d = at(-1, -1) + at(-1, 1) + at(1, -1) + at(1, 1);
+      // Colour in the same row: (10 v + 8 (E + W) - 2 diagonals - 2 (W2 + E2) + (N2 + S2)) / 16; the column
+      // colour is the same kernel turned by 90 degrees.
+      ch[row_colour] = (10 * v + 8 * (w + e) - 2 * d - 2 * w2 + n2 + 8) >> 4;
+      ch[2 - row_colour] = (10 * v + 8 * (n + s) - 2 * d - 2 * n2 + w2 + 8) >> 4;
+    } else {
+      const int d = at(-1, -1) + at(-1, 1) + at(1, -1) + at(1, 1);
+      ch[1] = (4 * v + 2 * (n + s + w + e) - n2 - w2 + 4) >> 3;
+      ch[2 - here] = (12 * v + 4 * d - 3 * (n2 + w2) + 8) >> 4;
+    }
+  }
+  for (int k = 0; k < 3; ++k) dst[k] = static_cast<T>(std::clamp(ch[k], 0, maxv));
+}
+
 template <class T>
 void demosaic_ours(const cv::Mat& raw, BayerPattern p, bool mhc, cv::Mat& out) {
   const int rows = raw.rows, cols = raw.cols;
-  const double maxv = static_cast<double>(std::numeric_limits<T>::max());
-  auto at = [&](int r, int c) { return static_cast<double>(raw.at<T>(reflect(r, rows), reflect(c, cols))); };
-#pragma omp parallel for schedule(static)
-  for (int r = 0; r < rows; ++r) {
-    auto* dst = out.ptr<cv::Vec<T, 3>>(r);
-    for (int c = 0; c < cols; ++c) {
-      const int here = bayer_channel(p, r, c);
-      const double v = at(r, c);
-      double ch[3];
-      ch[here] = v;
-      // Neighbour averages: cross (N,S,E,W), diagonal, horizontal pair, vertical pair.
-      const double cross = (at(r - 1, c) + at(r + 1, c) + at(r, c - 1) + at(r, c + 1)) / 4;
-      const double diag = (at(r - 1, c - 1) + at(r - 1, c + 1) + at(r + 1, c - 1) + at(r + 1, c + 1)) / 4;
-      const double horiz = (at(r, c - 1) + at(r, c + 1)) / 2;
-      const double vert = (at(r - 1, c) + at(r + 1, c)) / 2;
-      if (!mhc) {
-        if (here == 1) {
-          // Green site: the row neighbours carry one of R/B, the column neighbours the other.
-          const int row_colour = bayer_channel(p, r, c + 1);
-          ch[row_colour] = horiz;
-          ch[2 - row_colour] = vert;
-        } else {
-          ch[1] = cross;
-          ch[2 - here] = diag;
-        }
-      } else {
-        // Malvar-He-Cutler: bilinear estimate plus a scaled Laplacian of the measured channel (kernels / 8).
-        const double n2 = at(r - 2, c) + at(r + 2, c), w2 = at(r, c - 2) + at(r, c + 2);
-        if (here == 1) {
-          const int row_colour = bayer_channel(p, r, c + 1);
-          const double d = at(r - 1, c - 1) + at(r - 1, c + 1) + at(r + 1, c - 1) + at(r + 1, c + 1);
-          // Colour in the same row: 5v + 4(E+W) - (diagonals) - (W2+E2) + (N2+S2)/2, over 8.
-          ch[row_colour] = (5 * v + 8 * horiz - d - w2 + 0.5 * n2) / 8;
-          ch[2 - row_colour] = (5 * v + 8 * vert - d - n2 + 0.5 * w2) / 8;
-        } else {
-          ch[1] = (4 * v + 8 * cross - n2 - w2) / 8;
-          ch[2 - here] = (6 * v + 8 * diag - 1.5 * (n2 + w2)) / 8;
-        }
+  const int maxv = std::numeric_limits<T>::max();
+  // Stripes of rows on OpenCV's pool, as the fused path (fused.cpp says why not OpenMP).
+  cv::parallel_for_(cv::Range(0, rows), [&](const cv::Range& range) {
+  for (int r = range.start; r < range.end; ++r) {
+    // Rows r-2 .. r+2 with the top and bottom reflected, so only the left and right edges need the slow reader.
+    const T* row[5];
+    for (int k = 0; k < 5; ++k) row[k] = raw.ptr<T>(reflect(r - 2 + k, rows));
+    T* dst = out.ptr<T>(r);
+    const auto edge = [&](int c) {
+      const auto at = [&](int dr, int dc) { return static_cast<int>(row[2 + dr][reflect(c + dc, cols)]); };
+      demosaic_pixel<T>(at, bayer_channel(p, r, c), bayer_channel(p, r, c + 1), mhc, maxv, dst + 3 * c);
+    };
+    const int margin = std::min(2, cols);
+    for (int c = 0; c < margin; ++c) edge(c);
+    // The two site kinds of this row alternate: even and odd columns each get a branch-free inner loop.
+    for (int parity = 0; parity < 2; ++parity) {
+      const int here = bayer_channel(p, r, parity), row_colour = bayer_channel(p, r, parity + 1);
+      for (int c = 2 + parity; c < cols - 2; c += 2) {
+        const auto at = [&](int dr, int dc) { return static_cast<int>(row[2 + dr][c + dc]); };
+        demosaic_pixel<T>(at, here, row_colour, mhc, maxv, dst + 3 * c);
       }
-      for (int k = 0; k < 3; ++k) dst[c][k] = static_cast<T>(std::clamp(std::round(ch[k]), 0.0, maxv));
     }
+    for (int c = std::max(margin, cols - 2); c < cols; ++c) edge(c);
   }
+  }, std::max(1.0, rows / 16.0));
 }
 
 }  // namespace

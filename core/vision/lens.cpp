@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <opencv2/imgproc.hpp>
 
@@ -194,6 +195,28 @@ cv::Mat reproject(const cv::Mat& src, const cv::Mat& map, const cv::Mat& mask, c
     // A masked source pixel (the robot's own body) must not bleed into the view: fill every output sampling it.
     cv::Mat masked;
     cv::remap(mask, masked, map, cv::noArray(), cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar(0));
+    out.setTo(fill, masked);
+  }
+  return out;
+}
+
+ReprojectionLut::ReprojectionLut(const Lens& lens, const View& view)
+    : map_(build_reprojection_map(lens, view)), source_(lens.width, lens.height) {
+  cv::convertMaps(map_, cv::noArray(), fixed_xy_, fixed_fraction_, CV_16SC2);
+}
+
+cv::Mat ReprojectionLut::apply(const cv::Mat& src, const cv::Mat& mask, const cv::Scalar& fill) const {
+  if (src.size() != source_)
+    throw std::invalid_argument("the source image is " + std::to_string(src.cols) + "x" + std::to_string(src.rows) +
+                                " but the lens is " + std::to_string(source_.width) + "x" +
+                                std::to_string(source_.height));
+  if (!mask.empty() && (mask.size() != src.size() || mask.type() != CV_8UC1))
+    throw std::invalid_argument("the mask must be CV_8UC1 and as large as the source image");
+  cv::Mat out;
+  cv::remap(src, out, fixed_xy_, fixed_fraction_, cv::INTER_LINEAR, cv::BORDER_CONSTANT, fill);
+  if (!mask.empty()) {
+    cv::Mat masked;
+    cv::remap(mask, masked, map_, cv::noArray(), cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar(0));
     out.setTo(fill, masked);
   }
   return out;

@@ -62,4 +62,22 @@ cv::Mat build_reprojection_map(const Lens& lens, const View& view);
 cv::Mat reproject(const cv::Mat& src, const cv::Mat& map, const cv::Mat& mask = {},
                   const cv::Scalar& fill = cv::Scalar::all(0));
 
+// The lookup table of one lens + view, built once and applied to every frame. It keeps both forms:
+//  - map():   CV_32FC2, float (x, y) source position per output pixel, (-1, -1) where there is none;
+//  - applied: OpenCV's fixed-point pair from convertMaps, CV_16SC2 integer (x, y) + CV_16UC1 index of the 5-bit
+//             x and y fractions (1/32 pixel), which remap() reads with less memory traffic and no float work.
+// The fixed-point grid is the one the fused path (fused.h) uses, so both give the same sampling positions.
+class ReprojectionLut {
+ public:
+  ReprojectionLut(const Lens& lens, const View& view);
+  const cv::Mat& map() const { return map_; }
+  cv::Size source_size() const { return source_; }
+  // As reproject(): bilinear, `fill` outside the image circle, the source, or under a non-zero `mask` pixel.
+  cv::Mat apply(const cv::Mat& src, const cv::Mat& mask = {}, const cv::Scalar& fill = cv::Scalar::all(0)) const;
+
+ private:
+  cv::Mat map_, fixed_xy_, fixed_fraction_;
+  cv::Size source_;
+};
+
 }  // namespace bs::vision

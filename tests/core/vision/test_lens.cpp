@@ -91,6 +91,18 @@ class TestLens : public QObject {
     QCOMPARE(out.at<cv::Vec3b>(64, 80), cv::Vec3b(10, 20, 30));      // centre: plain source colour
     QCOMPARE(out.at<cv::Vec3b>(127, 80), cv::Vec3b(255, 0, 255));    // bottom centre samples the masked rows
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, reproject(src, map, cv::Mat::zeros(10, 10, CV_8UC1)));
+    // The fixed-point table samples on OpenCV's 1/32 grid: within one level of the float map, same mask rule.
+    const ReprojectionLut lut(lens, view);
+    cv::Mat smooth(256, 320, CV_8UC3);
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 320; ++x) smooth.at<cv::Vec3b>(y, x) = cv::Vec3b(uchar(x * 255 / 319), uchar(y), uchar((x + y) / 3));
+    cv::Mat diff;
+    cv::absdiff(lut.apply(smooth, mask, cv::Scalar(255, 0, 255)), reproject(smooth, map, mask, cv::Scalar(255, 0, 255)), diff);
+    double worst = 0;
+    cv::minMaxLoc(diff.reshape(1), nullptr, &worst);
+    QVERIFY2(worst <= 1, qPrintable(QString("fixed-point vs float map: %1 levels").arg(worst)));
+    QCOMPARE(lut.apply(src, mask, cv::Scalar(255, 0, 255)).at<cv::Vec3b>(127, 80), cv::Vec3b(255, 0, 255));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, lut.apply(cv::Mat(100, 100, CV_8UC3)));
   }
   void bad_parameters_are_rejected() {
     Lens lens = Lens::paper();
