@@ -11,7 +11,9 @@
 
 #include "analysis/flops.h"
 #include "analysis/units.h"
+#include "count_tickers.h"
 #include "device_palette.h"
+#include "peak_overlay.h"
 
 namespace bs::ui {
 namespace {
@@ -47,14 +49,16 @@ FlopsPlot::FlopsPlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(t
   plot_->xAxis->setLabel(tr("Workers"));
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 8));
-  plot_->legend->setRowSpacing(-3);
-  // The legend sits in its own column right of the axes: sweeps fill the plot area, so inside it would hide data.
-  auto* legend_cell = new QCPLayoutGrid;
-  plot_->plotLayout()->addElement(0, 1, legend_cell);
-  legend_cell->addElement(0, 0, plot_->legend);
-  legend_cell->addElement(1, 0, new QCPLayoutElement(plot_));
-  legend_cell->setRowStretchFactor(0, 0.001);
-  plot_->plotLayout()->setColumnStretchFactor(1, 0.001);
+  plot_->legend->setRowSpacing(-1);
+  // Compact: the legend shares the plot area with 13 sweeps of the paper, so every pixel it saves shows data.
+  plot_->legend->setIconSize(22, 10);
+  plot_->legend->setIconTextPadding(5);
+  plot_->legend->setMargins(QMargins(5, 3, 5, 3));
+  plot_->legend->setBrush(QColor(255, 255, 255, 225));
+  plot_->legend->setBorderPen(QPen(QColor(160, 160, 160)));
+  // The legend lives inside the axis rect (the plot keeps the full width); PeakOverlay moves it to the corner
+  // that covers the fewest curve segments whenever the data or the axis scales change.
+  overlay_ = new PeakOverlay(plot_);
   plot_->setMouseTracking(true);
 
   connect(log_x_box_, &QCheckBox::toggled, this, &FlopsPlot::set_log_x);
@@ -80,8 +84,8 @@ bool FlopsPlot::log_y() const { return plot_->yAxis->scaleType() == QCPAxis::stL
 void FlopsPlot::set_log_x(bool on) {
   log_x_box_->setChecked(on);
   plot_->xAxis->setScaleType(on ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
-  if (on) plot_->xAxis->setTicker(QSharedPointer<QCPAxisTickerLog>::create());
-  else plot_->xAxis->setTicker(QSharedPointer<QCPAxisTicker>::create());
+  if (on) plot_->xAxis->setTicker(QSharedPointer<CountTickerLog>::create());
+  else plot_->xAxis->setTicker(QSharedPointer<CountTicker>::create());
   reset_view();
 }
 
@@ -93,9 +97,16 @@ void FlopsPlot::set_log_y(bool on) {
   reset_view();
 }
 
+std::vector<QCPGraph*> FlopsPlot::series_graphs() const {
+  std::vector<QCPGraph*> graphs;
+  for (const Series& s : series_) graphs.push_back(s.graph);
+  return graphs;
+}
+
 QString FlopsPlot::value_axis_label() const { return plot_->yAxis->label(); }
 
 void FlopsPlot::reset_view() {
+  overlay_->request_legend_placement();
   plot_->rescaleAxes();
   if (!log_y()) plot_->yAxis->setRangeLower(0);
   plot_->yAxis->scaleRange(1.05, plot_->yAxis->range().center());
@@ -104,12 +115,18 @@ void FlopsPlot::reset_view() {
 }
 
 void FlopsPlot::rebuild() {
+  overlay_->clear();
   plot_->clearGraphs();
   plot_->clearItems();
   series_.clear();
   double max_flops = 0;
   for (const StoredRun* r : runs_)
     if (const auto p = find_peak(r->run)) max_flops = std::max(max_flops, p->flops);
+  struct PeakMark {
+    double flops, workers;
+    QColor color;
+  };
+  std::vector<PeakMark> peaks;
   const int exponent = si_exponent(max_flops);
   scale_ = std::pow(10.0, exponent);
   plot_->yAxis->setLabel(tr("Performance (%1FLOPS)").arg(QString::fromUtf8(si_prefix(exponent).data())));
@@ -122,7 +139,7 @@ void FlopsPlot::rebuild() {
     for (const CurvePoint& p : curve) {
       keys << static_cast<double>(p.workers);
       mean << p.flops.mean / scale_;
-      lo << (p.flops.mean - p.flops.sd) / scale_;
+      lo << std::max(p.flops.mean - p.flops.sd, 0.0) / scale_;  // FLOPS are never negative
       hi << (p.flops.mean + p.flops.sd) / scale_;
       repeated = repeated || p.flops.n > 1;
     }
@@ -147,6 +164,7 @@ void FlopsPlot::rebuild() {
     g->setPen(pen);
     g->setName(series_name(run));
     series_.push_back({g, stored});
+    overlay_->add_curve(g);
 
     if (const auto peak = find_peak(run)) {
       QCPGraph* marker = plot_->addGraph();
@@ -156,8 +174,15 @@ void FlopsPlot::rebuild() {
                                                   QString::fromStdString(run.backend))),
                                               color.darker(130), color, 9));
       marker->removeFromLegend();
+      peaks.push_back({peak->flops, static_cast<double>(peak->workers), color});
     }
   }
+  plot_->legend->setVisible(!series_.empty());
+  // Labels in order of peak height: where two collide, the higher peak keeps its label.
+  std::stable_sort(peaks.begin(), peaks.end(), [](const PeakMark& a, const PeakMark& b) { return a.flops > b.flops; });
+  for (const PeakMark& p : peaks)
+    overlay_->add_peak_label(p.workers, p.flops / scale_, QString::fromStdString(format_si(p.flops, "FLOPS")),
+                             p.color);
   reset_view();
 }
 

@@ -10,9 +10,11 @@ class QCPGraph;
 class QCheckBox;
 
 namespace bs::ui {
+class PeakOverlay;
 
 // FLOPS against workers for the visible runs: colour per device, line style per D, mean ± SD band where runs
-// are repeated, a marker at each series' peak, log/linear axes, zoom/pan and a hover read-out.
+// are repeated, a labelled marker at each series' peak, the legend inside the plot in its emptiest corner,
+// log/linear axes, zoom/pan and a hover read-out.
 class FlopsPlot : public QWidget {
   Q_OBJECT
  public:
@@ -26,7 +28,10 @@ class FlopsPlot : public QWidget {
 
   QCustomPlot* plot() const { return plot_; }
   int series_count() const { return static_cast<int>(series_.size()); }
+  // The graphs of the runs themselves, without the error-band and peak-marker helper graphs.
+  std::vector<QCPGraph*> series_graphs() const;
   QString value_axis_label() const;
+  PeakOverlay* overlay() const { return overlay_; }
   // The hover text for the data point nearest to a pixel position (empty when none is close).
   QString read_out_at(const QPointF& pixel) const;
 
@@ -39,6 +44,7 @@ class FlopsPlot : public QWidget {
   void on_mouse_move(QMouseEvent* event);
 
   QCustomPlot* plot_;
+  PeakOverlay* overlay_ = nullptr;
   QCheckBox* log_x_box_;
   QCheckBox* log_y_box_;
   std::vector<const StoredRun*> runs_;

@@ -101,6 +101,9 @@ PeakTableView::PeakTableView(QWidget* parent) : QTableView(parent), model_(new P
   setSelectionBehavior(QAbstractItemView::SelectRows);
   setAlternatingRowColors(true);
   verticalHeader()->hide();
+  // Compact rows: the paper's 13 runs fit the dock without scrolling.
+  verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+  verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
   horizontalHeader()->setStretchLastSection(true);
   horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   setWordWrap(false);

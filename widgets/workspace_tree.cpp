@@ -140,7 +140,7 @@ void WorkspaceTree::on_item_changed(QStandardItem* item) {
     for (int r = 0; r < it->rowCount(); ++r) note_hidden(it->child(r));
   };
   note_hidden(model_.invisibleRootItem());
-  emit visibility_changed();
+  emit visibility_changed(visible);
 }
 
 void WorkspaceTree::collect(const QStandardItem* item, QSet<qint64>& out) const {

@@ -19,7 +19,7 @@ class WorkspaceTree : public QTreeView {
   int run_count() const;
 
  signals:
-  void visibility_changed();
+  void visibility_changed(const QSet<qint64>& visible_run_ids);
 
  private:
   void on_item_changed(QStandardItem* item);

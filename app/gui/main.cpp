@@ -13,6 +13,13 @@
 #include "peak_table.h"
 #include "workspace_tree.h"
 
+namespace {
+
+// Screenshots go into the repository: the smallest PNG zlib can make (quality 0 = strongest compression).
+void save_png(QWidget* widget, const QString& path) { widget->grab().save(path, "PNG", 0); }
+
+}  // namespace
+
 int main(int argc, char** argv) {
   // VTK views render through QOpenGLWidget: the default format must be set before QApplication exists.
   QSurfaceFormat fmt;
@@ -64,13 +71,13 @@ int main(int argc, char** argv) {
     QDir().mkpath(dir);
     const int delay_ms = cli.isSet(sweep) ? 2500 : 500;
     QTimer::singleShot(delay_ms, &window, [&window, dir] {
-      window.grab().save(dir + "/main-window.png");
-      window.flops_plot()->grab().save(dir + "/flops-plot.png");
-      window.peak_table()->grab().save(dir + "/peak-table.png");
-      window.tree()->grab().save(dir + "/workspace-tree.png");
-      window.kernel_runner()->grab().save(dir + "/kernel-runner.png");
+      save_png(&window, dir + "/main-window.png");
+      save_png(window.flops_plot(), dir + "/flops-plot.png");
+      save_png(window.peak_table(), dir + "/peak-table.png");
+      save_png(window.tree(), dir + "/workspace-tree.png");
+      save_png(window.kernel_runner(), dir + "/kernel-runner.png");
       window.power_view()->resize(window.flops_plot()->size());
-      window.power_view()->grab().save(dir + "/power-view.png");
+      save_png(window.power_view(), dir + "/power-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

@@ -4,6 +4,8 @@
 #include <QTemporaryDir>
 #include <memory>
 
+class QLabel;
+
 #include "store/workspace.h"
 
 namespace bs::ui {
@@ -43,7 +45,7 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
-  void create_actions();
+  void create_actions();  // main_window_menus.cpp
   void reload();
   void refresh_views();
   void show_import_report(const ImportReport& report);
@@ -63,6 +65,7 @@ class MainWindow : public QMainWindow {
   RecentFiles* recent_ = nullptr;
   KernelRunner* runner_;
   PowerView* power_;
+  QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 
 }  // namespace bs::ui

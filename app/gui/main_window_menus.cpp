@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The window's menus and actions, apart from main_window.cpp so the window itself stays about wiring views.
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <qcustomplot.h>
+
+#include "flops_plot.h"
+#include "main_window.h"
+#include "recent_files.h"
+
+namespace bs::ui {
+
+void MainWindow::create_actions() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  auto add = [this](QMenu* menu, const QString& text, const QKeySequence& key, const QString& tip, auto slot) {
+    QAction* a = menu->addAction(text, this, slot);
+    a->setShortcut(key);
+    a->setStatusTip(tip);
+    a->setToolTip(tip);
+    return a;
+  };
+  add(file, tr("&New workspace"), QKeySequence::New, tr("Start an empty, untitled workspace"),
+      [this] { new_untitled_workspace(); });
+  add(file, tr("&Open workspace…"), QKeySequence::Open, tr("Open a BenchScope workspace (.bsw)"), [this] {
+    const QString p = QFileDialog::getOpenFileName(this, tr("Open workspace"), {}, tr("BenchScope workspace (*.bsw);;All files (*)"));
+    if (!p.isEmpty()) open_workspace(p);
+  });
+  recent_ = new RecentFiles(file->addMenu(tr("Open &recent")), this);
+  connect(recent_, &RecentFiles::open_requested, this, [this](const QString& p) { open_workspace(p); });
+  add(file, tr("Save workspace &as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+      tr("Write a copy of the workspace under a new name and continue there"), [this] { save_as(); });
+  file->addSeparator();
+  add(file, tr("&Import files…"), QKeySequence(Qt::CTRL | Qt::Key_I),
+      tr("Import run JSON, Google Benchmark JSON or clpeak output (formats are recognised by content)"), [this] {
+        const QStringList files = QFileDialog::getOpenFileNames(this, tr("Import files"));
+        if (!files.isEmpty()) import_paths(files);
+      });
+  add(file, tr("Import &folder…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I),
+      tr("Import every recognised file in a folder and its subfolders"), [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Import folder"));
+        if (!dir.isEmpty()) import_paths({dir});
+      });
+  file->addSeparator();
+  add(file, tr("&Quit"), QKeySequence::Quit, tr("Quit BenchScope"), [this] { close(); });
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  QAction* log_x = add(view, tr("Log &worker axis"), QKeySequence(Qt::CTRL | Qt::Key_L), tr("Logarithmic worker axis"),
+                       [this](bool on) { plot_->set_log_x(on); });
+  log_x->setCheckable(true);
+  log_x->setChecked(plot_->log_x());
+  QAction* log_y = add(view, tr("Log &FLOPS axis"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+                       tr("Logarithmic FLOPS axis"), [this](bool on) { plot_->set_log_y(on); });
+  log_y->setCheckable(true);
+  log_y->setChecked(plot_->log_y());
+  add(view, tr("&Reset zoom"), QKeySequence(Qt::CTRL | Qt::Key_0), tr("Fit all visible series"), [this] { plot_->reset_view(); });
+  view->addSeparator();
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  add(help, tr("&About BenchScope"), QKeySequence(), tr("Version and licence"), [this] {
+    QMessageBox::about(this, tr("About BenchScope"),
+                       tr("<h3>BenchScope %1</h3><p>Which computer should this robot carry? FLOPS, power and vision "
+                          "benchmarks compared, after Biddulph et al. 2018.</p><p>Licence: GPL-3.0-or-later.</p>"
+                          "<p>Qt %2 · QCustomPlot %3 · OpenCV %4</p>")
+                           .arg(BENCHSCOPE_VERSION, qVersion(), QCUSTOMPLOT_VERSION_STR, CV_VERSION_TEXT));
+  });
+}
+
+}  // namespace bs::ui
