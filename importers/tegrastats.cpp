@@ -50,6 +50,13 @@ std::optional<double> rail_value(std::string_view t) {
   return cur;
 }
 
+// A token after a rail name that was meant as "cur/avg" but does not parse ("5000mW/abcmW", "3981/-"): an error,
+// not a rail to drop silently. RAM/SWAP/IRAM sizes ("2448/7854MB", "0/252kB(lfb") and percentages are not values.
+bool malformed_rail_value(std::string_view t) {
+  return t.find('/') != std::string_view::npos && !t.empty() && t.front() >= '0' && t.front() <= '9' &&
+         t.find_first_of("B%") == std::string_view::npos && !rail_value(t);
+}
+
 bool input_rail(const std::string& name) { return name == "VDD_IN" || name == "POM_5V_IN" || name.starts_with("VIN"); }
 
 class TegrastatsParser {
@@ -86,11 +93,18 @@ void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last
   if (tok_.empty()) return;
   values_.clear();
   for (std::size_t i = 0; i + 1 < tok_.size(); ++i)
-    if (rail_name(tok_[i]))
+    if (rail_name(tok_[i])) {
       if (const auto v = rail_value(tok_[i + 1])) {
         values_.emplace_back(tok_[i], *v / 1000.0);
         ++i;
+      } else if (malformed_rail_value(tok_[i + 1]) && !(last && i + 2 == tok_.size())) {  // a cut-off last line is fine
+        throw ImportError(ImportErrorCategory::InvalidValue,
+                          {file_, line_no, static_cast<std::size_t>(tok_[i + 1].data() - raw.data()) + 1,
+                           std::string(tok_[i])},
+                          "'" + std::string(tok_[i + 1]) + "' is not a power reading (expected cur/avg in mW, like "
+                          "5000mW/4980mW or 3981/3981)");
       }
+    }
   if (values_.empty()) return skip(line_no, "no power rails on this line");
   if (rails_.empty()) {
     for (const auto& [name, v] : values_) rails_.emplace_back(name);
@@ -181,6 +195,7 @@ ImportBatch run(Lines& lines, TegrastatsParser& parser, const CancelToken& cance
 int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
   PowerLineReader lines(head, {});
   std::vector<std::string_view> tok;
+  int score = 0;
   for (int seen = 0; seen < 16; ++seen) {
     const auto line = lines.next();
     if (!line) break;
@@ -188,8 +203,11 @@ int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
     const bool ram = std::find(tok.begin(), tok.end(), "RAM") != tok.end();
     for (std::size_t i = 0; ram && i + 1 < tok.size(); ++i)
       if (rail_name(tok[i]) && rail_value(tok[i + 1]) && tok[i] != "RAM" && tok[i] != "SWAP" && tok[i] != "IRAM") return 90;
+    // tegrastats without rails (not run as root, or a board without monitors): still ours, so that parse() can say
+    // why there is nothing to import instead of "unknown format".
+    if (ram && std::find(tok.begin(), tok.end(), "CPU") != tok.end()) score = 30;
   }
-  return 0;
+  return score;
 }
 
 ImportBatch TegrastatsImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {

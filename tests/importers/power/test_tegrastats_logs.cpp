@@ -93,7 +93,10 @@ class TestTegrastatsLogs : public QObject {
   void sniffing() {
     const bs::TegrastatsImporter imp;
     QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) VDD_IN 3981/3981\n", "x.log"), 90);
-    QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) SWAP 0/3927MB CPU [3%@345]\n", "x.log"), 0);  // no rails
+    // No rails: still recognised (weakly), so that the import says why nothing can be read instead of
+    // "unknown format".
+    QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) SWAP 0/3927MB CPU [3%@345]\n", "x.log"), 30);
+    QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) SWAP 0/3927MB\n", "x.log"), 0);
     QCOMPARE(imp.sniff("time_s,current_A\n0,1\n", "x.csv"), 0);
   }
 };

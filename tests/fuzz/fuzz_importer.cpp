@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "fuzz_importer.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <string_view>
+
+#include <unistd.h>
+
+#include "importer.h"
+
+#ifndef BENCHSCOPE_FUZZ_IMPORTER
+#error "define BENCHSCOPE_FUZZ_IMPORTER to an importer id or \"any\""
+#endif
+
+namespace bs::fuzz {
+namespace {
+
+// Importers read files (they stream large logs), so each input goes through a file in /dev/shm when it exists:
+// the same code path as a real import, without disk traffic.
+const std::string& scratch_path() {
+  static const std::string path = [] {
+    const char* dir = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
+    return std::string(dir) + "/benchscope-fuzz-" + BENCHSCOPE_FUZZ_IMPORTER + "-" + std::to_string(getpid());
+  }();
+  return path;
+}
+
+// Limits small enough that a fuzz input cannot make a legitimate but slow multi-second parse, large enough that
+// every limit check is itself exercised.
+ImportLimits fuzz_limits() {
+  ImportLimits l;
+  l.max_json_bytes = 1 << 20;
+  l.max_samples = 100'000;
+  l.max_json_values = 200'000;
+  return l;
+}
+
+[[noreturn]] void finding(const char* what) {
+  std::fprintf(stderr, "benchscope fuzz (%s): %s\n", BENCHSCOPE_FUZZ_IMPORTER, what);
+  std::abort();
+}
+
+}  // namespace
+
+const char* importer_id() { return BENCHSCOPE_FUZZ_IMPORTER; }
+
+void run_one(const std::uint8_t* data, std::size_t size) {
+  {
+    std::ofstream f(scratch_path(), std::ios::binary | std::ios::trunc);
+    f.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    if (!f) finding("cannot write the scratch file");
+  }
+  const std::string_view id = BENCHSCOPE_FUZZ_IMPORTER;
+  const CancelToken cancel;
+  try {
+    if (id == "any") {
+      (void)import_file(scratch_path(), cancel, fuzz_limits());
+    } else {
+      const Importer* imp = find_importer(id);
+      if (!imp) finding("unknown importer id");
+      const std::string_view text(reinterpret_cast<const char*>(data), size);
+      (void)imp->sniff(text.substr(0, 64 * 1024), scratch_path());
+      check_text(text.substr(0, 64 * 1024), scratch_path());  // as import_file does before any importer runs
+      (void)imp->parse(scratch_path(), fuzz_limits(), cancel);
+    }
+  } catch (const ImportError&) {
+    // The expected way to reject a bad file.
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "unexpected exception: %s\n", e.what());
+    finding("an importer threw something other than ImportError");
+  }
+}
+
+}  // namespace bs::fuzz
+
+#ifdef BENCHSCOPE_LIBFUZZER
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  bs::fuzz::run_one(data, size);
+  return 0;
+}
+#endif

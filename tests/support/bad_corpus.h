@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The bad-input corpus (tests/data/bad/manifest.json): committed files plus a few generated ones that are too big
+// to commit. Shared by tests/importers/test_bad_corpus.cpp (categories and places) and
+// tests/app/test_cli_bad_corpus.cpp (the CLI rejects each and leaves the workspace untouched).
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace bs::test {
+
+struct BadCase {
+  std::string path;      // absolute, ready to import
+  std::string category;  // to_string(ImportErrorCategory)
+  bool place = false;    // the error must name a line or a field
+};
+
+inline void write_generated(const std::string& kind, const std::string& path) {
+  std::ofstream f(path, std::ios::binary);
+  const auto repeat = [&](char c, std::size_t n) {
+    const std::string block(1 << 20, c);
+    for (; n >= block.size(); n -= block.size()) f << block;
+    f << std::string(n, c);
+  };
+  if (kind == "json-deep-nesting") {
+    f << R"({"format":"benchscope-run","version":1,"runs":)";
+    repeat('[', 100000);
+    repeat(']', 100000);
+    f << "}";
+  } else if (kind == "json-unclosed-brackets") {
+    repeat('[', 100000);
+  } else if (kind == "csv-50mb-line") {
+    f << "time_s,current_A\n0,";
+    repeat('1', 50'000'000);
+    f << "\n";
+  } else if (kind == "tegrastats-50mb-line") {
+    f << "RAM 1/2MB CPU [1%@1] VDD_IN 1/1 ";
+    repeat('A', 50'000'000);
+    f << "\n";
+  } else {
+    throw std::runtime_error("manifest: unknown generator " + kind);
+  }
+  if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+// Reads the manifest; generated inputs are written into `scratch_dir`.
+inline std::vector<BadCase> load_bad_corpus(const std::string& data_dir, const std::string& scratch_dir) {
+  std::ifstream in(data_dir + "/bad/manifest.json");
+  if (!in) throw std::runtime_error("cannot read " + data_dir + "/bad/manifest.json");
+  const auto doc = nlohmann::json::parse(in);
+  std::vector<BadCase> out;
+  for (const auto& e : doc.at("files")) {
+    BadCase c{"", e.at("category").get<std::string>(), e.at("place").get<bool>()};
+    if (e.contains("generate")) {
+      c.path = scratch_dir + "/" + e.at("file").get<std::string>();
+      write_generated(e.at("generate").get<std::string>(), c.path);
+    } else {
+      c.path = data_dir + "/" + e.at("file").get<std::string>();
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+}  // namespace bs::test
