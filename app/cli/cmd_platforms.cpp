@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli platforms: one column per platform (peaks, power, GFLOPS/W, pipeline, energy per frame, battery),
+// and with constraints the recommendation: which platforms meet them, which constraint each one fails and by how
+// much, and the one to pick.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/battery.h"
+#include "analysis/platform_table.h"
+#include "args.h"
+#include "command.h"
+#include "inputs.h"
+#include "signals.h"
+#include "text_table.h"
+
+namespace bs::cli {
+namespace {
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+  if (!f) throw std::runtime_error(path + ": cannot write");
+}
+
+nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
+  const ParsedArgs args = parse_args(raw, {"--json"},
+                                     {"--budget", "--min-fps", "--min-runtime", "--battery", "--extra-load",
+                                      "--supply-volts", "--latex", "--csv"});
+  if (args.positional.empty()) throw UsageError("platforms needs a workspace or files");
+  const std::string preset_name = args.value("--battery").value_or("paper-4s-3850");
+  const BatteryPack* pack = find_battery_preset(preset_name);
+  if (!pack) {
+    std::string names;
+    for (const BatteryPack& p : battery_presets()) names += (names.empty() ? "" : ", ") + p.name;
+    throw UsageError("unknown --battery '" + preset_name + "' (known: " + names + ")");
+  }
+  ComparisonOptions options;
+  options.battery_nominal_v = pack->nominal_v();
+  options.battery_capacity_ah = pack->capacity_ah;
+  options.extra_load_w = args.number("--extra-load", 0);
+  if (args.value("--supply-volts")) options.supply_v = args.number("--supply-volts", 0);
+  Constraints c;
+  if (args.value("--budget")) c.power_budget_w = args.number("--budget", 0);
+  if (args.value("--min-fps")) c.min_fps = args.number("--min-fps", 0);
+  if (args.value("--min-runtime")) c.min_runtime_h = args.number("--min-runtime", 0) / 60.0;  // minutes on the CLI
+  const bool constrained = c.power_budget_w || c.min_fps || c.min_runtime_h;
+
+  const LoadedData data = load_inputs(args.positional, interrupt_token());
+  const auto rows = compare_platforms(data.runs, data.power_traces, {}, options);
+  if (rows.empty()) throw std::runtime_error("no FLOPS runs or power logs to compare");
+  const auto verdicts = recommend(rows, c);
+  const ExportTable table = platform_table(rows, constrained ? std::span<const PlatformVerdict>(verdicts)
+                                                             : std::span<const PlatformVerdict>());
+  if (const auto p = args.value("--latex")) write_file(*p, to_latex(table));
+  if (const auto p = args.value("--csv")) write_file(*p, to_csv(table));
+
+  if (args.has("--json")) {
+    nlohmann::json list = nlohmann::json::array();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const PlatformRow& r = rows[i];
+      nlohmann::json checks = nlohmann::json::array();
+      for (const auto& k : verdicts[i].checks)
+        checks.push_back({{"name", k.name}, {"unit", k.unit}, {"required", k.required}, {"actual", opt(k.actual)},
+                          {"met", k.met}, {"margin", k.margin}});
+      nlohmann::json sources = nlohmann::json::object();
+      for (const auto& [col, s] : r.sources)
+        sources[col] = {{"file", s.source_file}, {"origin", std::string(to_string(s.origin))}, {"how", s.how}};
+      list.push_back({{"platform", r.platform},
+                      {"gpu_peak_flops", r.gpu ? nlohmann::json(r.gpu->peak.flops) : nlohmann::json(nullptr)},
+                      {"cpu_peak_flops", r.cpu ? nlohmann::json(r.cpu->peak.flops) : nlohmann::json(nullptr)},
+                      {"mean_power_w", opt(r.mean_power_w)}, {"max_power_w", opt(r.max_power_w)},
+                      {"gflops_per_watt_paper", opt(r.gflops_per_watt_paper)},
+                      {"gflops_per_watt_mean_power", opt(r.gflops_per_watt_mean)},
+                      {"fps", opt(r.fps)}, {"energy_per_frame_j", opt(r.energy_per_frame_j)},
+                      {"battery_runtime_h", opt(r.battery_runtime_h)}, {"frames_per_wh", opt(r.frames_per_wh)},
+                      {"meets_constraints", verdicts[i].meets_all}, {"recommended", verdicts[i].recommended},
+                      {"note", verdicts[i].note}, {"checks", checks}, {"sources", sources}});
+    }
+    out << nlohmann::json{{"format", "benchscope-platforms"}, {"version", 1}, {"battery", pack->name},
+                          {"platforms", list}}
+               .dump(2)
+        << '\n';
+    return 0;
+  }
+  // Transposed for a terminal: one column per platform, one line per measure.
+  std::vector<std::string> header{"measure"};
+  for (const auto& r : table.rows) header.push_back(r[0]);
+  TextTable text(header);
+  for (std::size_t col = 1; col < table.header.size(); ++col) {
+    std::vector<std::string> line{table.header[col]};
+    for (const auto& r : table.rows) line.push_back(r[col]);
+    text.add(line);
+  }
+  text.print(out);
+  char extra[64] = "";
+  if (options.extra_load_w > 0) std::snprintf(extra, sizeof extra, ", plus %.1f W in parallel", options.extra_load_w);
+  out << "battery: " << pack->name << " (" << pack->description << "), constant-power model" << extra << "\n";
+  if (constrained) {
+    std::string chosen;
+    for (const auto& v : verdicts)
+      if (v.recommended) chosen = v.platform;
+    out << (chosen.empty() ? "recommendation: no platform meets every constraint\n"
+                           : "recommendation: " + chosen + " (the most compute among the platforms that meet every constraint)\n");
+  }
+  return 0;
+}
+
+const CommandRegistrar registrar({
+    "platforms",
+    "platform comparison and recommendation under constraints (power budget, fps, battery runtime)",
+    "usage: benchscope-cli platforms (WORKSPACE | PATH...) [--budget W] [--min-fps FPS] [--min-runtime MIN]\n"
+    "                                [--battery PRESET] [--extra-load W] [--supply-volts V]\n"
+    "                                [--latex FILE] [--csv FILE] [--json]\n"
+    "  One column per platform: best GPU and CPU peak, % of theoretical peak, pipeline timings, mean and max power,\n"
+    "  GFLOPS/W (the paper's peak / max power, and peak / mean power), energy per frame, battery runtime\n"
+    "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh.\n"
+    "  With constraints, each platform is checked against them (the power budget against the mean power) with its\n"
+    "  margin, and the platform with the most compute among those that meet all of them is recommended. Only\n"
+    "  platforms with a power log can be recommended. --latex/--csv write the table (booktabs / RFC 4180).",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+      try {
+        return run_platforms(args, out);
+      } catch (const UsageError& e) {
+        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help platforms)\n";
+        return 2;
+      }
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

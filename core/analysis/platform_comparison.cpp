@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "analysis/platform_comparison.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "analysis/power.h"
+#include "analysis/power_stats.h"
+
+namespace bs {
+namespace {
+
+std::string peak_how(const PeakRow& r) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "peak of %s / %s / %s, D = %d, at %lld workers (n = %zu)", r.device.c_str(),
+                r.backend.c_str(), r.variant.c_str(), r.dims, static_cast<long long>(r.peak.workers),
+                r.peak.at_peak.n);
+  return buf;
+}
+
+PlatformRow& row_for(std::vector<PlatformRow>& rows, const std::string& platform) {
+  for (auto& r : rows)
+    if (r.platform == platform) return r;
+  rows.push_back({});
+  rows.back().platform = platform;
+  return rows.back();
+}
+
+void add_power(PlatformRow& row, const PowerTrace& trace, const ComparisonOptions& o) {
+  const PowerStats s = power_stats(trace, {.supply_v = o.supply_v});
+  if (!s.power_w) return;
+  row.mean_power_w = s.power_w->summary.mean;
+  row.max_power_w = s.power_w->summary.max;
+  std::string how = "mean and max power of " + trace.label + " (n = " + std::to_string(s.n) + ")";
+  if (s.supply_v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, ", current x %.2f V", *s.supply_v);
+    how += buf;
+  }
+  row.sources[column::kPower] = {trace.provenance.source_file, trace.provenance.origin, how};
+  const double peak = row.best_peak_flops();
+  if (peak > 0) {
+    row.gflops_per_watt_mean = peak / 1e9 / s.power_w->summary.mean;
+    if (s.current_a && s.supply_v) row.gflops_per_watt_paper = paper_flops_per_watt(peak, *s.supply_v, s.current_a->summary.max) / 1e9;
+  }
+}
+
+}  // namespace
+
+double PlatformRow::best_peak_flops() const {
+  return std::max(gpu ? gpu->peak.flops : 0.0, cpu ? cpu->peak.flops : 0.0);
+}
+
+std::optional<double> energy_per_frame_j(const PowerTrace& trace, double from_s, double to_s, std::size_t frames,
+                                         std::optional<double> supply_v) {
+  if (frames == 0 || !(to_s > from_s) || trace.time_s.empty()) return std::nullopt;
+  const double t0 = trace.time_s.front();
+  if (from_s < 0 || t0 + to_s > trace.time_s.back() + 1e-9) return std::nullopt;
+  const PowerStats s = power_stats(trace, {.supply_v = supply_v, .from_s = from_s, .to_s = to_s});
+  if (!s.energy_j) return std::nullopt;
+  return *s.energy_j / static_cast<double>(frames);
+}
+
+std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::span<const PowerTrace> traces,
+                                           std::span<const PipelineTimings> pipelines, const ComparisonOptions& o) {
+  std::vector<PlatformRow> rows;
+  for (const PeakRow& p : peak_table(runs)) {
+    PlatformRow& row = row_for(rows, p.platform);
+    auto& slot = p.device_kind == DeviceKind::Cpu ? row.cpu : row.gpu;
+    if (slot && slot->peak.flops >= p.peak.flops) continue;
+    slot = p;
+    row.sources[p.device_kind == DeviceKind::Cpu ? column::kCpuPeak : column::kGpuPeak] = {p.source_file, p.origin,
+                                                                                           peak_how(p)};
+  }
+  for (const PowerTrace& t : traces) {
+    PlatformRow& row = row_for(rows, t.platform);
+    if (!row.mean_power_w) add_power(row, t, o);  // the first trace of a platform
+  }
+  for (const PipelineTimings& p : pipelines) {
+    PlatformRow& row = row_for(rows, p.platform);
+    row.preprocess_ms = p.preprocess_ms;
+    row.detect_ms = p.detect_ms;
+    row.sources[column::kPipeline] = p.source;
+    const double frame_ms = p.preprocess_ms.mean + (p.detect_ms ? p.detect_ms->mean : 0.0);
+    if (frame_ms > 0) row.fps = 1000.0 / frame_ms;
+    // Energy per frame: from the power trace over the pipeline's window when both are known, otherwise the mean
+    // power of the platform's log times the frame time (labelled as such).
+    const auto trace = std::find_if(traces.begin(), traces.end(), [&](const PowerTrace& t) { return t.platform == p.platform; });
+    if (trace != traces.end() && p.window_from_s && p.window_to_s) {
+      row.energy_per_frame_j = energy_per_frame_j(*trace, *p.window_from_s, *p.window_to_s, p.frames, o.supply_v);
+      if (row.energy_per_frame_j)
+        row.sources[column::kEnergyPerFrame] = {trace->provenance.source_file, trace->provenance.origin,
+                                                "energy of " + trace->label + " over the pipeline run / " +
+                                                    std::to_string(p.frames) + " frames"};
+    }
+    if (!row.energy_per_frame_j && row.mean_power_w && frame_ms > 0) {
+      row.energy_per_frame_j = *row.mean_power_w * frame_ms / 1000.0;
+      row.sources[column::kEnergyPerFrame] = {p.source.source_file, p.source.origin,
+                                              "mean power of the platform's log x mean frame time (not time-aligned)"};
+    }
+  }
+  for (PlatformRow& row : rows) {
+    if (!row.mean_power_w) continue;
+    const double load = *row.mean_power_w + o.extra_load_w;
+    row.battery_runtime_h = constant_power_runtime_h(o.battery_nominal_v, o.battery_capacity_ah, load, o.usable_fraction);
+    if (row.energy_per_frame_j && *row.energy_per_frame_j > 0) row.frames_per_wh = 3600.0 / *row.energy_per_frame_j;
+  }
+  return rows;
+}
+
+std::vector<PlatformVerdict> recommend(std::span<const PlatformRow> rows, const Constraints& c) {
+  std::vector<PlatformVerdict> out;
+  for (const PlatformRow& row : rows) {
+    PlatformVerdict v;
+    v.platform = row.platform;
+    const auto check = [&](const char* name, const char* unit, double required, std::optional<double> actual,
+                           bool at_most) {
+      ConstraintCheck k{name, unit, required, actual, false, 0};
+      if (actual) {
+        k.margin = at_most ? required - *actual : *actual - required;
+        k.met = k.margin >= 0;
+      }
+      v.checks.push_back(k);
+    };
+    if (c.power_budget_w) check("power budget (mean power)", "W", *c.power_budget_w, row.mean_power_w, true);
+    if (c.min_fps) check("frame rate (preprocessing + detection)", "fps", *c.min_fps, row.fps, false);
+    if (c.min_runtime_h) check("battery runtime", "h", *c.min_runtime_h, row.battery_runtime_h, false);
+    v.meets_all = std::all_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.met; });
+    if (!row.mean_power_w) v.note = "no power log: its power and battery runtime are unknown";
+    else if (row.best_peak_flops() <= 0) v.note = "no FLOPS runs";
+    out.push_back(std::move(v));
+  }
+  // Among the platforms that meet every constraint, the most compute wins (the paper's reasoning).
+  const PlatformRow* best = nullptr;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (out[i].meets_all && out[i].note.empty() && (!best || rows[i].best_peak_flops() > best->best_peak_flops()))
+      best = &rows[i];
+  for (std::size_t i = 0; i < rows.size(); ++i) out[i].recommended = best == &rows[i];
+  return out;
+}
+
+}  // namespace bs

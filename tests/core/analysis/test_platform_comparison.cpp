@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Platform comparison and recommendation on the paper's sample data (its numbers and its conclusion), and energy
+// per frame against analytic values.
+#include <cmath>
+#include <filesystem>
+
+#include <QtTest>
+
+#include "analysis/platform_comparison.h"
+#include "importer.h"
+
+namespace {
+
+struct Paper {
+  std::vector<bs::FlopsRun> runs;
+  std::vector<bs::PowerTrace> traces;
+};
+
+Paper load_paper() {
+  Paper p;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
+    const auto ext = e.path().extension();
+    if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
+    auto batch = bs::import_file(e.path().string(), bs::CancelToken{});
+    for (auto& r : batch.runs) p.runs.push_back(std::move(r));
+    for (auto& t : batch.power_traces) p.traces.push_back(std::move(t));
+  }
+  return p;
+}
+
+const bs::PlatformRow& row(const std::vector<bs::PlatformRow>& rows, const std::string& name) {
+  for (const auto& r : rows)
+    if (r.platform == name) return r;
+  throw std::runtime_error("no row " + name);
+}
+
+double round2(double v) { return std::round(v * 100) / 100; }
+
+// P(t) = t W from 0 to 10 s, sampled every 0.1 s.
+bs::PowerTrace ramp_trace() {
+  bs::PowerTrace t;
+  t.platform = "robot";
+  t.label = "ramp";
+  bs::PowerChannel ch{"power", bs::PowerQuantity::Power, {}};
+  for (int i = 0; i <= 100; ++i) {
+    t.time_s.push_back(i * 0.1);
+    ch.values.push_back(i * 0.1);
+  }
+  t.channels.push_back(ch);
+  return t;
+}
+
+}  // namespace
+
+class TestPlatformComparison : public QObject {
+  Q_OBJECT
+ private slots:
+  void paper_numbers() {
+    const Paper p = load_paper();
+    const auto rows = bs::compare_platforms(p.runs, p.traces, {});
+    const auto& nuc = row(rows, "NUC");
+    const auto& jetson = row(rows, "Jetson TX2");
+    QCOMPARE(round2(*nuc.mean_power_w), 40.52);
+    QCOMPARE(round2(*jetson.mean_power_w), 9.48);
+    QCOMPARE(round2(*nuc.gflops_per_watt_paper), 104.64);
+    QCOMPARE(round2(*jetson.gflops_per_watt_paper), 41.26);
+    QCOMPARE(round2(*nuc.battery_runtime_h * 60), 84.36);
+    QCOMPARE(round2(*jetson.battery_runtime_h * 60), 360.48);
+    QCOMPARE(round2(nuc.gpu->peak.flops / 1e12), 5.25);
+    QVERIFY(nuc.cpu && jetson.cpu && jetson.gpu);
+    QVERIFY(nuc.sources.count(bs::column::kPower) && nuc.sources.at(bs::column::kPower).source_file.ends_with("nuc-current.csv"));
+    QCOMPARE(nuc.sources.at(bs::column::kGpuPeak).origin, bs::DataOrigin::Reconstructed);
+    QVERIFY(!row(rows, "Desktop (Alienware Area-51)").mean_power_w);
+  }
+
+  void the_papers_recommendation() {
+    const Paper p = load_paper();
+    const auto rows = bs::compare_platforms(p.runs, p.traces, {});
+    const auto pick = [&](const bs::Constraints& c) {
+      std::string chosen;
+      for (const auto& v : bs::recommend(rows, c))
+        if (v.recommended) chosen = v.platform;
+      return chosen;
+    };
+    QCOMPARE(pick({}), std::string("NUC"));                             // no budget: the most compute
+    QCOMPARE(pick({.power_budget_w = 10.0}), std::string("Jetson TX2"));  // under 10 W
+    QCOMPARE(pick({.power_budget_w = 5.0}), std::string());             // nothing fits
+    // Margins and failures are reported per constraint.
+    for (const auto& v : bs::recommend(rows, {.power_budget_w = 10.0, .min_runtime_h = 2.0})) {
+      if (v.platform == "NUC") {
+        QVERIFY(!v.meets_all);
+        QCOMPARE(v.checks.size(), std::size_t{2});
+        QCOMPARE(round2(v.checks[0].margin), -30.52);
+        QVERIFY(!v.checks[1].met);  // 84 min < 2 h
+      } else if (v.platform == "Jetson TX2") {
+        QVERIFY(v.meets_all && v.recommended);
+        QCOMPARE(round2(v.checks[0].margin), 0.52);
+      } else {
+        QVERIFY(!v.recommended);
+        QVERIFY(!v.note.empty());
+      }
+    }
+  }
+
+  void energy_per_frame_is_the_integral_over_the_window() {
+    const bs::PowerTrace t = ramp_trace();
+    // Integral of t dt from 2 to 4 s = 6 J, over 100 frames.
+    QVERIFY(std::fabs(*bs::energy_per_frame_j(t, 2.0, 4.0, 100) - 0.06) < 1e-12);
+    // A window inside one sampling interval is interpolated: integral from 2.05 to 2.15 = 0.21 J.
+    QVERIFY(std::fabs(*bs::energy_per_frame_j(t, 2.05, 2.15, 1) - 0.21) < 1e-12);
+    QVERIFY(!bs::energy_per_frame_j(t, 9.0, 11.0, 10));  // beyond the trace
+    QVERIFY(!bs::energy_per_frame_j(t, 2.0, 4.0, 0));
+  }
+
+  void pipeline_columns() {
+    const std::vector<bs::PowerTrace> traces{ramp_trace()};
+    bs::PipelineTimings aligned{"robot", {100, 6.0, 1.0, 4, 9}, bs::Summary{100, 14.0, 2.0, 10, 20}, 2.0, 4.0, 100, {}};
+    auto rows = bs::compare_platforms({}, traces, std::vector<bs::PipelineTimings>{aligned});
+    QCOMPARE(rows.size(), std::size_t{1});
+    QVERIFY(std::fabs(*rows[0].fps - 50.0) < 1e-12);  // 1000 / (6 + 14) ms
+    QVERIFY(std::fabs(*rows[0].energy_per_frame_j - 0.06) < 1e-12);
+    QVERIFY(std::fabs(*rows[0].frames_per_wh - 60000.0) < 1e-6);
+    // Without a window: mean power (5 W) x 20 ms = 0.1 J, labelled as not time-aligned.
+    bs::PipelineTimings unaligned = aligned;
+    unaligned.window_from_s.reset();
+    rows = bs::compare_platforms({}, traces, std::vector<bs::PipelineTimings>{unaligned});
+    QVERIFY(std::fabs(*rows[0].energy_per_frame_j - 0.1) < 1e-12);
+    QVERIFY(rows[0].sources.at(bs::column::kEnergyPerFrame).how.find("not time-aligned") != std::string::npos);
+    const auto v = bs::recommend(rows, {.min_fps = 60.0});
+    QVERIFY(!v[0].meets_all);
+    QCOMPARE(v[0].checks[0].margin, -10.0);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestPlatformComparison)
+#include "test_platform_comparison.moc"
