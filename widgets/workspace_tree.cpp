@@ -169,6 +169,15 @@ void WorkspaceTree::set_run_visible(qint64 run_id, bool visible) {
     item->setCheckState(visible ? Qt::Checked : Qt::Unchecked);
 }
 
+bool WorkspaceTree::select_run(qint64 run_id) {
+  QStandardItem* item = find_run(model_.invisibleRootItem(), run_id);
+  if (!item) return false;
+  for (QStandardItem* p = item->parent(); p; p = p->parent()) expand(p->index());
+  setCurrentIndex(item->index());
+  scrollTo(item->index());
+  return true;
+}
+
 int WorkspaceTree::run_count() const {
   int n = 0;
   std::function<void(const QStandardItem*)> count = [&](const QStandardItem* it) {

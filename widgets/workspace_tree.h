@@ -16,6 +16,7 @@ class WorkspaceTree : public QTreeView {
   void set_runs(const std::vector<StoredRun>& runs);  // keeps the visibility of runs already known
   QSet<qint64> visible_runs() const;
   void set_run_visible(qint64 run_id, bool visible);
+  bool select_run(qint64 run_id);  // expands its parents, selects and scrolls to it; false when unknown
   int run_count() const;
 
  signals:

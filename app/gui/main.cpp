@@ -8,6 +8,7 @@
 
 #include "flops_plot.h"
 #include "kernel_runner.h"
+#include "platform_view.h"
 #include "power_view.h"
 #include "main_window.h"
 #include "peak_table.h"
@@ -78,6 +79,9 @@ int main(int argc, char** argv) {
       save_png(window.kernel_runner(), dir + "/kernel-runner.png");
       window.power_view()->resize(window.flops_plot()->size());
       save_png(window.power_view(), dir + "/power-view.png");
+      window.platform_view()->resize(window.flops_plot()->size());
+      window.platform_view()->set_power_budget(10.0);  // the paper's conclusion: under 10 W the Jetson
+      save_png(window.platform_view(), dir + "/platform-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

@@ -23,6 +23,7 @@
 #include "peak_table.h"
 #include "power_view.h"
 #include <QTabWidget>
+#include "platform_view.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
 
@@ -35,12 +36,16 @@ MainWindow::MainWindow(QWidget* parent)
       peaks_(new PeakTableView(this)),
       importer_(new ImportController(this)),
       runner_(new KernelRunner(this)),
-      power_(new PowerView(this)) {
+      power_(new PowerView(this)),
+      platforms_(new PlatformView(this)) {
   setAcceptDrops(true);
   auto* views = new QTabWidget(this);
   views->addTab(plot_, tr("FLOPS"));
   views->addTab(power_, tr("Power"));
   views->setTabToolTip(1, tr("Current/power logs: statistics, GFLOPS/W and battery life"));
+  views->addTab(platforms_, tr("Platforms"));
+  views->setTabToolTip(2, tr("One row per platform, and which one to pick under your constraints"));
+  connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -141,10 +146,34 @@ void MainWindow::reload() {
     all.push_back(r.run);
     platform_colors.emplace_back(r.run.platform, r.color_index);
   }
-  power_->set_data(workspace_ ? workspace_->power_traces() : std::vector<StoredPowerTrace>{}, bs::peak_table(all),
-                   platform_colors);
+  const auto traces = workspace_ ? workspace_->power_traces() : std::vector<StoredPowerTrace>{};
+  power_->set_data(traces, bs::peak_table(all), platform_colors);
+  std::vector<PowerTrace> plain_traces;
+  for (const auto& t : traces) plain_traces.push_back(t.trace);
+  platforms_->set_data(all, std::move(plain_traces));
   refresh_views();
   update_title();
+}
+
+void MainWindow::show_source(const PlatformRow& row, const QString& column) {
+  // A peak cell leads to its run in the workspace tree; a power cell to the Power tab.
+  const std::optional<PeakRow>& peak = column == column::kCpuPeak ? row.cpu : row.gpu;
+  if ((column == column::kGpuPeak || column == column::kCpuPeak) && peak) {
+    for (const StoredRun& r : runs_)
+      if (r.run.platform == peak->platform && r.run.device == peak->device && r.run.backend == peak->backend &&
+          r.run.variant == peak->variant && r.run.dims == peak->dims && tree_->select_run(r.id)) {
+        if (auto* dock = findChild<QDockWidget*>("workspaceDock")) dock->raise();
+        statusBar()->showMessage(tr("%1: %2").arg(QString::fromStdString(row.platform),
+                                                  QString::fromStdString(row.sources.at(column.toStdString()).how)), 10000);
+        return;
+      }
+  }
+  const auto it = row.sources.find(column.toStdString());
+  if (column == column::kPower) static_cast<QTabWidget*>(centralWidget())->setCurrentWidget(power_);
+  statusBar()->showMessage(it == row.sources.end() ? tr("No source recorded for this cell")
+                                                   : tr("%1 — from %2").arg(QString::fromStdString(it->second.how),
+                                                                            QString::fromStdString(it->second.source_file)),
+                           10000);
 }
 
 void MainWindow::refresh_views() {

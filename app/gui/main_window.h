@@ -6,6 +6,7 @@
 
 class QLabel;
 
+#include "analysis/platform_comparison.h"
 #include "store/workspace.h"
 
 namespace bs::ui {
@@ -16,6 +17,7 @@ class ImportController;
 class RecentFiles;
 class KernelRunner;
 class PowerView;
+class PlatformView;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -37,12 +39,14 @@ class MainWindow : public QMainWindow {
   PeakTableView* peak_table() const { return peaks_; }
   KernelRunner* kernel_runner() const { return runner_; }
   PowerView* power_view() const { return power_; }
+  PlatformView* platform_view() const { return platforms_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
   void closeEvent(QCloseEvent* event) override;
+  void show_source(const PlatformRow& row, const QString& column);
 
  private:
   void create_actions();  // main_window_menus.cpp
@@ -65,6 +69,7 @@ class MainWindow : public QMainWindow {
   RecentFiles* recent_ = nullptr;
   KernelRunner* runner_;
   PowerView* power_;
+  PlatformView* platforms_;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 

@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "platform_view.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <cmath>
+#include <limits>
+
+#include "analysis/battery.h"
+#include "analysis/platform_table.h"
+
+namespace bs::ui {
+namespace {
+
+constexpr int kSortRole = Qt::UserRole + 1;
+constexpr int kColumnRole = Qt::UserRole + 2;
+
+// Sorts by the number behind the text; cells without a number go last whatever the order.
+class NumericItem : public QTableWidgetItem {
+ public:
+  using QTableWidgetItem::QTableWidgetItem;
+  bool operator<(const QTableWidgetItem& other) const override {
+    const QVariant a = data(kSortRole), b = other.data(kSortRole);
+    if (!a.isValid() || !b.isValid()) return QTableWidgetItem::operator<(other);
+    const double x = a.toDouble(), y = b.toDouble();
+    if (std::isnan(x) != std::isnan(y)) {
+      const auto* view = tableWidget();
+      const bool ascending = !view || view->horizontalHeader()->sortIndicatorOrder() == Qt::AscendingOrder;
+      return std::isnan(x) ? !ascending : ascending;
+    }
+    return x < y;
+  }
+};
+
+double value_or_nan(std::optional<double> v) { return v ? *v : std::numeric_limits<double>::quiet_NaN(); }
+
+// The number behind each numeric column (NaN = unknown) and which way is better: +1 higher, -1 lower, 0 neither.
+struct ColumnValue {
+  double value;
+  int better;
+};
+std::vector<ColumnValue> column_values(const PlatformRow& r) {
+  const auto frac = [&]() -> std::optional<double> {
+    for (const auto* p : {&r.gpu, &r.cpu})
+      if (*p && (*p)->fraction_of_theoretical) return *(*p)->fraction_of_theoretical;
+    return std::nullopt;
+  };
+  return {{std::numeric_limits<double>::quiet_NaN(), 0},
+          {value_or_nan(r.gpu ? std::optional<double>(r.gpu->peak.flops) : std::nullopt), +1},
+          {value_or_nan(r.cpu ? std::optional<double>(r.cpu->peak.flops) : std::nullopt), +1},
+          {value_or_nan(frac()), +1},
+          {value_or_nan(r.preprocess_ms ? std::optional<double>(r.preprocess_ms->mean) : std::nullopt), -1},
+          {value_or_nan(r.detect_ms ? std::optional<double>(r.detect_ms->mean) : std::nullopt), -1},
+          {value_or_nan(r.mean_power_w), -1},
+          {value_or_nan(r.max_power_w), -1},
+          {value_or_nan(r.gflops_per_watt_paper), +1},
+          {value_or_nan(r.gflops_per_watt_mean), +1},
+          {value_or_nan(r.energy_per_frame_j), -1},
+          {value_or_nan(r.battery_runtime_h), +1},
+          {value_or_nan(r.frames_per_wh), +1}};
+}
+
+QString tooltip_for(const PlatformRow& r, const std::string& column) {
+  const auto it = r.sources.find(column);
+  if (it == r.sources.end()) return {};
+  const CellSource& s = it->second;
+  return QObject::tr("%1\nfrom %2 (%3)\nDouble-click to show it in the workspace")
+      .arg(QString::fromStdString(s.how), QString::fromStdString(s.source_file.empty() ? "?" : s.source_file),
+           QString::fromUtf8(to_string(s.origin).data()));
+}
+
+QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, const QString& suffix, int decimals) {
+  auto* s = new QDoubleSpinBox(parent);
+  s->setRange(lo, hi);
+  s->setValue(value);
+  s->setSuffix(suffix);
+  s->setDecimals(decimals);
+  return s;
+}
+
+}  // namespace
+
+PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
+  use_budget_ = new QCheckBox(tr("Power budget ≤"), this);
+  budget_ = spin(this, 0.1, 10000, 10, tr(" W"), 1);
+  use_fps_ = new QCheckBox(tr("Frame rate ≥"), this);
+  fps_ = spin(this, 0.1, 10000, 30, tr(" fps"), 1);
+  use_runtime_ = new QCheckBox(tr("Battery runtime ≥"), this);
+  runtime_ = spin(this, 1, 100000, 60, tr(" min"), 0);
+  battery_ = new QComboBox(this);
+  for (const BatteryPack& p : battery_presets())
+    battery_->addItem(QString::fromStdString(p.description), QString::fromStdString(p.name));
+  extra_load_ = spin(this, 0, 10000, 0, tr(" W"), 1);
+  use_budget_->setToolTip(tr("Mean power during the platform's power log must stay within this budget"));
+  use_fps_->setToolTip(tr("Preprocessing + detection in sequence, from the platform's pipeline run"));
+  use_runtime_->setToolTip(tr("Constant-power battery runtime at the mean power plus the parallel load"));
+  extra_load_->setToolTip(tr("Load in parallel with the computer, e.g. the robot's servos (the paper's robot: up to 225 W)"));
+  auto* export_tex = new QPushButton(tr("Export LaTeX…"), this);
+  auto* export_csv = new QPushButton(tr("Export CSV…"), this);
+
+  auto* controls = new QHBoxLayout;
+  for (QWidget* w : {static_cast<QWidget*>(use_budget_), static_cast<QWidget*>(budget_), static_cast<QWidget*>(use_fps_),
+                     static_cast<QWidget*>(fps_), static_cast<QWidget*>(use_runtime_), static_cast<QWidget*>(runtime_)})
+    controls->addWidget(w);
+  controls->addSpacing(12);
+  controls->addWidget(new QLabel(tr("Battery:"), this));
+  controls->addWidget(battery_);
+  controls->addWidget(new QLabel(tr("Parallel load:"), this));
+  controls->addWidget(extra_load_);
+  controls->addStretch(1);
+  controls->addWidget(export_tex);
+  controls->addWidget(export_csv);
+
+  summary_ = new QLabel(this);
+  summary_->setWordWrap(true);
+  table_ = new QTableWidget(this);
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setSelectionBehavior(QAbstractItemView::SelectItems);
+  table_->verticalHeader()->setVisible(false);
+  table_->horizontalHeader()->setDefaultAlignment(Qt::Alignment(Qt::AlignCenter) | Qt::Alignment(Qt::TextWordWrap));
+  table_->setWordWrap(true);
+  table_->horizontalHeader()->setStretchLastSection(true);  // the verdict's text gets what is left
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(controls);
+  layout->addWidget(summary_);
+  layout->addWidget(table_, 1);
+
+  for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_}) connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
+  for (QDoubleSpinBox* s : {budget_, fps_, runtime_, extra_load_})
+    connect(s, &QDoubleSpinBox::valueChanged, this, &PlatformView::recompute);
+  connect(battery_, &QComboBox::currentIndexChanged, this, &PlatformView::recompute);
+  connect(export_tex, &QPushButton::clicked, this, [this] { export_table(true); });
+  connect(export_csv, &QPushButton::clicked, this, [this] { export_table(false); });
+  connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int col) {
+    const QTableWidgetItem* item = table_->item(row, col);
+    if (!item) return;
+    const int index = item->data(Qt::UserRole).toInt();
+    if (index >= 0 && index < static_cast<int>(rows_.size()))
+      emit source_requested(rows_[static_cast<std::size_t>(index)], item->data(kColumnRole).toString());
+  });
+}
+
+void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces) {
+  runs_ = std::move(runs);
+  traces_ = std::move(traces);
+  recompute();
+}
+
+ComparisonOptions PlatformView::options() const {
+  ComparisonOptions o;
+  if (const BatteryPack* p = find_battery_preset(battery_->currentData().toString().toStdString())) {
+    o.battery_nominal_v = p->nominal_v();
+    o.battery_capacity_ah = p->capacity_ah;
+  }
+  o.extra_load_w = extra_load_->value();
+  return o;
+}
+
+Constraints PlatformView::constraints() const {
+  Constraints c;
+  if (use_budget_->isChecked()) c.power_budget_w = budget_->value();
+  if (use_fps_->isChecked()) c.min_fps = fps_->value();
+  if (use_runtime_->isChecked()) c.min_runtime_h = runtime_->value() / 60.0;
+  return c;
+}
+
+void PlatformView::set_power_budget(std::optional<double> watts) {
+  if (watts) budget_->setValue(*watts);
+  use_budget_->setChecked(watts.has_value());
+}
+void PlatformView::set_min_fps(std::optional<double> fps) {
+  if (fps) fps_->setValue(*fps);
+  use_fps_->setChecked(fps.has_value());
+}
+void PlatformView::set_min_runtime_min(std::optional<double> minutes) {
+  if (minutes) runtime_->setValue(*minutes);
+  use_runtime_->setChecked(minutes.has_value());
+}
+
+QString PlatformView::recommendation() const {
+  for (const auto& v : verdicts_)
+    if (v.recommended) return QString::fromStdString(v.platform);
+  return {};
+}
+
+void PlatformView::recompute() {
+  rows_ = compare_platforms(runs_, traces_, {}, options());
+  verdicts_ = recommend(rows_, constraints());
+  fill_table();
+  const Constraints c = constraints();
+  const bool constrained = c.power_budget_w || c.min_fps || c.min_runtime_h;
+  const QString hidden = empty_columns_.isEmpty() ? QString()
+                                                  : tr("<br><span style='color:gray'>No data yet (hidden): %1.</span>")
+                                                        .arg(empty_columns_.join(", "));
+  if (rows_.empty()) {
+    summary_->setText(tr("No FLOPS runs or power logs in the workspace yet: import some (File ▸ Import) to compare platforms."));
+  } else if (!constrained) {
+    summary_->setText(tr("Most compute among the platforms with a power log: <b>%1</b>. Set constraints above to see "
+                         "which platforms meet them.")
+                          .arg(recommendation().isEmpty() ? tr("none") : recommendation()));
+  } else {
+    summary_->setText(recommendation().isEmpty()
+                          ? tr("<b>No platform meets every constraint</b>; the last column says which one each fails and by how much.")
+                          : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
+                                .arg(recommendation()));
+  }
+  if (!rows_.empty()) summary_->setText(summary_->text() + hidden);
+}
+
+void PlatformView::fill_table() {
+  const bool constrained = constraints().power_budget_w || constraints().min_fps || constraints().min_runtime_h;
+  const ExportTable t = platform_table(rows_, constrained ? std::span<const PlatformVerdict>(verdicts_)
+                                                          : std::span<const PlatformVerdict>());
+  const auto ids = platform_table_columns(constrained);
+  table_->setSortingEnabled(false);
+  table_->clear();
+  table_->setColumnCount(static_cast<int>(t.header.size()));
+  table_->setRowCount(static_cast<int>(t.rows.size()));
+  QStringList header;
+  for (const auto& h : t.header) header << QString::fromStdString(h);
+  table_->setHorizontalHeaderLabels(header);
+  // The best value per numeric column among the platforms that have one.
+  std::vector<double> best(t.header.size(), std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::vector<ColumnValue>> values;
+  for (const auto& r : rows_) values.push_back(column_values(r));
+  const std::size_t numeric_columns = values.empty() ? 0 : values.front().size();
+  for (std::size_t col = 1; col < numeric_columns; ++col)
+    for (const auto& v : values) {
+      const ColumnValue& cv = v[col];
+      if (std::isnan(cv.value) || cv.better == 0) continue;
+      if (std::isnan(best[col]) || (cv.better > 0 ? cv.value > best[col] : cv.value < best[col])) best[col] = cv.value;
+    }
+  const int with_data = static_cast<int>(rows_.size());
+  for (int r = 0; r < static_cast<int>(t.rows.size()); ++r) {
+    for (int c = 0; c < static_cast<int>(t.rows[r].size()); ++c) {
+      auto* item = new NumericItem(QString::fromStdString(t.rows[r][c]));
+      item->setData(Qt::UserRole, r);
+      item->setData(kColumnRole, QString::fromStdString(ids[static_cast<std::size_t>(c)]));
+      const std::size_t cu = static_cast<std::size_t>(c);
+      if (cu < values[static_cast<std::size_t>(r)].size() && c > 0) {
+        const double v = values[static_cast<std::size_t>(r)][cu].value;
+        item->setData(kSortRole, v);
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        if (!std::isnan(v) && v == best[cu] && with_data > 1) {
+          QFont f = item->font();
+          f.setBold(true);
+          item->setFont(f);
+          item->setBackground(QColor(0xd9, 0xf2, 0xd9));
+        }
+      }
+      const QString tip = tooltip_for(rows_[static_cast<std::size_t>(r)], ids[cu]);
+      if (!tip.isEmpty()) item->setToolTip(tip);
+      if (c == 0 && r < static_cast<int>(verdicts_.size()) && verdicts_[static_cast<std::size_t>(r)].recommended) {
+        QFont f = item->font();
+        f.setBold(true);
+        item->setFont(f);
+        item->setBackground(QColor(0xd6, 0xe4, 0xf5));
+        item->setToolTip(tr("Recommended: the most compute among the platforms with a power log that meet every constraint"));
+      }
+      table_->setItem(r, c, item);
+    }
+  }
+  // Columns nobody has data for yet (no pipeline runs imported, no theoretical peaks) are hidden, and named in
+  // the summary, so the columns that matter fit the window.
+  empty_columns_.clear();
+  for (int c = 1; c < table_->columnCount(); ++c) {
+    bool empty = true;
+    for (int r = 0; r < table_->rowCount() && empty; ++r) empty = table_->item(r, c)->text() == QString::fromUtf8("\u2013");
+    table_->setColumnHidden(c, empty && table_->rowCount() > 0);
+    if (empty && table_->rowCount() > 0) empty_columns_ << QString::fromStdString(t.header[static_cast<std::size_t>(c)]);
+  }
+  table_->setSortingEnabled(true);
+  table_->resizeColumnsToContents();
+  // Numbers need little room; headers wrap onto three lines instead of widening their columns.
+  for (int c = 0; c < table_->columnCount(); ++c) {
+    const int cap = c == 0 ? 230 : c <= 2 ? 200 : 118;
+    table_->setColumnWidth(c, std::min(table_->columnWidth(c), cap));
+  }
+  table_->horizontalHeader()->setMinimumHeight(64);
+  table_->resizeRowsToContents();
+}
+
+void PlatformView::export_table(bool latex) {
+  const QString filter = latex ? tr("LaTeX (*.tex)") : tr("CSV (*.csv)");
+  const QString path = QFileDialog::getSaveFileName(this, latex ? tr("Export LaTeX table") : tr("Export CSV table"),
+                                                    latex ? "platforms.tex" : "platforms.csv", filter);
+  if (path.isEmpty()) return;
+  const bool constrained = constraints().power_budget_w || constraints().min_fps || constraints().min_runtime_h;
+  const ExportTable t = platform_table(rows_, constrained ? std::span<const PlatformVerdict>(verdicts_)
+                                                          : std::span<const PlatformVerdict>());
+  const std::string text = latex ? to_latex(t) : to_csv(t);
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
+    QMessageBox::warning(this, tr("Export failed"), tr("Cannot write %1: %2").arg(path, f.errorString()));
+}
+
+}  // namespace bs::ui

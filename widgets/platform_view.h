@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QStringList>
+#include <QWidget>
+#include <vector>
+
+#include "analysis/platform_comparison.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QTableWidget;
+
+namespace bs::ui {
+
+// One row per platform (peaks, power, GFLOPS/W, pipeline, energy per frame, battery), sortable, the best value of
+// each column highlighted, each cell's source in its tooltip; constraints (power budget, fps, runtime) add the
+// verdict columns and the recommendation. The numbers come from core (compare_platforms, recommend,
+// platform_table) so the view, the CLI and the exported tables agree.
+class PlatformView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PlatformView(QWidget* parent = nullptr);
+  void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces);
+  QTableWidget* table() const { return table_; }
+  QString recommendation() const;  // the recommended platform, empty when none
+  void set_power_budget(std::optional<double> watts);
+  void set_min_fps(std::optional<double> fps);
+  void set_min_runtime_min(std::optional<double> minutes);
+
+ signals:
+  // The user asked where a cell's number came from (double-click): the platform and the column id.
+  void source_requested(const PlatformRow& row, const QString& column);
+
+ private:
+  void recompute();
+  void fill_table();
+  void export_table(bool latex);
+  ComparisonOptions options() const;
+  Constraints constraints() const;
+
+  QCheckBox *use_budget_, *use_fps_, *use_runtime_;
+  QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;
+  QComboBox* battery_;
+  QLabel* summary_;
+  QTableWidget* table_;
+  std::vector<FlopsRun> runs_;
+  std::vector<PowerTrace> traces_;
+  std::vector<PlatformRow> rows_;
+  std::vector<PlatformVerdict> verdicts_;
+  QStringList empty_columns_;  // header texts of the columns hidden for lack of data
+};
+
+}  // namespace bs::ui
