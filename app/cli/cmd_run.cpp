@@ -14,9 +14,13 @@
 #include "store/workspace.h"
 
 namespace bs::cli {
+
+int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err);  // cmd_run_bandwidth.cpp
+
 namespace {
 
 int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  if (!raw.empty() && raw[0] == "bandwidth") return run_bandwidth(raw, out, err);
   const ParsedArgs args = parse_args(raw, {"--json", "--no-warmup", "--quiet"},
                                      {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out",
                                       "--workspace", "--variant", "--device"});
@@ -107,7 +111,7 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
 
 const CommandRegistrar registrar({
     "run",
-    "measure the paper's rotation kernel on this machine (FLOPS sweep)",
+    "measure the paper's rotation kernel (FLOPS sweep) or memory bandwidth on this machine",
     "usage: benchscope-cli run flops [--backend cpu|cpu-simd|cpu-scalar|opencl|cuda [--device N]]\n"
     "         [--variant throughput|paper]\n"
     "         [--points 1,2,4] [--iterations N] [--workers SPEC] [--repeats R] [--no-warmup]\n"
@@ -116,7 +120,11 @@ const CommandRegistrar registrar({
     "  paper: the paper's kernel (OpenMP task / work-item / thread per worker; OpenCL and CUDA: float, float2,\n"
     "  float4 for D = 1, 2, 4). throughput: enough independent vector chains per thread to reach the FMA pipes'\n"
     "  peak (CPU: all W*D points packed into vectors; OpenCL: float16x4; CUDA: float4x4).\n"
-    "  Every output is checked against the closed form D*(cos 2N + sin 2N). Ctrl+C keeps the completed points.",
+    "  Every output is checked against the closed form D*(cos 2N + sin 2N). Ctrl+C keeps the completed points.\n"
+    "usage: benchscope-cli run bandwidth [--backend cpu|cpu-scalar|opencl [--device N]] [--mib 128]\n"
+    "         [--repeats 10] [--workspace W.bsw] [--json] [--quiet]\n"
+    "  STREAM triad a = b + q c over three float arrays of --mib MiB (12 bytes per element), mean ± SD of the\n"
+    "  repetitions in GB/s: the memory ceiling of the roofline. --workspace stores it as a result set.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
         return run_flops(args, out, err);

@@ -9,6 +9,7 @@
 #include "flops_plot.h"
 #include "kernel_runner.h"
 #include "platform_view.h"
+#include "roofline_view.h"
 #include "power_view.h"
 #include "main_window.h"
 #include "peak_table.h"
@@ -82,6 +83,8 @@ int main(int argc, char** argv) {
       window.platform_view()->resize(window.flops_plot()->size());
       window.platform_view()->set_power_budget(10.0);  // the paper's conclusion: under 10 W the Jetson
       save_png(window.platform_view(), dir + "/platform-view.png");
+      window.roofline_view()->resize(window.flops_plot()->size());
+      save_png(window.roofline_view(), dir + "/roofline-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

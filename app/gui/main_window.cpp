@@ -24,6 +24,7 @@
 #include "power_view.h"
 #include <QTabWidget>
 #include "platform_view.h"
+#include "roofline_view.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
 
@@ -37,7 +38,8 @@ MainWindow::MainWindow(QWidget* parent)
       importer_(new ImportController(this)),
       runner_(new KernelRunner(this)),
       power_(new PowerView(this)),
-      platforms_(new PlatformView(this)) {
+      platforms_(new PlatformView(this)),
+      roofline_(new RooflineView(this)) {
   setAcceptDrops(true);
   auto* views = new QTabWidget(this);
   views->addTab(plot_, tr("FLOPS"));
@@ -46,6 +48,8 @@ MainWindow::MainWindow(QWidget* parent)
   views->addTab(platforms_, tr("Platforms"));
   views->setTabToolTip(2, tr("One row per platform, and which one to pick under your constraints"));
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
+  views->addTab(roofline_, tr("Roofline"));
+  views->setTabToolTip(3, tr("Compute and memory ceilings per device, with the kernels placed on them"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -151,6 +155,15 @@ void MainWindow::reload() {
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);
   platforms_->set_data(all, std::move(plain_traces));
+  std::vector<ResultSet> sets;
+  std::map<std::pair<std::string, std::string>, int> device_colors;
+  for (const StoredRun& r : runs_) device_colors[{r.run.platform, r.run.device}] = r.color_index;
+  if (workspace_)
+    for (const StoredResultSet& s : workspace_->result_sets()) {
+      device_colors[{s.set.platform, s.set.device}] = s.color_index;
+      sets.push_back(s.set);
+    }
+  roofline_->set_data(all, std::move(sets), std::move(device_colors));
   refresh_views();
   update_title();
 }

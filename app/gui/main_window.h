@@ -18,6 +18,7 @@ class RecentFiles;
 class KernelRunner;
 class PowerView;
 class PlatformView;
+class RooflineView;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -40,6 +41,7 @@ class MainWindow : public QMainWindow {
   KernelRunner* kernel_runner() const { return runner_; }
   PowerView* power_view() const { return power_; }
   PlatformView* platform_view() const { return platforms_; }
+  RooflineView* roofline_view() const { return roofline_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -70,6 +72,7 @@ class MainWindow : public QMainWindow {
   KernelRunner* runner_;
   PowerView* power_;
   PlatformView* platforms_;
+  RooflineView* roofline_;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 

@@ -29,6 +29,11 @@ struct Backend {
   std::function<double(const RotationParams&, std::int64_t workers, Variant, std::vector<float>& outputs,
                        const CancelToken& cancel)>
       run_point;
+  // Memory bandwidth (roofline's memory ceiling): one STREAM triad pass a[i] = b[i] + q * c[i] over `elements`
+  // floats in arrays the backend allocated beforehand (12 bytes moved per element), verified, and its seconds.
+  // Empty for backends without one (CUDA for now). Throws Cancelled between passes, std::invalid_argument on a
+  // size the device cannot hold.
+  std::function<double(std::size_t elements, const CancelToken& cancel)> run_triad;
 
   // The label stored in FlopsRun::variant: "paper" or throughput_label.
   std::string variant_label(Variant v) const { return v == Variant::Paper ? "paper" : throughput_label; }

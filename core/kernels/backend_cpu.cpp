@@ -4,6 +4,7 @@
 #include <ctime>
 
 #include "kernels/backend.h"
+#include "kernels/triad_cpu.h"
 #include "kernels/step_chunker.h"
 
 namespace bs::kernels {
@@ -76,6 +77,8 @@ std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
   simd.run_point = [target](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& out,
                             const CancelToken& c) { return run_simd(target, p, w, v, out, c); };
 
+  simd.run_triad = [](std::size_t n, const CancelToken& c) { return cpu_triad_seconds(n, true, c); };
+
   Backend scalar;
   scalar.id = "cpu-scalar";
   scalar.label = "CPU scalar (reference)";
@@ -91,6 +94,7 @@ std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
   scalar.details = details;
   scalar.run_point = [](const RotationParams& p, std::int64_t w, Variant, std::vector<float>& out,
                         const CancelToken& c) { return run_scalar(p, w, out, c); };
+  scalar.run_triad = [](std::size_t n, const CancelToken& c) { return cpu_triad_seconds(n, false, c); };
   return {simd, scalar};
 }
 

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QWidget>
+#include <map>
+#include <vector>
+
+#include "analysis/roofline.h"
+
+class QCustomPlot;
+class QLabel;
+
+namespace bs::ui {
+
+// Roofline per device on log-log axes: the compute ceiling from the stated (or measured) peak, the memory ceiling
+// from measured bandwidth (STREAM triad from "run bandwidth", or clpeak), and the rotation kernel's runs placed at
+// their intensity and peak FLOPS. Device colours as in every other view.
+class RooflineView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit RooflineView(QWidget* parent = nullptr);
+  // colors: (platform, device) -> colour index of the device in the workspace.
+  void set_data(std::vector<FlopsRun> runs, std::vector<ResultSet> sets,
+                std::map<std::pair<std::string, std::string>, int> colors);
+  QCustomPlot* plot() const { return plot_; }
+  const std::vector<RooflineCeiling>& ceilings() const { return ceilings_; }
+  const std::vector<RooflinePoint>& points() const { return points_; }
+
+ private:
+  void redraw();
+  QCustomPlot* plot_;
+  QLabel* note_;
+  std::vector<FlopsRun> runs_;
+  std::vector<ResultSet> sets_;
+  std::map<std::pair<std::string, std::string>, int> colors_;
+  std::vector<RooflineCeiling> ceilings_;
+  std::vector<RooflinePoint> points_;
+};
+
+}  // namespace bs::ui
