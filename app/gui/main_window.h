@@ -52,6 +52,7 @@ class MainWindow : public QMainWindow {
 
  private:
   void create_actions();  // main_window_menus.cpp
+  void compare_with_workspace();  // main_window_menus.cpp
   void reload();
   void refresh_views();
   void show_import_report(const ImportReport& report);

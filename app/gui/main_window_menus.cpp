@@ -6,11 +6,36 @@
 #include <QMessageBox>
 #include <qcustomplot.h>
 
+#include "compare_dialog.h"
 #include "flops_plot.h"
 #include "main_window.h"
 #include "recent_files.h"
 
 namespace bs::ui {
+
+void MainWindow::compare_with_workspace() {
+  if (!workspace_) {
+    QMessageBox::information(this, tr("Compare"), tr("Open the baseline workspace (A) first."));
+    return;
+  }
+  const QString other = QFileDialog::getOpenFileName(this, tr("Compare with workspace (B)"), {},
+                                                     tr("BenchScope workspace (*.bsw);;All files (*)"));
+  if (other.isEmpty()) return;
+  try {
+    const Workspace b(other.toStdString());
+    std::vector<FlopsRun> runs_a, runs_b;
+    std::vector<ResultSet> sets_a, sets_b;
+    for (const StoredRun& r : workspace_->runs()) runs_a.push_back(r.run);
+    for (const StoredRun& r : b.runs()) runs_b.push_back(r.run);
+    for (const StoredResultSet& s : workspace_->result_sets()) sets_a.push_back(s.set);
+    for (const StoredResultSet& s : b.result_sets()) sets_b.push_back(s.set);
+    CompareDialog dialog(runs_a, sets_a, runs_b, sets_b, QFileInfo(QString::fromStdString(workspace_->path())).fileName(),
+                         QFileInfo(other).fileName(), this);
+    dialog.exec();
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Compare"), QString::fromUtf8(e.what()));
+  }
+}
 
 void MainWindow::create_actions() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -42,6 +67,10 @@ void MainWindow::create_actions() {
         const QString dir = QFileDialog::getExistingDirectory(this, tr("Import folder"));
         if (!dir.isEmpty()) import_paths({dir});
       });
+  file->addSeparator();
+  add(file, tr("&Compare with workspace…"), QKeySequence(Qt::CTRL | Qt::Key_D),
+      tr("Regression compare of this workspace (A) against another (B), as benchscope-cli compare does"),
+      [this] { compare_with_workspace(); });
   file->addSeparator();
   add(file, tr("&Quit"), QKeySequence::Quit, tr("Quit BenchScope"), [this] { close(); });
 
