@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vision/detector.h"
+
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+#include <opencv2/dnn.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/objdetect.hpp>
+
+namespace bs::vision {
+
+Detector hog_people_detector(double scale) {
+  if (!(scale > 0 && scale <= 1)) throw std::invalid_argument("HOG scale must be in (0, 1]");
+  auto hog = std::make_shared<cv::HOGDescriptor>();
+  hog->setSVMDetector(cv::HOGDescriptor::getDefaultPeopleDetector());
+  return [hog, scale](const cv::Mat& bgr) {
+    cv::Mat small;
+    if (scale < 1) cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
+    else small = bgr;
+    std::vector<cv::Rect> boxes;
+    std::vector<double> weights;
+    hog->detectMultiScale(small, boxes, weights, 0, cv::Size(8, 8), cv::Size(), 1.05, 2.0);
+    std::vector<Detection> out;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const cv::Rect& b = boxes[i];
+      out.push_back({cv::Rect(cv::Point(cvRound(b.x / scale), cvRound(b.y / scale)),
+                              cv::Size(cvRound(b.width / scale), cvRound(b.height / scale))),
+                     i < weights.size() ? weights[i] : 0.0, -1});
+    }
+    return out;
+  };
+}
+
+std::vector<Detection> parse_ssd_output(const cv::Mat& out, cv::Size size, float min_confidence) {
+  if (out.total() % 7 != 0) throw std::runtime_error("detector output is not rows of 7 values (SSD DetectionOutput)");
+  const cv::Mat rows(static_cast<int>(out.total() / 7), 7, CV_32F, const_cast<float*>(out.ptr<float>()));
+  std::vector<Detection> dets;
+  for (int i = 0; i < rows.rows; ++i) {
+    const float* r = rows.ptr<float>(i);
+    if (r[0] < 0 || r[2] < min_confidence) continue;
+    const cv::Rect box(cv::Point(cvRound(r[3] * size.width), cvRound(r[4] * size.height)),
+                       cv::Point(cvRound(r[5] * size.width), cvRound(r[6] * size.height)));
+    const cv::Rect clipped = box & cv::Rect(cv::Point(0, 0), size);
+    if (clipped.area() > 0) dets.push_back({clipped, r[2], static_cast<int>(r[1])});
+  }
+  return dets;
+}
+
+Detector dnn_ssd_detector(const DnnOptions& o) {
+  std::shared_ptr<cv::dnn::Net> net;
+  try {
+    net = std::make_shared<cv::dnn::Net>(cv::dnn::readNet(o.model, o.config));
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(o.model + ": cannot load the detector model (" + e.err + ")");
+  }
+  if (net->empty()) throw std::runtime_error(o.model + ": cannot load the detector model");
+  auto mutex = std::make_shared<std::mutex>();  // one Net, forward() is not reentrant
+  return [net, mutex, o](const cv::Mat& bgr) {
+    const cv::Mat blob = cv::dnn::blobFromImage(bgr, o.scale, o.input_size, o.mean, o.swap_rb, false);
+    std::lock_guard lock(*mutex);
+    net->setInput(blob);
+    const cv::Mat out = net->forward();
+    return parse_ssd_output(out, bgr.size(), o.min_confidence);
+  };
+}
+
+cv::Mat draw_detections(const cv::Mat& bgr, const std::vector<Detection>& detections) {
+  cv::Mat out = bgr.clone();
+  for (const Detection& d : detections) {
+    cv::rectangle(out, d.box, cv::Scalar(0, 255, 0), 3);
+    char label[32];
+    std::snprintf(label, sizeof label, "%.2f", d.score);
+    cv::putText(out, label, d.box.tl() + cv::Point(4, 20), cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 255, 0), 2);
+  }
+  return out;
+}
+
+}  // namespace bs::vision
