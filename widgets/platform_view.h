@@ -28,6 +28,9 @@ class PlatformView : public QWidget {
   void set_power_budget(std::optional<double> watts);
   void set_min_fps(std::optional<double> fps);
   void set_min_runtime_min(std::optional<double> minutes);
+  // What the controls say now (battery, extra load; constraints), for the report.
+  ComparisonOptions options() const;
+  Constraints constraints() const;
 
  signals:
   // The user asked where a cell's number came from (double-click): the platform and the column id.
@@ -37,8 +40,6 @@ class PlatformView : public QWidget {
   void recompute();
   void fill_table();
   void export_table(bool latex);
-  ComparisonOptions options() const;
-  Constraints constraints() const;
 
   QCheckBox *use_budget_, *use_fps_, *use_runtime_;
   QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;

@@ -8,11 +8,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/battery.h"
 #include "analysis/platform_table.h"
 #include "args.h"
 #include "command.h"
 #include "inputs.h"
+#include "platform_args.h"
 #include "signals.h"
 #include "text_table.h"
 
@@ -28,27 +28,15 @@ void write_file(const std::string& path, const std::string& text) {
 nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
 int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {"--json"},
-                                     {"--budget", "--min-fps", "--min-runtime", "--battery", "--extra-load",
-                                      "--supply-volts", "--latex", "--csv"});
+  std::set<std::string> values = platform_value_options();
+  values.insert({"--latex", "--csv"});
+  const ParsedArgs args = parse_args(raw, {"--json"}, values);
   if (args.positional.empty()) throw UsageError("platforms needs a workspace or files");
-  const std::string preset_name = args.value("--battery").value_or("paper-4s-3850");
-  const BatteryPack* pack = find_battery_preset(preset_name);
-  if (!pack) {
-    std::string names;
-    for (const BatteryPack& p : battery_presets()) names += (names.empty() ? "" : ", ") + p.name;
-    throw UsageError("unknown --battery '" + preset_name + "' (known: " + names + ")");
-  }
-  ComparisonOptions options;
-  options.battery_nominal_v = pack->nominal_v();
-  options.battery_capacity_ah = pack->capacity_ah;
-  options.extra_load_w = args.number("--extra-load", 0);
-  if (args.value("--supply-volts")) options.supply_v = args.number("--supply-volts", 0);
-  Constraints c;
-  if (args.value("--budget")) c.power_budget_w = args.number("--budget", 0);
-  if (args.value("--min-fps")) c.min_fps = args.number("--min-fps", 0);
-  if (args.value("--min-runtime")) c.min_runtime_h = args.number("--min-runtime", 0) / 60.0;  // minutes on the CLI
-  const bool constrained = c.power_budget_w || c.min_fps || c.min_runtime_h;
+  const PlatformArgs p = parse_platform_args(args);
+  const BatteryPack* pack = p.pack;
+  const ComparisonOptions& options = p.options;
+  const Constraints& c = p.constraints;
+  const bool constrained = p.constrained();
 
   const LoadedData data = load_inputs(args.positional, interrupt_token());
   const auto rows = compare_platforms(data.runs, data.power_traces, {}, options);

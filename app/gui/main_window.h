@@ -7,6 +7,7 @@
 class QLabel;
 
 #include "analysis/platform_comparison.h"
+#include "paper_figures.h"
 #include "store/workspace.h"
 
 namespace bs::ui {
@@ -53,6 +54,12 @@ class MainWindow : public QMainWindow {
  private:
   void create_actions();  // main_window_menus.cpp
   void compare_with_workspace();  // main_window_menus.cpp
+  // main_window_export.cpp
+  void export_current_figure();
+  void reproduce_paper_figures();
+  void export_report();
+  FigureData figure_data() const;
+  QString export_folder() const;
   void reload();
   void refresh_views();
   void show_import_report(const ImportReport& report);

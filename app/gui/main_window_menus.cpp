@@ -72,6 +72,16 @@ void MainWindow::create_actions() {
       tr("Regression compare of this workspace (A) against another (B), as benchscope-cli compare does"),
       [this] { compare_with_workspace(); });
   file->addSeparator();
+  add(file, tr("&Export figure…"), QKeySequence(Qt::CTRL | Qt::Key_E),
+      tr("Save the plot of the current tab as PDF, SVG or PNG at a journal width (LNCS, IEEE) with print fonts"),
+      [this] { export_current_figure(); });
+  add(file, tr("Reproduce &paper figures…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E),
+      tr("Write fig1a-fig4, Tables 1 and 2 and figures.json from this workspace, as benchscope-cli figures does"),
+      [this] { reproduce_paper_figures(); });
+  add(file, tr("Export &report…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
+      tr("One page per platform (peaks, power, GFLOPS/W, battery, timings) with the figures, as HTML or PDF"),
+      [this] { export_report(); });
+  file->addSeparator();
   add(file, tr("&Quit"), QKeySequence::Quit, tr("Quit BenchScope"), [this] { close(); });
 
   QMenu* view = menuBar()->addMenu(tr("&View"));

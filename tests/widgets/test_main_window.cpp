@@ -3,6 +3,7 @@
 #include <QtTest>
 #include <qcustomplot.h>
 
+#include "export_figure_dialog.h"
 #include "flops_plot.h"
 #include "import_controller.h"
 #include "main_window.h"
@@ -165,6 +166,35 @@ class TestMainWindow : public QObject {
     const auto cancelled = bs::ui::ImportController::import_now(dir.filePath("w2.bsw"), {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"}, cancel);
     QVERIFY(cancelled.cancelled);
     QCOMPARE(cancelled.imported, 0);
+  }
+
+  void figure_and_report_actions_are_in_the_file_menu() {
+    bs::ui::MainWindow w;
+    QMap<QString, QKeySequence> expected{{"Export figure", QKeySequence(Qt::CTRL | Qt::Key_E)},
+                                         {"Reproduce paper figures", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E)},
+                                         {"Export report", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R)}};
+    for (QAction* a : w.findChildren<QAction*>()) {
+      const QString text = a->text().remove('&').remove(QString::fromUtf8("…"));
+      if (expected.contains(text)) {
+        QCOMPARE(a->shortcut(), expected.take(text));
+        QVERIFY(!a->toolTip().isEmpty());
+      }
+    }
+    QVERIFY2(expected.isEmpty(), qPrintable(expected.keys().join(", ")));
+  }
+
+  void export_dialog_defaults_to_lncs() {
+    QSettings().remove("figure-export");
+    bs::ui::ExportFigureDialog d(bs::ui::ExportFigureDialog::Target::FileStem, "/tmp/flops");
+    const bs::ui::FigureOptions o = d.options();
+    QCOMPARE(o.width_mm, 122.0);
+    QCOMPARE(o.font_pt, 8.0);
+    QCOMPARE(o.dpi, 300);
+    QCOMPARE(o.formats, (QStringList{"pdf", "png"}));
+    d.set_preset("ieee");
+    QCOMPARE(d.options().width_mm, 88.9);
+    d.set_destination("/tmp/x/fig.pdf");
+    QCOMPARE(d.destination(), QString("/tmp/x/fig"));
   }
 
   void no_qt5_library_is_loaded() {

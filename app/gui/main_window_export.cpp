@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// File > Export figure / Reproduce paper figures / Export report: the same renderers as `benchscope-cli figures`
+// and `benchscope-cli report`, with a progress dialog that cancels between figures.
+#include <QDesktopServices>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QUrl>
+#include <qcustomplot.h>
+
+#include "export_figure_dialog.h"
+#include "main_window.h"
+#include "platform_view.h"
+#include "plot_export.h"
+#include "report_writer.h"
+
+namespace bs::ui {
+namespace {
+
+// Runs `work` with a modal progress dialog whose Cancel fires the token; the work's progress callback keeps the
+// GUI responsive (rendering uses QWidgets, so it must stay on the GUI thread).
+using ProgressCallback = std::function<void(int done, int total, const QString& what)>;
+
+bool with_progress(QWidget* parent, const QString& title,
+                   const std::function<void(const CancelToken&, const ProgressCallback&)>& work) {
+  QProgressDialog dialog(title, QObject::tr("Cancel"), 0, 1, parent);
+  dialog.setWindowModality(Qt::WindowModal);
+  dialog.setMinimumDuration(300);
+  CancelToken cancel;
+  QObject::connect(&dialog, &QProgressDialog::canceled, parent, [&cancel] { cancel.cancel(); });
+  try {
+    work(cancel, [&](int done, int total, const QString& what) {
+      dialog.setMaximum(total);
+      dialog.setValue(done);
+      dialog.setLabelText(QObject::tr("%1: %2").arg(title, what));
+      QCoreApplication::processEvents();
+      if (dialog.wasCanceled()) cancel.cancel();
+    });
+  } catch (const Cancelled&) {
+    parent->window()->findChild<QStatusBar*>()->showMessage(QObject::tr("%1 cancelled; nothing was written").arg(title), 8000);
+    return false;
+  } catch (const std::exception& e) {
+    QMessageBox::warning(parent, title, QString::fromUtf8(e.what()));
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+FigureData MainWindow::figure_data() const {
+  FigureData d;
+  for (const StoredRun& r : runs_) {
+    d.runs.push_back(r.run);
+    d.colors[{r.run.platform, r.run.device}] = r.color_index;
+  }
+  if (workspace_)
+    for (const StoredPowerTrace& t : workspace_->power_traces()) d.traces.push_back(t.trace);
+  return d;
+}
+
+QString MainWindow::export_folder() const {
+  const QString ws = workspace_ ? QString::fromStdString(workspace_->path()) : QString();
+  return ws.isEmpty() ? QDir::homePath() : QFileInfo(ws).absolutePath();
+}
+
+void MainWindow::export_current_figure() {
+  auto* tabs = static_cast<QTabWidget*>(centralWidget());
+  QCustomPlot* plot = nullptr;
+  for (QCustomPlot* p : tabs->currentWidget()->findChildren<QCustomPlot*>())
+    if (p->isVisible()) {
+      plot = p;
+      break;
+    }
+  if (!plot) {
+    QMessageBox::information(this, tr("Export figure"),
+                             tr("The %1 tab has no plot to export; its tables export as LaTeX or CSV from the tab itself.")
+                                 .arg(tabs->tabText(tabs->currentIndex()).remove('&')));
+    return;
+  }
+  const QString name = tabs->tabText(tabs->currentIndex()).remove('&').toLower();
+  ExportFigureDialog dialog(ExportFigureDialog::Target::FileStem, QDir(export_folder()).filePath(name), this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  try {
+    QStringList files;
+    export_plot(*plot, dialog.destination(), dialog.options(), tabs->tabText(tabs->currentIndex()).remove('&'), files);
+    statusBar()->showMessage(tr("Wrote %1").arg(files.join(", ")), 10000);
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Export figure"), QString::fromUtf8(e.what()));
+  }
+}
+
+void MainWindow::reproduce_paper_figures() {
+  ExportFigureDialog dialog(ExportFigureDialog::Target::Folder, QDir(export_folder()).filePath("figures"), this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  const QString folder = dialog.destination();
+  QStringList files;
+  const bool ok = with_progress(this, tr("Paper figures"), [&](const CancelToken& cancel, const ProgressCallback& progress) {
+    const auto templates = load_figure_templates(paper_template_path().toStdString());
+    files = render_figures(templates, figure_data(), folder, dialog.options(), cancel, progress).files;
+  });
+  if (!ok) return;
+  QMessageBox box(QMessageBox::Information, tr("Paper figures"),
+                  tr("Wrote %1 files (figures, tables and figures.json) to %2.").arg(files.size()).arg(folder),
+                  QMessageBox::Ok, this);
+  QPushButton* open = box.addButton(tr("Open folder"), QMessageBox::ActionRole);
+  box.setDetailedText(files.join('\n'));
+  box.exec();
+  if (box.clickedButton() == open) QDesktopServices::openUrl(QUrl::fromLocalFile(folder));
+}
+
+void MainWindow::export_report() {
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export report"), QDir(export_folder()).filePath("report.html"),
+                                                    tr("HTML report (*.html);;PDF report (*.pdf)"));
+  if (path.isEmpty()) return;
+  ReportRequest request;
+  request.workspace_name = workspace_ ? QFileInfo(QString::fromStdString(workspace_->path())).fileName() : tr("untitled");
+  (path.endsWith(".pdf", Qt::CaseInsensitive) ? request.pdf_path : request.html_path) = path;
+  request.constraints = platforms_->constraints();
+  request.comparison = platforms_->options();
+  QStringList files;
+  const bool ok = with_progress(this, tr("Report"), [&](const CancelToken& cancel, const ProgressCallback& progress) {
+    const auto templates = load_figure_templates(paper_template_path().toStdString());
+    files = write_report(request, templates, figure_data(), FigureOptions{}, cancel, progress);
+  });
+  if (ok) statusBar()->showMessage(tr("Wrote %1").arg(files.join(", ")), 10000);
+}
+
+}  // namespace bs::ui

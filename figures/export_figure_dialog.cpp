@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "export_figure_dialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+
+#include "report/figure_template.h"
+
+namespace bs::ui {
+
+ExportFigureDialog::ExportFigureDialog(Target target, const QString& suggested, QWidget* parent)
+    : QDialog(parent), target_(target) {
+  setWindowTitle(target == Target::Folder ? tr("Reproduce paper figures") : tr("Export figure"));
+  auto* form = new QFormLayout(this);
+  preset_ = new QComboBox;
+  preset_->addItem(tr("LNCS text width (122 mm)"), "lncs");
+  preset_->addItem(tr("LNCS half width (58 mm)"), "lncs-half");
+  preset_->addItem(tr("IEEE single column (88.9 mm)"), "ieee");
+  preset_->addItem(tr("IEEE double column (181 mm)"), "ieee-double");
+  preset_->addItem(tr("Custom"), "custom");
+  preset_->setToolTip(tr("Figure width of the journal's page layout"));
+  form->addRow(tr("&Size"), preset_);
+  const auto spin = [](double lo, double hi, double step, int decimals, const QString& suffix, const QString& tip) {
+    auto* s = new QDoubleSpinBox;
+    s->setRange(lo, hi);
+    s->setSingleStep(step);
+    s->setDecimals(decimals);
+    s->setSuffix(suffix);
+    s->setToolTip(tip);
+    return s;
+  };
+  width_ = spin(20, 1000, 1, 1, tr(" mm"), tr("Figure width in millimetres"));
+  height_ = spin(0, 1000, 1, 1, tr(" mm"), tr("Figure height in millimetres; 0 = 0.62 x width"));
+  height_->setSpecialValueText(tr("automatic (0.62 x width)"));
+  font_ = spin(4, 24, 0.5, 1, tr(" pt"), tr("Font size of labels and legend, as in the paper's body text (8 pt)"));
+  line_ = spin(0.1, 5, 0.1, 2, tr(" pt"), tr("Line width of the data series"));
+  form->addRow(tr("&Width"), width_);
+  form->addRow(tr("&Height"), height_);
+  form->addRow(tr("&Font size"), font_);
+  form->addRow(tr("&Line width"), line_);
+  dpi_ = new QComboBox;
+  for (const int d : {150, 300, 600}) dpi_->addItem(tr("%1 dpi").arg(d), d);
+  dpi_->setToolTip(tr("Resolution of the PNG; PDF and SVG are vector and keep text as text"));
+  form->addRow(tr("PNG &resolution"), dpi_);
+  auto* formats = new QHBoxLayout;
+  pdf_ = new QCheckBox("PDF");
+  svg_ = new QCheckBox("SVG");
+  png_ = new QCheckBox("PNG");
+  for (QCheckBox* c : {pdf_, svg_, png_}) formats->addWidget(c);
+  form->addRow(tr("Formats"), formats);
+  auto* where = new QHBoxLayout;
+  path_ = new QLineEdit(suggested);
+  path_->setToolTip(target == Target::Folder ? tr("Folder for the figures, tables and figures.json")
+                                             : tr("File name without extension; one file per format is written"));
+  auto* browse = new QPushButton(tr("&Browse…"));
+  where->addWidget(path_, 1);
+  where->addWidget(browse);
+  form->addRow(target == Target::Folder ? tr("F&older") : tr("F&ile"), where);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+  buttons->button(QDialogButtonBox::Ok)->setText(tr("&Export"));
+  form->addRow(buttons);
+
+  connect(browse, &QPushButton::clicked, this, [this] {
+    const QString p = target_ == Target::Folder
+                          ? QFileDialog::getExistingDirectory(this, tr("Folder for the figures"), path_->text())
+                          : QFileDialog::getSaveFileName(this, tr("Export figure"), path_->text());
+    if (!p.isEmpty()) set_destination(p);
+  });
+  connect(preset_, &QComboBox::currentIndexChanged, this, &ExportFigureDialog::preset_changed);
+  connect(width_, &QDoubleSpinBox::valueChanged, this, [this] {
+    if (const auto w = preset_width_mm(preset_->currentData().toString().toStdString()); w && *w != width_->value())
+      preset_->setCurrentIndex(preset_->findData("custom"));
+  });
+  connect(buttons, &QDialogButtonBox::accepted, this, [this] {
+    save_settings();
+    accept();
+  });
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  const auto validate = [this, buttons] {
+    buttons->button(QDialogButtonBox::Ok)->setEnabled((pdf_->isChecked() || svg_->isChecked() || png_->isChecked()) &&
+                                                      !path_->text().trimmed().isEmpty());
+  };
+  for (QCheckBox* c : {pdf_, svg_, png_}) connect(c, &QCheckBox::toggled, this, validate);
+  connect(path_, &QLineEdit::textChanged, this, validate);
+
+  QSettings s;
+  s.beginGroup("figure-export");
+  font_->setValue(s.value("font_pt", 8.0).toDouble());
+  line_->setValue(s.value("line_pt", 1.0).toDouble());
+  height_->setValue(s.value("height_mm", 0.0).toDouble());
+  dpi_->setCurrentIndex(std::max(0, dpi_->findData(s.value("dpi", 300).toInt())));
+  pdf_->setChecked(s.value("pdf", true).toBool());
+  svg_->setChecked(s.value("svg", false).toBool());
+  png_->setChecked(s.value("png", true).toBool());
+  const QString preset = s.value("preset", "lncs").toString();
+  width_->setValue(s.value("width_mm", 122.0).toDouble());
+  set_preset(preset);
+  validate();
+}
+
+void ExportFigureDialog::set_preset(const QString& id) {
+  const int i = preset_->findData(id);
+  preset_->setCurrentIndex(i < 0 ? 0 : i);
+  preset_changed();
+}
+
+void ExportFigureDialog::preset_changed() {
+  if (const auto w = preset_width_mm(preset_->currentData().toString().toStdString())) width_->setValue(*w);
+}
+
+void ExportFigureDialog::set_destination(const QString& path) {
+  QString p = path;
+  for (const char* ext : {".pdf", ".svg", ".png"})
+    if (p.endsWith(ext, Qt::CaseInsensitive)) p.chop(4);
+  path_->setText(p);
+}
+
+QString ExportFigureDialog::destination() const { return path_->text().trimmed(); }
+
+FigureOptions ExportFigureDialog::options() const {
+  FigureOptions o;
+  o.width_mm = width_->value();
+  o.height_mm = height_->value();
+  o.font_pt = font_->value();
+  o.line_width_pt = line_->value();
+  o.dpi = dpi_->currentData().toInt();
+  o.formats.clear();
+  if (pdf_->isChecked()) o.formats << "pdf";
+  if (svg_->isChecked()) o.formats << "svg";
+  if (png_->isChecked()) o.formats << "png";
+  return o;
+}
+
+void ExportFigureDialog::save_settings() const {
+  QSettings s;
+  s.beginGroup("figure-export");
+  s.setValue("preset", preset_->currentData());
+  s.setValue("width_mm", width_->value());
+  s.setValue("height_mm", height_->value());
+  s.setValue("font_pt", font_->value());
+  s.setValue("line_pt", line_->value());
+  s.setValue("dpi", dpi_->currentData());
+  s.setValue("pdf", pdf_->isChecked());
+  s.setValue("svg", svg_->isChecked());
+  s.setValue("png", png_->isChecked());
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "paper_figures.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+#include "analysis/flops.h"
+#include "analysis/paper_tables.h"
+#include "analysis/platform_comparison.h"
+#include "analysis/power.h"
+#include "analysis/platform_table.h"
+#include "device_palette.h"
+#include "plot_export.h"
+#include "triptych_figure.h"
+
+namespace bs::ui {
+namespace {
+
+struct PageSize {
+  double w_pt, h_pt, w_mm, h_mm;
+};
+
+PageSize page(const FigureOptions& o) {
+  const QSizeF pt = figure_size_pt(o);
+  return {pt.width(), pt.height(), o.width_mm, pt.height() * 25.4 / 72.0};
+}
+
+QFont figure_font(const FigureOptions& o) {
+  QFont f("DejaVu Sans");
+  f.setPointSizeF(o.font_pt);
+  return f;
+}
+
+void style_axes(QCustomPlot& plot, const FigureTemplate& t, const FigureOptions& o) {
+  const QFont f = figure_font(o);
+  QFont small = f;
+  small.setPointSizeF(o.font_pt * 0.9);
+  for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
+    axis->setLabelFont(f);
+    axis->setTickLabelFont(small);
+    axis->setBasePen(QPen(Qt::black, o.line_width_pt * 0.6));
+    axis->setTickPen(QPen(Qt::black, o.line_width_pt * 0.6));
+    axis->setSubTickPen(QPen(Qt::black, o.line_width_pt * 0.4));
+    axis->grid()->setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0.4, Qt::DotLine));
+  }
+  plot.xAxis->setLabel(QString::fromStdString(t.x_label));
+  plot.yAxis->setLabel(QString::fromStdString(t.y_label));
+  if (t.log_x) {
+    plot.xAxis->setScaleType(QCPAxis::stLogarithmic);
+    plot.xAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+    plot.xAxis->setNumberFormat("eb");
+    plot.xAxis->setNumberPrecision(0);
+  }
+  if (t.log_y) {
+    plot.yAxis->setScaleType(QCPAxis::stLogarithmic);
+    plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+  }
+  // The legend goes below the axes, in columns, so it can never cover data at any size.
+  plot.legend->setVisible(true);
+  plot.legend->setFont(small);
+  plot.legend->setBorderPen(Qt::NoPen);
+  plot.legend->setBrush(Qt::NoBrush);
+  plot.legend->setRowSpacing(0);
+  plot.legend->setColumnSpacing(static_cast<int>(o.font_pt * 1.5));
+  plot.legend->setIconSize(static_cast<int>(o.font_pt * 2.5), static_cast<int>(o.font_pt));
+  plot.axisRect()->insetLayout()->take(plot.legend);
+  plot.plotLayout()->addElement(1, 0, plot.legend);
+  plot.plotLayout()->setRowStretchFactor(1, 0.001);
+  plot.plotLayout()->setRowSpacing(0);
+}
+
+// As many legend columns as fit the figure's width, measured by the legend's own layout (fonts included).
+void wrap_legend(QCustomPlot& plot, const FigureOptions& o) {
+  // Fewer columns first; if even one column is too wide for a narrow figure, a smaller legend font (down to 5 pt).
+  for (double pt = o.font_pt * 0.9; pt >= 5; pt -= 0.5) {
+    QFont f = plot.legend->font();
+    f.setPointSizeF(pt);
+    plot.legend->setFont(f);
+    for (int i = 0; i < plot.legend->itemCount(); ++i) plot.legend->item(i)->setFont(f);
+    plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, false);
+    for (int columns = std::max(1, plot.legend->itemCount()); columns >= 1; --columns) {
+      plot.legend->setWrap(columns);  // with foColumnsFirst: entries per row
+      plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+      if (plot.legend->minimumOuterSizeHint().width() <= plot.width()) return;
+    }
+  }
+}
+
+// "Jetson GPU (Pascal, 256 cores)" -> "Jetson GPU", "CPU SIMD (AVX/SSE)" -> "CPU SIMD": the full names stay in
+// figures.json, the legend stays short enough for a column.
+std::string short_device(const std::string& device) {
+  const auto paren = device.find(" (");
+  return paren == std::string::npos || paren == 0 ? device : device.substr(0, paren);
+}
+
+int color_of(const FigureData& d, const std::string& platform, const std::string& device) {
+  const auto it = d.colors.find({platform, device});
+  return it == d.colors.end() ? 0 : it->second;
+}
+
+QJsonObject source_of(const FlopsRun& r) {
+  return {{"platform", QString::fromStdString(r.platform)}, {"device", QString::fromStdString(r.device)},
+          {"backend", QString::fromStdString(r.backend)}, {"dims", r.dims},
+          {"file", QString::fromStdString(r.provenance.source_file)},
+          {"origin", QString::fromUtf8(to_string(r.provenance.origin).data())}};
+}
+
+// Fills the plot with the template's FLOPS series; returns the data sources.
+QJsonArray flops_figure(QCustomPlot& plot, const FigureTemplate& t, const FigureData& d, const FigureOptions& o) {
+  QJsonArray sources;
+  double y_max = 0, x_min = 1e300, x_max = 0;
+  std::set<int> dims;  // the legend names D only when the figure shows more than one
+  for (const FlopsRun& run : d.runs)
+    if (t.selects(run)) dims.insert(run.dims);
+  for (const FlopsRun& run : d.runs) {
+    if (!t.selects(run)) continue;
+    const auto curve = flops_curve(run);
+    if (curve.empty()) continue;
+    QVector<double> xs, ys;
+    for (const CurvePoint& p : curve) {
+      xs.push_back(static_cast<double>(p.workers));
+      ys.push_back(p.flops.mean / t.y_scale);
+      y_max = std::max(y_max, ys.back());
+      x_min = std::min(x_min, xs.back());
+      x_max = std::max(x_max, xs.back());
+    }
+    QCPGraph* g = plot.addGraph();
+    g->setData(xs, ys, true);
+    const QColor color = device_color(color_of(d, run.platform, run.device));
+    g->setPen(QPen(color, o.line_width_pt, dims_pen_style(run.dims)));
+    // Backend by marker (a few per curve): two backends of one device stay apart in colour and in greyscale.
+    g->setScatterStyle(QCPScatterStyle(static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(
+                                           QString::fromStdString(run.backend))),
+                                       color, Qt::white, o.font_pt * 0.55));
+    g->setScatterSkip(std::max(1, static_cast<int>(xs.size()) / 8));
+    std::string name = short_device(run.device) + ", " + short_device(run.backend);
+    if (dims.size() > 1) name += ", D = " + std::to_string(run.dims);
+    g->setName(QString::fromStdString(name));
+    sources.append(source_of(run));
+  }
+  if (plot.graphCount() == 0) throw std::runtime_error(t.id + ": no runs match the template's selection");
+  plot.xAxis->setRange(t.log_x ? std::max(1.0, x_min) : 0, x_max);
+  plot.yAxis->setRange(0, y_max * 1.08);
+  wrap_legend(plot, o);
+  return sources;
+}
+
+QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const FigureData& d, const FigureOptions& o) {
+  QJsonArray sources;
+  double y_max = 0, x_max = 0;
+  for (const PowerTrace& trace : d.traces) {
+    if (!t.platforms.empty() && std::find(t.platforms.begin(), t.platforms.end(), trace.platform) == t.platforms.end())
+      continue;
+    const std::vector<double> amps = current_series(trace);
+    if (amps.empty() || trace.time_s.empty()) continue;
+    // At most ~2000 points per trace (min and max of each bucket), so a long log stays a small vector file.
+    const std::size_t n = amps.size(), buckets = std::min<std::size_t>(n, 1000);
+    QVector<double> xs, ys;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      const std::size_t lo = b * n / buckets, hi = std::max(lo + 1, (b + 1) * n / buckets);
+      const auto [mn, mx] = std::minmax_element(amps.begin() + static_cast<std::ptrdiff_t>(lo),
+                                                amps.begin() + static_cast<std::ptrdiff_t>(hi));
+      const double t0 = trace.time_s[lo] - trace.time_s.front();
+      xs << t0 << t0;
+      ys << *mn << *mx;
+      y_max = std::max(y_max, *mx);
+    }
+    x_max = std::max(x_max, trace.time_s.back() - trace.time_s.front());
+    QCPGraph* g = plot.addGraph();
+    g->setData(xs, ys, true);
+    int color = 0;
+    for (const auto& [key, c] : d.colors)
+      if (key.first == trace.platform) color = c;
+    g->setPen(QPen(device_color(color), o.line_width_pt * 0.6));
+    g->setName(QString::fromStdString(trace.platform));
+    sources.append(QJsonObject{{"platform", QString::fromStdString(trace.platform)},
+                               {"file", QString::fromStdString(trace.provenance.source_file)},
+                               {"origin", QString::fromUtf8(to_string(trace.provenance.origin).data())}});
+  }
+  if (plot.graphCount() == 0) throw std::runtime_error(t.id + ": no current logs for the template's platforms");
+  plot.xAxis->setRange(0, x_max);
+  plot.yAxis->setRange(0, y_max * 1.1);
+  wrap_legend(plot, o);
+  return sources;
+}
+
+void write_text(const QString& path, const std::string& text, QStringList& files) {
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
+    throw std::runtime_error(path.toStdString() + ": cannot write");
+  files << path;
+}
+
+}  // namespace
+
+QString paper_template_path() { return QStringLiteral(BENCHSCOPE_SOURCE_DIR "/resources/figures/paper-2018.json"); }
+
+namespace {
+
+// Renders every template and table into out_dir; `out.files` grows as files are written, so a caller can remove
+// them when this throws.
+void render_all(const std::vector<FigureTemplate>& templates, const FigureData& data, const QString& out_dir,
+                const FigureOptions& o, const CancelToken& cancel,
+                const std::function<void(int, int, const QString&)>& progress, FigureOutput& out) {
+  QJsonArray list;
+  const PageSize p = page(o);
+  const int total = static_cast<int>(templates.size()) + 1;
+  int done = 0;
+  for (const FigureTemplate& t : templates) {
+    cancel.throw_if_cancelled();
+    if (progress) progress(done, total, QString::fromStdString(t.id));
+    const QString stem = QDir(out_dir).filePath(QString::fromStdString(t.id));
+    QStringList files;
+    QJsonArray sources;
+    double figure_height_mm = p.h_mm;
+    try {
+      if (t.kind == "triptych") {
+        sources = render_triptych_figure(stem, o, files, figure_height_mm);
+      } else {
+        QCustomPlot plot;
+        plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
+        style_axes(plot, t, o);
+        sources = t.kind == "flops" ? flops_figure(plot, t, data, o) : current_figure(plot, t, data, o);
+        FigureOptions sized = o;
+        if (o.height_mm <= 0) {
+          // Automatic height: axes at 0.62 x width (0.8 for narrow figures, so the axis label fits), plus what the
+          // legend below them needs.
+          const double legend_pt = plot.legend->minimumOuterSizeHint().height();
+          const double axes_pt = p.w_pt * (o.width_mm < 80 ? 0.8 : 0.62);
+          sized.height_mm = (axes_pt + legend_pt) * 25.4 / 72.0;
+          plot.resize(static_cast<int>(p.w_pt), static_cast<int>(std::lround(axes_pt + legend_pt)));
+        }
+        save_plot(plot, stem, sized, QString::fromStdString(t.title), files);
+        figure_height_mm = sized.height_mm;
+      }
+    } catch (...) {
+      out.files << files;
+      throw;
+    }
+    for (const QString& f : files) {
+      list.append(QJsonObject{{"file", QFileInfo(f).fileName()}, {"figure", QString::fromStdString(t.id)},
+                              {"title", QString::fromStdString(t.title)}, {"width_mm", p.w_mm}, {"height_mm", figure_height_mm},
+                              {"sources", sources}});
+    }
+    out.files << files;
+    ++done;
+  }
+  cancel.throw_if_cancelled();
+  if (progress) progress(done, total, "tables");
+  QJsonArray run_sources;
+  for (const FlopsRun& r : data.runs) run_sources.append(source_of(r));
+  QJsonArray platform_sources = run_sources;
+  for (const PowerTrace& t : data.traces)
+    platform_sources.append(QJsonObject{{"platform", QString::fromStdString(t.platform)},
+                                        {"file", QString::fromStdString(t.provenance.source_file)},
+                                        {"origin", QString::fromUtf8(to_string(t.provenance.origin).data())}});
+  const std::vector<PlatformRow> rows = compare_platforms(data.runs, data.traces, data.pipelines);
+  const std::pair<const char*, ExportTable> tables[] = {{"table1", gpu_peak_table(data.runs)},
+                                                        {"table2", cpu_peak_table(data.runs)},
+                                                        {"platforms", platform_table(rows)}};
+  for (const auto& [stem, table] : tables) {
+    for (const char* ext : {".tex", ".csv"}) {
+      const QString name = QString(stem) + ext;
+      write_text(QDir(out_dir).filePath(name), ext == std::string(".tex") ? to_latex(table) : to_csv(table), out.files);
+      list.append(QJsonObject{{"file", name}, {"figure", stem}, {"title", QString::fromStdString(table.caption)},
+                              {"sources", std::string(stem) == "platforms" ? platform_sources : run_sources}});
+    }
+  }
+  const QByteArray json = QJsonDocument(QJsonObject{{"format", "benchscope-figure-list"}, {"version", 1}, {"files", list}})
+                              .toJson();
+  write_text(QDir(out_dir).filePath("figures.json"), json.toStdString(), out.files);
+  if (progress) progress(total, total, "done");
+}
+
+}  // namespace
+
+FigureOutput render_figures(const std::vector<FigureTemplate>& templates, const FigureData& data, const QString& out_dir,
+                            const FigureOptions& o, const CancelToken& cancel,
+                            const std::function<void(int, int, const QString&)>& progress) {
+  if (!QDir().mkpath(out_dir)) throw std::runtime_error(out_dir.toStdString() + ": cannot create the folder");
+  FigureOutput out;
+  try {
+    render_all(templates, data, out_dir, o, cancel, progress, out);
+  } catch (...) {
+    // Cancelled or failed: leave no partial set behind (a figures.json naming files that are not there).
+    for (const QString& f : out.files) QFile::remove(f);
+    throw;
+  }
+  return out;
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Renders a figure template set (resources/figures/paper-2018.json) from a workspace's data into PDF, SVG and PNG
+// files at journal sizes, plus the paper's Tables 1 and 2 (LaTeX, CSV) and figures.json listing every file with
+// its data sources and their provenance. Needs a QApplication (QT_QPA_PLATFORM=offscreen works).
+#include <QString>
+#include <QStringList>
+#include <map>
+#include <vector>
+
+#include <functional>
+
+#include "analysis/platform_comparison.h"
+#include "model/flops_run.h"
+#include "model/power_trace.h"
+#include "report/figure_template.h"
+#include "util/cancel.h"
+
+namespace bs::ui {
+
+struct FigureOptions {
+  double width_mm = 122;       // LNCS text width
+  double height_mm = 0;        // 0: 0.62 x width
+  double font_pt = 8;
+  double line_width_pt = 1.0;
+  int dpi = 300;               // PNG
+  QStringList formats{"pdf"};  // any of pdf, svg, png
+};
+
+struct FigureData {
+  std::vector<FlopsRun> runs;
+  std::vector<PowerTrace> traces;
+  std::vector<PipelineTimings> pipelines;
+  std::map<std::pair<std::string, std::string>, int> colors;  // (platform, device) -> colour index
+};
+
+struct FigureOutput {
+  QStringList files;  // every file written, figures.json last
+};
+
+// Throws std::runtime_error (naming the file) when a file cannot be written, Cancelled when `cancel` fires
+// (checked between figures); either way the files it wrote are removed again.
+FigureOutput render_figures(const std::vector<FigureTemplate>& templates, const FigureData& data, const QString& out_dir,
+                            const FigureOptions& options, const CancelToken& cancel,
+                            const std::function<void(int done, int total, const QString& what)>& progress = {});
+
+// The bundled template of the paper's figures.
+QString paper_template_path();
+
+}  // namespace bs::ui

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Writes the platform report (core/report/platform_report.h) as a self-contained HTML file (figures embedded as
+// PNG data URIs) and/or a PDF printed with Qt (QTextDocument on A4), the figures rendered from the same templates
+// as `benchscope-cli figures`. Needs a QApplication (offscreen works).
+#include <QString>
+#include <QStringList>
+
+#include "paper_figures.h"
+
+namespace bs::ui {
+
+struct ReportRequest {
+  QString workspace_name;
+  QString html_path;  // empty: no HTML
+  QString pdf_path;   // empty: no PDF
+  Constraints constraints;
+  ComparisonOptions comparison;
+};
+
+// Returns the files written. Each file appears whole or not at all (QSaveFile); Cancelled or an error leaves none.
+QStringList write_report(const ReportRequest& request, const std::vector<FigureTemplate>& templates,
+                         const FigureData& data, const FigureOptions& figure_options, const CancelToken& cancel,
+                         const std::function<void(int done, int total, const QString& what)>& progress = {});
+
+// "power budget 10 W, at least 5 fps" for the report's heading; empty when no constraint is set.
+std::string describe_constraints(const Constraints& c);
+
+}  // namespace bs::ui

@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `figures` on the paper's sample data: every figure in every format, valid and at the journal size (PDF page in
+// mm, one page, fonts embedded; SVG parses and keeps its labels as text; PNG pixels = dpi x size), the series and
+// labels each figure must show, the tables' published numbers, figures.json, cancellation and a template whose data is missing.
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtTest>
+
+#include "../support/paper_sample.h"
+#include "paper_figures.h"
+
+namespace {
+
+constexpr double kPtPerMm = 72.0 / 25.4;
+
+QByteArray read(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// The first page's MediaBox [x0 y0 x1 y1] in points, and the number of page objects.
+struct PdfInfo {
+  QSizeF page_pt;
+  int pages = 0;
+  bool fonts_embedded = false;
+};
+
+PdfInfo pdf_info(const QByteArray& pdf) {
+  PdfInfo info;
+  const QString text = QString::fromLatin1(pdf);
+  const auto box = QRegularExpression(R"(/MediaBox\s*\[\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s*\])").match(text);
+  if (box.hasMatch())
+    info.page_pt = QSizeF(box.captured(3).toDouble() - box.captured(1).toDouble(),
+                          box.captured(4).toDouble() - box.captured(2).toDouble());
+  info.pages = static_cast<int>(text.count(QRegularExpression(R"(/Type\s*/Page\b(?!s))")));
+  info.fonts_embedded = text.contains("/FontFile2") || text.contains("/FontFile3") || text.contains("/FontFile ");
+  return info;
+}
+
+// All text of an SVG's <text> elements; empty string and `ok` false when it does not parse.
+QString svg_text(const QByteArray& svg, bool& ok) {
+  QXmlStreamReader xml(svg);
+  QString all;
+  bool in_text = false;
+  while (!xml.atEnd()) {
+    xml.readNext();
+    if (xml.isStartElement() && xml.name() == QLatin1String("text")) in_text = true;
+    if (xml.isEndElement() && xml.name() == QLatin1String("text")) in_text = false;
+    if (xml.isCharacters() && in_text) all += xml.text().toString() + QLatin1Char(' ');
+  }
+  ok = !xml.hasError();
+  return all;
+}
+
+bs::ui::FigureData paper_data() {
+  const auto sample = bs::test::load_paper_sample();
+  bs::ui::FigureData d;
+  d.runs = sample.runs;
+  d.traces = sample.traces;
+  for (const auto& r : d.runs) d.colors.try_emplace({r.platform, r.device}, static_cast<int>(d.colors.size()));
+  return d;
+}
+
+}  // namespace
+
+class TestPaperFigures : public QObject {
+  Q_OBJECT
+  QTemporaryDir dir_;
+  bs::ui::FigureOptions options_;
+  QStringList files_;
+
+  double listed_height_mm(const QString& id) {
+    const QJsonObject doc = QJsonDocument::fromJson(read(dir_.filePath("figures.json"))).object();
+    for (const auto& v : doc["files"].toArray())
+      if (v.toObject()["file"].toString() == id + ".pdf") return v.toObject()["height_mm"].toDouble();
+    return -1;
+  }
+
+ private slots:
+  void initTestCase() {
+    QVERIFY(dir_.isValid());
+    options_.formats = {"pdf", "svg", "png"};
+    const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
+    QCOMPARE(templates.size(), std::size_t{6});
+    int calls = 0;
+    files_ = bs::ui::render_figures(templates, paper_data(), dir_.path(), options_, bs::CancelToken{},
+                                    [&](int, int, const QString&) { ++calls; })
+                 .files;
+    QVERIFY(calls >= 7);
+  }
+
+  void every_figure_in_every_format() {
+    for (const char* id : {"fig1a", "fig1b", "fig2a", "fig2b", "fig3", "fig4"})
+      for (const char* ext : {"pdf", "svg", "png"}) {
+        const QString path = dir_.filePath(QString("%1.%2").arg(id, ext));
+        QVERIFY2(files_.contains(path), qPrintable(path));
+        QVERIFY2(QFileInfo(path).size() > 1000, qPrintable(path));
+      }
+    for (const char* name : {"table1.tex", "table1.csv", "table2.tex", "table2.csv", "platforms.tex", "platforms.csv",
+                             "figures.json"})
+      QVERIFY2(files_.contains(dir_.filePath(name)), name);
+  }
+
+  void pdf_pages_at_lncs_width_with_embedded_fonts() {
+    for (const char* id : {"fig1a", "fig1b", "fig2a", "fig2b", "fig3", "fig4"}) {
+      const QByteArray pdf = read(dir_.filePath(QString(id) + ".pdf"));
+      QVERIFY(pdf.startsWith("%PDF-"));
+      const PdfInfo info = pdf_info(pdf);
+      QCOMPARE(info.pages, 1);
+      QVERIFY2(std::abs(info.page_pt.width() / kPtPerMm - 122.0) < 0.6, qPrintable(QString::number(info.page_pt.width())));
+      QVERIFY(info.page_pt.height() > 20 * kPtPerMm && info.page_pt.height() < 122 * kPtPerMm);
+      QVERIFY(std::abs(info.page_pt.height() / kPtPerMm - listed_height_mm(id)) < 0.6);  // as figures.json says
+      QVERIFY2(info.fonts_embedded, id);  // text stays text, in an embedded font
+    }
+  }
+
+  void svg_parses_and_keeps_labels_as_text() {
+    const auto expect = [this](const char* id, const QStringList& needles) {
+      bool ok = false;
+      const QString text = svg_text(read(dir_.filePath(QString(id) + ".svg")), ok);
+      QVERIFY2(ok, id);
+      for (const QString& n : needles) QVERIFY2(text.contains(n), qPrintable(QString("%1 lacks '%2'").arg(id, n)));
+    };
+    expect("fig1a", {"Workers W", "FLOPS (TFLOPS)", "GTX1080Ti, CUDA", "GTX1080Ti, OpenCL", "Jetson GPU, CUDA"});
+    expect("fig1b", {"D = 1", "D = 2", "D = 4", "Jetson"});
+    expect("fig2a", {"Tasks", "FLOPS (GFLOPS)"});
+    expect("fig4", {"Time (s)", "Current (A)", "NUC", "Jetson TX2"});
+    expect("fig3", {"raw Bayer mosaic", "demosaiced", "reprojected"});
+  }
+
+  void png_pixels_match_dpi_and_size() {
+    for (const char* id : {"fig1a", "fig4", "fig3"}) {
+      const QImage img(dir_.filePath(QString(id) + ".png"));
+      QVERIFY(!img.isNull());
+      const double expected_w = 122.0 / 25.4 * options_.dpi;
+      QVERIFY2(std::abs(img.width() - expected_w) <= 3, qPrintable(QString("%1: %2 px").arg(id).arg(img.width())));
+      QVERIFY(std::abs(img.dotsPerMeterX() * 0.0254 - options_.dpi) < 1);
+    }
+    const QImage fig1a(dir_.filePath("fig1a.png"));
+    QVERIFY(std::abs(fig1a.height() - listed_height_mm("fig1a") / 25.4 * options_.dpi) <= 3);
+    QVERIFY(fig1a.height() > 122.0 * 0.62 / 25.4 * options_.dpi);  // axes at 0.62 x width, plus the legend below
+  }
+
+  void fig1b_shows_only_the_two_robot_gpus() {
+    bool ok = false;
+    const QString text = svg_text(read(dir_.filePath("fig1b.svg")), ok);
+    QVERIFY(!text.contains("GTX"));
+    QVERIFY(!text.contains("HD 630") && !text.contains("HD630"));
+  }
+
+  void tables_hold_the_published_numbers() {
+    const QString t1 = QString::fromUtf8(read(dir_.filePath("table1.tex")));
+    QVERIFY(t1.contains("\\toprule") && t1.contains("\\bottomrule"));
+    for (const char* n : {"9.14", "9.34", "5.25", "2.40", "0.49"}) QVERIFY2(t1.contains(n), n);
+    const QString t2 = QString::fromUtf8(read(dir_.filePath("table2.tex")));
+    for (const char* n : {"49.68", "29.33", "15.54", "4.69"}) QVERIFY2(t2.contains(n), n);
+    const QString platforms = QString::fromUtf8(read(dir_.filePath("platforms.csv")));
+    for (const char* n : {"40.52", "9.48", "104.64", "41.26", "84.36", "360.48"}) QVERIFY2(platforms.contains(n), n);
+  }
+
+  void figure_list_names_files_and_provenance() {
+    const QJsonObject doc = QJsonDocument::fromJson(read(dir_.filePath("figures.json"))).object();
+    QCOMPARE(doc["format"].toString(), QString("benchscope-figure-list"));
+    const QJsonArray files = doc["files"].toArray();
+    QCOMPARE(files.size(), 6 * 3 + 6);
+    bool fig4_reconstructed = false;
+    for (const auto& v : files) {
+      const QJsonObject f = v.toObject();
+      QVERIFY2(QFile::exists(dir_.filePath(f["file"].toString())), qPrintable(f["file"].toString()));
+      QVERIFY2(!f["sources"].toArray().isEmpty(), qPrintable(f["file"].toString()));
+      if (f["figure"].toString() == "fig4")
+        for (const auto& s : f["sources"].toArray())
+          fig4_reconstructed |= s.toObject()["origin"].toString() == "reconstructed";
+    }
+    QVERIFY(fig4_reconstructed);
+  }
+
+  void cancel_leaves_nothing() {
+    QTemporaryDir dir;
+    bs::CancelToken cancel;
+    const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::ui::render_figures(templates, paper_data(), dir.path(), options_, cancel,
+                                                                   [&](int done, int, const QString&) {
+                                                                     if (done == 2) cancel.cancel();
+                                                                   }));
+    QVERIFY(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+  }
+
+  void template_without_matching_data_is_a_clear_error() {
+    QTemporaryDir dir;
+    const auto templates = bs::parse_figure_templates(
+        R"({"format":"benchscope-figures","version":1,"figures":[
+             {"id":"ok","kind":"flops","device_kind":"cpu","x_label":"Tasks","y_label":"GFLOPS","y_scale":1e9},
+             {"id":"none","kind":"flops","platforms":["Raspberry Pi"],"x_label":"W","y_label":"F"}]})",
+        "mine.json");
+    try {
+      bs::ui::render_figures(templates, paper_data(), dir.path(), options_, bs::CancelToken{});
+      QFAIL("expected an error");
+    } catch (const std::runtime_error& e) {
+      QVERIFY2(QString(e.what()).contains("none"), e.what());
+    }
+    QVERIFY(QDir(dir.path()).entryList(QDir::Files).isEmpty());  // "ok" was removed again
+  }
+};
+
+QTEST_MAIN(TestPaperFigures)
+#include "test_paper_figures.moc"
