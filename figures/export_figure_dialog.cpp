@@ -8,6 +8,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -38,8 +39,9 @@ ExportFigureDialog::ExportFigureDialog(Target target, const QString& suggested, 
     return s;
   };
   width_ = spin(20, 1000, 1, 1, tr(" mm"), tr("Figure width in millimetres"));
-  height_ = spin(0, 1000, 1, 1, tr(" mm"), tr("Figure height in millimetres; 0 = 0.62 x width"));
-  height_->setSpecialValueText(tr("automatic (0.62 x width)"));
+  height_ = spin(0, 1000, 1, 1, tr(" mm"),
+                 tr("Figure height in millimetres; automatic: axes 0.62 x width plus the legend below them"));
+  height_->setSpecialValueText(tr("automatic"));
   font_ = spin(4, 24, 0.5, 1, tr(" pt"), tr("Font size of labels and legend, as in the paper's body text (8 pt)"));
   line_ = spin(0.1, 5, 0.1, 2, tr(" pt"), tr("Line width of the data series"));
   form->addRow(tr("&Width"), width_);
@@ -63,7 +65,9 @@ ExportFigureDialog::ExportFigureDialog(Target target, const QString& suggested, 
   auto* browse = new QPushButton(tr("&Browse…"));
   where->addWidget(path_, 1);
   where->addWidget(browse);
-  form->addRow(target == Target::Folder ? tr("F&older") : tr("F&ile"), where);
+  auto* where_label = new QLabel(target == Target::Folder ? tr("F&older") : tr("F&ile"));
+  where_label->setBuddy(path_);  // a row holding a layout gets no buddy by itself, and would show the '&'
+  form->addRow(where_label, where);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
   buttons->button(QDialogButtonBox::Ok)->setText(tr("&Export"));
   form->addRow(buttons);

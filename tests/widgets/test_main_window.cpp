@@ -191,6 +191,11 @@ class TestMainWindow : public QObject {
     QCOMPARE(o.font_pt, 8.0);
     QCOMPARE(o.dpi, 300);
     QCOMPARE(o.formats, (QStringList{"pdf", "png"}));
+    if (const QByteArray dir = qgetenv("BENCHSCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      d.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&d));
+      d.grab().save(QString::fromLocal8Bit(dir) + "/export-figure-dialog.png");
+    }
     d.set_preset("ieee");
     QCOMPARE(d.options().width_mm, 88.9);
     d.set_destination("/tmp/x/fig.pdf");
