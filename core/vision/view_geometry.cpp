@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/view_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vision/synthetic.h"
@@ -33,9 +34,13 @@ std::optional<cv::Point2d> output_of(const Lens& lens, const View& view, double 
   const cv::Vec3d u = rotation(view).t() * ray;  // back into the view's frame
   if (u[0] <= 1e-12) return std::nullopt;           // behind the image plane
   const double f = view.focal_px();
-  const double x = f * u[1] / u[0] + (view.width - 1) / 2.0;
-  const double y = (view.height - 1) / 2.0 - f * u[2] / u[0];
-  if (x < 0 || y < 0 || x > view.width - 1 || y > view.height - 1) return std::nullopt;
+  double x = f * u[1] / u[0] + (view.width - 1) / 2.0;
+  double y = (view.height - 1) / 2.0 - f * u[2] / u[0];
+  // Points on the border come back a rounding error outside it; 1e-6 px is far below anything visible.
+  constexpr double eps = 1e-6;
+  if (x < -eps || y < -eps || x > view.width - 1 + eps || y > view.height - 1 + eps) return std::nullopt;
+  x = std::clamp(x, 0.0, view.width - 1.0);
+  y = std::clamp(y, 0.0, view.height - 1.0);
   return cv::Point2d(x, y);
 }
 
