@@ -9,6 +9,7 @@
 #include "compare_dialog.h"
 #include "flops_plot.h"
 #include "main_window.h"
+#include "frames_view.h"
 #include "recent_files.h"
 
 namespace bs::ui {
@@ -71,6 +72,8 @@ void MainWindow::create_actions() {
   add(file, tr("&Compare with workspace…"), QKeySequence(Qt::CTRL | Qt::Key_D),
       tr("Regression compare of this workspace (A) against another (B), as benchscope-cli compare does"),
       [this] { compare_with_workspace(); });
+  add(file, tr("Export &Figure 3 (triptych)…"), QKeySequence(), tr("The Frames tab's triptych as the paper's Figure 3 (PDF or PNG)"),
+      [this] { frames_->export_figure_dialog(); });
   file->addSeparator();
   add(file, tr("&Quit"), QKeySequence::Quit, tr("Quit BenchScope"), [this] { close(); });
 

@@ -23,12 +23,16 @@ cv::Mat demosaic_frame(const cv::Mat& raw, const Frame& frame, DemosaicMethod me
 
 TriptychImages render_triptych(const Frame& frame, DemosaicMethod method, const Lens& lens, const View& view,
                                const CancelToken* cancel) {
-  if (lens.width != frame.width || lens.height != frame.height)
+  return render_triptych(frame_to_mat(frame), frame, method, lens, view, cancel);
+}
+
+TriptychImages render_triptych(const cv::Mat& raw, const Frame& frame, DemosaicMethod method, const Lens& lens,
+                               const View& view, const CancelToken* cancel) {
+  if (lens.width != raw.cols || lens.height != raw.rows)
     throw std::invalid_argument("lens source size " + std::to_string(lens.width) + "x" + std::to_string(lens.height) +
-                                " differs from the frame's " + std::to_string(frame.width) + "x" +
-                                std::to_string(frame.height));
+                                " differs from the frame's " + std::to_string(raw.cols) + "x" +
+                                std::to_string(raw.rows));
   TriptychImages out;
-  const cv::Mat raw = frame_to_mat(frame);
   if (raw.channels() == 3)
     cv::cvtColor(raw, out.mosaic, cv::COLOR_BGR2GRAY);
   else

@@ -24,6 +24,10 @@ struct TriptychImages {
 TriptychImages render_triptych(const Frame& frame, DemosaicMethod method, const Lens& lens, const View& view,
                                const CancelToken* cancel = nullptr);
 
+// The same from the frame's pixels already in a Mat (frame_to_mat); `frame` gives the pattern and bit depth.
+TriptychImages render_triptych(const cv::Mat& raw, const Frame& frame, DemosaicMethod method, const Lens& lens,
+                               const View& view, const CancelToken* cancel = nullptr);
+
 // Only the demosaic stage (b), as render_triptych does it.
 cv::Mat demosaic_frame(const cv::Mat& raw, const Frame& frame, DemosaicMethod method);
 
