@@ -367,22 +367,20 @@ void FrameTriptych::update_overlays() {
 
 void FrameTriptych::update_titles() {
   const auto c = captions();
-  for (std::size_t i = 0; i < 3; ++i) panes_[i]->set_title(c[i]);
+  panes_[0]->set_title(c[0] + tr(", shown as grey"));
+  panes_[1]->set_title(c[1]);
+  panes_[2]->set_title(c[2] + tr(", %1×%2 px").arg(view_.width).arg(view_.height));
 }
 
 std::array<QString, 3> FrameTriptych::captions() const {
+  // Short enough to fit on one line under a panel one third of a 7.16 in column wide, at 8 pt.
   const QString bits = tr("%1-bit").arg(frame_.bit_depth);
-  QString a;
-  if (frame_.is_mosaic())
-    a = tr("(a) Raw Bayer mosaic as grey (%1, %2)").arg(QString::fromStdString(frame_.pattern), bits);
-  else
-    a = tr("(a) Raw image as grey (%1, no mosaic)").arg(bits);
+  const QString a = frame_.is_mosaic()
+                        ? tr("(a) Raw Bayer mosaic (%1, %2)").arg(QString::fromStdString(frame_.pattern), bits)
+                        : tr("(a) Raw image as grey (%1)").arg(bits);
   const QString b = frame_.is_mosaic() ? tr("(b) Demosaiced (%1)").arg(method_name(method_))
-                                       : tr("(b) Colour (no demosaicing needed)");
-  const QString c = tr("(c) Reprojected (%1° rectilinear, %2×%3 px)")
-                        .arg(view_.fov_deg, 0, 'g', 4)
-                        .arg(view_.width)
-                        .arg(view_.height);
+                                       : tr("(b) Colour (no mosaic)");
+  const QString c = tr("(c) Reprojected (%1° rectilinear)").arg(view_.fov_deg, 0, 'g', 4);
   return {a, b, c};
 }
 

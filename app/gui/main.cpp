@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
       window.frames_view()->triptych()->wait_until_rendered(60000);
       window.frames_view()->triptych()->inspect_at(2, QPointF(790.5, 300.5));  // the inspector at work
       save_png(window.frames_view(), dir + "/frames-triptych.png");
+      window.frames_view()->export_figure(dir + "/figure3-triptych.png", nullptr);  // File > Export Figure 3
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

@@ -104,7 +104,7 @@ class TestFrameTriptych : public QObject {
     QCOMPARE(t.view().yaw_deg, 30.0);
     const auto want = vision::render_triptych(f, vision::DemosaicMethod::Bilinear, lens, view);
     QCOMPARE(max_diff(t.images().reprojected, want.reprojected), 0.0);
-    QVERIFY(t.captions()[2].contains("240×200"));
+    QVERIFY(t.pane(2)->title().contains("240×200"));
   }
 
   void zoom_and_pan_are_synchronised() {

@@ -143,6 +143,17 @@ class TestFramesStore : public QObject {
     QCOMPARE(values_of(bs::load_frame(ws, frames[0])), values);
     const bs::Frame g = bs::load_frame(ws, frames[1]);
     QCOMPARE(std::string(g.pixels.begin(), g.pixels.end()), std::string("abcdefgh"));
+    // The Figure 3 panels from the CLI are core's rendering of the stored frame.
+    p.start(BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli",
+            {"frames", ws_path, "--triptych", "1", "--out", dir.filePath("fig/f3"), "--method", "mhc"});
+    QVERIFY(p.waitForFinished(60000));
+    QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+    for (const char* suffix : {"-a-mosaic.png", "-b-demosaiced.png", "-c-reprojected.png"})
+      QVERIFY(QFile::exists(dir.filePath("fig/f3") + suffix));
+    p.start(BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli", {"frames", ws_path});
+    QVERIFY(p.waitForFinished(60000));
+    const QByteArray listing = p.readAllStandardOutput();
+    QVERIFY2(listing.contains("10x6") && listing.contains("synthetic") && listing.contains("copy"), listing.constData());
     // A broken file among good ones: nothing at all is imported.
     const QString ws2 = dir.filePath("w2.bsw"), broken = dir.filePath("broken.pgm");
     write(broken.toStdString(), "P5 40 20 255\nshort");
