@@ -14,6 +14,7 @@
 #include "frame_triptych.h"
 #include "frames_view.h"
 #include "image_pane.h"
+#include "import_controller.h"
 #include "importer.h"
 #include "triptych_figure.h"
 #include "vision/frame_image.h"
@@ -249,6 +250,21 @@ class TestFrameTriptych : public QObject {
     QVERIFY2(v.export_figure(dir.filePath("f.pdf"), &error), qPrintable(error));
     v.set_workspace(nullptr);
     QVERIFY(!v.triptych()->has_frame());
+  }
+
+  void gui_import_can_copy_frames() {
+    QTemporaryDir dir;
+    const QString raw = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/frames/paper-capture.raw";
+    const auto by_ref = ui::ImportController::import_now(dir.filePath("ref.bsw"), {raw}, CancelToken{});
+    QCOMPARE(by_ref.imported, 1);
+    const auto copied =
+        ui::ImportController::import_now(dir.filePath("copy.bsw"), {raw}, CancelToken{}, {}, FrameStorage::Copy);
+    QCOMPARE(copied.imported, 1);
+    const Workspace ref(dir.filePath("ref.bsw").toStdString()), copy(dir.filePath("copy.bsw").toStdString());
+    QCOMPARE(ref.frames().at(0).frame.storage, FrameStorage::Reference);
+    QCOMPARE(copy.frames().at(0).frame.storage, FrameStorage::Copy);
+    QCOMPARE(copy.frame_pixels(copy.frames().at(0).id).size(), std::size_t{1280 * 1024});
+    QVERIFY(QFileInfo(dir.filePath("copy.bsw")).size() > QFileInfo(dir.filePath("ref.bsw")).size() + 1'000'000);
   }
 };
 
