@@ -20,6 +20,10 @@ struct ImportLimits {
   // Values (numbers, strings, ...) in one JSON document: each costs 16+ bytes in the parsed tree, so this bounds
   // the tree at about half a GiB whatever the bytes are.
   std::size_t max_json_values = 32'000'000;
+  // Frames: pixels in one image (64 Mpx, 8192 x 8192; the paper's camera has 1.3 Mpx) and the longest side. A
+  // header or sidecar claiming more is rejected before anything is allocated.
+  std::size_t max_frame_pixels = std::size_t{64} << 20;
+  int max_frame_side = 65535;
 };
 
 // One file format. Importers are stateless and pure: bytes in, ImportBatch out, or an ImportError.
@@ -35,6 +39,8 @@ class Importer {
   // Whether `path` has an extension this format usually carries. Used only to break a tie between equal sniff
   // scores, never to pick a format the content does not support.
   virtual bool usual_extension(std::string_view /*path*/) const { return false; }
+  // Binary formats (images) are sniffed on the raw head before the text checks that reject NUL bytes.
+  virtual bool binary() const { return false; }
   // Parses the whole file. Throws ImportError (or Cancelled). Never returns a partial batch.
   virtual ImportBatch parse(const std::string& path, const ImportLimits& limits,
                             const CancelToken& cancel) const = 0;

@@ -6,6 +6,9 @@
 #include <fstream>
 
 #include "clpeak_text.h"
+#include "frame_codec.h"
+#include "frame_pnm.h"
+#include "frame_raw.h"
 #include "google_benchmark_json.h"
 #include "importer.h"
 #include "power_csv.h"
@@ -22,6 +25,10 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<ClpeakTextImporter>());
   list.push_back(std::make_unique<PowerCsvImporter>());
   list.push_back(std::make_unique<TegrastatsImporter>());
+  list.push_back(std::make_unique<RawBayerImporter>());
+  list.push_back(std::make_unique<PnmImporter>());
+  list.push_back(std::make_unique<PngImporter>());
+  list.push_back(std::make_unique<TiffImporter>());
   return list;
 }
 
@@ -161,13 +168,33 @@ void check_text(std::string_view head, const std::string& path) {
 
 ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits) {
   std::string head = read_head(path);
-  check_text(head, path);
-  std::string_view view = head;
-  if (view.starts_with("\xEF\xBB\xBF")) view.remove_prefix(3);
   // Content decides; the usual extension only breaks a tie (score * 2 + 1 can never beat a higher score).
   const Importer* best = nullptr;
   int best_score = 0;
+  // Binary formats (frames) first, on the raw head: their magic bytes (or a .raw sidecar) would fail the text
+  // checks below. A file no binary importer claims goes on to the text formats.
   for (const auto& imp : all_importers()) {
+    if (!imp->binary()) continue;
+    const int content = imp->sniff(head, path);
+    if (content <= 0) continue;
+    const int score = content * 2 + (imp->usual_extension(path) ? 1 : 0);
+    if (score > best_score) {
+      best_score = score;
+      best = imp.get();
+    }
+  }
+  if (best) {
+    cancel.throw_if_cancelled();
+    ImportBatch batch = best->parse(path, limits, cancel);
+    batch.source_path = path;
+    batch.format = std::string(best->id());
+    return batch;
+  }
+  check_text(head, path);
+  std::string_view view = head;
+  if (view.starts_with("\xEF\xBB\xBF")) view.remove_prefix(3);
+  for (const auto& imp : all_importers()) {
+    if (imp->binary()) continue;
     const int content = imp->sniff(view, path);
     if (content <= 0) continue;
     const int score = content * 2 + (imp->usual_extension(path) ? 1 : 0);

@@ -44,7 +44,8 @@ ImportController::ImportController(QWidget* parent_window) : QObject(parent_wind
 
 ImportReport ImportController::import_now(const QString& workspace_path, const QStringList& paths,
                                           const CancelToken& cancel,
-                                          const std::function<void(int, int, const QString&)>& progress) {
+                                          const std::function<void(int, int, const QString&)>& progress,
+                                          FrameStorage frames) {
   ImportReport report;
   const QList<Candidate> files = expand(paths);
   std::unique_ptr<Workspace> ws;
@@ -57,7 +58,8 @@ ImportReport ImportController::import_now(const QString& workspace_path, const Q
     }
     try {
       const std::string p = path.toStdString();
-      const ImportBatch batch = import_file(p, cancel);
+      ImportBatch batch = import_file(p, cancel);
+      for (Frame& f : batch.frames) f.storage = frames;
       if (!ws) ws = std::make_unique<Workspace>(workspace_path.toStdString());
       ws->add_import(batch, file_content_hash(p), &cancel);
       ++report.imported;
@@ -107,8 +109,8 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
     running_ = false;
     emit finished(report);
   });
-  watcher->setFuture(QtConcurrent::run([workspace_path, paths, cancel, progress] {
-    return import_now(workspace_path, paths, *cancel, progress);
+  watcher->setFuture(QtConcurrent::run([workspace_path, paths, cancel, progress, frames = frame_storage_] {
+    return import_now(workspace_path, paths, *cancel, progress, frames);
   }));
 }
 

@@ -4,6 +4,7 @@
 #include <QStringList>
 #include <memory>
 
+#include "model/frame.h"
 #include "util/cancel.h"
 
 class QWidget;
@@ -29,8 +30,13 @@ class ImportController : public QObject {
   // Starts importing; finished() is emitted on the GUI thread when done.
   void start(const QString& workspace_path, const QStringList& paths);
   // Synchronous variant for tests and the command line of the GUI.
+  // Frames are kept by reference unless `frames` is Copy (pixels stored in the workspace).
   static ImportReport import_now(const QString& workspace_path, const QStringList& paths, const CancelToken& cancel,
-                                 const std::function<void(int, int, const QString&)>& progress = {});
+                                 const std::function<void(int, int, const QString&)>& progress = {},
+                                 FrameStorage frames = FrameStorage::Reference);
+  // How start() stores the frames it imports (File > Copy imported frames into the workspace).
+  void set_frame_storage(FrameStorage storage) { frame_storage_ = storage; }
+  FrameStorage frame_storage() const { return frame_storage_; }
 
  signals:
   void finished(const bs::ui::ImportReport& report);
@@ -38,6 +44,7 @@ class ImportController : public QObject {
  private:
   QWidget* window_;
   bool running_ = false;
+  FrameStorage frame_storage_ = FrameStorage::Reference;
 };
 
 }  // namespace bs::ui

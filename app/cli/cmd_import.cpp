@@ -3,9 +3,11 @@
 // nothing is imported, so a workspace never holds half of a batch the user asked for.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "args.h"
 #include "command.h"
+#include "frame_raw.h"
 #include "importer.h"
 #include "inputs.h"
 #include "signals.h"
@@ -20,9 +22,15 @@ struct Parsed {
 };
 
 std::string summary(const ImportBatch& b) {
-  std::string s = std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
+  std::string s = b.runs.empty() && !b.frames.empty()
+                      ? std::string()
+                      : std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
   if (!b.result_sets.empty()) s += ", " + std::to_string(b.result_sets.size()) + " result sets";
   if (!b.power_traces.empty()) s += ", " + std::to_string(b.power_traces.size()) + " power traces";
+  for (const Frame& f : b.frames)
+    s += std::string(s.empty() ? "" : ", ") + "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) + " " +
+         (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " + std::to_string(f.bit_depth) +
+         "-bit" + (f.synthetic ? " synthetic" : "") + (f.storage == FrameStorage::Copy ? " (copied)" : " (by reference)");
   return s + " (" + b.format + ")";
 }
 
@@ -34,19 +42,41 @@ std::string duplicate_note(const Workspace& ws, const std::string& hash, const W
 }
 
 int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  const ParsedArgs args = parse_args(raw, {"--keep-going", "--quiet"}, {});
+  const ParsedArgs args = parse_args(raw, {"--keep-going", "--quiet", "--copy-frames"}, {"--raw-geometry"});
   if (args.positional.size() < 2) throw UsageError("import needs a workspace and at least one file or folder");
   const std::string workspace_path = args.positional[0];
   const bool keep_going = args.has("--keep-going");
   const bool quiet = args.has("--quiet");
   const CancelToken& cancel = interrupt_token();
+  const FrameStorage storage = args.has("--copy-frames") ? FrameStorage::Copy : FrameStorage::Reference;
+  std::optional<RawFrameOptions> raw_geometry;
+  if (const auto g = args.value("--raw-geometry")) {
+    try {
+      raw_geometry = parse_raw_geometry(*g);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--raw-geometry: ") + e.what());
+    }
+  }
+  // A .raw file without a sidecar is read with --raw-geometry when given; everything else is sniffed.
+  const auto parse_one = [&](const std::string& path) {
+    std::error_code ec;
+    if (raw_geometry && path.size() > 4 && path.ends_with(".raw") &&
+        !std::filesystem::exists(raw_sidecar_path(path), ec)) {
+      ImportBatch b = read_raw_frame(path, *raw_geometry, {}, cancel, "--raw-geometry");
+      b.source_path = path;
+      b.format = "raw-bayer";
+      return b;
+    }
+    return import_file(path, cancel);
+  };
 
   std::vector<Parsed> parsed;
   int failures = 0;
   const std::vector<std::string> paths(args.positional.begin() + 1, args.positional.end());
   for (const InputFile& in : expand_inputs(paths)) {
     try {
-      parsed.push_back({in.path, import_file(in.path, cancel)});
+      parsed.push_back({in.path, parse_one(in.path)});
+      for (Frame& f : parsed.back().batch.frames) f.storage = storage;
       for (const auto& w : parsed.back().batch.warnings) err << "benchscope-cli: warning: " << w << '\n';
     } catch (const ImportError& e) {
       if (in.from_folder && skippable_in_folder(e)) {
@@ -87,10 +117,14 @@ int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostr
 const CommandRegistrar registrar({
     "import",
     "import benchmark, power and frame files or folders into a workspace",
-    "usage: benchscope-cli import WORKSPACE PATH... [--keep-going] [--quiet]\n"
+    "usage: benchscope-cli import WORKSPACE PATH... [--keep-going] [--quiet] [--copy-frames]\n"
+    "         [--raw-geometry WxH[:PATTERN[:BITS[:le|be]]]]\n"
     "  Imports files (formats recognised by content) and folders (walked recursively) into WORKSPACE (an SQLite\n"
     "  .bsw file, created when missing). Every file is parsed before anything is written; if one fails, nothing is\n"
-    "  imported unless --keep-going is given. Each file is one transaction. A file imported before is skipped.",
+    "  imported unless --keep-going is given. Each file is one transaction. A file imported before is skipped.\n"
+    "  Frames (.raw + JSON sidecar, PGM/PPM, PNG, TIFF) are kept by reference (path + content hash, the file is read\n"
+    "  again when opened) unless --copy-frames stores their pixels in the workspace. --raw-geometry gives the size,\n"
+    "  Bayer pattern (BGGR, RGGB, GRBG, GBRG or grey), bit depth and byte order of .raw files that have no sidecar.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
         return run_import(args, out, err);

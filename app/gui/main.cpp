@@ -7,6 +7,8 @@
 #include <QTimer>
 
 #include "flops_plot.h"
+#include "frame_triptych.h"
+#include "frames_view.h"
 #include "kernel_runner.h"
 #include "platform_view.h"
 #include "roofline_view.h"
@@ -85,6 +87,11 @@ int main(int argc, char** argv) {
       save_png(window.platform_view(), dir + "/platform-view.png");
       window.roofline_view()->resize(window.flops_plot()->size());
       save_png(window.roofline_view(), dir + "/roofline-view.png");
+      window.frames_view()->resize(1500, 760);  // three panes side by side need the width
+      window.frames_view()->triptych()->wait_until_rendered(60000);
+      window.frames_view()->triptych()->inspect_at(2, QPointF(790.5, 300.5));  // the inspector at work
+      save_png(window.frames_view(), dir + "/frames-triptych.png");
+      window.frames_view()->export_figure(dir + "/figure3-triptych.png", nullptr);  // File > Export Figure 3
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

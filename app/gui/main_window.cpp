@@ -27,6 +27,7 @@
 #include "roofline_view.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
+#include "frames_view.h"
 
 namespace bs::ui {
 
@@ -39,7 +40,8 @@ MainWindow::MainWindow(QWidget* parent)
       runner_(new KernelRunner(this)),
       power_(new PowerView(this)),
       platforms_(new PlatformView(this)),
-      roofline_(new RooflineView(this)) {
+      roofline_(new RooflineView(this)),
+      frames_(new FramesView(this)) {
   setAcceptDrops(true);
   auto* views = new QTabWidget(this);
   views->addTab(plot_, tr("FLOPS"));
@@ -50,6 +52,8 @@ MainWindow::MainWindow(QWidget* parent)
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
   views->addTab(roofline_, tr("Roofline"));
   views->setTabToolTip(3, tr("Compute and memory ceilings per device, with the kernels placed on them"));
+  views->addTab(frames_, tr("Frames"));
+  views->setTabToolTip(4, tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -164,6 +168,7 @@ void MainWindow::reload() {
       sets.push_back(s.set);
     }
   roofline_->set_data(all, std::move(sets), std::move(device_colors));
+  frames_->set_workspace(workspace_.get());
   refresh_views();
   update_title();
 }

@@ -20,6 +20,7 @@ class KernelRunner;
 class PowerView;
 class PlatformView;
 class RooflineView;
+class FramesView;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -43,6 +44,7 @@ class MainWindow : public QMainWindow {
   PowerView* power_view() const { return power_; }
   PlatformView* platform_view() const { return platforms_; }
   RooflineView* roofline_view() const { return roofline_; }
+  FramesView* frames_view() const { return frames_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -81,6 +83,7 @@ class MainWindow : public QMainWindow {
   PowerView* power_;
   PlatformView* platforms_;
   RooflineView* roofline_;
+  FramesView* frames_;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 

@@ -9,6 +9,8 @@
 #include "compare_dialog.h"
 #include "flops_plot.h"
 #include "main_window.h"
+#include "frames_view.h"
+#include "import_controller.h"
 #include "recent_files.h"
 
 namespace bs::ui {
@@ -71,6 +73,13 @@ void MainWindow::create_actions() {
   add(file, tr("&Compare with workspace…"), QKeySequence(Qt::CTRL | Qt::Key_D),
       tr("Regression compare of this workspace (A) against another (B), as benchscope-cli compare does"),
       [this] { compare_with_workspace(); });
+  QAction* copy_frames = add(file, tr("Copy imported &frames into the workspace"), QKeySequence(),
+                             tr("Store the pixels of imported frames in the workspace instead of a reference to the "
+                                "file (path + content hash)"),
+                             [this](bool on) { importer_->set_frame_storage(on ? FrameStorage::Copy : FrameStorage::Reference); });
+  copy_frames->setCheckable(true);
+  add(file, tr("Export &Figure 3 (triptych)…"), QKeySequence(), tr("The Frames tab's triptych as the paper's Figure 3 (PDF or PNG)"),
+      [this] { frames_->export_figure_dialog(); });
   file->addSeparator();
   add(file, tr("&Export figure…"), QKeySequence(Qt::CTRL | Qt::Key_E),
       tr("Save the plot of the current tab as PDF, SVG or PNG at a journal width (LNCS, IEEE) with print fonts"),

@@ -89,8 +89,37 @@ void migrate_1_to_2(const sqlite::Db& db) {
   )sql");
 }
 
+// Version 2 -> 3: camera frames. A frame is kept by reference (path + content hash of the file, read again and
+// checked on open; pixels NULL) or as a copy (pixels BLOB: row-major samples, 16-bit ones in the writer's byte
+// order, which `byte_order` records). read_options is the importer's JSON to read a referenced file again.
+void migrate_2_to_3(const sqlite::Db& db) {
+  db.exec(R"sql(
+    CREATE TABLE IF NOT EXISTS frames(
+      id INTEGER PRIMARY KEY,
+      import_id INTEGER NOT NULL REFERENCES imports(id) ON DELETE CASCADE,
+      label TEXT NOT NULL,
+      storage TEXT NOT NULL CHECK(storage IN ('reference', 'copy')),
+      path TEXT NOT NULL,
+      content_hash TEXT NOT NULL,
+      source_format TEXT NOT NULL,
+      read_options TEXT NOT NULL,
+      width INTEGER NOT NULL CHECK(width > 0),
+      height INTEGER NOT NULL CHECK(height > 0),
+      channels INTEGER NOT NULL CHECK(channels IN (1, 3)),
+      bit_depth INTEGER NOT NULL CHECK(bit_depth BETWEEN 1 AND 16),
+      pattern TEXT NOT NULL,
+      synthetic INTEGER NOT NULL CHECK(synthetic IN (0, 1)),
+      lens TEXT NOT NULL,
+      provenance TEXT NOT NULL,
+      byte_order TEXT NOT NULL CHECK(byte_order IN ('little', 'big')),
+      pixels BLOB,
+      CHECK((storage = 'copy') = (pixels IS NOT NULL)));
+    CREATE INDEX IF NOT EXISTS frames_by_import ON frames(import_id);
+  )sql");
+}
+
 using Migration = void (*)(const sqlite::Db&);
-constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2};
+constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

@@ -73,6 +73,19 @@ Statement& Statement::bind_doubles(int index, const std::vector<double>& values)
   return *this;
 }
 
+Statement& Statement::bind_bytes(int index, const std::vector<std::uint8_t>& bytes) {
+  if (sqlite3_bind_blob64(stmt_, index, bytes.empty() ? "" : static_cast<const void*>(bytes.data()),
+                          static_cast<sqlite3_uint64>(bytes.size()), SQLITE_TRANSIENT) != SQLITE_OK)
+    db_.fail("bind failed");
+  return *this;
+}
+
+std::vector<std::uint8_t> Statement::bytes(int column) const {
+  const auto* p = static_cast<const std::uint8_t*>(sqlite3_column_blob(stmt_, column));
+  const auto n = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column));
+  return p ? std::vector<std::uint8_t>(p, p + n) : std::vector<std::uint8_t>();
+}
+
 std::vector<double> Statement::doubles(int column) const {
   const auto* p = static_cast<const unsigned char*>(sqlite3_column_blob(stmt_, column));
   const auto bytes = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column));

@@ -44,6 +44,7 @@ class Statement {
   Statement& bind(int index, const std::optional<double>& v);
   Statement& bind_null(int index);
   Statement& bind_doubles(int index, const std::vector<double>& values);  // as a BLOB of native doubles
+  Statement& bind_bytes(int index, const std::vector<std::uint8_t>& bytes);  // as a BLOB
 
   bool step();        // true while a row is available
   void run();         // step to completion, then reset for reuse
@@ -53,6 +54,7 @@ class Statement {
   std::optional<double> optional_real(int column) const;
   std::string text(int column) const;
   std::vector<double> doubles(int column) const;
+  std::vector<std::uint8_t> bytes(int column) const;  // a BLOB column; empty for NULL
 
  private:
   const Db& db_;

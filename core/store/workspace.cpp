@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "store/workspace.h"
 
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -285,6 +286,44 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
       channel_st.bind(1, trace_id).bind(2, std::string_view(c.name)).bind(3, std::string_view(q)).bind_doubles(4, c.values).run();
     }
   }
+  Statement frame_st(db,
+                     "INSERT INTO frames(import_id, label, storage, path, content_hash, source_format, read_options, "
+                     "width, height, channels, bit_depth, pattern, synthetic, lens, provenance, byte_order, pixels) "
+                     "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+  std::error_code ec;
+  const std::string abs_path = batch.source_path.empty()
+                                   ? std::string()
+                                   : std::filesystem::absolute(batch.source_path, ec).lexically_normal().string();
+  for (const Frame& f : batch.frames) {
+    check();
+    const bool copy = f.storage == FrameStorage::Copy;
+    if (copy && f.pixels.size() != f.expected_bytes())
+      throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                           f.label + ": frame has " + std::to_string(f.pixels.size()) + " bytes of pixels, its " +
+                               std::to_string(f.width) + "x" + std::to_string(f.height) + " geometry needs " +
+                               std::to_string(f.expected_bytes()));
+    frame_st.bind(1, import_id)
+        .bind(2, std::string_view(f.label))
+        .bind(3, std::string_view(copy ? "copy" : "reference"))
+        .bind(4, std::string_view(abs_path.empty() ? f.provenance.source_file : abs_path))
+        .bind(5, std::string_view(content_hash))
+        .bind(6, std::string_view(f.source_format))
+        .bind(7, std::string_view(f.read_options.empty() ? "{}" : f.read_options))
+        .bind(8, f.width)
+        .bind(9, f.height)
+        .bind(10, f.channels)
+        .bind(11, f.bit_depth)
+        .bind(12, std::string_view(f.pattern))
+        .bind(13, f.synthetic ? 1 : 0)
+        .bind(14, std::string_view(f.lens_json))
+        .bind(15, std::string_view(provenance_to_json(f.provenance, true).dump()))
+        .bind(16, std::string_view(std::endian::native == std::endian::big ? "big" : "little"));
+    if (copy)
+      frame_st.bind_bytes(17, f.pixels);
+    else
+      frame_st.bind_null(17);
+    frame_st.run();
+  }
   check();
   tx.commit();
   return import_id;
@@ -425,6 +464,57 @@ std::vector<StoredPowerTrace> Workspace::power_traces() const {
          ch.doubles(3)});
   }
   return out;
+}
+
+std::vector<StoredFrame> Workspace::frames() const {
+  std::vector<StoredFrame> out;
+  Statement st(impl_->db,
+               "SELECT id, import_id, label, storage, path, content_hash, source_format, read_options, width, height, "
+               "channels, bit_depth, pattern, synthetic, lens, provenance FROM frames ORDER BY id");
+  while (st.step()) {
+    StoredFrame s;
+    s.id = st.int64(0);
+    s.import_id = st.int64(1);
+    s.frame.label = st.text(2);
+    s.frame.storage = st.text(3) == "copy" ? FrameStorage::Copy : FrameStorage::Reference;
+    s.path = st.text(4);
+    s.content_hash = st.text(5);
+    s.frame.source_format = st.text(6);
+    s.frame.read_options = st.text(7);
+    s.frame.width = static_cast<int>(st.int64(8));
+    s.frame.height = static_cast<int>(st.int64(9));
+    s.frame.channels = static_cast<int>(st.int64(10));
+    s.frame.bit_depth = static_cast<int>(st.int64(11));
+    s.frame.pattern = st.text(12);
+    s.frame.synthetic = st.int64(13) != 0;
+    s.frame.lens_json = st.text(14);
+    s.frame.provenance = provenance_from_json(nlohmann::json::parse(st.text(15), nullptr, false));
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> Workspace::frame_pixels(std::int64_t frame_id) const {
+  Statement st(impl_->db, "SELECT width, height, channels, bit_depth, byte_order, pixels FROM frames WHERE id = ?");
+  st.bind(1, frame_id);
+  if (!st.step())
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no frame with id " + std::to_string(frame_id));
+  Frame geometry;
+  geometry.width = static_cast<int>(st.int64(0));
+  geometry.height = static_cast<int>(st.int64(1));
+  geometry.channels = static_cast<int>(st.int64(2));
+  geometry.bit_depth = static_cast<int>(st.int64(3));
+  const bool big = st.text(4) == "big";
+  std::vector<std::uint8_t> pixels = st.bytes(5);
+  if (pixels.empty()) return pixels;  // kept by reference
+  if (pixels.size() != geometry.expected_bytes())
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt,
+                         impl_->path + ": frame " + std::to_string(frame_id) + " has " + std::to_string(pixels.size()) +
+                             " bytes of pixels, its geometry needs " + std::to_string(geometry.expected_bytes()));
+  // A workspace written on a machine of the other byte order stays readable.
+  if (geometry.bit_depth > 8 && big != (std::endian::native == std::endian::big))
+    for (std::size_t i = 0; i + 1 < pixels.size(); i += 2) std::swap(pixels[i], pixels[i + 1]);
+  return pixels;
 }
 
 void Workspace::save_as(const std::string& new_path) const {

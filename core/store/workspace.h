@@ -63,11 +63,21 @@ struct StoredPowerTrace {
   PowerTrace trace;
 };
 
+// A frame's record; frame.pixels is filled only by frame_pixels() (copies) or by re-reading the file
+// (references, importers/frame_store.h).
+struct StoredFrame {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  std::string path;          // absolute path of the file at import time
+  std::string content_hash;  // of that file; a referenced file must still hash the same
+  Frame frame;
+};
+
 // One SQLite file holds a whole workspace: schema version + migrations, foreign keys on, WAL journal, and one
 // transaction per import so a crash or a cancel leaves either all of an import or none of it.
 class Workspace {
  public:
-  static constexpr int kSchemaVersion = 2;  // 2: power traces
+  static constexpr int kSchemaVersion = 3;  // 2: power traces, 3: frames
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -93,6 +103,10 @@ class Workspace {
   std::vector<StoredRun> runs() const;  // ordered by device colour index, backend, dims, id
   std::vector<StoredResultSet> result_sets() const;
   std::vector<StoredPowerTrace> power_traces() const;
+  std::vector<StoredFrame> frames() const;  // in import order, without pixels
+  // The pixels of a frame stored as a copy, in this host's byte order; empty for a frame kept by reference.
+  // Throws WorkspaceError(Corrupt) when the BLOB's size does not match the recorded geometry.
+  std::vector<std::uint8_t> frame_pixels(std::int64_t frame_id) const;
 
   // Writes a consistent copy (VACUUM INTO). Refuses to overwrite an existing file.
   void save_as(const std::string& new_path) const;

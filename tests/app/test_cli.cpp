@@ -228,7 +228,8 @@ class TestCli : public QObject {
     const QString ws = dir.filePath("w.bsw");
     Result r = cli({"import", ws, kPaper});
     QCOMPARE(r.code, 0);
-    QCOMPARE(r.out.count("imported "), 7);  // 5 run files + 2 current logs
+    QCOMPARE(r.out.count("imported "), 8);  // 5 run files + 2 current logs + the synthetic capture (frames/)
+    QVERIFY2(r.out.contains("paper-capture.raw: frame 1280x1024 BGGR 8-bit synthetic"), r.out.constData());
     QVERIFY(r.out.contains("skipped") && r.out.contains("README.md"));  // not a data file
     r = cli({"import", ws, kPaper + "/cpu.json"});
     QCOMPARE(r.code, 0);

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <exception>
 #include <fstream>
 #include <string_view>
@@ -58,12 +59,25 @@ void run_one(const std::uint8_t* data, std::size_t size) {
   try {
     if (id == "any") {
       (void)import_file(scratch_path(), cancel, fuzz_limits());
+    } else if (id == "raw-bayer") {
+      // A raw frame is two files: the input is "<sidecar JSON>\0<raw samples>" (no NUL: all sidecar, no samples).
+      const std::string_view all(reinterpret_cast<const char*>(data), size);
+      const std::size_t split = std::min(all.find('\0'), all.size());
+      const std::string raw = scratch_path() + ".raw", sidecar = scratch_path() + ".json";
+      std::ofstream(sidecar, std::ios::binary | std::ios::trunc).write(all.data(), static_cast<std::streamsize>(split));
+      const std::string_view samples = split < all.size() ? all.substr(split + 1) : std::string_view();
+      std::ofstream(raw, std::ios::binary | std::ios::trunc)
+          .write(samples.data(), static_cast<std::streamsize>(samples.size()));
+      const Importer* imp = find_importer(id);
+      if (!imp || imp->sniff({}, raw) != 100) finding("raw-bayer does not claim a .raw with a sidecar");
+      (void)imp->parse(raw, fuzz_limits(), cancel);
     } else {
       const Importer* imp = find_importer(id);
       if (!imp) finding("unknown importer id");
       const std::string_view text(reinterpret_cast<const char*>(data), size);
       (void)imp->sniff(text.substr(0, 64 * 1024), scratch_path());
-      check_text(text.substr(0, 64 * 1024), scratch_path());  // as import_file does before any importer runs
+      // As import_file does before any text importer runs; binary formats (frames) skip the text check.
+      if (!imp->binary()) check_text(text.substr(0, 64 * 1024), scratch_path());
       (void)imp->parse(scratch_path(), fuzz_limits(), cancel);
     }
   } catch (const ImportError&) {

@@ -15,6 +15,7 @@ void load_paper(std::vector<bs::FlopsRun>& runs, std::vector<bs::PowerTrace>& tr
   for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
     const auto ext = e.path().extension();
     if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
+    if (e.path().parent_path().filename() == "frames") continue;  // the sample capture's sidecar is not data
     auto b = bs::import_file(e.path().string(), bs::CancelToken{});
     runs.insert(runs.end(), b.runs.begin(), b.runs.end());
     traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());

@@ -21,6 +21,7 @@ Paper load_paper() {
   for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
     const auto ext = e.path().extension();
     if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
+    if (e.path().parent_path().filename() == "frames") continue;  // the sample capture's sidecar is not data
     auto batch = bs::import_file(e.path().string(), bs::CancelToken{});
     for (auto& r : batch.runs) p.runs.push_back(std::move(r));
     for (auto& t : batch.power_traces) p.traces.push_back(std::move(t));
