@@ -8,6 +8,7 @@
 #include "clpeak_text.h"
 #include "google_benchmark_json.h"
 #include "importer.h"
+#include "pipeline_json.h"
 #include "power_csv.h"
 #include "run_json.h"
 #include "tegrastats.h"
@@ -18,6 +19,7 @@ namespace {
 std::vector<std::unique_ptr<Importer>> make_importers() {
   std::vector<std::unique_ptr<Importer>> list;
   list.push_back(std::make_unique<RunJsonImporter>());
+  list.push_back(std::make_unique<PipelineJsonImporter>());
   list.push_back(std::make_unique<GoogleBenchmarkJsonImporter>());
   list.push_back(std::make_unique<ClpeakTextImporter>());
   list.push_back(std::make_unique<PowerCsvImporter>());

@@ -23,6 +23,8 @@ std::string summary(const ImportBatch& b) {
   std::string s = std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
   if (!b.result_sets.empty()) s += ", " + std::to_string(b.result_sets.size()) + " result sets";
   if (!b.power_traces.empty()) s += ", " + std::to_string(b.power_traces.size()) + " power traces";
+  if (!b.pipeline_runs.empty())
+    s += ", " + std::to_string(b.pipeline_runs.size()) + (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
   return s + " (" + b.format + ")";
 }
 

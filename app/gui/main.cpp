@@ -8,6 +8,7 @@
 
 #include "flops_plot.h"
 #include "kernel_runner.h"
+#include "pipeline_view.h"
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "power_view.h"
@@ -85,6 +86,8 @@ int main(int argc, char** argv) {
       save_png(window.platform_view(), dir + "/platform-view.png");
       window.roofline_view()->resize(window.flops_plot()->size());
       save_png(window.roofline_view(), dir + "/roofline-view.png");
+      window.pipeline_view()->resize(window.flops_plot()->size());
+      save_png(window.pipeline_view(), dir + "/pipeline-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

@@ -23,6 +23,7 @@
 #include "peak_table.h"
 #include "power_view.h"
 #include <QTabWidget>
+#include "pipeline_view.h"
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "recent_files.h"
@@ -39,7 +40,8 @@ MainWindow::MainWindow(QWidget* parent)
       runner_(new KernelRunner(this)),
       power_(new PowerView(this)),
       platforms_(new PlatformView(this)),
-      roofline_(new RooflineView(this)) {
+      roofline_(new RooflineView(this)),
+      pipeline_(new PipelineView(this)) {
   setAcceptDrops(true);
   auto* views = new QTabWidget(this);
   views->addTab(plot_, tr("FLOPS"));
@@ -50,6 +52,8 @@ MainWindow::MainWindow(QWidget* parent)
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
   views->addTab(roofline_, tr("Roofline"));
   views->setTabToolTip(3, tr("Compute and memory ceilings per device, with the kernels placed on them"));
+  views->setTabToolTip(views->addTab(pipeline_, tr("Pipeline")),
+                       tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -154,7 +158,11 @@ void MainWindow::reload() {
   power_->set_data(traces, bs::peak_table(all), platform_colors);
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);
-  platforms_->set_data(all, std::move(plain_traces));
+  std::vector<PipelineRun> pipelines;
+  if (workspace_)
+    for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
+  pipeline_->set_data(pipelines);
+  platforms_->set_data(all, std::move(plain_traces), std::move(pipelines));
   std::vector<ResultSet> sets;
   std::map<std::pair<std::string, std::string>, int> device_colors;
   for (const StoredRun& r : runs_) device_colors[{r.run.platform, r.run.device}] = r.color_index;

@@ -18,6 +18,7 @@ class RecentFiles;
 class KernelRunner;
 class PowerView;
 class PlatformView;
+class PipelineView;
 class RooflineView;
 struct ImportReport;
 
@@ -42,6 +43,7 @@ class MainWindow : public QMainWindow {
   PowerView* power_view() const { return power_; }
   PlatformView* platform_view() const { return platforms_; }
   RooflineView* roofline_view() const { return roofline_; }
+  PipelineView* pipeline_view() const { return pipeline_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -74,6 +76,7 @@ class MainWindow : public QMainWindow {
   PowerView* power_;
   PlatformView* platforms_;
   RooflineView* roofline_;
+  PipelineView* pipeline_;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "model/flops_run.h"
+#include "model/pipeline_run.h"
 #include "model/power_trace.h"
 
 namespace bs {
@@ -16,8 +17,9 @@ struct ImportBatch {
   std::vector<FlopsRun> runs;
   std::vector<ResultSet> result_sets;
   std::vector<PowerTrace> power_traces;
+  std::vector<PipelineRun> pipeline_runs;
   std::vector<std::string> warnings;  // non-fatal, each naming file and place
-  bool empty() const { return runs.empty() && result_sets.empty() && power_traces.empty(); }
+  bool empty() const { return runs.empty() && result_sets.empty() && power_traces.empty() && pipeline_runs.empty(); }
 };
 
 }  // namespace bs

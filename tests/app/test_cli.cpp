@@ -228,7 +228,8 @@ class TestCli : public QObject {
     const QString ws = dir.filePath("w.bsw");
     Result r = cli({"import", ws, kPaper});
     QCOMPARE(r.code, 0);
-    QCOMPARE(r.out.count("imported "), 7);  // 5 run files + 2 current logs
+    QCOMPARE(r.out.count("imported "), 9);  // 5 run files + 2 current logs + 2 pipeline timing files
+    QCOMPARE(r.out.count("1 pipeline run (benchscope-pipeline-v1)"), 2);
     QVERIFY(r.out.contains("skipped") && r.out.contains("README.md"));  // not a data file
     r = cli({"import", ws, kPaper + "/cpu.json"});
     QCOMPARE(r.code, 0);
