@@ -85,7 +85,8 @@ StageStats read_stage(const Reader& r, const json& value, const std::string& at,
 }  // namespace
 
 int PipelineJsonImporter::sniff(std::string_view head, std::string_view) const {
-  if (head.find("\"benchscope-pipeline-v1\"") != std::string_view::npos) return 100;
+  // Any version: a newer one is then refused as unsupported rather than as an unknown format.
+  if (head.find("\"benchscope-pipeline-v") != std::string_view::npos) return 100;
   if (head.find("\"stages\"") != std::string_view::npos && head.find("\"mean_s\"") != std::string_view::npos)
     return 40;
   return 0;
