@@ -111,6 +111,17 @@ class TestCliPipeline : public QObject {
     QVERIFY(r.out.contains("preprocess"));
   }
 
+  void opencl_backend() {
+    const Result r = cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "3", "--detector", "none", "--backend",
+                          "opencl", "--json"});
+    if (r.code == 1 && r.err.contains("OpenCL:")) QSKIP(r.err.constData());  // no OpenCL device on this machine
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(doc["backend"].toString(), QString("opencl"));
+    QVERIFY(doc["device"].toString().contains("(OpenCL)"));
+    QCOMPARE(doc["stages"].toObject()["preprocess"].toObject()["n"].toInt(), 3);
+  }
+
   void errors() {
     struct Case {
       QStringList args;
@@ -126,7 +137,8 @@ class TestCliPipeline : public QObject {
         {{"pipeline", raw_}, 2, "--lens"},
         {{"pipeline", "--lens", sidecar_}, 2, "at least one frame"},
         {{"pipeline", raw_, "--lens", sidecar_, "--backend", "tpu"}, 2, "--backend"},
-        {{"pipeline", raw_, "--lens", sidecar_, "--backend", "opencl"}, 1, "no opencl path"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--backend", "cuda"}, 1, "no cuda path"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--backend", "opencl", "--demosaic", "mhc"}, 2, "--demosaic bilinear"},
         {{"pipeline", raw_, "--lens", sidecar_, "--demosaic", "magic"}, 2, "--demosaic"},
         {{"pipeline", raw_, "--lens", sidecar_, "--policy", "never"}, 2, "--policy"},
         {{"pipeline", raw_, "--lens", sidecar_, "--frames", "0"}, 2, "--frames"},
