@@ -62,8 +62,10 @@ PipelineView::PipelineView(QWidget* parent)
   table_->verticalHeader()->hide();
   table_->setAlternatingRowColors(true);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  // Numbers keep their full width; the long device names give way (elided, whole in the tooltip).
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->horizontalHeader()->setSectionResizeMode(Device, QHeaderView::Stretch);
+  table_->setTextElideMode(Qt::ElideMiddle);
   summary_->setWordWrap(true);
   summary_->setTextFormat(Qt::RichText);
 
@@ -97,15 +99,15 @@ void PipelineView::fill() {
     const QString tip = QString::fromStdString(r.provenance);
     const bool rebuilt = r.origin == DataOrigin::Reconstructed;
     reconstructed += rebuilt;
-    table_->setItem(i, Stage, cell(QString::fromStdString(r.stage_label), nan, tip));
-    table_->item(i, Stage)->setData(kSortRole, QVariant());  // sort stages by name
+    // Stages sort in pipeline order (preprocessing, detection, end to end), not alphabetically.
+    table_->setItem(i, Stage, cell(QString::fromStdString(r.stage_label), pipeline_stage_order(r.stage), tip));
     table_->setItem(i, Platform, cell(QString::fromStdString(r.platform), nan, tip));
     table_->item(i, Platform)->setData(kSortRole, QVariant());
-    table_->setItem(i, Device, cell(QString::fromStdString(r.device + " (" + r.backend + ")"), nan, tip));
+    const QString device = QString::fromStdString(r.device + " (" + r.backend + ")");
+    table_->setItem(i, Device, cell(device, nan, device + "\n\n" + tip));
     table_->item(i, Device)->setData(kSortRole, QVariant());
     table_->setItem(i, Time, cell(QString::fromStdString(r.time_text()), r.mean_ms, tip));
-    table_->setItem(i, P95, cell(r.p95_ms ? QString::number(*r.p95_ms, 'f', 2) : QStringLiteral("–"),
-                                 r.p95_ms ? *r.p95_ms : nan, tip));
+    table_->setItem(i, P95, cell(QString::fromStdString(r.p95_text()), r.p95_ms ? *r.p95_ms : nan, tip));
     table_->setItem(i, StageRate, cell(fps_text(r.stage_fps), r.stage_fps, tip));
     table_->setItem(i, Throughput, cell(r.throughput_fps ? fps_text(*r.throughput_fps) : QStringLiteral("–"),
                                         r.throughput_fps ? *r.throughput_fps : nan, tip));

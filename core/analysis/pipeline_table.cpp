@@ -7,10 +7,6 @@
 namespace bs {
 namespace {
 
-int stage_order(const std::string& s) {
-  return s == pipeline_stage::kPreprocess ? 0 : s == pipeline_stage::kDetect ? 1 : s == pipeline_stage::kEndToEnd ? 2 : 3;
-}
-
 std::string stage_label(const std::string& s) {
   if (s == pipeline_stage::kPreprocess) return "Preprocessing (demosaic + reprojection)";
   if (s == pipeline_stage::kDetect) return "Detection";
@@ -18,10 +14,11 @@ std::string stage_label(const std::string& s) {
   return s;
 }
 
-// Three significant figures, like the paper's 6.21 ms and 0.57 s, without switching to exponents.
-std::string ms_text(double ms) {
+int decimals(double ms) { return ms >= 100 ? 0 : ms >= 10 ? 1 : 2; }
+
+std::string fixed(double v, int digits) {
   char b[32];
-  std::snprintf(b, sizeof b, ms >= 100 ? "%.0f" : ms >= 10 ? "%.1f" : "%.2f", ms);
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
   return b;
 }
 
@@ -38,9 +35,18 @@ std::string provenance_text(const PipelineRun& r) {
 
 }  // namespace
 
-std::string PipelineTableRow::time_text() const {
-  return ms_text(mean_ms) + " ± " + ms_text(sd_ms) + " ms (n = " + std::to_string(n) + ")";
+int pipeline_stage_order(const std::string& s) {
+  return s == pipeline_stage::kPreprocess ? 0 : s == pipeline_stage::kDetect ? 1 : s == pipeline_stage::kEndToEnd ? 2 : 3;
 }
+
+std::string format_ms(double ms) { return fixed(ms, decimals(ms)); }
+
+std::string PipelineTableRow::time_text() const {
+  const int d = decimals(mean_ms);
+  return fixed(mean_ms, d) + " ± " + fixed(sd_ms, d) + " ms (n = " + std::to_string(n) + ")";
+}
+
+std::string PipelineTableRow::p95_text() const { return p95_ms ? format_ms(*p95_ms) : "–"; }
 
 std::vector<PipelineTableRow> pipeline_table_rows(std::span<const PipelineRun> runs) {
   std::vector<PipelineTableRow> rows;
@@ -63,7 +69,7 @@ std::vector<PipelineTableRow> pipeline_table_rows(std::span<const PipelineRun> r
       rows.push_back(std::move(row));
     }
   std::stable_sort(rows.begin(), rows.end(), [](const PipelineTableRow& a, const PipelineTableRow& b) {
-    const int sa = stage_order(a.stage), sb = stage_order(b.stage);
+    const int sa = pipeline_stage_order(a.stage), sb = pipeline_stage_order(b.stage);
     return sa != sb ? sa < sb : a.platform < b.platform;
   });
   return rows;
@@ -78,7 +84,7 @@ ExportTable pipeline_table(std::span<const PipelineRun> runs) {
   for (const PipelineTableRow& r : pipeline_table_rows(runs)) {
     char fps[32];
     std::snprintf(fps, sizeof fps, "%.1f", r.stage_fps);
-    t.rows.push_back({r.stage_label, r.platform, r.time_text(), r.p95_ms ? ms_text(*r.p95_ms) : "–", fps,
+    t.rows.push_back({r.stage_label, r.platform, r.time_text(), r.p95_text(), fps,
                       std::string(to_string(r.origin))});
   }
   return t;

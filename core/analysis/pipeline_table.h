@@ -24,8 +24,14 @@ struct PipelineTableRow {
   std::optional<double> throughput_fps;   // of the whole run, when measured
   DataOrigin origin = DataOrigin::Unknown;
   std::string provenance;                 // one paragraph: origin, note, host, date, file
-  std::string time_text() const;          // "6.21 ± 0.99 ms (n = 500)"
+  std::string time_text() const;          // "6.21 ± 0.99 ms (n = 500)": SD to the mean's decimals
+  std::string p95_text() const;           // "8.10", "–" when unknown
 };
+
+// Three significant figures like the paper's 6.21 ms (0 to 2 decimals by magnitude, never exponents).
+std::string format_ms(double ms);
+// Position of a stage in the pipeline (preprocess 0, detect 1, end-to-end 2, others 3), for sorting.
+int pipeline_stage_order(const std::string& stage);
 
 // Rows ordered by stage (preprocessing, detection, end to end), then platform, as in the paper's text.
 std::vector<PipelineTableRow> pipeline_table_rows(std::span<const PipelineRun> runs);

@@ -6,6 +6,7 @@
 #include <QTableWidget>
 #include <QtTest>
 
+#include "analysis/pipeline_table.h"
 #include "importer.h"
 #include "pipeline_view.h"
 
@@ -74,12 +75,21 @@ class TestPipelineView : public QObject {
     QTableWidget* t = v.table();
     QCOMPARE(t->rowCount(), 7);
     t->sortByColumn(PipelineView::P95, Qt::AscendingOrder);
-    QCOMPARE(text(t, 0, PipelineView::P95), QString("5.10"));  // known p95s first, unknown last
+    QCOMPARE(text(t, 0, PipelineView::P95), QString("5.10"));
+    QCOMPARE(text(t, 0, PipelineView::Time), QString("4.20 ± 0.50 ms (n = 50)"));  // known p95s first, unknown last
     QCOMPARE(text(t, 6, PipelineView::P95), QString("–"));
     QCOMPARE(text(t, 0, PipelineView::Throughput), QString("4.25 fps"));
     QCOMPARE(text(t, 0, PipelineView::Data), QString("measured"));
     QVERIFY(t->item(0, PipelineView::Stage)->toolTip().contains("host vm-1"));
+    // Stages sort in pipeline order: preprocessing rows first, end to end last.
     t->sortByColumn(PipelineView::Stage, Qt::AscendingOrder);
+    QCOMPARE(text(t, 0, PipelineView::Stage), QString("Preprocessing (demosaic + reprojection)"));
+    QCOMPARE(text(t, 6, PipelineView::Stage), QString("End to end"));
+    QCOMPARE(text(t, 6, PipelineView::Time), QString("220 ± 30 ms (n = 50)"));
+    // The LaTeX export holds the same cells.
+    const std::string tex = bs::to_latex(bs::pipeline_table(runs));
+    QVERIFY(tex.find("6.21 $\\pm$ 0.99 ms (n = 500)") != std::string::npos);
+    QVERIFY(tex.find("reconstructed") != std::string::npos);
     v.show();
     QVERIFY(QTest::qWaitForWindowExposed(&v));
     const QString shot = BENCHSCOPE_BINARY_DIR "/pipeline-view.png";
