@@ -11,6 +11,7 @@
 #include "frame_raw.h"
 #include "google_benchmark_json.h"
 #include "importer.h"
+#include "pipeline_json.h"
 #include "power_csv.h"
 #include "run_json.h"
 #include "tegrastats.h"
@@ -21,6 +22,7 @@ namespace {
 std::vector<std::unique_ptr<Importer>> make_importers() {
   std::vector<std::unique_ptr<Importer>> list;
   list.push_back(std::make_unique<RunJsonImporter>());
+  list.push_back(std::make_unique<PipelineJsonImporter>());
   list.push_back(std::make_unique<GoogleBenchmarkJsonImporter>());
   list.push_back(std::make_unique<ClpeakTextImporter>());
   list.push_back(std::make_unique<PowerCsvImporter>());

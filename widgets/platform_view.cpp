@@ -151,9 +151,11 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   });
 }
 
-void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces) {
+void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces,
+                            std::vector<PipelineRun> pipelines) {
   runs_ = std::move(runs);
   traces_ = std::move(traces);
+  pipelines_ = pipeline_timings(pipelines);
   recompute();
 }
 
@@ -195,7 +197,7 @@ QString PlatformView::recommendation() const {
 }
 
 void PlatformView::recompute() {
-  rows_ = compare_platforms(runs_, traces_, {}, options());
+  rows_ = compare_platforms(runs_, traces_, pipelines_, options());
   verdicts_ = recommend(rows_, constraints());
   fill_table();
   const Constraints c = constraints();

@@ -22,7 +22,8 @@ class PlatformView : public QWidget {
   Q_OBJECT
  public:
   explicit PlatformView(QWidget* parent = nullptr);
-  void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces);
+  // Pipeline runs give the preprocessing and detection columns and, with a power log, energy per frame.
+  void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces, std::vector<PipelineRun> pipelines = {});
   QTableWidget* table() const { return table_; }
   QString recommendation() const;  // the recommended platform, empty when none
   void set_power_budget(std::optional<double> watts);
@@ -48,6 +49,7 @@ class PlatformView : public QWidget {
   QTableWidget* table_;
   std::vector<FlopsRun> runs_;
   std::vector<PowerTrace> traces_;
+  std::vector<PipelineTimings> pipelines_;
   std::vector<PlatformRow> rows_;
   std::vector<PlatformVerdict> verdicts_;
   QStringList empty_columns_;  // header texts of the columns hidden for lack of data

@@ -31,6 +31,8 @@ std::string summary(const ImportBatch& b) {
     s += std::string(s.empty() ? "" : ", ") + "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) + " " +
          (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " + std::to_string(f.bit_depth) +
          "-bit" + (f.synthetic ? " synthetic" : "") + (f.storage == FrameStorage::Copy ? " (copied)" : " (by reference)");
+  if (!b.pipeline_runs.empty())
+    s += ", " + std::to_string(b.pipeline_runs.size()) + (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
   return s + " (" + b.format + ")";
 }
 

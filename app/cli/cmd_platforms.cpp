@@ -26,6 +26,11 @@ void write_file(const std::string& path, const std::string& text) {
 }
 
 nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+// A stage's per-frame time: mean, SD (ms) and n; null when the platform has no pipeline run.
+nlohmann::json stage_json(const std::optional<Summary>& s) {
+  if (!s) return nullptr;
+  return {{"mean", s->mean}, {"sd", s->sd}, {"n", s->n}};
+}
 
 int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   std::set<std::string> values = platform_value_options();
@@ -39,7 +44,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   const bool constrained = p.constrained();
 
   const LoadedData data = load_inputs(args.positional, interrupt_token());
-  const auto rows = compare_platforms(data.runs, data.power_traces, {}, options);
+  const auto pipelines = pipeline_timings(data.pipeline_runs);
+  const auto rows = compare_platforms(data.runs, data.power_traces, pipelines, options);
   if (rows.empty()) throw std::runtime_error("no FLOPS runs or power logs to compare");
   const auto verdicts = recommend(rows, c);
   const ExportTable table = platform_table(rows, constrained ? std::span<const PlatformVerdict>(verdicts)
@@ -64,6 +70,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"mean_power_w", opt(r.mean_power_w)}, {"max_power_w", opt(r.max_power_w)},
                       {"gflops_per_watt_paper", opt(r.gflops_per_watt_paper)},
                       {"gflops_per_watt_mean_power", opt(r.gflops_per_watt_mean)},
+                      {"preprocess_ms", stage_json(r.preprocess_ms)}, {"detect_ms", stage_json(r.detect_ms)},
                       {"fps", opt(r.fps)}, {"energy_per_frame_j", opt(r.energy_per_frame_j)},
                       {"battery_runtime_h", opt(r.battery_runtime_h)}, {"frames_per_wh", opt(r.frames_per_wh)},
                       {"meets_constraints", verdicts[i].meets_all}, {"recommended", verdicts[i].recommended},

@@ -55,6 +55,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     for (auto& r : ws.runs()) data.runs.push_back(std::move(r.run));
     for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
     for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
+    for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
     return data;
   }
   for (const InputFile& in : expand_inputs(paths)) {
@@ -69,6 +70,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.runs.begin(), batch.runs.end(), std::back_inserter(data.runs));
     std::move(batch.result_sets.begin(), batch.result_sets.end(), std::back_inserter(data.result_sets));
     std::move(batch.power_traces.begin(), batch.power_traces.end(), std::back_inserter(data.power_traces));
+    std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
   }
   return data;
 }

@@ -29,6 +29,7 @@ struct LoadedData {
   std::vector<FlopsRun> runs;
   std::vector<ResultSet> result_sets;
   std::vector<PowerTrace> power_traces;
+  std::vector<PipelineRun> pipeline_runs;
 };
 // A single workspace argument is read from the workspace; otherwise every path is imported in memory.
 // Throws (ImportError, WorkspaceError) on the first bad file.

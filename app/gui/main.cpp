@@ -10,6 +10,7 @@
 #include "frame_triptych.h"
 #include "frames_view.h"
 #include "kernel_runner.h"
+#include "pipeline_view.h"
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "power_view.h"
@@ -92,6 +93,8 @@ int main(int argc, char** argv) {
       window.frames_view()->triptych()->inspect_at(2, QPointF(790.5, 300.5));  // the inspector at work
       save_png(window.frames_view(), dir + "/frames-triptych.png");
       window.frames_view()->export_figure(dir + "/figure3-triptych.png", nullptr);  // File > Export Figure 3
+      window.pipeline_view()->resize(window.flops_plot()->size());
+      save_png(window.pipeline_view(), dir + "/pipeline-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

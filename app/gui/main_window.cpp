@@ -23,6 +23,7 @@
 #include "peak_table.h"
 #include "power_view.h"
 #include <QTabWidget>
+#include "pipeline_view.h"
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "recent_files.h"
@@ -41,7 +42,8 @@ MainWindow::MainWindow(QWidget* parent)
       power_(new PowerView(this)),
       platforms_(new PlatformView(this)),
       roofline_(new RooflineView(this)),
-      frames_(new FramesView(this)) {
+      frames_(new FramesView(this)),
+      pipeline_(new PipelineView(this)) {
   setAcceptDrops(true);
   auto* views = new QTabWidget(this);
   views->addTab(plot_, tr("FLOPS"));
@@ -54,6 +56,8 @@ MainWindow::MainWindow(QWidget* parent)
   views->setTabToolTip(3, tr("Compute and memory ceilings per device, with the kernels placed on them"));
   views->addTab(frames_, tr("Frames"));
   views->setTabToolTip(4, tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
+  views->setTabToolTip(views->addTab(pipeline_, tr("Pipeline")),
+                       tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -158,7 +162,11 @@ void MainWindow::reload() {
   power_->set_data(traces, bs::peak_table(all), platform_colors);
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);
-  platforms_->set_data(all, std::move(plain_traces));
+  std::vector<PipelineRun> pipelines;
+  if (workspace_)
+    for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
+  pipeline_->set_data(pipelines);
+  platforms_->set_data(all, std::move(plain_traces), std::move(pipelines));
   std::vector<ResultSet> sets;
   std::map<std::pair<std::string, std::string>, int> device_colors;
   for (const StoredRun& r : runs_) device_colors[{r.run.platform, r.run.device}] = r.color_index;

@@ -19,6 +19,7 @@ class RecentFiles;
 class KernelRunner;
 class PowerView;
 class PlatformView;
+class PipelineView;
 class RooflineView;
 class FramesView;
 struct ImportReport;
@@ -45,6 +46,7 @@ class MainWindow : public QMainWindow {
   PlatformView* platform_view() const { return platforms_; }
   RooflineView* roofline_view() const { return roofline_; }
   FramesView* frames_view() const { return frames_; }
+  PipelineView* pipeline_view() const { return pipeline_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -84,6 +86,7 @@ class MainWindow : public QMainWindow {
   PlatformView* platforms_;
   RooflineView* roofline_;
   FramesView* frames_;
+  PipelineView* pipeline_;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 

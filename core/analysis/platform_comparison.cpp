@@ -2,6 +2,7 @@
 #include "analysis/platform_comparison.h"
 
 #include <algorithm>
+#include <limits>
 #include <cstdio>
 
 #include "analysis/power.h"
@@ -59,6 +60,43 @@ std::optional<double> energy_per_frame_j(const PowerTrace& trace, double from_s,
   const PowerStats s = power_stats(trace, {.supply_v = supply_v, .from_s = from_s, .to_s = to_s});
   if (!s.energy_j) return std::nullopt;
   return *s.energy_j / static_cast<double>(frames);
+}
+
+namespace {
+
+Summary stage_ms(const StageStats& s) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {s.n, s.mean_s * 1e3, s.sd_s * 1e3, s.min_s ? *s.min_s * 1e3 : nan, s.max_s ? *s.max_s * 1e3 : nan};
+}
+
+}  // namespace
+
+std::optional<PipelineTimings> pipeline_timings(const PipelineRun& run) {
+  const StageStats* pre = run.stage(pipeline_stage::kPreprocess);
+  if (!pre) return std::nullopt;
+  PipelineTimings t;
+  t.platform = run.platform;
+  t.preprocess_ms = stage_ms(*pre);
+  if (const StageStats* det = run.stage(pipeline_stage::kDetect)) t.detect_ms = stage_ms(*det);
+  t.frames = pre->n;
+  t.source = {run.provenance.source_file, run.provenance.origin,
+              run.device + " (" + run.backend + "), " + std::to_string(pre->n) + " frames" +
+                  (run.provenance.note.empty() ? std::string() : "; " + run.provenance.note)};
+  return t;
+}
+
+std::vector<PipelineTimings> pipeline_timings(std::span<const PipelineRun> runs) {
+  std::vector<PipelineTimings> out;
+  for (const PipelineRun& r : runs) {
+    auto t = pipeline_timings(r);
+    if (!t) continue;
+    const auto same = std::find_if(out.begin(), out.end(), [&](const PipelineTimings& p) { return p.platform == t->platform; });
+    if (same != out.end())
+      *same = std::move(*t);
+    else
+      out.push_back(std::move(*t));
+  }
+  return out;
 }
 
 std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::span<const PowerTrace> traces,

@@ -12,6 +12,7 @@
 
 #include "analysis/flops.h"
 #include "analysis/stats.h"
+#include "model/pipeline_run.h"
 #include "model/power_trace.h"
 
 namespace bs {
@@ -33,6 +34,14 @@ struct PipelineTimings {
   std::size_t frames = 0;                             // frames processed in the window
   CellSource source;
 };
+
+// A stored pipeline run (seconds) as the comparison's timings (milliseconds): preprocess and detect stages, with
+// min/max left NaN when the run does not know them (a published mean and SD). No time window: energy per frame
+// then comes from the platform's mean power x the frame time. nullopt when the run has no preprocess stage.
+std::optional<PipelineTimings> pipeline_timings(const PipelineRun& run);
+// One entry per platform: the last run of each platform in `runs` (runs come from the workspace in import order
+// within a platform, so a newer import replaces an older one).
+std::vector<PipelineTimings> pipeline_timings(std::span<const PipelineRun> runs);
 
 struct PlatformRow {
   std::string platform;

@@ -5,6 +5,7 @@
 
 #include "model/flops_run.h"
 #include "model/frame.h"
+#include "model/pipeline_run.h"
 #include "model/power_trace.h"
 
 namespace bs {
@@ -18,8 +19,11 @@ struct ImportBatch {
   std::vector<ResultSet> result_sets;
   std::vector<PowerTrace> power_traces;
   std::vector<Frame> frames;
+  std::vector<PipelineRun> pipeline_runs;
   std::vector<std::string> warnings;  // non-fatal, each naming file and place
-  bool empty() const { return runs.empty() && result_sets.empty() && power_traces.empty() && frames.empty(); }
+  bool empty() const {
+    return runs.empty() && result_sets.empty() && power_traces.empty() && frames.empty() && pipeline_runs.empty();
+  }
 };
 
 }  // namespace bs

@@ -118,8 +118,36 @@ void migrate_2_to_3(const sqlite::Db& db) {
   )sql");
 }
 
+// Version 3 -> 4: vision pipeline runs (paper section 4.2) and their per-stage statistics, in seconds. Statistics
+// a publication does not give (min, max, percentiles of a reconstructed run) are NULL, never invented.
+void migrate_3_to_4(const sqlite::Db& db) {
+  db.exec(R"sql(
+    CREATE TABLE IF NOT EXISTS pipeline_runs(
+      id INTEGER PRIMARY KEY,
+      import_id INTEGER NOT NULL REFERENCES imports(id) ON DELETE CASCADE,
+      platform TEXT NOT NULL,
+      device TEXT NOT NULL,
+      backend TEXT NOT NULL,
+      demosaic TEXT NOT NULL,
+      detector TEXT NOT NULL,
+      frame_width INTEGER NOT NULL CHECK(frame_width >= 0),
+      frame_height INTEGER NOT NULL CHECK(frame_height >= 0),
+      throughput_fps REAL,
+      provenance TEXT NOT NULL);
+    CREATE INDEX IF NOT EXISTS pipeline_runs_by_import ON pipeline_runs(import_id);
+    CREATE TABLE IF NOT EXISTS pipeline_stages(
+      run_id INTEGER NOT NULL REFERENCES pipeline_runs(id) ON DELETE CASCADE,
+      stage TEXT NOT NULL,
+      n INTEGER NOT NULL CHECK(n > 0),
+      mean_s REAL NOT NULL CHECK(mean_s >= 0),
+      sd_s REAL NOT NULL CHECK(sd_s >= 0),
+      min_s REAL, max_s REAL, p50_s REAL, p95_s REAL,
+      PRIMARY KEY(run_id, stage)) WITHOUT ROWID;
+  )sql");
+}
+
 using Migration = void (*)(const sqlite::Db&);
-constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3};
+constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

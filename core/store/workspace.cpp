@@ -324,6 +324,38 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
       frame_st.bind_null(17);
     frame_st.run();
   }
+  Statement pipe_st(db,
+                    "INSERT INTO pipeline_runs(import_id, platform, device, backend, demosaic, detector, frame_width, "
+                    "frame_height, throughput_fps, provenance) VALUES (?,?,?,?,?,?,?,?,?,?)");
+  Statement stage_st(db,
+                     "INSERT INTO pipeline_stages(run_id, stage, n, mean_s, sd_s, min_s, max_s, p50_s, p95_s) "
+                     "VALUES (?,?,?,?,?,?,?,?,?)");
+  for (const PipelineRun& p : batch.pipeline_runs) {
+    check();
+    pipe_st.bind(1, import_id)
+        .bind(2, std::string_view(p.platform))
+        .bind(3, std::string_view(p.device))
+        .bind(4, std::string_view(p.backend))
+        .bind(5, std::string_view(p.demosaic))
+        .bind(6, std::string_view(p.detector))
+        .bind(7, p.frame_width)
+        .bind(8, p.frame_height)
+        .bind(9, p.throughput_fps)
+        .bind(10, std::string_view(provenance_to_json(p.provenance, true).dump()))
+        .run();
+    const std::int64_t run_id = sqlite3_last_insert_rowid(db.get());
+    for (const StageStats& s : p.stages)
+      stage_st.bind(1, run_id)
+          .bind(2, std::string_view(s.stage))
+          .bind(3, static_cast<std::int64_t>(s.n))
+          .bind(4, s.mean_s)
+          .bind(5, s.sd_s)
+          .bind(6, s.min_s)
+          .bind(7, s.max_s)
+          .bind(8, s.p50_s)
+          .bind(9, s.p95_s)
+          .run();
+  }
   check();
   tx.commit();
   return import_id;
@@ -515,6 +547,52 @@ std::vector<std::uint8_t> Workspace::frame_pixels(std::int64_t frame_id) const {
   if (geometry.bit_depth > 8 && big != (std::endian::native == std::endian::big))
     for (std::size_t i = 0; i + 1 < pixels.size(); i += 2) std::swap(pixels[i], pixels[i + 1]);
   return pixels;
+}
+
+std::vector<StoredPipelineRun> Workspace::pipeline_runs() const {
+  std::vector<StoredPipelineRun> out;
+  std::map<std::int64_t, std::size_t> index;
+  Statement st(impl_->db,
+               "SELECT id, import_id, platform, device, backend, demosaic, detector, frame_width, frame_height, "
+               "throughput_fps, provenance FROM pipeline_runs ORDER BY platform, id");
+  while (st.step()) {
+    StoredPipelineRun s;
+    s.id = st.int64(0);
+    s.import_id = st.int64(1);
+    s.run.platform = st.text(2);
+    s.run.device = st.text(3);
+    s.run.backend = st.text(4);
+    s.run.demosaic = st.text(5);
+    s.run.detector = st.text(6);
+    s.run.frame_width = static_cast<int>(st.int64(7));
+    s.run.frame_height = static_cast<int>(st.int64(8));
+    s.run.throughput_fps = st.optional_real(9);
+    s.run.provenance = provenance_from_json(nlohmann::json::parse(st.text(10), nullptr, false));
+    index[s.id] = out.size();
+    out.push_back(std::move(s));
+  }
+  // Stages in pipeline order (preprocess, detect, end-to-end, then any other), not alphabetically.
+  Statement stages(impl_->db,
+                   "SELECT run_id, stage, n, mean_s, sd_s, min_s, max_s, p50_s, p95_s FROM pipeline_stages "
+                   "ORDER BY run_id, CASE stage WHEN 'preprocess' THEN 0 WHEN 'detect' THEN 1 "
+                   "WHEN 'end-to-end' THEN 2 ELSE 3 END, stage");
+  while (stages.step()) {
+    const auto it = index.find(stages.int64(0));
+    if (it == index.end()) continue;
+    out[it->second].run.stages.push_back({stages.text(1), static_cast<std::size_t>(stages.int64(2)), stages.real(3),
+                                          stages.real(4), stages.optional_real(5), stages.optional_real(6),
+                                          stages.optional_real(7), stages.optional_real(8)});
+  }
+  return out;
+}
+
+std::int64_t Workspace::add_pipeline_runs(const std::vector<PipelineRun>& runs, const std::string& label,
+                                          const std::string& hash) {
+  ImportBatch batch;
+  batch.source_path = label;
+  batch.format = "benchscope-pipeline-v1";
+  batch.pipeline_runs = runs;
+  return add_import(batch, hash);
 }
 
 void Workspace::save_as(const std::string& new_path) const {

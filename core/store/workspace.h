@@ -73,11 +73,17 @@ struct StoredFrame {
   Frame frame;
 };
 
+struct StoredPipelineRun {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  PipelineRun run;
+};
+
 // One SQLite file holds a whole workspace: schema version + migrations, foreign keys on, WAL journal, and one
 // transaction per import so a crash or a cancel leaves either all of an import or none of it.
 class Workspace {
  public:
-  static constexpr int kSchemaVersion = 3;  // 2: power traces, 3: frames
+  static constexpr int kSchemaVersion = 4;  // 2: power traces, 3: frames, 4: pipeline runs
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -107,6 +113,12 @@ class Workspace {
   // The pixels of a frame stored as a copy, in this host's byte order; empty for a frame kept by reference.
   // Throws WorkspaceError(Corrupt) when the BLOB's size does not match the recorded geometry.
   std::vector<std::uint8_t> frame_pixels(std::int64_t frame_id) const;
+  std::vector<StoredPipelineRun> pipeline_runs() const;  // ordered by platform, then id
+
+  // Stores runs produced in-process (benchscope-cli pipeline) as one import named `label`, identified by
+  // `content_hash` (of their serialised form) like a file; returns the import id.
+  std::int64_t add_pipeline_runs(const std::vector<PipelineRun>& runs, const std::string& label,
+                                 const std::string& content_hash);
 
   // Writes a consistent copy (VACUUM INTO). Refuses to overwrite an existing file.
   void save_as(const std::string& new_path) const;

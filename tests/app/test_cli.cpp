@@ -228,8 +228,9 @@ class TestCli : public QObject {
     const QString ws = dir.filePath("w.bsw");
     Result r = cli({"import", ws, kPaper});
     QCOMPARE(r.code, 0);
-    QCOMPARE(r.out.count("imported "), 8);  // 5 run files + 2 current logs + the synthetic capture (frames/)
+    QCOMPARE(r.out.count("imported "), 10);  // 5 run files + 2 current logs + 2 pipeline timing files + the capture
     QVERIFY2(r.out.contains("paper-capture.raw: frame 1280x1024 BGGR 8-bit synthetic"), r.out.constData());
+    QCOMPARE(r.out.count("1 pipeline run (benchscope-pipeline-v1)"), 2);
     QVERIFY(r.out.contains("skipped") && r.out.contains("README.md"));  // not a data file
     r = cli({"import", ws, kPaper + "/cpu.json"});
     QCOMPARE(r.code, 0);

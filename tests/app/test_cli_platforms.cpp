@@ -39,6 +39,18 @@ class TestCliPlatforms : public QObject {
     QCOMPARE(recommended(out), QString("NUC"));
     QCOMPARE(run_cli({"platforms", kPaper, "--budget", "10", "--json"}, &out), 0);
     QCOMPARE(recommended(out), QString("Jetson TX2"));
+    // The pipeline files give the stage times and, with the power logs, energy per frame = mean power x frame time.
+    for (const auto v : QJsonDocument::fromJson(out).object()["platforms"].toArray()) {
+      const QJsonObject p = v.toObject();
+      if (p["platform"] == "NUC") {
+        QCOMPARE(p["preprocess_ms"].toObject()["mean"].toDouble(), 6.21);
+        QCOMPARE(p["detect_ms"].toObject()["n"].toInt(), 500);
+        QCOMPARE(std::round(p["energy_per_frame_j"].toDouble() * 100) / 100, 7.14);  // 40.52 W x 176.21 ms
+      } else if (p["platform"] == "Jetson TX2") {
+        QCOMPARE(p["detect_ms"].toObject()["sd"].toDouble(), 1100.0);
+        QCOMPARE(std::round(p["energy_per_frame_j"].toDouble() * 100) / 100, 5.47);  // 9.48 W x 576.48 ms
+      }
+    }
     QCOMPARE(run_cli({"platforms", kPaper, "--budget", "10"}, &out), 0);
     QVERIFY2(out.contains("recommendation: Jetson TX2") && out.contains("-30.52 W"), out.constData());
     // 225 W of servos in parallel: neither lasts an hour.

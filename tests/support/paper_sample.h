@@ -18,6 +18,8 @@ inline PaperSample load_paper_sample() {
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
     const auto ext = e.path().extension();
+    // frames/ holds a raw capture and its sidecar: not FLOPS or power data.
+    if (e.path().parent_path().filename() == "frames") continue;
     if (e.is_regular_file() && (ext == ".json" || ext == ".csv")) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());  // a stable order, as an import of the folder gives

@@ -155,7 +155,7 @@ class TestMainWindow : public QObject {
     QVERIFY(done.wait(60000));
     QVERIFY(!controller.busy());
     const auto report = done.first().at(0).value<bs::ui::ImportReport>();
-    QCOMPARE(report.imported, 8);  // 5 run files + 2 current logs + the synthetic capture (frames/)
+    QCOMPARE(report.imported, 10);  // 5 run files + 2 current logs + 2 pipeline timing files + the synthetic capture
     QCOMPARE(report.failures.size(), 1);
     QVERIFY(report.failures[0].contains("bad.json") && report.failures[0].contains("truncated"));
     QVERIFY(report.skipped.size() >= 1);  // the folder's README is not a data file

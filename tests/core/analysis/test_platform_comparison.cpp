@@ -14,6 +14,7 @@ namespace {
 struct Paper {
   std::vector<bs::FlopsRun> runs;
   std::vector<bs::PowerTrace> traces;
+  std::vector<bs::PipelineRun> pipelines;
 };
 
 Paper load_paper() {
@@ -25,6 +26,7 @@ Paper load_paper() {
     auto batch = bs::import_file(e.path().string(), bs::CancelToken{});
     for (auto& r : batch.runs) p.runs.push_back(std::move(r));
     for (auto& t : batch.power_traces) p.traces.push_back(std::move(t));
+    for (auto& r : batch.pipeline_runs) p.pipelines.push_back(std::move(r));
   }
   return p;
 }
@@ -130,6 +132,64 @@ class TestPlatformComparison : public QObject {
     const auto v = bs::recommend(rows, {.min_fps = 60.0});
     QVERIFY(!v[0].meets_all);
     QCOMPARE(v[0].checks[0].margin, -10.0);
+  }
+
+  void stored_pipeline_run_gives_energy_per_frame() {
+    // A synthetic log at a constant 12.5 W and a pipeline run of 8 ms preprocessing + 152 ms detection (seconds,
+    // as stored): energy per frame = 12.5 W x 0.160 s = 2.0 J, fps = 1 / 0.160 s = 6.25.
+    bs::PowerTrace t;
+    t.platform = "robot";
+    t.label = "flat";
+    bs::PowerChannel ch{"power", bs::PowerQuantity::Power, {}};
+    for (int i = 0; i <= 50; ++i) {
+      t.time_s.push_back(i * 0.2);
+      ch.values.push_back(12.5);
+    }
+    t.channels.push_back(ch);
+    bs::PipelineRun run;
+    run.platform = "robot";
+    run.device = "CPU";
+    run.backend = "cpu";
+    run.stages = {{"preprocess", 40, 0.008, 0.001, {}, {}, {}, {}}, {"detect", 40, 0.152, 0.02, 0.1, 0.2, {}, {}}};
+    const auto timings = bs::pipeline_timings(std::vector<bs::PipelineRun>{run});
+    QCOMPARE(timings.size(), std::size_t{1});
+    QCOMPARE(timings[0].preprocess_ms.mean, 8.0);
+    QCOMPARE(timings[0].preprocess_ms.n, std::size_t{40});
+    QVERIFY(std::isnan(timings[0].preprocess_ms.min));  // unknown stays unknown
+    QCOMPARE(timings[0].detect_ms->min, 100.0);
+    const auto rows = bs::compare_platforms({}, std::vector<bs::PowerTrace>{t}, timings);
+    QCOMPARE(rows.size(), std::size_t{1});
+    QVERIFY(std::fabs(*rows[0].energy_per_frame_j - 12.5 * 0.160) < 1e-12);
+    QVERIFY(std::fabs(*rows[0].fps - 6.25) < 1e-12);
+    QVERIFY(std::fabs(*rows[0].frames_per_wh - 3600.0 / 2.0) < 1e-9);
+    // A run without a preprocessing stage gives no timings; a later run of a platform replaces an earlier one.
+    bs::PipelineRun detect_only = run;
+    detect_only.stages.erase(detect_only.stages.begin());
+    QVERIFY(!bs::pipeline_timings(detect_only));
+    bs::PipelineRun newer = run;
+    newer.stages[0].mean_s = 0.004;
+    const auto latest = bs::pipeline_timings(std::vector<bs::PipelineRun>{run, newer});
+    QCOMPARE(latest.size(), std::size_t{1});
+    QCOMPARE(latest[0].preprocess_ms.mean, 4.0);
+  }
+
+  void paper_pipeline_timings_and_energy_per_frame() {
+    const Paper p = load_paper();
+    QCOMPARE(p.pipelines.size(), std::size_t{2});
+    const auto rows = bs::compare_platforms(p.runs, p.traces, bs::pipeline_timings(p.pipelines));
+    const auto& nuc = row(rows, "NUC");
+    const auto& jetson = row(rows, "Jetson TX2");
+    QCOMPARE(round2(nuc.preprocess_ms->mean), 6.21);
+    QCOMPARE(round2(nuc.preprocess_ms->sd), 0.99);
+    QCOMPARE(round2(nuc.detect_ms->mean), 170.0);
+    QCOMPARE(round2(jetson.preprocess_ms->mean), 6.48);
+    QCOMPARE(round2(jetson.detect_ms->sd), 1100.0);
+    // Energy per frame = mean power x (preprocessing + detection): 40.52 W x 176.21 ms and 9.48 W x 576.48 ms.
+    QVERIFY(std::fabs(*nuc.energy_per_frame_j - *nuc.mean_power_w * 0.17621) < 1e-12);
+    QVERIFY(std::fabs(*jetson.energy_per_frame_j - *jetson.mean_power_w * 0.57648) < 1e-12);
+    QCOMPARE(round2(*nuc.energy_per_frame_j), 7.14);
+    QCOMPARE(round2(*jetson.energy_per_frame_j), 5.47);
+    QCOMPARE(nuc.sources.at(bs::column::kPipeline).origin, bs::DataOrigin::Reconstructed);
   }
 };
 

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Pipeline tab on the paper's sample data: the paper's four stage times with SD and n, numeric sorting,
+// provenance in the tooltips, reconstructed rows marked; and a measured run beside them. Saves a screenshot.
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableWidget>
+#include <QtTest>
+
+#include "analysis/pipeline_table.h"
+#include "importer.h"
+#include "pipeline_view.h"
+
+using bs::ui::PipelineView;
+
+namespace {
+
+std::vector<bs::PipelineRun> paper_runs() {
+  std::vector<bs::PipelineRun> runs;
+  for (const char* f : {"pipeline-nuc.json", "pipeline-jetson.json"})
+    for (auto& r : bs::import_file(std::string(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/") + f, bs::CancelToken{})
+                       .pipeline_runs)
+      runs.push_back(std::move(r));
+  return runs;
+}
+
+QString text(const QTableWidget* t, int row, int col) { return t->item(row, col)->text(); }
+
+}  // namespace
+
+class TestPipelineView : public QObject {
+  Q_OBJECT
+ private slots:
+  void paper_table() {
+    PipelineView v;
+    v.resize(1200, 320);
+    v.set_data(paper_runs());
+    const QTableWidget* t = v.table();
+    QCOMPARE(t->rowCount(), 4);
+    // Stage order, then platform: preprocessing Jetson, NUC; detection Jetson, NUC.
+    QCOMPARE(text(t, 0, PipelineView::Platform), QString("Jetson TX2"));
+    QCOMPARE(text(t, 0, PipelineView::Time), QString("6.48 ± 2.43 ms (n = 500)"));
+    QCOMPARE(text(t, 1, PipelineView::Time), QString("6.21 ± 0.99 ms (n = 500)"));
+    QCOMPARE(text(t, 2, PipelineView::Time), QString("570 ± 1100 ms (n = 500)"));
+    QCOMPARE(text(t, 3, PipelineView::Time), QString("170 ± 190 ms (n = 500)"));
+    QCOMPARE(text(t, 3, PipelineView::StageRate), QString("5.88 fps"));  // 1 / 0.17 s
+    QCOMPARE(text(t, 3, PipelineView::P95), QString("–"));               // not published
+    QCOMPARE(text(t, 3, PipelineView::Data), QString("reconstructed"));
+    QVERIFY(t->item(3, PipelineView::Time)->toolTip().contains("reconstructed from the paper's reported figures"));
+    QVERIFY(t->item(3, PipelineView::Time)->toolTip().contains("pipeline-nuc.json"));
+    // Sorted by time numerically (text order would put "170" before "6.21").
+    v.table()->sortByColumn(PipelineView::Time, Qt::AscendingOrder);
+    QCOMPARE(text(t, 0, PipelineView::Time), QString("6.21 ± 0.99 ms (n = 500)"));
+    QCOMPARE(text(t, 3, PipelineView::Time), QString("570 ± 1100 ms (n = 500)"));
+    v.table()->sortByColumn(PipelineView::StageRate, Qt::DescendingOrder);
+    QCOMPARE(text(t, 0, PipelineView::Platform), QString("NUC"));
+    QCOMPARE(text(t, 0, PipelineView::Stage), QString("Preprocessing (demosaic + reprojection)"));
+  }
+
+  void measured_run_beside_the_paper() {
+    auto runs = paper_runs();
+    bs::PipelineRun m;
+    m.platform = "this host";
+    m.device = "CPU (2 threads)";
+    m.backend = "cpu";
+    m.throughput_fps = 4.25;
+    m.stages = {{"preprocess", 50, 0.0042, 0.0005, 0.0035, 0.007, 0.0041, 0.0051},
+                {"detect", 50, 0.21, 0.03, 0.15, 0.3, 0.2, 0.26},
+                {"end-to-end", 50, 0.22, 0.03, 0.16, 0.31, 0.21, 0.27}};
+    m.provenance.origin = bs::DataOrigin::Measured;
+    m.provenance.host = "vm-1";
+    runs.push_back(m);
+    PipelineView v;
+    v.resize(1400, 360);
+    v.set_data(runs);
+    QTableWidget* t = v.table();
+    QCOMPARE(t->rowCount(), 7);
+    t->sortByColumn(PipelineView::P95, Qt::AscendingOrder);
+    QCOMPARE(text(t, 0, PipelineView::P95), QString("5.10"));
+    QCOMPARE(text(t, 0, PipelineView::Time), QString("4.20 ± 0.50 ms (n = 50)"));  // known p95s first, unknown last
+    QCOMPARE(text(t, 6, PipelineView::P95), QString("–"));
+    QCOMPARE(text(t, 0, PipelineView::Throughput), QString("4.25 fps"));
+    QCOMPARE(text(t, 0, PipelineView::Data), QString("measured"));
+    QVERIFY(t->item(0, PipelineView::Stage)->toolTip().contains("host vm-1"));
+    // Stages sort in pipeline order: preprocessing rows first, end to end last.
+    t->sortByColumn(PipelineView::Stage, Qt::AscendingOrder);
+    QCOMPARE(text(t, 0, PipelineView::Stage), QString("Preprocessing (demosaic + reprojection)"));
+    QCOMPARE(text(t, 6, PipelineView::Stage), QString("End to end"));
+    QCOMPARE(text(t, 6, PipelineView::Time), QString("220 ± 30 ms (n = 50)"));
+    // The LaTeX export holds the same cells.
+    const std::string tex = bs::to_latex(bs::pipeline_table(runs));
+    QVERIFY(tex.find("6.21 $\\pm$ 0.99 ms (n = 500)") != std::string::npos);
+    QVERIFY(tex.find("reconstructed") != std::string::npos);
+    v.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&v));
+    const QString shot = BENCHSCOPE_BINARY_DIR "/pipeline-view.png";
+    QVERIFY(v.grab().save(shot));
+  }
+
+  void empty_workspace_says_how_to_get_data() {
+    PipelineView v;
+    v.set_data({});
+    QCOMPARE(v.table()->rowCount(), 0);
+    QVERIFY(v.findChild<QLabel*>()->text().contains("benchscope-cli pipeline"));
+  }
+};
+
+QTEST_MAIN(TestPipelineView)
+#include "test_pipeline_view.moc"

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pipeline_view.h"
+
+#include <QFile>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <cmath>
+#include <limits>
+
+#include "analysis/pipeline_table.h"
+
+namespace bs::ui {
+namespace {
+
+constexpr int kSortRole = Qt::UserRole + 1;
+
+// Sorts by the number behind the text (times in ms, rates in fps); cells without one sort by their text.
+class NumericItem : public QTableWidgetItem {
+ public:
+  using QTableWidgetItem::QTableWidgetItem;
+  bool operator<(const QTableWidgetItem& other) const override {
+    const QVariant a = data(kSortRole), b = other.data(kSortRole);
+    if (!a.isValid() || !b.isValid()) return QTableWidgetItem::operator<(other);
+    const double x = a.toDouble(), y = b.toDouble();
+    if (std::isnan(x) != std::isnan(y)) return std::isnan(y);  // unknown after known
+    return x < y;
+  }
+};
+
+QTableWidgetItem* cell(const QString& text, double sort_value, const QString& tip) {
+  auto* item = new NumericItem(text);
+  item->setData(kSortRole, sort_value);
+  item->setToolTip(tip);
+  item->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled);
+  return item;
+}
+
+QString fps_text(double fps) { return QString::number(fps, 'f', fps >= 100 ? 0 : fps >= 10 ? 1 : 2) + " fps"; }
+
+}  // namespace
+
+PipelineView::PipelineView(QWidget* parent)
+    : QWidget(parent), summary_(new QLabel(this)), table_(new QTableWidget(0, ColumnCount, this)) {
+  table_->setHorizontalHeaderLabels({tr("Stage"), tr("Platform"), tr("Device (backend)"),
+                                     tr("Time, mean ± SD (n)"), tr("p95 (ms)"), tr("Stage rate (fps)"),
+                                     tr("Pipeline throughput (fps)"), tr("Data")});
+  table_->horizontalHeaderItem(Time)->setToolTip(tr("Per-frame time of the stage in milliseconds: mean ± sample SD "
+                                                    "over n frames"));
+  table_->horizontalHeaderItem(StageRate)->setToolTip(tr("1 / mean time: the frame rate this stage alone keeps up with"));
+  table_->horizontalHeaderItem(Throughput)->setToolTip(
+      tr("Frames through the whole concurrent pipeline per second of wall time (measured runs only)"));
+  table_->horizontalHeaderItem(P95)->setToolTip(tr("95th percentile of the per-frame time (measured runs only)"));
+  // No sort column until the user picks one: rows keep core's order (stage, then platform), as in the paper.
+  table_->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder);
+  table_->setSortingEnabled(true);
+  table_->verticalHeader()->hide();
+  table_->setAlternatingRowColors(true);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  // Numbers keep their full width; the long device names give way (elided, whole in the tooltip).
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(Device, QHeaderView::Stretch);
+  table_->setTextElideMode(Qt::ElideMiddle);
+  summary_->setWordWrap(true);
+  summary_->setTextFormat(Qt::RichText);
+
+  auto* latex = new QPushButton(tr("Export LaTeX…"), this);
+  auto* csv = new QPushButton(tr("Export CSV…"), this);
+  connect(latex, &QPushButton::clicked, this, [this] { export_table(true); });
+  connect(csv, &QPushButton::clicked, this, [this] { export_table(false); });
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(summary_, 1);
+  buttons->addWidget(latex);
+  buttons->addWidget(csv);
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(buttons);
+  layout->addWidget(table_, 1);
+  fill();
+}
+
+void PipelineView::set_data(std::vector<PipelineRun> runs) {
+  runs_ = std::move(runs);
+  fill();
+}
+
+void PipelineView::fill() {
+  const auto rows = pipeline_table_rows(runs_);
+  table_->setSortingEnabled(false);
+  table_->setRowCount(static_cast<int>(rows.size()));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  int reconstructed = 0;
+  for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
+    const PipelineTableRow& r = rows[static_cast<std::size_t>(i)];
+    const QString tip = QString::fromStdString(r.provenance);
+    const bool rebuilt = r.origin == DataOrigin::Reconstructed;
+    reconstructed += rebuilt;
+    // Stages sort in pipeline order (preprocessing, detection, end to end), not alphabetically.
+    table_->setItem(i, Stage, cell(QString::fromStdString(r.stage_label), pipeline_stage_order(r.stage), tip));
+    table_->setItem(i, Platform, cell(QString::fromStdString(r.platform), nan, tip));
+    table_->item(i, Platform)->setData(kSortRole, QVariant());
+    const QString device = QString::fromStdString(r.device + " (" + r.backend + ")");
+    table_->setItem(i, Device, cell(device, nan, device + "\n\n" + tip));
+    table_->item(i, Device)->setData(kSortRole, QVariant());
+    table_->setItem(i, Time, cell(QString::fromStdString(r.time_text()), r.mean_ms, tip));
+    table_->setItem(i, P95, cell(QString::fromStdString(r.p95_text()), r.p95_ms ? *r.p95_ms : nan, tip));
+    table_->setItem(i, StageRate, cell(fps_text(r.stage_fps), r.stage_fps, tip));
+    table_->setItem(i, Throughput, cell(r.throughput_fps ? fps_text(*r.throughput_fps) : QStringLiteral("–"),
+                                        r.throughput_fps ? *r.throughput_fps : nan, tip));
+    auto* origin = cell(rebuilt ? tr("reconstructed") : QString::fromStdString(std::string(to_string(r.origin))), nan, tip);
+    origin->setData(kSortRole, QVariant());
+    if (rebuilt) origin->setForeground(QColor(0x9a, 0x5b, 0x00));  // never passes for a measurement
+    table_->setItem(i, Data, origin);
+  }
+  table_->setSortingEnabled(true);
+  if (rows.empty())
+    summary_->setText(tr("No pipeline runs yet: import pipeline JSON (sample_data/paper-2018/pipeline-*.json) or "
+                         "run <code>benchscope-cli pipeline FRAME --lens LENS.json --workspace WS</code>."));
+  else
+    summary_->setText(tr("%n stage timing(s) from %1 run(s), %2 of them reconstructed from published figures (hover a row "
+                         "for its provenance). Times are per frame; stages run concurrently, one thread each.",
+                         nullptr, static_cast<int>(rows.size()))
+                          .arg(runs_.size())
+                          .arg(reconstructed));
+}
+
+void PipelineView::export_table(bool latex) {
+  const QString path = QFileDialog::getSaveFileName(this, latex ? tr("Export LaTeX table") : tr("Export CSV table"),
+                                                    latex ? "pipeline.tex" : "pipeline.csv",
+                                                    latex ? tr("LaTeX (*.tex)") : tr("CSV (*.csv)"));
+  if (path.isEmpty()) return;
+  const ExportTable t = pipeline_table(runs_);
+  const std::string text = latex ? to_latex(t) : to_csv(t);
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(text.data(), static_cast<qint64>(text.size())) < 0)
+    QMessageBox::warning(this, tr("Export"), tr("Cannot write %1: %2").arg(path, f.errorString()));
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QWidget>
+#include <vector>
+
+#include "model/pipeline_run.h"
+
+class QLabel;
+class QTableWidget;
+
+namespace bs::ui {
+
+// The paper's pipeline timings as a table: one row per (stage, platform) with mean ± SD (n) in ms, p95, the rate
+// the stage alone sustains and the run's measured throughput; sortable by any column (numerically), each row's
+// provenance (measured on which host, or reconstructed from the paper) in its tooltip. The rows come from core
+// (pipeline_table_rows) so the view and the exported tables agree.
+class PipelineView : public QWidget {
+  Q_OBJECT
+ public:
+  enum Column { Stage, Platform, Device, Time, P95, StageRate, Throughput, Data, ColumnCount };
+  explicit PipelineView(QWidget* parent = nullptr);
+  void set_data(std::vector<PipelineRun> runs);
+  QTableWidget* table() const { return table_; }
+
+ private:
+  void fill();
+  void export_table(bool latex);
+
+  QLabel* summary_;
+  QTableWidget* table_;
+  std::vector<PipelineRun> runs_;
+};
+
+}  // namespace bs::ui
