@@ -92,7 +92,7 @@ BatteryView::BatteryView(QWidget* parent)
   box_layout->addLayout(buttons);
   box_layout->addWidget(error_);
   box_layout->addStretch(1);
-  box->setMaximumWidth(420);
+  box->setMaximumWidth(470);
 
   table_->setColumnCount(6);
   table_->setHorizontalHeaderLabels({tr("Platform"), tr("Computer mean power (W)"), tr("Total mean load (W)"),

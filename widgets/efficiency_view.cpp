@@ -46,7 +46,7 @@ EfficiencyView::EfficiencyView(QWidget* parent)
   plot_->yAxis->setLabel(tr("Efficiency (GFLOPS/W)"));
   plot_->xAxis->setLabel(tr("Platform"));
   plot_->legend->setVisible(true);
-  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
 
   auto* split = new QSplitter(Qt::Vertical, this);
   split->addWidget(table_);
@@ -142,7 +142,7 @@ void EfficiencyView::fill_plot() {
     }
   }
   plot_->xAxis->setRange(0.4, n + 0.6);
-  plot_->yAxis->setRange(0, top > 0 ? top * 1.15 : 1);
+  plot_->yAxis->setRange(0, top > 0 ? top * 1.3 : 1);  // room for the value labels and the legend
   plot_->replot();
 }
 

@@ -109,7 +109,7 @@ void PowerView::rescale() {
     if (!traces_[i].trace.time_s.empty()) max_t = std::max(max_t, traces_[i].trace.time_s.back());
     for (double v : shown(i)) max_v = std::max(max_v, v);
   }
-  plot_->yAxis->setRange(0, max_v > 0 ? max_v * 1.1 : 1);
+  plot_->yAxis->setRange(0, max_v > 0 ? max_v * 1.25 : 1);  // headroom: the legend sits above the traces
   const QCPRange before = plot_->xAxis->range();
   plot_->xAxis->setRange(0, max_t > 0 ? max_t : 1);
   if (before == plot_->xAxis->range()) {  // no rangeChanged signal: redraw here

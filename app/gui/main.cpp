@@ -11,6 +11,8 @@
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "power_view.h"
+#include "efficiency_view.h"
+#include "battery_view.h"
 #include "main_window.h"
 #include "peak_table.h"
 #include "workspace_tree.h"
@@ -85,6 +87,10 @@ int main(int argc, char** argv) {
       save_png(window.platform_view(), dir + "/platform-view.png");
       window.roofline_view()->resize(window.flops_plot()->size());
       save_png(window.roofline_view(), dir + "/roofline-view.png");
+      window.efficiency_view()->resize(window.flops_plot()->size());
+      save_png(window.efficiency_view(), dir + "/efficiency-view.png");
+      window.battery_view()->resize(window.flops_plot()->size());
+      save_png(window.battery_view(), dir + "/battery-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

@@ -25,6 +25,8 @@
 #include <QTabWidget>
 #include "platform_view.h"
 #include "roofline_view.h"
+#include "efficiency_view.h"
+#include "battery_view.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
 
@@ -39,7 +41,9 @@ MainWindow::MainWindow(QWidget* parent)
       runner_(new KernelRunner(this)),
       power_(new PowerView(this)),
       platforms_(new PlatformView(this)),
-      roofline_(new RooflineView(this)) {
+      roofline_(new RooflineView(this)),
+      efficiency_(new EfficiencyView(this)),
+      battery_(new BatteryView(this)) {
   setAcceptDrops(true);
   auto* views = new QTabWidget(this);
   views->addTab(plot_, tr("FLOPS"));
@@ -50,6 +54,8 @@ MainWindow::MainWindow(QWidget* parent)
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
   views->addTab(roofline_, tr("Roofline"));
   views->setTabToolTip(3, tr("Compute and memory ceilings per device, with the kernels placed on them"));
+  views->setTabToolTip(views->addTab(efficiency_, tr("Efficiency")), tr("GFLOPS/W per platform: the paper's and at mean power"));
+  views->setTabToolTip(views->addTab(battery_, tr("Battery")), tr("Battery life per platform, presets saved in the workspace"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -154,6 +160,9 @@ void MainWindow::reload() {
   power_->set_data(traces, bs::peak_table(all), platform_colors);
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);
+  efficiency_->set_data(all, plain_traces);
+  battery_->set_workspace(workspace_.get());
+  battery_->set_data(plain_traces, platform_colors);
   platforms_->set_data(all, std::move(plain_traces));
   std::vector<ResultSet> sets;
   std::map<std::pair<std::string, std::string>, int> device_colors;

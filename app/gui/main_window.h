@@ -19,6 +19,8 @@ class KernelRunner;
 class PowerView;
 class PlatformView;
 class RooflineView;
+class EfficiencyView;
+class BatteryView;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -42,6 +44,8 @@ class MainWindow : public QMainWindow {
   PowerView* power_view() const { return power_; }
   PlatformView* platform_view() const { return platforms_; }
   RooflineView* roofline_view() const { return roofline_; }
+  EfficiencyView* efficiency_view() const { return efficiency_; }
+  BatteryView* battery_view() const { return battery_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -74,6 +78,8 @@ class MainWindow : public QMainWindow {
   PowerView* power_;
   PlatformView* platforms_;
   RooflineView* roofline_;
+  EfficiencyView* efficiency_;
+  BatteryView* battery_;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 
