@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power_view.h"
 
+#include <QComboBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -8,6 +10,7 @@
 #include <algorithm>
 #include <qcustomplot.h>
 
+#include "analysis/decimate.h"
 #include "analysis/power.h"
 #include "device_palette.h"
 
@@ -22,24 +25,27 @@ QString platform_name(const PowerTrace& t) {
 
 }  // namespace
 
-PowerView::PowerView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)), table_(new QTableWidget(this)) {
+PowerView::PowerView(QWidget* parent)
+    : QWidget(parent), quantity_box_(new QComboBox(this)), plot_(new QCustomPlot(this)), table_(new QTableWidget(this)) {
+  quantity_box_->addItem(tr("Current (A)"));
+  quantity_box_->addItem(tr("Power (W)"));
+  quantity_box_->setToolTip(tr("Supply current as in the paper's figure 4, or power"));
+  connect(quantity_box_, &QComboBox::currentIndexChanged, this,
+          [this](int i) { set_quantity(i == 0 ? Quantity::Current : Quantity::Power); });
   auto* hint = new QLabel(tr("Zoom (wheel) or pan (drag) the time axis to choose the range the table summarises; "
                               "double-click shows the whole log"), this);
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   plot_->axisRect()->setRangeZoom(Qt::Horizontal);
   plot_->axisRect()->setRangeDrag(Qt::Horizontal);
   plot_->xAxis->setLabel(tr("Time (s)"));
-  plot_->yAxis->setLabel(tr("Power (W)"));
+  plot_->yAxis->setLabel(tr("Current (A)"));
   plot_->legend->setVisible(true);
   plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
   connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] {
     redraw_visible();
     update_table();
   });
-  connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] {
-    plot_->rescaleAxes();
-    plot_->replot();
-  });
+  connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { rescale(); });
   table_->setColumnCount(8);
   table_->setHorizontalHeaderLabels({tr("Platform"), tr("Samples"), tr("Current (A)"), tr("Power (W)"),
                                      tr("Max power (W)"), tr("Energy (J)"), tr("GFLOPS/W (paper)"),
@@ -51,7 +57,11 @@ PowerView::PowerView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(t
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
-  layout->addWidget(hint);
+  auto* top = new QHBoxLayout;
+  top->addWidget(new QLabel(tr("Plot:"), this));
+  top->addWidget(quantity_box_);
+  top->addWidget(hint, 1);
+  layout->addLayout(top);
   layout->addWidget(plot_, 3);
   layout->addWidget(table_, 1);
 }
@@ -61,59 +71,66 @@ void PowerView::set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakR
   traces_ = std::move(traces);
   peaks_ = std::move(peaks);
   power_.clear();
+  current_.clear();
   plot_->clearGraphs();
   for (const StoredPowerTrace& s : traces_) {
     power_.push_back(power_series(s.trace));
+    current_.push_back(current_series(s.trace));
     QCPGraph* g = plot_->addGraph();
     int color = static_cast<int>(plot_->graphCount()) + 7;
     for (const auto& [platform, index] : colors)
       if (platform == s.trace.platform) color = index;
     g->setPen(QPen(device_color(color), 1));
-    g->setName(platform_name(s.trace) + (power_.back().empty() ? tr(" (power unknown: no supply voltage)") : QString()));
   }
-  plot_->rescaleAxes();
-  double max_t = 0, max_p = 0;
+  set_quantity(quantity_);
+}
+
+const std::vector<double>& PowerView::shown(std::size_t trace) const {
+  return quantity_ == Quantity::Current ? current_[trace] : power_[trace];
+}
+
+void PowerView::set_quantity(Quantity q) {
+  quantity_ = q;
+  const bool current = q == Quantity::Current;
+  const QSignalBlocker block(quantity_box_);
+  quantity_box_->setCurrentIndex(current ? 0 : 1);
+  plot_->yAxis->setLabel(current ? tr("Current (A)") : tr("Power (W)"));
+  for (std::size_t i = 0; i < traces_.size() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
+    const QString missing = current ? tr(" (no current channel)") : tr(" (power unknown: no supply voltage)");
+    plot_->graph(static_cast<int>(i))->setName(platform_name(traces_[i].trace) + (shown(i).empty() ? missing : QString()));
+  }
+  rescale();
+}
+
+void PowerView::rescale() {
+  // Every log on one time axis from its own start (t = 0 s), so the platforms line up as in the paper's figure 4.
+  double max_t = 0, max_v = 0;
   for (std::size_t i = 0; i < traces_.size(); ++i) {
     if (!traces_[i].trace.time_s.empty()) max_t = std::max(max_t, traces_[i].trace.time_s.back());
-    for (double p : power_[i]) max_p = std::max(max_p, p);
+    for (double v : shown(i)) max_v = std::max(max_v, v);
   }
+  plot_->yAxis->setRange(0, max_v > 0 ? max_v * 1.25 : 1);  // headroom: the legend sits above the traces
+  const QCPRange before = plot_->xAxis->range();
   plot_->xAxis->setRange(0, max_t > 0 ? max_t : 1);
-  plot_->yAxis->setRange(0, max_p > 0 ? max_p * 1.1 : 1);
-  redraw_visible();
-  update_table();
+  if (before == plot_->xAxis->range()) {  // no rangeChanged signal: redraw here
+    redraw_visible();
+    update_table();
+  }
 }
 
 void PowerView::redraw_visible() {
   // Min/max per pixel column of the visible range: a 10-million-sample trace stays a few thousand points.
   const QCPRange range = plot_->xAxis->range();
-  const int columns = std::max(200, plot_->axisRect()->width());
+  const auto columns = static_cast<std::size_t>(std::max(200, plot_->axisRect()->width()));
   for (std::size_t i = 0; i < traces_.size() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
-    const auto& t = traces_[i].trace.time_s;
-    const auto& p = power_[i];
-    QVector<double> keys, values;
-    if (!p.empty()) {
-      const auto first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), range.lower) - t.begin());
-      const auto last = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), range.upper) - t.begin());
-      const std::size_t lo = first > 0 ? first - 1 : 0, hi = std::min(last + 1, t.size());
-      if (hi - lo <= static_cast<std::size_t>(2 * columns)) {
-        for (std::size_t k = lo; k < hi; ++k) keys << t[k], values << p[k];
-      } else {
-        const double width = (range.upper - range.lower) / columns;
-        std::size_t k = lo;
-        for (int c = 0; c < columns && k < hi; ++c) {
-          const double end = range.lower + (c + 1) * width;
-          double mn = p[k], mx = p[k], t_mn = t[k], t_mx = t[k];
-          for (; k < hi && t[k] < end; ++k) {
-            if (p[k] < mn) mn = p[k], t_mn = t[k];
-            if (p[k] > mx) mx = p[k], t_mx = t[k];
-          }
-          // Keep the order in time so the line goes through both extremes of the column.
-          if (t_mn <= t_mx) keys << t_mn << t_mx, values << mn << mx;
-          else keys << t_mx << t_mn, values << mx << mn;
-        }
-      }
+    const std::vector<double>& values = shown(i);
+    QVector<double> keys, vals;
+    if (!values.empty()) {
+      const DecimatedSeries d = decimate_min_max(traces_[i].trace.time_s, values, range.lower, range.upper, columns);
+      keys = QVector<double>(d.t.begin(), d.t.end());
+      vals = QVector<double>(d.v.begin(), d.v.end());
     }
-    plot_->graph(static_cast<int>(i))->setData(keys, values, true);
+    plot_->graph(static_cast<int>(i))->setData(keys, vals, true);
   }
   plot_->replot();
 }

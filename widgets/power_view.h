@@ -6,14 +6,16 @@
 #include "analysis/flops.h"
 #include "store/workspace.h"
 
+class QComboBox;
 class QCustomPlot;
 class QTableWidget;
 
 namespace bs::ui {
 
-// Power (W) against time for the workspace's current/power logs, and a table of statistics for the time range in
-// view (zoom or pan to choose it): mean ± SD current and power, max, energy, GFLOPS/W as the paper defines it and
-// battery life with the paper's battery. Long traces are drawn as min/max per pixel column of the visible range.
+// Supply current (A, the paper's figure 4) or power (W) against time for the workspace's current/power logs, all
+// on one time axis from each log's start, and a table of statistics for the time range in view (zoom or pan to
+// choose it): mean ± SD current and power, max, energy, GFLOPS/W as the paper defines it and battery life with the
+// paper's battery. Long traces are drawn as min/max per pixel column of the visible range (analysis/decimate.h).
 class PowerView : public QWidget {
   Q_OBJECT
  public:
@@ -23,14 +25,22 @@ class PowerView : public QWidget {
   int trace_count() const { return static_cast<int>(traces_.size()); }
   QTableWidget* table() const { return table_; }
   QCustomPlot* plot() const { return plot_; }
+  enum class Quantity { Current, Power };
+  void set_quantity(Quantity q);
+  Quantity quantity() const { return quantity_; }
 
  private:
   void redraw_visible();
   void update_table();
+  void rescale();
+  const std::vector<double>& shown(std::size_t trace) const;
+  QComboBox* quantity_box_;
   QCustomPlot* plot_;
   QTableWidget* table_;
   std::vector<StoredPowerTrace> traces_;
-  std::vector<std::vector<double>> power_;  // W per sample, per trace
+  std::vector<std::vector<double>> power_;    // W per sample, per trace (empty: unknown)
+  std::vector<std::vector<double>> current_;  // A per sample, per trace (empty: no current channel)
+  Quantity quantity_ = Quantity::Current;
   std::vector<PeakRow> peaks_;
 };
 

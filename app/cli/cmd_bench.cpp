@@ -6,7 +6,9 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
+#include <random>
 
+#include "analysis/decimate.h"
 #include "analysis/flops.h"
 #include "analysis/stats.h"
 #include "args.h"
@@ -155,12 +157,62 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   return 0;
 }
 
+// The power view's min/max decimation on a long trace, against a plain min/max scan of the same samples (the least
+// any exact decimation must do) measured in the same run.
+int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
+  const ParsedArgs args = parse_args(raw, {}, {"--samples", "--columns", "--runs"});
+  const double n_arg = args.number("--samples", 10'000'000), c_arg = args.number("--columns", 1600),
+               r_arg = args.number("--runs", 5);
+  if (!(n_arg >= 1000 && n_arg <= 200'000'000)) throw UsageError("--samples must be between 1000 and 200,000,000");
+  if (!(c_arg >= 1 && c_arg <= 100'000)) throw UsageError("--columns must be between 1 and 100,000");
+  if (!(r_arg >= 1 && r_arg <= 100)) throw UsageError("--runs must be between 1 and 100");
+  const auto n = static_cast<std::size_t>(n_arg), columns = static_cast<std::size_t>(c_arg);
+  const int runs = static_cast<int>(r_arg);
+  // A 10 kHz current log with jittered timestamps and noise, as a power analyser writes.
+  std::vector<double> t(n), v(n);
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> jitter(0.5e-4, 1.5e-4), noise(-0.3, 0.3);
+  double now = 0;
+  for (std::size_t i = 0; i < n; ++i) now += jitter(rng), t[i] = now, v[i] = 2.5 + noise(rng);
+  using clock = std::chrono::steady_clock;
+  const auto ms = [](clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+  std::vector<double> whole, zoom, scan;
+  std::size_t points_whole = 0, points_zoom = 0;
+  double sink = 0;
+  for (int r = 0; r < runs + 1; ++r) {  // the first round warms caches and is not counted
+    auto t0 = clock::now();
+    const DecimatedSeries a = decimate_min_max(t, v, t.front(), t.back(), columns);
+    auto t1 = clock::now();
+    const DecimatedSeries b = decimate_min_max(t, v, t[n / 4], t[n / 4 + n / 10], columns);  // a tenth in view
+    auto t2 = clock::now();
+    double mn = v[0], mx = v[0];
+    for (double x : v) mn = std::min(mn, x), mx = std::max(mx, x);
+    auto t3 = clock::now();
+    sink += mn + mx;
+    points_whole = a.t.size(), points_zoom = b.t.size();
+    if (r == 0) continue;
+    whole.push_back(ms(t1 - t0)), zoom.push_back(ms(t2 - t1)), scan.push_back(ms(t3 - t2));
+  }
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "min/max decimation of %zu samples into %zu pixel columns, median of %d runs (after one warm-up)\n"
+                "  whole trace:       %8.2f ms -> %zu points (at most 2 per column + 2)\n"
+                "  a tenth in view:   %8.2f ms -> %zu points\n"
+                "  reference, plain min/max scan of all samples: %.2f ms; whole-trace decimation / scan = %.2f\n",
+                n, columns, runs, median(whole), points_whole, median(zoom), points_zoom, median(scan),
+                median(whole) / std::max(median(scan), 1e-9));
+  out << line;
+  if (sink == 0.123) out << ' ';  // keeps the reference scan from being optimised away
+  return 0;
+}
+
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels | bench vision | bench power-csv)",
+    "benchmarks printing figures and ratios (bench kernels | bench vision | bench power-csv | bench decimate)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W]\n"
     "       benchscope-cli bench vision [--frames F] [--threads T]\n"
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
+    "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
     "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
     "  median and mean \xC2\xB1 SD of R\n"
     "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU SIMD\n"
@@ -171,7 +223,8 @@ const CommandRegistrar registrar({
         if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
         if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
         if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
-        throw UsageError("expected 'bench kernels', 'bench vision' or 'bench power-csv'");
+        if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
+        throw UsageError("expected 'bench kernels', 'bench vision', 'bench power-csv' or 'bench decimate'");
       } catch (const UsageError& e) {
         err << "benchscope-cli: error: " << e.what() << '\n';
         return 2;

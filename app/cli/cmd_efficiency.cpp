@@ -2,12 +2,11 @@
 // benchscope-cli efficiency: GFLOPS/W per platform, as the paper defines it and the honest variant.
 #include <cstdio>
 #include <iostream>
-#include <map>
 
 #include <nlohmann/json.hpp>
 
 #include "analysis/flops.h"
-#include "analysis/power.h"
+#include "analysis/platform_efficiency.h"
 #include "args.h"
 #include "command.h"
 #include "inputs.h"
@@ -22,27 +21,16 @@ int run_efficiency(const std::vector<std::string>& raw, std::ostream& out) {
   std::optional<double> supply;
   if (args.value("--supply-volts")) supply = args.number("--supply-volts", 0);
   const LoadedData data = load_inputs(args.positional, interrupt_token());
-  // The best run per platform (the paper uses each platform's GPU peak, which is its highest).
-  std::map<std::string, PeakRow> best;
-  for (const PeakRow& row : peak_table(data.runs))
-    if (!best.count(row.platform) || row.peak.flops > best[row.platform].peak.flops) best[row.platform] = row;
+  const std::vector<PlatformEfficiency> rows = platform_efficiency(data.runs, data.power_traces, supply);
   nlohmann::json list = nlohmann::json::array();
-  int shown = 0;
-  for (const PowerTrace& trace : data.power_traces) {
-    const auto it = best.find(trace.platform);
-    if (it == best.end()) continue;
-    const auto volts = supply ? supply : trace.supply_voltage_v;
-    const TraceStats s = trace_stats(trace, supply);
-    if (!s.current_a || !volts || !s.power_w) continue;
-    const PeakRow& peak = it->second;
-    const double paper = paper_flops_per_watt(peak.peak.flops, *volts, s.current_a->max);
-    const double mean_power = peak.peak.flops / s.power_w->mean;
-    ++shown;
+  for (const PlatformEfficiency& e : rows) {
+    const PeakRow& peak = e.peak;
+    const std::string& platform = peak.platform;
     if (args.has("--json")) {
-      list.push_back({{"platform", trace.platform}, {"device", peak.device}, {"backend", peak.backend},
-                      {"peak_flops", peak.peak.flops}, {"supply_voltage_v", *volts}, {"max_current_a", s.current_a->max},
-                      {"mean_power_w", s.power_w->mean}, {"flops_per_watt_paper", paper},
-                      {"flops_per_watt_mean_power", mean_power}, {"joules_per_gflop", 1e9 / mean_power}});
+      list.push_back({{"platform", platform}, {"device", peak.device}, {"backend", peak.backend},
+                      {"peak_flops", peak.peak.flops}, {"supply_voltage_v", e.supply_v}, {"max_current_a", e.current_a.max},
+                      {"mean_power_w", e.power_w.mean}, {"flops_per_watt_paper", e.paper_gflops_per_w * 1e9},
+                      {"flops_per_watt_mean_power", e.mean_power_gflops_per_w * 1e9}, {"joules_per_gflop", e.joules_per_gflop}});
       continue;
     }
     char line[512];
@@ -50,12 +38,13 @@ int run_efficiency(const std::vector<std::string>& raw, std::ostream& out) {
                   "%s: peak %.2f GFLOPS (%s, %s, D = %d)\n"
                   "  GFLOPS/W as the paper defines it, peak / (%.1f V x max %.3f A): %.2f\n"
                   "  GFLOPS/W at the mean power of the log (%.2f W): %.2f; energy per GFLOP %.4f J\n",
-                  trace.platform.c_str(), peak.peak.flops / 1e9, peak.device.c_str(), peak.backend.c_str(), peak.dims,
-                  *volts, s.current_a->max, paper / 1e9, s.power_w->mean, mean_power / 1e9, 1e9 / mean_power);
+                  platform.c_str(), peak.peak.flops / 1e9, peak.device.c_str(), peak.backend.c_str(), peak.dims,
+                  e.supply_v, e.current_a.max, e.paper_gflops_per_w, e.power_w.mean, e.mean_power_gflops_per_w,
+                  e.joules_per_gflop);
     out << line;
   }
   if (args.has("--json")) out << nlohmann::json{{"format", "benchscope-efficiency"}, {"version", 1}, {"platforms", list}}.dump(2) << '\n';
-  if (shown == 0) throw std::runtime_error("no platform has both FLOPS runs and a current log with a supply voltage");
+  if (rows.empty()) throw std::runtime_error("no platform has both FLOPS runs and a current log with a supply voltage");
   return 0;
 }
 

@@ -14,6 +14,8 @@
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "power_view.h"
+#include "efficiency_view.h"
+#include "battery_view.h"
 #include "main_window.h"
 #include "peak_table.h"
 #include "workspace_tree.h"
@@ -95,6 +97,10 @@ int main(int argc, char** argv) {
       window.frames_view()->export_figure(dir + "/figure3-triptych.png", nullptr);  // File > Export Figure 3
       window.pipeline_view()->resize(window.flops_plot()->size());
       save_png(window.pipeline_view(), dir + "/pipeline-view.png");
+      window.efficiency_view()->resize(window.flops_plot()->size());
+      save_png(window.efficiency_view(), dir + "/efficiency-view.png");
+      window.battery_view()->resize(window.flops_plot()->size());
+      save_png(window.battery_view(), dir + "/battery-view.png");
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

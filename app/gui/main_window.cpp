@@ -26,6 +26,8 @@
 #include "pipeline_view.h"
 #include "platform_view.h"
 #include "roofline_view.h"
+#include "efficiency_view.h"
+#include "battery_view.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
 #include "frames_view.h"
@@ -43,21 +45,24 @@ MainWindow::MainWindow(QWidget* parent)
       platforms_(new PlatformView(this)),
       roofline_(new RooflineView(this)),
       frames_(new FramesView(this)),
-      pipeline_(new PipelineView(this)) {
+      pipeline_(new PipelineView(this)),
+      efficiency_(new EfficiencyView(this)),
+      battery_(new BatteryView(this)) {
   setAcceptDrops(true);
   auto* views = new QTabWidget(this);
-  views->addTab(plot_, tr("FLOPS"));
-  views->addTab(power_, tr("Power"));
-  views->setTabToolTip(1, tr("Current/power logs: statistics, GFLOPS/W and battery life"));
-  views->addTab(platforms_, tr("Platforms"));
-  views->setTabToolTip(2, tr("One row per platform, and which one to pick under your constraints"));
+  // Tabs in the order a lab reads its evidence: compute, power, what both mean per platform, then vision.
+  const auto tab = [views](QWidget* w, const QString& name, const QString& tip) {
+    views->setTabToolTip(views->addTab(w, name), tip);
+  };
+  tab(plot_, tr("FLOPS"), tr("FLOPS against workers for the runs ticked in the workspace tree"));
+  tab(power_, tr("Power"), tr("Current/power logs: traces, statistics over a selected range (the paper's Figure 4)"));
+  tab(efficiency_, tr("Efficiency"), tr("GFLOPS/W per platform: the paper's and at mean power"));
+  tab(battery_, tr("Battery"), tr("Battery life per platform, presets saved in the workspace"));
+  tab(platforms_, tr("Platforms"), tr("One row per platform, and which one to pick under your constraints"));
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
-  views->addTab(roofline_, tr("Roofline"));
-  views->setTabToolTip(3, tr("Compute and memory ceilings per device, with the kernels placed on them"));
-  views->addTab(frames_, tr("Frames"));
-  views->setTabToolTip(4, tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
-  views->setTabToolTip(views->addTab(pipeline_, tr("Pipeline")),
-                       tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
+  tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
+  tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
+  tab(frames_, tr("Frames"), tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -162,6 +167,9 @@ void MainWindow::reload() {
   power_->set_data(traces, bs::peak_table(all), platform_colors);
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);
+  efficiency_->set_data(all, plain_traces);
+  battery_->set_workspace(workspace_.get());
+  battery_->set_data(plain_traces, platform_colors);
   std::vector<PipelineRun> pipelines;
   if (workspace_)
     for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));

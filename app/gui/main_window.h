@@ -22,6 +22,8 @@ class PlatformView;
 class PipelineView;
 class RooflineView;
 class FramesView;
+class EfficiencyView;
+class BatteryView;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -47,6 +49,8 @@ class MainWindow : public QMainWindow {
   RooflineView* roofline_view() const { return roofline_; }
   FramesView* frames_view() const { return frames_; }
   PipelineView* pipeline_view() const { return pipeline_; }
+  EfficiencyView* efficiency_view() const { return efficiency_; }
+  BatteryView* battery_view() const { return battery_; }
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -87,6 +91,8 @@ class MainWindow : public QMainWindow {
   RooflineView* roofline_;
   FramesView* frames_;
   PipelineView* pipeline_;
+  EfficiencyView* efficiency_;
+  BatteryView* battery_;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 

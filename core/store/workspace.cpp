@@ -12,6 +12,8 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -365,6 +367,37 @@ void Workspace::remove_import(std::int64_t import_id) {
   Transaction tx(impl_->db);
   Statement(impl_->db, "DELETE FROM imports WHERE id = ?").bind(1, import_id).run();
   tx.commit();
+}
+
+namespace {
+constexpr std::string_view kSettingPrefix = "setting/";
+}
+
+void Workspace::set_setting(const std::string& key, const std::string& value) {
+  if (key.empty()) throw std::invalid_argument("workspace setting: empty key");
+  Statement(impl_->db, "INSERT OR REPLACE INTO meta(key, value) VALUES (?, ?)")
+      .bind(1, std::string_view(std::string(kSettingPrefix) + key))
+      .bind(2, std::string_view(value))
+      .run();
+}
+
+void Workspace::remove_setting(const std::string& key) {
+  Statement(impl_->db, "DELETE FROM meta WHERE key = ?").bind(1, std::string_view(std::string(kSettingPrefix) + key)).run();
+}
+
+std::vector<std::pair<std::string, std::string>> Workspace::settings(const std::string& prefix) const {
+  std::vector<std::pair<std::string, std::string>> out;
+  // Keys sort bytewise (BINARY collation), so the ones with the prefix are contiguous from the prefix on; no LIKE,
+  // as keys may hold % or _.
+  const std::string full = std::string(kSettingPrefix) + prefix;
+  Statement st(impl_->db, "SELECT key, value FROM meta WHERE key >= ? ORDER BY key");
+  st.bind(1, std::string_view(full));
+  while (st.step()) {
+    std::string key = st.text(0);
+    if (key.compare(0, full.size(), full) != 0) break;
+    out.emplace_back(key.substr(kSettingPrefix.size()), st.text(1));
+  }
+  return out;
 }
 
 std::vector<ImportRecord> Workspace::imports() const {

@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/import_batch.h"
@@ -119,6 +120,13 @@ class Workspace {
   // `content_hash` (of their serialised form) like a file; returns the import id.
   std::int64_t add_pipeline_runs(const std::vector<PipelineRun>& runs, const std::string& label,
                                  const std::string& content_hash);
+
+  // Small named settings kept in the workspace file itself (the meta table, under a "setting/" prefix that keeps
+  // them apart from the schema's own keys), e.g. user-edited battery presets: they travel with the data.
+  void set_setting(const std::string& key, const std::string& value);
+  void remove_setting(const std::string& key);
+  // Every setting whose key starts with `prefix`, ordered by key.
+  std::vector<std::pair<std::string, std::string>> settings(const std::string& prefix = {}) const;
 
   // Writes a consistent copy (VACUUM INTO). Refuses to overwrite an existing file.
   void save_as(const std::string& new_path) const;

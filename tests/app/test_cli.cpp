@@ -3,6 +3,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QtTest>
+#include <map>
 
 namespace {
 
@@ -205,6 +206,47 @@ class TestCli : public QObject {
     QCOMPARE(cli({"battery", "--watts", "0"}).code, 2);
     QCOMPARE(cli({"battery"}).code, 2);
     QCOMPARE(cli({"power", kPaper + "/cpu.json"}).code, 1);  // no power logs there
+  }
+
+  // battery --workspace: per-platform runtimes (the GUI's Battery tab), presets saved in the workspace and used
+  // by --preset afterwards, only there.
+  void battery_per_platform_and_workspace_presets() {
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("paper.bsw");
+    QCOMPARE(cli({"import", ws, kPaper, "--quiet"}).code, 0);
+    const auto minutes = [](const Result& r) {
+      std::map<QString, double> out;
+      for (const auto& v : QJsonDocument::fromJson(r.out).object()["platforms"].toArray())
+        out[v.toObject()["platform"].toString()] = v.toObject()["runtime_min"].toDouble();
+      return out;
+    };
+    const Result paper = cli({"battery", "--workspace", ws, "--json"});
+    QCOMPARE(paper.code, 0);
+    QCOMPARE(rounded(minutes(paper)["NUC"], 1.0), 84.36);
+    QCOMPARE(rounded(minutes(paper)["Jetson TX2"], 1.0), 360.48);
+    const Result saved = cli({"battery", "--workspace", ws, "--capacity-mah", "5000", "--dod", "0.8", "--extra-load", "60",
+                              "--save-preset", "robot pack", "--json"});
+    QCOMPARE(saved.code, 0);
+    QVERIFY(saved.err.contains("saved battery preset 'robot pack'"));
+    // The saved preset's pack, depth of discharge and extra load come back as the defaults.
+    const Result robot = cli({"battery", "--workspace", ws, "--preset", "robot pack", "--json"});
+    QCOMPARE(robot.code, 0);
+    QCOMPARE(minutes(robot)["NUC"], minutes(saved)["NUC"]);
+    QVERIFY(std::abs(minutes(robot)["NUC"] - 14.8 * 5.0 * 0.8 / (40.524 + 60) * 60) < 0.01);
+    const Result given = cli({"battery", "--workspace", ws, "--preset", "robot pack", "--watts", "10", "--json"});
+    QCOMPARE(given.code, 0);
+    QVERIFY(std::abs(QJsonDocument::fromJson(given.out).object()["runtime_min"].toDouble() - 14.8 * 5.0 * 0.8 / 70 * 60) < 1e-6);
+    QCOMPARE(cli({"battery", "--preset", "robot pack", "--watts", "10"}).code, 2);  // not a built-in
+    QCOMPARE(cli({"battery", "--workspace", dir.filePath("missing.bsw")}).code, 2);
+    QCOMPARE(cli({"battery", "--save-preset", "x", "--watts", "10"}).code, 2);
+    QCOMPARE(cli({"battery", "--workspace", ws, "--mission", "walk:x:10"}).code, 2);
+  }
+
+  void bench_decimate_prints_figures() {
+    const Result r = cli({"bench", "decimate", "--samples", "100000", "--columns", "100", "--runs", "1"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("-> 200 points"), r.out.constData());
+    QVERIFY(r.out.contains("plain min/max scan"));
   }
 
   void synth_frame_writes_raw_sidecar_and_truth() {

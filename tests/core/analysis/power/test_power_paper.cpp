@@ -2,10 +2,13 @@
 // The paper's current-consumption section, recomputed from sample_data through the importer and core:
 // mean current (SD), power at 16 V, GFLOPS/W with the GPU peaks, battery life on 14.8 V x 3.85 Ah.
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "analysis/battery.h"
 #include "analysis/efficiency.h"
+#include "analysis/platform_efficiency.h"
 #include "analysis/power_stats.h"
 #include "importer.h"
 
@@ -62,6 +65,38 @@ class TestPowerPaper : public QObject {
     QCOMPARE(round2(figures[0].value), gflops_per_w);
     QVERIFY(figures[1].value > figures[0].value);  // mean power is below supply x max current
     QVERIFY(figures[1].label.find("mean power") != std::string::npos);
+  }
+
+  // Each platform's best run, whatever its device, paired with its log: the rows the CLI and the GUI show.
+  void platform_efficiency_picks_the_best_run() {
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
+      const auto ext = e.path().extension();
+      if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
+      const bs::ImportBatch b = bs::import_file(e.path().string(), bs::CancelToken{});
+      runs.insert(runs.end(), b.runs.begin(), b.runs.end());
+      traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());
+    }
+    std::sort(traces.begin(), traces.end(), [](const auto& a, const auto& b) { return a.platform > b.platform; });
+    const auto rows = bs::platform_efficiency(runs, traces);
+    QCOMPARE(rows.size(), std::size_t{2});  // only the NUC and the Jetson have current logs
+    QCOMPARE(rows[0].peak.platform, std::string("NUC"));
+    QCOMPARE(rows[0].peak.backend, std::string("OpenCL"));
+    QCOMPARE(round2(rows[0].peak.peak.flops / 1e12), 5.25);
+    QCOMPARE(round2(rows[0].power_w.mean), 40.52);
+    QCOMPARE(round2(rows[0].paper_gflops_per_w), 104.64);
+    QCOMPARE(rows[1].peak.platform, std::string("Jetson TX2"));
+    QCOMPARE(rows[1].peak.backend, std::string("CUDA"));
+    QCOMPARE(round2(rows[1].power_w.mean), 9.48);
+    QCOMPARE(round2(rows[1].paper_gflops_per_w), 41.26);
+    QCOMPARE(rows[1].supply_v, 16.0);
+    QCOMPARE(rows[1].current_a.n, std::size_t{1200});
+    QCOMPARE(rows[1].joules_per_gflop, rows[1].power_w.mean / (rows[1].peak.peak.flops / 1e9));
+    QVERIFY(rows[1].mean_power_gflops_per_w > rows[1].paper_gflops_per_w);
+    // A supply override changes the paper's figure in proportion (current stays what was measured).
+    const auto at12 = bs::platform_efficiency(runs, traces, 12.0);
+    QCOMPARE(at12[0].paper_gflops_per_w, rows[0].paper_gflops_per_w * 16 / 12);
   }
 };
 

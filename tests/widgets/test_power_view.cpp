@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Power tab: the paper's figure 4 (supply current of the NUC and the Jetson against time, one time axis,
+// labelled axes, a legend) by default, power on request, and a long trace drawn through the min/max decimation
+// with its true extremes kept.
+#include <QComboBox>
+#include <QTableWidget>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include "paper_sample.h"
+#include "power_view.h"
+
+namespace {
+
+std::vector<bs::StoredPowerTrace> stored(const std::vector<bs::PowerTrace>& traces) {
+  std::vector<bs::StoredPowerTrace> out;
+  for (const auto& t : traces) out.push_back({static_cast<std::int64_t>(out.size() + 1), 1, t});
+  return out;
+}
+
+std::pair<double, double> value_range(const QCPGraph* g) {
+  double lo = 1e300, hi = -1e300;
+  for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) lo = std::min(lo, it->value), hi = std::max(hi, it->value);
+  return {lo, hi};
+}
+
+}  // namespace
+
+class TestPowerView : public QObject {
+  Q_OBJECT
+ private slots:
+  void figure_4_current_over_time() {
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    bs::test::load_paper_sample(runs, traces);
+    bs::ui::PowerView view;
+    view.resize(1200, 700);
+    view.set_data(stored(traces), bs::peak_table(runs), {});
+    QCustomPlot* plot = view.plot();
+    QCOMPARE(plot->graphCount(), 2);
+    QVERIFY(view.quantity() == bs::ui::PowerView::Quantity::Current);
+    QCOMPARE(plot->xAxis->label(), QString("Time (s)"));
+    QCOMPARE(plot->yAxis->label(), QString("Current (A)"));
+    QVERIFY(plot->legend->visible());
+    QStringList names;
+    for (int g = 0; g < 2; ++g) names << plot->graph(g)->name();
+    names.sort();
+    QCOMPARE(names, QStringList({"Jetson TX2", "NUC"}));
+    // Both logs start at 0 s on the shared axis (the first drawn point lies in the first pixel column: the
+    // decimation keeps a column's extremes, not its first sample), and the whole 120 s are in view.
+    for (int g = 0; g < 2; ++g) QVERIFY(plot->graph(g)->data()->at(0)->key <= 119.9 / 200);
+    QCOMPARE(plot->xAxis->range().lower, 0.0);
+    QVERIFY(std::abs(plot->xAxis->range().upper - 119.9) < 1e-9);
+    // Amps, not watts: the NUC's current peaks near 3.136 A (104.64 GFLOPS/W at 16 V with 5.25 TFLOPS).
+    const int nuc = plot->graph(0)->name() == "NUC" ? 0 : 1;
+    QVERIFY(std::abs(value_range(plot->graph(nuc)).second - 5.25e12 / (16 * 104.64e9)) < 0.001);
+    view.set_quantity(bs::ui::PowerView::Quantity::Power);
+    QCOMPARE(plot->yAxis->label(), QString("Power (W)"));
+    QVERIFY(std::abs(value_range(plot->graph(nuc)).second - 16 * 5.25e12 / (16 * 104.64e9)) < 0.02);
+    QCOMPARE(view.table()->rowCount(), 2);
+  }
+
+  void long_trace_is_decimated_exactly() {
+    // 2 million samples at 10 kHz with one spike up and one down: drawn as a few thousand points that still reach
+    // both spikes.
+    bs::PowerTrace t;
+    t.platform = "long";
+    t.label = "long";
+    t.supply_voltage_v = 12;
+    const std::size_t n = 2'000'000;
+    std::vector<double> amps(n);
+    for (std::size_t i = 0; i < n; ++i) t.time_s.push_back(static_cast<double>(i) * 1e-4), amps[i] = 1 + 0.1 * std::sin(i * 0.001);
+    amps[1'234'567] = 9.5;
+    amps[345'678] = 0.05;
+    t.channels.push_back({"current", bs::PowerQuantity::Current, amps});
+    bs::ui::PowerView view;
+    view.resize(1000, 600);
+    view.set_data(stored({t}), {}, {});
+    const QCPGraph* g = view.plot()->graph(0);
+    const int columns = std::max(200, view.plot()->axisRect()->width());
+    QVERIFY(g->dataCount() <= 2 * columns + 2);
+    QVERIFY(g->dataCount() > columns);  // every column has samples
+    const auto [lo, hi] = value_range(g);
+    QCOMPARE(hi, 9.5);
+    QCOMPARE(lo, 0.05);
+  }
+};
+
+QTEST_MAIN(TestPowerView)
+#include "test_power_view.moc"
