@@ -10,6 +10,7 @@
 #include "analysis/flops.h"
 #include "analysis/stats.h"
 #include "args.h"
+#include "bench_tuner.h"
 #include "bench_vision.h"
 #include "command.h"
 #include "kernels/sweep.h"
@@ -157,9 +158,10 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
 
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels | bench vision | bench power-csv)",
+    "benchmarks printing figures and ratios (bench kernels | bench vision | bench tuner | bench power-csv)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W]\n"
     "       benchscope-cli bench vision [--frames F] [--threads T]\n"
+    "       benchscope-cli bench tuner [--frames F] [--step S]\n"
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
     "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
     "  median and mean \xC2\xB1 SD of R\n"
@@ -170,8 +172,9 @@ const CommandRegistrar registrar({
         const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
         if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
         if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
+        if (!args.empty() && args[0] == "tuner") return bench_tuner(rest, out);
         if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
-        throw UsageError("expected 'bench kernels', 'bench vision' or 'bench power-csv'");
+        throw UsageError("expected 'bench kernels', 'bench vision', 'bench tuner' or 'bench power-csv'");
       } catch (const UsageError& e) {
         err << "benchscope-cli: error: " << e.what() << '\n';
         return 2;
