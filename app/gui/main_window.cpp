@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.h"
+#include "lens_tab.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -50,6 +51,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
   views->addTab(roofline_, tr("Roofline"));
   views->setTabToolTip(3, tr("Compute and memory ceilings per device, with the kernels placed on them"));
+  lens_ = new LensTab(this);
+  views->setTabToolTip(views->addTab(lens_, tr("Lens")),
+                       tr("Reprojection tuner (lens model, view, masks, auto-calibration) beside the lens in 3D"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");

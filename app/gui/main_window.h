@@ -19,6 +19,7 @@ class KernelRunner;
 class PowerView;
 class PlatformView;
 class RooflineView;
+class LensTab;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -42,6 +43,7 @@ class MainWindow : public QMainWindow {
   PowerView* power_view() const { return power_; }
   PlatformView* platform_view() const { return platforms_; }
   RooflineView* roofline_view() const { return roofline_; }
+  LensTab* lens_tab() const { return lens_; }  // the lead feeds it a capture: lens_tab()->set_fisheye(bgr, name)
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -74,6 +76,7 @@ class MainWindow : public QMainWindow {
   PowerView* power_;
   PlatformView* platforms_;
   RooflineView* roofline_;
+  LensTab* lens_ = nullptr;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 
