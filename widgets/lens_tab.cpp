@@ -58,6 +58,7 @@ LensView3D* LensTab::ensure_view_3d() {
   if (QGuiApplication::platformName() == "offscreen" || QGuiApplication::platformName() == "minimal") return nullptr;
   view3d_ = new LensView3D;
   split_->replaceWidget(1, view3d_);
+  split_->setSizes({width() * 3 / 5, width() * 2 / 5});
   placeholder_->deleteLater();
   placeholder_ = nullptr;
   view3d_->set_fisheye(tuner_->fisheye());

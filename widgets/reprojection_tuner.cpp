@@ -255,11 +255,11 @@ QWidget* ReprojectionTuner::build_controls() {
     vf->addRow(name, row);
   };
   angle_row(tr("Yaw"), "yaw", &vision::View::yaw_deg, yaw_slider_, yaw_,
-            tr("Yaw in degrees: turns the view about the vertical axis (+ left)"));
+            tr("Yaw in degrees: turns the view about the vertical axis (+ right)"));
   angle_row(tr("Pitch"), "pitch", &vision::View::pitch_deg, pitch_slider_, pitch_,
-            tr("Pitch in degrees: tilts the view about the horizontal axis"));
+            tr("Pitch in degrees: tilts the view about the horizontal axis (+ up)"));
   angle_row(tr("Roll"), "roll", &vision::View::roll_deg, roll_slider_, roll_,
-            tr("Roll in degrees: rotates the view about its optical axis"));
+            tr("Roll in degrees: rotates the view about its optical axis (+ turns the camera counter-clockwise: the scene turns clockwise in the view)"));
   lay->addWidget(view_box);
 
   auto* tools = new QGroupBox(tr("Masks and checks"));

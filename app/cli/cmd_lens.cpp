@@ -24,7 +24,7 @@ vision::TunerParams load_params(const std::optional<std::string>& path) {
 }
 
 int lens_circle(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {}, {"--lens", "--min-level", "--out"});
+  const ParsedArgs args = parse_args(raw, {}, {"--lens", "--min-level", "--out", "--circle-fov"});
   if (args.positional.size() != 1) throw UsageError("lens circle needs one IMAGE (PNG, JPEG, TIFF...)");
   const std::string image_path = args.positional[0];
   const cv::Mat image = cv::imread(image_path, cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
@@ -34,7 +34,9 @@ int lens_circle(const std::vector<std::string>& raw, std::ostream& out) {
   p.lens.height = image.rows;
   const auto circle = vision::detect_image_circle(image, args.number("--min-level", 20));
   if (!circle) throw std::runtime_error(image_path + ": no image circle found (no bright disc above the threshold)");
-  p.lens = vision::propose_lens(p.lens, *circle);
+  const double circle_fov = args.number("--circle-fov", 0);
+  if (circle_fov < 0 || circle_fov > 360) throw UsageError("--circle-fov must be in (0, 360] degrees");
+  p.lens = vision::propose_lens(p.lens, *circle, circle_fov);
   char line[256];
   std::snprintf(line, sizeof line,
                 "image circle: centre (%.2f, %.2f) px, radius %.2f px (fit RMS %.3f px over %d edge points)\n"
@@ -86,7 +88,7 @@ int lens_line(const std::vector<std::string>& raw, std::ostream& out) {
 const CommandRegistrar registrar({
     "lens",
     "lens calibration helpers (lens circle | lens export-lut | lens line)",
-    "usage: benchscope-cli lens circle IMAGE [--lens LENS.json] [--min-level L] [--out LENS.json]\n"
+    "usage: benchscope-cli lens circle IMAGE [--lens LENS.json] [--min-level L] [--circle-fov DEG] [--out LENS.json]\n"
     "       benchscope-cli lens export-lut OUT.bslut [--lens LENS.json]\n"
     "       benchscope-cli lens line X,Y X,Y X,Y...\n"
     "  circle: detects the fisheye image circle and proposes principal point and r_pp for the lens model\n"

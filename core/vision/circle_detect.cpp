@@ -123,7 +123,7 @@ std::optional<ImageCircle> detect_image_circle(const cv::Mat& image, double min_
   return c;
 }
 
-Lens propose_lens(const Lens& lens, const ImageCircle& circle) {
+Lens propose_lens(const Lens& lens, const ImageCircle& circle, double circle_fov_deg) {
   Lens out = lens;
   out.cx = circle.centre.x;
   out.cy = circle.centre.y;
@@ -131,7 +131,7 @@ Lens propose_lens(const Lens& lens, const ImageCircle& circle) {
   constexpr double kPi = 3.14159265358979323846;
   Lens unit = lens;
   unit.r_pp = 1;
-  double theta = lens.fov_deg * kPi / 360.0;
+  double theta = (circle_fov_deg > 0 ? circle_fov_deg : lens.fov_deg) * kPi / 360.0;
   if (lens.type == LensType::Orthographic) theta = std::min(theta, kPi / 2);
   if (lens.type == LensType::Rectilinear) theta = std::min(theta, kPi / 2 - 1e-3);
   const auto g = unit.radius(theta);

@@ -23,8 +23,10 @@ struct ImageCircle {
 // distance with outliers (> 3 px) dropped. Accepts 8/16-bit, 1 or 3 channels. nullopt when no disc is found.
 std::optional<ImageCircle> detect_image_circle(const cv::Mat& image, double min_level = 20);
 
-// The lens with its principal point on the circle's centre and r_pp chosen so that a ray fov/2 off the axis lands
-// on the circle (for equidistant: r_pp = (fov/2) / radius). Model, k and FOV are kept.
-Lens propose_lens(const Lens& lens, const ImageCircle& circle);
+// The lens with its principal point on the circle's centre and r_pp chosen so that a ray circle_fov/2 off the axis
+// lands on the circle (for equidistant: r_pp = (circle_fov/2) / radius). circle_fov_deg <= 0 means the lens's FOV;
+// give a smaller one when the lit disc ends before the lens's FOV does (a dark outer ring, a hood, a chart that
+// ends). Model, k and FOV are kept.
+Lens propose_lens(const Lens& lens, const ImageCircle& circle, double circle_fov_deg = 0);
 
 }  // namespace bs::vision

@@ -41,7 +41,7 @@ class TestLensView3D : public QObject {
  private slots:
   void textured_sphere_is_visible_and_follows_the_lens() {
     ui::LensTab tab;
-    tab.resize(1500, 800);
+    tab.resize(1600, 900);
     tab.set_fisheye({}, {});  // the synthetic paper-lens frame
     tab.show();
     QVERIFY(QTest::qWaitForWindowExposed(&tab));
@@ -65,11 +65,35 @@ class TestLensView3D : public QObject {
     view->set_lens(tab.tuner()->params().lens, tab.tuner()->params().view);
     const QImage a = view->grabFramebuffer(), b = view->grabFramebuffer();
     QCOMPARE(a, b);
+    // Mouse drag rotates the camera: the picture changes; the same drag back and forth is not needed to check it.
+    const QPoint from(view->width() / 2, view->height() / 2), to = from + QPoint(80, 30);
+    QTest::mousePress(view, Qt::LeftButton, {}, from);
+    for (int k = 1; k <= 8; ++k) {
+      QMouseEvent move(QEvent::MouseMove, from + (to - from) * k / 8, view->mapToGlobal(from + (to - from) * k / 8),
+                       Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      QApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+    QVERIFY(view->grabFramebuffer() != a);
+    view->reset_camera();
+    QCOMPARE(view->grabFramebuffer(), a);
     if (const QByteArray dir = qgetenv("BENCHSCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      // A tuned state worth looking at: the robot's nose masked at the bottom of the frame, the view turned
+      // left and down, three points clicked along a chart line.
+      ui::ReprojectionTuner* t = tab.tuner();
+      t->set_mask_editing(true);
+      for (const QPointF q : {QPointF(470, 1023), QPointF(560, 930), QPointF(720, 930), QPointF(810, 1023)})
+        t->add_mask_point(q);
+      t->set_mask_editing(false);
+      vision::TunerParams p = t->params();
+      p.view.yaw_deg = 20;
+      p.view.pitch_deg = -10;
+      p.view.fov_deg = 120;
+      t->set_params(p);
+      QTRY_VERIFY_WITH_TIMEOUT(t->shown_generation() == t->requested_generation(), 30000);
       QDir().mkpath(dir);
       view->grab().save(dir + "/lens-view-3d.png", "PNG", 0);
-      tab.tuner()->grab().save(dir + "/reprojection-tuner.png", "PNG", 0);
-      tab.grab().save(dir + "/lens-tab.png", "PNG", 0);
+      t->grab().save(dir + "/reprojection-tuner.png", "PNG", 0);
     }
   }
   void no_qt5_in_the_process() {

@@ -76,6 +76,9 @@ class TestCircleDetect : public QObject {
       QVERIFY(std::abs(proposed.r_pp - lens.r_pp) / lens.r_pp < 2.0 / k.radius);
       QVERIFY(std::abs(*proposed.radius(k.fov * kPi / 360) - c->radius) < 1e-6);
       QCOMPARE(proposed.cx, c->centre.x);
+      // A disc that ends before the lens's FOV: r_pp from the angle it does end at.
+      const Lens inner = propose_lens(guess, *c, k.fov - 20);
+      QVERIFY(std::abs(*inner.radius((k.fov - 20) * kPi / 360) - c->radius) < 1e-6);
     }
     QVERIFY(!detect_image_circle(cv::Mat::zeros(100, 100, CV_8UC3)).has_value());
   }
