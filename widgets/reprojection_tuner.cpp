@@ -277,6 +277,13 @@ QWidget* ReprojectionTuner::build_controls() {
   mask_row->addWidget(mask_button_);
   mask_row->addWidget(clear_masks_button);
   tl->addLayout(mask_row);
+  auto* circle_row = new QFormLayout;
+  circle_fov_ = spin(0, 360, 1, 1, tr(" °"),
+                     tr("Angle the detected image circle spans, for Detect circle (0: the lens FOV). Smaller when the "
+                        "lit disc ends before the lens's FOV, e.g. 174° for the synthetic chart frames"));
+  circle_fov_->setSpecialValueText(tr("lens FOV"));
+  circle_row->addRow(tr("Circle spans"), circle_fov_);
+  tl->addLayout(circle_row);
   auto* line_row = new QHBoxLayout;
   line_button_ = new QToolButton;
   line_button_->setText(tr("Measure line"));
@@ -479,7 +486,7 @@ std::optional<vision::ImageCircle> ReprojectionTuner::auto_calibrate() {
     return std::nullopt;
   }
   state_.end_merge();
-  change("auto-calibrate", [this](auto& p) { p.lens = vision::propose_lens(p.lens, *circle_); });
+  change("auto-calibrate", [this](auto& p) { p.lens = vision::propose_lens(p.lens, *circle_, circle_fov_->value()); });
   state_.end_merge();
   update_overlays();
   status_->setText(tr("Image circle: centre (%1, %2) px, radius %3 px, fit RMS %4 px over %5 edge points")

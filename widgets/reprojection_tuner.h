@@ -120,6 +120,7 @@ class ReprojectionTuner : public QWidget {
   QSlider *yaw_slider_, *pitch_slider_, *roll_slider_;
   QDoubleSpinBox *yaw_, *pitch_, *roll_;
   QToolButton *mask_button_, *line_button_;
+  QDoubleSpinBox* circle_fov_;
 };
 
 }  // namespace bs::ui
