@@ -12,6 +12,7 @@
 #include "analysis/flops.h"
 #include "analysis/stats.h"
 #include "args.h"
+#include "bench_tuner.h"
 #include "bench_vision.h"
 #include "command.h"
 #include "kernels/sweep.h"
@@ -208,9 +209,10 @@ int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
 
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels | bench vision | bench power-csv | bench decimate)",
+    "benchmarks printing figures and ratios (bench kernels | vision | tuner | power-csv | decimate)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W]\n"
     "       benchscope-cli bench vision [--frames F] [--threads T]\n"
+    "       benchscope-cli bench tuner [--frames F] [--step S]\n"
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
     "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
@@ -222,9 +224,10 @@ const CommandRegistrar registrar({
         const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
         if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
         if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
+        if (!args.empty() && args[0] == "tuner") return bench_tuner(rest, out);
         if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
         if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
-        throw UsageError("expected 'bench kernels', 'bench vision', 'bench power-csv' or 'bench decimate'");
+        throw UsageError("expected 'bench kernels', 'bench vision', 'bench tuner', 'bench power-csv' or 'bench decimate'");
       } catch (const UsageError& e) {
         err << "benchscope-cli: error: " << e.what() << '\n';
         return 2;

@@ -3,7 +3,6 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
-#include <QSurfaceFormat>
 #include <QTimer>
 
 #include "flops_plot.h"
@@ -11,6 +10,7 @@
 #include "frames_view.h"
 #include "kernel_runner.h"
 #include "pipeline_view.h"
+#include "lens_view_3d.h"
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "power_view.h"
@@ -29,17 +29,7 @@ void save_png(QWidget* widget, const QString& path) { widget->grab().save(path, 
 
 int main(int argc, char** argv) {
   // VTK views render through QOpenGLWidget: the default format must be set before QApplication exists.
-  QSurfaceFormat fmt;
-  fmt.setRenderableType(QSurfaceFormat::OpenGL);
-  fmt.setVersion(3, 2);
-  fmt.setProfile(QSurfaceFormat::CoreProfile);
-  fmt.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
-  fmt.setRedBufferSize(8);
-  fmt.setGreenBufferSize(8);
-  fmt.setBlueBufferSize(8);
-  fmt.setAlphaBufferSize(8);
-  fmt.setDepthBufferSize(24);
-  QSurfaceFormat::setDefaultFormat(fmt);
+  bs::ui::set_vtk_default_surface_format();
 
   QApplication app(argc, argv);
   QApplication::setApplicationName("BenchScope");

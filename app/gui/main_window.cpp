@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.h"
+#include "lens_tab.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -63,6 +64,8 @@ MainWindow::MainWindow(QWidget* parent)
   tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
   tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   tab(frames_, tr("Frames"), tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
+  lens_ = new LensTab(this);
+  tab(lens_, tr("Lens"), tr("Reprojection tuner (lens model, view, masks, auto-calibration) beside the lens in 3D"));
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");

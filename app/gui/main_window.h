@@ -24,6 +24,7 @@ class RooflineView;
 class FramesView;
 class EfficiencyView;
 class BatteryView;
+class LensTab;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -51,6 +52,7 @@ class MainWindow : public QMainWindow {
   PipelineView* pipeline_view() const { return pipeline_; }
   EfficiencyView* efficiency_view() const { return efficiency_; }
   BatteryView* battery_view() const { return battery_; }
+  LensTab* lens_tab() const { return lens_; }  // the lead feeds it a capture: lens_tab()->set_fisheye(bgr, name)
   const Workspace* workspace() const { return workspace_.get(); }
 
  protected:
@@ -93,6 +95,7 @@ class MainWindow : public QMainWindow {
   PipelineView* pipeline_;
   EfficiencyView* efficiency_;
   BatteryView* battery_;
+  LensTab* lens_ = nullptr;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
 };
 

@@ -13,15 +13,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 
-// Rotation of rays by yaw (about the vertical z axis), pitch (about y) and roll (about the optical x axis).
-cv::Matx33d view_rotation(const View& v) {
-  const double y = rad(v.yaw_deg), p = rad(v.pitch_deg), r = rad(v.roll_deg);
-  const cv::Matx33d yaw(std::cos(y), -std::sin(y), 0, std::sin(y), std::cos(y), 0, 0, 0, 1);
-  const cv::Matx33d pitch(std::cos(p), 0, -std::sin(p), 0, 1, 0, std::sin(p), 0, std::cos(p));
-  const cv::Matx33d roll(1, 0, 0, 0, std::cos(r), -std::sin(r), 0, std::sin(r), std::cos(r));
-  return yaw * pitch * roll;
-}
-
 }  // namespace
 
 std::string_view to_string(LensType t) {
@@ -37,6 +28,16 @@ LensType lens_type_from_string(std::string_view s) {
                               "' (expected equidistant, equisolid, stereographic, orthographic, rectilinear or "
                               "kannala-brandt)");
 }
+
+// Rotation of rays by yaw (about the vertical z axis), pitch (about y) and roll (about the optical x axis).
+cv::Matx33d view_rotation(const View& v) {
+  const double y = rad(v.yaw_deg), p = rad(v.pitch_deg), r = rad(v.roll_deg);
+  const cv::Matx33d yaw(std::cos(y), -std::sin(y), 0, std::sin(y), std::cos(y), 0, 0, 0, 1);
+  const cv::Matx33d pitch(std::cos(p), 0, -std::sin(p), 0, 1, 0, std::sin(p), 0, std::cos(p));
+  const cv::Matx33d roll(1, 0, 0, 0, std::cos(r), -std::sin(r), 0, std::sin(r), std::cos(r));
+  return yaw * pitch * roll;
+}
+
 
 std::optional<double> Lens::radius(double theta) const {
   if (theta > rad(fov_deg) / 2 + 1e-12) return std::nullopt;

@@ -45,6 +45,10 @@ struct View {
   void validate() const;
 };
 
+// Rotation taking a ray of the output camera (x forward, y right, z up) into the lens's ray space: yaw about z,
+// then pitch about y, then roll about the optical x axis (R = yaw * pitch * roll).
+cv::Matx33d view_rotation(const View& view);
+
 nlohmann::json lens_to_json(const Lens& lens, const View& view);
 std::pair<Lens, View> lens_from_json(const nlohmann::json& j);  // throws std::invalid_argument naming the field
 
