@@ -108,7 +108,8 @@ void PipelineView::fill() {
     table_->item(i, Device)->setData(kSortRole, QVariant());
     table_->setItem(i, Time, cell(QString::fromStdString(r.time_text()), r.mean_ms, tip));
     table_->setItem(i, P95, cell(QString::fromStdString(r.p95_text()), r.p95_ms ? *r.p95_ms : nan, tip));
-    table_->setItem(i, StageRate, cell(fps_text(r.stage_fps), r.stage_fps, tip));
+    table_->setItem(i, StageRate, cell(r.stage_fps ? fps_text(*r.stage_fps) : QStringLiteral("–"),
+                                       r.stage_fps ? *r.stage_fps : nan, tip));
     table_->setItem(i, Throughput, cell(r.throughput_fps ? fps_text(*r.throughput_fps) : QStringLiteral("–"),
                                         r.throughput_fps ? *r.throughput_fps : nan, tip));
     auto* origin = cell(rebuilt ? tr("reconstructed") : QString::fromStdString(std::string(to_string(r.origin))), nan, tip);

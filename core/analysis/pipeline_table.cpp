@@ -62,7 +62,7 @@ std::vector<PipelineTableRow> pipeline_table_rows(std::span<const PipelineRun> r
       row.mean_ms = s.mean_s * 1e3;
       row.sd_ms = s.sd_s * 1e3;
       if (s.p95_s) row.p95_ms = *s.p95_s * 1e3;
-      row.stage_fps = s.mean_s > 0 ? 1.0 / s.mean_s : 0;
+      if (s.mean_s > 0 && s.stage != pipeline_stage::kEndToEnd) row.stage_fps = 1.0 / s.mean_s;
       row.throughput_fps = r.throughput_fps;
       row.origin = r.provenance.origin;
       row.provenance = provenance_text(r);
@@ -82,8 +82,8 @@ ExportTable pipeline_table(std::span<const PipelineRun> runs) {
   t.header = {"Stage", "Platform", "Time", "p95 (ms)", "Stage rate (fps)", "Data"};
   t.align = "llrrrl";
   for (const PipelineTableRow& r : pipeline_table_rows(runs)) {
-    char fps[32];
-    std::snprintf(fps, sizeof fps, "%.1f", r.stage_fps);
+    char fps[32] = "–";
+    if (r.stage_fps) std::snprintf(fps, sizeof fps, "%.1f", *r.stage_fps);
     t.rows.push_back({r.stage_label, r.platform, r.time_text(), r.p95_text(), fps,
                       std::string(to_string(r.origin))});
   }

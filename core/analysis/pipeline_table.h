@@ -20,7 +20,9 @@ struct PipelineTableRow {
   std::size_t n = 0;
   double mean_ms = 0, sd_ms = 0;
   std::optional<double> p95_ms;
-  double stage_fps = 0;                   // 1000 / mean ms: frames per second this stage alone keeps up with
+  // 1000 / mean ms: frames per second this stage alone keeps up with. None for end to end: that is a latency
+  // (queueing included), and the run's throughput says the rate.
+  std::optional<double> stage_fps;
   std::optional<double> throughput_fps;   // of the whole run, when measured
   DataOrigin origin = DataOrigin::Unknown;
   std::string provenance;                 // one paragraph: origin, note, host, date, file

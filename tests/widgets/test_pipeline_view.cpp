@@ -86,6 +86,7 @@ class TestPipelineView : public QObject {
     QCOMPARE(text(t, 0, PipelineView::Stage), QString("Preprocessing (demosaic + reprojection)"));
     QCOMPARE(text(t, 6, PipelineView::Stage), QString("End to end"));
     QCOMPARE(text(t, 6, PipelineView::Time), QString("220 ± 30 ms (n = 50)"));
+    QCOMPARE(text(t, 6, PipelineView::StageRate), QString("–"));  // a latency, not a rate
     // The LaTeX export holds the same cells.
     const std::string tex = bs::to_latex(bs::pipeline_table(runs));
     QVERIFY(tex.find("6.21 $\\pm$ 0.99 ms (n = 500)") != std::string::npos);
