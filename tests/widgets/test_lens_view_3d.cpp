@@ -96,6 +96,16 @@ class TestLensView3D : public QObject {
       t->grab().save(dir + "/reprojection-tuner.png", "PNG", 0);
     }
   }
+  void first_show_renders_the_synthetic_frame_in_the_background() {
+    ui::LensTab tab;
+    tab.resize(1200, 700);
+    tab.show();  // no set_fisheye: the tab renders the paper-lens frame off the GUI thread
+    QVERIFY(QTest::qWaitForWindowExposed(&tab));
+    QTRY_VERIFY_WITH_TIMEOUT(!tab.tuner()->fisheye().empty(), 60000);
+    QCOMPARE(tab.tuner()->fisheye().cols, 1280);
+    QTRY_VERIFY_WITH_TIMEOUT(!tab.tuner()->output_pane()->image().isNull(), 30000);
+    QVERIFY(tab.view_3d() != nullptr);
+  }
   void no_qt5_in_the_process() {
     QFile maps("/proc/self/maps");
     QVERIFY(maps.open(QIODevice::ReadOnly));
