@@ -271,7 +271,7 @@ void BatteryView::fill_plot() {
     g->setPen(QPen(device_color(color), 2));
     g->setData(t, soc, true);
     QCPGraph* v = plot_->addGraph(plot_->xAxis, plot_->yAxis2);
-    v->setName(tr("%1: pack voltage, LiPo model").arg(name));
+    v->setName(tr("%1: pack voltage, LiPo model (empty at %2 min)").arg(name, minutes(b.lipo.runtime_s)));
     v->setPen(QPen(device_color(color), 1.2, Qt::DashLine));
     v->setData(vt, volts, true);
     if (!t.isEmpty()) max_t = std::max(max_t, t.back());
