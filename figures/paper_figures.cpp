@@ -223,7 +223,7 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
     double figure_height_mm = p.h_mm;
     try {
       if (t.kind == "triptych") {
-        sources = render_triptych_figure(stem, o, files, figure_height_mm);
+        sources = render_triptych_figure(stem, o, files, figure_height_mm, data.frame ? &*data.frame : nullptr, cancel);
       } else {
         QCustomPlot plot;
         plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
@@ -238,7 +238,7 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
           sized.height_mm = (axes_pt + legend_pt) * 25.4 / 72.0;
           plot.resize(static_cast<int>(p.w_pt), static_cast<int>(std::lround(axes_pt + legend_pt)));
         }
-        save_plot(plot, stem, sized, QString::fromStdString(t.title), files);
+        save_plot(plot, stem, sized, QString::fromStdString(t.title), files, &cancel);
         figure_height_mm = sized.height_mm;
       }
     } catch (...) {

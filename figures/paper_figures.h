@@ -6,12 +6,14 @@
 #include <QString>
 #include <QStringList>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include <functional>
 
 #include "analysis/platform_comparison.h"
 #include "model/flops_run.h"
+#include "model/frame.h"
 #include "model/power_trace.h"
 #include "report/figure_template.h"
 #include "util/cancel.h"
@@ -31,6 +33,7 @@ struct FigureData {
   std::vector<FlopsRun> runs;
   std::vector<PowerTrace> traces;
   std::vector<PipelineTimings> pipelines;
+  std::optional<Frame> frame;  // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
   std::map<std::pair<std::string, std::string>, int> colors;  // (platform, device) -> colour index
 };
 

@@ -67,10 +67,12 @@ QSizeF figure_size_pt(const FigureOptions& o) {
   return {o.width_mm * kPtPerMm, h_mm * kPtPerMm};
 }
 
-void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& o, const QString& title, QStringList& files) {
+void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& o, const QString& title, QStringList& files,
+               const CancelToken* cancel) {
   const QSizeF size = figure_size_pt(o);
   const int w = static_cast<int>(std::lround(size.width())), h = static_cast<int>(std::lround(size.height()));
   for (const QString& format : o.formats) {
+    if (cancel) cancel->throw_if_cancelled();
     const QString path = stem + "." + format;
     bool ok = false;
     if (format == "pdf") {

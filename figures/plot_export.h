@@ -7,6 +7,8 @@
 #include <QString>
 #include <QStringList>
 
+#include "util/cancel.h"
+
 class QCustomPlot;
 
 namespace bs::ui {
@@ -17,8 +19,9 @@ struct FigureOptions;
 QSizeF figure_size_pt(const FigureOptions& options);
 
 // Writes stem.<format> for every format of `options` (pdf, svg, png); appends the paths to `files`.
-// Throws std::runtime_error naming the file when it cannot be written.
-void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title, QStringList& files);
+// Throws std::runtime_error naming the file when it cannot be written, Cancelled between formats.
+void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title, QStringList& files,
+               const CancelToken* cancel = nullptr);
 
 // As save_plot, for a plot shown on screen: applies the figure's font size and line widths for the export, then
 // restores the view's own look.

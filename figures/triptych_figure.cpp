@@ -11,8 +11,10 @@
 
 #include "paper_figures.h"
 #include "vision/bayer.h"
+#include "vision/frame_image.h"
 #include "vision/lens.h"
 #include "vision/synthetic.h"
+#include "vision/triptych.h"
 
 namespace bs::ui {
 namespace {
@@ -59,24 +61,73 @@ void paint(QPainter& p, const QImage (&images)[3], double w, double h, double fo
 
 }  // namespace
 
-QJsonArray render_triptych_figure(const QString& stem, const FigureOptions& o, QStringList& files, double& height_mm) {
+namespace {
+
+struct Panels {
+  cv::Mat raw, rgb, out;  // 8-bit for display
+  QJsonObject source;
+  int width = 0, height = 0;
+};
+
+// The capture of the workspace: its lens (recorded with the frame, else the paper's), bilinear demosaic, 16-bit
+// samples shown through their full range.
+Panels from_frame(const Frame& frame, const CancelToken& cancel) {
+  const vision::FrameLens fl = vision::lens_for_frame(frame);
+  const vision::TriptychImages t =
+      vision::render_triptych(frame, vision::DemosaicMethod::Bilinear, fl.lens, fl.view, &cancel);
+  const double full = vision::full_scale(frame);
+  Panels p{vision::window_to_8bit(t.mosaic, 0, full), vision::window_to_8bit(t.demosaiced, 0, full),
+           vision::window_to_8bit(t.reprojected, 0, full), {}, frame.width, frame.height};
+  p.source = QJsonObject{{"file", QString::fromStdString(frame.provenance.source_file)},
+                         {"origin", frame.synthetic ? "synthetic" : QString::fromUtf8(to_string(frame.provenance.origin).data())},
+                         {"how", QString("frame %1 (%2x%3 %4, %5-bit), %6 lens, demosaiced bilinear, reprojected")
+                                     .arg(QString::fromStdString(frame.label))
+                                     .arg(frame.width)
+                                     .arg(frame.height)
+                                     .arg(QString::fromStdString(frame.pattern))
+                                     .arg(frame.bit_depth)
+                                     .arg(fl.from_frame ? "the frame's recorded" : "the paper's")}};
+  return p;
+}
+
+// Without a capture: the test chart through the paper's lens at half resolution (same field of view).
+Panels synthetic(const CancelToken& cancel) {
   vision::Lens lens = vision::Lens::paper();
   lens.width /= 2;
   lens.height /= 2;
-  lens.r_pp *= 2;  // the same field of view at half the resolution
+  lens.r_pp *= 2;
   vision::View view;
   view.width = lens.width;
   view.height = lens.height;
   const cv::Mat truth = vision::render_fisheye(lens);
-  const cv::Mat raw = vision::mosaic(truth, vision::BayerPattern::BGGR);
-  const cv::Mat rgb = vision::demosaic(raw, vision::BayerPattern::BGGR, vision::DemosaicMethod::Bilinear);
-  const cv::Mat out = vision::ReprojectionLut(lens, view).apply(rgb);
-  const QImage images[3] = {to_qimage(raw), to_qimage(rgb), to_qimage(out)};
+  cancel.throw_if_cancelled();
+  Panels p;
+  p.raw = vision::mosaic(truth, vision::BayerPattern::BGGR);
+  p.rgb = vision::demosaic(p.raw, vision::BayerPattern::BGGR, vision::DemosaicMethod::Bilinear);
+  p.out = vision::ReprojectionLut(lens, view).apply(p.rgb);
+  p.width = lens.width;
+  p.height = lens.height;
+  p.source = QJsonObject{{"file", "synthetic"}, {"origin", "synthetic"},
+                         {"how", QString("no frame in the workspace: chart rendered through the paper's lens (195 degree "
+                                         "equidistant) at %1x%2, mosaiced BGGR, demosaiced bilinear, reprojected to "
+                                         "150 degrees")
+                                     .arg(lens.width)
+                                     .arg(lens.height)}};
+  return p;
+}
 
+}  // namespace
+
+QJsonArray render_triptych_figure(const QString& stem, const FigureOptions& o, QStringList& files, double& height_mm,
+                                  const Frame* frame, const CancelToken& cancel) {
+  const Panels panels = frame ? from_frame(*frame, cancel) : synthetic(cancel);
+  cancel.throw_if_cancelled();
+  const QImage images[3] = {to_qimage(panels.raw), to_qimage(panels.rgb), to_qimage(panels.out)};
   const double w = o.width_mm * 72.0 / 25.4;
-  const double h = (w * 0.97 / 3) * lens.height / lens.width + caption_height(w, o.font_pt);
+  const double h = (w * 0.97 / 3) * panels.height / panels.width + caption_height(w, o.font_pt);
   height_mm = h * 25.4 / 72.0;
   for (const QString& format : o.formats) {
+    cancel.throw_if_cancelled();
     const QString path = stem + "." + format;
     QPainter p;
     bool ok = false;
@@ -124,11 +175,7 @@ QJsonArray render_triptych_figure(const QString& stem, const FigureOptions& o, Q
     if (!ok || !QFile::exists(path)) throw std::runtime_error(path.toStdString() + ": cannot write the figure");
     files << path;
   }
-  return QJsonArray{QJsonObject{{"file", "synthetic"}, {"origin", "synthetic"},
-                                {"how", QString("chart rendered through the paper's lens (195 degree equidistant) at %1x%2, "
-                                                "mosaiced BGGR, demosaiced bilinear, reprojected to 150 degrees")
-                                            .arg(lens.width)
-                                            .arg(lens.height)}}};
+  return QJsonArray{panels.source};
 }
 
 }  // namespace bs::ui

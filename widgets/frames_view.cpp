@@ -9,7 +9,7 @@
 
 #include "frame_store.h"
 #include "frame_triptych.h"
-#include "triptych_figure.h"
+#include "triptych_panels.h"
 
 namespace bs::ui {
 

@@ -35,7 +35,7 @@ int run_figures(const std::vector<std::string>& raw, std::ostream& out, std::ost
 #else
   const ui::FigureOptions o = parse_figure_options(args);
   const auto templates = figure_templates(args);
-  const ui::FigureData fd = figure_data(load_inputs(args.positional, interrupt_token()));
+  const ui::FigureData fd = figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token());
   const auto app = offscreen_application();
   const bool quiet = args.has("--quiet");
   const auto result = ui::render_figures(templates, fd, QString::fromStdString(*out_dir), o, interrupt_token(),

@@ -42,7 +42,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
 #else
   const ui::FigureOptions o = parse_figure_options(args);
   const auto templates = figure_templates(args);
-  const ui::FigureData fd = figure_data(load_inputs(args.positional, interrupt_token()));
+  const ui::FigureData fd = figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token());
   if (fd.runs.empty() && fd.traces.empty()) throw std::runtime_error("no FLOPS runs or power logs to report on");
   const auto app = offscreen_application();
   ui::ReportRequest request;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "frame_store.h"
+
 namespace bs::cli {
 
 const std::set<std::string>& figure_value_options() {
@@ -38,10 +40,17 @@ std::vector<FigureTemplate> figure_templates(const ParsedArgs& args) {
   return load_figure_templates(args.value("--template").value_or(ui::paper_template_path().toStdString()));
 }
 
-ui::FigureData figure_data(const LoadedData& data) {
+ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedData& data, const CancelToken& cancel) {
   ui::FigureData fd;
   fd.runs = data.runs;
   fd.traces = data.power_traces;
+  fd.pipelines = pipeline_timings(data.pipeline_runs);
+  if (!data.frames.empty()) {
+    fd.frame = data.frames.front();
+  } else if (paths.size() == 1 && looks_like_workspace(paths[0])) {
+    const Workspace ws(paths[0]);
+    if (const auto frames = ws.frames(); !frames.empty()) fd.frame = load_frame(ws, frames.front(), cancel);
+  }
   for (const FlopsRun& r : data.runs) fd.colors.try_emplace({r.platform, r.device}, static_cast<int>(fd.colors.size()));
   for (const PowerTrace& t : data.power_traces)
     if (std::none_of(fd.colors.begin(), fd.colors.end(), [&](const auto& c) { return c.first.first == t.platform; }))

@@ -20,8 +20,9 @@ const std::set<std::string>& figure_value_options();
 // Throws UsageError for a bad value.
 ui::FigureOptions parse_figure_options(const ParsedArgs& args);
 std::vector<FigureTemplate> figure_templates(const ParsedArgs& args);
-// Colours by first appearance, as the workspace assigns them, so figures match the GUI.
-ui::FigureData figure_data(const LoadedData& data);
+// Colours by first appearance, as the workspace assigns them, so figures match the GUI; pipeline timings; the
+// first capture (of the files, or read from the workspace) for fig3.
+ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedData& data, const CancelToken& cancel);
 // Renders without a display (QT_QPA_PLATFORM=offscreen unless the user set a platform).
 std::unique_ptr<QApplication> offscreen_application();
 

@@ -71,6 +71,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.result_sets.begin(), batch.result_sets.end(), std::back_inserter(data.result_sets));
     std::move(batch.power_traces.begin(), batch.power_traces.end(), std::back_inserter(data.power_traces));
     std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
+    std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
   }
   return data;
 }

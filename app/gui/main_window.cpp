@@ -66,6 +66,7 @@ MainWindow::MainWindow(QWidget* parent)
   tab(frames_, tr("Frames"), tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
   lens_ = new LensTab(this);
   tab(lens_, tr("Lens"), tr("Reprojection tuner (lens model, view, masks, auto-calibration) beside the lens in 3D"));
+  connect_lens_and_frames();
   setCentralWidget(views);
   auto* tree_dock = new QDockWidget(tr("Workspace"), this);
   tree_dock->setObjectName("workspaceDock");
@@ -188,6 +189,7 @@ void MainWindow::reload() {
     }
   roofline_->set_data(all, std::move(sets), std::move(device_colors));
   frames_->set_workspace(workspace_.get());
+  feed_lens_tab();
   refresh_views();
   update_title();
 }

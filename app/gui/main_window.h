@@ -69,6 +69,9 @@ class MainWindow : public QMainWindow {
   void reproduce_paper_figures();
   void export_report();
   FigureData figure_data() const;
+  // main_window_frames.cpp
+  void connect_lens_and_frames();
+  void feed_lens_tab();
   QString export_folder() const;
   void reload();
   void refresh_views();

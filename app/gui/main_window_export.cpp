@@ -13,6 +13,7 @@
 #include <qcustomplot.h>
 
 #include "export_figure_dialog.h"
+#include "frame_store.h"
 #include "main_window.h"
 #include "platform_view.h"
 #include "plot_export.h"
@@ -58,8 +59,14 @@ FigureData MainWindow::figure_data() const {
     d.runs.push_back(r.run);
     d.colors[{r.run.platform, r.run.device}] = r.color_index;
   }
-  if (workspace_)
+  if (workspace_) {
     for (const StoredPowerTrace& t : workspace_->power_traces()) d.traces.push_back(t.trace);
+    std::vector<PipelineRun> pipelines;
+    for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
+    d.pipelines = pipeline_timings(pipelines);
+    // fig3 shows the workspace's first capture; a referenced file that moved or changed is an error naming it.
+    if (const auto frames = workspace_->frames(); !frames.empty()) d.frame = load_frame(*workspace_, frames.front());
+  }
   return d;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The paper's sample data (sample_data/paper-2018) loaded through the importers, for tests of views and figures.
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
@@ -29,6 +30,12 @@ inline PaperSample load_paper_sample() {
     s.traces.insert(s.traces.end(), b.power_traces.begin(), b.power_traces.end());
   }
   return s;
+}
+
+inline void load_paper_sample(std::vector<FlopsRun>& runs, std::vector<PowerTrace>& traces) {
+  PaperSample s = load_paper_sample();
+  runs = std::move(s.runs);
+  traces = std::move(s.traces);
 }
 
 }  // namespace bs::test

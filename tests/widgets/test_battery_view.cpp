@@ -11,7 +11,7 @@
 #include <qcustomplot.h>
 
 #include "battery_view.h"
-#include "paper_sample.h"
+#include "../support/paper_sample.h"
 #include "store/workspace.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <qcustomplot.h>
 
 #include "efficiency_view.h"
-#include "paper_sample.h"
+#include "../support/paper_sample.h"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include "image_pane.h"
 #include "import_controller.h"
 #include "importer.h"
-#include "triptych_figure.h"
+#include "triptych_panels.h"
 #include "vision/frame_image.h"
 #include "vision/synthetic.h"
 #include "vision/view_geometry.h"

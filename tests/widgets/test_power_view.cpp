@@ -7,7 +7,7 @@
 #include <QtTest>
 #include <qcustomplot.h>
 
-#include "paper_sample.h"
+#include "../support/paper_sample.h"
 #include "power_view.h"
 
 namespace {

@@ -2,6 +2,8 @@
 // The paper's current-consumption section, recomputed from sample_data through the importer and core:
 // mean current (SD), power at 16 V, GFLOPS/W with the GPU peaks, battery life on 14.8 V x 3.85 Ah.
 #include <QtTest>
+
+#include "../../../support/paper_sample.h"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -71,13 +73,7 @@ class TestPowerPaper : public QObject {
   void platform_efficiency_picks_the_best_run() {
     std::vector<bs::FlopsRun> runs;
     std::vector<bs::PowerTrace> traces;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
-      const auto ext = e.path().extension();
-      if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
-      const bs::ImportBatch b = bs::import_file(e.path().string(), bs::CancelToken{});
-      runs.insert(runs.end(), b.runs.begin(), b.runs.end());
-      traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());
-    }
+    bs::test::load_paper_sample(runs, traces);
     std::sort(traces.begin(), traces.end(), [](const auto& a, const auto& b) { return a.platform > b.platform; });
     const auto rows = bs::platform_efficiency(runs, traces);
     QCOMPARE(rows.size(), std::size_t{2});  // only the NUC and the Jetson have current logs

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "triptych_figure.h"
+#include "triptych_panels.h"
 
 #include <QFileInfo>
 #include <QPageSize>

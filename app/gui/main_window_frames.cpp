@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Frames and Lens tabs together: the Lens tab tunes on the workspace's capture, and the lens it tunes drives
+// the Frames tab's reprojection, so a user sees the paper's Figure 3 change as they move a slider.
+#include <QStatusBar>
+
+#include "frame_store.h"
+#include "frame_triptych.h"
+#include "frames_view.h"
+#include "lens_tab.h"
+#include "main_window.h"
+#include "reprojection_tuner.h"
+#include "vision/frame_image.h"
+#include "vision/triptych.h"
+
+namespace bs::ui {
+
+void MainWindow::connect_lens_and_frames() {
+  connect(lens_->tuner(), &ReprojectionTuner::lens_changed, frames_->triptych(), &FrameTriptych::set_lens);
+}
+
+void MainWindow::feed_lens_tab() {
+  if (!workspace_) return;
+  const auto frames = workspace_->frames();
+  if (frames.empty()) return;  // the tab keeps its synthetic fisheye of the paper's lens
+  try {
+    const Frame frame = load_frame(*workspace_, frames.front());
+    const cv::Mat raw = vision::frame_to_mat(frame);
+    const cv::Mat rgb = vision::demosaic_frame(raw, frame, vision::DemosaicMethod::Bilinear);
+    lens_->set_fisheye(vision::window_to_8bit(rgb, 0, vision::full_scale(frame)), QString::fromStdString(frame.label));
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(tr("Lens tab: cannot read the frame: %1").arg(QString::fromUtf8(e.what())), 10000);
+  }
+}
+
+}  // namespace bs::ui
