@@ -175,4 +175,20 @@ ImportBatch RawBayerImporter::parse(const std::string& path, const ImportLimits&
   return read_raw_frame(path, o, limits, cancel, sidecar);
 }
 
+bool raw_without_sidecar(const std::string& path) {
+  std::error_code ec;
+  return path.size() > 4 && path.ends_with(".raw") && !std::filesystem::exists(raw_sidecar_path(path), ec);
+}
+
+ImportBatch import_file_with_raw_geometry(const std::string& path, const std::optional<RawFrameOptions>& raw_geometry,
+                                          const CancelToken& cancel, const std::string& geometry_source) {
+  if (raw_geometry && raw_without_sidecar(path)) {
+    ImportBatch b = read_raw_frame(path, *raw_geometry, {}, cancel, geometry_source);
+    b.source_path = path;
+    b.format = "raw-bayer";
+    return b;
+  }
+  return import_file(path, cancel);
+}
+
 }  // namespace bs

@@ -7,6 +7,7 @@
 //    "bit_depth": 8, "endianness": "little", "synthetic": true, "lens": {...}, "provenance": {...}}
 // (format, version, endianness for 8-bit, synthetic, lens and provenance are optional), or, for a file without a
 // sidecar, from RawFrameOptions given by the caller (benchscope-cli import --raw-geometry).
+#include <optional>
 #include <string>
 
 #include "importer.h"
@@ -37,6 +38,14 @@ ImportBatch read_raw_frame(const std::string& path, const RawFrameOptions& optio
 // "WxH[:PATTERN[:BITS[:le|be]]]", e.g. "1280x1024:BGGR:12:le"; PATTERN "grey" for no mosaic. Throws
 // std::invalid_argument with the reason.
 RawFrameOptions parse_raw_geometry(const std::string& text);
+
+// import_file(), except that a .raw file without a sidecar is read with `raw_geometry` when one is given (the CLI's
+// --raw-geometry, the GUI's geometry dialog); `geometry_source` names it in error messages.
+ImportBatch import_file_with_raw_geometry(const std::string& path, const std::optional<RawFrameOptions>& raw_geometry,
+                                          const CancelToken& cancel, const std::string& geometry_source);
+
+// True for a .raw file with no sidecar next to it: it can only be read with a geometry from the user.
+bool raw_without_sidecar(const std::string& path);
 
 class RawBayerImporter final : public Importer {
  public:

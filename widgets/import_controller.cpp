@@ -45,7 +45,7 @@ ImportController::ImportController(QWidget* parent_window) : QObject(parent_wind
 ImportReport ImportController::import_now(const QString& workspace_path, const QStringList& paths,
                                           const CancelToken& cancel,
                                           const std::function<void(int, int, const QString&)>& progress,
-                                          FrameStorage frames) {
+                                          FrameStorage frames, const std::optional<RawFrameOptions>& raw_geometry) {
   ImportReport report;
   const QList<Candidate> files = expand(paths);
   std::unique_ptr<Workspace> ws;
@@ -58,7 +58,7 @@ ImportReport ImportController::import_now(const QString& workspace_path, const Q
     }
     try {
       const std::string p = path.toStdString();
-      ImportBatch batch = import_file(p, cancel);
+      ImportBatch batch = import_file_with_raw_geometry(p, raw_geometry, cancel, "the geometry dialog");
       for (Frame& f : batch.frames) f.storage = frames;
       if (!ws) ws = std::make_unique<Workspace>(workspace_path.toStdString());
       ws->add_import(batch, file_content_hash(p), &cancel);
@@ -109,8 +109,9 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
     running_ = false;
     emit finished(report);
   });
-  watcher->setFuture(QtConcurrent::run([workspace_path, paths, cancel, progress, frames = frame_storage_] {
-    return import_now(workspace_path, paths, *cancel, progress, frames);
+  watcher->setFuture(QtConcurrent::run([workspace_path, paths, cancel, progress, frames = frame_storage_,
+                                        geometry = raw_geometry_] {
+    return import_now(workspace_path, paths, *cancel, progress, frames, geometry);
   }));
 }
 

@@ -4,6 +4,9 @@
 #include <QStringList>
 #include <memory>
 
+#include <optional>
+
+#include "frame_raw.h"
 #include "model/frame.h"
 #include "util/cancel.h"
 
@@ -33,10 +36,13 @@ class ImportController : public QObject {
   // Frames are kept by reference unless `frames` is Copy (pixels stored in the workspace).
   static ImportReport import_now(const QString& workspace_path, const QStringList& paths, const CancelToken& cancel,
                                  const std::function<void(int, int, const QString&)>& progress = {},
-                                 FrameStorage frames = FrameStorage::Reference);
+                                 FrameStorage frames = FrameStorage::Reference,
+                                 const std::optional<RawFrameOptions>& raw_geometry = std::nullopt);
   // How start() stores the frames it imports (File > Copy imported frames into the workspace).
   void set_frame_storage(FrameStorage storage) { frame_storage_ = storage; }
   FrameStorage frame_storage() const { return frame_storage_; }
+  // The geometry for .raw files without a sidecar in the next start() (the geometry dialog's answer).
+  void set_raw_geometry(std::optional<RawFrameOptions> g) { raw_geometry_ = std::move(g); }
 
  signals:
   void finished(const bs::ui::ImportReport& report);
@@ -45,6 +51,7 @@ class ImportController : public QObject {
   QWidget* window_;
   bool running_ = false;
   FrameStorage frame_storage_ = FrameStorage::Reference;
+  std::optional<RawFrameOptions> raw_geometry_;
 };
 
 }  // namespace bs::ui

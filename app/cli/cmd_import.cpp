@@ -61,15 +61,7 @@ int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   }
   // A .raw file without a sidecar is read with --raw-geometry when given; everything else is sniffed.
   const auto parse_one = [&](const std::string& path) {
-    std::error_code ec;
-    if (raw_geometry && path.size() > 4 && path.ends_with(".raw") &&
-        !std::filesystem::exists(raw_sidecar_path(path), ec)) {
-      ImportBatch b = read_raw_frame(path, *raw_geometry, {}, cancel, "--raw-geometry");
-      b.source_path = path;
-      b.format = "raw-bayer";
-      return b;
-    }
-    return import_file(path, cancel);
+    return import_file_with_raw_geometry(path, raw_geometry, cancel, "--raw-geometry");
   };
 
   std::vector<Parsed> parsed;

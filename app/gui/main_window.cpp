@@ -133,6 +133,7 @@ void MainWindow::new_untitled_workspace() {
 
 void MainWindow::import_paths(const QStringList& paths) {
   if (!workspace_) new_untitled_workspace();
+  importer_->set_raw_geometry(ask_raw_geometry(paths));
   importer_->start(QString::fromStdString(workspace_->path()), paths);
 }
 

@@ -7,6 +7,7 @@
 class QLabel;
 
 #include "analysis/platform_comparison.h"
+#include "frame_raw.h"
 #include "paper_figures.h"
 #include "store/workspace.h"
 
@@ -72,6 +73,9 @@ class MainWindow : public QMainWindow {
   // main_window_frames.cpp
   void connect_lens_and_frames();
   void feed_lens_tab();
+  // A .raw file among `paths` (or in their folders) without a sidecar: asks its geometry; nullopt when none or
+  // cancelled (such files then fail with an error that says how to give the geometry).
+  std::optional<RawFrameOptions> ask_raw_geometry(const QStringList& paths);
   QString export_folder() const;
   void reload();
   void refresh_views();

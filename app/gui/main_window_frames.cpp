@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Frames and Lens tabs together: the Lens tab tunes on the workspace's capture, and the lens it tunes drives
 // the Frames tab's reprojection, so a user sees the paper's Figure 3 change as they move a slider.
+#include <QDirIterator>
+#include <QFileInfo>
 #include <QStatusBar>
 
 #include "frame_store.h"
@@ -8,6 +10,7 @@
 #include "frames_view.h"
 #include "lens_tab.h"
 #include "main_window.h"
+#include "raw_geometry_dialog.h"
 #include "reprojection_tuner.h"
 #include "vision/frame_image.h"
 #include "vision/triptych.h"
@@ -30,6 +33,26 @@ void MainWindow::feed_lens_tab() {
   } catch (const std::exception& e) {
     statusBar()->showMessage(tr("Lens tab: cannot read the frame: %1").arg(QString::fromUtf8(e.what())), 10000);
   }
+}
+
+std::optional<RawFrameOptions> MainWindow::ask_raw_geometry(const QStringList& paths) {
+  QString first;
+  for (const QString& p : paths) {
+    if (QFileInfo(p).isDir()) {
+      QDirIterator it(p, {"*.raw"}, QDir::Files, QDirIterator::Subdirectories);
+      while (first.isEmpty() && it.hasNext()) {
+        const QString f = it.next();
+        if (raw_without_sidecar(f.toStdString())) first = f;
+      }
+    } else if (raw_without_sidecar(p.toStdString())) {
+      first = p;
+    }
+    if (!first.isEmpty()) break;
+  }
+  if (first.isEmpty()) return std::nullopt;
+  RawGeometryDialog dialog(first, this);
+  if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+  return dialog.options();
 }
 
 }  // namespace bs::ui
