@@ -66,6 +66,8 @@ std::vector<ColumnValue> column_values(const PlatformRow& r) {
           {value_or_nan(r.gflops_per_watt_paper), +1},
           {value_or_nan(r.gflops_per_watt_mean), +1},
           {value_or_nan(r.energy_per_frame_j), -1},
+          {value_or_nan(r.energy_per_preprocess_j), -1},
+          {value_or_nan(r.energy_per_inference_j), -1},
           {value_or_nan(r.battery_runtime_h), +1},
           {value_or_nan(r.frames_per_wh), +1}};
 }

@@ -72,6 +72,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"gflops_per_watt_mean_power", opt(r.gflops_per_watt_mean)},
                       {"preprocess_ms", stage_json(r.preprocess_ms)}, {"detect_ms", stage_json(r.detect_ms)},
                       {"fps", opt(r.fps)}, {"energy_per_frame_j", opt(r.energy_per_frame_j)},
+                      {"energy_per_preprocess_j", opt(r.energy_per_preprocess_j)},
+                      {"energy_per_inference_j", opt(r.energy_per_inference_j)},
                       {"battery_runtime_h", opt(r.battery_runtime_h)}, {"frames_per_wh", opt(r.frames_per_wh)},
                       {"meets_constraints", verdicts[i].meets_all}, {"recommended", verdicts[i].recommended},
                       {"note", verdicts[i].note}, {"checks", checks}, {"sources", sources}});

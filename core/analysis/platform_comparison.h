@@ -52,6 +52,8 @@ struct PlatformRow {
   std::optional<Summary> preprocess_ms, detect_ms;
   std::optional<double> fps;                      // 1000 / (preprocess + detect) mean ms: stages in sequence
   std::optional<double> energy_per_frame_j;       // preprocessing (+ detection) of one frame
+  std::optional<double> energy_per_preprocess_j;  // preprocessing of one frame alone: mean power x its mean time
+  std::optional<double> energy_per_inference_j;   // one detection: mean power x the detection stage's mean time
   std::optional<double> battery_runtime_h;        // constant-power model at the mean power
   std::optional<double> frames_per_wh;
   std::map<std::string, CellSource> sources;      // column id -> where the number came from
@@ -73,6 +75,7 @@ inline constexpr const char* kCpuPeak = "cpu_peak";
 inline constexpr const char* kPower = "power";
 inline constexpr const char* kPipeline = "pipeline";
 inline constexpr const char* kEnergyPerFrame = "energy_per_frame";
+inline constexpr const char* kEnergyPerStage = "energy_per_stage";  // per preprocessed frame and per inference
 }  // namespace column
 
 std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::span<const PowerTrace> traces,

@@ -38,7 +38,8 @@ std::string fraction(const PlatformRow& r) {
 std::vector<std::string> platform_table_columns(bool with_verdicts) {
   std::vector<std::string> c{"platform", column::kGpuPeak, column::kCpuPeak, "theoretical", column::kPipeline,
                              "detect", column::kPower, "max_power", "gflops_w_paper", "gflops_w_mean",
-                             column::kEnergyPerFrame, "battery", "frames_per_wh"};
+                             column::kEnergyPerFrame, column::kEnergyPerStage, column::kEnergyPerStage, "battery",
+                             "frames_per_wh"};
   if (with_verdicts) {
     c.push_back("meets");
     c.push_back("failed");
@@ -52,7 +53,8 @@ ExportTable platform_table(std::span<const PlatformRow> rows, std::span<const Pl
   t.label = "tab:platforms";
   t.header = {"Platform", "GPU peak (GFLOPS)", "CPU peak (GFLOPS)", "Of theoretical peak", "Preprocessing (ms)",
               "Detection (ms)", "Mean power (W)", "Max power (W)", "GFLOPS/W (paper: peak / max power)",
-              "GFLOPS/W (peak / mean power)", "Energy per frame (J)", "Battery runtime (min)", "Frames per Wh"};
+              "GFLOPS/W (peak / mean power)", "Energy per frame (J)", "Energy per preprocessed frame (J)",
+              "Energy per inference (J)", "Battery runtime (min)", "Frames per Wh"};
   const bool with_verdicts = verdicts.size() == rows.size() && !rows.empty();
   if (with_verdicts) {
     t.header.push_back("Meets constraints");
@@ -71,6 +73,8 @@ ExportTable platform_table(std::span<const PlatformRow> rows, std::span<const Pl
                                    num(r.gflops_per_watt_paper),
                                    num(r.gflops_per_watt_mean),
                                    num(r.energy_per_frame_j, "%.3f"),
+                                   num(r.energy_per_preprocess_j, "%.3f"),
+                                   num(r.energy_per_inference_j, "%.3f"),
                                    num(r.battery_runtime_h ? std::optional<double>(*r.battery_runtime_h * 60) : std::nullopt),
                                    num(r.frames_per_wh, "%.0f")};
     if (with_verdicts) {

@@ -189,6 +189,12 @@ class TestPlatformComparison : public QObject {
     QVERIFY(std::fabs(*jetson.energy_per_frame_j - *jetson.mean_power_w * 0.57648) < 1e-12);
     QCOMPARE(round2(*nuc.energy_per_frame_j), 7.14);
     QCOMPARE(round2(*jetson.energy_per_frame_j), 5.47);
+    // Per stage: mean power x the stage's mean time (NUC 40.52 W x 6.21 ms and x 0.17 s).
+    QVERIFY(std::fabs(*nuc.energy_per_preprocess_j - *nuc.mean_power_w * 0.00621) < 1e-12);
+    QVERIFY(std::fabs(*nuc.energy_per_inference_j - *nuc.mean_power_w * 0.17) < 1e-12);
+    QVERIFY(std::fabs(*jetson.energy_per_inference_j - *jetson.mean_power_w * 0.57) < 1e-12);
+    QCOMPARE(round2(*nuc.energy_per_inference_j), 6.89);
+    QVERIFY(std::fabs(*nuc.energy_per_preprocess_j + *nuc.energy_per_inference_j - *nuc.energy_per_frame_j) < 1e-12);
     QCOMPARE(nuc.sources.at(bs::column::kPipeline).origin, bs::DataOrigin::Reconstructed);
   }
 };
