@@ -37,11 +37,11 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   values.insert({"--latex", "--csv"});
   const ParsedArgs args = parse_args(raw, {"--json"}, values);
   if (args.positional.empty()) throw UsageError("platforms needs a workspace or files");
-  const PlatformArgs p = parse_platform_args(args);
-  const BatteryPack* pack = p.pack;
-  const ComparisonOptions& options = p.options;
-  const Constraints& c = p.constraints;
-  const bool constrained = p.constrained();
+  const PlatformArgs platform_args = parse_platform_args(args);
+  const BatteryPack* pack = platform_args.pack;
+  const ComparisonOptions& options = platform_args.options;
+  const Constraints& c = platform_args.constraints;
+  const bool constrained = platform_args.constrained();
 
   const LoadedData data = load_inputs(args.positional, interrupt_token());
   const auto pipelines = pipeline_timings(data.pipeline_runs);
