@@ -23,9 +23,13 @@ find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs dnn objdetect)
 benchscope_require(OpenCV "libopencv-dev")
 find_package(Threads REQUIRED)
 
-# CUDA is optional: compiled when a CUDA compiler is found, run only when a GPU is present.
-check_language(CUDA)
-if(CMAKE_CUDA_COMPILER)
+# CUDA is optional: compiled when a CUDA compiler is found, run only when a GPU is present. -DBENCHSCOPE_CUDA=OFF
+# skips it (the sanitizer build does: nvcc-compiled code is not instrumented, and it would only cost build time).
+option(BENCHSCOPE_CUDA "Build the CUDA kernels when a CUDA compiler (nvcc) is found" ON)
+if(BENCHSCOPE_CUDA)
+  check_language(CUDA)
+endif()
+if(BENCHSCOPE_CUDA AND CMAKE_CUDA_COMPILER)
   set(BENCHSCOPE_HAVE_CUDA_COMPILER ON)
 else()
   set(BENCHSCOPE_HAVE_CUDA_COMPILER OFF)

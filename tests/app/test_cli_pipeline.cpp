@@ -6,11 +6,12 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include "store/workspace.h"
+#include "vision/cuda_preprocess.h"
 
 namespace {
 
@@ -122,6 +123,23 @@ class TestCliPipeline : public QObject {
     QCOMPARE(doc["stages"].toObject()["preprocess"].toObject()["n"].toInt(), 3);
   }
 
+  void cuda_backend_runs_or_says_why() {
+    // With a GPU (and nvcc at build time) the run succeeds on it; otherwise it fails at once with the reason the
+    // library gives, never with a crash or a silent CPU fallback.
+    const std::string why = bs::vision::cuda_preprocessing_unavailable();
+    const Result r = cli({"pipeline", raw_, "--lens", sidecar_, "--backend", "cuda", "--detector", "none", "--frames", "2",
+                          "--json"});
+    if (why.empty()) {
+      QVERIFY2(r.code == 0, r.err.constData());
+      const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
+      QCOMPARE(doc["backend"].toString(), QString("cuda"));
+      QVERIFY(doc["device"].toString().contains("(CUDA)"));
+    } else {
+      QCOMPARE(r.code, 1);
+      QVERIFY2(QString::fromUtf8(r.err).contains("CUDA preprocessing: " + QString::fromStdString(why)), r.err.constData());
+    }
+  }
+
   void errors() {
     struct Case {
       QStringList args;
@@ -137,7 +155,7 @@ class TestCliPipeline : public QObject {
         {{"pipeline", raw_}, 2, "--lens"},
         {{"pipeline", "--lens", sidecar_}, 2, "at least one frame"},
         {{"pipeline", raw_, "--lens", sidecar_, "--backend", "tpu"}, 2, "--backend"},
-        {{"pipeline", raw_, "--lens", sidecar_, "--backend", "cuda"}, 1, "no cuda path"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--backend", "cuda", "--demosaic", "mhc"}, 2, "--demosaic bilinear"},
         {{"pipeline", raw_, "--lens", sidecar_, "--backend", "opencl", "--demosaic", "mhc"}, 2, "--demosaic bilinear"},
         {{"pipeline", raw_, "--lens", sidecar_, "--demosaic", "magic"}, 2, "--demosaic"},
         {{"pipeline", raw_, "--lens", sidecar_, "--policy", "never"}, 2, "--policy"},

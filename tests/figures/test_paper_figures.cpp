@@ -10,7 +10,9 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
-#include <QtTest>
+#include <QDir>
+#include <QFileInfo>
+#include <QTest>
 
 #include <chrono>
 #include <thread>

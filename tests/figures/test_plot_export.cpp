@@ -3,7 +3,7 @@
 // figure's font size, and the view gets its own look back afterwards.
 #include <QFile>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 #include <qcustomplot.h>
 
 #include "paper_figures.h"

@@ -5,7 +5,8 @@
 #include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QDir>
+#include <QTest>
 
 #include "../support/paper_sample.h"
 #include "report_writer.h"

@@ -2,7 +2,7 @@
 // Every file of the bad-input corpus is rejected with its expected category and a clear message: the file, the
 // place (line or field) where the manifest says there is one, and a reason.
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include "../support/bad_corpus.h"
 #include "importer.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // clpeak text output: devices, sections and SI conversion, CRLF, skipped/failed tests, clpeak 2 spelling, errors.
-#include <QtTest>
+#include <QTest>
 
 #include "clpeak_text.h"
 

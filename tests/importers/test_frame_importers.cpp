@@ -2,7 +2,7 @@
 // Frame importers: raw Bayer + sidecar (8/16-bit, both byte orders), raw with explicit geometry, PGM/PPM, PNG and
 // TIFF through OpenCV; and the broken cases: size mismatch, huge claims (refused before allocating), truncation.
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include <cstring>
 #include <fstream>

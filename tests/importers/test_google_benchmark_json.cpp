@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Google Benchmark JSON: repetitions, aggregates, counters and their units, error/skipped rows, NaN/Infinity.
-#include <QtTest>
+#include <QTest>
 
 #include "google_benchmark_json.h"
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sniffing by content and the bad-input corpus: every broken file gives one clear error naming the file and the
 // place (line or JSON pointer) with the right category.
-#include <QtTest>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
 
 #include "clpeak_text.h"
 #include "google_benchmark_json.h"

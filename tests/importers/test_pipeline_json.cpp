@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Pipeline JSON v1: the paper's sample files, write -> read round trips, errors that name the field, and sniffing
 // among the other JSON formats.
-#include <QtTest>
+#include <QTest>
 
 #include <bit>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The sample capture (sample_data/paper-2018/frames) is what its README says: the paper's lens, 1280x1024 BGGR
 // 8-bit, labelled synthetic, and byte for byte what synth-frame renders today.
-#include <QtTest>
+#include <QTest>
 
 #include <cstring>
 

@@ -7,7 +7,7 @@
 #include <QLineEdit>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 #include <qcustomplot.h>
 
 #include "battery_view.h"

@@ -3,7 +3,7 @@
 // clears it; unchanged rows only when asked.
 #include <QCheckBox>
 #include <QTableWidget>
-#include <QtTest>
+#include <QTest>
 
 #include "compare_dialog.h"
 

@@ -2,7 +2,7 @@
 // The Efficiency tab on the paper's sample data: the table shows the paper's 104.64 / 41.26 GFLOPS/W and
 // 40.52 / 9.48 W, says which run gave each peak, and the bar chart has one bar per platform and variant.
 #include <QTableWidget>
-#include <QtTest>
+#include <QTest>
 #include <qcustomplot.h>
 
 #include "efficiency_view.h"

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Kernel Runner as a user drives it: run a small sweep, watch it fill in, find it stored; cancel a long one.
-#include <QtTest>
+#include <QCoreApplication>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
 
 #include "flops_plot.h"
 #include "kernel_runner.h"

@@ -3,7 +3,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
-#include <QtTest>
+#include <QTest>
 
 #include "lens_tab.h"
 #include "lens_view_3d.h"

@@ -1,6 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Opens the paper's sample data in the main window, offscreen, as a user would, and checks what is plotted.
-#include <QtTest>
+#include <QAbstractItemModel>
+#include <QCoreApplication>
+#include <QFile>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QTest>
 #include <qcustomplot.h>
 
 #include "export_figure_dialog.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Placement of the legend and peak labels inside a plot, and the compact worker tick labels.
-#include <QtTest>
+#include <QTest>
 
 #include "count_tickers.h"
 #include "overlay_geometry.h"

@@ -2,7 +2,8 @@
 // The peak table model: what each column shows, numeric sorting through the proxy, TSV copy.
 #include <QClipboard>
 #include <QSortFilterProxyModel>
-#include <QtTest>
+#include <QAbstractItemModel>
+#include <QTest>
 
 #include "device_palette.h"
 #include "peak_table.h"

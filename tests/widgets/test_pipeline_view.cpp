@@ -4,7 +4,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
-#include <QtTest>
+#include <QTest>
 
 #include "analysis/pipeline_table.h"
 #include "importer.h"

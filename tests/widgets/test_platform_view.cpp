@@ -4,7 +4,8 @@
 #include <filesystem>
 
 #include <QTableWidget>
-#include <QtTest>
+#include <QSignalSpy>
+#include <QTest>
 
 #include "importer.h"
 #include "platform_view.h"

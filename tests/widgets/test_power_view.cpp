@@ -4,7 +4,7 @@
 // with its true extremes kept.
 #include <QComboBox>
 #include <QTableWidget>
-#include <QtTest>
+#include <QTest>
 #include <qcustomplot.h>
 
 #include "../support/paper_sample.h"

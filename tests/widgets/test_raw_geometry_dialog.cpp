@@ -5,7 +5,9 @@
 #include <QDialogButtonBox>
 #include <QPushButton>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QCoreApplication>
+#include <QSettings>
+#include <QTest>
 
 #include "import_controller.h"
 #include "raw_geometry_dialog.h"

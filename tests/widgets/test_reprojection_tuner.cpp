@@ -4,7 +4,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include "preview_pane.h"
 #include "reprojection_tuner.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Roofline tab: one roof per device (sloped when a bandwidth is known), one marker per run at its peak.
-#include <QtTest>
+#include <QTest>
 #include <qcustomplot.h>
 
 #include "roofline_view.h"

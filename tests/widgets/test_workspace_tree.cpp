@@ -2,7 +2,7 @@
 // The workspace tree: platform -> device -> backend -> run, tristate checkboxes and the visible-run signal.
 #include <QSignalSpy>
 #include <QStandardItemModel>
-#include <QtTest>
+#include <QTest>
 
 #include "workspace_tree.h"
 

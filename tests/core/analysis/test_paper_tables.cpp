@@ -2,7 +2,7 @@
 // The paper's Tables 1 and 2 from the sample data, as LaTeX and CSV, hold the published numbers.
 #include <filesystem>
 
-#include <QtTest>
+#include <QTest>
 
 #include "analysis/paper_tables.h"
 #include "importer.h"

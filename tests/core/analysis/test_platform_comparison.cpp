@@ -4,7 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include <QtTest>
+#include <QTest>
 
 #include "analysis/platform_comparison.h"
 #include "importer.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's power, efficiency and battery numbers, computed from sample_data through the importer and core.
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 
 #include "analysis/power.h"

@@ -3,7 +3,7 @@
 // a 10 % slowdown with enough repetitions is flagged, noise is not, and too few repetitions are not enough.
 #include <random>
 
-#include <QtTest>
+#include <QTest>
 
 #include "analysis/flops.h"
 #include "analysis/regression_compare.h"

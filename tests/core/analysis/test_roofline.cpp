@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Roofline arithmetic: the roof, the ridge, placement of kernels, and ceilings gathered from runs and results.
-#include <QtTest>
+#include <QTest>
 
 #include "analysis/roofline.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The STREAM triad on every backend that has one: verified results become a result set in B/s, one value per
 // repetition, with measured provenance; cancellation and bad sizes are refused cleanly.
-#include <QtTest>
+#include <QTest>
 
 #include "kernels/bandwidth.h"
 

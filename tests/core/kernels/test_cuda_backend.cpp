@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <QtTest>
+#include <QTest>
 
 #include "kernels/cuda/rotation_cuda.h"
 #include "kernels/rotation.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The OpenCL backend on whatever devices the ICD loader lists (PoCL's CPU device here and in CI).
-#include <QtTest>
+#include <QTest>
 #include <chrono>
 #include <thread>
 

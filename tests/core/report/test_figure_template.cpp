@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Figure templates are data: the bundled paper template parses, selections pick the right runs, and a bad user
 // template gives an error naming the file and the field.
-#include <QtTest>
+#include <QTest>
 
 #include "report/figure_template.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The report's HTML without Qt: escaping, one page per platform with its numbers and sources, the recommendation,
 // the figures.
-#include <QtTest>
+#include <QTest>
 
 #include "report/platform_report.h"
 

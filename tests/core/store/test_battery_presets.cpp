@@ -3,7 +3,7 @@
 // name, removed; bad values refused on save and bad stored JSON skipped with a message. Workspace settings keep
 // apart from the schema's own meta keys.
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include "store/battery_preset_store.h"
 #include "store/workspace.h"

@@ -3,7 +3,8 @@
 // referenced file that changed or vanished is an error naming it, and a failing import stores nothing.
 #include <QProcess>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QFile>
+#include <QTest>
 
 #include <fstream>
 

@@ -2,7 +2,7 @@
 // Pipeline runs in the workspace: every field comes back bit-exact (unknown statistics stay unknown), stages in
 // pipeline order, removal cascades, and a version-2 workspace gains the tables on opening.
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include "store/workspace.h"
 #include "workspace_test_support.h"

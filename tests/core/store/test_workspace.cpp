@@ -3,7 +3,7 @@
 // imports; an import is stored whole or not at all (duplicate, bad row, cancel).
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 #include <chrono>
 #include <cmath>
 #include <limits>

@@ -3,7 +3,8 @@
 // and copies made with save_as.
 #include <QDir>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QFile>
+#include <QTest>
 
 #include "store/workspace.h"
 #include "workspace_test_support.h"

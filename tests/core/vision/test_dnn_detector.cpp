@@ -4,7 +4,7 @@
 // rows [image, class, score, x0, y0, x1, y1]. The image is painted so that the first row is one detection and
 // the other two carry a negative image id (SSD's "no detection"), so the expected box is known exactly.
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include <fstream>
 

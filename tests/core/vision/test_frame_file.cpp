@@ -2,7 +2,7 @@
 // Frame files for the pipeline (raw Bayer + sidecar, grey images) and the conversion of a pipeline result into the
 // stored run (ms -> s, stage names).
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include <fstream>
 

@@ -2,7 +2,7 @@
 // The OpenCL preprocessing (demosaic + reprojection kernels) against the CPU path (bilinear demosaic, then the
 // fixed-point LUT remap) on a synthetic capture: every pixel within one grey level. Skipped without an OpenCL
 // device (PoCL provides one on CPU-only machines).
-#include <QtTest>
+#include <QTest>
 
 #include "vision/opencl_preprocess.h"
 #include "vision/preprocess.h"

@@ -5,7 +5,7 @@
 #include <chrono>
 #include <thread>
 
-#include <QtTest>
+#include <QTest>
 
 #include "vision/bounded_queue.h"
 #include "vision/pipeline.h"

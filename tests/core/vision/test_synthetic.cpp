@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Straight lines of the synthetic chart must come out straight after fisheye capture, demosaicing and the
 // reprojection to a rectilinear view: the end-to-end check of the lens model and the LUT.
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 
 #include "vision/fused.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Figure 3's images from a frame (triptych.h), frame <-> Mat, and the geometry the inspector and overlays use
 // (view_geometry.h: output_of inverts source_of; the image circle; the view outline).
-#include <QtTest>
+#include <QTest>
 
 #include <cstring>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Bad power logs: each one an ImportError with the right category and file:line:column in its message.
-#include <QtTest>
+#include <QTest>
 
 #include "importer.h"
 #include "power_csv.h"

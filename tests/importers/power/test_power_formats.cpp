@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Every delimited power-log flavour BenchScope reads, from realistic fixtures, through the same entry points the
 // app uses (import_file sniffing, import_power_log with options).
-#include <QtTest>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
 
 #include "importer.h"
 #include "power_csv.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tegrastats from three Jetson generations, the interval option and the rules for broken logs.
-#include <QtTest>
+#include <QTest>
 
 #include "importer.h"
 #include "power_import.h"

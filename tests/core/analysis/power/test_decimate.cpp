@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Min/max decimation of long traces (the power view draws 10-million-sample logs through it): at most two points
 // per pixel column, and each column keeps exactly the true min and max of its samples, in time order.
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 #include <limits>
 #include <random>

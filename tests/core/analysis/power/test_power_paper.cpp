@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's current-consumption section, recomputed from sample_data through the importer and core:
 // mean current (SD), power at 16 V, GFLOPS/W with the GPU peaks, battery life on 14.8 V x 3.85 Ah.
-#include <QtTest>
+#include <QTest>
 
 #include "../../../support/paper_sample.h"
 #include <algorithm>
