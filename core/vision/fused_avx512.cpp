@@ -22,8 +22,10 @@
 #define BS_FUSED_X86 1
 // GCC 12's AVX-512 headers initialise their "undefined" placeholder vectors from themselves (__Y = __Y), which
 // -Wuninitialized reports once the intrinsics are inlined here; the values are never read.
+#if !defined(__clang__)  // clang has neither the warning nor the problem
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #endif
 
 namespace bs::vision::detail {

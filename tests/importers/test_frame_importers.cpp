@@ -121,8 +121,8 @@ class TestFrameImporters : public QObject {
     const bs::Frame f = bs::read_raw_frame(at("bare.raw"), o).frames.at(0);
     QCOMPARE(f.width, 8);
     QCOMPARE(int(f.pixels[31]), 7);
-    QVERIFY_EXCEPTION_THROWN(bs::parse_raw_geometry("8by4"), std::invalid_argument);
-    QVERIFY_EXCEPTION_THROWN(bs::parse_raw_geometry("8x4:XYZW"), std::invalid_argument);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, bs::parse_raw_geometry("8by4"));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, bs::parse_raw_geometry("8x4:XYZW"));
     // Wrong geometry: 8x8 needs 64 bytes.
     const Failure wrong = failure([&] { (void)bs::read_raw_frame(at("bare.raw"), bs::parse_raw_geometry("8x8")); });
     QCOMPARE(wrong.category, bs::ImportErrorCategory::InvalidValue);

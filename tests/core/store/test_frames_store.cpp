@@ -99,7 +99,7 @@ class TestFramesStore : public QObject {
       QVERIFY2(std::string(e.what()).starts_with(s.path), e.what());
     }
     std::filesystem::remove(raw);
-    QVERIFY_EXCEPTION_THROWN((void)bs::load_frame(ws, s), bs::ImportError);
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError, (void)bs::load_frame(ws, s));
     // Removing the import removes its frame.
     ws.remove_import(s.import_id);
     QVERIFY(ws.frames().empty());
@@ -115,12 +115,12 @@ class TestFramesStore : public QObject {
     bad.frames.back().storage = bs::FrameStorage::Copy;
     bad.frames.back().pixels.resize(7);  // the second frame's pixels do not match its geometry
     bs::Workspace ws(ws_path);
-    QVERIFY_EXCEPTION_THROWN(ws.add_import(bad, "hash-1"), bs::WorkspaceError);
+    QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, ws.add_import(bad, "hash-1"));
     QVERIFY(ws.imports().empty());
     QVERIFY(ws.frames().empty());
     bs::CancelToken cancel;
     cancel.cancel();
-    QVERIFY_EXCEPTION_THROWN(ws.add_import(good, "hash-2", &cancel), bs::Cancelled);
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, ws.add_import(good, "hash-2", &cancel));
     QVERIFY(ws.frames().empty());
     ws.add_import(good, "hash-3");
     QCOMPARE(ws.frames().size(), std::size_t{1});

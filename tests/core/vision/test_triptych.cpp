@@ -99,11 +99,11 @@ class TestTriptych : public QObject {
     }
     // A frame of another size than the lens is refused.
     const bs::Frame wrong = frame_from(cv::Mat(10, 10, CV_8UC1, cv::Scalar(1)), "BGGR", 8);
-    QVERIFY_EXCEPTION_THROWN(render_triptych(wrong, DemosaicMethod::Bilinear, lens, view), std::invalid_argument);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, render_triptych(wrong, DemosaicMethod::Bilinear, lens, view));
     // Damaged pixel buffers are refused too.
     bs::Frame short_frame = wrong;
     short_frame.pixels.resize(5);
-    QVERIFY_EXCEPTION_THROWN(frame_to_mat(short_frame), std::invalid_argument);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, frame_to_mat(short_frame));
   }
 
   void window_level_and_default_lens() {
