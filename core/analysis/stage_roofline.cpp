@@ -159,6 +159,7 @@ StagePlacements place_preprocessing(std::span<const RooflineCeiling> ceilings, s
     p.cost = stage_cost(*kernels, p.geometry);
     p.time = *stage;
     p.point = place_on_roofline(*c, run.platform + " preprocessing", p.cost.ops, p.cost.bytes, stage->mean_s);
+    p.memory_ceiling_known = c->bandwidth_bps.has_value();
     p.ops_per_s_low = p.cost.ops / (stage->mean_s + stage->sd_s);
     if (stage->mean_s - stage->sd_s > 0) p.ops_per_s_high = p.cost.ops / (stage->mean_s - stage->sd_s);
     out.placed.push_back(std::move(p));

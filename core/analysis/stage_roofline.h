@@ -85,6 +85,7 @@ struct StagePlacement {
   bool geometry_assumed = false;      // output view size unknown: taken equal to the camera frame (the paper's case)
   StageStats time;                    // the measured stage (seconds)
   RooflinePoint point;                // achieved ops/s = cost.ops / time.mean_s
+  bool memory_ceiling_known = false;  // the device has a measured bandwidth (else the roof is its peak alone)
   std::optional<double> ops_per_s_low, ops_per_s_high;  // at mean + SD and mean - SD (when mean - SD > 0)
 };
 
