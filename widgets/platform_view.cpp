@@ -106,7 +106,7 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   mission_ = new QComboBox(this);
   mission_->setEditable(true);
   mission_->setInsertPolicy(QComboBox::NoInsert);
-  mission_->setMinimumContentsLength(22);
+  mission_->setMinimumContentsLength(36);
   mission_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   mission_->lineEdit()->setPlaceholderText(tr("none: constant load"));
   mission_->setToolTip(tr("Mission profile: phases name:seconds:watts, comma separated (e.g. the servos per phase), "
@@ -123,20 +123,21 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   auto* export_tex = new QPushButton(tr("Export LaTeX…"), this);
   auto* export_csv = new QPushButton(tr("Export CSV…"), this);
 
+  // Two rows: the constraints (and exports), then what the battery column assumes (pack, parallel load, mission).
   auto* controls = new QHBoxLayout;
   for (QWidget* w : {static_cast<QWidget*>(use_budget_), static_cast<QWidget*>(budget_), static_cast<QWidget*>(use_fps_),
                      static_cast<QWidget*>(fps_), static_cast<QWidget*>(use_runtime_), static_cast<QWidget*>(runtime_)})
     controls->addWidget(w);
-  controls->addSpacing(12);
-  controls->addWidget(new QLabel(tr("Battery:"), this));
-  controls->addWidget(battery_);
-  controls->addWidget(new QLabel(tr("Parallel load:"), this));
-  controls->addWidget(extra_load_);
-  controls->addWidget(new QLabel(tr("Mission:"), this));
-  controls->addWidget(mission_, 1);
-  controls->addStretch(0);
+  controls->addStretch(1);
   controls->addWidget(export_tex);
   controls->addWidget(export_csv);
+  auto* battery_row = new QHBoxLayout;
+  battery_row->addWidget(new QLabel(tr("Battery:"), this));
+  battery_row->addWidget(battery_);
+  battery_row->addWidget(new QLabel(tr("Parallel load:"), this));
+  battery_row->addWidget(extra_load_);
+  battery_row->addWidget(new QLabel(tr("Mission (name:s:W, …):"), this));
+  battery_row->addWidget(mission_, 1);
 
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
@@ -150,6 +151,7 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(controls);
+  layout->addLayout(battery_row);
   layout->addWidget(summary_);
   layout->addWidget(table_, 1);
 
@@ -392,7 +394,7 @@ void PlatformView::fill_table() {
   table_->resizeColumnsToContents();
   // Numbers need little room; headers wrap onto three lines instead of widening their columns.
   for (int c = 0; c < table_->columnCount(); ++c) {
-    const int cap = c == 0 ? 230 : c <= 2 ? 200 : 118;
+    const int cap = c == 0 ? 200 : c <= 2 ? 160 : 104;
     table_->setColumnWidth(c, std::min(table_->columnWidth(c), cap));
   }
   table_->horizontalHeader()->setMinimumHeight(64);

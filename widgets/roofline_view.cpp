@@ -31,7 +31,7 @@ RooflineView::RooflineView(QWidget* parent) : QWidget(parent), plot_(new QCustom
     axis->setNumberPrecision(0);
   }
   plot_->xAxis->setLabel(tr("Arithmetic intensity (FLOP/byte)"));
-  plot_->yAxis->setLabel(tr("Performance (FLOP/s)"));
+  plot_->yAxis->setLabel(tr("Performance (FLOP/s; stages: integer op/s)"));
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 8));
   // The legend sits right of the axes: roofs span the whole width, so inside it would always cover one.
@@ -161,10 +161,13 @@ void RooflineView::redraw() {
     QCPGraph* key = plot_->addGraph();  // legend entry only
     key->setLineStyle(QCPGraph::lsNone);
     key->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 1.5), Qt::NoBrush, 11));
-    key->setName(tr("Preprocessing stage (demosaic + reprojection), measured; bar: ± SD"));
+    key->setName(tr("Preprocessing stage (demosaic + reprojection, or fused), measured; bar: ± SD"));
   }
   QFont label_font(font().family(), 7);
+  int stage_index = 0;
   for (const StagePlacement& s : stages_.placed) {
+    // Stages of the same kernels share an intensity: their labels alternate above and below the stars.
+    const bool above = stage_index++ % 2 == 0;
     const auto it = colors_.find({s.platform, s.device});
     const QColor color = device_color(it == colors_.end() ? 0 : it->second);
     QCPGraph* g = plot_->addGraph();
@@ -181,11 +184,14 @@ void RooflineView::redraw() {
     }
     auto* text = new QCPItemText(plot_);
     text->position->setCoords(s.point.intensity, s.point.flops);
-    text->setPositionAlignment(Qt::AlignLeft | Qt::AlignVCenter);
-    text->setPadding(QMargins(10, 0, 0, 0));
+    text->setPositionAlignment(Qt::AlignLeft | (above ? Qt::AlignBottom : Qt::AlignTop));
+    text->setPadding(QMargins(9, above ? 0 : 3, 0, above ? 3 : 0));
     text->setFont(label_font);
     text->setColor(color.darker(130));
-    text->setText(tr("%1 preprocessing %2 ms").arg(QString::fromStdString(s.platform)).arg(s.time.mean_s * 1e3, 0, 'f', 2));
+    const bool fused = s.cost.kernels.size() == 1 && s.cost.kernels.front() == StageKernel::Fused;
+    text->setText(tr("%1 %2 %3 ms")
+                      .arg(QString::fromStdString(s.platform), fused ? tr("fused preprocessing") : tr("preprocessing"))
+                      .arg(s.time.mean_s * 1e3, 0, 'f', 2));
     y_min = std::min(y_min, s.point.flops);
   }
   if (ceilings_.empty()) {
