@@ -9,12 +9,15 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
+#include <QSignalBlocker>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "analysis/battery.h"
 #include "analysis/platform_table.h"
@@ -100,8 +103,18 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   use_runtime_ = new QCheckBox(tr("Battery runtime ≥"), this);
   runtime_ = spin(this, 1, 100000, 60, tr(" min"), 0);
   battery_ = new QComboBox(this);
-  for (const BatteryPack& p : battery_presets())
-    battery_->addItem(QString::fromStdString(p.description), QString::fromStdString(p.name));
+  mission_ = new QComboBox(this);
+  mission_->setEditable(true);
+  mission_->setInsertPolicy(QComboBox::NoInsert);
+  mission_->setMinimumContentsLength(36);
+  mission_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  mission_->lineEdit()->setPlaceholderText(tr("none: constant load"));
+  mission_->setToolTip(tr("Mission profile: phases name:seconds:watts, comma separated (e.g. the servos per phase), "
+                          "repeated until the pack is empty, in parallel with each computer's mean power and the "
+                          "parallel load; the battery runtime then follows the mission. Missions saved with the "
+                          "Battery tab's presets are listed; empty: a constant load."));
+  setups_ = builtin_battery_setups();
+  fill_battery_choices();
   extra_load_ = spin(this, 0, 10000, 0, tr(" W"), 1);
   use_budget_->setToolTip(tr("Mean power during the platform's power log must stay within this budget"));
   use_fps_->setToolTip(tr("Preprocessing + detection in sequence, from the platform's pipeline run"));
@@ -110,18 +123,21 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   auto* export_tex = new QPushButton(tr("Export LaTeX…"), this);
   auto* export_csv = new QPushButton(tr("Export CSV…"), this);
 
+  // Two rows: the constraints (and exports), then what the battery column assumes (pack, parallel load, mission).
   auto* controls = new QHBoxLayout;
   for (QWidget* w : {static_cast<QWidget*>(use_budget_), static_cast<QWidget*>(budget_), static_cast<QWidget*>(use_fps_),
                      static_cast<QWidget*>(fps_), static_cast<QWidget*>(use_runtime_), static_cast<QWidget*>(runtime_)})
     controls->addWidget(w);
-  controls->addSpacing(12);
-  controls->addWidget(new QLabel(tr("Battery:"), this));
-  controls->addWidget(battery_);
-  controls->addWidget(new QLabel(tr("Parallel load:"), this));
-  controls->addWidget(extra_load_);
   controls->addStretch(1);
   controls->addWidget(export_tex);
   controls->addWidget(export_csv);
+  auto* battery_row = new QHBoxLayout;
+  battery_row->addWidget(new QLabel(tr("Battery:"), this));
+  battery_row->addWidget(battery_);
+  battery_row->addWidget(new QLabel(tr("Parallel load:"), this));
+  battery_row->addWidget(extra_load_);
+  battery_row->addWidget(new QLabel(tr("Mission (name:s:W, …):"), this));
+  battery_row->addWidget(mission_, 1);
 
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
@@ -135,13 +151,23 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(controls);
+  layout->addLayout(battery_row);
   layout->addWidget(summary_);
   layout->addWidget(table_, 1);
 
   for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_}) connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
   for (QDoubleSpinBox* s : {budget_, fps_, runtime_, extra_load_})
     connect(s, &QDoubleSpinBox::valueChanged, this, &PlatformView::recompute);
-  connect(battery_, &QComboBox::currentIndexChanged, this, &PlatformView::recompute);
+  connect(battery_, &QComboBox::currentIndexChanged, this, [this](int i) {
+    // A preset saved with a mission brings it along (the user can still change it).
+    if (i >= 0 && i < static_cast<int>(setups_.size()) && !setups_[static_cast<std::size_t>(i)].mission.empty()) {
+      const QSignalBlocker block(mission_);
+      mission_->setEditText(QString::fromStdString(setups_[static_cast<std::size_t>(i)].mission));
+    }
+    recompute();
+  });
+  connect(mission_, &QComboBox::activated, this, &PlatformView::recompute);
+  connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::recompute);
   connect(export_tex, &QPushButton::clicked, this, [this] { export_table(true); });
   connect(export_csv, &QPushButton::clicked, this, [this] { export_table(false); });
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int col) {
@@ -161,13 +187,58 @@ void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> 
   recompute();
 }
 
+void PlatformView::fill_battery_choices() {
+  const QSignalBlocker b1(battery_), b2(mission_);
+  const QString current = battery_->currentData().toString(), typed = mission_->currentText();
+  battery_->clear();
+  mission_->clear();
+  mission_->addItem(QString());  // none: a constant load
+  mission_->setItemData(0, tr("No mission: the computer's mean power plus the parallel load, constant"), Qt::ToolTipRole);
+  for (const BatterySetup& s : setups_) {
+    battery_->addItem(QString::fromStdString(s.pack.description.empty() ? s.pack.name : s.pack.description),
+                      QString::fromStdString(s.pack.name));
+    if (s.mission.empty() || mission_->findText(QString::fromStdString(s.mission)) >= 0) continue;
+    mission_->addItem(QString::fromStdString(s.mission));
+    mission_->setItemData(mission_->count() - 1, tr("Mission of the battery preset %1").arg(QString::fromStdString(s.pack.name)),
+                          Qt::ToolTipRole);
+  }
+  // The Battery tab's example mission (servo loads of a walking robot; the paper's robot peaks at 225 W).
+  const QString example = QStringLiteral("idle:60:12,walk:30:140,kick:5:225");
+  if (mission_->findText(example) < 0) {
+    mission_->addItem(example);
+    mission_->setItemData(mission_->count() - 1,
+                          tr("Example: idle 60 s at 12 W, walk 30 s at 140 W, kick 5 s at 225 W (servos), repeated"),
+                          Qt::ToolTipRole);
+  }
+  const int again = battery_->findData(current);
+  battery_->setCurrentIndex(again >= 0 ? again : 0);
+  mission_->setEditText(typed);
+}
+
+void PlatformView::set_workspace(const Workspace* ws) {
+  setups_ = all_battery_setups(ws);
+  fill_battery_choices();
+  recompute();
+}
+
+void PlatformView::set_mission(const QString& spec) {
+  mission_->setEditText(spec);
+  recompute();
+}
+
+QString PlatformView::mission() const { return mission_->currentText().trimmed(); }
+
 ComparisonOptions PlatformView::options() const {
   ComparisonOptions o;
-  if (const BatteryPack* p = find_battery_preset(battery_->currentData().toString().toStdString())) {
-    o.battery_nominal_v = p->nominal_v();
-    o.battery_capacity_ah = p->capacity_ah;
+  const int i = battery_->currentIndex();
+  if (i >= 0 && i < static_cast<int>(setups_.size())) {
+    const BatterySetup& s = setups_[static_cast<std::size_t>(i)];
+    o.battery_nominal_v = s.pack.nominal_v();
+    o.battery_capacity_ah = s.pack.capacity_ah;
+    o.usable_fraction = s.depth_of_discharge;
   }
   o.extra_load_w = extra_load_->value();
+  o.mission = mission().toStdString();
   return o;
 }
 
@@ -199,7 +270,16 @@ QString PlatformView::recommendation() const {
 }
 
 void PlatformView::recompute() {
-  rows_ = compare_platforms(runs_, traces_, pipelines_, options());
+  ComparisonOptions o = options();
+  mission_error_.clear();
+  try {
+    rows_ = compare_platforms(runs_, traces_, pipelines_, o);
+  } catch (const std::invalid_argument& e) {
+    // A mistyped mission: say why, and show the constant-load numbers meanwhile.
+    mission_error_ = QString::fromStdString(e.what());
+    o.mission.clear();
+    rows_ = compare_platforms(runs_, traces_, pipelines_, o);
+  }
   verdicts_ = recommend(rows_, constraints());
   fill_table();
   const Constraints c = constraints();
@@ -219,7 +299,21 @@ void PlatformView::recompute() {
                           : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
                                 .arg(recommendation()));
   }
-  if (!rows_.empty()) summary_->setText(summary_->text() + hidden);
+  if (rows_.empty()) return;
+  // What the battery column assumes: the pack, and the mission with each platform's mean load on the pack.
+  QString battery = tr("<br>Battery runtime: %1, constant-power model").arg(battery_->currentText().toHtmlEscaped());
+  if (!mission_error_.isEmpty()) {
+    battery += tr(" — <span style='color:#b00020'>mission ignored: %1</span>").arg(mission_error_.toHtmlEscaped());
+  } else if (!o.mission.empty()) {
+    QStringList loads;
+    for (const PlatformRow& r : rows_)
+      if (r.battery_load_w) loads << tr("%1 %2 W").arg(QString::fromStdString(r.platform)).arg(*r.battery_load_w, 0, 'f', 1);
+    battery += tr(", mission <tt>%1</tt> repeated with each computer in parallel (mean load: %2)")
+                   .arg(QString::fromStdString(o.mission).toHtmlEscaped(), loads.join(", "));
+  } else if (o.extra_load_w > 0) {
+    battery += tr(", computer + %1 W parallel load").arg(o.extra_load_w, 0, 'f', 1);
+  }
+  summary_->setText(summary_->text() + battery + "." + hidden);
 }
 
 void PlatformView::fill_table() {
@@ -234,6 +328,18 @@ void PlatformView::fill_table() {
   QStringList header;
   for (const auto& h : t.header) header << QString::fromStdString(h);
   table_->setHorizontalHeaderLabels(header);
+  for (int c = 0; c < table_->columnCount(); ++c) {
+    const std::string& id = ids[static_cast<std::size_t>(c)];
+    QString tip;
+    if (id == column::kFramesPerWh)
+      tip = tr("Frames per watt-hour: frames preprocessed and detected per Wh of the computer, 3600 / energy per "
+               "frame (J); energy per frame = mean power × (preprocessing + detection) mean time, or the logged "
+               "energy over the pipeline run when the log covers it.");
+    else if (id == column::kBattery)
+      tip = tr("Battery runtime on the chosen pack (constant-power model): the computer's mean power plus the "
+               "parallel load, or over the mission profile when one is set.");
+    if (!tip.isEmpty() && table_->horizontalHeaderItem(c)) table_->horizontalHeaderItem(c)->setToolTip(tip);
+  }
   // The best value per numeric column among the platforms that have one.
   std::vector<double> best(t.header.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<std::vector<ColumnValue>> values;
@@ -288,7 +394,7 @@ void PlatformView::fill_table() {
   table_->resizeColumnsToContents();
   // Numbers need little room; headers wrap onto three lines instead of widening their columns.
   for (int c = 0; c < table_->columnCount(); ++c) {
-    const int cap = c == 0 ? 230 : c <= 2 ? 200 : 118;
+    const int cap = c == 0 ? 200 : c <= 2 ? 160 : 104;
     table_->setColumnWidth(c, std::min(table_->columnWidth(c), cap));
   }
   table_->horizontalHeader()->setMinimumHeight(64);

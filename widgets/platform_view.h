@@ -5,12 +5,17 @@
 #include <vector>
 
 #include "analysis/platform_comparison.h"
+#include "store/battery_preset_store.h"
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QTableWidget;
+
+namespace bs {
+class Workspace;
+}
 
 namespace bs::ui {
 
@@ -26,6 +31,12 @@ class PlatformView : public QWidget {
   void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces, std::vector<PipelineRun> pipelines = {});
   QTableWidget* table() const { return table_; }
   QString recommendation() const;  // the recommended platform, empty when none
+  // The battery presets (built-in and the workspace's, with their missions) offered in the Battery and Mission
+  // choices; `ws` may be null (built-ins only).
+  void set_workspace(const Workspace* ws);
+  // A mission profile (parse_mission() text) in parallel with every computer; empty: a constant load.
+  void set_mission(const QString& spec);
+  QString mission() const;
   void set_power_budget(std::optional<double> watts);
   void set_min_fps(std::optional<double> fps);
   void set_min_runtime_min(std::optional<double> minutes);
@@ -41,10 +52,14 @@ class PlatformView : public QWidget {
   void recompute();
   void fill_table();
   void export_table(bool latex);
+  void fill_battery_choices();
 
   QCheckBox *use_budget_, *use_fps_, *use_runtime_;
   QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;
   QComboBox* battery_;
+  QComboBox* mission_;   // editable: the presets' missions, or typed name:seconds:watts,...
+  QString mission_error_;
+  std::vector<BatterySetup> setups_;
   QLabel* summary_;
   QTableWidget* table_;
   std::vector<FlopsRun> runs_;

@@ -25,6 +25,12 @@ void write_file(const std::string& path, const std::string& text) {
   if (!f) throw std::runtime_error(path + ": cannot write");
 }
 
+std::string fmt_w(double w) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f W", w);
+  return buf;
+}
+
 nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 // A stage's per-frame time: mean, SD (ms) and n; null when the platform has no pipeline run.
 nlohmann::json stage_json(const std::optional<Summary>& s) {
@@ -74,11 +80,13 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"fps", opt(r.fps)}, {"energy_per_frame_j", opt(r.energy_per_frame_j)},
                       {"energy_per_preprocess_j", opt(r.energy_per_preprocess_j)},
                       {"energy_per_inference_j", opt(r.energy_per_inference_j)},
-                      {"battery_runtime_h", opt(r.battery_runtime_h)}, {"frames_per_wh", opt(r.frames_per_wh)},
+                      {"battery_runtime_h", opt(r.battery_runtime_h)}, {"battery_load_w", opt(r.battery_load_w)},
+                      {"frames_per_wh", opt(r.frames_per_wh)},
                       {"meets_constraints", verdicts[i].meets_all}, {"recommended", verdicts[i].recommended},
                       {"note", verdicts[i].note}, {"checks", checks}, {"sources", sources}});
     }
     out << nlohmann::json{{"format", "benchscope-platforms"}, {"version", 1}, {"battery", pack->name},
+                          {"extra_load_w", options.extra_load_w}, {"mission", options.mission},
                           {"platforms", list}}
                .dump(2)
         << '\n';
@@ -96,7 +104,14 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   text.print(out);
   char extra[64] = "";
   if (options.extra_load_w > 0) std::snprintf(extra, sizeof extra, ", plus %.1f W in parallel", options.extra_load_w);
-  out << "battery: " << pack->name << " (" << pack->description << "), constant-power model" << extra << "\n";
+  out << "battery: " << pack->name << " (" << pack->description << "), constant-power model" << extra;
+  if (!options.mission.empty()) {
+    out << ", mission " << options.mission << " repeated (mean load";
+    for (const auto& r : rows)
+      if (r.battery_load_w) out << ' ' << r.platform << ' ' << fmt_w(*r.battery_load_w);
+    out << ')';
+  }
+  out << "\nframes per Wh: frames preprocessed and detected per Wh of the computer = 3600 / energy per frame (J)\n";
   if (constrained) {
     std::string chosen;
     for (const auto& v : verdicts)
@@ -111,11 +126,15 @@ const CommandRegistrar registrar({
     "platforms",
     "platform comparison and recommendation under constraints (power budget, fps, battery runtime)",
     "usage: benchscope-cli platforms (WORKSPACE | PATH...) [--budget W] [--min-fps FPS] [--min-runtime MIN]\n"
-    "                                [--battery PRESET] [--extra-load W] [--supply-volts V]\n"
+    "                                [--battery PRESET] [--extra-load W] [--mission SPEC] [--supply-volts V]\n"
     "                                [--latex FILE] [--csv FILE] [--json]\n"
     "  One column per platform: best GPU and CPU peak, % of theoretical peak, pipeline timings, mean and max power,\n"
     "  GFLOPS/W (the paper's peak / max power, and peak / mean power), energy per frame, battery runtime\n"
-    "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh.\n"
+    "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh (frames\n"
+    "  preprocessed and detected per Wh of the computer: 3600 / energy per frame).\n"
+    "  --mission name:seconds:watts,... (e.g. idle:60:12,walk:30:140,kick:5:225) adds the phases' loads (servos)\n"
+    "  in parallel with each computer's mean power and --extra-load, repeated until the pack is empty, as\n"
+    "  `battery --mission`: the battery runtime and the runtime constraint then follow the mission.\n"
     "  With constraints, each platform is checked against them (the power budget against the mean power) with its\n"
     "  margin, and the platform with the most compute among those that meet all of them is recommended. Only\n"
     "  platforms with a power log can be recommended. --latex/--csv write the table (booktabs / RFC 4180).",

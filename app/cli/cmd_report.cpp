@@ -68,10 +68,12 @@ const CommandRegistrar registrar({
     "one-page-per-platform report with the figures embedded (HTML and/or PDF)",
     "usage: benchscope-cli report (WORKSPACE | PATH...) --out report.html [--pdf report.pdf]\n"
     "                             [--budget W] [--min-fps FPS] [--min-runtime MIN] [--battery PRESET]\n"
-    "                             [--extra-load W] [--supply-volts V] [--template FILE] [--font-pt 8] [--quiet]\n"
+    "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt 8]\n"
+    "                             [--quiet]\n"
     "  The platform comparison, then one page per platform: best GPU and CPU peak with device, backend and % of\n"
     "  theoretical peak, pipeline timings (ms, mean ± SD (n)), mean and max power, GFLOPS/W (the paper's and at\n"
-    "  mean power), energy per frame, battery runtime (constant-power model, --battery preset), and where each\n"
+    "  mean power), energy per frame, battery runtime (constant-power model, --battery preset, over --mission when\n"
+    "  given, as in `platforms`), and where each\n"
     "  number came from; then the template's figures. The HTML embeds the figures (one self-contained file); the\n"
     "  PDF is A4, printed by Qt. With constraints, the recommended platform is named. --out report.pdf alone\n"
     "  writes only the PDF. Needs a build with Qt.",

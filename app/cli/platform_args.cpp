@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform_args.h"
 
+#include <stdexcept>
+
 namespace bs::cli {
 
 const std::set<std::string>& platform_value_options() {
   static const std::set<std::string> names{"--budget", "--min-fps", "--min-runtime", "--battery", "--extra-load",
-                                              "--supply-volts"};
+                                              "--supply-volts", "--mission"};
   return names;
 }
 
@@ -21,6 +23,15 @@ PlatformArgs parse_platform_args(const ParsedArgs& args) {
   p.options.battery_nominal_v = p.pack->nominal_v();
   p.options.battery_capacity_ah = p.pack->capacity_ah;
   p.options.extra_load_w = args.number("--extra-load", 0);
+  if (!(p.options.extra_load_w >= 0)) throw UsageError("--extra-load must be >= 0 W");
+  if (const auto mission = args.value("--mission")) {
+    try {
+      parse_mission(*mission);  // name the option in the error, before any data is loaded
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--mission: ") + e.what());
+    }
+    p.options.mission = *mission;
+  }
   if (args.value("--supply-volts")) p.options.supply_v = args.number("--supply-volts", 0);
   if (args.value("--budget")) p.constraints.power_budget_w = args.number("--budget", 0);
   if (args.value("--min-fps")) p.constraints.min_fps = args.number("--min-fps", 0);

@@ -10,7 +10,8 @@
 
 namespace bs::cli {
 
-// --budget W, --min-fps FPS, --min-runtime MIN, --battery PRESET, --extra-load W, --supply-volts V
+// --budget W, --min-fps FPS, --min-runtime MIN, --battery PRESET, --extra-load W, --supply-volts V,
+// --mission SPEC (name:seconds:watts,... in parallel with each computer, as `battery --mission`)
 const std::set<std::string>& platform_value_options();
 
 struct PlatformArgs {
@@ -22,7 +23,7 @@ struct PlatformArgs {
   }
 };
 
-// Throws UsageError for an unknown battery preset, naming the known ones.
+// Throws UsageError for an unknown battery preset, naming the known ones, or a malformed mission.
 PlatformArgs parse_platform_args(const ParsedArgs& args);
 
 }  // namespace bs::cli

@@ -75,10 +75,15 @@ int main(int argc, char** argv) {
       save_png(window.kernel_runner(), dir + "/kernel-runner.png");
       window.power_view()->resize(window.flops_plot()->size());
       save_png(window.power_view(), dir + "/power-view.png");
-      window.platform_view()->resize(window.flops_plot()->size());
+      window.platform_view()->resize(1900, 540);  // every column of the comparison side by side
       window.platform_view()->set_power_budget(10.0);  // the paper's conclusion: under 10 W the Jetson
+      window.platform_view()->set_mission("idle:60:12,walk:30:140,kick:5:225");  // servos per phase
       save_png(window.platform_view(), dir + "/platform-view.png");
-      window.roofline_view()->resize(window.flops_plot()->size());
+      // The mission decides: with the servos' phases only the Jetson lasts 40 minutes.
+      window.platform_view()->set_power_budget(std::nullopt);
+      window.platform_view()->set_min_runtime_min(40.0);
+      save_png(window.platform_view(), dir + "/platform-recommendation.png");
+      window.roofline_view()->resize(1500, 720);  // legend at the side, the note under the plot
       save_png(window.roofline_view(), dir + "/roofline-view.png");
       window.frames_view()->resize(1500, 760);  // three panes side by side need the width
       window.frames_view()->triptych()->wait_until_rendered(60000);

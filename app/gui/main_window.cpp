@@ -179,7 +179,8 @@ void MainWindow::reload() {
   if (workspace_)
     for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
   pipeline_->set_data(pipelines);
-  platforms_->set_data(all, std::move(plain_traces), std::move(pipelines));
+  platforms_->set_workspace(workspace_.get());
+  platforms_->set_data(all, std::move(plain_traces), pipelines);
   std::vector<ResultSet> sets;
   std::map<std::pair<std::string, std::string>, int> device_colors;
   for (const StoredRun& r : runs_) device_colors[{r.run.platform, r.run.device}] = r.color_index;
@@ -188,7 +189,7 @@ void MainWindow::reload() {
       device_colors[{s.set.platform, s.set.device}] = s.color_index;
       sets.push_back(s.set);
     }
-  roofline_->set_data(all, std::move(sets), std::move(device_colors));
+  roofline_->set_data(all, std::move(sets), std::move(device_colors), std::move(pipelines));
   frames_->set_workspace(workspace_.get());
   feed_lens_tab();
   refresh_views();

@@ -5,6 +5,8 @@
 #include <limits>
 #include <cstdio>
 
+#include "analysis/battery.h"
+#include "analysis/platform_battery.h"
 #include "analysis/power.h"
 #include "analysis/power_stats.h"
 
@@ -144,11 +146,46 @@ std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::
                                               "mean power of the platform's log x mean frame time (not time-aligned)"};
     }
   }
+  if (!o.mission.empty()) parse_mission(o.mission);  // a bad mission is an error even without power logs
   for (PlatformRow& row : rows) {
     if (!row.mean_power_w) continue;
-    const double load = *row.mean_power_w + o.extra_load_w;
-    row.battery_runtime_h = constant_power_runtime_h(o.battery_nominal_v, o.battery_capacity_ah, load, o.usable_fraction);
-    if (row.energy_per_frame_j && *row.energy_per_frame_j > 0) row.frames_per_wh = 3600.0 / *row.energy_per_frame_j;
+    char how[320];
+    if (o.mission.empty()) {
+      const double load = *row.mean_power_w + o.extra_load_w;
+      row.battery_load_w = load;
+      row.battery_runtime_h = constant_power_runtime_h(o.battery_nominal_v, o.battery_capacity_ah, load, o.usable_fraction);
+      std::snprintf(how, sizeof how, "constant power: %.2f V x %.3f Ah x %.0f %% / (%.2f W computer + %.2f W parallel)",
+                    o.battery_nominal_v, o.battery_capacity_ah, o.usable_fraction * 100, *row.mean_power_w, o.extra_load_w);
+    } else {
+      // The mission's phases with the computer and the parallel load on top, through the same simulation as the
+      // Battery tab; the pack is only its nominal energy in the constant-power model.
+      const Mission m = platform_mission(*row.mean_power_w, o.extra_load_w, o.mission);
+      BatteryPack pack;
+      pack.cells_series = 1;
+      pack.nominal_cell_v = o.battery_nominal_v;
+      pack.capacity_ah = o.battery_capacity_ah;
+      DischargeOptions d;
+      d.depth_of_discharge = o.usable_fraction;
+      const DischargeResult r = simulate_discharge(pack, m, d);
+      row.battery_load_w = m.mean_load_w();
+      row.battery_runtime_h = r.runtime_s / 3600.0;
+      std::snprintf(how, sizeof how,
+                    "mission %s repeated, %.2f W computer + %.2f W parallel in every phase (mean load %.2f W), "
+                    "constant power on %.2f V x %.3f Ah x %.0f %%: %s",
+                    o.mission.c_str(), *row.mean_power_w, o.extra_load_w, m.mean_load_w(), o.battery_nominal_v,
+                    o.battery_capacity_ah, o.usable_fraction * 100, r.stop_reason.c_str());
+    }
+    row.sources[column::kBattery] = {row.sources.count(column::kPower) ? row.sources[column::kPower].source_file : "",
+                                     row.sources.count(column::kPower) ? row.sources[column::kPower].origin
+                                                                       : DataOrigin::Unknown,
+                                     how};
+    if (row.energy_per_frame_j && *row.energy_per_frame_j > 0) {
+      row.frames_per_wh = 3600.0 / *row.energy_per_frame_j;
+      const CellSource& e = row.sources[column::kEnergyPerFrame];
+      row.sources[column::kFramesPerWh] = {e.source_file, e.origin,
+                                           "frames preprocessed and detected per Wh of the computer: 3600 / energy "
+                                           "per frame (" + e.how + ")"};
+    }
   }
   return rows;
 }

@@ -54,7 +54,10 @@ struct PlatformRow {
   std::optional<double> energy_per_frame_j;       // preprocessing (+ detection) of one frame
   std::optional<double> energy_per_preprocess_j;  // preprocessing of one frame alone: mean power x its mean time
   std::optional<double> energy_per_inference_j;   // one detection: mean power x the detection stage's mean time
-  std::optional<double> battery_runtime_h;        // constant-power model at the mean power
+  std::optional<double> battery_runtime_h;        // constant-power model at the mean power, or over the mission
+  std::optional<double> battery_load_w;           // mean load on the pack: computer + parallel load (+ mission)
+  // Frames preprocessed and detected per watt-hour of the computer: 3600 / energy per frame (J), i.e. the mean
+  // power over (preprocessing + detection) mean time, or the time-aligned energy when the log covers the run.
   std::optional<double> frames_per_wh;
   std::map<std::string, CellSource> sources;      // column id -> where the number came from
   double best_peak_flops() const;
@@ -66,6 +69,10 @@ struct ComparisonOptions {
   double usable_fraction = 1.0;
   double extra_load_w = 0;            // in parallel, e.g. servos
   std::optional<double> supply_v;     // overrides the traces' supply voltage
+  // A mission profile (parse_mission() text, e.g. "idle:60:12,walk:30:140,kick:5:225": servo loads per phase) in
+  // parallel with the computer's mean power and extra_load_w (platform_mission(), as the Battery tab); the runtime
+  // is then simulate_discharge()'s with the constant-power model. Empty: the constant load alone.
+  std::string mission;
 };
 
 // Column ids used in PlatformRow::sources and by the views.
@@ -76,8 +83,11 @@ inline constexpr const char* kPower = "power";
 inline constexpr const char* kPipeline = "pipeline";
 inline constexpr const char* kEnergyPerFrame = "energy_per_frame";
 inline constexpr const char* kEnergyPerStage = "energy_per_stage";  // per preprocessed frame and per inference
+inline constexpr const char* kBattery = "battery";
+inline constexpr const char* kFramesPerWh = "frames_per_wh";
 }  // namespace column
 
+// Throws std::invalid_argument for a malformed options.mission.
 std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::span<const PowerTrace> traces,
                                            std::span<const PipelineTimings> pipelines,
                                            const ComparisonOptions& options = {});

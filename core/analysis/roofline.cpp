@@ -33,25 +33,17 @@ double rotation_intensity(int dims, std::int64_t iterations) {
   return 6.0 * dims * static_cast<double>(iterations) / (16.0 * dims + 4.0);
 }
 
-const std::vector<StageCost>& preprocessing_stage_costs() {
-  // Demosaic (bilinear, core/vision/bayer.cpp): per pixel two missing channels, each the mean of 2 or 4
-  // neighbours (up to 3 adds + 1 scale) = 8 ops; reads 1 byte (neighbours come from cache), writes 3.
-  // Reprojection (core/vision/reproject): per output pixel the LUT entry (2 floats = 8 bytes), 4 source pixels
-  // (4 x 3 bytes), 3 bytes written; weights 4 ops, 3 channels x 3 lerps x 3 ops = 27, total 31.
-  static const std::vector<StageCost> costs{{"demosaic (bilinear)", 8.0, 4.0}, {"reprojection (bilinear, LUT)", 31.0, 23.0}};
-  return costs;
-}
-
 std::vector<RooflineCeiling> roofline_ceilings(std::span<const FlopsRun> runs, std::span<const ResultSet> sets) {
   std::vector<RooflineCeiling> out;
   const auto find = [&](const std::string& platform, const std::string& device) -> RooflineCeiling& {
     for (auto& c : out)
       if (c.platform == platform && c.device == device) return c;
-    out.push_back({platform, device, 0, {}, std::nullopt, {}});
+    out.push_back({platform, device, 0, {}, std::nullopt, {}, DeviceKind::Other});
     return out.back();
   };
   for (const PeakRow& row : peak_table(runs)) {
     RooflineCeiling& c = find(row.platform, row.device);
+    if (row.device_kind != DeviceKind::Other) c.kind = row.device_kind;
     if (row.theoretical_flops && *row.theoretical_flops > c.peak_flops) {
       c.peak_flops = *row.theoretical_flops;
       c.peak_source = "theoretical peak (" + row.backend + ")";

@@ -19,6 +19,7 @@ struct RooflineCeiling {
   std::string peak_source;                // "theoretical", "measured peak of <backend>", ...
   std::optional<double> bandwidth_bps;    // memory ceiling, B/s (best repetition)
   std::string bandwidth_source;
+  DeviceKind kind = DeviceKind::Other;    // of the device's FLOPS runs
   double attainable(double intensity) const;  // min(peak, I x bandwidth); peak when the bandwidth is unknown
   std::optional<double> ridge_intensity() const;  // peak / bandwidth: where memory-bound turns compute-bound
 };
@@ -40,15 +41,7 @@ RooflinePoint place_on_roofline(const RooflineCeiling& ceiling, std::string labe
 // each way) and one float output: 6DN / (16D + 4) FLOP/byte.
 double rotation_intensity(int dims, std::int64_t iterations);
 
-// Operations and bytes per output pixel of BenchScope's preprocessing stages as implemented (bilinear demosaic of
-// an 8-bit mosaic to 8-bit RGB; LUT-driven bilinear reprojection from 8-bit RGB), counted in the source, for
-// placing measured stage timings on the roofline.
-struct StageCost {
-  const char* stage;
-  double flops_per_pixel;
-  double bytes_per_pixel;
-};
-const std::vector<StageCost>& preprocessing_stage_costs();
+// The preprocessing stages (demosaic, reprojection, fused) have their own op/byte model: stage_roofline.h.
 
 // One ceiling per (platform, device): the highest theoretical peak of its runs (else its measured peak) and the
 // best bandwidth among its result-set measurements in B/s.

@@ -69,6 +69,38 @@ class TestCliPlatforms : public QObject {
     QVERIFY(table.startsWith("Platform,GPU peak (GFLOPS)"));
     QVERIFY(table.contains("\"5250.0 (NUC GPU (Iris Plus 650), OpenCL)\""));  // quoted: the cell has a comma
   }
+  void mission() {
+    // 140 W of servos while walking, in parallel with each computer: NUC 56.98 Wh / 180.52 W = 18.94 min, Jetson
+    // 56.98 Wh / 149.48 W = 22.87 min; a 20-minute runtime constraint now picks the Jetson (without the mission
+    // both last over 80 minutes and the NUC, with more compute, wins).
+    QByteArray out;
+    QCOMPARE(run_cli({"platforms", kPaper, "--min-runtime", "20", "--json"}, &out), 0);
+    QCOMPARE(recommended(out), QString("NUC"));
+    QCOMPARE(run_cli({"platforms", kPaper, "--mission", "walk:30:140", "--min-runtime", "20", "--json"}, &out), 0);
+    QCOMPARE(recommended(out), QString("Jetson TX2"));
+    const QJsonObject doc = QJsonDocument::fromJson(out).object();
+    QCOMPARE(doc["mission"].toString(), QString("walk:30:140"));
+    for (const auto v : doc["platforms"].toArray()) {
+      const QJsonObject p = v.toObject();
+      if (p["platform"] == "NUC") {
+        QCOMPARE(std::round(p["battery_runtime_h"].toDouble() * 60 * 100) / 100, 18.94);
+        QCOMPARE(std::round(p["battery_load_w"].toDouble() * 100) / 100, 180.52);
+        // Frames per Wh are the computer's: 3600 / (40.52 W x 176.21 ms).
+        QCOMPARE(std::round(p["frames_per_wh"].toDouble()), 504.0);
+        QVERIFY(p["sources"].toObject()["battery"].toObject()["how"].toString().contains("walk:30:140"));
+      } else if (p["platform"] == "Jetson TX2") {
+        QCOMPARE(std::round(p["battery_runtime_h"].toDouble() * 60 * 100) / 100, 22.87);
+      }
+    }
+    // Phases of different loads: idle 60 s at 12 W, walk 30 s at 140 W, kick 5 s at 225 W; mean servo load
+    // (720 + 4200 + 1125) / 95 = 63.63 W, so the NUC's pack load is 104.16 W and lasts 56.98 / 104.16 h = 32.8 min
+    // plus what the last partial pass adds.
+    QCOMPARE(run_cli({"platforms", kPaper, "--mission", "idle:60:12,walk:30:140,kick:5:225"}, &out), 0);
+    QVERIFY2(out.contains("mission idle:60:12,walk:30:140,kick:5:225 repeated") && out.contains("NUC 104.16 W"),
+             out.constData());
+    QVERIFY(out.contains("frames per Wh: frames preprocessed and detected per Wh"));
+    QCOMPARE(run_cli({"platforms", kPaper, "--mission", "walk:fast:140"}), 2);  // a usage error, named
+  }
   void usage() { QCOMPARE(run_cli({"platforms", kPaper, "--battery", "nope"}), 2); }
 };
 

@@ -3,6 +3,7 @@
 // column is highlighted, numeric sorting, columns without data hidden, sources in tooltips.
 #include <filesystem>
 
+#include <QLabel>
 #include <QTableWidget>
 #include <QSignalSpy>
 #include <QTest>
@@ -12,7 +13,8 @@
 
 namespace {
 
-void load_paper(std::vector<bs::FlopsRun>& runs, std::vector<bs::PowerTrace>& traces) {
+void load_paper(std::vector<bs::FlopsRun>& runs, std::vector<bs::PowerTrace>& traces,
+                std::vector<bs::PipelineRun>* pipelines = nullptr) {
   for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
     const auto ext = e.path().extension();
     if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
@@ -20,6 +22,7 @@ void load_paper(std::vector<bs::FlopsRun>& runs, std::vector<bs::PowerTrace>& tr
     auto b = bs::import_file(e.path().string(), bs::CancelToken{});
     runs.insert(runs.end(), b.runs.begin(), b.runs.end());
     traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());
+    if (pipelines) pipelines->insert(pipelines->end(), b.pipeline_runs.begin(), b.pipeline_runs.end());
   }
 }
 
@@ -84,6 +87,48 @@ class TestPlatformView : public QObject {
     emit t->cellDoubleClicked(row_of(t, "NUC"), gpu);
     QCOMPARE(spy.count(), 1);
     QCOMPARE(spy.at(0).at(1).toString(), QString("gpu_peak"));
+  }
+
+  void mission_and_frames_per_wh() {
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    std::vector<bs::PipelineRun> pipelines;
+    load_paper(runs, traces, &pipelines);
+    bs::ui::PlatformView view;
+    view.resize(1500, 500);
+    view.set_data(runs, traces, pipelines);
+    QTableWidget* t = view.table();
+    const int battery = column(t, "Battery runtime (min)");
+    const int per_wh = column(t, "Frames per Wh");
+    QVERIFY(battery > 0 && per_wh > 0);
+    QVERIFY(!t->isColumnHidden(per_wh));
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("84.36"));
+    // 3600 / (40.52 W x (6.21 + 170) ms) = 504 frames per Wh; the definition is in the header's tooltip.
+    QCOMPARE(t->item(row_of(t, "NUC"), per_wh)->text(), QString("504"));
+    QVERIFY(t->horizontalHeaderItem(per_wh)->toolTip().contains("preprocessed and detected"));
+
+    // A walking mission: 140 W of servos in parallel with each computer; the runtimes and the recommendation
+    // under a 20-minute runtime constraint follow it (NUC 18.94 min, Jetson 22.87 min).
+    view.set_min_runtime_min(20);
+    QCOMPARE(view.recommendation(), QString("NUC"));
+    view.set_mission("walk:30:140");
+    QCOMPARE(view.mission(), QString("walk:30:140"));
+    QCOMPARE(view.options().mission, std::string("walk:30:140"));
+    QCOMPARE(t->item(row_of(t, "NUC"), column(t, "Battery runtime (min)"))->text(), QString("18.94"));
+    QCOMPARE(t->item(row_of(t, "Jetson TX2"), column(t, "Battery runtime (min)"))->text(), QString("22.87"));
+    QVERIFY(t->item(row_of(t, "NUC"), column(t, "Battery runtime (min)"))->toolTip().contains("walk:30:140"));
+    QCOMPARE(view.recommendation(), QString("Jetson TX2"));
+    QCOMPARE(t->item(row_of(t, "NUC"), column(t, "Frames per Wh"))->text(), QString("504"));  // the computer's
+
+    // A mistyped mission is named and ignored (constant load meanwhile).
+    view.set_mission("walk:fast:140");
+    QCOMPARE(t->item(row_of(t, "NUC"), column(t, "Battery runtime (min)"))->text(), QString("84.36"));
+    QVERIFY(view.findChild<QLabel*>() != nullptr);
+    bool named = false;
+    for (const QLabel* l : view.findChildren<QLabel*>()) named = named || l->text().contains("mission ignored");
+    QVERIFY(named);
+    view.set_mission({});
+    QCOMPARE(view.options().mission, std::string());
   }
 };
 

@@ -53,6 +53,20 @@ bs::PowerTrace ramp_trace() {
   return t;
 }
 
+// A constant 10 W log of 11 samples.
+bs::PowerTrace constant_trace(double watts) {
+  bs::PowerTrace t;
+  t.platform = "robot";
+  t.label = "constant";
+  bs::PowerChannel ch{"power", bs::PowerQuantity::Power, {}};
+  for (int i = 0; i <= 10; ++i) {
+    t.time_s.push_back(i);
+    ch.values.push_back(watts);
+  }
+  t.channels.push_back(ch);
+  return t;
+}
+
 }  // namespace
 
 class TestPlatformComparison : public QObject {
@@ -196,6 +210,62 @@ class TestPlatformComparison : public QObject {
     QCOMPARE(round2(*nuc.energy_per_inference_j), 6.89);
     QVERIFY(std::fabs(*nuc.energy_per_preprocess_j + *nuc.energy_per_inference_j - *nuc.energy_per_frame_j) < 1e-12);
     QCOMPARE(nuc.sources.at(bs::column::kPipeline).origin, bs::DataOrigin::Reconstructed);
+  }
+
+  void battery_runtime_follows_the_mission() {
+    // The paper's pack: 14.8 V x 3.85 Ah = 56.98 Wh = 205128 J. A 10 W computer.
+    const std::vector<bs::PowerTrace> traces{constant_trace(10)};
+    const auto runtime_s = [&](const bs::ComparisonOptions& o) {
+      return *bs::compare_platforms({}, traces, {}, o).front().battery_runtime_h * 3600;
+    };
+    QVERIFY(std::fabs(runtime_s({}) - 20512.8) < 1e-6);  // 205128 J / 10 W
+    // Mission a 10 s at 0 W, b 10 s at 20 W, the computer in parallel: 100 J + 300 J per 20 s pass. 512 passes
+    // (204800 J, 10240 s) leave 328 J: all of a (100 J, 10 s), then 228 J of b at 30 W (7.6 s).
+    bs::ComparisonOptions o;
+    o.mission = "a:10:0,b:10:20";
+    QVERIFY(std::fabs(runtime_s(o) - 10257.6) < 1e-6);
+    const auto row = bs::compare_platforms({}, traces, {}, o).front();
+    QVERIFY(std::fabs(*row.battery_load_w - 20.0) < 1e-12);  // 10 W + (0 + 20) / 2 W
+    QVERIFY(row.sources.at(bs::column::kBattery).how.find("a:10:0,b:10:20") != std::string::npos);
+    // Plus 5 W in parallel: 150 J + 350 J per pass; 410 passes (205000 J, 8200 s), then 128 J of a at 15 W.
+    o.extra_load_w = 5;
+    QVERIFY(std::fabs(runtime_s(o) - (8200 + 128.0 / 15)) < 1e-6);
+    // Half the capacity usable: 102564 J; 256 passes (102400 J, 5120 s), a (100 J, 10 s), 64 J at 30 W.
+    o.extra_load_w = 0;
+    o.usable_fraction = 0.5;
+    QVERIFY(std::fabs(runtime_s(o) - (5130 + 64.0 / 30)) < 1e-6);
+    o.mission = "walk:ten:20";
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, bs::compare_platforms({}, traces, {}, o));
+  }
+
+  void the_mission_changes_the_recommendation() {
+    const Paper p = load_paper();
+    bs::ComparisonOptions o;
+    o.mission = "idle:60:0";  // no servo load: the paper's constant-power minutes
+    auto rows = bs::compare_platforms(p.runs, p.traces, {}, o);
+    QCOMPARE(round2(*row(rows, "NUC").battery_runtime_h * 60), 84.36);
+    QCOMPARE(round2(*row(rows, "Jetson TX2").battery_runtime_h * 60), 360.48);
+    // Walking at 140 W of servos: 56.98 Wh / (40.52 + 140) W = 18.94 min; / (9.48 + 140) W = 22.87 min.
+    o.mission = "walk:30:140";
+    rows = bs::compare_platforms(p.runs, p.traces, {}, o);
+    QCOMPARE(round2(*row(rows, "NUC").battery_runtime_h * 60), round2(56.98 * 60 / (*row(rows, "NUC").mean_power_w + 140)));
+    QVERIFY(std::fabs(*row(rows, "NUC").battery_runtime_h * 60 - 18.94) < 0.01);
+    QVERIFY(std::fabs(*row(rows, "Jetson TX2").battery_runtime_h * 60 - 22.87) < 0.01);
+    std::string chosen;
+    for (const auto& v : bs::recommend(rows, {.min_runtime_h = 20.0 / 60}))
+      if (v.recommended) chosen = v.platform;
+    QCOMPARE(chosen, std::string("Jetson TX2"));  // without the mission both last 84+ min and the NUC wins
+  }
+
+  void frames_per_wh_is_preprocessed_and_detected_frames() {
+    // 10 W x (6 + 14) ms = 0.2 J per frame: 3600 / 0.2 = 18000 frames per Wh, with or without a mission.
+    const std::vector<bs::PowerTrace> traces{constant_trace(10)};
+    bs::PipelineTimings t{"robot", {100, 6.0, 1.0, 4, 9}, bs::Summary{100, 14.0, 2.0, 10, 20}, {}, {}, 100, {}};
+    bs::ComparisonOptions o;
+    o.mission = "a:10:0,b:10:20";
+    const auto r = bs::compare_platforms({}, traces, std::vector<bs::PipelineTimings>{t}, o).front();
+    QVERIFY(std::fabs(*r.frames_per_wh - 18000.0) < 1e-6);
+    QVERIFY(r.sources.count(bs::column::kFramesPerWh));
   }
 };
 

@@ -56,9 +56,6 @@ class TestRoofline : public QObject {
     QVERIFY(!cs[1].bandwidth_bps);
     QCOMPARE(cs[1].peak_flops, 6.0 * 4 * 1000 * 1 / 1e-3);
   }
-  void stage_costs_are_positive() {
-    for (const auto& s : bs::preprocessing_stage_costs()) QVERIFY(s.flops_per_pixel > 0 && s.bytes_per_pixel > 0);
-  }
 };
 
 QTEST_APPLESS_MAIN(TestRoofline)
