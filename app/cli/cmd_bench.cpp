@@ -213,7 +213,7 @@ const CommandRegistrar registrar({
     "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W]\n"
     "       benchscope-cli bench vision [--frames F] [--threads T]\n"
-    "       benchscope-cli bench pipeline [--frames N] [--detect-workers W] [--detect-scale S]\n"
+    "       benchscope-cli bench pipeline [--frames N] [--rounds R] [--detect-workers W] [--detect-scale S]\n"
     "       benchscope-cli bench tuner [--frames F] [--step S]\n"
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
@@ -222,7 +222,8 @@ const CommandRegistrar registrar({
     "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU SIMD\n"
     "  ratio and the sweep bookkeeping overhead. Figures only: nothing passes or fails on time.\n"
     "  bench pipeline: the vision pipeline's stages one after another on one thread vs the concurrent pipeline with\n"
-    "  W detection workers (default: this machine's threads) on N synthetic paper frames (default 16), HOG at scale\n"
+    "  W detection workers (default: this machine's threads) on R rounds (default 3) of N synthetic paper frames\n"
+    "  (default 16), HOG at scale\n"
     "  S (default 0.5); per-stage mean \xC2\xB1 SD (n), both throughputs, their ratio and the theoretical bound, with 1\n"
     "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

@@ -120,7 +120,7 @@ class TestCliPipeline : public QObject {
 
   void bench_pipeline_prints_both_throughputs() {
     // Two frames at a small scale: checks the report's shape and arithmetic inputs, not any speed.
-    const Result r = cli({"bench", "pipeline", "--frames", "2", "--detect-workers", "2", "--detect-scale", "0.25"});
+    const Result r = cli({"bench", "pipeline", "--frames", "2", "--rounds", "1", "--detect-workers", "2", "--detect-scale", "0.25"});
     QVERIFY2(r.code == 0, r.err.constData());
     for (const char* want : {"sequential (one thread", "concurrent pipeline (capture, preprocessing, 2 detection workers)",
                              "(n = 2)", "concurrent / sequential = ", "theoretical bound: ", "default threading",
