@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "analysis/pipeline_table.h"
+#include "pipeline_measure_panel.h"
 
 namespace bs::ui {
 namespace {
@@ -46,7 +47,7 @@ QString fps_text(double fps) { return QString::number(fps, 'f', fps >= 100 ? 0 :
 }  // namespace
 
 PipelineView::PipelineView(QWidget* parent)
-    : QWidget(parent), summary_(new QLabel(this)), table_(new QTableWidget(0, ColumnCount, this)) {
+    : QWidget(parent), measure_(new PipelineMeasurePanel(this)), summary_(new QLabel(this)), table_(new QTableWidget(0, ColumnCount, this)) {
   table_->setHorizontalHeaderLabels({tr("Stage"), tr("Platform"), tr("Device (backend)"),
                                      tr("Time, mean ± SD (n)"), tr("p95 (ms)"), tr("Stage rate (fps)"),
                                      tr("Pipeline throughput (fps)"), tr("Data")});
@@ -77,7 +78,9 @@ PipelineView::PipelineView(QWidget* parent)
   buttons->addWidget(summary_, 1);
   buttons->addWidget(latex);
   buttons->addWidget(csv);
+  connect(measure_, &PipelineMeasurePanel::run_measured, this, &PipelineView::run_measured);
   auto* layout = new QVBoxLayout(this);
+  layout->addWidget(measure_);
   layout->addLayout(buttons);
   layout->addWidget(table_, 1);
   fill();
@@ -119,11 +122,13 @@ void PipelineView::fill() {
   }
   table_->setSortingEnabled(true);
   if (rows.empty())
-    summary_->setText(tr("No pipeline runs yet: import pipeline JSON (sample_data/paper-2018/pipeline-*.json) or "
-                         "run <code>benchscope-cli pipeline FRAME --lens LENS.json --workspace WS</code>."));
+    summary_->setText(tr("No pipeline runs yet: import pipeline JSON (sample_data/paper-2018/pipeline-*.json), "
+                         "measure one above, or run <code>benchscope-cli pipeline FRAME --lens LENS.json --workspace "
+                         "WS</code>."));
   else
     summary_->setText(tr("%n stage timing(s) from %1 run(s), %2 of them reconstructed from published figures (hover a row "
-                         "for its provenance). Times are per frame; stages run concurrently, one thread each.",
+                         "for its provenance). Times are per frame; stages run concurrently (measured runs: detection on the "
+                         "worker threads named under Device).",
                          nullptr, static_cast<int>(rows.size()))
                           .arg(runs_.size())
                           .arg(reconstructed));

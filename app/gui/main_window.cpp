@@ -24,6 +24,7 @@
 #include "peak_table.h"
 #include "power_view.h"
 #include <QTabWidget>
+#include "pipeline_json.h"
 #include "pipeline_view.h"
 #include "platform_view.h"
 #include "roofline_view.h"
@@ -63,6 +64,17 @@ MainWindow::MainWindow(QWidget* parent)
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
   tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
   tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
+  connect(pipeline_, &PipelineView::run_measured, this, [this](const PipelineRun& run) {
+    if (!workspace_) new_untitled_workspace();
+    try {
+      const std::string json = write_pipeline_json(run);
+      workspace_->add_pipeline_runs({run}, "Pipeline tab (" + run.platform + ", " + run.provenance.date + ")",
+                                    content_hash(json));
+    } catch (const WorkspaceError& e) {
+      QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
+    }
+    reload();
+  });
   tab(frames_, tr("Frames"), tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
   lens_ = new LensTab(this);
   tab(lens_, tr("Lens"), tr("Reprojection tuner (lens model, view, masks, auto-calibration) beside the lens in 3D"));

@@ -4,6 +4,7 @@
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 #include <opencv2/dnn.hpp>
 #include <opencv2/imgproc.hpp>
@@ -11,26 +12,38 @@
 
 namespace bs::vision {
 
+Detector scaled_detector(Detector inner, double scale) {
+  if (!(scale > 0 && scale <= 1))
+    throw std::invalid_argument("detection scale must be greater than 0 and at most 1 (got " + std::to_string(scale) + ")");
+  if (!inner) throw std::invalid_argument("scaled_detector needs a detector");
+  if (scale == 1) return inner;
+  return [inner = std::move(inner), scale](const cv::Mat& bgr) {
+    cv::Mat small;
+    cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
+    std::vector<Detection> found = inner(small);
+    const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
+    for (Detection& d : found) {
+      const cv::Rect& b = d.box;
+      d.box = cv::Rect(cv::Point(cvRound(b.x / scale), cvRound(b.y / scale)),
+                       cv::Point(cvRound((b.x + b.width) / scale), cvRound((b.y + b.height) / scale))) & frame;
+    }
+    return found;
+  };
+}
+
 Detector hog_people_detector(double scale) {
-  if (!(scale > 0 && scale <= 1)) throw std::invalid_argument("HOG scale must be in (0, 1]");
   auto hog = std::make_shared<cv::HOGDescriptor>();
   hog->setSVMDetector(cv::HOGDescriptor::getDefaultPeopleDetector());
-  return [hog, scale](const cv::Mat& bgr) {
-    cv::Mat small;
-    if (scale < 1) cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
-    else small = bgr;
+  // detectMultiScale is const: several pipeline workers may share this descriptor.
+  Detector full = [hog](const cv::Mat& bgr) {
     std::vector<cv::Rect> boxes;
     std::vector<double> weights;
-    hog->detectMultiScale(small, boxes, weights, 0, cv::Size(8, 8), cv::Size(), 1.05, 2.0);
+    hog->detectMultiScale(bgr, boxes, weights, 0, cv::Size(8, 8), cv::Size(), 1.05, 2.0);
     std::vector<Detection> out;
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      const cv::Rect& b = boxes[i];
-      out.push_back({cv::Rect(cv::Point(cvRound(b.x / scale), cvRound(b.y / scale)),
-                              cv::Size(cvRound(b.width / scale), cvRound(b.height / scale))),
-                     i < weights.size() ? weights[i] : 0.0, -1});
-    }
+    for (std::size_t i = 0; i < boxes.size(); ++i) out.push_back({boxes[i], i < weights.size() ? weights[i] : 0.0, -1});
     return out;
   };
+  return scaled_detector(std::move(full), scale);
 }
 
 std::vector<Detection> parse_ssd_output(const cv::Mat& out, cv::Size size, float min_confidence) {

@@ -18,7 +18,13 @@ struct Detection {
 
 using Detector = std::function<std::vector<Detection>(const cv::Mat& bgr)>;
 
-// HOG + linear SVM (Dalal-Triggs) with OpenCV's default people model; the image is scaled by `scale` first
+// Runs `inner` on the image downscaled by `scale` (area interpolation; 1 = unchanged) and maps its boxes back to
+// the full-size image (divided by the scale, clipped to the image). How HOG is deployed in practice: its cost
+// grows with the pixel count, and people far enough to be small are lost anyway at the detection window's size.
+// Throws std::invalid_argument unless 0 < scale <= 1.
+Detector scaled_detector(Detector inner, double scale);
+
+// HOG + linear SVM (Dalal-Triggs) with OpenCV's default people model, run through scaled_detector(scale)
 // (0.5 halves a 1280x1024 frame, which keeps detection time reasonable on small CPUs); boxes are in full-size pixels.
 Detector hog_people_detector(double scale = 0.5);
 

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The paper's vision pipeline as a concurrent pipeline: capture -> preprocessing (demosaic + reprojection) ->
-// detection, each stage on its own thread, bounded queues between them (block, or drop the oldest frame), and
-// per-stage and end-to-end timings with n, mean, SD, percentiles and throughput.
+// detection, capture and preprocessing on one thread each, detection on `detection_workers` threads that take
+// frames in turn (detection is ~99% of the work, so it is the stage worth spreading over the cores), bounded
+// queues between the stages (block, or drop the oldest frame), and per-stage and end-to-end timings with n, mean,
+// SD, percentiles and throughput.
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -23,11 +25,19 @@ using FrameSource = std::function<std::optional<cv::Mat>(std::size_t index)>;
 // Mosaic -> reprojected BGR view.
 using Preprocessor = std::function<cv::Mat(const cv::Mat& mosaic)>;
 
+inline constexpr std::size_t kMaxDetectionWorkers = 256;
+// This machine's hardware threads (at least 1): the default number of detection workers.
+std::size_t default_detection_workers();
+
 struct PipelineConfig {
   std::size_t max_frames = 100;     // stop after this many captured frames
   std::size_t queue_capacity = 2;   // per queue
   QueuePolicy policy = QueuePolicy::Block;
   double capture_fps = 0;           // pace the capture like a camera; 0: as fast as the pipeline takes frames
+  // Threads running the detector, each on its own frame (1..kMaxDetectionWorkers). With more than one the
+  // detector is called concurrently: HOG's detectMultiScale is const and safe; the cv::dnn detector serialises
+  // forward() with its own mutex.
+  std::size_t detection_workers = default_detection_workers();
 };
 
 struct StageTiming {
@@ -44,12 +54,15 @@ struct PipelineResult {
   double throughput_fps = 0;        // processed / wall
   bool cancelled = false;
   std::vector<Detection> last_detections;
-  cv::Mat last_output;              // the last reprojected frame (for drawing the detections)
+  cv::Mat last_output;              // the reprojected frame with the highest index (for drawing the detections)
+  std::size_t last_index = 0;       // its index; last_detections are its detections
+  std::size_t detection_workers = 0;  // how many detection threads ran (0 without a detector)
   const StageTiming* stage(const std::string& name) const;
 };
 
-// Runs until the source is exhausted, max_frames were captured, or `cancel` (checked between frames by every
-// stage: a cancel ends the run within one frame's work). `detector` may be empty (preprocessing only).
+// Runs until the source is exhausted, max_frames were captured, or `cancel` (checked before every frame by every
+// stage and worker: after a cancel no frame starts, the ones in flight finish). `detector` may be empty
+// (preprocessing only). Throws std::invalid_argument when detection_workers is outside 1..kMaxDetectionWorkers.
 PipelineResult run_pipeline(const FrameSource& source, const Preprocessor& preprocess, const Detector& detector,
                             const PipelineConfig& config, const CancelToken& cancel);
 

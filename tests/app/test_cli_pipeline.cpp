@@ -102,6 +102,33 @@ class TestCliPipeline : public QObject {
     QVERIFY2(imp.code == 0 && imp.out.contains("1 pipeline run"), imp.out + imp.err);
   }
 
+  void detection_workers_and_scale_are_recorded() {
+    const Result r = cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "5", "--detect-workers", "3",
+                          "--detect-scale", "0.75", "--json"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
+    const QJsonObject stages = doc["stages"].toObject();
+    QCOMPARE(stages["detect"].toObject()["n"].toInt(), 5);
+    QCOMPARE(stages["end-to-end"].toObject()["n"].toInt(), 5);
+    // The stored run says how it was made.
+    QVERIFY2(doc["device"].toString().contains("3 detection workers"), qPrintable(doc["device"].toString()));
+    const QString note = doc["provenance"].toObject()["note"].toString();
+    QVERIFY2(note.contains("3 detection workers, detect scale 0.75"), qPrintable(note));
+    // The table says it too.
+    const Result t = cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "2", "--detect-workers", "1"});
+    QVERIFY2(t.code == 0 && t.out.contains("detection on 1 worker thread\n"), t.out + t.err);
+  }
+
+  void bench_pipeline_prints_both_throughputs() {
+    // Two frames at a small scale: checks the report's shape and arithmetic inputs, not any speed.
+    const Result r = cli({"bench", "pipeline", "--frames", "2", "--rounds", "1", "--detect-workers", "2", "--detect-scale", "0.25"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    for (const char* want : {"sequential (one thread", "concurrent pipeline (capture, preprocessing, 2 detection workers)",
+                             "(n = 2)", "concurrent / sequential = ", "theoretical bound: ", "default threading",
+                             "HOG people detector at scale 0.25 (320x256)"})
+      QVERIFY2(r.out.contains(want), qPrintable(QString(want) + "\n" + r.out));
+  }
+
   void grey_png_frame() {
     // The figure's grey mosaic is itself a valid frame (PNG, one channel, pattern BGGR by default).
     const QString figs = dir_.filePath("figs2");
@@ -161,6 +188,16 @@ class TestCliPipeline : public QObject {
         {{"pipeline", raw_, "--lens", sidecar_, "--policy", "never"}, 2, "--policy"},
         {{"pipeline", raw_, "--lens", sidecar_, "--frames", "0"}, 2, "--frames"},
         {{"pipeline", raw_, "--lens", sidecar_, "--bogus"}, 2, "--bogus"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "0"}, 2, "--detect-workers must be a whole number"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "1.5"}, 2, "--detect-workers must be a whole number"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "9999"}, 2, "from 1 to 256"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "two"}, 2, "--detect-workers expects a number"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-scale", "0"}, 2, "--detect-scale must be greater than 0"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-scale", "1.5"}, 2, "at most 1"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-scale", "-0.5"}, 2, "--detect-scale must be"},
+        {{"bench", "pipeline", "--detect-scale", "2"}, 2, "--detect-scale must be"},
+        {{"bench", "pipeline", "--detect-workers", "0"}, 2, "--detect-workers must be"},
+        {{"bench", "pipeline", "--frames", "1"}, 2, "--frames must be"},
         {{"pipeline", dir_.filePath("nope.raw"), "--lens", sidecar_}, 1, "nope.raw: no such file"},
         {{"pipeline", raw_, "--lens", dir_.filePath("nope.json")}, 1, "nope.json: cannot open lens file"},
         {{"pipeline", dir_.filePath("short.raw"), "--lens", sidecar_}, 1, "short.raw: is 100 bytes"},

@@ -1,15 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Pipeline tab on the paper's sample data: the paper's four stage times with SD and n, numeric sorting,
 // provenance in the tooltips, reconstructed rows marked; and a measured run beside them. Saves a screenshot.
+#include <QDoubleSpinBox>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 
 #include "analysis/pipeline_table.h"
 #include "importer.h"
+#include "pipeline_measure_panel.h"
+#include "vision/pipeline.h"
 #include "pipeline_view.h"
 
+using bs::ui::PipelineMeasurePanel;
 using bs::ui::PipelineView;
 
 namespace {
@@ -30,6 +39,13 @@ QString text(const QTableWidget* t, int row, int col) { return t->item(row, col)
 class TestPipelineView : public QObject {
   Q_OBJECT
  private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);  // QSettings in a test location, not the user's
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_pipeline_view");
+    QSettings().clear();
+  }
+
   void paper_table() {
     PipelineView v;
     v.resize(1200, 320);
@@ -95,6 +111,65 @@ class TestPipelineView : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&v));
     const QString shot = BENCHSCOPE_BINARY_DIR "/pipeline-view.png";
     QVERIFY(v.grab().save(shot));
+  }
+
+  void measure_panel_options_are_remembered() {
+    {
+      PipelineView v;
+      PipelineMeasurePanel* p = v.measure_panel();
+      QCOMPARE(p->workers()->value(), static_cast<int>(bs::vision::default_detection_workers()));
+      QCOMPARE(p->scale()->value(), 0.5);
+      QCOMPARE(p->workers()->minimum(), 1);
+      QCOMPARE(p->scale()->maximum(), 1.0);
+      QVERIFY(p->scale()->minimum() > 0);
+      QVERIFY(p->workers()->toolTip().contains("Detection worker threads"));
+      QVERIFY(p->scale()->toolTip().contains("mapped back"));
+      p->frames()->setValue(7);
+      p->workers()->setValue(3);
+      p->scale()->setValue(0.35);
+    }
+    PipelineMeasurePanel again;
+    QCOMPARE(again.frames()->value(), 7);
+    QCOMPARE(again.workers()->value(), 3);
+    QCOMPARE(again.scale()->value(), 0.35);
+  }
+
+  void measure_panel_runs_the_pipeline() {
+    PipelineView v;
+    PipelineMeasurePanel* p = v.measure_panel();
+    p->frames()->setValue(3);
+    p->workers()->setValue(2);
+    p->scale()->setValue(0.25);
+    QSignalSpy measured(&v, &PipelineView::run_measured);
+    QSignalSpy failed(p, &PipelineMeasurePanel::failed);
+    p->measure_button()->click();
+    QVERIFY(p->running() || measured.count() == 1);
+    QVERIFY(!p->measure_button()->isEnabled() || measured.count() == 1);
+    QVERIFY2(measured.wait(120000) || measured.count() == 1, failed.isEmpty() ? "no run" : qPrintable(failed[0][0].toString()));
+    const auto run = measured[0][0].value<bs::PipelineRun>();
+    QVERIFY(run.stage("detect"));
+    QCOMPARE(run.stage("detect")->n, std::size_t{3});
+    QCOMPARE(run.stage("end-to-end")->n, std::size_t{3});
+    QCOMPARE(run.provenance.origin, bs::DataOrigin::Measured);
+    QVERIFY2(run.device.find("2 detection workers") != std::string::npos, run.device.c_str());
+    QVERIFY2(run.provenance.note.find("2 detection workers, detect scale 0.25") != std::string::npos,
+             run.provenance.note.c_str());
+    QCOMPARE(run.frame_width, 1280);
+    QVERIFY(p->measure_button()->isEnabled());
+  }
+
+  void measure_panel_cancel_stores_nothing() {
+    PipelineMeasurePanel p;
+    p.frames()->setValue(100000);
+    p.workers()->setValue(1);
+    p.scale()->setValue(0.25);
+    QSignalSpy measured(&p, &PipelineMeasurePanel::run_measured);
+    p.start();
+    p.cancel();
+    QTRY_VERIFY_WITH_TIMEOUT(!p.running(), 120000);
+    QCoreApplication::processEvents();
+    QCOMPARE(measured.count(), 0);
+    QVERIFY(p.measure_button()->isEnabled());
   }
 
   void empty_workspace_says_how_to_get_data() {

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The concurrent pipeline: bounded queues under both policies, ordering, timing counts, cancellation within a
 // frame, the real preprocessing paths on the paper's lens, and the detectors' output handling.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <mutex>
 #include <thread>
 
 #include <QTest>
 
 #include "vision/bounded_queue.h"
+#include "vision/detector.h"
 #include "vision/pipeline.h"
 #include "vision/preprocess.h"
 #include "vision/synthetic.h"
@@ -105,10 +109,120 @@ class TestPipeline : public QObject {
       if (++calls == 3) cancel.cancel();
       return std::vector<Detection>{};
     };
-    const auto r = run_pipeline(small_frames(100000), to_bgr(), det, {.max_frames = 100000, .queue_capacity = 2}, cancel);
+    const auto r = run_pipeline(small_frames(100000), to_bgr(), det,
+                                {.max_frames = 100000, .queue_capacity = 2, .detection_workers = 1}, cancel);
     QVERIFY(r.cancelled);
     QCOMPARE(calls.load(), 3);  // no detection after the one that cancelled
     QVERIFY(r.captured < 100);  // the capture stopped too, within the queues' slack
+  }
+
+  void several_workers_detect_every_frame_once() {
+    // Frame i carries its index in its first two pixels; the detector reports it back as the score.
+    const int n = 300;
+    const FrameSource numbered = [n](std::size_t i) -> std::optional<cv::Mat> {
+      if (static_cast<int>(i) >= n) return std::nullopt;
+      cv::Mat m(8, 8, CV_8UC1, cv::Scalar(0));
+      m.at<uchar>(0, 0) = static_cast<uchar>(i % 256);
+      m.at<uchar>(0, 1) = static_cast<uchar>(i / 256);
+      return m;
+    };
+    const auto index_of = [](const cv::Mat& bgr) { return bgr.at<cv::Vec3b>(0, 0)[0] + 256 * bgr.at<cv::Vec3b>(0, 1)[0]; };
+    std::mutex mutex;
+    std::vector<int> seen;
+    std::atomic<int> running{0}, most_running{0};
+    Detector det = [&](const cv::Mat& bgr) {
+      const int now = ++running;
+      for (int m = most_running; now > m && !most_running.compare_exchange_weak(m, now);) {
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(300));  // long enough for the workers to overlap
+      --running;
+      std::lock_guard lock(mutex);
+      seen.push_back(index_of(bgr));
+      return std::vector<Detection>{{cv::Rect(0, 0, 2, 2), static_cast<double>(seen.back()), -1}};
+    };
+    const auto r = run_pipeline(numbered, to_bgr(), det, {.max_frames = 1000, .queue_capacity = 4, .detection_workers = 4},
+                                bs::CancelToken{});
+    QCOMPARE(r.detection_workers, std::size_t{4});
+    QCOMPARE(r.captured, std::size_t{n});
+    QCOMPARE(r.processed, std::size_t{n});
+    QCOMPARE(r.dropped, std::size_t{0});
+    std::sort(seen.begin(), seen.end());
+    QCOMPARE(seen.size(), std::size_t{n});
+    for (int i = 0; i < n; ++i) QCOMPARE(seen[static_cast<std::size_t>(i)], i);  // each frame exactly once
+    for (const auto& s : r.stages) QCOMPARE(s.summary.n, std::size_t{n});
+    QVERIFY2(most_running.load() > 1, "the detection workers never overlapped");
+    QVERIFY(most_running.load() <= 4);
+    // The latest frame by index, whichever worker finished last.
+    QCOMPARE(r.last_index, std::size_t{n - 1});
+    QCOMPARE(r.last_detections.at(0).score, static_cast<double>(n - 1));
+    QCOMPARE(index_of(r.last_output), n - 1);
+  }
+
+  void cancel_with_several_workers_starts_no_new_frame() {
+    // After the cancel no worker starts a frame: only the ones already in flight (at most workers - 1) finish.
+    constexpr std::size_t kWorkers = 4;
+    bs::CancelToken cancel;
+    std::atomic<int> calls{0};
+    Detector det = [&](const cv::Mat&) {
+      if (++calls == 10) cancel.cancel();
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      return std::vector<Detection>{};
+    };
+    const auto r = run_pipeline(small_frames(100000), to_bgr(), det,
+                                {.max_frames = 100000, .queue_capacity = 2, .detection_workers = kWorkers}, cancel);
+    QVERIFY(r.cancelled);
+    QVERIFY2(calls.load() >= 10 && calls.load() <= 10 + static_cast<int>(kWorkers) - 1, qPrintable(QString::number(calls)));
+    QCOMPARE(r.processed, static_cast<std::size_t>(calls.load()));
+    QCOMPARE(r.stage("detection")->summary.n, r.processed);
+    QVERIFY(r.captured < 100);
+  }
+
+  void drop_oldest_with_several_workers() {
+    Detector slow = [](const cv::Mat&) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(3));
+      return std::vector<Detection>{};
+    };
+    const auto r = run_pipeline(small_frames(300), to_bgr(), slow,
+                                {.max_frames = 300, .queue_capacity = 1, .policy = QueuePolicy::DropOldest,
+                                 .detection_workers = 2},
+                                bs::CancelToken{});
+    QCOMPARE(r.captured, std::size_t{300});
+    QVERIFY(r.dropped > 0);
+    QCOMPARE(r.processed + r.dropped, r.captured);
+    QCOMPARE(r.stage("detection")->summary.n, r.processed);
+  }
+
+  void bad_worker_counts_are_rejected() {
+    const Detector none_found = [](const cv::Mat&) { return std::vector<Detection>{}; };
+    for (std::size_t w : {std::size_t{0}, kMaxDetectionWorkers + 1})
+      QVERIFY_THROWS_EXCEPTION(std::invalid_argument, run_pipeline(small_frames(3), to_bgr(), none_found,
+                                                                   {.detection_workers = w}, bs::CancelToken{}));
+    QVERIFY(default_detection_workers() >= 1);
+    QCOMPARE(PipelineConfig{}.detection_workers, default_detection_workers());
+  }
+
+  void detect_scale_maps_boxes_back() {
+    // A stub that finds one box at a known place in the image it is given, and records that image's size.
+    cv::Size given;
+    const Detector stub = [&](const cv::Mat& img) {
+      given = img.size();
+      return std::vector<Detection>{{cv::Rect(10, 20, 30, 40), 1.5, 3},
+                                    {cv::Rect(img.cols - 5, img.rows - 5, 20, 20), 0.5, 3}};  // past the corner
+    };
+    const cv::Mat frame(320, 400, CV_8UC3, cv::Scalar::all(7));
+    const auto quarter = scaled_detector(stub, 0.25)(frame);
+    QCOMPARE(given, cv::Size(100, 80));
+    QCOMPARE(quarter.size(), std::size_t{2});
+    QCOMPARE(quarter[0].box, cv::Rect(40, 80, 120, 160));
+    QCOMPARE(quarter[0].score, 1.5);
+    QCOMPARE(quarter[0].class_id, 3);
+    QCOMPARE(quarter[1].box, cv::Rect(380, 300, 20, 20));  // mapped back, then clipped to the full frame
+    const auto full = scaled_detector(stub, 1.0)(frame);
+    QCOMPARE(given, cv::Size(400, 320));
+    QCOMPARE(full[0].box, cv::Rect(10, 20, 30, 40));
+    for (double bad : {0.0, -0.5, 1.01, std::nan("")})
+      QVERIFY_THROWS_EXCEPTION(std::invalid_argument, scaled_detector(stub, bad));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, hog_people_detector(0));
   }
 
   void preprocessing_only() {

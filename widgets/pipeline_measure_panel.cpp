@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pipeline_measure_panel.h"
+
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "vision/pipeline_measure.h"
+
+namespace bs::ui {
+namespace {
+
+constexpr auto kFramesKey = "pipeline/measure_frames";
+constexpr auto kWorkersKey = "pipeline/detect_workers";
+constexpr auto kScaleKey = "pipeline/detect_scale";
+
+}  // namespace
+
+PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
+    : QWidget(parent),
+      frames_(new QSpinBox(this)),
+      workers_(new QSpinBox(this)),
+      scale_(new QDoubleSpinBox(this)),
+      measure_(new QPushButton(tr("Measure on this machine"), this)),
+      cancel_(new QPushButton(tr("Cancel"), this)),
+      progress_(new QProgressBar(this)),
+      status_(new QLabel(this)),
+      watcher_(new QFutureWatcher<Outcome>(this)),
+      percent_(std::make_shared<std::atomic<int>>(0)) {
+  const QSettings settings;
+  frames_->setRange(1, 100000);
+  frames_->setValue(settings.value(kFramesKey, 20).toInt());
+  frames_->setSuffix(tr(" frames"));
+  frames_->setToolTip(tr("How many frames of the synthetic paper capture (1280x1024 BGGR through the 195° lens) "
+                         "go through the pipeline"));
+  workers_->setRange(1, static_cast<int>(vision::kMaxDetectionWorkers));
+  workers_->setValue(settings.value(kWorkersKey, static_cast<int>(vision::default_detection_workers())).toInt());
+  workers_->setToolTip(tr("Detection worker threads: each detects its own frame, so detection (the slow stage) "
+                          "spreads over the cores. Default: this machine's %1 hardware threads. Capture and "
+                          "preprocessing keep one thread each.")
+                           .arg(vision::default_detection_workers()));
+  scale_->setRange(0.05, 1.0);
+  scale_->setSingleStep(0.05);
+  scale_->setDecimals(2);
+  scale_->setValue(settings.value(kScaleKey, 0.5).toDouble());
+  scale_->setToolTip(tr("Detection scale: HOG runs on the reprojected frame shrunk by this factor (0.5: 640x512 "
+                        "of 1280x1024) and its boxes are mapped back to full-frame pixels. Smaller is faster and "
+                        "misses smaller (more distant) people."));
+  cancel_->setEnabled(false);
+  progress_->setRange(0, 100);
+  progress_->setTextVisible(true);
+  progress_->setMaximumWidth(160);
+  progress_->hide();
+  status_->setTextFormat(Qt::PlainText);
+
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(new QLabel(tr("Synthetic paper capture:"), this));
+  layout->addWidget(frames_);
+  auto* workers_label = new QLabel(tr("Detection workers:"), this);
+  workers_label->setToolTip(workers_->toolTip());
+  layout->addWidget(workers_label);
+  layout->addWidget(workers_);
+  auto* scale_label = new QLabel(tr("Detection scale:"), this);
+  scale_label->setToolTip(scale_->toolTip());
+  layout->addWidget(scale_label);
+  layout->addWidget(scale_);
+  layout->addWidget(measure_);
+  layout->addWidget(cancel_);
+  layout->addWidget(progress_);
+  layout->addWidget(status_, 1);
+
+  connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
+  connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
+  connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &PipelineMeasurePanel::finished);
+  for (QSpinBox* box : {frames_, workers_})
+    connect(box, &QSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
+  connect(scale_, &QDoubleSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
+  auto* timer = new QTimer(this);
+  timer->setInterval(100);
+  connect(timer, &QTimer::timeout, this, [this] {
+    if (running()) progress_->setValue(percent_->load());
+  });
+  timer->start();
+}
+
+PipelineMeasurePanel::~PipelineMeasurePanel() {
+  // A run still going must not outlive the widget it reports to.
+  if (token_) token_->cancel();
+  watcher_->waitForFinished();
+}
+
+bool PipelineMeasurePanel::running() const { return watcher_->isRunning(); }
+
+void PipelineMeasurePanel::save_settings() const {
+  QSettings settings;
+  settings.setValue(kFramesKey, frames_->value());
+  settings.setValue(kWorkersKey, workers_->value());
+  settings.setValue(kScaleKey, scale_->value());
+}
+
+void PipelineMeasurePanel::start() {
+  if (running()) return;
+  vision::SyntheticPipelineOptions options;
+  options.frames = static_cast<std::size_t>(frames_->value());
+  options.detection_workers = static_cast<std::size_t>(workers_->value());
+  options.detect_scale = scale_->value();
+  options.tool = QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
+  token_ = std::make_shared<CancelToken>();
+  percent_->store(0);
+  measure_->setEnabled(false);
+  cancel_->setEnabled(true);
+  progress_->setValue(0);
+  progress_->show();
+  status_->setText(tr("Measuring %1 frames with %2 detection worker(s) at scale %3…")
+                       .arg(options.frames)
+                       .arg(options.detection_workers)
+                       .arg(options.detect_scale));
+  watcher_->setFuture(QtConcurrent::run([options, token = token_, percent = percent_]() -> Outcome {
+    try {
+      return {vision::measure_synthetic_pipeline(options, *token,
+                                                 [percent](double f, std::string_view) {
+                                                   percent->store(static_cast<int>(f * 100));
+                                                 }),
+              {}};
+    } catch (const std::exception& e) {
+      return {std::nullopt, QString::fromUtf8(e.what())};
+    }
+  }));
+}
+
+void PipelineMeasurePanel::cancel() {
+  if (token_) token_->cancel();
+  status_->setText(tr("Cancelling: the frames in flight finish first…"));
+}
+
+void PipelineMeasurePanel::finished() {
+  const Outcome outcome = watcher_->result();
+  measure_->setEnabled(true);
+  cancel_->setEnabled(false);
+  progress_->hide();
+  if (!outcome.error.isEmpty()) {
+    status_->setText(tr("Failed: %1").arg(outcome.error));
+    emit failed(outcome.error);
+    return;
+  }
+  if (!outcome.run) {
+    status_->setText(tr("Cancelled; nothing stored."));
+    return;
+  }
+  const PipelineRun& run = *outcome.run;
+  status_->setText(run.throughput_fps ? tr("Measured %1 fps on %2.")
+                                            .arg(*run.throughput_fps, 0, 'f', 2)
+                                            .arg(QString::fromStdString(run.platform))
+                                      : tr("Measured on %1.").arg(QString::fromStdString(run.platform)));
+  emit run_measured(run);
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QWidget>
+#include <atomic>
+#include <memory>
+#include <optional>
+
+#include "model/pipeline_run.h"
+#include "util/cancel.h"
+
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+template <class T>
+class QFutureWatcher;
+
+namespace bs::ui {
+
+// "Measure on this machine": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
+// (core: vision::measure_synthetic_pipeline) off the GUI thread, with progress and cancel, and hands the finished
+// run over (run_measured) to be stored. Frames, detection workers and detection scale are spin boxes remembered
+// between sessions (QSettings).
+class PipelineMeasurePanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PipelineMeasurePanel(QWidget* parent = nullptr);
+  ~PipelineMeasurePanel() override;
+  QSpinBox* frames() const { return frames_; }
+  QSpinBox* workers() const { return workers_; }
+  QDoubleSpinBox* scale() const { return scale_; }
+  QPushButton* measure_button() const { return measure_; }
+  bool running() const;
+
+ public slots:
+  void start();
+  void cancel();
+
+ signals:
+  void run_measured(const bs::PipelineRun& run);
+  void failed(const QString& message);
+
+ private:
+  struct Outcome {
+    std::optional<PipelineRun> run;
+    QString error;
+  };
+  void finished();
+  void save_settings() const;
+
+  QSpinBox* frames_;
+  QSpinBox* workers_;
+  QDoubleSpinBox* scale_;
+  QPushButton* measure_;
+  QPushButton* cancel_;
+  QProgressBar* progress_;
+  QLabel* status_;
+  QFutureWatcher<Outcome>* watcher_;
+  std::shared_ptr<CancelToken> token_;
+  std::shared_ptr<std::atomic<int>> percent_;  // written by the capture thread, read by a GUI timer
+};
+
+}  // namespace bs::ui
