@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 #include "analysis/stage_roofline.h"
 #include "importer.h"
