@@ -2,6 +2,7 @@
 #include "pipeline_measure_panel.h"
 
 #include <QCoreApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFutureWatcher>
 #include <QHBoxLayout>
@@ -10,9 +11,11 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QStandardItemModel>
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "vision/cuda_preprocess.h"
 #include "vision/pipeline_measure.h"
 
 namespace bs::ui {
@@ -21,6 +24,7 @@ namespace {
 constexpr auto kFramesKey = "pipeline/measure_frames";
 constexpr auto kWorkersKey = "pipeline/detect_workers";
 constexpr auto kScaleKey = "pipeline/detect_scale";
+constexpr auto kBackendKey = "pipeline/measure_backend";
 
 }  // namespace
 
@@ -29,6 +33,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
       frames_(new QSpinBox(this)),
       workers_(new QSpinBox(this)),
       scale_(new QDoubleSpinBox(this)),
+      backend_(new QComboBox(this)),
       measure_(new QPushButton(tr("Measure on this machine"), this)),
       cancel_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
@@ -54,6 +59,21 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   scale_->setToolTip(tr("Detection scale: HOG runs on the reprojected frame shrunk by this factor (0.5: 640x512 "
                         "of 1280x1024) and its boxes are mapped back to full-frame pixels. Smaller is faster and "
                         "misses smaller (more distant) people."));
+  backend_->addItem(tr("CPU (fused)"), QStringLiteral("cpu"));
+  backend_->addItem(tr("OpenCL"), QStringLiteral("opencl"));
+  backend_->addItem(tr("CUDA"), QStringLiteral("cuda"));
+  backend_->setToolTip(tr("Where demosaicing + reprojection run; detection (HOG) always runs on the CPU. OpenCL "
+                          "takes the first OpenCL device (GPU preferred; PoCL gives a CPU device)."));
+  // A CUDA entry that cannot run stays visible, disabled, saying why: nobody wonders where it went.
+  if (const std::string why = vision::cuda_preprocessing_unavailable(); !why.empty()) {
+    auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
+    QStandardItem* cuda = model->item(2);
+    cuda->setEnabled(false);
+    cuda->setToolTip(tr("Not available here: %1").arg(QString::fromStdString(why)));
+  }
+  const int saved = backend_->findData(settings.value(kBackendKey, QStringLiteral("cpu")).toString());
+  const auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
+  backend_->setCurrentIndex(saved >= 0 && model->item(saved)->isEnabled() ? saved : 0);
   cancel_->setEnabled(false);
   progress_->setRange(0, 100);
   progress_->setTextVisible(true);
@@ -73,6 +93,10 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   scale_label->setToolTip(scale_->toolTip());
   layout->addWidget(scale_label);
   layout->addWidget(scale_);
+  auto* backend_label = new QLabel(tr("Preprocessing on:"), this);
+  backend_label->setToolTip(backend_->toolTip());
+  layout->addWidget(backend_label);
+  layout->addWidget(backend_);
   layout->addWidget(measure_);
   layout->addWidget(cancel_);
   layout->addWidget(progress_);
@@ -84,6 +108,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   for (QSpinBox* box : {frames_, workers_})
     connect(box, &QSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
   connect(scale_, &QDoubleSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
+  connect(backend_, &QComboBox::currentIndexChanged, this, &PipelineMeasurePanel::save_settings);
   auto* timer = new QTimer(this);
   timer->setInterval(100);
   connect(timer, &QTimer::timeout, this, [this] {
@@ -105,6 +130,7 @@ void PipelineMeasurePanel::save_settings() const {
   settings.setValue(kFramesKey, frames_->value());
   settings.setValue(kWorkersKey, workers_->value());
   settings.setValue(kScaleKey, scale_->value());
+  settings.setValue(kBackendKey, backend_->currentData().toString());
 }
 
 void PipelineMeasurePanel::start() {
@@ -113,6 +139,7 @@ void PipelineMeasurePanel::start() {
   options.frames = static_cast<std::size_t>(frames_->value());
   options.detection_workers = static_cast<std::size_t>(workers_->value());
   options.detect_scale = scale_->value();
+  options.backend = backend_->currentData().toString().toStdString();
   options.tool = QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
   token_ = std::make_shared<CancelToken>();
   percent_->store(0);
@@ -120,10 +147,11 @@ void PipelineMeasurePanel::start() {
   cancel_->setEnabled(true);
   progress_->setValue(0);
   progress_->show();
-  status_->setText(tr("Measuring %1 frames with %2 detection worker(s) at scale %3…")
+  status_->setText(tr("Measuring %1 frames (preprocessing on %4) with %2 detection worker(s) at scale %3…")
                        .arg(options.frames)
                        .arg(options.detection_workers)
-                       .arg(options.detect_scale));
+                       .arg(options.detect_scale)
+                       .arg(backend_->currentText()));
   watcher_->setFuture(QtConcurrent::run([options, token = token_, percent = percent_]() -> Outcome {
     try {
       return {vision::measure_synthetic_pipeline(options, *token,

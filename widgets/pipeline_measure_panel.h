@@ -8,6 +8,7 @@
 #include "model/pipeline_run.h"
 #include "util/cancel.h"
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
@@ -21,7 +22,8 @@ namespace bs::ui {
 // "Measure on this machine": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
 // (core: vision::measure_synthetic_pipeline) off the GUI thread, with progress and cancel, and hands the finished
 // run over (run_measured) to be stored. Frames, detection workers and detection scale are spin boxes remembered
-// between sessions (QSettings).
+// between sessions (QSettings), and so is where preprocessing runs (CPU, OpenCL, CUDA: a backend this machine
+// cannot run is listed but disabled, its tooltip saying why).
 class PipelineMeasurePanel : public QWidget {
   Q_OBJECT
  public:
@@ -30,6 +32,7 @@ class PipelineMeasurePanel : public QWidget {
   QSpinBox* frames() const { return frames_; }
   QSpinBox* workers() const { return workers_; }
   QDoubleSpinBox* scale() const { return scale_; }
+  QComboBox* backend() const { return backend_; }
   QPushButton* measure_button() const { return measure_; }
   bool running() const;
 
@@ -52,6 +55,7 @@ class PipelineMeasurePanel : public QWidget {
   QSpinBox* frames_;
   QSpinBox* workers_;
   QDoubleSpinBox* scale_;
+  QComboBox* backend_;
   QPushButton* measure_;
   QPushButton* cancel_;
   QProgressBar* progress_;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Pipeline tab on the paper's sample data: the paper's four stage times with SD and n, numeric sorting,
 // provenance in the tooltips, reconstructed rows marked; and a measured run beside them. Saves a screenshot.
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -8,6 +9,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStandardItemModel>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
@@ -15,6 +17,7 @@
 #include "analysis/pipeline_table.h"
 #include "importer.h"
 #include "pipeline_measure_panel.h"
+#include "vision/cuda_preprocess.h"
 #include "vision/pipeline.h"
 #include "pipeline_view.h"
 
@@ -156,6 +159,37 @@ class TestPipelineView : public QObject {
              run.provenance.note.c_str());
     QCOMPARE(run.frame_width, 1280);
     QVERIFY(p->measure_button()->isEnabled());
+  }
+
+  void measure_panel_backends() {
+    // The CUDA entry is there, enabled exactly when the library says the path can run, and says why when not;
+    // OpenCL (PoCL here) measures a real run whose record names the backend and the device.
+    PipelineMeasurePanel p;
+    const auto* model = qobject_cast<QStandardItemModel*>(p.backend()->model());
+    QVERIFY(model);
+    const int cuda = p.backend()->findData(QStringLiteral("cuda"));
+    QVERIFY(cuda >= 0);
+    const std::string why = bs::vision::cuda_preprocessing_unavailable();
+    QCOMPARE(model->item(cuda)->isEnabled(), why.empty());
+    if (!why.empty()) QVERIFY(model->item(cuda)->toolTip().contains(QString::fromStdString(why)));
+    p.backend()->setCurrentIndex(p.backend()->findData(QStringLiteral("opencl")));
+    p.frames()->setValue(2);
+    p.workers()->setValue(1);
+    p.scale()->setValue(0.25);
+    QSignalSpy measured(&p, &PipelineMeasurePanel::run_measured);
+    QSignalSpy failed(&p, &PipelineMeasurePanel::failed);
+    p.start();
+    QTRY_VERIFY_WITH_TIMEOUT(!p.running(), 120000);
+    QCoreApplication::processEvents();
+    QVERIFY2(measured.count() == 1, failed.isEmpty() ? "no run" : qPrintable(failed[0][0].toString()));
+    const auto run = measured[0][0].value<bs::PipelineRun>();
+    QCOMPARE(run.backend, std::string("opencl"));
+    QCOMPARE(run.demosaic, std::string("bilinear"));
+    QVERIFY2(run.device.find("(OpenCL) preprocessing") != std::string::npos, run.device.c_str());
+    QVERIFY(run.provenance.note.find("preprocessing on opencl") != std::string::npos);
+    PipelineMeasurePanel again;  // remembered
+    QCOMPARE(again.backend()->currentData().toString(), QStringLiteral("opencl"));
+    again.backend()->setCurrentIndex(0);
   }
 
   void measure_panel_cancel_stores_nothing() {
