@@ -50,7 +50,7 @@ PipelineView::PipelineView(QWidget* parent)
     : QWidget(parent), measure_(new PipelineMeasurePanel(this)), summary_(new QLabel(this)), table_(new QTableWidget(0, ColumnCount, this)) {
   table_->setHorizontalHeaderLabels({tr("Stage"), tr("Platform"), tr("Device (backend)"),
                                      tr("Time, mean ± SD (n)"), tr("p95 (ms)"), tr("Stage rate (fps)"),
-                                     tr("Pipeline throughput (fps)"), tr("Data")});
+                                     tr("Pipeline (fps)"), tr("Data")});
   table_->horizontalHeaderItem(Time)->setToolTip(tr("Per-frame time of the stage in milliseconds: mean ± sample SD "
                                                     "over n frames"));
   table_->horizontalHeaderItem(StageRate)->setToolTip(tr("1 / mean time: the frame rate this stage alone keeps up with"));
@@ -63,9 +63,12 @@ PipelineView::PipelineView(QWidget* parent)
   table_->verticalHeader()->hide();
   table_->setAlternatingRowColors(true);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-  // Numbers keep their full width; the long device names give way (elided, whole in the tooltip).
+  // Numbers and names keep their full width; the long device names get a fixed 170 px (the user can widen it),
+  // elided in the middle, whole in the tooltip, so the table fits a 1100 px window without scrolling.
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setSectionResizeMode(Device, QHeaderView::Stretch);
+  table_->horizontalHeader()->setSectionResizeMode(Device, QHeaderView::Interactive);
+  table_->setColumnWidth(Device, 170);
+  table_->setWordWrap(false);
   table_->setTextElideMode(Qt::ElideMiddle);
   summary_->setWordWrap(true);
   summary_->setTextFormat(Qt::RichText);
