@@ -161,7 +161,7 @@ void RooflineView::redraw() {
     QCPGraph* key = plot_->addGraph();  // legend entry only
     key->setLineStyle(QCPGraph::lsNone);
     key->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 1.5), Qt::NoBrush, 11));
-    key->setName(tr("Preprocessing stage (demosaic + reprojection, or fused), measured; bar: ± SD"));
+    key->setName(tr("Preprocessing stage of a pipeline run (hover: numbers, source); bar: ± SD"));
   }
   QFont label_font(font().family(), 7);
   int stage_index = 0;

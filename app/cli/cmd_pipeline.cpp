@@ -1,11 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli pipeline: runs the paper's vision pipeline (capture -> demosaic + reprojection -> detection, one
 // thread each for capture and preprocessing, --detect-workers threads for detection) on frame files, prints per-stage timings, writes the figure-3 images and can store the run.
-#include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -29,25 +26,12 @@
 #include "vision/pipeline_record.h"
 #include "vision/preprocess.h"
 #include "vision/threads.h"
+#include "util/host_clock.h"
 
 namespace bs::cli {
 namespace {
 
 using namespace bs::vision;
-
-std::string host() {
-  char buf[256] = {};
-  return gethostname(buf, sizeof buf - 1) == 0 ? std::string(buf) : std::string("unknown host");
-}
-
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 // A lens file (format benchscope-lens), or a raw frame's sidecar that carries one under "lens" (synth-frame
 // writes that), or the word "paper" for the paper's camera.
@@ -226,7 +210,7 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   }
 
   PipelineRun run = to_pipeline_run(result);
-  run.platform = args.value("--platform").value_or(host());
+  run.platform = args.value("--platform").value_or(bs::host_name());
   run.device = backend == "opencl" ? cl_info.device + " (OpenCL) preprocessing, CPU detection"
                : backend == "cuda"  ? cuda_info.device + " (CUDA) preprocessing, CPU detection"
                                     : "CPU (" + std::to_string(opencv_threads()) + " threads)";
@@ -239,8 +223,8 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   run.frame_width = lens.width;
   run.frame_height = lens.height;
   run.provenance.origin = DataOrigin::Measured;
-  run.provenance.host = host();
-  run.provenance.date = utc_now();
+  run.provenance.host = bs::host_name();
+  run.provenance.date = bs::utc_timestamp();
   run.provenance.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
   run.provenance.compiler = BENCHSCOPE_COMPILER;
   run.provenance.note = "benchscope-cli pipeline on " + std::to_string(args.positional.size()) + " frame file(s), " +

@@ -206,7 +206,10 @@ std::vector<PlatformVerdict> recommend(std::span<const PlatformRow> rows, const 
     };
     if (c.power_budget_w) check("power budget (mean power)", "W", *c.power_budget_w, row.mean_power_w, true);
     if (c.min_fps) check("frame rate (preprocessing + detection)", "fps", *c.min_fps, row.fps, false);
-    if (c.min_runtime_h) check("battery runtime", "h", *c.min_runtime_h, row.battery_runtime_h, false);
+    // In minutes, the unit the user sets the constraint in (GUI and --min-runtime): a margin of "-0.12 h" reads badly.
+    if (c.min_runtime_h)
+      check("battery runtime", "min", *c.min_runtime_h * 60,
+            row.battery_runtime_h ? std::optional<double>(*row.battery_runtime_h * 60) : std::nullopt, false);
     v.meets_all = std::all_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.met; });
     if (!row.mean_power_w) v.note = "no power log: its power and battery runtime are unknown";
     else if (row.best_peak_flops() <= 0) v.note = "no FLOPS runs";

@@ -105,7 +105,7 @@ struct Constraints {
 
 struct ConstraintCheck {
   std::string name;      // "power budget", "frame rate", "battery runtime"
-  std::string unit;      // "W", "fps", "h"
+  std::string unit;      // "W", "fps", "min"
   double required = 0;
   std::optional<double> actual;  // nullopt: the platform has no data for it (fails)
   bool met = false;

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <chrono>
 #include <cstdio>
-#include <ctime>
 
 #include "kernels/backend.h"
 #include "kernels/triad_cpu.h"
 #include "kernels/step_chunker.h"
+#include "util/host_clock.h"
 
 namespace bs::kernels {
 namespace {
@@ -47,15 +47,6 @@ double run_scalar(const RotationParams& p, std::int64_t workers, std::vector<flo
   outputs.assign(static_cast<std::size_t>(workers), 0.0f);
   state.outputs(outputs);
   return seconds;
-}
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
 }
 
 }  // namespace
@@ -101,13 +92,13 @@ std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
 Provenance measured_provenance(const CpuInfo& cpu, const Backend& backend) {
   Provenance p;
   p.origin = DataOrigin::Measured;
-  p.host = host_name();
+  p.host = bs::host_name();
   p.cpu_model = cpu.model;
   p.os = os_name();
   if (backend.id.starts_with("opencl") || backend.id.starts_with("cuda")) p.gpu_model = backend.device_name;
   p.compiler = BENCHSCOPE_COMPILER;
   p.tool = std::string("benchscope ") + BENCHSCOPE_VERSION;
-  p.date = utc_now();
+  p.date = bs::utc_timestamp();
   char cpu_note[160];
   std::snprintf(cpu_note, sizeof cpu_note, "host CPU %s, %d threads, %.3f GHz measured (dependent imul chain)",
                 cpu.simd.name.c_str(), cpu.threads, cpu.clock_hz / 1e9);

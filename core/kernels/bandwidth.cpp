@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/bandwidth.h"
+#include "util/host_clock.h"
 
 #include <stdexcept>
 #include <string>
@@ -13,7 +14,7 @@ ResultSet measure_bandwidth(const Backend& backend, const CpuInfo& cpu, const Ba
   if (spec.mib_per_array < 1 || spec.mib_per_array > 16384) throw std::invalid_argument("MiB per array must be 1 to 16384");
   const std::size_t elements = spec.mib_per_array * (std::size_t{1} << 20) / sizeof(float);
   ResultSet set;
-  set.platform = host_name();
+  set.platform = bs::host_name();
   set.device = backend.device_name;
   set.device_kind = backend.kind;
   set.backend = backend.label;

@@ -84,12 +84,6 @@ CpuInfo detect_cpu(bool calibrate) {
   return info;
 }
 
-std::string host_name() {
-  char buf[256] = {};
-  if (gethostname(buf, sizeof buf - 1) != 0) return "unknown host";
-  return buf;
-}
-
 std::string os_name() {
   const std::string name = read_key("/etc/os-release", "PRETTY_NAME", '=');
   return name.empty() ? "unknown OS" : name;

@@ -39,7 +39,6 @@ double rotation_flops_per_cycle(int lanes, bool fma, int fma_ports, bool separat
 // = threads * clock * flops_per_cycle.
 CpuInfo detect_cpu(bool calibrate = true);
 
-std::string host_name();
 std::string os_name();  // PRETTY_NAME of /etc/os-release
 
 }  // namespace bs::kernels

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/sweep.h"
+#include "util/host_clock.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -31,7 +32,7 @@ SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpe
   try {
     for (int d : spec.dims) {
       FlopsRun run;
-      run.platform = host_name();
+      run.platform = bs::host_name();
       run.device = backend.device_name;
       run.device_kind = backend.kind;
       run.backend = backend.label;

@@ -2,11 +2,9 @@
 #include "store/workspace.h"
 
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -20,6 +18,7 @@
 #include "model/provenance_json.h"
 #include "store/schema.h"
 #include "store/sqlite_db.h"
+#include "util/host_clock.h"
 
 namespace bs {
 
@@ -28,15 +27,6 @@ using sqlite::Statement;
 using sqlite::Transaction;
 
 namespace {
-
-std::string utc_now_iso() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 // Reject what is not an SQLite file before SQLite touches it, so opening never alters a foreign file.
 void check_sqlite_header(const std::string& path) {
@@ -140,7 +130,7 @@ Workspace::Workspace(const std::string& path) {
     store::migrate(db, static_cast<int>(version));
     Statement meta(db, "INSERT OR REPLACE INTO meta(key, value) VALUES (?, ?)");
     if (version == 0) {  // a new file, or an empty one that only carries the application id
-      meta.bind(1, std::string_view("created_at")).bind(2, std::string_view(utc_now_iso())).run();
+      meta.bind(1, std::string_view("created_at")).bind(2, std::string_view(bs::utc_timestamp())).run();
       meta.bind(1, std::string_view("created_by")).bind(2, std::string_view("benchscope " BENCHSCOPE_VERSION)).run();
     }
     meta.bind(1, std::string_view("schema_version")).bind(2, std::string_view(std::to_string(kSchemaVersion))).run();
@@ -199,7 +189,7 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
                 "VALUES (?, ?, ?, ?, ?, ?)");
   imp.bind(1, std::string_view(batch.source_path))
       .bind(2, std::string_view(batch.format))
-      .bind(3, std::string_view(utc_now_iso()))
+      .bind(3, std::string_view(bs::utc_timestamp()))
       .bind(4, std::string_view(content_hash))
       .bind(5, static_cast<std::int64_t>(batch.runs.size()))
       .bind(6, static_cast<std::int64_t>(batch.result_sets.size()))

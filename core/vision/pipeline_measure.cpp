@@ -1,11 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/pipeline_measure.h"
 
-#include <unistd.h>
-
-#include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <stdexcept>
 
 #include "vision/cuda_preprocess.h"
@@ -15,25 +11,9 @@
 #include "vision/preprocess.h"
 #include "vision/synthetic.h"
 #include "vision/threads.h"
+#include "util/host_clock.h"
 
 namespace bs::vision {
-namespace {
-
-std::string this_host() {
-  char buf[256] = {};
-  return gethostname(buf, sizeof buf - 1) == 0 ? std::string(buf) : std::string("unknown host");
-}
-
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
-}  // namespace
 
 cv::Mat synthetic_paper_capture() { return mosaic(render_fisheye(Lens::paper()), BayerPattern::BGGR); }
 
@@ -71,7 +51,7 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   if (result.cancelled) return std::nullopt;
 
   PipelineRun run = to_pipeline_run(result);
-  run.platform = this_host();
+  run.platform = bs::host_name();
   run.device = preprocess_device + ", " + std::to_string(o.detection_workers) + " detection worker" +
                (o.detection_workers == 1 ? "" : "s");
   run.backend = o.backend;
@@ -81,8 +61,8 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   run.frame_width = lens.width;
   run.frame_height = lens.height;
   run.provenance.origin = DataOrigin::Measured;
-  run.provenance.host = this_host();
-  run.provenance.date = utc_now();
+  run.provenance.host = bs::host_name();
+  run.provenance.date = bs::utc_timestamp();
   run.provenance.tool = o.tool;
   char scale[32];
   std::snprintf(scale, sizeof scale, "%g", o.detect_scale);

@@ -108,7 +108,9 @@ class TestPlatformComparison : public QObject {
         QVERIFY(!v.meets_all);
         QCOMPARE(v.checks.size(), std::size_t{2});
         QCOMPARE(round2(v.checks[0].margin), -30.52);
-        QVERIFY(!v.checks[1].met);  // 84 min < 2 h
+        QVERIFY(!v.checks[1].met);  // 84.36 min < 2 h, the margin in minutes as the constraint is set
+        QCOMPARE(v.checks[1].unit, std::string("min"));
+        QCOMPARE(round2(v.checks[1].margin), round2(84.36 - 120));
       } else if (v.platform == "Jetson TX2") {
         QVERIFY(v.meets_all && v.recommended);
         QCOMPARE(round2(v.checks[0].margin), 0.52);
