@@ -261,7 +261,9 @@ class TestPaperFigures : public QObject {
       worst = std::max(worst, latency < 0.2 ? 0.0 : latency / full);
     }
     QVERIFY2(cancelled >= 2, "the cancels did not reach a running export");
-    QVERIFY2(worst < 0.2, qPrintable(QString("cancel took %1 of the whole export").arg(worst)));
+    // Generous on purpose: under a parallel ctest on 2 cores one figure's step can take a quarter of the export,
+    // while an ignored cancel costs the rest of it (85 % at the first cancel point, and throws nothing at all).
+    QVERIFY2(worst < 0.4, qPrintable(QString("cancel took %1 of the whole export").arg(worst)));
   }
 
   void template_without_matching_data_is_a_clear_error() {
