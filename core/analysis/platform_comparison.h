@@ -98,9 +98,10 @@ std::optional<double> energy_per_frame_j(const PowerTrace& trace, double from_s,
                                          std::optional<double> supply_v = std::nullopt);
 
 struct Constraints {
-  std::optional<double> power_budget_w;    // against the mean power
-  std::optional<double> min_fps;           // preprocessing + detection in sequence
-  std::optional<double> min_runtime_h;     // on the battery of ComparisonOptions
+  // {} so that callers can name only the constraints they set ({.min_fps = 30}) without GCC's warning.
+  std::optional<double> power_budget_w{};  // against the mean power
+  std::optional<double> min_fps{};         // preprocessing + detection in sequence
+  std::optional<double> min_runtime_h{};   // on the battery of ComparisonOptions
 };
 
 struct ConstraintCheck {

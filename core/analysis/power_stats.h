@@ -39,9 +39,11 @@ struct ChannelStats {
 };
 
 struct PowerStatsOptions {
-  std::optional<double> supply_v;  // overrides the trace's own supply voltage
-  std::optional<double> from_s;    // seconds from the start of the trace; unset = the start
-  std::optional<double> to_s;      // unset = the end
+  // Default member initializers let callers name only what they set ({.supply_v = v}) without GCC 12's
+  // -Wmissing-field-initializers.
+  std::optional<double> supply_v{};  // overrides the trace's own supply voltage
+  std::optional<double> from_s{};    // seconds from the start of the trace; unset = the start
+  std::optional<double> to_s{};      // unset = the end
 };
 
 struct PowerStats {

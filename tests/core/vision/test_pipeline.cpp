@@ -118,8 +118,8 @@ class TestPipeline : public QObject {
 
   void several_workers_detect_every_frame_once() {
     // Frame i carries its index in its first two pixels; the detector reports it back as the score.
-    const int n = 300;
-    const FrameSource numbered = [n](std::size_t i) -> std::optional<cv::Mat> {
+    constexpr int n = 300;
+    const FrameSource numbered = [](std::size_t i) -> std::optional<cv::Mat> {
       if (static_cast<int>(i) >= n) return std::nullopt;
       cv::Mat m(8, 8, CV_8UC1, cv::Scalar(0));
       m.at<uchar>(0, 0) = static_cast<uchar>(i % 256);
