@@ -12,15 +12,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 
-// The same rotation as source_of() applies (lens.cpp): yaw about z, pitch about y, roll about the optical x axis.
-cv::Matx33d rotation(const View& v) {
-  const double y = rad(v.yaw_deg), p = rad(v.pitch_deg), r = rad(v.roll_deg);
-  const cv::Matx33d yaw(std::cos(y), -std::sin(y), 0, std::sin(y), std::cos(y), 0, 0, 0, 1);
-  const cv::Matx33d pitch(std::cos(p), 0, -std::sin(p), 0, 1, 0, std::sin(p), 0, std::cos(p));
-  const cv::Matx33d roll(1, 0, 0, 0, std::cos(r), -std::sin(r), 0, std::sin(r), std::cos(r));
-  return yaw * pitch * roll;
-}
-
 }  // namespace
 
 std::optional<cv::Point2d> output_of(const Lens& lens, const View& view, double fx, double fy) {
@@ -31,7 +22,8 @@ std::optional<cv::Point2d> output_of(const Lens& lens, const View& view, double 
   if (!theta) return std::nullopt;
   const double s = std::sin(*theta);
   const cv::Vec3d ray(std::cos(*theta), r > 0 ? s * dx / r : 0.0, r > 0 ? s * dz / r : 0.0);
-  const cv::Vec3d u = rotation(view).t() * ray;  // back into the view's frame
+  // The inverse of the rotation source_of() applies (lens.cpp): back into the view's frame.
+  const cv::Vec3d u = view_rotation(view).t() * ray;
   if (u[0] <= 1e-12) return std::nullopt;           // behind the image plane
   const double f = view.focal_px();
   double x = f * u[1] / u[0] + (view.width - 1) / 2.0;
