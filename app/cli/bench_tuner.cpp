@@ -14,6 +14,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "analysis/power.h"
 #include "analysis/stats.h"
 #include "args.h"
 #include "vision/fast_map.h"
@@ -27,14 +28,6 @@ double process_cpu_ms() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
-}
-
-double percentile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  const double pos = q * static_cast<double>(v.size() - 1);
-  const auto lo = static_cast<std::size_t>(pos);
-  const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (v[hi] - v[lo]) * (pos - static_cast<double>(lo));
 }
 
 struct Method {
@@ -104,18 +97,18 @@ int bench_tuner(const std::vector<std::string>& arguments, std::ostream& out) {
   std::snprintf(line, sizeof line, "%-40s %10s %10s  %20s  %12s  %s\n", "method", "median", "p95", "mean +- SD",
                 "median CPU", "vs reference");
   out << line;
-  const double reference = percentile(methods[0].ms, 0.5);
+  const double reference = median(methods[0].ms);
   for (const auto& m : methods) {
     const Summary s = summarize(m.ms);
-    const double med = percentile(m.ms, 0.5);
+    const double med = median(m.ms);
     std::snprintf(line, sizeof line, "%-40s %7.2f ms %7.2f ms  %7.2f +- %5.2f ms  %9.2f ms  %5.2fx\n", m.name.c_str(),
-                  med, percentile(m.ms, 0.95), s.mean, s.sd, percentile(m.cpu_ms, 0.5), reference / med);
+                  med, percentile(m.ms, 95), s.mean, s.sd, median(m.cpu_ms), reference / med);
     out << line;
   }
-  const double coarse = percentile(methods[1].ms, 0.5);
+  const double coarse = median(methods[1].ms);
   std::snprintf(line, sizeof line,
                 "\ncoarse map + remap: median %.2f ms wall, %.2f ms CPU per parameter change (target < 20 ms wall: %s)\n",
-                coarse, percentile(methods[1].cpu_ms, 0.5), coarse < 20 ? "met" : "not met in this run");
+                coarse, median(methods[1].cpu_ms), coarse < 20 ? "met" : "not met in this run");
   out << line;
   return 0;
 }

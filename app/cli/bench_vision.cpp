@@ -10,6 +10,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "analysis/power.h"
 #include "analysis/stats.h"
 #include "args.h"
 #include "vision/cuda_preprocess.h"
@@ -25,12 +26,6 @@ struct Method {
   std::function<void()> work;
   std::vector<double> ms{};
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 }  // namespace
 

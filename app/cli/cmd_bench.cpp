@@ -10,6 +10,7 @@
 
 #include "analysis/decimate.h"
 #include "analysis/flops.h"
+#include "analysis/power.h"
 #include "analysis/stats.h"
 #include "args.h"
 #include "bench_pipeline.h"
@@ -24,12 +25,6 @@ namespace bs::cli {
 int bench_power_csv(const std::vector<std::string>& args, std::ostream& out);  // in cmd_power.cpp
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double process_cpu_seconds() {
   timespec ts{};

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace bs {
 namespace {
@@ -43,6 +44,8 @@ double percentile(std::vector<double> values, double q) {
   const std::size_t hi = std::min(lo + 1, values.size() - 1);
   return values[lo] + (values[hi] - values[lo]) * (pos - static_cast<double>(lo));
 }
+
+double median(std::vector<double> values) { return percentile(std::move(values), 50); }
 
 double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values) {
   double sum = 0;

@@ -17,6 +17,8 @@ std::vector<double> current_series(const PowerTrace& trace);  // empty without a
 
 // Linear-interpolated percentile q in [0, 100] of `values` (copied and partially sorted).
 double percentile(std::vector<double> values, double q);
+// percentile(values, 50): the middle value, or the mean of the middle two for an even count.
+double median(std::vector<double> values);
 
 // Trapezoidal integral of `values` over irregular timestamps `time_s` (J for W).
 double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values);
