@@ -8,7 +8,11 @@
 namespace bs {
 namespace {
 
+// The named total channel when it has quantity `q`, else the first channel of that quantity.
 const PowerChannel* find_channel(const PowerTrace& t, PowerQuantity q) {
+  if (!t.total_channel.empty())
+    for (const PowerChannel& c : t.channels)
+      if (c.name == t.total_channel && c.quantity == q && c.values.size() == t.time_s.size()) return &c;
   for (const PowerChannel& c : t.channels)
     if (c.quantity == q && c.values.size() == t.time_s.size()) return &c;
   return nullptr;

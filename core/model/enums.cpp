@@ -19,6 +19,23 @@ DataOrigin data_origin_from_string(std::string_view text) {
   return DataOrigin::Unknown;
 }
 
+std::string_view to_string(MeasurementKind kind) {
+  switch (kind) {
+    case MeasurementKind::ExternalMeter: return "external meter";
+    case MeasurementKind::OnBoardSensor: return "on-board sensor";
+    case MeasurementKind::SoftwareEstimate: return "software estimate";
+    case MeasurementKind::Unknown: break;
+  }
+  return "unknown";
+}
+
+MeasurementKind measurement_kind_from_string(std::string_view text) {
+  if (text == "external meter") return MeasurementKind::ExternalMeter;
+  if (text == "on-board sensor") return MeasurementKind::OnBoardSensor;
+  if (text == "software estimate") return MeasurementKind::SoftwareEstimate;
+  return MeasurementKind::Unknown;
+}
+
 std::string_view to_string(DeviceKind kind) {
   switch (kind) {
     case DeviceKind::Cpu: return "cpu";

@@ -14,7 +14,9 @@ enum class PowerQuantity { Current, Voltage, Power };
 struct PowerChannel {
   std::string name;  // as in the file: "current", "VDD_IN", "VDD_SYS_GPU", "I_main"
   PowerQuantity quantity = PowerQuantity::Current;
-  std::vector<double> values;  // one per timestamp, SI units
+  // One per timestamp, SI units. NaN marks a missing sample ("[N/A]", an empty cell, "<not counted>"): it is
+  // never read as zero, and statistics skip it.
+  std::vector<double> values;
 };
 
 // A named time range of a trace: marked by the user or found from level changes ("idle", "load", "benchmark").
@@ -32,6 +34,10 @@ struct PowerTrace {
   std::string start_time;    // ISO 8601 of the first sample when the log had absolute times, else empty
   std::vector<double> time_s;
   std::vector<PowerChannel> channels;
+  // The channel that is the whole board's or package's power or current (tegrastats VDD_IN, jtop "Power TOT", a
+  // meter's single channel). Empty: the first power channel, else the first current channel (the rule before
+  // this field existed). Never the sum of the rails together with their total.
+  std::string total_channel;
   // Supply voltage used to turn current into power when the log has no voltage channel (paper: 16 V).
   std::optional<double> supply_voltage_v;
   std::vector<TracePhase> phases;

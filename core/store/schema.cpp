@@ -146,8 +146,31 @@ void migrate_3_to_4(const sqlite::Db& db) {
   )sql");
 }
 
+// Version 4 -> 5: a power trace names its total channel (the board's input rail, jtop's "Power TOT"), and keeps its
+// named phases (PTDaemon marks, detected level changes, a run's markers, selections the user saved).
+void migrate_4_to_5(const sqlite::Db& db) {
+  // Idempotent like the CREATE ... IF NOT EXISTS steps: a workspace whose user_version was set back (tests do) may
+  // have the column already.
+  bool has_total = false;
+  {
+    sqlite::Statement cols(db, "SELECT 1 FROM pragma_table_info('power_traces') WHERE name = 'total_channel'");
+    has_total = cols.step();
+  }
+  if (!has_total) db.exec("ALTER TABLE power_traces ADD COLUMN total_channel TEXT NOT NULL DEFAULT ''");
+  db.exec(R"sql(
+    CREATE TABLE IF NOT EXISTS power_phases(
+      id INTEGER PRIMARY KEY,
+      trace_id INTEGER NOT NULL REFERENCES power_traces(id) ON DELETE CASCADE,
+      name TEXT NOT NULL,
+      start_s REAL NOT NULL,
+      end_s REAL NOT NULL CHECK(end_s >= start_s));
+    CREATE INDEX IF NOT EXISTS power_phases_by_trace ON power_phases(trace_id);
+  )sql");
+}
+
 using Migration = void (*)(const sqlite::Db&);
-constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4};
+constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4,
+                                     migrate_4_to_5};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

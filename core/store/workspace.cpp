@@ -254,8 +254,9 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
   }
   Statement trace_st(db,
                      "INSERT INTO power_traces(import_id, platform, label, start_time, supply_voltage_v, time_s, "
-                     "provenance) VALUES (?,?,?,?,?,?,?)");
+                     "provenance, total_channel) VALUES (?,?,?,?,?,?,?,?)");
   Statement channel_st(db, "INSERT INTO power_channels(trace_id, name, quantity, vals) VALUES (?,?,?,?)");
+  Statement phase_st(db, "INSERT INTO power_phases(trace_id, name, start_s, end_s) VALUES (?,?,?,?)");
   // A trace row and each channel row carry a whole BLOB (8 bytes per sample, 80 MB for ten million), so cancel is
   // checked before every one of them rather than every kCancelCheckRows rows.
   const auto check = [&] {
@@ -270,8 +271,11 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
         .bind(5, t.supply_voltage_v)
         .bind_doubles(6, t.time_s)
         .bind(7, std::string_view(provenance_to_json(t.provenance, true).dump()))
+        .bind(8, std::string_view(t.total_channel))
         .run();
     const std::int64_t trace_id = sqlite3_last_insert_rowid(db.get());
+    for (const TracePhase& p : t.phases)
+      phase_st.bind(1, trace_id).bind(2, std::string_view(p.name)).bind(3, p.start_s).bind(4, p.end_s).run();
     for (const PowerChannel& c : t.channels) {
       check();
       const char* q = c.quantity == PowerQuantity::Current ? "current" : c.quantity == PowerQuantity::Voltage ? "voltage" : "power";
@@ -494,8 +498,8 @@ std::vector<StoredPowerTrace> Workspace::power_traces() const {
   std::vector<StoredPowerTrace> out;
   std::map<std::int64_t, std::size_t> index;
   Statement st(impl_->db,
-               "SELECT id, import_id, platform, label, start_time, supply_voltage_v, time_s, provenance "
-               "FROM power_traces ORDER BY id");
+               "SELECT id, import_id, platform, label, start_time, supply_voltage_v, time_s, provenance, "
+               "total_channel FROM power_traces ORDER BY id");
   while (st.step()) {
     StoredPowerTrace s;
     s.id = st.int64(0);
@@ -506,6 +510,7 @@ std::vector<StoredPowerTrace> Workspace::power_traces() const {
     s.trace.supply_voltage_v = st.optional_real(5);
     s.trace.time_s = st.doubles(6);
     s.trace.provenance = provenance_from_json(nlohmann::json::parse(st.text(7), nullptr, false));
+    s.trace.total_channel = st.text(8);
     index[s.id] = out.size();
     out.push_back(std::move(s));
   }
@@ -517,6 +522,12 @@ std::vector<StoredPowerTrace> Workspace::power_traces() const {
     out[it->second].trace.channels.push_back(
         {ch.text(1), q == "current" ? PowerQuantity::Current : q == "voltage" ? PowerQuantity::Voltage : PowerQuantity::Power,
          ch.doubles(3)});
+  }
+  Statement ph(impl_->db, "SELECT trace_id, name, start_s, end_s FROM power_phases ORDER BY trace_id, start_s, id");
+  while (ph.step()) {
+    const auto it = index.find(ph.int64(0));
+    if (it == index.end()) continue;
+    out[it->second].trace.phases.push_back({ph.text(1), ph.real(2), ph.real(3)});
   }
   return out;
 }

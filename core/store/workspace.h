@@ -84,7 +84,7 @@ struct StoredPipelineRun {
 // transaction per import so a crash or a cancel leaves either all of an import or none of it.
 class Workspace {
  public:
-  static constexpr int kSchemaVersion = 4;  // 2: power traces, 3: frames, 4: pipeline runs
+  static constexpr int kSchemaVersion = 5;  // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.

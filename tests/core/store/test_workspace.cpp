@@ -156,6 +156,12 @@ class TestWorkspace : public QObject {
     t.channels.push_back({"VDD_IN", bs::PowerQuantity::Voltage, {19.0, 19.1, 18.9}});
     t.channels.push_back({"power_W", bs::PowerQuantity::Power, {40, 41.6, 16.0 / 3.0}});
     t.provenance = full_provenance("power");
+    t.provenance.measurement = bs::MeasurementKind::ExternalMeter;
+    t.provenance.sensor = "Keysight N6705C";
+    t.provenance.settings = {{"nvp model", "MAXN"}, {"jetson_clocks", "on"}};
+    t.total_channel = "power_W";
+    t.phases = {{"idle", 0, 0.1}, {"load \"kick\"", 0.1, 0.25}};
+    t.channels.push_back({"rail_with_gap", bs::PowerQuantity::Power, {1, std::nan(""), 2}});
     bs::PowerTrace bare;
     bare.platform = "Jetson TX2";
     bare.time_s = {0};
@@ -182,6 +188,13 @@ class TestWorkspace : public QObject {
       QVERIFY(same_bits(got.supply_voltage_v, want.supply_voltage_v));
       QVERIFY(same_bits(got.time_s, want.time_s));
       QVERIFY(same_provenance(got.provenance, want.provenance));
+      QCOMPARE(got.total_channel, want.total_channel);
+      QCOMPARE(got.phases.size(), want.phases.size());
+      for (std::size_t p = 0; p < got.phases.size(); ++p) {
+        QCOMPARE(got.phases[p].name, want.phases[p].name);
+        QCOMPARE(got.phases[p].start_s, want.phases[p].start_s);
+        QCOMPARE(got.phases[p].end_s, want.phases[p].end_s);
+      }
       QCOMPARE(got.channels.size(), want.channels.size());
       for (std::size_t c = 0; c < got.channels.size(); ++c) {
         QCOMPARE(got.channels[c].name, want.channels[c].name);

@@ -35,7 +35,8 @@ inline bool same_bits(const std::optional<double>& a, const std::optional<double
 inline bool same_provenance(const Provenance& a, const Provenance& b) {
   return a.origin == b.origin && a.host == b.host && a.cpu_model == b.cpu_model && a.gpu_model == b.gpu_model &&
          a.os == b.os && a.compiler == b.compiler && a.tool == b.tool && a.git_revision == b.git_revision &&
-         a.date == b.date && a.note == b.note && a.source_file == b.source_file;
+         a.date == b.date && a.note == b.note && a.source_file == b.source_file && a.measurement == b.measurement &&
+         a.sensor == b.sensor && a.settings == b.settings;
 }
 
 inline bool same_run(const FlopsRun& a, const FlopsRun& b) {
