@@ -34,14 +34,14 @@ struct PowerTrace {
   std::string start_time;    // ISO 8601 of the first sample when the log had absolute times, else empty
   std::vector<double> time_s;
   std::vector<PowerChannel> channels;
-  // The channel that is the whole board's or package's power or current (tegrastats VDD_IN, jtop "Power TOT", a
-  // meter's single channel). Empty: the first power channel, else the first current channel (the rule before
-  // this field existed). Never the sum of the rails together with their total.
-  std::string total_channel;
   // Supply voltage used to turn current into power when the log has no voltage channel (paper: 16 V).
   std::optional<double> supply_voltage_v;
   std::vector<TracePhase> phases;
   Provenance provenance;
+  // The channel that is the whole board's or package's power or current (tegrastats VDD_IN, jtop "Power TOT", a
+  // meter's single channel). Empty: the first power channel, else the first current channel (the rule before
+  // this field existed). Never the sum of the rails together with their total.
+  std::string total_channel;
 };
 
 }  // namespace bs
