@@ -103,14 +103,16 @@ Section section_from_title(std::string_view title) {
   return section;
 }
 
-// Device names that are CPUs: PoCL ("pthread-...", "cpu-haswell-..."), Intel / AMD / ARM CPU runtimes.
-// A Vulkan or rusticl iGPU may carry its CPU's name ("AMD Ryzen 9 7900 12-Core Processor (RADV RAPHAEL_MENDOCINO)"):
-// a GPU driver or "graphics" in the name wins.
+// Device names that are CPUs: PoCL ("pthread-...", "cpu-haswell-..."), Intel / AMD / ARM CPU runtimes, llvmpipe.
+// PoCL's CPU prefixes decide first ("pthread-AMD Ryzen 7 5800H with Radeon Graphics" is the CPU). Otherwise a
+// Vulkan or rusticl iGPU may carry its CPU's name ("AMD Ryzen 9 7900 12-Core Processor (RADV RAPHAEL_MENDOCINO)"):
+// a GPU driver or "graphics" in the name wins over the CPU words.
 bool names_a_cpu(std::string_view device) {
   const std::string d = lower(device);
+  if (d.starts_with("pthread-") || d.starts_with("cpu-") || d.starts_with("basic-")) return true;
   for (const char* hint : {"radv", "radeonsi", "graphics", "gpu", "gfx", "geforce", "radeon", "mali", "adreno"})
     if (d.find(hint) != std::string::npos) return false;
-  for (const char* hint : {"cpu", "pthread", "processor", "xeon", "ryzen", "epyc", "core(tm)", "cortex-"})
+  for (const char* hint : {"cpu", "pthread", "processor", "xeon", "ryzen", "epyc", "core(tm)", "cortex-", "llvmpipe"})
     if (d.find(hint) != std::string::npos) return true;
   return false;
 }
@@ -322,7 +324,8 @@ class ClpeakParser {
     double value = 0;
     if (!leading_number(value_text, &rest, &value)) {
       // A crash message in place of the value ("Speicherzugriffsfehler"), "compile/load failed", ...
-      unreadable(ImportErrorCategory::Syntax, column, name, "expected a number, found '" + std::string(value_text) + "'");
+      unreadable(ImportErrorCategory::Syntax, column, name,
+                 "expected a number, found '" + std::string(value_text) + "'");
       return;
     }
     if (!std::isfinite(value)) {

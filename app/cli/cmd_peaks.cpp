@@ -158,7 +158,8 @@ const CommandRegistrar registrar({
       try {
         return run_peaks(args, out);
       } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\nusage: benchscope-cli peaks (WORKSPACE | PATH...) [--json] [--kind cpu|gpu] [--precision P|all]\n";
+        err << "benchscope-cli: error: " << e.what()
+            << "\nusage: benchscope-cli peaks (WORKSPACE | PATH...) [--json] [--kind cpu|gpu] [--precision P|all]\n";
         return 2;
       }
     },

@@ -48,7 +48,9 @@ struct MeasureClass {
 };
 
 MeasureClass classify_measurement(std::string_view metric, std::string_view name, std::string_view unit);
-inline MeasureClass classify_measurement(const Measurement& m) { return classify_measurement(m.metric, m.name, m.unit); }
+inline MeasureClass classify_measurement(const Measurement& m) {
+  return classify_measurement(m.metric, m.name, m.unit);
+}
 
 std::string_view to_string(Precision p);    // "fp32", "fp16", "mixed", "int8", "unknown", ...
 std::string_view to_string(MeasureKind k);  // "vector-compute", "memory-bandwidth", ...

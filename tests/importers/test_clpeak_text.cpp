@@ -127,6 +127,19 @@ class TestClpeakText : public QObject {
         "    Single-precision compute (GFLOPS)\n      float : 2.5\n",
         "hint.txt");
     QCOMPARE(batch.result_sets[0].device_kind, bs::DeviceKind::Cpu);
+    // Device names from clpeak issue 155: an iGPU named after its CPU under Vulkan and rusticl is a GPU; PoCL's
+    // "pthread-" device is the CPU even when the CPU's name mentions its graphics.
+    const auto kind_of = [](const std::string& device_line) {
+      return bs::parse_clpeak_text(device_line + "\n  Single-precision compute (GFLOPS)\n    float : 1.0\n", "k.txt")
+          .result_sets[0]
+          .device_kind;
+    };
+    QCOMPARE(kind_of("Vulkan Device: AMD Ryzen 9 7900 12-Core Processor (RADV RAPHAEL_MENDOCINO)"),
+             bs::DeviceKind::Gpu);
+    QCOMPARE(kind_of("  Device: AMD Ryzen 9 7900 12-Core Processor (radeonsi, raphael_mendocino, ACO, DRM 3.64)"),
+             bs::DeviceKind::Gpu);
+    QCOMPARE(kind_of("  Device: pthread-AMD Ryzen 7 5800H with Radeon Graphics"), bs::DeviceKind::Cpu);
+    QCOMPARE(kind_of("Vulkan Device: llvmpipe (LLVM 15.0.6, 256 bits)"), bs::DeviceKind::Cpu);
   }
 
   void crlf_and_bad_number() {
