@@ -99,7 +99,7 @@ Section section_from_title(std::string_view title) {
     variant = std::string(name.substr(bracket));
     name = trim(name.substr(0, bracket));
   }
-  section.metric = lower(name) + (variant.empty() ? "" : " " + lower(variant));
+  section.metric = lower(name) + (variant.empty() ? "" : " " + variant);
   return section;
 }
 

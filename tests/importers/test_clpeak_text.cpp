@@ -180,7 +180,6 @@ class TestClpeakText : public QObject {
     QVERIFY(imp.sniff("Backend: OpenCL\n  Platform 0: P\n    Device 0: D\n", "x") > 0);
     QCOMPARE(imp.sniff("time_s,current_A\n0,1\n", "power.txt"), 0);
   }
-};
 
   // --- Real outputs ---------------------------------------------------------------------------------------------
 
@@ -365,11 +364,11 @@ class TestClpeakText : public QObject {
     QCOMPARE(cpu.backend, std::string("CPU"));
     QCOMPARE(cpu.device_kind, bs::DeviceKind::Cpu);
     QCOMPARE(cpu.device, std::string("Virtual CPU @ 2.95GHz"));
-    const auto* sse2 = find(cpu, "fdiv fp32 ST", "divide and square-root throughput [sse2]");
+    const auto* sse2 = find(cpu, "fdiv fp32 ST", "divide and square-root throughput [SSE2]");
     QVERIFY(sse2);
     QCOMPARE(sse2->unit, std::string("FLOP/s"));
     QVERIFY(near(sse2->values[0], 8.48e9));
-    QVERIFY(near(find(cpu, "fdiv fp32 MT", "divide and square-root throughput [avx2]")->values[0], 92.8e9));
+    QVERIFY(near(find(cpu, "fdiv fp32 MT", "divide and square-root throughput [AVX2]")->values[0], 92.8e9));
     QCOMPARE(cpu.measurements.size(), std::size_t{16});
     QVERIFY(batch.warnings.empty());
   }
