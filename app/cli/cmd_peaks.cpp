@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/flops.h"
+#include "analysis/result_peaks.h"
 #include "analysis/units.h"
 #include "args.h"
 #include "command.h"
@@ -19,30 +20,12 @@ namespace {
 
 using nlohmann::json;
 
-struct ThroughputPeak {
-  const ResultSet* set;
-  const Measurement* measurement;
-  double value;
-};
-
-// The best FLOP/s figure of each result set (clpeak's widest vector type, a benchmark's FLOPS counter).
-std::vector<ThroughputPeak> throughput_peaks(const std::vector<ResultSet>& sets) {
-  std::vector<ThroughputPeak> out;
-  for (const ResultSet& s : sets) {
-    std::optional<ThroughputPeak> best;
-    for (const Measurement& m : s.measurements) {
-      if (m.unit != "FLOP/s") continue;
-      for (double v : m.values)
-        if (!best || v > best->value) best = ThroughputPeak{&s, &m, v};
-    }
-    if (best) out.push_back(*best);
-  }
-  return out;
-}
-
 json optional_number(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
-json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ThroughputPeak>& throughput) {
+// FLOP/s for floating point, operations/s for integer formats ("1/s" in the model).
+std::string rate_unit(const Measurement& m) { return m.unit == "FLOP/s" ? "FLOPS" : "OPS"; }
+
+json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ResultPeak>& throughput) {
   json jrows = json::array();
   for (const PeakRow& r : rows)
     jrows.push_back({{"platform", r.platform},
@@ -63,14 +46,18 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ThroughputPe
                      {"origin", std::string(to_string(r.origin))},
                      {"source_file", r.source_file}});
   json jt = json::array();
-  for (const ThroughputPeak& t : throughput)
+  for (const ResultPeak& t : throughput)
     jt.push_back({{"platform", t.set->platform},
                   {"device", t.set->device},
                   {"backend", t.set->backend},
                   {"source_format", t.set->source_format},
                   {"name", t.measurement->name},
                   {"metric", t.measurement->metric},
-                  {"value", t.value},
+                  {"precision", std::string(to_string(t.cls.precision))},
+                  {"kind", std::string(to_string(t.cls.kind))},
+                  {"value", t.summary.mean},
+                  {"n", t.summary.n},
+                  {"sd", t.summary.sd},
                   {"unit", t.measurement->unit}});
   return {{"format", "benchscope-peaks"}, {"version", 1}, {"rows", jrows}, {"throughput", jt}};
 }
@@ -89,7 +76,8 @@ std::string percent_text(const std::optional<double>& f) {
   return buf;
 }
 
-void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std::vector<ThroughputPeak>& throughput) {
+void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std::vector<ResultPeak>& throughput,
+                 const ResultPeakQuery& query, std::size_t left_out) {
   TextTable table({"Platform", "Device", "Kind", "Backend", "Variant", "D", "Peak", "Workers at peak", "n",
                    "Reported", "Ratio", "% of theor.", "Origin"});
   for (const PeakRow& r : rows) {
@@ -107,17 +95,28 @@ void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std:
     table.print(out);
   }
   if (!throughput.empty()) {
-    TextTable t({"Platform", "Device", "Backend", "Source", "Measurement", "Peak"});
-    for (const ThroughputPeak& p : throughput)
-      t.add({p.set->platform, p.set->device, p.set->backend, p.set->source_format,
-             p.measurement->metric + " / " + p.measurement->name, format_si(p.value, "FLOPS")});
-    out << "\nThroughput results (FLOP/s measurements from other tools)\n";
+    TextTable t({"Platform", "Device", "Backend", "Source", "Precision", "Measurement", "Peak", "n"});
+    for (const ResultPeak& p : throughput) {
+      std::string peak = format_si(p.summary.mean, rate_unit(*p.measurement));
+      if (p.summary.n > 1) peak += " \xC2\xB1 " + format_si(p.summary.sd, rate_unit(*p.measurement));
+      std::string precision(precision_label(p.cls.precision));
+      if (!query.precision && p.cls.kind != MeasureKind::VectorCompute)
+        precision += std::string(" ") + std::string(to_string(p.cls.kind));
+      t.add({p.set->platform, p.set->device, p.set->backend, p.set->source_format, precision,
+             p.measurement->metric + " / " + p.measurement->name, peak, std::to_string(p.summary.n)});
+    }
+    out << "\nThroughput results from other tools ("
+        << (query.precision ? std::string(precision_label(*query.precision)) + " vector compute"
+                            : std::string("every precision, one row each"))
+        << ")\n";
     t.print(out);
   }
+  if (left_out > 0)
+    out << left_out << " compute result(s) of other precisions or kinds not shown (--precision all lists them)\n";
 }
 
 int run_peaks(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {"--json"}, {"--kind"});
+  const ParsedArgs args = parse_args(raw, {"--json"}, {"--kind", "--precision"});
   if (args.positional.empty()) throw UsageError("peaks needs a workspace or files/folders");
   LoadedData data = load_inputs(args.positional, interrupt_token());
   if (const auto kind = args.value("--kind")) {
@@ -127,26 +126,40 @@ int run_peaks(const std::vector<std::string>& raw, std::ostream& out) {
     std::erase_if(data.result_sets, [&](const ResultSet& s) { return s.device_kind != k; });
   }
   const std::vector<PeakRow> rows = peak_table(data.runs);
-  const std::vector<ThroughputPeak> throughput = throughput_peaks(data.result_sets);
+  ResultPeakQuery query;  // FP32 vector compute, as the paper compares
+  if (const auto p = args.value("--precision")) {
+    if (*p == "all") {
+      query.precision.reset();
+    } else if (const auto precision = precision_from_string(*p)) {
+      query.precision = *precision;
+    } else {
+      throw UsageError("--precision must be fp32 (single), fp64 (double), fp16 (half), bf16, tf32, mixed, fp8, fp4, "
+                       "int64, int32, int24, int16, int8, int4 or all; got '" + *p + "'");
+    }
+  }
+  const std::vector<ResultPeak> throughput = result_peaks(data.result_sets, query);
   if (args.has("--json"))
     out << peaks_json(rows, throughput).dump(2) << '\n';
   else
-    print_human(out, rows, throughput);
+    print_human(out, rows, throughput, query, compute_measurements_left_out(data.result_sets, query));
   return 0;
 }
 
 const CommandRegistrar registrar({
     "peaks",
     "peak FLOPS table (paper Tables 1 and 2) of a workspace or of files",
-    "usage: benchscope-cli peaks (WORKSPACE | PATH...) [--json] [--kind cpu|gpu]\n"
+    "usage: benchscope-cli peaks (WORKSPACE | PATH...) [--json] [--kind cpu|gpu] [--precision P|all]\n"
     "  Prints, per run, the highest mean FLOPS (6*D*N*W/t), the workers where it occurs, the reported figure and\n"
-    "  the ratio to it. With --json: {\"format\":\"benchscope-peaks\",\"version\":1,\"rows\":[...],\n"
-    "  \"throughput\":[...]} as documented in docs/cli.md.",
+    "  the ratio to it; then, per device of clpeak / Google Benchmark results, its peak of one precision:\n"
+    "  fp32 (single, the default, as the paper), fp64, fp16, bf16, tf32, mixed, fp8, fp4, int32, int24, int16,\n"
+    "  int8, int4; 'all' gives one row per precision and kind. With --json: {\"format\":\"benchscope-peaks\",\n"
+    "  \"version\":1,\"rows\":[...],\"throughput\":[...]} as documented in docs/cli.md.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
         return run_peaks(args, out);
       } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\nusage: benchscope-cli peaks (WORKSPACE | PATH...) [--json]\n";
+        err << "benchscope-cli: error: " << e.what()
+            << "\nusage: benchscope-cli peaks (WORKSPACE | PATH...) [--json] [--kind cpu|gpu] [--precision P|all]\n";
         return 2;
       }
     },

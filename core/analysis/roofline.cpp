@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "analysis/flops.h"
+#include "model/measure_class.h"
 
 namespace bs {
 
@@ -54,7 +55,11 @@ std::vector<RooflineCeiling> roofline_ceilings(std::span<const FlopsRun> runs, s
   }
   for (const ResultSet& s : sets)
     for (const Measurement& m : s.measurements) {
-      if (m.unit != "B/s" || m.values.empty()) continue;
+      // Only device-memory bandwidth is the memory ceiling: clpeak's transfer (PCIe), local-memory and image
+      // bandwidths are other roofs, and their "best" can be a map call clpeak times as 1e6 GB/s.
+      if (m.unit != "B/s" || m.values.empty() ||
+          classify_measurement(m).kind != MeasureKind::MemoryBandwidth)
+        continue;
       const double best = *std::max_element(m.values.begin(), m.values.end());
       RooflineCeiling& c = find(s.platform, s.device);
       if (!c.bandwidth_bps || best > *c.bandwidth_bps) {

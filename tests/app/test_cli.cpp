@@ -298,6 +298,11 @@ class TestCli : public QObject {
     QVERIFY(r.out.contains("imported") && r.out.contains("clpeak.txt"));
     const QJsonObject doc = QJsonDocument::fromJson(cli({"peaks", ws, "--json"}).out).object();
     QCOMPARE(doc["throughput"].toArray().size(), 2);  // GTX 1080 Ti and PoCL from clpeak
+    // Single precision by default: the GTX 1080 Ti's row is its float2 11461.23 GFLOPS, never a double or int row.
+    const QJsonObject gtx = doc["throughput"].toArray()[0].toObject();
+    QCOMPARE(gtx["precision"].toString(), QString("fp32"));
+    QCOMPARE(gtx["metric"].toString(), QString("single-precision compute"));
+    QCOMPARE(gtx["value"].toDouble(), 11461.23e9);
     QCOMPARE(doc["rows"].toArray().size(), 13);
   }
 };
