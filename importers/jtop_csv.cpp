@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "analysis/power_time.h"
@@ -151,12 +152,12 @@ class JtopParser {
 void JtopParser::header(std::size_t line_no) {
   std::size_t total = 0;
   std::size_t time = 0, uptime = 0;
+  std::set<std::string> seen;  // a set, not a scan: a fuzzed header can have a million columns
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     Column c;
     c.name = std::string(trim(cells_[k].text));
-    for (const Column& seen : columns_)
-      if (seen.name == c.name && !c.name.empty())
-        fail(ImportErrorCategory::Syntax, line_no, cells_[k].column, c.name, "the column name appears twice");
+    if (!c.name.empty() && !seen.insert(c.name).second)
+      fail(ImportErrorCategory::Syntax, line_no, cells_[k].column, c.name, "the column name appears twice");
     if (c.name == "time") {
       c.role = Role::Time;
       time = k + 1;

@@ -234,13 +234,13 @@ ImportBatch TegrastatsParser::finish() {
   trace_.provenance.sensor = trace_.total_channel == "VIN" ? "on-board power monitors (tegrastats)" : "INA3221 (tegrastats)";
   trace_.provenance.note = how;
   if (!*timestamped_) {
-    char interval[160];
-    std::snprintf(interval, sizeof interval,
-                  "no timestamps in the log: times assume one line every %g s (tegrastats' default --interval is "
-                  "1000 ms; set the interval the log was written with if it differs)",
-                  options_.interval_s);
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", options_.interval_s);
+    const std::string interval = "no timestamps in the log: times assume one line every " + std::string(seconds) +
+                                 " s (tegrastats' default --interval is 1000 ms; set the interval the log was "
+                                 "written with if it differs)";
     batch_.warnings.push_back(file_ + ": " + interval);
-    trace_.provenance.note += std::string("; ") + interval;
+    trace_.provenance.note += "; " + interval;
   }
   batch_.power_traces.push_back(std::move(trace_));
   return std::move(batch_);
