@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power_import.h"
 
+#include "jtop_csv.h"
 #include "power_csv.h"
 #include "tegrastats.h"
 
@@ -10,6 +11,7 @@ std::vector<std::unique_ptr<Importer>> make_power_importers() {
   std::vector<std::unique_ptr<Importer>> list;
   list.push_back(std::make_unique<PowerCsvImporter>());
   list.push_back(std::make_unique<TegrastatsImporter>());
+  list.push_back(std::make_unique<JtopCsvImporter>());
   return list;
 }
 
@@ -21,8 +23,12 @@ ImportBatch import_power_log(const std::string& path, const PowerImportOptions& 
   if (view.starts_with("\xEF\xBB\xBF")) view.remove_prefix(3);
   const int csv = PowerCsvImporter().sniff(view, path);
   const int tegra = TegrastatsImporter().sniff(view, path);
+  const int jtop = JtopCsvImporter().sniff(view, path);
   ImportBatch batch;
-  if (tegra > 0 && tegra >= csv) {
+  if (jtop > 0 && jtop > csv && jtop >= tegra) {
+    batch = read_jtop_csv(path, options, limits, cancel);
+    batch.format = "jtop-csv";
+  } else if (tegra > 0 && tegra >= csv) {
     batch = read_tegrastats(path, options, limits, cancel);
     batch.format = "tegrastats";
   } else if (csv > 0) {
@@ -30,7 +36,7 @@ ImportBatch import_power_log(const std::string& path, const PowerImportOptions& 
     batch.format = "power-csv";
   } else {
     throw ImportError(ImportErrorCategory::UnknownFormat, {path, 0, 0, {}},
-                      "not a power log (expected a CSV with time and current/power columns, or a tegrastats log)");
+                      "not a power log (expected a CSV with time and current/power columns, a tegrastats log or a jtop CSV)");
   }
   batch.source_path = path;
   return batch;

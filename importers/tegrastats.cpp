@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/power_time.h"
+#include "jetson_rail_limits.h"
 #include "power_line_reader.h"
 
 namespace bs {
@@ -34,30 +35,68 @@ bool rail_name(std::string_view t) {
          std::all_of(t.begin(), t.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; });
 }
 
-bool whole_number(std::string_view s, double& v) {
+// One number of a rail reading: "3981", "5000mW", "-392mW" (AGX Thor near zero). std::from_chars reads any
+// length, so a 20-digit value parses (as 1e20) and is caught by the plausibility bound, never wrapped.
+enum class Reading { NotANumber, Ok, OutOfRange };
+
+Reading milliwatts(std::string_view s, double& v) {
   if (s.ends_with("mW")) s.remove_suffix(2);
-  if (s.empty() || s.front() < '0' || s.front() > '9') return false;
+  const bool negative = !s.empty() && s.front() == '-';
+  const std::string_view digits = negative ? s.substr(1) : s;
+  if (digits.empty() || digits.front() < '0' || digits.front() > '9') return Reading::NotANumber;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
+  if (r.ptr != s.data() + s.size()) return Reading::NotANumber;
+  if (r.ec == std::errc::result_out_of_range || !std::isfinite(v) || !plausible_rail_milliwatts(v))
+    return Reading::OutOfRange;
+  return r.ec == std::errc() ? Reading::Ok : Reading::NotANumber;
 }
 
-// "3981/3981" or "5000mW/5000mW" -> the instantaneous value in mW ("2448/7854MB" is RAM, not a rail).
-std::optional<double> rail_value(std::string_view t) {
-  const auto slash = t.find('/');
-  if (slash == std::string_view::npos) return std::nullopt;
-  double cur = 0, avg = 0;
-  if (!whole_number(t.substr(0, slash), cur) || !whole_number(t.substr(slash + 1), avg)) return std::nullopt;
-  return cur;
+// "3981/3981" (JetPack 4, mW), "5000mW/5000mW" (JetPack 5/6, cur/avg) or "4385mW/3787mW/4385mW" (JetPack 7,
+// cur/avg/max) -> the instantaneous (first) value in mW. "2448/7854MB" is RAM, not a rail.
+struct RailValue {
+  Reading reading = Reading::NotANumber;
+  double cur_mw = 0;
+};
+
+RailValue rail_value(std::string_view t) {
+  std::string_view parts[3];
+  std::size_t n = 0;
+  for (std::size_t start = 0;;) {
+    const std::size_t slash = t.find('/', start);
+    if (n == 3) return {};
+    parts[n++] = t.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+    if (slash == std::string_view::npos) break;
+    start = slash + 1;
+  }
+  if (n < 2) return {};
+  RailValue out;
+  out.reading = Reading::Ok;
+  for (std::size_t k = 0; k < n; ++k) {
+    double v = 0;
+    const Reading r = milliwatts(parts[k], v);
+    if (r == Reading::NotANumber) return {};
+    if (r == Reading::OutOfRange) out.reading = Reading::OutOfRange;
+    if (k == 0) out.cur_mw = v;
+  }
+  return out;
 }
 
-// A token after a rail name that was meant as "cur/avg" but does not parse ("5000mW/abcmW", "3981/-"): an error,
+// A token after a rail name that was meant as a reading but does not parse ("5000mW/abcmW", "3981/-"): an error,
 // not a rail to drop silently. RAM/SWAP/IRAM sizes ("2448/7854MB", "0/252kB(lfb") and percentages are not values.
 bool malformed_rail_value(std::string_view t) {
-  return t.find('/') != std::string_view::npos && !t.empty() && t.front() >= '0' && t.front() <= '9' &&
-         t.find_first_of("B%") == std::string_view::npos && !rail_value(t);
+  const bool numeric_start = !t.empty() && ((t.front() >= '0' && t.front() <= '9') || t.front() == '-');
+  return t.find('/') != std::string_view::npos && numeric_start && t.find_first_of("B%") == std::string_view::npos &&
+         rail_value(t).reading == Reading::NotANumber;
 }
 
-bool input_rail(const std::string& name) { return name == "VDD_IN" || name == "POM_5V_IN" || name.starts_with("VIN"); }
+// The board's input rail, measured before the module and carrier split it: VDD_IN (TX1, TX2, Xavier NX, Orin Nano
+// and NX), POM_5V_IN (Nano), VIN (AGX Thor). VIN_SYS_5V0 (AGX Orin, Thor) is the module's 5 V system rail, one
+// rail among others, not the input.
+bool input_rail(std::string_view name) { return name == "VDD_IN" || name == "POM_5V_IN" || name == "VIN"; }
+
+// Name of the channel BenchScope adds when a board has no input rail (AGX Xavier, AGX Orin): the sum of the rails,
+// which is what jetson-stats reports as the total on these boards.
+constexpr std::string_view kSumChannel = "sum of rails";
 
 class TegrastatsParser {
  public:
@@ -82,6 +121,7 @@ class TegrastatsParser {
   std::vector<std::string> rails_;  // names in file order; channel k holds rail order_[k]
   std::vector<std::size_t> order_;
   std::optional<bool> timestamped_;
+  bool summed_ = false;  // no input rail: channel 0 is the sum of the rails
   double first_time_ = 0;
   std::size_t skipped_ = 0, sample_ = 0;
   PowerTrace trace_;
@@ -92,26 +132,35 @@ void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last
   tokens(raw, tok_);
   if (tok_.empty()) return;
   values_.clear();
-  for (std::size_t i = 0; i + 1 < tok_.size(); ++i)
-    if (rail_name(tok_[i])) {
-      if (const auto v = rail_value(tok_[i + 1])) {
-        values_.emplace_back(tok_[i], *v / 1000.0);
-        ++i;
-      } else if (malformed_rail_value(tok_[i + 1]) && !(last && i + 2 == tok_.size())) {  // a cut-off last line is fine
-        throw ImportError(ImportErrorCategory::InvalidValue,
-                          {file_, line_no, static_cast<std::size_t>(tok_[i + 1].data() - raw.data()) + 1,
-                           std::string(tok_[i])},
-                          "'" + std::string(tok_[i + 1]) + "' is not a power reading (expected cur/avg in mW, like "
-                          "5000mW/4980mW or 3981/3981)");
-      }
+  for (std::size_t i = 0; i + 1 < tok_.size(); ++i) {
+    if (!rail_name(tok_[i])) continue;
+    const std::string_view value = tok_[i + 1];
+    const std::size_t column = static_cast<std::size_t>(value.data() - raw.data()) + 1;
+    const RailValue v = rail_value(value);
+    if (v.reading == Reading::OutOfRange) {
+      if (last && i + 2 == tok_.size()) break;  // a cut-off last line ends in a half-written number
+      throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, column, std::string(tok_[i])},
+                        "'" + std::string(value) + "' is not a possible reading (" + std::string(kRailBoundText) +
+                            "); the log is corrupt");
     }
+    if (v.reading == Reading::Ok) {
+      values_.emplace_back(tok_[i], v.cur_mw / 1000.0);
+      ++i;
+    } else if (malformed_rail_value(value) && !(last && i + 2 == tok_.size())) {  // a cut-off last line is fine
+      throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, column, std::string(tok_[i])},
+                        "'" + std::string(value) + "' is not a power reading (expected cur/avg or cur/avg/max in "
+                        "mW, like 5000mW/4980mW, 3981/3981 or 4385mW/3787mW/4385mW)");
+    }
+  }
   if (values_.empty()) return skip(line_no, "no power rails on this line");
   if (rails_.empty()) {
     for (const auto& [name, v] : values_) rails_.emplace_back(name);
-    // The board's input rail first: power_series() takes the first power channel as the platform's power.
+    // The board total first (the input rail, else the sum BenchScope adds), then the rails in file order.
     order_.resize(rails_.size());
     for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = k;
     std::stable_partition(order_.begin(), order_.end(), [&](std::size_t k) { return input_rail(rails_[k]); });
+    summed_ = !input_rail(rails_[order_.front()]);
+    if (summed_) trace_.channels.push_back({std::string(kSumChannel), PowerQuantity::Power, {}});
     for (std::size_t k : order_) trace_.channels.push_back({rails_[k], PowerQuantity::Power, {}});
   } else if (values_.size() != rails_.size() ||
              !std::equal(values_.begin(), values_.end(), rails_.begin(), [](const auto& a, const std::string& b) { return a.first == b; })) {
@@ -143,7 +192,14 @@ void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last
                         "time goes backwards (" + std::string(tok_[0]) + " " + std::string(tok_[1]) + ")");
   }
   trace_.time_s.push_back(t);
-  for (std::size_t k = 0; k < order_.size(); ++k) trace_.channels[k].values.push_back(values_[order_[k]].second);
+  const std::size_t first = summed_ ? 1 : 0;
+  double sum = 0;
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    const double w = values_[order_[k]].second;
+    trace_.channels[first + k].values.push_back(w);
+    sum += w;
+  }
+  if (summed_) trace_.channels[0].values.push_back(sum);
   ++sample_;
 }
 
@@ -154,19 +210,37 @@ ImportBatch TegrastatsParser::finish() {
                       "with power monitors)");
   if (skipped_ > kListedWarnings)
     batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped (no power rails)");
-  if (!input_rail(trace_.channels.front().name))
-    batch_.warnings.push_back(file_ + ": no board input rail (VDD_IN, POM_5V_IN, VIN_*): the rails are parts of the "
-                              "board; their sum is a lower bound of its power");
+  std::string rails;
+  for (const std::string& r : rails_) rails += (rails.empty() ? "" : " + ") + r;
+  std::string how;
+  if (summed_) {
+    how = "board total = " + std::string(kSumChannel) + " (" + rails +
+          "), as jetson-stats reports it; this board has no input rail (VDD_IN, POM_5V_IN, VIN), so the carrier "
+          "board and conversion losses are not measured: a lower bound of the power at the supply";
+    batch_.warnings.push_back(file_ + ": no board input rail (VDD_IN, POM_5V_IN, VIN): the board total is the sum of "
+                              "the rails (" + rails + "), a lower bound of the power at the supply");
+  } else {
+    how = "board total = " + rails_[order_.front()] + " (the input rail; the other rails are parts of it)";
+  }
+  trace_.total_channel = trace_.channels.front().name;
   trace_.platform = options_.platform.empty() ? "Jetson" : options_.platform;
   trace_.label = file_.substr(file_.find_last_of('/') == std::string::npos ? 0 : file_.find_last_of('/') + 1);
   trace_.provenance.origin = DataOrigin::Measured;
   trace_.provenance.tool = "tegrastats";
   trace_.provenance.source_file = file_;
   trace_.provenance.date = trace_.start_time;
+  trace_.provenance.measurement = MeasurementKind::OnBoardSensor;
+  // AGX Thor's VIN comes from a separate board monitor; every other rail tegrastats prints is an INA3221 channel.
+  trace_.provenance.sensor = trace_.total_channel == "VIN" ? "on-board power monitors (tegrastats)" : "INA3221 (tegrastats)";
+  trace_.provenance.note = how;
   if (!*timestamped_) {
-    char note[96];
-    std::snprintf(note, sizeof note, "times from a %g s interval (the log has no timestamps)", options_.interval_s);
-    trace_.provenance.note = note;
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", options_.interval_s);
+    const std::string interval = "no timestamps in the log: times assume one line every " + std::string(seconds) +
+                                 " s (tegrastats' default --interval is 1000 ms; set the interval the log was "
+                                 "written with if it differs)";
+    batch_.warnings.push_back(file_ + ": " + interval);
+    trace_.provenance.note += "; " + interval;
   }
   batch_.power_traces.push_back(std::move(trace_));
   return std::move(batch_);
@@ -202,7 +276,7 @@ int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
     tokens(*line, tok);
     const bool ram = std::find(tok.begin(), tok.end(), "RAM") != tok.end();
     for (std::size_t i = 0; ram && i + 1 < tok.size(); ++i)
-      if (rail_name(tok[i]) && rail_value(tok[i + 1]) && tok[i] != "RAM" && tok[i] != "SWAP" && tok[i] != "IRAM") return 90;
+      if (rail_name(tok[i]) && rail_value(tok[i + 1]).reading == Reading::Ok && tok[i] != "RAM" && tok[i] != "SWAP" && tok[i] != "IRAM") return 90;
     // tegrastats without rails (not run as root, or a board without monitors): still ours, so that parse() can say
     // why there is nothing to import instead of "unknown format".
     if (ram && std::find(tok.begin(), tok.end(), "CPU") != tok.end()) score = 30;

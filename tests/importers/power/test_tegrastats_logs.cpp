@@ -34,17 +34,23 @@ class TestTegrastatsLogs : public QObject {
     QCOMPARE(t.channels[1].values[3], 2.851);
     QCOMPARE(t.time_s[3], 3.0);
     QVERIFY(t.start_time.empty());
-    QVERIFY(b.warnings.empty());
+    QCOMPARE(b.warnings.size(), std::size_t{1});  // no timestamps: what interval is assumed
+    QVERIFY(b.warnings[0].find("one line every 1 s") != std::string::npos);
   }
   void agx_xavier_plain_rail_names_warn_about_the_missing_input_rail() {
     const auto b = bs::import_file(kData + "tegrastats-xavier-agx.log", bs::CancelToken{});
     const bs::PowerTrace& t = b.power_traces.at(0);
-    QCOMPARE(t.channels.size(), std::size_t{6});  // GPU CPU SOC CV VDDRQ SYS5V
-    QCOMPARE(t.channels[0].name, std::string("GPU"));
-    QCOMPARE(t.channels[0].values[2], 4.955);
-    QCOMPARE(t.channels[5].name, std::string("SYS5V"));
-    QCOMPARE(b.warnings.size(), std::size_t{1});
+    QCOMPARE(t.channels.size(), std::size_t{7});  // sum, then GPU CPU SOC CV VDDRQ SYS5V
+    QCOMPARE(t.channels[0].name, std::string("sum of rails"));
+    QCOMPARE(t.total_channel, t.channels[0].name);
+    QCOMPARE(t.channels[1].name, std::string("GPU"));
+    QCOMPARE(t.channels[1].values[2], 4.955);
+    QCOMPARE(t.channels[6].name, std::string("SYS5V"));
+    // 4955 + 929 + 2167 + 0 + 310 + 1649 = 10010 mW, not the GPU rail's 4.955 W.
+    QCOMPARE(t.channels[0].values[2], 4.955 + 0.929 + 2.167 + 0.0 + 0.310 + 1.649);
+    QCOMPARE(b.warnings.size(), std::size_t{2});
     QVERIFY(b.warnings[0].find("no board input rail") != std::string::npos);
+    QVERIFY(t.provenance.note.find("sum of rails (GPU + CPU + SOC + CV + VDDRQ + SYS5V)") != std::string::npos);
   }
   void orin_jetpack6_timestamps_across_the_new_year() {
     const auto b = bs::import_file(kData + "tegrastats-orin-jetpack6.log", bs::CancelToken{});
@@ -87,12 +93,48 @@ class TestTegrastatsLogs : public QObject {
     for (int k = 0; k < 25; ++k) text += "RAM 1/2MB CPU [1%@100]\n";
     text += "RAM 1/2MB VDD_IN 2/1\n";
     const auto many = bs::parse_tegrastats(text, "t.log");
-    QCOMPARE(many.warnings.size(), std::size_t{11});
-    QVERIFY(many.warnings.back().find("15 more lines skipped") != std::string::npos);
+    QCOMPARE(many.warnings.size(), std::size_t{12});  // 10 listed, 1 count, 1 about the assumed interval
+    QVERIFY(many.warnings[10].find("15 more lines skipped") != std::string::npos);
+  }
+  void readings_beyond_a_rail_are_errors() {
+    // A VDD_IN past int64 once became a "mean power" of 1.7e18 W; now it names the file, line, column and rail.
+    auto e = error_of("RAM 1/2MB VDD_IN 5000mW/5000mW VDD_SOC 1/1\nRAM 1/2MB VDD_IN 99999999999999999999mW/5000mW VDD_SOC 1/1\n"
+                      "RAM 1/2MB VDD_IN 5000mW/5000mW VDD_SOC 1/1\n");
+    QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
+    QCOMPARE(e.location().line, std::size_t{2});
+    QCOMPARE(e.location().column, std::size_t{18});
+    QCOMPARE(e.location().field, std::string("VDD_IN"));
+    QVERIFY(std::string(e.what()).find("between -2 W and 1 kW") != std::string::npos);
+    // 1 kW is the bound, in the average as well; exactly 1 kW is accepted.
+    QCOMPARE(error_of("RAM 1/2MB VDD_IN 1000001/5\nRAM 1/2MB VDD_IN 1/1\n").location().line, std::size_t{1});
+    QCOMPARE(error_of("RAM 1/2MB VDD_IN 5/1000001\nRAM 1/2MB VDD_IN 1/1\n").location().line, std::size_t{1});
+    QCOMPARE(bs::parse_tegrastats("RAM 1/2MB VDD_IN 1000000/5\n", "t.log").power_traces.at(0).channels[0].values[0], 1000.0);
+    // A number too long even for a double.
+    QCOMPARE(error_of("RAM 1/2MB VDD_IN " + std::string(400, '9') + "/1\nRAM 1/2MB VDD_IN 1/1\n").category(),
+             bs::ImportErrorCategory::InvalidValue);
+    // AGX Thor reads slightly negative on a power-gated rail ("VDD_GPU -392mW/-392mW", from a Thor script's
+    // docstring): kept as printed. Far below zero is not a reading.
+    const auto thor = bs::parse_tegrastats(
+        "05-14-2026 21:36:35 RAM 26063/125772MB (lfb 35x4MB) VDD_GPU -392mW/-392mW VDD_CPU_SOC_MSS 3924mW/3835mW "
+        "VIN_SYS_5V0 5064mW/5055mW VIN 15004mW/15096mW\n",
+        "t.log");
+    const bs::PowerTrace& t = thor.power_traces.at(0);
+    QCOMPARE(t.total_channel, std::string("VIN"));
+    QCOMPARE(t.channels[0].values[0], 15.004);
+    QCOMPARE(t.channels[1].values[0], -0.392);
+    QCOMPARE(error_of("RAM 1/2MB VDD_IN -2001mW/1mW\nRAM 1/2MB VDD_IN 1/1\n").category(), bs::ImportErrorCategory::InvalidValue);
+  }
+  void jetpack7_three_values_and_four() {
+    const auto b = bs::parse_tegrastats("RAM 1/2MB VDD_GPU_SOC 4385mW/3787mW/4385mW VDD_CPU_CV 1196mW/897mW/1196mW\n", "t.log");
+    QCOMPARE(b.power_traces.at(0).channels[0].values[0], 4.385 + 1.196);  // sum of rails: no input rail
+    // Four values are no tegrastats format: an error, not a guess.
+    const auto e = error_of("RAM 1/2MB VDD_IN 1mW/2mW/3mW/4mW\nRAM 1/2MB VDD_IN 1/1\n");
+    QCOMPARE(e.location().field, std::string("VDD_IN"));
   }
   void sniffing() {
     const bs::TegrastatsImporter imp;
     QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) VDD_IN 3981/3981\n", "x.log"), 90);
+    QCOMPARE(imp.sniff("RAM 8179/62817MB (lfb 1x4MB) VDD_GPU_SOC 4385mW/3787mW/4385mW\n", "x.log"), 90);
     // No rails: still recognised (weakly), so that the import says why nothing can be read instead of
     // "unknown format".
     QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) SWAP 0/3927MB CPU [3%@345]\n", "x.log"), 30);
