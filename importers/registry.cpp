@@ -11,6 +11,8 @@
 #include "frame_raw.h"
 #include "google_benchmark_json.h"
 #include "importer.h"
+#include "nvidia_smi.h"
+#include "perf_stat.h"
 #include "pipeline_json.h"
 #include "power_csv.h"
 #include "run_json.h"
@@ -27,6 +29,8 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<ClpeakTextImporter>());
   list.push_back(std::make_unique<PowerCsvImporter>());
   list.push_back(std::make_unique<TegrastatsImporter>());
+  list.push_back(std::make_unique<NvidiaSmiImporter>());
+  list.push_back(std::make_unique<PerfStatImporter>());
   list.push_back(std::make_unique<RawBayerImporter>());
   list.push_back(std::make_unique<PnmImporter>());
   list.push_back(std::make_unique<PngImporter>());
