@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power_import.h"
 
+#include <algorithm>
+
+#include "nvidia_smi.h"
+#include "perf_stat.h"
 #include "power_csv.h"
+#include "ptd_log.h"
 #include "tegrastats.h"
 
 namespace bs {
@@ -10,6 +15,9 @@ std::vector<std::unique_ptr<Importer>> make_power_importers() {
   std::vector<std::unique_ptr<Importer>> list;
   list.push_back(std::make_unique<PowerCsvImporter>());
   list.push_back(std::make_unique<TegrastatsImporter>());
+  list.push_back(std::make_unique<NvidiaSmiImporter>());
+  list.push_back(std::make_unique<PerfStatImporter>());
+  list.push_back(std::make_unique<PtdLogImporter>());
   return list;
 }
 
@@ -22,7 +30,22 @@ ImportBatch import_power_log(const std::string& path, const PowerImportOptions& 
   const int csv = PowerCsvImporter().sniff(view, path);
   const int tegra = TegrastatsImporter().sniff(view, path);
   ImportBatch batch;
-  if (tegra > 0 && tegra >= csv) {
+  // Measuring tools' own logs (nvidia-smi, perf stat, PTDaemon) out-sniff the generic CSV on their files.
+  const int smi = NvidiaSmiImporter().sniff(view, path);
+  const int perf = PerfStatImporter().sniff(view, path);
+  const int ptd = PtdLogImporter().sniff(view, path);
+  if (std::max({smi, perf, ptd}) > std::max(csv, tegra)) {
+    if (smi >= perf && smi >= ptd) {
+      batch = read_nvidia_smi(path, options, limits, cancel);
+      batch.format = "nvidia-smi";
+    } else if (perf >= ptd) {
+      batch = read_perf_stat(path, options, limits, cancel);
+      batch.format = "perf-stat-rapl";
+    } else {
+      batch = read_ptd_log(path, options, limits, cancel);
+      batch.format = "ptdaemon";
+    }
+  } else if (tegra > 0 && tegra >= csv) {
     batch = read_tegrastats(path, options, limits, cancel);
     batch.format = "tegrastats";
   } else if (csv > 0) {
@@ -30,7 +53,8 @@ ImportBatch import_power_log(const std::string& path, const PowerImportOptions& 
     batch.format = "power-csv";
   } else {
     throw ImportError(ImportErrorCategory::UnknownFormat, {path, 0, 0, {}},
-                      "not a power log (expected a CSV with time and current/power columns, or a tegrastats log)");
+                      "not a power log (expected a CSV with time and current/power columns, a tegrastats, nvidia-smi, perf stat "
+                      "RAPL or PTDaemon log)");
   }
   batch.source_path = path;
   return batch;

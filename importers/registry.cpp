@@ -15,6 +15,7 @@
 #include "perf_stat.h"
 #include "pipeline_json.h"
 #include "power_csv.h"
+#include "ptd_log.h"
 #include "run_json.h"
 #include "tegrastats.h"
 
@@ -31,6 +32,7 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<TegrastatsImporter>());
   list.push_back(std::make_unique<NvidiaSmiImporter>());
   list.push_back(std::make_unique<PerfStatImporter>());
+  list.push_back(std::make_unique<PtdLogImporter>());
   list.push_back(std::make_unique<RawBayerImporter>());
   list.push_back(std::make_unique<PnmImporter>());
   list.push_back(std::make_unique<PngImporter>());
