@@ -290,6 +290,9 @@ ImportBatch NvidiaSmiParser::finish() {
       if (t.total_channel.empty())
         for (const auto& c : t.channels)
           if (c.name == pick) t.total_channel = c.name;
+    // The total first as well: readers that take the first power channel (as before total_channel) agree.
+    std::stable_partition(t.channels.begin(), t.channels.end(),
+                          [&](const PowerChannel& c) { return c.name == t.total_channel; });
     auto& p = t.provenance;
     p.origin = DataOrigin::Measured;
     p.tool = "nvidia-smi";

@@ -30,7 +30,7 @@ std::string_view rapl_domain(std::string_view event) {
 struct Record {
   std::optional<std::string_view> time;  // -I: seconds since perf started, as text
   std::string channel;                    // "pkg", "S0 pkg"; "duration_time" for that event
-  std::string_view value;                 // empty: <not counted> / <not supported>
+  std::string value;                      // empty: <not counted> / <not supported>
   std::string_view unit;
 };
 
@@ -74,7 +74,7 @@ std::optional<Record> csv_record(std::string_view line, std::vector<std::string_
     Record r;
     r.channel = domain.empty() ? "duration_time" : std::string(domain);
     r.unit = f[k - 1];
-    r.value = not_counted(f[k - 2]) ? std::string_view() : f[k - 2];
+    if (!not_counted(f[k - 2])) r.value = std::string(f[k - 2]);
     read_prefix({f.begin(), f.begin() + static_cast<std::ptrdiff_t>(k - 2)}, r);
     return r;
   }
@@ -94,7 +94,21 @@ std::optional<Record> human_record(std::string_view line, std::vector<std::strin
     if ((t[k - 2] == "counted>" || t[k - 2] == "supported>") && k >= 3 && t[k - 3] == "<not") {
       value_at = k - 3;
     } else {
-      r.value = t[k - 2];
+      r.value = std::string(t[k - 2]);
+      // A locale that groups thousands with a space splits "5 005,68" in two tokens: put the groups back together
+      // (only where no aggregation id precedes them, so the "1" of "S0 1 3.73" stays a CPU count).
+      const auto digits = [](std::string_view d) {
+        return !d.empty() && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
+      };
+      const std::size_t first = !t.empty() && interval_time(t[0]) && value_at > 0 ? 1 : 0;
+      bool ids = false;
+      for (std::size_t i = first; i < value_at; ++i) ids = ids || !digits(t[i]);
+      while (!ids && value_at > first && t[value_at - 1].size() <= 3 && digits(t[value_at - 1]) &&
+             r.value.size() >= 3 && digits(std::string_view(r.value).substr(0, 3)) &&
+             (r.value.size() == 3 || r.value[3] == ',' || r.value[3] == '.')) {
+        r.value = std::string(t[value_at - 1]) + r.value;
+        --value_at;
+      }
     }
     read_prefix({t.begin(), t.begin() + static_cast<std::ptrdiff_t>(value_at)}, r);
     return r;
@@ -252,7 +266,7 @@ void PerfStatParser::line(std::string_view raw, std::size_t line_no, bool last) 
                                                             : "a summary count after interval (-I) counts");
   if (interval) return interval_record(*r, line_no);
   if (block_.size() >= 4096) fail(ImportErrorCategory::TooLarge, line_no, "", "more than 4096 counts in one block");
-  block_.push_back({r->channel, std::string(r->value), std::string(r->unit), line_no});
+  block_.push_back({r->channel, r->value, std::string(r->unit), line_no});
 }
 
 // The trace of one interval series: two samples per interval (start, end) holding the interval's mean power.
@@ -278,13 +292,18 @@ PowerTrace PerfStatParser::make_trace(const std::vector<double>& ends) const {
 }
 
 void PerfStatParser::close_block(std::optional<double> elapsed, std::size_t line_no) {
+  for (const Pending& p : block_) {
+    double ns = 0;  // duration_time: nanoseconds, when -e duration_time was asked for
+    if (!elapsed && p.channel == "duration_time" && locale_number(p.value, decimal_comma_, ns) && ns > 0)
+      elapsed = ns * 1e-9;
+  }
+  if (!elapsed)
+    fail(ImportErrorCategory::MissingField, line_no, "seconds time elapsed",
+         "energy counts without the elapsed time: perf stat -x prints none; record with -I 1000 (or add -e "
+         "duration_time), or keep perf's 'seconds time elapsed' line");
   channels_.clear();
   for (const Pending& p : block_) {
-    if (p.channel == "duration_time") {  // nanoseconds, when -e duration_time was asked for
-      double ns = 0;
-      if (!elapsed && !p.value.empty() && locale_number(p.value, decimal_comma_, ns) && ns > 0) elapsed = ns * 1e-9;
-      continue;
-    }
+    if (p.channel == "duration_time") continue;
     double j = kNaN;
     if (!p.value.empty() && !locale_number(p.value, decimal_comma_, j))
       fail(ImportErrorCategory::InvalidValue, p.line_no, p.channel, "'" + p.value + "' is not a count");
@@ -292,10 +311,6 @@ void PerfStatParser::close_block(std::optional<double> elapsed, std::size_t line
     if (!c.joules.empty()) fail(ImportErrorCategory::Syntax, p.line_no, p.channel, "the event appears twice in one block");
     c.joules.push_back(j);
   }
-  if (!elapsed)
-    fail(ImportErrorCategory::MissingField, line_no, "seconds time elapsed",
-         "energy counts without the elapsed time: perf stat -x prints none; record with -I 1000 (or add -e "
-         "duration_time), or keep perf's 'seconds time elapsed' line");
   if (!channels_.empty()) batch_.power_traces.push_back(make_trace({*elapsed}));
   block_.clear();
   channels_.clear();
@@ -333,6 +348,9 @@ ImportBatch PerfStatParser::finish() {
     if (packages > 1 && t.total_channel.find("psys") == std::string::npos)
       batch_.warnings.push_back(file_ + ": " + std::to_string(packages) + " packages counted separately; the total "
                                 "channel is '" + t.total_channel + "', add the others for the whole machine");
+    // The total first as well: readers that take the first power channel (as before total_channel) agree.
+    std::stable_partition(t.channels.begin(), t.channels.end(),
+                          [&](const PowerChannel& c) { return c.name == t.total_channel; });
     if (start_epoch_) t.start_time = format_iso8601(*start_epoch_);
     auto& p = t.provenance;
     p.origin = DataOrigin::Measured;

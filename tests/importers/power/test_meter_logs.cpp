@@ -100,6 +100,7 @@ class TestMeterLogs : public QObject {
     const bs::PowerTrace& t = b.power_traces.at(0);
     QCOMPARE(t.channels.size(), std::size_t{2});
     QCOMPARE(t.total_channel, std::string("power.draw.instant"));
+    QCOMPARE(t.channels[0].name, std::string("power.draw.instant"));
     QCOMPARE(channel(t, "power.draw.instant").values[1], 80.25);
   }
   void nvidia_smi_noheader_inferred_only_when_safe() {
@@ -167,6 +168,8 @@ class TestMeterLogs : public QObject {
     QCOMPARE(b.format, std::string("perf-stat-rapl"));
     const bs::PowerTrace& t = b.power_traces.at(0);
     // 5 intervals of -I 100 -> 10 samples: [0, 0.100360379], [0.100360379, 0.200796737], ...
+    QCOMPARE(t.total_channel, std::string("pkg"));
+    QCOMPARE(t.channels[0].name, std::string("pkg"));  // the total first, for readers of the first channel
     QCOMPARE(t.time_s.size(), std::size_t{10});
     QCOMPARE(t.time_s[1], 0.100360379);
     QCOMPARE(t.time_s[2], 0.100360379);
@@ -180,6 +183,11 @@ class TestMeterLogs : public QObject {
     // Energy = 0.911932 + 0.247253 + 0.490601 + 0.468811 + 1.144287 = 3.262884 J, exactly perf's sum.
     QVERIFY(near(bs::integrate_trapezoid(t.time_s, pkg), 3.262884, 1e-9));
     QVERIFY(near(bs::integrate_trapezoid(t.time_s, channel(t, "ram").values), 0.327454, 1e-9));
+    // Statistics use pkg: energy 3.262884 J; sample mean (9.086574 + 2.461788 + 4.891924 + 4.678850 + 11.411036) / 5
+    // = 6.506034 W (each interval's two samples weigh the same).
+    const auto stats = bs::trace_stats(t);
+    QVERIFY(near(stats.energy_j, 3.262884, 1e-9));
+    QVERIFY(near(stats.power_w->mean, 6.506034, 1e-6));
   }
   void perf_interval_human_per_socket_and_not_counted() {
     const auto b = bs::parse_perf_stat(
@@ -211,6 +219,14 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(channel(t, "pkg").values[0], 1373.0 / 16.553457859));
     QVERIFY(near(channel(t, "psys").values[0], 2006.65 / 16.553457859));
     QCOMPARE(t.provenance.settings.at(0).second, std::string("5"));
+    // A French locale groups thousands with a space: "5 005,68" is one number (the shape of a paste seen in a public
+    // course repository; numbers as there).
+    const auto fr = bs::parse_perf_stat("         5 005,68 Joules power/energy-cores/\n"
+                                        "          5 591,86 Joules power/energy-pkg/\n"
+                                        "             34,22 Joules power/energy-gpu/\n"
+                                        "287,542923380 seconds time elapsed\n", "fr.txt");
+    QVERIFY(near(channel(fr.power_traces.at(0), "pkg").values[0], 5591.86 / 287.542923380));
+    QVERIFY(near(channel(fr.power_traces.at(0), "gpu").values[0], 34.22 / 287.542923380));
     // Thousands grouping in the C locale, and two runs pasted one after the other: one trace each.
     const auto two = bs::parse_perf_stat(
         " Performance counter stats for 'system wide':\n  2,306.32 Joules power/energy-pkg/\n"
