@@ -11,10 +11,11 @@
 
 namespace bs {
 
-// The power-log importers ("power-csv", "tegrastats", "jtop-csv"), for registries and format lists.
+// The power-log importers ("power-csv", "tegrastats", "jtop-csv", "nvidia-smi", "perf-stat-rapl", "ptdaemon"),
+// for registries and format lists.
 std::vector<std::unique_ptr<Importer>> make_power_importers();
 
-// Rejects empty / binary / UTF-16 files like import_file(), picks power-csv, tegrastats or jtop-csv by content and parses
+// Rejects empty / binary / UTF-16 files like import_file(), picks the power format by content and parses
 // with `options`. UnknownFormat when the file is neither.
 ImportBatch import_power_log(const std::string& path, const PowerImportOptions& options = {},
                              const CancelToken& cancel = CancelToken{}, const ImportLimits& limits = {});

@@ -12,8 +12,11 @@
 #include "google_benchmark_json.h"
 #include "importer.h"
 #include "jtop_csv.h"
+#include "nvidia_smi.h"
+#include "perf_stat.h"
 #include "pipeline_json.h"
 #include "power_csv.h"
+#include "ptd_log.h"
 #include "run_json.h"
 #include "tegrastats.h"
 
@@ -29,6 +32,9 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<PowerCsvImporter>());
   list.push_back(std::make_unique<TegrastatsImporter>());
   list.push_back(std::make_unique<JtopCsvImporter>());
+  list.push_back(std::make_unique<NvidiaSmiImporter>());
+  list.push_back(std::make_unique<PerfStatImporter>());
+  list.push_back(std::make_unique<PtdLogImporter>());
   list.push_back(std::make_unique<RawBayerImporter>());
   list.push_back(std::make_unique<PnmImporter>());
   list.push_back(std::make_unique<PngImporter>());

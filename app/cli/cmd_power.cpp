@@ -314,7 +314,8 @@ const CommandRegistrar registrar({
     "  current-only log) as mean \xC2\xB1 SD (n), min, p5/p50/p95/p99, max; energy (trapezoidal) and every channel (e.g.\n"
     "  tegrastats rails), over the whole log or seconds [S, S] from its start. --interval: seconds between\n"
     "  tegrastats lines without timestamps (default 1). --phases: load phases from level changes.\n"
-    "  Formats: power CSV (generic, Joulescope, Otii, INA219 loggers) and NVIDIA tegrastats.",
+    "  Formats: power CSV (generic, Joulescope, Otii, INA219 loggers), NVIDIA tegrastats, nvidia-smi --query-gpu\n"
+    "  CSV (one trace per GPU), perf stat RAPL energy and SPEC PTDaemon (MLPerf spl.txt; marks as phases).",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
         return run_power(args, out, err);

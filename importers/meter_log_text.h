@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Small text helpers shared by the logs of measuring tools (nvidia-smi, perf stat, SPEC PTDaemon): trimming,
+// splitting on one separator, strict numbers, the file's display name and the streaming loop with one line of
+// look-ahead, so each parser knows which line is the file's last (a logger stopped mid-line cuts only that one).
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "power_line_reader.h"
+#include "util/cancel.h"
+
+namespace bs::meter {
+
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+// Fields between `sep`, each trimmed; an empty line gives one empty field.
+inline void split(std::string_view line, char sep, std::vector<std::string_view>& out) {
+  out.clear();
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = line.find(sep, start);
+    out.push_back(trim(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
+    if (end == std::string_view::npos) return;
+    start = end + 1;
+  }
+}
+
+// Whitespace-separated tokens.
+inline void tokens(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+}
+
+// The whole of `s` as a finite number ("+" allowed, nothing else around it).
+inline bool number(std::string_view s, double& v) {
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (s.empty()) return false;
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
+}
+
+inline std::string file_name(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// Feeds every non-blank line to parser.line(text, number, last) and returns parser.finish(). The pending line is
+// copied because the reader reuses its buffer. Checks for cancellation every 1024 lines.
+template <class Parser>
+auto run_lines(PowerLineReader& lines, Parser& parser, const CancelToken& cancel) {
+  std::string pending;
+  std::size_t pending_no = 0;
+  bool have = false;
+  while (const auto line = lines.next()) {
+    if (trim(*line).empty()) continue;
+    if (have) parser.line(pending, pending_no, false);
+    pending.assign(*line);
+    pending_no = lines.line_number();
+    have = true;
+    if ((pending_no & 0x3ff) == 0) cancel.throw_if_cancelled();
+  }
+  if (have) parser.line(pending, pending_no, true);
+  return parser.finish();
+}
+
+}  // namespace bs::meter
