@@ -30,6 +30,7 @@
 #include "roofline_view.h"
 #include "efficiency_view.h"
 #include "battery_view.h"
+#include "device_palette.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
 #include "frames_view.h"
@@ -62,6 +63,9 @@ MainWindow::MainWindow(QWidget* parent)
   tab(battery_, tr("Battery"), tr("Battery life per platform, presets saved in the workspace"));
   tab(platforms_, tr("Platforms"), tr("One row per platform, and which one to pick under your constraints"));
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
+  // One battery for both tabs: the Platforms tab offers (and by default uses) what the Battery tab shows.
+  connect(battery_, &BatteryView::setup_changed, this,
+          [this] { platforms_->set_battery_tab_setup(battery_->setup(), battery_->modified()); });
   tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
   tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   connect(pipeline_, &PipelineView::run_measured, this, [this](const PipelineRun& run) {
@@ -181,6 +185,9 @@ void MainWindow::reload() {
     platform_colors.emplace_back(r.run.platform, r.color_index);
   }
   const auto traces = workspace_ ? workspace_->power_traces() : std::vector<StoredPowerTrace>{};
+  std::vector<std::string> trace_platforms;
+  for (const auto& t : traces) trace_platforms.push_back(t.trace.platform);
+  platform_colors = platform_color_indices(platform_colors, std::move(trace_platforms));  // one per platform
   power_->set_data(traces, bs::peak_table(all), platform_colors);
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);

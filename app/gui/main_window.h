@@ -65,6 +65,7 @@ class MainWindow : public QMainWindow {
  private:
   void create_actions();  // main_window_menus.cpp
   void compare_with_workspace();  // main_window_menus.cpp
+  void show_help();               // main_window_menus.cpp (F1)
   // main_window_export.cpp
   void export_current_figure();
   void reproduce_paper_figures();
