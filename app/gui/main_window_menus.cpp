@@ -106,6 +106,8 @@ void MainWindow::create_actions() {
   add(view, tr("&Reset zoom"), QKeySequence(Qt::CTRL | Qt::Key_0), tr("Fit all visible series"), [this] { plot_->reset_view(); });
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+  add(view, tr("Reset &layout"), QKeySequence(), tr("Docks, the FLOPS tab's split and the window size as on first start"),
+      [this] { reset_layout(); });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   add(help, tr("&Views and shortcuts"), QKeySequence::HelpContents, tr("What each tab shows and every keyboard shortcut"),

@@ -5,6 +5,9 @@
 #include <QApplication>
 #include <QCoreApplication>
 #include <QFile>
+#include <QTabWidget>
+#include <QSplitter>
+#include <QDockWidget>
 #include <QLabel>
 #include <QSettings>
 #include <QSignalSpy>
@@ -191,6 +194,38 @@ class TestMainWindow : public QObject {
     const auto cancelled = bs::ui::ImportController::import_now(dir.filePath("w2.bsw"), {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"}, cancel);
     QVERIFY(cancelled.cancelled);
     QCOMPARE(cancelled.imported, 0);
+  }
+
+  // Issue #22.5: the peak table lives in the FLOPS tab, not in a dock under every view; the split and the docks are
+  // remembered; View > Reset layout brings the first-start layout back.
+  void peak_table_in_flops_tab_and_layout_remembered() {
+    QSettings().remove("main-window");
+    QList<int> moved;
+    {
+      bs::ui::MainWindow w;
+      auto* tabs = qobject_cast<QTabWidget*>(w.centralWidget());
+      QVERIFY(tabs);
+      QVERIFY(tabs->widget(0)->findChild<bs::ui::PeakTableView*>() != nullptr);
+      for (QDockWidget* d : w.findChildren<QDockWidget*>()) QVERIFY(d->windowTitle() != "Peak FLOPS");
+      auto* split = w.findChild<QSplitter*>("flopsSplit");
+      QVERIFY(split);
+      w.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&w));
+      const QList<int> first = split->sizes();
+      split->setSizes({first[0] + first[1] - 120, 120});
+      moved = split->sizes();
+      QVERIFY(w.close());  // saves the layout
+    }
+    {
+      bs::ui::MainWindow w;
+      w.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&w));
+      auto* split = w.findChild<QSplitter*>("flopsSplit");
+      QCOMPARE(split->sizes(), moved);
+      w.reset_layout();
+      QVERIFY(split->sizes() != moved);
+      QVERIFY(!QSettings().contains("main-window/state"));
+    }
   }
 
   // Issue #23.10: F1 lists the views and every shortcut, read from the menus themselves.
