@@ -1,22 +1,46 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "device_palette.h"
 
+#include <algorithm>
 #include <array>
+#include <map>
+#include <set>
 
 #include <qcustomplot.h>
 
 namespace bs::ui {
 
 QColor device_color(int color_index) {
-  // Okabe & Ito (2008) without black (kept for text), then Tol's muted scheme, and Okabe-Ito's yellow last: it is
-  // too light on white for thin lines and bands.
+  // Okabe & Ito (2008) without black (kept for text); then those of Tol's muted scheme that no Okabe-Ito colour
+  // resembles (his cyan, teal and rose read as Okabe-Ito's sky blue, bluish green and reddish purple on screen),
+  // a brown, a sand and a grey; Okabe-Ito's yellow last: it is too light on white for thin lines and bands.
   static const std::array<QColor, 15> colors = {
-      QColor(0, 114, 178),   QColor(230, 159, 0),  QColor(0, 158, 115),  QColor(213, 94, 0),
-      QColor(204, 121, 167), QColor(86, 180, 233), QColor(51, 34, 136),  QColor(153, 153, 51),
-      QColor(68, 170, 153),  QColor(17, 119, 51),  QColor(136, 204, 238), QColor(204, 102, 119),
-      QColor(136, 34, 85),   QColor(170, 68, 153), QColor(240, 228, 66)};
+      QColor(0, 114, 178),   QColor(230, 159, 0),   QColor(0, 158, 115),   QColor(213, 94, 0),
+      QColor(204, 121, 167), QColor(86, 180, 233),  QColor(51, 34, 136),   QColor(153, 153, 51),
+      QColor(136, 34, 85),   QColor(17, 119, 51),   QColor(102, 61, 20),   QColor(221, 204, 119),
+      QColor(110, 110, 110), QColor(170, 68, 153),  QColor(240, 228, 66)};
   const int n = static_cast<int>(colors.size());
   return colors[static_cast<std::size_t>(((color_index % n) + n) % n)];
+}
+
+std::vector<std::pair<std::string, int>> platform_color_indices(
+    const std::vector<std::pair<std::string, int>>& device_platform_colors, std::vector<std::string> platforms) {
+  std::map<std::string, int> chosen;
+  std::set<int> used;
+  for (const auto& [platform, index] : device_platform_colors) {
+    used.insert(index);
+    const auto it = chosen.find(platform);
+    if (it == chosen.end() || index < it->second) chosen[platform] = index;
+  }
+  std::sort(platforms.begin(), platforms.end());
+  for (const std::string& p : platforms) {
+    if (chosen.count(p)) continue;
+    int free = 0;
+    while (used.count(free)) ++free;
+    chosen[p] = free;
+    used.insert(free);
+  }
+  return {chosen.begin(), chosen.end()};
 }
 
 Qt::PenStyle dims_pen_style(int dims) {

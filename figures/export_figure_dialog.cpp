@@ -4,6 +4,9 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QFrame>
+#include <QPixmap>
+#include <QTimer>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
@@ -20,7 +23,10 @@ namespace bs::ui {
 ExportFigureDialog::ExportFigureDialog(Target target, const QString& suggested, QWidget* parent)
     : QDialog(parent), target_(target) {
   setWindowTitle(target == Target::Folder ? tr("Reproduce paper figures") : tr("Export figure"));
-  auto* form = new QFormLayout(this);
+  // The fields on the left; set_preview() adds the preview on the right.
+  auto* outer = new QHBoxLayout(this);
+  auto* form = new QFormLayout;
+  outer->addLayout(form);
   preset_ = new QComboBox;
   preset_->addItem(tr("LNCS text width (122 mm)"), "lncs");
   preset_->addItem(tr("LNCS half width (58 mm)"), "lncs-half");
@@ -68,6 +74,15 @@ ExportFigureDialog::ExportFigureDialog(Target target, const QString& suggested, 
   auto* where_label = new QLabel(target == Target::Folder ? tr("F&older") : tr("F&ile"));
   where_label->setBuddy(path_);  // a row holding a layout gets no buddy by itself, and would show the '&'
   form->addRow(where_label, where);
+  if (target == Target::Folder) {
+    data_ = new QComboBox;
+    data_->setObjectName(QStringLiteral("data"));
+    data_->addItem(tr("Paper data only (reconstructed from the paper)"), static_cast<int>(FigureDataChoice::PaperOnly));
+    data_->addItem(tr("Everything ticked in the workspace (measured runs too)"), static_cast<int>(FigureDataChoice::All));
+    data_->setToolTip(tr("What the figures show; figures.json records it, and the summary after the export lists "
+                         "what each figure contains and what it left out"));
+    form->addRow(tr("&Data"), data_);
+  }
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
   buttons->button(QDialogButtonBox::Ok)->setText(tr("&Export"));
   form->addRow(buttons);
@@ -155,6 +170,46 @@ void ExportFigureDialog::save_settings() const {
   s.setValue("pdf", pdf_->isChecked());
   s.setValue("svg", svg_->isChecked());
   s.setValue("png", png_->isChecked());
+}
+
+FigureDataChoice ExportFigureDialog::data_choice() const {
+  return data_ ? static_cast<FigureDataChoice>(data_->currentData().toInt()) : FigureDataChoice::All;
+}
+
+void ExportFigureDialog::set_preview(std::function<QImage(const FigureOptions&)> render) {
+  render_ = std::move(render);
+  if (!preview_) {
+    preview_ = new QLabel(this);
+    preview_->setObjectName(QStringLiteral("preview"));
+    preview_->setMinimumSize(420, 300);
+    preview_->setAlignment(Qt::AlignCenter);
+    preview_->setFrameShape(QFrame::StyledPanel);
+    preview_->setToolTip(tr("The figure as it will be written: its size, fonts, line widths and legend below the axes"));
+    static_cast<QHBoxLayout*>(layout())->addWidget(preview_, 1);
+    preview_timer_ = new QTimer(this);
+    preview_timer_->setSingleShot(true);
+    preview_timer_->setInterval(150);  // typing a width renders once, not per digit
+    connect(preview_timer_, &QTimer::timeout, this, &ExportFigureDialog::update_preview);
+    for (QDoubleSpinBox* b : {width_, height_, font_, line_})
+      connect(b, &QDoubleSpinBox::valueChanged, preview_timer_, qOverload<>(&QTimer::start));
+    connect(preset_, &QComboBox::currentIndexChanged, preview_timer_, qOverload<>(&QTimer::start));
+  }
+  update_preview();
+}
+
+void ExportFigureDialog::update_preview() {
+  if (!render_ || !preview_) return;
+  FigureOptions o = options();
+  o.formats = {"png"};
+  const QImage image = render_(o);
+  if (image.isNull()) {
+    preview_->setText(tr("No preview"));
+    return;
+  }
+  preview_->setPixmap(QPixmap::fromImage(image.scaled(preview_->size() - QSize(8, 8), Qt::KeepAspectRatio,
+                                                      Qt::SmoothTransformation)));
+  preview_->setToolTip(tr("%1 × %2 mm as written").arg(o.width_mm, 0, 'f', 1).arg(
+      o.height_mm > 0 ? o.height_mm : image.height() * o.width_mm / std::max(1, image.width()), 0, 'f', 1));
 }
 
 }  // namespace bs::ui

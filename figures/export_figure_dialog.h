@@ -3,13 +3,17 @@
 // Asks how to export a figure: journal size preset (LNCS, IEEE single/double column) or custom mm, font and line
 // sizes in pt, PNG dpi and the formats. Remembers the last choice (QSettings).
 #include <QDialog>
+#include <QImage>
+#include <functional>
 
 #include "paper_figures.h"
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
 class QLineEdit;
+class QTimer;
 
 namespace bs::ui {
 
@@ -21,9 +25,15 @@ class ExportFigureDialog : public QDialog {
   ExportFigureDialog(Target target, const QString& suggested, QWidget* parent = nullptr);
 
   FigureOptions options() const;
+  // Folder target (paper figures) only: paper data only, or everything ticked in the workspace.
+  FigureDataChoice data_choice() const;
   QString destination() const;  // file stem without extension, or folder
   void set_destination(const QString& path);
   void set_preset(const QString& id);  // "lncs", "lncs-half", "ieee", "ieee-double", "custom"
+  // Shows beside the fields what will be written, rendered by `render` at the options as they are (again shortly
+  // after each change). Without it the dialog has no preview (the paper figures: several files).
+  void set_preview(std::function<QImage(const FigureOptions&)> render);
+  QLabel* preview_label() const { return preview_; }
 
  private:
   void preset_changed();
@@ -34,6 +44,11 @@ class ExportFigureDialog : public QDialog {
   QComboBox* dpi_;
   QCheckBox *pdf_, *svg_, *png_;
   QLineEdit* path_;
+  QComboBox* data_ = nullptr;
+  QLabel* preview_ = nullptr;
+  QTimer* preview_timer_ = nullptr;
+  std::function<QImage(const FigureOptions&)> render_;
+  void update_preview();
 };
 
 }  // namespace bs::ui

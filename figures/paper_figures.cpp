@@ -64,34 +64,8 @@ void style_axes(QCustomPlot& plot, const FigureTemplate& t, const FigureOptions&
     plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
   }
   // The legend goes below the axes, in columns, so it can never cover data at any size.
-  plot.legend->setVisible(true);
   plot.legend->setFont(small);
-  plot.legend->setBorderPen(Qt::NoPen);
-  plot.legend->setBrush(Qt::NoBrush);
-  plot.legend->setRowSpacing(0);
-  plot.legend->setColumnSpacing(static_cast<int>(o.font_pt * 1.5));
-  plot.legend->setIconSize(static_cast<int>(o.font_pt * 2.5), static_cast<int>(o.font_pt));
-  plot.axisRect()->insetLayout()->take(plot.legend);
-  plot.plotLayout()->addElement(1, 0, plot.legend);
-  plot.plotLayout()->setRowStretchFactor(1, 0.001);
-  plot.plotLayout()->setRowSpacing(0);
-}
-
-// As many legend columns as fit the figure's width, measured by the legend's own layout (fonts included).
-void wrap_legend(QCustomPlot& plot, const FigureOptions& o) {
-  // Fewer columns first; if even one column is too wide for a narrow figure, a smaller legend font (down to 5 pt).
-  for (double pt = o.font_pt * 0.9; pt >= 5; pt -= 0.5) {
-    QFont f = plot.legend->font();
-    f.setPointSizeF(pt);
-    plot.legend->setFont(f);
-    for (int i = 0; i < plot.legend->itemCount(); ++i) plot.legend->item(i)->setFont(f);
-    plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, false);
-    for (int columns = std::max(1, plot.legend->itemCount()); columns >= 1; --columns) {
-      plot.legend->setWrap(columns);  // with foColumnsFirst: entries per row
-      plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
-      if (plot.legend->minimumOuterSizeHint().width() <= plot.width()) return;
-    }
-  }
+  place_legend_below(plot, o.font_pt);
 }
 
 // "Jetson GPU (Pascal, 256 cores)" -> "Jetson GPU", "CPU SIMD (AVX/SSE)" -> "CPU SIMD": the full names stay in
@@ -149,18 +123,31 @@ QJsonArray flops_figure(QCustomPlot& plot, const FigureTemplate& t, const Figure
   if (plot.graphCount() == 0) throw std::runtime_error(t.id + ": no runs match the template's selection");
   plot.xAxis->setRange(t.log_x ? std::max(1.0, x_min) : 0, x_max);
   plot.yAxis->setRange(0, y_max * 1.08);
-  wrap_legend(plot, o);
+  wrap_legend(plot, o.font_pt, plot.width());
   return sources;
 }
 
-QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const FigureData& d, const FigureOptions& o) {
+QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const FigureData& d, const FigureOptions& o,
+                          QJsonArray& left_out) {
   QJsonArray sources;
   double y_max = 0, x_max = 0;
+  const auto leave_out = [&](const PowerTrace& trace, const std::string& reason) {
+    left_out.append(QJsonObject{{"platform", QString::fromStdString(trace.platform)},
+                                {"file", QString::fromStdString(trace.provenance.source_file)},
+                                {"reason", QString::fromStdString(reason)}});
+  };
   for (const PowerTrace& trace : d.traces) {
-    if (!t.platforms.empty() && std::find(t.platforms.begin(), t.platforms.end(), trace.platform) == t.platforms.end())
+    if (!t.platforms.empty() && std::find(t.platforms.begin(), t.platforms.end(), trace.platform) == t.platforms.end()) {
+      std::string names;
+      for (const std::string& p : t.platforms) names += (names.empty() ? "" : ", ") + p;
+      leave_out(trace, "not one of the figure's platforms (" + names + ")");
       continue;
+    }
     const std::vector<double> amps = current_series(trace);
-    if (amps.empty() || trace.time_s.empty()) continue;
+    if (amps.empty() || trace.time_s.empty()) {
+      leave_out(trace, "the log has no current channel (the figure plots current, as the paper's Figure 4)");
+      continue;
+    }
     // At most ~2000 points per trace (min and max of each bucket), so a long log stays a small vector file.
     const std::size_t n = amps.size(), buckets = std::min<std::size_t>(n, 1000);
     QVector<double> xs, ys;
@@ -176,9 +163,11 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
     x_max = std::max(x_max, trace.time_s.back() - trace.time_s.front());
     QCPGraph* g = plot.addGraph();
     g->setData(xs, ys, true);
-    int color = 0;
+    // The platform's colour: its first device's (lowest index), as in the Power and Battery tabs.
+    int color = -1;
     for (const auto& [key, c] : d.colors)
-      if (key.first == trace.platform) color = c;
+      if (key.first == trace.platform && (color < 0 || c < color)) color = c;
+    color = std::max(color, 0);
     g->setPen(QPen(device_color(color), o.line_width_pt * 0.6));
     g->setName(QString::fromStdString(trace.platform));
     sources.append(QJsonObject{{"platform", QString::fromStdString(trace.platform)},
@@ -188,8 +177,29 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
   if (plot.graphCount() == 0) throw std::runtime_error(t.id + ": no current logs for the template's platforms");
   plot.xAxis->setRange(0, x_max);
   plot.yAxis->setRange(0, y_max * 1.1);
-  wrap_legend(plot, o);
+  wrap_legend(plot, o.font_pt, plot.width());
   return sources;
+}
+
+// "fig4: NUC, Jetson TX2 (reconstructed); left out: RobotPC (not one of the figure's platforms ...)".
+QString contents_line(const FigureTemplate& t, const QJsonArray& sources, const QJsonArray& left_out) {
+  QStringList shown;
+  for (const auto& v : sources) {
+    const QJsonObject s = v.toObject();
+    QString what = s.value("device").toString().isEmpty() ? s.value("platform").toString()
+                                                          : s.value("device").toString() + " " + s.value("backend").toString();
+    if (s.contains("dims")) what += QStringLiteral(" D=%1").arg(s.value("dims").toInt());
+    if (const QString origin = s.value("origin").toString(); !origin.isEmpty()) what += " (" + origin + ")";
+    if (!shown.contains(what)) shown << what;
+  }
+  QString line = QString::fromStdString(t.id) + ": " + (shown.isEmpty() ? QObject::tr("the capture") : shown.join(", "));
+  QStringList out;
+  for (const auto& v : left_out) {
+    const QJsonObject l = v.toObject();
+    out << l.value("platform").toString() + " (" + l.value("reason").toString() + ")";
+  }
+  if (!out.isEmpty()) line += QObject::tr("; left out: ") + out.join("; ");
+  return line;
 }
 
 void write_text(const QString& path, const std::string& text, QStringList& files) {
@@ -200,6 +210,16 @@ void write_text(const QString& path, const std::string& text, QStringList& files
 }
 
 }  // namespace
+
+FigureData select_figure_data(FigureData d, FigureDataChoice choice) {
+  if (choice == FigureDataChoice::All) return d;
+  const auto measured = [](const Provenance& p) { return p.origin != DataOrigin::Reconstructed; };
+  std::erase_if(d.runs, [&](const FlopsRun& r) { return measured(r.provenance); });
+  std::erase_if(d.traces, [&](const PowerTrace& t) { return measured(t.provenance); });
+  std::erase_if(d.pipelines, [](const PipelineTimings& p) { return p.source.origin != DataOrigin::Reconstructed; });
+  d.selection = "paper data only (reconstructed from the paper's reported figures)";
+  return d;
+}
 
 QString paper_template_path() { return QStringLiteral(BENCHSCOPE_SOURCE_DIR "/resources/figures/paper-2018.json"); }
 
@@ -219,7 +239,7 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
     if (progress) progress(done, total, QString::fromStdString(t.id));
     const QString stem = QDir(out_dir).filePath(QString::fromStdString(t.id));
     QStringList files;
-    QJsonArray sources;
+    QJsonArray sources, left_out;
     double figure_height_mm = p.h_mm;
     try {
       if (t.kind == "triptych") {
@@ -228,7 +248,7 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
         QCustomPlot plot;
         plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
         style_axes(plot, t, o);
-        sources = t.kind == "flops" ? flops_figure(plot, t, data, o) : current_figure(plot, t, data, o);
+        sources = t.kind == "flops" ? flops_figure(plot, t, data, o) : current_figure(plot, t, data, o, left_out);
         FigureOptions sized = o;
         if (o.height_mm <= 0) {
           // Automatic height: axes at 0.62 x width (0.8 for narrow figures, so the axis label fits), plus what the
@@ -248,8 +268,9 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
     for (const QString& f : files) {
       list.append(QJsonObject{{"file", QFileInfo(f).fileName()}, {"figure", QString::fromStdString(t.id)},
                               {"title", QString::fromStdString(t.title)}, {"width_mm", p.w_mm}, {"height_mm", figure_height_mm},
-                              {"sources", sources}});
+                              {"sources", sources}, {"left_out", left_out}});
     }
+    out.contents << contents_line(t, sources, left_out);
     out.files << files;
     ++done;
   }
@@ -274,7 +295,10 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
                               {"sources", std::string(stem) == "platforms" ? platform_sources : run_sources}});
     }
   }
-  const QByteArray json = QJsonDocument(QJsonObject{{"format", "benchscope-figure-list"}, {"version", 1}, {"files", list}})
+  const QByteArray json = QJsonDocument(QJsonObject{{"format", "benchscope-figure-list"},
+                                                    {"version", 1},
+                                                    {"data", QString::fromStdString(data.selection)},
+                                                    {"files", list}})
                               .toJson();
   write_text(QDir(out_dir).filePath("figures.json"), json.toStdString(), out.files);
   if (progress) progress(total, total, "done");

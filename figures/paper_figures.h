@@ -35,10 +35,19 @@ struct FigureData {
   std::vector<PipelineTimings> pipelines;
   std::optional<Frame> frame;  // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
   std::map<std::pair<std::string, std::string>, int> colors;  // (platform, device) -> colour index
+  // Which data this is, said to the user and recorded in figures.json ("data"): e.g. "paper data only".
+  std::string selection = "all data given";
 };
 
+// What the figures may show: everything given (the CLI's default, the runs ticked in the GUI), or only the data
+// reconstructed from the paper, so that a run measured on this machine never slips into a paper figure unasked.
+enum class FigureDataChoice { All, PaperOnly };
+// Keeps the runs, power logs and pipeline runs the choice allows and sets `selection`.
+FigureData select_figure_data(FigureData data, FigureDataChoice choice);
+
 struct FigureOutput {
-  QStringList files;  // every file written, figures.json last
+  QStringList files;     // every file written, figures.json last
+  QStringList contents;  // a line per figure: what it shows, and what it left out and why
 };
 
 // Throws std::runtime_error (naming the file) when a file cannot be written, Cancelled when `cancel` fires

@@ -26,6 +26,8 @@ namespace bs::ui {
 namespace {
 
 constexpr double kNominalCellV = 3.7;  // a LiPo cell's nominal voltage: the cell count follows from the pack's
+// The Battery tab's fields as last edited, kept in the workspace so that they survive imports, runs and reopening.
+constexpr const char* kCurrentSetupKey = "battery-tab/current";
 
 QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, int decimals, double step, const QString& suffix) {
   auto* s = new QDoubleSpinBox(parent);
@@ -135,8 +137,66 @@ BatteryView::BatteryView(QWidget* parent)
 }
 
 void BatteryView::set_workspace(Workspace* workspace) {
+  const QString selected = preset_->currentIndex() >= 0 ? QString::fromStdString(base_.pack.name) : QString();
+  if (workspace == workspace_) {
+    reload_presets(selected, /*keep_fields=*/true);  // the user's edits stay
+    return;
+  }
   workspace_ = workspace;
-  reload_presets(preset_->currentIndex() >= 0 ? QString::fromStdString(base_.pack.name) : QString());
+  remembered_.clear();
+  reload_presets(selected);
+  restore_saved_setup();
+}
+
+void BatteryView::restore_saved_setup() {
+  if (!workspace_) return;
+  for (const auto& [key, json] : workspace_->settings(kCurrentSetupKey)) {
+    if (key != kCurrentSetupKey) continue;
+    try {
+      const BatterySetup saved = battery_setup_from_json(json);
+      const QString name = QString::fromStdString(saved.pack.name);
+      for (std::size_t i = 0; i < presets_.size(); ++i)
+        if (QString::fromStdString(presets_[i].pack.name) == name) {
+          const QSignalBlocker block(preset_);
+          preset_->setCurrentIndex(static_cast<int>(i));
+          base_ = presets_[i];
+        }
+      show_fields(saved);
+      remembered_ = json;
+      recompute();
+    } catch (const std::invalid_argument& e) {
+      error_->setText(tr("The battery setup saved in this workspace was not restored: %1").arg(QString::fromUtf8(e.what())));
+    }
+  }
+}
+
+void BatteryView::remember_setup() {
+  if (!workspace_) return;
+  const std::string json = battery_setup_to_json(setup());
+  if (json == remembered_) return;
+  try {
+    workspace_->set_setting(kCurrentSetupKey, json);
+    remembered_ = json;
+  } catch (const std::exception& e) {  // a read-only or vanished workspace file: the edit still applies here
+    error_->setText(tr("The battery setup could not be saved in the workspace: %1").arg(QString::fromUtf8(e.what())));
+  }
+}
+
+bool BatteryView::modified() const {
+  BatterySetup preset = base_;
+  BatterySetup now = setup();
+  preset.from_workspace = now.from_workspace = false;
+  return battery_setup_to_json(preset) != battery_setup_to_json(now);
+}
+
+void BatteryView::mark_modified() {
+  const int i = preset_->currentIndex();
+  if (i < 0 || i >= static_cast<int>(preset_texts_.size())) return;
+  const QSignalBlocker block(preset_);
+  const QString text = preset_texts_[static_cast<std::size_t>(i)];
+  preset_->setItemText(i, modified() ? tr("%1 — modified").arg(text) : text);
+  for (int k = 0; k < static_cast<int>(preset_texts_.size()); ++k)
+    if (k != i) preset_->setItemText(k, preset_texts_[static_cast<std::size_t>(k)]);
 }
 
 void BatteryView::set_data(std::vector<PowerTrace> traces, std::vector<std::pair<std::string, int>> colors) {
@@ -145,11 +205,13 @@ void BatteryView::set_data(std::vector<PowerTrace> traces, std::vector<std::pair
   recompute();
 }
 
-void BatteryView::reload_presets(const QString& select) {
+void BatteryView::reload_presets(const QString& select, bool keep_fields) {
   std::vector<std::string> errors;
+  const BatterySetup edited = setup();
   presets_ = all_battery_setups(workspace_, &errors);
   const QSignalBlocker block(preset_);
   preset_->clear();
+  preset_texts_.clear();
   int index = 0;
   for (std::size_t i = 0; i < presets_.size(); ++i) {
     const BatteryPack& p = presets_[i].pack;
@@ -157,19 +219,29 @@ void BatteryView::reload_presets(const QString& select) {
                        .arg(p.capacity_ah * 1000, 0, 'f', 0);
     if (presets_[i].from_workspace) text += tr(", workspace");
     preset_->addItem(text);
+    preset_texts_.push_back(text);
     preset_->setItemData(static_cast<int>(i), QString::fromStdString(p.description), Qt::ToolTipRole);
     if (QString::fromStdString(p.name) == select) index = static_cast<int>(i);
   }
   delete_->setEnabled(workspace_ != nullptr);
   save_->setEnabled(workspace_ != nullptr);
   preset_->setCurrentIndex(index);
-  show_setup(presets_.at(static_cast<std::size_t>(index)));
+  if (keep_fields) {
+    base_ = presets_.at(static_cast<std::size_t>(index));
+    show_fields(edited);
+  } else {
+    show_setup(presets_.at(static_cast<std::size_t>(index)));
+  }
   recompute();
   if (!errors.empty()) error_->setText(QString::fromStdString(errors.front()));
 }
 
 void BatteryView::show_setup(const BatterySetup& s) {
   base_ = s;
+  show_fields(s);
+}
+
+void BatteryView::show_fields(const BatterySetup& s) {
   const QSignalBlocker b1(volts_), b2(capacity_), b3(dod_), b4(extra_), b5(resistance_), b6(model_), b7(mission_);
   volts_->setValue(s.pack.nominal_v());
   capacity_->setValue(s.pack.capacity_ah * 1000);
@@ -229,6 +301,9 @@ void BatteryView::recompute() {
   }
   fill_table();
   fill_plot();
+  mark_modified();
+  remember_setup();
+  emit setup_changed();
 }
 
 void BatteryView::fill_table() {

@@ -32,6 +32,8 @@ class BatteryView : public QWidget {
  public:
   explicit BatteryView(QWidget* parent = nullptr);
   // The workspace whose presets are listed and into which "Save preset" writes (may be null: built-ins only).
+  // Called again with the same workspace (after an import or a run), it refreshes the preset list and keeps what
+  // the fields show. A newly opened workspace brings back the setup last edited in it ("battery-tab/current").
   void set_workspace(Workspace* workspace);
   void set_data(std::vector<PowerTrace> traces, std::vector<std::pair<std::string, int>> colors = {});
   // The setup the fields show now.
@@ -52,10 +54,20 @@ class BatteryView : public QWidget {
   QComboBox* model_box() const { return model_; }
   QLineEdit* mission_edit() const { return mission_; }
   QString error_text() const;
+  // Whether the fields differ from the selected preset (shown as "modified" in the preset box).
+  bool modified() const;
+
+ signals:
+  // The setup changed: an edit, another preset, or a workspace that brought its own back.
+  void setup_changed();
 
  private:
-  void reload_presets(const QString& select);
+  void reload_presets(const QString& select, bool keep_fields = false);
   void show_setup(const BatterySetup& s);
+  void show_fields(const BatterySetup& s);
+  void restore_saved_setup();
+  void remember_setup();
+  void mark_modified();
   void recompute();
   void fill_table();
   void fill_plot();
@@ -68,6 +80,8 @@ class BatteryView : public QWidget {
   std::vector<BatterySetup> presets_;
   BatterySetup base_;  // the selected preset: keeps what the fields do not show (description, curve, cut-off)
   std::vector<PlatformBattery> rows_;
+  std::vector<QString> preset_texts_;  // the preset box's texts without the "modified" mark
+  std::string remembered_;             // the setup JSON last written to the workspace
   QComboBox* preset_;
   QDoubleSpinBox* volts_;
   QDoubleSpinBox* capacity_;

@@ -6,6 +6,7 @@
 #include <QPushButton>
 #include <QToolTip>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <qcustomplot.h>
 
@@ -162,6 +163,12 @@ void FlopsPlot::rebuild() {
     g->setData(keys, mean, true);
     QPen pen(color, 1.5, dims_pen_style(run.dims));
     g->setPen(pen);
+    // Colour is the device, line style D, and a sparse marker along the curve the backend: the same device's CUDA
+    // and OpenCL curves (one colour, one D) are told apart, in the legend too.
+    g->setScatterStyle(QCPScatterStyle(static_cast<QCPScatterStyle::ScatterShape>(
+                                           backend_marker_shape(QString::fromStdString(run.backend))),
+                                       color, Qt::white, 6));
+    g->setScatterSkip(std::max(0, static_cast<int>(keys.size()) / 8 - 1));
     g->setName(series_name(run));
     series_.push_back({g, stored});
     overlay_->add_curve(g);

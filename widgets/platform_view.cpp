@@ -15,12 +15,14 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "analysis/battery.h"
 #include "analysis/platform_table.h"
+#include "frozen_column.h"
 
 namespace bs::ui {
 namespace {
@@ -103,6 +105,7 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   use_runtime_ = new QCheckBox(tr("Battery runtime ≥"), this);
   runtime_ = spin(this, 1, 100000, 60, tr(" min"), 0);
   battery_ = new QComboBox(this);
+  battery_->setObjectName(QStringLiteral("battery"));
   mission_ = new QComboBox(this);
   mission_->setEditable(true);
   mission_->setInsertPolicy(QComboBox::NoInsert);
@@ -147,7 +150,8 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   table_->verticalHeader()->setVisible(false);
   table_->horizontalHeader()->setDefaultAlignment(Qt::Alignment(Qt::AlignCenter) | Qt::Alignment(Qt::TextWordWrap));
   table_->setWordWrap(true);
-  table_->horizontalHeader()->setStretchLastSection(true);  // the verdict's text gets what is left
+  table_->horizontalHeader()->setStretchLastSection(true);
+  frozen_ = new FrozenFirstColumn(table_);
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(controls);
@@ -159,8 +163,13 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   for (QDoubleSpinBox* s : {budget_, fps_, runtime_, extra_load_})
     connect(s, &QDoubleSpinBox::valueChanged, this, &PlatformView::recompute);
   connect(battery_, &QComboBox::currentIndexChanged, this, [this](int i) {
+    if (i == 0 && has_tab_setup_) {  // the Battery tab's setup brings its parallel load and mission along
+      const QSignalBlocker b1(extra_load_), b2(mission_);
+      extra_load_->setValue(setups_.front().extra_load_w);
+      mission_->setEditText(QString::fromStdString(setups_.front().mission));
+    }
     // A preset saved with a mission brings it along (the user can still change it).
-    if (i >= 0 && i < static_cast<int>(setups_.size()) && !setups_[static_cast<std::size_t>(i)].mission.empty()) {
+    else if (i >= 0 && i < static_cast<int>(setups_.size()) && !setups_[static_cast<std::size_t>(i)].mission.empty()) {
       const QSignalBlocker block(mission_);
       mission_->setEditText(QString::fromStdString(setups_[static_cast<std::size_t>(i)].mission));
     }
@@ -194,9 +203,20 @@ void PlatformView::fill_battery_choices() {
   mission_->clear();
   mission_->addItem(QString());  // none: a constant load
   mission_->setItemData(0, tr("No mission: the computer's mean power plus the parallel load, constant"), Qt::ToolTipRole);
-  for (const BatterySetup& s : setups_) {
-    battery_->addItem(QString::fromStdString(s.pack.description.empty() ? s.pack.name : s.pack.description),
-                      QString::fromStdString(s.pack.name));
+  for (std::size_t i = 0; i < setups_.size(); ++i) {
+    const BatterySetup& s = setups_[i];
+    if (i == 0 && has_tab_setup_) {
+      battery_->addItem(tab_setup_label_, QStringLiteral("\x01battery-tab"));  // a data key no preset name can have
+      battery_->setItemData(0, tr("The pack as the Battery tab shows it now (%1 V, %2 mAh, %3 % usable), with its "
+                                  "parallel load and mission")
+                                   .arg(s.pack.nominal_v(), 0, 'f', 1)
+                                   .arg(s.pack.capacity_ah * 1000, 0, 'f', 0)
+                                   .arg(s.depth_of_discharge * 100, 0, 'f', 0),
+                            Qt::ToolTipRole);
+    } else {
+      battery_->addItem(QString::fromStdString(s.pack.description.empty() ? s.pack.name : s.pack.description),
+                        QString::fromStdString(s.pack.name));
+    }
     if (s.mission.empty() || mission_->findText(QString::fromStdString(s.mission)) >= 0) continue;
     mission_->addItem(QString::fromStdString(s.mission));
     mission_->setItemData(mission_->count() - 1, tr("Mission of the battery preset %1").arg(QString::fromStdString(s.pack.name)),
@@ -216,8 +236,29 @@ void PlatformView::fill_battery_choices() {
 }
 
 void PlatformView::set_workspace(const Workspace* ws) {
-  setups_ = all_battery_setups(ws);
+  std::vector<BatterySetup> setups = all_battery_setups(ws);
+  if (has_tab_setup_) setups.insert(setups.begin(), setups_.front());
+  setups_ = std::move(setups);
   fill_battery_choices();
+  recompute();
+}
+
+void PlatformView::set_battery_tab_setup(const BatterySetup& setup, bool modified) {
+  const bool follow = !has_tab_setup_ || battery_->currentIndex() == 0;
+  if (has_tab_setup_)
+    setups_.front() = setup;
+  else
+    setups_.insert(setups_.begin(), setup);
+  has_tab_setup_ = true;
+  tab_setup_label_ = modified ? tr("Battery tab: %1, modified").arg(QString::fromStdString(setup.pack.name))
+                              : tr("Battery tab: %1").arg(QString::fromStdString(setup.pack.name));
+  fill_battery_choices();
+  if (follow) {
+    const QSignalBlocker b1(battery_), b2(extra_load_), b3(mission_);
+    battery_->setCurrentIndex(0);
+    extra_load_->setValue(setup.extra_load_w);
+    mission_->setEditText(QString::fromStdString(setup.mission));
+  }
   recompute();
 }
 
@@ -325,12 +366,10 @@ void PlatformView::fill_table() {
   table_->clear();
   table_->setColumnCount(static_cast<int>(t.header.size()));
   table_->setRowCount(static_cast<int>(t.rows.size()));
-  QStringList header;
-  for (const auto& h : t.header) header << QString::fromStdString(h);
-  table_->setHorizontalHeaderLabels(header);
+  std::vector<QString> header_tips(t.header.size());
   for (int c = 0; c < table_->columnCount(); ++c) {
     const std::string& id = ids[static_cast<std::size_t>(c)];
-    QString tip;
+    QString& tip = header_tips[static_cast<std::size_t>(c)];
     if (id == column::kFramesPerWh)
       tip = tr("Frames per watt-hour: frames preprocessed and detected per Wh of the computer, 3600 / energy per "
                "frame (J); energy per frame = mean power × (preprocessing + detection) mean time, or the logged "
@@ -338,7 +377,6 @@ void PlatformView::fill_table() {
     else if (id == column::kBattery)
       tip = tr("Battery runtime on the chosen pack (constant-power model): the computer's mean power plus the "
                "parallel load, or over the mission profile when one is set.");
-    if (!tip.isEmpty() && table_->horizontalHeaderItem(c)) table_->horizontalHeaderItem(c)->setToolTip(tip);
   }
   // The best value per numeric column among the platforms that have one.
   std::vector<double> best(t.header.size(), std::numeric_limits<double>::quiet_NaN());
@@ -352,26 +390,48 @@ void PlatformView::fill_table() {
       if (std::isnan(best[col]) || (cv.better > 0 ? cv.value > best[col] : cv.value < best[col])) best[col] = cv.value;
     }
   const int with_data = static_cast<int>(rows_.size());
+  // The verdict sits next to the platform's name (the table's own order puts it last, which is off-screen on a
+  // small window): view column c shows table column order[c].
+  std::vector<std::size_t> order{0};
+  if (constrained && t.header.size() >= 2)
+    for (std::size_t c = t.header.size() - 2; c < t.header.size(); ++c) order.push_back(c);
+  for (std::size_t c = 1; c < t.header.size(); ++c)
+    if (std::find(order.begin(), order.end(), c) == order.end()) order.push_back(c);
+  QStringList ordered_header;
+  for (std::size_t c : order) ordered_header << QString::fromStdString(t.header[c]);
+  table_->setHorizontalHeaderLabels(ordered_header);
+  for (int c = 0; c < table_->columnCount(); ++c)
+    if (auto* h = table_->horizontalHeaderItem(c); h && !header_tips[order[static_cast<std::size_t>(c)]].isEmpty())
+      h->setToolTip(header_tips[order[static_cast<std::size_t>(c)]]);
   for (int r = 0; r < static_cast<int>(t.rows.size()); ++r) {
-    for (int c = 0; c < static_cast<int>(t.rows[r].size()); ++c) {
-      auto* item = new NumericItem(QString::fromStdString(t.rows[r][c]));
+    const PlatformVerdict* verdict =
+        constrained && r < static_cast<int>(verdicts_.size()) ? &verdicts_[static_cast<std::size_t>(r)] : nullptr;
+    // A platform that fails a constraint is dimmed, with the reason on every cell of its row.
+    const bool fails = verdict && !verdict->meets_all;
+    const QString fail_reason = fails ? tr("Fails the constraints: %1").arg(QString::fromStdString(t.rows[r].back())) : QString();
+    for (int c = 0; c < static_cast<int>(order.size()); ++c) {
+      const std::size_t cu = order[static_cast<std::size_t>(c)];
+      auto* item = new NumericItem(QString::fromStdString(t.rows[r][cu]));
       item->setData(Qt::UserRole, r);
-      item->setData(kColumnRole, QString::fromStdString(ids[static_cast<std::size_t>(c)]));
-      const std::size_t cu = static_cast<std::size_t>(c);
-      if (cu < values[static_cast<std::size_t>(r)].size() && c > 0) {
+      item->setData(kColumnRole, QString::fromStdString(ids[cu]));
+      if (cu < values[static_cast<std::size_t>(r)].size() && cu > 0) {
         const double v = values[static_cast<std::size_t>(r)][cu].value;
         item->setData(kSortRole, v);
         item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        if (!std::isnan(v) && v == best[cu] && with_data > 1) {
+        if (!std::isnan(v) && v == best[cu] && with_data > 1 && !fails) {
           QFont f = item->font();
           f.setBold(true);
           item->setFont(f);
           item->setBackground(QColor(0xd9, 0xf2, 0xd9));
         }
       }
-      const QString tip = tooltip_for(rows_[static_cast<std::size_t>(r)], ids[cu]);
+      QString tip = tooltip_for(rows_[static_cast<std::size_t>(r)], ids[cu]);
+      if (fails) {
+        item->setForeground(QColor(0x8a, 0x8a, 0x8a));
+        tip = tip.isEmpty() ? fail_reason : fail_reason + "\n\n" + tip;
+      }
       if (!tip.isEmpty()) item->setToolTip(tip);
-      if (c == 0 && r < static_cast<int>(verdicts_.size()) && verdicts_[static_cast<std::size_t>(r)].recommended) {
+      if (cu == 0 && verdict && verdict->recommended) {
         QFont f = item->font();
         f.setBold(true);
         item->setFont(f);
@@ -388,17 +448,19 @@ void PlatformView::fill_table() {
     bool empty = true;
     for (int r = 0; r < table_->rowCount() && empty; ++r) empty = table_->item(r, c)->text() == QString::fromUtf8("\u2013");
     table_->setColumnHidden(c, empty && table_->rowCount() > 0);
-    if (empty && table_->rowCount() > 0) empty_columns_ << QString::fromStdString(t.header[static_cast<std::size_t>(c)]);
+    if (empty && table_->rowCount() > 0) empty_columns_ << table_->horizontalHeaderItem(c)->text();
   }
   table_->setSortingEnabled(true);
   table_->resizeColumnsToContents();
   // Numbers need little room; headers wrap onto three lines instead of widening their columns.
   for (int c = 0; c < table_->columnCount(); ++c) {
-    const int cap = c == 0 ? 200 : c <= 2 ? 160 : 104;
+    const QString id = table_->item(0, c) ? table_->item(0, c)->data(kColumnRole).toString() : QString();
+    const int cap = c == 0 ? 200 : id == "meets" ? 150 : id == "failed" ? 220 : (id == QString::fromUtf8(column::kGpuPeak) || id == QString::fromUtf8(column::kCpuPeak)) ? 160 : 104;
     table_->setColumnWidth(c, std::min(table_->columnWidth(c), cap));
   }
   table_->horizontalHeader()->setMinimumHeight(64);
   table_->resizeRowsToContents();
+  frozen_->sync_columns();
 }
 
 void PlatformView::export_table(bool latex) {

@@ -19,6 +19,8 @@ class Workspace;
 
 namespace bs::ui {
 
+class FrozenFirstColumn;
+
 // One row per platform (peaks, power, GFLOPS/W, pipeline, energy per frame, battery), sortable, the best value of
 // each column highlighted, each cell's source in its tooltip; constraints (power budget, fps, runtime) add the
 // verdict columns and the recommendation. The numbers come from core (compare_platforms, recommend,
@@ -34,6 +36,10 @@ class PlatformView : public QWidget {
   // The battery presets (built-in and the workspace's, with their missions) offered in the Battery and Mission
   // choices; `ws` may be null (built-ins only).
   void set_workspace(const Workspace* ws);
+  // The Battery tab's setup as it is now (its edits included): offered first in the Battery choice, and selected by
+  // default, so both tabs use the same pack unless the user picks another here. While it is selected, the parallel
+  // load and mission follow the Battery tab too.
+  void set_battery_tab_setup(const BatterySetup& setup, bool modified);
   // A mission profile (parse_mission() text) in parallel with every computer; empty: a constant load.
   void set_mission(const QString& spec);
   QString mission() const;
@@ -59,9 +65,12 @@ class PlatformView : public QWidget {
   QComboBox* battery_;
   QComboBox* mission_;   // editable: the presets' missions, or typed name:seconds:watts,...
   QString mission_error_;
-  std::vector<BatterySetup> setups_;
+  std::vector<BatterySetup> setups_;  // in the Battery choice's order: the Battery tab's setup first when known
+  bool has_tab_setup_ = false;
+  QString tab_setup_label_;
   QLabel* summary_;
   QTableWidget* table_;
+  FrozenFirstColumn* frozen_ = nullptr;  // keeps the platform's name in view while the numbers scroll
   std::vector<FlopsRun> runs_;
   std::vector<PowerTrace> traces_;
   std::vector<PipelineTimings> pipelines_;

@@ -15,6 +15,8 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSlider>
+#include <QAbstractSpinBox>
+#include <QKeyEvent>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QToolBar>
@@ -60,6 +62,22 @@ ReprojectionTuner::ReprojectionTuner(QWidget* parent) : QWidget(parent), watcher
   build_ui();
   sync_controls();
   update_overlays();
+  // Ctrl+Z / Ctrl+Shift+Z in a focused number field undo and redo the lens change, not the field's typing: the
+  // fields would otherwise take the keys first (their line edits claim them in ShortcutOverride).
+  for (QAbstractSpinBox* box : findChildren<QAbstractSpinBox*>()) box->installEventFilter(this);
+}
+
+bool ReprojectionTuner::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() == QEvent::ShortcutOverride) {
+    auto* key = static_cast<QKeyEvent*>(event);
+    const bool undo_redo = key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
+                           key->keyCombination() == QKeyCombination(Qt::CTRL | Qt::SHIFT, Qt::Key_Z);
+    if (undo_redo) {
+      event->ignore();  // not claimed by the field: the tuner's Undo/Redo actions get the shortcut
+      return true;
+    }
+  }
+  return QWidget::eventFilter(watched, event);
 }
 
 ReprojectionTuner::~ReprojectionTuner() {
@@ -238,6 +256,10 @@ QWidget* ReprojectionTuner::build_controls() {
                              QDoubleSpinBox*& box, const QString& tip) {
     slider = new QSlider(Qt::Horizontal);
     slider->setRange(-1800, 1800);  // tenths of a degree
+    // Long enough that one pixel is about one degree, and the keys step by 1 degree (arrows) and 10 (page).
+    slider->setMinimumWidth(360);
+    slider->setSingleStep(10);
+    slider->setPageStep(100);
     slider->setToolTip(tip);
     box = spin(-180, 180, 1, 0.5, tr(" °"), tip);
     const std::string f = field;

@@ -34,6 +34,7 @@ class ReprojectionTuner : public QWidget {
  public:
   explicit ReprojectionTuner(QWidget* parent = nullptr);
   ~ReprojectionTuner() override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
   // The fisheye frame to tune on (8-bit BGR or gray). Its size becomes the lens's source size.
   void set_fisheye(const cv::Mat& image, const QString& caption = {});

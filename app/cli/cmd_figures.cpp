@@ -19,8 +19,9 @@ int run_figures(const std::vector<std::string>& raw, std::ostream& out, std::ost
 #ifdef BENCHSCOPE_WITH_FIGURES
   std::set<std::string> values = figure_value_options();
   values.insert("--out");
+  values.insert("--data");
 #else
-  const std::set<std::string> values{"--out", "--format", "--preset", "--width-mm", "--height-mm", "--dpi", "--font-pt",
+  const std::set<std::string> values{"--out", "--data", "--format", "--preset", "--width-mm", "--height-mm", "--dpi", "--font-pt",
                                      "--template"};
 #endif
   const ParsedArgs args = parse_args(raw, {"--quiet"}, values);
@@ -35,7 +36,11 @@ int run_figures(const std::vector<std::string>& raw, std::ostream& out, std::ost
 #else
   const ui::FigureOptions o = parse_figure_options(args);
   const auto templates = figure_templates(args);
-  const ui::FigureData fd = figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token());
+  const std::string data = args.value("--data").value_or("all");
+  if (data != "all" && data != "paper") throw UsageError("--data takes all or paper");
+  const ui::FigureData fd =
+      ui::select_figure_data(figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token()),
+                             data == "paper" ? ui::FigureDataChoice::PaperOnly : ui::FigureDataChoice::All);
   const auto app = offscreen_application();
   const bool quiet = args.has("--quiet");
   const auto result = ui::render_figures(templates, fd, QString::fromStdString(*out_dir), o, interrupt_token(),
@@ -43,7 +48,10 @@ int run_figures(const std::vector<std::string>& raw, std::ostream& out, std::ost
                                            if (!quiet) err << "\r[" << done << "/" << total << "] " << what.toStdString()
                                                            << "        " << std::flush;
                                          });
-  if (!quiet) err << '\n';
+  if (!quiet) {
+    err << '\n' << "data: " << fd.selection << '\n';
+    for (const QString& line : result.contents) err << "  " << line.toStdString() << '\n';
+  }
   for (const QString& f : result.files) out << f.toStdString() << '\n';
   return 0;
 #endif
@@ -52,13 +60,15 @@ int run_figures(const std::vector<std::string>& raw, std::ostream& out, std::ost
 const CommandRegistrar registrar({
     "figures",
     "render the paper's figures and tables (PDF/SVG/PNG, LaTeX/CSV, figures.json)",
-    "usage: benchscope-cli figures (WORKSPACE | PATH...) --out DIR [--format pdf,svg,png]\n"
+    "usage: benchscope-cli figures (WORKSPACE | PATH...) --out DIR [--data all|paper] [--format pdf,svg,png]\n"
     "                              [--preset lncs|lncs-half|ieee|ieee-double | --width-mm MM] [--height-mm MM]\n"
     "                              [--dpi 300] [--font-pt 8] [--template FILE] [--quiet]\n"
     "  Renders every figure of the template (default: resources/figures/paper-2018.json: fig1a, fig1b, fig2a,\n"
     "  fig2b, fig3, fig4) at the journal width (LNCS 122 mm by default; height 0.62 x width unless given), text\n"
     "  kept as text in PDF and SVG, PNG at --dpi; writes table1/table2 as .tex (booktabs) and .csv, and\n"
-    "  figures.json naming every file with its data sources and their provenance. Needs a build with Qt.",
+    "  figures.json naming every file with its data sources and their provenance. --data paper keeps only the\n"
+    "  data reconstructed from the paper (a run measured here never slips into a paper figure); figures.json\n"
+    "  records the choice, and what each figure shows and leaves out (and why) is printed. Needs a build with Qt.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
         return run_figures(args, out, err);

@@ -2,6 +2,7 @@
 #include "figure_cli.h"
 
 #ifdef BENCHSCOPE_WITH_FIGURES
+#include "device_palette.h"
 #include <algorithm>
 #include <cstdlib>
 
@@ -51,10 +52,18 @@ ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedDa
     const Workspace ws(paths[0]);
     if (const auto frames = ws.frames(); !frames.empty()) fd.frame = load_frame(ws, frames.front(), cancel);
   }
+  // A workspace's devices keep their stored colours (the GUI's); loose files get colours in order.
+  if (paths.size() == 1 && looks_like_workspace(paths[0]))
+    for (const DeviceRecord& d : Workspace(paths[0]).devices()) fd.colors[{d.platform, d.device}] = d.color_index;
   for (const FlopsRun& r : data.runs) fd.colors.try_emplace({r.platform, r.device}, static_cast<int>(fd.colors.size()));
-  for (const PowerTrace& t : data.power_traces)
-    if (std::none_of(fd.colors.begin(), fd.colors.end(), [&](const auto& c) { return c.first.first == t.platform; }))
-      fd.colors.try_emplace({t.platform, ""}, static_cast<int>(fd.colors.size()));
+  // A platform known only by its power log gets the colour the GUI's Power and Battery tabs give it.
+  std::vector<std::pair<std::string, int>> device_colors;
+  for (const auto& [key, index] : fd.colors) device_colors.emplace_back(key.first, index);
+  std::vector<std::string> trace_platforms;
+  for (const PowerTrace& t : data.power_traces) trace_platforms.push_back(t.platform);
+  for (const auto& [platform, index] : ui::platform_color_indices(device_colors, trace_platforms))
+    if (std::none_of(fd.colors.begin(), fd.colors.end(), [&](const auto& c) { return c.first.first == platform; }))
+      fd.colors.try_emplace({platform, ""}, index);
   return fd;
 }
 

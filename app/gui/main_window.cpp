@@ -13,6 +13,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
 #include <qcustomplot.h>
 
@@ -30,6 +31,7 @@
 #include "roofline_view.h"
 #include "efficiency_view.h"
 #include "battery_view.h"
+#include "device_palette.h"
 #include "recent_files.h"
 #include "workspace_tree.h"
 #include "frames_view.h"
@@ -56,12 +58,24 @@ MainWindow::MainWindow(QWidget* parent)
   const auto tab = [views](QWidget* w, const QString& name, const QString& tip) {
     views->setTabToolTip(views->addTab(w, name), tip);
   };
-  tab(plot_, tr("FLOPS"), tr("FLOPS against workers for the runs ticked in the workspace tree"));
+  // The peak table belongs to the FLOPS view (it was a dock under every tab, a quarter of the window on views that
+  // have nothing to do with it): the tab is the plot over its table, split as the user leaves it.
+  flops_split_ = new QSplitter(Qt::Vertical, this);
+  flops_split_->setObjectName(QStringLiteral("flopsSplit"));
+  flops_split_->addWidget(plot_);
+  flops_split_->addWidget(peaks_);
+  flops_split_->setStretchFactor(0, 3);
+  flops_split_->setStretchFactor(1, 1);
+  flops_split_->setChildrenCollapsible(false);
+  tab(flops_split_, tr("FLOPS"), tr("FLOPS against workers for the runs ticked in the workspace tree, with their peaks"));
   tab(power_, tr("Power"), tr("Current/power logs: traces, statistics over a selected range (the paper's Figure 4)"));
   tab(efficiency_, tr("Efficiency"), tr("GFLOPS/W per platform: the paper's and at mean power"));
   tab(battery_, tr("Battery"), tr("Battery life per platform, presets saved in the workspace"));
   tab(platforms_, tr("Platforms"), tr("One row per platform, and which one to pick under your constraints"));
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
+  // One battery for both tabs: the Platforms tab offers (and by default uses) what the Battery tab shows.
+  connect(battery_, &BatteryView::setup_changed, this,
+          [this] { platforms_->set_battery_tab_setup(battery_->setup(), battery_->modified()); });
   tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
   tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   connect(pipeline_, &PipelineView::run_measured, this, [this](const PipelineRun& run) {
@@ -84,10 +98,6 @@ MainWindow::MainWindow(QWidget* parent)
   tree_dock->setObjectName("workspaceDock");
   tree_dock->setWidget(tree_);
   addDockWidget(Qt::LeftDockWidgetArea, tree_dock);
-  auto* peak_dock = new QDockWidget(tr("Peak FLOPS"), this);
-  peak_dock->setObjectName("peakDock");
-  peak_dock->setWidget(peaks_);
-  addDockWidget(Qt::BottomDockWidgetArea, peak_dock);
   auto* runner_dock = new QDockWidget(tr("Kernel Runner"), this);
   runner_dock->setObjectName("kernelRunnerDock");
   runner_dock->setWidget(runner_);
@@ -98,7 +108,10 @@ MainWindow::MainWindow(QWidget* parent)
   tree_dock->raise();
   resizeDocks({tree_dock}, {340}, Qt::Horizontal);
   connect(runner_, &KernelRunner::started, runner_dock, &QDockWidget::raise);
-  resizeDocks({peak_dock}, {300}, Qt::Vertical);  // the 13 rows of the paper without scrolling
+  resize(1400, 900);
+  default_state_ = saveState();  // View > Reset layout returns here
+  flops_split_->setSizes({560, 300});  // the paper's 13 peak rows without scrolling at the default size
+  default_split_ = flops_split_->saveState();
   create_actions();
   connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);
   connect(importer_, &ImportController::finished, this, [this](const ImportReport& r) {
@@ -114,8 +127,33 @@ MainWindow::MainWindow(QWidget* parent)
   });
   status_label_ = new QLabel(this);
   statusBar()->addWidget(status_label_, 1);  // hidden while a temporary message shows
-  resize(1400, 900);
+  restore_layout();
   update_title();
+}
+
+// The window's size, docks and the FLOPS tab's split are remembered between sessions (QSettings).
+void MainWindow::restore_layout() {
+  QSettings s;
+  s.beginGroup(QStringLiteral("main-window"));
+  if (const QByteArray g = s.value("geometry").toByteArray(); !g.isEmpty()) restoreGeometry(g);
+  if (const QByteArray st = s.value("state").toByteArray(); !st.isEmpty()) restoreState(st);
+  if (const QByteArray sp = s.value("flops-split").toByteArray(); !sp.isEmpty()) flops_split_->restoreState(sp);
+}
+
+void MainWindow::save_layout() const {
+  QSettings s;
+  s.beginGroup(QStringLiteral("main-window"));
+  s.setValue("geometry", saveGeometry());
+  s.setValue("state", saveState());
+  s.setValue("flops-split", flops_split_->saveState());
+}
+
+void MainWindow::reset_layout() {
+  restoreState(default_state_);
+  flops_split_->restoreState(default_split_);
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) dock->show();
+  resize(1400, 900);
+  QSettings().remove(QStringLiteral("main-window"));
 }
 
 MainWindow::~MainWindow() = default;
@@ -181,6 +219,9 @@ void MainWindow::reload() {
     platform_colors.emplace_back(r.run.platform, r.color_index);
   }
   const auto traces = workspace_ ? workspace_->power_traces() : std::vector<StoredPowerTrace>{};
+  std::vector<std::string> trace_platforms;
+  for (const auto& t : traces) trace_platforms.push_back(t.trace.platform);
+  platform_colors = platform_color_indices(platform_colors, std::move(trace_platforms));  // one per platform
   power_->set_data(traces, bs::peak_table(all), platform_colors);
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);
@@ -333,6 +374,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
+  save_layout();
   event->accept();
 }
 

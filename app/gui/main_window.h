@@ -11,6 +11,8 @@ class QLabel;
 #include "paper_figures.h"
 #include "store/workspace.h"
 
+class QSplitter;
+
 namespace bs::ui {
 class WorkspaceTree;
 class FlopsPlot;
@@ -43,6 +45,8 @@ class MainWindow : public QMainWindow {
   void import_paths(const QStringList& paths);
 
   WorkspaceTree* tree() const { return tree_; }
+  // View > Reset layout: docks, the FLOPS tab's split and the window size as on first start.
+  void reset_layout();
   FlopsPlot* flops_plot() const { return plot_; }
   PeakTableView* peak_table() const { return peaks_; }
   KernelRunner* kernel_runner() const { return runner_; }
@@ -65,6 +69,9 @@ class MainWindow : public QMainWindow {
  private:
   void create_actions();  // main_window_menus.cpp
   void compare_with_workspace();  // main_window_menus.cpp
+  void show_help();               // main_window_menus.cpp (F1)
+  void restore_layout();
+  void save_layout() const;
   // main_window_export.cpp
   void export_current_figure();
   void reproduce_paper_figures();
@@ -90,6 +97,8 @@ class MainWindow : public QMainWindow {
   std::vector<StoredRun> live_;  // a sweep in progress, drawn before it is stored
   std::unique_ptr<QTemporaryDir> untitled_dir_;  // holds an untitled workspace until "Save As"
   WorkspaceTree* tree_;
+  QSplitter* flops_split_ = nullptr;  // the FLOPS tab: plot over the peak table
+  QByteArray default_state_, default_split_;
   FlopsPlot* plot_;
   PeakTableView* peaks_;
   ImportController* importer_;

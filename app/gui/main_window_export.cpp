@@ -18,6 +18,7 @@
 #include "platform_view.h"
 #include "plot_export.h"
 #include "report_writer.h"
+#include "workspace_tree.h"
 
 namespace bs::ui {
 namespace {
@@ -55,10 +56,13 @@ bool with_progress(QWidget* parent, const QString& title,
 
 FigureData MainWindow::figure_data() const {
   FigureData d;
+  const QSet<qint64> ticked = tree_->visible_runs();
   for (const StoredRun& r : runs_) {
-    d.runs.push_back(r.run);
     d.colors[{r.run.platform, r.run.device}] = r.color_index;
+    if (ticked.contains(r.id)) d.runs.push_back(r.run);
   }
+  d.selection = "runs ticked in the workspace (" + std::to_string(d.runs.size()) + " of " + std::to_string(runs_.size()) +
+                "), all power logs and pipeline runs";
   if (workspace_) {
     for (const StoredPowerTrace& t : workspace_->power_traces()) d.traces.push_back(t.trace);
     std::vector<PipelineRun> pipelines;
@@ -91,6 +95,7 @@ void MainWindow::export_current_figure() {
   }
   const QString name = tabs->tabText(tabs->currentIndex()).remove('&').toLower();
   ExportFigureDialog dialog(ExportFigureDialog::Target::FileStem, QDir(export_folder()).filePath(name), this);
+  dialog.set_preview([plot](const FigureOptions& o) { return render_export_preview(*plot, o, 640); });
   if (dialog.exec() != QDialog::Accepted) return;
   try {
     QStringList files;
@@ -105,15 +110,23 @@ void MainWindow::reproduce_paper_figures() {
   ExportFigureDialog dialog(ExportFigureDialog::Target::Folder, QDir(export_folder()).filePath("figures"), this);
   if (dialog.exec() != QDialog::Accepted) return;
   const QString folder = dialog.destination();
-  QStringList files;
+  QStringList files, contents;
   const bool ok = with_progress(this, tr("Paper figures"), [&](const CancelToken& cancel, const ProgressCallback& progress) {
     const auto templates = load_figure_templates(paper_template_path().toStdString());
-    files = render_figures(templates, figure_data(), folder, dialog.options(), cancel, progress).files;
+    const FigureOutput out =
+        render_figures(templates, select_figure_data(figure_data(), dialog.data_choice()), folder, dialog.options(),
+                       cancel, progress);
+    files = out.files;
+    contents = out.contents;
   });
   if (!ok) return;
-  QMessageBox box(QMessageBox::Information, tr("Paper figures"),
-                  tr("Wrote %1 files (figures, tables and figures.json) to %2.").arg(files.size()).arg(folder),
-                  QMessageBox::Ok, this);
+  // What each figure shows and what it left out (and why) is said here, not hidden: a figure that silently mixed a
+  // run measured on this machine into the paper's data, or dropped a power log, would mislead a reader.
+  QString text = tr("Wrote %1 files (figures, tables and figures.json) to %2.<ul>").arg(files.size()).arg(folder.toHtmlEscaped());
+  for (const QString& line : contents) text += "<li>" + line.toHtmlEscaped() + "</li>";
+  text += "</ul>";
+  QMessageBox box(QMessageBox::Information, tr("Paper figures"), text, QMessageBox::Ok, this);
+  box.setTextFormat(Qt::RichText);
   QPushButton* open = box.addButton(tr("Open folder"), QMessageBox::ActionRole);
   box.setDetailedText(files.join('\n'));
   box.exec();

@@ -4,6 +4,7 @@
 #include <QFileDialog>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QTabWidget>
 #include <qcustomplot.h>
 
 #include "compare_dialog.h"
@@ -105,8 +106,12 @@ void MainWindow::create_actions() {
   add(view, tr("&Reset zoom"), QKeySequence(Qt::CTRL | Qt::Key_0), tr("Fit all visible series"), [this] { plot_->reset_view(); });
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+  add(view, tr("Reset &layout"), QKeySequence(), tr("Docks, the FLOPS tab's split and the window size as on first start"),
+      [this] { reset_layout(); });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
+  add(help, tr("&Views and shortcuts"), QKeySequence::HelpContents, tr("What each tab shows and every keyboard shortcut"),
+      [this] { show_help(); });
   add(help, tr("&About BenchScope"), QKeySequence(), tr("Version and licence"), [this] {
     QMessageBox::about(this, tr("About BenchScope"),
                        tr("<h3>BenchScope %1</h3><p>Which computer should this robot carry? FLOPS, power and vision "
@@ -114,6 +119,30 @@ void MainWindow::create_actions() {
                           "<p>Qt %2 · QCustomPlot %3 · OpenCV %4</p>")
                            .arg(BENCHSCOPE_VERSION, qVersion(), QCUSTOMPLOT_VERSION_STR, CV_VERSION_TEXT));
   });
+}
+
+// F1: the tabs (with what each shows, from their tooltips) and every menu shortcut, read from the window itself so
+// the list can never fall behind the menus.
+void MainWindow::show_help() {
+  QString html = tr("<h3>Views</h3><table cellspacing='4'>");
+  auto* tabs = static_cast<QTabWidget*>(centralWidget());
+  for (int i = 0; i < tabs->count(); ++i)
+    html += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>")
+                .arg(tabs->tabText(i).remove('&').toHtmlEscaped(), tabs->tabToolTip(i).toHtmlEscaped());
+  html += tr("</table><h3>Keyboard shortcuts</h3><table cellspacing='4'>");
+  for (QMenu* menu : menuBar()->findChildren<QMenu*>())
+    for (QAction* a : menu->actions())
+      if (!a->shortcut().isEmpty())
+        html += QStringLiteral("<tr><td><tt>%1</tt></td><td>%2 ▸ %3</td></tr>")
+                    .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
+                         menu->title().remove('&').toHtmlEscaped(), a->text().remove('&').remove(QStringLiteral("…")).toHtmlEscaped());
+  html += tr("<tr><td><tt>Ctrl+Z / Ctrl+Shift+Z</tt></td><td>Lens tab: undo / redo a lens change</td></tr>"
+             "<tr><td><tt>Double-click</tt></td><td>Platforms and peak tables: show where a number came from</td></tr>"
+             "</table><p>The README's <i>Views</i> section and <tt>docs/cli.md</tt> describe every view and command.</p>");
+  QMessageBox box(QMessageBox::NoIcon, tr("BenchScope: views and shortcuts"), html, QMessageBox::Close, this);
+  box.setObjectName(QStringLiteral("help"));
+  box.setTextFormat(Qt::RichText);
+  box.exec();
 }
 
 }  // namespace bs::ui

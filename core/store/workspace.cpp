@@ -151,9 +151,12 @@ namespace {
 struct DeviceIds {
   const Db& db;
   Statement find{db, "SELECT id, kind FROM devices WHERE platform = ? AND device = ?"};
+  // A new device takes the smallest colour index no device has (a removed device's colour is reused, and two
+  // devices never share one while there are free ones; before, COUNT(*) could repeat an index after a removal).
   Statement insert{db,
-                   "INSERT INTO devices(platform, device, kind, color_index) "
-                   "VALUES (?, ?, ?, (SELECT COUNT(*) FROM devices))"};
+                   "INSERT INTO devices(platform, device, kind, color_index) VALUES (?, ?, ?, "
+                   "(SELECT MIN(c.i) FROM (SELECT 0 AS i UNION SELECT color_index + 1 FROM devices) AS c "
+                   " WHERE c.i NOT IN (SELECT color_index FROM devices)))"};
   Statement update_kind{db, "UPDATE devices SET kind = ? WHERE id = ?"};
 
   std::int64_t get(const std::string& platform, const std::string& device, DeviceKind kind) {
@@ -410,6 +413,15 @@ std::vector<DeviceRecord> Workspace::devices() const {
     out.push_back({st.int64(0), st.text(1), st.text(2), device_kind_from_string(st.text(3)),
                    static_cast<int>(st.int64(4))});
   return out;
+}
+
+void Workspace::set_device_color(const std::string& platform, const std::string& device, int color_index) {
+  if (color_index < 0)
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, "colour index must be 0 or more, not " + std::to_string(color_index));
+  Statement st(impl_->db, "UPDATE devices SET color_index = ? WHERE platform = ? AND device = ?");
+  st.bind(1, color_index).bind(2, std::string_view(platform)).bind(3, std::string_view(device)).run();
+  if (sqlite3_changes(impl_->db.get()) == 0)
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no device '" + device + "' on platform '" + platform + "'");
 }
 
 std::vector<StoredRun> Workspace::runs() const {

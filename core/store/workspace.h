@@ -107,6 +107,9 @@ class Workspace {
 
   std::vector<ImportRecord> imports() const;
   std::vector<DeviceRecord> devices() const;
+  // A device's colour is a property of the device, shown the same in every view and export: the user may pick
+  // another palette entry for it. Throws WorkspaceError(Constraint) for an unknown device or a negative index.
+  void set_device_color(const std::string& platform, const std::string& device, int color_index);
   std::vector<StoredRun> runs() const;  // ordered by device colour index, backend, dims, id
   std::vector<StoredResultSet> result_sets() const;
   std::vector<StoredPowerTrace> power_traces() const;

@@ -66,8 +66,8 @@ class TestCliPlatforms : public QObject {
     const QByteArray latex = t.readAll(), table = c.readAll();
     for (const char* want : {"\\toprule", "\\midrule", "\\bottomrule", "104.64", "41.26", "84.36", "360.48"})
       QVERIFY2(latex.contains(want), want);
-    QVERIFY(table.startsWith("Platform,GPU peak (GFLOPS)"));
-    QVERIFY(table.contains("\"5250.0 (NUC GPU (Iris Plus 650), OpenCL)\""));  // quoted: the cell has a comma
+    QVERIFY(table.startsWith("Platform,GPU peak (TFLOPS)"));
+    QVERIFY(table.contains("\"5.25 (NUC GPU (Iris Plus 650), OpenCL)\""));  // quoted: the cell has a comma
   }
   void mission() {
     // 140 W of servos while walking, in parallel with each computer: NUC 56.98 Wh / 180.52 W = 18.94 min, Jetson

@@ -169,6 +169,43 @@ class TestPaperFigures : public QObject {
     for (const char* n : {"40.52", "9.48", "104.64", "41.26", "84.36", "360.48"}) QVERIFY2(platforms.contains(n), n);
   }
 
+  // Issue #23.5: a run measured on this machine and a third platform's power log are in the workspace. "Paper data
+  // only" keeps the measured run out of fig2a; fig4 names the log it leaves out and why; figures.json records the
+  // choice, and the output says what each figure shows.
+  void data_choice_and_what_was_left_out() {
+    bs::ui::FigureData d = paper_data();
+    bs::FlopsRun measured = d.runs.front();
+    for (const auto& r : d.runs)
+      if (r.device_kind == bs::DeviceKind::Cpu) measured = r;
+    measured.platform = "this machine";
+    measured.device = "AMD EPYC";
+    measured.provenance.origin = bs::DataOrigin::Measured;
+    d.runs.push_back(measured);
+    bs::PowerTrace robot = d.traces.front();
+    robot.platform = "RobotPC";
+    robot.provenance.origin = bs::DataOrigin::Reconstructed;
+    d.traces.push_back(robot);
+    const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
+    for (const auto choice : {bs::ui::FigureDataChoice::All, bs::ui::FigureDataChoice::PaperOnly}) {
+      QTemporaryDir out;
+      bs::ui::FigureOptions o;
+      o.formats = {"svg"};
+      const auto result = bs::ui::render_figures(templates, bs::ui::select_figure_data(d, choice), out.path(), o,
+                                                 bs::CancelToken{});
+      const QString contents = result.contents.join('\n');
+      QVERIFY(contents.contains("RobotPC (not one of the figure's platforms"));
+      QCOMPARE(contents.contains("AMD EPYC"), choice == bs::ui::FigureDataChoice::All);
+      const QJsonObject doc = QJsonDocument::fromJson(read(out.filePath("figures.json"))).object();
+      QCOMPARE(doc["data"].toString().startsWith("paper data only"), choice == bs::ui::FigureDataChoice::PaperOnly);
+      bool fig4_left_out = false;
+      for (const auto& v : doc["files"].toArray())
+        if (v.toObject()["figure"].toString() == "fig4")
+          for (const auto& l : v.toObject()["left_out"].toArray())
+            fig4_left_out |= l.toObject()["platform"].toString() == "RobotPC";
+      QVERIFY(fig4_left_out);
+    }
+  }
+
   void figure_list_names_files_and_provenance() {
     const QJsonObject doc = QJsonDocument::fromJson(read(dir_.filePath("figures.json"))).object();
     QCOMPARE(doc["format"].toString(), QString("benchscope-figure-list"));

@@ -5,6 +5,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
+#include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -124,13 +125,57 @@ class TestBatteryView : public QObject {
     bs::ui::BatteryView view;
     view.set_workspace(&ws);
     view.set_data(paper_traces());
-    QCOMPARE(runtime_of(view.table(), "NUC"), QString("84.36"));  // the default stays the paper's pack
+    // The workspace brings back the setup last shown: the saved preset.
+    QVERIFY(view.preset_box()->currentText().startsWith("robot pack"));
+    QCOMPARE(view.capacity_box()->value(), 5000.0);
+    QVERIFY(view.select_preset("paper-4s-3850"));
+    QCOMPARE(runtime_of(view.table(), "NUC"), QString("84.36"));
     QVERIFY(view.select_preset("robot pack"));
     QCOMPARE(view.capacity_box()->value(), 5000.0);
     QCOMPARE(view.extra_load_box()->value(), 60.0);
     QCOMPARE(view.dod_box()->value(), 80.0);
     QVERIFY(std::abs(runtime_of(view.table(), "NUC").toDouble() - 14.8 * 5.0 * 0.8 / (40.52 + 60) * 60) < 0.05);
     QVERIFY(!view.select_preset("no such pack"));
+  }
+
+  // Issue #23.2: an edit survives what the user does next (an import or a kernel run reloads the views with the same
+  // workspace), shows as "modified", is saved with the workspace and comes back when it is opened again.
+  void edits_survive_reloads_and_reopening() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const std::string path = dir.filePath("w.bsw").toStdString();
+    {
+      bs::Workspace ws(path);
+      bs::ui::BatteryView view;
+      view.set_workspace(&ws);
+      view.set_data(paper_traces());
+      QVERIFY(!view.modified());
+      QVERIFY(!view.preset_box()->currentText().contains("modified"));
+      QSignalSpy changed(&view, &bs::ui::BatteryView::setup_changed);
+      view.capacity_box()->setValue(5000);
+      QVERIFY(changed.count() >= 1);
+      QVERIFY(view.modified());
+      QVERIFY(view.preset_box()->currentText().startsWith("paper-4s-3850"));
+      QVERIFY(view.preset_box()->currentText().contains("modified"));
+      // What MainWindow::reload() does after any import, failed or not, and after a kernel run.
+      view.set_workspace(&ws);
+      view.set_data(paper_traces());
+      QCOMPARE(view.capacity_box()->value(), 5000.0);
+      QVERIFY(view.preset_box()->currentText().contains("modified"));
+      // 14.8 V x 5 Ah / 40.52 W, in minutes.
+      QVERIFY(std::abs(runtime_of(view.table(), "NUC").toDouble() - 14.8 * 5.0 / 40.52 * 60) < 0.01);
+      // Back to the preset's own value: no longer modified.
+      view.capacity_box()->setValue(3850);
+      QVERIFY(!view.modified());
+      view.dod_box()->setValue(90);
+    }
+    bs::Workspace ws(path);
+    bs::ui::BatteryView view;
+    view.set_workspace(&ws);
+    view.set_data(paper_traces());
+    QCOMPARE(view.dod_box()->value(), 90.0);
+    QVERIFY(view.modified());
+    QVERIFY(std::abs(runtime_of(view.table(), "NUC").toDouble() - 84.36 * 0.9) < 0.01);
   }
 };
 

@@ -1,14 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Opens the paper's sample data in the main window, offscreen, as a user would, and checks what is plotted.
 #include <QAbstractItemModel>
+#include <QMessageBox>
+#include <QApplication>
 #include <QCoreApplication>
 #include <QFile>
+#include <QTabWidget>
+#include <QSplitter>
+#include <QDockWidget>
+#include <QLabel>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QTest>
 #include <qcustomplot.h>
+#include <map>
+#include <set>
 
 #include "export_figure_dialog.h"
 #include "flops_plot.h"
@@ -17,6 +25,7 @@
 #include "overlay_geometry.h"
 #include "peak_overlay.h"
 #include "peak_table.h"
+#include "plot_export.h"
 #include "power_view.h"
 #include <QTableWidget>
 #include "workspace_tree.h"
@@ -51,6 +60,18 @@ class TestMainWindow : public QObject {
     QCOMPARE(table->index(0, bs::ui::PeakTableModel::Backend).data().toString(), QString("CUDA"));
     QCOMPARE(table->index(12, bs::ui::PeakTableModel::Peak).data().toString(), QString("4.69 GFLOPS"));
 
+    // Issue #23.4: colour is the device, the marker along the curve the backend: the GTX1080Ti's CUDA and OpenCL
+    // curves (one device, one D) look different.
+    {
+      std::map<std::pair<QString, int>, std::set<int>> shapes_by_colour_and_style;
+      for (const QCPGraph* g : w.flops_plot()->series_graphs())
+        shapes_by_colour_and_style[{g->pen().color().name(), static_cast<int>(g->pen().style())}].insert(
+            static_cast<int>(g->scatterStyle().shape()));
+      bool cuda_and_opencl_apart = false;
+      for (const auto& [key, shapes] : shapes_by_colour_and_style) cuda_and_opencl_apart |= shapes.size() >= 2;
+      QVERIFY(cuda_and_opencl_apart);
+      for (const QCPGraph* g : w.flops_plot()->series_graphs()) QVERIFY(g->scatterStyle().shape() != QCPScatterStyle::ssNone);
+    }
     // The legend is inside the plot and, once laid out, hides no data; peaks carry labels.
     QCustomPlot* plot = w.flops_plot()->plot();
     plot->replot();
@@ -175,6 +196,61 @@ class TestMainWindow : public QObject {
     QCOMPARE(cancelled.imported, 0);
   }
 
+  // Issue #22.5: the peak table lives in the FLOPS tab, not in a dock under every view; the split and the docks are
+  // remembered; View > Reset layout brings the first-start layout back.
+  void peak_table_in_flops_tab_and_layout_remembered() {
+    QSettings().remove("main-window");
+    QList<int> moved;
+    {
+      bs::ui::MainWindow w;
+      auto* tabs = qobject_cast<QTabWidget*>(w.centralWidget());
+      QVERIFY(tabs);
+      QVERIFY(tabs->widget(0)->findChild<bs::ui::PeakTableView*>() != nullptr);
+      for (QDockWidget* d : w.findChildren<QDockWidget*>()) QVERIFY(d->windowTitle() != "Peak FLOPS");
+      auto* split = w.findChild<QSplitter*>("flopsSplit");
+      QVERIFY(split);
+      w.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&w));
+      const QList<int> first = split->sizes();
+      split->setSizes({first[0] + first[1] - 120, 120});
+      moved = split->sizes();
+      QVERIFY(w.close());  // saves the layout
+    }
+    {
+      bs::ui::MainWindow w;
+      w.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&w));
+      auto* split = w.findChild<QSplitter*>("flopsSplit");
+      QCOMPARE(split->sizes(), moved);
+      w.reset_layout();
+      QVERIFY(split->sizes() != moved);
+      QVERIFY(!QSettings().contains("main-window/state"));
+    }
+  }
+
+  // Issue #23.10: F1 lists the views and every shortcut, read from the menus themselves.
+  void f1_lists_views_and_shortcuts() {
+    bs::ui::MainWindow w;
+    QAction* help = nullptr;
+    for (QAction* a : w.findChildren<QAction*>())
+      if (a->text().remove('&') == "Views and shortcuts") help = a;
+    QVERIFY(help);
+    QCOMPARE(help->shortcut(), QKeySequence(Qt::Key_F1));
+    QString text;
+    QTimer::singleShot(0, &w, [&] {
+      for (QWidget* top : QApplication::topLevelWidgets())
+        if (auto* box = qobject_cast<QMessageBox*>(top); box && box->objectName() == "help") {
+          text = box->text();
+          box->accept();
+        }
+    });
+    help->trigger();
+    QVERIFY(text.contains("Battery"));
+    QVERIFY(text.contains("Platforms"));
+    QVERIFY(text.contains(QKeySequence(Qt::CTRL | Qt::Key_E).toString(QKeySequence::NativeText)));
+    QVERIFY(text.contains("Export figure"));
+  }
+
   void figure_and_report_actions_are_in_the_file_menu() {
     bs::ui::MainWindow w;
     QMap<QString, QKeySequence> expected{{"Export figure", QKeySequence(Qt::CTRL | Qt::Key_E)},
@@ -207,6 +283,38 @@ class TestMainWindow : public QObject {
     QCOMPARE(d.options().width_mm, 88.9);
     d.set_destination("/tmp/x/fig.pdf");
     QCOMPARE(d.destination(), QString("/tmp/x/fig"));
+  }
+
+  // Issue #23.1: the export dialog shows what will be written, and follows the size chosen.
+  void export_dialog_previews_the_figure() {
+    QSettings().remove("figure-export");
+    QCustomPlot plot;
+    plot.resize(900, 600);
+    for (int g = 0; g < 6; ++g) plot.addGraph()->setName(QStringLiteral("series %1").arg(g));
+    plot.legend->setVisible(true);
+    bs::ui::ExportFigureDialog d(bs::ui::ExportFigureDialog::Target::FileStem, "/tmp/flops");
+    int renders = 0;
+    QSize last;
+    d.set_preview([&](const bs::ui::FigureOptions& o) {
+      ++renders;
+      QImage image = bs::ui::render_export_preview(plot, o, 400);
+      last = image.size();
+      return image;
+    });
+    QCOMPARE(renders, 1);
+    QVERIFY(d.preview_label()->pixmap().width() > 0);
+    const double lncs_aspect = double(last.height()) / last.width();
+    d.set_preset("lncs-half");  // narrower: the legend needs more rows, so the figure is relatively taller
+    QTRY_COMPARE(renders, 2);
+    QVERIFY(double(last.height()) / last.width() > lncs_aspect);
+    QCOMPARE(plot.axisRect()->insetLayout()->elementCount(), 1);  // the view's legend is back where it was
+    if (const QByteArray dir = qgetenv("BENCHSCOPE_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      d.set_preset("lncs");
+      QTRY_COMPARE(renders, 3);
+      d.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&d));
+      d.grab().save(QString::fromLocal8Bit(dir) + "/export-figure-preview.png");
+    }
   }
 
   void no_qt5_library_is_loaded() {

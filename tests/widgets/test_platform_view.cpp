@@ -3,7 +3,9 @@
 // column is highlighted, numeric sorting, columns without data hidden, sources in tooltips.
 #include <filesystem>
 
+#include <QComboBox>
 #include <QLabel>
+#include <QTableView>
 #include <QTableWidget>
 #include <QSignalSpy>
 #include <QTest>
@@ -129,6 +131,72 @@ class TestPlatformView : public QObject {
     QVERIFY(named);
     view.set_mission({});
     QCOMPARE(view.options().mission, std::string());
+  }
+
+  // Issue #23.2: the Platforms tab uses the Battery tab's setup (its edits included) unless the user picks another.
+  void uses_the_battery_tabs_setup() {
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    load_paper(runs, traces);
+    bs::ui::PlatformView view;
+    view.set_data(runs, traces);
+    QTableWidget* t = view.table();
+    const int battery = column(t, "Battery runtime (min)");
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("84.36"));
+    auto setup = bs::find_battery_setup(nullptr, "paper-4s-3850").value();
+    setup.pack.capacity_ah = 7.7;  // twice the paper's pack, as edited in the Battery tab
+    setup.extra_load_w = 0;
+    view.set_battery_tab_setup(setup, /*modified=*/true);
+    auto* box = view.findChild<QComboBox*>(QStringLiteral("battery"));
+    QVERIFY(box);
+    QCOMPARE(box->currentIndex(), 0);
+    QVERIFY(box->currentText().contains("Battery tab"));
+    QVERIFY(box->currentText().contains("modified"));
+    QCOMPARE(view.options().battery_capacity_ah, 7.7);
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("168.72"));
+    // The workspace's presets are listed again after a reload; the Battery tab's entry stays first and selected.
+    view.set_workspace(nullptr);
+    QCOMPARE(box->currentIndex(), 0);
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("168.72"));
+    // Another pack picked here is kept when the Battery tab changes again.
+    box->setCurrentIndex(1);
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("84.36"));
+    setup.pack.capacity_ah = 5;
+    view.set_battery_tab_setup(setup, true);
+    QCOMPARE(box->currentIndex(), 1);
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("84.36"));
+  }
+
+  // Issue #23.3: the verdict sits next to the platform's name, the name column stays in view while the numbers
+  // scroll, failing rows are dimmed with the reason in a tooltip, GPU peaks in TFLOPS as everywhere else.
+  void verdict_first_failing_rows_dimmed_name_frozen() {
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    load_paper(runs, traces);
+    bs::ui::PlatformView view;
+    view.resize(900, 500);
+    view.set_data(runs, traces);
+    QTableWidget* t = view.table();
+    const int gpu = column(t, "GPU peak (TFLOPS)");
+    QVERIFY(gpu > 0);
+    QVERIFY(t->item(row_of(t, "NUC"), gpu)->text().startsWith("5.25 ("));
+    view.set_power_budget(20);  // the NUC's 40.52 W fails it, the Jetson's 9.48 W passes
+    QCOMPARE(t->horizontalHeaderItem(1)->text(), QString("Meets constraints"));
+    QCOMPARE(t->horizontalHeaderItem(2)->text(), QString("Failed (margin)"));
+    const int nuc = row_of(t, "NUC"), jetson = row_of(t, "Jetson TX2");
+    QCOMPARE(t->item(nuc, 1)->text(), QString("no"));
+    QVERIFY(t->item(nuc, 1)->toolTip().startsWith("Fails the constraints: power"));
+    QVERIFY(t->item(nuc, gpu)->toolTip().startsWith("Fails the constraints"));
+    QVERIFY(t->item(nuc, 0)->foreground().color().lightness() > t->item(jetson, 0)->foreground().color().lightness());
+    QVERIFY(t->item(jetson, 1)->text().startsWith("yes"));
+    QCOMPARE(view.recommendation(), QString("Jetson TX2"));
+    // The overlay that keeps the first column in place shows that column only, as wide as the table's.
+    auto* frozen = view.findChild<QTableView*>("frozen-first-column");
+    QVERIFY(frozen);
+    QVERIFY(!frozen->isColumnHidden(0));
+    for (int c = 1; c < t->columnCount(); ++c) QVERIFY(frozen->isColumnHidden(c));
+    QCOMPARE(frozen->columnWidth(0), t->columnWidth(0));
+    QCOMPARE(frozen->model(), t->model());
   }
 };
 

@@ -65,6 +65,18 @@ class TestReprojectionTuner : public QObject {
     QVERIFY(!t.undo_action()->isEnabled());
     t.redo_action()->trigger();
     QCOMPARE(t.params().view.yaw_deg, 25.0);
+    // Issue #23.10: Ctrl+Z with the cursor in a number field undoes the lens change, not the field's typing;
+    // Ctrl+Shift+Z redoes it.
+    t.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&t));
+    t.r_pp_spin()->setFocus();
+    QTRY_VERIFY(t.r_pp_spin()->hasFocus());
+    QTest::keyClick(t.r_pp_spin(), Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(t.params().view.yaw_deg, 0.0);
+    QCOMPARE(t.yaw_slider()->value(), 0);
+    QTest::keyClick(t.r_pp_spin(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(t.params().view.yaw_deg, 25.0);
+    QVERIFY(t.yaw_slider()->minimumWidth() >= 360);  // about one pixel per degree
     // A separate edit of another field is its own step; Reset returns to the start, undoably.
     t.r_pp_spin()->setValue(t.r_pp_spin()->value() * 1.1);
     QVERIFY(std::abs(t.params().lens.r_pp - start.lens.r_pp * 1.1) < 1e-7);

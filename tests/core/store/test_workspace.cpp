@@ -237,6 +237,16 @@ class TestWorkspace : public QObject {
     QCOMPARE(runs[0].run.device, std::string("A"));  // A is back, with its old colour 0
     QCOMPARE(runs[0].color_index, 0);
     QCOMPARE(runs[3].color_index, 3);
+    // Issue #23.4: the user gives a device another colour; every view reads it from here.
+    ws.set_device_color(runs[1].run.platform, "B", 9);
+    for (const auto& r : ws.runs())
+      if (r.run.device == "B") QCOMPARE(r.color_index, 9);
+    QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, ws.set_device_color(runs[1].run.platform, "no such device", 2));
+    QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, ws.set_device_color(runs[1].run.platform, "B", -1));
+    // A new device takes the smallest index nobody has: 1 is free since B moved to 9.
+    ws.add_import(batch_of({make_run("E", "OpenCL", 4, 2, 1)}), "h5");
+    for (const auto& d : ws.devices())
+      if (d.device == "E") QCOMPARE(d.color_index, 1);
   }
 
   void device_kind_is_learned_but_never_forgotten() {
