@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/flops.h"
+#include "analysis/foreign_sweeps.h"
 #include "analysis/units.h"
 #include "args.h"
 #include "command.h"
@@ -22,18 +23,20 @@ using nlohmann::json;
 struct ThroughputPeak {
   const ResultSet* set;
   const Measurement* measurement;
-  double value;
+  StatedFlops value;
 };
 
-// The best FLOP/s figure of each result set (clpeak's widest vector type, a benchmark's FLOPS counter).
+// The best FLOP/s figure of each result set (clpeak's widest vector type, a benchmark's FLOPS counter), by the one
+// definition of a FLOPS figure: the highest mean over repetitions, with its n and SD. Google Benchmark counters
+// that form a workers sweep are peak-table rows instead (analysis/foreign_sweeps.h), so they are not repeated here.
 std::vector<ThroughputPeak> throughput_peaks(const std::vector<ResultSet>& sets) {
   std::vector<ThroughputPeak> out;
   for (const ResultSet& s : sets) {
     std::optional<ThroughputPeak> best;
     for (const Measurement& m : s.measurements) {
-      if (m.unit != "FLOP/s") continue;
-      for (double v : m.values)
-        if (!best || v > best->value) best = ThroughputPeak{&s, &m, v};
+      if (m.unit != "FLOP/s" || is_swept(s, m)) continue;
+      const auto summary = summarize_measurement(m);
+      if (summary && (!best || summary->mean > best->value.mean)) best = ThroughputPeak{&s, &m, *summary};
     }
     if (best) out.push_back(*best);
   }
@@ -50,8 +53,8 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ThroughputPe
                      {"device_kind", std::string(to_string(r.device_kind))},
                      {"backend", r.backend},
                      {"variant", r.variant},
-                     {"dims", r.dims},
-                     {"iterations", r.iterations},
+                     {"dims", r.dims > 0 ? json(r.dims) : json(nullptr)},
+                     {"iterations", r.iterations > 0 ? json(r.iterations) : json(nullptr)},
                      {"peak_flops", r.peak.flops},
                      {"workers_at_peak", r.peak.workers},
                      {"n", r.peak.at_peak.n},
@@ -70,7 +73,9 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ThroughputPe
                   {"source_format", t.set->source_format},
                   {"name", t.measurement->name},
                   {"metric", t.measurement->metric},
-                  {"value", t.value},
+                  {"value", t.value.mean},
+                  {"n", t.value.n},
+                  {"sd", t.value.sd},
                   {"unit", t.measurement->unit}});
   return {{"format", "benchscope-peaks"}, {"version", 1}, {"rows", jrows}, {"throughput", jt}};
 }
@@ -95,8 +100,9 @@ void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std:
   for (const PeakRow& r : rows) {
     std::string peak = format_si(r.peak.flops, "FLOPS");
     if (r.peak.at_peak.n > 1) peak += " \xC2\xB1 " + format_si(r.peak.at_peak.sd, "FLOPS");
+    // A sweep from another tool states FLOPS, not D and N: "-".
     table.add({r.platform, r.device, std::string(to_string(r.device_kind)), r.backend, r.variant,
-               std::to_string(r.dims), peak, std::to_string(r.peak.workers), std::to_string(r.peak.at_peak.n),
+               r.dims > 0 ? std::to_string(r.dims) : "-", peak, std::to_string(r.peak.workers), std::to_string(r.peak.at_peak.n),
                r.reported_flops ? format_si(*r.reported_flops, "FLOPS") : "-", ratio_text(r.ratio_to_reported),
                percent_text(r.fraction_of_theoretical), std::string(to_string(r.origin))});
   }
@@ -107,10 +113,13 @@ void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std:
     table.print(out);
   }
   if (!throughput.empty()) {
-    TextTable t({"Platform", "Device", "Backend", "Source", "Measurement", "Peak"});
-    for (const ThroughputPeak& p : throughput)
+    TextTable t({"Platform", "Device", "Backend", "Source", "Measurement", "Peak", "n"});
+    for (const ThroughputPeak& p : throughput) {
+      std::string peak = format_si(p.value.mean, "FLOPS");
+      if (p.value.n > 1) peak += " \xC2\xB1 " + format_si(p.value.sd, "FLOPS");
       t.add({p.set->platform, p.set->device, p.set->backend, p.set->source_format,
-             p.measurement->metric + " / " + p.measurement->name, format_si(p.value, "FLOPS")});
+             p.measurement->metric + " / " + p.measurement->name, peak, std::to_string(p.value.n)});
+    }
     out << "\nThroughput results (FLOP/s measurements from other tools)\n";
     t.print(out);
   }
