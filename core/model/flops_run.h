@@ -28,7 +28,7 @@ struct WorkerSample {
   // Set only on sweeps derived from another tool's results (analysis/foreign_sweeps.h), whose flop count per
   // point is unknown: then `seconds` is empty and this is the point's FLOPS. Never stored: the workspace keeps the
   // tool's ResultSet and derives the sweep again on load.
-  std::optional<StatedFlops> stated_flops;
+  std::optional<StatedFlops> stated_flops{};
 };
 
 // One FLOPS-vs-workers sweep of the paper's rotation kernel (or a kernel with the same flop accounting) on one
