@@ -382,10 +382,11 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
     const double scale = time_scale(r, r.optional_string(row, at, "time_unit", "ns"), child(at, "time_unit"));
     // cv rows (aggregate_unit "percentage", or named cv in versions before that key) are ratios, not times.
     const bool ratio = r.optional_string(row, at, "aggregate_unit") == "percentage" || aggregate == "cv";
-    // How many repetitions an aggregate summarises: "repetitions", or the aggregate's iterations before 1.5.
+    // How many repetitions an aggregate summarises: its "repetitions" (since 1.5). Older aggregates carry the
+    // first repetition's iteration count instead (google/benchmark#586), so their n is the number of repetition
+    // rows read, which summarize_measurement() uses when no ("repetitions", n) is recorded.
     const std::optional<std::int64_t> reps =
-        is_aggregate ? (row.contains("repetitions") ? optional_count(r, row, at, "repetitions", 1) : iterations)
-                     : std::nullopt;
+        is_aggregate ? optional_count(r, row, at, "repetitions", 1) : std::nullopt;
 
     auto record = [&](const std::string& metric, const std::string& unit, double value, double to_si) {
       Measurement& m = table.at(run_name, metric, unit);

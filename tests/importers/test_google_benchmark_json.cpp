@@ -444,8 +444,33 @@ class TestGoogleBenchmarkJson : public QObject {
     const auto* flops = find(s, "BM_X", "FLOPS");
     QVERIFY(flops && flops->values.size() == 2);
     QCOMPARE(aggregate(*flops, "mean"), 5.0);
-    QCOMPARE(aggregate(*flops, "repetitions"), 2.0);  // the aggregate's iterations, before 1.5
+    QCOMPARE(aggregate(*flops, "repetitions"), -1.0);  // not stated before 1.5: n is the repetition rows read
     QCOMPARE(aggregate(*flops, "stddev"), 1.4142);
+    const auto summary = bs::summarize_measurement(*flops);
+    QVERIFY(summary && summary->n == 2 && summary->mean == 5.0 && summary->sd == 1.4142);
+  }
+
+  // Real output of a 2016 library (SOURCES): no run_type, no run_name, no host_name, integer times, repetitions
+  // as repeated names followed by "_mean" and "_stddev" rows whose iterations are the first repetition's (3, and
+  // 0 for stddev), not n. By hand: (41035891 + 40545623 + 38841168) / 3 = 40140894 ns, the file's _mean; its
+  // _stddev 940587 ns is the population SD of the three (sqrt(((894997)^2 + (404729)^2 + (1299726)^2) / 3)), as
+  // the library computed it then; the sample SD would be 1151979 ns. BenchScope keeps the file's figure.
+  void real_repetitions_2016_without_run_type() {
+    const auto batch = parse_file("blond-tc1-repetitions-2016.json");
+    const bs::ResultSet& s = batch.result_sets.at(0);
+    QCOMPARE(s.platform, std::string("unknown host"));
+    QCOMPARE(s.device, std::string("CPU (8 x 3600 MHz)"));
+    QCOMPARE(s.provenance.date, std::string("08/16/16 02:47:06"));
+    QCOMPARE(s.provenance.tool, std::string("google-benchmark"));
+    QCOMPARE(s.measurements.size(), std::size_t{16});  // 8 benchmarks x (real_time, cpu_time), no "_mean" ones
+    const auto* real = find(s, "BM_TC1Acceleration/1000/1.95313k/10", "real_time");
+    QVERIFY(real);
+    QCOMPARE(real->values.size(), std::size_t{3});
+    QVERIFY(near(aggregate(*real, "mean"), 40140894e-9));
+    QVERIFY(near(aggregate(*real, "stddev"), 940587e-9));
+    const auto summary = bs::summarize_measurement(*real);
+    QVERIFY(summary && summary->n == 3 && near(summary->sd, 940587e-9));
+    QVERIFY(batch.warnings.empty());
   }
 };
 
