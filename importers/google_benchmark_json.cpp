@@ -209,7 +209,7 @@ ResultSet result_set_from_context(const Reader& r, const json& context, const st
       std::string loads;
       for (const json& v : value)
         if (v.is_number()) loads += (loads.empty() ? "" : " ") + scalar_text(v);
-      p.settings.emplace_back(key, loads);
+      if (!loads.empty()) p.settings.emplace_back(key, loads);  // Windows writes []
       continue;
     }
     const std::string text = scalar_text(value);
