@@ -293,6 +293,12 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
   ImportBatch batch;
   const WorkersArgument workers = workers_argument_of(r, context, options);
   ResultSet set = result_set_from_context(r, context, file, workers);
+  // items_per_second counts whatever the benchmark calls an item; it is a FLOP rate only when the file says each
+  // item is one floating-point operation (--benchmark_context=benchscope_item=flop, SetItemsProcessed(flops)).
+  const std::string item = r.optional_string(context, "/context", "benchscope_item");
+  if (!item.empty() && item != "flop")
+    r.fail(ImportErrorCategory::InvalidValue, "/context/benchscope_item", "'" + item + "' is not \"flop\"");
+  const bool items_are_flop = item == "flop";
   if (r.optional_string(context, "/context", "library_build_type") == "debug")
     batch.warnings.push_back(r.where("/context/library_build_type") +
                              ": ***WARNING*** Library was built as DEBUG. Timings may be affected.");
@@ -427,7 +433,8 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
         continue;
       }
       if (!value.is_number()) continue;  // objects/arrays are not counters in any known version
-      const CounterUnit unit = counter_unit(key);
+      CounterUnit unit = counter_unit(key);
+      if (key == "items_per_second" && items_are_flop) unit = {"FLOP/s", 1};
       if (unit.unit == "FLOP/s" && workers && !sweep_point(run_name, workers) && unswept_warned.insert(run_name).second)
         batch.warnings.push_back(r.where(at) + ": '" + run_name + "' has no argument " + std::to_string(*workers) +
                                  " that is an integer >= 1, so its FLOPS is no point of a workers sweep (kept as a "

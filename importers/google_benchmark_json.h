@@ -36,7 +36,8 @@ class GoogleBenchmarkJsonImporter final : public Importer {
 // one benchmark with two different `threads`, and the same repetition (or aggregate) of a benchmark twice with
 // different data; an identical repeated row is skipped with a warning. A context whose library_build_type is
 // "debug" gives Google Benchmark's own warning. Context fields (host_name, num_cpus, mhz_per_cpu, caches,
-// library_version, library_build_type, custom context keys) become provenance settings.
+// library_version, library_build_type, custom context keys) become provenance settings. items_per_second is in
+// FLOP/s when the context says benchscope_item = "flop", else in 1/s.
 ImportBatch parse_google_benchmark_json(std::string_view text, const std::string& file,
                                         const ImportLimits& limits = {}, const CancelToken* cancel = nullptr,
                                         const GoogleBenchmarkOptions& options = {});

@@ -414,6 +414,21 @@ class TestGoogleBenchmarkJson : public QObject {
     QCOMPARE(e.location().field, std::string("/benchmarks/0/FLOPS"));
   }
 
+  // items_per_second is a FLOP rate only when the context says an item is a FLOP (SetItemsProcessed(flops)).
+  void items_are_flop_only_when_the_file_says_so() {
+    const std::string rows = "\"benchmarks\":[{\"name\":\"BM/threads:2\",\"threads\":2,\"real_time\":1,\"cpu_time\":1,"
+                             "\"items_per_second\":3e9}]}";
+    auto batch = bs::parse_google_benchmark_json("{\"context\":{\"benchscope_item\":\"flop\"}," + rows, "i.json");
+    QCOMPARE(find(batch.result_sets[0], "BM/threads:2", "items_per_second")->unit, std::string("FLOP/s"));
+    const auto runs = bs::foreign_sweeps(batch.result_sets[0]);
+    QVERIFY(runs.size() == 1 && runs[0].samples.at(0).workers == 2 && runs[0].variant == "BM (items_per_second)");
+    batch = bs::parse_google_benchmark_json("{\"context\":{}," + rows, "i.json");
+    QCOMPARE(find(batch.result_sets[0], "BM/threads:2", "items_per_second")->unit, std::string("1/s"));
+    QVERIFY(bs::foreign_sweeps(batch.result_sets[0]).empty());
+    QCOMPARE(error_of("{\"context\":{\"benchscope_item\":\"byte\"}," + rows).location().field,
+             std::string("/context/benchscope_item"));
+  }
+
   // A NaN FLOPS counter is missing data: no point, never a 0 FLOPS point.
   void nan_flops_is_missing_not_zero() {
     const std::string row = "\"name\":\"BM/threads:%\",\"run_type\":\"iteration\",\"threads\":%,\"real_time\":1,"
