@@ -5,8 +5,13 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstring>
+#include <cstdint>
+#include <limits>
 #include <map>
+#include <set>
 
+#include "analysis/foreign_sweeps.h"
 #include "json_access.h"
 
 namespace bs {
@@ -98,6 +103,9 @@ std::size_t quote_non_finite_tokens(std::string& text) {
   return replaced;
 }
 
+// What quote_non_finite_tokens leaves of NaN, -NaN, Infinity and -Infinity once read back as strings.
+bool was_non_finite(const std::string& s) { return s == "a" || s == "Na" || s == "nfinit" || s == "Infinit"; }
+
 class MeasurementTable {
  public:
   Measurement& at(const std::string& name, const std::string& metric, const std::string& unit) {
@@ -121,7 +129,43 @@ bool flag(const json& row, const char* key) {
   return it != row.end() && it->is_boolean() && it->get<bool>();
 }
 
-ResultSet result_set_from_context(const Reader& r, const json& context, const std::string& file) {
+// "L1 Data 32 KiB (x2)", as Google Benchmark's console header prints a cache.
+std::string cache_text(const json& c) {
+  if (!c.is_object()) return {};
+  auto str = [&](const char* key) {
+    const auto it = c.find(key);
+    return it != c.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  auto num = [&](const char* key) -> std::optional<double> {
+    const auto it = c.find(key);
+    if (it == c.end() || !it->is_number()) return std::nullopt;
+    return it->get<double>();
+  };
+  std::string out = "L" + (num("level") ? std::to_string(std::llround(*num("level"))) : std::string("?")) + " " + str("type");
+  if (const auto size = num("size"); size && *size > 0) {
+    const double kib = *size / 1024.0;
+    out += kib >= 1024 && std::fmod(kib, 1024.0) == 0 ? " " + std::to_string(std::llround(kib / 1024)) + " MiB"
+                                                       : " " + std::to_string(std::llround(kib)) + " KiB";
+  }
+  if (const auto sharing = num("num_sharing"); sharing && *sharing > 1)
+    out += " (x" + std::to_string(std::llround(*sharing)) + ")";
+  return out;
+}
+
+std::string scalar_text(const json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_number_integer()) return v.dump();
+  if (v.is_number()) {
+    const double d = v.get<double>();
+    if (d == std::floor(d) && std::abs(d) < 1e15) return std::to_string(std::llround(d));
+    return v.dump();
+  }
+  return {};
+}
+
+ResultSet result_set_from_context(const Reader& r, const json& context, const std::string& file,
+                                  const WorkersArgument& workers) {
   ResultSet set;
   set.platform = r.optional_string(context, "/context", "host_name");
   if (set.platform.empty()) set.platform = "unknown host";
@@ -133,19 +177,80 @@ ResultSet result_set_from_context(const Reader& r, const json& context, const st
   set.device_kind = DeviceKind::Cpu;
   set.backend = "Google Benchmark";
   set.source_format = "google-benchmark-json";
-  set.provenance.origin = DataOrigin::Measured;
-  set.provenance.host = set.platform == "unknown host" ? std::string() : set.platform;
-  set.provenance.date = r.optional_string(context, "/context", "date");
-  set.provenance.tool = "google-benchmark";
-  if (const json* v = r.optional(context, "library_version"); v && v->is_string() && !v->get<std::string>().empty())
-    set.provenance.tool += " " + v->get<std::string>();
+  Provenance& p = set.provenance;
+  p.origin = DataOrigin::Measured;
+  p.host = set.platform == "unknown host" ? std::string() : set.platform;
+  p.date = r.optional_string(context, "/context", "date");
+  p.tool = "google-benchmark";
+  const std::string version = r.optional_string(context, "/context", "library_version");
+  if (!version.empty()) p.tool += " " + version;
+  const std::string build = r.optional_string(context, "/context", "library_build_type");
   std::string note = "executable: " + r.optional_string(context, "/context", "executable", "unknown") +
-                     ", library build type: " + r.optional_string(context, "/context", "library_build_type", "unknown");
+                     ", library build type: " + (build.empty() ? std::string("unknown") : build);
   if (const json* scaling = r.optional(context, "cpu_scaling_enabled"); scaling && scaling->is_boolean())
     note += scaling->get<bool>() ? ", CPU frequency scaling was on (timings may be noisy)" : ", CPU scaling off";
-  set.provenance.note = note;
-  set.provenance.source_file = file;
+  p.note = note;
+  p.source_file = file;
+  // Everything the context states about the machine, in file order: the library's own keys and custom context
+  // (--benchmark_context=key=value, AddCustomContext), which labs use for compiler, clocks, power mode.
+  for (const auto& [key, value] : context.items()) {
+    if (key == "date") continue;  // already the provenance date
+    if (key == "caches" && value.is_array()) {
+      std::string caches;
+      for (const json& c : value) {
+        const std::string text = cache_text(c);
+        if (text.empty()) continue;
+        caches += (caches.empty() ? "" : ", ") + text;
+      }
+      if (!caches.empty()) p.settings.emplace_back("caches", caches);
+      continue;
+    }
+    if (key == "load_avg" && value.is_array()) {
+      std::string loads;
+      for (const json& v : value)
+        if (v.is_number()) loads += (loads.empty() ? "" : " ") + scalar_text(v);
+      if (!loads.empty()) p.settings.emplace_back(key, loads);  // Windows writes []
+      continue;
+    }
+    const std::string text = scalar_text(value);
+    if (!text.empty()) p.settings.emplace_back(key, text);
+  }
+  p.settings.emplace_back(std::string(kWorkersFromSetting), workers_from_text(workers));
   return set;
+}
+
+// The worker argument: the caller's option, else the custom context key.
+WorkersArgument workers_argument_of(const Reader& r, const json& context, const GoogleBenchmarkOptions& options) {
+  if (options.workers_argument) return options.workers_argument;
+  const json* v = r.optional(context, "benchscope_workers_argument");
+  if (!v) return std::nullopt;
+  const std::string at = "/context/benchscope_workers_argument";
+  if (v->is_string()) {
+    const std::string text = v->get<std::string>();
+    if (text == "threads") return std::nullopt;
+    if (text.empty() || text.size() > 3 || text.find_first_not_of("0123456789") != std::string::npos)
+      r.fail(ImportErrorCategory::InvalidValue, at, "'" + text + "' is neither \"threads\" nor an argument index 0-999");
+    return std::stoi(text);
+  }
+  return static_cast<int>(r.integer(*v, at, 0, 999));
+}
+
+// Integer fields of a row. NaN / Infinity arrive here as the strings quote_non_finite_tokens made of them.
+std::optional<std::int64_t> optional_count(const Reader& r, const json& row, const std::string& at, const char* key,
+                                           std::int64_t min) {
+  const json* v = r.optional(row, key);
+  if (!v) return std::nullopt;
+  const std::string field = child(at, key);
+  if (v->is_string() && was_non_finite(v->get<std::string>()))
+    r.fail(ImportErrorCategory::InvalidValue, field, "is not a finite number (NaN or Infinity)");
+  return r.integer(*v, field, min, std::numeric_limits<std::int64_t>::max());
+}
+
+// The threads:N segment of a benchmark name, when it has one.
+std::optional<std::int64_t> threads_in_name(const std::string& name) {
+  const auto point = sweep_point(name, std::nullopt);
+  if (!point || point->family == name) return std::nullopt;
+  return point->workers;
 }
 
 }  // namespace
@@ -174,7 +279,8 @@ ImportBatch GoogleBenchmarkJsonImporter::parse(const std::string& path, const Im
 }
 
 ImportBatch parse_google_benchmark_json(std::string_view original, const std::string& file,
-                                        const ImportLimits& limits, const CancelToken* cancel) {
+                                        const ImportLimits& limits, const CancelToken* cancel,
+                                        const GoogleBenchmarkOptions& options) {
   if (original.starts_with("\xEF\xBB\xBF")) original.remove_prefix(3);
   std::string text(original);
   quote_non_finite_tokens(text);
@@ -185,15 +291,33 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
   const json& rows = r.require_array(r.require(doc, "", "benchmarks"), "/benchmarks");
 
   ImportBatch batch;
-  ResultSet set = result_set_from_context(r, context, file);
+  const WorkersArgument workers = workers_argument_of(r, context, options);
+  ResultSet set = result_set_from_context(r, context, file, workers);
+  // items_per_second counts whatever the benchmark calls an item; it is a FLOP rate only when the file says each
+  // item is one floating-point operation (--benchmark_context=benchscope_item=flop, SetItemsProcessed(flops)).
+  const std::string item = r.optional_string(context, "/context", "benchscope_item");
+  if (!item.empty() && item != "flop")
+    r.fail(ImportErrorCategory::InvalidValue, "/context/benchscope_item", "'" + item + "' is not \"flop\"");
+  const bool items_are_flop = item == "flop";
+  if (r.optional_string(context, "/context", "library_build_type") == "debug")
+    batch.warnings.push_back(r.where("/context/library_build_type") +
+                             ": ***WARNING*** Library was built as DEBUG. Timings may be affected.");
   MeasurementTable table;
   std::size_t values = 0;
+  // Which row first gave each repetition / aggregate of a benchmark, and each benchmark's thread count: the same
+  // one twice with different data is refused, since no reading of the file says which is right.
+  std::map<std::pair<std::string, std::string>, std::size_t> first_row;
+  std::map<std::string, std::pair<std::int64_t, std::size_t>> threads_of;  // run_name -> (threads, row)
+  std::set<std::string> iteration_names;                                   // for aggregates of versions < 1.5
+  std::set<std::string> unswept_warned;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (cancel && (i & 0x3FF) == 0) cancel->throw_if_cancelled();
     const std::string at = child("/benchmarks", i);
     const json& row = r.require_object(rows[i], at);
     const std::string name = r.require_string(row, at, "name");
-    const std::string run_name = r.optional_string(row, at, "run_name", name);
+    std::string run_name = r.optional_string(row, at, "run_name", name);
+    (void)optional_count(r, row, at, "iterations", 0);  // checked only: times are already per iteration
+    const auto threads = optional_count(r, row, at, "threads", 1);
     if (flag(row, "error_occurred")) {
       batch.warnings.push_back(r.where(at) + ": benchmark '" + name + "' reported an error (" +
                                r.optional_string(row, at, "error_message", "no message") + "); row skipped");
@@ -204,25 +328,79 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
                                r.optional_string(row, at, "skip_message", "no message") + ")");
       continue;
     }
-    const std::string run_type = r.optional_string(row, at, "run_type", "iteration");
+    const json* run_type_value = r.optional(row, "run_type");
+    std::string run_type = r.optional_string(row, at, "run_type", "iteration");
     if (run_type != "iteration" && run_type != "aggregate")
       r.fail(ImportErrorCategory::InvalidValue, child(at, "run_type"),
              "'" + run_type + "' is neither \"iteration\" nor \"aggregate\"");
-    const std::string aggregate = r.optional_string(row, at, "aggregate_name");
+    std::string aggregate = r.optional_string(row, at, "aggregate_name");
+    // Before version 1.5 aggregates had no run_type: a row "BM_X_mean" after rows named "BM_X" is one.
+    if (!run_type_value && !row.contains("run_name")) {
+      for (const char* suffix : {"_mean", "_median", "_stddev", "_cv"}) {
+        const std::string base = name.size() > std::strlen(suffix) ? name.substr(0, name.size() - std::strlen(suffix)) : "";
+        if (name.ends_with(suffix) && iteration_names.count(base)) {
+          run_type = "aggregate";
+          aggregate = suffix + 1;
+          run_name = base;
+        }
+      }
+    }
     const bool is_aggregate = run_type == "aggregate";
     if (is_aggregate && aggregate.empty())
       r.fail(ImportErrorCategory::MissingField, child(at, "aggregate_name"), "an aggregate row needs its name");
     // BigO / RMS complexity rows describe a fit over arguments, not a measurement of this run.
     if (is_aggregate && (aggregate == "BigO" || aggregate == "RMS" || row.contains("big_o") || row.contains("rms")))
       continue;
+    if (!is_aggregate) iteration_names.insert(run_name);
+
+    if (threads) {
+      if (const auto named = threads_in_name(run_name); named && *named != *threads)
+        r.fail(ImportErrorCategory::InvalidValue, child(at, "threads"),
+               std::to_string(*threads) + " disagrees with the name '" + run_name + "' (threads:" +
+                   std::to_string(*named) + ")");
+      const auto [it, added] = threads_of.emplace(run_name, std::make_pair(*threads, i));
+      if (!added && it->second.first != *threads)
+        r.fail(ImportErrorCategory::InvalidValue, child(at, "threads"),
+               "benchmark '" + run_name + "' ran with " + std::to_string(it->second.first) + " threads in " +
+                   r.where(child("/benchmarks", it->second.second)) + " and with " + std::to_string(*threads) +
+                   " here; one benchmark has one thread count");
+    }
+    // One row per repetition (repetition_index, version >= 1.5) and per aggregate of a benchmark.
+    std::string slot;
+    if (is_aggregate) {
+      slot = "aggregate " + aggregate;
+    } else if (const auto rep = optional_count(r, row, at, "repetition_index", 0)) {
+      slot = "repetition " + std::to_string(*rep);
+    }
+    if (!slot.empty()) {
+      const auto [it, added] = first_row.emplace(std::make_pair(run_name, slot), i);
+      if (!added) {
+        const std::string first = r.where(child("/benchmarks", it->second));
+        if (rows[it->second] != row)
+          r.fail(ImportErrorCategory::InvalidValue, at,
+                 "benchmark '" + run_name + "' has its " + slot + " twice with different data (first at " + first +
+                     "); the file does not say which is right");
+        batch.warnings.push_back(r.where(at) + ": benchmark '" + run_name + "' repeats its " + slot +
+                                 " identically (first at " + first + "); the copy is skipped");
+        continue;
+      }
+    }
     const double scale = time_scale(r, r.optional_string(row, at, "time_unit", "ns"), child(at, "time_unit"));
     // cv rows (aggregate_unit "percentage", or named cv in versions before that key) are ratios, not times.
     const bool ratio = r.optional_string(row, at, "aggregate_unit") == "percentage" || aggregate == "cv";
+    // How many repetitions an aggregate summarises: its "repetitions" (since 1.5). Older aggregates carry the
+    // first repetition's iteration count instead (google/benchmark#586), so their n is the number of repetition
+    // rows read, which summarize_measurement() uses when no ("repetitions", n) is recorded.
+    const std::optional<std::int64_t> reps =
+        is_aggregate ? optional_count(r, row, at, "repetitions", 1) : std::nullopt;
 
     auto record = [&](const std::string& metric, const std::string& unit, double value, double to_si) {
       Measurement& m = table.at(run_name, metric, unit);
       if (is_aggregate) {
         m.reported_aggregates.emplace_back(aggregate, ratio ? value : value * to_si);
+        const bool has_n = std::any_of(m.reported_aggregates.begin(), m.reported_aggregates.end(),
+                                       [](const auto& a) { return a.first == "repetitions"; });
+        if (reps && !has_n) m.reported_aggregates.emplace_back("repetitions", static_cast<double>(*reps));
         return;
       }
       if (++values > limits.max_samples)
@@ -251,11 +429,16 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
       if (is_reserved(key) || value.is_boolean() || value.is_null()) continue;
       if (value.is_string()) {
         batch.warnings.push_back(r.where(child(at, key)) + ": counter '" + key + "' of '" + name +
-                                 "' is not a finite number (NaN, Infinity or text); left out");
+                                 "' is not a finite number (NaN, Infinity or text); left out as missing data");
         continue;
       }
       if (!value.is_number()) continue;  // objects/arrays are not counters in any known version
-      const CounterUnit unit = counter_unit(key);
+      CounterUnit unit = counter_unit(key);
+      if (key == "items_per_second" && items_are_flop) unit = {"FLOP/s", 1};
+      if (unit.unit == "FLOP/s" && workers && !sweep_point(run_name, workers) && unswept_warned.insert(run_name).second)
+        batch.warnings.push_back(r.where(at) + ": '" + run_name + "' has no argument " + std::to_string(*workers) +
+                                 " that is an integer >= 1, so its FLOPS is no point of a workers sweep (kept as a "
+                                 "throughput result)");
       record(key, unit.unit, r.number(value, child(at, key)), unit.scale);
     }
   }

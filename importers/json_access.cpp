@@ -2,14 +2,26 @@
 #include "json_access.h"
 
 #include <cmath>
+#include <cstring>
+#include <functional>
+#include <unordered_map>
+#include <vector>
 
 namespace bs::json_access {
 namespace {
 
-// Thrown from the parser callback to stop building the tree at once.
+// Thrown from the parser callback to stop building the tree at once. A duplicate key names the object that holds
+// it (`pointer`) and the key, so the error can point at the key's second occurrence.
 struct StopParsing {
+  StopParsing(ImportErrorCategory c, std::string why) : category(c), reason(std::move(why)) {}
+  StopParsing(std::string why, std::string object, std::string key)
+      : category(ImportErrorCategory::InvalidValue), reason(std::move(why)), pointer(std::move(object)),
+        duplicate_key(std::move(key)), duplicate(true) {}
   ImportErrorCategory category;
   std::string reason;
+  std::string pointer;
+  std::string duplicate_key;
+  bool duplicate = false;
 };
 
 bool is_json_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
@@ -93,7 +105,7 @@ std::string unescape_pointer_token(std::string_view token) {
 // A forward-only reader over a document that nlohmann already accepted, used to map pointers to offsets.
 class Scanner {
  public:
-  explicit Scanner(std::string_view text) : t_(text) {}
+  explicit Scanner(std::string_view text, std::size_t start = 0) : t_(text), i_(start) {}
   std::size_t pos() const { return i_; }
   bool at(char c) const { return i_ < t_.size() && t_[i_] == c; }
   void advance() { ++i_; }
@@ -166,6 +178,100 @@ bool enter_member(Scanner& s, const std::string& key) {
   }
 }
 
+// Offset of the `occurrence`-th (0-based) member named `key` of the object starting at `object_offset`; the
+// object's offset when there are fewer.
+std::size_t offset_of_member(std::string_view text, std::size_t object_offset, const std::string& key,
+                             int occurrence) {
+  Scanner s(text, object_offset);
+  if (!s.at('{')) return object_offset;
+  s.advance();
+  for (;;) {
+    s.skip_space();
+    if (!s.at('"')) return object_offset;
+    const std::size_t at = s.pos();
+    const std::string name = s.read_string();
+    if (name == key && occurrence-- == 0) return at;
+    s.skip_space();
+    if (!s.at(':')) return object_offset;
+    s.advance();
+    s.skip_value();
+    s.skip_space();
+    if (!s.at(',')) return object_offset;
+    s.advance();
+  }
+}
+
+// Tracks the keys of every open object while nlohmann builds the tree, because nlohmann keeps the last of two
+// equal keys silently and the first value would be lost without a word. Two equal keys with the same scalar value
+// are harmless and accepted; different values, or an object/array twice, stop the parse.
+class DuplicateKeyGuard {
+ public:
+  void open(bool is_object) {
+    Frame f;
+    f.object = is_object;
+    if (!stack_.empty()) {
+      const Frame& parent = stack_.back();
+      f.pointer = parent.object ? child(parent.pointer, parent.key) : child(parent.pointer, parent.index);
+    }
+    stack_.push_back(std::move(f));
+  }
+  void close() {
+    stack_.pop_back();
+    member_done(kContainer);
+  }
+  void key(const json& parsed) {
+    if (!stack_.empty() && parsed.is_string()) stack_.back().key = parsed.get<std::string>();
+  }
+  void value(const json& parsed) { member_done(fingerprint(parsed)); }
+
+ private:
+  static constexpr std::uint64_t kContainer = ~std::uint64_t{0};
+  struct Frame {
+    bool object = false;
+    std::string pointer;
+    std::string key;        // the key whose value is being read (objects)
+    std::size_t index = 0;  // the element being read (arrays)
+    std::unordered_map<std::string, std::uint64_t> seen;
+  };
+
+  static std::uint64_t fingerprint(const json& v) {
+    std::uint64_t h = static_cast<std::uint64_t>(v.type()) * 0x9E3779B97F4A7C15ull;
+    if (v.is_number_float()) {
+      const double d = v.get<double>();
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &d, sizeof bits);
+      h ^= bits;
+    } else if (v.is_number_unsigned()) {
+      h ^= v.get<std::uint64_t>();
+    } else if (v.is_number_integer()) {
+      h ^= static_cast<std::uint64_t>(v.get<std::int64_t>());
+    } else if (v.is_boolean()) {
+      h ^= v.get<bool>() ? 1u : 2u;
+    } else if (v.is_string()) {
+      h ^= std::hash<std::string>{}(v.get_ref<const std::string&>());
+    }
+    return h == kContainer ? h - 1 : h;
+  }
+
+  void member_done(std::uint64_t print) {
+    if (stack_.empty()) return;
+    Frame& f = stack_.back();
+    if (!f.object) {
+      ++f.index;
+      return;
+    }
+    const auto [it, inserted] = f.seen.emplace(f.key, print);
+    if (inserted || (print == it->second && print != kContainer)) return;
+    throw StopParsing{"key \"" + f.key + "\" appears twice in this object with " +
+                          (print == kContainer || it->second == kContainer ? std::string("an object or array")
+                                                                           : std::string("different values")) +
+                          "; JSON does not say which one counts (a parser silently keeps one), so the file is refused",
+                      f.pointer, f.key};
+  }
+
+  std::vector<Frame> stack_;
+};
+
 bool enter_element(Scanner& s, const std::string& token) {
   if (token.empty() || token.find_first_not_of("0123456789") != std::string::npos) return false;
   const std::size_t index = std::stoull(token);
@@ -217,8 +323,15 @@ std::size_t offset_of_pointer(std::string_view text, std::string_view pointer) {
 
 json parse(std::string_view text, const std::string& file, const ImportLimits& limits, const CancelToken* cancel) {
   std::size_t values = 0;
-  const json::parser_callback_t guard = [&](int depth, json::parse_event_t event, json&) {
-    if (event == json::parse_event_t::object_end || event == json::parse_event_t::array_end) return true;
+  DuplicateKeyGuard duplicates;
+  const json::parser_callback_t guard = [&](int depth, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end: duplicates.close(); return true;
+      case json::parse_event_t::key: duplicates.key(parsed); break;
+      case json::parse_event_t::value: duplicates.value(parsed); break;
+      default: break;
+    }
     // The depth argument is the nesting of the container being opened: checked before its children exist.
     if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
         static_cast<std::size_t>(depth) >= limits.max_json_depth)
@@ -228,11 +341,19 @@ json parse(std::string_view text, const std::string& file, const ImportLimits& l
       throw StopParsing{ImportErrorCategory::TooLarge, "more than " + std::to_string(limits.max_json_values) +
                                                            " JSON values in one document (the documented limit)"};
     if (cancel && (values & 0xFFFF) == 0) cancel->throw_if_cancelled();
+    if (event == json::parse_event_t::object_start) duplicates.open(true);
+    if (event == json::parse_event_t::array_start) duplicates.open(false);
     return true;
   };
   try {
     return json::parse(text.begin(), text.end(), guard, /*allow_exceptions=*/true, /*ignore_comments=*/false);
   } catch (const StopParsing& stop) {
+    if (stop.duplicate) {
+      const std::size_t object = offset_of_pointer(text, stop.pointer);
+      ErrorLocation loc = location_of_offset(file, text, offset_of_member(text, object, stop.duplicate_key, 1));
+      loc.field = child(stop.pointer, stop.duplicate_key);
+      throw ImportError(stop.category, loc, stop.reason);
+    }
     const std::size_t at = stop.category == ImportErrorCategory::TooDeep ? offset_of_depth(text, limits.max_json_depth)
                                                                           : text.size();
     ErrorLocation loc = location_of_offset(file, text, at);

@@ -19,7 +19,10 @@ using json = nlohmann::json;
 // Parses `text`, refusing nesting deeper than limits.max_json_depth and more than limits.max_json_values values
 // while the document is being built (never after). Syntax errors carry line:column computed from the byte offset;
 // a truncated document says "unexpected end of file"; NaN/Infinity literals are syntax errors and numbers that
-// overflow a double (1e999) are InvalidValue with their location. Polls `cancel` while parsing when given.
+// overflow a double (1e999) are InvalidValue with their location. A key that appears twice in one object with
+// different values (or an object/array twice) is InvalidValue naming the key's second occurrence: nlohmann would
+// keep the last silently. The same key twice with the same scalar value loses nothing and is accepted. Polls
+// `cancel` while parsing when given.
 json parse(std::string_view text, const std::string& file, const ImportLimits& limits,
            const CancelToken* cancel = nullptr);
 

@@ -20,6 +20,10 @@ namespace bs::ui {
 namespace {
 
 QString series_name(const FlopsRun& r) {
+  // A Google Benchmark sweep has no D: its variant (family and counter) names it.
+  if (r.dims <= 0)
+    return QStringLiteral("%1 · %2 (%3)").arg(QString::fromStdString(r.device), QString::fromStdString(r.backend),
+                                              QString::fromStdString(r.variant));
   QString name = QStringLiteral("%1 · %2 · D=%3").arg(QString::fromStdString(r.device), QString::fromStdString(r.backend)).arg(r.dims);
   if (r.variant != "paper") name += QStringLiteral(" (%1)").arg(QString::fromStdString(r.variant));
   return name;
@@ -212,10 +216,11 @@ QString FlopsPlot::read_out_at(const QPointF& pixel) const {
       const int e = si_exponent(f.mean);
       const double sc = std::pow(10.0, e);
       const QString unit = QString::fromUtf8(si_prefix(e).data()) + "FLOPS";
-      text = QStringLiteral("%1\n%2 on %3, D = %4\nWorkers: %L5\n%6")
+      text = QStringLiteral("%1\n%2 on %3, %4\nWorkers: %L5\n%6")
                  .arg(QString::fromStdString(s.run->run.device), QString::fromStdString(s.run->run.backend),
                       QString::fromStdString(s.run->run.platform))
-                 .arg(s.run->run.dims)
+                 .arg(s.run->run.dims > 0 ? QStringLiteral("D = %1").arg(s.run->run.dims)
+                                          : QString::fromStdString(s.run->run.variant))
                  .arg(static_cast<qlonglong>(curve[index].workers))
                  .arg(f.n > 1 ? QString::fromStdString(format_mean_sd(f.mean / sc, f.sd / sc, f.n, unit.toStdString(), 3))
                               : QStringLiteral("%1 %2 (n = 1)").arg(f.mean / sc, 0, 'f', 3).arg(unit));

@@ -34,7 +34,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
     switch (index.column()) {
       case Device: return qs(r.device);
       case Backend: return r.variant == "paper" ? qs(r.backend) : qs(r.backend + " (" + r.variant + ")");
-      case Dims: return r.dims;
+      case Dims: return r.dims > 0 ? QVariant(r.dims) : QVariant(QStringLiteral("–"));  // "–": another tool's sweep
       case Peak: {
         QString s = qs(format_si(r.peak.flops, "FLOPS"));
         if (r.peak.at_peak.n > 1) s += QStringLiteral(" ± ") + qs(format_si(r.peak.at_peak.sd, "FLOPS"));

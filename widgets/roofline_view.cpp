@@ -139,7 +139,7 @@ void RooflineView::redraw() {
     const auto c = std::find_if(ceilings_.begin(), ceilings_.end(), [&](const RooflineCeiling& x) {
       return x.platform == row.platform && x.device == row.device;
     });
-    if (c == ceilings_.end()) continue;
+    if (c == ceilings_.end() || row.dims <= 0) continue;  // dims 0: another tool's sweep, intensity unknown
     const double intensity = rotation_intensity(row.dims, row.iterations);
     const double flop_count = rotation_flop_count(row.dims, row.iterations, row.peak.workers);
     RooflinePoint p = place_on_roofline(*c, row.device + " " + row.backend + " D=" + std::to_string(row.dims),

@@ -77,11 +77,15 @@ void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
     QStandardItem* device = child_named(platform, QString::fromStdString(r.device));
     device->setIcon(swatch(device_color(s.color_index)));
     QStandardItem* backend = child_named(device, QString::fromStdString(r.backend));
-    auto* item = new QStandardItem(QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")
-                                       .arg(r.dims)
-                                       .arg(QString::fromStdString(r.variant))
-                                       .arg(r.iterations)
-                                       .arg(r.samples.size()));
+    // A sweep from another tool (Google Benchmark) states FLOPS, not D and N: its family and counter name it.
+    auto* item = new QStandardItem(r.dims > 0 ? QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")
+                                                    .arg(r.dims)
+                                                    .arg(QString::fromStdString(r.variant))
+                                                    .arg(r.iterations)
+                                                    .arg(r.samples.size())
+                                              : QStringLiteral("%1 · %2 pts")
+                                                    .arg(QString::fromStdString(r.variant))
+                                                    .arg(r.samples.size()));
     item->setData(QVariant::fromValue<qint64>(s.id), kRunIdRole);
     item->setCheckable(true);
     item->setEditable(false);

@@ -33,8 +33,8 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ResultPeak>&
                      {"device_kind", std::string(to_string(r.device_kind))},
                      {"backend", r.backend},
                      {"variant", r.variant},
-                     {"dims", r.dims},
-                     {"iterations", r.iterations},
+                     {"dims", r.dims > 0 ? json(r.dims) : json(nullptr)},
+                     {"iterations", r.iterations > 0 ? json(r.iterations) : json(nullptr)},
                      {"peak_flops", r.peak.flops},
                      {"workers_at_peak", r.peak.workers},
                      {"n", r.peak.at_peak.n},
@@ -83,8 +83,9 @@ void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std:
   for (const PeakRow& r : rows) {
     std::string peak = format_si(r.peak.flops, "FLOPS");
     if (r.peak.at_peak.n > 1) peak += " \xC2\xB1 " + format_si(r.peak.at_peak.sd, "FLOPS");
+    // A sweep from another tool states FLOPS, not D and N: "-".
     table.add({r.platform, r.device, std::string(to_string(r.device_kind)), r.backend, r.variant,
-               std::to_string(r.dims), peak, std::to_string(r.peak.workers), std::to_string(r.peak.at_peak.n),
+               r.dims > 0 ? std::to_string(r.dims) : "-", peak, std::to_string(r.peak.workers), std::to_string(r.peak.at_peak.n),
                r.reported_flops ? format_si(*r.reported_flops, "FLOPS") : "-", ratio_text(r.ratio_to_reported),
                percent_text(r.fraction_of_theoretical), std::string(to_string(r.origin))});
   }

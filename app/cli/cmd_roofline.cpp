@@ -41,6 +41,7 @@ int run_roofline(const std::vector<std::string>& raw, std::ostream& out) {
   for (const PeakRow& row : peak_table(data.runs))
     for (const RooflineCeiling& c : ceilings) {
       if (c.platform != row.platform || c.device != row.device) continue;
+      if (row.dims <= 0) continue;  // another tool's sweep (Google Benchmark): its intensity is unknown
       const double intensity = rotation_intensity(row.dims, row.iterations);
       const double flop_count = rotation_flop_count(row.dims, row.iterations, row.peak.workers);
       rotation.emplace_back(row, place_on_roofline(c, row.device + " " + row.backend + " D=" + std::to_string(row.dims),

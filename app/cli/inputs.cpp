@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "analysis/foreign_sweeps.h"
 #include "import_error.h"
 #include "importer.h"
 #include "store/workspace.h"
@@ -48,6 +49,14 @@ bool looks_like_workspace(const std::string& path) {
   return f.gcount() == 16 && std::string_view(magic, 16) == std::string_view("SQLite format 3\0", 16);
 }
 
+namespace {
+// FLOPS sweeps inside other tools' results (Google Benchmark threads:N families) join the runs, as in the GUI.
+void add_foreign_sweeps(LoadedData& data) {
+  std::vector<FlopsRun> sweeps = foreign_sweeps(data.result_sets);
+  std::move(sweeps.begin(), sweeps.end(), std::back_inserter(data.runs));
+}
+}  // namespace
+
 LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken& cancel) {
   LoadedData data;
   if (paths.size() == 1 && looks_like_workspace(paths[0])) {
@@ -56,6 +65,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
     for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
     for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
+    add_foreign_sweeps(data);
     return data;
   }
   for (const InputFile& in : expand_inputs(paths)) {
@@ -73,6 +83,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
     std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
   }
+  add_foreign_sweeps(data);
   return data;
 }
 

@@ -18,6 +18,7 @@
 #include <qcustomplot.h>
 
 #include "analysis/flops.h"
+#include "analysis/foreign_sweeps.h"
 #include "flops_plot.h"
 #include "import_controller.h"
 #include "kernel_runner.h"
@@ -37,6 +38,9 @@
 #include "frames_view.h"
 
 namespace bs::ui {
+namespace {
+constexpr std::int64_t kFirstForeignSweepId = -1'000'000;
+}  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
@@ -211,6 +215,14 @@ void MainWindow::show_import_report(const ImportReport& r) {
 
 void MainWindow::reload() {
   runs_ = workspace_ ? workspace_->runs() : std::vector<StoredRun>{};
+  // FLOPS sweeps inside stored Google Benchmark results (analysis/foreign_sweeps.h) are runs in every view. They
+  // are derived, not stored, so their ids are negative and far below those of the sweep running now (-1, -2, ...);
+  // result sets come in id order, so a later import does not shift the ids of earlier sweeps.
+  if (workspace_) {
+    std::int64_t id = kFirstForeignSweepId;
+    for (const StoredResultSet& s : workspace_->result_sets())
+      for (FlopsRun& run : foreign_sweeps(s.set)) runs_.push_back(StoredRun{id--, s.import_id, s.device_id, s.color_index, std::move(run)});
+  }
   tree_->set_runs(runs_);
   std::vector<FlopsRun> all;
   std::vector<std::pair<std::string, int>> platform_colors;

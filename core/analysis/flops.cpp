@@ -15,6 +15,11 @@ std::vector<CurvePoint> flops_curve(const FlopsRun& run) {
   std::vector<CurvePoint> curve;
   curve.reserve(run.samples.size());
   for (const WorkerSample& s : run.samples) {
+    if (s.stated_flops) {
+      const StatedFlops& f = *s.stated_flops;
+      curve.push_back({s.workers, {f.n, f.mean, f.sd, f.min, f.max}});
+      continue;
+    }
     RunningStats stats;
     for (double t : s.seconds) stats.add(rotation_flops(run.dims, run.iterations, s.workers, t));
     curve.push_back({s.workers, {stats.count(), stats.mean(), stats.sd(), stats.min(), stats.max()}});

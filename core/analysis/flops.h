@@ -19,6 +19,7 @@ double rotation_flop_count(int dims, std::int64_t iterations, std::int64_t worke
 double rotation_flops(int dims, std::int64_t iterations, std::int64_t workers, double seconds) noexcept;
 
 // FLOPS at one worker count over its repetitions: each repetition gives 6DNW/t_i; mean and SD are over those.
+// A point with stated_flops (a sweep derived from another tool) gives those instead.
 struct CurvePoint {
   std::int64_t workers = 0;
   Summary flops;

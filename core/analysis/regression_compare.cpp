@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "analysis/flops.h"
+#include "analysis/foreign_sweeps.h"
 
 namespace bs {
 namespace {
@@ -71,10 +72,13 @@ MeasureComparison only_in(std::string key, std::string measure, std::string unit
 
 void compare_runs(std::span<const FlopsRun> ra, std::span<const FlopsRun> rb, const CompareOptions& o,
                   std::vector<MeasureComparison>& out) {
+  // Sweeps derived from another tool's results hold no repetitions here; their result sets are compared instead.
   std::map<std::string, const FlopsRun*> by_key_b;
-  for (const auto& r : rb) by_key_b.emplace(run_key(r), &r);
+  for (const auto& r : rb)
+    if (!is_foreign_sweep(r)) by_key_b.emplace(run_key(r), &r);
   std::map<std::string, bool> matched;
   for (const auto& r : ra) {
+    if (is_foreign_sweep(r)) continue;
     const std::string key = run_key(r);
     const auto peak = find_peak(r);
     if (!peak) continue;
@@ -95,6 +99,7 @@ void compare_runs(std::span<const FlopsRun> ra, std::span<const FlopsRun> rb, co
     }
   }
   for (const auto& r : rb) {
+    if (is_foreign_sweep(r)) continue;
     const std::string key = run_key(r);
     const auto peak = find_peak(r);
     if (peak && !matched.count(key))

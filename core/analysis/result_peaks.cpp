@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/result_peaks.h"
 
+#include "analysis/foreign_sweeps.h"
+
 #include <map>
 #include <utility>
 
@@ -22,10 +24,16 @@ std::vector<ResultPeak> result_peaks(std::span<const ResultSet> sets, const Resu
     // every time (vector compute first, then by precision as declared).
     std::map<std::pair<int, int>, ResultPeak> best;
     for (const Measurement& m : s.measurements) {
-      if (m.values.empty()) continue;
+      // A Google Benchmark counter that forms a workers sweep is a peak-table row (analysis/foreign_sweeps.h), not
+      // repeated here.
+      if (m.values.empty() || is_swept(s, m)) continue;
       const MeasureClass c = classify_measurement(m);
       if (!wanted(c, query)) continue;
-      const Summary sum = summarize(m.values);
+      // BenchScope's one definition of a figure: the mean over repetitions with n and SD (Google Benchmark's
+      // _mean / _stddev aggregates when the file has them), never the best repetition.
+      const auto stated = summarize_measurement(m);
+      if (!stated) continue;
+      const Summary sum{stated->n, stated->mean, stated->sd, stated->min, stated->max};
       const auto key = std::make_pair(static_cast<int>(c.kind), static_cast<int>(c.precision));
       const auto it = best.find(key);
       if (it == best.end() || sum.mean > it->second.summary.mean) best[key] = ResultPeak{&s, &m, c, sum};

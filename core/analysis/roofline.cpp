@@ -50,7 +50,8 @@ std::vector<RooflineCeiling> roofline_ceilings(std::span<const FlopsRun> runs, s
       c.peak_source = "theoretical peak (" + row.backend + ")";
     } else if (c.peak_source.rfind("theoretical", 0) != 0 && row.peak.flops > c.peak_flops) {
       c.peak_flops = row.peak.flops;
-      c.peak_source = "measured peak of " + row.backend + ", D = " + std::to_string(row.dims);
+      c.peak_source = "measured peak of " + row.backend +
+                      (row.dims > 0 ? ", D = " + std::to_string(row.dims) : " (" + row.variant + ")");
     }
   }
   for (const ResultSet& s : sets)

@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <stdexcept>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -209,6 +210,10 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
     if (cancel && ++rows % kCancelCheckRows == 0) cancel->throw_if_cancelled();
   };
   for (const FlopsRun& run : batch.runs) {
+    // A sweep derived from another tool's results has no timings to store; its ResultSet is stored instead.
+    for (const WorkerSample& s : run.samples)
+      if (s.stated_flops)
+        throw std::invalid_argument("a sweep derived from " + run.kernel + " results is not stored; store its result set");
     run_st.bind(1, import_id)
         .bind(2, devices.get(run.platform, run.device, run.device_kind))
         .bind(3, std::string_view(run.backend))

@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include "analysis/foreign_sweeps.h"
 #include "importer.h"
 
 #ifndef BENCHSCOPE_FUZZ_IMPORTER
@@ -57,8 +58,12 @@ void run_one(const std::uint8_t* data, std::size_t size) {
   const std::string_view id = BENCHSCOPE_FUZZ_IMPORTER;
   const CancelToken cancel;
   try {
+    // What every load does after an import: derive the FLOPS sweeps inside result sets (benchmark names parsed).
+    const auto derive = [](const ImportBatch& b) {
+      for (const ResultSet& s : b.result_sets) (void)foreign_sweeps(s);
+    };
     if (id == "any") {
-      (void)import_file(scratch_path(), cancel, fuzz_limits());
+      derive(import_file(scratch_path(), cancel, fuzz_limits()));
     } else if (id == "raw-bayer") {
       // A raw frame is two files: the input is "<sidecar JSON>\0<raw samples>" (no NUL: all sidecar, no samples).
       const std::string_view all(reinterpret_cast<const char*>(data), size);
@@ -78,7 +83,7 @@ void run_one(const std::uint8_t* data, std::size_t size) {
       (void)imp->sniff(text.substr(0, 64 * 1024), scratch_path());
       // As import_file does before any text importer runs; binary formats (frames) skip the text check.
       if (!imp->binary()) check_text(text.substr(0, 64 * 1024), scratch_path());
-      (void)imp->parse(scratch_path(), fuzz_limits(), cancel);
+      derive(imp->parse(scratch_path(), fuzz_limits(), cancel));
     }
   } catch (const ImportError&) {
     // The expected way to reject a bad file.

@@ -28,6 +28,7 @@ class TestBadCorpus : public QObject {
         QVERIFY2(what.starts_with(c.path), what.c_str());
         QVERIFY2(!e.reason().empty() && e.reason().size() > 8, what.c_str());
         if (c.place) QVERIFY2(e.location().line > 0 || !e.location().field.empty(), what.c_str());
+        QVERIFY2(what.find(c.contains) != std::string::npos, (what + "  (expected to contain: " + c.contains + ")").c_str());
         QVERIFY2(what.find('\n') == std::string::npos, what.c_str());  // one line, fit for a terminal or a dialog
       }
     }

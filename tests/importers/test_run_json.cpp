@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -389,6 +390,33 @@ class TestRunJson : public QObject {
     QCOMPARE(bs::json_access::offset_of_pointer(text, "/a/missing"), text.find("{\"b"));
     QCOMPARE(bs::json_access::offset_of_pointer(text, "/a/b~0c/5"), text.find('['));
     QCOMPARE(bs::json_access::child("/x", "a/b~c"), std::string("/x/a~1b~0c"));
+  }
+
+  // nlohmann keeps the last of two equal keys without a word; every JSON importer refuses them instead.
+  void duplicate_keys_are_refused_at_their_second_occurrence() {
+    const auto error_of = [](const std::string& text) -> std::optional<bs::ImportError> {
+      try {
+        (void)bs::json_access::parse(text, "d.json", {});
+      } catch (const bs::ImportError& e) {
+        return e;
+      }
+      return std::nullopt;
+    };
+    // Line 3 holds the second "dims"; the field names the object's pointer.
+    auto e = error_of("{\"runs\": [{\"x\": 1},\n {\"params\": {\"dims\": 4,\n  \"dims\": 2}}]}");
+    QVERIFY(e);
+    QCOMPARE(e->category(), bs::ImportErrorCategory::InvalidValue);
+    QCOMPARE(e->location().field, std::string("/runs/1/params/dims"));
+    QCOMPARE(e->location().line, std::size_t{3});
+    QCOMPARE(e->location().column, std::size_t{3});
+    QVERIFY(e->reason().find("\"dims\" appears twice") != std::string::npos);
+    // An object or array twice cannot be compared cheaply and is refused too; at the top level the pointer is "".
+    e = error_of("{\"a\": [1], \"b\": 2, \"a\": [1]}");
+    QVERIFY(e && e->location().field == "/a" && e->reason().find("object or array") != std::string::npos);
+    // The same scalar twice loses nothing and is accepted; keys of different objects never clash.
+    QVERIFY(!error_of("{\"a\": 1.5, \"a\": 1.5, \"b\": {\"a\": 2}, \"c\": [{\"a\": 3}, {\"a\": 4}]}"));
+    QVERIFY(error_of("{\"a\": \"x\", \"a\": \"y\"}"));
+    QVERIFY(error_of("{\"a\": 1, \"a\": 1.0}"));  // integer and float are different JSON values here
   }
 };
 
