@@ -2,6 +2,7 @@
 #include "power_import.h"
 
 #include "power_csv.h"
+#include "power_recording.h"
 #include "tegrastats.h"
 
 namespace bs {
@@ -22,7 +23,10 @@ ImportBatch import_power_log(const std::string& path, const PowerImportOptions& 
   const int csv = PowerCsvImporter().sniff(view, path);
   const int tegra = TegrastatsImporter().sniff(view, path);
   ImportBatch batch;
-  if (tegra > 0 && tegra >= csv) {
+  if (PowerRecordingImporter().sniff(view, path) > 0) {
+    batch = PowerRecordingImporter().parse(path, limits, cancel);  // its own header, not the options
+    batch.format = "benchscope-power-recording";
+  } else if (tegra > 0 && tegra >= csv) {
     batch = read_tegrastats(path, options, limits, cancel);
     batch.format = "tegrastats";
   } else if (csv > 0) {
