@@ -255,8 +255,10 @@ const CommandRegistrar registrar({
     "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--power SENSOR|auto] [--power-interval-ms M]\n"
     "         [--sysfs-root DIR]   (--power: also the sampler's cost, with / without, and the energy per run)\n"
-    "       benchscope-cli bench vision [--frames F] [--threads T]\n"
+    "       benchscope-cli bench vision [--frames F] [--threads T] [--power SENSOR|auto]\n"
     "       benchscope-cli bench pipeline [--frames N] [--rounds R] [--detect-workers W] [--detect-scale S]\n"
+    "         [--power SENSOR|auto]   (vision, pipeline: energy per frame of each method / side; with\n"
+    "         --power-interval-ms M and --sysfs-root DIR as for run flops)\n"
     "       benchscope-cli bench tuner [--frames F] [--step S]\n"
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"

@@ -7,7 +7,7 @@
 
 #include "analysis/flops.h"
 #include "analysis/units.h"
-#include "analysis/phase_energy.h"
+#include "analysis/sweep_energy.h"
 #include "args.h"
 #include "command.h"
 #include "kernels/sweep.h"
@@ -24,8 +24,8 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
 
 namespace {
 
-// Energy of each sweep point from the phases the sweep marked ("point W=64 D=4"): J per timed run (the point's
-// energy over its repeats) and GFLOPS/W at the point's mean power.
+// Energy of each sweep point from the phases the sweep marked: J per timed run (the point's energy over its
+// repeats) and GFLOPS/W at the point's mean power.
 void print_point_energies(std::ostream& out, const PowerTrace& trace, const std::vector<FlopsRun>& runs) {
   print_phase_energies(out, trace);
   out << "energy per sweep point (" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor
@@ -33,23 +33,12 @@ void print_point_energies(std::ostream& out, const PowerTrace& trace, const std:
   char line[200];
   std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %10s\n", "D", "W", "GFLOPS", "mean W", "J per run", "GFLOPS/W");
   out << line;
-  const auto energies = phase_energies(trace);
-  for (const FlopsRun& run : runs)
-    for (const WorkerSample& s : run.samples) {
-      const std::string name = "point W=" + std::to_string(s.workers) + " D=" + std::to_string(run.dims);
-      const auto e = std::find_if(energies.begin(), energies.end(), [&](const PhaseEnergy& p) { return p.name == name; });
-      if (e == energies.end() || s.seconds.empty()) continue;
-      double mean_s = 0;
-      for (double v : s.seconds) mean_s += v;
-      mean_s /= static_cast<double>(s.seconds.size());
-      const double flops = rotation_flops(run.dims, run.iterations, s.workers, mean_s);
-      const auto gpw = gflops_per_watt(flops, *e);
-      std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.3f %12.4f %10.3f%s\n", run.dims,
-                    static_cast<long long>(s.workers), flops / 1e9, e->mean_power_w,
-                    e->energy_j / static_cast<double>(s.seconds.size()), gpw ? *gpw : 0.0,
-                    e->samples < 2 ? "  (shorter than the sample interval)" : "");
-      out << line;
-    }
+  for (const PointEnergy& p : sweep_point_energies(trace, runs)) {
+    std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.3f %12.4f %10.3f%s\n", p.dims,
+                  static_cast<long long>(p.workers), p.gflops, p.mean_power_w, p.joules_per_run, p.gflops_per_watt,
+                  p.samples < 2 ? "  (shorter than the sample interval)" : "");
+    out << line;
+  }
 }
 
 int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
@@ -115,9 +104,9 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
           const std::string w(step.substr(2, comma - 2)), d(step.substr(comma + 4));
           if (std::stoi(d) != current_d) {
             current_d = std::stoi(d);
-            if (spec.warmup) power->add_phase("warm-up D=" + d, last_end, power->now_s());
+            if (spec.warmup) power->add_phase(sweep_warmup_phase(current_d), last_end, power->now_s());
           }
-          power->begin_phase("point W=" + w + " D=" + d);
+          power->begin_phase(sweep_point_phase(std::stoll(w), current_d));
         },
         [&](const FlopsRun&) {
           if (!power) return;

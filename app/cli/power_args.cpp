@@ -53,6 +53,23 @@ void print_phase_energies(std::ostream& out, const PowerTrace& trace) {
   }
 }
 
+void print_energy_per_item(std::ostream& out, const PowerTrace& trace,
+                           const std::vector<std::pair<std::string, std::size_t>>& groups, const std::string& item) {
+  const auto energies = phase_energies(trace);
+  out << "energy per " << item << " (" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor
+      << "):\n";
+  char line[256];
+  for (const auto& [group, items] : groups) {
+    double joules = 0, seconds = 0;
+    for (const PhaseEnergy& e : energies)
+      if (e.name.starts_with(group)) joules += e.energy_j, seconds += e.end_s - e.start_s;
+    if (items == 0 || seconds <= 0) continue;
+    std::snprintf(line, sizeof line, "  %-58s %9.4f J per %s (%zu, mean %.3f W)\n", group.c_str(),
+                  joules / static_cast<double>(items), item.c_str(), items, joules / seconds);
+    out << line;
+  }
+}
+
 std::string power_csv_beside(const std::string& out_path) {
   std::string base = out_path;
   if (base.size() > 5 && base.ends_with(".json")) base.resize(base.size() - 5);

@@ -31,6 +31,9 @@ std::unique_ptr<sensors::PowerRecorder> make_recorder(const std::string& spec, c
 
 // Prints "phase: E J over T s, mean P W (n samples)" lines and the measurement kind.
 void print_phase_energies(std::ostream& out, const PowerTrace& trace);
+// For each (group, items): the energy of every phase whose name starts with `group`, per item ("J per frame").
+void print_energy_per_item(std::ostream& out, const PowerTrace& trace,
+                           const std::vector<std::pair<std::string, std::size_t>>& groups, const std::string& item);
 // "<path without .json>.power.csv": where a command with --out run.json writes the trace.
 std::string power_csv_beside(const std::string& out_path);
 
