@@ -124,12 +124,17 @@ class TestCliSensors : public QObject {
     no_nvml(p);
     p.start(kCli, {"record-power", "--sysfs-root", dir.path(), "--out", csv, "--seconds", "60", "--interval-ms", "20"});
     QVERIFY(p.waitForStarted());
-    QTest::qWait(600);
+    // Once it says it is recording, Ctrl+C is handled (before that the default action would kill it).
+    p.setReadChannel(QProcess::StandardError);
+    QByteArray said;
+    while (!said.contains("recording power from") && p.waitForReadyRead(10000)) said += p.readAllStandardError();
+    QVERIFY(said.contains("recording power from"));
+    QTest::qWait(500);
     ::kill(static_cast<pid_t>(p.processId()), SIGINT);
     QVERIFY(p.waitForFinished(10000));
     QCOMPARE(p.exitCode(), 130);
     const QByteArray text = bytes_of(csv);
-    QVERIFY(text.count('\n') > 15);  // ~25 samples in 0.6 s, plus the comment lines
+    QVERIFY(text.count('\n') > 12);  // ~25 samples in 0.5 s (fewer on a loaded machine), plus 10 comment lines
   }
 
   void run_flops_with_power_gives_energy_per_point() {
