@@ -6,6 +6,7 @@
 #include "args.h"
 #include "command.h"
 #include "sensors/discovery.h"
+#include "sensors/sysfs_file.h"
 #include "text_table.h"
 
 namespace bs::cli {
@@ -35,18 +36,22 @@ int sensors_command(const std::vector<std::string>& raw, std::ostream& out, std:
     return 0;
   }
   if (set.sensors.empty()) {
-    out << "no power sensors found (looked for RAPL in " << root << "sys/class/powercap, INA3221 in " << root
-        << "sys/bus/i2c/drivers/ina3221{,x}, hwmon in " << root << "sys/class/hwmon)\n";
+    const auto at = [&](const char* sys) { return sensors::under_root(root, sys).string(); };
+    out << "no power sensors found (looked for RAPL in " << at("/sys/class/powercap") << ", INA3221 in "
+        << at("/sys/bus/i2c/drivers/ina3221") << "{,x}, hwmon in " << at("/sys/class/hwmon") << ")\n";
     for (const auto& n : set.notes) out << n << '\n';
     return 0;
   }
   TextTable table({"id", "kind", "rail/label", "device", "unit", "total", "status"});
+  std::string reasons;  // below the table, so one long reason does not stretch every row
   for (const auto& s : set.sensors) {
     const sensors::SensorInfo& i = s->info();
     table.add({i.id, std::string(to_string(i.kind)), i.label, i.device, i.unit, i.board_total ? "yes" : "",
-               i.readable ? "readable" : "not readable: " + i.reason});
+               i.readable ? "readable" : "NOT READABLE (below)"});
+    if (!i.readable) reasons += i.id + ": " + i.reason + "\n";
   }
   table.print(out);
+  out << reasons;
   for (const auto& n : set.notes) out << n << '\n';
   return 0;
 }
