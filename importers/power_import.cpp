@@ -6,6 +6,7 @@
 #include "perf_stat.h"
 #include "power_csv.h"
 #include "ptd_log.h"
+#include "power_recording.h"
 #include "tegrastats.h"
 
 namespace bs {
@@ -20,8 +21,15 @@ struct PowerFormat {
   PowerReader read;
 };
 
+// BenchScope's own record-power CSV reads its settings from its header comments, not from the options.
+ImportBatch read_power_recording(const std::string& path, const PowerImportOptions& /*options*/,
+                                 const ImportLimits& limits, const CancelToken& cancel) {
+  return PowerRecordingImporter().parse(path, limits, cancel);
+}
+
 std::vector<PowerFormat> power_formats() {
   std::vector<PowerFormat> list;
+  list.push_back({std::make_unique<PowerRecordingImporter>(), read_power_recording});
   list.push_back({std::make_unique<JtopCsvImporter>(), read_jtop_csv});
   list.push_back({std::make_unique<NvidiaSmiImporter>(), read_nvidia_smi});
   list.push_back({std::make_unique<PerfStatImporter>(), read_perf_stat});
@@ -41,6 +49,7 @@ std::vector<std::unique_ptr<Importer>> make_power_importers() {
   list.push_back(std::make_unique<NvidiaSmiImporter>());
   list.push_back(std::make_unique<PerfStatImporter>());
   list.push_back(std::make_unique<PtdLogImporter>());
+  list.push_back(std::make_unique<PowerRecordingImporter>());
   return list;
 }
 

@@ -17,6 +17,7 @@
 #include "pipeline_json.h"
 #include "power_csv.h"
 #include "ptd_log.h"
+#include "power_recording.h"
 #include "run_json.h"
 #include "tegrastats.h"
 
@@ -29,6 +30,7 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<PipelineJsonImporter>());
   list.push_back(std::make_unique<GoogleBenchmarkJsonImporter>());
   list.push_back(std::make_unique<ClpeakTextImporter>());
+  list.push_back(std::make_unique<PowerRecordingImporter>());
   list.push_back(std::make_unique<PowerCsvImporter>());
   list.push_back(std::make_unique<TegrastatsImporter>());
   list.push_back(std::make_unique<JtopCsvImporter>());

@@ -9,12 +9,17 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QHeaderView>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QtConcurrent>
 
+#include "analysis/sweep_energy.h"
 #include "analysis/units.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
+#include "power_sensor_box.h"
+#include "sensors/recorder.h"
 
 namespace bs::ui {
 
@@ -29,7 +34,9 @@ KernelRunner::KernelRunner(QWidget* parent)
       details_(new QLabel(this)),
       run_(new QPushButton(tr("Run"), this)),
       stop_(new QPushButton(tr("Cancel"), this)),
-      progress_(new QProgressBar(this)) {
+      progress_(new QProgressBar(this)),
+      power_(new PowerSensorBox(this)),
+      energy_(new QTableWidget(this)) {
   qRegisterMetaType<bs::FlopsRun>();
   qRegisterMetaType<std::vector<bs::FlopsRun>>();
   iterations_->setRange(1, 100'000'000);
@@ -54,6 +61,13 @@ KernelRunner::KernelRunner(QWidget* parent)
   progress_->setRange(0, 1000);
   progress_->setValue(0);
 
+  energy_->setColumnCount(6);
+  energy_->setHorizontalHeaderLabels({tr("D"), tr("W"), tr("GFLOPS"), tr("Mean W"), tr("J per run"), tr("GFLOPS/W")});
+  energy_->verticalHeader()->hide();
+  energy_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  energy_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  energy_->setVisible(false);
+
   auto* form = new QFormLayout;
   form->addRow(tr("Backend"), backend_);
   form->addRow(QString(), details_);
@@ -62,6 +76,7 @@ KernelRunner::KernelRunner(QWidget* parent)
   form->addRow(tr("D"), dims_);
   form->addRow(tr("N"), iterations_);
   form->addRow(tr("Repeats"), repeats_);
+  form->addRow(tr("Record power"), power_);
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(run_);
   buttons->addWidget(stop_);
@@ -69,7 +84,8 @@ KernelRunner::KernelRunner(QWidget* parent)
   layout->addLayout(form);
   layout->addLayout(buttons);
   layout->addWidget(progress_);
-  layout->addStretch(1);
+  layout->addWidget(energy_, 1);
+  layout->addStretch(0);
 
   connect(run_, &QPushButton::clicked, this, &KernelRunner::start);
   connect(stop_, &QPushButton::clicked, this, &KernelRunner::cancel);
@@ -100,6 +116,34 @@ void KernelRunner::show_backend_details() {
                              QString::fromStdString(format_si(b.theoretical_peak_flops, "FLOPS"))));
 }
 
+std::optional<PowerTrace> KernelRunner::take_power_trace() {
+  auto t = std::move(trace_);
+  trace_.reset();
+  return t;
+}
+
+void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
+  const std::vector<PointEnergy> points = trace_ ? sweep_point_energies(*trace_, runs) : std::vector<PointEnergy>{};
+  energy_->setVisible(trace_.has_value());
+  energy_->setRowCount(static_cast<int>(points.size()));
+  for (std::size_t r = 0; r < points.size(); ++r) {
+    const PointEnergy& p = points[r];
+    const QString texts[] = {QString::number(p.dims), QString::number(p.workers), QString::number(p.gflops, 'f', 2),
+                             QString::number(p.mean_power_w, 'f', 2), QString::number(p.joules_per_run, 'f', 4),
+                             QString::number(p.gflops_per_watt, 'f', 3)};
+    for (int c = 0; c < 6; ++c) {
+      auto* item = new QTableWidgetItem(texts[c]);
+      item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+      if (p.samples < 2) item->setToolTip(tr("Shorter than the sample interval: interpolated between samples"));
+      energy_->setItem(static_cast<int>(r), c, item);
+    }
+  }
+  if (trace_)
+    energy_->setToolTip(tr("Energy per sweep point, %1: %2")
+                            .arg(QString::fromUtf8(to_string(trace_->provenance.measurement).data()),
+                                 QString::fromStdString(trace_->provenance.sensor)));
+}
+
 void KernelRunner::set_workers_spec(const QString& spec) { workers_->setText(spec); }
 void KernelRunner::set_dims(const QString& dims) { dims_->setText(dims); }
 void KernelRunner::set_iterations(int n) { iterations_->setValue(n); }
@@ -119,6 +163,14 @@ void KernelRunner::start() {
   spec.repeats = repeats_->value();
   spec.variant = variant_->currentData().toString() == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
   const kernels::Backend backend = backends_[static_cast<std::size_t>(backend_->currentIndex())];
+  trace_.reset();
+  recorder_.reset();
+  try {
+    recorder_ = power_->start_recorder();  // null when "Record power" is off
+  } catch (const std::exception& e) {
+    emit failed(tr("Record power: %1").arg(QString::fromUtf8(e.what())));
+    return;
+  }
   cancel_ = std::make_shared<CancelToken>();
   emit started();
   run_->setEnabled(false);
@@ -135,20 +187,43 @@ void KernelRunner::start() {
     try {
       const kernels::SweepResult result = watcher->result();
       progress_->setValue(1000);
+      if (recorder_) {
+        const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
+        trace_ = recorder_->finish("Kernel Runner " + (first ? first->backend + " " + first->provenance.date : std::string()));
+        if (first) trace_->platform = first->platform;  // paired with the run's platform in every view
+        recorder_.reset();
+      }
+      show_energies(result.runs);
       emit finished(result.runs, result.cancelled);
     } catch (const std::exception& e) {
       emit failed(QString::fromUtf8(e.what()));
     }
   });
   QPointer<KernelRunner> self(this);
-  watcher->setFuture(QtConcurrent::run([backend, cpu, spec, cancel, self] {
+  // The recorder's phase calls are thread-safe: the sweep thread marks each D's warm-up and each point.
+  watcher->setFuture(QtConcurrent::run([backend, cpu, spec, cancel, self, rec = recorder_] {
+    double last_end = rec ? rec->now_s() : 0;
+    int current_d = -1;
     return kernels::run_sweep(
         backend, cpu, spec, *cancel,
-        [self](double f, std::string_view) {
+        [self, rec, &last_end, &current_d, warmup = spec.warmup](double f, std::string_view step) {
           QMetaObject::invokeMethod(self.data(), [self, f] { if (self) self->progress_->setValue(static_cast<int>(f * 1000)); },
                                     Qt::QueuedConnection);
+          const auto comma = step.find(", D=");
+          if (!rec || !step.starts_with("W=") || comma == std::string_view::npos) return;
+          const long long w = std::stoll(std::string(step.substr(2, comma - 2)));
+          const int d = std::stoi(std::string(step.substr(comma + 4)));
+          if (d != current_d) {
+            current_d = d;
+            if (warmup) rec->add_phase(sweep_warmup_phase(d), last_end, rec->now_s());
+          }
+          rec->begin_phase(sweep_point_phase(w, d));
         },
-        [self](const FlopsRun& run) {
+        [self, rec, &last_end](const FlopsRun& run) {
+          if (rec) {
+            rec->end_phase();
+            last_end = rec->now_s();
+          }
           QMetaObject::invokeMethod(self.data(), [self, run] { if (self) emit self->live_run(run); }, Qt::QueuedConnection);
         });
   }));

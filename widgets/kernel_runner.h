@@ -2,9 +2,11 @@
 #pragma once
 #include <QWidget>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "kernels/backend.h"
+#include "model/power_trace.h"
 
 class QComboBox;
 class QLineEdit;
@@ -12,12 +14,22 @@ class QSpinBox;
 class QPushButton;
 class QProgressBar;
 class QLabel;
+class QTableWidget;
+
+namespace bs::sensors {
+class PowerRecorder;
+}
+namespace bs::ui {
+class PowerSensorBox;
+}
 
 namespace bs::ui {
 
 // Runs the paper's kernel on a chosen backend/device off the GUI thread: worker spec, D list, N, repeats and
 // variant; Run/Cancel; each completed point is reported (live_run) so the FLOPS view fills in while it runs, and
-// the finished (or cancelled, partial) runs are handed over to be stored (finished).
+// the finished (or cancelled, partial) runs are handed over to be stored (finished). "Record power" samples one
+// of the computer's own power sensors (or auto: the board or package total) during the sweep; the energy of
+// every point is shown in a table and the trace, with a phase per point, is stored with the runs.
 class KernelRunner : public QWidget {
   Q_OBJECT
  public:
@@ -28,6 +40,10 @@ class KernelRunner : public QWidget {
   void set_dims(const QString& dims);
   void set_iterations(int n);
   void set_repeats(int r);
+  PowerSensorBox* power_box() const { return power_; }
+  QTableWidget* energy_table() const { return energy_; }
+  // The trace of the last sweep recorded with power (taken once: the next call gives none).
+  std::optional<PowerTrace> take_power_trace();
   void start();
   void cancel();
 
@@ -40,6 +56,7 @@ class KernelRunner : public QWidget {
  private:
   void populate();
   void show_backend_details();
+  void show_energies(const std::vector<FlopsRun>& runs);
   kernels::CpuInfo cpu_;
   std::vector<kernels::Backend> backends_;
   std::shared_ptr<CancelToken> cancel_;
@@ -53,6 +70,10 @@ class KernelRunner : public QWidget {
   QPushButton* run_;
   QPushButton* stop_;
   QProgressBar* progress_;
+  PowerSensorBox* power_;
+  QTableWidget* energy_;
+  std::shared_ptr<sensors::PowerRecorder> recorder_;
+  std::optional<PowerTrace> trace_;
 };
 
 }  // namespace bs::ui

@@ -15,6 +15,9 @@
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "analysis/phase_energy.h"
+#include "power_sensor_box.h"
+#include "sensors/recorder.h"
 #include "vision/cuda_preprocess.h"
 #include "vision/pipeline_measure.h"
 
@@ -38,6 +41,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
       cancel_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
       status_(new QLabel(this)),
+      power_(new PowerSensorBox(this)),
       watcher_(new QFutureWatcher<Outcome>(this)),
       percent_(std::make_shared<std::atomic<int>>(0)) {
   const QSettings settings;
@@ -97,6 +101,8 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   backend_label->setToolTip(backend_->toolTip());
   layout->addWidget(backend_label);
   layout->addWidget(backend_);
+  layout->addWidget(new QLabel(tr("Record power:"), this));
+  layout->addWidget(power_);
   layout->addWidget(measure_);
   layout->addWidget(cancel_);
   layout->addWidget(progress_);
@@ -141,6 +147,15 @@ void PipelineMeasurePanel::start() {
   options.detect_scale = scale_->value();
   options.backend = backend_->currentData().toString().toStdString();
   options.tool = QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
+  trace_.reset();
+  try {
+    recorder_ = power_->start_recorder();  // null when "Record power" is off
+  } catch (const std::exception& e) {
+    status_->setText(tr("Record power: %1").arg(QString::fromUtf8(e.what())));
+    emit failed(status_->text());
+    return;
+  }
+  if (recorder_) recorder_->begin_phase("pipeline");
   token_ = std::make_shared<CancelToken>();
   percent_->store(0);
   measure_->setEnabled(false);
@@ -170,8 +185,20 @@ void PipelineMeasurePanel::cancel() {
   status_->setText(tr("Cancelling: the frames in flight finish first…"));
 }
 
+std::optional<PowerTrace> PipelineMeasurePanel::take_power_trace() {
+  auto t = std::move(trace_);
+  trace_.reset();
+  return t;
+}
+
 void PipelineMeasurePanel::finished() {
   const Outcome outcome = watcher_->result();
+  std::optional<PowerTrace> trace;
+  if (recorder_) {
+    recorder_->end_phase();
+    trace = recorder_->finish("Pipeline tab" + (outcome.run ? " " + outcome.run->platform + " " + outcome.run->provenance.date : std::string()));
+    recorder_.reset();
+  }
   measure_->setEnabled(true);
   cancel_->setEnabled(false);
   progress_->hide();
@@ -185,10 +212,28 @@ void PipelineMeasurePanel::finished() {
     return;
   }
   const PipelineRun& run = *outcome.run;
-  status_->setText(run.throughput_fps ? tr("Measured %1 fps on %2.")
-                                            .arg(*run.throughput_fps, 0, 'f', 2)
-                                            .arg(QString::fromStdString(run.platform))
-                                      : tr("Measured on %1.").arg(QString::fromStdString(run.platform)));
+  QString energy;
+  if (trace) {
+    trace->platform = run.platform;  // the Platforms view pairs runs and traces by platform
+    const auto phases = phase_energies(*trace);
+    const StageStats* pre = run.stage(pipeline_stage::kPreprocess);
+    const StageStats* det = run.stage(pipeline_stage::kDetect);
+    const std::size_t frames = pre ? pre->n : 0;
+    if (!phases.empty() && frames > 0) {
+      const PhaseEnergy& e = phases.front();
+      energy = tr(" %1 J per frame through the pipeline (mean %2 W)").arg(e.energy_j / static_cast<double>(frames), 0, 'f', 3).arg(e.mean_power_w, 0, 'f', 2);
+      if (pre) energy += tr(", %1 J per preprocessed frame").arg(e.mean_power_w * pre->mean_s, 0, 'f', 4);
+      if (det) energy += tr(", %1 J per inference").arg(e.mean_power_w * det->mean_s, 0, 'f', 4);
+      energy += tr(" (%1: %2).").arg(QString::fromUtf8(to_string(trace->provenance.measurement).data()),
+                                     QString::fromStdString(trace->provenance.sensor));
+    }
+    trace_ = std::move(trace);
+  }
+  status_->setText((run.throughput_fps ? tr("Measured %1 fps on %2.")
+                                             .arg(*run.throughput_fps, 0, 'f', 2)
+                                             .arg(QString::fromStdString(run.platform))
+                                       : tr("Measured on %1.").arg(QString::fromStdString(run.platform))) +
+                   energy);
   emit run_measured(run);
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "model/pipeline_run.h"
+#include "model/power_trace.h"
 #include "util/cancel.h"
 
 class QComboBox;
@@ -17,13 +18,20 @@ class QSpinBox;
 template <class T>
 class QFutureWatcher;
 
+namespace bs::sensors {
+class PowerRecorder;
+}
+
 namespace bs::ui {
+
+class PowerSensorBox;
 
 // "Measure on this machine": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
 // (core: vision::measure_synthetic_pipeline) off the GUI thread, with progress and cancel, and hands the finished
 // run over (run_measured) to be stored. Frames, detection workers and detection scale are spin boxes remembered
 // between sessions (QSettings), and so is where preprocessing runs (CPU, OpenCL, CUDA: a backend this machine
-// cannot run is listed but disabled, its tooltip saying why).
+// cannot run is listed but disabled, its tooltip saying why). "Record power" samples an on-board sensor during
+// the run; the status line gives the energy per frame and the trace (take_power_trace) is stored with the run.
 class PipelineMeasurePanel : public QWidget {
   Q_OBJECT
  public:
@@ -34,6 +42,10 @@ class PipelineMeasurePanel : public QWidget {
   QDoubleSpinBox* scale() const { return scale_; }
   QComboBox* backend() const { return backend_; }
   QPushButton* measure_button() const { return measure_; }
+  PowerSensorBox* power_box() const { return power_; }
+  QLabel* status() const { return status_; }
+  // The trace recorded during the last measured run (taken once).
+  std::optional<PowerTrace> take_power_trace();
   bool running() const;
 
  public slots:
@@ -60,6 +72,9 @@ class PipelineMeasurePanel : public QWidget {
   QPushButton* cancel_;
   QProgressBar* progress_;
   QLabel* status_;
+  PowerSensorBox* power_;
+  std::shared_ptr<sensors::PowerRecorder> recorder_;
+  std::optional<PowerTrace> trace_;
   QFutureWatcher<Outcome>* watcher_;
   std::shared_ptr<CancelToken> token_;
   std::shared_ptr<std::atomic<int>> percent_;  // written by the capture thread, read by a GUI timer

@@ -13,6 +13,7 @@
 #include "analysis/decimate.h"
 #include "analysis/power.h"
 #include "device_palette.h"
+#include "phase_markers.h"
 
 namespace bs::ui {
 namespace {
@@ -73,6 +74,7 @@ void PowerView::set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakR
   power_.clear();
   current_.clear();
   plot_->clearGraphs();
+  plot_->clearItems();  // the previous traces' phase markers
   for (const StoredPowerTrace& s : traces_) {
     power_.push_back(power_series(s.trace));
     current_.push_back(current_series(s.trace));
@@ -81,6 +83,7 @@ void PowerView::set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakR
     for (const auto& [platform, index] : colors)
       if (platform == s.trace.platform) color = index;
     g->setPen(QPen(device_color(color), 1));
+    add_phase_markers(plot_, s.trace.phases, device_color(color));  // warm-up, sweep points, pipeline windows
   }
   set_quantity(quantity_);
 }

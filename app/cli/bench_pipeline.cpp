@@ -15,6 +15,7 @@
 #include "analysis/stats.h"
 #include "args.h"
 #include "pipeline_args.h"
+#include "power_args.h"
 #include "signals.h"
 #include "vision/detector.h"
 #include "vision/pipeline.h"
@@ -121,7 +122,8 @@ class ThreadingGuard {
 }  // namespace
 
 int bench_pipeline(const std::vector<std::string>& arguments, std::ostream& out) {
-  const ParsedArgs args = parse_args(arguments, {}, {"--frames", "--rounds", "--detect-workers", "--detect-scale"});
+  const ParsedArgs args = parse_args(arguments, {}, {"--frames", "--rounds", "--detect-workers", "--detect-scale", "--power",
+                                                     "--power-interval-ms", "--sysfs-root"});
   const double rounds_arg = args.number("--rounds", 3);
   if (!(rounds_arg >= 1 && rounds_arg <= 100) || rounds_arg != static_cast<double>(static_cast<long>(rounds_arg)))
     throw UsageError("--rounds must be a whole number from 1 to 100");
@@ -165,15 +167,30 @@ int bench_pipeline(const std::vector<std::string>& arguments, std::ostream& out)
   set_vision_threads(1);
   Sequential seq;
   Concurrent conc;
-  for (int round = 0; round < rounds && !cancel.cancelled(); ++round) {
+  // --power: each side's rounds are phases of the trace, for the energy per frame of each.
+  const auto power = start_power(args, out, false);
+  const auto sequential = [&](int round) {
+    if (power) power->begin_phase("sequential round " + std::to_string(round + 1));
+    seq.add(run_sequential(raw, frames, preprocess, detector, cancel));
+    if (power) power->end_phase();
+  };
+  const auto concurrent = [&](int round) {
+    if (power) power->begin_phase("concurrent round " + std::to_string(round + 1));
+    conc.add(timed_pipeline(source, preprocess, detector, config, cancel));
+    if (power) power->end_phase();
+  };
+  int done_rounds = 0;
+  for (int round = 0; round < rounds && !cancel.cancelled(); ++round, ++done_rounds) {
     if (round % 2 == 0) {
-      seq.add(run_sequential(raw, frames, preprocess, detector, cancel));
-      conc.add(timed_pipeline(source, preprocess, detector, config, cancel));
+      sequential(round);
+      concurrent(round);
     } else {
-      conc.add(timed_pipeline(source, preprocess, detector, config, cancel));
-      seq.add(run_sequential(raw, frames, preprocess, detector, cancel));
+      concurrent(round);
+      sequential(round);
     }
   }
+  std::optional<PowerTrace> trace;
+  if (power) trace = power->finish("bench pipeline");
   // For reference: OpenCV's default threading (its pool on every core), stages in sequence and pipelined, one
   // round each.
   set_vision_threads(std::max(guard.opencv(), 1));
@@ -251,6 +268,11 @@ int bench_pipeline(const std::vector<std::string>& arguments, std::ostream& out)
                 stat(conc_default.detect_ms).c_str(), seq_default.fps() > 0 ? conc_fps / seq_default.fps() : 0,
                 seq_default.fps() > 0 ? conc_default.fps() / seq_default.fps() : 0);
   out << line;
+  if (trace) {
+    const std::size_t n = frames * static_cast<std::size_t>(done_rounds);
+    out << '\n';
+    print_energy_per_item(out, *trace, {{"sequential", n}, {"concurrent", n}}, "frame");
+  }
   return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "analysis/power.h"
 #include "analysis/stats.h"
 #include "args.h"
+#include "power_args.h"
 #include "vision/cuda_preprocess.h"
 #include "vision/fused.h"
 #include "vision/lens.h"
@@ -30,7 +31,7 @@ struct Method {
 }  // namespace
 
 int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
-  const ParsedArgs args = parse_args(arguments, {}, {"--frames", "--threads"});
+  const ParsedArgs args = parse_args(arguments, {}, {"--frames", "--threads", "--power", "--power-interval-ms", "--sysfs-root"});
   const int frames = static_cast<int>(args.number("--frames", 200));
   if (frames < 1 || frames > 100000) throw UsageError("--frames must be between 1 and 100000");
   if (args.value("--threads")) {
@@ -81,10 +82,17 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
   // team each spin for a while after their work, and interleaving would charge that spinning to the next method.
   // Four passes, in alternating order, still spread a busy neighbour on a shared machine over all methods.
   constexpr int kPasses = 4, kWarmUp = 2;
+  // --power: each method's blocks are phases named after it, for its energy per frame (warm-up frames included).
+  const auto power = start_power(args, out, false);
   for (int pass = 0; pass < kPasses; ++pass)
     for (std::size_t k = 0; k < methods.size(); ++k) {
       Method& m = methods[pass % 2 ? methods.size() - 1 - k : k];
       const int count = frames * (pass + 1) / kPasses - frames * pass / kPasses;
+      if (power) power->begin_phase(m.name);
+      struct EndPhase {
+        sensors::PowerRecorder* r;
+        ~EndPhase() { if (r) r->end_phase(); }
+      } end_phase{power.get()};
       for (int i = 0; i < kWarmUp + count; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
         m.work();
@@ -120,6 +128,13 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
                 "(target: >= 2x and <= 2 ms: %s)\n",
                 speedup, fused_ms, speedup >= 2 && fused_ms <= 2 ? "met" : "not met in this run");
   out << line;
+  if (power) {
+    const PowerTrace trace = power->finish("bench vision");
+    std::vector<std::pair<std::string, std::size_t>> groups;
+    for (const auto& m : methods) groups.emplace_back(m.name, static_cast<std::size_t>(frames + kPasses * kWarmUp));
+    out << '\n';
+    print_energy_per_item(out, trace, groups, "frame");
+  }
   return 0;
 }
 

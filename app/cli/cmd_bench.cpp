@@ -7,9 +7,11 @@
 #include <fstream>
 #include <iostream>
 #include <random>
+#include <sstream>
 
 #include "analysis/decimate.h"
 #include "analysis/flops.h"
+#include "analysis/phase_energy.h"
 #include "analysis/power.h"
 #include "analysis/stats.h"
 #include "args.h"
@@ -18,6 +20,7 @@
 #include "bench_vision.h"
 #include "command.h"
 #include "kernels/sweep.h"
+#include "power_args.h"
 #include "signals.h"
 
 namespace bs::cli {
@@ -47,8 +50,51 @@ double per_core_peak(const kernels::Backend& b, const kernels::CpuInfo& cpu) {
   return cpu.peak_flops / cpu.threads;
 }
 
+// What sampling the power sensors costs the kernel: the CPU SIMD throughput point R times without the sampler,
+// R times with it running (its phases give the energy per run), R times without again; medians and their ratio.
+void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, const kernels::CpuInfo& cpu, int runs,
+                          std::ostream& out) {
+  const kernels::RotationParams params{4, 40000};
+  const std::int64_t workers = args.value("--workers") ? static_cast<std::int64_t>(args.number("--workers", 16384)) : 16384;
+  const double flops = rotation_flop_count(params.dims, params.iterations, workers);
+  std::vector<float> outputs;
+  std::vector<double> without, with;
+  const auto timed = [&](std::vector<double>& into) {
+    into.push_back(flops / b.run_point(params, workers, kernels::Variant::Throughput, outputs, interrupt_token()) / 1e9);
+  };
+  b.run_point(params, workers, kernels::Variant::Throughput, outputs, interrupt_token());  // warm-up
+  for (int r = 0; r < runs; ++r) timed(without);
+  std::ostringstream chosen;
+  auto rec = start_power(args, chosen, false);
+  for (int r = 0; r < runs; ++r) {
+    rec->begin_phase("run " + std::to_string(r + 1));
+    timed(with);
+    rec->end_phase();
+  }
+  const PowerTrace trace = rec->finish("bench kernels");
+  for (int r = 0; r < runs; ++r) timed(without);
+  (void)cpu;
+  const double a = median(without), p = median(with);
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "\npower sampling overhead (%s, W = %lld, %d runs with the sampler between 2 x %d without):\n"
+                "  without: %.2f GFLOPS (median), with: %.2f GFLOPS; with / without = %.4f (%.2f %% cost)\n",
+                b.label.c_str(), static_cast<long long>(workers), runs, runs, a, p, p / a, 100.0 * (1.0 - p / a));
+  out << line << "  " << chosen.str();
+  const auto energies = phase_energies(trace);
+  double joules = 0, watts = 0;
+  for (const PhaseEnergy& e : energies) joules += e.energy_j, watts += e.mean_power_w;
+  if (!energies.empty()) {
+    const double n = static_cast<double>(energies.size());
+    std::snprintf(line, sizeof line, "  %s: %.3f J per run, mean %.2f W, %.3f GFLOPS/W at mean power (%s)\n",
+                  std::string(to_string(trace.provenance.measurement)).c_str(), joules / n, watts / n,
+                  p / (watts / n), trace.provenance.sensor.c_str());
+    out << line;
+  }
+}
+
 int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {}, {"--runs", "--workers"});
+  const ParsedArgs args = parse_args(raw, {}, {"--runs", "--workers", "--power", "--power-interval-ms", "--sysfs-root"});
   const int runs = static_cast<int>(args.number("--runs", 7));
   if (runs < 1 || runs > 1000) throw UsageError("--runs must be between 1 and 1000");
   // Large W, so one run is tens of milliseconds of work and thread start-up (milliseconds on a shared machine) is
@@ -151,6 +197,7 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   std::snprintf(line, sizeof line, "clock measured again at the end: %.3f GHz; load average after: %s\n",
                 clock_after / 1e9, load_average().c_str());
   out << line;
+  if (args.value("--power") && *args.value("--power") != "none") bench_power_overhead(args, simd, cpu, runs, out);
   return 0;
 }
 
@@ -206,9 +253,12 @@ int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
 const CommandRegistrar registrar({
     "bench",
     "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate)",
-    "usage: benchscope-cli bench kernels [--runs R] [--workers W]\n"
-    "       benchscope-cli bench vision [--frames F] [--threads T]\n"
+    "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--power SENSOR|auto] [--power-interval-ms M]\n"
+    "         [--sysfs-root DIR]   (--power: also the sampler's cost, with / without, and the energy per run)\n"
+    "       benchscope-cli bench vision [--frames F] [--threads T] [--power SENSOR|auto]\n"
     "       benchscope-cli bench pipeline [--frames N] [--rounds R] [--detect-workers W] [--detect-scale S]\n"
+    "         [--power SENSOR|auto]   (vision, pipeline: energy per frame of each method / side; with\n"
+    "         --power-interval-ms M and --sysfs-root DIR as for run flops)\n"
     "       benchscope-cli bench tuner [--frames F] [--step S]\n"
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"

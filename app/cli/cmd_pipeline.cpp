@@ -11,10 +11,13 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "analysis/phase_energy.h"
 #include "args.h"
 #include "command.h"
 #include "pipeline_args.h"
 #include "pipeline_json.h"
+#include "power_args.h"
+#include "sensors/recording_csv.h"
 #include "signals.h"
 #include "store/workspace.h"
 #include "text_table.h"
@@ -35,6 +38,33 @@ using namespace bs::vision;
 
 // A lens file (format benchscope-lens), or a raw frame's sidecar that carries one under "lens" (synth-frame
 // writes that), or the word "paper" for the paper's camera.
+// Energy of the pipeline from the on-board sensors: the whole run's energy per frame through the pipeline, and,
+// as the Platforms view computes them, the mean power during the run x each stage's mean time (per
+// preprocessed frame, per inference).
+void print_pipeline_energy(std::ostream& out, const PowerTrace& trace, const PipelineRun& run, std::size_t frames) {
+  print_phase_energies(out, trace);
+  const auto energies = phase_energies(trace);
+  if (energies.empty()) return;
+  const PhaseEnergy& e = energies.front();
+  char line[256];
+  if (const auto per = joules_per_item(e, frames)) {
+    std::snprintf(line, sizeof line, "energy per frame through the pipeline: %.4f J (%zu frames, %.3f J over %.3f s)\n",
+                  *per, frames, e.energy_j, e.end_s - e.start_s);
+    out << line;
+  }
+  if (const StageStats* pre = run.stage(pipeline_stage::kPreprocess)) {
+    std::snprintf(line, sizeof line, "energy per preprocessed frame: %.4f J (mean %.3f W x %.3f ms)\n",
+                  e.mean_power_w * pre->mean_s, e.mean_power_w, pre->mean_s * 1e3);
+    out << line;
+  }
+  if (const StageStats* det = run.stage(pipeline_stage::kDetect)) {
+    std::snprintf(line, sizeof line, "energy per inference: %.4f J (mean %.3f W x %.3f ms)\n",
+                  e.mean_power_w * det->mean_s, e.mean_power_w, det->mean_s * 1e3);
+    out << line;
+  }
+  out << "(" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor << ")\n";
+}
+
 std::pair<Lens, View> load_lens(const std::string& arg) {
   if (arg == "paper") return {Lens::paper(), View{}};
   std::ifstream f(arg);
@@ -137,7 +167,7 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   const ParsedArgs args = parse_args(raw, {"--json"},
                                      {"--lens", "--demosaic", "--backend", "--detector", "--frames", "--policy",
                                       "--out", "--workspace", "--pattern", "--platform", "--queue", "--detect-workers",
-                                      "--detect-scale"});
+                                      "--detect-scale", "--power", "--power-interval-ms", "--sysfs-root"});
   if (args.positional.empty()) throw UsageError("pipeline needs at least one frame file");
   const auto lens_arg = args.value("--lens");
   if (!lens_arg) throw UsageError("--lens LENS.json is required (or --lens paper for the paper's camera)");
@@ -203,7 +233,10 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   config.detection_workers = detect_workers;
   // The frame files play the camera, over and over until --frames frames were captured.
   const FrameSource source = [&](std::size_t i) -> std::optional<cv::Mat> { return mosaics[i % mosaics.size()]; };
-  const PipelineResult result = run_pipeline(source, preprocess, detector, config, interrupt_token());
+  const CancelToken& cancel = interrupt_token();
+  const auto power = start_power(args, err, args.has("--json"));
+  if (power) power->begin_phase("pipeline");
+  const PipelineResult result = run_pipeline(source, preprocess, detector, config, cancel);
   if (result.cancelled) {
     err << "benchscope-cli: pipeline cancelled after " << result.processed << " frames; nothing stored\n";
     return 1;
@@ -234,18 +267,29 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
                                         scale_text(detect_scale)
                                   : std::string());
   const std::string json_text = write_pipeline_json(run);
+  std::optional<PowerTrace> trace;
+  if (power) {
+    power->end_phase();
+    trace = power->finish("pipeline " + run.platform + " " + run.backend + " " + run.provenance.date);
+    trace->platform = run.platform;  // the Platforms view pairs traces and runs by platform
+  }
 
   std::ostream& info = args.has("--json") ? err : out;  // --json keeps stdout to the document alone
   if (args.has("--json"))
     out << json_text;
   else
     print_table(run, result, out);
+  if (trace) print_pipeline_energy(info, *trace, run, result.processed);
   if (const auto dir = args.value("--out")) write_figures(*dir, files.front(), mosaics.front(), dm, preprocess, detector, info);
   if (const auto ws_path = args.value("--workspace")) {
     Workspace ws(*ws_path);
-    const std::int64_t id =
-        ws.add_pipeline_runs({run}, "benchscope-cli pipeline (" + run.platform + ", " + run.provenance.date + ")",
-                             content_hash(json_text));
+    // With --power the trace goes into the same import as the run (stored and removed together).
+    ImportBatch batch;
+    batch.source_path = "benchscope-cli pipeline (" + run.platform + ", " + run.provenance.date + ")";
+    batch.format = "benchscope-pipeline-v1";
+    batch.pipeline_runs = {run};
+    if (trace) batch.power_traces.push_back(*trace);
+    const std::int64_t id = ws.add_import(batch, content_hash(json_text));
     info << "stored the run in " << *ws_path << " (import " << id << ")\n";
   }
   return 0;
@@ -257,7 +301,7 @@ const CommandRegistrar registrar({
     "usage: benchscope-cli pipeline FRAME... --lens LENS.json|paper [--demosaic fused|bilinear|mhc|opencv]\n"
     "         [--backend cpu|opencl|cuda] [--detector hog|none|MODEL[,CONFIG]] [--frames N] [--policy block|drop-oldest]\n"
     "         [--queue N] [--detect-workers W] [--detect-scale S] [--pattern BGGR|RGGB|GRBG|GBRG] [--platform NAME]\n"
-    "         [--out DIR] [--workspace WS] [--json]\n"
+    "         [--out DIR] [--workspace WS] [--json] [--power SENSOR|auto|none] [--power-interval-ms M] [--sysfs-root DIR]\n"
     "  Runs capture -> preprocessing (demosaic + reprojection) -> detection, capture and preprocessing on a thread\n"
     "  each, detection on W worker threads (--detect-workers, default this machine's threads), with\n"
     "  bounded queues (--queue frames each, default 2; --policy block, or drop-oldest like a live camera), over N\n"
@@ -274,7 +318,10 @@ const CommandRegistrar registrar({
     "  --backend opencl runs demosaic (bilinear) + reprojection as OpenCL kernels on the first OpenCL device (GPU\n"
     "  preferred); detection stays on the CPU. --backend cuda runs the fused demosaic (bilinear) + reprojection\n"
     "  kernel on the first CUDA GPU (bit-identical to the CPU's fused path); without nvcc at build time or without\n"
-    "  a GPU it stops at once saying why.",
+    "  a GPU it stops at once saying why.\n"
+    "  --power records the on-board sensors during the run (phase \"pipeline\"): energy per frame through the\n"
+    "  pipeline, per preprocessed frame and per inference (mean power x stage mean time); --workspace stores the\n"
+    "  trace in the same import as the run.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
         return run_pipeline_cmd(args, out, err);

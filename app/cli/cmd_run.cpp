@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli run flops: measure the paper's kernel on this machine and write run JSON v1.
+#include <algorithm>
+#include <cstdio>
 #include <iomanip>
 #include <iostream>
 
 #include "analysis/flops.h"
 #include "analysis/units.h"
+#include "analysis/sweep_energy.h"
 #include "args.h"
 #include "command.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
+#include "power_args.h"
+#include "sensors/recording_csv.h"
 #include "run_json.h"
 #include "signals.h"
 #include "store/workspace.h"
@@ -19,11 +24,29 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
 
 namespace {
 
+// Energy of each sweep point from the phases the sweep marked: J per timed run (the point's energy over its
+// repeats) and GFLOPS/W at the point's mean power.
+void print_point_energies(std::ostream& out, const PowerTrace& trace, const std::vector<FlopsRun>& runs) {
+  print_phase_energies(out, trace);
+  out << "energy per sweep point (" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor
+      << "):\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %10s\n", "D", "W", "GFLOPS", "mean W", "J per run", "GFLOPS/W");
+  out << line;
+  for (const PointEnergy& p : sweep_point_energies(trace, runs)) {
+    std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.3f %12.4f %10.3f%s\n", p.dims,
+                  static_cast<long long>(p.workers), p.gflops, p.mean_power_w, p.joules_per_run, p.gflops_per_watt,
+                  p.samples < 2 ? "  (shorter than the sample interval)" : "");
+    out << line;
+  }
+}
+
 int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   if (!raw.empty() && raw[0] == "bandwidth") return run_bandwidth(raw, out, err);
   const ParsedArgs args = parse_args(raw, {"--json", "--no-warmup", "--quiet"},
                                      {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out",
-                                      "--workspace", "--variant", "--device"});
+                                      "--workspace", "--variant", "--device", "--power", "--power-interval-ms",
+                                      "--sysfs-root"});
   if (args.positional.size() != 1 || args.positional[0] != "flops")
     throw UsageError("expected 'run flops'");
   kernels::SweepSpec spec;
@@ -62,13 +85,33 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     err << "benchscope-cli: " << backend.label << " on " << backend.device_name << " (" << backend.details
         << "), theoretical peak " << format_si(backend.theoretical_peak_flops, "FLOPS") << '\n';
   const bool quiet = args.has("--quiet");
+  const CancelToken& cancel = interrupt_token();
+  // The sampler runs on its own thread; the sweep marks its phases: the warm-up of each D (the time from the
+  // previous point's end to this D's first point) and each point.
+  const auto power = start_power(args, err, quiet);
+  double last_end = power ? power->now_s() : 0;
+  int current_d = -1;
   kernels::SweepResult result;
   try {
     result = kernels::run_sweep(
-        backend, cpu, spec, interrupt_token(),
+        backend, cpu, spec, cancel,
         [&](double f, std::string_view step) {
           if (!quiet) err << "\r" << std::setw(5) << std::fixed << std::setprecision(1) << f * 100 << " % " << step
                           << "          " << std::flush;
+          if (!power || !step.starts_with("W=")) return;
+          const auto comma = step.find(", D=");
+          if (comma == std::string_view::npos) return;
+          const std::string w(step.substr(2, comma - 2)), d(step.substr(comma + 4));
+          if (std::stoi(d) != current_d) {
+            current_d = std::stoi(d);
+            if (spec.warmup) power->add_phase(sweep_warmup_phase(current_d), last_end, power->now_s());
+          }
+          power->begin_phase(sweep_point_phase(std::stoll(w), current_d));
+        },
+        [&](const FlopsRun&) {
+          if (!power) return;
+          power->end_phase();
+          last_end = power->now_s();
         });
   } catch (const std::invalid_argument& e) {  // sizes or D the backend refuses before running anything
     throw UsageError(e.what());
@@ -76,6 +119,14 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   if (!quiet) err << '\n';
   if (result.cancelled) err << "benchscope-cli: cancelled; keeping the " << result.runs.size() << " partial run(s)\n";
 
+  std::optional<PowerTrace> trace;
+  if (power) {
+    // Named after the run, so the workspace shows which run it belongs to.
+    const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
+    trace = power->finish("run flops " + backend.label + (first ? " " + first->variant : std::string()) + " " +
+                          (first ? first->provenance.date : std::string()));
+    if (first) trace->platform = first->platform;
+  }
   if (result.runs.empty()) {
     err << "benchscope-cli: error: no point completed; nothing written\n";
     return 1;
@@ -83,12 +134,17 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   if (const auto path = args.value("--out")) {
     save_run_json(*path, result.runs);
     if (!quiet) err << "benchscope-cli: wrote " << *path << '\n';
+    if (trace) {
+      sensors::save_recording_csv(power_csv_beside(*path), *trace);
+      if (!quiet) err << "benchscope-cli: wrote " << power_csv_beside(*path) << '\n';
+    }
   }
   if (const auto ws_path = args.value("--workspace")) {
     ImportBatch batch;
     batch.source_path = "benchscope-cli run flops";
     batch.format = "benchscope-run-v1";
     batch.runs = result.runs;
+    if (trace) batch.power_traces.push_back(*trace);  // the same import: stored, listed and removed with the run
     Workspace ws(*ws_path);
     ws.add_import(batch, content_hash(write_run_json(result.runs)));
     if (!quiet) err << "benchscope-cli: stored " << result.runs.size() << " run(s) in " << *ws_path << '\n';
@@ -105,6 +161,7 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
             << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
       out << " [variant " << row.variant << "]\n";
     }
+    if (trace) print_point_energies(out, *trace, result.runs);
   }
   return result.cancelled ? 1 : 0;
 }
@@ -121,6 +178,10 @@ const CommandRegistrar registrar({
     "  float4 for D = 1, 2, 4). throughput: enough independent vector chains per thread to reach the FMA pipes'\n"
     "  peak (CPU: all W*D points packed into vectors; OpenCL: float16x4; CUDA: float4x4).\n"
     "  Every output is checked against the closed form D*(cos 2N + sin 2N). Ctrl+C keeps the completed points.\n"
+    "         [--power SENSOR|auto|none] [--power-interval-ms 100] [--sysfs-root DIR]\n"
+    "  --power records the on-board sensors during the sweep (benchscope-cli sensors lists them): phases for the\n"
+    "  warm-up and every point, energy per point (J per timed run) and GFLOPS/W at the point's mean power; the\n"
+    "  trace is stored with the run (--workspace) and written beside it as RUN.power.csv (--out RUN.json).\n"
     "usage: benchscope-cli run bandwidth [--backend cpu|cpu-scalar|opencl [--device N]] [--mib 128]\n"
     "         [--repeats 10] [--workspace W.bsw] [--json] [--quiet]\n"
     "  STREAM triad a = b + q c over three float arrays of --mib MiB (12 bytes per element), mean ± SD of the\n"

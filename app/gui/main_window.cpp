@@ -27,6 +27,7 @@
 #include "power_view.h"
 #include <QTabWidget>
 #include "pipeline_json.h"
+#include "pipeline_measure_panel.h"
 #include "pipeline_view.h"
 #include "platform_view.h"
 #include "roofline_view.h"
@@ -86,8 +87,13 @@ MainWindow::MainWindow(QWidget* parent)
     if (!workspace_) new_untitled_workspace();
     try {
       const std::string json = write_pipeline_json(run);
-      workspace_->add_pipeline_runs({run}, "Pipeline tab (" + run.platform + ", " + run.provenance.date + ")",
-                                    content_hash(json));
+      // With "Record power" on, the trace goes into the same import as the run.
+      ImportBatch batch;
+      batch.source_path = "Pipeline tab (" + run.platform + ", " + run.provenance.date + ")";
+      batch.format = "benchscope-pipeline-v1";
+      batch.pipeline_runs = {run};
+      if (auto trace = pipeline_->measure_panel()->take_power_trace()) batch.power_traces.push_back(std::move(*trace));
+      workspace_->add_import(batch, content_hash(json));
     } catch (const WorkspaceError& e) {
       QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
     }
@@ -332,6 +338,7 @@ void MainWindow::store_measured_runs(const std::vector<FlopsRun>& runs, bool can
   batch.source_path = "Kernel Runner";
   batch.format = "benchscope-run-v1";
   batch.runs = runs;
+  if (auto trace = runner_->take_power_trace()) batch.power_traces.push_back(std::move(*trace));  // same import
   try {
     workspace_->add_import(batch, content_hash(write_run_json(runs)));
   } catch (const WorkspaceError& e) {

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Samples the chosen sensors on a thread of its own while a benchmark runs, and turns the samples into a
+// PowerTrace (watts, seconds from the first sample) with named phases (warm-up, each sweep point, each pipeline
+// stage) that the benchmark marks as it goes. Energy counters become power as delta E / delta t between
+// consecutive samples, stamped at the interval's end; the first row repeats the first interval's power so the
+// trace starts when the recording did. The sampler only sleeps between samples (a few sysfs reads each), so it
+// costs the benchmark next to nothing: `bench kernels` measures how much.
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "model/power_trace.h"
+#include "sensors/discovery.h"
+
+namespace bs::sensors {
+
+class PowerRecorder {
+ public:
+  PowerRecorder(Selection selection, std::chrono::microseconds interval);
+  ~PowerRecorder();
+  PowerRecorder(const PowerRecorder&) = delete;
+  PowerRecorder& operator=(const PowerRecorder&) = delete;
+
+  void start();                             // first sample now, then one every interval
+  double now_s() const;                     // seconds since start()
+  // Phases: begin_phase closes the open one (if any) at now and opens `name`; end_phase closes it.
+  void begin_phase(const std::string& name);
+  void end_phase();
+  void add_phase(const std::string& name, double start_s, double end_s);
+  std::size_t samples() const;
+  // Stops the thread after one last sample and builds the trace (platform = this host, label, provenance:
+  // measured, on-board sensor, the total sensor's id and the selection note in the settings).
+  PowerTrace finish(const std::string& label);
+  const Selection& selection() const { return selection_; }
+
+ private:
+  void sample();  // caller holds mutex_
+  void loop();
+
+  Selection selection_;
+  std::chrono::microseconds interval_;
+  std::chrono::steady_clock::time_point t0_;
+  std::string start_iso_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false, started_ = false, finished_ = false;
+  std::thread thread_;
+  std::vector<double> time_s_;
+  std::vector<std::vector<double>> raw_;  // per sensor: W, or cumulative J for energy sensors; NaN: failed read
+  std::vector<TracePhase> phases_;
+  std::string open_phase_;
+  double open_start_ = 0;
+  bool phase_open_ = false;
+};
+
+// Raw readings of one energy counter (cumulative J, NaN where a read failed) at `time_s` -> watts: the mean
+// power of the interval ending at each sample; the first sample takes the first interval's power. A sample
+// whose own or previous reading failed is NaN.
+std::vector<double> power_from_energy(const std::vector<double>& time_s, const std::vector<double>& joules);
+
+}  // namespace bs::sensors
