@@ -265,7 +265,7 @@ bool parse_number(std::string_view cell, bool decimal_comma, double& value) {
 bool missing_marker(std::string_view cell) {
   if (cell.empty()) return true;
   const std::string l = lower(cell);
-  return l == "n/a" || l == "[n/a]" || l == "na" || l == "-";
+  return l == "n/a" || l == "[n/a]" || l == "na";
 }
 
 // Seconds since the epoch that a time column's first value may be: 2000-01-01 .. 2100-01-01. A relative log
