@@ -116,7 +116,8 @@ Classified classify(std::string_view raw) {
     // settings, not measurements.
     role = Role::Ignore;
   } else if (n == "t" || has("time") || has("second") || n == "sec" || n == "secs" || n == "millis" ||
-             n == "micros" || has("elapsed") || has("zeit") || n == "date" || n == "datetime") {
+             n == "micros" || has("elapsed") || has("zeit") || n == "date" || n == "datetime" || has("epoch") ||
+             n == "unix") {
     role = Role::Time;
     if (unit.empty() && n == "millis") unit = "ms";
     if (unit.empty() && n == "micros") unit = "us";

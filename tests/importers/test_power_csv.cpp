@@ -119,36 +119,36 @@ class TestPowerCsv : public QObject {
   void wall_clock_time_columns() {
     // ISO 8601 with an offset: time_s from the first row, start_time kept as written.
     auto t = parse("timestamp,power_W\n2026-11-22T10:00:01.250+01:00,5\n2026-11-22T10:00:02.000+01:00,6\n");
-    QCOMPARE(t.start_time, std::string("2026-11-22T10:00:01.250+01:00"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-11-22T10:00:01.250+01:00"));
     QCOMPARE(t.time_s[1], 0.75);
     // nvidia-smi's year/month/day with slashes.
     t = parse("timestamp,power_W\n2025/05/05 20:58:44.813,5\n2025/05/05 20:58:45.013,6\n");
-    QCOMPARE(t.start_time, std::string("2025-05-05T20:58:44.813"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2025-05-05T20:58:44.813"));
     QVERIFY(std::abs(t.time_s[1] - 0.2) < 1e-6);
     // Month first with dashes (tegrastats' order), across midnight.
     t = parse("date,current_A\n12-31-2026 23:59:59.500,1\n01-01-2027 00:00:00.250,1\n");
-    QCOMPARE(t.start_time, std::string("2026-12-31T23:59:59.500"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-12-31T23:59:59.500"));
     QVERIFY(std::abs(t.time_s[1] - 0.75) < 1e-6);
     // Otii's wall clock: "(UTC)" is a zone, not a unit; the start time gets its "Z".
     auto b = bs::parse_power_csv("Wall-clock time (UTC),Main current (A),Main voltage (V)\n"
                                  "2026-11-22 10:00:01.000,0.1,3.3\n2026-11-22 10:00:01.500,0.2,3.3\n", "otii.csv");
-    QCOMPARE(b.power_traces[0].start_time, std::string("2026-11-22 10:00:01.000Z"));
+    QCOMPARE(QString::fromStdString(b.power_traces[0].start_time), QStringLiteral("2026-11-22 10:00:01.000Z"));
     QCOMPARE(b.power_traces[0].time_s[1], 0.5);
     QCOMPARE(b.power_traces[0].provenance.measurement, bs::MeasurementKind::ExternalMeter);
     QCOMPARE(b.power_traces[0].provenance.sensor, std::string("Otii"));
     // Relative seconds beside a wall clock: time from the seconds, start time from the wall clock.
     t = parse("Timestamp (s),Wall-clock time (UTC),Main current (A)\n0.5,2026-11-22T10:00:01.5,0.1\n1.0,2026-11-22T10:00:02,0.2\n");
     QCOMPARE(t.time_s[1], 0.5);
-    QCOMPARE(t.start_time, std::string("2026-11-22T10:00:01.5Z"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-11-22T10:00:01.5Z"));
     // Unix time in seconds, milliseconds, and nanoseconds beyond a double's 53 bits (read exactly as integers:
     // 1763805601250000001 - 1763805601250000000 = 1 ns survives).
     t = parse("epoch,power_W\n1763805601.25,5\n1763805601.75,5\n");
-    QCOMPARE(t.start_time, std::string("2025-11-22T10:00:01.250Z"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2025-11-22T10:00:01.250Z"));
     QCOMPARE(t.time_s[1], 0.5);
     t = parse("time_ms,power_W\n1763805601250,5\n1763805601750,5\n");
-    QCOMPARE(t.start_time, std::string("2025-11-22T10:00:01.250Z"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2025-11-22T10:00:01.250Z"));
     t = parse("Timestamp (ns),Power Draw (W)\n1763805601250000000,12.84\n1763805601250000001,12.9\n1763805601350000000,13\n");
-    QCOMPARE(t.start_time, std::string("2025-11-22T10:00:01.250Z"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2025-11-22T10:00:01.250Z"));
     QCOMPARE(t.time_s[1], 1e-9);
     QVERIFY(std::abs(t.time_s[2] - 0.1) < 1e-12);
     // A small relative time is not a Unix time.

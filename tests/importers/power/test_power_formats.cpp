@@ -90,7 +90,7 @@ class TestPowerFormats : public QObject {
     const auto b = import("real/powerlog-samples-doc.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QVERIFY(std::abs(t.time_s[1] - 0.1035) < 1e-12);                // from "Elapsed (s)": 0.2086 - 0.1051
-    QCOMPARE(t.start_time, std::string("2026-09-09T15:14:01.539Z"));  // 1788966841539282000 ns
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-09-09T15:14:01.539Z"));  // 1788966841539282000 ns
     QCOMPARE(t.channels.size(), std::size_t{4});
     QVERIFY(t.total_channel.empty());  // "GPU Power (W)" sums the GPUs, not the machine: no total named
     bool said = false;
@@ -101,8 +101,8 @@ class TestPowerFormats : public QObject {
     QVERIFY(std::abs(s.power_w->summary.mean - 77.76) < 1e-12);
     QVERIFY(std::abs(*s.energy_j - 8.04816) < 1e-9);
     // The README's one-sample "Timestamp (ns),Power Draw (W)": time from the integer nanoseconds, exactly.
-    const bs::PowerTrace& one = import("real/powerlog-readme.csv").power_traces.at(0);
-    QCOMPARE(one.start_time, std::string("2025-07-11T01:47:20.221Z"));
+    const bs::PowerTrace one = import("real/powerlog-readme.csv").power_traces.at(0);
+    QCOMPARE(QString::fromStdString(one.start_time), QStringLiteral("2025-07-11T01:47:20.221Z"));
     QCOMPARE(one.channels.at(0).values, (std::vector<double>{12.84}));
   }
   void joulescope_export() {
@@ -147,7 +147,7 @@ class TestPowerFormats : public QObject {
   void iso_timestamps_across_midnight() {
     const bs::PowerTrace t = import("iso-timestamps.csv").power_traces.at(0);
     QCOMPARE(t.platform, std::string("NUC"));
-    QCOMPARE(t.start_time, std::string("2026-12-31T23:59:58.000Z"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-12-31T23:59:58.000Z"));
     QCOMPARE(t.time_s.size(), std::size_t{16});
     QCOMPARE(t.time_s[15], 3.75);  // into the next year
     QCOMPARE(t.time_s[8], 2.0);
