@@ -424,11 +424,13 @@ void PowerCsvParser::header_or_comment(std::string_view raw, std::size_t line_no
     } else if (i != time_col_ && !cols[i].name.empty()) {
       // A second time column or one BenchScope has no use for: said once, so nobody wonders where it went. The
       // first other time column may still give the absolute start time (Otii's wall clock beside its seconds).
+      bool start_only = false;
       if (r == Role::Time) {
-        if (abs_col_ == std::size_t(-1)) abs_col_ = i;
+        if (abs_col_ == std::size_t(-1)) abs_col_ = i, start_only = true;
         cols[i].role = Role::Ignore;
       }
-      ignored += (ignored.empty() ? "'" : ", '") + cols[i].name + "' (" + std::to_string(i + 1) + ")";
+      ignored += (ignored.empty() ? "'" : ", '") + cols[i].name + "' (" + std::to_string(i + 1) +
+                 (start_only ? ", only for the start time" : "") + ")";
     }
   }
   if (!ignored.empty())
