@@ -9,6 +9,8 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -153,12 +155,15 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
     QVector<double> xs, ys;
     for (std::size_t b = 0; b < buckets; ++b) {
       const std::size_t lo = b * n / buckets, hi = std::max(lo + 1, (b + 1) * n / buckets);
-      const auto [mn, mx] = std::minmax_element(amps.begin() + static_cast<std::ptrdiff_t>(lo),
-                                                amps.begin() + static_cast<std::ptrdiff_t>(hi));
+      // Missing samples (NaN) are left out; a bucket with none present adds no point (the line bridges it).
+      double mn = std::numeric_limits<double>::infinity(), mx = -mn;
+      for (std::size_t k = lo; k < hi; ++k)
+        if (!std::isnan(amps[k])) mn = std::min(mn, amps[k]), mx = std::max(mx, amps[k]);
+      if (!(mn <= mx)) continue;
       const double t0 = trace.time_s[lo] - trace.time_s.front();
       xs << t0 << t0;
-      ys << *mn << *mx;
-      y_max = std::max(y_max, *mx);
+      ys << mn << mx;
+      y_max = std::max(y_max, mx);
     }
     x_max = std::max(x_max, trace.time_s.back() - trace.time_s.front());
     QCPGraph* g = plot.addGraph();

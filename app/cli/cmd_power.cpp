@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/power.h"
 #include "analysis/power_phases.h"
 #include "analysis/power_stats.h"
 #include "args.h"
@@ -110,7 +111,8 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     std::vector<DetectedPhase> phases;
     if (args.has("--phases")) {
       const PowerSeries p = derive_power(t, stats_options.supply_v);
-      const PowerChannel* signal = t.channels.empty() ? nullptr : &t.channels.front();
+      // No power: the levels of the main current channel (the named total, else the first).
+      const PowerChannel* signal = main_channel(t, PowerQuantity::Current);
       if (!p.values.empty()) phases = detect_phases(t.time_s, p.values, phase_options);
       else if (signal) phases = detect_phases(t.time_s, signal->values, phase_options);
     }

@@ -2,14 +2,14 @@
 #include "analysis/power.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
 namespace bs {
-namespace {
 
 // The named total channel when it has quantity `q`, else the first channel of that quantity.
-const PowerChannel* find_channel(const PowerTrace& t, PowerQuantity q) {
+const PowerChannel* main_channel(const PowerTrace& t, PowerQuantity q) {
   if (!t.total_channel.empty())
     for (const PowerChannel& c : t.channels)
       if (c.name == t.total_channel && c.quantity == q && c.values.size() == t.time_s.size()) return &c;
@@ -18,19 +18,24 @@ const PowerChannel* find_channel(const PowerTrace& t, PowerQuantity q) {
   return nullptr;
 }
 
-}  // namespace
+Summary summarize_samples(std::span<const double> values) noexcept {
+  RunningStats s;
+  for (double v : values)
+    if (!std::isnan(v)) s.add(v);
+  return {s.count(), s.mean(), s.sd(), s.min(), s.max()};
+}
 
 std::vector<double> current_series(const PowerTrace& trace) {
-  const PowerChannel* c = find_channel(trace, PowerQuantity::Current);
+  const PowerChannel* c = main_channel(trace, PowerQuantity::Current);
   return c ? c->values : std::vector<double>{};
 }
 
 std::vector<double> power_series(const PowerTrace& trace, std::optional<double> supply_v) {
-  if (const PowerChannel* p = find_channel(trace, PowerQuantity::Power)) return p->values;
-  const PowerChannel* i = find_channel(trace, PowerQuantity::Current);
+  if (const PowerChannel* p = main_channel(trace, PowerQuantity::Power)) return p->values;
+  const PowerChannel* i = main_channel(trace, PowerQuantity::Current);
   if (!i) return {};
   std::vector<double> out(i->values.size());
-  if (const PowerChannel* v = find_channel(trace, PowerQuantity::Voltage)) {
+  if (const PowerChannel* v = main_channel(trace, PowerQuantity::Voltage)) {
     for (std::size_t k = 0; k < out.size(); ++k) out[k] = i->values[k] * v->values[k];
     return out;
   }
@@ -41,6 +46,7 @@ std::vector<double> power_series(const PowerTrace& trace, std::optional<double> 
 }
 
 double percentile(std::vector<double> values, double q) {
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }), values.end());
   if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
   const double pos = std::clamp(q, 0.0, 100.0) / 100.0 * static_cast<double>(values.size() - 1);
@@ -52,9 +58,14 @@ double percentile(std::vector<double> values, double q) {
 double median(std::vector<double> values) { return percentile(std::move(values), 50); }
 
 double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values) {
+  const std::size_t n = std::min(time_s.size(), values.size());
   double sum = 0;
-  for (std::size_t k = 1; k < time_s.size() && k < values.size(); ++k)
-    sum += (time_s[k] - time_s[k - 1]) * (values[k] + values[k - 1]) / 2;
+  std::size_t prev = n;  // the last present sample, n while none
+  for (std::size_t k = 0; k < n; ++k) {
+    if (std::isnan(values[k])) continue;  // bridged: the next present sample joins `prev`
+    if (prev < n) sum += (time_s[k] - time_s[prev]) * (values[k] + values[prev]) / 2;
+    prev = k;
+  }
   return sum;
 }
 
@@ -69,11 +80,14 @@ TraceStats trace_stats(const PowerTrace& trace, std::optional<double> supply_v, 
   s.duration_s = trace.time_s[last - 1] - trace.time_s[first];
   const auto slice = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(first), v.begin() + static_cast<std::ptrdiff_t>(last)); };
   const std::vector<double> current = current_series(trace);
-  if (!current.empty()) s.current_a = summarize(slice(current));
+  if (!current.empty()) {
+    const Summary c = summarize_samples(slice(current));
+    if (c.n > 0) s.current_a = c;  // every sample missing: unknown, not 0 A
+  }
   const std::vector<double> power = power_series(trace, supply_v);
-  if (!power.empty()) {
-    const std::vector<double> p = slice(power);
-    s.power_w = summarize(p);
+  const std::vector<double> p = power.empty() ? std::vector<double>{} : slice(power);
+  if (const Summary sp = summarize_samples(p); sp.n > 0) {
+    s.power_w = sp;
     s.power_p5 = percentile(p, 5);
     s.power_p50 = percentile(p, 50);
     s.power_p95 = percentile(p, 95);

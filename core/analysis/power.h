@@ -2,6 +2,7 @@
 #pragma once
 // Statistics of supply current/power logs, the paper's efficiency figure and its battery model.
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -10,17 +11,30 @@
 
 namespace bs {
 
-// Power in W per sample: a power channel if the log has one, else current x voltage channel, else current x
-// `supply_v` (or the trace's own supply voltage). Empty when none of these is available.
+// The channel that stands for the whole trace in quantity `q`: PowerTrace::total_channel when it has that quantity,
+// else the first channel of it; nullptr when there is none (or its length differs from the time axis).
+const PowerChannel* main_channel(const PowerTrace& trace, PowerQuantity q);
+
+// Power in W per sample: the main power channel if the log has one, else current x voltage channel, else current
+// x `supply_v` (or the trace's own supply voltage). Empty when none of these is available. Missing samples (NaN)
+// stay NaN.
 std::vector<double> power_series(const PowerTrace& trace, std::optional<double> supply_v = std::nullopt);
 std::vector<double> current_series(const PowerTrace& trace);  // empty without a current channel
 
-// Linear-interpolated percentile q in [0, 100] of `values` (copied and partially sorted).
+// Missing samples: NaN in a channel marks a sample the log does not have. Every statistic below skips them (never
+// reads them as zero): n counts the present samples only.
+
+// n, mean, sample SD, min, max of the present (non-NaN) values.
+Summary summarize_samples(std::span<const double> values) noexcept;
+
+// Linear-interpolated percentile q in [0, 100] of the present values (copied and sorted); 0 when none.
 double percentile(std::vector<double> values, double q);
 // percentile(values, 50): the middle value, or the mean of the middle two for an even count.
 double median(std::vector<double> values);
 
-// Trapezoidal integral of `values` over irregular timestamps `time_s` (J for W).
+// Trapezoidal integral of `values` over irregular timestamps `time_s` (J for W). A missing sample is bridged: the
+// trapezoid joins the present samples on either side of the gap (a straight line across it, as the plot draws
+// it); before the first and after the last present sample nothing is counted.
 double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values);
 
 struct TraceStats {

@@ -45,6 +45,16 @@ std::vector<DetectedPhase> detect_phases(std::span<const double> t, std::span<co
   if (t.size() != v.size()) throw std::invalid_argument("phase detection: time and values differ in length");
   if (!(o.smooth_s >= 0) || !(o.min_phase_s > 0) || (o.min_step && !(*o.min_step > 0)))
     throw std::invalid_argument("phase detection: smoothing >= 0 s, minimum phase > 0 s and minimum step > 0");
+  if (std::any_of(v.begin(), v.end(), [](double x) { return std::isnan(x); })) {
+    // Missing samples: phases are time ranges, so they are found on the present samples alone.
+    std::vector<double> tp, vp;
+    for (std::size_t k = 0; k < v.size(); ++k)
+      if (!std::isnan(v[k])) {
+        tp.push_back(t[k]);
+        vp.push_back(v[k]);
+      }
+    return detect_phases(tp, vp, o);
+  }
   const std::size_t n = v.size();
   if (n < 2) return {};
   const auto [lo_it, hi_it] = std::minmax_element(v.begin(), v.end());

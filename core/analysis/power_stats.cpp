@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/power_stats.h"
 
+#include "analysis/power.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,6 +11,7 @@
 namespace bs {
 namespace {
 
+// Linear interpolation at `at` between the samples around it; `t` and `v` hold present samples only.
 double interpolate(std::span<const double> t, std::span<const double> v, double at) {
   const auto hi = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), at) - t.begin());
   if (hi == 0) return v.front();
@@ -19,18 +22,20 @@ double interpolate(std::span<const double> t, std::span<const double> v, double 
   return v[lo] + (v[hi] - v[lo]) * (at - t[lo]) / span;
 }
 
-const PowerChannel* first_channel(const PowerTrace& t, PowerQuantity q) {
-  for (const PowerChannel& c : t.channels)
-    if (c.quantity == q && c.values.size() == t.time_s.size()) return &c;
-  return nullptr;
-}
+// The trace's main channel of quantity q (its named total, else the first: analysis/power.h).
+const PowerChannel* first_channel(const PowerTrace& t, PowerQuantity q) { return main_channel(t, q); }
+
+double integrate_present(std::span<const double> t, std::span<const double> v, double from_s, double to_s);
 
 }  // namespace
 
 Percentiles percentiles(std::span<const double> values) {
   Percentiles p;
-  if (values.empty()) return p;
-  std::vector<double> sorted(values.begin(), values.end());
+  std::vector<double> sorted;
+  sorted.reserve(values.size());
+  for (double v : values)
+    if (!std::isnan(v)) sorted.push_back(v);  // missing samples are skipped, never read as 0
+  if (sorted.empty()) return p;
   std::sort(sorted.begin(), sorted.end());
   const auto at = [&](double q) {
     const double pos = q / 100.0 * static_cast<double>(sorted.size() - 1);
@@ -45,7 +50,7 @@ Percentiles percentiles(std::span<const double> values) {
   return p;
 }
 
-SignalStats signal_stats(std::span<const double> values) { return {summarize(values), percentiles(values)}; }
+SignalStats signal_stats(std::span<const double> values) { return {summarize_samples(values), percentiles(values)}; }
 
 std::string_view to_string(PowerSource source) {
   switch (source) {
@@ -95,9 +100,26 @@ PowerSeries derive_power(const PowerTrace& trace, std::optional<double> supply_v
 
 double integrate_range(std::span<const double> t, std::span<const double> v, double from_s, double to_s) {
   const std::size_t n = std::min(t.size(), v.size());
-  if (n < 2 || !(to_s > from_s)) return 0;
   t = t.first(n);
   v = v.first(n);
+  if (std::none_of(v.begin(), v.end(), [](double x) { return std::isnan(x); })) return integrate_present(t, v, from_s, to_s);
+  // Missing samples: integrate the present ones, so a gap is bridged by the straight line between its neighbours
+  // and the range shrinks to the first..last present sample (analysis/power.h says the same for
+  // integrate_trapezoid).
+  std::vector<double> tp, vp;
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isnan(v[k])) {
+      tp.push_back(t[k]);
+      vp.push_back(v[k]);
+    }
+  return integrate_present(tp, vp, from_s, to_s);
+}
+
+namespace {
+
+double integrate_present(std::span<const double> t, std::span<const double> v, double from_s, double to_s) {
+  const std::size_t n = t.size();
+  if (n < 2 || !(to_s > from_s)) return 0;
   from_s = std::max(from_s, t.front());
   to_s = std::min(to_s, t.back());
   if (!(to_s > from_s)) return 0;
@@ -112,6 +134,8 @@ double integrate_range(std::span<const double> t, std::span<const double> v, dou
   sum += (to_s - prev_t) * (interpolate(t, v, to_s) + prev_v) / 2;
   return sum;
 }
+
+}  // namespace
 
 PowerStats power_stats(const PowerTrace& trace, const PowerStatsOptions& options) {
   if (options.from_s && options.to_s && *options.to_s < *options.from_s)
@@ -133,15 +157,21 @@ PowerStats power_stats(const PowerTrace& trace, const PowerStatsOptions& options
   for (const PowerChannel& c : trace.channels)
     if (c.values.size() == t.size()) s.channels.push_back({c.name, c.quantity, signal_stats(slice(c.values))});
   if (const PowerChannel* i = first_channel(trace, PowerQuantity::Current)) {
-    s.current_a = signal_stats(slice(i->values));
-    s.charge_c = integrate_range(t, i->values, s.from_s, s.to_s);
+    const SignalStats c = signal_stats(slice(i->values));
+    if (c.summary.n > 0) {  // every sample missing: unknown, not 0 A
+      s.current_a = c;
+      s.charge_c = integrate_range(t, i->values, s.from_s, s.to_s);
+    }
   }
   const PowerSeries power = derive_power(trace, options.supply_v);
   s.power_source = power.source;
   s.supply_v = power.supply_v;
   if (!power.values.empty()) {
-    s.power_w = signal_stats(slice(power.values));
-    s.energy_j = integrate_range(t, power.values, s.from_s, s.to_s);
+    const SignalStats p = signal_stats(slice(power.values));
+    if (p.summary.n > 0) {
+      s.power_w = p;
+      s.energy_j = integrate_range(t, power.values, s.from_s, s.to_s);
+    }
   }
   return s;
 }

@@ -2,8 +2,10 @@
 #pragma once
 // Statistics of a supply current/power trace over the whole log or a time range: n, mean, SD, min, max,
 // percentiles, duration and energy for current and power, plus every channel on its own (tegrastats rails).
-// Power is the log's power channel, else current x voltage channel, else current x supply voltage (the paper:
-// 16 V); which one was used is reported, so a derived number never passes for a measured one.
+// Power is the log's main power channel (PowerTrace::total_channel, else the first), else current x voltage
+// channel, else current x supply voltage (the paper: 16 V); which one was used is reported, so a derived number
+// never passes for a measured one. Missing samples (NaN) are skipped by every statistic: n counts present samples,
+// and a signal with none present is reported as unknown, never as 0.
 #include <optional>
 #include <span>
 #include <string>
@@ -18,7 +20,8 @@ namespace bs {
 struct Percentiles {
   double p5 = 0, p50 = 0, p95 = 0, p99 = 0;
 };
-// Linear-interpolated percentiles (the same rule as analysis/power.h's percentile()), one sort for all four.
+// Linear-interpolated percentiles (the same rule as analysis/power.h's percentile()), one sort for all four, over
+// the present (non-NaN) values.
 Percentiles percentiles(std::span<const double> values);
 
 struct SignalStats {
@@ -72,6 +75,8 @@ PowerSeries derive_power(const PowerTrace& trace, std::optional<double> supply_v
 
 // Trapezoidal integral over irregular timestamps restricted to [from_s, to_s]; the values at the ends are
 // interpolated linearly, so a window cut between two samples gets its exact share. Timestamps non-decreasing.
+// Missing samples (NaN) are bridged by the line between the present samples around them; the range is clipped to
+// the first..last present sample.
 double integrate_range(std::span<const double> time_s, std::span<const double> values, double from_s, double to_s);
 
 }  // namespace bs

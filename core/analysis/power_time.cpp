@@ -67,22 +67,18 @@ long long days_from_civil(int year, unsigned month, unsigned day) noexcept {
   return era * 146097 + doe - 719468;
 }
 
-std::optional<double> parse_iso8601(std::string_view s) noexcept {
-  std::size_t pos = 0;
-  int y = 0, mo = 0, d = 0;
-  if (!fixed_int(s, pos, 4, y) || !expect(s, pos, '-') || !fixed_int(s, pos, 2, mo) || !expect(s, pos, '-') ||
-      !fixed_int(s, pos, 2, d))
-    return std::nullopt;
-  if (mo < 1 || mo > 12 || d < 1 || static_cast<unsigned>(d) > days_in_month(y, static_cast<unsigned>(mo)))
-    return std::nullopt;
-  if (pos >= s.size() || (s[pos] != 'T' && s[pos] != ' ')) return std::nullopt;
-  ++pos;
+namespace {
+
+// "HH:MM:SS[.fff][Z|+hh[:mm]]" from `pos` to the end of `s`, on the date `days` -> seconds since the epoch.
+std::optional<double> time_and_zone(std::string_view s, std::size_t pos, long long days, bool* has_offset) noexcept {
   const auto tod = time_of_day(s, pos);
   if (!tod) return std::nullopt;
   double offset_s = 0;
+  bool zone = false;
   if (pos < s.size()) {
     if (s[pos] == 'Z' && pos + 1 == s.size()) {
       ++pos;
+      zone = true;
     } else if (s[pos] == '+' || s[pos] == '-') {
       const double sign = s[pos] == '-' ? -1 : 1;
       ++pos;
@@ -91,11 +87,54 @@ std::optional<double> parse_iso8601(std::string_view s) noexcept {
       if (pos < s.size() && s[pos] == ':') ++pos;
       if (!fixed_int(s, pos, 2, om) || oh > 14 || om > 59) return std::nullopt;
       offset_s = sign * (oh * 3600.0 + om * 60.0);
+      zone = true;
     }
     if (pos != s.size()) return std::nullopt;
   }
-  const long long days = days_from_civil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d));
+  if (has_offset) *has_offset = zone;
   return static_cast<double>(days) * 86400.0 + *tod - offset_s;
+}
+
+bool valid_date(int y, int mo, int d) noexcept {
+  return mo >= 1 && mo <= 12 && d >= 1 && static_cast<unsigned>(d) <= days_in_month(y, static_cast<unsigned>(mo));
+}
+
+}  // namespace
+
+std::optional<double> parse_iso8601(std::string_view s) noexcept {
+  std::size_t pos = 0;
+  int y = 0, mo = 0, d = 0;
+  if (!fixed_int(s, pos, 4, y) || !expect(s, pos, '-') || !fixed_int(s, pos, 2, mo) || !expect(s, pos, '-') ||
+      !fixed_int(s, pos, 2, d))
+    return std::nullopt;
+  if (!valid_date(y, mo, d)) return std::nullopt;
+  if (pos >= s.size() || (s[pos] != 'T' && s[pos] != ' ')) return std::nullopt;
+  ++pos;
+  return time_and_zone(s, pos, days_from_civil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d)), nullptr);
+}
+
+std::optional<double> parse_date_time(std::string_view s, bool* has_offset) noexcept {
+  std::size_t pos = 0;
+  int y = 0, mo = 0, d = 0;
+  if (s.size() >= 10 && (s[4] == '-' || s[4] == '/')) {
+    // Year first: "2026-11-22" (ISO) or "2026/11/22" (nvidia-smi).
+    const char sep = s[4];
+    if (!fixed_int(s, pos, 4, y) || !expect(s, pos, sep) || !fixed_int(s, pos, 2, mo) || !expect(s, pos, sep) ||
+        !fixed_int(s, pos, 2, d))
+      return std::nullopt;
+  } else if (s.size() >= 10 && s[2] == '-' && s[5] == '-') {
+    // Month first with dashes: "11-22-2026" (US order, as tegrastats prints it). "11/22/2026" is not read: with
+    // slashes it is as often day first, and a silently swapped day and month would shift the log by months.
+    if (!fixed_int(s, pos, 2, mo) || !expect(s, pos, '-') || !fixed_int(s, pos, 2, d) || !expect(s, pos, '-') ||
+        !fixed_int(s, pos, 4, y))
+      return std::nullopt;
+  } else {
+    return std::nullopt;
+  }
+  if (!valid_date(y, mo, d)) return std::nullopt;
+  if (pos >= s.size() || (s[pos] != 'T' && s[pos] != ' ')) return std::nullopt;
+  ++pos;
+  return time_and_zone(s, pos, days_from_civil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d)), has_offset);
 }
 
 std::optional<double> parse_month_day_year(std::string_view date, std::string_view time) noexcept {

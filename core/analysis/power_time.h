@@ -17,6 +17,13 @@ long long days_from_civil(int year, unsigned month, unsigned day) noexcept;
 // Empty when the text is not such a date-time or a field is out of range.
 std::optional<double> parse_iso8601(std::string_view text) noexcept;
 
+// Any of the date-time forms power logs write, each with optional fractional seconds and (like ISO 8601) an
+// optional "Z" or "+01:00" offset: ISO 8601 ("2026-11-22T10:00:01.5", "2026-11-22 10:00:01"), nvidia-smi's
+// "2026/11/22 10:00:01.250", and the US "11-22-2026 10:00:01.250" (month first, as tegrastats prints it; not
+// "11/22/2026", which is as often day first). The date and time are separated by 'T' or one space.
+// `has_offset` (optional) tells whether the text carried a zone. Empty when none of these fits.
+std::optional<double> parse_date_time(std::string_view text, bool* has_offset = nullptr) noexcept;
+
 // tegrastats' "11-22-2026" "10:00:01" (month-day-year as the tool prints it).
 std::optional<double> parse_month_day_year(std::string_view date, std::string_view time) noexcept;
 

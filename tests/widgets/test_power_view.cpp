@@ -3,6 +3,7 @@
 // labelled axes, a legend) by default, power on request, and a long trace drawn through the min/max decimation
 // with its true extremes kept.
 #include <QComboBox>
+#include <cmath>
 #include <QTableWidget>
 #include <QTest>
 #include <qcustomplot.h>
@@ -83,6 +84,30 @@ class TestPowerView : public QObject {
     const auto [lo, hi] = value_range(g);
     QCOMPARE(hi, 9.5);
     QCOMPARE(lo, 0.05);
+  }
+  void missing_samples_are_not_drawn_as_zero() {
+    // A 4 W rail and its 10 W total, every fifth total sample missing (NaN): the plot shows the total without a
+    // single point at 0 W or NaN, and the table's mean is the total's, 10 W, over the present samples.
+    bs::PowerTrace t;
+    t.platform = "gaps";
+    t.label = "gaps";
+    std::vector<double> rail, total;
+    for (int i = 0; i < 1000; ++i) {
+      t.time_s.push_back(i * 0.01);
+      rail.push_back(4);
+      total.push_back(i % 5 == 2 ? std::nan("") : 10.0);
+    }
+    t.channels.push_back({"rail", bs::PowerQuantity::Power, rail});
+    t.channels.push_back({"total", bs::PowerQuantity::Power, total});
+    t.total_channel = "total";
+    bs::ui::PowerView view;
+    view.resize(1000, 600);
+    view.set_data(stored({t}), {}, {});
+    view.set_quantity(bs::ui::PowerView::Quantity::Power);
+    const QCPGraph* g = view.plot()->graph(0);
+    QVERIFY(g->dataCount() > 0);
+    for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) QCOMPARE(it->value, 10.0);
+    QCOMPARE(view.table()->item(0, 3)->text(), QStringLiteral("10.00 ± 0.00"));
   }
 };
 

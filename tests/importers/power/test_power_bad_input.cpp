@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Bad power logs: each one an ImportError with the right category and file:line:column in its message.
 #include <QTest>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "importer.h"
 #include "power_csv.h"
@@ -63,6 +65,29 @@ class TestPowerBadInput : public QObject {
     QVERIFY2(int(e.category()) == category, qPrintable(what));
     QVERIFY2(what.startsWith(QString::fromStdString(kBad) + where), qPrintable(what));
     QVERIFY2(what.contains(reason), qPrintable(what));
+  }
+  void manifest_entries_of_the_power_csv_importer() {
+    // tests/data/bad/manifest.json entries marked "importer": "power-csv": rejected by that importer (not merely
+    // by sniffing), with the manifest's text in the reason and a line number.
+    std::ifstream in(BENCHSCOPE_TEST_DATA_DIR "/bad/manifest.json");
+    const auto manifest = nlohmann::json::parse(in);
+    int checked = 0;
+    for (const auto& entry : manifest.at("files")) {
+      if (entry.value("importer", "") != "power-csv") continue;
+      const std::string path = std::string(BENCHSCOPE_TEST_DATA_DIR "/") + entry.at("file").get<std::string>();
+      const bs::ImportError e = import_error(path);
+      const std::string what = e.what();
+      QVERIFY2(std::string(bs::to_string(e.category())) == entry.at("category").get<std::string>(), what.c_str());
+      QVERIFY2(what.find(entry.at("contains").get<std::string>()) != std::string::npos, what.c_str());
+      QVERIFY2(e.location().line > 0, what.c_str());
+      try {
+        bs::read_power_csv(path);
+        QFAIL(qPrintable(QString::fromStdString(path) + " was accepted by read_power_csv"));
+      } catch (const bs::ImportError&) {
+      }
+      ++checked;
+    }
+    QVERIFY(checked >= 5);
   }
   void non_numeric_cell_at_line_1234() {
     std::string text = "# platform: NUC\n# supply_voltage_V: 16\ntime_s,current_A,voltage_V\n";

@@ -5,6 +5,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "analysis/power_stats.h"
 #include "importer.h"
 #include "power_csv.h"
 #include "power_import.h"
@@ -32,6 +33,78 @@ bool has_channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
 class TestPowerFormats : public QObject {
   Q_OBJECT
  private slots:
+  void real_intel_power_gadget_log() {
+    // tests/data/power/real/SOURCES: sunilkumar2000/Power-Monitoring-Tool PowerLog.csv, 10 rows, unquoted.
+    const auto b = import("real/intel-power-gadget-windows.csv");
+    QCOMPARE(b.format, std::string("power-csv"));
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    // Time from "Elapsed Time (sec)" (0.108 .. 1.041 s), not the date-less "System Time".
+    QCOMPARE(t.time_s.size(), std::size_t{10});
+    QVERIFY(std::abs(t.time_s[9] - 0.933) < 1e-12);
+    QVERIFY(t.start_time.empty());
+    // Processor (package), IA, DRAM and GT power; limits, cumulative energies, temperatures are not channels.
+    QCOMPARE(t.channels.size(), std::size_t{4});
+    QCOMPARE(t.total_channel, std::string("Processor Power_0(Watt)"));
+    QCOMPARE(t.provenance.measurement, bs::MeasurementKind::OnBoardSensor);
+    QCOMPARE(t.provenance.sensor, std::string("Intel Power Gadget (RAPL)"));
+    // The summary footer: 14 "name = value" lines, kept as settings.
+    QCOMPARE(t.provenance.settings.size(), std::size_t{14});
+    QCOMPARE(t.provenance.settings[0], (std::pair<std::string, std::string>{"Total Elapsed Time (sec)", "1.040852"}));
+    bool footer_warned = false;
+    for (const auto& w : b.warnings) footer_warned = footer_warned || w.find(":13: summary footer (14") != std::string::npos;
+    QVERIFY(footer_warned);
+    // By hand, package power 7.163 12.414 2.998 6.171 4.152 2.443 4.778 6.874 17.094 9.811 W:
+    //   sum 73.898 W, mean 7.3898 W (n 10);
+    //   trapezoids (dt s x mean of neighbours W): .109 x 9.7885 + .114 x 7.706 + .116 x 4.5845 + .115 x 5.1615
+    //   + .125 x 3.2975 + .111 x 3.6105 + .137 x 5.826 + .105 x 11.984 + .001 x 13.4525 = 5.9536925 J.
+    // Power Gadget's own counter says 7.237 - 0.774 = 6.463 J over the same span: its samples are averages over
+    // the interval before each row, so sum(P_k x dt_k) = 6.470 J matches the counter, and the trapezoid (which
+    // treats them as instantaneous) is 8 % lower on this jumpy 10-row log.
+    const bs::PowerStats s = bs::power_stats(t);
+    QCOMPARE(s.power_w->summary.n, std::size_t{10});
+    QVERIFY(std::abs(s.power_w->summary.mean - 7.3898) < 1e-12);
+    QVERIFY(std::abs(*s.energy_j - 5.9536925) < 1e-9);
+  }
+  void real_intel_power_gadget_log_quoted() {
+    // tests/data/power/real/SOURCES: platevoltage/machine-stats PowerLog.csv, every cell quoted, 6 rows.
+    const auto b = import("real/intel-power-gadget-quoted.csv");
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.time_s.size(), std::size_t{6});
+    QVERIFY(std::abs(t.time_s[2] - 0.831) < 1e-12);  // the 0.72 s gap between rows 2 and 3 is kept
+    QCOMPARE(t.channels.size(), std::size_t{3});     // Processor, IA, DRAM; "Package Power Limit_0(Watt)" is not
+    QCOMPARE(t.total_channel, std::string("Processor Power_0(Watt)"));
+    QCOMPARE(t.provenance.settings.size(), std::size_t{11});
+    QCOMPARE(t.provenance.settings[4], (std::pair<std::string, std::string>{"Average Package Power_0 (Watt)", "62.575186"}));
+    // By hand, package power 86.324 92.903 57.964 59.288 58.359 46.596 W: sum 401.434, mean 66.905667 W;
+    //   trapezoids .109 x 89.6135 + .722 x 75.4335 + .102 x 58.626 + .102 x 58.8235 + .104 x 52.4775
+    //   = 9.7678715 + 54.462987 + 5.979852 + 5.999997 + 5.45766 = 81.6683675 J.
+    // Cross-check with the file's counter: interval averages sum(P_k x dt_k) = 68.822 J against
+    // 77.782 - 8.954 = 68.828 J cumulative, so the columns and times are read right; the trapezoid is higher
+    // because the 0.72 s gap is bridged from 92.9 W, while the chip drew ~58 W through most of it.
+    const bs::PowerStats s = bs::power_stats(t);
+    QVERIFY(std::abs(s.power_w->summary.mean - 401.434 / 6) < 1e-12);
+    QVERIFY(std::abs(*s.energy_j - 81.6683675) < 1e-9);
+  }
+  void real_powerlog_samples() {
+    // tests/data/power/real/SOURCES: arsho/powerlog's documented samples CSV (Unix ns beside an elapsed clock).
+    const auto b = import("real/powerlog-samples-doc.csv");
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QVERIFY(std::abs(t.time_s[1] - 0.1035) < 1e-12);                // from "Elapsed (s)": 0.2086 - 0.1051
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-09-09T15:14:01.539Z"));  // 1788966841539282000 ns
+    QCOMPARE(t.channels.size(), std::size_t{4});
+    QVERIFY(t.total_channel.empty());  // "GPU Power (W)" sums the GPUs, not the machine: no total named
+    bool said = false;
+    for (const auto& w : b.warnings) said = said || w.find("statistics use 'CPU Power (W)' (the first)") != std::string::npos;
+    QVERIFY(said);
+    // Mean of the first power column: (77.42 + 78.10) / 2 = 77.76 W; energy 0.1035 s x 77.76 W = 8.04816 J.
+    const bs::PowerStats s = bs::power_stats(t);
+    QVERIFY(std::abs(s.power_w->summary.mean - 77.76) < 1e-12);
+    QVERIFY(std::abs(*s.energy_j - 8.04816) < 1e-9);
+    // The README's one-sample "Timestamp (ns),Power Draw (W)": time from the integer nanoseconds, exactly.
+    const bs::PowerTrace one = import("real/powerlog-readme.csv").power_traces.at(0);
+    QCOMPARE(QString::fromStdString(one.start_time), QStringLiteral("2025-07-11T01:47:20.221Z"));
+    QCOMPARE(one.channels.at(0).values, (std::vector<double>{12.84}));
+  }
   void joulescope_export() {
     const auto b = import("joulescope-export.csv");
     QCOMPARE(b.format, std::string("power-csv"));
@@ -74,7 +147,7 @@ class TestPowerFormats : public QObject {
   void iso_timestamps_across_midnight() {
     const bs::PowerTrace t = import("iso-timestamps.csv").power_traces.at(0);
     QCOMPARE(t.platform, std::string("NUC"));
-    QCOMPARE(t.start_time, std::string("2026-12-31T23:59:58.000Z"));
+    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-12-31T23:59:58.000Z"));
     QCOMPARE(t.time_s.size(), std::size_t{16});
     QCOMPARE(t.time_s[15], 3.75);  // into the next year
     QCOMPARE(t.time_s[8], 2.0);

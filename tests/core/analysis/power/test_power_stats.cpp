@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analysis/efficiency.h"
+#include "analysis/power.h"
 #include "analysis/power_phases.h"
 #include "analysis/power_stats.h"
 #include "analysis/power_time.h"
@@ -22,6 +23,66 @@ bs::PowerTrace current_trace(std::vector<double> t, std::vector<double> amps, st
 class TestPowerStats : public QObject {
   Q_OBJECT
  private slots:
+  void missing_samples_are_skipped_never_zero() {
+    // Power 1, (missing), 3, 5 W at 0, 1, 2, 3 s.
+    const double nan = std::nan("");
+    bs::PowerTrace trace;
+    trace.time_s = {0, 1, 2, 3};
+    trace.channels.push_back({"P", bs::PowerQuantity::Power, {1, nan, 3, 5}});
+    // Present samples 1, 3, 5: n = 3, mean 3 W, SD 2 W, median 3 W (as 0 it would be n 4, mean 2.25 W).
+    const bs::PowerStats s = bs::power_stats(trace);
+    QCOMPARE(s.n, std::size_t{4});  // rows in the range
+    QCOMPARE(s.power_w->summary.n, std::size_t{3});
+    QCOMPARE(s.power_w->summary.mean, 3.0);
+    QCOMPARE(s.power_w->summary.sd, 2.0);
+    QCOMPARE(s.power_w->summary.min, 1.0);
+    QCOMPARE(s.power_w->pct.p50, 3.0);
+    // Energy bridges the gap: 0..2 s (1 + 3) / 2 x 2 = 4 J, 2..3 s (3 + 5) / 2 x 1 = 4 J -> 8 J.
+    QCOMPARE(*s.energy_j, 8.0);
+    QCOMPARE(bs::integrate_trapezoid(trace.time_s, trace.channels[0].values), 8.0);
+    const bs::TraceStats ts = bs::trace_stats(trace);
+    QCOMPARE(ts.power_w->n, std::size_t{3});
+    QCOMPARE(ts.power_w->mean, 3.0);
+    QCOMPARE(ts.power_p50, 3.0);
+    QCOMPARE(ts.energy_j, 8.0);
+    // A window cut inside the gap: present (0, 1), (2, 3), (3, 5); at 0.5 s 1.5 W, at 2.5 s 4 W:
+    // 0.5..2 s (1.5 + 3) / 2 x 1.5 = 3.375 J, 2..2.5 s (3 + 4) / 2 x 0.5 = 1.75 J -> 5.125 J.
+    QVERIFY(std::abs(bs::integrate_range(trace.time_s, trace.channels[0].values, 0.5, 2.5) - 5.125) < 1e-12);
+    // Missing at the ends: the integral covers the present span only (1..2 s: (2 + 4) / 2 = 3 J).
+    QCOMPARE(bs::integrate_trapezoid({0, 1, 2, 3}, {nan, 2, 4, nan}), 3.0);
+    QCOMPARE(bs::percentile({nan, 2, 4, nan}, 50), 3.0);
+    // Nothing present: unknown, not 0 W.
+    trace.channels[0].values = {nan, nan, nan, nan};
+    QVERIFY(!bs::power_stats(trace).power_w);
+    QVERIFY(!bs::power_stats(trace).energy_j);
+    QVERIFY(!bs::trace_stats(trace).power_w);
+  }
+  void the_total_channel_is_the_power_of_the_trace() {
+    // Two rails and their total: statistics use the named total wherever "the power" is asked for.
+    bs::PowerTrace trace;
+    trace.time_s = {0, 1};
+    trace.channels.push_back({"CPU", bs::PowerQuantity::Power, {2, 2}});
+    trace.channels.push_back({"TOT", bs::PowerQuantity::Power, {7, 9}});
+    trace.total_channel = "TOT";
+    QCOMPARE(bs::power_stats(trace).power_w->summary.mean, 8.0);
+    QCOMPARE(bs::trace_stats(trace).power_w->mean, 8.0);
+    QCOMPARE(bs::derive_power(trace).values, (std::vector<double>{7, 9}));
+    QCOMPARE(bs::main_channel(trace, bs::PowerQuantity::Power)->name, std::string("TOT"));
+    trace.total_channel.clear();  // none named: the first
+    QCOMPARE(bs::power_stats(trace).power_w->summary.mean, 2.0);
+  }
+  void phases_skip_missing_samples() {
+    // 0 W for 10 s, then 10 W for 10 s, every third sample missing: still two phases split at 10 s.
+    std::vector<double> t, v;
+    for (int k = 0; k < 200; ++k) {
+      t.push_back(k * 0.1);
+      v.push_back(k % 3 == 1 ? std::nan("") : (k < 100 ? 0.0 : 10.0));
+    }
+    const auto phases = bs::detect_phases(t, v, {});
+    QCOMPARE(phases.size(), std::size_t{2});
+    QVERIFY(std::abs(phases[1].start_s - 10.0) < 0.25);
+    QVERIFY(std::abs(phases[1].mean - 10.0) < 1e-9);
+  }
   void trapezoid_on_irregular_timestamps_vs_analytic() {
     // P(t) = 3 + 2t: the trapezoid rule is exact for a line, also for a window cut between samples.
     const std::vector<double> t = {0, 0.1, 0.35, 1.0, 1.05, 2.0, 3.7};
