@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// benchscope [WORKSPACE.bsw | FILE/FOLDER...] [--screenshot DIR]
+// benchscope [WORKSPACE.bsw | FILE/FOLDER...] [--screenshot DIR [--window-size WxH]]
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QTabWidget>
 #include <QTimer>
 
 #include "flops_plot.h"
@@ -46,6 +47,9 @@ int main(int argc, char** argv) {
   QCommandLineOption sweep("sweep", "Start a Kernel Runner sweep over SPEC workers right away (with --screenshot: "
                                     "the shots are taken mid-sweep).", "SPEC");
   cli.addOption(sweep);
+  QCommandLineOption size("window-size", "With --screenshot: also save the whole window with each tab in front, at "
+                                         "this size (e.g. 1280x800), as window-<tab>.png.", "WxH");
+  cli.addOption(size);
   cli.process(app);
 
   bs::ui::MainWindow window;
@@ -67,7 +71,21 @@ int main(int argc, char** argv) {
     const QString dir = cli.value(shot);
     QDir().mkpath(dir);
     const int delay_ms = cli.isSet(sweep) ? 2500 : 500;
-    QTimer::singleShot(delay_ms, &window, [&window, dir] {
+    const QString window_size = cli.value(size);
+    QTimer::singleShot(delay_ms, &window, [&window, dir, window_size] {
+      if (const QStringList wh = window_size.split('x'); wh.size() == 2) {
+        // Every tab as a user sees it at that window size: what is clipped or cramped shows here.
+        window.resize(wh[0].toInt(), wh[1].toInt());
+        auto* tabs = static_cast<QTabWidget*>(window.centralWidget());
+        for (int i = 0; i < tabs->count(); ++i) {
+          tabs->setCurrentIndex(i);
+          for (int k = 0; k < 5; ++k) QApplication::processEvents();
+          save_png(&window, dir + "/window-" + tabs->tabText(i).remove('&').toLower() + ".png");
+        }
+        tabs->setCurrentIndex(0);
+        QApplication::quit();
+        return;
+      }
       save_png(&window, dir + "/main-window.png");
       save_png(window.flops_plot(), dir + "/flops-plot.png");
       save_png(window.peak_table(), dir + "/peak-table.png");
