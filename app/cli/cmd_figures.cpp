@@ -60,12 +60,7 @@ const CommandRegistrar registrar({
     "  kept as text in PDF and SVG, PNG at --dpi; writes table1/table2 as .tex (booktabs) and .csv, and\n"
     "  figures.json naming every file with its data sources and their provenance. Needs a build with Qt.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_figures(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help figures)\n";
-        return 2;
-      }
+      return run_figures(args, out, err);
     },
 });
 

@@ -276,12 +276,7 @@ const CommandRegistrar registrar({
     "  kernel on the first CUDA GPU (bit-identical to the CPU's fused path); without nvcc at build time or without\n"
     "  a GPU it stops at once saying why.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_pipeline_cmd(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help pipeline)\n";
-        return 2;
-      }
+      return run_pipeline_cmd(args, out, err);
     },
 });
 

@@ -316,12 +316,7 @@ const CommandRegistrar registrar({
     "  tegrastats lines without timestamps (default 1). --phases: load phases from level changes.\n"
     "  Formats: power CSV (generic, Joulescope, Otii, INA219 loggers) and NVIDIA tegrastats.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_power(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help power)\n";
-        return 2;
-      }
+      return run_power(args, out, err);
     },
 });
 

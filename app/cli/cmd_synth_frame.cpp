@@ -78,13 +78,8 @@ const CommandRegistrar registrar({
     "         [--bits 8|10|12|16]\n"
     "  Writes PREFIX.raw (row-major samples; 16-bit little-endian above 8 bits), PREFIX.json (sidecar: size, pattern,\n"
     "  bit depth, endianness, lens, synthetic: true) and PREFIX-truth.png (the ground-truth colour image).",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_synth(args, out);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help synth-frame)\n";
-        return 2;
-      }
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+      return run_synth(args, out);
     },
 });
 

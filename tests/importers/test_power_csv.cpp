@@ -3,6 +3,8 @@
 
 #include "power_csv.h"
 
+#include "../support/import_errors.h"
+
 namespace {
 
 bs::PowerTrace parse(const std::string& text) {
@@ -17,12 +19,7 @@ const bs::PowerChannel* channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
 }
 
 bs::ImportError error_of(const std::string& text) {
-  try {
-    bs::parse_power_csv(text, "log.csv");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
+  return bs::test::import_error_of([&] { return bs::parse_power_csv(text, "log.csv"); });
 }
 
 }  // namespace

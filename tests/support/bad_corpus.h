@@ -16,6 +16,7 @@ struct BadCase {
   std::string path;      // absolute, ready to import
   std::string category;  // to_string(ImportErrorCategory)
   bool place = false;    // the error must name a line or a field
+  std::vector<std::string> contains;  // text the error message must contain (a file:line:col prefix, the reason)
 };
 
 inline void write_generated(const std::string& kind, const std::string& path) {
@@ -53,7 +54,8 @@ inline std::vector<BadCase> load_bad_corpus(const std::string& data_dir, const s
   const auto doc = nlohmann::json::parse(in);
   std::vector<BadCase> out;
   for (const auto& e : doc.at("files")) {
-    BadCase c{"", e.at("category").get<std::string>(), e.at("place").get<bool>()};
+    BadCase c{"", e.at("category").get<std::string>(), e.at("place").get<bool>(), {}};
+    if (e.contains("contains")) c.contains = e.at("contains").get<std::vector<std::string>>();
     if (e.contains("generate")) {
       c.path = scratch_dir + "/" + e.at("file").get<std::string>();
       write_generated(e.at("generate").get<std::string>(), c.path);

@@ -1,30 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Bad power logs: each one an ImportError with the right category and file:line:column in its message.
+// Bad power logs: each one an ImportError with the right category and file:line:column in its message. The files
+// of tests/data/power/bad/ are checked from tests/data/bad/manifest.json by test_bad_corpus; here, texts.
 #include <QTest>
 
 #include "importer.h"
 #include "power_csv.h"
+#include "../../support/import_errors.h"
 
 namespace {
 
-const std::string kBad = BENCHSCOPE_TEST_DATA_DIR "/power/bad/";
-
-bs::ImportError import_error(const std::string& path) {
-  try {
-    bs::import_file(path, bs::CancelToken{});
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
-}
-
 bs::ImportError parse_error(const std::string& text) {
-  try {
-    bs::parse_power_csv(text, "log.csv");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
+  return bs::test::import_error_of([&] { return bs::parse_power_csv(text, "log.csv"); });
 }
 
 }  // namespace
@@ -32,38 +18,6 @@ bs::ImportError parse_error(const std::string& text) {
 class TestPowerBadInput : public QObject {
   Q_OBJECT
  private slots:
-  void corpus_data() {
-    QTest::addColumn<QString>("file");
-    QTest::addColumn<int>("category");
-    QTest::addColumn<QString>("where");  // the "file:line:column" prefix (or the file alone for whole-file problems)
-    QTest::addColumn<QString>("reason");
-    using C = bs::ImportErrorCategory;
-    QTest::newRow("empty") << "empty.csv" << int(C::Empty) << "empty.csv: " << "empty";
-    QTest::newRow("header only") << "header-only.csv" << int(C::Empty) << "header-only.csv:1: " << "no data rows";
-    QTest::newRow("mixed separators") << "mixed-separators.csv" << int(C::Syntax) << "mixed-separators.csv:3:1: "
-                                      << "mixed separators";
-    QTest::newRow("negative time") << "negative-time.csv" << int(C::InvalidValue) << "negative-time.csv:3:1: "
-                                   << "negative time";
-    QTest::newRow("missing time") << "missing-time.csv" << int(C::InvalidValue) << "missing-time.csv:3:1: "
-                                  << "missing time";
-    QTest::newRow("time backwards") << "time-backwards.csv" << int(C::InvalidValue) << "time-backwards.csv:5: "
-                                    << "time goes backwards";
-    QTest::newRow("utf-16") << "utf16.csv" << int(C::Encoding) << "utf16.csv: " << "UTF-16";
-    QTest::newRow("binary") << "binary.bin" << int(C::Binary) << "binary.bin: " << "binary";
-    QTest::newRow("unknown unit") << "unknown-unit.csv" << int(C::Unsupported) << "unknown-unit.csv:1:8: "
-                                  << "unit 'furlongs'";
-  }
-  void corpus() {
-    QFETCH(QString, file);
-    QFETCH(int, category);
-    QFETCH(QString, where);
-    QFETCH(QString, reason);
-    const bs::ImportError e = import_error(kBad + file.toStdString());
-    const QString what = QString::fromStdString(e.what());
-    QVERIFY2(int(e.category()) == category, qPrintable(what));
-    QVERIFY2(what.startsWith(QString::fromStdString(kBad) + where), qPrintable(what));
-    QVERIFY2(what.contains(reason), qPrintable(what));
-  }
   void non_numeric_cell_at_line_1234() {
     std::string text = "# platform: NUC\n# supply_voltage_V: 16\ntime_s,current_A,voltage_V\n";
     for (int line = 4; line < 1234; ++line) text += std::to_string(line * 0.1) + ",2.5,16.0\n";
