@@ -68,7 +68,7 @@ class TestRawSidecar : public QObject {
     const auto schema = nlohmann::json::parse(schema_file);
     for (const auto& [key, value] : j.items())
       QVERIFY2(schema.at("properties").contains(key), key.c_str());
-    QCOMPARE(schema.at("required"), (nlohmann::json{"width", "height", "bit_depth"}));
+    QVERIFY(schema.at("required") == (nlohmann::json{"width", "height", "bit_depth"}));
   }
 
   void the_rules() {
@@ -81,13 +81,13 @@ class TestRawSidecar : public QObject {
       }
       return std::pair{K::Invalid, std::string("accepted")};
     };
-    QCOMPARE(kind_of(R"({"height": 2, "bit_depth": 8})"), (std::pair{K::Missing, std::string("/width")}));
-    QCOMPARE(kind_of(R"({"width": 2.5, "height": 2, "bit_depth": 8})"), (std::pair{K::WrongType, std::string("/width")}));
-    QCOMPARE(kind_of(R"({"width": 2, "height": 2, "bit_depth": 17})"), (std::pair{K::Invalid, std::string("/bit_depth")}));
-    QCOMPARE(kind_of(R"({"width": 2, "height": 2, "bit_depth": 12})"), (std::pair{K::Missing, std::string("/endianness")}));
-    QCOMPARE(kind_of(R"({"width": 2, "height": 2, "bit_depth": 8, "pattern": "BGRG"})"), (std::pair{K::Invalid, std::string("/pattern")}));
-    QCOMPARE(kind_of(R"({"format": "other", "width": 2, "height": 2, "bit_depth": 8})"), (std::pair{K::Unsupported, std::string("/format")}));
-    QCOMPARE(kind_of(R"({"version": 2, "width": 2, "height": 2, "bit_depth": 8})"), (std::pair{K::Unsupported, std::string("/version")}));
+    QVERIFY(kind_of(R"({"height": 2, "bit_depth": 8})") == std::pair(K::Missing, std::string("/width")));
+    QVERIFY(kind_of(R"({"width": 2.5, "height": 2, "bit_depth": 8})") == std::pair(K::WrongType, std::string("/width")));
+    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 17})") == std::pair(K::Invalid, std::string("/bit_depth")));
+    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 12})") == std::pair(K::Missing, std::string("/endianness")));
+    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 8, "pattern": "BGRG"})") == std::pair(K::Invalid, std::string("/pattern")));
+    QVERIFY(kind_of(R"({"format": "other", "width": 2, "height": 2, "bit_depth": 8})") == std::pair(K::Unsupported, std::string("/format")));
+    QVERIFY(kind_of(R"({"version": 2, "width": 2, "height": 2, "bit_depth": 8})") == std::pair(K::Unsupported, std::string("/version")));
     QCOMPARE(kind_of(R"({"width": 4e1, "height": 2, "bit_depth": 8, "pattern": "rggb", "extra": 1})").second, std::string("accepted"));
   }
 
