@@ -22,47 +22,37 @@ bool host_is_big_endian() { return std::endian::native == std::endian::big; }
 
 }  // namespace
 
-std::string raw_sidecar_path(const std::string& raw_path) {
-  return std::filesystem::path(raw_path).replace_extension(".json").string();
-}
-
 RawFrameOptions read_raw_sidecar(const std::string& sidecar_path, const ImportLimits& limits) {
   ImportLimits sidecar_limits = limits;
   sidecar_limits.max_json_bytes = std::min(limits.max_json_bytes, kMaxSidecarBytes);
   const std::string text = read_whole_file(sidecar_path, sidecar_limits.max_json_bytes);
   const auto doc = json_access::parse(text, sidecar_path, sidecar_limits);
   const json_access::Reader r(sidecar_path, text);
-  r.require_object(doc, "");
-  if (const auto* f = r.optional(doc, "format")) {
-    if (!f->is_string() || f->get<std::string>() != "benchscope-raw")
-      r.fail(ImportErrorCategory::Unsupported, "/format", "sidecar format must be \"benchscope-raw\"");
+  RawSidecar s;
+  try {
+    s = raw_sidecar_from_json(doc);
+  } catch (const RawSidecarError& e) {
+    using K = RawSidecarError::Kind;
+    const ImportErrorCategory category = e.kind() == K::Missing     ? ImportErrorCategory::MissingField
+                                         : e.kind() == K::WrongType ? ImportErrorCategory::WrongType
+                                         : e.kind() == K::Invalid   ? ImportErrorCategory::InvalidValue
+                                                                    : ImportErrorCategory::Unsupported;
+    r.fail(category, e.pointer(), e.reason());  // with the member's line:column
   }
-  if (r.optional(doc, "version") && r.require_integer(doc, "", "version", 1, 1000) > 1)
-    r.fail(ImportErrorCategory::Unsupported, "/version", "sidecar version is newer than 1, which this build reads");
+  // Sizes against the limits (check_dimensions), so a sidecar claiming 100000 x 100000 is refused here, long
+  // before the raw file is opened.
+  frames::check_dimensions(sidecar_path, "/width", s.width, s.height, limits);
+  if (!s.pattern)
+    r.fail(ImportErrorCategory::MissingField, "/pattern",
+           "missing: the Bayer pattern (BGGR, RGGB, GRBG or GBRG) is needed to demosaic the frame");
   RawFrameOptions o;
-  // Ranges first, sizes against the limits next (check_dimensions), so a sidecar claiming 100000 x 100000 is
-  // refused here, long before the raw file is opened.
-  o.width = static_cast<int>(r.require_integer(doc, "", "width", 1, 1 << 30));
-  o.height = static_cast<int>(r.require_integer(doc, "", "height", 1, 1 << 30));
-  frames::check_dimensions(sidecar_path, "/width", o.width, o.height, limits);
-  o.pattern = frames::check_pattern(sidecar_path, "/pattern", r.require_string(doc, "", "pattern"));
-  o.bit_depth = static_cast<int>(r.require_integer(doc, "", "bit_depth", 1, 16));
-  const std::string endian = r.optional_string(doc, "", "endianness", o.bit_depth > 8 ? "" : "little");
-  if (endian == "big") {
-    o.big_endian = true;
-  } else if (endian != "little") {
-    r.fail(endian.empty() ? ImportErrorCategory::MissingField : ImportErrorCategory::InvalidValue, "/endianness",
-           endian.empty() ? "a sidecar for samples above 8 bits must say \"little\" or \"big\""
-                          : "must be \"little\" or \"big\"");
-  }
-  if (const auto* s = r.optional(doc, "synthetic")) {
-    if (!s->is_boolean()) r.fail(ImportErrorCategory::WrongType, "/synthetic", "must be true or false");
-    o.synthetic = s->get<bool>();
-  }
-  if (const auto* lens = r.optional(doc, "lens")) {
-    r.require_object(*lens, "/lens");
-    o.lens_json = lens->dump();
-  }
+  o.width = s.width;
+  o.height = s.height;
+  o.pattern = *s.pattern;
+  o.bit_depth = s.bit_depth;
+  o.big_endian = s.big_endian;
+  o.synthetic = s.synthetic;
+  o.lens_json = s.lens_json;
   return o;
 }
 
@@ -146,21 +136,20 @@ int RawBayerImporter::sniff(std::string_view, std::string_view path) const {
   // Raw samples have no magic bytes: the extension and the sidecar beside the file decide. A .raw without a
   // sidecar is still claimed, so the user hears that the sidecar is missing rather than "binary file".
   if (!frames::ends_with_ci(path, ".raw")) return 0;
-  std::error_code ec;
-  return std::filesystem::exists(raw_sidecar_path(std::string(path)), ec) ? 100 : 50;
+  return find_raw_sidecar(std::string(path)) ? 100 : 50;
 }
 
 bool RawBayerImporter::usual_extension(std::string_view path) const { return frames::ends_with_ci(path, ".raw"); }
 
 ImportBatch RawBayerImporter::parse(const std::string& path, const ImportLimits& limits,
                                     const CancelToken& cancel) const {
-  const std::string sidecar = raw_sidecar_path(path);
-  std::error_code ec;
-  if (!std::filesystem::exists(sidecar, ec))
+  const std::optional<std::string> found = find_raw_sidecar(path);
+  if (!found)
     throw ImportError(ImportErrorCategory::MissingField, {path, 0, 0, "sidecar"},
-                      "raw frame without its sidecar " + sidecar +
+                      "raw frame without its sidecar " + raw_sidecar_path(path) +
                           " (width, height, pattern, bit_depth, endianness); write one, or give the geometry "
                           "(benchscope-cli import --raw-geometry WxH:PATTERN:BITS)");
+  const std::string& sidecar = *found;
   RawFrameOptions o;
   try {
     o = read_raw_sidecar(sidecar, limits);
@@ -176,8 +165,7 @@ ImportBatch RawBayerImporter::parse(const std::string& path, const ImportLimits&
 }
 
 bool raw_without_sidecar(const std::string& path) {
-  std::error_code ec;
-  return path.size() > 4 && path.ends_with(".raw") && !std::filesystem::exists(raw_sidecar_path(path), ec);
+  return path.size() > 4 && path.ends_with(".raw") && !find_raw_sidecar(path);
 }
 
 ImportBatch import_file_with_raw_geometry(const std::string& path, const std::optional<RawFrameOptions>& raw_geometry,

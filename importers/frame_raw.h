@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Raw Bayer captures: row-major samples with no header, 1 byte each (8-bit) or 2 bytes each (10/12/14/16-bit
-// values in the low bits of a 16-bit word, little or big endian). The geometry comes from a JSON sidecar next to
-// the file (capture.raw -> capture.json), as `benchscope-cli synth-frame` writes it:
-//   {"format": "benchscope-raw", "version": 1, "width": 1280, "height": 1024, "pattern": "BGGR",
-//    "bit_depth": 8, "endianness": "little", "synthetic": true, "lens": {...}, "provenance": {...}}
-// (format, version, endianness for 8-bit, synthetic, lens and provenance are optional), or, for a file without a
-// sidecar, from RawFrameOptions given by the caller (benchscope-cli import --raw-geometry).
+// values in the low bits of a 16-bit word, little or big endian). The geometry comes from the JSON sidecar next to
+// the file (capture.raw -> capture.json, or capture.raw.json), read by model/raw_sidecar.h with the rules and
+// schema there (resources/schema/benchscope-raw-v1.schema.json); this importer also requires its "pattern". For a
+// file without a sidecar the geometry comes from RawFrameOptions given by the caller (import --raw-geometry).
 #include <optional>
 #include <string>
 
 #include "importer.h"
+#include "model/raw_sidecar.h"
 
 namespace bs {
 
@@ -23,9 +22,6 @@ struct RawFrameOptions {
   bool synthetic = false;
   std::string lens_json;         // lens + view JSON, when known
 };
-
-// The sidecar path of a raw file: same folder and stem, extension .json.
-std::string raw_sidecar_path(const std::string& raw_path);
 
 // Reads a sidecar; every error names the sidecar file and the JSON field.
 RawFrameOptions read_raw_sidecar(const std::string& sidecar_path, const ImportLimits& limits = {});

@@ -1,42 +1,62 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import_controller.h"
 
-#include <QDir>
-#include <QDirIterator>
 #include <QFileInfo>
 #include <QFutureWatcher>
 #include <QPointer>
 #include <QProgressDialog>
 #include <QtConcurrent>
 
-#include "importer.h"
-#include "store/workspace.h"
+#include "import_service.h"
 
 namespace bs::ui {
 namespace {
 
-struct Candidate {
-  QString path;
-  bool from_folder;
-};
+constexpr int kFewProblems = 4;  // up to this many skips + failures are spelled out in the message itself
 
-QList<Candidate> expand(const QStringList& paths) {
-  QList<Candidate> out;
-  for (const QString& p : paths) {
-    if (!QFileInfo(p).isDir()) {
-      out.append({p, false});
-      continue;
+QString file_name(const std::string& path) { return QFileInfo(QString::fromStdString(path)).fileName(); }
+
+// "already imported on 2026-11-20 (same content)", naming the earlier file when it had another name.
+QString duplicate_reason(const FileOutcome& f) {
+  const QString earlier = file_name(f.earlier_path);
+  const QString as = earlier == file_name(f.path) ? QString() : QObject::tr(" as %1").arg(earlier);
+  if (f.earlier_imported_at.empty()) return QObject::tr("same content as %1 in this import").arg(earlier);
+  return QObject::tr("already imported on %1%2 (same content)")
+      .arg(QString::fromStdString(f.earlier_imported_at.substr(0, 10)), as);
+}
+
+ImportReport report_of(const ImportResult& result) {
+  ImportReport report;
+  report.cancelled = result.cancelled;
+  for (const FileOutcome& f : result.files) {
+    switch (f.kind) {
+      case FileOutcome::Kind::Imported: ++report.imported; break;
+      case FileOutcome::Kind::Duplicate: report.skipped << file_name(f.path) + ": " + duplicate_reason(f); break;
+      case FileOutcome::Kind::NotData:
+        report.skipped << file_name(f.path) + ": " + QString::fromStdString(f.reason);
+        break;
+      case FileOutcome::Kind::Failed: report.failures << QString::fromStdString(f.reason); break;
+      case FileOutcome::Kind::NotReached: break;
     }
-    QStringList found;
-    QDirIterator it(p, QDir::Files | QDir::NoDotAndDotDot, QDirIterator::Subdirectories);
-    while (it.hasNext()) found << it.next();
-    found.sort();
-    for (const QString& f : found) out.append({f, true});
   }
-  return out;
+  return report;
 }
 
 }  // namespace
+
+ImportMessage import_message(const ImportReport& r) {
+  ImportMessage m;
+  m.headline = QObject::tr("Imported %n file(s)", nullptr, r.imported) +
+               (r.skipped.isEmpty() ? QString() : QObject::tr(", skipped %n", nullptr, static_cast<int>(r.skipped.size()))) +
+               (r.failures.isEmpty() ? QString() : QObject::tr(", %n failed", nullptr, static_cast<int>(r.failures.size()))) +
+               (r.cancelled ? QObject::tr(" (cancelled)") : QString());
+  QStringList all;
+  for (const QString& f : r.failures) all << QObject::tr("failed: %1").arg(f);
+  for (const QString& s : r.skipped) all << QObject::tr("skipped %1").arg(s);
+  if (all.size() <= kFewProblems) m.lines = all;
+  else m.details = all.join('\n');
+  return m;
+}
 
 ImportController::ImportController(QWidget* parent_window) : QObject(parent_window), window_(parent_window) {
   qRegisterMetaType<bs::ui::ImportReport>();
@@ -46,40 +66,24 @@ ImportReport ImportController::import_now(const QString& workspace_path, const Q
                                           const CancelToken& cancel,
                                           const std::function<void(int, int, const QString&)>& progress,
                                           FrameStorage frames, const std::optional<RawFrameOptions>& raw_geometry) {
-  ImportReport report;
-  const QList<Candidate> files = expand(paths);
-  std::unique_ptr<Workspace> ws;
-  for (int i = 0; i < files.size(); ++i) {
-    const QString& path = files[i].path;
-    if (progress) progress(i, static_cast<int>(files.size()), path);
-    if (cancel.cancelled()) {
-      report.cancelled = true;
-      break;
-    }
-    try {
-      const std::string p = path.toStdString();
-      ImportBatch batch = import_file_with_raw_geometry(p, raw_geometry, cancel, "the geometry dialog");
-      for (Frame& f : batch.frames) f.storage = frames;
-      if (!ws) ws = std::make_unique<Workspace>(workspace_path.toStdString());
-      ws->add_import(batch, file_content_hash(p), &cancel);
-      ++report.imported;
-    } catch (const ImportError& e) {
-      const bool not_data = e.category() == ImportErrorCategory::UnknownFormat ||
-                            e.category() == ImportErrorCategory::Binary;
-      if (files[i].from_folder && not_data) report.skipped << QStringLiteral("%1: %2").arg(path, QString::fromStdString(e.reason()));
-      else report.failures << QString::fromStdString(e.what());
-    } catch (const WorkspaceError& e) {
-      if (e.kind() == WorkspaceError::Kind::Constraint) report.skipped << QStringLiteral("%1: %2").arg(path, e.what());
-      else report.failures << QString::fromUtf8(e.what());
-    } catch (const Cancelled&) {
-      report.cancelled = true;
-      break;
-    } catch (const std::exception& e) {
-      report.failures << QStringLiteral("%1: %2").arg(path, QString::fromUtf8(e.what()));
-    }
+  ImportOptions options;
+  options.atomicity = ImportAtomicity::EachFile;
+  options.frames = frames;
+  options.raw_geometry = raw_geometry;
+  options.raw_geometry_source = "the geometry dialog";
+  if (progress)
+    options.progress = [&progress](int done, int total, const std::string& file) {
+      progress(done, total, QString::fromStdString(file));
+    };
+  std::vector<std::string> list;
+  for (const QString& p : paths) list.push_back(p.toStdString());
+  try {
+    return report_of(import_paths(workspace_path.toStdString(), list, options, cancel));
+  } catch (const std::exception& e) {  // the workspace cannot be opened or written, a folder cannot be listed
+    ImportReport report;
+    report.failures << QString::fromUtf8(e.what());
+    return report;
   }
-  if (progress) progress(static_cast<int>(files.size()), static_cast<int>(files.size()), {});
-  return report;
 }
 
 void ImportController::start(const QString& workspace_path, const QStringList& paths) {

@@ -17,14 +17,24 @@ namespace bs::ui {
 // What an import of several files did, for the status bar and the error dialog.
 struct ImportReport {
   int imported = 0;
-  QStringList skipped;   // "file: reason" (already imported, not a data file)
+  QStringList skipped;   // "file name: reason" (already imported, not a data file)
   QStringList failures;  // one line per failed file: the importer's "file:line: field: reason"
   bool cancelled = false;
 };
 
+// The words shown after an import. With few skipped or failed files each one's reason is in `lines` (shown in
+// the message itself); with many, `lines` is empty and `details` lists them all.
+struct ImportMessage {
+  QString headline;  // "Imported 3 files, skipped 1"
+  QStringList lines; // "skipped nuc.csv: already imported on 2026-11-20 (same content)", "failed: bad.json:3: ..."
+  QString details;   // every skip and failure, one per line; empty when `lines` says it all
+};
+ImportMessage import_message(const ImportReport& report);
+
 // Imports files and folders into a workspace file off the GUI thread, with a progress dialog and Cancel. The
 // worker opens its own connection to the workspace (SQLite in WAL mode allows a reader beside the writer), so the
-// GUI's connection is never used from two threads. Each file is one transaction.
+// GUI's connection is never used from two threads. What is imported, skipped and how is the import service's
+// (importers/import_service.h): each file is one transaction.
 class ImportController : public QObject {
   Q_OBJECT
  public:

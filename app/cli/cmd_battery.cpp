@@ -269,12 +269,7 @@ const CommandRegistrar registrar({
     "  Without --watts/--power-log: runtime per platform, each computer at the mean power of its log, with the\n"
     "  extra load and the mission's phases on top.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_battery(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help battery)\n";
-        return 2;
-      }
+      return run_battery(args, out, err);
     },
 });
 

@@ -271,20 +271,15 @@ const CommandRegistrar registrar({
     "  (default 16), HOG at scale\n"
     "  S (default 0.5); per-stage mean \xC2\xB1 SD (n), both throughputs, their ratio and the theoretical bound, with 1\n"
     "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
-        if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
-        if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
-        if (!args.empty() && args[0] == "pipeline") return bench_pipeline(rest, out);
-        if (!args.empty() && args[0] == "tuner") return bench_tuner(rest, out);
-        if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
-        if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
-        throw UsageError("expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv' or 'bench decimate'");
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << '\n';
-        return 2;
-      }
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+      const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
+      if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
+      if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
+      if (!args.empty() && args[0] == "pipeline") return bench_pipeline(rest, out);
+      if (!args.empty() && args[0] == "tuner") return bench_tuner(rest, out);
+      if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
+      if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
+      throw UsageError("expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv' or 'bench decimate'");
     },
 });
 

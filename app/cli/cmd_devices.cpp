@@ -48,13 +48,8 @@ const CommandRegistrar registrar({
     "usage: benchscope-cli devices [--json]\n"
     "  Every backend and device (CPU SIMD, CPU scalar, each OpenCL device, each CUDA GPU) with its properties and\n"
     "  the rotation kernel's theoretical peak, then the backends this build knows but cannot run here and why.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_devices(args, out);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << '\n';
-        return 2;
-      }
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+      return run_devices(args, out);
     },
 });
 

@@ -70,12 +70,7 @@ const CommandRegistrar registrar({
     "  data reconstructed from the paper (a run measured here never slips into a paper figure); figures.json\n"
     "  records the choice, and what each figure shows and leaves out (and why) is printed. Needs a build with Qt.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_figures(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help figures)\n";
-        return 2;
-      }
+      return run_figures(args, out, err);
     },
 });
 

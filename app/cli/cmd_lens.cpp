@@ -94,20 +94,12 @@ const CommandRegistrar registrar({
     "  circle: detects the fisheye image circle and proposes principal point and r_pp for the lens model\n"
     "  (default the paper's lens); export-lut: writes the view's lookup table (docs/lut-format.md); line: RMS and\n"
     "  max distance in pixels of clicked points from their best-fit straight line.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
-        if (!args.empty() && args[0] == "circle") return lens_circle(rest, out);
-        if (!args.empty() && args[0] == "export-lut") return lens_export_lut(rest, out);
-        if (!args.empty() && args[0] == "line") return lens_line(rest, out);
-        throw UsageError("expected 'lens circle', 'lens export-lut' or 'lens line'");
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << '\n';
-        return 2;
-      } catch (const std::exception& e) {
-        err << "benchscope-cli: error: " << e.what() << '\n';
-        return 1;
-      }
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+      const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
+      if (!args.empty() && args[0] == "circle") return lens_circle(rest, out);
+      if (!args.empty() && args[0] == "export-lut") return lens_export_lut(rest, out);
+      if (!args.empty() && args[0] == "line") return lens_line(rest, out);
+      throw UsageError("expected 'lens circle', 'lens export-lut' or 'lens line'");
     },
 });
 

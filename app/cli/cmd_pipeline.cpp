@@ -323,12 +323,7 @@ const CommandRegistrar registrar({
     "  pipeline, per preprocessed frame and per inference (mean power x stage mean time); --workspace stores the\n"
     "  trace in the same import as the run.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_pipeline_cmd(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help pipeline)\n";
-        return 2;
-      }
+      return run_pipeline_cmd(args, out, err);
     },
 });
 

@@ -138,13 +138,8 @@ const CommandRegistrar registrar({
     "  With constraints, each platform is checked against them (the power budget against the mean power) with its\n"
     "  margin, and the platform with the most compute among those that meet all of them is recommended. Only\n"
     "  platforms with a power log can be recommended. --latex/--csv write the table (booktabs / RFC 4180).",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_platforms(args, out);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help platforms)\n";
-        return 2;
-      }
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+      return run_platforms(args, out);
     },
 });
 

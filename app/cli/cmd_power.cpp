@@ -319,12 +319,7 @@ const CommandRegistrar registrar({
     "  Formats: power CSV (generic, Joulescope, Otii, INA219 loggers), NVIDIA tegrastats, nvidia-smi --query-gpu\n"
     "  CSV (one trace per GPU), perf stat RAPL energy and SPEC PTDaemon (MLPerf spl.txt; marks as phases).",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_power(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help power)\n";
-        return 2;
-      }
+      return run_power(args, out, err);
     },
 });
 

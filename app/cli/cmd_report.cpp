@@ -78,12 +78,7 @@ const CommandRegistrar registrar({
     "  PDF is A4, printed by Qt. With constraints, the recommended platform is named. --out report.pdf alone\n"
     "  writes only the PDF. Needs a build with Qt.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_report(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help report)\n";
-        return 2;
-      }
+      return run_report(args, out, err);
     },
 });
 

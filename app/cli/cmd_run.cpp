@@ -187,12 +187,7 @@ const CommandRegistrar registrar({
     "  STREAM triad a = b + q c over three float arrays of --mib MiB (12 bytes per element), mean ± SD of the\n"
     "  repetitions in GB/s: the memory ceiling of the roofline. --workspace stores it as a result set.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      try {
-        return run_flops(args, out, err);
-      } catch (const UsageError& e) {
-        err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help run)\n";
-        return 2;
-      }
+      return run_flops(args, out, err);
     },
 });
 

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "inputs.h"
 
-#include <algorithm>
-#include <filesystem>
 #include <fstream>
 
 #include "analysis/foreign_sweeps.h"
@@ -11,36 +9,6 @@
 #include "store/workspace.h"
 
 namespace bs::cli {
-namespace fs = std::filesystem;
-
-std::vector<InputFile> expand_inputs(const std::vector<std::string>& paths) {
-  std::vector<InputFile> files;
-  for (const std::string& p : paths) {
-    std::error_code ec;
-    if (!fs::is_directory(p, ec)) {
-      files.push_back({p, false});
-      continue;
-    }
-    std::vector<std::string> found;
-    for (auto it = fs::recursive_directory_iterator(p, fs::directory_options::skip_permission_denied, ec);
-         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-      const std::string name = it->path().filename().string();
-      if (!name.empty() && name[0] == '.') {
-        if (it->is_directory()) it.disable_recursion_pending();
-        continue;
-      }
-      if (it->is_regular_file()) found.push_back(it->path().string());
-    }
-    if (ec) throw ImportError(ImportErrorCategory::Io, {p, 0, 0, {}}, "cannot list folder: " + ec.message());
-    std::sort(found.begin(), found.end());
-    for (auto& f : found) files.push_back({std::move(f), true});
-  }
-  return files;
-}
-
-bool skippable_in_folder(const ImportError& e) {
-  return e.category() == ImportErrorCategory::UnknownFormat || e.category() == ImportErrorCategory::Binary;
-}
 
 bool looks_like_workspace(const std::string& path) {
   std::ifstream f(path, std::ios::binary);

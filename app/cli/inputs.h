@@ -6,20 +6,15 @@
 
 #include "model/import_batch.h"
 #include "import_error.h"
+#include "import_service.h"
 #include "util/cancel.h"
 
 namespace bs::cli {
 
-// Files named directly are kept; folders are walked recursively (sorted, hidden entries skipped).
-// `from_folder` marks files found by walking, which may be skipped when no importer recognises them.
-struct InputFile {
-  std::string path;
-  bool from_folder = false;
-};
-std::vector<InputFile> expand_inputs(const std::vector<std::string>& paths);
-
-// Files met while walking a folder that are simply not data (READMEs, images, scripts): reported, not errors.
-bool skippable_in_folder(const ImportError& e);
+// Folder expansion and the skip rule are the import service's (importers/import_service.h), so the data commands
+// read exactly the files `import` would store. These names stay for the commands that walk inputs themselves.
+using InputFile = ImportCandidate;
+inline std::vector<InputFile> expand_inputs(const std::vector<std::string>& paths) { return expand_import_paths(paths); }
 
 // True when `path` is an SQLite file (a BenchScope workspace or at least a candidate for one).
 bool looks_like_workspace(const std::string& path);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "args.h"
 #include "command.h"
 
 namespace {
@@ -13,7 +14,8 @@ void print_usage(std::ostream& out) {
   for (const auto& c : bs::cli::commands()) {
     out << "  " << c.name << std::string(c.name.size() < 12 ? 12 - c.name.size() : 1, ' ') << c.summary << '\n';
   }
-  out << "\n`benchscope-cli help <command>` shows a command's usage; `benchscope-cli --version` the version.\n";
+  out << "\n`benchscope-cli <command> --help` shows a command's usage; `benchscope-cli --version` the version;\n"
+         "`benchscope-cli completion bash` a bash completion script.\n";
 }
 
 const bs::cli::CommandRegistrar help_command({
@@ -33,6 +35,18 @@ const bs::cli::CommandRegistrar help_command({
       return 2;
     },
 });
+
+// `COMMAND --help` / `COMMAND -h` anywhere before a "--" asks for that command's usage.
+bool asks_for_help(const std::vector<std::string>& args) {
+  for (const std::string& a : args) {
+    if (a == "--") return false;
+    if (a == "--help" || a == "-h") return true;
+  }
+  return false;
+}
+
+// The first line of a command's usage ("usage: benchscope-cli import WORKSPACE PATH... [--keep-going] ...").
+std::string usage_line(const bs::cli::Command& c) { return c.usage.substr(0, c.usage.find('\n')); }
 
 }  // namespace
 
@@ -54,8 +68,17 @@ int main(int argc, char** argv) {
     return 2;
   }
   args.erase(args.begin());
+  if (asks_for_help(args)) {
+    std::cout << command->usage << '\n';
+    return 0;
+  }
+  // Every command reports a wrong call the same way: what is wrong, the usage line, where the rest is (exit 2).
   try {
     return command->run(args, std::cout, std::cerr);
+  } catch (const bs::cli::UsageError& e) {
+    std::cerr << "benchscope-cli: error: " << e.what() << '\n'
+              << usage_line(*command) << "\n(benchscope-cli " << command->name << " --help shows the full usage)\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "benchscope-cli: error: " << e.what() << '\n';
     return 1;

@@ -205,17 +205,18 @@ void MainWindow::import_paths_now(const QStringList& paths) {
 }
 
 void MainWindow::show_import_report(const ImportReport& r) {
-  statusBar()->showMessage(tr("Imported %n file(s)", nullptr, r.imported) +
-                               (r.skipped.isEmpty() ? QString() : tr(", skipped %n", nullptr, static_cast<int>(r.skipped.size()))) +
-                               (r.failures.isEmpty() ? QString() : tr(", %n failed", nullptr, static_cast<int>(r.failures.size()))) +
-                               (r.cancelled ? tr(" (cancelled)") : QString()),
+  // Few skips or failures: their reasons are in the message itself; many: counted, and listed under Details.
+  const ImportMessage m = import_message(r);
+  statusBar()->showMessage(r.failures.isEmpty() && !m.lines.isEmpty() ? m.headline + " — " + m.lines.join("; ")
+                                                                      : m.headline,
                            10000);
   if (r.failures.isEmpty()) return;
+  const QString text = tr("%n file(s) could not be imported; nothing of them was stored.", nullptr,
+                          static_cast<int>(r.failures.size()));
   QMessageBox box(QMessageBox::Warning, tr("Import problems"),
-                  tr("%n file(s) could not be imported; nothing of them was stored.", nullptr,
-                     static_cast<int>(r.failures.size())),
-                  QMessageBox::Ok, this);
-  box.setDetailedText(r.failures.join('\n') + (r.skipped.isEmpty() ? "" : "\n\nSkipped:\n" + r.skipped.join('\n')));
+                  m.lines.isEmpty() ? text + "\n" + m.headline : text + "\n\n" + m.lines.join('\n'), QMessageBox::Ok,
+                  this);
+  if (!m.details.isEmpty()) box.setDetailedText(m.details);
   box.exec();
 }
 

@@ -177,17 +177,20 @@ struct DeviceIds {
 
 }  // namespace
 
-std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& content_hash,
-                                   const CancelToken* cancel) {
-  const Db& db = impl_->db;
-  {
-    Statement dup(db, "SELECT path, imported_at FROM imports WHERE content_hash = ?");
-    dup.bind(1, std::string_view(content_hash));
-    if (dup.step())
-      throw WorkspaceError(WorkspaceError::Kind::Constraint,
-                           "already imported from " + dup.text(0) + " on " + dup.text(1));
-  }
-  Transaction tx(db);
+namespace {
+
+void refuse_duplicate(const Db& db, const std::string& content_hash) {
+  Statement dup(db, "SELECT path, imported_at FROM imports WHERE content_hash = ?");
+  dup.bind(1, std::string_view(content_hash));
+  if (dup.step())
+    throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                         "already imported from " + dup.text(0) + " on " + dup.text(1));
+}
+
+// Inserts one import inside the caller's transaction and returns its id.
+std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::string& content_hash,
+                           const CancelToken* cancel) {
+  refuse_duplicate(db, content_hash);
   Statement imp(db,
                 "INSERT INTO imports(path, format, imported_at, content_hash, run_count, result_set_count) "
                 "VALUES (?, ?, ?, ?, ?, ?)");
@@ -361,8 +364,29 @@ std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& 
           .run();
   }
   check();
-  tx.commit();
   return import_id;
+}
+
+}  // namespace
+
+std::int64_t Workspace::add_import(const ImportBatch& batch, const std::string& content_hash,
+                                   const CancelToken* cancel) {
+  const Db& db = impl_->db;
+  refuse_duplicate(db, content_hash);  // before BEGIN, so a duplicate never takes the write lock
+  Transaction tx(db);
+  const std::int64_t id = insert_import(db, batch, content_hash, cancel);
+  tx.commit();
+  return id;
+}
+
+std::vector<std::int64_t> Workspace::add_imports(const std::vector<HashedBatch>& batches, const CancelToken* cancel) {
+  const Db& db = impl_->db;
+  Transaction tx(db);
+  std::vector<std::int64_t> ids;
+  ids.reserve(batches.size());
+  for (const HashedBatch& b : batches) ids.push_back(insert_import(db, *b.batch, b.content_hash, cancel));
+  tx.commit();
+  return ids;
 }
 
 void Workspace::remove_import(std::int64_t import_id) {

@@ -103,6 +103,14 @@ class Workspace {
   // On any error or cancellation nothing is stored.
   std::int64_t add_import(const ImportBatch& batch, const std::string& content_hash,
                           const CancelToken* cancel = nullptr);
+  // One file's batch and the hash of its bytes, for add_imports().
+  struct HashedBatch {
+    const ImportBatch* batch = nullptr;
+    std::string content_hash;
+  };
+  // Stores several files' batches in ONE transaction (all of them or none) and returns their import ids in order.
+  // A hash already in the workspace, or given twice, throws WorkspaceError(Constraint) and nothing is stored.
+  std::vector<std::int64_t> add_imports(const std::vector<HashedBatch>& batches, const CancelToken* cancel = nullptr);
   void remove_import(std::int64_t import_id);  // removes the import and everything it brought
 
   std::vector<ImportRecord> imports() const;

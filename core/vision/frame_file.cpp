@@ -8,31 +8,17 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "model/raw_sidecar.h"
+
 namespace bs::vision {
 namespace {
 
 [[noreturn]] void fail(const std::string& file, const std::string& why) { throw std::runtime_error(file + ": " + why); }
 
 std::string sidecar_of(const std::string& path) {
-  namespace fs = std::filesystem;
-  const fs::path p(path);
-  const fs::path replaced = fs::path(p).replace_extension(".json");
-  std::error_code ec;
-  if (fs::exists(replaced, ec)) return replaced.string();
-  if (fs::exists(path + ".json", ec)) return path + ".json";
-  fail(path, "raw Bayer data needs a JSON sidecar (" + replaced.string() +
+  if (auto found = find_raw_sidecar(path)) return *found;
+  fail(path, "raw Bayer data needs a JSON sidecar (" + raw_sidecar_path(path) +
                  ") with width, height, pattern, bit_depth and endianness");
-}
-
-int int_field(const nlohmann::json& j, const std::string& file, const char* key, int lo, int hi) {
-  if (!j.contains(key)) fail(file, std::string("/") + key + ": missing");
-  const auto& v = j[key];
-  if (!v.is_number_integer()) fail(file, std::string("/") + key + ": expected an integer");
-  const auto x = v.get<std::int64_t>();
-  if (x < lo || x > hi)
-    fail(file, std::string("/") + key + ": " + std::to_string(x) + " is outside " + std::to_string(lo) + " to " +
-                   std::to_string(hi));
-  return static_cast<int>(x);
 }
 
 FrameFile read_raw(const std::string& path) {
@@ -41,22 +27,21 @@ FrameFile read_raw(const std::string& path) {
   if (!sf) fail(side, "cannot open sidecar");
   const nlohmann::json j = nlohmann::json::parse(sf, nullptr, false);
   if (j.is_discarded() || !j.is_object()) fail(side, "is not a JSON object");
+  RawSidecar s;
+  try {
+    s = raw_sidecar_from_json(j);  // the rules every reader of sidecars shares (model/raw_sidecar.h)
+  } catch (const RawSidecarError& e) {
+    fail(side, e.what());
+  }
+  const int w = s.width, h = s.height;
+  if (w < 2 || h < 2) fail(side, "/width: a " + std::to_string(w) + "x" + std::to_string(h) + " frame is smaller than one 2x2 Bayer cell");
   FrameFile f;
-  const int w = int_field(j, side, "width", 2, 1 << 16), h = int_field(j, side, "height", 2, 1 << 16);
-  f.bit_depth = int_field(j, side, "bit_depth", 8, 16);
-  if (f.bit_depth != 8 && f.bit_depth != 10 && f.bit_depth != 12 && f.bit_depth != 14 && f.bit_depth != 16)
-    fail(side, "/bit_depth: must be 8, 10, 12, 14 or 16");
-  if (j.contains("pattern")) {
-    if (!j["pattern"].is_string()) fail(side, "/pattern: expected a string");
-    try {
-      f.pattern = bayer_pattern_from_string(j["pattern"].get<std::string>());
-    } catch (const std::invalid_argument& e) {
-      fail(side, std::string("/pattern: ") + e.what());
-    }
+  f.bit_depth = s.bit_depth;
+  if (s.pattern) {
+    f.pattern = bayer_pattern_from_string(*s.pattern);
     f.pattern_from_file = true;
   }
-  const std::string endian = j.value("endianness", std::string("little"));
-  if (endian != "little" && endian != "big") fail(side, "/endianness: must be \"little\" or \"big\"");
+  const bool big_endian = s.big_endian;
   const std::size_t bytes = f.bit_depth > 8 ? 2 : 1;
   const std::uintmax_t expected = static_cast<std::uintmax_t>(w) * static_cast<std::uintmax_t>(h) * bytes;
   std::error_code ec;
@@ -70,13 +55,13 @@ FrameFile read_raw(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   in.read(reinterpret_cast<char*>(f.mosaic.data), static_cast<std::streamsize>(expected));
   if (static_cast<std::uintmax_t>(in.gcount()) != expected) fail(path, "read error");
-  if (bytes == 2 && endian == "big") {
+  if (bytes == 2 && big_endian) {
     for (int r = 0; r < h; ++r) {
       auto* row = f.mosaic.ptr<std::uint16_t>(r);
       for (int c = 0; c < w; ++c) row[c] = static_cast<std::uint16_t>((row[c] >> 8) | (row[c] << 8));
     }
   }
-  if (bytes == 2 && f.bit_depth < 16) {
+  if (f.bit_depth < 8 * static_cast<int>(bytes)) {
     double max = 0;
     cv::minMaxLoc(f.mosaic, nullptr, &max);
     if (max >= (1 << f.bit_depth))

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Reading one camera frame (a Bayer mosaic) from disk for the pipeline: images OpenCV's imgcodecs reads (PNG, PGM,
-// TIFF; single channel, 8 or 16 bit) or raw Bayer samples with a JSON sidecar
-//   {"width": W, "height": H, "pattern": "BGGR", "bit_depth": 8|10|12|16, "endianness": "little"|"big"}
-// (what `benchscope-cli synth-frame` writes). Kept small on purpose: the full frame importers live elsewhere.
+// TIFF; single channel, 8 or 16 bit) or raw Bayer samples (.raw or .bin) with a JSON sidecar
+//   {"width": W, "height": H, "pattern": "BGGR", "bit_depth": 1..16, "endianness": "little"|"big"}
+// read by model/raw_sidecar.h, the same rules as the frame importer's (what `benchscope-cli synth-frame` writes).
+// A sidecar without "pattern" leaves the caller's default. Kept small on purpose: the full frame importers live
+// elsewhere.
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -19,7 +21,8 @@ struct FrameFile {
   bool pattern_from_file = false;          // the sidecar named the pattern (images carry none)
 };
 
-// `path` ending in .raw/.bin needs a sidecar: the same path with .json instead, or path + ".json". Throws
+// `path` ending in .raw/.bin needs a sidecar (find_raw_sidecar: the same path with .json instead, or path +
+// ".json"). Throws
 // std::runtime_error naming the file and what is wrong (missing sidecar, bad field, size mismatch, colour image).
 // The raw file's size is checked against width x height x bytes per sample before anything is allocated.
 FrameFile read_frame_file(const std::string& path, BayerPattern default_pattern = BayerPattern::BGGR);

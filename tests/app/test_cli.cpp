@@ -4,32 +4,19 @@
 #include <QJsonObject>
 #include <QFile>
 #include <QFileInfo>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 #include <map>
 
+#include "../support/cli_harness.h"
+
 namespace {
 
-const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
+using Result = bs::test::CliResult;
+using bs::test::cli;
+using bs::test::bytes_of;
+
 const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
-
-struct Result {
-  int code;
-  QByteArray out, err;
-};
-
-Result cli(const QStringList& args) {
-  QProcess p;
-  p.start(kCli, args);
-  p.waitForFinished(120000);
-  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
-}
-
-QByteArray bytes_of(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 // Finds the peak row for (device, backend, dims); fails the test when absent.
 QJsonObject row(const QJsonArray& rows, const QString& device, const QString& backend, int dims) {

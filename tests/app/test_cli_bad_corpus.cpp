@@ -3,28 +3,18 @@
 // line on stderr naming the file, and the workspace (which already holds a good import) byte-for-byte unchanged
 // with no journal left beside it.
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include "../support/bad_corpus.h"
 
+#include "../support/cli_harness.h"
+
 namespace {
 
-const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
+using bs::test::run_cli;
+using bs::test::bytes_of;
 
-int run_cli(const QStringList& args, QByteArray* err = nullptr) {
-  QProcess p;
-  p.start(kCli, args);
-  if (!p.waitForFinished(120000)) return -2;
-  if (err) *err = p.readAllStandardError();
-  return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-}
-
-QByteArray bytes_of(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 }  // namespace
 
@@ -41,7 +31,7 @@ class TestCliBadCorpus : public QObject {
     for (const auto& c : cases) {
       const QString file = QString::fromStdString(c.path);
       QByteArray err;
-      QCOMPARE(run_cli({"import", ws, file}, &err), 1);
+      QCOMPARE(run_cli({"import", ws, file}, nullptr, &err), 1);
       const QList<QByteArray> lines = err.trimmed().split('\n');
       QVERIFY2(lines.size() == 1, err.constData());
       QVERIFY2(lines[0].contains(file.toUtf8()), err.constData());

@@ -6,14 +6,16 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QFile>
 #include <QTest>
 
+#include "../support/cli_harness.h"
+
 namespace {
 
-const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
+using bs::test::run_cli;
+
 
 // A run JSON v1 file with one OpenCL run, 8 repetitions per worker count, times scaled by `slowdown`.
 QString write_run(const QString& path, double slowdown, unsigned seed) {
@@ -32,14 +34,6 @@ QString write_run(const QString& path, double slowdown, unsigned seed) {
   if (!f.open(QIODevice::WriteOnly)) return {};
   f.write(QJsonDocument(QJsonObject{{"format", "benchscope-run"}, {"version", 1}, {"runs", QJsonArray{run}}}).toJson());
   return path;
-}
-
-int run_cli(const QStringList& args, QByteArray* out = nullptr) {
-  QProcess p;
-  p.start(kCli, args);
-  if (!p.waitForFinished(60000)) return -2;
-  if (out) *out = p.readAllStandardOutput();
-  return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
 }
 
 }  // namespace

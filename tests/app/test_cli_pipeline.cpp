@@ -4,7 +4,6 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -13,22 +12,13 @@
 #include "store/workspace.h"
 #include "vision/cuda_preprocess.h"
 
+#include "../support/cli_harness.h"
+
 namespace {
 
-const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
+using Result = bs::test::CliResult;
+using bs::test::cli;
 
-struct Result {
-  int code;
-  QByteArray out, err;
-};
-
-Result cli(const QStringList& args) {
-  QProcess p;
-  p.start(kCli, args);
-  if (!p.waitForFinished(300000)) return {-2, {}, {}};
-  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-          p.readAllStandardError()};
-}
 
 }  // namespace
 

@@ -4,21 +4,15 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTest>
+
+#include "../support/cli_harness.h"
 
 namespace {
 
-const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
-const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
+using bs::test::run_cli;
 
-int run_cli(const QStringList& args, QByteArray* out = nullptr) {
-  QProcess p;
-  p.start(kCli, args);
-  if (!p.waitForFinished(60000)) return -2;
-  if (out) *out = p.readAllStandardOutput();
-  return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-}
+const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
 
 }  // namespace
 

@@ -9,6 +9,8 @@
 
 #include "clpeak_text.h"
 
+#include "../support/import_errors.h"
+
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";
 
@@ -31,12 +33,7 @@ std::string read_fixture(const std::string& name) {
 bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
 
 bs::ImportError error_of(const std::string& text) {
-  try {
-    bs::parse_clpeak_text(text, "c.txt");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "accepted");
+  return bs::test::import_error_of([&] { return bs::parse_clpeak_text(text, "c.txt"); });
 }
 }  // namespace
 

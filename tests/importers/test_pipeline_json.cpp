@@ -8,17 +8,14 @@
 
 #include "pipeline_json.h"
 
+#include "../support/import_errors.h"
+
 namespace {
 
 const std::string kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/";
 
 bs::ImportError error_of(const std::string& text) {
-  try {
-    bs::parse_pipeline_json(text, "t.json");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  throw std::runtime_error("no error for: " + text);
+  return bs::test::import_error_of([&] { return bs::parse_pipeline_json(text, "t.json"); });
 }
 
 std::string doc(const std::string& stages, const std::string& extra = "") {

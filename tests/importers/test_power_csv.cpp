@@ -3,6 +3,8 @@
 
 #include "power_csv.h"
 
+#include "../support/import_errors.h"
+
 namespace {
 
 bs::PowerTrace parse(const std::string& text) {
@@ -29,12 +31,7 @@ bool warned(const bs::ImportBatch& b, const std::string& text) {
 }
 
 bs::ImportError error_of(const std::string& text) {
-  try {
-    bs::parse_power_csv(text, "log.csv");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
+  return bs::test::import_error_of([&] { return bs::parse_power_csv(text, "log.csv"); });
 }
 
 }  // namespace

@@ -17,6 +17,8 @@
 #include "json_access.h"
 #include "run_json.h"
 
+#include "../support/import_errors.h"
+
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/";
 
@@ -117,12 +119,7 @@ bs::FlopsRun awkward_run() {
 }
 
 bs::ImportError error_of(std::string_view text, const std::string& file = "e.json") {
-  try {
-    bs::parse_run_json(text, file);
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "accepted");
+  return bs::test::import_error_of([&] { return bs::parse_run_json(text, file); });
 }
 
 const char* const kLocated = R"({

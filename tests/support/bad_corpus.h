@@ -16,7 +16,7 @@ struct BadCase {
   std::string path;      // absolute, ready to import
   std::string category;  // to_string(ImportErrorCategory)
   bool place = false;    // the error must name a line or a field
-  std::string contains;  // text the error must contain ("contains" in the manifest; empty = any)
+  std::vector<std::string> contains;  // text the error message must contain (a file:line:col prefix, the reason)
 };
 
 inline void write_generated(const std::string& kind, const std::string& path) {
@@ -54,7 +54,10 @@ inline std::vector<BadCase> load_bad_corpus(const std::string& data_dir, const s
   const auto doc = nlohmann::json::parse(in);
   std::vector<BadCase> out;
   for (const auto& e : doc.at("files")) {
-    BadCase c{"", e.at("category").get<std::string>(), e.at("place").get<bool>(), e.value("contains", std::string())};
+    BadCase c{"", e.at("category").get<std::string>(), e.at("place").get<bool>(), {}};
+    // "contains": one text or a list of texts the error must contain.
+    if (const auto it = e.find("contains"); it != e.end())
+      c.contains = it->is_string() ? std::vector<std::string>{it->get<std::string>()} : it->get<std::vector<std::string>>();
     if (e.contains("generate")) {
       c.path = scratch_dir + "/" + e.at("file").get<std::string>();
       write_generated(e.at("generate").get<std::string>(), c.path);

@@ -6,17 +6,14 @@
 #include "power_import.h"
 #include "tegrastats.h"
 
+#include "../../support/import_errors.h"
+
 namespace {
 
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/power/";
 
 bs::ImportError error_of(const std::string& text) {
-  try {
-    bs::parse_tegrastats(text, "t.log");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
+  return bs::test::import_error_of([&] { return bs::parse_tegrastats(text, "t.log"); });
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+# bash completion for benchscope-cli. Generated from the command registry by `benchscope-cli completion bash`;
+# regenerate it rather than editing it. Use: source this file, or install it as
+# /usr/share/bash-completion/completions/benchscope-cli.
+_benchscope_cli() {
+  local cur="${COMP_WORDS[COMP_CWORD]}"
+  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power report roofline run synth-frame"
+  if [[ $COMP_CWORD -eq 1 ]]; then
+    COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
+    return
+  fi
+  local options=""
+  case "${COMP_WORDS[1]}" in
+    battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
+    bench) options="--help --columns --detect-scale --detect-workers --frames --rounds --rows --runs --samples --step --threads --workers" ;;
+    compare) options="--help --all --alpha --every-point --json --threshold" ;;
+    completion) options="--help" ;;
+    devices) options="--help --json" ;;
+    efficiency) options="--help --json --supply-volts" ;;
+    figures) options="--help --dpi --font-pt --format --height-mm --out --preset --quiet --template --width-mm" ;;
+    frames) options="--help --lens --method --out --triptych --window" ;;
+    help) COMPREPLY=($(compgen -W "$commands" -- "$cur")); return ;;
+    import) options="--help --copy-frames --keep-going --quiet --raw-geometry" ;;
+    lens) options="--help --circle-fov --lens --min-level --out" ;;
+    peaks) options="--help --json --kind" ;;
+    pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --queue --workspace" ;;
+    platforms) options="--help --battery --budget --csv --extra-load --json --latex --min-fps --min-runtime --mission --supply-volts" ;;
+    power) options="--help --from --interval --json --min-phase --min-step --phases --supply-volts --to" ;;
+    report) options="--help --battery --budget --extra-load --font-pt --min-fps --min-runtime --mission --out --pdf --quiet --supply-volts --template" ;;
+    roofline) options="--help --json" ;;
+    run) options="--help --backend --device --iterations --json --mib --no-warmup --out --points --quiet --repeats --variant --workers --workspace" ;;
+    synth-frame) options="--help --bits --lens --out --pattern --size" ;;
+  esac
+  if [[ $cur == -* ]]; then
+    COMPREPLY=($(compgen -W "$options" -- "$cur"))
+  else
+    COMPREPLY=($(compgen -f -- "$cur"))
+  fi
+}
+complete -o filenames -F _benchscope_cli benchscope-cli
