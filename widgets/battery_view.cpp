@@ -144,8 +144,11 @@ void BatteryView::set_workspace(Workspace* workspace) {
   }
   workspace_ = workspace;
   remembered_.clear();
+  // Showing the preset list must not overwrite what the workspace remembers before it is read back.
+  restoring_ = true;
   reload_presets(selected);
   restore_saved_setup();
+  restoring_ = false;
 }
 
 void BatteryView::restore_saved_setup() {
@@ -171,7 +174,7 @@ void BatteryView::restore_saved_setup() {
 }
 
 void BatteryView::remember_setup() {
-  if (!workspace_) return;
+  if (!workspace_ || restoring_) return;
   const std::string json = battery_setup_to_json(setup());
   if (json == remembered_) return;
   try {

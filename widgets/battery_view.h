@@ -82,6 +82,7 @@ class BatteryView : public QWidget {
   std::vector<PlatformBattery> rows_;
   std::vector<QString> preset_texts_;  // the preset box's texts without the "modified" mark
   std::string remembered_;             // the setup JSON last written to the workspace
+  bool restoring_ = false;             // a newly opened workspace's setup is being read back
   QComboBox* preset_;
   QDoubleSpinBox* volts_;
   QDoubleSpinBox* capacity_;

@@ -35,6 +35,9 @@ FrozenFirstColumn::FrozenFirstColumn(QTableView* table) : QObject(table), table_
   });
   connect(table->verticalHeader(), &QHeaderView::sectionResized, this,
           [this](int section, int, int size) { frozen_->setRowHeight(section, size); });
+  // A double-click on a name in the overlay is a double-click on the table's cell (QTableWidget turns it into
+  // cellDoubleClicked).
+  connect(frozen_, &QAbstractItemView::doubleClicked, table, [table](const QModelIndex& index) { emit table->doubleClicked(index); });
   connect(frozen_->verticalScrollBar(), &QAbstractSlider::valueChanged, table->verticalScrollBar(), &QAbstractSlider::setValue);
   connect(table->verticalScrollBar(), &QAbstractSlider::valueChanged, frozen_->verticalScrollBar(), &QAbstractSlider::setValue);
   connect(table->model(), &QAbstractItemModel::modelReset, this, &FrozenFirstColumn::sync_columns);
@@ -45,6 +48,12 @@ FrozenFirstColumn::FrozenFirstColumn(QTableView* table) : QObject(table), table_
   table->installEventFilter(this);
   sync_columns();
   frozen_->show();
+}
+
+FrozenFirstColumn::~FrozenFirstColumn() {
+  table_->removeEventFilter(this);
+  if (table_->model()) table_->model()->disconnect(this);
+  delete frozen_;
 }
 
 void FrozenFirstColumn::sync_columns() {

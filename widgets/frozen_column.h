@@ -13,8 +13,10 @@ namespace bs::ui {
 class FrozenFirstColumn : public QObject {
   Q_OBJECT
  public:
-  // Installs itself on `table` (which owns it). The table's model must already be set.
+  // Installs itself on `table` (which owns it). The table's model must already be set. The owner of the table
+  // deletes this before the table goes (a table deleting its model resets it, and the overlay must not follow).
   explicit FrozenFirstColumn(QTableView* table);
+  ~FrozenFirstColumn() override;
   QTableView* view() const { return frozen_; }
   // Call after the table's columns changed (count, hidden columns): only the first stays visible in the overlay.
   void sync_columns();

@@ -188,6 +188,8 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   });
 }
 
+PlatformView::~PlatformView() { delete frozen_; }  // before the table and its model go
+
 void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces,
                             std::vector<PipelineRun> pipelines) {
   runs_ = std::move(runs);

@@ -29,6 +29,7 @@ class PlatformView : public QWidget {
   Q_OBJECT
  public:
   explicit PlatformView(QWidget* parent = nullptr);
+  ~PlatformView() override;
   // Pipeline runs give the preprocessing and detection columns and, with a power log, energy per frame.
   void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces, std::vector<PipelineRun> pipelines = {});
   QTableWidget* table() const { return table_; }

@@ -58,7 +58,7 @@ class TestPlotExport : public QObject {
     plot.resize(1200, 700);
     for (int g = 0; g < 14; ++g) {
       plot.addGraph()->setData({1, 10, 100}, {1.0 * g, 2.0 * g, 3.0 * g});
-      plot.graph(g)->setName(QStringLiteral("Platform %1 GPU (OpenCL), D = 4").arg(g));
+      plot.graph(g)->setName(QStringLiteral("GPU %1, D = 4").arg(g));
     }
     plot.legend->setVisible(true);
     plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);

@@ -85,7 +85,7 @@ class TestPlatformView : public QObject {
 
     // Double-click asks for the source of the cell.
     QSignalSpy spy(&view, &bs::ui::PlatformView::source_requested);
-    const int gpu = column(t, "GPU peak (GFLOPS)");
+    const int gpu = column(t, "GPU peak (TFLOPS)");
     emit t->cellDoubleClicked(row_of(t, "NUC"), gpu);
     QCOMPARE(spy.count(), 1);
     QCOMPARE(spy.at(0).at(1).toString(), QString("gpu_peak"));
@@ -153,11 +153,12 @@ class TestPlatformView : public QObject {
     QVERIFY(box->currentText().contains("Battery tab"));
     QVERIFY(box->currentText().contains("modified"));
     QCOMPARE(view.options().battery_capacity_ah, 7.7);
-    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("168.72"));
+    const QString doubled = QString::number(14.8 * 7.7 / 40.52 * 60, 'f', 2);  // 168.73 min
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), doubled);
     // The workspace's presets are listed again after a reload; the Battery tab's entry stays first and selected.
     view.set_workspace(nullptr);
     QCOMPARE(box->currentIndex(), 0);
-    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("168.72"));
+    QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), doubled);
     // Another pack picked here is kept when the Battery tab changes again.
     box->setCurrentIndex(1);
     QCOMPARE(t->item(row_of(t, "NUC"), battery)->text(), QString("84.36"));
