@@ -20,6 +20,7 @@
 #include <stdexcept>
 
 #include "analysis/battery.h"
+#include "analysis/plausibility.h"
 #include "analysis/platform_table.h"
 
 namespace bs::ui {
@@ -79,9 +80,20 @@ QString tooltip_for(const PlatformRow& r, const std::string& column) {
   const auto it = r.sources.find(column);
   if (it == r.sources.end()) return {};
   const CellSource& s = it->second;
-  return QObject::tr("%1\nfrom %2 (%3)\nDouble-click to show it in the workspace")
-      .arg(QString::fromStdString(s.how), QString::fromStdString(s.source_file.empty() ? "?" : s.source_file),
-           QString::fromUtf8(to_string(s.origin).data()));
+  QString tip = QObject::tr("%1\nfrom %2 (%3)\nDouble-click to show it in the workspace")
+                    .arg(QString::fromStdString(s.how), QString::fromStdString(s.source_file.empty() ? "?" : s.source_file),
+                         QString::fromUtf8(to_string(s.origin).data()));
+  if (column == column::kPower && !r.power_measurement.empty())
+    tip += QObject::tr("\nMeasured by: %1").arg(QString::fromStdString(r.power_measurement));
+  return tip;
+}
+
+// A flagged cell's tooltip starts with why its number is implausible (analysis/plausibility.h).
+QString flagged_tooltip(const PlatformRow& r, const std::string& column, const QString& tip) {
+  const auto f = r.flags.find(column);
+  if (f == r.flags.end()) return tip;
+  const QString why = QString::fromStdString(flags_text(f->second));
+  return tip.isEmpty() ? why : why + "\n\n" + tip;
 }
 
 QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, const QString& suffix, int decimals) {
@@ -346,9 +358,10 @@ void PlatformView::fill_table() {
   for (const auto& r : rows_) values.push_back(column_values(r));
   const std::size_t numeric_columns = values.empty() ? 0 : values.front().size();
   for (std::size_t col = 1; col < numeric_columns; ++col)
-    for (const auto& v : values) {
-      const ColumnValue& cv = v[col];
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const ColumnValue& cv = values[i][col];
       if (std::isnan(cv.value) || cv.better == 0) continue;
+      if (col < ids.size() && rows_[i].flags.count(ids[col])) continue;  // an implausible number is never "best"
       if (std::isnan(best[col]) || (cv.better > 0 ? cv.value > best[col] : cv.value < best[col])) best[col] = cv.value;
     }
   const int with_data = static_cast<int>(rows_.size());
@@ -369,8 +382,10 @@ void PlatformView::fill_table() {
           item->setBackground(QColor(0xd9, 0xf2, 0xd9));
         }
       }
-      const QString tip = tooltip_for(rows_[static_cast<std::size_t>(r)], ids[cu]);
+      const PlatformRow& row = rows_[static_cast<std::size_t>(r)];
+      const QString tip = flagged_tooltip(row, ids[cu], tooltip_for(row, ids[cu]));
       if (!tip.isEmpty()) item->setToolTip(tip);
+      if (row.flags.count(ids[cu])) item->setBackground(QColor(0xff, 0xe0, 0xb2));  // flagged: see the tooltip
       if (c == 0 && r < static_cast<int>(verdicts_.size()) && verdicts_[static_cast<std::size_t>(r)].recommended) {
         QFont f = item->font();
         f.setBold(true);

@@ -116,7 +116,7 @@ void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std:
   } else {
     out << "Peak FLOPS (6*D*N*W/t); % of spec: of the vendor's FP32 peak (device table)\n";
     table.print(out);
-    notes.print(out);
+    print_flag_notes(out, notes);
   }
   if (!throughput.empty()) {
     TextTable t({"Platform", "Device", "Backend", "Source", "Measurement", "Peak"});

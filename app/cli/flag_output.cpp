@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flag_output.h"
 
-#include <algorithm>
 #include <ostream>
 
 namespace bs::cli {
@@ -25,21 +24,10 @@ nlohmann::json spec_json(const std::optional<DeviceSpec>& spec) {
           {"url", spec->source_url}};
 }
 
-std::string FlagNotes::marker(const std::vector<PlausibilityFlag>& flags) {
-  std::string text;
-  for (const PlausibilityFlag& f : flags) {
-    auto it = std::find(notes_.begin(), notes_.end(), f);
-    if (it == notes_.end()) it = notes_.insert(notes_.end(), f);
-    text += (text.empty() ? "\xE2\x9A\xA0 " : ",") + std::to_string(it - notes_.begin() + 1);
-  }
-  return text;
-}
-
-void FlagNotes::print(std::ostream& out) const {
-  if (notes_.empty()) return;
+void print_flag_notes(std::ostream& out, const FlagNotes& notes) {
+  if (notes.empty()) return;
   out << "\nFlags (implausible numbers; docs/cli.md, \"Plausibility flags\"):\n";
-  for (std::size_t i = 0; i < notes_.size(); ++i)
-    out << "  [" << i + 1 << "] " << notes_[i].code << ": " << notes_[i].reason << '\n';
+  for (const std::string& line : notes.lines()) out << "  " << line << '\n';
 }
 
 }  // namespace bs::cli
