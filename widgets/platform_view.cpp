@@ -12,6 +12,7 @@
 #include <QLineEdit>
 #include <QSignalBlocker>
 #include <QMessageBox>
+#include <QRegularExpression>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -367,7 +368,11 @@ void PlatformView::fill_table() {
   const int with_data = static_cast<int>(rows_.size());
   for (int r = 0; r < static_cast<int>(t.rows.size()); ++r) {
     for (int c = 0; c < static_cast<int>(t.rows[r].size()); ++c) {
-      auto* item = new NumericItem(QString::fromStdString(t.rows[r][c]));
+      QString text = QString::fromStdString(t.rows[r][c]);
+      // The table's footnote marker " [n]" (for LaTeX/CSV) becomes "⚠" here: the reason is in the tooltip.
+      if (rows_[static_cast<std::size_t>(r)].flags.count(ids[static_cast<std::size_t>(c)]))
+        text.replace(QRegularExpression(QStringLiteral(" \\[[0-9,]+\\]$")), QStringLiteral(" ⚠"));
+      auto* item = new NumericItem(text);
       item->setData(Qt::UserRole, r);
       item->setData(kColumnRole, QString::fromStdString(ids[static_cast<std::size_t>(c)]));
       const std::size_t cu = static_cast<std::size_t>(c);

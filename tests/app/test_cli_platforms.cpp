@@ -67,7 +67,10 @@ class TestCliPlatforms : public QObject {
     for (const char* want : {"\\toprule", "\\midrule", "\\bottomrule", "104.64", "41.26", "84.36", "360.48"})
       QVERIFY2(latex.contains(want), want);
     QVERIFY(table.startsWith("Platform,GPU peak (GFLOPS)"));
-    QVERIFY(table.contains("\"5250.0 (NUC GPU (Iris Plus 650), OpenCL)\""));  // quoted: the cell has a comma
+    // Quoted: the cell has a comma. [1]: the flag's footnote, after the table.
+    QVERIFY(table.contains("\"5250.0 (NUC GPU (Iris Plus 650), OpenCL) [1]\""));
+    QVERIFY(table.contains("\r\n\r\n\"[1] above_spec_peak: 5.25 TFLOPS is 5.9x"));
+    QVERIFY(latex.contains("[1] above\\_spec\\_peak"));
   }
   void mission() {
     // 140 W of servos while walking, in parallel with each computer: NUC 56.98 Wh / 180.52 W = 18.94 min, Jetson
