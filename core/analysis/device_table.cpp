@@ -82,8 +82,8 @@ DeviceTable parse_device_table(std::string_view json_text, const std::string& or
   } catch (const json::parse_error& e) {
     fail(origin, "JSON", e.what());
   }
-  if (!doc.is_object() || doc.value("format", "") != "benchscope-devices")
-    fail(origin, "format", "not a benchscope-devices file");
+  if (!doc.is_object() || doc.value("format", "") != "benchscope-device-specs")
+    fail(origin, "format", "not a benchscope-device-specs file");
   if (doc.value("version", 0) != 1) fail(origin, "version", "unsupported (this BenchScope reads version 1)");
   const auto devices = doc.find("devices");
   if (devices == doc.end() || !devices->is_array()) fail(origin, "devices", "missing or not an array");

@@ -93,7 +93,7 @@ class TestPlausibility : public QObject {
     QCOMPARE(bs::platform_tdp_w(table(), "Jetson TX2").value_or(0), 15.0);
   }
   void malformed_tables_are_refused_with_the_field() {
-    const char* no_source = R"({"format":"benchscope-devices","version":1,"devices":[{"id":"x","name":"X",
+    const char* no_source = R"({"format":"benchscope-device-specs","version":1,"devices":[{"id":"x","name":"X",
       "kind":"gpu","fp32_peak_flops":1e12,"derivation":"d"}]})";
     try {
       bs::parse_device_table(no_source, "t.json");
@@ -101,7 +101,7 @@ class TestPlausibility : public QObject {
     } catch (const std::runtime_error& e) {
       QVERIFY2(std::string(e.what()).find("devices[0].source") != std::string::npos, e.what());
     }
-    const char* bad_kind = R"({"format":"benchscope-devices","version":1,"devices":[{"id":"x","name":"X",
+    const char* bad_kind = R"({"format":"benchscope-device-specs","version":1,"devices":[{"id":"x","name":"X",
       "kind":"npu","fp32_peak_flops":1e12,"derivation":"d","source":{"title":"s"}}]})";
     QVERIFY_THROWS_EXCEPTION(std::runtime_error, bs::parse_device_table(bad_kind, "t.json"));
     QVERIFY_THROWS_EXCEPTION(std::runtime_error, bs::parse_device_table("{}", "t.json"));
