@@ -161,7 +161,13 @@ class TestPlausibility : public QObject {
     // 2.5 A then 2500 A (a sample in mA): three orders of magnitude between neighbours; idle -> load is not.
     const auto jump = bs::check_power_trace(trace_of(Q::Current, {2.5, 2.4, 2500, 2.6, 2.5}));
     QVERIFY(has_code(jump, bs::flag_code::kMagnitudeJump));
-    QVERIFY(!has_code(jump, bs::flag_code::kImplausibleMagnitude));  // 2.5 kA: above 1 kA
+    QVERIFY(has_code(jump, bs::flag_code::kImplausibleMagnitude));  // 2.5 kA: above 1 kA too
+    // 0.5 W then 60 W (120x) stays below every absolute limit: the jump alone is flagged.
+    const auto jump_only = bs::check_power_trace(trace_of(Q::Power, {0.5, 0.5, 60, 0.5}));
+    QCOMPARE(jump_only.size(), std::size_t{1});
+    QCOMPARE(jump_only.front().code, std::string(bs::flag_code::kMagnitudeJump));
+    QVERIFY2(jump_only.front().reason.find("120x (500.00 mW to 60.00 W)") != std::string::npos,
+             jump_only.front().reason.c_str());
     QVERIFY(bs::check_power_trace(trace_of(Q::Current, {0.0001, 0.3, 2.5, 2.4, 0.3})).empty());
     QVERIFY(bs::check_power_trace(trace_of(Q::Current, {1.0, NAN, 1.1})).empty());
     // 200 W on a platform whose TDP is 15 W (13x): above 10x the TDP.
