@@ -31,9 +31,9 @@ constexpr const char* kFlopsCauses =
     "wrong (an asynchronous kernel launch timed without waiting for it to finish, a wrong clock unit).";
 
 std::string spec_text(const DeviceSpec& spec) {
-  std::string s = spec.name + "'s FP32 peak of " + format_si(spec.fp32_peak_flops, "FLOPS") + " (" + spec.derivation +
-                  "; source: " + spec.source_title + ")";
-  return s;
+  // The derivation, not the whole source: the reason goes into footnotes; the source is in the spec itself.
+  return spec.name + "'s FP32 peak of " + format_si(spec.fp32_peak_flops, "FLOPS") + " (" + spec.derivation +
+         "; device table)";
 }
 
 std::string_view quantity_noun(PowerQuantity q) {
