@@ -75,7 +75,8 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ThroughputPe
                   {"name", t.measurement->name},
                   {"metric", t.measurement->metric},
                   {"value", t.value},
-                  {"unit", t.measurement->unit}});
+                  {"unit", t.measurement->unit},
+                  {"flags", flags_json(throughput_flags(*t.set, *t.measurement, t.value))}});
   const BundledDeviceTable& table = bundled_device_table();
   return {{"format", "benchscope-peaks"},
           {"version", 1},

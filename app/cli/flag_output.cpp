@@ -24,6 +24,12 @@ nlohmann::json spec_json(const std::optional<DeviceSpec>& spec) {
           {"url", spec->source_url}};
 }
 
+std::vector<PlausibilityFlag> throughput_flags(const ResultSet& set, const Measurement& m, double value) {
+  if (m.unit != "FLOP/s" || m.metric.rfind("single-precision", 0) != 0) return {};
+  const BundledDeviceTable& table = bundled_device_table();
+  return check_flops(value, match_device(table.table, set.device, set.device_kind, set.platform));
+}
+
 void print_flag_notes(std::ostream& out, const FlagNotes& notes) {
   if (notes.empty()) return;
   out << "\nFlags (implausible numbers; docs/cli.md, \"Plausibility flags\"):\n";
