@@ -35,6 +35,7 @@ class TestCliResources : public QObject {
     namespace fs = std::filesystem;
     const fs::path root = prefix.path().toStdString();
     fs::create_directories(root / "bin");
+    fs::create_directories(root / "share/benchscope");
     fs::copy_file(kCli.toStdString(), root / "bin/benchscope-cli");
     fs::copy(fs::path(BENCHSCOPE_SOURCE_DIR) / "resources", root / "share/benchscope/resources", fs::copy_options::recursive);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
