@@ -22,6 +22,7 @@
 #include "device_palette.h"
 #include "plot_export.h"
 #include "triptych_figure.h"
+#include "util/resources.h"
 
 namespace bs::ui {
 namespace {
@@ -226,7 +227,15 @@ FigureData select_figure_data(FigureData d, FigureDataChoice choice) {
   return d;
 }
 
-QString paper_template_path() { return QStringLiteral(BENCHSCOPE_SOURCE_DIR "/resources/figures/paper-2018.json"); }
+// Found like every bundled resource (util/resources.h): $BENCHSCOPE_RESOURCE_DIR, an installed share/benchscope,
+// then this source tree. When none has it, the source tree's path, so the error names a real place.
+QString paper_template_path() {
+  try {
+    return QString::fromStdString(find_resource("figures/paper-2018.json").string());
+  } catch (const std::exception&) {
+    return QStringLiteral(BENCHSCOPE_SOURCE_DIR "/resources/figures/paper-2018.json");
+  }
+}
 
 namespace {
 
@@ -296,8 +305,11 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
     for (const char* ext : {".tex", ".csv"}) {
       const QString name = QString(stem) + ext;
       write_text(QDir(out_dir).filePath(name), ext == std::string(".tex") ? to_latex(table) : to_csv(table), out.files);
+      QJsonArray notes;  // the plausibility footnotes the table carries (analysis/flag_notes.h)
+      for (const std::string& n : table.notes) notes.append(QString::fromStdString(n));
       list.append(QJsonObject{{"file", name}, {"figure", stem}, {"title", QString::fromStdString(table.caption)},
-                              {"sources", std::string(stem) == "platforms" ? platform_sources : run_sources}});
+                              {"sources", std::string(stem) == "platforms" ? platform_sources : run_sources},
+                              {"notes", notes}});
     }
   }
   const QByteArray json = QJsonDocument(QJsonObject{{"format", "benchscope-figure-list"},

@@ -75,7 +75,9 @@ void EfficiencyView::fill_table() {
       if (!tip.isEmpty()) item->setToolTip(tip);
       table_->setItem(static_cast<int>(r), col, item);
     };
-    cell(Platform, QString::fromStdString(e.peak.platform), tr("current log: %1").arg(QString::fromStdString(e.trace_label)));
+    cell(Platform, QString::fromStdString(e.peak.platform),
+         tr("current log: %1\npower measured by: %2")
+             .arg(QString::fromStdString(e.trace_label), QString::fromStdString(e.measurement)));
     cell(Peak, QString::number(e.peak.peak.flops / 1e9, 'f', 2),
          tr("at %1 workers; %2").arg(e.peak.peak.workers).arg(QString::fromStdString(e.peak.source_file)));
     cell(Source, QStringLiteral("%1, %2, D = %3")
@@ -89,6 +91,21 @@ void EfficiencyView::fill_table() {
       const EfficiencyFigure& f = e.figures.at(static_cast<std::size_t>(i));
       cell(col, QString::number(f.value, 'f', col == Energy ? 4 : 2),
            QString::fromStdString(f.label) + QStringLiteral(" (") + QString::fromStdString(f.unit) + ')');
+    }
+    // A flagged peak or power log: the numbers made from it are marked, tinted and explained.
+    if (!e.flags.empty()) {
+      const QString why = QString::fromStdString(flags_text(e.flags));
+      const bool peak_flagged = !e.peak.flags.empty();
+      const bool power_flagged = e.flags.size() > e.peak.flags.size();  // the log's flags follow the peak's
+      for (int col : {int(Peak), int(MaxCurrent), int(MeanCurrent), int(MeanPower), int(Paper), int(AtMean), int(Energy)}) {
+        const bool ratio = col == Paper || col == AtMean || col == Energy;
+        if (!ratio && !(col == Peak ? peak_flagged : power_flagged)) continue;
+        QTableWidgetItem* item = table_->item(static_cast<int>(r), col);
+        if (!item) continue;
+        item->setText(QStringLiteral("⚠ ") + item->text());
+        item->setBackground(QColor(0xff, 0xe0, 0xb2));
+        item->setToolTip(why + "\n\n" + item->toolTip());
+      }
     }
   }
 }

@@ -130,6 +130,7 @@ void FlopsPlot::rebuild() {
   struct PeakMark {
     double flops, workers;
     QColor color;
+    bool flagged;  // implausible (analysis/plausibility.h): the label says "⚠", the peak table says why
   };
   std::vector<PeakMark> peaks;
   const int exponent = si_exponent(max_flops);
@@ -185,14 +186,16 @@ void FlopsPlot::rebuild() {
                                                   QString::fromStdString(run.backend))),
                                               color.darker(130), color, 9));
       marker->removeFromLegend();
-      peaks.push_back({peak->flops, static_cast<double>(peak->workers), color});
+      const std::vector<PeakRow> checked = peak_table(std::span<const FlopsRun>(&run, 1));
+      peaks.push_back({peak->flops, static_cast<double>(peak->workers), color, !checked.empty() && !checked.front().flags.empty()});
     }
   }
   plot_->legend->setVisible(!series_.empty());
   // Labels in order of peak height: where two collide, the higher peak keeps its label.
   std::stable_sort(peaks.begin(), peaks.end(), [](const PeakMark& a, const PeakMark& b) { return a.flops > b.flops; });
   for (const PeakMark& p : peaks)
-    overlay_->add_peak_label(p.workers, p.flops / scale_, QString::fromStdString(format_si(p.flops, "FLOPS")),
+    overlay_->add_peak_label(p.workers, p.flops / scale_,
+                             (p.flagged ? QStringLiteral("⚠ ") : QString()) + QString::fromStdString(format_si(p.flops, "FLOPS")),
                              p.color);
   reset_view();
 }

@@ -2,11 +2,13 @@
 #include "peak_table.h"
 
 #include <QApplication>
+#include <QColor>
 #include <QClipboard>
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QSortFilterProxyModel>
 
+#include "analysis/plausibility.h"
 #include "analysis/units.h"
 #include "device_palette.h"
 
@@ -38,7 +40,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
       case Peak: {
         QString s = qs(format_si(r.peak.flops, "FLOPS"));
         if (r.peak.at_peak.n > 1) s += QStringLiteral(" ± ") + qs(format_si(r.peak.at_peak.sd, "FLOPS"));
-        return s;
+        return r.flags.empty() ? s : QStringLiteral("⚠ ") + s;
       }
       case Workers: return QLocale().toString(static_cast<qlonglong>(r.peak.workers));
       case Reported: return r.reported_flops ? qs(format_si(*r.reported_flops, "FLOPS")) : QStringLiteral("–");
@@ -46,9 +48,14 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
       case OfTheoretical:
         return r.fraction_of_theoretical ? QStringLiteral("%1 %").arg(*r.fraction_of_theoretical * 100, 0, 'f', 1)
                                          : QStringLiteral("–");
+      case OfSpec:
+        return r.fraction_of_spec ? QStringLiteral("%1 %").arg(*r.fraction_of_spec * 100, 0, 'f', 1) : QStringLiteral("–");
       case Origin: return QString::fromUtf8(to_string(r.origin).data());
     }
   }
+  if (role == kFlaggedRole) return !r.flags.empty();
+  if (role == Qt::BackgroundRole && !r.flags.empty()) return QColor(0xff, 0xe0, 0xb2);  // amber: see the tooltip
+  if (role == Qt::ForegroundRole && !r.flags.empty() && index.column() == Peak) return QColor(0x8a, 0x4b, 0x00);
   if (role == kSortRole) {
     switch (index.column()) {
       case Dims: return r.dims;
@@ -57,18 +64,27 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
       case Reported: return r.reported_flops.value_or(-1);
       case Ratio: return r.ratio_to_reported.value_or(-1);
       case OfTheoretical: return r.fraction_of_theoretical.value_or(-1);
+      case OfSpec: return r.fraction_of_spec.value_or(-1);
       default: return data(index, Qt::DisplayRole);
     }
   }
   if (role == Qt::DecorationRole && index.column() == Device) return device_color(colors_[static_cast<std::size_t>(index.row())]);
-  if (role == Qt::TextAlignmentRole && index.column() >= Dims && index.column() <= OfTheoretical)
+  if (role == Qt::TextAlignmentRole && index.column() >= Dims && index.column() <= OfSpec)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   if (role == Qt::ToolTipRole) {
-    return QStringLiteral("%1 on %2\nPeak %3 at %L4 workers (n = %5)\nSource: %6")
-        .arg(qs(r.device), qs(r.platform), qs(format_si(r.peak.flops, "FLOPS", 4)))
-        .arg(static_cast<qlonglong>(r.peak.workers))
-        .arg(r.peak.at_peak.n)
-        .arg(qs(r.source_file));
+    QString tip = QStringLiteral("%1 on %2\nPeak %3 at %L4 workers (n = %5)\nSource: %6")
+                      .arg(qs(r.device), qs(r.platform), qs(format_si(r.peak.flops, "FLOPS", 4)))
+                      .arg(static_cast<qlonglong>(r.peak.workers))
+                      .arg(r.peak.at_peak.n)
+                      .arg(qs(r.source_file));
+    if (r.spec)
+      tip += tr("\nVendor FP32 peak: %1 (%2: %3; %4)")
+                 .arg(qs(format_si(r.spec->fp32_peak_flops, "FLOPS")), qs(r.spec->name), qs(r.spec->derivation),
+                      qs(r.spec->source_title));
+    else
+      tip += tr("\nNot in the device table: no vendor peak to check against");
+    if (!r.flags.empty()) tip = qs(flags_text(r.flags)) + QStringLiteral("\n\n") + tip;
+    return tip;
   }
   return {};
 }
@@ -76,7 +92,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
 QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return {};
   static const char* names[] = {"Device", "Backend", "D", "Peak", "Workers at peak", "Reported", "Ratio",
-                                "% of theoretical", "Origin"};
+                                "% of theoretical", "% of spec", "Origin"};
   static const char* tips[] = {"Compute device (colour as in every plot)",
                                "API the kernel ran through",
                                "2D points rotated per worker",
@@ -85,6 +101,7 @@ QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, in
                                "Vendor or literature peak figure",
                                "Measured peak ÷ reported figure",
                                "Measured peak ÷ this kernel's theoretical peak on the device",
+                               "Measured peak ÷ the vendor's FP32 peak (device table); above 130 % is flagged ⚠",
                                "measured on a machine, or reconstructed from published figures"};
   if (role == Qt::DisplayRole) return tr(names[section]);
   if (role == Qt::ToolTipRole) return tr(tips[section]);

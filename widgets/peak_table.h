@@ -11,8 +11,11 @@ namespace bs::ui {
 class PeakTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Device, Backend, Dims, Peak, Workers, Reported, Ratio, OfTheoretical, Origin, ColumnCount };
+  enum Column { Device, Backend, Dims, Peak, Workers, Reported, Ratio, OfTheoretical, OfSpec, Origin, ColumnCount };
   static constexpr int kSortRole = Qt::UserRole + 1;
+  // true for every cell of a row whose peak carries plausibility flags (analysis/plausibility.h). Such a row is
+  // tinted, its peak shows "⚠", and every cell's tooltip starts with the reasons.
+  static constexpr int kFlaggedRole = Qt::UserRole + 2;
 
   using QAbstractTableModel::QAbstractTableModel;
   // `color_indices` parallels `rows`: the device colour of each row.

@@ -12,6 +12,7 @@
 #include <QLineEdit>
 #include <QSignalBlocker>
 #include <QMessageBox>
+#include <QRegularExpression>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -21,6 +22,7 @@
 #include <stdexcept>
 
 #include "analysis/battery.h"
+#include "analysis/plausibility.h"
 #include "analysis/platform_table.h"
 #include "frozen_column.h"
 
@@ -81,9 +83,20 @@ QString tooltip_for(const PlatformRow& r, const std::string& column) {
   const auto it = r.sources.find(column);
   if (it == r.sources.end()) return {};
   const CellSource& s = it->second;
-  return QObject::tr("%1\nfrom %2 (%3)\nDouble-click to show it in the workspace")
-      .arg(QString::fromStdString(s.how), QString::fromStdString(s.source_file.empty() ? "?" : s.source_file),
-           QString::fromUtf8(to_string(s.origin).data()));
+  QString tip = QObject::tr("%1\nfrom %2 (%3)\nDouble-click to show it in the workspace")
+                    .arg(QString::fromStdString(s.how), QString::fromStdString(s.source_file.empty() ? "?" : s.source_file),
+                         QString::fromUtf8(to_string(s.origin).data()));
+  if (column == column::kPower && !r.power_measurement.empty())
+    tip += QObject::tr("\nMeasured by: %1").arg(QString::fromStdString(r.power_measurement));
+  return tip;
+}
+
+// A flagged cell's tooltip starts with why its number is implausible (analysis/plausibility.h).
+QString flagged_tooltip(const PlatformRow& r, const std::string& column, const QString& tip) {
+  const auto f = r.flags.find(column);
+  if (f == r.flags.end()) return tip;
+  const QString why = QString::fromStdString(flags_text(f->second));
+  return tip.isEmpty() ? why : why + "\n\n" + tip;
 }
 
 QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, const QString& suffix, int decimals) {
@@ -386,9 +399,10 @@ void PlatformView::fill_table() {
   for (const auto& r : rows_) values.push_back(column_values(r));
   const std::size_t numeric_columns = values.empty() ? 0 : values.front().size();
   for (std::size_t col = 1; col < numeric_columns; ++col)
-    for (const auto& v : values) {
-      const ColumnValue& cv = v[col];
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const ColumnValue& cv = values[i][col];
       if (std::isnan(cv.value) || cv.better == 0) continue;
+      if (col < ids.size() && rows_[i].flags.count(ids[col])) continue;  // an implausible number is never "best"
       if (std::isnan(best[col]) || (cv.better > 0 ? cv.value > best[col] : cv.value < best[col])) best[col] = cv.value;
     }
   const int with_data = static_cast<int>(rows_.size());
@@ -411,9 +425,13 @@ void PlatformView::fill_table() {
     // A platform that fails a constraint is dimmed, with the reason on every cell of its row.
     const bool fails = verdict && !verdict->meets_all;
     const QString fail_reason = fails ? tr("Fails the constraints: %1").arg(QString::fromStdString(t.rows[r].back())) : QString();
+    const PlatformRow& row = rows_[static_cast<std::size_t>(r)];
     for (int c = 0; c < static_cast<int>(order.size()); ++c) {
       const std::size_t cu = order[static_cast<std::size_t>(c)];
-      auto* item = new NumericItem(QString::fromStdString(t.rows[r][cu]));
+      QString text = QString::fromStdString(t.rows[r][cu]);
+      // The table's footnote marker " [n]" (for LaTeX/CSV) becomes "⚠" here: the reason is in the tooltip.
+      if (row.flags.count(ids[cu])) text.replace(QRegularExpression(QStringLiteral(" \\[[0-9,]+\\]$")), QStringLiteral(" ⚠"));
+      auto* item = new NumericItem(text);
       item->setData(Qt::UserRole, r);
       item->setData(kColumnRole, QString::fromStdString(ids[cu]));
       if (cu < values[static_cast<std::size_t>(r)].size() && cu > 0) {
@@ -427,7 +445,8 @@ void PlatformView::fill_table() {
           item->setBackground(QColor(0xd9, 0xf2, 0xd9));
         }
       }
-      QString tip = tooltip_for(rows_[static_cast<std::size_t>(r)], ids[cu]);
+      QString tip = flagged_tooltip(row, ids[cu], tooltip_for(row, ids[cu]));
+      if (row.flags.count(ids[cu])) item->setBackground(QColor(0xff, 0xe0, 0xb2));  // flagged: see the tooltip
       if (fails) {
         item->setForeground(QColor(0x8a, 0x8a, 0x8a));
         tip = tip.isEmpty() ? fail_reason : fail_reason + "\n\n" + tip;

@@ -11,6 +11,7 @@
 #include <qcustomplot.h>
 
 #include "analysis/decimate.h"
+#include "analysis/measurement_text.h"
 #include "analysis/power.h"
 #include "device_palette.h"
 #include "phase_markers.h"
@@ -73,9 +74,11 @@ void PowerView::set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakR
   peaks_ = std::move(peaks);
   power_.clear();
   current_.clear();
+  flags_.clear();
   plot_->clearGraphs();
   plot_->clearItems();  // the previous traces' phase markers
   for (const StoredPowerTrace& s : traces_) {
+    flags_.push_back(check_power_trace_bundled(s.trace));
     power_.push_back(power_series(s.trace));
     current_.push_back(current_series(s.trace));
     QCPGraph* g = plot_->addGraph();
@@ -144,9 +147,15 @@ void PowerView::update_table() {
   for (std::size_t i = 0; i < traces_.size(); ++i) {
     const PowerTrace& t = traces_[i].trace;
     const TraceStats s = trace_stats(t, std::nullopt, range.lower, range.upper);
+    // Every cell says how the log was measured; a flagged log's row is tinted and its tooltips start with why.
+    const QString measured = tr("Power measured by: %1").arg(QString::fromStdString(measurement_text(t.provenance)));
+    const std::vector<PlausibilityFlag>& flags = flags_[i];
+    const QString tip = flags.empty() ? measured : QString::fromStdString(flags_text(flags)) + "\n\n" + measured;
     auto cell = [&](int col, const QString& text) {
-      auto* item = new QTableWidgetItem(text);
+      auto* item = new QTableWidgetItem(col == 0 && !flags.empty() ? QStringLiteral("⚠ ") + text : text);
       if (col > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+      item->setToolTip(tip);
+      if (!flags.empty()) item->setBackground(QColor(0xff, 0xe0, 0xb2));
       table_->setItem(static_cast<int>(i), col, item);
     };
     const auto mean_sd = [](const std::optional<Summary>& v) {
@@ -165,6 +174,12 @@ void PowerView::update_table() {
     if (best && s.current_a && t.supply_voltage_v)
       gflops_w = QString::number(paper_flops_per_watt(best->peak.flops, *t.supply_voltage_v, s.current_a->max) / 1e9, 'f', 2);
     cell(6, gflops_w);
+    if (best && !best->flags.empty() && table_->item(static_cast<int>(i), 6)) {  // the peak behind GFLOPS/W is flagged
+      QTableWidgetItem* item = table_->item(static_cast<int>(i), 6);
+      item->setText(QStringLiteral("⚠ ") + item->text());
+      item->setBackground(QColor(0xff, 0xe0, 0xb2));
+      item->setToolTip(QString::fromStdString(flags_text(best->flags)) + "\n\n" + item->toolTip());
+    }
     cell(7, s.power_w ? QString::number(constant_power_runtime_h(kBatteryVolts, kBatteryAh, s.power_w->mean) * 60, 'f', 2)
                       : QStringLiteral("–"));
   }

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "analysis/flops.h"
+#include "analysis/plausibility.h"
 #include "store/workspace.h"
 
 class QComboBox;
@@ -42,6 +43,7 @@ class PowerView : public QWidget {
   std::vector<std::vector<double>> current_;  // A per sample, per trace (empty: no current channel)
   Quantity quantity_ = Quantity::Current;
   std::vector<PeakRow> peaks_;
+  std::vector<std::vector<PlausibilityFlag>> flags_;  // per trace, of the whole log (check_power_trace_bundled())
 };
 
 }  // namespace bs::ui

@@ -11,6 +11,7 @@
 #include "analysis/units.h"
 #include "args.h"
 #include "command.h"
+#include "flag_output.h"
 #include "inputs.h"
 #include "signals.h"
 #include "text_table.h"
@@ -43,8 +44,11 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ResultPeak>&
                      {"ratio_to_reported", optional_number(r.ratio_to_reported)},
                      {"theoretical_flops", optional_number(r.theoretical_flops)},
                      {"fraction_of_theoretical", optional_number(r.fraction_of_theoretical)},
+                     {"spec", spec_json(r.spec)},
+                     {"fraction_of_spec", optional_number(r.fraction_of_spec)},
                      {"origin", std::string(to_string(r.origin))},
-                     {"source_file", r.source_file}});
+                     {"source_file", r.source_file},
+                     {"flags", flags_json(r.flags)}});
   json jt = json::array();
   for (const ResultPeak& t : throughput)
     jt.push_back({{"platform", t.set->platform},
@@ -58,8 +62,14 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ResultPeak>&
                   {"value", t.summary.mean},
                   {"n", t.summary.n},
                   {"sd", t.summary.sd},
-                  {"unit", t.measurement->unit}});
-  return {{"format", "benchscope-peaks"}, {"version", 1}, {"rows", jrows}, {"throughput", jt}};
+                  {"unit", t.measurement->unit},
+                  {"flags", flags_json(throughput_flags(*t.set, *t.measurement, t.summary.mean))}});
+  const BundledDeviceTable& table = bundled_device_table();
+  return {{"format", "benchscope-peaks"},
+          {"version", 1},
+          {"device_table", {{"path", table.table.path}, {"devices", table.table.devices.size()}, {"error", table.error}}},
+          {"rows", jrows},
+          {"throughput", jt}};
 }
 
 std::string ratio_text(const std::optional<double>& r) {
@@ -79,7 +89,8 @@ std::string percent_text(const std::optional<double>& f) {
 void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std::vector<ResultPeak>& throughput,
                  const ResultPeakQuery& query, std::size_t left_out) {
   TextTable table({"Platform", "Device", "Kind", "Backend", "Variant", "D", "Peak", "Workers at peak", "n",
-                   "Reported", "Ratio", "% of theor.", "Origin"});
+                   "Reported", "Ratio", "% of theor.", "% of spec", "Origin", "Flags"});
+  FlagNotes notes;
   for (const PeakRow& r : rows) {
     std::string peak = format_si(r.peak.flops, "FLOPS");
     if (r.peak.at_peak.n > 1) peak += " \xC2\xB1 " + format_si(r.peak.at_peak.sd, "FLOPS");
@@ -87,13 +98,15 @@ void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std:
     table.add({r.platform, r.device, std::string(to_string(r.device_kind)), r.backend, r.variant,
                r.dims > 0 ? std::to_string(r.dims) : "-", peak, std::to_string(r.peak.workers), std::to_string(r.peak.at_peak.n),
                r.reported_flops ? format_si(*r.reported_flops, "FLOPS") : "-", ratio_text(r.ratio_to_reported),
-               percent_text(r.fraction_of_theoretical), std::string(to_string(r.origin))});
+               percent_text(r.fraction_of_theoretical), percent_text(r.fraction_of_spec),
+               std::string(to_string(r.origin)), notes.marker(r.flags)});
   }
   if (table.empty()) {
     out << "no FLOPS runs\n";
   } else {
-    out << "Peak FLOPS (6*D*N*W/t)\n";
+    out << "Peak FLOPS (6*D*N*W/t); % of spec: of the vendor's FP32 peak (device table)\n";
     table.print(out);
+    print_flag_notes(out, notes);
   }
   if (!throughput.empty()) {
     TextTable t({"Platform", "Device", "Backend", "Source", "Precision", "Measurement", "Peak", "n"});

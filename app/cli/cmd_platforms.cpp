@@ -11,6 +11,7 @@
 #include "analysis/platform_table.h"
 #include "args.h"
 #include "command.h"
+#include "flag_output.h"
 #include "inputs.h"
 #include "platform_args.h"
 #include "signals.h"
@@ -70,6 +71,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
       nlohmann::json sources = nlohmann::json::object();
       for (const auto& [col, s] : r.sources)
         sources[col] = {{"file", s.source_file}, {"origin", std::string(to_string(s.origin))}, {"how", s.how}};
+      nlohmann::json column_flags = nlohmann::json::object();
+      for (const auto& [col, f] : r.flags) column_flags[col] = flags_json(f);
       list.push_back({{"platform", r.platform},
                       {"gpu_peak_flops", r.gpu ? nlohmann::json(r.gpu->peak.flops) : nlohmann::json(nullptr)},
                       {"cpu_peak_flops", r.cpu ? nlohmann::json(r.cpu->peak.flops) : nlohmann::json(nullptr)},
@@ -83,7 +86,9 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"battery_runtime_h", opt(r.battery_runtime_h)}, {"battery_load_w", opt(r.battery_load_w)},
                       {"frames_per_wh", opt(r.frames_per_wh)},
                       {"meets_constraints", verdicts[i].meets_all}, {"recommended", verdicts[i].recommended},
-                      {"note", verdicts[i].note}, {"checks", checks}, {"sources", sources}});
+                      {"note", verdicts[i].note}, {"checks", checks}, {"sources", sources},
+                      {"power_measurement", r.power_measurement},
+                      {"flags", flags_json(r.all_flags())}, {"column_flags", column_flags}});
     }
     out << nlohmann::json{{"format", "benchscope-platforms"}, {"version", 1}, {"battery", pack->name},
                           {"extra_load_w", options.extra_load_w}, {"mission", options.mission},
@@ -102,6 +107,10 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     text.add(line);
   }
   text.print(out);
+  if (!table.notes.empty()) {
+    out << "\nFlags (implausible numbers; docs/cli.md, \"Plausibility flags\"):\n";
+    for (const std::string& n : table.notes) out << "  " << n << '\n';
+  }
   char extra[64] = "";
   if (options.extra_load_w > 0) std::snprintf(extra, sizeof extra, ", plus %.1f W in parallel", options.extra_load_w);
   out << "battery: " << pack->name << " (" << pack->description << "), constant-power model" << extra;

@@ -14,10 +14,13 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/power.h"
+#include "analysis/measurement_text.h"
+#include "analysis/plausibility.h"
 #include "analysis/power_phases.h"
 #include "analysis/power_stats.h"
 #include "args.h"
 #include "command.h"
+#include "flag_output.h"
 #include "inputs.h"
 #include "power_csv.h"
 #include "power_import.h"
@@ -108,6 +111,7 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     const PowerTrace& t = lt.trace;
     for (const std::string& w : lt.warnings) err << "warning: " << w << '\n';
     const PowerStats s = power_stats(t, stats_options);
+    const std::vector<PlausibilityFlag> flags = check_power_trace_bundled(t);  // of the whole log, not the range
     std::vector<DetectedPhase> phases;
     if (args.has("--phases")) {
       const PowerSeries p = derive_power(t, stats_options.supply_v);
@@ -127,6 +131,9 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
                       {"label", t.label},
                       {"source_file", t.provenance.source_file},
                       {"origin", std::string(to_string(t.provenance.origin))},
+                      {"measurement", measurement_text(t.provenance)},
+                      {"measurement_kind", std::string(to_string(t.provenance.measurement))},
+                      {"sensor", t.provenance.sensor},
                       {"start_time", t.start_time},
                       {"n", s.n},
                       {"from_s", s.from_s},
@@ -140,14 +147,16 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
                       {"charge_c", s.charge_c ? nlohmann::json(*s.charge_c) : nlohmann::json(nullptr)},
                       {"channels", channels},
                       {"phases", phase_list},
-                      {"warnings", lt.warnings}});
+                      {"warnings", lt.warnings},
+                      {"flags", flags_json(flags)}});
       continue;
     }
     char line[512];
     std::snprintf(line, sizeof line, "%s (%s, %s): n = %zu over %.3f s (%.3f .. %.3f s)\n", t.label.c_str(),
                   t.platform.empty() ? "unknown platform" : t.platform.c_str(),
                   std::string(to_string(t.provenance.origin)).c_str(), s.n, s.duration_s, s.from_s, s.to_s);
-    out << line;
+    out << line << "  measured by: " << measurement_text(t.provenance) << '\n';
+    for (const PlausibilityFlag& f : flags) out << "  \xE2\x9A\xA0 " << f.code << ": " << f.reason << '\n';
     if (s.current_a) out << "  current  " << signal_line(*s.current_a, "A") << '\n';
     if (s.power_w) {
       out << "  power    " << signal_line(*s.power_w, "W") << "\n           from the " << to_string(s.power_source);

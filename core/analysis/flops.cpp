@@ -37,6 +37,16 @@ std::optional<Peak> find_peak(const FlopsRun& run) {
 }
 
 std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs) {
+  const BundledDeviceTable& bundled = bundled_device_table();
+  std::vector<PeakRow> rows = peak_table(runs, bundled.table);
+  if (!bundled.error.empty())
+    for (PeakRow& row : rows)
+      row.flags.push_back({flag_code::kSpecCheckUnavailable,
+                           "Not checked against the device's vendor peak: " + bundled.error});
+  return rows;
+}
+
+std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs, const DeviceTable& table) {
   std::vector<PeakRow> rows;
   for (const FlopsRun& run : runs) {
     const auto peak = find_peak(run);
@@ -58,6 +68,11 @@ std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs) {
       row.fraction_of_theoretical = peak->flops / *run.theoretical_peak_flops;
     row.origin = run.provenance.origin;
     row.source_file = run.provenance.source_file;
+    if (const DeviceSpec* spec = match_device(table, run.device, run.device_kind, run.platform)) {
+      row.spec = *spec;
+      row.fraction_of_spec = peak->flops / spec->fp32_peak_flops;
+    }
+    row.flags = check_flops(peak->flops, row.spec ? &*row.spec : nullptr, run.theoretical_peak_flops);
     rows.push_back(std::move(row));
   }
   return rows;

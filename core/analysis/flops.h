@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/device_table.h"
+#include "analysis/plausibility.h"
 #include "analysis/stats.h"
 #include "model/flops_run.h"
 
@@ -47,8 +49,15 @@ struct PeakRow {
   std::optional<double> fraction_of_theoretical;  // peak / theoretical
   DataOrigin origin = DataOrigin::Unknown;
   std::string source_file;
+  // The device table's entry for this device (match_device()), when there is one.
+  std::optional<DeviceSpec> spec;
+  std::optional<double> fraction_of_spec;  // peak / spec FP32 peak
+  std::vector<PlausibilityFlag> flags;     // check_flops() of the peak; empty: plausible (or nothing to check)
 };
-// Rows in input order; runs without samples are skipped.
+// Rows in input order; runs without samples are skipped. Each row is checked against the bundled device table
+// (bundled_device_table()); when that cannot be loaded every row carries a spec_check_unavailable flag.
 std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs);
+// The same against a given table.
+std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs, const DeviceTable& table);
 
 }  // namespace bs

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 
+#include "analysis/flag_notes.h"
 #include "analysis/flops.h"
 
 namespace bs {
@@ -42,17 +43,21 @@ ExportTable gpu_peak_table(std::span<const FlopsRun> runs) {
   t.caption = "Peak single-precision throughput of the rotation kernel on the GPUs (TFLOPS)";
   t.label = "tab:gpu-peaks";
   t.header = {"Device", "OpenCL (TFLOPS)", "CUDA (TFLOPS)", "Reported (TFLOPS)"};
+  FlagNotes notes;
   for (const std::string& d : devices) {
     std::vector<std::string> row{d};
     for (const char* column : {"OpenCL", "CUDA"}) {
       const auto it = best.find({d, column});
-      row.push_back(it == best.end() ? kDash : value(it->second.peak.flops, 1e12, it->second.peak.at_peak));
+      row.push_back(it == best.end() ? kDash
+                                     : notes.mark(value(it->second.peak.flops, 1e12, it->second.peak.at_peak),
+                                                  it->second.flags));
     }
     char rep[32];
     if (reported.count(d)) std::snprintf(rep, sizeof rep, "%.2f", reported[d] / 1e12);
     row.push_back(reported.count(d) ? rep : kDash);
     t.rows.push_back(std::move(row));
   }
+  notes.add_to(t);
   return t;
 }
 
@@ -68,7 +73,10 @@ ExportTable cpu_peak_table(std::span<const FlopsRun> runs) {
   t.caption = "Peak single-precision throughput of the rotation kernel on the CPUs (GFLOPS)";
   t.label = "tab:cpu-peaks";
   t.header = {"Device", "Peak (GFLOPS)", "Instruction set / backend"};
-  for (const PeakRow& r : best) t.rows.push_back({r.device, value(r.peak.flops, 1e9, r.peak.at_peak), r.backend});
+  FlagNotes notes;
+  for (const PeakRow& r : best)
+    t.rows.push_back({r.device, notes.mark(value(r.peak.flops, 1e9, r.peak.at_peak), r.flags), r.backend});
+  notes.add_to(t);
   return t;
 }
 

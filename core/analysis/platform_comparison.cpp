@@ -7,6 +7,7 @@
 
 #include "analysis/battery.h"
 #include "analysis/platform_battery.h"
+#include "analysis/measurement_text.h"
 #include "analysis/power.h"
 #include "analysis/power_stats.h"
 
@@ -41,6 +42,8 @@ void add_power(PlatformRow& row, const PowerTrace& trace, const ComparisonOption
     how += buf;
   }
   row.sources[column::kPower] = {trace.provenance.source_file, trace.provenance.origin, how};
+  row.power_measurement = measurement_text(trace.provenance);
+  if (auto f = check_power_trace_bundled(trace); !f.empty()) row.flags[column::kPower] = std::move(f);
   const double peak = row.best_peak_flops();
   if (peak > 0) {
     row.gflops_per_watt_mean = peak / 1e9 / s.power_w->summary.mean;
@@ -48,7 +51,36 @@ void add_power(PlatformRow& row, const PowerTrace& trace, const ComparisonOption
   }
 }
 
+// Spreads the peaks' and the power log's flags (set above) over every cell computed from them.
+void attach_flags(PlatformRow& row) {
+  const std::vector<PlausibilityFlag> power = row.flags.count(column::kPower) ? row.flags[column::kPower]
+                                                                               : std::vector<PlausibilityFlag>{};
+  if (row.gpu && !row.gpu->flags.empty()) row.flags[column::kGpuPeak] = row.gpu->flags;
+  if (row.cpu && !row.cpu->flags.empty()) row.flags[column::kCpuPeak] = row.cpu->flags;
+  std::vector<PlausibilityFlag> per_watt = row.best_peak() ? row.best_peak()->flags : std::vector<PlausibilityFlag>{};
+  merge_flags(per_watt, power);
+  if (!per_watt.empty() && (row.gflops_per_watt_paper || row.gflops_per_watt_mean)) {
+    row.flags["gflops_w_paper"] = per_watt;
+    row.flags["gflops_w_mean"] = per_watt;
+  }
+  if (power.empty()) return;
+  row.flags["max_power"] = power;
+  for (const char* c : {column::kEnergyPerFrame, column::kEnergyPerStage, column::kBattery, column::kFramesPerWh})
+    row.flags[c] = power;
+}
+
 }  // namespace
+
+const PeakRow* PlatformRow::best_peak() const {
+  if (gpu && (!cpu || gpu->peak.flops >= cpu->peak.flops)) return &*gpu;
+  return cpu ? &*cpu : nullptr;
+}
+
+std::vector<PlausibilityFlag> PlatformRow::all_flags() const {
+  std::vector<PlausibilityFlag> out;
+  for (const auto& [column, f] : flags) merge_flags(out, f);
+  return out;
+}
 
 double PlatformRow::best_peak_flops() const {
   return std::max(gpu ? gpu->peak.flops : 0.0, cpu ? cpu->peak.flops : 0.0);
@@ -187,6 +219,7 @@ std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::
                                            "per frame (" + e.how + ")"};
     }
   }
+  for (PlatformRow& row : rows) attach_flags(row);
   return rows;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/flops.h"
+#include "analysis/plausibility.h"
 #include "analysis/stats.h"
 #include "model/pipeline_run.h"
 #include "model/power_trace.h"
@@ -60,7 +61,13 @@ struct PlatformRow {
   // power over (preprocessing + detection) mean time, or the time-aligned energy when the log covers the run.
   std::optional<double> frames_per_wh;
   std::map<std::string, CellSource> sources;      // column id -> where the number came from
+  // Column id (platform_table_columns()) -> plausibility flags of that cell: the peaks' own, the power log's on
+  // every power-derived column, and both on GFLOPS/W. A column without an entry is not flagged.
+  std::map<std::string, std::vector<PlausibilityFlag>> flags;
+  std::string power_measurement;                  // how the power log was measured (measurement_text())
   double best_peak_flops() const;
+  const PeakRow* best_peak() const;               // the run behind best_peak_flops(), nullptr when none
+  std::vector<PlausibilityFlag> all_flags() const;  // every column's, each once
 };
 
 struct ComparisonOptions {

@@ -4,6 +4,8 @@
 #include <map>
 #include <set>
 
+#include "analysis/measurement_text.h"
+#include "analysis/plausibility.h"
 #include "analysis/power.h"
 
 namespace bs {
@@ -34,6 +36,9 @@ std::vector<PlatformEfficiency> platform_efficiency(std::span<const FlopsRun> ru
     e.paper_gflops_per_w = e.figures.at(0).value;
     e.mean_power_gflops_per_w = e.figures.at(1).value;
     e.joules_per_gflop = e.figures.at(2).value;
+    e.measurement = measurement_text(trace.provenance);
+    e.flags = e.peak.flags;
+    merge_flags(e.flags, check_power_trace_bundled(trace));
     done.insert(trace.platform);
     out.push_back(std::move(e));
   }

@@ -25,6 +25,9 @@ struct PlatformEfficiency {
   double mean_power_gflops_per_w = 0;  // peak / mean power
   double joules_per_gflop = 0;         // mean power / (peak / 1e9)
   std::vector<EfficiencyFigure> figures;  // the same three, labelled (analysis/efficiency.h)
+  std::string measurement;                // how the log was measured (measurement_text())
+  // The peak's flags and the log's (check_power_trace_bundled()): a GFLOPS/W figure is as doubtful as either.
+  std::vector<PlausibilityFlag> flags;
 };
 
 // Platforms in the order of their first current log; logs without a current channel or without a supply voltage

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "analysis/flag_notes.h"
 #include "analysis/units.h"
 
 namespace bs {
@@ -61,6 +62,8 @@ ExportTable platform_table(std::span<const PlatformRow> rows, std::span<const Pl
     t.header.push_back("Meets constraints");
     t.header.push_back("Failed (margin)");
   }
+  const std::vector<std::string> columns = platform_table_columns(with_verdicts);
+  FlagNotes notes;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const PlatformRow& r = rows[i];
     std::vector<std::string> cells{r.platform,
@@ -78,6 +81,9 @@ ExportTable platform_table(std::span<const PlatformRow> rows, std::span<const Pl
                                    num(r.energy_per_inference_j, "%.3f"),
                                    num(r.battery_runtime_h ? std::optional<double>(*r.battery_runtime_h * 60) : std::nullopt),
                                    num(r.frames_per_wh, "%.0f")};
+    // Flagged cells get a footnote marker; the notes go under the table (analysis/flag_notes.h).
+    for (std::size_t c = 0; c < cells.size() && c < columns.size(); ++c)
+      if (const auto f = r.flags.find(columns[c]); f != r.flags.end()) cells[c] = notes.mark(cells[c], f->second);
     if (with_verdicts) {
       const PlatformVerdict& v = verdicts[i];
       cells.push_back(v.recommended ? "yes (recommended)" : v.meets_all && v.note.empty() ? "yes" : "no");
@@ -92,6 +98,7 @@ ExportTable platform_table(std::span<const PlatformRow> rows, std::span<const Pl
     }
     t.rows.push_back(std::move(cells));
   }
+  notes.add_to(t);
   return t;
 }
 

@@ -19,6 +19,7 @@ th { background: #eee; }
 td.num { text-align: right; }
 .platform { page-break-before: always; }
 .note { color: #555; font-size: 9pt; }
+.flags { color: #8a4b00; }
 figure { margin: 1em 0; page-break-inside: avoid; }
 figcaption { font-size: 9pt; }
 )";
@@ -36,7 +37,17 @@ std::string peak_detail(const PeakRow& p) {
   std::string s = buf;
   if (p.fraction_of_theoretical) s += "; " + percent(*p.fraction_of_theoretical) + " of the theoretical peak";
   if (p.ratio_to_reported) s += "; " + percent(*p.ratio_to_reported) + " of the figure the vendor reports";
+  if (p.fraction_of_spec) s += "; " + percent(*p.fraction_of_spec) + " of the " + p.spec->name + "'s FP32 peak";
   return s;
+}
+
+// Flags as a warning list: a flagged number is never shown without the reason.
+void flag_list(std::ostringstream& h, const std::vector<PlausibilityFlag>& flags) {
+  if (flags.empty()) return;
+  h << "<ul class=\"flags\">\n";
+  for (const PlausibilityFlag& f : flags)
+    h << "<li><b>&#9888; " << html_escape(f.code) << "</b>: " << html_escape(f.reason) << "</li>\n";
+  h << "</ul>\n";
 }
 
 void cell_row(std::ostringstream& h, const std::string& name, const std::string& value) {
@@ -49,6 +60,9 @@ void platform_page(std::ostringstream& h, const ExportTable& table, std::size_t 
   h << "</table>\n";
   if (row.gpu) h << "<p>GPU peak: " << html_escape(peak_detail(*row.gpu)) << ".</p>\n";
   if (row.cpu) h << "<p>CPU peak: " << html_escape(peak_detail(*row.cpu)) << ".</p>\n";
+  if (!row.power_measurement.empty())
+    h << "<p>Power measured by: " << html_escape(row.power_measurement) << ".</p>\n";
+  flag_list(h, row.all_flags());
   if (!row.sources.empty()) {
     h << "<h3>Where the numbers come from</h3>\n<table>\n<tr><th>Measure</th><th>Source</th><th>Origin</th><th>How</th></tr>\n";
     for (const auto& [column, src] : row.sources)
@@ -95,6 +109,11 @@ std::string report_html(const ReportInput& in) {
     h << "</tr>\n";
   }
   h << "</table>\n";
+  if (!table.notes.empty()) {
+    h << "<div class=\"flags\"><p><b>Flags</b> (implausible numbers, marked [n] above):</p>\n";
+    for (const std::string& n : table.notes) h << "<p class=\"note\">" << html_escape(n) << "</p>\n";
+    h << "</div>\n";
+  }
   for (const PlatformVerdict& v : in.verdicts)
     if (v.recommended)
       h << "<p><b>Recommended" << (in.constraints.empty() ? "" : " under " + html_escape(in.constraints)) << ": "

@@ -40,7 +40,12 @@ std::string to_latex(const ExportTable& t) {
   if (!t.label.empty()) out += "  \\label{" + t.label + "}\n";
   out += "  \\begin{tabular}{" + align + "}\n    \\toprule\n" + line(t.header) + "    \\midrule\n";
   for (const auto& r : t.rows) out += line(r);
-  out += "    \\bottomrule\n  \\end{tabular}\n\\end{table}\n";
+  out += "    \\bottomrule\n  \\end{tabular}\n";
+  if (!t.notes.empty()) {
+    out += "  \\par\\smallskip\\footnotesize\n";
+    for (const auto& n : t.notes) out += "  " + latex_escape(n) + "\\par\n";
+  }
+  out += "\\end{table}\n";
   return out;
 }
 
@@ -58,6 +63,8 @@ std::string to_csv(const ExportTable& t) {
   };
   std::string out = line(t.header);
   for (const auto& r : t.rows) out += line(r);
+  if (!t.notes.empty()) out += "\r\n";
+  for (const auto& n : t.notes) out += line({n});
   return out;
 }
 

@@ -13,6 +13,9 @@ struct ExportTable {
   std::vector<std::string> header;    // may contain units, e.g. "Mean power (W)"
   std::vector<std::vector<std::string>> rows;
   std::string align;                  // LaTeX column spec, e.g. "lrrr"; empty: first column l, others r
+  // Footnotes under the table ("[1] above_spec_peak: ..."): LaTeX prints them below the tabular in \footnotesize;
+  // CSV after one empty line, one note per line in the first column.
+  std::vector<std::string> notes{};
 };
 
 // \begin{table}..\toprule..\midrule..\bottomrule..\end{table}; LaTeX special characters in cells are escaped.

@@ -104,6 +104,25 @@ class TestCli : public QObject {
     // The human table shows the same numbers with units.
     const Result human = cli({"peaks", source});
     QVERIFY(human.out.contains("9.34 TFLOPS") && human.out.contains("15.54 GFLOPS") && human.out.contains("5.97x"));
+
+    // Plausibility: the NUC GPU's 5.25 TFLOPS is 5.944x the Iris Plus 650's 883.2 GFLOPS (48 EUs x 16 x 1.15 GHz),
+    // above 1.3x: flagged with the likely causes. The GTX 1080 Ti's 9.14 TFLOPS is 0.806 of 11.34: not flagged.
+    const QJsonObject nuc = row(rows, "NUC GPU (Iris Plus 650)", "OpenCL", 4);
+    QCOMPARE(nuc["spec"].toObject()["id"].toString(), QString("intel-iris-plus-650"));
+    QCOMPARE(nuc["spec"].toObject()["fp32_peak_flops"].toDouble(), 883.2e9);
+    QVERIFY(std::abs(nuc["fraction_of_spec"].toDouble() - 5.944) < 0.001);
+    const QJsonArray flags = nuc["flags"].toArray();
+    QCOMPARE(flags.size(), 1);
+    QCOMPARE(flags[0].toObject()["code"].toString(), QString("above_spec_peak"));
+    const QString why = flags[0].toObject()["reason"].toString();
+    QVERIFY2(why.contains("compiler") && why.contains("asynchronous") && why.contains("5.9x"), qPrintable(why));
+    const QJsonObject gtx = row(rows, "GTX1080Ti", "OpenCL", 4);
+    QCOMPARE(gtx["flags"].toArray().size(), 0);
+    QVERIFY(std::abs(gtx["fraction_of_spec"].toDouble() - 0.806) < 0.001);
+    QCOMPARE(doc["device_table"].toObject()["error"].toString(), QString());
+    QVERIFY(doc["device_table"].toObject()["devices"].toInt() >= 45);
+    // The text table marks the row and prints the reason under the table.
+    QVERIFY(human.out.contains("] above_spec_peak: 5.25 TFLOPS is 5.9x the Intel Iris Plus Graphics 650"));
   }
 
   void bad_files_fail_cleanly_and_leave_the_workspace_unchanged_data() {

@@ -55,6 +55,28 @@ class TestPlatformReport : public QObject {
     QVERIFY(html.find("Recommended under a power budget of 15 W: Robot A") != std::string::npos);
     QVERIFY(html.find("<img src=\"data:image/png;base64,AAAA\"") != std::string::npos);
   }
+
+  // A flagged number carries its footnote marker in the comparison table, the note under it, and the reason on its
+  // platform's page; the page says how the power was measured.
+  void flags_and_measurement() {
+    bs::ReportInput in;
+    bs::PlatformRow a;
+    a.platform = "Robot A";
+    bs::PeakRow gpu;
+    gpu.device = "GPU X";
+    gpu.backend = "OpenCL";
+    gpu.peak.flops = 5.25e12;
+    gpu.flags = {{"above_spec_peak", "5.25 TFLOPS is 5.9x the GPU X's FP32 peak <here>"}};
+    a.gpu = gpu;
+    a.flags[bs::column::kGpuPeak] = gpu.flags;
+    a.power_measurement = "on-board sensor: INA3221 VDD_IN";
+    in.rows = {a};
+    const std::string html = bs::report_html(in);
+    QVERIFY(html.find("5250.0 (GPU X, OpenCL) [1]") != std::string::npos);
+    QVERIFY(html.find("[1] above_spec_peak: 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;") != std::string::npos);
+    QVERIFY(html.find("&#9888; above_spec_peak</b>: 5.25 TFLOPS") != std::string::npos);
+    QVERIFY(html.find("Power measured by: on-board sensor: INA3221 VDD_IN.") != std::string::npos);
+  }
 };
 
 QTEST_MAIN(TestPlatformReport)
