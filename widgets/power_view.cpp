@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power_view.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDateTime>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
+#include <QTimeZone>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <qcustomplot.h>
 
 #include "analysis/decimate.h"
@@ -21,6 +26,16 @@ namespace {
 
 constexpr double kBatteryVolts = 14.8, kBatteryAh = 3.85;  // the paper's 4S LiPo
 
+// Seconds since 1970 (UTC) of a log's first sample from its ISO 8601 start_time; NaN when it has none.
+double start_epoch_s(const PowerTrace& t) {
+  if (t.start_time.empty()) return std::nan("");
+  QDateTime when = QDateTime::fromString(QString::fromStdString(t.start_time), Qt::ISODateWithMs);
+  if (!when.isValid()) when = QDateTime::fromString(QString::fromStdString(t.start_time), Qt::ISODate);
+  if (!when.isValid()) return std::nan("");
+  if (when.timeSpec() == Qt::LocalTime) when.setTimeSpec(Qt::UTC);  // no zone stated: read as UTC, as the importers write it
+  return static_cast<double>(when.toMSecsSinceEpoch()) / 1000.0;
+}
+
 QString platform_name(const PowerTrace& t) {
   return t.platform.empty() ? QString::fromStdString(t.label) : QString::fromStdString(t.platform);
 }
@@ -28,7 +43,14 @@ QString platform_name(const PowerTrace& t) {
 }  // namespace
 
 PowerView::PowerView(QWidget* parent)
-    : QWidget(parent), quantity_box_(new QComboBox(this)), plot_(new QCustomPlot(this)), table_(new QTableWidget(this)) {
+    : QWidget(parent),
+      quantity_box_(new QComboBox(this)),
+      wall_clock_box_(new QCheckBox(tr("Wall-clock time (UTC)"), this)),
+      plot_(new QCustomPlot(this)),
+      table_(new QTableWidget(this)) {
+  wall_clock_box_->setToolTip(tr("Plot against the time of day the logs were recorded (when every log states its "
+                                 "absolute start) instead of seconds from each log's start"));
+  connect(wall_clock_box_, &QCheckBox::toggled, this, [this](bool on) { set_wall_clock(on); });
   quantity_box_->addItem(tr("Current (A)"));
   quantity_box_->addItem(tr("Power (W)"));
   quantity_box_->setToolTip(tr("Supply current as in the paper's figure 4, or power"));
@@ -62,6 +84,7 @@ PowerView::PowerView(QWidget* parent)
   auto* top = new QHBoxLayout;
   top->addWidget(new QLabel(tr("Plot:"), this));
   top->addWidget(quantity_box_);
+  top->addWidget(wall_clock_box_);
   top->addWidget(hint, 1);
   layout->addLayout(top);
   layout->addWidget(plot_, 3);
@@ -75,8 +98,9 @@ void PowerView::set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakR
   power_.clear();
   current_.clear();
   flags_.clear();
+  start_epoch_.clear();
+  colors_.clear();
   plot_->clearGraphs();
-  plot_->clearItems();  // the previous traces' phase markers
   for (const StoredPowerTrace& s : traces_) {
     flags_.push_back(check_power_trace_bundled(s.trace));
     power_.push_back(power_series(s.trace));
@@ -86,9 +110,46 @@ void PowerView::set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakR
     for (const auto& [platform, index] : colors)
       if (platform == s.trace.platform) color = index;
     g->setPen(QPen(device_color(color), 1));
-    add_phase_markers(plot_, s.trace.phases, device_color(color));  // warm-up, sweep points, pipeline windows
+    colors_.push_back(color);
+    start_epoch_.push_back(start_epoch_s(s.trace));
   }
+  const bool all_absolute = !traces_.empty() && std::none_of(start_epoch_.begin(), start_epoch_.end(),
+                                                             [](double e) { return std::isnan(e); });
+  wall_clock_box_->setEnabled(all_absolute);
+  if (!all_absolute && wall_clock_on_) set_wall_clock(false);
+  place_phase_markers();
   set_quantity(quantity_);
+}
+
+void PowerView::place_phase_markers() {
+  plot_->clearItems();  // the previous traces' phase markers
+  for (std::size_t i = 0; i < traces_.size(); ++i) {
+    std::vector<TracePhase> phases = traces_[i].trace.phases;
+    for (TracePhase& p : phases) p.start_s += offset(i), p.end_s += offset(i);
+    add_phase_markers(plot_, phases, device_color(colors_[i]));  // warm-up, sweep points, pipeline windows
+  }
+}
+
+bool PowerView::set_wall_clock(bool on) {
+  if (on && !wall_clock_box_->isEnabled()) on = false;
+  wall_clock_on_ = on;
+  {
+    const QSignalBlocker block(wall_clock_box_);
+    wall_clock_box_->setChecked(on);
+  }
+  if (on) {
+    auto ticker = QSharedPointer<QCPAxisTickerDateTime>(new QCPAxisTickerDateTime);
+    ticker->setDateTimeFormat(QStringLiteral("HH:mm:ss\nyyyy-MM-dd"));
+    ticker->setTimeZone(QTimeZone::utc());
+    plot_->xAxis->setTicker(ticker);
+    plot_->xAxis->setLabel(tr("Time of day (UTC)"));
+  } else {
+    plot_->xAxis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
+    plot_->xAxis->setLabel(tr("Time (s)"));
+  }
+  place_phase_markers();
+  rescale();
+  return on;
 }
 
 const std::vector<double>& PowerView::shown(std::size_t trace) const {
@@ -110,14 +171,19 @@ void PowerView::set_quantity(Quantity q) {
 
 void PowerView::rescale() {
   // Every log on one time axis from its own start (t = 0 s), so the platforms line up as in the paper's figure 4.
-  double max_t = 0, max_v = 0;
+  double min_t = wall_clock_on_ ? std::numeric_limits<double>::infinity() : 0, max_t = 0, max_v = 0;
   for (std::size_t i = 0; i < traces_.size(); ++i) {
-    if (!traces_[i].trace.time_s.empty()) max_t = std::max(max_t, traces_[i].trace.time_s.back());
-    for (double v : shown(i)) max_v = std::max(max_v, v);
+    if (!traces_[i].trace.time_s.empty()) {
+      min_t = std::min(min_t, offset(i) + traces_[i].trace.time_s.front());
+      max_t = std::max(max_t, offset(i) + traces_[i].trace.time_s.back());
+    }
+    for (double v : shown(i))
+      if (!std::isnan(v)) max_v = std::max(max_v, v);
   }
+  if (!std::isfinite(min_t)) min_t = 0;
   plot_->yAxis->setRange(0, max_v > 0 ? max_v * 1.25 : 1);  // headroom: the legend sits above the traces
   const QCPRange before = plot_->xAxis->range();
-  plot_->xAxis->setRange(0, max_t > 0 ? max_t : 1);
+  plot_->xAxis->setRange(min_t, max_t > min_t ? max_t : min_t + 1);
   if (before == plot_->xAxis->range()) {  // no rangeChanged signal: redraw here
     redraw_visible();
     update_table();
@@ -132,8 +198,10 @@ void PowerView::redraw_visible() {
     const std::vector<double>& values = shown(i);
     QVector<double> keys, vals;
     if (!values.empty()) {
-      const DecimatedSeries d = decimate_min_max(traces_[i].trace.time_s, values, range.lower, range.upper, columns);
+      const double off = offset(i);
+      const DecimatedSeries d = decimate_min_max(traces_[i].trace.time_s, values, range.lower - off, range.upper - off, columns);
       keys = QVector<double>(d.t.begin(), d.t.end());
+      for (double& k : keys) k += off;
       vals = QVector<double>(d.v.begin(), d.v.end());
     }
     plot_->graph(static_cast<int>(i))->setData(keys, vals, true);
@@ -146,7 +214,7 @@ void PowerView::update_table() {
   table_->setRowCount(static_cast<int>(traces_.size()));
   for (std::size_t i = 0; i < traces_.size(); ++i) {
     const PowerTrace& t = traces_[i].trace;
-    const TraceStats s = trace_stats(t, std::nullopt, range.lower, range.upper);
+    const TraceStats s = trace_stats(t, std::nullopt, range.lower - offset(i), range.upper - offset(i));
     // Every cell says how the log was measured; a flagged log's row is tinted and its tooltips start with why.
     const QString measured = tr("Power measured by: %1").arg(QString::fromStdString(measurement_text(t.provenance)));
     const std::vector<PlausibilityFlag>& flags = flags_[i];

@@ -7,6 +7,7 @@
 #include "analysis/plausibility.h"
 #include "store/workspace.h"
 
+class QCheckBox;
 class QComboBox;
 class QCustomPlot;
 class QTableWidget;
@@ -29,13 +30,23 @@ class PowerView : public QWidget {
   enum class Quantity { Current, Power };
   void set_quantity(Quantity q);
   Quantity quantity() const { return quantity_; }
+  // Wall-clock time axis (UTC) instead of seconds from each log's start: possible when every log states its
+  // absolute start (ISO 8601 start_time); logs recorded at different times then sit apart, as they were.
+  bool set_wall_clock(bool on);  // false (and stays relative) when a log has no absolute start
+  bool wall_clock() const { return wall_clock_on_; }
 
  private:
   void redraw_visible();
   void update_table();
   void rescale();
+  void place_phase_markers();
+  double offset(std::size_t trace) const { return wall_clock_on_ ? start_epoch_[trace] : 0.0; }
   const std::vector<double>& shown(std::size_t trace) const;
   QComboBox* quantity_box_;
+  QCheckBox* wall_clock_box_;
+  bool wall_clock_on_ = false;
+  std::vector<double> start_epoch_;  // per trace: seconds since 1970 of its first sample (NaN: not stated)
+  std::vector<int> colors_;          // per trace: colour index
   QCustomPlot* plot_;
   QTableWidget* table_;
   std::vector<StoredPowerTrace> traces_;

@@ -3,6 +3,7 @@
 // labelled axes, a legend) by default, power on request, and a long trace drawn through the min/max decimation
 // with its true extremes kept.
 #include <QComboBox>
+#include <QDateTime>
 #include <cmath>
 #include <QTableWidget>
 #include <QTest>
@@ -108,6 +109,39 @@ class TestPowerView : public QObject {
     QVERIFY(g->dataCount() > 0);
     for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) QCOMPARE(it->value, 10.0);
     QCOMPARE(view.table()->item(0, 3)->text(), QStringLiteral("10.00 ± 0.00"));
+  }
+  // Issue #17: a log with wall-clock times keeps its absolute start, and the Power tab can plot against the time of
+  // day: two logs recorded an hour apart sit an hour apart; the table's statistics are the same as on the relative
+  // axis for the same samples.
+  void wall_clock_axis() {
+    const auto make = [](const std::string& platform, const std::string& start, double watts) {
+      bs::PowerTrace t;
+      t.platform = platform;
+      t.label = platform;
+      t.start_time = start;
+      for (int i = 0; i <= 100; ++i) t.time_s.push_back(i * 0.5);
+      t.channels.push_back({"power", bs::PowerQuantity::Power, std::vector<double>(t.time_s.size(), watts)});
+      return t;
+    };
+    bs::ui::PowerView view;
+    view.resize(1000, 600);
+    view.set_data(stored({make("NUC", "2026-11-20T10:00:00Z", 40), make("Jetson", "2026-11-20T11:00:00.500Z", 9)}), {}, {});
+    view.set_quantity(bs::ui::PowerView::Quantity::Power);
+    const QString relative_mean = view.table()->item(0, 3)->text();
+    QVERIFY(view.set_wall_clock(true));
+    const double ten_o_clock = QDateTime(QDate(2026, 11, 20), QTime(10, 0), Qt::UTC).toMSecsSinceEpoch() / 1000.0;
+    QCOMPARE(view.plot()->xAxis->range().lower, ten_o_clock);
+    QCOMPARE(view.plot()->xAxis->range().upper, ten_o_clock + 3600.5 + 50);
+    QCOMPARE(view.plot()->graph(1)->data()->constBegin()->key, ten_o_clock + 3600.5);
+    QVERIFY(view.plot()->xAxis->label().contains("UTC"));
+    QVERIFY(!view.plot()->xAxis->ticker().dynamicCast<QCPAxisTickerDateTime>().isNull());
+    QCOMPARE(view.table()->item(0, 3)->text(), relative_mean);  // the whole NUC log is in view either way
+    QVERIFY(!view.set_wall_clock(false));
+    QCOMPARE(view.plot()->xAxis->range().lower, 0.0);
+    // A log without an absolute start: the option is off and stays off.
+    view.set_data(stored({make("NUC", "", 40)}), {}, {});
+    QVERIFY(!view.set_wall_clock(true));
+    QCOMPARE(view.plot()->xAxis->label(), QString("Time (s)"));
   }
 };
 
