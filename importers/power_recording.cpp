@@ -84,6 +84,10 @@ ImportBatch finish(ImportBatch batch, const Header& h, const std::string& file) 
       std::none_of(t.channels.begin(), t.channels.end(), [&](const PowerChannel& c) { return c.name == t.total_channel; }))
     throw ImportError(ImportErrorCategory::MissingField, {file, 0, 0, "total_channel"},
                       "total channel '" + t.total_channel + "' is not one of the columns");
+  // The header names the total, so the CSV reader's guess at it from the column names ("statistics use ...") does
+  // not apply and is not passed on.
+  if (!t.total_channel.empty())
+    std::erase_if(batch.warnings, [](const std::string& w) { return w.find("statistics use '") != std::string::npos; });
   for (const auto& [value, line] : h.phases) {
     const auto eq = value.rfind(" = ");
     const auto dots = value.find(" .. ", eq == std::string::npos ? 0 : eq);
