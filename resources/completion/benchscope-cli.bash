@@ -3,7 +3,7 @@
 # /usr/share/bash-completion/completions/benchscope-cli.
 _benchscope_cli() {
   local cur="${COMP_WORDS[COMP_CWORD]}"
-  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power report roofline run synth-frame"
+  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power record-power report roofline run sensors synth-frame"
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -11,23 +11,25 @@ _benchscope_cli() {
   local options=""
   case "${COMP_WORDS[1]}" in
     battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
-    bench) options="--help --columns --detect-scale --detect-workers --frames --rounds --rows --runs --samples --step --threads --workers" ;;
+    bench) options="--help --columns --detect-scale --detect-workers --frames --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --workers" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
-    devices) options="--help --json" ;;
+    devices) options="--help --json --table" ;;
     efficiency) options="--help --json --supply-volts" ;;
-    figures) options="--help --dpi --font-pt --format --height-mm --out --preset --quiet --template --width-mm" ;;
+    figures) options="--help --data --dpi --font-pt --format --height-mm --out --preset --quiet --template --width-mm" ;;
     frames) options="--help --lens --method --out --triptych --window" ;;
     help) COMPREPLY=($(compgen -W "$commands" -- "$cur")); return ;;
     import) options="--help --copy-frames --keep-going --quiet --raw-geometry" ;;
     lens) options="--help --circle-fov --lens --min-level --out" ;;
-    peaks) options="--help --json --kind" ;;
-    pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --queue --workspace" ;;
+    peaks) options="--help --json --kind --precision" ;;
+    pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
     platforms) options="--help --battery --budget --csv --extra-load --json --latex --min-fps --min-runtime --mission --supply-volts" ;;
-    power) options="--help --from --interval --json --min-phase --min-step --phases --supply-volts --to" ;;
+    power) options="--help --from --interval --json --min-phase --min-step --phases --query-gpu --supply-volts --to" ;;
+    record-power) options="--help --interval-ms --out --quiet --seconds --sensor --sysfs-root" ;;
     report) options="--help --battery --budget --extra-load --font-pt --min-fps --min-runtime --mission --out --pdf --quiet --supply-volts --template" ;;
     roofline) options="--help --json" ;;
-    run) options="--help --backend --device --iterations --json --mib --no-warmup --out --points --quiet --repeats --variant --workers --workspace" ;;
+    run) options="--help --backend --device --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
+    sensors) options="--help --json --power --sensor --sysfs-root" ;;
     synth-frame) options="--help --bits --lens --out --pattern --size" ;;
   esac
   if [[ $cur == -* ]]; then

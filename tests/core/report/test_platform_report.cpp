@@ -72,7 +72,7 @@ class TestPlatformReport : public QObject {
     a.power_measurement = "on-board sensor: INA3221 VDD_IN";
     in.rows = {a};
     const std::string html = bs::report_html(in);
-    QVERIFY(html.find("5250.0 (GPU X, OpenCL) [1]") != std::string::npos);
+    QVERIFY(html.find("5.25 (GPU X, OpenCL) [1]") != std::string::npos);
     QVERIFY(html.find("[1] above_spec_peak: 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;") != std::string::npos);
     QVERIFY(html.find("&#9888; above_spec_peak</b>: 5.25 TFLOPS") != std::string::npos);
     QVERIFY(html.find("Power measured by: on-board sensor: INA3221 VDD_IN.") != std::string::npos);
