@@ -100,20 +100,18 @@ std::vector<PlausibilityFlag> check_power_trace(const PowerTrace& trace, std::op
     const std::string unit(unit_of(ch.quantity));
     std::vector<double> magnitudes;
     magnitudes.reserve(ch.values.size());
-    double full_scale = 0;
     for (double v : ch.values)
-      if (std::isfinite(v)) {
-        magnitudes.push_back(std::fabs(v));
-        full_scale = std::max(full_scale, std::fabs(v));
-      }
+      if (std::isfinite(v)) magnitudes.push_back(std::fabs(v));
     if (magnitudes.empty()) continue;
     const double med = median(magnitudes);
+    // Sensor offset allowance: 1 % of the median |value| (spikes cannot widen it), at least 1 mA / 1 mW / 1 mV.
+    const double allowance = std::max(kNegativeNoiseFraction * med, kNegativeNoiseFloor);
     Finding negative, huge, jump;
     double prev = NAN;
     for (std::size_t k = 0; k < ch.values.size(); ++k) {
       const double v = ch.values[k];
       if (!std::isfinite(v)) continue;  // a missing sample breaks no neighbourhood: compare across it
-      if (v < -kNegativeNoiseFraction * full_scale) note(negative, k, v);
+      if (v < -allowance) note(negative, k, v);
       if (std::fabs(v) > magnitude_limit(ch.quantity)) note(huge, k, v);
       if (std::isfinite(prev)) {
         const double lo = std::min(std::fabs(v), std::fabs(prev)), hi = std::max(std::fabs(v), std::fabs(prev));

@@ -149,13 +149,18 @@ class TestPlausibility : public QObject {
 
   void power_flags() {
     using Q = bs::PowerQuantity;
-    // Sensor offset around zero (-5 mA against a 2 A full scale, 0.25 %) is noise, not a flag.
+    // Sensor offset around zero (-5 mA; median |I| 1.2 A, allowance 12 mA) is noise, not a flag.
     QVERIFY(bs::check_power_trace(trace_of(Q::Current, {0.5, -0.005, 2.0, 1.9})).empty());
     const auto negative = bs::check_power_trace(trace_of(Q::Current, {-0.5, -0.6, -2.0}));
     QCOMPARE(negative.size(), std::size_t{1});
     QCOMPARE(negative.front().code, std::string(bs::flag_code::kNegativeValue));
     QVERIFY2(negative.front().reason.find("3 samples, first at 0.000 s") != std::string::npos,
              negative.front().reason.c_str());
+    // A spike does not hide a negative sample: the noise allowance is 1 % of the median |value| (9.2 W: 0.092 W).
+    const auto spiked = bs::check_power_trace(trace_of(Q::Power, {9.1, 9.3, -9.2, 9200, 9.4, 9.0, 9.2, 9.1, 9.3, 9.2,
+                                                                   9.1, 9.3, 9.2, 9.1, 9.3, 9.2, 9.1, 9.3, 9.2, 9.1}));
+    QVERIFY(has_code(spiked, bs::flag_code::kNegativeValue));
+    QVERIFY(has_code(spiked, bs::flag_code::kMagnitudeJump));  // 9.4 W -> 9.2 kW
     QVERIFY(has_code(bs::check_power_trace(trace_of(Q::Power, {40, 41, 12e3, 12e3, 12e3})),
                      bs::flag_code::kImplausibleMagnitude));
     // 2.5 A then 2500 A (a sample in mA): three orders of magnitude between neighbours; idle -> load is not.
