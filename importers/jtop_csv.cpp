@@ -12,6 +12,7 @@
 
 #include "analysis/power_time.h"
 #include "jetson_rail_limits.h"
+#include "meter_log_text.h"
 #include "power_line_reader.h"
 
 namespace bs {
@@ -65,11 +66,7 @@ bool split_row(std::string_view line, std::vector<Cell>& out) {
   }
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
+using meter::trim;
 
 std::optional<double> number(std::string_view s) {
   s = trim(s);
@@ -306,23 +303,6 @@ ImportBatch JtopParser::finish() {
   return std::move(batch_);
 }
 
-template <class Lines>
-ImportBatch run(Lines& lines, JtopParser& parser, const CancelToken& cancel) {
-  // One line of look-ahead, so the parser knows which line is the last (copied: the reader reuses its buffer).
-  std::string pending;
-  std::size_t pending_no = 0;
-  bool have = false;
-  while (const auto line = lines.next()) {
-    if (trim(*line).empty()) continue;
-    if (have) parser.line(pending, pending_no, false);
-    pending.assign(*line);
-    pending_no = lines.line_number();
-    have = true;
-    if ((pending_no & 0x3ff) == 0) cancel.throw_if_cancelled();
-  }
-  if (have) parser.line(pending, pending_no, true);
-  return parser.finish();
-}
 
 }  // namespace
 
@@ -360,7 +340,7 @@ ImportBatch read_jtop_csv(const std::string& path, const PowerImportOptions& opt
                           const CancelToken& cancel) {
   PowerLineReader lines(path);
   JtopParser parser(path, options, limits);
-  return run(lines, parser, cancel);
+  return meter::run_lines(lines, parser, cancel);
 }
 
 ImportBatch parse_jtop_csv(std::string_view text, const std::string& file, const PowerImportOptions& options) {
@@ -368,7 +348,7 @@ ImportBatch parse_jtop_csv(std::string_view text, const std::string& file, const
   const CancelToken cancel;
   PowerLineReader lines(text, file);
   JtopParser parser(file, options, limits);
-  return run(lines, parser, cancel);
+  return meter::run_lines(lines, parser, cancel);
 }
 
 }  // namespace bs

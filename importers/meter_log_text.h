@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Small text helpers shared by the logs of measuring tools (nvidia-smi, perf stat, SPEC PTDaemon): trimming,
-// splitting on one separator, strict numbers, the file's display name and the streaming loop with one line of
-// look-ahead, so each parser knows which line is the file's last (a logger stopped mid-line cuts only that one).
+// Small text helpers shared by the power-log importers (nvidia-smi, perf stat, SPEC PTDaemon, tegrastats, jtop):
+// trimming, splitting on one separator, strict numbers, the file's display name and the streaming loop with one
+// line of look-ahead, so each parser knows which line is the file's last (a logger stopped mid-line cuts only that
+// one).
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -59,8 +60,8 @@ inline std::string file_name(const std::string& path) {
 
 // Feeds every non-blank line to parser.line(text, number, last) and returns parser.finish(). The pending line is
 // copied because the reader reuses its buffer. Checks for cancellation every 1024 lines.
-template <class Parser>
-auto run_lines(PowerLineReader& lines, Parser& parser, const CancelToken& cancel) {
+template <class Lines, class Parser>
+auto run_lines(Lines& lines, Parser& parser, const CancelToken& cancel) {
   std::string pending;
   std::size_t pending_no = 0;
   bool have = false;

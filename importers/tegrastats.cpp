@@ -10,6 +10,7 @@
 
 #include "analysis/power_time.h"
 #include "jetson_rail_limits.h"
+#include "meter_log_text.h"
 #include "power_line_reader.h"
 
 namespace bs {
@@ -246,23 +247,6 @@ ImportBatch TegrastatsParser::finish() {
   return std::move(batch_);
 }
 
-template <class Lines>
-ImportBatch run(Lines& lines, TegrastatsParser& parser, const CancelToken& cancel) {
-  // One line of look-ahead, so the parser knows which line is the last (copied: the reader reuses its buffer).
-  std::string pending;
-  std::size_t pending_no = 0;
-  bool have = false;
-  while (const auto line = lines.next()) {
-    if (line->find_first_not_of(" \t") == std::string_view::npos) continue;
-    if (have) parser.line(pending, pending_no, false);
-    pending.assign(*line);
-    pending_no = lines.line_number();
-    have = true;
-    if ((pending_no & 0x3ff) == 0) cancel.throw_if_cancelled();
-  }
-  if (have) parser.line(pending, pending_no, true);
-  return parser.finish();
-}
 
 }  // namespace
 
@@ -292,7 +276,7 @@ ImportBatch read_tegrastats(const std::string& path, const PowerImportOptions& o
                             const CancelToken& cancel) {
   PowerLineReader lines(path);
   TegrastatsParser parser(path, options, limits);
-  return run(lines, parser, cancel);
+  return meter::run_lines(lines, parser, cancel);
 }
 
 ImportBatch parse_tegrastats(std::string_view text, const std::string& file, double interval_s) {
@@ -302,7 +286,7 @@ ImportBatch parse_tegrastats(std::string_view text, const std::string& file, dou
   const CancelToken cancel;
   PowerLineReader lines(text, file);
   TegrastatsParser parser(file, options, limits);
-  return run(lines, parser, cancel);
+  return meter::run_lines(lines, parser, cancel);
 }
 
 }  // namespace bs
