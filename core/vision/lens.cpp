@@ -2,6 +2,7 @@
 #include "vision/lens.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -92,6 +93,76 @@ void View::validate() const {
     throw std::invalid_argument("a rectilinear output needs 0 < FOV < 180 degrees (tan(FOV/2) is infinite at 180)");
 }
 
+std::string_view to_string(LensCalibration::Method m) {
+  switch (m) {
+    case LensCalibration::Method::Manual: return "manual";
+    case LensCalibration::Method::CircleFit: return "circle-fit";
+    case LensCalibration::Method::Checkerboard: return "checkerboard";
+    case LensCalibration::Method::LineFit: return "line-fit";
+  }
+  return "manual";
+}
+
+LensCalibration::Method calibration_method_from_string(std::string_view s) {
+  for (auto m : {LensCalibration::Method::Manual, LensCalibration::Method::CircleFit,
+                 LensCalibration::Method::Checkerboard, LensCalibration::Method::LineFit})
+    if (to_string(m) == s) return m;
+  throw std::invalid_argument("unknown calibration method '" + std::string(s) +
+                              "' (manual, circle-fit, checkerboard, line-fit)");
+}
+
+std::string describe(const LensCalibration& c) {
+  std::string out(to_string(c.method));
+  if (c.method == LensCalibration::Method::Checkerboard)
+    out += ", " + std::to_string(c.images_used) + " image" + (c.images_used == 1 ? "" : "s") +
+           (c.images_rejected > 0 ? " (" + std::to_string(c.images_rejected) + " rejected)" : "");
+  if (c.rms_px) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, ", RMS %.3g px", *c.rms_px);
+    out += buf;
+  }
+  if (!c.detail.empty()) out += "; " + c.detail;
+  return out;
+}
+
+static nlohmann::json calibration_to_json(const LensCalibration& c) {
+  nlohmann::json j = {{"method", std::string(to_string(c.method))}};
+  if (c.rms_px) j["rms_px"] = *c.rms_px;
+  if (c.images_used > 0) j["images_used"] = c.images_used;
+  if (c.images_rejected > 0) j["images_rejected"] = c.images_rejected;
+  if (!c.detail.empty()) j["detail"] = c.detail;
+  return j;
+}
+
+static LensCalibration calibration_from_json(const nlohmann::json& j) {
+  if (!j.is_object()) throw std::invalid_argument("/lens/calibration: expected an object");
+  LensCalibration c;
+  if (j.contains("method")) {
+    if (!j["method"].is_string()) throw std::invalid_argument("/lens/calibration/method: expected a string");
+    try {
+      c.method = calibration_method_from_string(j["method"].get<std::string>());
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("/lens/calibration/method: ") + e.what());
+    }
+  }
+  if (j.contains("rms_px")) {
+    if (!j["rms_px"].is_number() || j["rms_px"].get<double>() < 0)
+      throw std::invalid_argument("/lens/calibration/rms_px: expected a number >= 0");
+    c.rms_px = j["rms_px"].get<double>();
+  }
+  for (auto [key, field] : {std::pair{"images_used", &c.images_used}, std::pair{"images_rejected", &c.images_rejected}})
+    if (j.contains(key)) {
+      if (!j[key].is_number_integer() || j[key].get<long long>() < 0 || j[key].get<long long>() > 1000000)
+        throw std::invalid_argument(std::string("/lens/calibration/") + key + ": expected a count");
+      *field = j[key].get<int>();
+    }
+  if (j.contains("detail")) {
+    if (!j["detail"].is_string()) throw std::invalid_argument("/lens/calibration/detail: expected a string");
+    c.detail = j["detail"].get<std::string>();
+  }
+  return c;
+}
+
 nlohmann::json lens_to_json(const Lens& lens, const View& view) {
   return {{"format", "benchscope-lens"},
           {"version", 1},
@@ -103,7 +174,8 @@ nlohmann::json lens_to_json(const Lens& lens, const View& view) {
             {"cy", lens.cy},
             {"fov_deg", lens.fov_deg},
             {"width", lens.width},
-            {"height", lens.height}}},
+            {"height", lens.height},
+            {"calibration", calibration_to_json(lens.calibration)}}},
           {"view",
            {{"width", view.width},
             {"height", view.height},
@@ -141,6 +213,7 @@ std::pair<Lens, View> lens_from_json(const nlohmann::json& j) {
   lens.fov_deg = number(l, "fov_deg", "/lens");
   lens.width = static_cast<int>(number(l, "width", "/lens"));
   lens.height = static_cast<int>(number(l, "height", "/lens"));
+  if (l.contains("calibration")) lens.calibration = calibration_from_json(l["calibration"]);
   View view;
   view.width = static_cast<int>(number(v, "width", "/view"));
   view.height = static_cast<int>(number(v, "height", "/view"));

@@ -19,6 +19,20 @@ enum class LensType { Equidistant, Equisolid, Stereographic, Orthographic, Recti
 std::string_view to_string(LensType t);
 LensType lens_type_from_string(std::string_view s);  // throws std::invalid_argument
 
+// How a lens's parameters were obtained, so that every view can say how far to trust them.
+struct LensCalibration {
+  enum class Method { Manual, CircleFit, Checkerboard, LineFit };
+  Method method = Method::Manual;
+  std::optional<double> rms_px;  // reprojection error (checkerboard) or residual (line fit), pixels
+  int images_used = 0;           // checkerboard: images whose corners were found and used
+  int images_rejected = 0;
+  std::string detail;            // free text: board, model, line count, fit residual before/after...
+};
+std::string_view to_string(LensCalibration::Method m);
+LensCalibration::Method calibration_method_from_string(std::string_view s);  // throws std::invalid_argument
+// One line for the user: "checkerboard, 12 images, RMS 0.31 px" / "manual".
+std::string describe(const LensCalibration& c);
+
 struct Lens {
   LensType type = LensType::Equidistant;
   double r_pp = 0;            // radians per pixel (the paper's r_pp); the focal length in pixels is 1 / r_pp
@@ -26,6 +40,7 @@ struct Lens {
   double cx = -1, cy = -1;    // principal point in source pixels; < 0 means the image centre
   double fov_deg = 195;       // field of view of the lens: rays beyond fov/2 from the axis are outside the circle
   int width = 1280, height = 1024;  // source image size
+  LensCalibration calibration;      // how the values above were obtained (lens files: "calibration", optional)
 
   // Radius in pixels at which a ray `theta` radians off the axis lands; nullopt when the model cannot image it.
   std::optional<double> radius(double theta) const;

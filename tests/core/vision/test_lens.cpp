@@ -143,6 +143,33 @@ class TestLens : public QObject {
       QVERIFY(QString(e.what()).contains("/lens/r_pp"));
     }
   }
+  void calibration_record_round_trips_and_is_optional() {
+    Lens lens = Lens::paper();
+    QCOMPARE(lens.calibration.method, LensCalibration::Method::Manual);
+    lens.calibration.method = LensCalibration::Method::Checkerboard;
+    lens.calibration.rms_px = 0.31;
+    lens.calibration.images_used = 12;
+    lens.calibration.images_rejected = 2;
+    lens.calibration.detail = "board 9x6, 25 mm";
+    const auto [l2, v2] = lens_from_json(nlohmann::json::parse(lens_to_json(lens, View{}).dump()));
+    QCOMPARE(l2.calibration.method, LensCalibration::Method::Checkerboard);
+    QCOMPARE(*l2.calibration.rms_px, 0.31);
+    QCOMPARE(l2.calibration.images_used, 12);
+    QCOMPARE(l2.calibration.images_rejected, 2);
+    QCOMPARE(QString::fromStdString(describe(l2.calibration)),
+             QString("checkerboard, 12 images (2 rejected), RMS 0.31 px; board 9x6, 25 mm"));
+    // Files written before the record existed still load, as hand-made ("manual").
+    auto j = lens_to_json(Lens::paper(), View{});
+    j["lens"].erase("calibration");
+    QCOMPARE(lens_from_json(j).first.calibration.method, LensCalibration::Method::Manual);
+    j["lens"]["calibration"] = {{"method", "guess"}};
+    try {
+      lens_from_json(j);
+      QFAIL("accepted");
+    } catch (const std::invalid_argument& e) {
+      QVERIFY(QString(e.what()).contains("/lens/calibration/method"));
+    }
+  }
 };
 
 QTEST_APPLESS_MAIN(TestLens)
