@@ -89,6 +89,12 @@ KernelRunner::KernelRunner(QWidget* parent)
 
   connect(run_, &QPushButton::clicked, this, &KernelRunner::start);
   connect(stop_, &QPushButton::clicked, this, &KernelRunner::cancel);
+  // Device and variant names can be long ("OpenCL: pthread-Intel(R) Xeon(R) Platinum …"): the open list shows them
+  // whole, the closed boxes do not set the dock's (and so the window's) minimum width.
+  for (QComboBox* box : {backend_, variant_}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(16);
+  }
   connect(backend_, &QComboBox::currentIndexChanged, this, &KernelRunner::show_backend_details);
   populate();
 }
