@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "peak_overlay.h"
 
+#include <algorithm>
+
 #include <QFontMetricsF>
 #include <array>
 #include <cmath>
@@ -185,8 +187,19 @@ void PeakOverlay::place_labels() {
     const auto& spot = placed[i++];
     // A peak scrolled out of view keeps its label hidden: it would otherwise point at nothing.
     const bool in_view = area.contains(anchors[i - 1]);
-    l.item->setVisible(spot.has_value() && in_view);
-    if (spot) l.item->position->setCoords(spot->center());
+    l.item->setVisible(in_view);
+    if (spot) {
+      l.item->position->setCoords(spot->center());
+    } else {
+      // No free spot (a crowded log axis): never drop a peak's label silently. It goes beside its marker, kept
+      // inside the plot, even if it then touches a curve.
+      const QSizeF size = sizes[i - 1];
+      QRectF box(anchors[i - 1] + QPointF(kMarkerHalf + kGap, -size.height() / 2), size);
+      if (box.right() > area.right()) box.moveRight(anchors[i - 1].x() - kMarkerHalf - kGap);
+      box.moveTop(std::clamp(box.top(), area.top(), std::max(area.top(), area.bottom() - box.height())));
+      box.moveLeft(std::clamp(box.left(), area.left(), std::max(area.left(), area.right() - box.width())));
+      l.item->position->setCoords(box.center());
+    }
   }
 }
 

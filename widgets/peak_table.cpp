@@ -7,6 +7,7 @@
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QSortFilterProxyModel>
+#include <algorithm>
 
 #include "analysis/plausibility.h"
 #include "analysis/units.h"
@@ -15,10 +16,22 @@
 namespace bs::ui {
 
 void PeakTableModel::set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices) {
+  color_indices.resize(rows.size(), 0);
+  // Rows grouped by platform, platforms in the order they first appear, each platform's rows in their given order.
+  std::vector<std::string> platforms;
+  for (const PeakRow& r : rows)
+    if (std::find(platforms.begin(), platforms.end(), r.platform) == platforms.end()) platforms.push_back(r.platform);
+  std::vector<std::size_t> order(rows.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto rank = [&](std::size_t i) { return std::find(platforms.begin(), platforms.end(), rows[i].platform) - platforms.begin(); };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
   beginResetModel();
-  rows_ = std::move(rows);
-  colors_ = std::move(color_indices);
-  colors_.resize(rows_.size(), 0);
+  rows_.clear();
+  colors_.clear();
+  for (std::size_t i : order) {
+    rows_.push_back(std::move(rows[i]));
+    colors_.push_back(color_indices[i]);
+  }
   endResetModel();
 }
 
@@ -34,6 +47,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
   const auto qs = [](const std::string& s) { return QString::fromStdString(s); };
   if (role == Qt::DisplayRole) {
     switch (index.column()) {
+      case Platform: return qs(r.platform);
       case Device: return qs(r.device);
       case Backend: return r.variant == "paper" ? qs(r.backend) : qs(r.backend + " (" + r.variant + ")");
       case Dims: return r.dims > 0 ? QVariant(r.dims) : QVariant(QStringLiteral("–"));  // "–": another tool's sweep
@@ -58,6 +72,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
   if (role == Qt::ForegroundRole && !r.flags.empty() && index.column() == Peak) return QColor(0x8a, 0x4b, 0x00);
   if (role == kSortRole) {
     switch (index.column()) {
+      case Platform: return qs(r.platform);
       case Dims: return r.dims;
       case Peak: return r.peak.flops;
       case Workers: return static_cast<qlonglong>(r.peak.workers);
@@ -83,6 +98,23 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
                       qs(r.spec->source_title));
     else
       tip += tr("\nNot in the device table: no vendor peak to check against");
+    // The ratio columns say what they divide, with both numbers, above the row's provenance.
+    QString division;
+    if (index.column() == Ratio && r.ratio_to_reported && r.reported_flops)
+      division = tr("Measured peak %1 ÷ reported %2 = %3×")
+                     .arg(qs(format_si(r.peak.flops, "FLOPS")), qs(format_si(*r.reported_flops, "FLOPS")))
+                     .arg(*r.ratio_to_reported, 0, 'f', 3);
+    if (index.column() == OfTheoretical && r.fraction_of_theoretical)
+      division = tr("Measured peak %1 ÷ this kernel's theoretical peak on the device %2 = %3 %")
+                     .arg(qs(format_si(r.peak.flops, "FLOPS")),
+                          qs(format_si(r.peak.flops / *r.fraction_of_theoretical, "FLOPS")))
+                     .arg(*r.fraction_of_theoretical * 100, 0, 'f', 1);
+    if (index.column() == OfSpec && r.fraction_of_spec && r.spec)
+      division = tr("Measured peak %1 ÷ the vendor's FP32 peak %2 (%3) = %4 %")
+                     .arg(qs(format_si(r.peak.flops, "FLOPS")), qs(format_si(r.spec->fp32_peak_flops, "FLOPS")),
+                          qs(r.spec->name))
+                     .arg(*r.fraction_of_spec * 100, 0, 'f', 1);
+    if (!division.isEmpty()) tip = division + QStringLiteral("\n\n") + tip;
     if (!r.flags.empty()) tip = qs(flags_text(r.flags)) + QStringLiteral("\n\n") + tip;
     return tip;
   }
@@ -91,16 +123,18 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return {};
-  static const char* names[] = {"Device", "Backend", "D", "Peak", "Workers at peak", "Reported", "Ratio",
+  static const char* names[] = {"Platform", "Device", "Backend", "D", "Peak", "Workers at peak", "Reported", "Ratio",
                                 "% of theoretical", "% of spec", "Origin"};
-  static const char* tips[] = {"Compute device (colour as in every plot)",
+  static const char* tips[] = {"The computer; its rows are grouped under it",
+                               "Compute device (colour as in every plot)",
                                "API the kernel ran through",
                                "2D points rotated per worker",
                                "Highest mean FLOPS = 6·D·N·W / t",
                                "Worker count where the peak occurred",
                                "Vendor or literature peak figure",
-                               "Measured peak ÷ reported figure",
-                               "Measured peak ÷ this kernel's theoretical peak on the device",
+                               "Measured peak ÷ the vendor or literature figure in Reported (hover a cell for both numbers)",
+                               "Measured peak ÷ this kernel's theoretical peak on the device (its instruction mix at "
+                               "the device's clock and SIMD width; hover a cell for both numbers)",
                                "Measured peak ÷ the vendor's FP32 peak (device table); above 130 % is flagged ⚠",
                                "measured on a machine, or reconstructed from published figures"};
   if (role == Qt::DisplayRole) return tr(names[section]);
@@ -124,6 +158,20 @@ PeakTableView::PeakTableView(QWidget* parent) : QTableView(parent), model_(new P
   horizontalHeader()->setStretchLastSection(true);
   horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   setWordWrap(false);
+}
+
+bool PeakTableView::show_row(const std::string& platform, const std::string& device, const std::string& backend, int dims) {
+  const auto& rows = model_->rows();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const PeakRow& r = rows[i];
+    if (r.platform != platform || r.device != device || r.backend != backend || r.dims != dims) continue;
+    const auto* proxy = static_cast<QSortFilterProxyModel*>(model());
+    const QModelIndex at = proxy->mapFromSource(model_->index(static_cast<int>(i), PeakTableModel::Peak));
+    selectRow(at.row());
+    scrollTo(at, QAbstractItemView::PositionAtCenter);
+    return true;
+  }
+  return false;
 }
 
 QString PeakTableView::selection_as_tsv() const {

@@ -11,7 +11,7 @@ namespace bs::ui {
 class PeakTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Device, Backend, Dims, Peak, Workers, Reported, Ratio, OfTheoretical, OfSpec, Origin, ColumnCount };
+  enum Column { Platform, Device, Backend, Dims, Peak, Workers, Reported, Ratio, OfTheoretical, OfSpec, Origin, ColumnCount };
   static constexpr int kSortRole = Qt::UserRole + 1;
   // true for every cell of a row whose peak carries plausibility flags (analysis/plausibility.h). Such a row is
   // tinted, its peak shows "⚠", and every cell's tooltip starts with the reasons.
@@ -21,6 +21,7 @@ class PeakTableModel : public QAbstractTableModel {
   // `color_indices` parallels `rows`: the device colour of each row.
   void set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices);
   const PeakRow& row_at(int row) const { return rows_[static_cast<std::size_t>(row)]; }
+  const std::vector<PeakRow>& rows() const { return rows_; }  // grouped by platform
 
   int rowCount(const QModelIndex& parent = {}) const override;
   int columnCount(const QModelIndex& parent = {}) const override;
@@ -39,6 +40,8 @@ class PeakTableView : public QTableView {
   explicit PeakTableView(QWidget* parent = nullptr);
   PeakTableModel* peak_model() const { return model_; }
   QString selection_as_tsv() const;
+  // Selects the row of that run's peak and scrolls it into view (a run that just landed); false when absent.
+  bool show_row(const std::string& platform, const std::string& device, const std::string& backend, int dims);
 
  protected:
   void keyPressEvent(QKeyEvent* event) override;

@@ -356,6 +356,9 @@ void MainWindow::store_measured_runs(const std::vector<FlopsRun>& runs, bool can
     QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
   }
   reload();
+  // The new run's peak row comes into view in the FLOPS tab's table, selected, wherever the table was scrolled.
+  const FlopsRun& first = runs.front();
+  peaks_->show_row(first.platform, first.device, first.backend, first.dims);
   statusBar()->showMessage(tr("Stored %n measured run(s)%1", nullptr, static_cast<int>(runs.size()))
                                .arg(cancelled ? tr(" (cancelled: partial)") : QString()),
                            10000);

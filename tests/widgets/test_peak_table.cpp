@@ -85,6 +85,39 @@ class TestPeakTable : public QObject {
     QCOMPARE(cell(m, 2, M::Device), QString("A"));
   }
 
+  void groups_by_platform_explains_ratios_and_shows_a_new_row() {
+    using M = bs::ui::PeakTableModel;
+    bs::ui::PeakTableView view;
+    auto a = row("A", "CUDA", 4, 9.34e12, 408576);
+    a.platform = "Desktop";
+    a.reported_flops = 10.61e12;
+    a.ratio_to_reported = 9.34 / 10.61;
+    a.fraction_of_theoretical = 0.5;
+    auto b = row("B", "CPU", 1, 49.68e9, 1345);
+    b.platform = "NUC";
+    auto c = row("C", "CPU", 4, 20e9, 1000);
+    c.platform = "Desktop";
+    view.peak_model()->set_rows({a, b, c}, {0, 1, 2});
+    const QAbstractItemModel* m = view.model();
+    // Desktop's two rows together, in their order, then the NUC; each row's colour follows it.
+    QCOMPARE(cell(m, 0, M::Device), QString("A"));
+    QCOMPARE(cell(m, 1, M::Device), QString("C"));
+    QCOMPARE(cell(m, 2, M::Device), QString("B"));
+    QCOMPARE(cell(m, 1, M::Platform), QString("Desktop"));
+    QCOMPARE(m->index(1, M::Device).data(Qt::DecorationRole).value<QColor>(), bs::ui::device_color(2));
+    // The ratio cells say what they divide, with both numbers.
+    const QString ratio_tip = m->index(0, M::Ratio).data(Qt::ToolTipRole).toString();
+    QVERIFY2(ratio_tip.contains("9.34 TFLOPS") && ratio_tip.contains("10.61 TFLOPS") && ratio_tip.contains("0.880"),
+             qPrintable(ratio_tip));
+    const QString theo_tip = m->index(0, M::OfTheoretical).data(Qt::ToolTipRole).toString();
+    QVERIFY2(theo_tip.contains("18.68 TFLOPS") && theo_tip.contains("theoretical"), qPrintable(theo_tip));
+    // A run that just landed is selected and brought into view.
+    QVERIFY(view.show_row("NUC", "B", "CPU", 1));
+    QCOMPARE(view.selectionModel()->selectedRows().size(), 1);
+    QCOMPARE(view.selectionModel()->selectedRows().at(0).row(), 2);
+    QVERIFY(!view.show_row("NUC", "B", "CPU", 4));
+  }
+
   void copies_the_selection_as_tsv() {
     using M = bs::ui::PeakTableModel;
     bs::ui::PeakTableView view;
