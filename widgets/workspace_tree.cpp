@@ -19,6 +19,8 @@ constexpr int kIdRole = Qt::UserRole + 3;
 constexpr int kImportRole = Qt::UserRole + 4;
 constexpr int kNameRole = Qt::UserRole + 5;
 constexpr int kSectionRole = Qt::UserRole + 6;  // set on the section headers ("Power logs (2)")
+constexpr int kColorRole = Qt::UserRole + 7;    // a device row's colour index
+constexpr int kPaletteSize = 15;                // device_palette.cpp's distinct colours
 
 QString section_title(TreeItemRef::Kind kind) {
   switch (kind) {
@@ -144,14 +146,31 @@ TreeItemRef WorkspaceTree::ref_at(const QModelIndex& index) const {
   } else if (!item->parent()) {  // a top-level row that is not a section: a platform of the runs
     ref.kind = TreeItemRef::Kind::Platform;
     ref.name = item->text();
+  } else if (item->data(kColorRole).isValid()) {
+    ref.kind = TreeItemRef::Kind::Device;
+    ref.name = item->text();
+    ref.platform = item->parent()->text();
+    ref.color_index = item->data(kColorRole).toInt();
   }
   return ref;
 }
 
 void WorkspaceTree::show_menu(const QPoint& pos) {
   const TreeItemRef ref = ref_at(indexAt(pos));
-  if (!ref.renamable() && !ref.removable()) return;
   QMenu menu(this);
+  if (ref.kind == TreeItemRef::Kind::Device) {
+    // Colour is the device's, in every view and export: pick another palette entry (colour-blind-safe first).
+    QMenu* colors = menu.addMenu(tr("Colour"));
+    for (int i = 0; i < kPaletteSize; ++i) {
+      QAction* a = colors->addAction(swatch(device_color(i)), tr("Palette colour %1").arg(i + 1),
+                                     this, [this, ref, i] { emit color_requested(ref, i); });
+      a->setCheckable(true);
+      a->setChecked(i == ref.color_index % kPaletteSize);
+    }
+    menu.exec(viewport()->mapToGlobal(pos));
+    return;
+  }
+  if (!ref.renamable() && !ref.removable()) return;
   if (ref.renamable())
     menu.addAction(tr("Rename…\tF2"), this, [this, ref] { emit rename_requested(ref); });
   if (ref.removable())
@@ -183,6 +202,7 @@ void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
     QStandardItem* platform = child_named(root, QString::fromStdString(r.platform));
     QStandardItem* device = child_named(platform, QString::fromStdString(r.device));
     device->setIcon(swatch(device_color(s.color_index)));
+    device->setData(s.color_index, kColorRole);
     QStandardItem* backend = child_named(device, QString::fromStdString(r.backend));
     // A sweep from another tool (Google Benchmark) states FLOPS, not D and N: its family and counter name it.
     auto* item = new QStandardItem(r.dims > 0 ? QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")

@@ -10,11 +10,13 @@ namespace bs::ui {
 
 // What a row of the tree stands for, as far as renaming and removing go.
 struct TreeItemRef {
-  enum class Kind { None, Platform, Run, PowerLog, Frame, PipelineRun, ResultSet, BatteryPreset };
+  enum class Kind { None, Platform, Device, Run, PowerLog, Frame, PipelineRun, ResultSet, BatteryPreset };
   Kind kind = Kind::None;
   qint64 id = 0;         // run, trace, frame, pipeline run or result set id
   qint64 import_id = 0;  // the import that brought it (0: none, e.g. a preset or a platform)
   QString name;          // what is shown and renamed: platform name, log label, preset name, ...
+  QString platform;      // a device's platform (devices are named within their platform)
+  int color_index = -1;  // a device's colour
   bool renamable() const { return kind == Kind::Platform || kind == Kind::PowerLog || kind == Kind::Frame; }
   bool removable() const { return import_id > 0 || kind == Kind::BatteryPreset; }
 };
@@ -47,6 +49,7 @@ class WorkspaceTree : public QTreeView {
   void visibility_changed(const QSet<qint64>& visible_run_ids);
   void rename_requested(const bs::ui::TreeItemRef& item);
   void remove_requested(const bs::ui::TreeItemRef& item);
+  void color_requested(const bs::ui::TreeItemRef& device, int color_index);
 
  protected:
   void keyPressEvent(QKeyEvent* event) override;

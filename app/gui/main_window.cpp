@@ -126,6 +126,7 @@ MainWindow::MainWindow(QWidget* parent)
   edits_ = new QUndoStack(this);
   connect(tree_, &WorkspaceTree::rename_requested, this, &MainWindow::rename_item);
   connect(tree_, &WorkspaceTree::remove_requested, this, &MainWindow::remove_item);
+  connect(tree_, &WorkspaceTree::color_requested, this, &MainWindow::set_device_color);
   connect(views, &QTabWidget::currentChanged, this, &MainWindow::update_edit_actions);
   create_actions();
   connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);

@@ -92,6 +92,7 @@ class MainWindow : public QMainWindow {
   std::vector<WorkspaceItem> workspace_items() const;
   void rename_item(const TreeItemRef& item);
   void remove_item(const TreeItemRef& item);
+  void set_device_color(const TreeItemRef& device, int color_index);
   void push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo);
   void report_edit_error(const QString& message);
   void update_edit_actions();

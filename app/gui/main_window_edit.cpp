@@ -222,6 +222,21 @@ void MainWindow::push_edit(const QString& text, std::function<void()> redo, std:
   statusBar()->showMessage(tr("Done: %1 — Ctrl+Z undoes").arg(text), 10000);
 }
 
+void MainWindow::set_device_color(const TreeItemRef& device, int color_index) {
+  if (!workspace_ || device.kind != TreeItemRef::Kind::Device || color_index == device.color_index) return;
+  Workspace* ws = workspace_.get();
+  const std::string platform = device.platform.toStdString(), name = device.name.toStdString();
+  std::function<void()> redo = [ws, platform, name, color_index] { ws->set_device_color(platform, name, color_index); };
+  std::function<void()> undo = [ws, platform, name, old = device.color_index] { ws->set_device_color(platform, name, old); };
+  try {
+    redo();
+  } catch (const std::exception& e) {
+    report_edit_error(QString::fromUtf8(e.what()));
+    return;
+  }
+  push_edit(tr("colour of %1").arg(device.name), std::move(redo), std::move(undo));
+}
+
 void MainWindow::update_edit_actions() {
   // On the Lens tab Ctrl+Z belongs to the lens tuner's own undo; elsewhere it undoes workspace edits.
   const bool lens_in_front = static_cast<QTabWidget*>(centralWidget())->currentWidget() == lens_;

@@ -209,6 +209,21 @@ class TestMainWindow : public QObject {
              true);
     undo->trigger();
     for (const auto& r : w.workspace()->runs()) QVERIFY(r.run.platform != "Intel NUC");
+    // A device's colour is picked from the palette in the tree; every view follows; undo restores it.
+    bs::ui::TreeItemRef device;
+    for (int r = 0; r < model->rowCount() && device.kind == K::None; ++r)
+      if (model->item(r)->hasChildren()) device = tree->ref_at(model->item(r)->child(0)->index());
+    QVERIFY(device.kind == K::Device && device.color_index >= 0);
+    const int old_index = device.color_index, new_index = (old_index + 7) % 15;
+    emit tree->color_requested(device, new_index);
+    const auto color_of = [&] {
+      for (const auto& d : w.workspace()->devices())
+        if (d.platform == device.platform.toStdString() && d.device == device.name.toStdString()) return d.color_index;
+      return -1;
+    };
+    QCOMPARE(color_of(), new_index);
+    undo->trigger();
+    QCOMPARE(color_of(), old_index);
   }
 
   void hover_reads_out_the_nearest_point() {
