@@ -1,0 +1,368 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vision/checkerboard_calibration.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "vision/fisheye_opencv.h"
+
+namespace bs::vision {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// 8-bit grey for the corner finder: 16-bit images are stretched by their maximum (any bit depth in the low bits).
+cv::Mat grey8(const cv::Mat& image) {
+  cv::Mat grey = image;
+  if (image.channels() == 3) cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  else if (image.channels() == 4) cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
+  if (grey.depth() == CV_8U) return grey;
+  double max = 0;
+  cv::minMaxLoc(grey, nullptr, &max);
+  cv::Mat out;
+  grey.convertTo(out, CV_8U, max > 0 ? 255.0 / max : 1.0);
+  return out;
+}
+
+// The view cv::fisheye's CALIB_CHECK_COND names ("... Ill-conditioned matrix for input array N"), or -1.
+int ill_conditioned_view(const cv::Exception& e) {
+  static const std::string marker = "Ill-conditioned matrix for input array ";
+  const std::string text = e.err.empty() ? e.what() : e.err;
+  const auto at = text.find(marker);
+  if (at == std::string::npos) return -1;
+  int index = -1;
+  std::istringstream(text.substr(at + marker.size())) >> index;
+  return index;
+}
+
+std::string short_error(const cv::Exception& e) { return e.err.empty() ? std::string(e.what()) : e.err; }
+
+struct Fit {
+  cv::Matx33d K;
+  cv::Vec4d D;
+  std::vector<cv::Vec3d> rvecs, tvecs;
+  double rms = 0;
+};
+
+class Calibrator {
+ public:
+  Calibrator(std::vector<CalibrationImageResult>& results, const Checkerboard& board, cv::Size size,
+             const CancelToken* cancel)
+      : results_(results), object_(board.object_points()), size_(size), cancel_(cancel) {}
+
+  // cv::fisheye::calibrate over `views`, dropping (and marking rejected) the views that make it fail.
+  Fit fit(std::vector<int>& views, int flags, const cv::Matx33d& K0, const cv::Vec4d& D0) {
+    while (true) {
+      if (cancel_) cancel_->throw_if_cancelled();
+      require_views(views);
+      try {
+        return run(views, flags, K0, D0);
+      } catch (const cv::Exception& e) {
+        const int idx = ill_conditioned_view(e);
+        if (idx >= 0 && idx < static_cast<int>(views.size())) {
+          reject(views[static_cast<std::size_t>(idx)],
+                 "ill-conditioned in cv::fisheye (CALIB_CHECK_COND): the board is too small, too oblique or too "
+                 "far off the axis in this view");
+          views.erase(views.begin() + idx);
+          continue;
+        }
+        // A failure that names no view (e.g. InitExtrinsics' assertion): find the view without which it succeeds.
+        const int culprit = leave_one_out(views, flags, K0, D0);
+        if (culprit < 0)
+          throw std::runtime_error("cv::fisheye::calibrate failed with every view left out in turn: " +
+                                   short_error(e));
+        reject(views[static_cast<std::size_t>(culprit)],
+               "cv::fisheye::calibrate fails with this view and succeeds without it (" + short_error(e) + ")");
+        views.erase(views.begin() + culprit);
+      }
+    }
+  }
+
+  void reject(int view, const std::string& reason) {
+    auto& r = results_[static_cast<std::size_t>(view)];
+    r.used = false;
+    r.rejected = reason;
+  }
+
+  void require_views(const std::vector<int>& views) const {
+    if (views.size() >= 3) return;
+    std::string msg = "checkerboard calibration needs at least 3 usable views, " + std::to_string(views.size()) +
+                      " left:";
+    for (const auto& r : results_) msg += "\n  " + r.name + ": " + (r.rejected.empty() ? "used" : r.rejected);
+    throw std::runtime_error(msg);
+  }
+
+ private:
+  Fit run(const std::vector<int>& views, int flags, const cv::Matx33d& K0, const cv::Vec4d& D0) const {
+    std::vector<std::vector<cv::Point3f>> obj(views.size(), object_);
+    std::vector<std::vector<cv::Point2f>> img;
+    for (int v : views) img.push_back(results_[static_cast<std::size_t>(v)].corners);
+    Fit f;
+    f.K = K0;
+    f.D = D0;
+    f.rms = cv::fisheye::calibrate(obj, img, size_, f.K, f.D, f.rvecs, f.tvecs, flags,
+                                   cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-12));
+    return f;
+  }
+
+  int leave_one_out(const std::vector<int>& views, int flags, const cv::Matx33d& K0, const cv::Vec4d& D0) const {
+    if (views.size() <= 3) return -1;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      if (cancel_) cancel_->throw_if_cancelled();
+      std::vector<int> rest = views;
+      rest.erase(rest.begin() + static_cast<long>(i));
+      try {
+        run(rest, flags, K0, D0);
+        return static_cast<int>(i);
+      } catch (const cv::Exception&) {
+      }
+    }
+    return -1;
+  }
+
+  std::vector<CalibrationImageResult>& results_;
+  std::vector<cv::Point3f> object_;
+  cv::Size size_;
+  const CancelToken* cancel_;
+};
+
+// Per-view reprojection errors under BenchScope's own lens model (the lens file), with the fit's poses.
+void measure(const Lens& lens, const Fit& fit, const std::vector<int>& views, const Checkerboard& board,
+             std::vector<CalibrationImageResult>& results, double* total_rms, double* max_theta_deg) {
+  Lens unclipped = lens;
+  unclipped.fov_deg = 360;  // errors are measured wherever corners were seen
+  const auto object = board.object_points();
+  double sum = 0;
+  std::size_t count = 0;
+  *max_theta_deg = 0;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    auto& r = results[static_cast<std::size_t>(views[i])];
+    cv::Matx33d R;
+    cv::Rodrigues(fit.rvecs[i], R);
+    double view_sum = 0;
+    std::size_t n = 0;
+    r.max_theta_deg = 0;
+    for (std::size_t k = 0; k < object.size(); ++k) {
+      const cv::Vec3d p = R * cv::Vec3d(object[k].x, object[k].y, object[k].z) + fit.tvecs[i];
+      r.max_theta_deg = std::max(r.max_theta_deg, std::acos(std::clamp(p[2] / cv::norm(p), -1.0, 1.0)) * 180 / kPi);
+      const auto px = project_camera_point(unclipped, p);
+      const double e2 = px ? std::pow(px->x - r.corners[k].x, 2) + std::pow(px->y - r.corners[k].y, 2) : 1e6;
+      view_sum += e2;
+      ++n;
+    }
+    r.rms_px = std::sqrt(view_sum / static_cast<double>(n));
+    sum += view_sum;
+    count += n;
+    *max_theta_deg = std::max(*max_theta_deg, r.max_theta_deg);
+  }
+  *total_rms = count ? std::sqrt(sum / static_cast<double>(count)) : 0;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+}  // namespace
+
+std::string_view to_string(CalibrationModel m) {
+  return m == CalibrationModel::Equidistant ? "equidistant" : "kannala-brandt";
+}
+
+CalibrationModel calibration_model_from_string(std::string_view s) {
+  if (s == "kannala-brandt") return CalibrationModel::KannalaBrandt;
+  if (s == "equidistant") return CalibrationModel::Equidistant;
+  throw std::invalid_argument("unknown calibration model '" + std::string(s) +
+                              "' (expected kannala-brandt or equidistant)");
+}
+
+int CheckerboardResult::used() const {
+  return static_cast<int>(std::count_if(images.begin(), images.end(), [](const auto& r) { return r.used; }));
+}
+
+int CheckerboardResult::rejected() const { return static_cast<int>(images.size()) - used(); }
+
+std::optional<std::vector<cv::Point2f>> find_board_corners(const cv::Mat& image, const Checkerboard& board,
+                                                           std::string* reason) {
+  board.validate();
+  if (image.empty()) {
+    if (reason) *reason = "empty image";
+    return std::nullopt;
+  }
+  const cv::Mat grey = grey8(image);
+  std::vector<cv::Point2f> corners;
+  const cv::Size inner = board.inner_corners();
+  // The sector-based detector is sub-pixel accurate by itself (CALIB_CB_ACCURACY) and copes with the strong
+  // distortion of fisheye views better than the classic detector followed by cornerSubPix.
+  const bool found = cv::findChessboardCornersSB(
+      grey, inner, corners, cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY);
+  if (!found || static_cast<int>(corners.size()) != inner.area()) {
+    if (reason)
+      *reason = "no checkerboard of " + std::to_string(board.cols) + "x" + std::to_string(board.rows) + " squares (" +
+                std::to_string(inner.width) + "x" + std::to_string(inner.height) + " inner corners) found";
+    return std::nullopt;
+  }
+  return corners;
+}
+
+CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& images, const Checkerboard& board,
+                                          CalibrationModel model, const Lens& base, const CancelToken* cancel,
+                                          const ProgressFn& progress) {
+  board.validate();
+  CheckerboardResult result;
+  result.images.resize(images.size());
+  std::vector<cv::Size> sizes(images.size());
+  std::atomic<int> done{0};
+  std::atomic<bool> cancelled{false};
+  std::mutex progress_mutex;
+  const int n = static_cast<int>(images.size());
+
+  // 1. Corners, one view per thread (the corner finder is the slow part: about a second per megapixel view).
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int i = 0; i < n; ++i) {
+    if (cancelled || (cancel && cancel->cancelled())) {
+      cancelled = true;
+      continue;
+    }
+    const auto& in = images[static_cast<std::size_t>(i)];
+    auto& r = result.images[static_cast<std::size_t>(i)];
+    r.name = in.name.empty() ? in.path : in.name;
+    const cv::Mat image = in.image.empty() ? cv::imread(in.path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE) : in.image;
+    if (image.empty()) {
+      r.rejected = "cannot read the image";
+    } else {
+      sizes[static_cast<std::size_t>(i)] = image.size();
+      std::string reason;
+      if (auto corners = find_board_corners(image, board, &reason)) {
+        r.corners = std::move(*corners);
+        r.used = true;
+      } else {
+        r.rejected = reason;
+      }
+    }
+    const int finished = ++done;
+    if (progress) {
+      std::lock_guard lock(progress_mutex);
+      progress(0.85 * finished / std::max(1, n), "corners: " + r.name);
+    }
+  }
+  if (cancelled) throw Cancelled();
+
+  // 2. One image size: the first readable image's.
+  cv::Size size;
+  for (int i = 0; i < n; ++i) {
+    auto& r = result.images[static_cast<std::size_t>(i)];
+    const cv::Size s = sizes[static_cast<std::size_t>(i)];
+    if (s.empty()) continue;
+    if (size.empty()) size = s;
+    else if (s != size && r.used) {
+      r.used = false;
+      r.rejected = std::to_string(s.width) + "x" + std::to_string(s.height) + " px, but the first image is " +
+                   std::to_string(size.width) + "x" + std::to_string(size.height) + " px";
+    }
+  }
+  std::vector<int> views;
+  for (int i = 0; i < n; ++i)
+    if (result.images[static_cast<std::size_t>(i)].used) views.push_back(i);
+
+  Calibrator calibrator(result.images, board, size, cancel);
+  calibrator.require_views(views);
+  if (progress) progress(0.88, "cv::fisheye::calibrate");
+  int flags = cv::fisheye::CALIB_RECOMPUTE_EXTRINSIC | cv::fisheye::CALIB_FIX_SKEW | cv::fisheye::CALIB_CHECK_COND;
+  if (model == CalibrationModel::Equidistant)
+    flags |= cv::fisheye::CALIB_FIX_K1 | cv::fisheye::CALIB_FIX_K2 | cv::fisheye::CALIB_FIX_K3 |
+             cv::fisheye::CALIB_FIX_K4;
+  const cv::Matx33d K0 = cv::Matx33d::eye();  // cv::fisheye starts from f = max(w, h) / pi at the image centre
+  const cv::Vec4d D0(0, 0, 0, 0);
+
+  // 3. The free fit; then views whose corners reproject far worse than the others' are dropped and it reruns.
+  Fit free = calibrator.fit(views, flags, K0, D0);
+  for (std::size_t round = 0; round < images.size() / 3 + 1; ++round) {
+    std::vector<double> errors;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      std::vector<cv::Point2d> projected;
+      const auto object = board.object_points();
+      std::vector<cv::Point3d> obj(object.begin(), object.end());
+      cv::fisheye::projectPoints(obj, projected, free.rvecs[i], free.tvecs[i], free.K, free.D);
+      const auto& corners = result.images[static_cast<std::size_t>(views[i])].corners;
+      double s = 0;
+      for (std::size_t k = 0; k < projected.size(); ++k)
+        s += std::pow(projected[k].x - corners[k].x, 2) + std::pow(projected[k].y - corners[k].y, 2);
+      errors.push_back(std::sqrt(s / static_cast<double>(projected.size())));
+    }
+    const double med = median(errors);
+    const auto worst = static_cast<std::size_t>(std::max_element(errors.begin(), errors.end()) - errors.begin());
+    if (views.size() <= 3 || errors[worst] <= std::max(1.0, 4 * med)) break;
+    calibrator.reject(views[worst], "reprojection error " + fmt("%.2f", errors[worst]) + " px, more than 4x the "
+                                    "median view's " + fmt("%.2f", med) + " px (corners mis-detected?)");
+    views.erase(views.begin() + static_cast<long>(worst));
+    free = calibrator.fit(views, flags, K0, D0);
+  }
+  result.fx = free.K(0, 0);
+  result.fy = free.K(1, 1);
+  result.free_rms_px = free.rms;
+  if (progress) progress(0.94, "refit with fx = fy");
+
+  // 4. BenchScope's lens has one focal length: refit with fx = fy = sqrt(fx fy) held, so centre, k and poses
+  //    adapt to it instead of the average being imposed afterwards.
+  const double f = std::sqrt(result.fx * result.fy);
+  const cv::Matx33d Kiso(f, 0, free.K(0, 2), 0, f, free.K(1, 2), 0, 0, 1);
+  const Fit iso = calibrator.fit(views, flags | cv::fisheye::CALIB_USE_INTRINSIC_GUESS |
+                                            cv::fisheye::CALIB_FIX_FOCAL_LENGTH, Kiso, free.D);
+  Lens lens = base;
+  lens.width = size.width;
+  lens.height = size.height;
+  lens = lens_from_opencv_fisheye(OpenCvFisheye::from(iso.K, iso.D), lens);
+  if (model == CalibrationModel::KannalaBrandt) lens.type = LensType::KannalaBrandt;
+  measure(lens, iso, views, board, result.images, &result.rms_px, &result.max_theta_deg);
+
+  // 5. What the numbers do not say by themselves.
+  const double aspect = result.fy / result.fx;
+  if (std::abs(aspect - 1) > kAspectWarning)
+    result.warnings.push_back("the free fit's fy/fx is " + fmt("%.4f", aspect) + " (fx " + fmt("%.2f", result.fx) +
+                              " px, fy " + fmt("%.2f", result.fy) + " px): BenchScope's lens has one focal length, "
+                              "refitted at " + fmt("%.2f", f) + " px; non-square pixels or views that do not pin "
+                              "the focal length down");
+  for (double deg = 0.5; deg <= lens.fov_deg / 2; deg += 0.5) {
+    const auto r0 = lens.radius((deg - 0.5) * kPi / 180), r1 = lens.radius(deg * kPi / 180);
+    if (r0 && r1 && *r1 <= *r0) {
+      result.warnings.push_back("the fitted polynomial folds back at " + fmt("%.1f", deg) + " degrees off the axis, "
+                                "inside the lens's " + fmt("%.0f", lens.fov_deg) + " degree field of view");
+      break;
+    }
+  }
+  if (result.max_theta_deg < lens.fov_deg / 2 - 5)
+    result.warnings.push_back("corners were seen up to " + fmt("%.0f", result.max_theta_deg) + " degrees off the "
+                              "axis; beyond that, up to the lens's " + fmt("%.1f", lens.fov_deg / 2) +
+                              " degrees, the model is extrapolated");
+
+  lens.calibration.method = LensCalibration::Method::Checkerboard;
+  lens.calibration.rms_px = result.rms_px;
+  lens.calibration.images_used = result.used();
+  lens.calibration.images_rejected = result.rejected();
+  lens.calibration.detail = std::to_string(board.cols) + "x" + std::to_string(board.rows) + " squares of " +
+                            fmt("%g", board.square_mm) + " mm, " + std::string(to_string(model)) + " model; free fit fx " +
+                            fmt("%.2f", result.fx) + " px, fy " + fmt("%.2f", result.fy) + " px, refitted with f = " +
+                            fmt("%.2f", f) + " px; corners up to " + fmt("%.0f", result.max_theta_deg) + " deg off axis";
+  result.lens = lens;
+  if (progress) progress(1.0, "done");
+  return result;
+}
+
+}  // namespace bs::vision
