@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -247,9 +248,12 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
     const auto& in = images[static_cast<std::size_t>(i)];
     auto& r = result.images[static_cast<std::size_t>(i)];
     r.name = in.name.empty() ? in.path : in.name;
-    const cv::Mat image = in.image.empty() ? cv::imread(in.path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE) : in.image;
+    std::error_code ec;
+    const bool missing = in.image.empty() && !std::filesystem::is_regular_file(in.path, ec);
+    const cv::Mat image = in.image.empty() && !missing ? cv::imread(in.path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE)
+                                                       : in.image;
     if (image.empty()) {
-      r.rejected = "cannot read the image";
+      r.rejected = missing ? "no such file" : "cannot read the image";
     } else {
       sizes[static_cast<std::size_t>(i)] = image.size();
       std::string reason;
