@@ -68,6 +68,7 @@ CheckerboardDialog::CheckerboardDialog(const vision::TunerParams& base, QWidget*
   board_row->addWidget(rows_);
   board_row->addWidget(new QLabel(tr("squares (OpenCV's inner corners are one fewer each way)")));
   board_row->addStretch(1);
+  for (QWidget* w : std::initializer_list<QWidget*>{square_, model_, fov_}) w->setMaximumWidth(260);
   auto* form = new QFormLayout;
   form->addRow(tr("Board:"), board_row);
   form->addRow(tr("Square size:"), square_);
@@ -91,6 +92,7 @@ CheckerboardDialog::CheckerboardDialog(const vision::TunerParams& base, QWidget*
   table_->setHorizontalHeaderLabels({tr("Image"), tr("Corners"), tr("RMS (px)"), tr("Max angle (°)"), tr("Status")});
   table_->horizontalHeader()->setSectionResizeMode(kStatus, QHeaderView::Stretch);
   table_->verticalHeader()->setVisible(false);
+  table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 8);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setWordWrap(false);
   summary_ = new QLabel(tr("Add photos of the board from many angles, filling the whole field of view."));
