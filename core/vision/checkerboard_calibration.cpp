@@ -60,11 +60,38 @@ struct Fit {
   double rms = 0;
 };
 
+// Per-view RMS reprojection error of a cv::fisheye fit (its own K, D and poses), pixels.
+std::vector<double> view_errors(const Fit& fit, const std::vector<int>& views, const Checkerboard& board,
+                                const std::vector<CalibrationImageResult>& results) {
+  const auto object = board.object_points();
+  const std::vector<cv::Point3d> obj(object.begin(), object.end());
+  std::vector<double> errors;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    std::vector<cv::Point2d> projected;
+    cv::fisheye::projectPoints(obj, projected, fit.rvecs[i], fit.tvecs[i], fit.K, fit.D);
+    const auto& corners = results[static_cast<std::size_t>(views[i])].corners;
+    double s = 0;
+    for (std::size_t k = 0; k < projected.size(); ++k)
+      s += std::pow(projected[k].x - corners[k].x, 2) + std::pow(projected[k].y - corners[k].y, 2);
+    errors.push_back(std::sqrt(s / static_cast<double>(projected.size())));
+  }
+  return errors;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+// A view reprojects far worse than the others: above both 1 px and 4x the median view's error.
+bool outlier(double error, double median_error) { return error > std::max(1.0, 4 * median_error); }
+
 class Calibrator {
  public:
   Calibrator(std::vector<CalibrationImageResult>& results, const Checkerboard& board, cv::Size size,
              const CancelToken* cancel)
-      : results_(results), object_(board.object_points()), size_(size), cancel_(cancel) {}
+      : results_(results), board_(board), object_(board.object_points()), size_(size), cancel_(cancel) {}
 
   // cv::fisheye::calibrate over `views`, dropping (and marking rejected) the views that make it fail.
   Fit fit(std::vector<int>& views, int flags, const cv::Matx33d& K0, const cv::Vec4d& D0) {
@@ -76,6 +103,19 @@ class Calibrator {
       } catch (const cv::Exception& e) {
         const int idx = ill_conditioned_view(e);
         if (idx >= 0 && idx < static_cast<int>(views.size())) {
+          // CALIB_CHECK_COND judges a view's pose under the intrinsics of that iteration, and flags good views too
+          // (exact synthetic corners of a frontal board, for one). The fit without the check decides: a view it
+          // reprojects like the others is kept.
+          if (auto unchecked = try_run(views, flags & ~cv::fisheye::CALIB_CHECK_COND, K0, D0)) {
+            const auto errors = view_errors(*unchecked, views, board_, results_);
+            const double err = errors[static_cast<std::size_t>(idx)], med = median(errors);
+            if (!outlier(err, med)) {
+              note(results_[static_cast<std::size_t>(views[static_cast<std::size_t>(idx)])].name +
+                               ": CALIB_CHECK_COND flagged it, but without the check it reprojects at " +
+                               fmt("%.3f", err) + " px (median view " + fmt("%.3f", med) + " px): kept");
+              return *unchecked;
+            }
+          }
           reject(views[static_cast<std::size_t>(idx)],
                  "ill-conditioned in cv::fisheye (CALIB_CHECK_COND): the board is too small, too oblique or too "
                  "far off the axis in this view");
@@ -98,6 +138,19 @@ class Calibrator {
     auto& r = results_[static_cast<std::size_t>(view)];
     r.used = false;
     r.rejected = reason;
+  }
+
+  std::optional<Fit> try_run(const std::vector<int>& views, int flags, const cv::Matx33d& K0, const cv::Vec4d& D0) const {
+    try {
+      return run(views, flags, K0, D0);
+    } catch (const cv::Exception&) {
+      return std::nullopt;
+    }
+  }
+
+  std::vector<std::string> notes_;  // checks that were overruled, for the result's warnings
+  void note(const std::string& text) {
+    if (std::find(notes_.begin(), notes_.end(), text) == notes_.end()) notes_.push_back(text);
   }
 
   void require_views(const std::vector<int>& views) const {
@@ -137,6 +190,7 @@ class Calibrator {
   }
 
   std::vector<CalibrationImageResult>& results_;
+  Checkerboard board_;
   std::vector<cv::Point3f> object_;
   cv::Size size_;
   const CancelToken* cancel_;
@@ -172,12 +226,6 @@ void measure(const Lens& lens, const Fit& fit, const std::vector<int>& views, co
     *max_theta_deg = std::max(*max_theta_deg, r.max_theta_deg);
   }
   *total_rms = count ? std::sqrt(sum / static_cast<double>(count)) : 0;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 }  // namespace
@@ -285,9 +333,23 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
                    std::to_string(size.width) + "x" + std::to_string(size.height) + " px";
     }
   }
+  return calibrate_from_corners(std::move(result.images), size, board, model, base, cancel, progress);
+}
+
+CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> images, cv::Size size,
+                                          const Checkerboard& board, CalibrationModel model, const Lens& base,
+                                          const CancelToken* cancel, const ProgressFn& progress) {
+  board.validate();
+  CheckerboardResult result;
+  result.images = std::move(images);
   std::vector<int> views;
-  for (int i = 0; i < n; ++i)
-    if (result.images[static_cast<std::size_t>(i)].used) views.push_back(i);
+  for (std::size_t i = 0; i < result.images.size(); ++i) {
+    auto& r = result.images[i];
+    if (r.used && static_cast<int>(r.corners.size()) != board.inner_corners().area())
+      throw std::invalid_argument(r.name + ": " + std::to_string(r.corners.size()) + " corners, the board has " +
+                                  std::to_string(board.inner_corners().area()));
+    if (r.used) views.push_back(static_cast<int>(i));
+  }
 
   Calibrator calibrator(result.images, board, size, cancel);
   calibrator.require_views(views);
@@ -301,25 +363,38 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
 
   // 3. The free fit; then views whose corners reproject far worse than the others' are dropped and it reruns.
   Fit free = calibrator.fit(views, flags, K0, D0);
-  for (std::size_t round = 0; round < images.size() / 3 + 1; ++round) {
-    std::vector<double> errors;
-    for (std::size_t i = 0; i < views.size(); ++i) {
-      std::vector<cv::Point2d> projected;
-      const auto object = board.object_points();
-      std::vector<cv::Point3d> obj(object.begin(), object.end());
-      cv::fisheye::projectPoints(obj, projected, free.rvecs[i], free.tvecs[i], free.K, free.D);
-      const auto& corners = result.images[static_cast<std::size_t>(views[i])].corners;
-      double s = 0;
-      for (std::size_t k = 0; k < projected.size(); ++k)
-        s += std::pow(projected[k].x - corners[k].x, 2) + std::pow(projected[k].y - corners[k].y, 2);
-      errors.push_back(std::sqrt(s / static_cast<double>(projected.size())));
-    }
+  for (std::size_t round = 0; round < result.images.size() / 3 + 1; ++round) {
+    const std::vector<double> errors = view_errors(free, views, board, result.images);
     const double med = median(errors);
     const auto worst = static_cast<std::size_t>(std::max_element(errors.begin(), errors.end()) - errors.begin());
-    if (views.size() <= 3 || errors[worst] <= std::max(1.0, 4 * med)) break;
-    calibrator.reject(views[worst], "reprojection error " + fmt("%.2f", errors[worst]) + " px, more than 4x the "
-                                    "median view's " + fmt("%.2f", med) + " px (corners mis-detected?)");
-    views.erase(views.begin() + static_cast<long>(worst));
+    if (views.size() <= 3) break;
+    if (outlier(errors[worst], med)) {
+      calibrator.reject(views[worst], "reprojection error " + fmt("%.2f", errors[worst]) + " px, more than 4x the "
+                                      "median view's " + fmt("%.2f", med) + " px (corners mis-detected?)");
+      views.erase(views.begin() + static_cast<long>(worst));
+      calibrator.notes_.clear();  // notes on the fit this view spoiled no longer hold
+    free = calibrator.fit(views, flags, K0, D0);
+      continue;
+    }
+    if (med <= 1.0) break;
+    // Every view fits badly: one inconsistent view can drag the whole fit away, so that no view stands out.
+    // The view without which the fit improves most, and by more than half, is the one.
+    std::optional<std::size_t> culprit;
+    double best = free.rms;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      if (cancel) cancel->throw_if_cancelled();
+      std::vector<int> rest = views;
+      rest.erase(rest.begin() + static_cast<long>(i));
+      if (const auto f = calibrator.try_run(rest, flags & ~cv::fisheye::CALIB_CHECK_COND, K0, D0); f && f->rms < best) {
+        best = f->rms;
+        culprit = i;
+      }
+    }
+    if (!culprit || best > free.rms / 2) break;
+    calibrator.reject(views[*culprit], "without this view the fit's RMS drops from " + fmt("%.2f", free.rms) +
+                                       " px to " + fmt("%.2f", best) + " px (corners no board pose explains)");
+    views.erase(views.begin() + static_cast<long>(*culprit));
+    calibrator.notes_.clear();  // notes on the fit this view spoiled no longer hold
     free = calibrator.fit(views, flags, K0, D0);
   }
   result.fx = free.K(0, 0);
@@ -341,6 +416,7 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
   measure(lens, iso, views, board, result.images, &result.rms_px, &result.max_theta_deg);
 
   // 5. What the numbers do not say by themselves.
+  result.warnings = calibrator.notes_;
   const double aspect = result.fy / result.fx;
   if (std::abs(aspect - 1) > kAspectWarning)
     result.warnings.push_back("the free fit's fy/fx is " + fmt("%.4f", aspect) + " (fx " + fmt("%.2f", result.fx) +

@@ -67,4 +67,11 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
                                           CalibrationModel model, const Lens& base,
                                           const CancelToken* cancel = nullptr, const ProgressFn& progress = {});
 
+// The fit alone, for corners found elsewhere: `images` with `used` set and their corners (inner_corners().area()
+// each, in Checkerboard::object_points order), all from images of `size`. Throws as calibrate_checkerboard, and
+// std::invalid_argument for a used view with the wrong number of corners.
+CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> images, cv::Size size,
+                                          const Checkerboard& board, CalibrationModel model, const Lens& base,
+                                          const CancelToken* cancel = nullptr, const ProgressFn& progress = {});
+
 }  // namespace bs::vision

@@ -217,6 +217,44 @@ class TestCheckerboardCalibration : public QObject {
     QVERIFY(got.calibration.detail.find("10x7 squares of 30 mm") != std::string::npos);
   }
 
+  void a_degenerate_view_is_rejected_and_the_fit_goes_on() {
+    // Corners straight from the ground truth (no rendering), plus one view whose "corners" are scattered at random
+    // over the image (mis-detections no board pose explains): it must be named and dropped, not sink the fit.
+    const Lens lens = truth_lens();
+    std::vector<CalibrationImageResult> views;
+    int n = 0;
+    for (const auto& pose : truth_poses()) {
+      CalibrationImageResult r;
+      r.name = "view " + std::to_string(++n);
+      for (const auto& c : board_corner_truth(lens, pose, board())) r.corners.emplace_back(cv::Point2f(*c));
+      r.used = true;
+      views.push_back(r);
+    }
+    CalibrationImageResult bad;
+    bad.name = "degenerate";
+    bad.used = true;
+    cv::RNG rng(3);
+    for (int k = 0; k < board().inner_corners().area(); ++k)
+      bad.corners.emplace_back(static_cast<float>(rng.uniform(100.0, 1180.0)), static_cast<float>(rng.uniform(100.0, 900.0)));
+    views.insert(views.begin() + 4, bad);
+    Lens base = lens;
+    base.fov_deg = 190;
+    const auto result = calibrate_from_corners(views, cv::Size(1280, 1024), board(), CalibrationModel::KannalaBrandt, base);
+    for (const auto& r : result.images) qInfo("%s: %s %.3f", r.name.c_str(), r.used ? "used" : r.rejected.c_str(), r.rms_px.value_or(-1));
+    for (const auto& w : result.warnings) qInfo("warning: %s", w.c_str());
+    QVERIFY(!result.images[4].used);
+    QVERIFY(!result.images[4].rejected.empty());
+    QCOMPARE(result.used(), 13);
+    // Exact corners: the lens comes back almost exactly.
+    QVERIFY(std::abs(result.lens.r_pp / lens.r_pp - 1) < 1e-4);
+    QVERIFY(std::hypot(result.lens.cx - lens.cx, result.lens.cy - lens.cy) < 0.05);
+    QVERIFY(result.rms_px < 0.01);
+    // A used view with the wrong number of corners is a caller's error.
+    views[0].corners.pop_back();
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, calibrate_from_corners(views, cv::Size(1280, 1024), board(),
+                                                                          CalibrationModel::KannalaBrandt, base));
+  }
+
   void equidistant_model_keeps_k_at_zero() {
     Lens lens = Lens::paper();  // 195 degree equidistant
     lens.cx = 641.2;
