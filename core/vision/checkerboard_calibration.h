@@ -4,8 +4,10 @@
 // Kannala-Brandt fit with cv::fisheye::calibrate, the result as BenchScope's lens (fisheye_opencv.h).
 //
 // How images are rejected, each with its reason: unreadable; a different size from the first image; no board
-// found; ill-conditioned in cv::fisheye (CALIB_CHECK_COND names the view; a failure that names none is traced by
-// leaving one view out at a time); a reprojection error far above the others' (mis-detected corners).
+// found; ill-conditioned in cv::fisheye (CALIB_CHECK_COND names the view, which is dropped only when the fit
+// without the check does not keep it either; a failure that names none is traced by leaving one view out at a
+// time); a reprojection error far above the others' (mis-detected corners); when every view fits badly, the view
+// without which the RMS drops by more than half (one inconsistent view can drag all the others off).
 //
 // fx and fy: cv::fisheye fits both, BenchScope's lens has one focal length. The free fit's fx and fy are
 // reported; the lens is then refitted with fx = fy = sqrt(fx fy) held fixed (centre, k and the poses adapt), and
