@@ -2,8 +2,11 @@
 #include "workspace_tree.h"
 
 #include <QHeaderView>
+#include <QKeyEvent>
+#include <QMenu>
 #include <QPainter>
 #include <QPixmap>
+#include <map>
 
 #include "device_palette.h"
 
@@ -11,6 +14,22 @@ namespace bs::ui {
 namespace {
 
 constexpr int kRunIdRole = Qt::UserRole + 1;
+constexpr int kKindRole = Qt::UserRole + 2;    // TreeItemRef::Kind of an item below the runs or of a platform
+constexpr int kIdRole = Qt::UserRole + 3;
+constexpr int kImportRole = Qt::UserRole + 4;
+constexpr int kNameRole = Qt::UserRole + 5;
+constexpr int kSectionRole = Qt::UserRole + 6;  // set on the section headers ("Power logs (2)")
+
+QString section_title(TreeItemRef::Kind kind) {
+  switch (kind) {
+    case TreeItemRef::Kind::PowerLog: return WorkspaceTree::tr("Power logs");
+    case TreeItemRef::Kind::Frame: return WorkspaceTree::tr("Frames");
+    case TreeItemRef::Kind::PipelineRun: return WorkspaceTree::tr("Pipeline runs");
+    case TreeItemRef::Kind::ResultSet: return WorkspaceTree::tr("Throughput results");
+    case TreeItemRef::Kind::BatteryPreset: return WorkspaceTree::tr("Battery presets");
+    default: return {};
+  }
+}
 
 QIcon swatch(const QColor& color) {
   QPixmap pm(12, 12);
@@ -63,8 +82,96 @@ WorkspaceTree::WorkspaceTree(QWidget* parent) : QTreeView(parent) {
   setModel(&model_);
   setHeaderHidden(true);
   setUniformRowHeights(true);
-  setToolTip(tr("Tick runs to show them in the plot and the peak table"));
+  setToolTip(tr("Tick runs to show them in the plot and the peak table. Right-click, F2 (rename) or Delete "
+                "(remove the import that brought an item) to edit; Ctrl+Z undoes."));
+  setContextMenuPolicy(Qt::CustomContextMenu);
+  connect(this, &QWidget::customContextMenuRequested, this, &WorkspaceTree::show_menu);
   connect(&model_, &QStandardItemModel::itemChanged, this, &WorkspaceTree::on_item_changed);
+}
+
+void WorkspaceTree::set_items(const std::vector<WorkspaceItem>& items) {
+  updating_ = true;
+  QStandardItem* root = model_.invisibleRootItem();
+  for (int r = root->rowCount() - 1; r >= 0; --r)
+    if (root->child(r)->data(kSectionRole).isValid()) root->removeRow(r);
+  std::map<TreeItemRef::Kind, QStandardItem*> sections;
+  for (const WorkspaceItem& it : items) {
+    QStandardItem*& section = sections[it.ref.kind];
+    if (!section) {
+      section = new QStandardItem(section_title(it.ref.kind));
+      section->setEditable(false);
+      section->setData(static_cast<int>(it.ref.kind), kSectionRole);
+      QFont bold = section->font();
+      bold.setBold(true);
+      section->setFont(bold);
+      root->appendRow(section);
+    }
+    auto* row = new QStandardItem(it.text);
+    row->setEditable(false);
+    row->setToolTip(it.tooltip);
+    row->setData(static_cast<int>(it.ref.kind), kKindRole);
+    row->setData(QVariant::fromValue<qint64>(it.ref.id), kIdRole);
+    row->setData(QVariant::fromValue<qint64>(it.ref.import_id), kImportRole);
+    row->setData(it.ref.name, kNameRole);
+    section->appendRow(row);
+  }
+  for (auto& [kind, section] : sections) section->setText(QStringLiteral("%1 (%2)").arg(section->text()).arg(section->rowCount()));
+  updating_ = false;
+}
+
+int WorkspaceTree::item_count(TreeItemRef::Kind kind) const {
+  const QStandardItem* root = model_.invisibleRootItem();
+  for (int r = 0; r < root->rowCount(); ++r)
+    if (root->child(r)->data(kSectionRole).isValid() && root->child(r)->data(kSectionRole).toInt() == static_cast<int>(kind))
+      return root->child(r)->rowCount();
+  return 0;
+}
+
+TreeItemRef WorkspaceTree::ref_at(const QModelIndex& index) const {
+  TreeItemRef ref;
+  const QStandardItem* item = model_.itemFromIndex(index);
+  if (!item || item->data(kSectionRole).isValid()) return ref;
+  if (item->data(kRunIdRole).isValid()) {
+    ref.kind = TreeItemRef::Kind::Run;
+    ref.id = item->data(kRunIdRole).toLongLong();
+    ref.import_id = item->data(kImportRole).toLongLong();
+    ref.name = item->text();
+  } else if (item->data(kKindRole).isValid()) {
+    ref.kind = static_cast<TreeItemRef::Kind>(item->data(kKindRole).toInt());
+    ref.id = item->data(kIdRole).toLongLong();
+    ref.import_id = item->data(kImportRole).toLongLong();
+    ref.name = item->data(kNameRole).toString();
+  } else if (!item->parent()) {  // a top-level row that is not a section: a platform of the runs
+    ref.kind = TreeItemRef::Kind::Platform;
+    ref.name = item->text();
+  }
+  return ref;
+}
+
+void WorkspaceTree::show_menu(const QPoint& pos) {
+  const TreeItemRef ref = ref_at(indexAt(pos));
+  if (!ref.renamable() && !ref.removable()) return;
+  QMenu menu(this);
+  if (ref.renamable())
+    menu.addAction(tr("Rename…\tF2"), this, [this, ref] { emit rename_requested(ref); });
+  if (ref.removable())
+    menu.addAction(ref.kind == TreeItemRef::Kind::BatteryPreset ? tr("Remove preset\tDel")
+                                                                : tr("Remove its import\tDel"),
+                   this, [this, ref] { emit remove_requested(ref); });
+  menu.exec(viewport()->mapToGlobal(pos));
+}
+
+void WorkspaceTree::keyPressEvent(QKeyEvent* event) {
+  const TreeItemRef ref = current_ref();
+  if (event->key() == Qt::Key_F2 && ref.renamable()) {
+    emit rename_requested(ref);
+    return;
+  }
+  if (event->matches(QKeySequence::Delete) && ref.removable()) {
+    emit remove_requested(ref);
+    return;
+  }
+  QTreeView::keyPressEvent(event);
 }
 
 void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
@@ -87,6 +194,8 @@ void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
                                                     .arg(QString::fromStdString(r.variant))
                                                     .arg(r.samples.size()));
     item->setData(QVariant::fromValue<qint64>(s.id), kRunIdRole);
+    // Sweeps derived from stored Google Benchmark results (negative ids) are removed with their result set's import.
+    item->setData(QVariant::fromValue<qint64>(s.import_id), kImportRole);
     item->setCheckable(true);
     item->setEditable(false);
     item->setCheckState(hidden_.contains(s.id) ? Qt::Unchecked : Qt::Checked);

@@ -8,7 +8,26 @@
 
 namespace bs::ui {
 
-// Platform -> device -> backend -> run, with tristate checkboxes that show or hide runs in every view.
+// What a row of the tree stands for, as far as renaming and removing go.
+struct TreeItemRef {
+  enum class Kind { None, Platform, Run, PowerLog, Frame, PipelineRun, ResultSet, BatteryPreset };
+  Kind kind = Kind::None;
+  qint64 id = 0;         // run, trace, frame, pipeline run or result set id
+  qint64 import_id = 0;  // the import that brought it (0: none, e.g. a preset or a platform)
+  QString name;          // what is shown and renamed: platform name, log label, preset name, ...
+  bool renamable() const { return kind == Kind::Platform || kind == Kind::PowerLog || kind == Kind::Frame; }
+  bool removable() const { return import_id > 0 || kind == Kind::BatteryPreset; }
+};
+
+// Everything else the workspace holds, listed below the runs in sections ("Power logs", "Frames", ...).
+struct WorkspaceItem {
+  TreeItemRef ref;
+  QString text;     // the row's text
+  QString tooltip;  // provenance
+};
+
+// Platform -> device -> backend -> run, with tristate checkboxes that show or hide runs in every view; then one
+// section per other kind of item. Right-click, F2 and Delete ask to rename or remove (the window does it, undoably).
 class WorkspaceTree : public QTreeView {
   Q_OBJECT
  public:
@@ -18,12 +37,23 @@ class WorkspaceTree : public QTreeView {
   void set_run_visible(qint64 run_id, bool visible);
   bool select_run(qint64 run_id);  // expands its parents, selects and scrolls to it; false when unknown
   int run_count() const;
+  // Replaces the sections below the runs; call after set_runs.
+  void set_items(const std::vector<WorkspaceItem>& items);
+  int item_count(TreeItemRef::Kind kind) const;
+  TreeItemRef ref_at(const QModelIndex& index) const;
+  TreeItemRef current_ref() const { return ref_at(currentIndex()); }
 
  signals:
   void visibility_changed(const QSet<qint64>& visible_run_ids);
+  void rename_requested(const bs::ui::TreeItemRef& item);
+  void remove_requested(const bs::ui::TreeItemRef& item);
+
+ protected:
+  void keyPressEvent(QKeyEvent* event) override;
 
  private:
   void on_item_changed(QStandardItem* item);
+  void show_menu(const QPoint& pos);
   void collect(const QStandardItem* item, QSet<qint64>& out) const;
   QStandardItem* find_run(QStandardItem* parent, qint64 run_id) const;
   QStandardItemModel model_;

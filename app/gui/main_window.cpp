@@ -26,6 +26,7 @@
 #include "peak_table.h"
 #include "power_view.h"
 #include <QTabWidget>
+#include <QUndoStack>
 #include "pipeline_json.h"
 #include "pipeline_measure_panel.h"
 #include "pipeline_view.h"
@@ -122,6 +123,10 @@ MainWindow::MainWindow(QWidget* parent)
   default_state_ = saveState();  // View > Reset layout returns here
   flops_split_->setSizes({560, 300});  // the paper's 13 peak rows without scrolling at the default size
   default_split_ = flops_split_->saveState();
+  edits_ = new QUndoStack(this);
+  connect(tree_, &WorkspaceTree::rename_requested, this, &MainWindow::rename_item);
+  connect(tree_, &WorkspaceTree::remove_requested, this, &MainWindow::remove_item);
+  connect(views, &QTabWidget::currentChanged, this, &MainWindow::update_edit_actions);
   create_actions();
   connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);
   connect(importer_, &ImportController::finished, this, [this](const ImportReport& r) {
@@ -166,11 +171,15 @@ void MainWindow::reset_layout() {
   QSettings().remove(QStringLiteral("main-window"));
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // The undo stack is deleted with the window's children, after the tabs: it must not report to them on its way.
+  edits_->disconnect();
+}
 
 bool MainWindow::open_workspace(const QString& path) {
   try {
     auto ws = std::make_unique<Workspace>(path.toStdString());
+    edits_->clear();  // its steps act on the workspace being closed
     workspace_ = std::move(ws);
   } catch (const WorkspaceError& e) {
     QMessageBox::critical(this, tr("Cannot open workspace"), QString::fromUtf8(e.what()));
@@ -231,6 +240,7 @@ void MainWindow::reload() {
       for (FlopsRun& run : foreign_sweeps(s.set)) runs_.push_back(StoredRun{id--, s.import_id, s.device_id, s.color_index, std::move(run)});
   }
   tree_->set_runs(runs_);
+  tree_->set_items(workspace_items());
   std::vector<FlopsRun> all;
   std::vector<std::pair<std::string, int>> platform_colors;
   for (const StoredRun& r : runs_) {

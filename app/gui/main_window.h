@@ -2,19 +2,22 @@
 #pragma once
 #include <QMainWindow>
 #include <QTemporaryDir>
+#include <functional>
 #include <memory>
 
+class QAction;
 class QLabel;
+class QUndoStack;
 
 #include "analysis/platform_comparison.h"
 #include "frame_raw.h"
 #include "paper_figures.h"
 #include "store/workspace.h"
+#include "workspace_tree.h"
 
 class QSplitter;
 
 namespace bs::ui {
-class WorkspaceTree;
 class FlopsPlot;
 class PeakTableView;
 class ImportController;
@@ -85,6 +88,13 @@ class MainWindow : public QMainWindow {
   std::optional<RawFrameOptions> ask_raw_geometry(const QStringList& paths);
   QString export_folder() const;
   void reload();
+  // main_window_edit.cpp: the tree's rename/remove, one undo step each
+  std::vector<WorkspaceItem> workspace_items() const;
+  void rename_item(const TreeItemRef& item);
+  void remove_item(const TreeItemRef& item);
+  void push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo);
+  void report_edit_error(const QString& message);
+  void update_edit_actions();
   void refresh_views();
   void show_import_report(const ImportReport& report);
   void save_as();
@@ -113,6 +123,9 @@ class MainWindow : public QMainWindow {
   BatteryView* battery_;
   LensTab* lens_ = nullptr;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
+  QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens
+  QAction* undo_edit_ = nullptr;
+  QAction* redo_edit_ = nullptr;
 };
 
 }  // namespace bs::ui

@@ -5,6 +5,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QTabWidget>
+#include <QUndoStack>
 #include <qcustomplot.h>
 
 #include "compare_dialog.h"
@@ -94,6 +95,25 @@ void MainWindow::create_actions() {
   file->addSeparator();
   add(file, tr("&Quit"), QKeySequence::Quit, tr("Quit BenchScope"), [this] { close(); });
 
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  undo_edit_ = add(edit, tr("&Undo"), QKeySequence::Undo,
+                   tr("Undo the last rename or removal in the workspace tree (the Lens tab has its own undo)"),
+                   [this] { edits_->undo(); });
+  redo_edit_ = add(edit, tr("&Redo"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), tr("Redo what Undo undid"),
+                   [this] { edits_->redo(); });
+  connect(edits_, &QUndoStack::undoTextChanged, this, [this](const QString& t) {
+    undo_edit_->setText(t.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(t));
+  });
+  connect(edits_, &QUndoStack::redoTextChanged, this, [this](const QString& t) {
+    redo_edit_->setText(t.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(t));
+  });
+  connect(edits_, &QUndoStack::canUndoChanged, this, &MainWindow::update_edit_actions);
+  connect(edits_, &QUndoStack::canRedoChanged, this, &MainWindow::update_edit_actions);
+  edit->addSeparator();
+  add(edit, tr("Re&name selected item…"), QKeySequence(Qt::Key_F2), tr("Rename the platform, power log or frame selected in the workspace tree"),
+      [this] { rename_item(tree_->current_ref()); });
+  update_edit_actions();
+
   QMenu* view = menuBar()->addMenu(tr("&View"));
   QAction* log_x = add(view, tr("Log &worker axis"), QKeySequence(Qt::CTRL | Qt::Key_L), tr("Logarithmic worker axis"),
                        [this](bool on) { plot_->set_log_x(on); });
@@ -137,6 +157,8 @@ void MainWindow::show_help() {
                     .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
                          menu->title().remove('&').toHtmlEscaped(), a->text().remove('&').remove(QStringLiteral("…")).toHtmlEscaped());
   html += tr("<tr><td><tt>Ctrl+Z / Ctrl+Shift+Z</tt></td><td>Lens tab: undo / redo a lens change</td></tr>"
+             "<tr><td><tt>F2 / Del</tt></td><td>Workspace tree: rename the platform, power log or frame; remove "
+             "the import that brought the selected item (Ctrl+Z outside the Lens tab undoes)</td></tr>"
              "<tr><td><tt>Double-click</tt></td><td>Platforms and peak tables: show where a number came from</td></tr>"
              "</table><p>The README's <i>Views</i> section and <tt>docs/cli.md</tt> describe every view and command.</p>");
   QMessageBox box(QMessageBox::NoIcon, tr("BenchScope: views and shortcuts"), html, QMessageBox::Close, this);

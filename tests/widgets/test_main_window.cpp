@@ -5,6 +5,8 @@
 #include <QApplication>
 #include <QCoreApplication>
 #include <QFile>
+#include <QInputDialog>
+#include <QStandardItemModel>
 #include <QTabWidget>
 #include <QSplitter>
 #include <QDockWidget>
@@ -134,6 +136,79 @@ class TestMainWindow : public QObject {
     // Zooming into the first 10 s changes the statistics to that range.
     view->plot()->xAxis->setRange(0, 10);
     QVERIFY(view->table()->item(0, 1)->text() != "1,200");
+  }
+
+  void every_tab_fits_a_1280x800_window() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    w.resize(1280, 800);
+    w.show();
+    auto* tabs = qobject_cast<QTabWidget*>(w.centralWidget());
+    QVERIFY(tabs);
+    for (int i = 0; i < tabs->count(); ++i) {
+      tabs->setCurrentIndex(i);
+      QCoreApplication::processEvents();
+      // The window's minimum (docks + the tab page in front) must leave it resizable to 1280 px.
+      QVERIFY2(w.minimumSizeHint().width() <= 1280,
+               qPrintable(QString("%1: window needs %2 px").arg(tabs->tabText(i)).arg(w.minimumSizeHint().width())));
+      QVERIFY2(w.width() <= 1280, qPrintable(tabs->tabText(i)));
+    }
+  }
+
+  void tree_lists_every_kind_and_edits_are_undoable() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    using K = bs::ui::TreeItemRef::Kind;
+    bs::ui::WorkspaceTree* tree = w.tree();
+    QCOMPARE(tree->item_count(K::PowerLog), 2);
+    QVERIFY(tree->item_count(K::PipelineRun) > 0);
+    QVERIFY(tree->item_count(K::Frame) > 0);
+    // Find the first power log row and remove it (its import goes, with everything the file brought).
+    auto* model = qobject_cast<QStandardItemModel*>(tree->model());
+    bs::ui::TreeItemRef log;
+    QString log_tip;
+    for (int r = 0; r < model->rowCount() && log.kind == K::None; ++r)
+      for (int c = 0; c < model->item(r)->rowCount(); ++c) {
+        const auto ref = tree->ref_at(model->item(r)->child(c)->index());
+        if (ref.kind == K::PowerLog) {
+          log = ref;
+          log_tip = model->item(r)->child(c)->toolTip();
+          break;
+        }
+      }
+    QVERIFY(log.kind == K::PowerLog && log.import_id > 0);
+    QVERIFY2(log_tip.contains("samples"), qPrintable(log_tip));
+    emit tree->remove_requested(log);
+    QCOMPARE(w.power_view()->trace_count(), 1);
+    QCOMPARE(tree->item_count(K::PowerLog), 1);
+    QAction* undo = nullptr;
+    for (QAction* a : w.findChildren<QAction*>())
+      if (a->text().startsWith("&Undo")) undo = a;
+    QVERIFY(undo);
+    QVERIFY2(undo->isEnabled() && undo->text().contains("remove import"), qPrintable(undo->text()));
+    undo->trigger();
+    QCOMPARE(w.power_view()->trace_count(), 2);
+    QCOMPARE(tree->item_count(K::PowerLog), 2);
+    // Rename a platform through the dialog; every view follows, and undo brings the old name back.
+    QTimer::singleShot(0, [] {
+      auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+      QVERIFY(dialog);
+      dialog->setTextValue("Intel NUC");
+      dialog->accept();
+    });
+    emit tree->rename_requested({K::Platform, 0, 0, "NUC"});
+    bool renamed = false;
+    for (const auto& r : w.workspace()->runs()) renamed |= r.run.platform == "Intel NUC";
+    QVERIFY(renamed);
+    QCOMPARE(model->item(0)->text() == "Intel NUC" || model->item(1)->text() == "Intel NUC" ||
+                 model->item(2)->text() == "Intel NUC" || model->item(3)->text() == "Intel NUC",
+             true);
+    undo->trigger();
+    for (const auto& r : w.workspace()->runs()) QVERIFY(r.run.platform != "Intel NUC");
   }
 
   void hover_reads_out_the_nearest_point() {

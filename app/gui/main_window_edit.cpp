@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Renaming and removing what the workspace tree lists, each one undo step (Edit > Undo, Ctrl+Z outside the Lens
+// tab, which has its own undo for lens changes). Removing takes away the whole import that brought an item (the
+// workspace stores files whole); undo adds the same content back from a snapshot taken before.
+#include <QInputDialog>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QUndoCommand>
+#include <QUndoStack>
+#include <functional>
+
+#include "lens_tab.h"
+#include "main_window.h"
+#include "store/battery_preset_store.h"
+#include "store/import_snapshot.h"
+#include "vision/lens.h"
+
+namespace bs::ui {
+namespace {
+
+// The action already done by the caller (so a failure never reaches the stack); redo and undo after that.
+class WorkspaceCommand : public QUndoCommand {
+ public:
+  WorkspaceCommand(const QString& text, std::function<void()> redo, std::function<void()> undo,
+                   std::function<void(const QString&)> report)
+      : QUndoCommand(text), redo_(std::move(redo)), undo_(std::move(undo)), report_(std::move(report)) {}
+  void redo() override {
+    if (first_) {
+      first_ = false;
+      return;
+    }
+    run(redo_);
+  }
+  void undo() override { run(undo_); }
+
+ private:
+  void run(const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      report_(QString::fromUtf8(e.what()));
+      setObsolete(true);  // the workspace no longer matches this step: drop it
+    }
+  }
+  bool first_ = true;
+  std::function<void()> redo_, undo_;
+  std::function<void(const QString&)> report_;
+};
+
+QString count_text(const ImportBatch& b) {
+  QStringList parts;
+  const auto add = [&](std::size_t n, const QString& one, const QString& many) {
+    if (n > 0) parts << (n == 1 ? one : many.arg(n));
+  };
+  add(b.runs.size(), MainWindow::tr("1 run"), MainWindow::tr("%1 runs"));
+  add(b.result_sets.size(), MainWindow::tr("1 result set"), MainWindow::tr("%1 result sets"));
+  add(b.power_traces.size(), MainWindow::tr("1 power log"), MainWindow::tr("%1 power logs"));
+  add(b.frames.size(), MainWindow::tr("1 frame"), MainWindow::tr("%1 frames"));
+  add(b.pipeline_runs.size(), MainWindow::tr("1 pipeline run"), MainWindow::tr("%1 pipeline runs"));
+  return parts.join(", ");
+}
+
+QString file_name(const std::string& path) {
+  const QString p = QString::fromStdString(path);
+  return p.section('/', -1).isEmpty() ? p : p.section('/', -1);
+}
+
+QString provenance_line(const Provenance& p) {
+  QStringList parts{QString::fromUtf8(to_string(p.origin).data())};
+  for (const std::string* s : {&p.host, &p.tool, &p.sensor, &p.date, &p.source_file})
+    if (!s->empty()) parts << QString::fromStdString(*s).toHtmlEscaped();
+  return parts.join(QStringLiteral(" · "));
+}
+
+}  // namespace
+
+std::vector<WorkspaceItem> MainWindow::workspace_items() const {
+  std::vector<WorkspaceItem> out;
+  if (!workspace_) return out;
+  using K = TreeItemRef::Kind;
+  for (const StoredPowerTrace& t : workspace_->power_traces()) {
+    const PowerTrace& tr_ = t.trace;
+    const double duration = tr_.time_s.empty() ? 0 : tr_.time_s.back() - tr_.time_s.front();
+    out.push_back({{K::PowerLog, t.id, t.import_id, QString::fromStdString(tr_.label)},
+                   tr("%1 — %2").arg(QString::fromStdString(tr_.platform), QString::fromStdString(tr_.label)),
+                   tr("<b>%1</b><br>%L2 samples over %3 s, %4 channel(s)<br>%5")
+                       .arg(QString::fromStdString(tr_.label).toHtmlEscaped())
+                       .arg(tr_.time_s.size())
+                       .arg(duration, 0, 'f', 1)
+                       .arg(tr_.channels.size())
+                       .arg(provenance_line(tr_.provenance))});
+  }
+  for (const StoredFrame& f : workspace_->frames()) {
+    const Frame& fr = f.frame;
+    QString lens_line;
+    if (!fr.lens_json.empty()) {
+      try {
+        lens_line = tr("<br>Lens: %1").arg(QString::fromStdString(
+            vision::describe(vision::lens_from_json(nlohmann::json::parse(fr.lens_json)).first.calibration)));
+      } catch (const std::exception&) {
+        lens_line = tr("<br>Lens: unreadable");
+      }
+    }
+    out.push_back({{K::Frame, f.id, f.import_id, QString::fromStdString(fr.label)},
+                   tr("%1 (%2×%3, %4-bit)").arg(QString::fromStdString(fr.label)).arg(fr.width).arg(fr.height).arg(fr.bit_depth),
+                   tr("<b>%1</b><br>%2<br>%3%4")
+                       .arg(QString::fromStdString(fr.label).toHtmlEscaped(), QString::fromStdString(f.path).toHtmlEscaped(),
+                            provenance_line(fr.provenance), lens_line)});
+  }
+  for (const StoredPipelineRun& p : workspace_->pipeline_runs()) {
+    const PipelineRun& r = p.run;
+    out.push_back({{K::PipelineRun, p.id, p.import_id, QString::fromStdString(r.platform)},
+                   tr("%1 — %2 (%3)").arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
+                                          QString::fromStdString(r.backend)),
+                   tr("<b>%1</b>, %2 stage(s)<br>%3").arg(QString::fromStdString(r.platform).toHtmlEscaped())
+                       .arg(r.stages.size())
+                       .arg(provenance_line(r.provenance))});
+  }
+  for (const StoredResultSet& s : workspace_->result_sets()) {
+    const ResultSet& r = s.set;
+    out.push_back({{K::ResultSet, s.id, s.import_id, QString::fromStdString(r.device)},
+                   tr("%1 — %2 (%3)").arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
+                                          QString::fromStdString(r.source_format)),
+                   tr("<b>%1</b>, %2 measurement(s)<br>%3").arg(QString::fromStdString(r.device).toHtmlEscaped())
+                       .arg(r.measurements.size())
+                       .arg(provenance_line(r.provenance))});
+  }
+  for (const BatterySetup& b : workspace_battery_setups(*workspace_)) {
+    out.push_back({{K::BatteryPreset, 0, 0, QString::fromStdString(b.pack.name)},
+                   QString::fromStdString(b.pack.name),
+                   tr("Battery preset saved in this workspace: %1 V nominal, %2 Ah%3")
+                       .arg(b.pack.nominal_v())
+                       .arg(b.pack.capacity_ah)
+                       .arg(b.mission.empty() ? QString() : tr(", mission %1").arg(QString::fromStdString(b.mission)))});
+  }
+  return out;
+}
+
+void MainWindow::report_edit_error(const QString& message) {
+  QMessageBox::warning(this, tr("Workspace"), message);
+  reload();
+}
+
+void MainWindow::rename_item(const TreeItemRef& item) {
+  if (!workspace_ || !item.renamable()) return;
+  bool ok = false;
+  const QString title = item.kind == TreeItemRef::Kind::Platform ? tr("Rename platform") : tr("Rename");
+  const QString name = QInputDialog::getText(this, title, tr("New name:"), QLineEdit::Normal, item.name, &ok).trimmed();
+  if (!ok || name.isEmpty() || name == item.name) return;
+  Workspace* ws = workspace_.get();
+  const std::string from = item.name.toStdString(), to = name.toStdString();
+  std::function<void(const std::string&)> apply;
+  switch (item.kind) {
+    case TreeItemRef::Kind::PowerLog: apply = [ws, id = item.id](const std::string& n) { ws->rename_power_trace(id, n); }; break;
+    case TreeItemRef::Kind::Frame: apply = [ws, id = item.id](const std::string& n) { ws->rename_frame(id, n); }; break;
+    default: break;
+  }
+  std::function<void()> redo, undo;
+  if (item.kind == TreeItemRef::Kind::Platform) {
+    redo = [ws, from, to] { ws->rename_platform(from, to); };
+    undo = [ws, from, to] { ws->rename_platform(to, from); };
+  } else {
+    redo = [apply, to] { apply(to); };
+    undo = [apply, from] { apply(from); };
+  }
+  try {
+    redo();
+  } catch (const std::exception& e) {
+    report_edit_error(QString::fromUtf8(e.what()));
+    return;
+  }
+  push_edit(tr("rename “%1” to “%2”").arg(item.name, name), std::move(redo), std::move(undo));
+}
+
+void MainWindow::remove_item(const TreeItemRef& item) {
+  if (!workspace_ || !item.removable()) return;
+  Workspace* ws = workspace_.get();
+  if (item.kind == TreeItemRef::Kind::BatteryPreset) {
+    const auto setup = find_battery_setup(ws, item.name.toStdString());
+    if (!setup || !setup->from_workspace) return;
+    std::function<void()> redo = [ws, name = setup->pack.name] { remove_battery_setup(*ws, name); };
+    std::function<void()> undo = [ws, s = *setup] { save_battery_setup(*ws, s); };
+    try {
+      redo();
+    } catch (const std::exception& e) {
+      report_edit_error(QString::fromUtf8(e.what()));
+      return;
+    }
+    push_edit(tr("remove preset “%1”").arg(item.name), std::move(redo), std::move(undo));
+    return;
+  }
+  // The import id changes when undo adds the content back: both steps share it.
+  auto import_id = std::make_shared<std::int64_t>(item.import_id);
+  auto snapshot = std::make_shared<ImportSnapshot>();
+  std::function<void()> redo = [ws, import_id, snapshot] {
+    *snapshot = snapshot_import(*ws, *import_id);
+    ws->remove_import(*import_id);
+  };
+  std::function<void()> undo = [ws, import_id, snapshot] { *import_id = restore_import(*ws, *snapshot); };
+  try {
+    redo();
+  } catch (const std::exception& e) {
+    report_edit_error(QString::fromUtf8(e.what()));
+    return;
+  }
+  push_edit(tr("remove import “%1” (%2)").arg(file_name(snapshot->record.path), count_text(snapshot->batch)),
+            std::move(redo), std::move(undo));
+}
+
+void MainWindow::push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo) {
+  // Each step reloads the views after it ran, whichever way.
+  auto with_reload = [this](std::function<void()> f) {
+    return [this, f = std::move(f)] {
+      f();
+      reload();
+    };
+  };
+  edits_->push(new WorkspaceCommand(text, with_reload(std::move(redo)), with_reload(std::move(undo)),
+                                    [this](const QString& m) { report_edit_error(m); }));
+  reload();
+  statusBar()->showMessage(tr("Done: %1 — Ctrl+Z undoes").arg(text), 10000);
+}
+
+void MainWindow::update_edit_actions() {
+  // On the Lens tab Ctrl+Z belongs to the lens tuner's own undo; elsewhere it undoes workspace edits.
+  const bool lens_in_front = static_cast<QTabWidget*>(centralWidget())->currentWidget() == lens_;
+  undo_edit_->setEnabled(edits_->canUndo() && !lens_in_front);
+  redo_edit_->setEnabled(edits_->canRedo() && !lens_in_front);
+}
+
+}  // namespace bs::ui
