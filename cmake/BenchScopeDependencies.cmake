@@ -19,7 +19,7 @@ benchscope_require(OpenMP "libomp-dev (g++ ships libgomp)")
 find_package(OpenCL QUIET)
 benchscope_require(OpenCL "ocl-icd-opencl-dev opencl-headers pocl-opencl-icd")
 # Components are always listed: without them OpenCV's highgui would pull Qt 5 into the process.
-find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs dnn objdetect)
+find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs dnn objdetect calib3d)
 benchscope_require(OpenCV "libopencv-dev")
 find_package(Threads REQUIRED)
 

@@ -6,8 +6,10 @@
 #include <QtConcurrent>
 #include <QLabel>
 #include <QSplitter>
+#include <QToolBar>
 #include <QVBoxLayout>
 
+#include "checkerboard_dialog.h"
 #include "lens_view_3d.h"
 #include "reprojection_tuner.h"
 #include "vision/synthetic.h"
@@ -22,6 +24,10 @@ LensTab::LensTab(QWidget* parent) : QWidget(parent), tuner_(new ReprojectionTune
                                 .arg(QGuiApplication::platformName()));
   static_cast<QLabel*>(placeholder_)->setWordWrap(true);
   static_cast<QLabel*>(placeholder_)->setAlignment(Qt::AlignCenter);
+  tuner_->tool_bar()->addSeparator();
+  tuner_->tool_bar()
+      ->addAction(tr("Calibrate from checkerboard…"), this, [this] { open_checkerboard_dialog(); })
+      ->setToolTip(tr("Fit the lens to photos of a printed checkerboard (OpenCV's fisheye calibration)"));
   split_->addWidget(tuner_);
   split_->addWidget(placeholder_);
   split_->setStretchFactor(0, 3);
@@ -65,6 +71,15 @@ LensView3D* LensTab::ensure_view_3d() {
   view3d_->set_lens(tuner_->params().lens, tuner_->params().view);
   connect(tuner_, &ReprojectionTuner::lens_changed, view3d_, &LensView3D::set_lens);
   return view3d_;
+}
+
+CheckerboardDialog* LensTab::open_checkerboard_dialog() {
+  auto* dialog = new CheckerboardDialog(tuner_->params(), this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &CheckerboardDialog::apply_requested, this,
+          [this](const vision::Lens& lens) { tuner_->apply_lens(lens, "checkerboard calibration"); });
+  dialog->show();
+  return dialog;
 }
 
 void LensTab::showEvent(QShowEvent* event) {

@@ -11,6 +11,7 @@ class QSplitter;
 
 namespace bs::ui {
 
+class CheckerboardDialog;
 class ReprojectionTuner;
 class LensView3D;
 
@@ -25,6 +26,8 @@ class LensTab : public QWidget {
   ReprojectionTuner* tuner() const { return tuner_; }
   LensView3D* view_3d() const { return view3d_; }  // null until the tab has been shown on a GL-capable platform
   LensView3D* ensure_view_3d();
+  // "Calibrate from checkerboard…": the dialog, opened non-modally; its Apply sets the tuner's lens (one undo step).
+  CheckerboardDialog* open_checkerboard_dialog();
 
  protected:
   void showEvent(QShowEvent* event) override;

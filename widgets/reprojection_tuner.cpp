@@ -88,6 +88,7 @@ ReprojectionTuner::~ReprojectionTuner() {
 
 void ReprojectionTuner::build_ui() {
   auto* bar = new QToolBar(this);
+  bar_ = bar;
   bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
   undo_ = bar->addAction(tr("Undo"), this, [this] {
     if (state_.undo()) state_changed();
@@ -498,6 +499,12 @@ void ReprojectionTuner::job_finished() {
   }
   if (pending_) start_job();
   emit preview_updated();
+}
+
+void ReprojectionTuner::apply_lens(const vision::Lens& lens, const std::string& what) {
+  state_.end_merge();
+  change(what, [&lens](auto& p) { p.lens = lens; });
+  state_.end_merge();
 }
 
 std::optional<vision::ImageCircle> ReprojectionTuner::auto_calibrate() {

@@ -23,6 +23,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QSlider;
 class QSpinBox;
+class QToolBar;
 class QToolButton;
 
 namespace bs::ui {
@@ -54,6 +55,9 @@ class ReprojectionTuner : public QWidget {
   // The generation of the newest request and of the preview on screen (equal when the preview is up to date).
   quint64 requested_generation() const { return requested_; }
   quint64 shown_generation() const { return shown_; }
+  // Replace the lens (e.g. a checkerboard calibration's) as one undo step named `what`.
+  void apply_lens(const vision::Lens& lens, const std::string& what);
+  QToolBar* tool_bar() const { return bar_; }  // for the Lens tab's own actions
   // Detect the image circle and apply the proposed principal point and r_pp as one undo step.
   std::optional<vision::ImageCircle> auto_calibrate();
   // Straight-line tool: points in output image pixels; the residual is shown under the preview.
@@ -111,6 +115,7 @@ class ReprojectionTuner : public QWidget {
   QFutureWatcher<Result>* watcher_;
 
   QAction *undo_, *redo_, *reset_;
+  QToolBar* bar_ = nullptr;
   PreviewPane *fisheye_pane_, *output_pane_;
   QLabel *status_, *line_label_;
   QComboBox* model_;

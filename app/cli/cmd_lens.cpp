@@ -11,6 +11,7 @@
 
 #include "args.h"
 #include "command.h"
+#include "lens_calibrate.h"
 #include "vision/circle_detect.h"
 #include "vision/straight_line.h"
 #include "vision/tuner_state.h"
@@ -87,19 +88,25 @@ int lens_line(const std::vector<std::string>& raw, std::ostream& out) {
 
 const CommandRegistrar registrar({
     "lens",
-    "lens calibration helpers (lens circle | lens export-lut | lens line)",
+    "lens calibration helpers (lens circle | lens calibrate | lens export-lut | lens line)",
     "usage: benchscope-cli lens circle IMAGE [--lens LENS.json] [--min-level L] [--circle-fov DEG] [--out LENS.json]\n"
+    "       benchscope-cli lens calibrate IMAGE... --board COLSxROWS --square MM --out LENS.json\n"
+    "         [--model kannala-brandt|equidistant] [--lens BASE.json] [--fov DEG]\n"
     "       benchscope-cli lens export-lut OUT.bslut [--lens LENS.json]\n"
     "       benchscope-cli lens line X,Y X,Y X,Y...\n"
     "  circle: detects the fisheye image circle and proposes principal point and r_pp for the lens model\n"
     "  (default the paper's lens); export-lut: writes the view's lookup table (docs/lut-format.md); line: RMS and\n"
-    "  max distance in pixels of clicked points from their best-fit straight line.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+    "  max distance in pixels of clicked points from their best-fit straight line.\n"
+    "  calibrate: checkerboard calibration with OpenCV (findChessboardCornersSB, cv::fisheye); COLSxROWS counts\n"
+    "  squares (10x7 squares = 9x6 inner corners); prints each image's RMS reprojection error or why it was\n"
+    "  rejected; the field of view (not measured by a board) comes from --fov or the --lens file (default 195).",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
       if (!args.empty() && args[0] == "circle") return lens_circle(rest, out);
+      if (!args.empty() && args[0] == "calibrate") return lens_calibrate(rest, out, err);
       if (!args.empty() && args[0] == "export-lut") return lens_export_lut(rest, out);
       if (!args.empty() && args[0] == "line") return lens_line(rest, out);
-      throw UsageError("expected 'lens circle', 'lens export-lut' or 'lens line'");
+      throw UsageError("expected 'lens circle', 'lens calibrate', 'lens export-lut' or 'lens line'");
     },
 });
 

@@ -12,13 +12,16 @@
 #include "args.h"
 #include "command.h"
 #include "model/raw_sidecar.h"
+#include "synth_checkerboard.h"
 #include "vision/synthetic.h"
 
 namespace bs::cli {
 namespace {
 
 int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw_args, {}, {"--lens", "--size", "--pattern", "--bits", "--out"});
+  std::set<std::string> valued = {"--lens", "--size", "--pattern", "--bits", "--out", "--scene"};
+  valued.insert(kCheckerboardSceneOptions.begin(), kCheckerboardSceneOptions.end());
+  const ParsedArgs args = parse_args(raw_args, {}, valued);
   const auto prefix = args.value("--out");
   if (!prefix) throw UsageError("--out PREFIX is required");
   vision::Lens lens = vision::Lens::paper();
@@ -43,6 +46,14 @@ int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
   }
   const int bits = static_cast<int>(args.number("--bits", 8));
   if (bits != 8 && bits != 10 && bits != 12 && bits != 16) throw UsageError("--bits must be 8, 10, 12 or 16");
+  const std::string scene = args.value("--scene").value_or("chart");
+  if (scene == "checkerboard") {
+    if (args.value("--pattern")) throw UsageError("--pattern is for the Bayer chart; the checkerboard views are grey");
+    return synth_checkerboard(args, lens, view, *prefix, bits, out);
+  }
+  if (scene != "chart") throw UsageError("--scene must be chart or checkerboard");
+  for (const auto& o : kCheckerboardSceneOptions)
+    if (args.value(o)) throw UsageError(o + " belongs to --scene checkerboard");
   vision::BayerPattern pattern;
   try {
     pattern = vision::bayer_pattern_from_string(args.value("--pattern").value_or("BGGR"));
@@ -81,8 +92,15 @@ const CommandRegistrar registrar({
     "render a synthetic Bayer capture of a test chart through a lens, with ground truth",
     "usage: benchscope-cli synth-frame --out PREFIX [--lens paper|LENS.json] [--size WxH] [--pattern BGGR|RGGB|GRBG|GBRG]\n"
     "         [--bits 8|10|12|16]\n"
+    "       benchscope-cli synth-frame --scene checkerboard --out PREFIX [--lens paper|LENS.json] [--size WxH]\n"
+    "         [--board COLSxROWS] [--square MM] (--pose RX,RY,RZ,TX,TY,TZ[;...] | --poses FILE) [--bits 8|10|12|16]\n"
+    "         [--noise SIGMA] [--blur PX] [--supersample N] [--seed S]\n"
     "  Writes PREFIX.raw (row-major samples; 16-bit little-endian above 8 bits), PREFIX.json (sidecar: size, pattern,\n"
-    "  bit depth, endianness, lens, synthetic: true) and PREFIX-truth.png (the ground-truth colour image).",
+    "  bit depth, endianness, lens, synthetic: true) and PREFIX-truth.png (the ground-truth colour image).\n"
+    "  --scene checkerboard: a board of COLSxROWS squares (default 10x7) of MM millimetres (default 30) at each pose\n"
+    "  (rotation in degrees, R = Rz Ry Rx; the board centre's position in mm; camera frame x forward, y right, z up;\n"
+    "  a poses file has one pose per line), ray-traced through the lens with NxN samples per pixel (default 4):\n"
+    "  PREFIX-01.png... (grey), PREFIX.json (ground truth). --noise: Gaussian noise in grey levels; --blur: sigma, px.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_synth(args, out);
     },
