@@ -13,12 +13,13 @@
 #include "command.h"
 #include "model/raw_sidecar.h"
 #include "vision/synthetic.h"
+#include "vision/synthetic_room.h"
 
 namespace bs::cli {
 namespace {
 
 int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw_args, {}, {"--lens", "--size", "--pattern", "--bits", "--out"});
+  const ParsedArgs args = parse_args(raw_args, {}, {"--lens", "--size", "--pattern", "--bits", "--out", "--scene", "--vignetting", "--noise", "--seed"});
   const auto prefix = args.value("--out");
   if (!prefix) throw UsageError("--out PREFIX is required");
   vision::Lens lens = vision::Lens::paper();
@@ -49,7 +50,18 @@ int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  const cv::Mat truth = vision::render_fisheye(lens, bits);
+  const std::string scene = args.value("--scene").value_or("chart");
+  if (scene != "chart" && scene != "room") throw UsageError("--scene must be chart or room");
+  vision::RoomOptions room;
+  room.bits = bits;
+  room.vignetting = args.number("--vignetting", 0);
+  room.noise = args.number("--noise", 0);
+  room.seed = static_cast<std::uint64_t>(args.number("--seed", 1));
+  if (room.vignetting < 0 || room.vignetting >= 1) throw UsageError("--vignetting must be in [0, 1)");
+  if (room.noise < 0 || room.noise > 0.5) throw UsageError("--noise must be in [0, 0.5] (a fraction of full scale)");
+  if (scene == "chart" && (args.value("--vignetting") || args.value("--noise") || args.value("--seed")))
+    throw UsageError("--vignetting, --noise and --seed apply to --scene room");
+  const cv::Mat truth = scene == "room" ? vision::render_room_fisheye(lens, room) : vision::render_fisheye(lens, bits);
   const cv::Mat raw = vision::mosaic(truth, pattern);
   const std::filesystem::path parent = std::filesystem::path(*prefix).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -80,9 +92,14 @@ const CommandRegistrar registrar({
     "synth-frame",
     "render a synthetic Bayer capture of a test chart through a lens, with ground truth",
     "usage: benchscope-cli synth-frame --out PREFIX [--lens paper|LENS.json] [--size WxH] [--pattern BGGR|RGGB|GRBG|GBRG]\n"
-    "         [--bits 8|10|12|16]\n"
+    "         [--bits 8|10|12|16] [--scene chart|room] [--vignetting V] [--noise SIGMA] [--seed N]\n"
     "  Writes PREFIX.raw (row-major samples; 16-bit little-endian above 8 bits), PREFIX.json (sidecar: size, pattern,\n"
-    "  bit depth, endianness, lens, synthetic: true) and PREFIX-truth.png (the ground-truth colour image).",
+    "  bit depth, endianness, lens, synthetic: true) and PREFIX-truth.png (the ground-truth colour image).\n"
+    "  --scene chart (default): a flat test chart in front of the camera. --scene room: the inside of a room whose\n"
+    "  walls carry a grid of dark lines (straight in 3D) and dark objects, lit all round, so the whole image circle\n"
+    "  is lit and dark lines reach its rim; --vignetting V (fraction of brightness lost at the rim, 0..1), --noise\n"
+    "  SIGMA (Gaussian, fraction of full scale) and --seed N (camera yaw in the room and noise) shape it; the\n"
+    "  truth PNG then holds the capture with vignetting and noise.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_synth(args, out);
     },
