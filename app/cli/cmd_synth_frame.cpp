@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli synth-frame: a synthetic capture with ground truth, to check a lens setup or feed the tests.
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,9 +16,34 @@
 #include "model/raw_sidecar.h"
 #include "vision/synthetic.h"
 #include "vision/synthetic_room.h"
+#include "vision/line_fit.h"
 
 namespace bs::cli {
 namespace {
+
+// Each 3D segment sampled at 1/48 steps, projected through the lens; runs of >= 6 points inside FOV and sensor.
+std::vector<vision::PickedLine> room_lines_in_image(const vision::Lens& lens, const std::vector<vision::Segment3d>& segs) {
+  std::vector<vision::PickedLine> out;
+  const cv::Point2d c = lens.centre();
+  for (const auto& seg : segs) {
+    vision::PickedLine run;
+    for (int i = 1; i <= 48; ++i) {
+      const cv::Vec3d v = seg.a * (1 - i / 49.0) + seg.b * (i / 49.0);
+      const cv::Vec3d u = v / cv::norm(v);
+      const auto r = lens.radius(std::acos(std::clamp(u[0], -1.0, 1.0)));
+      const double len = std::hypot(u[1], u[2]);
+      const cv::Point2d p = r && len > 0 ? cv::Point2d(c.x + *r * u[1] / len, c.y - *r * u[2] / len) : cv::Point2d(-1, -1);
+      if (p.x >= 0 && p.y >= 0 && p.x <= lens.width - 1 && p.y <= lens.height - 1) {
+        run.push_back(p);
+        continue;
+      }
+      if (run.size() >= 6) out.push_back(run);
+      run.clear();
+    }
+    if (run.size() >= 6) out.push_back(run);
+  }
+  return out;
+}
 
 int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
   const ParsedArgs args = parse_args(raw_args, {}, {"--lens", "--size", "--pattern", "--bits", "--out", "--scene", "--vignetting", "--noise", "--seed"});
@@ -83,6 +110,12 @@ int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
   sidecar.lens_json = vision::lens_to_json(lens, view).dump();
   std::ofstream(json_path) << raw_sidecar_to_json(sidecar).dump(2) << '\n';
   if (!cv::imwrite(png_path, truth)) throw std::runtime_error(png_path + ": cannot write PNG");
+  if (scene == "room") {
+    // The room's grid lines as a user would pick them (true positions, every 1/48 of a wall), for refine-lines.
+    const auto lines = room_lines_in_image(lens, vision::room_grid_lines(vision::room_yaw(room.seed)));
+    vision::save_lines_json(lines, lens.width, lens.height, *prefix + "-lines.json");
+    out << "wrote " << *prefix << "-lines.json (" << lines.size() << " grid lines straight in 3D, source pixels)\n";
+  }
   out << "wrote " << raw_path << " (" << raw.cols << "x" << raw.rows << " " << vision::to_string(pattern) << ", "
       << bits << "-bit), " << json_path << ", " << png_path << '\n';
   return 0;
@@ -99,7 +132,8 @@ const CommandRegistrar registrar({
     "  walls carry a grid of dark lines (straight in 3D) and dark objects, lit all round, so the whole image circle\n"
     "  is lit and dark lines reach its rim; --vignetting V (fraction of brightness lost at the rim, 0..1), --noise\n"
     "  SIGMA (Gaussian, fraction of full scale) and --seed N (camera yaw in the room and noise) shape it; the\n"
-    "  truth PNG then holds the capture with vignetting and noise.",
+    "  truth PNG then holds the capture with vignetting and noise, and PREFIX-lines.json the grid lines' true\n"
+    "  image points (for lens refine-lines).",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_synth(args, out);
     },

@@ -336,7 +336,7 @@ std::vector<PickedLine> lines_from_json(const nlohmann::json& j) {
 void save_lines_json(const std::vector<PickedLine>& lines, int width, int height, const std::filesystem::path& path) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error(path.string() + ": cannot open for writing");
-  f << lines_to_json(lines, width, height).dump(1) << '\n';
+  f << lines_to_json(lines, width, height).dump() << '\n';
   if (!f) throw std::runtime_error(path.string() + ": write failed");
 }
 
