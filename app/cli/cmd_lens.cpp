@@ -111,12 +111,12 @@ int lens_refine_lines(const std::vector<std::string>& raw, std::ostream& out) {
   const auto& l = fit.lens;
   char text[512];
   std::snprintf(text, sizeof text,
-                "%d lines, %d points; straightness RMS %.3f px before, %.3f px after (max %.3f -> %.3f px; pixels at "
-                "the start's focal length %.1f px), %d iterations\n"
+                "%d lines, %d points; straightness RMS %.3f px before, %.3f px after (max %.3f -> %.3f px; distance "
+                "of the points from their fitted lines' image curves, source pixels), %d iterations\n"
                 "kannala-brandt lens: principal point (%.2f, %.2f) px, r_pp %.6g rad/px (focal %.2f px), "
                 "k = (%.5g, %.5g, %.5g, %.5g)\n",
                 fit.after.lines, fit.after.points, fit.before.rms_px, fit.after.rms_px, fit.before.max_px,
-                fit.after.max_px, 1 / vision::to_kannala_brandt(p.lens).r_pp, fit.iterations, l.cx, l.cy, l.r_pp,
+                fit.after.max_px, fit.iterations, l.cx, l.cy, l.r_pp,
                 1 / l.r_pp, l.k[0], l.k[1], l.k[2], l.k[3]);
   out << text << "calibration: " << vision::describe(l.calibration) << '\n';
   p.lens = l;

@@ -55,8 +55,11 @@ double kb_radius(const Lens& lens, double theta) {
   return theta * (1 + t2 * (k[0] + t2 * (k[1] + t2 * (k[2] + t2 * k[3])))) / lens.r_pp;
 }
 
-// Signed distances (radians, as sines) of every point's ray from its line's best plane through the centre;
-// false when a point has no ray. Lines with fewer than 3 points are skipped.
+// Signed distances in source pixels of every point from the image of its line's best plane through the centre
+// (a great circle): the ray's distance n.v from the plane over the gradient of n.v with respect to the pixel, i.e.
+// the first-order distance to the curve. Pixels, not angles: an angle cost would favour lenses that squeeze the
+// rays (smaller angles for the same click noise), which the scale lines cannot see makes free to choose. False when
+// a point has no ray. Lines with fewer than 3 points are skipped.
 bool plane_distances(const Lens& lens, const std::vector<PickedLine>& lines, std::vector<double>& out,
                      std::string* error = nullptr) {
   out.clear();
@@ -82,7 +85,17 @@ bool plane_distances(const Lens& lens, const std::vector<PickedLine>& lines, std
     // A fixed orientation (from the first to the last point), so the residuals' signs do not flip between the
     // Jacobian's evaluations.
     if (n.dot(rays.front().cross(rays.back())) < 0) n = -n;
-    for (const auto& v : rays) out.push_back(n.dot(v));
+    constexpr double h = 1e-3;  // px, for the gradient
+    for (std::size_t pi = 0; pi < line.size(); ++pi) {
+      const auto vx = pixel_to_ray(lens, line[pi] + cv::Point2d(h, 0));
+      const auto vy = pixel_to_ray(lens, line[pi] + cv::Point2d(0, h));
+      if (!vx || !vy) return false;
+      const double d = n.dot(rays[pi]);
+      const double gx = (n.dot(*vx) - d) / h, gy = (n.dot(*vy) - d) / h;
+      const double g = std::hypot(gx, gy);
+      if (!(g > 1e-12)) return false;
+      out.push_back(d / g);
+    }
   }
   return true;
 }
@@ -168,19 +181,18 @@ Lens to_kannala_brandt(const Lens& lens) {
   return out;
 }
 
-LineStraightness line_straightness(const Lens& lens, const std::vector<PickedLine>& lines, double focal_px) {
+LineStraightness line_straightness(const Lens& lens, const std::vector<PickedLine>& lines) {
   std::vector<double> d;
   std::string error;
   if (!plane_distances(lens, lines, d, &error)) throw std::invalid_argument(error);
   if (d.empty()) throw std::invalid_argument("no line has 3 or more points");
-  const double f = focal_px > 0 ? focal_px : 1 / lens.r_pp;
   LineStraightness s;
   double ss = 0;
   for (double v : d) {
     ss += v * v;
-    s.max_px = std::max(s.max_px, std::abs(v) * f);
+    s.max_px = std::max(s.max_px, std::abs(v));
   }
-  s.rms_px = std::sqrt(ss / static_cast<double>(d.size())) * f;
+  s.rms_px = std::sqrt(ss / static_cast<double>(d.size()));
   s.points = static_cast<int>(d.size());
   for (const auto& l : lines) s.lines += l.size() >= 3;
   return s;
@@ -198,7 +210,6 @@ LineFitResult fit_lens_to_lines(const Lens& start_lens, const std::vector<Picked
   start.cy = c0.y;
   const double theta_max = start.fov_deg * kPi / 360;
   const double rim = options.circle_radius_px > 0 ? options.circle_radius_px : kb_radius(start, theta_max);
-  const double focal = 1 / start.r_pp;  // residuals in pixels at the start's focal length, fixed during the fit
   // 0.1 px of rim radius weighs as much as 1 px of line residual: the rim is measured far better than clicks are.
   constexpr double kRimWeight = 10;
 
@@ -206,7 +217,6 @@ LineFitResult fit_lens_to_lines(const Lens& start_lens, const std::vector<Picked
     if (!(p[0] > 0)) return false;
     const Lens l = with_params(start, p);
     if (!plane_distances(l, lines, r)) return false;
-    for (double& v : r) v *= focal;
     r.push_back(kRimWeight * (kb_radius(l, theta_max) - rim));
     return true;
   };
@@ -281,8 +291,8 @@ LineFitResult fit_lens_to_lines(const Lens& start_lens, const std::vector<Picked
   result.iterations = it;
   result.lens = with_params(start, p);
   result.lens.validate();
-  result.before = line_straightness(start, lines, focal);
-  result.after = line_straightness(result.lens, lines, focal);
+  result.before = line_straightness(start, lines);
+  result.after = line_straightness(result.lens, lines);
   auto& cal = result.lens.calibration;
   cal = {};
   cal.method = LensCalibration::Method::LineFit;

@@ -30,7 +30,9 @@ using PickedLine = std::vector<cv::Point2d>;  // source (fisheye) pixels along o
 // Unit ray (x forward, y right, z up) of a fisheye source pixel; nullopt where the model has no inverse (a
 // Kannala-Brandt polynomial that turns back before that radius). Not limited to the FOV.
 std::optional<cv::Vec3d> pixel_to_ray(const Lens& lens, const cv::Point2d& source_px);
-// Output pixel of the rectilinear view where a source pixel appears; nullopt behind the view or without a ray.
+
+// Output pixel of the rectilinear view where a source pixel appears, for overlays of picked points; unlike
+// view_geometry.h's output_of() not limited to the lens's FOV or the output image; nullopt behind the view.
 std::optional<cv::Point2d> view_pixel_of(const Lens& lens, const View& view, const cv::Point2d& source_px);
 
 // The Kannala-Brandt lens closest to `lens` (least squares of r(theta) over [0, fov/2]; exact for equidistant and
@@ -38,14 +40,14 @@ std::optional<cv::Point2d> view_pixel_of(const Lens& lens, const View& view, con
 Lens to_kannala_brandt(const Lens& lens);
 
 struct LineStraightness {
-  double rms_px = 0;  // RMS distance of the points' rays from their line's best plane, in pixels at the focal length
+  double rms_px = 0;  // RMS distance in source pixels of the points from the image of their line's best 3D line
   double max_px = 0;
   int lines = 0, points = 0;
 };
-// Distances are angles (radians) times `focal_px` (the lens's 1/r_pp when 0), i.e. pixels of a rectilinear view
-// with that focal length, near its centre. Lines with fewer than 3 points are skipped. Throws std::invalid_argument
-// when a point has no ray or no line has 3 points.
-LineStraightness line_straightness(const Lens& lens, const std::vector<PickedLine>& lines, double focal_px = 0);
+// Each line's rays get their best plane through the camera centre (least squares); a point's distance is how far,
+// in source pixels, it lies from that plane's image curve (to first order). Lines with fewer than 3 points are
+// skipped. Throws std::invalid_argument when a point has no ray or no line has 3 points.
+LineStraightness line_straightness(const Lens& lens, const std::vector<PickedLine>& lines);
 
 struct LineFitOptions {
   double circle_radius_px = 0;  // radius(fov/2) held fixed; <= 0: the start lens's
@@ -58,7 +60,7 @@ struct LineFitOptions {
 std::array<bool, 7> fixed_parameters_from_string(const std::string& names);
 struct LineFitResult {
   Lens lens;  // Kannala-Brandt, calibration = line-fit with RMS after and the residual before/after in detail
-  LineStraightness before, after;  // both in pixels at the start lens's focal length
+  LineStraightness before, after;  // source pixels
   int iterations = 0;
 };
 // Needs at least 3 lines of 3+ points. Throws std::invalid_argument naming the line and point without a ray.
