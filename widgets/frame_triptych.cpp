@@ -196,7 +196,8 @@ void FrameTriptych::set_frame(const Frame& frame) {
   banner += fl.from_frame ? tr("Lens: recorded with the frame (%1, %2°, r<sub>pp</sub> = %3 mrad/px).")
                                 .arg(QString::fromUtf8(vision::to_string(lens_.type).data()))
                                 .arg(lens_.fov_deg, 0, 'g', 4)
-                                .arg(lens_.r_pp * 1000, 0, 'f', 4)
+                                .arg(lens_.r_pp * 1000, 0, 'f', 4) +
+                                tr(" Obtained by: %1.").arg(QString::fromStdString(vision::describe(lens_.calibration)))
                           : tr("Lens: none recorded with the frame; showing the paper's 195° equidistant lens.");
   banner_->setText(banner);
   banner_->show();

@@ -50,7 +50,10 @@ PipelineView::PipelineView(QWidget* parent)
     : QWidget(parent), measure_(new PipelineMeasurePanel(this)), summary_(new QLabel(this)), table_(new QTableWidget(0, ColumnCount, this)) {
   table_->setHorizontalHeaderLabels({tr("Stage"), tr("Platform"), tr("Device (backend)"),
                                      tr("Time, mean ± SD (n)"), tr("p95 (ms)"), tr("Stage rate (fps)"),
-                                     tr("Pipeline (fps)"), tr("Data")});
+                                     tr("Pipeline (fps)"), tr("Data"), tr("Lens")});
+  table_->horizontalHeaderItem(LensColumn)->setToolTip(
+      tr("How the lens the run reprojected with was obtained: manual, circle fit, checkerboard (RMS, images) or line "
+         "fit (residual before/after)"));
   table_->horizontalHeaderItem(Time)->setToolTip(tr("Per-frame time of the stage in milliseconds: mean ± sample SD "
                                                     "over n frames"));
   table_->horizontalHeaderItem(StageRate)->setToolTip(tr("1 / mean time: the frame rate this stage alone keeps up with"));
@@ -68,6 +71,8 @@ PipelineView::PipelineView(QWidget* parent)
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(Device, QHeaderView::Interactive);
   table_->setColumnWidth(Device, 170);
+  table_->horizontalHeader()->setSectionResizeMode(LensColumn, QHeaderView::Interactive);
+  table_->setColumnWidth(LensColumn, 190);
   table_->setWordWrap(false);
   table_->setTextElideMode(Qt::ElideMiddle);
   summary_->setWordWrap(true);
@@ -122,6 +127,12 @@ void PipelineView::fill() {
     origin->setData(kSortRole, QVariant());
     if (rebuilt) origin->setForeground(QColor(0x9a, 0x5b, 0x00));  // never passes for a measurement
     table_->setItem(i, Data, origin);
+    const QString lens = QString::fromStdString(r.lens_calibration);
+    auto* lens_cell = cell(lens.isEmpty() ? QStringLiteral("–") : lens, nan,
+                           lens.isEmpty() ? tr("The run did not record its lens (imported or older runs)")
+                                          : tr("Lens: %1").arg(lens));
+    lens_cell->setData(kSortRole, QVariant());
+    table_->setItem(i, LensColumn, lens_cell);
   }
   table_->setSortingEnabled(true);
   if (rows.empty())

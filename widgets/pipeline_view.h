@@ -20,7 +20,7 @@ class PipelineMeasurePanel;
 class PipelineView : public QWidget {
   Q_OBJECT
  public:
-  enum Column { Stage, Platform, Device, Time, P95, StageRate, Throughput, Data, ColumnCount };
+  enum Column { Stage, Platform, Device, Time, P95, StageRate, Throughput, Data, LensColumn, ColumnCount };
   explicit PipelineView(QWidget* parent = nullptr);
   void set_data(std::vector<PipelineRun> runs);
   QTableWidget* table() const { return table_; }

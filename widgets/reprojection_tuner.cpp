@@ -313,15 +313,69 @@ QWidget* ReprojectionTuner::build_controls() {
   line_button_->setCheckable(true);
   line_button_->setToolTip(tr("Click 3 or more points along a line that is straight in the world, on the "
                               "reprojected preview: with the right lens they lie on a straight line"));
+  auto* next_line = new QPushButton(tr("New line"));
+  next_line->setToolTip(tr("Start another line: the next clicks belong to it"));
+  connect(next_line, &QPushButton::clicked, this, [this] { new_line(); });
   auto* clear_line = new QPushButton(tr("Clear points"));
+  clear_line->setToolTip(tr("Remove every picked line"));
   connect(clear_line, &QPushButton::clicked, this, [this] { clear_line_points(); });
   line_row->addWidget(line_button_);
+  line_row->addWidget(next_line);
   line_row->addWidget(clear_line);
   tl->addLayout(line_row);
   line_label_ = new QLabel(tr("Line residual: click 3+ points"));
   line_label_->setWordWrap(true);
   line_label_->setToolTip(tr("RMS and largest perpendicular distance in output pixels from the best-fit line"));
   tl->addWidget(line_label_);
+  auto* fit_row = new QHBoxLayout;
+  auto* fit_button = new QPushButton(tr("Fit lens to lines"));
+  fit_button->setToolTip(tr("Least-squares fit of r_pp, principal point and k1..k4 (Kannala-Brandt) that makes the "
+                            "picked lines straight, keeping the image circle's rim; one undo step (Ctrl+Z)"));
+  connect(fit_button, &QPushButton::clicked, this, [this] {
+    try {
+      fit_lens_to_lines();
+    } catch (const std::exception& e) {
+      line_fit_text_ = tr("Line fit: %1").arg(QString::fromStdString(e.what()));
+      line_fit_label_->setText(line_fit_text_);
+    }
+  });
+  auto* save_lines = new QPushButton(tr("Save lines…"));
+  save_lines->setToolTip(tr("Write the picked lines (source pixels) for benchscope-cli lens refine-lines"));
+  connect(save_lines, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save lines"), "lines.json", tr("Lines JSON (*.json)"));
+    if (path.isEmpty()) return;
+    try {
+      vision::save_lines_json(lines_, state_.params().lens.width, state_.params().lens.height, path.toStdString());
+    } catch (const std::exception& e) {
+      QMessageBox::warning(this, tr("Save lines"), QString::fromStdString(e.what()));
+    }
+  });
+  auto* load_lines = new QPushButton(tr("Load lines…"));
+  load_lines->setToolTip(tr("Read picked lines from a benchscope-lines JSON file (e.g. synth-frame --scene room)"));
+  connect(load_lines, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load lines"), {}, tr("Lines JSON (*.json)"));
+    if (path.isEmpty()) return;
+    try {
+      set_picked_lines(vision::load_lines_json(path.toStdString()));
+    } catch (const std::exception& e) {
+      QMessageBox::warning(this, tr("Load lines"), QString::fromStdString(e.what()));
+    }
+  });
+  fit_centre_ = new QCheckBox(tr("centre"));
+  fit_centre_->setChecked(true);
+  fit_centre_->setToolTip(tr("Fit the principal point too. Turn off to keep it, e.g. after Detect circle, which "
+                             "measures it to a fraction of a pixel: lines see it weakly (near the axis a shifted "
+                             "centre looks like a turned camera, and lines stay straight)"));
+  fit_row->addWidget(fit_button);
+  fit_row->addWidget(fit_centre_);
+  fit_row->addWidget(save_lines);
+  fit_row->addWidget(load_lines);
+  tl->addLayout(fit_row);
+  line_fit_label_ = new QLabel(tr("Line fit: pick 3 or more lines, then fit"));
+  line_fit_label_->setWordWrap(true);
+  line_fit_label_->setToolTip(tr("Straightness of all picked lines: RMS distance in fisheye pixels of the points "
+                                 "from the image of the best straight 3D line through them, before and after the fit"));
+  tl->addWidget(line_fit_label_);
   lay->addWidget(tools);
   lay->addStretch(1);
   return w;
@@ -379,6 +433,8 @@ void ReprojectionTuner::state_changed() {
   update_overlays();
   undo_->setEnabled(state_.can_undo());
   redo_->setEnabled(state_.can_redo());
+  line_label_->setText(line_residual_text());  // the picked points move with the lens
+  line_fit_label_->setText(lines_summary_text());
   request_preview();
   emit lens_changed(state_.params().lens, state_.params().view);
 }
@@ -422,6 +478,12 @@ void ReprojectionTuner::update_overlays() {
     for (const auto& pt : editing_mask_) q << QPointF(pt.x, pt.y);
     overlays.push_back({q, QColor(255, 160, 0), false, true});
   }
+  // Picked lines on the fisheye too (source pixels), so the user sees what the fit will use.
+  for (const auto& l : lines_) {
+    QPolygonF q;
+    for (const auto& pt : l) q << QPointF(pt.x, pt.y);
+    overlays.push_back({q, QColor(255, 200, 0), false, true});
+  }
   fisheye_pane_->set_overlays(overlays);
   // The lens's image circle (FOV/2) and, after auto-calibration, the detected one.
   std::vector<PreviewPane::Circle> circles;
@@ -433,9 +495,15 @@ void ReprojectionTuner::update_overlays() {
   }
   if (circle_) circles.push_back({QPointF(circle_->centre.x, circle_->centre.y), circle_->radius, QColor(60, 220, 60)});
   fisheye_pane_->set_circles(circles);
-  QPolygonF line;
-  for (const auto& q : line_points_) line << q;
-  output_pane_->set_overlays({{line, QColor(255, 200, 0), false, true}});
+  // The picked lines as the current lens maps them into the view: straight when the lens is right.
+  std::vector<PreviewPane::Overlay> lines;
+  for (std::size_t i = 0; i < lines_.size(); ++i) {
+    QPolygonF q;
+    for (const auto& s : lines_[i])
+      if (const auto o = vision::view_pixel_of(p.lens, p.view, s)) q << QPointF(o->x, o->y);
+    lines.push_back({q, i + 1 == lines_.size() ? QColor(255, 200, 0) : QColor(0, 220, 255), false, true});
+  }
+  output_pane_->set_overlays(lines);
 }
 
 void ReprojectionTuner::request_preview() {
@@ -527,21 +595,93 @@ std::optional<vision::ImageCircle> ReprojectionTuner::auto_calibrate() {
   return circle_;
 }
 
-void ReprojectionTuner::add_line_point(QPointF p) {
-  line_points_.push_back(p);
+bool ReprojectionTuner::add_line_point(QPointF p) {
+  const auto& s = state_.params();
+  const auto src = vision::source_of(s.lens, s.view, p.x(), p.y());
+  if (!src) return false;
+  add_source_point(*src);
+  return true;
+}
+
+void ReprojectionTuner::add_source_point(const cv::Point2d& source_px) {
+  if (lines_.empty()) lines_.emplace_back();
+  lines_.back().push_back(source_px);
   update_overlays();
+  line_label_->setText(line_residual_text());
+  line_fit_label_->setText(lines_summary_text());
+}
+
+QString ReprojectionTuner::lines_summary_text() const {
+  int usable = 0;
+  for (const auto& l : lines_) usable += l.size() >= 3;
+  if (usable == 0) return tr("Line fit: pick 3 or more lines (3+ points each), then fit");
+  try {
+    const auto s = vision::line_straightness(state_.params().lens, lines_);
+    return tr("Line fit: %1 line(s), %2 points; straightness RMS %3 px, max %4 px with this lens%5")
+        .arg(s.lines)
+        .arg(s.points)
+        .arg(s.rms_px, 0, 'f', 2)
+        .arg(s.max_px, 0, 'f', 2)
+        .arg(usable < 3 ? tr(" (3 lines needed to fit)") : QString());
+  } catch (const std::exception& e) {
+    return tr("Line fit: %1").arg(QString::fromStdString(e.what()));
+  }
+}
+
+void ReprojectionTuner::new_line() {
+  if (!lines_.empty() && lines_.back().empty()) return;
+  lines_.emplace_back();
   line_label_->setText(line_residual_text());
 }
 
 void ReprojectionTuner::clear_line_points() {
-  line_points_.clear();
+  lines_.clear();
   update_overlays();
   line_label_->setText(line_residual_text());
+  line_fit_label_->setText(lines_summary_text());
+}
+
+void ReprojectionTuner::set_picked_lines(std::vector<vision::PickedLine> lines) {
+  lines_ = std::move(lines);
+  update_overlays();
+  line_label_->setText(line_residual_text());
+  line_fit_label_->setText(lines_summary_text());
+}
+
+vision::LineFitResult ReprojectionTuner::fit_lens_to_lines() {
+  vision::LineFitOptions options;
+  options.fixed[1] = options.fixed[2] = !fit_centre_->isChecked();
+  const vision::LineFitResult fit = vision::fit_lens_to_lines(state_.params().lens, lines_, options);
+  state_.end_merge();
+  change("line fit", [&fit](auto& p) { p.lens = fit.lens; });
+  state_.end_merge();
+  const auto& lens = state_.params().lens;
+  line_fit_text_ = tr("Line fit over %1 lines, %2 points: straightness RMS %3 px before → %4 px after (max %5 → %6 "
+                      "px); Kannala-Brandt k = (%7, %8, %9, %10), image circle rim r = %11 px held (Detect circle "
+                      "measures it). Ctrl+Z undoes it.")
+                       .arg(fit.after.lines)
+                       .arg(fit.after.points)
+                       .arg(fit.before.rms_px, 0, 'f', 2)
+                       .arg(fit.after.rms_px, 0, 'f', 2)
+                       .arg(fit.before.max_px, 0, 'f', 2)
+                       .arg(fit.after.max_px, 0, 'f', 2)
+                       .arg(fit.lens.k[0], 0, 'g', 3)
+                       .arg(fit.lens.k[1], 0, 'g', 3)
+                       .arg(fit.lens.k[2], 0, 'g', 3)
+                       .arg(fit.lens.k[3], 0, 'g', 3)
+                       .arg(lens.radius(lens.fov_deg * kPi / 360).value_or(0), 0, 'f', 1);
+  line_fit_label_->setText(line_fit_text_);
+  line_label_->setText(line_residual_text());
+  return fit;
 }
 
 QString ReprojectionTuner::line_residual_text() const {
+  // The current line as the current lens maps it into the view.
   std::vector<cv::Point2d> pts;
-  for (const auto& q : line_points_) pts.emplace_back(q.x(), q.y());
+  const auto& s = state_.params();
+  if (!lines_.empty())
+    for (const auto& src : lines_.back())
+      if (const auto o = vision::view_pixel_of(s.lens, s.view, src)) pts.push_back(*o);
   if (pts.size() < 3) return tr("Line residual: click %1 more point(s)").arg(3 - static_cast<int>(pts.size()));
   try {
     const auto r = vision::line_residual(pts);

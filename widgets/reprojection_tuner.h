@@ -14,6 +14,7 @@
 #include <opencv2/core.hpp>
 
 #include "vision/circle_detect.h"
+#include "vision/line_fit.h"
 #include "vision/tuner_state.h"
 
 class QAction;
@@ -60,10 +61,22 @@ class ReprojectionTuner : public QWidget {
   QToolBar* tool_bar() const { return bar_; }  // for the Lens tab's own actions
   // Detect the image circle and apply the proposed principal point and r_pp as one undo step.
   std::optional<vision::ImageCircle> auto_calibrate();
-  // Straight-line tool: points in output image pixels; the residual is shown under the preview.
-  void add_line_point(QPointF output_px);
+  // Straight-line tool: points clicked on the output preview (output pixels), kept as source pixels, so they stay
+  // on the same scene points when the lens changes; the current line's residual is shown under the preview.
+  // Clicks where the view has no source are ignored (returns false).
+  bool add_line_point(QPointF output_px);
+  void add_source_point(const cv::Point2d& source_px);
+  void new_line();  // the next clicks start another line
   void clear_line_points();
   QString line_residual_text() const;
+  const std::vector<vision::PickedLine>& picked_lines() const { return lines_; }
+  void set_picked_lines(std::vector<vision::PickedLine> lines);
+  // Line refinement: fits r_pp, principal point and k1..k4 (Kannala-Brandt) to the picked lines, keeping the image
+  // circle's rim, and applies the result as one undo step. Throws std::invalid_argument (too few lines...).
+  vision::LineFitResult fit_lens_to_lines();
+  QString line_fit_text() const { return line_fit_text_; }
+  QString lines_summary_text() const;  // all picked lines' straightness under the current lens
+  QCheckBox* fit_centre_box() const { return fit_centre_; }  // off: the line fit keeps the principal point
   // Mask editing: while on, clicks on the fisheye preview add polygon points; a double click (or turning it off)
   // closes the polygon.
   void set_mask_editing(bool on);
@@ -101,7 +114,8 @@ class ReprojectionTuner : public QWidget {
   vision::TunerState state_;
   cv::Mat fisheye_;
   std::optional<vision::ImageCircle> circle_;
-  std::vector<QPointF> line_points_;
+  std::vector<vision::PickedLine> lines_;  // source pixels; the last one takes the clicks
+  QString line_fit_text_;
   vision::MaskPolygon editing_mask_;
   bool mask_editing_ = false;
   bool syncing_ = false;
@@ -117,7 +131,7 @@ class ReprojectionTuner : public QWidget {
   QAction *undo_, *redo_, *reset_;
   QToolBar* bar_ = nullptr;
   PreviewPane *fisheye_pane_, *output_pane_;
-  QLabel *status_, *line_label_;
+  QLabel *status_, *line_label_, *line_fit_label_;
   QComboBox* model_;
   QCheckBox* focal_mode_;
   QDoubleSpinBox *scale_spin_, *cx_, *cy_, *lens_fov_, *out_fov_;
@@ -127,6 +141,7 @@ class ReprojectionTuner : public QWidget {
   QDoubleSpinBox *yaw_, *pitch_, *roll_;
   QToolButton *mask_button_, *line_button_;
   QDoubleSpinBox* circle_fov_;
+  QCheckBox* fit_centre_;
 };
 
 }  // namespace bs::ui

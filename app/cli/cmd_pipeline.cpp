@@ -255,6 +255,8 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
                      : std::filesystem::path(detector_name.substr(0, detector_name.find(','))).filename().string();
   run.frame_width = lens.width;
   run.frame_height = lens.height;
+  // How the lens was obtained travels with the timings (the Pipeline view's Lens column).
+  run.provenance.settings.emplace_back("lens calibration", describe(lens.calibration));
   run.provenance.origin = DataOrigin::Measured;
   run.provenance.host = bs::host_name();
   run.provenance.date = bs::utc_timestamp();

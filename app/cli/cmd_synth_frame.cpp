@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli synth-frame: a synthetic capture with ground truth, to check a lens setup or feed the tests.
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,12 +16,38 @@
 #include "model/raw_sidecar.h"
 #include "synth_checkerboard.h"
 #include "vision/synthetic.h"
+#include "vision/synthetic_room.h"
+#include "vision/line_fit.h"
 
 namespace bs::cli {
 namespace {
 
+// Each 3D segment sampled at 1/48 steps, projected through the lens; runs of >= 6 points inside FOV and sensor.
+std::vector<vision::PickedLine> room_lines_in_image(const vision::Lens& lens, const std::vector<vision::Segment3d>& segs) {
+  std::vector<vision::PickedLine> out;
+  const cv::Point2d c = lens.centre();
+  for (const auto& seg : segs) {
+    vision::PickedLine run;
+    for (int i = 1; i <= 48; ++i) {
+      const cv::Vec3d v = seg.a * (1 - i / 49.0) + seg.b * (i / 49.0);
+      const cv::Vec3d u = v / cv::norm(v);
+      const auto r = lens.radius(std::acos(std::clamp(u[0], -1.0, 1.0)));
+      const double len = std::hypot(u[1], u[2]);
+      const cv::Point2d p = r && len > 0 ? cv::Point2d(c.x + *r * u[1] / len, c.y - *r * u[2] / len) : cv::Point2d(-1, -1);
+      if (p.x >= 0 && p.y >= 0 && p.x <= lens.width - 1 && p.y <= lens.height - 1) {
+        run.push_back(p);
+        continue;
+      }
+      if (run.size() >= 6) out.push_back(run);
+      run.clear();
+    }
+    if (run.size() >= 6) out.push_back(run);
+  }
+  return out;
+}
+
 int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
-  std::set<std::string> valued = {"--lens", "--size", "--pattern", "--bits", "--out", "--scene"};
+  std::set<std::string> valued = {"--lens", "--size", "--pattern", "--bits", "--out", "--scene", "--vignetting"};
   valued.insert(kCheckerboardSceneOptions.begin(), kCheckerboardSceneOptions.end());
   const ParsedArgs args = parse_args(raw_args, {}, valued);
   const auto prefix = args.value("--out");
@@ -51,16 +79,28 @@ int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
     if (args.value("--pattern")) throw UsageError("--pattern is for the Bayer chart; the checkerboard views are grey");
     return synth_checkerboard(args, lens, view, *prefix, bits, out);
   }
-  if (scene != "chart") throw UsageError("--scene must be chart or checkerboard");
+  if (scene != "chart" && scene != "room") throw UsageError("--scene must be chart, room or checkerboard");
+  // --noise and --seed shape the room scene too; the rest are the checkerboard's alone.
   for (const auto& o : kCheckerboardSceneOptions)
-    if (args.value(o)) throw UsageError(o + " belongs to --scene checkerboard");
+    if (args.value(o) && o != "--noise" && o != "--seed") throw UsageError(o + " belongs to --scene checkerboard");
+  if (scene == "chart" && (args.value("--noise") || args.value("--seed") || args.value("--vignetting")))
+    throw UsageError("--noise, --seed and --vignetting are for --scene room or checkerboard");
   vision::BayerPattern pattern;
   try {
     pattern = vision::bayer_pattern_from_string(args.value("--pattern").value_or("BGGR"));
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  const cv::Mat truth = vision::render_fisheye(lens, bits);
+  vision::RoomOptions room;
+  room.bits = bits;
+  room.vignetting = args.number("--vignetting", 0);
+  room.noise = args.number("--noise", 0);
+  room.seed = static_cast<std::uint64_t>(args.number("--seed", 1));
+  if (room.vignetting < 0 || room.vignetting >= 1) throw UsageError("--vignetting must be in [0, 1)");
+  if (room.noise < 0 || room.noise > 0.5) throw UsageError("--noise must be in [0, 0.5] (a fraction of full scale)");
+  if (scene == "chart" && (args.value("--vignetting") || args.value("--noise") || args.value("--seed")))
+    throw UsageError("--vignetting, --noise and --seed apply to --scene room");
+  const cv::Mat truth = scene == "room" ? vision::render_room_fisheye(lens, room) : vision::render_fisheye(lens, bits);
   const cv::Mat raw = vision::mosaic(truth, pattern);
   const std::filesystem::path parent = std::filesystem::path(*prefix).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -82,6 +122,12 @@ int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
   sidecar.lens_json = vision::lens_to_json(lens, view).dump();
   std::ofstream(json_path) << raw_sidecar_to_json(sidecar).dump(2) << '\n';
   if (!cv::imwrite(png_path, truth)) throw std::runtime_error(png_path + ": cannot write PNG");
+  if (scene == "room") {
+    // The room's grid lines as a user would pick them (true positions, every 1/48 of a wall), for refine-lines.
+    const auto lines = room_lines_in_image(lens, vision::room_grid_lines(vision::room_yaw(room.seed)));
+    vision::save_lines_json(lines, lens.width, lens.height, *prefix + "-lines.json");
+    out << "wrote " << *prefix << "-lines.json (" << lines.size() << " grid lines straight in 3D, source pixels)\n";
+  }
   out << "wrote " << raw_path << " (" << raw.cols << "x" << raw.rows << " " << vision::to_string(pattern) << ", "
       << bits << "-bit), " << json_path << ", " << png_path << '\n';
   return 0;
@@ -91,16 +137,23 @@ const CommandRegistrar registrar({
     "synth-frame",
     "render a synthetic Bayer capture of a test chart through a lens, with ground truth",
     "usage: benchscope-cli synth-frame --out PREFIX [--lens paper|LENS.json] [--size WxH] [--pattern BGGR|RGGB|GRBG|GBRG]\n"
-    "         [--bits 8|10|12|16]\n"
+    "         [--bits 8|10|12|16] [--scene chart|room] [--vignetting V] [--noise SIGMA] [--seed N]\n"
     "       benchscope-cli synth-frame --scene checkerboard --out PREFIX [--lens paper|LENS.json] [--size WxH]\n"
     "         [--board COLSxROWS] [--square MM] (--pose RX,RY,RZ,TX,TY,TZ[;...] | --poses FILE) [--bits 8|10|12|16]\n"
     "         [--noise SIGMA] [--blur PX] [--supersample N] [--seed S]\n"
     "  Writes PREFIX.raw (row-major samples; 16-bit little-endian above 8 bits), PREFIX.json (sidecar: size, pattern,\n"
     "  bit depth, endianness, lens, synthetic: true) and PREFIX-truth.png (the ground-truth colour image).\n"
+    "  --scene chart (default): a flat test chart in front of the camera. --scene room: the inside of a room whose\n"
+    "  walls carry a grid of dark lines (straight in 3D) and dark objects, lit all round, so the whole image circle\n"
+    "  is lit and dark lines reach its rim; --vignetting V (fraction of brightness lost at the rim, 0..1), --noise\n"
+    "  SIGMA (Gaussian, fraction of full scale) and --seed N (camera yaw in the room and noise) shape it; the\n"
+    "  truth PNG then holds the capture with vignetting and noise, and PREFIX-lines.json the grid lines' true\n"
+    "  image points (for lens refine-lines).\n"
     "  --scene checkerboard: a board of COLSxROWS squares (default 10x7) of MM millimetres (default 30) at each pose\n"
     "  (rotation in degrees, R = Rz Ry Rx; the board centre's position in mm; camera frame x forward, y right, z up;\n"
     "  a poses file has one pose per line), ray-traced through the lens with NxN samples per pixel (default 4):\n"
-    "  PREFIX-01.png... (grey), PREFIX.json (ground truth). --noise: Gaussian noise in grey levels; --blur: sigma, px.",
+    "  PREFIX-01.png... (grey), PREFIX.json (ground truth). --noise here: Gaussian noise in grey levels; --blur:\n"
+    "  sigma, px.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_synth(args, out);
     },

@@ -66,6 +66,8 @@ std::vector<PipelineTableRow> pipeline_table_rows(std::span<const PipelineRun> r
       row.throughput_fps = r.throughput_fps;
       row.origin = r.provenance.origin;
       row.provenance = provenance_text(r);
+      for (const auto& [key, value] : r.provenance.settings)
+        if (key == "lens calibration") row.lens_calibration = value;
       rows.push_back(std::move(row));
     }
   std::stable_sort(rows.begin(), rows.end(), [](const PipelineTableRow& a, const PipelineTableRow& b) {

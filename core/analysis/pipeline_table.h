@@ -26,6 +26,7 @@ struct PipelineTableRow {
   std::optional<double> throughput_fps;   // of the whole run, when measured
   DataOrigin origin = DataOrigin::Unknown;
   std::string provenance;                 // one paragraph: origin, note, host, date, file
+  std::string lens_calibration;           // how the run's lens was obtained (vision::describe); empty: not recorded
   std::string time_text() const;          // "6.21 ± 0.99 ms (n = 500)": SD to the mean's decimals
   std::string p95_text() const;           // "8.10", "–" when unknown
 };

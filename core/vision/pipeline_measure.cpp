@@ -60,6 +60,7 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   run.detector = "hog";
   run.frame_width = lens.width;
   run.frame_height = lens.height;
+  run.provenance.settings.emplace_back("lens calibration", describe(lens.calibration));
   run.provenance.origin = DataOrigin::Measured;
   run.provenance.host = bs::host_name();
   run.provenance.date = bs::utc_timestamp();

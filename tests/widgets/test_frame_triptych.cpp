@@ -9,6 +9,7 @@
 #include <QWheelEvent>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
 #include <QTest>
 
 #include <cstring>
@@ -89,6 +90,23 @@ class TestFrameTriptych : public QObject {
     QCOMPARE(max_diff(t.images().demosaiced, mhc.demosaiced), 0.0);
     QVERIFY(max_diff(t.images().demosaiced, want.demosaiced) > 0);  // the method really changed the pixels
     QVERIFY(t.captions()[1].contains("Malvar"));
+  }
+
+  void banner_says_how_the_lens_was_obtained() {
+    // Issue #20 part 4: the frame's lens file records its calibration; the Frames banner shows it.
+    Frame f = small_frame(8);
+    auto [lens, view] = vision::lens_from_json(nlohmann::json::parse(f.lens_json));
+    lens.calibration.method = vision::LensCalibration::Method::CircleFit;
+    lens.calibration.rms_px = 0.05;
+    f.lens_json = vision::lens_to_json(lens, view).dump();
+    ui::FrameTriptych t;
+    t.set_frame(f);
+    bool found = false;
+    for (const QLabel* l : t.findChildren<QLabel*>())
+      if (l->text().contains("Lens: recorded with the frame"))
+        found = l->text().contains("Obtained by: circle-fit, RMS 0.05 px");
+    QVERIFY(found);
+    QVERIFY(t.wait_until_rendered(30000));
   }
 
   void newest_lens_wins() {

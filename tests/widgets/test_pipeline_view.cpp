@@ -87,6 +87,7 @@ class TestPipelineView : public QObject {
                 {"end-to-end", 50, 0.22, 0.03, 0.16, 0.31, 0.21, 0.27}};
     m.provenance.origin = bs::DataOrigin::Measured;
     m.provenance.host = "vm-1";
+    m.provenance.settings.emplace_back("lens calibration", "line-fit, RMS 0.27 px; 27 lines");
     runs.push_back(m);
     PipelineView v;
     v.resize(1400, 360);
@@ -100,6 +101,9 @@ class TestPipelineView : public QObject {
     QCOMPARE(text(t, 0, PipelineView::Throughput), QString("4.25 fps"));
     QCOMPARE(text(t, 0, PipelineView::Data), QString("measured"));
     QVERIFY(t->item(0, PipelineView::Stage)->toolTip().contains("host vm-1"));
+    // How the run's lens was obtained (issue #20); reconstructed runs recorded none.
+    QCOMPARE(text(t, 0, PipelineView::LensColumn), QString("line-fit, RMS 0.27 px; 27 lines"));
+    QCOMPARE(text(t, 6, PipelineView::LensColumn), QString("–"));
     // Stages sort in pipeline order: preprocessing rows first, end to end last.
     t->sortByColumn(PipelineView::Stage, Qt::AscendingOrder);
     QCOMPARE(text(t, 0, PipelineView::Stage), QString("Preprocessing (demosaic + reprojection)"));

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli lens circle / refine-lines / show on a synthetic room capture with known truth (issue #20).
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+#include <cmath>
+
+#include "../support/cli_harness.h"
+
+using bs::test::bytes_of;
+using bs::test::cli;
+
+namespace {
+
+// The true lens: Kannala-Brandt, centre (652.3, 498.7), 195 degrees, rim radius 592.23 px (r_pp 0.0031).
+const char* kTruth = R"({"format":"benchscope-lens","version":1,"lens":{"model":"kannala-brandt","r_pp":0.0031,
+"k":[0.06,-0.02,0.003,0],"cx":652.3,"cy":498.7,"fov_deg":195,"width":1280,"height":1024},"view":{"width":1280,
+"height":1024,"fov_deg":150,"yaw_deg":0,"pitch_deg":0,"roll_deg":0}})";
+
+QJsonObject lens_of(const QString& path) { return QJsonDocument::fromJson(bytes_of(path)).object()["lens"].toObject(); }
+
+}  // namespace
+
+class TestCliLens : public QObject {
+  Q_OBJECT
+ private slots:
+  void circle_then_lines_recover_the_true_lens() {
+    QTemporaryDir dir;
+    const QString truth = dir.filePath("truth.json");
+    QFile f(truth);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(kTruth);
+    f.close();
+    const QString prefix = dir.filePath("room");
+    auto r = cli({"synth-frame", "--scene", "room", "--lens", truth, "--seed", "5", "--vignetting", "0.4", "--noise",
+                  "0.01", "--bits", "16", "--out", prefix});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY(r.out.contains("-lines.json"));
+    const QString circle = dir.filePath("circle.json");
+    r = cli({"lens", "circle", prefix + "-truth.png", "--out", circle});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.out.contains("calibration: circle-fit, RMS"), r.out.constData());
+    QJsonObject l = lens_of(circle);
+    qInfo("circle fit: centre (%.3f, %.3f)", l["cx"].toDouble(), l["cy"].toDouble());
+    QVERIFY(std::hypot(l["cx"].toDouble() - 652.3, l["cy"].toDouble() - 498.7) < 0.5);
+    QCOMPARE(l["calibration"].toObject()["method"].toString(), QString("circle-fit"));
+    // The grid lines' true points: the refined lens is the truth (exact clicks pin all 7 parameters).
+    const QString refined = dir.filePath("refined.json");
+    r = cli({"lens", "refine-lines", circle, prefix + "-lines.json", "--out", refined});
+    QVERIFY2(r.code == 0, r.err.constData());
+    qInfo("%s", r.out.constData());
+    l = lens_of(refined);
+    QCOMPARE(l["model"].toString(), QString("kannala-brandt"));
+    QVERIFY(std::hypot(l["cx"].toDouble() - 652.3, l["cy"].toDouble() - 498.7) < 0.1);
+    QVERIFY(std::abs(l["r_pp"].toDouble() - 0.0031) / 0.0031 < 0.002);
+    QVERIFY(std::abs(l["k"].toArray()[0].toDouble() - 0.06) < 0.002);
+    const QJsonObject cal = l["calibration"].toObject();
+    QCOMPARE(cal["method"].toString(), QString("line-fit"));
+    QVERIFY(cal["detail"].toString().contains("before"));
+    r = cli({"lens", "show", refined});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("calibration: line-fit, RMS"), r.out.constData());
+    // --fix keeps a parameter; a bad name is a usage error.
+    r = cli({"lens", "refine-lines", circle, prefix + "-lines.json", "--fix", "r_pp", "--out", refined});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(lens_of(refined)["r_pp"].toDouble(), lens_of(circle)["r_pp"].toDouble());
+    QCOMPARE(cli({"lens", "refine-lines", circle, prefix + "-lines.json", "--fix", "focal"}).code, 2);
+  }
+  void bad_lines_files_name_the_file_and_field() {
+    QTemporaryDir dir;
+    const QString lines = dir.filePath("lines.json");
+    QFile f(lines);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "benchscope-lines", "version": 1, "lines": [[[1, 2], [3, "x"]]]})");
+    f.close();
+    const QString lens = dir.filePath("lens.json");
+    QFile lf(lens);
+    QVERIFY(lf.open(QIODevice::WriteOnly));
+    lf.write(kTruth);
+    lf.close();
+    auto r = cli({"lens", "refine-lines", lens, lines});
+    QVERIFY(r.code != 0);
+    QVERIFY2(r.err.contains("lines.json") && r.err.contains("/lines/0/1"), r.err.constData());
+    // Too few lines: says so.
+    f.open(QIODevice::WriteOnly | QIODevice::Truncate);
+    f.write(R"({"format": "benchscope-lines", "version": 1, "lines": [[[1, 2], [3, 4], [5, 7]]]})");
+    f.close();
+    r = cli({"lens", "refine-lines", lens, lines});
+    QVERIFY(r.code != 0);
+    QVERIFY2(r.err.contains("at least 3 lines"), r.err.constData());
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCliLens)
+#include "test_cli_lens.moc"
