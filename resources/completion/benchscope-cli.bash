@@ -20,7 +20,7 @@ _benchscope_cli() {
     frames) options="--help --lens --method --out --triptych --window" ;;
     help) COMPREPLY=($(compgen -W "$commands" -- "$cur")); return ;;
     import) options="--help --copy-frames --keep-going --quiet --raw-geometry" ;;
-    lens) options="--help --circle-fov --circle-radius --fix --lens --min-level --out" ;;
+    lens) options="--help --board --circle-fov --circle-radius --fix --fov --lens --min-level --model --out --square" ;;
     peaks) options="--help --json --kind --precision" ;;
     pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
     platforms) options="--help --battery --budget --csv --extra-load --json --latex --min-fps --min-runtime --mission --supply-volts" ;;
@@ -30,7 +30,7 @@ _benchscope_cli() {
     roofline) options="--help --json" ;;
     run) options="--help --backend --device --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     sensors) options="--help --json --power --sensor --sysfs-root" ;;
-    synth-frame) options="--help --bits --lens --noise --out --pattern --scene --seed --size --vignetting" ;;
+    synth-frame) options="--help --bits --blur --board --lens --noise --out --pattern --pose --poses --scene --seed --size --square --supersample --vignetting" ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$options" -- "$cur"))
