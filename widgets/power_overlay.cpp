@@ -112,6 +112,10 @@ int PowerOverlayPanel::align_at(const std::string& name) {
   const std::vector<std::optional<double>> offsets = align_at_phase(phases_, name);
   for (std::size_t i = 0; i < offsets.size() && i < offsets_.size(); ++i)
     if (offsets[i]) offsets_[i] = *offsets[i], ++aligned;
+  {
+    const QSignalBlocker block(phase_box_);
+    phase_box_->setCurrentText(QString::fromStdString(name));  // shows what the offsets were aligned at
+  }
   fill_table();
   emit changed();
   return aligned;

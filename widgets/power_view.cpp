@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <qcustomplot.h>
 
 #include "analysis/decimate.h"
@@ -135,6 +136,7 @@ PowerView::PowerView(QWidget* parent)
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
   split->setChildrenCollapsible(false);
+  split->setSizes({620, 300});  // the plot first; the tables scroll
   layout->addWidget(split, 1);
   read_battery();
 }
@@ -270,7 +272,9 @@ void PowerView::place_phase_markers() {
     std::vector<TracePhase> phases = traces_[i].trace.phases;
     if (i < detected_.size()) phases.insert(phases.end(), detected_[i].begin(), detected_[i].end());
     for (TracePhase& p : phases) p.start_s += offset(i), p.end_s += offset(i);
-    add_phase_markers(plot_, phases, device_color(colors_[i]));  // marks, runs, saved selections, level changes
+    // Marks, runs, saved selections, level changes; up to 60 named (idle and load alternate: naming every second
+    // one would name only one kind).
+    add_phase_markers(plot_, phases, device_color(colors_[i]), 60);
   }
   cursors_->rebuild_items();
 }
@@ -450,24 +454,27 @@ void PowerView::update_phase_table() {
   const RangeSignal signal = quantity_ == Quantity::Current ? RangeSignal::Current : RangeSignal::Power;
   std::vector<std::string> headers = {"phase", "trace", "origin", "from (s)", "to (s)"};
   for (std::string& h : range_headers(signal)) headers.push_back(std::move(h));
+  // Rows are grouped by (name, k-th occurrence in its trace), groups in first-seen order: one trace's phases stay in
+  // time order (as `power --phases` prints them), and with several traces the k-th "load" of each stands together.
   struct Row {
-    std::string phase;
-    std::size_t order;  // first appearance of the phase name: the same phase of every trace stays together
+    std::size_t order;
     std::vector<std::string> cells;
   };
   std::vector<Row> rows;
-  std::vector<std::string> order;
+  std::vector<std::pair<std::string, int>> groups;
   for (std::size_t i = 0; i < traces_.size(); ++i) {
     if (!overlay_->visible(i)) continue;
+    std::map<std::string, int> seen;
     for (const PhaseStatsRow& p : phase_stats_rows(index_[i], traces_[i].trace.phases, detected_[i])) {
-      auto it = std::find(order.begin(), order.end(), p.name);
-      if (it == order.end()) it = order.insert(order.end(), p.name);
+      const std::pair<std::string, int> key{p.name, seen[p.name]++};
+      auto it = std::find(groups.begin(), groups.end(), key);
+      if (it == groups.end()) it = groups.insert(groups.end(), key);
       char from[32], to[32];
       std::snprintf(from, sizeof from, "%.3f", p.start_s);
       std::snprintf(to, sizeof to, "%.3f", p.end_s);
       std::vector<std::string> cells = {p.name, platform_name(traces_[i].trace).toStdString(), p.origin, from, to};
       for (std::string& c : range_cells(p.stats, signal)) cells.push_back(std::move(c));
-      rows.push_back({p.name, static_cast<std::size_t>(it - order.begin()), std::move(cells)});
+      rows.push_back({static_cast<std::size_t>(it - groups.begin()), std::move(cells)});
     }
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.order < b.order; });

@@ -315,13 +315,21 @@ class TestPowerSelection : public QObject {
     view.cursors()->set(21.05, 48.73);
     view.panels()->setCurrentIndex(0);
     save_shot(&view, "power-cursors.png");
-    // The Jetson shifted onto the NUC: aligned at each log's first load step.
+    // The Jetson shifted onto the NUC: aligned at each log's first load step (found from level changes), the
+    // selection over that step, their statistics side by side.
     view.set_detected_phases(true);
-    view.overlay()->align_at("load");
+    QCOMPARE(view.overlay()->align_at("load"), 2);
+    view.set_detected_phases(false);  // offsets stay; the plot without the shading
+    view.cursors()->set(0.0, 5.0);
+    view.plot()->xAxis->setRange(-3, 30);
     view.panels()->setCurrentIndex(3);
     save_shot(&view, "power-overlay.png");
+    view.panels()->setCurrentIndex(0);
+    save_shot(&view, "power-overlay-selection.png");
     view.overlay()->set_offset(0, 0), view.overlay()->set_offset(1, 0);
     view.cursors()->clear();
+    view.set_detected_phases(true);
+    view.plot()->xAxis->setRange(0, 40);
     view.panels()->setCurrentIndex(1);
     save_shot(&view, "power-phases.png");
   }
