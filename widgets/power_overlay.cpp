@@ -72,11 +72,18 @@ void PowerOverlayPanel::set_traces(const std::vector<QString>& names, std::vecto
     connect(spin, &QDoubleSpinBox::valueChanged, this, [this, r](double v) { set_offset(static_cast<std::size_t>(r), v); });
     table_->setCellWidget(r, 2, spin);
   }
+  set_phases(std::move(phases_));
+}
+
+void PowerOverlayPanel::set_phases(std::vector<std::vector<TracePhase>> phases) {
+  phases_ = std::move(phases);
+  const QString current = phase_box_->currentText();
   const QSignalBlocker block(phase_box_);
   phase_box_->clear();
   // Names two traces share come first; with one trace, its own phases.
   std::vector<std::string> names_shared = shared_phase_names(phases_, phases_.size() > 1 ? 2 : 1);
   for (const std::string& n : names_shared) phase_box_->addItem(QString::fromStdString(n));
+  if (phase_box_->findText(current) >= 0) phase_box_->setCurrentText(current);
   align_->setEnabled(phase_box_->count() > 0);
 }
 

@@ -22,6 +22,8 @@ class PowerOverlayPanel : public QWidget {
   explicit PowerOverlayPanel(QWidget* parent = nullptr);
   // One row per trace: its name and phases (for alignment). Offsets reset to 0, every trace shown.
   void set_traces(const std::vector<QString>& names, std::vector<std::vector<TracePhase>> phases);
+  // New phases to align at (detected ones added or removed), offsets and visibility kept.
+  void set_phases(std::vector<std::vector<TracePhase>> phases);
   double offset(std::size_t trace) const { return trace < offsets_.size() ? offsets_[trace] : 0.0; }
   bool visible(std::size_t trace) const { return trace < visible_.size() ? visible_[trace] : true; }
   void set_offset(std::size_t trace, double seconds);  // emits changed()

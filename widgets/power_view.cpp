@@ -130,13 +130,12 @@ PowerView::PowerView(QWidget* parent)
   top->addWidget(detect_box_);
   top->addWidget(hint, 1);
   layout->addLayout(top);
-  auto* split = new QSplitter(Qt::Vertical, this);
+  auto* split = split_ = new QSplitter(Qt::Vertical, this);
   split->addWidget(plot_);
   split->addWidget(panels_);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
   split->setChildrenCollapsible(false);
-  split->setSizes({620, 300});  // the plot first; the tables scroll
   layout->addWidget(split, 1);
   read_battery();
 }
@@ -145,6 +144,15 @@ void PowerView::set_workspace(Workspace* workspace) {
   workspace_ = workspace;
   read_battery();
   update_table();
+}
+
+void PowerView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  // The first real size: about 60 % plot, 40 % tables (the user's splitter position is kept afterwards).
+  if (!split_placed_ && height() > 300) {
+    split_->setSizes({height() * 3 / 5, height() * 2 / 5});
+    split_placed_ = true;
+  }
 }
 
 void PowerView::showEvent(QShowEvent* event) {
@@ -238,16 +246,7 @@ void PowerView::set_detected_phases(bool on) {
     phases.push_back(traces_[i].trace.phases);
     phases.back().insert(phases.back().end(), detected_[i].begin(), detected_[i].end());
   }
-  std::vector<QString> names;
-  for (const StoredPowerTrace& s : traces_) names.push_back(platform_name(s.trace));
-  std::vector<double> offsets;
-  std::vector<bool> visible;
-  for (std::size_t i = 0; i < traces_.size(); ++i) offsets.push_back(overlay_->offset(i)), visible.push_back(overlay_->visible(i));
-  {
-    const QSignalBlocker block(overlay_);
-    overlay_->set_traces(names, std::move(phases));
-    for (std::size_t i = 0; i < traces_.size(); ++i) overlay_->set_offset(i, offsets[i]), overlay_->set_visible(i, visible[i]);
-  }
+  overlay_->set_phases(std::move(phases));
   place_phase_markers();
   update_phase_table();
 }

@@ -12,6 +12,7 @@ class QCheckBox;
 class QComboBox;
 class QCustomPlot;
 class QTableWidget;
+class QSplitter;
 class QTabWidget;
 
 namespace bs::ui {
@@ -67,6 +68,7 @@ class PowerView : public QWidget {
 
  protected:
   void showEvent(QShowEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   void redraw_visible();
@@ -87,6 +89,8 @@ class PowerView : public QWidget {
   std::vector<int> colors_;          // per trace: colour index
   QCustomPlot* plot_;
   QTabWidget* panels_;
+  QSplitter* split_ = nullptr;
+  bool split_placed_ = false;
   QTableWidget* table_;
   PowerStatsPanel* selection_;
   PowerStatsPanel* phases_;

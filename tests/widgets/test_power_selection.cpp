@@ -330,6 +330,10 @@ class TestPowerSelection : public QObject {
     view.cursors()->clear();
     view.set_detected_phases(true);
     view.plot()->xAxis->setRange(0, 40);
+    int load_labels = 0;
+    for (int k = 0; k < view.plot()->itemCount(); ++k)
+      if (auto* text = qobject_cast<QCPItemText*>(view.plot()->item(k)); text && text->text() == "load") ++load_labels;
+    QVERIFY(load_labels > 10);  // every detected phase is named, not every second one
     view.panels()->setCurrentIndex(1);
     save_shot(&view, "power-phases.png");
   }
