@@ -16,6 +16,7 @@
 #include "analysis/stats.h"
 #include "args.h"
 #include "bench_pipeline.h"
+#include "bench_range_stats.h"
 #include "bench_tuner.h"
 #include "bench_vision.h"
 #include "command.h"
@@ -252,7 +253,7 @@ int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
 
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate)",
+    "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate | range-stats)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--power SENSOR|auto] [--power-interval-ms M]\n"
     "         [--sysfs-root DIR]   (--power: also the sampler's cost, with / without, and the energy per run)\n"
     "       benchscope-cli bench vision [--frames F] [--threads T] [--power SENSOR|auto]\n"
@@ -262,6 +263,8 @@ const CommandRegistrar registrar({
     "       benchscope-cli bench tuner [--frames F] [--step S]\n"
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
+    "       benchscope-cli bench range-stats [--samples N] [--updates U]   (the Power tab's selection statistics per\n"
+    "         mouse move on an N-sample trace, default 10,000,000, vs a plain rescan of the range)\n"
     "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
     "  median and mean \xC2\xB1 SD of R\n"
     "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU SIMD\n"
@@ -279,7 +282,9 @@ const CommandRegistrar registrar({
       if (!args.empty() && args[0] == "tuner") return bench_tuner(rest, out);
       if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
       if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
-      throw UsageError("expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv' or 'bench decimate'");
+      if (!args.empty() && args[0] == "range-stats") return bench_range_stats(rest, out);
+      throw UsageError("expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv', "
+                       "'bench decimate' or 'bench range-stats'");
     },
 });
 

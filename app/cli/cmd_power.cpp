@@ -18,6 +18,7 @@
 #include "analysis/plausibility.h"
 #include "analysis/power_phases.h"
 #include "analysis/power_stats.h"
+#include "analysis/range_table.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"
@@ -25,6 +26,7 @@
 #include "power_csv.h"
 #include "power_import.h"
 #include "signals.h"
+#include "text_table.h"
 
 namespace bs::cli {
 
@@ -110,23 +112,29 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   for (const LoadedTrace& lt : traces) {
     const PowerTrace& t = lt.trace;
     for (const std::string& w : lt.warnings) err << "warning: " << w << '\n';
-    const PowerStats s = power_stats(t, stats_options);
+    // One index per log answers the whole range and every phase (analysis/power_stats.h: the Power tab asks the
+    // same index type, so both show the same numbers).
+    const PowerIndex index(t, stats_options.supply_v);
+    const PowerStats s = index.stats(stats_options.from_s, stats_options.to_s);
     const std::vector<PlausibilityFlag> flags = check_power_trace_bundled(t);  // of the whole log, not the range
-    std::vector<DetectedPhase> phases;
-    if (args.has("--phases")) {
-      const PowerSeries p = derive_power(t, stats_options.supply_v);
-      // No power: the levels of the main current channel (the named total, else the first).
-      const PowerChannel* signal = main_channel(t, PowerQuantity::Current);
-      if (!p.values.empty()) phases = detect_phases(t.time_s, p.values, phase_options);
-      else if (signal) phases = detect_phases(t.time_s, signal->values, phase_options);
-    }
+    std::vector<PhaseStatsRow> phases;
+    if (args.has("--phases"))  // the log's own phases (PTDaemon marks, runs, saved selections), then level changes
+      phases = phase_stats_rows(index, t.phases, detect_level_phases(index, phase_options));
     if (json) {
       nlohmann::json channels = nlohmann::json::array();
       for (const ChannelStats& c : s.channels)
         channels.push_back({{"name", c.name}, {"unit", std::string(unit_of(c.quantity))}, {"stats", signal_json(c.stats)}});
       nlohmann::json phase_list = nlohmann::json::array();
-      for (const DetectedPhase& p : phases)
-        phase_list.push_back({{"name", p.name}, {"start_s", p.start_s}, {"end_s", p.end_s}, {"mean", p.mean}});
+      for (const PhaseStatsRow& p : phases) {
+        const PowerStats& ps = p.stats;
+        const auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+        phase_list.push_back({{"name", p.name}, {"origin", p.origin}, {"start_s", p.start_s}, {"end_s", p.end_s},
+                              {"n", ps.n}, {"duration_s", ps.duration_s},
+                              {"mean", ps.power_w ? ps.power_w->summary.mean : ps.current_a ? ps.current_a->summary.mean : 0.0},
+                              {"current_a", signal_json(ps.current_a)}, {"power_w", signal_json(ps.power_w)},
+                              {"charge_c", opt(ps.charge_c)}, {"energy_j", opt(ps.energy_j)},
+                              {"mean_power_w", opt(ps.mean_power_w)}});
+      }
       list.push_back({{"platform", t.platform},
                       {"label", t.label},
                       {"source_file", t.provenance.source_file},
@@ -145,6 +153,7 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
                       {"power_w", signal_json(s.power_w)},
                       {"energy_j", s.energy_j ? nlohmann::json(*s.energy_j) : nlohmann::json(nullptr)},
                       {"charge_c", s.charge_c ? nlohmann::json(*s.charge_c) : nlohmann::json(nullptr)},
+                      {"mean_power_w", s.mean_power_w ? nlohmann::json(*s.mean_power_w) : nlohmann::json(nullptr)},
                       {"channels", channels},
                       {"phases", phase_list},
                       {"warnings", lt.warnings},
@@ -166,17 +175,28 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
       out << "  power    unknown: the log has current only; give --supply-volts\n";
     }
     if (s.energy_j)
-      out << "  energy   " << fmt("%.1f", *s.energy_j) << " J (" << fmt("%.4f", *s.energy_j / 3600) << " Wh), trapezoidal\n";
+      out << "  energy   " << fmt("%.1f", *s.energy_j) << " J (" << fmt("%.4f", *s.energy_j / 3600)
+          << " Wh), trapezoidal; mean power " << fmt("%.3f", s.mean_power_w.value_or(0)) << " W over " << fmt("%.3f", s.duration_s) << " s\n";
+    if (s.charge_c)
+      out << "  charge   " << fmt("%.2f", *s.charge_c) << " C (" << fmt("%.2f", *s.charge_c / 3.6) << " mAh)\n";
     if (s.channels.size() > 1) {
       out << "  channels\n";
       for (const ChannelStats& c : s.channels) out << "    " << c.name << ": " << signal_line(c.stats, unit_of(c.quantity)) << '\n';
     }
     if (args.has("--phases")) {
-      out << "  phases (level changes; min " << fmt("%g", phase_options.min_phase_s) << " s)\n";
-      for (const DetectedPhase& p : phases) {
-        std::snprintf(line, sizeof line, "    %-5s %9.3f .. %9.3f s  level %.3f\n", p.name.c_str(), p.start_s, p.end_s, p.mean);
-        out << line;
+      // The Power tab's per-phase table (analysis/range_table.h): the same columns and numbers.
+      out << "  phases (the log's own, then level changes of at least " << fmt("%g", phase_options.min_phase_s) << " s)\n";
+      const RangeSignal signal = default_signal(s);
+      std::vector<std::string> header = {"phase", "origin", "from (s)", "to (s)"};
+      for (std::string& h : range_headers(signal)) header.push_back(std::move(h));
+      TextTable table(std::move(header));
+      for (const PhaseStatsRow& p : phases) {
+        std::vector<std::string> row = {p.name, p.origin, fmt("%.3f", p.start_s), fmt("%.3f", p.end_s)};
+        for (std::string& c : range_cells(p.stats, signal)) row.push_back(std::move(c));
+        table.add(std::move(row));
       }
+      if (table.empty()) out << "  (none)\n";
+      else table.print(out);
     }
   }
   if (json) out << nlohmann::json{{"format", "benchscope-power"}, {"version", 2}, {"traces", list}}.dump(2) << '\n';
@@ -324,7 +344,10 @@ const CommandRegistrar registrar({
     "  Per log: current and power (a power channel, else I x a voltage channel, else I x the supply voltage of a\n"
     "  current-only log) as mean \xC2\xB1 SD (n), min, p5/p50/p95/p99, max; energy (trapezoidal) and every channel (e.g.\n"
     "  tegrastats rails), over the whole log or seconds [S, S] from its start. --interval: seconds between\n"
-    "  tegrastats lines without timestamps (default 1). --phases: load phases from level changes.\n"
+    "  tegrastats lines without timestamps (default 1). A range cut between samples is interpolated at its ends.\n"
+    "  --phases: a statistics table per phase (n, duration, mean, SD, min, max, p2p, p5/p50/p95, charge, energy,\n"
+    "  mean power), for the log's own phases (PTDaemon marks, BenchScope's runs, selections saved in the Power tab)\n"
+    "  and load phases found from level changes (--min-phase S, default 2; --min-step X in the signal's unit).\n"
     "  Formats: power CSV (generic, Joulescope, Otii, INA219 loggers), NVIDIA tegrastats, nvidia-smi --query-gpu\n"
     "  CSV (one trace per GPU), perf stat RAPL energy and SPEC PTDaemon (MLPerf spl.txt; marks as phases).",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

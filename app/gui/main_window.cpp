@@ -252,6 +252,7 @@ void MainWindow::reload() {
   std::vector<std::string> trace_platforms;
   for (const auto& t : traces) trace_platforms.push_back(t.trace.platform);
   platform_colors = platform_color_indices(platform_colors, std::move(trace_platforms));  // one per platform
+  power_->set_workspace(workspace_.get());  // saved phases go there; the battery pack comes from it
   power_->set_data(traces, bs::peak_table(all), platform_colors);
   std::vector<PowerTrace> plain_traces;
   for (const auto& t : traces) plain_traces.push_back(t.trace);

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/power.h"
 
+#include "analysis/power_stats.h"
+#include "analysis/trace_index.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -45,55 +48,27 @@ std::vector<double> power_series(const PowerTrace& trace, std::optional<double> 
   return out;
 }
 
-double percentile(std::vector<double> values, double q) {
-  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }), values.end());
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const double pos = std::clamp(q, 0.0, 100.0) / 100.0 * static_cast<double>(values.size() - 1);
-  const auto lo = static_cast<std::size_t>(pos);
-  const std::size_t hi = std::min(lo + 1, values.size() - 1);
-  return values[lo] + (values[hi] - values[lo]) * (pos - static_cast<double>(lo));
-}
-
-double median(std::vector<double> values) { return percentile(std::move(values), 50); }
-
 double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values) {
   const std::size_t n = std::min(time_s.size(), values.size());
-  double sum = 0;
-  std::size_t prev = n;  // the last present sample, n while none
-  for (std::size_t k = 0; k < n; ++k) {
-    if (std::isnan(values[k])) continue;  // bridged: the next present sample joins `prev`
-    if (prev < n) sum += (time_s[k] - time_s[prev]) * (values[k] + values[prev]) / 2;
-    prev = k;
-  }
-  return sum;
+  const TraceIndex index(std::span<const double>(time_s).first(n), std::span<const double>(values).first(n));
+  return index.integral(index.first_s(), index.last_s());
 }
 
 TraceStats trace_stats(const PowerTrace& trace, std::optional<double> supply_v, std::optional<double> from_s,
                        std::optional<double> to_s) {
-  std::size_t first = 0, last = trace.time_s.size();
-  if (from_s) first = static_cast<std::size_t>(std::lower_bound(trace.time_s.begin(), trace.time_s.end(), *from_s) - trace.time_s.begin());
-  if (to_s) last = static_cast<std::size_t>(std::upper_bound(trace.time_s.begin(), trace.time_s.end(), *to_s) - trace.time_s.begin());
+  const PowerStats p = power_stats(trace, {.supply_v = supply_v, .from_s = from_s, .to_s = to_s});
   TraceStats s;
-  if (first >= last) return s;
-  s.n = last - first;
-  s.duration_s = trace.time_s[last - 1] - trace.time_s[first];
-  const auto slice = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(first), v.begin() + static_cast<std::ptrdiff_t>(last)); };
-  const std::vector<double> current = current_series(trace);
-  if (!current.empty()) {
-    const Summary c = summarize_samples(slice(current));
-    if (c.n > 0) s.current_a = c;  // every sample missing: unknown, not 0 A
+  s.n = p.n;
+  s.duration_s = p.duration_s;
+  if (p.current_a) s.current_a = p.current_a->summary;
+  if (p.power_w) {
+    s.power_w = p.power_w->summary;
+    s.power_p5 = p.power_w->pct.p5;
+    s.power_p50 = p.power_w->pct.p50;
+    s.power_p95 = p.power_w->pct.p95;
+    s.power_p99 = p.power_w->pct.p99;
   }
-  const std::vector<double> power = power_series(trace, supply_v);
-  const std::vector<double> p = power.empty() ? std::vector<double>{} : slice(power);
-  if (const Summary sp = summarize_samples(p); sp.n > 0) {
-    s.power_w = sp;
-    s.power_p5 = percentile(p, 5);
-    s.power_p50 = percentile(p, 50);
-    s.power_p95 = percentile(p, 95);
-    s.power_p99 = percentile(p, 99);
-    s.energy_j = integrate_trapezoid(slice(trace.time_s), p);
-  }
+  s.energy_j = p.energy_j.value_or(0);
   return s;
 }
 

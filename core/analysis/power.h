@@ -27,14 +27,12 @@ std::vector<double> current_series(const PowerTrace& trace);  // empty without a
 // n, mean, sample SD, min, max of the present (non-NaN) values.
 Summary summarize_samples(std::span<const double> values) noexcept;
 
-// Linear-interpolated percentile q in [0, 100] of the present values (copied and sorted); 0 when none.
-double percentile(std::vector<double> values, double q);
-// percentile(values, 50): the middle value, or the mean of the middle two for an even count.
-double median(std::vector<double> values);
+// percentile() and median() are in analysis/stats.h.
 
-// Trapezoidal integral of `values` over irregular timestamps `time_s` (J for W). A missing sample is bridged: the
-// trapezoid joins the present samples on either side of the gap (a straight line across it, as the plot draws
-// it); before the first and after the last present sample nothing is counted.
+// Trapezoidal integral of `values` over irregular timestamps `time_s` (J for W) over the whole trace: a thin call
+// to TraceIndex::integral (analysis/trace_index.h). A missing sample is bridged: the trapezoid joins the present
+// samples on either side of the gap (a straight line across it, as the plot draws it); before the first and after
+// the last present sample nothing is counted.
 double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values);
 
 struct TraceStats {
@@ -45,7 +43,9 @@ struct TraceStats {
   double power_p5 = 0, power_p50 = 0, power_p95 = 0, power_p99 = 0;
   double energy_j = 0;
 };
-// Over [from_s, to_s] (seconds from the start of the trace; unset = whole trace).
+// Over [from_s, to_s] (seconds from the start of the trace; unset = whole trace): a thin call to power_stats()
+// (analysis/power_stats.h), kept for callers that want the short form. Duration and energy follow its definition
+// (interpolated range ends).
 TraceStats trace_stats(const PowerTrace& trace, std::optional<double> supply_v = std::nullopt,
                        std::optional<double> from_s = std::nullopt, std::optional<double> to_s = std::nullopt);
 

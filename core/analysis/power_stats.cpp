@@ -11,46 +11,20 @@
 namespace bs {
 namespace {
 
-// Linear interpolation at `at` between the samples around it; `t` and `v` hold present samples only.
-double interpolate(std::span<const double> t, std::span<const double> v, double at) {
-  const auto hi = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), at) - t.begin());
-  if (hi == 0) return v.front();
-  if (hi >= t.size()) return v.back();
-  const std::size_t lo = hi - 1;
-  const double span = t[hi] - t[lo];
-  if (span <= 0) return v[hi];
-  return v[lo] + (v[hi] - v[lo]) * (at - t[lo]) / span;
-}
-
 // The trace's main channel of quantity q (its named total, else the first: analysis/power.h).
 const PowerChannel* first_channel(const PowerTrace& t, PowerQuantity q) { return main_channel(t, q); }
 
-double integrate_present(std::span<const double> t, std::span<const double> v, double from_s, double to_s);
+SignalStats signal_of(const TraceIndex& index, const RangeSummary& r, double from_s, double to_s, bool with_percentiles) {
+  SignalStats s;
+  s.summary = r.samples;
+  s.has_percentiles = with_percentiles;
+  if (with_percentiles) s.pct = index.percentiles(from_s, to_s);
+  return s;
+}
 
 }  // namespace
 
-Percentiles percentiles(std::span<const double> values) {
-  Percentiles p;
-  std::vector<double> sorted;
-  sorted.reserve(values.size());
-  for (double v : values)
-    if (!std::isnan(v)) sorted.push_back(v);  // missing samples are skipped, never read as 0
-  if (sorted.empty()) return p;
-  std::sort(sorted.begin(), sorted.end());
-  const auto at = [&](double q) {
-    const double pos = q / 100.0 * static_cast<double>(sorted.size() - 1);
-    const auto lo = static_cast<std::size_t>(pos);
-    const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-    return sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - static_cast<double>(lo));
-  };
-  p.p5 = at(5);
-  p.p50 = at(50);
-  p.p95 = at(95);
-  p.p99 = at(99);
-  return p;
-}
-
-SignalStats signal_stats(std::span<const double> values) { return {summarize_samples(values), percentiles(values)}; }
+SignalStats signal_stats(std::span<const double> values) { return {summarize_samples(values), percentiles(values), true}; }
 
 std::string_view to_string(PowerSource source) {
   switch (source) {
@@ -100,80 +74,107 @@ PowerSeries derive_power(const PowerTrace& trace, std::optional<double> supply_v
 
 double integrate_range(std::span<const double> t, std::span<const double> v, double from_s, double to_s) {
   const std::size_t n = std::min(t.size(), v.size());
-  t = t.first(n);
-  v = v.first(n);
-  if (std::none_of(v.begin(), v.end(), [](double x) { return std::isnan(x); })) return integrate_present(t, v, from_s, to_s);
-  // Missing samples: integrate the present ones, so a gap is bridged by the straight line between its neighbours
-  // and the range shrinks to the first..last present sample (analysis/power.h says the same for
-  // integrate_trapezoid).
-  std::vector<double> tp, vp;
-  for (std::size_t k = 0; k < n; ++k)
-    if (!std::isnan(v[k])) {
-      tp.push_back(t[k]);
-      vp.push_back(v[k]);
-    }
-  return integrate_present(tp, vp, from_s, to_s);
-}
-
-namespace {
-
-double integrate_present(std::span<const double> t, std::span<const double> v, double from_s, double to_s) {
-  const std::size_t n = t.size();
-  if (n < 2 || !(to_s > from_s)) return 0;
-  from_s = std::max(from_s, t.front());
-  to_s = std::min(to_s, t.back());
   if (!(to_s > from_s)) return 0;
-  // Samples strictly inside (from, to), with the interpolated end values as the outer trapezoids' corners.
-  auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), from_s) - t.begin());
-  double prev_t = from_s, prev_v = interpolate(t, v, from_s), sum = 0;
-  for (; k < n && t[k] < to_s; ++k) {
-    sum += (t[k] - prev_t) * (v[k] + prev_v) / 2;
-    prev_t = t[k];
-    prev_v = v[k];
-  }
-  sum += (to_s - prev_t) * (interpolate(t, v, to_s) + prev_v) / 2;
-  return sum;
+  return TraceIndex(t.first(n), v.first(n)).integral(from_s, to_s);
 }
 
-}  // namespace
+PowerIndex::PowerIndex(const PowerTrace& trace, std::optional<double> supply_v) {
+  const PowerChannel* main_current = first_channel(trace, PowerQuantity::Current);
+  const PowerChannel* main_power = first_channel(trace, PowerQuantity::Power);
+  for (const PowerChannel& c : trace.channels) {
+    if (c.values.size() != trace.time_s.size()) continue;
+    if (&c == main_current) current_ = static_cast<int>(channels_.size());
+    if (&c == main_power) power_ = static_cast<int>(channels_.size());
+    channels_.push_back({c.name, c.quantity, TraceIndex(trace.time_s, c.values)});
+  }
+  if (main_power) {
+    source_ = PowerSource::Channel;
+    if (supply_v && !(*supply_v > 0)) throw std::invalid_argument("the supply voltage must be > 0 V");
+    note_missing_rows(trace);
+    return;
+  }
+  PowerSeries p = derive_power(trace, supply_v);  // current x voltage or x supply: its own index
+  source_ = p.source;
+  supply_v_ = p.supply_v;
+  if (!p.values.empty()) derived_power_ = TraceIndex(trace.time_s, p.values);
+  note_missing_rows(trace);
+}
+
+void PowerIndex::note_missing_rows(const PowerTrace& trace) {
+  // The rows where the main signal has no value still count as rows of the range (PowerStats::n).
+  const PowerChannel* main_power = first_channel(trace, PowerQuantity::Power);
+  const PowerChannel* main_current = first_channel(trace, PowerQuantity::Current);
+  const PowerChannel* voltage = first_channel(trace, PowerQuantity::Voltage);
+  for (std::size_t k = 0; k < trace.time_s.size(); ++k) {
+    bool missing = true;
+    if (main_power) missing = std::isnan(main_power->values[k]);
+    else if (main_current && source_ != PowerSource::Unknown)
+      missing = std::isnan(main_current->values[k]) || (source_ == PowerSource::CurrentTimesVoltage && std::isnan(voltage->values[k]));
+    else if (main_current) missing = std::isnan(main_current->values[k]);
+    if (missing) missing_t_.push_back(trace.time_s[k]);
+  }
+}
+
+const TraceIndex* PowerIndex::power() const {
+  if (power_ >= 0) return &channels_[static_cast<std::size_t>(power_)].index;
+  return source_ == PowerSource::Unknown ? nullptr : &derived_power_;
+}
+
+const TraceIndex* PowerIndex::main() const {
+  if (const TraceIndex* p = power(); p && !p->empty()) return p;
+  if (const TraceIndex* c = current(); c && !c->empty()) return c;
+  return nullptr;
+}
+
+PowerStats PowerIndex::stats(std::optional<double> from, std::optional<double> to, bool with_percentiles) const {
+  if (from && to && *to < *from) throw std::invalid_argument("the range ends before it starts");
+  PowerStats s;
+  s.power_source = source_;
+  s.supply_v = supply_v_;
+  const TraceIndex* main_signal = main();
+  if (!main_signal) {
+    // Neither power nor current: the channels alone (e.g. a voltage-only log).
+    for (const Channel& c : channels_) {
+      const RangeSummary r = c.index.summary(from.value_or(c.index.first_s()), to.value_or(c.index.last_s()));
+      s.channels.push_back({c.name, c.quantity, signal_of(c.index, r, r.from_s, r.to_s, with_percentiles)});
+    }
+    return s;
+  }
+  // The range is the main signal's, clamped to its samples; every other signal is asked over the same range.
+  const RangeSummary m = main_signal->summary(from.value_or(main_signal->first_s()), to.value_or(main_signal->last_s()));
+  if (from && *from > main_signal->last_s()) return s;  // entirely after the log: nothing inside
+  if (to && *to < main_signal->first_s()) return s;
+  s.from_s = m.from_s;
+  s.to_s = m.to_s;
+  s.duration_s = m.duration_s;
+  s.n = m.samples.n + static_cast<std::size_t>(std::upper_bound(missing_t_.begin(), missing_t_.end(), s.to_s) -
+                                               std::lower_bound(missing_t_.begin(), missing_t_.end(), s.from_s));
+  for (const Channel& c : channels_) {
+    const RangeSummary r = c.index.summary(s.from_s, s.to_s);
+    s.channels.push_back({c.name, c.quantity, signal_of(c.index, r, s.from_s, s.to_s, with_percentiles)});
+  }
+  if (const TraceIndex* i = current()) {
+    const RangeSummary r = i->summary(s.from_s, s.to_s);
+    if (r.samples.n > 0) {  // every sample missing: unknown, not 0 A
+      s.current_a = signal_of(*i, r, s.from_s, s.to_s, with_percentiles);
+      s.charge_c = r.integral;
+    }
+  }
+  if (const TraceIndex* p = power()) {
+    const RangeSummary r = p->summary(s.from_s, s.to_s);
+    if (r.samples.n > 0) {
+      s.power_w = signal_of(*p, r, s.from_s, s.to_s, with_percentiles);
+      s.energy_j = r.integral;
+      if (s.duration_s > 0) s.mean_power_w = r.integral / s.duration_s;
+    }
+  }
+  return s;
+}
 
 PowerStats power_stats(const PowerTrace& trace, const PowerStatsOptions& options) {
   if (options.from_s && options.to_s && *options.to_s < *options.from_s)
     throw std::invalid_argument("the range ends before it starts");
-  PowerStats s;
-  const std::vector<double>& t = trace.time_s;
-  if (t.empty()) return s;
-  s.from_s = std::max(options.from_s.value_or(t.front()), t.front());
-  s.to_s = std::min(options.to_s.value_or(t.back()), t.back());
-  const auto first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), s.from_s) - t.begin());
-  const auto last = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), s.to_s) - t.begin());
-  if (first >= last || s.to_s < s.from_s) {
-    s.to_s = std::max(s.to_s, s.from_s);
-    return s;
-  }
-  s.n = last - first;
-  s.duration_s = s.to_s - s.from_s;
-  const auto slice = [&](const std::vector<double>& v) { return std::span<const double>(v).subspan(first, last - first); };
-  for (const PowerChannel& c : trace.channels)
-    if (c.values.size() == t.size()) s.channels.push_back({c.name, c.quantity, signal_stats(slice(c.values))});
-  if (const PowerChannel* i = first_channel(trace, PowerQuantity::Current)) {
-    const SignalStats c = signal_stats(slice(i->values));
-    if (c.summary.n > 0) {  // every sample missing: unknown, not 0 A
-      s.current_a = c;
-      s.charge_c = integrate_range(t, i->values, s.from_s, s.to_s);
-    }
-  }
-  const PowerSeries power = derive_power(trace, options.supply_v);
-  s.power_source = power.source;
-  s.supply_v = power.supply_v;
-  if (!power.values.empty()) {
-    const SignalStats p = signal_stats(slice(power.values));
-    if (p.summary.n > 0) {
-      s.power_w = p;
-      s.energy_j = integrate_range(t, power.values, s.from_s, s.to_s);
-    }
-  }
-  return s;
+  return PowerIndex(trace, options.supply_v).stats(options.from_s, options.to_s);
 }
 
 }  // namespace bs

@@ -2,6 +2,7 @@
 #pragma once
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace bs {
 
@@ -27,5 +28,11 @@ struct Summary {
 };
 
 Summary summarize(std::span<const double> values) noexcept;
+
+// Linear-interpolated percentile q in [0, 100] of the present (non-NaN) values: position q/100 x (n - 1) in the
+// sorted values, interpolated between its two neighbours; 0 when none.
+double percentile(std::vector<double> values, double q);
+// percentile(values, 50): the middle value, or the mean of the middle two for an even count.
+double median(std::vector<double> values);
 
 }  // namespace bs

@@ -497,6 +497,18 @@ void Workspace::set_device_color(const std::string& platform, const std::string&
     throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no device '" + device + "' on platform '" + platform + "'");
 }
 
+void Workspace::add_trace_phase(std::int64_t trace_id, const TracePhase& phase) {
+  if (phase.name.empty() || !(phase.end_s >= phase.start_s))
+    throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                         impl_->path + ": phase '" + phase.name + "' needs a name and an end not before its start");
+  Statement probe(impl_->db, "SELECT 1 FROM power_traces WHERE id = ?");
+  probe.bind(1, trace_id);
+  if (!probe.step())
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no power trace with id " + std::to_string(trace_id));
+  Statement st(impl_->db, "INSERT INTO power_phases(trace_id, name, start_s, end_s) VALUES (?,?,?,?)");
+  st.bind(1, trace_id).bind(2, std::string_view(phase.name)).bind(3, phase.start_s).bind(4, phase.end_s).run();
+}
+
 std::vector<StoredRun> Workspace::runs() const {
   std::vector<StoredRun> out;
   std::map<std::int64_t, std::size_t> index;

@@ -129,6 +129,10 @@ class Workspace {
   std::vector<StoredRun> runs() const;  // ordered by device colour index, backend, dims, id
   std::vector<StoredResultSet> result_sets() const;
   std::vector<StoredPowerTrace> power_traces() const;
+  // Adds a named phase to a stored trace (the Power tab's "Save as phase…"); power_traces() returns it with the
+  // trace's other phases, ordered by start. Throws WorkspaceError(Constraint) for an unknown trace id, an empty name
+  // or an end before the start.
+  void add_trace_phase(std::int64_t trace_id, const TracePhase& phase);
   std::vector<StoredFrame> frames() const;  // in import order, without pixels
   // The pixels of a frame stored as a copy, in this host's byte order; empty for a frame kept by reference.
   // Throws WorkspaceError(Corrupt) when the BLOB's size does not match the recorded geometry.

@@ -11,7 +11,7 @@ _benchscope_cli() {
   local options=""
   case "${COMP_WORDS[1]}" in
     battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
-    bench) options="--help --columns --detect-scale --detect-workers --frames --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --workers" ;;
+    bench) options="--help --columns --detect-scale --detect-workers --frames --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
     devices) options="--help --json --table" ;;
