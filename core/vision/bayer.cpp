@@ -67,16 +67,20 @@ cv::Mat mosaic(const cv::Mat& bgr, BayerPattern p) {
   return out;
 }
 
-cv::Mat demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m) {
+void demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m, cv::Mat& out) {
   detail::check_demosaic_input(raw);
   if (m == DemosaicMethod::OpenCvBilinear || m == DemosaicMethod::OpenCvEdgeAware || m == DemosaicMethod::OpenCvVng) {
     if (m == DemosaicMethod::OpenCvVng && raw.depth() != CV_8U) throw std::invalid_argument("OpenCV's VNG is 8-bit only");
-    cv::Mat out;
     cv::cvtColor(raw, out, opencv_code(p, m));
-    return out;
+    return;
   }
-  cv::Mat out(raw.size(), raw.depth() == CV_8U ? CV_8UC3 : CV_16UC3);
+  out.create(raw.size(), raw.depth() == CV_8U ? CV_8UC3 : CV_16UC3);
   demosaic_simd(raw, p, m == DemosaicMethod::MalvarHeCutler, out);
+}
+
+cv::Mat demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m) {
+  cv::Mat out;
+  demosaic(raw, p, m, out);
   return out;
 }
 

@@ -34,6 +34,9 @@ cv::Mat mosaic(const cv::Mat& bgr, BayerPattern p);
 // for other types, sizes under 4x4, or VNG on 16-bit input. Our methods run the SIMD, multi-threaded path
 // (bayer_simd.h), equal pixel for pixel to the scalar definition, demosaic_reference() (bayer_reference.h).
 cv::Mat demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m);
+// The same into `out`, reusing its buffer when it already has the size and type (as cv::cvtColor does), so a
+// loop over frames allocates once.
+void demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m, cv::Mat& out);
 
 // Peak signal-to-noise ratio in dB over all channels, ignoring a border of `border` pixels (where methods differ
 // only by their edge handling). Infinity for identical images.
