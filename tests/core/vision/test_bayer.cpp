@@ -159,6 +159,22 @@ class TestBayer : public QObject {
           [&] { std::string s; for (const auto& t : targets) s += t + " "; return s; }().c_str());
   }
 
+  // The overload that writes into `out`: reuses a buffer of the right size and type (as cvtColor does), replaces
+  // any other, and gives what the returning overload gives.
+  void demosaic_into_a_kept_buffer() {
+    cv::RNG rng(7);
+    const cv::Mat raw = random_mosaic(70, 33, CV_16U, 0, rng);
+    cv::Mat out(5, 5, CV_8UC1);
+    demosaic(raw, BayerPattern::GRBG, DemosaicMethod::MalvarHeCutler, out);
+    QCOMPARE(out.type(), CV_16UC3);
+    QVERIFY(first_difference(out, demosaic_reference(raw, BayerPattern::GRBG, DemosaicMethod::MalvarHeCutler)).isEmpty());
+    const uchar* kept = out.data;
+    demosaic(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear, out);
+    QCOMPARE(out.data, kept);
+    QVERIFY(first_difference(out, demosaic(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear)).isEmpty());
+    QVERIFY(first_difference(out, demosaic_reference(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear)).isEmpty());
+  }
+
   void pinning_an_instruction_set() {
     const std::string best = demosaic_simd_target();
     QCOMPARE(demosaic_simd_targets().front(), best);
