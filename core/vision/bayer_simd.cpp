@@ -4,20 +4,25 @@
 // the same source builds NEON on an ARM robot computer.
 //
 // Why the vector code is bit-exact with the scalar definition (bayer_pixel.h): it evaluates the same integer
-// expressions in lanes wide enough that nothing overflows (int16 for 8-bit mosaics: the largest MHC magnitude is
-// 28 * 255 + 8 = 7148; int32 for 16-bit: 28 * 65535 + 8), shifts right arithmetically as C++20's >> does on
-// negative ints, and clamps by the saturating narrowing (DemoteTo) to [0, 255] or [0, 65535], as std::clamp does.
+// expressions without overflow. Bilinear stays in the sample type: AverageRound is (a + b + 1) >> 1 exactly, the
+// mean of four is rebuilt exactly from two of them (mean4_rounded), and means need no clamp. Malvar-He-Cutler
+// works in signed lanes twice as wide as a sample (int16 for 8-bit mosaics: the largest magnitude is
+// 28 * 255 + 8 = 7148; int32 for 16-bit), shifts right arithmetically as C++20's >> does on negative ints, and
+// clamps to [0, max] with Min/Max as std::clamp does.
 //
-// Why it is fast: a row alternates two site kinds (green and one of red/blue). Rather than split the row into
-// even and odd columns, every lane computes both kinds' formulas from unaligned loads at the neighbouring
-// columns, and a fixed even/odd lane mask picks per lane: about twice the arithmetic of a split, but no shuffles
-// before the one interleaving store (StoreInterleaved3) that writes BGR.
+// Why it is fast: a row alternates two site kinds (green and one of red/blue). Bilinear computes both kinds'
+// formulas in every lane and picks per lane with a fixed even/odd mask: twice the (cheap) arithmetic, but no
+// shuffles before the one interleaving store (StoreInterleaved3) that writes BGR. Malvar-He-Cutler's formulas
+// are dearer, so it splits the row into its two site kinds for free instead (split_load) and computes each
+// kind's own two formulas only. The last few interior pixels of a row are one more vector overlapping the one
+// before, and the two border columns at each side are the scalar definition itself.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "vision/bayer_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -48,12 +53,6 @@ struct DemosaicJob {
 HWY_BEFORE_NAMESPACE();
 namespace bs::vision::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
-
-// The mosaic at `p`, widened to the signed working lane type.
-template <class DW, class DT, class T>
-HWY_INLINE hn::Vec<DW> load_wide(DW dw, DT dt, const T* p) {
-  return hn::PromoteTo(dw, hn::LoadU(dt, p));
-}
 
 // (a + b + c + d + 2) >> 2 in the sample type, without widening: from the rounded pair means ab = (a + b + 1) >> 1
 // and cd, it is (ab + cd + 1) >> 1 when both pair sums are even, else (ab + cd) >> 1, i.e. one less when ab + cd
@@ -91,66 +90,128 @@ HWY_INLINE void bilinear_vector(D d, const T* const row[5], int c, M green, int 
   else hn::StoreInterleaved3(ch_y, ch_g, ch_x, d, out);
 }
 
-// Malvar-He-Cutler: Lanes(dw) pixels of one row from column c on, as bilinear_vector but in the wider signed
-// type dw, the kernels having negative weights.
-template <class DW, class DT, class M, class T>
-HWY_INLINE void mhc_vector(DW dw, DT dt, const T* const row[5], int c, M green, int x, T* dst) {
+static_assert(std::endian::native == std::endian::little, "split_load and merge assume little-endian lanes");
+
+// Malvar-He-Cutler needs signed lanes twice as wide as a sample (its kernels have negative weights). Loading
+// 2 N samples as N lanes of twice the width splits them for free: the low half of each lane is the sample at an
+// even offset from the load, the high half the one after it (little-endian). So every vector below holds one
+// site kind only: the "first" lanes (columns c, c + 2, ...) and the "second" (c + 1, c + 3, ...), each computing
+// just the two formulas its sites need, and the results are merged back the same way (low | high << bits).
+template <class DW>
+struct SplitRow {
+  hn::Vec<DW> first, second;
+};
+
+template <class DW, class T>
+HWY_INLINE SplitRow<DW> split_load(DW dw, const T* p) {
+  const hn::RebindToUnsigned<DW> du;
+  const hn::Repartition<T, decltype(du)> dt;
+  constexpr int kBits = 8 * sizeof(T);
+  const auto pairs = hn::BitCast(du, hn::LoadU(dt, p));
+  return {hn::BitCast(dw, hn::And(pairs, hn::Set(du, static_cast<hn::TFromD<decltype(du)>>((1u << kBits) - 1)))),
+          hn::BitCast(dw, hn::ShiftRight<kBits>(pairs))};
+}
+
+// The five neighbourhood sums of one site kind, and its own sample.
+template <class V>
+struct Taps {
+  V v, we, ns, d, n2, w2;
+};
+
+// Missing channels at green sites: x (the row's other colour) and y (the column's), times 16 before the shift.
+template <class DW, class V>
+HWY_INLINE void mhc_green(DW dw, const Taps<V>& t, V& x, V& y) {
+  // 10 v - 2 D + 8 shared; x: + 8 (W + E) - 2 (W2 + E2) + (N2 + S2); y: the same turned by 90 degrees.
+  const V base = hn::Sub(hn::Add(hn::Add(hn::ShiftLeft<3>(t.v), hn::ShiftLeft<1>(t.v)), hn::Set(dw, 8)), hn::ShiftLeft<1>(t.d));
+  x = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(t.we)), hn::ShiftLeft<1>(t.w2)), t.n2));
+  y = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(t.ns)), hn::ShiftLeft<1>(t.n2)), t.w2));
+}
+
+// Missing channels at red/blue sites: green, and y (the colour measured diagonally).
+template <class DW, class V>
+HWY_INLINE void mhc_colour(DW dw, const Taps<V>& t, V& g, V& y) {
+  const V v4 = hn::ShiftLeft<2>(t.v), nw2 = hn::Add(t.n2, t.w2);
+  // (4 v + 2 (N + S + W + E) - (N2 + S2) - (W2 + E2) + 4) >> 3
+  g = hn::ShiftRight<3>(hn::Sub(hn::Add(hn::Add(v4, hn::ShiftLeft<1>(hn::Add(t.we, t.ns))), hn::Set(dw, 4)), nw2));
+  // (12 v + 4 D - 3 (N2 + S2 + W2 + E2) + 8) >> 4
+  y = hn::ShiftRight<4>(hn::Sub(hn::Add(hn::Add(hn::Add(hn::ShiftLeft<1>(v4), v4), hn::ShiftLeft<2>(t.d)), hn::Set(dw, 8)),
+                                hn::Add(nw2, hn::ShiftLeft<1>(nw2))));
+}
+
+// Two results of one channel, first-kind and second-kind lanes, clamped to [0, max] as the scalar definition
+// does and merged back into 2 N samples in column order.
+template <class DW, class DT>
+HWY_INLINE hn::Vec<DT> merge(DW dw, DT dt, hn::Vec<DW> first, hn::Vec<DW> second) {
+  const hn::RebindToUnsigned<DW> du;
+  constexpr int kBits = 8 * sizeof(hn::TFromD<DT>);
+  const auto top = hn::Set(dw, static_cast<hn::TFromD<DW>>((1 << kBits) - 1));
+  const auto lo = hn::BitCast(du, hn::Min(hn::Max(first, hn::Zero(dw)), top));
+  const auto hi = hn::BitCast(du, hn::Min(hn::Max(second, hn::Zero(dw)), top));
+  return hn::BitCast(dt, hn::Or(lo, hn::ShiftLeft<kBits>(hi)));
+}
+
+// 2 Lanes(dw) pixels of one row from column c on; `first_green`: whether column c is a green site; `x` the colour
+// (0 B or 2 R) of the row's other sites. Writes BGR to dst + 3 c.
+template <class DW, class T>
+HWY_INLINE void mhc_vector(DW dw, const T* const row[5], int c, bool first_green, int x, T* dst) {
   using V = hn::Vec<DW>;
-  const T* const r0 = row[2] + c;
-  const V v = load_wide(dw, dt, r0);
-  const V w = load_wide(dw, dt, r0 - 1), e = load_wide(dw, dt, r0 + 1);
-  const V n = load_wide(dw, dt, row[1] + c), s = load_wide(dw, dt, row[3] + c);
-  const V we = hn::Add(w, e), ns = hn::Add(n, s);
-  const V d = hn::Add(hn::Add(load_wide(dw, dt, row[1] + c - 1), load_wide(dw, dt, row[1] + c + 1)),
-                      hn::Add(load_wide(dw, dt, row[3] + c - 1), load_wide(dw, dt, row[3] + c + 1)));
-  const V n2 = hn::Add(load_wide(dw, dt, row[0] + c), load_wide(dw, dt, row[4] + c));
-  const V w2 = hn::Add(load_wide(dw, dt, r0 - 2), load_wide(dw, dt, r0 + 2));
-  // Constant multiples as shifts and adds: 32-bit multiplies are slow on x86 and the sums are the same.
-  const V v2 = hn::ShiftLeft<1>(v), v8 = hn::ShiftLeft<3>(v);
-  const V d2 = hn::ShiftLeft<1>(d);
-  // At green sites, x: 10 v + 8 (W + E) - 2 D - 2 (W2 + E2) + (N2 + S2) + 8, >> 4; 2 - x: turned by 90 degrees.
-  const V base_g = hn::Sub(hn::Add(hn::Add(v8, v2), hn::Set(dw, 8)), d2);
-  const V at_green_x = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base_g, hn::ShiftLeft<3>(we)), hn::ShiftLeft<1>(w2)), n2));
-  const V at_green_y = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base_g, hn::ShiftLeft<3>(ns)), hn::ShiftLeft<1>(n2)), w2));
-  // At x sites, green: 4 v + 2 (N + S + W + E) - (N2 + S2) - (W2 + E2) + 4, >> 3
-  const V nw2 = hn::Add(n2, w2);
-  const V at_x_green = hn::ShiftRight<3>(
-      hn::Sub(hn::Add(hn::Add(hn::ShiftLeft<2>(v), hn::ShiftLeft<1>(hn::Add(we, ns))), hn::Set(dw, 4)), nw2));
-  // At x sites, 2 - x: 12 v + 4 D - 3 (N2 + S2 + W2 + E2) + 8, >> 4
-  const V at_x_y = hn::ShiftRight<4>(hn::Sub(hn::Add(hn::Add(hn::Add(v8, hn::ShiftLeft<2>(v)), hn::ShiftLeft<2>(d)), hn::Set(dw, 8)),
-                                             hn::Add(nw2, hn::ShiftLeft<1>(nw2))));
-  // DemoteTo saturates: the clamp to [0, max] of the scalar definition.
-  const auto ch_g = hn::DemoteTo(dt, hn::IfThenElse(green, v, at_x_green));
-  const auto ch_x = hn::DemoteTo(dt, hn::IfThenElse(green, at_green_x, v));
-  const auto ch_y = hn::DemoteTo(dt, hn::IfThenElse(green, at_green_y, at_x_y));
+  const hn::Repartition<T, hn::RebindToUnsigned<DW>> dt;
+  // Suffixes: 0 = the pair at columns (c + 2k, c + 2k + 1), m = the pair before it, p = the one after.
+  const SplitRow<DW> mid_m = split_load(dw, row[2] + c - 2), mid0 = split_load(dw, row[2] + c), mid_p = split_load(dw, row[2] + c + 2);
+  const SplitRow<DW> up0 = split_load(dw, row[1] + c), down0 = split_load(dw, row[3] + c);
+  const V up_m = split_load(dw, row[1] + c - 1).first, down_m = split_load(dw, row[3] + c - 1).first;    // column c + 2k - 1
+  const V up_p = split_load(dw, row[1] + c + 1).second, down_p = split_load(dw, row[3] + c + 1).second;  // column c + 2k + 2
+  const SplitRow<DW> up2 = split_load(dw, row[0] + c), down2 = split_load(dw, row[4] + c);
+  // Column c + 2k: west is the second lane of the pair before, east the second of this pair.
+  const Taps<V> first{mid0.first,
+                      hn::Add(mid_m.second, mid0.second),
+                      hn::Add(up0.first, down0.first),
+                      hn::Add(hn::Add(up_m, up0.second), hn::Add(down_m, down0.second)),
+                      hn::Add(up2.first, down2.first),
+                      hn::Add(mid_m.first, mid_p.first)};
+  // Column c + 2k + 1: west is the first lane of this pair, east the first of the pair after.
+  const Taps<V> second{mid0.second,
+                       hn::Add(mid0.first, mid_p.first),
+                       hn::Add(up0.second, down0.second),
+                       hn::Add(hn::Add(up0.first, up_p), hn::Add(down0.first, down_p)),
+                       hn::Add(up2.second, down2.second),
+                       hn::Add(mid_m.second, mid_p.second)};
+  const Taps<V>& green = first_green ? first : second;
+  const Taps<V>& colour = first_green ? second : first;
+  V green_x, green_y, colour_g, colour_y;
+  mhc_green(dw, green, green_x, green_y);
+  mhc_colour(dw, colour, colour_g, colour_y);
+  const auto in_order = [&](V at_green, V at_colour) HWY_ATTR {
+    return first_green ? merge(dw, dt, at_green, at_colour) : merge(dw, dt, at_colour, at_green);
+  };
+  const auto ch_g = in_order(green.v, colour_g);
+  const auto ch_x = in_order(green_x, colour.v);
+  const auto ch_y = in_order(green_y, colour_y);
   T* const out = dst + 3 * c;
   if (x == 0) hn::StoreInterleaved3(ch_x, ch_g, ch_y, dt, out);
   else hn::StoreInterleaved3(ch_y, ch_g, ch_x, dt, out);
 }
 
-// The lanes on green sites of a row whose green sites are at even columns (green_even) or odd ones, for vectors
-// starting at an even column.
+// The lanes on green sites of a vector whose first column is a green site (first_green) or not.
 template <class D>
-HWY_INLINE hn::Mask<D> green_lanes(D d, bool green_even) {
+HWY_INLINE hn::Mask<D> green_lanes(D d, bool first_green) {
   const auto even = hn::Eq(hn::And(hn::Iota(d, 0), hn::Set(d, 1)), hn::Zero(d));
-  return green_even ? even : hn::Not(even);
+  return first_green ? even : hn::Not(even);
 }
 
 // Rows [r_begin, r_end): two border columns at each side by the scalar definition, the interior in vectors of
 // Lanes(d) pixels from column 2, and what is left of it by one more vector ending at the last interior column,
 // overlapping the one before (it writes the same values there): a scalar remainder would cost as much as a
 // third of the row's vectors. Interiors narrower than one vector are scalar.
-template <class T, bool kMhc, class D, class VectorFn>
-void demosaic_rows_with(const DemosaicJob& job, int r_begin, int r_end, D d, VectorFn vector_fn) {
-  const int lanes = static_cast<int>(hn::Lanes(d));
+template <class T, bool kMhc, class VectorFn>
+void demosaic_rows_with(const DemosaicJob& job, int r_begin, int r_end, int lanes, VectorFn vector_fn) {
   const cv::Mat& raw = *job.raw;
   const int rows = raw.rows, cols = raw.cols, maxv = std::numeric_limits<T>::max();
   const BayerPattern p = job.pattern;
-  const auto green_at_even = green_lanes(d, true), green_at_odd = green_lanes(d, false);
   // Vectors start at even columns 2, 2 + lanes, ...; a single-lane target leaves it all to the scalar loop.
   const bool vectors = lanes % 2 == 0 && cols - 4 >= lanes;
   const int vector_end = vectors ? 2 + (cols - 4) / lanes * lanes : 2;
-  const int last_start = cols - 2 - lanes;  // of the overlapping vector; odd when cols is: its lane 0 is then odd
+  const int last_start = cols - 2 - lanes;  // of the overlapping vector; odd when cols is
   for (int r = r_begin; r < r_end; ++r) {
     const T* row[5];
     for (int k = 0; k < 5; ++k) row[k] = raw.ptr<T>(reflect(r - 2 + k, rows));
@@ -158,12 +219,11 @@ void demosaic_rows_with(const DemosaicJob& job, int r_begin, int r_end, D d, Vec
     const int here0 = bayer_channel(p, r, 0), here1 = bayer_channel(p, r, 1);
     for (int c = 0; c < 2; ++c) demosaic_edge_pixel<T>(row, c, cols, c ? here1 : here0, c ? here0 : here1, kMhc, maxv, dst);
     const bool green_even = here0 == 1;
-    const auto green = green_even ? green_at_even : green_at_odd;
     const int x = green_even ? here1 : here0;
     int c = 2;
-    for (; c < vector_end; c += lanes) vector_fn(row, c, green, x, dst);
+    for (; c < vector_end; c += lanes) vector_fn(row, c, green_even, x, dst);
     if (vectors && c < cols - 2) {
-      vector_fn(row, last_start, last_start % 2 == 0 ? green : (green_even ? green_at_odd : green_at_even), x, dst);
+      vector_fn(row, last_start, last_start % 2 == 0 ? green_even : !green_even, x, dst);
     } else {
       for (; c < cols - 2; ++c) demosaic_inner_pixel<T>(row, c, c % 2 ? here1 : here0, c % 2 ? here0 : here1, kMhc, maxv, dst);
     }
@@ -176,18 +236,26 @@ template <class T, bool kMhc>
 void demosaic_rows(const DemosaicJob& job, int r_begin, int r_end) {
   if constexpr (!kMhc) {
     const hn::ScalableTag<T> d;
-    demosaic_rows_with<T, false>(job, r_begin, r_end, d, [d](const T* const row[5], int c, auto green, int x, T* dst) HWY_ATTR {
-      bilinear_vector(d, row, c, green, x, dst);
-    });
+    const auto green_at_even = green_lanes(d, true), green_at_odd = green_lanes(d, false);
+    demosaic_rows_with<T, false>(job, r_begin, r_end, static_cast<int>(hn::Lanes(d)),
+                                 [&](const T* const row[5], int c, bool first_green, int x, T* dst) HWY_ATTR {
+                                   bilinear_vector(d, row, c, first_green ? green_at_even : green_at_odd, x, dst);
+                                 });
   } else {
+#if HWY_TARGET == HWY_SCALAR
+    // One lane: no pairs to split, so the scalar definition does the interior too.
+    demosaic_rows_with<T, true>(job, r_begin, r_end, 1, [](const T* const*, int, bool, int, T*) {});
+#else
     using W = std::conditional_t<sizeof(T) == 1, std::int16_t, std::int32_t>;
     const hn::ScalableTag<W> dw;
-    const hn::Rebind<T, decltype(dw)> dt;
-    demosaic_rows_with<T, true>(job, r_begin, r_end, dw, [dw, dt](const T* const row[5], int c, auto green, int x, T* dst) HWY_ATTR {
-      mhc_vector(dw, dt, row, c, green, x, dst);
-    });
+    demosaic_rows_with<T, true>(job, r_begin, r_end, 2 * static_cast<int>(hn::Lanes(dw)),
+                                [dw](const T* const row[5], int c, bool first_green, int x, T* dst) HWY_ATTR {
+                                  mhc_vector(dw, row, c, first_green, x, dst);
+                                });
+#endif
   }
 }
+
 void demosaic_rows8(const DemosaicJob& job, int r_begin, int r_end) {
   if (job.mhc) demosaic_rows<std::uint8_t, true>(job, r_begin, r_end);
   else demosaic_rows<std::uint8_t, false>(job, r_begin, r_end);
