@@ -69,7 +69,7 @@ FrameTriptych::FrameTriptych(QWidget* parent)
       low_box_(new QSpinBox(this)),
       high_box_(new QSpinBox(this)),
       full_range_(new QPushButton(tr("Full range"), this)),
-      overlay_box_(new QCheckBox(tr("Image circle + view outline"), this)),
+      overlay_box_(new QCheckBox(tr("Outlines"), this)),
       banner_(new QLabel(this)),
       inspector_(new QLabel(this)),
       watcher_(new QFutureWatcher<std::shared_ptr<Job>>(this)) {
@@ -81,10 +81,11 @@ FrameTriptych::FrameTriptych(QWidget* parent)
   method_box_->setToolTip(tr("Demosaicing method for panel (b); panel (c) reprojects its result"));
   controls->addWidget(method_box_);
   controls->addSpacing(16);
-  controls->addWidget(new QLabel(tr("Window:"), this));
+  auto* window_label = new QLabel(tr("Window (counts):"), this);
+  window_label->setToolTip(tr("Display window: sample values from low to high are shown from black to white"));
+  controls->addWidget(window_label);
   for (QSpinBox* b : {low_box_, high_box_}) {
     b->setRange(0, 65535);
-    b->setSuffix(tr(" counts"));
     b->setToolTip(tr("Display window: sample values from low to high are shown from black to white"));
   }
   controls->addWidget(low_box_);
@@ -94,8 +95,8 @@ FrameTriptych::FrameTriptych(QWidget* parent)
   controls->addWidget(full_range_);
   controls->addSpacing(16);
   overlay_box_->setChecked(true);
-  overlay_box_->setToolTip(tr("On the fisheye panels: the lens's field of view (yellow) and the border of the "
-                              "reprojected view (cyan)"));
+  overlay_box_->setToolTip(tr("On the fisheye panels: the image circle of the lens's field of view (yellow) and "
+                              "the border of the reprojected view (cyan)"));
   controls->addWidget(overlay_box_);
   controls->addStretch(1);
 
@@ -114,6 +115,7 @@ FrameTriptych::FrameTriptych(QWidget* parent)
   }
   banner_->setWordWrap(true);
   inspector_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  inspector_->setWordWrap(true);  // a long readout wraps instead of widening the window
   inspector_->setText(tr("Move the cursor over an image to inspect its pixels."));
   QFont mono = inspector_->font();
   mono.setStyleHint(QFont::Monospace);

@@ -32,6 +32,7 @@ KernelRunner::KernelRunner(QWidget* parent)
       iterations_(new QSpinBox(this)),
       repeats_(new QSpinBox(this)),
       details_(new QLabel(this)),
+      input_error_(new QLabel(this)),
       run_(new QPushButton(tr("Run"), this)),
       stop_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
@@ -76,6 +77,10 @@ KernelRunner::KernelRunner(QWidget* parent)
   form->addRow(tr("D"), dims_);
   form->addRow(tr("N"), iterations_);
   form->addRow(tr("Repeats"), repeats_);
+  input_error_->setWordWrap(true);
+  input_error_->setStyleSheet(QStringLiteral("color: #b00020;"));
+  input_error_->hide();
+  form->addRow(QString(), input_error_);
   form->addRow(tr("Record power"), power_);
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(run_);
@@ -88,7 +93,15 @@ KernelRunner::KernelRunner(QWidget* parent)
   layout->addStretch(0);
 
   connect(run_, &QPushButton::clicked, this, &KernelRunner::start);
+  connect(workers_, &QLineEdit::textChanged, this, &KernelRunner::validate_inputs);
+  connect(dims_, &QLineEdit::textChanged, this, &KernelRunner::validate_inputs);
   connect(stop_, &QPushButton::clicked, this, &KernelRunner::cancel);
+  // Device and variant names can be long ("OpenCL: pthread-Intel(R) Xeon(R) Platinum …"): the open list shows them
+  // whole, the closed boxes do not set the dock's (and so the window's) minimum width.
+  for (QComboBox* box : {backend_, variant_}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(16);
+  }
   connect(backend_, &QComboBox::currentIndexChanged, this, &KernelRunner::show_backend_details);
   populate();
 }
@@ -145,6 +158,40 @@ void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
 }
 
 void KernelRunner::set_workers_spec(const QString& spec) { workers_->setText(spec); }
+
+namespace {
+// The parser's reason for `text`, or empty when it parses.
+template <class Parse>
+QString parse_error(const QLineEdit* field, Parse parse) {
+  try {
+    parse(field->text().toStdString());
+    return {};
+  } catch (const std::invalid_argument& e) {
+    return QString::fromUtf8(e.what());
+  }
+}
+}  // namespace
+
+QString KernelRunner::input_error() const {
+  if (const QString why = parse_error(workers_, [](std::string_view t) { return kernels::parse_worker_spec(t); }); !why.isEmpty())
+    return tr("Workers: %1").arg(why);
+  if (const QString why = parse_error(dims_, [](std::string_view t) { return kernels::parse_dims_list(t); }); !why.isEmpty()) return tr("D: %1").arg(why);
+  return {};
+}
+
+void KernelRunner::validate_inputs() {
+  const QString workers_why = parse_error(workers_, [](std::string_view t) { return kernels::parse_worker_spec(t); });
+  const QString dims_why = parse_error(dims_, [](std::string_view t) { return kernels::parse_dims_list(t); });
+  for (auto [field, why] : {std::pair{workers_, workers_why}, std::pair{dims_, dims_why}}) {
+    // Red field, the reason in its tooltip and under the form, so the user sees which field and why while typing.
+    field->setStyleSheet(why.isEmpty() ? QString() : QStringLiteral("QLineEdit { background: #ffd7d7; }"));
+    field->setProperty("invalid", !why.isEmpty());
+  }
+  const QString why = input_error();
+  input_error_->setText(why);
+  input_error_->setVisible(!why.isEmpty());
+  run_->setEnabled(why.isEmpty() && !running());
+}
 void KernelRunner::set_dims(const QString& dims) { dims_->setText(dims); }
 void KernelRunner::set_iterations(int n) { iterations_->setValue(n); }
 void KernelRunner::set_repeats(int r) { repeats_->setValue(r); }
@@ -155,8 +202,8 @@ void KernelRunner::start() {
   try {
     spec.workers = kernels::parse_worker_spec(workers_->text().toStdString());
     spec.dims = kernels::parse_dims_list(dims_->text().toStdString());
-  } catch (const std::invalid_argument& e) {
-    emit failed(tr("Workers/D: %1").arg(QString::fromUtf8(e.what())));
+  } catch (const std::invalid_argument&) {
+    emit failed(input_error());  // names the field; Run is disabled while a field is invalid, so rarely reached
     return;
   }
   spec.iterations = iterations_->value();
@@ -182,7 +229,7 @@ void KernelRunner::start() {
   connect(watcher, &QFutureWatcher<kernels::SweepResult>::finished, this, [this, watcher] {
     watcher->deleteLater();
     cancel_.reset();
-    run_->setEnabled(true);
+    validate_inputs();  // Run comes back only if the fields still parse
     stop_->setEnabled(false);
     try {
       const kernels::SweepResult result = watcher->result();

@@ -41,6 +41,8 @@ class KernelRunner : public QWidget {
   void set_iterations(int n);
   void set_repeats(int r);
   PowerSensorBox* power_box() const { return power_; }
+  // Why the typed workers/D fields cannot run, naming the field ("Workers: ..."); empty when they can.
+  QString input_error() const;
   QTableWidget* energy_table() const { return energy_; }
   // The trace of the last sweep recorded with power (taken once: the next call gives none).
   std::optional<PowerTrace> take_power_trace();
@@ -57,6 +59,7 @@ class KernelRunner : public QWidget {
   void populate();
   void show_backend_details();
   void show_energies(const std::vector<FlopsRun>& runs);
+  void validate_inputs();  // as the user types: a bad field turns red with the reason, Run is disabled
   kernels::CpuInfo cpu_;
   std::vector<kernels::Backend> backends_;
   std::shared_ptr<CancelToken> cancel_;
@@ -67,6 +70,7 @@ class KernelRunner : public QWidget {
   QSpinBox* iterations_;
   QSpinBox* repeats_;
   QLabel* details_;
+  QLabel* input_error_;
   QPushButton* run_;
   QPushButton* stop_;
   QProgressBar* progress_;

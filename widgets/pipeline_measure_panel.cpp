@@ -5,6 +5,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFutureWatcher>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -84,29 +85,33 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   progress_->setMaximumWidth(160);
   progress_->hide();
   status_->setTextFormat(Qt::PlainText);
+  status_->setWordWrap(true);  // a long message wraps instead of widening the window
 
-  auto* layout = new QHBoxLayout(this);
+  // Two rows, so that the panel fits a 1280 px window beside the workspace dock: what to measure on the first,
+  // how to run it and what happened on the second.
+  auto* layout = new QGridLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  layout->addWidget(new QLabel(tr("Synthetic paper capture:"), this));
-  layout->addWidget(frames_);
+  auto* frames_label = new QLabel(tr("Synthetic frames:"), this);
+  frames_label->setToolTip(tr("Frames of the synthetic paper capture to run through the pipeline"));
   auto* workers_label = new QLabel(tr("Detection workers:"), this);
   workers_label->setToolTip(workers_->toolTip());
-  layout->addWidget(workers_label);
-  layout->addWidget(workers_);
   auto* scale_label = new QLabel(tr("Detection scale:"), this);
   scale_label->setToolTip(scale_->toolTip());
-  layout->addWidget(scale_label);
-  layout->addWidget(scale_);
   auto* backend_label = new QLabel(tr("Preprocessing on:"), this);
   backend_label->setToolTip(backend_->toolTip());
-  layout->addWidget(backend_label);
-  layout->addWidget(backend_);
-  layout->addWidget(new QLabel(tr("Record power:"), this));
-  layout->addWidget(power_);
-  layout->addWidget(measure_);
-  layout->addWidget(cancel_);
-  layout->addWidget(progress_);
-  layout->addWidget(status_, 1);
+  int column = 0;
+  for (QWidget* w : std::initializer_list<QWidget*>{frames_label, frames_, workers_label, workers_, scale_label,
+                                                    scale_, backend_label, backend_})
+    layout->addWidget(w, 0, column++);
+  layout->setColumnStretch(column, 1);
+  auto* second_row = new QHBoxLayout;
+  second_row->addWidget(new QLabel(tr("Record power:"), this));
+  second_row->addWidget(power_);
+  second_row->addWidget(measure_);
+  second_row->addWidget(cancel_);
+  second_row->addWidget(progress_);
+  second_row->addWidget(status_, 1);
+  layout->addLayout(second_row, 1, 0, 1, column + 1);
 
   connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
   connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);

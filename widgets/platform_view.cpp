@@ -119,12 +119,16 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   runtime_ = spin(this, 1, 100000, 60, tr(" min"), 0);
   battery_ = new QComboBox(this);
   battery_->setObjectName(QStringLiteral("battery"));
+  // Preset names can be long ("Paper LiPo 4S 16 V 5.2 Ah + servos"): the list shows them whole, the closed box
+  // does not widen the window for them.
+  battery_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  battery_->setMinimumContentsLength(14);
   mission_ = new QComboBox(this);
   mission_->setEditable(true);
   mission_->setInsertPolicy(QComboBox::NoInsert);
-  mission_->setMinimumContentsLength(36);
+  mission_->setMinimumContentsLength(18);  // fits a 1280 px window; the field scrolls for longer missions
   mission_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  mission_->lineEdit()->setPlaceholderText(tr("none: constant load"));
+  mission_->lineEdit()->setPlaceholderText(tr("name:s:W, … (none: constant load)"));
   mission_->setToolTip(tr("Mission profile: phases name:seconds:watts, comma separated (e.g. the servos per phase), "
                           "repeated until the pack is empty, in parallel with each computer's mean power and the "
                           "parallel load; the battery runtime then follows the mission. Missions saved with the "
@@ -152,7 +156,9 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   battery_row->addWidget(battery_);
   battery_row->addWidget(new QLabel(tr("Parallel load:"), this));
   battery_row->addWidget(extra_load_);
-  battery_row->addWidget(new QLabel(tr("Mission (name:s:W, …):"), this));
+  auto* mission_label = new QLabel(tr("Mission:"), this);
+  mission_label->setToolTip(mission_->toolTip());
+  battery_row->addWidget(mission_label);
   battery_row->addWidget(mission_, 1);
 
   summary_ = new QLabel(this);

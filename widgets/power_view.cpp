@@ -58,6 +58,7 @@ PowerView::PowerView(QWidget* parent)
           [this](int i) { set_quantity(i == 0 ? Quantity::Current : Quantity::Power); });
   auto* hint = new QLabel(tr("Zoom (wheel) or pan (drag) the time axis to choose the range the table summarises; "
                               "double-click shows the whole log"), this);
+  hint->setWordWrap(true);  // wraps in a narrow window instead of setting its minimum width
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   plot_->axisRect()->setRangeZoom(Qt::Horizontal);
   plot_->axisRect()->setRangeDrag(Qt::Horizontal);

@@ -271,10 +271,10 @@ QWidget* ReprojectionTuner::build_controls() {
       if (!syncing_) change(f, [member, v](auto& p) { p.view.*member = v; });
     });
     connect(box, &QDoubleSpinBox::editingFinished, this, [this] { state_.end_merge(); });
-    auto* row = new QHBoxLayout;
-    row->addWidget(slider, 1);
-    row->addWidget(box);
-    vf->addRow(name, row);
+    // The value on its own row and the slider under it across both columns: the slider keeps its length without
+    // widening the panel (the Lens tab then fits a 1280 px window beside the workspace dock).
+    vf->addRow(name, box);
+    vf->addRow(slider);
   };
   angle_row(tr("Yaw"), "yaw", &vision::View::yaw_deg, yaw_slider_, yaw_,
             tr("Yaw in degrees: turns the view about the vertical axis (+ right)"));

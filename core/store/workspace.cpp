@@ -396,6 +396,50 @@ void Workspace::remove_import(std::int64_t import_id) {
 }
 
 namespace {
+void require_name(const std::string& what, const std::string& name) {
+  if (name.find_first_not_of(" \t") == std::string::npos)
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, what + ": the new name is empty");
+}
+}  // namespace
+
+void Workspace::rename_power_trace(std::int64_t trace_id, const std::string& label) {
+  require_name("power log", label);
+  Statement(impl_->db, "UPDATE power_traces SET label = ? WHERE id = ?").bind(1, std::string_view(label)).bind(2, trace_id).run();
+  if (sqlite3_changes(impl_->db.get()) == 0)
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no power log #" + std::to_string(trace_id));
+}
+
+void Workspace::rename_frame(std::int64_t frame_id, const std::string& label) {
+  require_name("frame", label);
+  Statement(impl_->db, "UPDATE frames SET label = ? WHERE id = ?").bind(1, std::string_view(label)).bind(2, frame_id).run();
+  if (sqlite3_changes(impl_->db.get()) == 0)
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no frame #" + std::to_string(frame_id));
+}
+
+void Workspace::rename_platform(const std::string& from, const std::string& to) {
+  require_name("platform '" + from + "'", to);
+  if (from == to) return;
+  Transaction tx(impl_->db);
+  Statement clash(impl_->db,
+                  "SELECT a.device FROM devices a JOIN devices b ON a.device = b.device WHERE a.platform = ? AND "
+                  "b.platform = ? LIMIT 1");
+  clash.bind(1, std::string_view(from)).bind(2, std::string_view(to));
+  if (clash.step())
+    throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                         "platform '" + to + "' already has a device '" + clash.text(0) + "' like '" + from +
+                             "': renaming would merge their runs");
+  int changed = 0;
+  for (const char* sql : {"UPDATE devices SET platform = ? WHERE platform = ?",
+                          "UPDATE power_traces SET platform = ? WHERE platform = ?",
+                          "UPDATE pipeline_runs SET platform = ? WHERE platform = ?"}) {
+    Statement(impl_->db, sql).bind(1, std::string_view(to)).bind(2, std::string_view(from)).run();
+    changed += sqlite3_changes(impl_->db.get());
+  }
+  if (changed == 0) throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no platform '" + from + "'");
+  tx.commit();
+}
+
+namespace {
 constexpr std::string_view kSettingPrefix = "setting/";
 }
 

@@ -113,6 +113,14 @@ class Workspace {
   std::vector<std::int64_t> add_imports(const std::vector<HashedBatch>& batches, const CancelToken* cancel = nullptr);
   void remove_import(std::int64_t import_id);  // removes the import and everything it brought
 
+  // Renames offered by the workspace tree. Each throws WorkspaceError(Constraint) for an unknown id/name or an
+  // empty new name.
+  void rename_power_trace(std::int64_t trace_id, const std::string& label);
+  void rename_frame(std::int64_t frame_id, const std::string& label);
+  // Moves every device, power log and pipeline run of platform `from` to `to`. Throws Constraint when `to` already
+  // has a device of the same name: that would merge two devices' runs, which is not a rename.
+  void rename_platform(const std::string& from, const std::string& to);
+
   std::vector<ImportRecord> imports() const;
   std::vector<DeviceRecord> devices() const;
   // A device's colour is a property of the device, shown the same in every view and export: the user may pick

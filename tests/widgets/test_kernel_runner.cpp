@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Kernel Runner as a user drives it: run a small sweep, watch it fill in, find it stored; cancel a long one.
 #include <QCoreApplication>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -41,6 +43,30 @@ class TestKernelRunner : public QObject {
     QCOMPARE(runs[0].run.provenance.origin, bs::DataOrigin::Measured);
     QCOMPARE(runs[0].run.samples.size(), std::size_t{4});
     QCOMPARE(runs[0].run.samples[0].seconds.size(), std::size_t{2});
+  }
+
+  void fields_are_validated_as_typed() {
+    bs::ui::KernelRunner runner;
+    auto* workers = runner.findChildren<QLineEdit*>().at(0);
+    auto* run = runner.findChild<QPushButton*>();  // the first button is Run
+    QVERIFY(runner.input_error().isEmpty());
+    QVERIFY(run->isEnabled());
+    // Typed character by character, as a user does: the field turns red at once, naming itself and the reason.
+    workers->clear();
+    QTest::keyClicks(workers, "1,2,x");
+    QVERIFY2(runner.input_error().startsWith("Workers:"), qPrintable(runner.input_error()));
+    QVERIFY(workers->property("invalid").toBool());
+    QVERIFY(!run->isEnabled());
+    QTest::keyClick(workers, Qt::Key_Backspace);
+    QTest::keyClicks(workers, "4");
+    QVERIFY2(runner.input_error().isEmpty(), qPrintable(runner.input_error()));
+    QVERIFY(!workers->property("invalid").toBool());
+    QVERIFY(run->isEnabled());
+    runner.set_dims("0");
+    QVERIFY2(runner.input_error().startsWith("D:"), qPrintable(runner.input_error()));
+    QVERIFY(!run->isEnabled());
+    runner.set_dims("1,2");
+    QVERIFY(run->isEnabled());
   }
 
   void cancel_keeps_the_completed_points() {
