@@ -13,6 +13,7 @@
 #include "analysis/power.h"
 #include "analysis/stats.h"
 #include "args.h"
+#include "bench_demosaic.h"
 #include "power_args.h"
 #include "vision/cuda_preprocess.h"
 #include "vision/fused.h"
@@ -53,7 +54,7 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
   cv::convertMaps(lut.map(), cv::noArray(), map16, map_fraction, CV_16SC2);
   const FusedTable fused(lut.map(), raw.size(), BayerPattern::BGGR);
   const cv::Mat rgb_in = demosaic(raw, BayerPattern::BGGR, DemosaicMethod::OpenCvBilinear);
-  cv::Mat rgb, rgb2, view_img;
+  cv::Mat rgb, view_img;
 
   // OpenCV calls a BGGR sensor "BayerRG" (see bayer.cpp); the speed is the same for every pattern.
   std::vector<Method> methods;
@@ -62,8 +63,6 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
                        cv::cvtColor(raw, rgb, cv::COLOR_BayerRG2BGR);
                        cv::remap(rgb, view_img, map16, map_fraction, cv::INTER_LINEAR);
                      }});
-  methods.push_back({"BenchScope demosaic, bilinear", [&] { rgb2 = demosaic(raw, BayerPattern::BGGR, DemosaicMethod::Bilinear); }});
-  methods.push_back({"BenchScope demosaic, Malvar-He-Cutler", [&] { rgb2 = demosaic(raw, BayerPattern::BGGR, DemosaicMethod::MalvarHeCutler); }});
   methods.push_back({"BenchScope LUT reprojection of BGR (fixed-point, remap)", [&] { view_img = lut.apply(rgb_in); }});
   const std::string fused_name = "BenchScope fused demosaic+reprojection (" + std::string(fused.kernel_name()) + ")";
   methods.push_back({fused_name.c_str(), [&] { fused.run(raw, view_img); }});
@@ -135,6 +134,8 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
     out << '\n';
     print_energy_per_item(out, trace, groups, "frame");
   }
+  // BenchScope's own demosaics (the Frames tab, the triptych, figures, `pipeline --demosaic bilinear|mhc`).
+  print_demosaic_bench(out, frames, opencv_threads());
   return 0;
 }
 

@@ -6,7 +6,8 @@
 
 namespace bs::cli {
 
-// `benchscope-cli bench vision`: demosaic + reprojection timings against OpenCV, measured in one process.
+// `benchscope-cli bench vision`: demosaic + reprojection timings against OpenCV, measured in one process, then
+// BenchScope's own demosaics against OpenCV's (bench_demosaic.h).
 int bench_vision(const std::vector<std::string>& args, std::ostream& out);
 
 }  // namespace bs::cli

@@ -25,7 +25,7 @@ namespace bs {
 
 // Ops of one pixel of each kernel, as implemented (see stage_roofline.cpp for the derivation, line by line).
 struct PixelOps {
-  // core/vision/bayer.cpp demosaic_pixel, 8-bit mosaic; mean over a 2x2 Bayer cell (2 green, 1 red, 1 blue site).
+  // core/vision/bayer_pixel.h demosaic_pixel, 8-bit mosaic; mean over a 2x2 Bayer cell (2 green, 1 red, 1 blue site).
   static constexpr double kBilinearGreenSite = 6, kBilinearRedBlueSite = 10;
   static constexpr double kMhcGreenSite = 27, kMhcRedBlueSite = 23;
   // OpenCV remap, INTER_LINEAR with the fixed-point map (ReprojectionLut::apply): per channel 4 multiplies, 3

@@ -31,8 +31,12 @@ int bayer_channel(BayerPattern p, int row, int col);
 cv::Mat mosaic(const cv::Mat& bgr, BayerPattern p);
 
 // CV_8UC1/CV_16UC1 mosaic -> CV_8UC3/CV_16UC3 BGR. Borders are handled by reflection. Throws std::invalid_argument
-// for other types, odd-less-than-2 sizes, or VNG on 16-bit input.
+// for other types, sizes under 4x4, or VNG on 16-bit input. Our methods run the SIMD, multi-threaded path
+// (bayer_simd.h), equal pixel for pixel to the scalar definition, demosaic_reference() (bayer_reference.h).
 cv::Mat demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m);
+// The same into `out`, reusing its buffer when it already has the size and type (as cv::cvtColor does), so a
+// loop over frames allocates once.
+void demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m, cv::Mat& out);
 
 // Peak signal-to-noise ratio in dB over all channels, ignoring a border of `border` pixels (where methods differ
 // only by their edge handling). Infinity for identical images.

@@ -12,7 +12,7 @@ namespace bs::vision {
 namespace {
 
 // Kernel 1: bilinear demosaic of one pixel, integer arithmetic rounded half up, borders reflected without
-// repeating the edge (as bayer.cpp). cells: colour index (0 B, 1 G, 2 R) of the pattern's top-left 2x2 cell.
+// repeating the edge (as bayer_pixel.h). cells: colour index (0 B, 1 G, 2 R) of the pattern's top-left 2x2 cell.
 // Kernel 2: sample the BGR image at the LUT position on OpenCV's 1/32-pixel grid (round to nearest), bilinear
 // weights, zero for neighbours outside the image (remap's BORDER_CONSTANT with fill 0).
 constexpr const char* kSource = R"CLC(

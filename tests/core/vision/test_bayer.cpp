@@ -6,6 +6,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "vision/bayer.h"
+#include "vision/bayer_reference.h"
+#include "vision/bayer_simd.h"
 
 using namespace bs::vision;
 
@@ -25,6 +27,44 @@ cv::Mat scene(int w, int h, int depth) {
   cv::Mat out;
   img.convertTo(out, depth == CV_8U ? CV_8UC3 : CV_16UC3, depth == CV_8U ? 255 : 65535);
   return out;
+}
+
+constexpr BayerPattern kPatterns[] = {BayerPattern::BGGR, BayerPattern::RGGB, BayerPattern::GRBG, BayerPattern::GBRG};
+
+// Mosaics that reach every corner of the arithmetic: uniform noise over the full range, only 0 and the maximum
+// (the largest over- and undershoots of the MHC kernels, so the clamps and the widest intermediates), and a
+// smooth ramp with a little noise (values near each other, where rounding decides).
+cv::Mat random_mosaic(int w, int h, int depth, int kind, cv::RNG& rng) {
+  const int type = depth == CV_8U ? CV_8UC1 : CV_16UC1;
+  const double top = depth == CV_8U ? 255 : 65535;
+  cv::Mat m(h, w, type);
+  if (kind == 0) {
+    rng.fill(m, cv::RNG::UNIFORM, 0, top + 1);
+  } else if (kind == 1) {
+    cv::Mat bits(h, w, CV_8UC1);
+    rng.fill(bits, cv::RNG::UNIFORM, 0, 2);
+    bits.convertTo(m, type, top);
+  } else {
+    cv::Mat f(h, w, CV_64FC1);
+    rng.fill(f, cv::RNG::NORMAL, 0, top / 200);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) f.at<double>(y, x) += top * (0.2 + 0.6 * (x + 2 * y) / (w + 2.0 * h));
+    f.convertTo(m, type);
+  }
+  return m;
+}
+
+// "" when equal, else where and how the first pixel differs.
+QString first_difference(const cv::Mat& got, const cv::Mat& want) {
+  if (got.size() != want.size() || got.type() != want.type()) return "size or type differs";
+  for (int y = 0; y < got.rows; ++y)
+    for (int x = 0; x < got.cols; ++x)
+      for (int k = 0; k < 3; ++k) {
+        const int a = got.depth() == CV_8U ? got.at<cv::Vec3b>(y, x)[k] : got.at<cv::Vec3w>(y, x)[k];
+        const int b = want.depth() == CV_8U ? want.at<cv::Vec3b>(y, x)[k] : want.at<cv::Vec3w>(y, x)[k];
+        if (a != b) return QString("pixel (x %1, y %2) channel %3: %4, reference %5").arg(x).arg(y).arg(k).arg(a).arg(b);
+      }
+  return {};
 }
 
 }  // namespace
@@ -66,6 +106,95 @@ class TestBayer : public QObject {
     QCOMPARE(out.type(), CV_16UC3);
     QVERIFY(psnr(out, truth) > 30);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic(raw, BayerPattern::BGGR, DemosaicMethod::OpenCvVng));
+  }
+
+  // The fast path (SIMD interior, scalar borders, row stripes on threads) against the scalar definition, every
+  // output pixel, for every instruction set this binary has and this CPU runs, both depths, all four patterns,
+  // both methods, odd and even sizes from the smallest allowed up to past several vector widths, and a full frame.
+  void fast_path_equals_reference_bit_for_bit() {
+    const std::vector<std::string> targets = demosaic_simd_targets();
+    QVERIFY(!targets.empty());
+    std::vector<cv::Size> sizes;
+    for (int w = 4; w <= 40; ++w)
+      for (int h : {4, 5, 7}) sizes.emplace_back(w, h);
+    for (int w : {63, 64, 65, 66, 67, 97, 127, 128, 129, 130, 131}) sizes.emplace_back(w, 6);
+    sizes.emplace_back(5, 37);
+    sizes.emplace_back(203, 29);
+    cv::RNG rng(20261123);
+    long compared = 0;
+    for (const std::string& target : targets) {
+      demosaic_simd_pin_target(target);
+      QCOMPARE(QString(demosaic_simd_target()), QString::fromStdString(target));
+      for (int depth : {CV_8U, CV_16U})
+        for (const cv::Size& size : sizes)
+          for (int kind = 0; kind < 3; ++kind) {
+            const cv::Mat raw = random_mosaic(size.width, size.height, depth, kind, rng);
+            for (BayerPattern p : kPatterns)
+              for (DemosaicMethod m : {DemosaicMethod::Bilinear, DemosaicMethod::MalvarHeCutler}) {
+                const QString diff = first_difference(demosaic(raw, p, m), demosaic_reference(raw, p, m));
+                const QByteArray what = QString("%1, %2-bit %3x%4 kind %5, %6 %7: %8")
+                                            .arg(QString::fromStdString(target)).arg(depth == CV_8U ? 8 : 16)
+                                            .arg(size.width).arg(size.height).arg(kind)
+                                            .arg(QString::fromUtf8(to_string(p).data()), QString::fromUtf8(to_string(m).data()), diff)
+                                            .toUtf8();
+                QVERIFY2(diff.isEmpty(), what.constData());
+                ++compared;
+              }
+          }
+    }
+    demosaic_simd_pin_target("");
+    // A full frame of the paper's size on the best instruction set, several random images.
+    for (int depth : {CV_8U, CV_16U})
+      for (int kind = 0; kind < 3; ++kind) {
+        const cv::Mat raw = random_mosaic(1280, 1024, depth, kind, rng);
+        for (BayerPattern p : kPatterns)
+          for (DemosaicMethod m : {DemosaicMethod::Bilinear, DemosaicMethod::MalvarHeCutler}) {
+            const QByteArray what = QString("1280x1024 %1-bit kind %2, %3 %4").arg(depth == CV_8U ? 8 : 16).arg(kind)
+                                        .arg(QString::fromUtf8(to_string(p).data()), QString::fromUtf8(to_string(m).data())).toUtf8();
+            QVERIFY2(first_difference(demosaic(raw, p, m), demosaic_reference(raw, p, m)).isEmpty(), what.constData());
+            ++compared;
+          }
+      }
+    qInfo("demosaic() equal to demosaic_reference() in %ld images; instruction sets: %s", compared,
+          [&] { std::string s; for (const auto& t : targets) s += t + " "; return s; }().c_str());
+  }
+
+  // The overload that writes into `out`: reuses a buffer of the right size and type (as cvtColor does), replaces
+  // any other, and gives what the returning overload gives.
+  void demosaic_into_a_kept_buffer() {
+    cv::RNG rng(7);
+    const cv::Mat raw = random_mosaic(70, 33, CV_16U, 0, rng);
+    cv::Mat out(5, 5, CV_8UC1);
+    demosaic(raw, BayerPattern::GRBG, DemosaicMethod::MalvarHeCutler, out);
+    QCOMPARE(out.type(), CV_16UC3);
+    QVERIFY(first_difference(out, demosaic_reference(raw, BayerPattern::GRBG, DemosaicMethod::MalvarHeCutler)).isEmpty());
+    const uchar* kept = out.data;
+    demosaic(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear, out);
+    QCOMPARE(out.data, kept);
+    QVERIFY(first_difference(out, demosaic(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear)).isEmpty());
+    QVERIFY(first_difference(out, demosaic_reference(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear)).isEmpty());
+  }
+
+  void pinning_an_instruction_set() {
+    const std::string best = demosaic_simd_target();
+    QCOMPARE(demosaic_simd_targets().front(), best);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic_simd_pin_target("no such instruction set"));
+    demosaic_simd_pin_target(demosaic_simd_targets().back());
+    QCOMPARE(std::string(demosaic_simd_target()), demosaic_simd_targets().back());
+    demosaic_simd_pin_target("");
+    QCOMPARE(std::string(demosaic_simd_target()), best);
+  }
+
+  // Below 4x4 neither path is defined (the 5x5 MHC window cannot be reflected into 1 or 2 pixels): both refuse.
+  void tiny_images_are_refused_by_both_paths() {
+    for (const cv::Size size : {cv::Size(1, 1), cv::Size(2, 2), cv::Size(3, 5), cv::Size(5, 3), cv::Size(3, 3), cv::Size(4, 3)})
+      for (int type : {CV_8UC1, CV_16UC1})
+        for (DemosaicMethod m : {DemosaicMethod::Bilinear, DemosaicMethod::MalvarHeCutler}) {
+          const cv::Mat raw(size, type, cv::Scalar(7));
+          QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic(raw, BayerPattern::RGGB, m));
+          QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic_reference(raw, BayerPattern::RGGB, m));
+        }
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic_reference(cv::Mat(8, 8, CV_8UC1), BayerPattern::BGGR, DemosaicMethod::OpenCvBilinear));
   }
 
   void bad_input() {
