@@ -86,7 +86,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"battery_runtime_h", opt(r.battery_runtime_h)}, {"battery_load_w", opt(r.battery_load_w)},
                       {"frames_per_wh", opt(r.frames_per_wh)},
                       {"meets_constraints", verdicts[i].meets_all}, {"recommended", verdicts[i].recommended},
-                      {"note", verdicts[i].note}, {"checks", checks}, {"sources", sources},
+                      {"note", verdicts[i].note}, {"ranking_note", verdicts[i].ranking_note},
+                      {"checks", checks}, {"sources", sources},
                       {"power_measurement", r.power_measurement},
                       {"flags", flags_json(r.all_flags())}, {"column_flags", column_flags}});
     }
@@ -121,6 +122,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     out << ')';
   }
   out << "\nframes per Wh: frames preprocessed and detected per Wh of the computer = 3600 / energy per frame (J)\n";
+  for (const auto& v : verdicts)
+    if (!v.ranking_note.empty()) out << "ranking: " << v.platform << ": " << v.ranking_note << '\n';
   if (constrained) {
     std::string chosen;
     for (const auto& v : verdicts)

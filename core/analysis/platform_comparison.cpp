@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/platform_comparison.h"
 
+#include "analysis/units.h"
+
 #include <algorithm>
 #include <limits>
 #include <cstdio>
@@ -85,6 +87,23 @@ std::vector<PlausibilityFlag> PlatformRow::all_flags() const {
 double PlatformRow::best_peak_flops() const {
   return std::max(gpu ? gpu->peak.flops : 0.0, cpu ? cpu->peak.flops : 0.0);
 }
+
+namespace {
+// A flagged peak counts at most the device's spec or computed peak; 0 when neither is known.
+double trusted_flops(const std::optional<PeakRow>& p) {
+  if (!p) return 0;
+  if (p->flags.empty()) return p->peak.flops;
+  double cap = -1;
+  if (p->spec && p->spec->fp32_peak_flops > 0) cap = p->spec->fp32_peak_flops;
+  if (p->fraction_of_theoretical && *p->fraction_of_theoretical > 0) {
+    const double theoretical = p->peak.flops / *p->fraction_of_theoretical;
+    cap = cap < 0 ? theoretical : std::min(cap, theoretical);
+  }
+  return cap < 0 ? 0 : std::min(p->peak.flops, cap);
+}
+}  // namespace
+
+double PlatformRow::trusted_peak_flops() const { return std::max(trusted_flops(gpu), trusted_flops(cpu)); }
 
 std::optional<double> energy_per_frame_j(const PowerTrace& trace, double from_s, double to_s, std::size_t frames,
                                          std::optional<double> supply_v) {
@@ -248,10 +267,20 @@ std::vector<PlatformVerdict> recommend(std::span<const PlatformRow> rows, const 
     else if (row.best_peak_flops() <= 0) v.note = "no FLOPS runs";
     out.push_back(std::move(v));
   }
-  // Among the platforms that meet every constraint, the most compute wins (the paper's reasoning).
+  // Among the platforms that meet every constraint, the most compute wins (the paper's reasoning), ranked by peaks
+  // that carry no plausibility flag: a flagged figure is shown, never trusted to decide.
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const PeakRow* peak = rows[i].best_peak();
+    if (peak && !peak->flags.empty())
+      out[i].ranking_note = "its best peak (" + peak->device + ", " + format_si(peak->peak.flops, "FLOPS") +
+                            ") is flagged as implausible; its compute is ranked at " +
+                            format_si(rows[i].trusted_peak_flops(), "FLOPS") +
+                            " (a flagged peak counts at most its device's spec or computed peak)";
+  }
   const PlatformRow* best = nullptr;
   for (std::size_t i = 0; i < rows.size(); ++i)
-    if (out[i].meets_all && out[i].note.empty() && (!best || rows[i].best_peak_flops() > best->best_peak_flops()))
+    if (out[i].meets_all && out[i].note.empty() &&
+        (!best || rows[i].trusted_peak_flops() > best->trusted_peak_flops()))
       best = &rows[i];
   for (std::size_t i = 0; i < rows.size(); ++i) out[i].recommended = best == &rows[i];
   return out;

@@ -66,6 +66,10 @@ struct PlatformRow {
   std::map<std::string, std::vector<PlausibilityFlag>> flags;
   std::string power_measurement;                  // how the power log was measured (measurement_text())
   double best_peak_flops() const;
+  // What the recommendation ranks by: the highest peak, where a peak that carries a plausibility flag counts at
+  // most its device's vendor spec or computed peak (0 when neither is known), so an impossible figure (the paper's
+  // NUC GPU at 6x its spec) never wins by its excess.
+  double trusted_peak_flops() const;
   const PeakRow* best_peak() const;               // the run behind best_peak_flops(), nullptr when none
   std::vector<PlausibilityFlag> all_flags() const;  // every column's, each once
 };
@@ -126,6 +130,7 @@ struct PlatformVerdict {
   std::vector<ConstraintCheck> checks;
   bool recommended = false;  // the platform with the highest peak FLOPS among those that meet all constraints
   std::string note;          // why a platform that meets the constraints cannot be recommended, if so
+  std::string ranking_note;  // how its compute was ranked when its best peak is flagged
 };
 
 // Only platforms with a power log are candidates: a robot computer whose power draw is unknown cannot be judged

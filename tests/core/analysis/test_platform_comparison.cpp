@@ -100,6 +100,24 @@ class TestPlatformComparison : public QObject {
       return chosen;
     };
     QCOMPARE(pick({}), std::string("NUC"));                             // no budget: the most compute
+    // The NUC's 5.25 TFLOPS GPU figure is flagged (about 6x the Iris Plus 650's spec): it is ranked at the spec
+    // peak, which still beats the Jetson's 0.49 TFLOPS, and the verdict says so.
+    const bs::PlatformRow& nuc = row(rows, "NUC");
+    QVERIFY(!nuc.gpu->flags.empty());
+    QVERIFY(nuc.trusted_peak_flops() < nuc.best_peak_flops());
+    QVERIFY(nuc.trusted_peak_flops() >= 0.8e12 && nuc.trusted_peak_flops() <= 0.9e12);
+    QCOMPARE(row(rows, "Jetson TX2").trusted_peak_flops(), row(rows, "Jetson TX2").best_peak_flops());
+    for (const auto& v : bs::recommend(rows, {}))
+      if (v.platform == "NUC") QVERIFY2(v.ranking_note.find("flagged") != std::string::npos, v.ranking_note.c_str());
+      else QVERIFY(v.ranking_note.empty());
+    // Were the spec lower than the Jetson's peak, the flagged figure could not win.
+    auto capped = rows;
+    for (auto& r : capped)
+      if (r.platform == "NUC") r.gpu->spec->fp32_peak_flops = 0.3e12;
+    std::string chosen;
+    for (const auto& v : bs::recommend(capped, {}))
+      if (v.recommended) chosen = v.platform;
+    QCOMPARE(chosen, std::string("Jetson TX2"));
     QCOMPARE(pick({.power_budget_w = 10.0}), std::string("Jetson TX2"));  // under 10 W
     QCOMPARE(pick({.power_budget_w = 5.0}), std::string());             // nothing fits
     // Margins and failures are reported per constraint.
