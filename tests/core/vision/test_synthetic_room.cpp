@@ -4,6 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "vision/fisheye_opencv.h"
 #include "vision/synthetic_room.h"
 
 using namespace bs::vision;
@@ -14,13 +15,10 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Where a camera-frame ray lands in the fisheye image (the forward lens model), nullopt outside FOV or image.
 std::optional<cv::Point2d> project(const Lens& lens, const cv::Vec3d& v) {
-  const cv::Vec3d u = v / cv::norm(v);
-  const auto r = lens.radius(std::acos(std::clamp(u[0], -1.0, 1.0)));
-  const double len = std::hypot(u[1], u[2]);
-  if (!r || len < 1e-12) return std::nullopt;
-  const cv::Point2d c = lens.centre();
-  const cv::Point2d p(c.x + *r * u[1] / len, c.y - *r * u[2] / len);
-  if (p.x < 1 || p.y < 1 || p.x > lens.width - 2 || p.y > lens.height - 2) return std::nullopt;
+  // BenchScope's ray space (x forward, y right, z up) in OpenCV's camera frame (x right, y down, z forward).
+  const auto p = project_camera_point(lens, cv::Vec3d(v[1], -v[2], v[0]));
+  if (!p || (v[1] == 0 && v[2] == 0)) return std::nullopt;
+  if (p->x < 1 || p->y < 1 || p->x > lens.width - 2 || p->y > lens.height - 2) return std::nullopt;
   return p;
 }
 
