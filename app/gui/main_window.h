@@ -14,6 +14,8 @@ class QLabel;
 class QSplitter;
 
 namespace bs::ui {
+
+class PowerTraceLoader;
 class WorkspaceTree;
 class FlopsPlot;
 class PeakTableView;
@@ -46,6 +48,7 @@ class MainWindow : public QMainWindow {
 
   WorkspaceTree* tree() const { return tree_; }
   // View > Reset layout: docks, the FLOPS tab's split and the window size as on first start.
+  PowerTraceLoader* trace_loader() const { return trace_loader_; }  // long power logs load here
   void reset_layout();
   FlopsPlot* flops_plot() const { return plot_; }
   PeakTableView* peak_table() const { return peaks_; }
@@ -85,6 +88,8 @@ class MainWindow : public QMainWindow {
   std::optional<RawFrameOptions> ask_raw_geometry(const QStringList& paths);
   QString export_folder() const;
   void reload();
+  void show_traces(const std::vector<StoredPowerTrace>& traces);  // the views that draw or use power logs
+  std::vector<PipelineRun> pipeline_runs() const;
   void refresh_views();
   void show_import_report(const ImportReport& report);
   void save_as();
@@ -113,6 +118,7 @@ class MainWindow : public QMainWindow {
   BatteryView* battery_;
   LensTab* lens_ = nullptr;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
+  PowerTraceLoader* trace_loader_ = nullptr;  // samples of long power logs, loaded after the window shows
 };
 
 }  // namespace bs::ui
