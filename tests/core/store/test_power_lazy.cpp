@@ -100,7 +100,7 @@ class TestPowerLazy : public QObject {
 
     ws.load_power_samples(lazy[0]);
     QVERIFY(lazy[0].samples_loaded);
-    for (const auto* t : {&lazy[0].trace, &eager[0].trace}) {
+    for (const bs::PowerTrace* t : {static_cast<const bs::PowerTrace*>(&lazy[0].trace), &eager[0].trace}) {
       QVERIFY(same_bits(t->time_s, original.time_s));
       QCOMPARE(t->channels.size(), original.channels.size());
       for (std::size_t k = 0; k < original.channels.size(); ++k) {
