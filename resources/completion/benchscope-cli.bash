@@ -3,7 +3,7 @@
 # /usr/share/bash-completion/completions/benchscope-cli.
 _benchscope_cli() {
   local cur="${COMP_WORDS[COMP_CWORD]}"
-  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power record-power report roofline run sensors synth-frame"
+  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power record-power report roofline run sensors synth-frame synth-power"
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -31,6 +31,7 @@ _benchscope_cli() {
     run) options="--help --backend --device --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     sensors) options="--help --json --power --sensor --sysfs-root" ;;
     synth-frame) options="--help --bits --lens --out --pattern --size" ;;
+    synth-power) options="--help --out --platform --rate --samples --seed" ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$options" -- "$cur"))
