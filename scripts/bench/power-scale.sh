@@ -40,7 +40,7 @@ for n in "${SIZES[@]}"; do
   N=$(python3 -c "print(int(float('$n')))")
   [ -s "$DIR/synth-$N.csv" ] || "$CLI" synth-power --out "$DIR/synth-$N.csv" --samples "$N" >/dev/null
   MB=$(( N * 16 / 1000000 ))
-  echo "== $N samples ($(( $(stat -c %s "$DIR/synth-$N.csv") / 1000000 )) MB of CSV; time + one channel = $MB MB of samples, 2x = $(( 2 * MB )) MB)"
+  echo "== $N samples ($(( $(stat -L -c %s "$DIR/synth-$N.csv") / 1000000 )) MB of CSV; time + one channel = $MB MB of samples, 2x = $(( 2 * MB )) MB)"
   for who in base new; do eval "IMP_$who=()"; eval "RSS_$who=()"; done
   for ((i = 0; i < REPEAT; ++i)); do
     for who in base new; do  # alternate, so a load change on the shared machine hits both
