@@ -17,6 +17,9 @@ struct ImportLimits {
   std::size_t max_json_bytes = std::size_t{256} << 20;  // whole-document formats (JSON, clpeak text)
   std::size_t max_json_depth = 64;
   std::size_t max_samples = 10'000'000;  // total timing values in one file
+  // Rows of a streamed meter CSV (power_csv): a 4 kS/s meter over 7 hours is 100 million; 250 million rows of
+  // time + one channel are 4 GB of samples, the most this 24 GB class of machine imports with room to spare.
+  std::size_t max_power_rows = 250'000'000;
   // Values (numbers, strings, ...) in one JSON document: each costs 16+ bytes in the parsed tree, so this bounds
   // the tree at about half a GiB whatever the bytes are.
   std::size_t max_json_values = 32'000'000;

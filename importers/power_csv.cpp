@@ -308,7 +308,7 @@ class PowerCsvParser {
   bool has_header() const { return !columns_.empty(); }
   // Reserves the columns for about `rows` rows (an estimate from the file system's size, capped by the limit).
   void reserve(std::size_t rows) {
-    rows = std::min(rows, limits_.max_samples);
+    rows = std::min(rows, limits_.max_power_rows);
     trace_.time_s.reserve(rows);
     advise_huge_pages(trace_.time_s);
     for (auto& c : trace_.channels) {
@@ -652,9 +652,9 @@ void PowerCsvParser::row(std::string_view raw, std::size_t line_no) {
   // Rows start with a digit, sign, point or quote; a letter may begin a summary footer.
   const char lead = raw[first] == '"' && first + 1 < raw.size() ? raw[first + 1] : raw[first];
   if (letter(lead) && footer_line(raw, line_no)) return;
-  if (trace_.time_s.size() >= limits_.max_samples)
+  if (trace_.time_s.size() >= limits_.max_power_rows)
     fail(ImportErrorCategory::TooLarge, line_no, 1, {},
-         "more than " + std::to_string(limits_.max_samples) + " rows (the limit for one log)");
+         "more than " + std::to_string(limits_.max_power_rows) + " rows (the limit for one log)");
   const std::size_t ncols = columns_.size();
   const char* const base = raw.data();
   const char* const stop = base + raw.size();
@@ -920,6 +920,9 @@ ImportBatch parse_lines(PowerLineReader& lines, PowerCsvParser& parser, const Ca
     parser.line(*line, lines.line_number());
     if ((lines.line_number() & 0x3ff) == 0) {
       cancel.throw_if_cancelled();
+      // Reading is most of a long import: report it by bytes (every 1024 lines, a few dozen KB).
+      if (lines.file_size() > 0)
+        cancel.report(static_cast<double>(lines.bytes_consumed()) / static_cast<double>(lines.file_size()), "reading");
       if (!reserved && parser.has_header() && lines.bytes_consumed() > 0) {
         reserved = true;
         const double per_line = static_cast<double>(lines.bytes_consumed()) / static_cast<double>(lines.line_number());

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import_controller.h"
 
+#include <algorithm>
+#include <atomic>
+#include <memory>
+
 #include <QFileInfo>
 #include <QFutureWatcher>
 #include <QPointer>
@@ -97,14 +101,35 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
   dialog->setMinimumWidth(480);
   connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->cancel(); });
   QPointer<QProgressDialog> guard(dialog);
-  auto progress = [guard](int done, int total, const QString& file) {
-    QMetaObject::invokeMethod(guard.data(), [guard, done, total, file] {
+  // The bar counts thousandths of files: a single 100-million-row log moves it too (the reader and the store
+  // report through the cancel token, CancelToken::report), not only the step to the next file.
+  struct Where {
+    std::atomic<int> file{0}, total{1}, permille{-1};
+    QString name;  // written before the file starts, read on the GUI thread after a queued call
+  };
+  auto where = std::make_shared<Where>();
+  auto show = [guard, where](int file, int total, int permille, const QString& name, const QString& step) {
+    QMetaObject::invokeMethod(guard.data(), [guard, file, total, permille, name, step] {
       if (!guard) return;
-      guard->setMaximum(total);
-      guard->setValue(done);
-      guard->setLabelText(QObject::tr("File %1 of %2\n%3").arg(done + 1).arg(total).arg(QFileInfo(file).fileName()));
+      guard->setMaximum(total * 1000);
+      guard->setValue(std::min(total * 1000, file * 1000 + std::max(permille, 0)));
+      guard->setLabelText(QObject::tr("File %1 of %2\n%3%4")
+                              .arg(std::min(file + 1, total)).arg(total).arg(QFileInfo(name).fileName())
+                              .arg(step.isEmpty() ? QString() : QObject::tr(" — %1 %2 %").arg(step).arg(permille / 10)));
     }, Qt::QueuedConnection);
   };
+  auto progress = [where, show](int done, int total, const QString& file) {
+    where->file = done;
+    where->total = std::max(total, 1);
+    where->permille = -1;
+    if (!file.isEmpty()) where->name = file;
+    show(done, std::max(total, 1), 0, file, {});
+  };
+  cancel->set_progress([where, show](double fraction, std::string_view step) {
+    const int permille = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 1000);
+    if (where->permille.exchange(permille) == permille) return;  // one queued update per thousandth, not per call
+    show(where->file, where->total, permille, where->name, QString::fromUtf8(step.data(), static_cast<qsizetype>(step.size())));
+  });
   auto* watcher = new QFutureWatcher<ImportReport>(this);
   connect(watcher, &QFutureWatcher<ImportReport>::finished, this, [this, watcher, dialog] {
     const ImportReport report = watcher->result();

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// benchscope [WORKSPACE.bsw | FILE/FOLDER...] [--screenshot DIR [--window-size WxH]]
+// benchscope [WORKSPACE.bsw | FILE/FOLDER...] [--screenshot DIR [--window-size WxH]] [--startup-time]
 #include <QApplication>
+#include <cstdio>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QTabWidget>
 #include <QTimer>
 
@@ -15,6 +17,7 @@
 #include "platform_view.h"
 #include "roofline_view.h"
 #include "power_view.h"
+#include "power_trace_loader.h"
 #include "efficiency_view.h"
 #include "battery_view.h"
 #include "main_window.h"
@@ -29,6 +32,8 @@ void save_png(QWidget* widget, const QString& path) { widget->grab().save(path, 
 }  // namespace
 
 int main(int argc, char** argv) {
+  QElapsedTimer since_start;  // for --startup-time: from the start of main() to a window that answers events
+  since_start.start();
   // VTK views render through QOpenGLWidget: the default format must be set before QApplication exists.
   bs::ui::set_vtk_default_surface_format();
 
@@ -50,6 +55,9 @@ int main(int argc, char** argv) {
   QCommandLineOption size("window-size", "With --screenshot: also save the whole window with each tab in front, at "
                                          "this size (e.g. 1280x800), as window-<tab>.png.", "WxH");
   cli.addOption(size);
+  QCommandLineOption startup("startup-time", "Print how long the window took to show and answer events (ms from "
+                                             "start), then quit: the figure issue #19 asks to stay under 2 s.");
+  cli.addOption(startup);
   cli.process(app);
 
   bs::ui::MainWindow window;
@@ -62,6 +70,27 @@ int main(int argc, char** argv) {
     window.new_untitled_workspace();
   }
   window.show();
+  if (cli.isSet(startup)) {
+    // A zero-time timer fires once the event loop runs with the window mapped: from then on the window answers
+    // clicks and paints while long power logs load in the background. The line is printed when their samples are in
+    // the views (at once when there is nothing to load).
+    const qint64 shown_ms = since_start.elapsed();
+    QTimer::singleShot(0, &window, [&window, &since_start, shown_ms] {
+      const qint64 answering_ms = since_start.elapsed();
+      const auto report = [&since_start, shown_ms, answering_ms] {
+        std::printf("startup: window shown after %lld ms, answering events after %lld ms, power samples in the views "
+                    "after %lld ms\n",
+                    static_cast<long long>(shown_ms), static_cast<long long>(answering_ms),
+                    static_cast<long long>(since_start.elapsed()));
+        std::fflush(stdout);
+        QApplication::quit();
+      };
+      bs::ui::PowerTraceLoader* loader = window.trace_loader();
+      if (!loader->running()) return report();
+      QObject::connect(loader, &bs::ui::PowerTraceLoader::loaded, &window, report, Qt::QueuedConnection);
+      QObject::connect(loader, &bs::ui::PowerTraceLoader::failed, &window, report, Qt::QueuedConnection);
+    });
+  }
   if (cli.isSet(sweep)) {
     window.kernel_runner()->set_workers_spec(cli.value(sweep));
     window.kernel_runner()->start();

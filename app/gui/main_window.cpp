@@ -25,6 +25,7 @@
 #include "run_json.h"
 #include "peak_table.h"
 #include "power_view.h"
+#include "power_trace_loader.h"
 #include <QTabWidget>
 #include <QUndoStack>
 #include "pipeline_json.h"
@@ -143,6 +144,11 @@ MainWindow::MainWindow(QWidget* parent)
   });
   status_label_ = new QLabel(this);
   statusBar()->addWidget(status_label_, 1);  // hidden while a temporary message shows
+  trace_loader_ = new PowerTraceLoader(this);
+  statusBar()->addPermanentWidget(trace_loader_);
+  connect(trace_loader_, &PowerTraceLoader::loaded, this, &MainWindow::show_traces);
+  connect(trace_loader_, &PowerTraceLoader::failed, this,
+          [this](const QString& message) { statusBar()->showMessage(message, 15000); });
   restore_layout();
   update_title();
 }
@@ -243,28 +249,21 @@ void MainWindow::reload() {
   tree_->set_runs(runs_);
   tree_->set_items(workspace_items());
   std::vector<FlopsRun> all;
-  std::vector<std::pair<std::string, int>> platform_colors;
-  for (const StoredRun& r : runs_) {
-    all.push_back(r.run);
-    platform_colors.emplace_back(r.run.platform, r.color_index);
-  }
-  const auto traces = workspace_ ? workspace_->power_traces() : std::vector<StoredPowerTrace>{};
-  std::vector<std::string> trace_platforms;
-  for (const auto& t : traces) trace_platforms.push_back(t.trace.platform);
-  platform_colors = platform_color_indices(platform_colors, std::move(trace_platforms));  // one per platform
+  for (const StoredRun& r : runs_) all.push_back(r.run);
   power_->set_workspace(workspace_.get());  // saved phases go there; the battery pack comes from it
-  power_->set_data(traces, bs::peak_table(all), platform_colors);
-  std::vector<PowerTrace> plain_traces;
-  for (const auto& t : traces) plain_traces.push_back(t.trace);
-  efficiency_->set_data(all, plain_traces);
   battery_->set_workspace(workspace_.get());
-  battery_->set_data(plain_traces, platform_colors);
-  std::vector<PipelineRun> pipelines;
-  if (workspace_)
-    for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
-  pipeline_->set_data(pipelines);
   platforms_->set_workspace(workspace_.get());
-  platforms_->set_data(all, std::move(plain_traces), pipelines);
+  // Power traces: summaries now, samples now for a small workspace, else on a worker thread (PowerTraceLoader)
+  // while the window already answers; the trace views are filled when they arrive (show_traces).
+  std::vector<StoredPowerTrace> traces = workspace_ ? workspace_->power_trace_summaries() : std::vector<StoredPowerTrace>{};
+  if (workspace_ && PowerTraceLoader::sample_count(traces) > PowerTraceLoader::kBackgroundSamples) {
+    trace_loader_->start(workspace_->path(), std::move(traces));
+    show_traces({});
+  } else {
+    trace_loader_->abandon();
+    if (workspace_) PowerTraceLoader::load_now(*workspace_, traces);
+    show_traces(traces);
+  }
   std::vector<ResultSet> sets;
   std::map<std::pair<std::string, std::string>, int> device_colors;
   for (const StoredRun& r : runs_) device_colors[{r.run.platform, r.run.device}] = r.color_index;
@@ -273,11 +272,38 @@ void MainWindow::reload() {
       device_colors[{s.set.platform, s.set.device}] = s.color_index;
       sets.push_back(s.set);
     }
-  roofline_->set_data(all, std::move(sets), std::move(device_colors), std::move(pipelines));
+  roofline_->set_data(all, std::move(sets), std::move(device_colors), pipeline_runs());
   frames_->set_workspace(workspace_.get());
   feed_lens_tab();
   refresh_views();
   update_title();
+}
+
+std::vector<PipelineRun> MainWindow::pipeline_runs() const {
+  std::vector<PipelineRun> pipelines;
+  if (workspace_)
+    for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
+  return pipelines;
+}
+
+void MainWindow::show_traces(const std::vector<StoredPowerTrace>& traces) {
+  std::vector<FlopsRun> all;
+  std::vector<std::pair<std::string, int>> platform_colors;
+  for (const StoredRun& r : runs_) {
+    all.push_back(r.run);
+    platform_colors.emplace_back(r.run.platform, r.color_index);
+  }
+  std::vector<std::string> trace_platforms;
+  for (const auto& t : traces) trace_platforms.push_back(t.trace.platform);
+  platform_colors = platform_color_indices(platform_colors, std::move(trace_platforms));  // one per platform
+  std::vector<PowerTrace> plain_traces;
+  for (const auto& t : traces) plain_traces.push_back(t.trace);
+  power_->set_data(traces, bs::peak_table(all), platform_colors);
+  efficiency_->set_data(all, plain_traces);
+  battery_->set_data(plain_traces, platform_colors);
+  std::vector<PipelineRun> pipelines = pipeline_runs();
+  pipeline_->set_data(pipelines);
+  platforms_->set_data(std::move(all), std::move(plain_traces), std::move(pipelines));
 }
 
 void MainWindow::show_source(const PlatformRow& row, const QString& column) {

@@ -18,6 +18,8 @@ class QUndoStack;
 class QSplitter;
 
 namespace bs::ui {
+
+class PowerTraceLoader;
 class FlopsPlot;
 class PeakTableView;
 class ImportController;
@@ -49,6 +51,7 @@ class MainWindow : public QMainWindow {
 
   WorkspaceTree* tree() const { return tree_; }
   // View > Reset layout: docks, the FLOPS tab's split and the window size as on first start.
+  PowerTraceLoader* trace_loader() const { return trace_loader_; }  // long power logs load here
   void reset_layout();
   FlopsPlot* flops_plot() const { return plot_; }
   PeakTableView* peak_table() const { return peaks_; }
@@ -96,6 +99,8 @@ class MainWindow : public QMainWindow {
   void push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo);
   void report_edit_error(const QString& message);
   void update_edit_actions();
+  void show_traces(const std::vector<StoredPowerTrace>& traces);  // the views that draw or use power logs
+  std::vector<PipelineRun> pipeline_runs() const;
   void refresh_views();
   void show_import_report(const ImportReport& report);
   void save_as();
@@ -127,6 +132,7 @@ class MainWindow : public QMainWindow {
   QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens
   QAction* undo_edit_ = nullptr;
   QAction* redo_edit_ = nullptr;
+  PowerTraceLoader* trace_loader_ = nullptr;  // samples of long power logs, loaded after the window shows
 };
 
 }  // namespace bs::ui

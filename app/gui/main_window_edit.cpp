@@ -79,14 +79,15 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
   std::vector<WorkspaceItem> out;
   if (!workspace_) return out;
   using K = TreeItemRef::Kind;
-  for (const StoredPowerTrace& t : workspace_->power_traces()) {
+  // Summaries only (no samples): listing a 100-million-sample log costs the same as a short one.
+  for (const StoredPowerTrace& t : workspace_->power_trace_summaries()) {
     const PowerTrace& tr_ = t.trace;
-    const double duration = tr_.time_s.empty() ? 0 : tr_.time_s.back() - tr_.time_s.front();
+    const double duration = t.summary.duration_s;
     out.push_back({{K::PowerLog, t.id, t.import_id, QString::fromStdString(tr_.label)},
                    tr("%1 — %2").arg(QString::fromStdString(tr_.platform), QString::fromStdString(tr_.label)),
                    tr("<b>%1</b><br>%L2 samples over %3 s, %4 channel(s)<br>%5")
                        .arg(QString::fromStdString(tr_.label).toHtmlEscaped())
-                       .arg(tr_.time_s.size())
+                       .arg(t.summary.samples)
                        .arg(duration, 0, 'f', 1)
                        .arg(tr_.channels.size())
                        .arg(provenance_line(tr_.provenance))});

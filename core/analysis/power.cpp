@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/power.h"
+#include "analysis/order_stats.h"
 
 #include "analysis/power_stats.h"
 #include "analysis/trace_index.h"

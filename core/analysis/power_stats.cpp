@@ -2,6 +2,7 @@
 #include "analysis/power_stats.h"
 
 #include "analysis/power.h"
+#include "analysis/order_stats.h"
 
 #include <algorithm>
 #include <cmath>

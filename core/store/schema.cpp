@@ -2,6 +2,9 @@
 #include "store/schema.h"
 
 #include <string>
+#include <vector>
+
+#include "store/power_samples.h"
 
 namespace bs::store {
 namespace {
@@ -168,9 +171,68 @@ void migrate_4_to_5(const sqlite::Db& db) {
   )sql");
 }
 
+bool has_column(const sqlite::Db& db, const char* table, const char* column) {
+  sqlite::Statement cols(db, (std::string("SELECT 1 FROM pragma_table_info('") + table + "') WHERE name = ?").c_str());
+  cols.bind(1, std::string_view(column));
+  return cols.step();
+}
+
+// Version 5 -> 6: samples in chunks and a summary cached with each trace (store/power_samples.h), so a workspace
+// holding a 100-million-sample log opens in a moment and loads its samples lazily. Schema 5's one-BLOB traces are
+// rewritten as chunks and summarised here, one trace at a time, and their BLOBs emptied; the columns stay (NOT
+// NULL, empty) so an older reader fails on the schema version, not on a missing column.
+void migrate_5_to_6(const sqlite::Db& db) {
+  if (!has_column(db, "power_traces", "samples")) db.exec("ALTER TABLE power_traces ADD COLUMN samples INTEGER");
+  if (!has_column(db, "power_traces", "duration_s")) db.exec("ALTER TABLE power_traces ADD COLUMN duration_s REAL");
+  if (!has_column(db, "power_channels", "summary")) db.exec("ALTER TABLE power_channels ADD COLUMN summary TEXT");
+  if (!has_column(db, "power_channels", "overview")) db.exec("ALTER TABLE power_channels ADD COLUMN overview BLOB");
+  db.exec(R"sql(
+    CREATE TABLE IF NOT EXISTS power_chunks(
+      id INTEGER PRIMARY KEY,
+      trace_id INTEGER NOT NULL REFERENCES power_traces(id) ON DELETE CASCADE,
+      series INTEGER NOT NULL CHECK(series >= 0),
+      first INTEGER NOT NULL CHECK(first >= 0),
+      vals BLOB NOT NULL);
+    CREATE UNIQUE INDEX IF NOT EXISTS power_chunks_by_series ON power_chunks(trace_id, series, first);
+  )sql");
+  // Traces not converted yet (samples NULL): all of them on a schema 5 file, none when this ran before.
+  std::vector<std::int64_t> pending;
+  {
+    sqlite::Statement st(db, "SELECT id FROM power_traces WHERE samples IS NULL ORDER BY id");
+    while (st.step()) pending.push_back(st.int64(0));
+  }
+  SampleProgress quiet;
+  for (const std::int64_t id : pending) {
+    PowerTrace t;
+    {
+      sqlite::Statement st(db, "SELECT time_s FROM power_traces WHERE id = ?");
+      st.bind(1, id);
+      if (st.step()) t.time_s = st.doubles(0);
+    }
+    std::vector<std::int64_t> channel_ids;
+    {
+      sqlite::Statement st(db, "SELECT id, name, quantity, vals FROM power_channels WHERE trace_id = ? ORDER BY id");
+      st.bind(1, id);
+      while (st.step()) {
+        channel_ids.push_back(st.int64(0));
+        const std::string q = st.text(2);
+        t.channels.push_back({st.text(1), q == "current" ? PowerQuantity::Current
+                                          : q == "voltage" ? PowerQuantity::Voltage : PowerQuantity::Power,
+                              st.doubles(3)});
+      }
+    }
+    db.exec(("DELETE FROM power_chunks WHERE trace_id = " + std::to_string(id)).c_str());
+    write_series(db, id, 0, t.time_s, quiet);
+    for (std::size_t k = 0; k < t.channels.size(); ++k) write_series(db, id, channel_ids[k], t.channels[k].values, quiet);
+    write_summary(db, id, channel_ids, summarize_trace(t));
+    sqlite::Statement(db, "UPDATE power_traces SET time_s = x'' WHERE id = ?").bind(1, id).run();
+    sqlite::Statement(db, "UPDATE power_channels SET vals = x'' WHERE trace_id = ?").bind(1, id).run();
+  }
+}
+
 using Migration = void (*)(const sqlite::Db&);
 constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4,
-                                     migrate_4_to_5};
+                                     migrate_4_to_5, migrate_5_to_6};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

@@ -73,6 +73,19 @@ Statement& Statement::bind_doubles(int index, const std::vector<double>& values)
   return *this;
 }
 
+Statement& Statement::bind_doubles_static(int index, const double* values, std::size_t n) {
+  if (sqlite3_bind_blob64(stmt_, index, n == 0 ? static_cast<const void*>("") : static_cast<const void*>(values),
+                          static_cast<sqlite3_uint64>(n * sizeof(double)), SQLITE_STATIC) != SQLITE_OK)
+    db_.fail("bind failed");
+  return *this;
+}
+
+const void* Statement::blob(int column, std::size_t& size) const {
+  const void* p = sqlite3_column_blob(stmt_, column);
+  size = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column));
+  return p;
+}
+
 Statement& Statement::bind_bytes(int index, const std::vector<std::uint8_t>& bytes) {
   if (sqlite3_bind_blob64(stmt_, index, bytes.empty() ? "" : static_cast<const void*>(bytes.data()),
                           static_cast<sqlite3_uint64>(bytes.size()), SQLITE_TRANSIENT) != SQLITE_OK)

@@ -45,6 +45,8 @@ class Statement {
   Statement& bind_null(int index);
   Statement& bind_doubles(int index, const std::vector<double>& values);  // as a BLOB of native doubles
   Statement& bind_bytes(int index, const std::vector<std::uint8_t>& bytes);  // as a BLOB
+  // n doubles as a BLOB without SQLite's copy: `values` must stay valid until the statement is stepped and reset.
+  Statement& bind_doubles_static(int index, const double* values, std::size_t n);
 
   bool step();        // true while a row is available
   void run();         // step to completion, then reset for reuse
@@ -55,6 +57,8 @@ class Statement {
   std::string text(int column) const;
   std::vector<double> doubles(int column) const;
   std::vector<std::uint8_t> bytes(int column) const;  // a BLOB column; empty for NULL
+  // A BLOB column in place (valid until the next step or reset), its size in `size`; nullptr for NULL or empty.
+  const void* blob(int column, std::size_t& size) const;
 
  private:
   const Db& db_;

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/provenance_json.h"
+#include "store/power_samples.h"
 #include "store/schema.h"
 #include "store/sqlite_db.h"
 #include "util/host_clock.h"
@@ -265,11 +266,15 @@ std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::st
   }
   Statement trace_st(db,
                      "INSERT INTO power_traces(import_id, platform, label, start_time, supply_voltage_v, time_s, "
-                     "provenance, total_channel) VALUES (?,?,?,?,?,?,?,?)");
-  Statement channel_st(db, "INSERT INTO power_channels(trace_id, name, quantity, vals) VALUES (?,?,?,?)");
+                     "provenance, total_channel) VALUES (?,?,?,?,?,x'',?,?)");
+  Statement channel_st(db, "INSERT INTO power_channels(trace_id, name, quantity, vals) VALUES (?,?,?,x'')");
   Statement phase_st(db, "INSERT INTO power_phases(trace_id, name, start_s, end_s) VALUES (?,?,?,?)");
-  // A trace row and each channel row carry a whole BLOB (8 bytes per sample, 80 MB for ten million), so cancel is
-  // checked before every one of them rather than every kCancelCheckRows rows.
+  // Samples go in chunks (store/power_samples.h): cancel is polled and progress reported after each 2 MiB one.
+  store::SampleProgress progress{cancel, "storing samples", 0, 0};
+  for (const PowerTrace& t : batch.power_traces) {
+    progress.total += t.time_s.size();
+    for (const PowerChannel& c : t.channels) progress.total += c.values.size();
+  }
   const auto check = [&] {
     if (cancel) cancel->throw_if_cancelled();
   };
@@ -280,18 +285,23 @@ std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::st
         .bind(3, std::string_view(t.label))
         .bind(4, std::string_view(t.start_time))
         .bind(5, t.supply_voltage_v)
-        .bind_doubles(6, t.time_s)
-        .bind(7, std::string_view(provenance_to_json(t.provenance, true).dump()))
-        .bind(8, std::string_view(t.total_channel))
+        .bind(6, std::string_view(provenance_to_json(t.provenance, true).dump()))
+        .bind(7, std::string_view(t.total_channel))
         .run();
     const std::int64_t trace_id = sqlite3_last_insert_rowid(db.get());
     for (const TracePhase& p : t.phases)
       phase_st.bind(1, trace_id).bind(2, std::string_view(p.name)).bind(3, p.start_s).bind(4, p.end_s).run();
+    store::write_series(db, trace_id, 0, t.time_s, progress);
+    std::vector<std::int64_t> channel_ids;
     for (const PowerChannel& c : t.channels) {
       check();
       const char* q = c.quantity == PowerQuantity::Current ? "current" : c.quantity == PowerQuantity::Voltage ? "voltage" : "power";
-      channel_st.bind(1, trace_id).bind(2, std::string_view(c.name)).bind(3, std::string_view(q)).bind_doubles(4, c.values).run();
+      channel_st.bind(1, trace_id).bind(2, std::string_view(c.name)).bind(3, std::string_view(q)).run();
+      channel_ids.push_back(sqlite3_last_insert_rowid(db.get()));
+      store::write_series(db, trace_id, channel_ids.back(), c.values, progress);
     }
+    if (cancel) cancel->report(1.0, "summarising");
+    store::write_summary(db, trace_id, channel_ids, summarize_trace(t));
   }
   Statement frame_st(db,
                      "INSERT INTO frames(import_id, label, storage, path, content_hash, source_format, read_options, "
@@ -591,12 +601,12 @@ std::vector<StoredResultSet> Workspace::result_sets() const {
   return out;
 }
 
-std::vector<StoredPowerTrace> Workspace::power_traces() const {
+std::vector<StoredPowerTrace> Workspace::power_trace_summaries() const {
   std::vector<StoredPowerTrace> out;
   std::map<std::int64_t, std::size_t> index;
   Statement st(impl_->db,
-               "SELECT id, import_id, platform, label, start_time, supply_voltage_v, time_s, provenance, "
-               "total_channel FROM power_traces ORDER BY id");
+               "SELECT id, import_id, platform, label, start_time, supply_voltage_v, provenance, total_channel, "
+               "samples, duration_s FROM power_traces ORDER BY id");
   while (st.step()) {
     StoredPowerTrace s;
     s.id = st.int64(0);
@@ -605,20 +615,32 @@ std::vector<StoredPowerTrace> Workspace::power_traces() const {
     s.trace.label = st.text(3);
     s.trace.start_time = st.text(4);
     s.trace.supply_voltage_v = st.optional_real(5);
-    s.trace.time_s = st.doubles(6);
-    s.trace.provenance = provenance_from_json(nlohmann::json::parse(st.text(7), nullptr, false));
-    s.trace.total_channel = st.text(8);
+    s.trace.provenance = provenance_from_json(nlohmann::json::parse(st.text(6), nullptr, false));
+    s.trace.total_channel = st.text(7);
+    s.summary.samples = static_cast<std::size_t>(st.int64(8));
+    s.summary.duration_s = st.real(9);
+    s.samples_loaded = false;
     index[s.id] = out.size();
     out.push_back(std::move(s));
   }
-  Statement ch(impl_->db, "SELECT trace_id, name, quantity, vals FROM power_channels ORDER BY trace_id, id");
+  Statement ch(impl_->db, "SELECT trace_id, name, quantity, summary, overview FROM power_channels ORDER BY trace_id, id");
   while (ch.step()) {
     const auto it = index.find(ch.int64(0));
     if (it == index.end()) continue;
     const std::string q = ch.text(2);
-    out[it->second].trace.channels.push_back(
-        {ch.text(1), q == "current" ? PowerQuantity::Current : q == "voltage" ? PowerQuantity::Voltage : PowerQuantity::Power,
-         ch.doubles(3)});
+    StoredPowerTrace& s = out[it->second];
+    s.trace.channels.push_back(
+        {ch.text(1), q == "current" ? PowerQuantity::Current : q == "voltage" ? PowerQuantity::Voltage : PowerQuantity::Power, {}});
+    ChannelSummary cs;
+    cs.name = s.trace.channels.back().name;
+    cs.quantity = s.trace.channels.back().quantity;
+    cs.stats = store::channel_stats_from_json(ch.text(3), cs.integral);
+    const std::vector<double> pairs = ch.doubles(4);
+    for (std::size_t i = 0; i + 1 < pairs.size(); i += 2) {
+      cs.overview.t.push_back(pairs[i]);
+      cs.overview.v.push_back(pairs[i + 1]);
+    }
+    s.summary.channels.push_back(std::move(cs));
   }
   Statement ph(impl_->db, "SELECT trace_id, name, start_s, end_s FROM power_phases ORDER BY trace_id, start_s, id");
   while (ph.step()) {
@@ -626,6 +648,29 @@ std::vector<StoredPowerTrace> Workspace::power_traces() const {
     if (it == index.end()) continue;
     out[it->second].trace.phases.push_back({ph.text(1), ph.real(2), ph.real(3)});
   }
+  return out;
+}
+
+void Workspace::load_power_samples(StoredPowerTrace& t, const CancelToken* cancel) const {
+  if (t.samples_loaded) return;
+  std::vector<std::int64_t> channel_ids;
+  Statement ch(impl_->db, "SELECT id FROM power_channels WHERE trace_id = ? ORDER BY id");
+  ch.bind(1, t.id);
+  while (ch.step()) channel_ids.push_back(ch.int64(0));
+  if (channel_ids.size() != t.trace.channels.size())
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt, impl_->path + ": power trace " + std::to_string(t.id) +
+                                                            " changed while it was being read");
+  const std::size_t n = t.summary.samples;
+  store::SampleProgress progress{cancel, "loading samples", 0, n * (1 + channel_ids.size())};
+  t.trace.time_s = store::read_series(impl_->db, t.id, 0, n, progress);
+  for (std::size_t k = 0; k < channel_ids.size(); ++k)
+    t.trace.channels[k].values = store::read_series(impl_->db, t.id, channel_ids[k], n, progress);
+  t.samples_loaded = true;
+}
+
+std::vector<StoredPowerTrace> Workspace::power_traces() const {
+  std::vector<StoredPowerTrace> out = power_trace_summaries();
+  for (StoredPowerTrace& t : out) load_power_samples(t);
   return out;
 }
 

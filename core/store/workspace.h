@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/trace_summary.h"
 #include "model/import_batch.h"
 #include "util/cancel.h"
 
@@ -61,7 +62,9 @@ struct StoredResultSet {
 struct StoredPowerTrace {
   std::int64_t id = 0;
   std::int64_t import_id = 0;
-  PowerTrace trace;
+  PowerTrace trace;      // from power_trace_summaries(): everything but time_s and the channels' values
+  TraceSummary summary;  // cached at import: sample count, duration, whole-log statistics, overview per channel
+  bool samples_loaded = true;  // false from power_trace_summaries() until load_power_samples()
 };
 
 // A frame's record; frame.pixels is filled only by frame_pixels() (copies) or by re-reading the file
@@ -84,7 +87,8 @@ struct StoredPipelineRun {
 // transaction per import so a crash or a cancel leaves either all of an import or none of it.
 class Workspace {
  public:
-  static constexpr int kSchemaVersion = 5;  // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases
+  // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary
+  static constexpr int kSchemaVersion = 6;
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -128,7 +132,14 @@ class Workspace {
   void set_device_color(const std::string& platform, const std::string& device, int color_index);
   std::vector<StoredRun> runs() const;  // ordered by device colour index, backend, dims, id
   std::vector<StoredResultSet> result_sets() const;
-  std::vector<StoredPowerTrace> power_traces() const;
+  std::vector<StoredPowerTrace> power_traces() const;  // with every sample (eager)
+  // Lazy loading: each trace's metadata, phases, channel names and cached summary, no samples. Reads a few KB per
+  // trace whatever its length (a 100-million-sample log included).
+  std::vector<StoredPowerTrace> power_trace_summaries() const;
+  // Fills time_s and every channel's values of `t` (from power_trace_summaries()) chunk by chunk, straight into
+  // place; polls `cancel` and reports progress through it (CancelToken::report) between chunks. Gives the same
+  // samples, bit for bit, as power_traces().
+  void load_power_samples(StoredPowerTrace& t, const CancelToken* cancel = nullptr) const;
   // Adds a named phase to a stored trace (the Power tab's "Save as phase…"); power_traces() returns it with the
   // trace's other phases, ordered by start. Throws WorkspaceError(Constraint) for an unknown trace id, an empty name
   // or an end before the start.

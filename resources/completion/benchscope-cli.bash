@@ -3,7 +3,7 @@
 # /usr/share/bash-completion/completions/benchscope-cli.
 _benchscope_cli() {
   local cur="${COMP_WORDS[COMP_CWORD]}"
-  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power record-power report roofline run sensors synth-frame"
+  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power record-power report roofline run sensors synth-frame synth-power"
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return

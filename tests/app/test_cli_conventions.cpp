@@ -118,7 +118,7 @@ class TestCliConventions : public QObject {
     };
     QCOMPARE(complete("benchscope-cli im", 1), QStringList{"import"});
     QCOMPARE(complete("benchscope-cli import --k", 2), QStringList{"--keep-going"});
-    QCOMPARE(complete("benchscope-cli help sy", 2), QStringList{"synth-frame"});
+    QCOMPARE(complete("benchscope-cli help sy", 2), (QStringList{"synth-frame", "synth-power"}));
   }
 };
 

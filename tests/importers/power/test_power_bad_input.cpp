@@ -83,7 +83,7 @@ class TestPowerBadInput : public QObject {
   }
   void documented_limits() {
     bs::ImportLimits limits;
-    limits.max_samples = 3;
+    limits.max_power_rows = 3;  // the meter CSV's own row limit (100M-row logs are allowed by default)
     try {
       bs::parse_power_csv("time_s,current_A\n0,1\n1,1\n2,1\n3,1\n", "log.csv", bs::CancelToken{}, {}, limits);
       QFAIL("accepted more rows than the limit");
