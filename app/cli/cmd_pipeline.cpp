@@ -104,7 +104,7 @@ Detector detector_option(const std::string& s, double scale) {
   for (const std::string& file : {o.model, o.config})
     if (!file.empty() && !std::filesystem::is_regular_file(file))
       throw std::runtime_error(file + ": no such model file (--detector takes hog, none or MODEL[,CONFIG])");
-  return scaled_detector(dnn_ssd_detector(o), scale);
+  return scaled_detector(dnn_detector(o), scale);
 }
 
 std::string scale_text(double s) {
