@@ -14,6 +14,9 @@
 
 namespace bs {
 
+// Shown with every run of a built-in architecture (random weights) in every view and export.
+inline constexpr const char* kArchitectureTimingLabel = "architecture timing: no detections";
+
 struct DnnRun {
   std::string platform;  // this host's name or --platform
   std::string device;    // "CPU (16 OpenCV threads)", "Intel(R) UHD Graphics (OpenCL)"

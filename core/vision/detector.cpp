@@ -81,17 +81,16 @@ std::string size_text(cv::Size s) { return std::to_string(s.width) + "x" + std::
 
 }  // namespace
 
-Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::string& name, DnnDetectorInfo* info) {
-  auto net = std::make_shared<cv::dnn::Net>(std::move(net_in));
-  if (net->empty()) throw std::runtime_error(name + ": the network has no layers");
+DnnDetectorInfo probe_detector_network(cv::dnn::Net& net, const DnnOptions& o, const std::string& name) {
+  if (net.empty()) throw std::runtime_error(name + ": the network has no layers");
   cv::Size input = o.input_size;
   std::vector<cv::Mat> outs;
   if (input.area() > 0) {
-    outs = probe(*net, input);
+    outs = probe(net, input);
     if (outs.empty()) throw std::runtime_error(name + ": the network does not run on a " + size_text(input) + " input");
   } else {
     for (const cv::Size s : {cv::Size(300, 300), cv::Size(640, 640)})
-      if (!(outs = probe(*net, s)).empty()) {
+      if (!(outs = probe(net, s)).empty()) {
         input = s;
         break;
       }
@@ -104,13 +103,18 @@ Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::strin
     throw std::runtime_error(name + ": " + e.what());
   }
   const bool yolo = match.family != DnnOutputFamily::Ssd;
-  if (yolo && o.input_size.area() == 0 && input != cv::Size(640, 640)) {
-    std::vector<cv::Mat> at640 = probe(*net, {640, 640});
-    if (!at640.empty()) input = {640, 640}, outs = std::move(at640);
-  }
-  const double scale = o.scale.value_or(yolo ? 1.0 / 255 : 1.0 / 127.5);
-  const cv::Scalar mean = o.mean.value_or(yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5));
-  if (info) *info = {to_string(match.family), input, scale, mean};
+  if (yolo && o.input_size.area() == 0 && input != cv::Size(640, 640) && !probe(net, {640, 640}).empty()) input = {640, 640};
+  return {to_string(match.family), input, o.scale.value_or(yolo ? 1.0 / 255 : 1.0 / 127.5),
+          o.mean.value_or(yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5))};
+}
+
+Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::string& name, DnnDetectorInfo* info) {
+  auto net = std::make_shared<cv::dnn::Net>(std::move(net_in));
+  const DnnDetectorInfo probed = probe_detector_network(*net, o, name);
+  if (info) *info = probed;
+  const cv::Size input = probed.input_size;
+  const double scale = probed.scale;
+  const cv::Scalar mean = probed.mean;
   auto mutex = std::make_shared<std::mutex>();  // one Net, forward() is not reentrant
   const auto names = net->getUnconnectedOutLayersNames();
   return [net, mutex, o, input, scale, mean, names](const cv::Mat& bgr) {
@@ -130,15 +134,19 @@ Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::strin
   };
 }
 
-Detector dnn_detector(const DnnOptions& o, DnnDetectorInfo* info) {
+cv::dnn::Net read_detector_network(const std::string& model, const std::string& config) {
   cv::dnn::Net net;
   try {
-    net = cv::dnn::readNet(o.model, o.config);
+    net = cv::dnn::readNet(model, config);
   } catch (const cv::Exception& e) {
-    throw std::runtime_error(o.model + ": cannot load the detector model (" + e.err + ")");
+    throw std::runtime_error(model + ": cannot load the detector model (" + e.err + ")");
   }
-  if (net.empty()) throw std::runtime_error(o.model + ": cannot load the detector model");
-  return dnn_detector(std::move(net), o, o.model, info);
+  if (net.empty()) throw std::runtime_error(model + ": cannot load the detector model");
+  return net;
+}
+
+Detector dnn_detector(const DnnOptions& o, DnnDetectorInfo* info) {
+  return dnn_detector(read_detector_network(o.model, o.config), o, o.model, info);
 }
 
 cv::Mat draw_detections(const cv::Mat& bgr, const std::vector<Detection>& detections) {

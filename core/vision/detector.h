@@ -50,6 +50,13 @@ struct DnnDetectorInfo {
   double scale = 0;
   cv::Scalar mean;
 };
+// What a detection network is: its output family, the input size it runs at and the preprocessing that family
+// takes (given values win). Found by forward passes of a blank image as described at DnnOptions. Throws
+// std::runtime_error starting with `name` when the network runs at no size tried or its outputs are of no known
+// family (the message then lists the output shapes).
+DnnDetectorInfo probe_detector_network(cv::dnn::Net& net, const DnnOptions& options, const std::string& name);
+// Reads a model file (and its config) with cv::dnn::readNet; throws std::runtime_error naming the file.
+cv::dnn::Net read_detector_network(const std::string& model, const std::string& config);
 // Throws std::runtime_error naming the file when OpenCV cannot read the model or its outputs are of no known
 // family (the message then lists the output shapes).
 Detector dnn_detector(const DnnOptions& options, DnnDetectorInfo* info = nullptr);

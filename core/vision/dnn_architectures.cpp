@@ -2,6 +2,8 @@
 #include "vision/dnn_architectures.h"
 
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -263,6 +265,25 @@ BuiltNetwork build_architecture(DnnArchitecture a, cv::Size input, unsigned seed
     throw std::invalid_argument("network input must be 32 to 4096 px per side (got " + std::to_string(input.width) +
                                 "x" + std::to_string(input.height) + ")");
   return a == DnnArchitecture::MobileNetSsd ? mobilenet_ssd(input, seed) : yolo_n(input, seed);
+}
+
+Detector architecture_timing_detector(DnnArchitecture a) {
+  const cv::Size input = a == DnnArchitecture::MobileNetSsd ? cv::Size(300, 300) : cv::Size(640, 640);
+  auto net = std::make_shared<cv::dnn::Net>(build_architecture(a, input).net);
+  auto mutex = std::make_shared<std::mutex>();  // one Net, forward() is not reentrant
+  const bool yolo = a == DnnArchitecture::YoloN;
+  return [net, mutex, input, yolo](const cv::Mat& bgr) {
+    const cv::Mat blob = cv::dnn::blobFromImage(bgr, yolo ? 1.0 / 255 : 1.0 / 127.5, input,
+                                                yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5), true, false);
+    std::lock_guard lock(*mutex);
+    net->setInput(blob);
+    net->forward();
+    return std::vector<Detection>{};
+  };
+}
+
+std::string architecture_detector_name(DnnArchitecture a) {
+  return std::string(to_string(a)) + " (" + kArchitectureTimingLabel + ")";
 }
 
 }  // namespace bs::vision

@@ -18,9 +18,10 @@
 
 #include <opencv2/dnn.hpp>
 
-namespace bs::vision {
+#include "model/dnn_run.h"  // kArchitectureTimingLabel
+#include "vision/detector.h"
 
-inline constexpr const char* kArchitectureTimingLabel = "architecture timing: no detections";
+namespace bs::vision {
 
 enum class DnnArchitecture { MobileNetSsd, YoloN };
 const char* to_string(DnnArchitecture a);  // "mobilenet-ssd", "yolo-n"
@@ -39,5 +40,12 @@ struct BuiltNetwork {
 // He-scaled normal distribution seeded with `seed` (activations stay of order 1, no denormals). Throws
 // std::invalid_argument for an input the architecture cannot take.
 BuiltNetwork build_architecture(DnnArchitecture a, cv::Size input, unsigned seed = 1);
+
+// A detection stage that runs the architecture (at its default input, the image stretched to it, one forward
+// pass per image as a real detector would) and reports no detections: its random weights detect nothing. For
+// timing a pipeline's detection stage with a network's cost when no trained weights are at hand.
+Detector architecture_timing_detector(DnnArchitecture a);
+// The pipeline run's detector name for it: "mobilenet-ssd (architecture timing: no detections)".
+std::string architecture_detector_name(DnnArchitecture a);
 
 }  // namespace bs::vision
