@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -32,6 +34,12 @@ namespace bs::cli {
 namespace {
 
 using namespace bs::vision;
+
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 std::string load_average_text() {
   std::ifstream f("/proc/loadavg");
@@ -198,13 +206,21 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     }
     const cv::Mat blob = cv::dnn::blobFromImages(images, n.scale, n.input, n.mean, true, false);
     TextTable table({"target", "device", "n", "forward mean ± SD (ms)", "p50 (ms)", "p95 (ms)", "per image (ms)",
-                     "inferences/s", "GFLOPS", "ceiling (GFLOPS)", "% ceiling"});
+                     "inferences/s", "GFLOPS", "ceiling (GFLOPS)", "% ceiling", "cores busy"});
     for (const DnnTarget& t : targets) {
       if (!t.available) continue;
       const std::string phase = n.model + " " + t.id;
+      // The cores the process got while timing (CPU time / wall time): on a shared machine this says when a
+      // neighbour took some, which the time per pass alone does not.
+      double cpu0 = 0;
+      std::chrono::steady_clock::time_point wall0;
       const std::vector<double> s = time_forward(n.net, t, blob, kWarmup, runs, cancel, [&] {
         if (power) power->begin_phase(phase);
+        cpu0 = process_cpu_seconds();
+        wall0 = std::chrono::steady_clock::now();
       });
+      const double cores = (process_cpu_seconds() - cpu0) /
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
       if (power) power->end_phase();
       if (cancel.cancelled() || s.empty()) {
         err << "benchscope-cli: bench dnn cancelled; nothing stored\n";
@@ -238,9 +254,11 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
                  fixed(pct.p50 * 1e3, 2), fixed(pct.p95 * 1e3, 2), fixed(r.inference_s() * 1e3, 2),
                  fixed(r.inferences_per_s(), 2), fixed(r.achieved_flops() / 1e9, 2),
                  r.device_peak_flops ? fixed(*r.device_peak_flops / 1e9, 1) : "–",
-                 r.device_peak_flops ? fixed(100 * r.achieved_flops() / *r.device_peak_flops, 1) + "%" : "–"});
+                 r.device_peak_flops ? fixed(100 * r.achieved_flops() / *r.device_peak_flops, 1) + "%" : "–",
+                 t.id == "cpu" ? fixed(cores, 2) : "–"});
     }
     table.print(out);
+    out << "  (cores busy: process CPU time / wall time over the timed passes, of " << cpu.threads << " threads)\n";
   }
   std::optional<PowerTrace> trace;
   if (power) {

@@ -40,7 +40,9 @@ class TestCliDnn : public QObject {
     QVERIFY(d.forward.mean_s > 0 && d.forward.p95_s);
     QVERIFY(d.flops > 0 && d.opencv_flops > d.flops);  // OpenCV counts depthwise convolutions as full ones
     QCOMPARE(d.model_hash, std::string("builtin:mobilenet-ssd:seed1"));
-    // The Platforms table of the CLI shows it.
+    // The Platforms table of the CLI shows it beside the paper's platforms.
+    const auto imp = cli({"import", ws, BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    QVERIFY2(imp.code == 0, imp.err.constData());
     const auto p = cli({"platforms", ws});
     QVERIFY2(p.code == 0, p.err.constData());
     QVERIFY2(p.out.contains("Detection network inference") && p.out.contains("mobilenet-ssd (SSD), architecture timing"),
