@@ -223,6 +223,7 @@ FigureData select_figure_data(FigureData d, FigureDataChoice choice) {
   std::erase_if(d.runs, [&](const FlopsRun& r) { return measured(r.provenance); });
   std::erase_if(d.traces, [&](const PowerTrace& t) { return measured(t.provenance); });
   std::erase_if(d.pipelines, [](const PipelineTimings& p) { return p.source.origin != DataOrigin::Reconstructed; });
+  std::erase_if(d.inference_runs, [](const DnnRun& r) { return r.provenance.origin != DataOrigin::Reconstructed; });
   d.selection = "paper data only (reconstructed from the paper's reported figures)";
   return d;
 }

@@ -12,6 +12,7 @@
 #include <functional>
 
 #include "analysis/platform_comparison.h"
+#include "model/dnn_run.h"
 #include "model/flops_run.h"
 #include "model/frame.h"
 #include "model/power_trace.h"
@@ -33,6 +34,7 @@ struct FigureData {
   std::vector<FlopsRun> runs;
   std::vector<PowerTrace> traces;
   std::vector<PipelineTimings> pipelines;
+  std::vector<DnnRun> inference_runs;  // bench dnn runs: the report's inference table
   std::optional<Frame> frame;  // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
   std::map<std::pair<std::string, std::string>, int> colors;  // (platform, device) -> colour index
   // Which data this is, said to the user and recorded in figures.json ("data"): e.g. "paper data only".

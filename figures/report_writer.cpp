@@ -116,6 +116,7 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
   in.rows = compare_platforms(data.runs, data.traces, data.pipelines, request.comparison);
   in.verdicts = recommend(in.rows, request.constraints);
   in.constraints = describe_constraints(request.constraints);
+  in.inference_runs = data.inference_runs;
 
   QStringList written;
   try {

@@ -3,6 +3,8 @@
 
 #include <QCoreApplication>
 #include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QDoubleSpinBox>
 #include <QFutureWatcher>
 #include <QGridLayout>
@@ -29,6 +31,8 @@ constexpr auto kFramesKey = "pipeline/measure_frames";
 constexpr auto kWorkersKey = "pipeline/detect_workers";
 constexpr auto kScaleKey = "pipeline/detect_scale";
 constexpr auto kBackendKey = "pipeline/measure_backend";
+constexpr auto kDetectorKey = "pipeline/measure_detector";
+constexpr auto kModelFile = "\x01model-file";  // the "Model file…" entry: opens a file dialog
 
 }  // namespace
 
@@ -38,6 +42,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
       workers_(new QSpinBox(this)),
       scale_(new QDoubleSpinBox(this)),
       backend_(new QComboBox(this)),
+      detector_(new QComboBox(this)),
       measure_(new QPushButton(tr("Measure on this machine"), this)),
       cancel_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
@@ -79,6 +84,38 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   const int saved = backend_->findData(settings.value(kBackendKey, QStringLiteral("cpu")).toString());
   const auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
   backend_->setCurrentIndex(saved >= 0 && model->item(saved)->isEnabled() ? saved : 0);
+  detector_->addItem(tr("HOG people detector"), QStringLiteral("hog"));
+  detector_->addItem(tr("mobilenet-ssd (architecture timing)"), QStringLiteral("mobilenet-ssd"));
+  detector_->addItem(tr("yolo-n (architecture timing)"), QStringLiteral("yolo-n"));
+  detector_->addItem(tr("Model file…"), QString::fromLatin1(kModelFile));
+  detector_->setItemData(1, tr("SSD300 MobileNet v1 built with random weights: times the network's cost, detects nothing"),
+                         Qt::ToolTipRole);
+  detector_->setItemData(2, tr("YOLOv8n layout built with random weights: times the network's cost, detects nothing"),
+                         Qt::ToolTipRole);
+  detector_->setItemData(3, tr("A detection network cv::dnn reads (ONNX, Caffe, TensorFlow, Darknet) with SSD, YOLOv5 "
+                               "or YOLOv8 outputs"), Qt::ToolTipRole);
+  detector_->setToolTip(tr("The detection stage: OpenCV's HOG, a built-in architecture (architecture timing: no "
+                           "detections) or a network from a model file"));
+  {
+    const QString saved_detector = settings.value(kDetectorKey, QStringLiteral("hog")).toString();
+    int at = detector_->findData(saved_detector);
+    if (at < 0 && QFileInfo::exists(saved_detector)) {
+      detector_->insertItem(3, QFileInfo(saved_detector).fileName(), saved_detector);
+      at = 3;
+    }
+    detector_->setCurrentIndex(at >= 0 ? at : 0);
+  }
+  connect(detector_, &QComboBox::activated, this, [this](int i) {
+    if (detector_->itemData(i).toString() != QString::fromLatin1(kModelFile)) return;
+    const QString file = QFileDialog::getOpenFileName(this, tr("Detection network"), QString(),
+                                                      tr("Networks (*.onnx *.pb *.caffemodel *.weights);;All files (*)"));
+    if (file.isEmpty()) {
+      detector_->setCurrentIndex(0);
+      return;
+    }
+    detector_->insertItem(i, QFileInfo(file).fileName(), file);
+    detector_->setCurrentIndex(i);
+  });
   cancel_->setEnabled(false);
   progress_->setRange(0, 100);
   progress_->setTextVisible(true);
@@ -105,6 +142,10 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
     layout->addWidget(w, 0, column++);
   layout->setColumnStretch(column, 1);
   auto* second_row = new QHBoxLayout;
+  auto* detector_label = new QLabel(tr("Detector:"), this);
+  detector_label->setToolTip(detector_->toolTip());
+  second_row->addWidget(detector_label);
+  second_row->addWidget(detector_);
   second_row->addWidget(new QLabel(tr("Record power:"), this));
   second_row->addWidget(power_);
   second_row->addWidget(measure_);
@@ -120,6 +161,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
     connect(box, &QSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
   connect(scale_, &QDoubleSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
   connect(backend_, &QComboBox::currentIndexChanged, this, &PipelineMeasurePanel::save_settings);
+  connect(detector_, &QComboBox::currentIndexChanged, this, &PipelineMeasurePanel::save_settings);
   auto* timer = new QTimer(this);
   timer->setInterval(100);
   connect(timer, &QTimer::timeout, this, [this] {
@@ -142,6 +184,8 @@ void PipelineMeasurePanel::save_settings() const {
   settings.setValue(kWorkersKey, workers_->value());
   settings.setValue(kScaleKey, scale_->value());
   settings.setValue(kBackendKey, backend_->currentData().toString());
+  if (detector_->currentData().toString() != QString::fromLatin1(kModelFile))
+    settings.setValue(kDetectorKey, detector_->currentData().toString());
 }
 
 void PipelineMeasurePanel::start() {
@@ -151,6 +195,7 @@ void PipelineMeasurePanel::start() {
   options.detection_workers = static_cast<std::size_t>(workers_->value());
   options.detect_scale = scale_->value();
   options.backend = backend_->currentData().toString().toStdString();
+  options.detector = detector_->currentData().toString().toStdString();
   options.tool = QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
   trace_.reset();
   try {

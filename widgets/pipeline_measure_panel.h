@@ -41,6 +41,8 @@ class PipelineMeasurePanel : public QWidget {
   QSpinBox* workers() const { return workers_; }
   QDoubleSpinBox* scale() const { return scale_; }
   QComboBox* backend() const { return backend_; }
+  // The detection stage: "hog", "mobilenet-ssd", "yolo-n" (architecture timing) or a model file path.
+  QComboBox* detector() const { return detector_; }
   QPushButton* measure_button() const { return measure_; }
   PowerSensorBox* power_box() const { return power_; }
   QLabel* status() const { return status_; }
@@ -68,6 +70,7 @@ class PipelineMeasurePanel : public QWidget {
   QSpinBox* workers_;
   QDoubleSpinBox* scale_;
   QComboBox* backend_;
+  QComboBox* detector_;
   QPushButton* measure_;
   QPushButton* cancel_;
   QProgressBar* progress_;

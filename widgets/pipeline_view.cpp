@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 
+#include "inference_table.h"
 #include "analysis/pipeline_table.h"
 #include "pipeline_measure_panel.h"
 
@@ -90,9 +91,13 @@ PipelineView::PipelineView(QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(measure_);
   layout->addLayout(buttons);
-  layout->addWidget(table_, 1);
+  layout->addWidget(table_, 2);
+  inference_ = new InferenceTable(this);
+  layout->addWidget(inference_, 1);
   fill();
 }
+
+void PipelineView::set_inference_runs(std::vector<DnnRun> runs) { inference_->set_runs(std::move(runs)); }
 
 void PipelineView::set_data(std::vector<PipelineRun> runs) {
   runs_ = std::move(runs);

@@ -3,6 +3,7 @@
 #include <QWidget>
 #include <vector>
 
+#include "model/dnn_run.h"
 #include "model/pipeline_run.h"
 
 class QLabel;
@@ -11,6 +12,7 @@ class QTableWidget;
 namespace bs::ui {
 
 class PipelineMeasurePanel;
+class InferenceTable;
 
 // The paper's pipeline timings as a table: one row per (stage, platform) with mean ± SD (n) in ms, p95, the rate
 // the stage alone sustains and the run's measured throughput; sortable by any column (numerically), each row's
@@ -23,6 +25,9 @@ class PipelineView : public QWidget {
   enum Column { Stage, Platform, Device, Time, P95, StageRate, Throughput, Data, LensColumn, ColumnCount };
   explicit PipelineView(QWidget* parent = nullptr);
   void set_data(std::vector<PipelineRun> runs);
+  // bench dnn runs: the inference table under the pipeline's (hidden while there are none).
+  void set_inference_runs(std::vector<DnnRun> runs);
+  InferenceTable* inference_table() const { return inference_; }
   QTableWidget* table() const { return table_; }
   PipelineMeasurePanel* measure_panel() const { return measure_; }
 
@@ -36,6 +41,7 @@ class PipelineView : public QWidget {
   PipelineMeasurePanel* measure_;
   QLabel* summary_;
   QTableWidget* table_;
+  InferenceTable* inference_;
   std::vector<PipelineRun> runs_;
 };
 

@@ -25,6 +25,7 @@
 #include "analysis/plausibility.h"
 #include "analysis/platform_table.h"
 #include "frozen_column.h"
+#include "inference_table.h"
 
 namespace bs::ui {
 namespace {
@@ -176,7 +177,9 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   layout->addLayout(controls);
   layout->addLayout(battery_row);
   layout->addWidget(summary_);
-  layout->addWidget(table_, 1);
+  layout->addWidget(table_, 2);
+  inference_ = new InferenceTable(this);
+  layout->addWidget(inference_, 1);
 
   for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_}) connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
   for (QDoubleSpinBox* s : {budget_, fps_, runtime_, extra_load_})
@@ -216,6 +219,8 @@ void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> 
   pipelines_ = pipeline_timings(pipelines);
   recompute();
 }
+
+void PlatformView::set_inference_runs(std::vector<DnnRun> runs) { inference_->set_runs(std::move(runs)); }
 
 void PlatformView::fill_battery_choices() {
   const QSignalBlocker b1(battery_), b2(mission_);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "analysis/platform_comparison.h"
+#include "model/dnn_run.h"
 #include "store/battery_preset_store.h"
 
 class QCheckBox;
@@ -20,6 +21,7 @@ class Workspace;
 namespace bs::ui {
 
 class FrozenFirstColumn;
+class InferenceTable;
 
 // One row per platform (peaks, power, GFLOPS/W, pipeline, energy per frame, battery), sortable, the best value of
 // each column highlighted, each cell's source in its tooltip; constraints (power budget, fps, runtime) add the
@@ -32,6 +34,9 @@ class PlatformView : public QWidget {
   ~PlatformView() override;
   // Pipeline runs give the preprocessing and detection columns and, with a power log, energy per frame.
   void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces, std::vector<PipelineRun> pipelines = {});
+  // bench dnn runs: the inference table under the comparison (hidden while there are none).
+  void set_inference_runs(std::vector<DnnRun> runs);
+  InferenceTable* inference_table() const { return inference_; }
   QTableWidget* table() const { return table_; }
   QString recommendation() const;  // the recommended platform, empty when none
   // The battery presets (built-in and the workspace's, with their missions) offered in the Battery and Mission
@@ -71,6 +76,7 @@ class PlatformView : public QWidget {
   QString tab_setup_label_;
   QLabel* summary_;
   QTableWidget* table_;
+  InferenceTable* inference_ = nullptr;
   FrozenFirstColumn* frozen_ = nullptr;  // keeps the platform's name in view while the numbers scroll
   std::vector<FlopsRun> runs_;
   std::vector<PowerTrace> traces_;

@@ -15,6 +15,7 @@
 #include "analysis/power.h"
 #include "analysis/stats.h"
 #include "args.h"
+#include "bench_dnn.h"
 #include "bench_pipeline.h"
 #include "bench_range_stats.h"
 #include "bench_tuner.h"
@@ -253,7 +254,7 @@ int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
 
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate | range-stats)",
+    "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate | range-stats | dnn)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--power SENSOR|auto] [--power-interval-ms M]\n"
     "         [--sysfs-root DIR]   (--power: also the sampler's cost, with / without, and the energy per run)\n"
     "       benchscope-cli bench vision [--frames F] [--threads T] [--power SENSOR|auto]\n"
@@ -265,6 +266,7 @@ const CommandRegistrar registrar({
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
     "       benchscope-cli bench range-stats [--samples N] [--updates U]   (the Power tab's selection statistics per\n"
     "         mouse move on an N-sample trace, default 10,000,000, vs a plain rescan of the range)\n"
+    + std::string(kBenchDnnUsage) +
     "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
     "  median and mean \xC2\xB1 SD of R\n"
     "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU SIMD\n"
@@ -276,8 +278,9 @@ const CommandRegistrar registrar({
     "  W detection workers (default: this machine's threads) on R rounds (default 3) of N synthetic paper frames\n"
     "  (default 16), HOG at scale\n"
     "  S (default 0.5); per-stage mean \xC2\xB1 SD (n), both throughputs, their ratio and the theoretical bound, with 1\n"
-    "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+    "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.\n"
+    + std::string(kBenchDnnHelp),
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
       if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
       if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
@@ -286,8 +289,9 @@ const CommandRegistrar registrar({
       if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
       if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
       if (!args.empty() && args[0] == "range-stats") return bench_range_stats(rest, out);
+      if (!args.empty() && args[0] == "dnn") return bench_dnn(rest, out, err);
       throw UsageError("expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv', "
-                       "'bench decimate' or 'bench range-stats'");
+                       "'bench decimate', 'bench range-stats' or 'bench dnn'");
     },
 });
 

@@ -22,6 +22,7 @@
 #include "store/workspace.h"
 #include "text_table.h"
 #include "vision/detector.h"
+#include "vision/dnn_architectures.h"
 #include "vision/frame_file.h"
 #include "vision/cuda_preprocess.h"
 #include "vision/opencl_preprocess.h"
@@ -96,15 +97,18 @@ Demosaic demosaic_option(const std::string& s) {
 Detector detector_option(const std::string& s, double scale) {
   if (s == "none") return {};
   if (s == "hog") return hog_people_detector(scale);
-  // MODEL[,CONFIG]: an SSD network cv::dnn reads (Caffe .caffemodel + .prototxt, TensorFlow .pb + .pbtxt, ONNX).
+  if (const auto arch = architecture_from_string(s)) return scaled_detector(architecture_timing_detector(*arch), scale);
+  // MODEL[,CONFIG]: a detection network cv::dnn reads (ONNX, Caffe .caffemodel + .prototxt, TensorFlow .pb +
+  // .pbtxt, Darknet .weights + .cfg) with SSD, YOLOv5 or YOLOv8 outputs.
   DnnOptions o;
   const auto comma = s.find(',');
   o.model = s.substr(0, comma);
   if (comma != std::string::npos) o.config = s.substr(comma + 1);
   for (const std::string& file : {o.model, o.config})
     if (!file.empty() && !std::filesystem::is_regular_file(file))
-      throw std::runtime_error(file + ": no such model file (--detector takes hog, none or MODEL[,CONFIG])");
-  return scaled_detector(dnn_ssd_detector(o), scale);
+      throw std::runtime_error(file + ": no such model file (--detector takes hog, none, mobilenet-ssd, yolo-n or "
+                               "MODEL[,CONFIG])");
+  return scaled_detector(dnn_detector(o), scale);
 }
 
 std::string scale_text(double s) {
@@ -252,6 +256,8 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   run.demosaic = demosaic_name;
   run.detector = detector_name == "hog" || detector_name == "none"
                      ? detector_name
+                 : architecture_from_string(detector_name)
+                     ? architecture_detector_name(*architecture_from_string(detector_name))
                      : std::filesystem::path(detector_name.substr(0, detector_name.find(','))).filename().string();
   run.frame_width = lens.width;
   run.frame_height = lens.height;
@@ -301,8 +307,9 @@ const CommandRegistrar registrar({
     "pipeline",
     "run the vision pipeline (demosaic + reprojection, detection) on frames; timings, figure 3, store",
     "usage: benchscope-cli pipeline FRAME... --lens LENS.json|paper [--demosaic fused|bilinear|mhc|opencv]\n"
-    "         [--backend cpu|opencl|cuda] [--detector hog|none|MODEL[,CONFIG]] [--frames N] [--policy block|drop-oldest]\n"
-    "         [--queue N] [--detect-workers W] [--detect-scale S] [--pattern BGGR|RGGB|GRBG|GBRG] [--platform NAME]\n"
+    "         [--backend cpu|opencl|cuda] [--detector hog|none|mobilenet-ssd|yolo-n|MODEL[,CONFIG]] [--frames N]\n"
+    "         [--policy block|drop-oldest] [--queue N] [--detect-workers W] [--detect-scale S]\n"
+    "         [--pattern BGGR|RGGB|GRBG|GBRG] [--platform NAME]\n"
     "         [--out DIR] [--workspace WS] [--json] [--power SENSOR|auto|none] [--power-interval-ms M] [--sysfs-root DIR]\n"
     "  Runs capture -> preprocessing (demosaic + reprojection) -> detection, capture and preprocessing on a thread\n"
     "  each, detection on W worker threads (--detect-workers, default this machine's threads), with\n"
@@ -311,7 +318,9 @@ const CommandRegistrar registrar({
     "  pattern from --pattern, default BGGR) or raw Bayer FILE.raw with a FILE.json sidecar {width, height, pattern,\n"
     "  bit_depth, endianness} as `synth-frame` writes. --lens takes a lens file, a sidecar that holds one, or paper.\n"
     "  --demosaic fused (default) samples the bilinear demosaic only where the reprojection reads it, in one pass.\n"
-    "  --detector hog: OpenCV's HOG people detector; MODEL[,CONFIG]: an SSD network via cv::dnn. The detector sees\n"
+    "  --detector hog: OpenCV's HOG people detector; MODEL[,CONFIG]: a network via cv::dnn (ONNX, Caffe, TensorFlow,\n"
+    "  Darknet) with SSD, YOLOv5 or YOLOv8 outputs, decoded with its confidence threshold and NMS; mobilenet-ssd,\n"
+    "  yolo-n: a built-in architecture with random weights (architecture timing: no detections). The detector sees\n"
     "  the view shrunk by --detect-scale S (0 < S <= 1, default 0.5); its boxes are mapped back to the full view.\n"
     "  Prints per stage n, mean ± SD, p50, p95, min, max (ms) and the throughput; --json prints the run as\n"
     "  benchscope-pipeline-v1 JSON (docs/pipeline-json-v1.md) instead. --out DIR writes the paper's figure 3 for\n"

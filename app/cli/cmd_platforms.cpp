@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/inference_table.h"
 #include "analysis/platform_table.h"
 #include "args.h"
 #include "command.h"
@@ -124,6 +125,15 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   out << "\nframes per Wh: frames preprocessed and detected per Wh of the computer = 3600 / energy per frame (J)\n";
   for (const auto& v : verdicts)
     if (!v.ranking_note.empty()) out << "ranking: " << v.platform << ": " << v.ranking_note << '\n';
+  if (!data.dnn_runs.empty()) {
+    // bench dnn runs, one row each: the table the Platforms and Pipeline views and the report show.
+    const ExportTable inf = inference_table(data.dnn_runs);
+    out << '\n' << inf.caption << ":\n";
+    TextTable t(inf.header);
+    for (const auto& r : inf.rows) t.add(r);
+    t.print(out);
+    for (const std::string& n : inf.notes) out << n << '\n';
+  }
   if (constrained) {
     std::string chosen;
     for (const auto& v : verdicts)
@@ -149,7 +159,9 @@ const CommandRegistrar registrar({
     "  `battery --mission`: the battery runtime and the runtime constraint then follow the mission.\n"
     "  With constraints, each platform is checked against them (the power budget against the mean power) with its\n"
     "  margin, and the platform with the most compute among those that meet all of them is recommended. Only\n"
-    "  platforms with a power log can be recommended. --latex/--csv write the table (booktabs / RFC 4180).",
+    "  platforms with a power log can be recommended. --latex/--csv write the table (booktabs / RFC 4180).\n"
+    "  Detection networks timed with `bench dnn --workspace` follow in a table of their own: time per image,\n"
+    "  inferences per second, achieved GFLOPS, energy per inference and inferences per Wh per network and target.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_platforms(args, out);
     },

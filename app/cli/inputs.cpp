@@ -33,6 +33,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
     for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
     for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
+    for (auto& d : ws.dnn_runs()) data.dnn_runs.push_back(std::move(d.run));
     add_foreign_sweeps(data);
     return data;
   }
@@ -49,6 +50,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.result_sets.begin(), batch.result_sets.end(), std::back_inserter(data.result_sets));
     std::move(batch.power_traces.begin(), batch.power_traces.end(), std::back_inserter(data.power_traces));
     std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
+    std::move(batch.dnn_runs.begin(), batch.dnn_runs.end(), std::back_inserter(data.dnn_runs));
     std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
   }
   add_foreign_sweeps(data);

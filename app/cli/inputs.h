@@ -25,6 +25,7 @@ struct LoadedData {
   std::vector<ResultSet> result_sets;
   std::vector<PowerTrace> power_traces;
   std::vector<PipelineRun> pipeline_runs;
+  std::vector<DnnRun> dnn_runs;
   std::vector<Frame> frames;  // imported files only: a workspace's frames are read on demand (frame_store.h)
 };
 // A single workspace argument is read from the workspace; otherwise every path is imported in memory.

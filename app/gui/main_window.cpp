@@ -264,6 +264,11 @@ void MainWindow::reload() {
     if (workspace_) PowerTraceLoader::load_now(*workspace_, traces);
     show_traces(traces);
   }
+  std::vector<DnnRun> inference_runs;
+  if (workspace_)
+    for (auto& d : workspace_->dnn_runs()) inference_runs.push_back(std::move(d.run));
+  platforms_->set_inference_runs(inference_runs);
+  pipeline_->set_inference_runs(std::move(inference_runs));
   std::vector<ResultSet> sets;
   std::map<std::pair<std::string, std::string>, int> device_colors;
   for (const StoredRun& r : runs_) device_colors[{r.run.platform, r.run.device}] = r.color_index;

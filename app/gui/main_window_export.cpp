@@ -68,6 +68,7 @@ FigureData MainWindow::figure_data() const {
     std::vector<PipelineRun> pipelines;
     for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
     d.pipelines = pipeline_timings(pipelines);
+    for (auto& r : workspace_->dnn_runs()) d.inference_runs.push_back(std::move(r.run));
     // fig3 shows the workspace's first capture; a referenced file that moved or changed is an error naming it.
     if (const auto frames = workspace_->frames(); !frames.empty()) d.frame = load_frame(*workspace_, frames.front());
   }

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "model/dnn_run.h"
 #include "model/flops_run.h"
 #include "model/frame.h"
 #include "model/pipeline_run.h"
@@ -20,9 +21,11 @@ struct ImportBatch {
   std::vector<PowerTrace> power_traces;
   std::vector<Frame> frames;
   std::vector<PipelineRun> pipeline_runs;
+  std::vector<DnnRun> dnn_runs;
   std::vector<std::string> warnings;  // non-fatal, each naming file and place
   bool empty() const {
-    return runs.empty() && result_sets.empty() && power_traces.empty() && frames.empty() && pipeline_runs.empty();
+    return runs.empty() && result_sets.empty() && power_traces.empty() && frames.empty() && pipeline_runs.empty() &&
+           dnn_runs.empty();
   }
 };
 

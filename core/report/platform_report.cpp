@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/inference_table.h"
 #include "analysis/platform_table.h"
 
 namespace bs {
@@ -119,6 +120,21 @@ std::string report_html(const ReportInput& in) {
       h << "<p><b>Recommended" << (in.constraints.empty() ? "" : " under " + html_escape(in.constraints)) << ": "
         << html_escape(v.platform) << "</b> (the highest peak among the platforms that meet every constraint and have a "
         << "power log).</p>\n";
+
+  // Detection networks timed with bench dnn: one row per platform, network, input and target, as in the views.
+  if (!in.inference_runs.empty()) {
+    const ExportTable inf = inference_table(in.inference_runs);
+    h << "<h2>Detection network inference</h2>\n<table width=\"100%\">\n<tr>";
+    for (const std::string& c : inf.header) h << "<th>" << html_escape(c) << "</th>";
+    h << "</tr>\n";
+    for (const auto& cells : inf.rows) {
+      h << "<tr>";
+      for (std::size_t c = 0; c < cells.size(); ++c) h << "<td" << (c >= 4 ? " class=\"num\"" : "") << ">" << html_escape(cells[c]) << "</td>";
+      h << "</tr>\n";
+    }
+    h << "</table>\n";
+    for (const std::string& n : inf.notes) h << "<p class=\"note\">" << html_escape(n) << "</p>\n";
+  }
 
   for (std::size_t i = 0; i < in.rows.size(); ++i) platform_page(h, table, i, in.rows[i]);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/platform_comparison.h"
+#include "model/dnn_run.h"
 
 namespace bs {
 
@@ -26,6 +27,7 @@ struct ReportInput {
   std::vector<PlatformVerdict> verdicts;  // same order as rows, may be empty
   std::string constraints;     // human-readable constraints the verdicts used, e.g. "power budget 10 W"
   std::vector<ReportFigure> figures;
+  std::vector<DnnRun> inference_runs;  // bench dnn runs: a table after the comparison when there are any
 };
 
 std::string report_html(const ReportInput& in);

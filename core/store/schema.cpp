@@ -230,9 +230,41 @@ void migrate_5_to_6(const sqlite::Db& db) {
   }
 }
 
+// Version 6 -> 7: dnn inference runs (`bench dnn`): one row per model x device x input, seconds per forward pass, FLOPs and the
+// energy per inference when power was recorded. Self-contained and idempotent (CREATE ... IF NOT EXISTS) so that
+// it can be renumbered next to other migrations of the same version.
+void migrate_add_dnn_runs(const sqlite::Db& db) {
+  db.exec(R"sql(
+    CREATE TABLE IF NOT EXISTS dnn_runs(
+      id INTEGER PRIMARY KEY,
+      import_id INTEGER NOT NULL REFERENCES imports(id) ON DELETE CASCADE,
+      platform TEXT NOT NULL,
+      device TEXT NOT NULL,
+      backend TEXT NOT NULL,
+      model TEXT NOT NULL,
+      model_hash TEXT NOT NULL,
+      family TEXT NOT NULL,
+      architecture_only INTEGER NOT NULL CHECK(architecture_only IN (0, 1)),
+      input_width INTEGER NOT NULL CHECK(input_width > 0),
+      input_height INTEGER NOT NULL CHECK(input_height > 0),
+      batch INTEGER NOT NULL CHECK(batch > 0),
+      flops INTEGER NOT NULL CHECK(flops >= 0),
+      opencv_flops INTEGER NOT NULL CHECK(opencv_flops >= 0),
+      n INTEGER NOT NULL CHECK(n > 0),
+      mean_s REAL NOT NULL CHECK(mean_s > 0),
+      sd_s REAL NOT NULL CHECK(sd_s >= 0),
+      min_s REAL, max_s REAL, p50_s REAL, p95_s REAL,
+      device_peak_flops REAL,
+      energy_per_inference_j REAL,
+      mean_power_w REAL,
+      provenance TEXT NOT NULL);
+    CREATE INDEX IF NOT EXISTS dnn_runs_by_import ON dnn_runs(import_id);
+  )sql");
+}
+
 using Migration = void (*)(const sqlite::Db&);
 constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4,
-                                     migrate_4_to_5, migrate_5_to_6};
+                                     migrate_4_to_5, migrate_5_to_6, migrate_add_dnn_runs};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

@@ -373,6 +373,39 @@ std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::st
           .bind(9, s.p95_s)
           .run();
   }
+  Statement dnn_st(db,
+                   "INSERT INTO dnn_runs(import_id, platform, device, backend, model, model_hash, family, "
+                   "architecture_only, input_width, input_height, batch, flops, opencv_flops, n, mean_s, sd_s, min_s, "
+                   "max_s, p50_s, p95_s, device_peak_flops, energy_per_inference_j, mean_power_w, provenance) "
+                   "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+  for (const DnnRun& d : batch.dnn_runs) {
+    check();
+    dnn_st.bind(1, import_id)
+        .bind(2, std::string_view(d.platform))
+        .bind(3, std::string_view(d.device))
+        .bind(4, std::string_view(d.backend))
+        .bind(5, std::string_view(d.model))
+        .bind(6, std::string_view(d.model_hash))
+        .bind(7, std::string_view(d.family))
+        .bind(8, d.architecture_only ? 1 : 0)
+        .bind(9, d.input_width)
+        .bind(10, d.input_height)
+        .bind(11, d.batch)
+        .bind(12, d.flops)
+        .bind(13, d.opencv_flops)
+        .bind(14, static_cast<std::int64_t>(d.forward.n))
+        .bind(15, d.forward.mean_s)
+        .bind(16, d.forward.sd_s)
+        .bind(17, d.forward.min_s)
+        .bind(18, d.forward.max_s)
+        .bind(19, d.forward.p50_s)
+        .bind(20, d.forward.p95_s)
+        .bind(21, d.device_peak_flops)
+        .bind(22, d.energy_per_inference_j)
+        .bind(23, d.mean_power_w)
+        .bind(24, std::string_view(provenance_to_json(d.provenance, true).dump()))
+        .run();
+  }
   check();
   return import_id;
 }
@@ -758,6 +791,41 @@ std::vector<StoredPipelineRun> Workspace::pipeline_runs() const {
     out[it->second].run.stages.push_back({stages.text(1), static_cast<std::size_t>(stages.int64(2)), stages.real(3),
                                           stages.real(4), stages.optional_real(5), stages.optional_real(6),
                                           stages.optional_real(7), stages.optional_real(8)});
+  }
+  return out;
+}
+
+std::vector<StoredDnnRun> Workspace::dnn_runs() const {
+  std::vector<StoredDnnRun> out;
+  Statement st(impl_->db,
+               "SELECT id, import_id, platform, device, backend, model, model_hash, family, architecture_only, "
+               "input_width, input_height, batch, flops, opencv_flops, n, mean_s, sd_s, min_s, max_s, p50_s, p95_s, "
+               "device_peak_flops, energy_per_inference_j, mean_power_w, provenance FROM dnn_runs "
+               "ORDER BY platform, model, input_width, input_height, backend, id");
+  while (st.step()) {
+    StoredDnnRun s;
+    s.id = st.int64(0);
+    s.import_id = st.int64(1);
+    DnnRun& d = s.run;
+    d.platform = st.text(2);
+    d.device = st.text(3);
+    d.backend = st.text(4);
+    d.model = st.text(5);
+    d.model_hash = st.text(6);
+    d.family = st.text(7);
+    d.architecture_only = st.int64(8) != 0;
+    d.input_width = static_cast<int>(st.int64(9));
+    d.input_height = static_cast<int>(st.int64(10));
+    d.batch = static_cast<int>(st.int64(11));
+    d.flops = st.int64(12);
+    d.opencv_flops = st.int64(13);
+    d.forward = {"inference", static_cast<std::size_t>(st.int64(14)), st.real(15), st.real(16), st.optional_real(17),
+                 st.optional_real(18), st.optional_real(19), st.optional_real(20)};
+    d.device_peak_flops = st.optional_real(21);
+    d.energy_per_inference_j = st.optional_real(22);
+    d.mean_power_w = st.optional_real(23);
+    d.provenance = provenance_from_json(nlohmann::json::parse(st.text(24), nullptr, false));
+    out.push_back(std::move(s));
   }
   return out;
 }

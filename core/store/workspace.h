@@ -83,12 +83,19 @@ struct StoredPipelineRun {
   PipelineRun run;
 };
 
+struct StoredDnnRun {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  DnnRun run;
+};
+
 // One SQLite file holds a whole workspace: schema version + migrations, foreign keys on, WAL journal, and one
 // transaction per import so a crash or a cancel leaves either all of an import or none of it.
 class Workspace {
  public:
-  // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary
-  static constexpr int kSchemaVersion = 6;
+  // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary,
+  // 7: dnn inference runs
+  static constexpr int kSchemaVersion = 7;
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -149,6 +156,7 @@ class Workspace {
   // Throws WorkspaceError(Corrupt) when the BLOB's size does not match the recorded geometry.
   std::vector<std::uint8_t> frame_pixels(std::int64_t frame_id) const;
   std::vector<StoredPipelineRun> pipeline_runs() const;  // ordered by platform, then id
+  std::vector<StoredDnnRun> dnn_runs() const;            // ordered by platform, model, input, backend, id
 
   // Stores runs produced in-process (benchscope-cli pipeline) as one import named `label`, identified by
   // `content_hash` (of their serialised form) like a file; returns the import id.

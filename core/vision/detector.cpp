@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/detector.h"
 
+#include "vision/dnn_decode.h"
+
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -61,22 +63,90 @@ std::vector<Detection> parse_ssd_output(const cv::Mat& out, cv::Size size, float
   return dets;
 }
 
-Detector dnn_ssd_detector(const DnnOptions& o) {
-  std::shared_ptr<cv::dnn::Net> net;
+namespace {
+
+// One forward pass of a blank image of `size`: the outputs, or empty when the network cannot take that size.
+std::vector<cv::Mat> probe(cv::dnn::Net& net, cv::Size size) {
   try {
-    net = std::make_shared<cv::dnn::Net>(cv::dnn::readNet(o.model, o.config));
-  } catch (const cv::Exception& e) {
-    throw std::runtime_error(o.model + ": cannot load the detector model (" + e.err + ")");
+    net.setInput(cv::Mat(std::vector<int>{1, 3, size.height, size.width}, CV_32F, cv::Scalar(0)));
+    std::vector<cv::Mat> outs;
+    net.forward(outs, net.getUnconnectedOutLayersNames());
+    return outs;
+  } catch (const cv::Exception&) {
+    return {};
   }
-  if (net->empty()) throw std::runtime_error(o.model + ": cannot load the detector model");
+}
+
+std::string size_text(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
+
+}  // namespace
+
+DnnDetectorInfo probe_detector_network(cv::dnn::Net& net, const DnnOptions& o, const std::string& name) {
+  if (net.empty()) throw std::runtime_error(name + ": the network has no layers");
+  cv::Size input = o.input_size;
+  std::vector<cv::Mat> outs;
+  if (input.area() > 0) {
+    outs = probe(net, input);
+    if (outs.empty()) throw std::runtime_error(name + ": the network does not run on a " + size_text(input) + " input");
+  } else {
+    for (const cv::Size s : {cv::Size(300, 300), cv::Size(640, 640)})
+      if (!(outs = probe(net, s)).empty()) {
+        input = s;
+        break;
+      }
+    if (outs.empty()) throw std::runtime_error(name + ": the network runs on neither a 300x300 nor a 640x640 input; give its input size");
+  }
+  FamilyMatch match;
+  try {
+    match = detect_output_family(outs);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(name + ": " + e.what());
+  }
+  const bool yolo = match.family != DnnOutputFamily::Ssd;
+  if (yolo && o.input_size.area() == 0 && input != cv::Size(640, 640) && !probe(net, {640, 640}).empty()) input = {640, 640};
+  return {to_string(match.family), input, o.scale.value_or(yolo ? 1.0 / 255 : 1.0 / 127.5),
+          o.mean.value_or(yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5))};
+}
+
+Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::string& name, DnnDetectorInfo* info) {
+  auto net = std::make_shared<cv::dnn::Net>(std::move(net_in));
+  const DnnDetectorInfo probed = probe_detector_network(*net, o, name);
+  if (info) *info = probed;
+  const cv::Size input = probed.input_size;
+  const double scale = probed.scale;
+  const cv::Scalar mean = probed.mean;
   auto mutex = std::make_shared<std::mutex>();  // one Net, forward() is not reentrant
-  return [net, mutex, o](const cv::Mat& bgr) {
-    const cv::Mat blob = cv::dnn::blobFromImage(bgr, o.scale, o.input_size, o.mean, o.swap_rb, false);
-    std::lock_guard lock(*mutex);
-    net->setInput(blob);
-    const cv::Mat out = net->forward();
-    return parse_ssd_output(out, bgr.size(), o.min_confidence);
+  const auto names = net->getUnconnectedOutLayersNames();
+  return [net, mutex, o, input, scale, mean, names](const cv::Mat& bgr) {
+    const cv::Mat blob = cv::dnn::blobFromImage(bgr, scale, input, mean, o.swap_rb, false);
+    std::vector<cv::Mat> outs;
+    {
+      std::lock_guard lock(*mutex);
+      net->setInput(blob);
+      net->forward(outs, names);
+    }
+    DecodeOptions d;
+    d.input_size = input;
+    d.image_size = bgr.size();
+    d.min_confidence = o.min_confidence;
+    d.nms_threshold = o.nms_threshold;
+    return decode_detections(outs, d);
   };
+}
+
+cv::dnn::Net read_detector_network(const std::string& model, const std::string& config) {
+  cv::dnn::Net net;
+  try {
+    net = cv::dnn::readNet(model, config);
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(model + ": cannot load the detector model (" + e.err + ")");
+  }
+  if (net.empty()) throw std::runtime_error(model + ": cannot load the detector model");
+  return net;
+}
+
+Detector dnn_detector(const DnnOptions& o, DnnDetectorInfo* info) {
+  return dnn_detector(read_detector_network(o.model, o.config), o, o.model, info);
 }
 
 cv::Mat draw_detections(const cv::Mat& bgr, const std::vector<Detection>& detections) {

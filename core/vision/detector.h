@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The pipeline's detection stage: OpenCV's HOG people detector built in, or any SSD-style network through cv::dnn
-// from model files the user points to (Caffe, TensorFlow, ONNX; output rows [image, class, score, x0, y0, x1, y1]).
+// The pipeline's detection stage: OpenCV's HOG people detector built in, or a detection network through cv::dnn
+// from model files the user points to (ONNX, Caffe, TensorFlow, Darknet) whose outputs are SSD, YOLOv5 or YOLOv8.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/dnn.hpp>
 
 namespace bs::vision {
 
@@ -28,16 +30,39 @@ Detector scaled_detector(Detector inner, double scale);
 // (0.5 halves a 1280x1024 frame, which keeps detection time reasonable on small CPUs); boxes are in full-size pixels.
 Detector hog_people_detector(double scale = 0.5);
 
+// A detection network read by cv::dnn (ONNX, Caffe .caffemodel + .prototxt, TensorFlow .pb + .pbtxt, Darknet
+// .weights + .cfg). Its output family (SSD, YOLOv5, YOLOv8: vision/dnn_decode.h) is found by one forward pass of
+// a blank image when the detector is made; the preprocessing defaults follow the family unless given.
 struct DnnOptions {
   std::string model, config;  // config empty for ONNX / frozen TensorFlow graphs that need none
-  cv::Size input_size{300, 300};
-  double scale = 1.0 / 127.5;  // SSD MobileNet: (pixel - 127.5) / 127.5
-  cv::Scalar mean{127.5, 127.5, 127.5};
+  // Empty: 300x300 is tried first (SSD), then 640x640 (YOLO; also taken when a YOLO family answers at 300x300).
+  cv::Size input_size{};
+  // Empty: SSD (pixel - 127.5) / 127.5, YOLO pixel / 255.
+  std::optional<double> scale;
+  std::optional<cv::Scalar> mean;
   bool swap_rb = true;
   float min_confidence = 0.5f;
+  float nms_threshold = 0.45f;
 };
-// Throws std::runtime_error naming the file when OpenCV cannot read the model.
-Detector dnn_ssd_detector(const DnnOptions& options);
+struct DnnDetectorInfo {
+  std::string family;   // "SSD", "YOLOv5", "YOLOv8"
+  cv::Size input_size;  // as used
+  double scale = 0;
+  cv::Scalar mean;
+};
+// What a detection network is: its output family, the input size it runs at and the preprocessing that family
+// takes (given values win). Found by forward passes of a blank image as described at DnnOptions. Throws
+// std::runtime_error starting with `name` when the network runs at no size tried or its outputs are of no known
+// family (the message then lists the output shapes).
+DnnDetectorInfo probe_detector_network(cv::dnn::Net& net, const DnnOptions& options, const std::string& name);
+// Reads a model file (and its config) with cv::dnn::readNet; throws std::runtime_error naming the file.
+cv::dnn::Net read_detector_network(const std::string& model, const std::string& config);
+// Throws std::runtime_error naming the file when OpenCV cannot read the model or its outputs are of no known
+// family (the message then lists the output shapes).
+Detector dnn_detector(const DnnOptions& options, DnnDetectorInfo* info = nullptr);
+// The same for a network already in memory (tests, built-in architectures); `name` is used in errors.
+Detector dnn_detector(cv::dnn::Net net, const DnnOptions& options, const std::string& name,
+                      DnnDetectorInfo* info = nullptr);
 // Parses an SSD detection output blob (1 x 1 x N x 7) into boxes for an image of `size`; rows below the
 // confidence threshold or with an image id < 0 are skipped. Exposed for tests.
 std::vector<Detection> parse_ssd_output(const cv::Mat& out, cv::Size size, float min_confidence);

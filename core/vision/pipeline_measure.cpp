@@ -2,10 +2,12 @@
 #include "vision/pipeline_measure.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "vision/cuda_preprocess.h"
 #include "vision/detector.h"
+#include "vision/dnn_architectures.h"
 #include "vision/opencl_preprocess.h"
 #include "vision/pipeline_record.h"
 #include "vision/preprocess.h"
@@ -20,7 +22,21 @@ cv::Mat synthetic_paper_capture() { return mosaic(render_fisheye(Lens::paper()),
 std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOptions& o, const CancelToken& cancel,
                                                       const ProgressFn& progress) {
   if (o.frames < 1 || o.frames > 1000000) throw std::invalid_argument("frames must be between 1 and 1,000,000");
-  const Detector detector = hog_people_detector(o.detect_scale);  // validates the scale
+  std::string detector_name = o.detector;
+  Detector detector;
+  if (o.detector == "hog") {
+    detector = hog_people_detector(o.detect_scale);  // validates the scale
+  } else if (const auto arch = architecture_from_string(o.detector)) {
+    detector = scaled_detector(architecture_timing_detector(*arch), o.detect_scale);
+    detector_name = architecture_detector_name(*arch);
+  } else {
+    DnnOptions d;
+    const auto comma = o.detector.find(',');
+    d.model = o.detector.substr(0, comma);
+    if (comma != std::string::npos) d.config = o.detector.substr(comma + 1);
+    detector = scaled_detector(dnn_detector(d), o.detect_scale);
+    detector_name = std::filesystem::path(d.model).filename().string();
+  }
   const Lens lens = Lens::paper();
   const View view;
   const cv::Mat raw = synthetic_paper_capture();
@@ -57,7 +73,7 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   run.backend = o.backend;
   // The OpenCL path demosaics the whole frame, then reprojects; the CPU and CUDA paths are fused.
   run.demosaic = o.backend == "opencl" ? "bilinear" : "fused";
-  run.detector = "hog";
+  run.detector = detector_name;
   run.frame_width = lens.width;
   run.frame_height = lens.height;
   run.provenance.settings.emplace_back("lens calibration", describe(lens.calibration));
@@ -70,7 +86,7 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   run.provenance.note = "synthetic paper capture (test chart, 195 deg lens), " + std::to_string(o.frames) +
                         " frames, 1280x1024 150 deg view, policy block, queue 2, " +
                         std::to_string(o.detection_workers) + " detection workers, detect scale " + scale +
-                        ", preprocessing on " + o.backend;
+                        ", preprocessing on " + o.backend + ", detector " + detector_name;
   return run;
 }
 

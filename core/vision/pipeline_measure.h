@@ -24,6 +24,9 @@ struct SyntheticPipelineOptions {
   std::size_t detection_workers = default_detection_workers();
   double detect_scale = 0.5;  // 0 < scale <= 1
   std::string backend = "cpu";  // preprocessing on "cpu" (fused), "opencl" or "cuda"; detection stays on the CPU
+  // "hog" (OpenCV's people detector), "mobilenet-ssd" or "yolo-n" (built-in architectures with random weights:
+  // the run is labelled architecture timing, no detections), or a model file cv::dnn reads (MODEL[,CONFIG]).
+  std::string detector = "hog";
   std::string tool;           // the producing tool for the provenance, e.g. "benchscope 0.4.0 (GUI)"
 };
 

@@ -11,6 +11,8 @@
 #include <QTest>
 
 #include "importer.h"
+#include "analysis/inference_table.h"
+#include "inference_table.h"
 #include "platform_view.h"
 
 namespace {
@@ -204,6 +206,40 @@ class TestPlatformView : public QObject {
     for (int c = 1; c < t->columnCount(); ++c) QVERIFY(frozen->isColumnHidden(c));
     QCOMPARE(frozen->columnWidth(0), t->columnWidth(0));
     QCOMPARE(frozen->model(), t->model());
+  }
+
+  // bench dnn runs appear in their own table under the comparison: one row each, the architecture-timing label
+  // in italics, the faster run's time marked best; without runs the table is hidden.
+  void inference_rows() {
+    bs::ui::PlatformView view;
+    view.resize(1600, 900);
+    view.show();
+    QVERIFY(!view.inference_table()->isVisible());
+    bs::DnnRun a;
+    a.platform = "robot";
+    a.device = "CPU (2 OpenCV threads)";
+    a.backend = "cpu";
+    a.model = "mobilenet-ssd";
+    a.family = "SSD";
+    a.architecture_only = true;
+    a.input_width = a.input_height = 300;
+    a.flops = 2'514'700'000;
+    a.forward = {"inference", 20, 0.040, 0.002, {}, {}, {}, {}};
+    bs::DnnRun b = a;
+    b.platform = "jetson";
+    b.forward.mean_s = 0.025;
+    b.energy_per_inference_j = 0.3;
+    view.set_inference_runs({a, b});
+    QVERIFY(view.inference_table()->isVisible());
+    QTableWidget* t = view.inference_table()->table();
+    QCOMPARE(t->rowCount(), 2);
+    const int network = static_cast<int>(bs::InferenceColumn::Network), time = static_cast<int>(bs::InferenceColumn::TimePerImage);
+    QVERIFY(t->item(0, network)->text().contains("architecture timing: no detections"));
+    QVERIFY(t->item(0, network)->font().italic());
+    QVERIFY(t->item(1, time)->font().bold());   // 25 ms beats 40 ms
+    QVERIFY(!t->item(0, time)->font().bold());
+    view.set_inference_runs({});
+    QVERIFY(!view.inference_table()->isVisible());
   }
 };
 

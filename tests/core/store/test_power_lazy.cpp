@@ -193,7 +193,7 @@ class TestPowerLazy : public QObject {
     }
     for (int open = 0; open < 2; ++open) {  // the second open finds nothing left to convert
       bs::Workspace ws(path);
-      QCOMPARE(ws.schema_version(), 6);
+      QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);
       auto lazy = ws.power_trace_summaries();
       QCOMPARE(lazy.size(), std::size_t{1});
       QCOMPARE(lazy[0].summary.samples, original.time_s.size());

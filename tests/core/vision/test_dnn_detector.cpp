@@ -29,7 +29,7 @@ layer { name: "rows" type: "Reshape" bottom: "data" top: "rows"
     o.mean = cv::Scalar::all(1);
     o.swap_rb = false;
     o.min_confidence = 0.5f;
-    const bs::vision::Detector detect = bs::vision::dnn_ssd_detector(o);
+    const bs::vision::Detector detect = bs::vision::dnn_detector(o);
     // 70x10 image, seven 10x10 blocks: blue carries row 0 = [0, 1, 0.9, 0.1, 0.2, 0.5, 0.8]; green and red are
     // 0, i.e. -0.005 everywhere, so rows 1 and 2 have a negative image id. Blocks survive the 10x linear
     // downscale to 7x1 exactly (samples fall inside a block).
@@ -49,7 +49,7 @@ layer { name: "rows" type: "Reshape" bottom: "data" top: "rows"
     std::ofstream(junk) << "layer { this is not a network";
     o.model = junk;
     try {
-      bs::vision::dnn_ssd_detector(o);
+      bs::vision::dnn_detector(o);
       QFAIL("no error for a broken model");
     } catch (const std::runtime_error& e) {
       QVERIFY(std::string(e.what()).find("junk.prototxt") != std::string::npos);

@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "bench_dnn.h"
+
+#include <algorithm>
+#include <cmath>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <ostream>
+#include <random>
+#include <set>
+
+#include <opencv2/dnn.hpp>
+
+#include "analysis/phase_energy.h"
+#include "analysis/power_stats.h"
+#include "analysis/stats.h"
+#include "args.h"
+#include "kernels/backend.h"
+#include "kernels/cpu_info.h"
+#include "power_args.h"
+#include "signals.h"
+#include "store/workspace.h"
+#include "text_table.h"
+#include "util/host_clock.h"
+#include "vision/detector.h"
+#include "vision/dnn_architectures.h"
+#include "vision/dnn_bench.h"
+
+namespace bs::cli {
+namespace {
+
+using namespace bs::vision;
+
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+std::string load_average_text() {
+  std::ifstream f("/proc/loadavg");
+  std::string one, five;
+  f >> one >> five;
+  return one.empty() ? "unknown" : one + " (1 min), " + five + " (5 min)";
+}
+
+cv::Size parse_size(const std::string& s) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 32 || h < 32 ||
+      w > 4096 || h > 4096)
+    throw UsageError("--input must be WxH with sides of 32 to 4096 px, e.g. 640x640 (got '" + s + "')");
+  return {w, h};
+}
+
+// The network to time: built in code or read from files, with what the output and the views need to know.
+struct Network {
+  cv::dnn::Net net;
+  std::string model, hash, family;
+  bool architecture_only = false;
+  cv::Size input;
+  double scale = 1;
+  cv::Scalar mean;
+  double published_gflops = 0;
+  std::string published_note;
+};
+
+Network built_in(DnnArchitecture a, std::optional<cv::Size> input) {
+  constexpr unsigned kSeed = 1;
+  const cv::Size size = input.value_or(a == DnnArchitecture::MobileNetSsd ? cv::Size(300, 300) : cv::Size(640, 640));
+  BuiltNetwork b;
+  try {
+    b = build_architecture(a, size, kSeed);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--input: ") + e.what());
+  }
+  Network n;
+  n.net = std::move(b.net);
+  n.model = to_string(a);
+  n.hash = std::string("builtin:") + to_string(a) + ":seed" + std::to_string(kSeed);
+  n.family = a == DnnArchitecture::MobileNetSsd ? "SSD" : "YOLOv8";
+  n.architecture_only = true;
+  n.input = size;
+  const bool yolo = a == DnnArchitecture::YoloN;
+  n.scale = yolo ? 1.0 / 255 : 1.0 / 127.5;
+  n.mean = yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5);
+  n.published_gflops = b.published_gflops;
+  n.published_note = b.published_note;
+  return n;
+}
+
+Network from_files(const std::string& spec, std::optional<cv::Size> input) {
+  const auto comma = spec.find(',');
+  const std::string model = spec.substr(0, comma), config = comma == std::string::npos ? "" : spec.substr(comma + 1);
+  for (const std::string& f : {model, config})
+    if (!f.empty() && !std::filesystem::is_regular_file(f))
+      throw std::runtime_error(f + ": no such model file (--model takes MODEL[,CONFIG])");
+  Network n;
+  n.net = read_detector_network(model, config);
+  DnnOptions o;
+  if (input) o.input_size = *input;
+  const DnnDetectorInfo info = probe_detector_network(n.net, o, model);
+  n.model = std::filesystem::path(model).filename().string();
+  n.hash = file_content_hash(model) + (config.empty() ? "" : "+" + file_content_hash(config));
+  n.family = info.family;
+  n.input = info.input_size;
+  n.scale = info.scale;
+  n.mean = info.mean;
+  return n;
+}
+
+std::string fixed(double v, int digits) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+// The device's FP32 ceiling from the FLOPS kernels' backends: the CPU's for the cpu target, the OpenCL or CUDA
+// device's of the same name otherwise; empty when unknown.
+std::optional<double> device_ceiling(const DnnTarget& t, const kernels::CpuInfo& cpu,
+                                     const std::vector<kernels::Backend>& backends) {
+  if (t.id == "cpu") return cpu.peak_flops > 0 ? std::optional(cpu.peak_flops) : std::nullopt;
+  for (const kernels::Backend& b : backends)
+    if (b.id.starts_with(t.id) && b.theoretical_peak_flops > 0 && t.device.starts_with(b.device_name))
+      return b.theoretical_peak_flops;
+  return std::nullopt;
+}
+
+}  // namespace
+
+int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  std::set<std::string> valued = {"--model", "--arch", "--input", "--batch", "--runs", "--backend", "--platform",
+                                     "--workspace"};
+  valued.insert(kPowerOptions.begin(), kPowerOptions.end());
+  const ParsedArgs args = parse_args(raw, {}, valued);
+  if (!args.positional.empty()) throw UsageError("bench dnn takes no positional arguments (got '" + args.positional.front() + "')");
+  if (args.value("--model") && args.value("--arch")) throw UsageError("give --model or --arch, not both");
+  const double runs_arg = args.number("--runs", 20), batch_arg = args.number("--batch", 1);
+  if (!(runs_arg >= 1 && runs_arg <= 100000) || runs_arg != std::floor(runs_arg))
+    throw UsageError("--runs must be a whole number from 1 to 100,000");
+  if (!(batch_arg >= 1 && batch_arg <= 256) || batch_arg != std::floor(batch_arg))
+    throw UsageError("--batch must be a whole number from 1 to 256");
+  const int runs = static_cast<int>(runs_arg), batch = static_cast<int>(batch_arg);
+  constexpr int kWarmup = 2;
+  const std::optional<cv::Size> input = args.value("--input") ? std::optional(parse_size(*args.value("--input"))) : std::nullopt;
+  const std::string backend_arg = args.value("--backend").value_or("all");
+  std::vector<DnnTarget> targets;
+  if (backend_arg == "all")
+    targets = dnn_targets();
+  else if (backend_arg == "cpu" || backend_arg == "opencl" || backend_arg == "cuda")
+    targets = {dnn_target(backend_arg)};
+  else
+    throw UsageError("--backend must be cpu, opencl, cuda or all (got '" + backend_arg + "')");
+
+  std::vector<Network> networks;
+  if (const auto m = args.value("--model")) {
+    networks.push_back(from_files(*m, input));
+  } else if (const auto a = args.value("--arch")) {
+    const auto arch = architecture_from_string(*a);
+    if (!arch) throw UsageError("--arch must be mobilenet-ssd or yolo-n (got '" + *a + "')");
+    networks.push_back(built_in(*arch, input));
+  } else {
+    networks.push_back(built_in(DnnArchitecture::MobileNetSsd, input));
+    networks.push_back(built_in(DnnArchitecture::YoloN, input));
+  }
+
+  const kernels::CpuInfo cpu = kernels::detect_cpu();
+  const std::vector<kernels::Backend> backends = kernels::available_backends(cpu);
+  const std::string platform = args.value("--platform").value_or(bs::host_name());
+  out << "CPU: " << cpu.model << ", " << cpu.threads << " threads, FP32 ceiling " << fixed(cpu.peak_flops / 1e9, 1)
+      << " GFLOPS (" << cpu.simd.name << ", " << fixed(cpu.clock_hz / 1e9, 3) << " GHz measured); OpenCV " CV_VERSION
+      << ", " << cv::getNumThreads() << " dnn threads\nload average before: " << load_average_text() << "\n";
+  for (const DnnTarget& t : targets)
+    if (!t.available) out << "target " << t.id << ": not available: " << t.why_not << "\n";
+  if (std::none_of(targets.begin(), targets.end(), [](const DnnTarget& t) { return t.available; })) {
+    err << "benchscope-cli: no requested dnn target is available here\n";
+    return 1;
+  }
+
+  const auto power = start_power(args, err, false);
+  std::vector<DnnRun> stored;
+  const CancelToken& cancel = interrupt_token();
+  for (Network& n : networks) {
+    const cv::dnn::MatShape shape{batch, 3, n.input.height, n.input.width};
+    const DnnFlops flops = count_flops(n.net, shape);
+    out << "\n" << n.model << " (" << n.family << " output), input " << n.input.width << "x" << n.input.height
+        << ", batch " << batch << (n.architecture_only ? std::string(": ") + kArchitectureTimingLabel : std::string())
+        << "\n  FLOPs per image: " << fixed(static_cast<double>(flops.counted) / batch / 1e9, 3)
+        << " G (2 per multiply-add, grouped convolutions per group); OpenCV 4.6 Net::getFLOPS: "
+        << fixed(static_cast<double>(flops.opencv) / batch / 1e9, 3) << " G\n";
+    if (n.published_gflops > 0)
+      out << "  published: " << n.published_note << "; counted here at this input / published = "
+          << fixed(static_cast<double>(flops.counted) / batch / 1e9 / n.published_gflops, 3) << "\n";
+    // The images: a fixed pseudo-random colour picture (the same every run and machine), stretched to the input.
+    std::vector<cv::Mat> images;
+    std::mt19937 rng(7);
+    for (int i = 0; i < batch; ++i) {
+      cv::Mat img(n.input, CV_8UC3);
+      for (auto it = img.begin<cv::Vec3b>(); it != img.end<cv::Vec3b>(); ++it)
+        *it = cv::Vec3b(static_cast<uchar>(rng()), static_cast<uchar>(rng()), static_cast<uchar>(rng()));
+      images.push_back(img);
+    }
+    const cv::Mat blob = cv::dnn::blobFromImages(images, n.scale, n.input, n.mean, true, false);
+    TextTable table({"target", "device", "n", "forward mean ± SD (ms)", "p50 (ms)", "p95 (ms)", "per image (ms)",
+                     "inferences/s", "GFLOPS", "ceiling (GFLOPS)", "% ceiling", "cores busy"});
+    for (const DnnTarget& t : targets) {
+      if (!t.available) continue;
+      const std::string phase = n.model + " " + t.id;
+      // The cores the process got while timing (CPU time / wall time): on a shared machine this says when a
+      // neighbour took some, which the time per pass alone does not.
+      double cpu0 = 0;
+      std::chrono::steady_clock::time_point wall0;
+      const std::vector<double> s = time_forward(n.net, t, blob, kWarmup, runs, cancel, [&] {
+        if (power) power->begin_phase(phase);
+        cpu0 = process_cpu_seconds();
+        wall0 = std::chrono::steady_clock::now();
+      });
+      const double cores = (process_cpu_seconds() - cpu0) /
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      if (power) power->end_phase();
+      if (cancel.cancelled() || s.empty()) {
+        err << "benchscope-cli: bench dnn cancelled; nothing stored\n";
+        return 1;
+      }
+      const Summary sum = summarize(s);
+      const Percentiles pct = percentiles(s);
+      DnnRun r;
+      r.platform = platform;
+      r.device = t.device;
+      r.backend = t.id;
+      r.model = n.model;
+      r.model_hash = n.hash;
+      r.family = n.family;
+      r.architecture_only = n.architecture_only;
+      r.input_width = n.input.width;
+      r.input_height = n.input.height;
+      r.batch = batch;
+      r.flops = flops.counted;
+      r.opencv_flops = flops.opencv;
+      r.forward = {"inference", sum.n, sum.mean, sum.sd, sum.min, sum.max, pct.p50, pct.p95};
+      r.device_peak_flops = device_ceiling(t, cpu, backends);
+      r.provenance = kernels::measured_provenance(cpu, backends.front());
+      r.provenance.date = bs::utc_timestamp();
+      r.provenance.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
+      r.provenance.note = "benchscope-cli bench dnn: " + std::to_string(runs) + " timed forward passes after " +
+                          std::to_string(kWarmup) + " warm-up passes, OpenCV " CV_VERSION " dnn target " + t.id +
+                          (n.architecture_only ? std::string(", ") + kArchitectureTimingLabel : std::string());
+      stored.push_back(r);
+      table.add({t.id, t.device, std::to_string(sum.n), fixed(sum.mean * 1e3, 2) + " ± " + fixed(sum.sd * 1e3, 2),
+                 fixed(pct.p50 * 1e3, 2), fixed(pct.p95 * 1e3, 2), fixed(r.inference_s() * 1e3, 2),
+                 fixed(r.inferences_per_s(), 2), fixed(r.achieved_flops() / 1e9, 2),
+                 r.device_peak_flops ? fixed(*r.device_peak_flops / 1e9, 1) : "–",
+                 r.device_peak_flops ? fixed(100 * r.achieved_flops() / *r.device_peak_flops, 1) + "%" : "–",
+                 t.id == "cpu" ? fixed(cores, 2) : "–"});
+    }
+    table.print(out);
+    out << "  (cores busy: process CPU time / wall time over the timed passes, of " << cpu.threads << " threads)\n";
+  }
+  std::optional<PowerTrace> trace;
+  if (power) {
+    trace = power->finish("bench dnn " + platform + " " + bs::utc_timestamp());
+    trace->platform = platform;
+    const std::vector<PhaseEnergy> phases = phase_energies(*trace);
+    out << "\nenergy per inference (" << to_string(trace->provenance.measurement) << ", " << trace->provenance.sensor
+        << "; whole-computer power during the timed passes):\n";
+    for (DnnRun& r : stored) {
+      const std::string phase = r.model + " " + r.backend;
+      for (const PhaseEnergy& e : phases)
+        if (e.name == phase) {
+          const auto inferences = static_cast<std::size_t>(r.forward.n) * static_cast<std::size_t>(r.batch);
+          r.energy_per_inference_j = e.energy_j / static_cast<double>(inferences);
+          r.mean_power_w = e.mean_power_w;
+          out << "  " << phase << ": " << fixed(*r.energy_per_inference_j, 4) << " J per inference, "
+              << fixed(3600.0 / *r.energy_per_inference_j, 0) << " inferences per Wh, mean " << fixed(e.mean_power_w, 2)
+              << " W over " << fixed(e.end_s - e.start_s, 2) << " s (" << e.samples << " samples)\n";
+        }
+    }
+  }
+  out << "\nload average after: " << load_average_text() << "\n";
+  if (const auto ws_path = args.value("--workspace")) {
+    Workspace ws(*ws_path);
+    ImportBatch b;
+    b.source_path = "benchscope-cli bench dnn (" + platform + ", " + stored.front().provenance.date + ")";
+    b.format = "benchscope-dnn-v1";
+    b.dnn_runs = stored;
+    if (trace) b.power_traces.push_back(*trace);
+    std::string key;
+    for (const DnnRun& r : stored) key += r.model_hash + r.backend + r.provenance.date + fixed(r.forward.mean_s, 9);
+    const std::int64_t id = ws.add_import(b, content_hash(key));
+    out << "stored " << stored.size() << " run" << (stored.size() == 1 ? "" : "s") << " in " << *ws_path << " (import "
+        << id << ")\n";
+  }
+  return 0;
+}
+
+}  // namespace bs::cli
