@@ -73,6 +73,15 @@ QString provenance_line(const Provenance& p) {
   return parts.join(QStringLiteral(" · "));
 }
 
+TreeItemRef item_ref(TreeItemRef::Kind kind, qint64 id, qint64 import_id, const QString& name) {
+  TreeItemRef ref;
+  ref.kind = kind;
+  ref.id = id;
+  ref.import_id = import_id;
+  ref.name = name;
+  return ref;
+}
+
 }  // namespace
 
 std::vector<WorkspaceItem> MainWindow::workspace_items() const {
@@ -83,7 +92,7 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
   for (const StoredPowerTrace& t : workspace_->power_trace_summaries()) {
     const PowerTrace& tr_ = t.trace;
     const double duration = t.summary.duration_s;
-    out.push_back({{K::PowerLog, t.id, t.import_id, QString::fromStdString(tr_.label)},
+    out.push_back({item_ref(K::PowerLog, t.id, t.import_id, QString::fromStdString(tr_.label)),
                    tr("%1 — %2").arg(QString::fromStdString(tr_.platform), QString::fromStdString(tr_.label)),
                    tr("<b>%1</b><br>%L2 samples over %3 s, %4 channel(s)<br>%5")
                        .arg(QString::fromStdString(tr_.label).toHtmlEscaped())
@@ -103,7 +112,7 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
         lens_line = tr("<br>Lens: unreadable");
       }
     }
-    out.push_back({{K::Frame, f.id, f.import_id, QString::fromStdString(fr.label)},
+    out.push_back({item_ref(K::Frame, f.id, f.import_id, QString::fromStdString(fr.label)),
                    tr("%1 (%2×%3, %4-bit)").arg(QString::fromStdString(fr.label)).arg(fr.width).arg(fr.height).arg(fr.bit_depth),
                    tr("<b>%1</b><br>%2<br>%3%4")
                        .arg(QString::fromStdString(fr.label).toHtmlEscaped(), QString::fromStdString(f.path).toHtmlEscaped(),
@@ -111,7 +120,7 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
   }
   for (const StoredPipelineRun& p : workspace_->pipeline_runs()) {
     const PipelineRun& r = p.run;
-    out.push_back({{K::PipelineRun, p.id, p.import_id, QString::fromStdString(r.platform)},
+    out.push_back({item_ref(K::PipelineRun, p.id, p.import_id, QString::fromStdString(r.platform)),
                    tr("%1 — %2 (%3)").arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
                                           QString::fromStdString(r.backend)),
                    tr("<b>%1</b>, %2 stage(s)<br>%3").arg(QString::fromStdString(r.platform).toHtmlEscaped())
@@ -120,7 +129,7 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
   }
   for (const StoredResultSet& s : workspace_->result_sets()) {
     const ResultSet& r = s.set;
-    out.push_back({{K::ResultSet, s.id, s.import_id, QString::fromStdString(r.device)},
+    out.push_back({item_ref(K::ResultSet, s.id, s.import_id, QString::fromStdString(r.device)),
                    tr("%1 — %2 (%3)").arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
                                           QString::fromStdString(r.source_format)),
                    tr("<b>%1</b>, %2 measurement(s)<br>%3").arg(QString::fromStdString(r.device).toHtmlEscaped())
@@ -128,7 +137,7 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
                        .arg(provenance_line(r.provenance))});
   }
   for (const BatterySetup& b : workspace_battery_setups(*workspace_)) {
-    out.push_back({{K::BatteryPreset, 0, 0, QString::fromStdString(b.pack.name)},
+    out.push_back({item_ref(K::BatteryPreset, 0, 0, QString::fromStdString(b.pack.name)),
                    QString::fromStdString(b.pack.name),
                    tr("Battery preset saved in this workspace: %1 V nominal, %2 Ah%3")
                        .arg(b.pack.nominal_v())

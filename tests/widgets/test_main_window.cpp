@@ -200,7 +200,10 @@ class TestMainWindow : public QObject {
       dialog->setTextValue("Intel NUC");
       dialog->accept();
     });
-    emit tree->rename_requested({K::Platform, 0, 0, "NUC"});
+    bs::ui::TreeItemRef platform;
+    platform.kind = K::Platform;
+    platform.name = "NUC";
+    emit tree->rename_requested(platform);
     bool renamed = false;
     for (const auto& r : w.workspace()->runs()) renamed |= r.run.platform == "Intel NUC";
     QVERIFY(renamed);

@@ -34,7 +34,7 @@ namespace {
 
 std::vector<bs::StoredPowerTrace> stored(const std::vector<bs::PowerTrace>& traces) {
   std::vector<bs::StoredPowerTrace> out;
-  for (const auto& t : traces) out.push_back({0, 1, t});  // id 0: not in a workspace
+  for (const auto& t : traces) out.push_back({0, 1, t, {}, true});  // id 0: not in a workspace
   return out;
 }
 

@@ -16,7 +16,7 @@ namespace {
 
 std::vector<bs::StoredPowerTrace> stored(const std::vector<bs::PowerTrace>& traces) {
   std::vector<bs::StoredPowerTrace> out;
-  for (const auto& t : traces) out.push_back({static_cast<std::int64_t>(out.size() + 1), 1, t});
+  for (const auto& t : traces) out.push_back({static_cast<std::int64_t>(out.size() + 1), 1, t, {}, true});
   return out;
 }
 

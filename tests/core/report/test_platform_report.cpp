@@ -35,7 +35,7 @@ class TestPlatformReport : public QObject {
     bs::PlatformRow b;
     b.platform = "Robot B";
     in.rows = {a, b};
-    bs::PlatformVerdict va{"Robot A", true, {}, true, ""}, vb{"Robot B", false, {}, false, ""};
+    bs::PlatformVerdict va{"Robot A", true, {}, true, "", ""}, vb{"Robot B", false, {}, false, "", ""};
     in.verdicts = {va, vb};
     in.constraints = "a power budget of 15 W";
     in.figures = {{"fig1a: All GPUs", "data:image/png;base64,AAAA"}};

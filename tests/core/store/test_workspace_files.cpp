@@ -194,7 +194,7 @@ class TestWorkspaceFiles : public QObject {
     QVERIFY(same_run(ws.runs()[0].run, run));
     bs::ImportBatch b;
     b.format = "power-csv";
-    b.power_traces.push_back({"NUC", "load", "", {0, 1}, {{"I", bs::PowerQuantity::Current, {2.5, 2.6}}}, 16.0, {}, {}});
+    b.power_traces.push_back({"NUC", "load", "", {0, 1}, {{"I", bs::PowerQuantity::Current, {2.5, 2.6}}}, 16.0, {}, {}, ""});
     ws.add_import(b, "trace");
     QCOMPARE(ws.power_traces().size(), std::size_t{1});
     QCOMPARE(RawDb(path).scalar("PRAGMA user_version"), std::to_string(bs::Workspace::kSchemaVersion));
@@ -207,7 +207,7 @@ class TestWorkspaceFiles : public QObject {
     auto batch = batch_of({make_run("A", "OpenCL", 4, 10, 2), make_run("B", "CUDA", 1, 3, 1)});
     batch.result_sets.push_back(
         {"NUC", "B", bs::DeviceKind::Gpu, "OpenCL", "clpeak-text", {{"float", "bandwidth", "B/s", {3e10}, {}}}, {}});
-    batch.power_traces.push_back({"NUC", "idle", "", {0, 1}, {{"P", bs::PowerQuantity::Power, {9.5, 9.4}}}, {}, {}, {}});
+    batch.power_traces.push_back({"NUC", "idle", "", {0, 1}, {{"P", bs::PowerQuantity::Power, {9.5, 9.4}}}, {}, {}, {}, ""});
     ws.add_import(batch, "h1");
     const auto removed = ws.add_import(batch_of({make_run("C", "OpenCL", 4, 1, 1)}), "h2");
     ws.remove_import(removed);  // device C stays, with its colour
