@@ -6,7 +6,12 @@
 #include <cmath>
 #include <vector>
 
+#include <QTemporaryDir>
+#include <fstream>
+
+#include "kernels/ceiling_cache.h"
 #include "kernels/ceilings.h"
+#include "util/host_clock.h"
 #include "kernels/rotation.h"
 #include "kernels/rotation_simd.h"
 
@@ -99,6 +104,39 @@ class TestCeilings : public QObject {
     use_simd_target(cpu, simd_target_by_id("generic"));
     QCOMPARE(cpu.simd.lanes, 4);
     QCOMPARE(cpu.peak_flops, cpu.threads * 3e9 * cpu.flops_per_cycle);
+  }
+  void cache_keeps_one_entry_per_host_cpu_isa_and_threads() {
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("sub/ceilings.json").toStdString();
+    CpuInfo cpu = detect_cpu(false);
+    QVERIFY(!cached_ceilings(cpu, path));
+    CeilingSet s;
+    s.host = bs::host_name();
+    s.cpu_model = cpu.model;
+    s.isa = isa_id(cpu.simd.isa);
+    s.threads = cpu.threads;
+    s.date = "2026-11-23T22:00:00Z";
+    s.rotation_mix = {"FLOP/s", {1e11, 1.1e11}, {1.2e11, 1.3e11}, "rotation mix: test"};
+    store_ceilings(s, path);
+    s.rotation_mix.values = {2e11};  // a newer measurement replaces the entry
+    store_ceilings(s, path);
+    CeilingSet other = s;
+    other.threads = s.threads + 1;  // another thread count is another entry, never shown for this one
+    store_ceilings(other, path);
+    QCOMPARE(load_ceiling_cache(path).size(), std::size_t{2});
+    const auto got = cached_ceilings(cpu, path);
+    QVERIFY(got);
+    QCOMPARE(got->rotation_mix.values, std::vector<double>{2e11});
+    QCOMPARE(got->rotation_mix.how, std::string("rotation mix: test"));
+    QCOMPARE(got->date, s.date);
+    { std::ofstream(path) << "{\"format\": \"benchscope-ceilings-cache\", \"entries\": [{\"host\": 1}]}"; }
+    try {
+      load_ceiling_cache(path);
+      QFAIL("a damaged entry must be reported");
+    } catch (const std::runtime_error& e) {
+      QVERIFY2(std::string(e.what()).find(path + ": entries[0]") == 0, e.what());
+    }
+    QVERIFY(!cached_ceilings(cpu, path));  // damaged: as good as none
   }
 };
 
