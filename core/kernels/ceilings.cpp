@@ -53,6 +53,12 @@ CeilingFunctions functions_for(Isa isa) {
   }
 }
 
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 double process_cpu_seconds() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
@@ -102,24 +108,40 @@ bool ceiling_fma(Isa isa, float* acc, std::int64_t steps, float a, float b) {
 
 CeilingMeter::CeilingMeter(const SimdTarget& target, int threads, double target_seconds)
     : target_(target), threads_(std::max(threads, 1)) {
-  // Size both kernels from a short first run's rate per CPU-second (robust when other processes share the cores).
-  const auto steps_for = [&](const CeilingSample& probe, std::int64_t probe_steps) {
-    const double per_thread_cpu = probe.cpu_s / threads_;
-    const double scale = per_thread_cpu > 0 ? target_seconds / per_thread_cpu : 1.0;
-    return std::clamp<std::int64_t>(static_cast<std::int64_t>(static_cast<double>(probe_steps) * scale), 1000,
-                                    std::int64_t{1} << 34);
-  };
-  const std::vector<int> options = ceiling_mix_chain_options(target.isa);
-  constexpr std::int64_t kProbe = 1 << 16;
-  mix_steps_ = steps_for(run_mix(6, kProbe), kProbe);
-  double best = 0;
-  for (int pass = 0; pass < 2; ++pass)
-    for (int k : options) {
-      // The same number of vector operations per try, so every chain count gets the same time.
-      const CeilingSample s = run_mix(k, mix_steps_ * 6 / k / 4);
-      if (s.rate_per_cpu_s() > best) best = s.rate_per_cpu_s(), mix_chains_ = k;
+  // Sizing and the chain count are decided on this thread alone, timed in its own CPU time: a parallel probe on a
+  // shared machine measures the other processes (a descheduled thread, the barrier's spin) more than the code.
+  const CeilingFunctions f = functions_for(target.isa);
+  std::vector<float> xs(kThreadStride), ys(kThreadStride);
+  for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = std::cos(0.01f * i), ys[i] = std::sin(0.01f * i);
+  const float c = rotation_cos(), s = rotation_sin();
+  // Vector-steps per thread-CPU-second with `k` chains, from runs doubled until they last >= 20 ms.
+  const auto mix_rate = [&](int k) {
+    for (std::int64_t steps = 1 << 12;; steps *= 2) {
+      const double t0 = thread_cpu_seconds();
+      f.mix(k, xs.data(), ys.data(), steps, c, s);
+      const double t = thread_cpu_seconds() - t0;
+      if (t >= 0.02 || steps >= (std::int64_t{1} << 34)) return static_cast<double>(steps) * k / std::max(t, 1e-9);
     }
-  if (has_fma()) fma_steps_ = steps_for(run_fma(kProbe), kProbe);
+  };
+  // Three tries per count, the best of all kept: other processes only ever slow a try down.
+  double best = 0;
+  for (int pass = 0; pass < 3; ++pass)
+    for (int k : ceiling_mix_chain_options(target.isa))
+      if (const double r = mix_rate(k); r > best) best = r, mix_chains_ = k;
+  // At most 2e8 steps: the norm's float drift (checked in run_mix) stays far from overflow.
+  mix_steps_ = std::clamp<std::int64_t>(static_cast<std::int64_t>(best * target_seconds / mix_chains_), 1000, 200'000'000);
+  if (has_fma()) {
+    std::vector<float> acc(kThreadStride, 1.0f);
+    for (std::int64_t steps = 1 << 12;; steps *= 2) {
+      const double t0 = thread_cpu_seconds();
+      f.fma(acc.data(), steps, 0.999f, 0.001f);
+      const double t = thread_cpu_seconds() - t0;
+      if (t >= 0.02 || steps >= (std::int64_t{1} << 34)) {
+        fma_steps_ = std::max<std::int64_t>(1000, static_cast<std::int64_t>(static_cast<double>(steps) * target_seconds / std::max(t, 1e-9)));
+        break;
+      }
+    }
+  }
 }
 
 bool CeilingMeter::has_fma() const { return functions_for(target_.isa).fma_chains() > 0; }
@@ -142,10 +164,13 @@ CeilingSample CeilingMeter::run_mix(int chains, std::int64_t steps) {
     if (!f.mix(chains, xs, xs + kThreadStride / 2, steps, c, s)) ok = false;
   });
   if (!ok) throw std::invalid_argument("rotation-mix ceiling: no kernel for " + std::to_string(chains) + " chains");
-  // A rotation keeps |(x, y)| = 1: anything else means the kernel did not run the steps it is counted for.
+  // Each step scales |(x, y)|^2 by c^2 + s^2 of the float constants (1 - 6e-8 or so, which compounds over millions
+  // of steps): a final norm off that expectation means the kernel did not run the steps it is counted for.
+  const double per_step = std::log(static_cast<double>(c) * c + static_cast<double>(s) * s);
   for (int t = 0; t < threads_; ++t) {
-    const float x = state[t * kThreadStride], y = state[t * kThreadStride + kThreadStride / 2];
-    if (!(std::fabs(x * x + y * y - 1.0f) < 0.05f)) throw std::runtime_error("rotation-mix ceiling: state left the unit circle");
+    const double x = state[t * kThreadStride], y = state[t * kThreadStride + kThreadStride / 2];
+    if (!(std::fabs(std::log(x * x + y * y) - per_step * static_cast<double>(steps)) < 0.1))
+      throw std::runtime_error("rotation-mix ceiling: the final state is not that of " + std::to_string(steps) + " steps");
   }
   return sample;
 }

@@ -49,12 +49,12 @@ struct CeilingSet {
   Ceiling rotation_mix, fma, bandwidth;  // fma empty without FMA; bandwidth empty when not asked for
 };
 
-// Times the two FLOP micro-kernels on `threads` threads for one ISA. The constructor sizes a repetition to about
-// `target_seconds` and picks the rotation mix's chain count: the fastest (per CPU-second) of the counts its
-// register file can hold, each tried twice (~0.3 s in all).
+// Times the two FLOP micro-kernels on `threads` threads for one ISA. The constructor, on the calling thread and
+// in its CPU time, picks the rotation mix's chain count (the fastest of the counts its register file can hold,
+// each tried three times) and sizes a repetition to about `target_seconds` of CPU time per thread (~0.5 s in all).
 class CeilingMeter {
  public:
-  CeilingMeter(const SimdTarget& target, int threads, double target_seconds = 0.05);
+  CeilingMeter(const SimdTarget& target, int threads, double target_seconds = 0.1);
   int mix_chains() const { return mix_chains_; }
   bool has_fma() const;
   CeilingSample time_rotation_mix();
