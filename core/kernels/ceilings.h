@@ -13,15 +13,16 @@
 #include <string>
 #include <vector>
 
+#include "analysis/peak_ceilings.h"
 #include "kernels/cpu_info.h"
 #include "model/flops_run.h"
 #include "util/cancel.h"
 
 namespace bs::kernels {
 
-inline constexpr const char* kCeilingSource = "benchscope-ceilings";
-inline constexpr const char* kRotationMixMetric = "rotation-mix ceiling";
-inline constexpr const char* kFmaMetric = "fma ceiling";
+using bs::kCeilingSource;
+using bs::kFmaMetric;
+using bs::kRotationMixMetric;
 
 // One timed repetition: `work` flops (or bytes) done in `wall_s` seconds by all threads, using `cpu_s` seconds of
 // the process's CPU time.

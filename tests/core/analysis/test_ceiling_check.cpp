@@ -3,6 +3,7 @@
 #include <QTest>
 
 #include "analysis/ceiling_check.h"
+#include "analysis/peak_ceilings.h"
 
 class TestCeilingCheck : public QObject {
   Q_OBJECT
@@ -49,6 +50,40 @@ class TestCeilingCheck : public QObject {
     QCOMPARE(bs::fraction_text(0.9834), std::string("98.3 %"));
     QCOMPARE(bs::fraction_text(std::nullopt), std::string("n/a"));
     QCOMPARE(bs::fraction_text(1.04, true), std::string("\xE2\x9A\xA0 104.0 %"));
+  }
+  void peak_rows_get_the_ceiling_of_their_device() {
+    // A stored ceiling set (as kernels::ceiling_result_set writes it) for host "h", device "cpu".
+    bs::ResultSet set;
+    set.platform = "h";
+    set.device = "cpu";
+    set.backend = "CPU SIMD (AVX2+FMA)";
+    set.source_format = bs::kCeilingSource;
+    set.provenance.date = "2026-11-23T22:00:00Z";
+    set.measurements.push_back({});
+    set.measurements.back().name = "rotation-mix/avx2";
+    set.measurements.back().metric = bs::kRotationMixMetric;
+    set.measurements.back().unit = "FLOP/s";
+    set.measurements.back().values = {100e9, 110e9};  // mean 105 GFLOPS
+    bs::PeakRow row;
+    row.platform = "h";
+    row.device = "cpu";
+    row.backend = "CPU SIMD (AVX2+FMA)";
+    row.peak.flops = 102e9;
+    row.theoretical_flops = 100e9;
+    bs::PeakRow other = row;
+    other.device = "gpu";
+    other.peak.flops = 50e9;
+    std::vector<bs::PeakRow> rows{row, other};
+    const std::vector<bs::ResultSet> sets{set};
+    bs::apply_empirical_ceilings(rows, sets);
+    QVERIFY(std::abs(*rows[0].fraction_of_ceiling - 102.0 / 105.0) < 1e-12);
+    QCOMPARE(*rows[0].empirical_ceiling_flops, 105e9);
+    QVERIFY(rows[0].ceiling_how.find("2026-11-23T22:00:00Z") != std::string::npos);
+    // 102 % of the computed peak, within the ceiling: flagged, and the reason says the model understates the core.
+    QVERIFY(has(rows[0].flags, bs::flag_code::kAboveComputedPeak));
+    QVERIFY(rows[0].flags.back().reason.find("model understates") != std::string::npos);
+    QVERIFY(!rows[1].fraction_of_ceiling && !rows[1].empirical_ceiling_flops);  // another device: no ceiling
+    QVERIFY(rows[1].flags.empty());
   }
 };
 
