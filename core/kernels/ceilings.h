@@ -56,9 +56,10 @@ struct CeilingSet {
 class CeilingMeter {
  public:
   CeilingMeter(const SimdTarget& target, int threads, double target_seconds = 0.1);
-  int mix_chains() const { return mix_chains_; }
+  int mix_chains() const { return mix_chains_; }  // the fastest count in the constructor's probes
   bool has_fma() const;
-  CeilingSample time_rotation_mix();
+  CeilingSample time_rotation_mix();  // the fastest of all offered chain counts, each run once
+  int last_best_chains() const { return last_best_chains_; }
   CeilingSample time_fma();  // work 0 when the ISA has no FMA
   std::string mix_how() const;
   std::string fma_how() const;
@@ -66,9 +67,10 @@ class CeilingMeter {
  private:
   CeilingSample run_mix(int chains, std::int64_t steps);
   CeilingSample run_fma(std::int64_t steps);
+  std::string options_text() const;  // "4/5/6"
   SimdTarget target_;
   int threads_;
-  int mix_chains_ = 0;
+  int mix_chains_ = 0, last_best_chains_ = 0;
   std::int64_t mix_steps_ = 0, fma_steps_ = 0;
 };
 
