@@ -17,6 +17,7 @@
 #include "kernels/backend.h"
 #include "kernels/ceiling_cache.h"
 #include "signals.h"
+#include "store/workspace.h"
 
 namespace bs::cli {
 namespace {
@@ -70,7 +71,7 @@ int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
 }
 
 int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {"--json", "--table", "--measure-ceilings"}, {"--isa"});
+  const ParsedArgs args = parse_args(raw, {"--json", "--table", "--measure-ceilings"}, {"--isa", "--workspace"});
   const BundledDeviceTable& specs = bundled_device_table();
   if (args.has("--table")) {
     if (!specs.error.empty()) throw std::runtime_error(specs.error);
@@ -94,6 +95,18 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
   if (args.has("--measure-ceilings")) {
     ceilings = kernels::measure_ceilings(cpu, {}, interrupt_token());
     kernels::store_ceilings(*ceilings);
+    // In a workspace the peak table, peaks and the roofline show each run's % of this device's ceiling.
+    if (const auto ws_path = args.value("--workspace")) {
+      ImportBatch batch;
+      batch.source_path = "benchscope-cli devices --measure-ceilings";
+      batch.format = kernels::kCeilingSource;
+      const ResultSet set = kernels::ceiling_result_set(*ceilings);
+      batch.result_sets = {set};
+      Workspace ws(*ws_path);
+      ws.add_import(batch, content_hash(set.provenance.date + set.provenance.note));
+    }
+  } else if (args.value("--workspace")) {
+    throw UsageError("--workspace stores measured ceilings: use it with --measure-ceilings");
   } else {
     ceilings = kernels::cached_ceilings(cpu);
   }
@@ -146,14 +159,15 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
 const CommandRegistrar registrar({
     "devices",
     "list the backends and devices the kernels can run on, with theoretical peaks",
-    "usage: benchscope-cli devices [--table] [--json] [--isa avx512|avx2|sse4|generic] [--measure-ceilings]\n"
+    "usage: benchscope-cli devices [--table] [--json] [--isa avx512|avx2|sse4|generic]\n"
+    "         [--measure-ceilings [--workspace W.bsw]]\n"
     "  Every backend and device (CPU SIMD, CPU scalar, each OpenCL device, each CUDA GPU) with its properties, the\n"
     "  rotation kernel's theoretical peak and the vendor FP32 peak from the device table, then the backends this\n"
     "  build knows but cannot run here and why. --table: the device table (resources/devices/devices.json) with\n"
     "  every entry's FP32 peak, derivation and source. The CPU SIMD backend also shows its empirical ceilings\n"
     "  (rotation mix, FMA, memory bandwidth; docs/ceilings.md) with when and how they were measured, from the\n"
-    "  per-host cache; --measure-ceilings measures them now (~5 s) and updates the cache. --isa: another\n"
-    "  instruction set this CPU has.",
+    "  per-host cache; --measure-ceilings measures them now (~5 s) and updates the cache (--workspace: also stores\n"
+    "  them there, for peaks, the peak table and the roofline). --isa: another instruction set this CPU has.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_devices(args, out);
     },
