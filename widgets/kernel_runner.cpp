@@ -14,8 +14,15 @@
 #include <QTableWidget>
 #include <QtConcurrent>
 
+#include <algorithm>
+
+#include "analysis/ceiling_check.h"
+#include "analysis/flops.h"
+#include "analysis/stats.h"
 #include "analysis/sweep_energy.h"
+#include "analysis/plausibility.h"
 #include "analysis/units.h"
+#include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power_sensor_box.h"
@@ -33,6 +40,8 @@ KernelRunner::KernelRunner(QWidget* parent)
       repeats_(new QSpinBox(this)),
       details_(new QLabel(this)),
       input_error_(new QLabel(this)),
+      ceilings_(new QLabel(this)),
+      measure_ceilings_(new QPushButton(tr("Measure ceilings"), this)),
       run_(new QPushButton(tr("Run"), this)),
       stop_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
@@ -54,6 +63,12 @@ KernelRunner::KernelRunner(QWidget* parent)
   variant_->addItem(tr("paper (one task per worker)"), "paper");
   variant_->setToolTip(tr("Which kernel variant; views label curves with it"));
   details_->setWordWrap(true);
+  ceilings_->setWordWrap(true);
+  ceilings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  ceilings_->setObjectName("ceilingsLabel");
+  measure_ceilings_->setToolTip(tr("Measure this CPU's empirical ceilings now (~5 s): the rotation kernel's instruction "
+                                   "mix and plain FMA with enough independent chains, and the memory bandwidth. Stored "
+                                   "per host and in the workspace (peak table, roofline)"));
   details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   stop_->setEnabled(false);
   run_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
@@ -72,6 +87,10 @@ KernelRunner::KernelRunner(QWidget* parent)
   auto* form = new QFormLayout;
   form->addRow(tr("Backend"), backend_);
   form->addRow(QString(), details_);
+  auto* ceiling_row = new QHBoxLayout;
+  ceiling_row->addWidget(ceilings_, 1);
+  ceiling_row->addWidget(measure_ceilings_, 0, Qt::AlignTop);
+  form->addRow(tr("Ceilings"), ceiling_row);
   form->addRow(tr("Variant"), variant_);
   form->addRow(tr("Workers"), workers_);
   form->addRow(tr("D"), dims_);
@@ -95,6 +114,7 @@ KernelRunner::KernelRunner(QWidget* parent)
   connect(run_, &QPushButton::clicked, this, &KernelRunner::start);
   connect(workers_, &QLineEdit::textChanged, this, &KernelRunner::validate_inputs);
   connect(dims_, &QLineEdit::textChanged, this, &KernelRunner::validate_inputs);
+  connect(measure_ceilings_, &QPushButton::clicked, this, &KernelRunner::measure_ceilings);
   connect(stop_, &QPushButton::clicked, this, &KernelRunner::cancel);
   // Device and variant names can be long ("OpenCL: pthread-Intel(R) Xeon(R) Platinum …"): the open list shows them
   // whole, the closed boxes do not set the dock's (and so the window's) minimum width.
@@ -108,12 +128,14 @@ KernelRunner::KernelRunner(QWidget* parent)
 
 KernelRunner::~KernelRunner() {
   if (cancel_) cancel_->cancel();
+  if (ceiling_cancel_) ceiling_cancel_->cancel();
   QThreadPool::globalInstance()->waitForDone();  // the sweep thread refers to our backends
 }
 
 void KernelRunner::populate() {
   cpu_ = kernels::detect_cpu();  // ~0.1 s clock calibration, once
   backends_ = kernels::available_backends(cpu_);
+  ceiling_set_ = kernels::cached_ceilings(cpu_);  // measured earlier on this host: no re-measuring on every start
   backend_->clear();
   for (const auto& b : backends_)
     backend_->addItem(QStringLiteral("%1 — %2").arg(QString::fromStdString(b.label), QString::fromStdString(b.device_name)));
@@ -127,6 +149,85 @@ void KernelRunner::show_backend_details() {
   details_->setText(QStringLiteral("<small>%1<br>theoretical peak %2</small>")
                         .arg(QString::fromStdString(b.details).toHtmlEscaped(),
                              QString::fromStdString(format_si(b.theoretical_peak_flops, "FLOPS"))));
+  show_ceilings();
+}
+
+void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
+  const int i = backend_->currentIndex();
+  const bool simd = i >= 0 && backends_[static_cast<std::size_t>(i)].id == "cpu-simd";
+  measure_ceilings_->setVisible(simd);
+  measure_ceilings_->setEnabled(!measuring_ceilings());
+  if (!simd) {
+    ceilings_->setText(tr("<small>Empirical ceilings are measured for the CPU SIMD backend only.</small>"));
+    ceilings_->setToolTip({});
+    return;
+  }
+  if (!ceiling_set_ || !ceiling_set_->rotation_mix.measured()) {
+    ceilings_->setText(tr("<small>No empirical ceiling measured for %1 with %2 threads yet: "
+                          "“% of peak” rests on the computed model alone.</small>")
+                           .arg(QString::fromStdString(cpu_.simd.name))
+                           .arg(cpu_.threads));
+    ceilings_->setToolTip({});
+    return;
+  }
+  const kernels::CeilingSet& c = *ceiling_set_;
+  const Summary mix = summarize(c.rotation_mix.values);
+  const auto own = compare_to_ceilings(mix.mean, c.computed_peak_flops, std::nullopt, "The rotation-mix ceiling");
+  QString text = tr("<small>rotation mix %1 ± %2 (n = %3) = %4 of the computed peak")
+                     .arg(QString::fromStdString(format_si(mix.mean, "FLOPS")),
+                          QString::fromStdString(format_si(mix.sd, "FLOPS")))
+                     .arg(mix.n)
+                     .arg(QString::fromStdString(fraction_text(own.fraction_of_peak, !own.flags.empty())));
+  if (c.fma.measured())
+    text += tr("; FMA %1").arg(QString::fromStdString(format_si(summarize(c.fma.values).mean, "FLOPS")));
+  if (c.bandwidth.measured())
+    text += tr("; memory %1").arg(QString::fromStdString(format_si(summarize(c.bandwidth.values).mean, "B/s")));
+  text += tr("<br>measured %1").arg(QString::fromStdString(c.date));
+  std::vector<PlausibilityFlag> flags = own.flags;
+  // The last sweep's peak against both: the Kernel Runner's own "% of peak" and "% of empirical ceiling".
+  double best = 0;
+  for (const FlopsRun& r : last_runs)
+    if (const auto p = find_peak(r)) best = std::max(best, p->flops);
+  if (best > 0) {
+    const auto cmp = compare_to_ceilings(best, cpu_.peak_flops, mix.mean, "The last sweep's peak",
+                                         "rotation mix, measured " + c.date);
+    text += tr("<br>last sweep: peak %1 = %2 of the computed peak, %3 of the empirical ceiling")
+                .arg(QString::fromStdString(format_si(best, "FLOPS")),
+                     QString::fromStdString(fraction_text(cmp.fraction_of_peak, !cmp.flags.empty())),
+                     QString::fromStdString(fraction_text(cmp.fraction_of_ceiling, !cmp.flags.empty())));
+    merge_flags(flags, cmp.flags);
+  }
+  ceilings_->setText(text + QStringLiteral("</small>"));
+  ceilings_->setToolTip(QString::fromStdString(
+      (flags.empty() ? std::string() : flags_text(flags) + "\n\n") + c.rotation_mix.how + "\n" + c.fma.how +
+      (c.bandwidth.measured() ? "\n" + c.bandwidth.how : std::string())));
+}
+
+void KernelRunner::measure_ceilings() {
+  if (measuring_ceilings()) return;
+  ceiling_cancel_ = std::make_shared<CancelToken>();
+  measure_ceilings_->setEnabled(false);
+  ceilings_->setText(tr("<small>Measuring the empirical ceilings…</small>"));
+  auto cancel = ceiling_cancel_;
+  const kernels::CpuInfo cpu = cpu_;
+  auto* watcher = new QFutureWatcher<kernels::CeilingSet>(this);
+  connect(watcher, &QFutureWatcher<kernels::CeilingSet>::finished, this, [this, watcher] {
+    watcher->deleteLater();
+    ceiling_cancel_.reset();
+    try {
+      ceiling_set_ = watcher->result();
+      try {
+        kernels::store_ceilings(*ceiling_set_);
+      } catch (const std::runtime_error& e) {
+        emit failed(tr("Ceilings measured but not cached: %1").arg(QString::fromUtf8(e.what())));
+      }
+      emit ceilings_measured(kernels::ceiling_result_set(*ceiling_set_));
+    } catch (const std::exception& e) {
+      emit failed(tr("Measuring the ceilings: %1").arg(QString::fromUtf8(e.what())));
+    }
+    show_ceilings();
+  });
+  watcher->setFuture(QtConcurrent::run([cpu, cancel] { return kernels::measure_ceilings(cpu, {}, *cancel); }));
 }
 
 std::optional<PowerTrace> KernelRunner::take_power_trace() {
@@ -241,6 +342,7 @@ void KernelRunner::start() {
         recorder_.reset();
       }
       show_energies(result.runs);
+      show_ceilings(result.runs);
       emit finished(result.runs, result.cancelled);
     } catch (const std::exception& e) {
       emit failed(QString::fromUtf8(e.what()));

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kernels/backend.h"
+#include "kernels/ceilings.h"
 #include "model/power_trace.h"
 
 class QComboBox;
@@ -48,18 +49,27 @@ class KernelRunner : public QWidget {
   std::optional<PowerTrace> take_power_trace();
   void start();
   void cancel();
+  // Measures the CPU's empirical ceilings (kernels/ceilings.h) off the GUI thread, stores them in the per-host
+  // cache and emits ceilings_measured; the details then show them.
+  void measure_ceilings();
+  bool measuring_ceilings() const { return ceiling_cancel_ != nullptr; }
+  QLabel* ceilings_label() const { return ceilings_; }
+  // The cached (or just measured) ceilings of this CPU with its SIMD target, if any.
+  const std::optional<kernels::CeilingSet>& ceilings() const { return ceiling_set_; }
 
  signals:
   void started();
   void live_run(const bs::FlopsRun& run);
   void finished(const std::vector<bs::FlopsRun>& runs, bool cancelled);
   void failed(const QString& message);
+  void ceilings_measured(const bs::ResultSet& set);  // to be stored in the workspace beside the runs
 
  private:
   void populate();
   void show_backend_details();
   void show_energies(const std::vector<FlopsRun>& runs);
   void validate_inputs();  // as the user types: a bad field turns red with the reason, Run is disabled
+  void show_ceilings(const std::vector<FlopsRun>& last_runs = {});
   kernels::CpuInfo cpu_;
   std::vector<kernels::Backend> backends_;
   std::shared_ptr<CancelToken> cancel_;
@@ -71,6 +81,10 @@ class KernelRunner : public QWidget {
   QSpinBox* repeats_;
   QLabel* details_;
   QLabel* input_error_;
+  QLabel* ceilings_;
+  QPushButton* measure_ceilings_;
+  std::optional<kernels::CeilingSet> ceiling_set_;
+  std::shared_ptr<CancelToken> ceiling_cancel_;
   QPushButton* run_;
   QPushButton* stop_;
   QProgressBar* progress_;

@@ -62,6 +62,9 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
       case OfTheoretical:
         return r.fraction_of_theoretical ? QStringLiteral("%1 %").arg(*r.fraction_of_theoretical * 100, 0, 'f', 1)
                                          : QStringLiteral("–");
+      case OfCeiling:
+        return r.fraction_of_ceiling ? QStringLiteral("%1 %").arg(*r.fraction_of_ceiling * 100, 0, 'f', 1)
+                                     : QStringLiteral("–");
       case OfSpec:
         return r.fraction_of_spec ? QStringLiteral("%1 %").arg(*r.fraction_of_spec * 100, 0, 'f', 1) : QStringLiteral("–");
       case Origin: return QString::fromUtf8(to_string(r.origin).data());
@@ -79,6 +82,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
       case Reported: return r.reported_flops.value_or(-1);
       case Ratio: return r.ratio_to_reported.value_or(-1);
       case OfTheoretical: return r.fraction_of_theoretical.value_or(-1);
+      case OfCeiling: return r.fraction_of_ceiling.value_or(-1);
       case OfSpec: return r.fraction_of_spec.value_or(-1);
       default: return data(index, Qt::DisplayRole);
     }
@@ -98,6 +102,10 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
                       qs(r.spec->source_title));
     else
       tip += tr("\nNot in the device table: no vendor peak to check against");
+    if (r.empirical_ceiling_flops)
+      tip += tr("\nEmpirical ceiling: %1 (%2)").arg(qs(format_si(*r.empirical_ceiling_flops, "FLOPS")), qs(r.ceiling_how));
+    else
+      tip += tr("\nNo empirical ceiling measured for this device (Kernel Runner: Measure ceilings)");
     // The ratio columns say what they divide, with both numbers, above the row's provenance.
     QString division;
     if (index.column() == Ratio && r.ratio_to_reported && r.reported_flops)
@@ -124,7 +132,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
 QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return {};
   static const char* names[] = {"Platform", "Device", "Backend", "D", "Peak", "Workers at peak", "Reported", "Ratio",
-                                "% of theoretical", "% of spec", "Origin"};
+                                "% of theoretical", "% of ceiling", "% of spec", "Origin"};
   static const char* tips[] = {"The computer; its rows are grouped under it",
                                "Compute device (colour as in every plot)",
                                "API the kernel ran through",
@@ -134,7 +142,9 @@ QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, in
                                "Vendor or literature peak figure",
                                "Measured peak ÷ the vendor or literature figure in Reported (hover a cell for both numbers)",
                                "Measured peak ÷ this kernel's theoretical peak on the device (its instruction mix at "
-                               "the device's clock and SIMD width; hover a cell for both numbers)",
+                               "the device's clock and SIMD width; hover a cell for both numbers); above 100 % is flagged ⚠",
+                               "Measured peak ÷ the device's empirical ceiling: the rotation kernel's instruction mix "
+                               "measured by BenchScope's micro-kernel (docs/ceilings.md)",
                                "Measured peak ÷ the vendor's FP32 peak (device table); above 130 % is flagged ⚠",
                                "measured on a machine, or reconstructed from published figures"};
   if (role == Qt::DisplayRole) return tr(names[section]);

@@ -133,6 +133,21 @@ void RooflineView::redraw() {
     roof->setName(name);
     y_min = std::min(y_min, ys.front());
     y_max = std::max(y_max, c.peak_flops);
+    if (c.empirical_flops) {
+      // The empirical ceiling: the same roof with the measured instruction-mix peak, dotted.
+      QVector<double> ex, ey;
+      const double ridge_e = c.bandwidth_bps ? *c.empirical_flops / *c.bandwidth_bps : kMinIntensity;
+      ex = c.bandwidth_bps ? QVector<double>{kMinIntensity, std::clamp(ridge_e, kMinIntensity, kMaxIntensity), kMaxIntensity}
+                           : QVector<double>{kMinIntensity, kMaxIntensity};
+      for (double x : ex) ey.push_back(c.bandwidth_bps ? std::min(*c.empirical_flops, x * *c.bandwidth_bps) : *c.empirical_flops);
+      QCPGraph* emp = plot_->addGraph();
+      emp->setData(ex, ey, true);
+      emp->setPen(QPen(color, 1.5, Qt::DotLine));
+      emp->setName(QString::fromStdString((c.flags.empty() ? std::string() : "\xE2\x9A\xA0 ") + c.device +
+                                          ": empirical ceiling " + format_si(*c.empirical_flops, "FLOPS") + " (" +
+                                          c.empirical_source + ")"));
+      y_max = std::max(y_max, *c.empirical_flops);
+    }
   }
   // Each run at its peak: the rotation kernel's intensity for its D and N.
   for (const PeakRow& row : peak_table(runs_)) {

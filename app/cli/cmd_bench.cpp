@@ -16,11 +16,13 @@
 #include "analysis/stats.h"
 #include "args.h"
 #include "bench_dnn.h"
+#include "bench_ceilings.h"
 #include "bench_pipeline.h"
 #include "bench_range_stats.h"
 #include "bench_tuner.h"
 #include "bench_vision.h"
 #include "command.h"
+#include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "power_args.h"
 #include "signals.h"
@@ -95,10 +97,26 @@ void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, con
   }
 }
 
+// The ceiling section (bench_ceilings.h), then the per-host cache and the load average.
+void bench_and_cache_ceilings(const kernels::CpuInfo& cpu, const kernels::Backend& simd, int runs,
+                              std::int64_t workers, std::ostream& out) {
+  const kernels::CeilingSet ceilings = bench_ceilings(cpu, simd, runs, workers, out);
+  try {
+    kernels::store_ceilings(ceilings);
+    out << "  ceilings stored in " << kernels::ceiling_cache_path() << " (devices and the Kernel Runner show them)\n";
+  } catch (const std::runtime_error& e) {
+    out << "  ceilings not cached: " << e.what() << '\n';
+  }
+  out << "load average after the ceilings: " << load_average() << '\n';
+}
+
 int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {}, {"--runs", "--workers", "--power", "--power-interval-ms", "--sysfs-root"});
+  const ParsedArgs args =
+      parse_args(raw, {"--no-ceilings", "--ceilings-only"}, {"--runs", "--workers", "--power", "--power-interval-ms", "--sysfs-root", "--isa"});
   const int runs = static_cast<int>(args.number("--runs", 7));
   if (runs < 1 || runs > 1000) throw UsageError("--runs must be between 1 and 1000");
+  if (args.has("--no-ceilings") && args.has("--ceilings-only"))
+    throw UsageError("--no-ceilings and --ceilings-only exclude each other");
   // Large W, so one run is tens of milliseconds of work and thread start-up (milliseconds on a shared machine) is
   // a small part of it: 16384 workers x 4 points for the throughput variants (~50 ms at 300 GFLOPS), 2048 for the
   // latency-bound paper variants (one dependent chain per worker, ~0.2 s at 10 GFLOPS).
@@ -106,16 +124,28 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   const double w_given = args.number("--workers", 0);
   if (w_override && (w_given < 1 || w_given > 1e6)) throw UsageError("--workers must be between 1 and 1e6");
   const std::string load_before = load_average();
-  const kernels::CpuInfo cpu = kernels::detect_cpu();
+  kernels::CpuInfo cpu = kernels::detect_cpu();
+  if (const auto isa = args.value("--isa")) {
+    try {
+      kernels::use_simd_target(cpu, kernels::simd_target_by_id(*isa));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
   const auto backends = kernels::available_backends(cpu);
   const kernels::RotationParams params{4, 40000};
-  char line[320];
+  char line[640];
   std::snprintf(line, sizeof line,
                 "CPU: %s (%s), %d threads, %.3f GHz measured (dependent imul chain, thread CPU time), %s, "
                 "%d FMA pipes assumed, %.0f flop/cycle/core\nload average before: %s\n",
                 cpu.model.c_str(), cpu.vendor.c_str(), cpu.threads, cpu.clock_hz / 1e9, cpu.simd.name.c_str(),
                 cpu.fma_ports, cpu.flops_per_cycle, load_before.c_str());
-  out << line << "D = 4, N = 40,000; GFLOPS of each of " << runs
+  out << line;
+  if (args.has("--ceilings-only")) {
+    bench_and_cache_ceilings(cpu, backends.front(), runs, w_override ? static_cast<std::int64_t>(w_given) : 16384, out);
+    return 0;
+  }
+  out << "D = 4, N = 40,000; GFLOPS of each of " << runs
       << " runs after one warm-up (wall clock, steady_clock); % of the theoretical peak computed here.\n"
          "'% peak/CPU s': the same flops per CPU-second the process got, against one core's peak: the code's\n"
          "efficiency when other processes share the cores (CPU devices only).\n\n";
@@ -199,6 +229,8 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   std::snprintf(line, sizeof line, "clock measured again at the end: %.3f GHz; load average after: %s\n",
                 clock_after / 1e9, load_average().c_str());
   out << line;
+  if (!args.has("--no-ceilings"))
+    bench_and_cache_ceilings(cpu, simd, runs, w_override ? static_cast<std::int64_t>(w_given) : 16384, out);
   if (args.value("--power") && *args.value("--power") != "none") bench_power_overhead(args, simd, cpu, runs, out);
   return 0;
 }
@@ -255,8 +287,10 @@ int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
 const CommandRegistrar registrar({
     "bench",
     "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate | range-stats | dnn)",
-    "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--power SENSOR|auto] [--power-interval-ms M]\n"
-    "         [--sysfs-root DIR]   (--power: also the sampler's cost, with / without, and the energy per run)\n"
+    "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--isa avx512|avx2|sse4|generic]\n"
+    "         [--no-ceilings | --ceilings-only]\n"
+    "         [--power SENSOR|auto] [--power-interval-ms M] [--sysfs-root DIR]\n"
+    "         (--power: also the sampler's cost, with / without, and the energy per run)\n"
     "       benchscope-cli bench vision [--frames F] [--threads T] [--power SENSOR|auto]\n"
     "       benchscope-cli bench pipeline [--frames N] [--rounds R] [--detect-workers W] [--detect-scale S]\n"
     "         [--power SENSOR|auto]   (vision, pipeline: energy per frame of each method / side; with\n"
@@ -270,7 +304,13 @@ const CommandRegistrar registrar({
     "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
     "  median and mean \xC2\xB1 SD of R\n"
     "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU SIMD\n"
-    "  ratio and the sweep bookkeeping overhead. Figures only: nothing passes or fails on time.\n"
+    "  ratio and the sweep bookkeeping overhead. Then the empirical ceilings measured afresh (rotation mix, FMA,\n"
+    "  memory bandwidth; docs/ceilings.md), R rounds alternating with the CPU SIMD throughput variant: mean \xC2\xB1 SD\n"
+    "  (n), % of the computed peak (flagged above it), % of the ceiling, paired ratios (wall clock and per\n"
+    "  CPU-second) and whether the 97 % target is met; stored in the per-host cache. --isa forces the CPU SIMD\n"
+    "  dispatch (kernel, peak and ceilings) to one instruction set this CPU has. --no-ceilings skips the section;\n"
+    "  --ceilings-only runs only it (with the CPU line and the load average).\n"
+    "  Figures only: nothing passes or fails on time.\n"
     "  bench vision: preprocessing of a 1280x1024 frame (OpenCV cvtColor + remap, BenchScope's reprojection and fused\n"
     "  pass), then BenchScope's bilinear and Malvar-He-Cutler demosaics against OpenCV's cvtColor bilinear, 8 and 16\n"
     "  bit, on 1 and on all threads: mean \xC2\xB1 SD (n), medians, ratios, the targets (<= 1x, <= 2x) and the load average.\n"

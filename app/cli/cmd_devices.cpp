@@ -8,13 +8,39 @@
 
 #include "analysis/units.h"
 #include "analysis/device_table.h"
+#include "analysis/ceiling_check.h"
+#include "analysis/stats.h"
 #include "args.h"
+#include "bench_ceilings.h"
 #include "command.h"
 #include "flag_output.h"
 #include "kernels/backend.h"
+#include "kernels/ceiling_cache.h"
+#include "signals.h"
+#include "store/workspace.h"
 
 namespace bs::cli {
 namespace {
+
+nlohmann::json ceiling_json(const kernels::Ceiling& c) {
+  if (!c.measured()) return {{"how", c.how}, {"mean", nullptr}};
+  const Summary w = summarize(c.values), p = summarize(c.per_cpu_second);
+  return {{"unit", c.unit}, {"mean", w.mean}, {"sd", w.sd}, {"n", w.n}, {"per_cpu_second_mean", p.mean},
+          {"values", c.values}, {"how", c.how}};
+}
+
+nlohmann::json ceilings_json(const kernels::CeilingSet& s) {
+  nlohmann::json j{{"date", s.date}, {"isa", s.isa}, {"threads", s.threads}, {"clock_hz", s.clock_hz},
+                   {"computed_peak_flops", s.computed_peak_flops}, {"rotation_mix", ceiling_json(s.rotation_mix)},
+                   {"fma", ceiling_json(s.fma)}, {"bandwidth", ceiling_json(s.bandwidth)}, {"flags", nlohmann::json::array()}};
+  if (s.rotation_mix.measured()) {
+    const auto cmp = compare_to_ceilings(summarize(s.rotation_mix.values).mean, s.computed_peak_flops, std::nullopt,
+                                         "the rotation-mix ceiling");
+    j["rotation_mix"]["fraction_of_computed_peak"] = cmp.fraction_of_peak ? nlohmann::json(*cmp.fraction_of_peak) : nlohmann::json();
+    for (const PlausibilityFlag& f : cmp.flags) j["flags"].push_back({{"code", f.code}, {"reason", f.reason}});
+  }
+  return j;
+}
 
 // The device table itself (resources/devices/devices.json): every entry with its FP32 peak and source.
 int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
@@ -45,7 +71,7 @@ int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
 }
 
 int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {"--json", "--table"}, {});
+  const ParsedArgs args = parse_args(raw, {"--json", "--table", "--measure-ceilings"}, {"--isa", "--workspace"});
   const BundledDeviceTable& specs = bundled_device_table();
   if (args.has("--table")) {
     if (!specs.error.empty()) throw std::runtime_error(specs.error);
@@ -55,17 +81,46 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
     const DeviceSpec* s = match_device(specs.table, b.device_name, b.kind);
     return s ? std::optional<DeviceSpec>(*s) : std::nullopt;
   };
-  const kernels::CpuInfo cpu = kernels::detect_cpu();
+  kernels::CpuInfo cpu = kernels::detect_cpu();
+  if (const auto isa = args.value("--isa")) {
+    try {
+      kernels::use_simd_target(cpu, kernels::simd_target_by_id(*isa));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
   const auto backends = kernels::available_backends(cpu);
+  // Empirical ceilings of the CPU with its SIMD target: measured now when asked, else from the per-host cache.
+  std::optional<kernels::CeilingSet> ceilings;
+  if (args.has("--measure-ceilings")) {
+    ceilings = kernels::measure_ceilings(cpu, {}, interrupt_token());
+    kernels::store_ceilings(*ceilings);
+    // In a workspace the peak table, peaks and the roofline show each run's % of this device's ceiling.
+    if (const auto ws_path = args.value("--workspace")) {
+      ImportBatch batch;
+      batch.source_path = "benchscope-cli devices --measure-ceilings";
+      batch.format = kernels::kCeilingSource;
+      const ResultSet set = kernels::ceiling_result_set(*ceilings);
+      batch.result_sets = {set};
+      Workspace ws(*ws_path);
+      ws.add_import(batch, content_hash(set.provenance.date + set.provenance.note));
+    }
+  } else if (args.value("--workspace")) {
+    throw UsageError("--workspace stores measured ceilings: use it with --measure-ceilings");
+  } else {
+    ceilings = kernels::cached_ceilings(cpu);
+  }
   if (args.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& b : backends) {
       nlohmann::json variants = nlohmann::json::array();
       for (auto v : b.variants) variants.push_back(b.variant_label(v));
-      list.push_back({{"backend", b.id}, {"label", b.label}, {"device", b.device_name},
-                      {"kind", std::string(to_string(b.kind))}, {"variants", variants},
-                      {"theoretical_peak_flops", b.theoretical_peak_flops}, {"details", b.details},
-                      {"spec", spec_json(spec_of(b))}});
+      nlohmann::json entry{{"backend", b.id}, {"label", b.label}, {"device", b.device_name},
+                           {"kind", std::string(to_string(b.kind))}, {"variants", variants},
+                           {"theoretical_peak_flops", b.theoretical_peak_flops}, {"details", b.details},
+                           {"spec", spec_json(spec_of(b))}, {"empirical_ceilings", nullptr}};
+      if (b.id == "cpu-simd" && ceilings) entry["empirical_ceilings"] = ceilings_json(*ceilings);
+      list.push_back(std::move(entry));
     }
     out << nlohmann::json{{"format", "benchscope-devices"},
                           {"version", 1},
@@ -82,6 +137,20 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
     if (const auto s = spec_of(b))
       out << "    vendor FP32 peak " << format_si(s->fp32_peak_flops, "FLOPS") << " (" << s->name << ": "
           << s->derivation << ")\n";
+    if (b.id == "cpu-simd") {
+      if (ceilings) {
+        out << "    empirical ceilings (" << (args.has("--measure-ceilings") ? "measured now" : "cached") << ", "
+            << ceilings->date << ", " << ceilings->threads << " threads):\n";
+        print_ceilings(*ceilings, out, "      ");
+      } else {
+        out << "    empirical ceilings: none cached for " << cpu.simd.name << " and " << cpu.threads
+            << " threads; devices --measure-ceilings or bench kernels measures them (" << kernels::ceiling_cache_path()
+            << ")\n";
+      }
+    } else if (b.kind != DeviceKind::Cpu || b.id != "cpu-scalar") {
+      out << "    empirical ceilings: not measured for this backend (BenchScope's ceiling micro-kernels run on the CPU "
+             "SIMD backend only)\n";
+    }
   }
   for (const std::string& why : kernels::unavailable_backends()) out << "not available: " << why << '\n';
   return 0;
@@ -90,11 +159,15 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
 const CommandRegistrar registrar({
     "devices",
     "list the backends and devices the kernels can run on, with theoretical peaks",
-    "usage: benchscope-cli devices [--table] [--json]\n"
+    "usage: benchscope-cli devices [--table] [--json] [--isa avx512|avx2|sse4|generic]\n"
+    "         [--measure-ceilings [--workspace W.bsw]]\n"
     "  Every backend and device (CPU SIMD, CPU scalar, each OpenCL device, each CUDA GPU) with its properties, the\n"
     "  rotation kernel's theoretical peak and the vendor FP32 peak from the device table, then the backends this\n"
     "  build knows but cannot run here and why. --table: the device table (resources/devices/devices.json) with\n"
-    "  every entry's FP32 peak, derivation and source.",
+    "  every entry's FP32 peak, derivation and source. The CPU SIMD backend also shows its empirical ceilings\n"
+    "  (rotation mix, FMA, memory bandwidth; docs/ceilings.md) with when and how they were measured, from the\n"
+    "  per-host cache; --measure-ceilings measures them now (~5 s) and updates the cache (--workspace: also stores\n"
+    "  them there, for peaks, the peak table and the roofline). --isa: another instruction set this CPU has.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_devices(args, out);
     },

@@ -9,6 +9,7 @@
 #include "analysis/flops.h"
 #include "analysis/result_peaks.h"
 #include "analysis/units.h"
+#include "analysis/peak_ceilings.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"
@@ -46,6 +47,8 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ResultPeak>&
                      {"fraction_of_theoretical", optional_number(r.fraction_of_theoretical)},
                      {"spec", spec_json(r.spec)},
                      {"fraction_of_spec", optional_number(r.fraction_of_spec)},
+                     {"empirical_ceiling_flops", optional_number(r.empirical_ceiling_flops)},
+                     {"fraction_of_ceiling", optional_number(r.fraction_of_ceiling)},
                      {"origin", std::string(to_string(r.origin))},
                      {"source_file", r.source_file},
                      {"flags", flags_json(r.flags)}});
@@ -139,7 +142,10 @@ int run_peaks(const std::vector<std::string>& raw, std::ostream& out) {
     std::erase_if(data.runs, [&](const FlopsRun& r) { return r.device_kind != k; });
     std::erase_if(data.result_sets, [&](const ResultSet& s) { return s.device_kind != k; });
   }
-  const std::vector<PeakRow> rows = peak_table(data.runs);
+  // Against the devices' empirical ceilings stored with the data (result sets of "benchscope-ceilings"); a peak
+  // above its computed peak is flagged either way.
+  std::vector<PeakRow> rows = peak_table(data.runs);
+  apply_empirical_ceilings(rows, data.result_sets);
   ResultPeakQuery query;  // FP32 vector compute, as the paper compares
   if (const auto p = args.value("--precision")) {
     if (*p == "all") {

@@ -5,11 +5,14 @@
 #include <iomanip>
 #include <iostream>
 
+#include "analysis/ceiling_check.h"
 #include "analysis/flops.h"
+#include "analysis/stats.h"
 #include "analysis/units.h"
 #include "analysis/sweep_energy.h"
 #include "args.h"
 #include "command.h"
+#include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power_args.h"
@@ -41,12 +44,28 @@ void print_point_energies(std::ostream& out, const PowerTrace& trace, const std:
   }
 }
 
+// "  = X % of the empirical ceiling ..." for a CPU SIMD figure, with flags spelled out; a hint when none is cached.
+void print_ceiling_comparison(double flops, const kernels::CpuInfo& cpu, std::ostream& out) {
+  const auto cached = kernels::cached_ceilings(cpu);
+  std::optional<double> ceiling;
+  std::string how = "no empirical ceiling cached for this CPU and ISA (bench kernels or devices --measure-ceilings)";
+  if (cached && cached->rotation_mix.measured()) {
+    ceiling = summarize(cached->rotation_mix.values).mean;
+    how = "rotation mix, cached, measured " + cached->date;
+  }
+  const auto cmp = compare_to_ceilings(flops, cpu.peak_flops, ceiling, "the peak", how);
+  out << "  " << fraction_text(cmp.fraction_of_peak, !cmp.flags.empty()) << " of the computed peak, "
+      << fraction_text(cmp.fraction_of_ceiling, !cmp.flags.empty()) << " of the empirical ceiling ("
+      << (ceiling ? format_si(*ceiling, "FLOPS") + ", " : "") << how << ")\n";
+  for (const PlausibilityFlag& f : cmp.flags) out << "  \xE2\x9A\xA0 " << f.code << ": " << f.reason << '\n';
+}
+
 int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   if (!raw.empty() && raw[0] == "bandwidth") return run_bandwidth(raw, out, err);
   const ParsedArgs args = parse_args(raw, {"--json", "--no-warmup", "--quiet"},
                                      {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out",
                                       "--workspace", "--variant", "--device", "--power", "--power-interval-ms",
-                                      "--sysfs-root"});
+                                      "--sysfs-root", "--isa"});
   if (args.positional.size() != 1 || args.positional[0] != "flops")
     throw UsageError("expected 'run flops'");
   kernels::SweepSpec spec;
@@ -70,7 +89,14 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     throw UsageError("--variant must be paper or throughput");
   spec.variant = variant == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
 
-  const kernels::CpuInfo cpu = kernels::detect_cpu();
+  kernels::CpuInfo cpu = kernels::detect_cpu();
+  if (const auto isa = args.value("--isa")) {
+    try {
+      kernels::use_simd_target(cpu, kernels::simd_target_by_id(*isa));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
   const auto backends = kernels::available_backends(cpu);
   std::string backend_id = args.value("--backend").value_or("cpu");
   if (const auto device = args.value("--device")) backend_id += ":" + *device;  // --backend opencl --device 1
@@ -160,6 +186,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
         out << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
             << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
       out << " [variant " << row.variant << "]\n";
+      // The empirical ceiling of this CPU and ISA from the per-host cache (bench kernels / devices --measure-ceilings).
+      if (found->id == "cpu-simd") print_ceiling_comparison(row.peak.flops, cpu, out);
     }
     if (trace) print_point_energies(out, *trace, result.runs);
   }
@@ -170,7 +198,7 @@ const CommandRegistrar registrar({
     "run",
     "measure the paper's rotation kernel (FLOPS sweep) or memory bandwidth on this machine",
     "usage: benchscope-cli run flops [--backend cpu|cpu-simd|cpu-scalar|opencl|cuda [--device N]]\n"
-    "         [--variant throughput|paper]\n"
+    "         [--variant throughput|paper] [--isa avx512|avx2|sse4|generic]\n"
     "         [--points 1,2,4] [--iterations N] [--workers SPEC] [--repeats R] [--no-warmup]\n"
     "         [--out run.json] [--workspace W.bsw] [--json] [--quiet]\n"
     "  SPEC: 256:1024000:256 (start:stop:step), 1,2,4,8, or mixes such as 1,2,4:64:4.\n"
@@ -178,6 +206,8 @@ const CommandRegistrar registrar({
     "  float4 for D = 1, 2, 4). throughput: enough independent vector chains per thread to reach the FMA pipes'\n"
     "  peak (CPU: all W*D points packed into vectors; OpenCL: float16x4; CUDA: float4x4).\n"
     "  Every output is checked against the closed form D*(cos 2N + sin 2N). Ctrl+C keeps the completed points.\n"
+    "  --isa forces the CPU SIMD dispatch to one instruction set this CPU has. CPU SIMD peaks are also shown as\n"
+    "  % of the empirical ceiling cached for this CPU and ISA (flagged above the computed peak or the ceiling).\n"
     "         [--power SENSOR|auto|none] [--power-interval-ms 100] [--sysfs-root DIR]\n"
     "  --power records the on-board sensors during the sweep (benchscope-cli sensors lists them): phases for the\n"
     "  warm-up and every point, energy per point (J per timed run) and GFLOPS/W at the point's mean power; the\n"

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.h"
+
+#include "analysis/peak_ceilings.h"
 #include "lens_tab.h"
 
 #include <QApplication>
@@ -137,6 +139,20 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(runner_, &KernelRunner::live_run, this, &MainWindow::show_live_run);
   connect(runner_, &KernelRunner::finished, this, &MainWindow::store_measured_runs);
+  connect(runner_, &KernelRunner::ceilings_measured, this, [this](const ResultSet& set) {
+    if (!workspace_) new_untitled_workspace();
+    ImportBatch batch;
+    batch.source_path = "Kernel Runner: Measure ceilings";
+    batch.format = kCeilingSource;
+    batch.result_sets.push_back(set);
+    try {
+      workspace_->add_import(batch, content_hash(set.provenance.date + set.provenance.note));
+    } catch (const WorkspaceError& e) {
+      QMessageBox::critical(this, tr("Cannot store the ceilings"), QString::fromUtf8(e.what()));
+    }
+    reload();
+    statusBar()->showMessage(tr("Stored the empirical ceilings of %1").arg(QString::fromStdString(set.device)), 10000);
+  });
   connect(runner_, &KernelRunner::failed, this, [this](const QString& message) {
     live_.clear();
     refresh_views();
@@ -349,7 +365,14 @@ void MainWindow::refresh_views() {
     colors.push_back(r.color_index);
   }
   plot_->set_runs(shown);
-  peaks_->peak_model()->set_rows(bs::peak_table(peak_input), colors);
+  // Each row against its device's empirical ceiling (result sets stored by Measure ceilings); a peak above the
+  // computed peak is flagged even without one.
+  std::vector<PeakRow> peak_rows = bs::peak_table(peak_input);
+  std::vector<ResultSet> sets;
+  if (workspace_)
+    for (const StoredResultSet& s : workspace_->result_sets()) sets.push_back(s.set);
+  apply_empirical_ceilings(peak_rows, sets);
+  peaks_->peak_model()->set_rows(std::move(peak_rows), colors);
   // A permanent label: import summaries and action tips are temporary messages and must not erase it.
   status_label_->setText(tr("%1 — %2 of %3 runs shown%4")
                                .arg(workspace_ ? QString::fromStdString(workspace_->path()) : tr("no workspace"))

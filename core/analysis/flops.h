@@ -53,6 +53,11 @@ struct PeakRow {
   std::optional<DeviceSpec> spec;
   std::optional<double> fraction_of_spec;  // peak / spec FP32 peak
   std::vector<PlausibilityFlag> flags;     // check_flops() of the peak; empty: plausible (or nothing to check)
+  // The device's measured rotation-mix ceiling (apply_empirical_ceilings(), analysis/peak_ceilings.h), when the
+  // workspace has one, and the peak as a fraction of it.
+  std::optional<double> empirical_ceiling_flops;
+  std::optional<double> fraction_of_ceiling;
+  std::string ceiling_how;
 };
 // Rows in input order; runs without samples are skipped. Each row is checked against the bundled device table
 // (bundled_device_table()); when that cannot be loaded every row carries a spec_check_unavailable flag.

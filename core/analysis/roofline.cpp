@@ -3,7 +3,9 @@
 
 #include <algorithm>
 
+#include "analysis/ceiling_check.h"
 #include "analysis/flops.h"
+#include "analysis/peak_ceilings.h"
 #include "model/measure_class.h"
 
 namespace bs {
@@ -27,6 +29,10 @@ RooflinePoint place_on_roofline(const RooflineCeiling& c, std::string label, dou
   p.fraction = p.attainable > 0 ? p.flops / p.attainable : 0;
   const auto ridge = c.ridge_intensity();
   p.memory_bound = ridge && p.intensity < *ridge;
+  if (c.empirical_flops && *c.empirical_flops > 0) {
+    const double roof = c.bandwidth_bps ? std::min(*c.empirical_flops, p.intensity * *c.bandwidth_bps) : *c.empirical_flops;
+    if (roof > 0) p.fraction_of_empirical = p.flops / roof;
+  }
   return p;
 }
 
@@ -39,7 +45,10 @@ std::vector<RooflineCeiling> roofline_ceilings(std::span<const FlopsRun> runs, s
   const auto find = [&](const std::string& platform, const std::string& device) -> RooflineCeiling& {
     for (auto& c : out)
       if (c.platform == platform && c.device == device) return c;
-    out.push_back({platform, device, 0, {}, std::nullopt, {}, DeviceKind::Other});
+    RooflineCeiling c;
+    c.platform = platform;
+    c.device = device;
+    out.push_back(std::move(c));
     return out.back();
   };
   for (const PeakRow& row : peak_table(runs)) {
@@ -69,6 +78,15 @@ std::vector<RooflineCeiling> roofline_ceilings(std::span<const FlopsRun> runs, s
       }
     }
   std::erase_if(out, [](const RooflineCeiling& c) { return c.peak_flops <= 0; });
+  const std::vector<EmpiricalCeiling> empirical = empirical_ceilings(sets);
+  for (RooflineCeiling& c : out)
+    if (const EmpiricalCeiling* e = ceiling_for(empirical, c.platform, c.device, {})) {
+      c.empirical_flops = e->flops.mean;
+      c.empirical_source = e->how;
+      // A measured mix above the computed peak is flagged with the reason, never drawn silently above it.
+      if (c.peak_source.rfind("theoretical", 0) == 0)
+        c.flags = compare_to_ceilings(e->flops.mean, c.peak_flops, std::nullopt, "The rotation-mix ceiling", e->how).flags;
+    }
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/plausibility.h"
 #include "model/flops_run.h"
 
 namespace bs {
@@ -20,6 +21,11 @@ struct RooflineCeiling {
   std::optional<double> bandwidth_bps;    // memory ceiling, B/s (best repetition)
   std::string bandwidth_source;
   DeviceKind kind = DeviceKind::Other;    // of the device's FLOPS runs
+  // The rotation kernel's instruction mix measured on the device (analysis/peak_ceilings.h), when stored, and the
+  // flags of comparing it with the computed peak (above it: the model understates the core).
+  std::optional<double> empirical_flops;
+  std::string empirical_source;
+  std::vector<PlausibilityFlag> flags;
   double attainable(double intensity) const;  // min(peak, I x bandwidth); peak when the bandwidth is unknown
   std::optional<double> ridge_intensity() const;  // peak / bandwidth: where memory-bound turns compute-bound
 };
@@ -31,6 +37,7 @@ struct RooflinePoint {
   double attainable = 0;     // the roof above it
   double fraction = 0;       // flops / attainable
   bool memory_bound = false; // left of the ridge
+  std::optional<double> fraction_of_empirical;  // flops / min(empirical ceiling, intensity x bandwidth)
 };
 
 // Place a kernel that did `flop_count` operations moving `bytes` in `seconds`.

@@ -70,18 +70,21 @@ CpuInfo detect_cpu(bool calibrate) {
   if (info.model.empty()) info.model = "unknown CPU";
   info.threads = omp_get_max_threads();
   info.vendor = read_key("/proc/cpuinfo", "vendor_id", ':');
-  info.simd = best_simd_target();
   info.separate_add_pipes = info.vendor == "AuthenticAMD" || info.vendor == "HygonGenuine";
+  if (calibrate) info.clock_hz = calibrate_clock_hz();
+  use_simd_target(info, best_simd_target());
+  return info;
+}
+
+void use_simd_target(CpuInfo& info, const SimdTarget& target) {
+  info.simd = target;
+  info.fma_ports = 2;
   // Zen 4 (family 25) double-pumps 512-bit ops on 256-bit pipes; Zen 5 (family 26) has full-width pipes.
   if (info.vendor == "AuthenticAMD" && info.simd.isa == Isa::Avx512 &&
       read_key("/proc/cpuinfo", "cpu family", ':') == "25")
     info.fma_ports = 1;
   info.flops_per_cycle = rotation_flops_per_cycle(info.simd.lanes, info.simd.fma, info.fma_ports, info.separate_add_pipes);
-  if (calibrate) {
-    info.clock_hz = calibrate_clock_hz();
-    info.peak_flops = info.threads * info.clock_hz * info.flops_per_cycle;
-  }
-  return info;
+  info.peak_flops = info.threads * info.clock_hz * info.flops_per_cycle;
 }
 
 std::string os_name() {

@@ -39,6 +39,9 @@ double rotation_flops_per_cycle(int lanes, bool fma, int fma_ports, bool separat
 // = threads * clock * flops_per_cycle.
 CpuInfo detect_cpu(bool calibrate = true);
 
+// The same CPU with the SIMD backend forced to `target` (`--isa`): its lanes, FMA pipes, flops per cycle and peak.
+void use_simd_target(CpuInfo& cpu, const SimdTarget& target);
+
 std::string os_name();  // PRETTY_NAME of /etc/os-release
 
 }  // namespace bs::kernels

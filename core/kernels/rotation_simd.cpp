@@ -79,6 +79,26 @@ std::vector<SimdTarget> available_simd_targets() {
 
 SimdTarget best_simd_target() { return available_simd_targets().front(); }
 
+std::string isa_id(Isa isa) {
+  switch (isa) {
+    case Isa::Avx512: return "avx512";
+    case Isa::Avx2: return "avx2";
+    case Isa::Sse4: return "sse4";
+    default: return "generic";
+  }
+}
+
+SimdTarget simd_target_by_id(const std::string& id) {
+  std::string have;
+  for (const SimdTarget& t : available_simd_targets()) {
+    if (isa_id(t.isa) == id) return t;
+    have += (have.empty() ? "" : ", ") + isa_id(t.isa);
+  }
+  const bool known = id == "avx512" || id == "avx2" || id == "sse4" || id == "generic";
+  throw std::invalid_argument("--isa " + id + (known ? ": this CPU does not support it" : ": unknown instruction set") +
+                              " (this CPU has: " + have + ")");
+}
+
 SimdRotation::Aligned::~Aligned() { std::free(p); }
 
 SimdRotation::SimdRotation(const SimdTarget& target, Variant variant, const RotationParams& params,

@@ -25,6 +25,10 @@ struct SimdTarget {
 };
 SimdTarget best_simd_target();                      // the widest this CPU supports
 std::vector<SimdTarget> available_simd_targets();   // best first
+// Short ids for forcing the dispatch (`--isa`): "avx512", "avx2", "sse4", "generic".
+std::string isa_id(Isa isa);
+// The target with that id if this CPU supports it; std::invalid_argument naming the ids this CPU has otherwise.
+SimdTarget simd_target_by_id(const std::string& id);
 
 class SimdRotation {
  public:
