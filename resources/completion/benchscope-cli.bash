@@ -11,7 +11,7 @@ _benchscope_cli() {
   local options=""
   case "${COMP_WORDS[1]}" in
     battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
-    bench) options="--help --columns --detect-scale --detect-workers --frames --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers" ;;
+    bench) options="--help --arch --backend --batch --columns --detect-scale --detect-workers --frames --input --model --platform --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers --workspace" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
     devices) options="--help --json --table" ;;
@@ -23,7 +23,7 @@ _benchscope_cli() {
     lens) options="--help --board --circle-fov --circle-radius --fix --fov --lens --min-level --model --out --square" ;;
     peaks) options="--help --json --kind --precision" ;;
     pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
-    platforms) options="--help --battery --budget --csv --extra-load --json --latex --min-fps --min-runtime --mission --supply-volts" ;;
+    platforms) options="--help --battery --budget --csv --extra-load --json --latex --min-fps --min-runtime --mission --supply-volts --workspace" ;;
     power) options="--help --from --interval --json --min-phase --min-step --phases --query-gpu --supply-volts --to" ;;
     record-power) options="--help --interval-ms --out --quiet --seconds --sensor --sysfs-root" ;;
     report) options="--help --battery --budget --extra-load --font-pt --min-fps --min-runtime --mission --out --pdf --quiet --supply-volts --template" ;;
@@ -31,6 +31,7 @@ _benchscope_cli() {
     run) options="--help --backend --device --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     sensors) options="--help --json --power --sensor --sysfs-root" ;;
     synth-frame) options="--help --bits --blur --board --lens --noise --out --pattern --pose --poses --scene --seed --size --square --supersample --vignetting" ;;
+    synth-power) options="--help --out --platform --rate --samples --seed" ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$options" -- "$cur"))
