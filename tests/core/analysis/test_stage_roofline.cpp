@@ -90,7 +90,7 @@ class TestStageRoofline : public QObject {
 
   void placement_arithmetic() {
     // A 1000x1000 frame in 10 ms (SD 2 ms) on a device of 100 GOP/s and 10 GB/s.
-    const bs::RooflineCeiling c{"robot", "CPU", 100e9, "theoretical", 10e9, "triad", bs::DeviceKind::Cpu};
+    const bs::RooflineCeiling c{"robot", "CPU", 100e9, "theoretical", 10e9, "triad", bs::DeviceKind::Cpu, std::nullopt, "", {}};
     const std::vector<bs::RooflineCeiling> cs{c};
     const std::vector<bs::PipelineRun> runs{run_of("robot", "CPU (4 threads)", "cpu", "bilinear", 1000, 1000, 0.010, 0.002)};
     const bs::StagePlacements p = bs::place_preprocessing(cs, runs);
@@ -113,9 +113,9 @@ class TestStageRoofline : public QObject {
 
   void ceiling_matching() {
     const std::vector<bs::RooflineCeiling> cs{
-        {"box", "GPU", 1e12, "", std::nullopt, "", bs::DeviceKind::Gpu},
-        {"box", "GPU X", 2e12, "", std::nullopt, "", bs::DeviceKind::Gpu},
-        {"box", "CPU", 1e11, "", std::nullopt, "", bs::DeviceKind::Cpu}};
+        {"box", "GPU", 1e12, "", std::nullopt, "", bs::DeviceKind::Gpu, std::nullopt, "", {}},
+        {"box", "GPU X", 2e12, "", std::nullopt, "", bs::DeviceKind::Gpu, std::nullopt, "", {}},
+        {"box", "CPU", 1e11, "", std::nullopt, "", bs::DeviceKind::Cpu, std::nullopt, "", {}}};
     const std::vector<bs::PipelineRun> runs{
         run_of("box", "GPU X (OpenCL) preprocessing, CPU detection", "opencl", "", 8, 8, 1e-3, 0),  // longest name
         run_of("box", "something else", "opencl", "", 8, 8, 1e-3, 0),  // two GPUs: ambiguous, skipped
