@@ -11,10 +11,10 @@ _benchscope_cli() {
   local options=""
   case "${COMP_WORDS[1]}" in
     battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
-    bench) options="--help --arch --backend --batch --columns --detect-scale --detect-workers --frames --input --model --platform --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers --workspace" ;;
+    bench) options="--help --arch --backend --batch --ceilings-only --columns --detect-scale --detect-workers --frames --input --isa --model --no-ceilings --platform --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers --workspace" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
-    devices) options="--help --json --table" ;;
+    devices) options="--help --isa --json --measure-ceilings --table --workspace" ;;
     efficiency) options="--help --json --supply-volts" ;;
     figures) options="--help --data --dpi --font-pt --format --height-mm --out --preset --quiet --template --width-mm" ;;
     frames) options="--help --lens --method --out --triptych --window" ;;
@@ -28,7 +28,7 @@ _benchscope_cli() {
     record-power) options="--help --interval-ms --out --quiet --seconds --sensor --sysfs-root" ;;
     report) options="--help --battery --budget --extra-load --font-pt --min-fps --min-runtime --mission --out --pdf --quiet --supply-volts --template" ;;
     roofline) options="--help --json" ;;
-    run) options="--help --backend --device --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
+    run) options="--help --backend --device --isa --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     sensors) options="--help --json --power --sensor --sysfs-root" ;;
     synth-frame) options="--help --bits --blur --board --lens --noise --out --pattern --pose --poses --scene --seed --size --square --supersample --vignetting" ;;
     synth-power) options="--help --out --platform --rate --samples --seed" ;;
