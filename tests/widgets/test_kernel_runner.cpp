@@ -48,7 +48,10 @@ class TestKernelRunner : public QObject {
   void fields_are_validated_as_typed() {
     bs::ui::KernelRunner runner;
     auto* workers = runner.findChildren<QLineEdit*>().at(0);
-    auto* run = runner.findChild<QPushButton*>();  // the first button is Run
+    QPushButton* run = nullptr;
+    for (auto* b : runner.findChildren<QPushButton*>())
+      if (b->text() == "Run") run = b;
+    QVERIFY(run);
     QVERIFY(runner.input_error().isEmpty());
     QVERIFY(run->isEnabled());
     // Typed character by character, as a user does: the field turns red at once, naming itself and the reason.
