@@ -244,7 +244,17 @@ class TestCheckerboardCalibration : public QObject {
     for (const auto& w : result.warnings) qInfo("warning: %s", w.c_str());
     QVERIFY(!result.images[4].used);
     QVERIFY(!result.images[4].rejected.empty());
-    QCOMPARE(result.used(), 13);
+    // The views 85 degrees off the axis sit at cv::fisheye's conditioning threshold: with clang -O1 (the sanitizer
+    // build) one of them is judged ill-conditioned, with GCC -O2 none. Dropping such a view is the right outcome
+    // too; anything else dropped, or more than one such view, is a failure.
+    int ill_conditioned = 0;
+    for (std::size_t i = 0; i < result.images.size(); ++i) {
+      if (i == 4 || result.images[i].used) continue;
+      QVERIFY2(result.images[i].rejected.find("ill-conditioned") != std::string::npos, result.images[i].name.c_str());
+      ++ill_conditioned;
+    }
+    QVERIFY(ill_conditioned <= 1);
+    QCOMPARE(result.used(), 13 - ill_conditioned);
     // Exact corners: the lens comes back almost exactly.
     QVERIFY(std::abs(result.lens.r_pp / lens.r_pp - 1) < 1e-4);
     QVERIFY(std::hypot(result.lens.cx - lens.cx, result.lens.cy - lens.cy) < 0.05);
