@@ -14,11 +14,11 @@
 #include <set>
 #include <stdexcept>
 
-#include "analysis/flops.h"
-#include "analysis/paper_tables.h"
-#include "analysis/platform_comparison.h"
-#include "analysis/power.h"
-#include "analysis/platform_table.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/platform/paper_tables.h"
+#include "analysis/platform/platform_comparison.h"
+#include "analysis/power/power.h"
+#include "analysis/platform/platform_table.h"
 #include "device_palette.h"
 #include "plot_export.h"
 #include "triptych_figure.h"

@@ -11,7 +11,7 @@
 
 #include <functional>
 
-#include "analysis/platform_comparison.h"
+#include "analysis/platform/platform_comparison.h"
 #include "model/dnn_run.h"
 #include "model/flops_run.h"
 #include "model/frame.h"

@@ -11,7 +11,7 @@
 #include <map>
 #include <set>
 
-#include "analysis/foreign_sweeps.h"
+#include "analysis/peaks/foreign_sweeps.h"
 #include "json_access.h"
 
 namespace bs {

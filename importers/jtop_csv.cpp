@@ -10,7 +10,7 @@
 #include <set>
 #include <vector>
 
-#include "analysis/power_time.h"
+#include "analysis/power/power_time.h"
 #include "jetson_rail_limits.h"
 #include "meter_log_text.h"
 #include "power_line_reader.h"

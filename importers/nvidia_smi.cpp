@@ -8,7 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "analysis/power_time.h"
+#include "analysis/power/power_time.h"
 #include "meter_log_text.h"
 
 namespace bs {

@@ -14,7 +14,7 @@
 #include <sys/mman.h>
 #endif
 
-#include "analysis/power_time.h"
+#include "analysis/power/power_time.h"
 #include "power_line_reader.h"
 
 namespace bs {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "analysis/power_time.h"
+#include "analysis/power/power_time.h"
 #include "meter_log_text.h"
 
 namespace bs {

@@ -15,7 +15,7 @@
 #define BENCHSCOPE_HAVE_FSYNC 1
 #endif
 
-#include "analysis/flops.h"
+#include "analysis/peaks/flops.h"
 #include "json_access.h"
 #include "model/provenance_json.h"
 

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/platform_battery.h"
+#include "analysis/platform/platform_battery.h"
 #include "store/battery_preset_store.h"
 
 class QComboBox;

@@ -11,7 +11,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "analysis/units.h"
+#include "analysis/stats/units.h"
 
 namespace bs::ui {
 namespace {

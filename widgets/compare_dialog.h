@@ -2,7 +2,7 @@
 #pragma once
 #include <QDialog>
 
-#include "analysis/regression_compare.h"
+#include "analysis/platform/regression_compare.h"
 
 class QCheckBox;
 class QDoubleSpinBox;

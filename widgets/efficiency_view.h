@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/platform_efficiency.h"
+#include "analysis/platform/platform_efficiency.h"
 
 class QCustomPlot;
 class QTableWidget;

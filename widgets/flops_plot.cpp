@@ -10,8 +10,8 @@
 #include <cmath>
 #include <qcustomplot.h>
 
-#include "analysis/flops.h"
-#include "analysis/units.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/stats/units.h"
 #include "count_tickers.h"
 #include "device_palette.h"
 #include "peak_overlay.h"

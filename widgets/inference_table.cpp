@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/inference_table.h"
+#include "analysis/platform/inference_table.h"
 
 namespace bs::ui {
 namespace {

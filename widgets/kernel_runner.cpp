@@ -16,12 +16,12 @@
 
 #include <algorithm>
 
-#include "analysis/ceiling_check.h"
-#include "analysis/flops.h"
-#include "analysis/stats.h"
-#include "analysis/sweep_energy.h"
-#include "analysis/plausibility.h"
-#include "analysis/units.h"
+#include "analysis/peaks/ceiling_check.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/stats/stats.h"
+#include "analysis/power/sweep_energy.h"
+#include "analysis/peaks/plausibility.h"
+#include "analysis/stats/units.h"
 #include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"

@@ -9,8 +9,8 @@
 #include <QSortFilterProxyModel>
 #include <algorithm>
 
-#include "analysis/plausibility.h"
-#include "analysis/units.h"
+#include "analysis/peaks/plausibility.h"
+#include "analysis/stats/units.h"
 #include "device_palette.h"
 
 namespace bs::ui {

@@ -3,7 +3,7 @@
 #include <QAbstractTableModel>
 #include <QTableView>
 
-#include "analysis/flops.h"
+#include "analysis/peaks/flops.h"
 
 namespace bs::ui {
 

@@ -18,7 +18,7 @@
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "analysis/phase_energy.h"
+#include "analysis/power/phase_energy.h"
 #include "power_sensor_box.h"
 #include "sensors/recorder.h"
 #include "vision/cuda_preprocess.h"

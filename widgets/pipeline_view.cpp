@@ -14,7 +14,7 @@
 #include <limits>
 
 #include "inference_table.h"
-#include "analysis/pipeline_table.h"
+#include "analysis/platform/pipeline_table.h"
 #include "pipeline_measure_panel.h"
 
 namespace bs::ui {

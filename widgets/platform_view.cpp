@@ -21,9 +21,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "analysis/battery.h"
-#include "analysis/plausibility.h"
-#include "analysis/platform_table.h"
+#include "analysis/power/battery.h"
+#include "analysis/peaks/plausibility.h"
+#include "analysis/platform/platform_table.h"
 #include "frozen_column.h"
 #include "inference_table.h"
 

@@ -4,7 +4,7 @@
 #include <QWidget>
 #include <vector>
 
-#include "analysis/platform_comparison.h"
+#include "analysis/platform/platform_comparison.h"
 #include "model/dnn_run.h"
 #include "store/battery_preset_store.h"
 

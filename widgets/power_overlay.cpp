@@ -12,7 +12,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
-#include "analysis/trace_align.h"
+#include "analysis/power/trace_align.h"
 
 namespace bs::ui {
 

@@ -12,7 +12,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
-#include "analysis/range_table.h"
+#include "analysis/power/range_table.h"
 
 namespace bs::ui {
 

@@ -20,10 +20,10 @@
 #include <map>
 #include <qcustomplot.h>
 
-#include "analysis/decimate.h"
-#include "analysis/measurement_text.h"
-#include "analysis/power.h"
-#include "analysis/range_table.h"
+#include "analysis/power/decimate.h"
+#include "analysis/stats/measurement_text.h"
+#include "analysis/power/power.h"
+#include "analysis/power/range_table.h"
 #include "device_palette.h"
 #include "phase_markers.h"
 #include "power_cursors.h"

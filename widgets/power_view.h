@@ -3,9 +3,9 @@
 #include <QWidget>
 #include <vector>
 
-#include "analysis/flops.h"
-#include "analysis/plausibility.h"
-#include "analysis/power_stats.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/peaks/plausibility.h"
+#include "analysis/power/power_stats.h"
 #include "store/workspace.h"
 
 class QCheckBox;

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <qcustomplot.h>
 
-#include "analysis/flops.h"
-#include "analysis/units.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/stats/units.h"
 #include "device_palette.h"
 
 namespace bs::ui {

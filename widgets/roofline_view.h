@@ -4,8 +4,8 @@
 #include <map>
 #include <vector>
 
-#include "analysis/roofline.h"
-#include "analysis/stage_roofline.h"
+#include "analysis/roofline/roofline.h"
+#include "analysis/roofline/stage_roofline.h"
 
 class QCustomPlot;
 class QLabel;

@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "analysis/ceiling_check.h"
-#include "analysis/flops.h"
-#include "analysis/stats.h"
-#include "analysis/units.h"
+#include "analysis/peaks/ceiling_check.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
 #include "signals.h"
 #include "util/host_clock.h"
 

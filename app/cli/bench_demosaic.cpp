@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/power.h"
-#include "analysis/stats.h"
+#include "analysis/power/power.h"
+#include "analysis/stats/stats.h"
 #include "vision/bayer.h"
 #include "vision/bayer_simd.h"
 

@@ -15,9 +15,9 @@
 
 #include <opencv2/dnn.hpp>
 
-#include "analysis/phase_energy.h"
-#include "analysis/power_stats.h"
-#include "analysis/stats.h"
+#include "analysis/power/phase_energy.h"
+#include "analysis/power/power_stats.h"
+#include "analysis/stats/stats.h"
 #include "args.h"
 #include "kernels/backend.h"
 #include "kernels/cpu_info.h"

@@ -12,7 +12,7 @@
 
 #include <opencv2/core/utility.hpp>
 
-#include "analysis/stats.h"
+#include "analysis/stats/stats.h"
 #include "args.h"
 #include "pipeline_args.h"
 #include "power_args.h"

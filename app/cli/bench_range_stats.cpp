@@ -15,8 +15,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "analysis/power_stats.h"
-#include "analysis/stats.h"
+#include "analysis/power/power_stats.h"
+#include "analysis/stats/stats.h"
 #include "args.h"
 
 namespace bs::cli {

@@ -14,8 +14,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "analysis/power.h"
-#include "analysis/stats.h"
+#include "analysis/power/power.h"
+#include "analysis/stats/stats.h"
 #include "args.h"
 #include "vision/fast_map.h"
 #include "vision/lens.h"

@@ -10,8 +10,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "analysis/power.h"
-#include "analysis/stats.h"
+#include "analysis/power/power.h"
+#include "analysis/stats/stats.h"
 #include "args.h"
 #include "bench_demosaic.h"
 #include "power_args.h"

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/battery.h"
-#include "analysis/platform_battery.h"
-#include "analysis/power_stats.h"
+#include "analysis/power/battery.h"
+#include "analysis/platform/platform_battery.h"
+#include "analysis/power/power_stats.h"
 #include "args.h"
 #include "command.h"
 #include "inputs.h"

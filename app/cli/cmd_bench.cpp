@@ -9,11 +9,11 @@
 #include <random>
 #include <sstream>
 
-#include "analysis/decimate.h"
-#include "analysis/flops.h"
-#include "analysis/phase_energy.h"
-#include "analysis/power.h"
-#include "analysis/stats.h"
+#include "analysis/power/decimate.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/power/phase_energy.h"
+#include "analysis/power/power.h"
+#include "analysis/stats/stats.h"
 #include "args.h"
 #include "bench_dnn.h"
 #include "bench_ceilings.h"

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/regression_compare.h"
-#include "analysis/units.h"
+#include "analysis/platform/regression_compare.h"
+#include "analysis/stats/units.h"
 #include "args.h"
 #include "command.h"
 #include "inputs.h"

@@ -6,10 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/units.h"
-#include "analysis/device_table.h"
-#include "analysis/ceiling_check.h"
-#include "analysis/stats.h"
+#include "analysis/stats/units.h"
+#include "analysis/peaks/device_table.h"
+#include "analysis/peaks/ceiling_check.h"
+#include "analysis/stats/stats.h"
 #include "args.h"
 #include "bench_ceilings.h"
 #include "command.h"

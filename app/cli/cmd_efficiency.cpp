@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/flops.h"
-#include "analysis/platform_efficiency.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/platform/platform_efficiency.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"

@@ -6,10 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/flops.h"
-#include "analysis/result_peaks.h"
-#include "analysis/units.h"
-#include "analysis/peak_ceilings.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/peaks/result_peaks.h"
+#include "analysis/stats/units.h"
+#include "analysis/peaks/peak_ceilings.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"

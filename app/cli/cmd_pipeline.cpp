@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "analysis/phase_energy.h"
+#include "analysis/power/phase_energy.h"
 #include "args.h"
 #include "command.h"
 #include "pipeline_args.h"

@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/inference_table.h"
-#include "analysis/platform_table.h"
+#include "analysis/platform/inference_table.h"
+#include "analysis/platform/platform_table.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"

@@ -13,12 +13,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/power.h"
-#include "analysis/measurement_text.h"
-#include "analysis/plausibility.h"
-#include "analysis/power_phases.h"
-#include "analysis/power_stats.h"
-#include "analysis/range_table.h"
+#include "analysis/power/power.h"
+#include "analysis/stats/measurement_text.h"
+#include "analysis/peaks/plausibility.h"
+#include "analysis/power/power_phases.h"
+#include "analysis/power/power_stats.h"
+#include "analysis/power/range_table.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"

@@ -9,7 +9,7 @@
 #include <ostream>
 #include <thread>
 
-#include "analysis/phase_energy.h"
+#include "analysis/power/phase_energy.h"
 #include "args.h"
 #include "command.h"
 #include "power_args.h"

@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/flops.h"
-#include "analysis/stage_roofline.h"
-#include "analysis/units.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/roofline/stage_roofline.h"
+#include "analysis/stats/units.h"
 #include "args.h"
 #include "command.h"
 #include "inputs.h"

@@ -5,11 +5,11 @@
 #include <iomanip>
 #include <iostream>
 
-#include "analysis/ceiling_check.h"
-#include "analysis/flops.h"
-#include "analysis/stats.h"
-#include "analysis/units.h"
-#include "analysis/sweep_energy.h"
+#include "analysis/peaks/ceiling_check.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
+#include "analysis/power/sweep_energy.h"
 #include "args.h"
 #include "command.h"
 #include "kernels/ceiling_cache.h"

@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/stats.h"
-#include "analysis/units.h"
+#include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
 #include "args.h"
 #include "kernels/bandwidth.h"
 #include "signals.h"

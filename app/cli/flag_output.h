@@ -8,9 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/device_table.h"
-#include "analysis/flag_notes.h"
-#include "analysis/plausibility.h"
+#include "analysis/peaks/device_table.h"
+#include "analysis/peaks/flag_notes.h"
+#include "analysis/peaks/plausibility.h"
 #include "model/flops_run.h"
 
 namespace bs::cli {

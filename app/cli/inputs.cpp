@@ -3,7 +3,7 @@
 
 #include <fstream>
 
-#include "analysis/foreign_sweeps.h"
+#include "analysis/peaks/foreign_sweeps.h"
 #include "import_error.h"
 #include "importer.h"
 #include "store/workspace.h"

@@ -4,8 +4,8 @@
 #include <string>
 #include <set>
 
-#include "analysis/battery.h"
-#include "analysis/platform_comparison.h"
+#include "analysis/power/battery.h"
+#include "analysis/platform/platform_comparison.h"
 #include "args.h"
 
 namespace bs::cli {

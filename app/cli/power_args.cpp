@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <ostream>
 
-#include "analysis/phase_energy.h"
+#include "analysis/power/phase_energy.h"
 
 namespace bs::cli {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.h"
 
-#include "analysis/peak_ceilings.h"
+#include "analysis/peaks/peak_ceilings.h"
 #include "lens_tab.h"
 
 #include <QApplication>
@@ -19,8 +19,8 @@
 #include <QStatusBar>
 #include <qcustomplot.h>
 
-#include "analysis/flops.h"
-#include "analysis/foreign_sweeps.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/peaks/foreign_sweeps.h"
 #include "flops_plot.h"
 #include "import_controller.h"
 #include "kernel_runner.h"

@@ -9,7 +9,7 @@ class QAction;
 class QLabel;
 class QUndoStack;
 
-#include "analysis/platform_comparison.h"
+#include "analysis/platform/platform_comparison.h"
 #include "frame_raw.h"
 #include "paper_figures.h"
 #include "store/workspace.h"

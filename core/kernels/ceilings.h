@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/peak_ceilings.h"
+#include "analysis/peaks/peak_ceilings.h"
 #include "kernels/cpu_info.h"
 #include "model/flops_run.h"
 #include "util/cancel.h"

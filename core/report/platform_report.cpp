@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "analysis/inference_table.h"
-#include "analysis/platform_table.h"
+#include "analysis/platform/inference_table.h"
+#include "analysis/platform/platform_table.h"
 
 namespace bs {
 namespace {

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/platform_comparison.h"
+#include "analysis/platform/platform_comparison.h"
 #include "model/dnn_run.h"
 
 namespace bs {

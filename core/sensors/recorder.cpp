@@ -7,7 +7,7 @@
 #include <limits>
 #include <set>
 
-#include "analysis/power_time.h"
+#include "analysis/power/power_time.h"
 #include "util/host_clock.h"
 
 namespace bs::sensors {

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/battery.h"
+#include "analysis/power/battery.h"
 #include "store/workspace.h"
 
 namespace bs {

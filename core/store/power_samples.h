@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "analysis/trace_summary.h"
+#include "analysis/power/trace_summary.h"
 #include "model/power_trace.h"
 #include "store/sqlite_db.h"
 #include "util/cancel.h"

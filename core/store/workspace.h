@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/trace_summary.h"
+#include "analysis/power/trace_summary.h"
 #include "model/import_batch.h"
 #include "util/cancel.h"
 

@@ -10,7 +10,7 @@
 #include <exception>
 #include <thread>
 
-#include "analysis/power_stats.h"
+#include "analysis/power/power_stats.h"
 
 namespace bs::vision {
 namespace {

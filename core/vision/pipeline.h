@@ -13,7 +13,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "analysis/stats.h"
+#include "analysis/stats/stats.h"
 #include "util/cancel.h"
 #include "vision/bounded_queue.h"
 #include "vision/detector.h"

@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include "analysis/foreign_sweeps.h"
+#include "analysis/peaks/foreign_sweeps.h"
 #include "importer.h"
 
 #ifndef BENCHSCOPE_FUZZ_IMPORTER

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/flops.h"
-#include "analysis/foreign_sweeps.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/peaks/foreign_sweeps.h"
 #include "google_benchmark_json.h"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-#include "analysis/phase_energy.h"
+#include "analysis/power/phase_energy.h"
 #include "importer.h"
 #include "power_import.h"
 #include "power_recording.h"

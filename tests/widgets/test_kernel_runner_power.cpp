@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "../support/sysfs_fixture.h"
-#include "analysis/phase_energy.h"
+#include "analysis/power/phase_energy.h"
 #include "kernel_runner.h"
 #include "main_window.h"
 #include "power_sensor_box.h"

@@ -14,7 +14,7 @@
 #include <QTableWidget>
 #include <QTest>
 
-#include "analysis/pipeline_table.h"
+#include "analysis/platform/pipeline_table.h"
 #include "importer.h"
 #include "pipeline_measure_panel.h"
 #include "vision/cuda_preprocess.h"

@@ -11,7 +11,7 @@
 #include <QTest>
 
 #include "importer.h"
-#include "analysis/inference_table.h"
+#include "analysis/platform/inference_table.h"
 #include "inference_table.h"
 #include "platform_view.h"
 

@@ -23,7 +23,7 @@
 
 #include "../support/cli_harness.h"
 #include "../support/paper_sample.h"
-#include "analysis/range_table.h"
+#include "analysis/power/range_table.h"
 #include "power_cursors.h"
 #include "power_overlay.h"
 #include "power_stats_panel.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <thread>
 
-#include "analysis/flops.h"
+#include "analysis/peaks/flops.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 

@@ -9,7 +9,7 @@
 #include <thread>
 #include <unistd.h>
 
-#include "analysis/phase_energy.h"
+#include "analysis/power/phase_energy.h"
 #include "sensors/discovery.h"
 #include "sensors/ina3221.h"
 #include "sensors/nvml.h"

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/power.h"
-#include "analysis/power_stats.h"
-#include "analysis/trace_summary.h"
+#include "analysis/power/power.h"
+#include "analysis/power/power_stats.h"
+#include "analysis/power/trace_summary.h"
 #include "store/power_samples.h"
 #include "workspace_test_support.h"
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "analysis/power.h"
+#include "analysis/power/power.h"
 #include "importer.h"
 #include "power_import.h"
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "analysis/power.h"
+#include "analysis/power/power.h"
 #include "importer.h"
 #include "nvidia_smi.h"
 #include "perf_stat.h"

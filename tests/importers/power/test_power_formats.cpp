@@ -5,7 +5,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "analysis/power_stats.h"
+#include "analysis/power/power_stats.h"
 #include "importer.h"
 #include "power_csv.h"
 #include "power_import.h"

@@ -2,8 +2,8 @@
 #include <QTest>
 #include <cmath>
 
-#include "analysis/battery.h"
-#include "analysis/power.h"
+#include "analysis/power/battery.h"
+#include "analysis/power/power.h"
 
 namespace {
 

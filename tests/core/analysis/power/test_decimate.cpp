@@ -6,7 +6,7 @@
 #include <limits>
 #include <random>
 
-#include "analysis/decimate.h"
+#include "analysis/power/decimate.h"
 
 namespace {
 

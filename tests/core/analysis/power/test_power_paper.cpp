@@ -8,10 +8,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include "analysis/battery.h"
-#include "analysis/efficiency.h"
-#include "analysis/platform_efficiency.h"
-#include "analysis/power_stats.h"
+#include "analysis/power/battery.h"
+#include "analysis/platform/efficiency.h"
+#include "analysis/platform/platform_efficiency.h"
+#include "analysis/power/power_stats.h"
 #include "importer.h"
 
 namespace {

@@ -2,11 +2,11 @@
 #include <QTest>
 #include <cmath>
 
-#include "analysis/efficiency.h"
-#include "analysis/power.h"
-#include "analysis/power_phases.h"
-#include "analysis/power_stats.h"
-#include "analysis/power_time.h"
+#include "analysis/platform/efficiency.h"
+#include "analysis/power/power.h"
+#include "analysis/power/power_phases.h"
+#include "analysis/power/power_stats.h"
+#include "analysis/power/power_time.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // Overlay alignment: offsets that put the same phase of every trace at one moment, and the phase names shared.
 #include <QTest>
 
-#include "analysis/trace_align.h"
+#include "analysis/power/trace_align.h"
 
 class TestTraceAlign : public QObject {
   Q_OBJECT

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <random>
 
-#include "analysis/power.h"
-#include "analysis/power_stats.h"
-#include "analysis/range_table.h"
-#include "analysis/stats.h"
-#include "analysis/trace_index.h"
+#include "analysis/power/power.h"
+#include "analysis/power/power_stats.h"
+#include "analysis/power/range_table.h"
+#include "analysis/stats/stats.h"
+#include "analysis/power/trace_index.h"
 
 namespace {
 

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "analysis/peaks/device_table.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "util/resources.h"
+
+namespace bs {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& origin, const std::string& where, const std::string& why) {
+  throw std::runtime_error(origin + ": " + where + ": " + why);
+}
+
+std::string required_string(const json& e, const char* key, const std::string& origin, const std::string& where) {
+  const auto it = e.find(key);
+  if (it == e.end() || !it->is_string() || it->get<std::string>().empty())
+    fail(origin, where + "." + key, "missing or not a non-empty string");
+  return it->get<std::string>();
+}
+
+std::optional<double> optional_positive(const json& e, const char* key, const std::string& origin,
+                                        const std::string& where) {
+  const auto it = e.find(key);
+  if (it == e.end() || it->is_null()) return std::nullopt;
+  if (!it->is_number() || !(it->get<double>() > 0) || !std::isfinite(it->get<double>()))
+    fail(origin, where + "." + key, "not a positive number");
+  return it->get<double>();
+}
+
+bool is_noise_word(const std::string& w) {
+  static const char* const kNoise[] = {"r", "tm", "intel", "nvidia", "amd", "geforce", "radeon", "core", "graphics",
+                                       "corporation"};
+  return std::any_of(std::begin(kNoise), std::end(kNoise), [&](const char* n) { return w == n; });
+}
+
+// Length in tokens of the longest name of `spec` found as consecutive tokens in `hay`; 0 when none is.
+std::size_t best_match_length(const DeviceSpec& spec, const std::vector<std::string>& hay) {
+  std::size_t best = 0;
+  auto try_name = [&](const std::string& name) {
+    const std::vector<std::string> needle = device_name_tokens(name);
+    if (needle.empty() || needle.size() > hay.size() || needle.size() <= best) return;
+    if (std::search(hay.begin(), hay.end(), needle.begin(), needle.end()) != hay.end()) best = needle.size();
+  };
+  try_name(spec.name);
+  for (const std::string& a : spec.aliases) try_name(a);
+  return best;
+}
+
+// Entries tied for the longest match of `text` (kind-filtered), and that length.
+std::vector<const DeviceSpec*> best_matches(const DeviceTable& table, std::string_view text, DeviceKind kind) {
+  const std::vector<std::string> hay = device_name_tokens(text);
+  std::vector<const DeviceSpec*> best;
+  std::size_t best_len = 0;
+  if (hay.empty()) return best;
+  for (const DeviceSpec& spec : table.devices) {
+    if (kind != DeviceKind::Other && spec.kind != kind) continue;
+    const std::size_t len = best_match_length(spec, hay);
+    if (len == 0 || len < best_len) continue;
+    if (len > best_len) best.clear();
+    best_len = len;
+    best.push_back(&spec);
+  }
+  return best;
+}
+
+}  // namespace
+
+DeviceTable parse_device_table(std::string_view json_text, const std::string& origin) {
+  json doc;
+  try {
+    doc = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    fail(origin, "JSON", e.what());
+  }
+  if (!doc.is_object() || doc.value("format", "") != "benchscope-device-specs")
+    fail(origin, "format", "not a benchscope-device-specs file");
+  if (doc.value("version", 0) != 1) fail(origin, "version", "unsupported (this BenchScope reads version 1)");
+  const auto devices = doc.find("devices");
+  if (devices == doc.end() || !devices->is_array()) fail(origin, "devices", "missing or not an array");
+  DeviceTable table;
+  table.path = origin;
+  for (std::size_t i = 0; i < devices->size(); ++i) {
+    const json& e = (*devices)[i];
+    const std::string where = "devices[" + std::to_string(i) + "]";
+    if (!e.is_object()) fail(origin, where, "not an object");
+    DeviceSpec s;
+    s.id = required_string(e, "id", origin, where);
+    s.name = required_string(e, "name", origin, where);
+    const std::string kind = required_string(e, "kind", origin, where);
+    if (kind != "cpu" && kind != "gpu") fail(origin, where + ".kind", "must be \"cpu\" or \"gpu\"");
+    s.kind = device_kind_from_string(kind);
+    if (const auto a = e.find("aliases"); a != e.end()) {
+      if (!a->is_array()) fail(origin, where + ".aliases", "not an array");
+      for (const json& alias : *a) {
+        if (!alias.is_string() || alias.get<std::string>().empty())
+          fail(origin, where + ".aliases", "an alias is not a non-empty string");
+        s.aliases.push_back(alias.get<std::string>());
+      }
+    }
+    const auto peak = optional_positive(e, "fp32_peak_flops", origin, where);
+    if (!peak) fail(origin, where + ".fp32_peak_flops", "missing");
+    s.fp32_peak_flops = *peak;
+    s.derivation = required_string(e, "derivation", origin, where);
+    s.memory_bandwidth_bytes_per_s = optional_positive(e, "memory_bandwidth_bytes_per_s", origin, where);
+    s.tdp_w = optional_positive(e, "tdp_w", origin, where);
+    const auto src = e.find("source");
+    if (src == e.end() || !src->is_object()) fail(origin, where + ".source", "missing: every entry names its source");
+    s.source_title = required_string(*src, "title", origin, where + ".source");
+    s.source_url = src->value("url", "");
+    s.note = e.value("note", "");
+    for (const DeviceSpec& other : table.devices)
+      if (other.id == s.id) fail(origin, where + ".id", "duplicate id " + s.id);
+    table.devices.push_back(std::move(s));
+  }
+  return table;
+}
+
+DeviceTable load_device_table(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_device_table(text.str(), path.string());
+}
+
+const BundledDeviceTable& bundled_device_table() {
+  static const BundledDeviceTable bundled = [] {
+    BundledDeviceTable b;
+    try {
+      b.table = load_device_table(find_resource("devices/devices.json"));
+    } catch (const std::exception& e) {
+      b.error = e.what();
+    }
+    return b;
+  }();
+  return bundled;
+}
+
+std::vector<std::string> device_name_tokens(std::string_view name) {
+  std::vector<std::string> tokens;
+  std::string cur;
+  auto flush = [&] {
+    if (!cur.empty() && !is_noise_word(cur)) tokens.push_back(cur);
+    cur.clear();
+  };
+  for (const char raw : name) {
+    const auto c = static_cast<unsigned char>(raw);
+    if (!std::isalnum(c) || c >= 0x80) {
+      flush();  // punctuation, spaces and the bytes of UTF-8 signs such as (R) and TM
+      continue;
+    }
+    if (!cur.empty() && (std::isdigit(c) != 0) != (std::isdigit(static_cast<unsigned char>(cur.back())) != 0)) flush();
+    cur.push_back(static_cast<char>(std::tolower(c)));
+  }
+  flush();
+  return tokens;
+}
+
+const DeviceSpec* match_device(const DeviceTable& table, std::string_view device, DeviceKind kind,
+                               std::string_view platform) {
+  for (const std::string_view text : {device, platform}) {
+    const std::vector<const DeviceSpec*> best = best_matches(table, text, kind);
+    if (best.size() == 1) return best.front();
+    if (best.size() > 1) return nullptr;  // ambiguous: claiming one would be a guess
+  }
+  return nullptr;
+}
+
+std::optional<double> platform_tdp_w(const DeviceTable& table, std::string_view platform) {
+  std::optional<double> tdp;
+  for (const DeviceSpec* s : best_matches(table, platform, DeviceKind::Other))
+    if (s->tdp_w && (!tdp || *s->tdp_w > *tdp)) tdp = s->tdp_w;
+  return tdp;
+}
+
+}  // namespace bs

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "analysis/peaks/flag_notes.h"
+
+#include <algorithm>
+
+namespace bs {
+
+std::string FlagNotes::marker(const std::vector<PlausibilityFlag>& flags) {
+  std::string text;
+  for (const PlausibilityFlag& f : flags) {
+    auto it = std::find(notes_.begin(), notes_.end(), f);
+    if (it == notes_.end()) it = notes_.insert(notes_.end(), f);
+    text += (text.empty() ? "[" : ",") + std::to_string(it - notes_.begin() + 1);
+  }
+  return text.empty() ? text : text + "]";
+}
+
+std::string FlagNotes::mark(const std::string& text, const std::vector<PlausibilityFlag>& flags) {
+  const std::string m = marker(flags);
+  return m.empty() ? text : text + " " + m;
+}
+
+std::vector<std::string> FlagNotes::lines() const {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < notes_.size(); ++i)
+    out.push_back("[" + std::to_string(i + 1) + "] " + notes_[i].code + ": " + notes_[i].reason);
+  return out;
+}
+
+void FlagNotes::add_to(ExportTable& table) const {
+  for (std::string& l : lines()) table.notes.push_back(std::move(l));
+}
+
+}  // namespace bs

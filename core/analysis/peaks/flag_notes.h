@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Plausibility flags as numbered footnotes of a table (CLI text, LaTeX/CSV exports, the report): a flagged cell gets
+// "[1]" (or "[1,2]"), and the table's notes say "[1] above_spec_peak: <reason>". Equal flags share one number.
+#include <string>
+#include <vector>
+
+#include "analysis/peaks/plausibility.h"
+#include "util/table_export.h"
+
+namespace bs {
+
+class FlagNotes {
+ public:
+  // "[n,...]" for the flags (numbering new ones), "" for none.
+  std::string marker(const std::vector<PlausibilityFlag>& flags);
+  // `text` followed by " [n]" when flagged.
+  std::string mark(const std::string& text, const std::vector<PlausibilityFlag>& flags);
+  bool empty() const { return notes_.empty(); }
+  // "[n] code: reason", one per flag, in number order.
+  std::vector<std::string> lines() const;
+  // Appends lines() to table.notes.
+  void add_to(ExportTable& table) const;
+
+ private:
+  std::vector<PlausibilityFlag> notes_;
+};
+
+}  // namespace bs

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "analysis/power/range_table.h"
+
+#include <cstdio>
+
+#include "analysis/power/power_phases.h"
+
+namespace bs {
+namespace {
+
+std::string num(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+}  // namespace
+
+RangeSignal default_signal(const PowerStats& s) { return s.power_w ? RangeSignal::Power : RangeSignal::Current; }
+
+std::vector<std::string> range_headers(RangeSignal signal) {
+  const std::string u = signal == RangeSignal::Power ? " (W)" : " (A)";
+  return {"n",        "duration (s)", "mean" + u,    "SD" + u,      "min" + u,       "max" + u,
+          "p2p" + u,  "p5" + u,       "p50" + u,     "p95" + u,     "charge (C)",    "charge (mAh)",
+          "energy (J)", "energy (Wh)", "mean power (W)"};
+}
+
+std::vector<std::string> range_cells(const PowerStats& s, RangeSignal signal) {
+  const std::optional<SignalStats>& shown = signal == RangeSignal::Power ? s.power_w : s.current_a;
+  std::vector<std::string> c;
+  c.push_back(std::to_string(s.n));
+  c.push_back(num("%.4f", s.duration_s));
+  if (shown) {
+    const Summary& m = shown->summary;
+    for (double v : {m.mean, m.sd, m.min, m.max, m.max - m.min}) c.push_back(num("%.4f", v));
+    if (shown->has_percentiles)
+      for (double v : {shown->pct.p5, shown->pct.p50, shown->pct.p95}) c.push_back(num("%.4f", v));
+    else
+      c.insert(c.end(), 3, "\xE2\x80\xA6");
+  } else {
+    c.insert(c.end(), 8, "-");
+  }
+  c.push_back(s.charge_c ? num("%.4f", *s.charge_c) : "-");
+  c.push_back(s.charge_c ? num("%.4f", *s.charge_c / 3.6) : "-");  // 1 mAh = 3.6 C
+  c.push_back(s.energy_j ? num("%.4f", *s.energy_j) : "-");
+  c.push_back(s.energy_j ? num("%.6f", *s.energy_j / 3600) : "-");
+  c.push_back(s.mean_power_w ? num("%.4f", *s.mean_power_w) : "-");
+  return c;
+}
+
+std::string to_tsv(const std::vector<std::string>& headers, const std::vector<std::vector<std::string>>& rows) {
+  std::string out;
+  const auto line = [&](const std::vector<std::string>& cells) {
+    for (std::size_t i = 0; i < cells.size(); ++i) out += (i ? "\t" : "") + cells[i];
+    out += '\n';
+  };
+  line(headers);
+  for (const auto& r : rows) line(r);
+  return out;
+}
+
+std::vector<PhaseStatsRow> phase_stats_rows(const PowerIndex& index, const std::vector<TracePhase>& stored,
+                                            const std::vector<TracePhase>& detected) {
+  std::vector<PhaseStatsRow> rows;
+  const auto add = [&](const std::vector<TracePhase>& phases, const char* origin) {
+    for (const TracePhase& p : phases) {
+      if (p.end_s < p.start_s) continue;  // a malformed mark: no range to summarise
+      rows.push_back({p.name, origin, p.start_s, p.end_s, index.stats(p.start_s, p.end_s)});
+    }
+  };
+  add(stored, "log");
+  add(detected, "detected");
+  return rows;
+}
+
+std::vector<TracePhase> detect_level_phases(const PowerIndex& index, const PhaseOptions& options) {
+  const TraceIndex* signal = index.main();
+  if (!signal) return {};
+  return to_trace_phases(detect_phases(signal->time(), signal->values(), options));
+}
+
+}  // namespace bs
