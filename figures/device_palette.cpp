@@ -15,10 +15,9 @@ QColor device_color(int color_index) {
   // resembles (his cyan, teal and rose read as Okabe-Ito's sky blue, bluish green and reddish purple on screen),
   // a brown, a sand and a grey; Okabe-Ito's yellow last: it is too light on white for thin lines and bands.
   static const std::array<QColor, 15> colors = {
-      QColor(0, 114, 178),   QColor(230, 159, 0),   QColor(0, 158, 115),   QColor(213, 94, 0),
-      QColor(204, 121, 167), QColor(86, 180, 233),  QColor(51, 34, 136),   QColor(153, 153, 51),
-      QColor(136, 34, 85),   QColor(17, 119, 51),   QColor(102, 61, 20),   QColor(221, 204, 119),
-      QColor(110, 110, 110), QColor(170, 68, 153),  QColor(240, 228, 66)};
+      QColor(0, 114, 178),  QColor(230, 159, 0),   QColor(0, 158, 115),   QColor(213, 94, 0),   QColor(204, 121, 167),
+      QColor(86, 180, 233), QColor(51, 34, 136),   QColor(153, 153, 51),  QColor(136, 34, 85),  QColor(17, 119, 51),
+      QColor(102, 61, 20),  QColor(221, 204, 119), QColor(110, 110, 110), QColor(170, 68, 153), QColor(240, 228, 66)};
   const int n = static_cast<int>(colors.size());
   return colors[static_cast<std::size_t>(((color_index % n) + n) % n)];
 }
@@ -45,10 +44,14 @@ std::vector<std::pair<std::string, int>> platform_color_indices(
 
 Qt::PenStyle dims_pen_style(int dims) {
   switch (dims) {
-    case 1: return Qt::DotLine;
-    case 2: return Qt::DashLine;
-    case 4: return Qt::SolidLine;
-    default: return Qt::DashDotLine;
+    case 1:
+      return Qt::DotLine;
+    case 2:
+      return Qt::DashLine;
+    case 4:
+      return Qt::SolidLine;
+    default:
+      return Qt::DashDotLine;
   }
 }
 

@@ -4,17 +4,17 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QFrame>
-#include <QPixmap>
-#include <QTimer>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
+#include <QFrame>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPixmap>
 #include <QPushButton>
 #include <QSettings>
+#include <QTimer>
 
 #include "report/figure_template.h"
 
@@ -78,9 +78,11 @@ ExportFigureDialog::ExportFigureDialog(Target target, const QString& suggested, 
     data_ = new QComboBox;
     data_->setObjectName(QStringLiteral("data"));
     data_->addItem(tr("Paper data only (reconstructed from the paper)"), static_cast<int>(FigureDataChoice::PaperOnly));
-    data_->addItem(tr("Everything ticked in the workspace (measured runs too)"), static_cast<int>(FigureDataChoice::All));
-    data_->setToolTip(tr("What the figures show; figures.json records it, and the summary after the export lists "
-                         "what each figure contains and what it left out"));
+    data_->addItem(tr("Everything ticked in the workspace (measured runs too)"),
+                   static_cast<int>(FigureDataChoice::All));
+    data_->setToolTip(
+        tr("What the figures show; figures.json records it, and the summary after the export lists "
+           "what each figure contains and what it left out"));
     form->addRow(tr("&Data"), data_);
   }
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
@@ -104,8 +106,9 @@ ExportFigureDialog::ExportFigureDialog(Target target, const QString& suggested, 
   });
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   const auto validate = [this, buttons] {
-    buttons->button(QDialogButtonBox::Ok)->setEnabled((pdf_->isChecked() || svg_->isChecked() || png_->isChecked()) &&
-                                                      !path_->text().trimmed().isEmpty());
+    buttons->button(QDialogButtonBox::Ok)
+        ->setEnabled((pdf_->isChecked() || svg_->isChecked() || png_->isChecked()) &&
+                     !path_->text().trimmed().isEmpty());
   };
   for (QCheckBox* c : {pdf_, svg_, png_}) connect(c, &QCheckBox::toggled, this, validate);
   connect(path_, &QLineEdit::textChanged, this, validate);
@@ -184,7 +187,8 @@ void ExportFigureDialog::set_preview(std::function<QImage(const FigureOptions&)>
     preview_->setMinimumSize(420, 300);
     preview_->setAlignment(Qt::AlignCenter);
     preview_->setFrameShape(QFrame::StyledPanel);
-    preview_->setToolTip(tr("The figure as it will be written: its size, fonts, line widths and legend below the axes"));
+    preview_->setToolTip(
+        tr("The figure as it will be written: its size, fonts, line widths and legend below the axes"));
     static_cast<QHBoxLayout*>(layout())->addWidget(preview_, 1);
     preview_timer_ = new QTimer(this);
     preview_timer_->setSingleShot(true);
@@ -206,10 +210,12 @@ void ExportFigureDialog::update_preview() {
     preview_->setText(tr("No preview"));
     return;
   }
-  preview_->setPixmap(QPixmap::fromImage(image.scaled(preview_->size() - QSize(8, 8), Qt::KeepAspectRatio,
-                                                      Qt::SmoothTransformation)));
-  preview_->setToolTip(tr("%1 × %2 mm as written").arg(o.width_mm, 0, 'f', 1).arg(
-      o.height_mm > 0 ? o.height_mm : image.height() * o.width_mm / std::max(1, image.width()), 0, 'f', 1));
+  preview_->setPixmap(
+      QPixmap::fromImage(image.scaled(preview_->size() - QSize(8, 8), Qt::KeepAspectRatio, Qt::SmoothTransformation)));
+  preview_->setToolTip(
+      tr("%1 × %2 mm as written")
+          .arg(o.width_mm, 0, 'f', 1)
+          .arg(o.height_mm > 0 ? o.height_mm : image.height() * o.width_mm / std::max(1, image.width()), 0, 'f', 1));
 }
 
 }  // namespace bs::ui

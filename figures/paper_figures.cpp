@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "paper_figures.h"
 
+#include <qcustomplot.h>
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <qcustomplot.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,8 +17,8 @@
 #include "analysis/peaks/flops.h"
 #include "analysis/platform/paper_tables.h"
 #include "analysis/platform/platform_comparison.h"
-#include "analysis/power/power.h"
 #include "analysis/platform/platform_table.h"
+#include "analysis/power/power.h"
 #include "device_palette.h"
 #include "plot_export.h"
 #include "triptych_figure.h"
@@ -84,8 +84,10 @@ int color_of(const FigureData& d, const std::string& platform, const std::string
 }
 
 QJsonObject source_of(const FlopsRun& r) {
-  return {{"platform", QString::fromStdString(r.platform)}, {"device", QString::fromStdString(r.device)},
-          {"backend", QString::fromStdString(r.backend)}, {"dims", r.dims},
+  return {{"platform", QString::fromStdString(r.platform)},
+          {"device", QString::fromStdString(r.device)},
+          {"backend", QString::fromStdString(r.backend)},
+          {"dims", r.dims},
           {"file", QString::fromStdString(r.provenance.source_file)},
           {"origin", QString::fromUtf8(to_string(r.provenance.origin).data())}};
 }
@@ -114,9 +116,9 @@ QJsonArray flops_figure(QCustomPlot& plot, const FigureTemplate& t, const Figure
     const QColor color = device_color(color_of(d, run.platform, run.device));
     g->setPen(QPen(color, o.line_width_pt, dims_pen_style(run.dims)));
     // Backend by marker (a few per curve): two backends of one device stay apart in colour and in greyscale.
-    g->setScatterStyle(QCPScatterStyle(static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(
-                                           QString::fromStdString(run.backend))),
-                                       color, Qt::white, o.font_pt * 0.55));
+    g->setScatterStyle(QCPScatterStyle(
+        static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(QString::fromStdString(run.backend))), color,
+        Qt::white, o.font_pt * 0.55));
     g->setScatterSkip(std::max(1, static_cast<int>(xs.size()) / 8));
     std::string name = short_device(run.device) + ", " + short_device(run.backend);
     if (dims.size() > 1) name += ", D = " + std::to_string(run.dims);
@@ -140,7 +142,8 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
                                 {"reason", QString::fromStdString(reason)}});
   };
   for (const PowerTrace& trace : d.traces) {
-    if (!t.platforms.empty() && std::find(t.platforms.begin(), t.platforms.end(), trace.platform) == t.platforms.end()) {
+    if (!t.platforms.empty() &&
+        std::find(t.platforms.begin(), t.platforms.end(), trace.platform) == t.platforms.end()) {
       std::string names;
       for (const std::string& p : t.platforms) names += (names.empty() ? "" : ", ") + p;
       leave_out(trace, "not one of the figure's platforms (" + names + ")");
@@ -192,13 +195,15 @@ QString contents_line(const FigureTemplate& t, const QJsonArray& sources, const 
   QStringList shown;
   for (const auto& v : sources) {
     const QJsonObject s = v.toObject();
-    QString what = s.value("device").toString().isEmpty() ? s.value("platform").toString()
-                                                          : s.value("device").toString() + " " + s.value("backend").toString();
+    QString what = s.value("device").toString().isEmpty()
+                       ? s.value("platform").toString()
+                       : s.value("device").toString() + " " + s.value("backend").toString();
     if (s.contains("dims")) what += QStringLiteral(" D=%1").arg(s.value("dims").toInt());
     if (const QString origin = s.value("origin").toString(); !origin.isEmpty()) what += " (" + origin + ")";
     if (!shown.contains(what)) shown << what;
   }
-  QString line = QString::fromStdString(t.id) + ": " + (shown.isEmpty() ? QObject::tr("the capture") : shown.join(", "));
+  QString line =
+      QString::fromStdString(t.id) + ": " + (shown.isEmpty() ? QObject::tr("the capture") : shown.join(", "));
   QStringList out;
   for (const auto& v : left_out) {
     const QJsonObject l = v.toObject();
@@ -210,7 +215,8 @@ QString contents_line(const FigureTemplate& t, const QJsonArray& sources, const 
 
 void write_text(const QString& path, const std::string& text, QStringList& files) {
   QFile f(path);
-  if (!f.open(QIODevice::WriteOnly) || f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
+  if (!f.open(QIODevice::WriteOnly) ||
+      f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
     throw std::runtime_error(path.toStdString() + ": cannot write");
   files << path;
 }
@@ -281,9 +287,13 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
       throw;
     }
     for (const QString& f : files) {
-      list.append(QJsonObject{{"file", QFileInfo(f).fileName()}, {"figure", QString::fromStdString(t.id)},
-                              {"title", QString::fromStdString(t.title)}, {"width_mm", p.w_mm}, {"height_mm", figure_height_mm},
-                              {"sources", sources}, {"left_out", left_out}});
+      list.append(QJsonObject{{"file", QFileInfo(f).fileName()},
+                              {"figure", QString::fromStdString(t.id)},
+                              {"title", QString::fromStdString(t.title)},
+                              {"width_mm", p.w_mm},
+                              {"height_mm", figure_height_mm},
+                              {"sources", sources},
+                              {"left_out", left_out}});
     }
     out.contents << contents_line(t, sources, left_out);
     out.files << files;
@@ -308,7 +318,9 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
       write_text(QDir(out_dir).filePath(name), ext == std::string(".tex") ? to_latex(table) : to_csv(table), out.files);
       QJsonArray notes;  // the plausibility footnotes the table carries (analysis/flag_notes.h)
       for (const std::string& n : table.notes) notes.append(QString::fromStdString(n));
-      list.append(QJsonObject{{"file", name}, {"figure", stem}, {"title", QString::fromStdString(table.caption)},
+      list.append(QJsonObject{{"file", name},
+                              {"figure", stem},
+                              {"title", QString::fromStdString(table.caption)},
                               {"sources", std::string(stem) == "platforms" ? platform_sources : run_sources},
                               {"notes", notes}});
     }
@@ -324,8 +336,8 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
 
 }  // namespace
 
-FigureOutput render_figures(const std::vector<FigureTemplate>& templates, const FigureData& data, const QString& out_dir,
-                            const FigureOptions& o, const CancelToken& cancel,
+FigureOutput render_figures(const std::vector<FigureTemplate>& templates, const FigureData& data,
+                            const QString& out_dir, const FigureOptions& o, const CancelToken& cancel,
                             const std::function<void(int, int, const QString&)>& progress) {
   if (!QDir().mkpath(out_dir)) throw std::runtime_error(out_dir.toStdString() + ": cannot create the folder");
   FigureOutput out;

@@ -22,8 +22,8 @@
 namespace bs::ui {
 
 struct FigureOptions {
-  double width_mm = 122;       // LNCS text width
-  double height_mm = 0;        // 0: 0.62 x width
+  double width_mm = 122;  // LNCS text width
+  double height_mm = 0;   // 0: 0.62 x width
   double font_pt = 8;
   double line_width_pt = 1.0;
   int dpi = 300;               // PNG
@@ -35,7 +35,7 @@ struct FigureData {
   std::vector<PowerTrace> traces;
   std::vector<PipelineTimings> pipelines;
   std::vector<DnnRun> inference_runs;  // bench dnn runs: the report's inference table
-  std::optional<Frame> frame;  // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
+  std::optional<Frame> frame;          // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
   std::map<std::pair<std::string, std::string>, int> colors;  // (platform, device) -> colour index
   // Which data this is, said to the user and recorded in figures.json ("data"): e.g. "paper data only".
   std::string selection = "all data given";
@@ -54,8 +54,8 @@ struct FigureOutput {
 
 // Throws std::runtime_error (naming the file) when a file cannot be written, Cancelled when `cancel` fires
 // (checked between figures); either way the files it wrote are removed again.
-FigureOutput render_figures(const std::vector<FigureTemplate>& templates, const FigureData& data, const QString& out_dir,
-                            const FigureOptions& options, const CancelToken& cancel,
+FigureOutput render_figures(const std::vector<FigureTemplate>& templates, const FigureData& data,
+                            const QString& out_dir, const FigureOptions& options, const CancelToken& cancel,
                             const std::function<void(int done, int total, const QString& what)>& progress = {});
 
 // The bundled template of the paper's figures.

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot_export.h"
 
-#include <QFile>
-#include <QTemporaryDir>
-#include <QSvgGenerator>
 #include <qcustomplot.h>
+#include <QFile>
+#include <QSvgGenerator>
+#include <QTemporaryDir>
 
 #include <cmath>
 #include <stdexcept>
@@ -196,7 +196,8 @@ FigureOptions prepare_export(QCustomPlot& plot, const FigureOptions& o) {
   return sized;
 }
 
-void export_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& o, const QString& title, QStringList& files) {
+void export_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& o, const QString& title,
+                 QStringList& files) {
   const PlotLook look(plot);
   LegendBelow legend(plot);
   const auto put_back = [&] {

@@ -27,8 +27,8 @@ void wrap_legend(QCustomPlot& plot, double font_pt, double width_pt);
 
 // Writes stem.<format> for every format of `options` (pdf, svg, png); appends the paths to `files`.
 // Throws std::runtime_error naming the file when it cannot be written, Cancelled between formats.
-void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title, QStringList& files,
-               const CancelToken* cancel = nullptr);
+void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title,
+               QStringList& files, const CancelToken* cancel = nullptr);
 
 // As save_plot, for a plot shown on screen: applies the figure's font size and line widths for the export, moves a
 // visible legend from over the axes to below them in as many columns as fit (an automatic height grows by the
@@ -40,6 +40,7 @@ FigureOptions prepare_export(QCustomPlot& plot, const FigureOptions& options);
 // The figure export_plot would write, as an image `width_px` wide (the export dialog's preview).
 QImage render_export_preview(QCustomPlot& plot, const FigureOptions& options, int width_px);
 
-void export_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title, QStringList& files);
+void export_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title,
+                 QStringList& files);
 
 }  // namespace bs::ui

@@ -71,7 +71,8 @@ void save_whole(const QString& path, const QByteArray& bytes) {
 void print_pdf(const QString& path, const std::string& html, const std::vector<RenderedFigure>& figures) {
   make_parent(path);
   QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly)) throw std::runtime_error(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
+  if (!file.open(QIODevice::WriteOnly))
+    throw std::runtime_error(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
   {
     QPdfWriter pdf(&file);
     pdf.setPageSize(QPageSize(QPageSize::A4));
@@ -83,7 +84,8 @@ void print_pdf(const QString& path, const std::string& html, const std::vector<R
     doc.setHtml(QString::fromStdString(html));
     doc.print(&pdf);
   }
-  if (!file.commit()) throw std::runtime_error(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
+  if (!file.commit())
+    throw std::runtime_error(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
 }
 
 std::string number(double v) {

@@ -76,17 +76,22 @@ Panels from_frame(const Frame& frame, const CancelToken& cancel) {
   const vision::TriptychImages t =
       vision::render_triptych(frame, vision::DemosaicMethod::Bilinear, fl.lens, fl.view, &cancel);
   const double full = vision::full_scale(frame);
-  Panels p{vision::window_to_8bit(t.mosaic, 0, full), vision::window_to_8bit(t.demosaiced, 0, full),
-           vision::window_to_8bit(t.reprojected, 0, full), {}, frame.width, frame.height};
-  p.source = QJsonObject{{"file", QString::fromStdString(frame.provenance.source_file)},
-                         {"origin", frame.synthetic ? "synthetic" : QString::fromUtf8(to_string(frame.provenance.origin).data())},
-                         {"how", QString("frame %1 (%2x%3 %4, %5-bit), %6 lens, demosaiced bilinear, reprojected")
-                                     .arg(QString::fromStdString(frame.label))
-                                     .arg(frame.width)
-                                     .arg(frame.height)
-                                     .arg(QString::fromStdString(frame.pattern))
-                                     .arg(frame.bit_depth)
-                                     .arg(fl.from_frame ? "the frame's recorded" : "the paper's")}};
+  Panels p{vision::window_to_8bit(t.mosaic, 0, full),
+           vision::window_to_8bit(t.demosaiced, 0, full),
+           vision::window_to_8bit(t.reprojected, 0, full),
+           {},
+           frame.width,
+           frame.height};
+  p.source = QJsonObject{
+      {"file", QString::fromStdString(frame.provenance.source_file)},
+      {"origin", frame.synthetic ? "synthetic" : QString::fromUtf8(to_string(frame.provenance.origin).data())},
+      {"how", QString("frame %1 (%2x%3 %4, %5-bit), %6 lens, demosaiced bilinear, reprojected")
+                  .arg(QString::fromStdString(frame.label))
+                  .arg(frame.width)
+                  .arg(frame.height)
+                  .arg(QString::fromStdString(frame.pattern))
+                  .arg(frame.bit_depth)
+                  .arg(fl.from_frame ? "the frame's recorded" : "the paper's")}};
   return p;
 }
 
@@ -107,12 +112,14 @@ Panels synthetic(const CancelToken& cancel) {
   p.out = vision::ReprojectionLut(lens, view).apply(p.rgb);
   p.width = lens.width;
   p.height = lens.height;
-  p.source = QJsonObject{{"file", "synthetic"}, {"origin", "synthetic"},
-                         {"how", QString("no frame in the workspace: chart rendered through the paper's lens (195 degree "
-                                         "equidistant) at %1x%2, mosaiced BGGR, demosaiced bilinear, reprojected to "
-                                         "150 degrees")
-                                     .arg(lens.width)
-                                     .arg(lens.height)}};
+  p.source =
+      QJsonObject{{"file", "synthetic"},
+                  {"origin", "synthetic"},
+                  {"how", QString("no frame in the workspace: chart rendered through the paper's lens (195 degree "
+                                  "equidistant) at %1x%2, mosaiced BGGR, demosaiced bilinear, reprojected to "
+                                  "150 degrees")
+                              .arg(lens.width)
+                              .arg(lens.height)}};
   return p;
 }
 
@@ -154,7 +161,8 @@ QJsonArray render_triptych_figure(const QString& stem, const FigureOptions& o, Q
       }
     } else if (format == "png") {
       const double scale = o.dpi / 72.0;
-      QImage img(static_cast<int>(std::lround(w * scale)), static_cast<int>(std::lround(h * scale)), QImage::Format_RGB32);
+      QImage img(static_cast<int>(std::lround(w * scale)), static_cast<int>(std::lround(h * scale)),
+                 QImage::Format_RGB32);
       img.fill(Qt::white);
       // Paint in points (a 72 dpi device scaled up), then label the file with its real resolution.
       img.setDotsPerMeterX(static_cast<int>(std::lround(72 / 0.0254)));

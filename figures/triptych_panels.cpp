@@ -10,7 +10,7 @@
 namespace bs::ui {
 namespace {
 
-constexpr double kGapIn = 0.06;       // between panels
+constexpr double kGapIn = 0.06;         // between panels
 constexpr double kCaptionGapIn = 0.04;  // between a panel and its caption
 
 double panel_aspect(const std::array<QImage, 3>& panels) {

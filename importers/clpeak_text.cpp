@@ -69,8 +69,8 @@ bool is_opencl_error(std::string_view text) {
 }
 
 struct Section {
-  std::string metric;           // "single-precision compute", with a "[variant]" when the title has one
-  std::optional<SiUnit> unit;   // nullopt: the title names no unit; each value line must carry its own
+  std::string metric;          // "single-precision compute", with a "[variant]" when the title has one
+  std::optional<SiUnit> unit;  // nullopt: the title names no unit; each value line must carry its own
   std::size_t line = 0;
 };
 

@@ -48,8 +48,8 @@ Frame frame_from_mat(const std::string& path, std::string_view format, cv::Mat i
   const int bits = significant_bits > 0 && significant_bits <= container_bits && significant_bits > container_bits - 8
                        ? significant_bits
                        : container_bits;
-  Frame frame = frames::make_frame(path, format, img.cols, img.rows, img.channels(), bits,
-                                   img.channels() == 1 ? "BGGR" : "");
+  Frame frame =
+      frames::make_frame(path, format, img.cols, img.rows, img.channels(), bits, img.channels() == 1 ? "BGGR" : "");
   frame.pixels.resize(frame.expected_bytes());
   const std::size_t row_bytes = static_cast<std::size_t>(img.cols) * img.elemSize();
   for (int y = 0; y < img.rows; ++y)
@@ -116,7 +116,8 @@ ImportBatch PngImporter::parse(const std::string& path, const ImportLimits& limi
       colour_type = ihdr[9];
       frames::check_dimensions(path, "IHDR width", width, height, limits);
       if (bit_depth != 1 && bit_depth != 2 && bit_depth != 4 && bit_depth != 8 && bit_depth != 16)
-        fail(ImportErrorCategory::InvalidValue, path, at + 16, "IHDR bit depth " + std::to_string(bit_depth) + " is invalid");
+        fail(ImportErrorCategory::InvalidValue, path, at + 16,
+             "IHDR bit depth " + std::to_string(bit_depth) + " is invalid");
       seen_ihdr = true;
     } else if (type == "sBIT" && len >= 1) {
       unsigned char s = 0;
@@ -150,12 +151,14 @@ struct TiffReader {
   bool big;
   std::uint32_t u16(std::uint64_t at) {
     unsigned char b[2];
-    if (!read_at(f, at, b, 2)) fail(ImportErrorCategory::Syntax, path, at, "file is truncated inside the TIFF directory");
+    if (!read_at(f, at, b, 2))
+      fail(ImportErrorCategory::Syntax, path, at, "file is truncated inside the TIFF directory");
     return big ? (b[0] << 8 | b[1]) : (b[1] << 8 | b[0]);
   }
   std::uint32_t u32(std::uint64_t at) {
     unsigned char b[4];
-    if (!read_at(f, at, b, 4)) fail(ImportErrorCategory::Syntax, path, at, "file is truncated inside the TIFF directory");
+    if (!read_at(f, at, b, 4))
+      fail(ImportErrorCategory::Syntax, path, at, "file is truncated inside the TIFF directory");
     return big ? be32(b) : (std::uint32_t{b[3]} << 24 | std::uint32_t{b[2]} << 16 | std::uint32_t{b[1]} << 8 | b[0]);
   }
 };
@@ -185,15 +188,17 @@ ImportBatch TiffImporter::parse(const std::string& path, const ImportLimits& lim
   const bool big = magic[0] == 'M';
   TiffReader r{f, path, size, big};
   const std::uint64_t ifd = r.u32(4);
-  if (ifd < 8) fail(ImportErrorCategory::Syntax, path, 4, "first directory offset " + std::to_string(ifd) + " is inside the header");
+  if (ifd < 8)
+    fail(ImportErrorCategory::Syntax, path, 4,
+         "first directory offset " + std::to_string(ifd) + " is inside the header");
   if (ifd + 2 > size)
     fail(ImportErrorCategory::Syntax, path, 4,
          "file is truncated: the first directory is at byte " + std::to_string(ifd) + ", the file has " +
              std::to_string(size) + " bytes");
   const std::uint32_t n = r.u16(ifd);
   if (ifd + 2 + 12ull * n + 4 > size)
-    fail(ImportErrorCategory::Syntax, path, ifd, "file is truncated: the directory's " + std::to_string(n) +
-                                                     " entries run past the end");
+    fail(ImportErrorCategory::Syntax, path, ifd,
+         "file is truncated: the directory's " + std::to_string(n) + " entries run past the end");
   std::map<std::uint32_t, TiffEntry> tags;
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint64_t e = ifd + 2 + 12ull * i;

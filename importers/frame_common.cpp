@@ -16,8 +16,8 @@ void check_dimensions(const std::string& file, const std::string& field, std::in
                       "image size " + std::to_string(width) + "x" + std::to_string(height) + " is not positive");
   if (width > limits.max_frame_side || height > limits.max_frame_side)
     throw ImportError(ImportErrorCategory::TooLarge, at,
-                      "image size " + std::to_string(width) + "x" + std::to_string(height) +
-                          " exceeds the limit of " + std::to_string(limits.max_frame_side) + " pixels per side");
+                      "image size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
+                          std::to_string(limits.max_frame_side) + " pixels per side");
   // Both sides are <= 65535 here, so the product fits in 64 bits.
   const auto pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
   if (pixels > limits.max_frame_pixels)
@@ -31,8 +31,9 @@ std::string check_pattern(const std::string& file, const std::string& field, std
   std::string up(pattern);
   std::transform(up.begin(), up.end(), up.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   if (up == "BGGR" || up == "RGGB" || up == "GRBG" || up == "GBRG") return up;
-  throw ImportError(ImportErrorCategory::InvalidValue, {file, 0, 0, field},
-                    "Bayer pattern \"" + std::string(pattern.substr(0, 40)) + "\" is not one of BGGR, RGGB, GRBG, GBRG");
+  throw ImportError(
+      ImportErrorCategory::InvalidValue, {file, 0, 0, field},
+      "Bayer pattern \"" + std::string(pattern.substr(0, 40)) + "\" is not one of BGGR, RGGB, GRBG, GBRG");
 }
 
 std::uint64_t file_size(const std::string& path) {
@@ -81,8 +82,8 @@ void check_sample_range(const std::string& file, const Frame& frame, std::uint64
   }
 }
 
-Frame make_frame(const std::string& path, std::string_view format, int width, int height, int channels,
-                 int bit_depth, std::string pattern) {
+Frame make_frame(const std::string& path, std::string_view format, int width, int height, int channels, int bit_depth,
+                 std::string pattern) {
   Frame f;
   f.label = stem_of(path);
   f.width = width;

@@ -34,7 +34,7 @@ bool ends_with_ci(std::string_view text, std::string_view suffix);
 void check_sample_range(const std::string& file, const Frame& frame, std::uint64_t data_offset);
 
 // A frame whose fields other than the pixels are filled in from the arguments.
-Frame make_frame(const std::string& path, std::string_view format, int width, int height, int channels,
-                 int bit_depth, std::string pattern);
+Frame make_frame(const std::string& path, std::string_view format, int width, int height, int channels, int bit_depth,
+                 std::string pattern);
 
 }  // namespace bs::frames

@@ -127,8 +127,7 @@ int PnmImporter::sniff(std::string_view head, std::string_view) const {
 }
 
 bool PnmImporter::usual_extension(std::string_view path) const {
-  return frames::ends_with_ci(path, ".pgm") || frames::ends_with_ci(path, ".ppm") ||
-         frames::ends_with_ci(path, ".pnm");
+  return frames::ends_with_ci(path, ".pgm") || frames::ends_with_ci(path, ".ppm") || frames::ends_with_ci(path, ".pnm");
 }
 
 ImportBatch PnmImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
@@ -151,8 +150,8 @@ ImportBatch PnmImporter::parse(const std::string& path, const ImportLimits& limi
   const int bits = std::bit_width(static_cast<unsigned>(h.maxval));
   std::string pattern = channels == 1 ? h.pattern : std::string();
   if (pattern == "-") pattern.clear();
-  Frame frame = frames::make_frame(path, "pnm", static_cast<int>(h.width), static_cast<int>(h.height), channels,
-                                   bits, pattern);
+  Frame frame =
+      frames::make_frame(path, "pnm", static_cast<int>(h.width), static_cast<int>(h.height), channels, bits, pattern);
   const std::uint64_t need = frame.expected_bytes();
   const std::uint64_t size = frames::file_size(path);
   // Checked against the real file size before allocating: the header's claims are untrusted.
@@ -179,9 +178,8 @@ ImportBatch PnmImporter::parse(const std::string& path, const ImportLimits& limi
     const unsigned v = frame.bit_depth > 8 ? static_cast<unsigned>(frame.pixels[2 * i]) |
                                                  static_cast<unsigned>(frame.pixels[2 * i + 1]) << 8
                                            : frame.pixels[i];
-    const unsigned v_host = frame.bit_depth > 8 && std::endian::native == std::endian::big
-                                ? ((v & 0xFF) << 8) | (v >> 8)
-                                : v;
+    const unsigned v_host =
+        frame.bit_depth > 8 && std::endian::native == std::endian::big ? ((v & 0xFF) << 8) | (v >> 8) : v;
     if (v_host > static_cast<unsigned>(h.maxval))
       throw ImportError(ImportErrorCategory::InvalidValue,
                         {path, 0, 0, "offset " + std::to_string(h.data_offset + i * frame.bytes_per_sample())},

@@ -89,13 +89,14 @@ ImportBatch read_raw_frame(const std::string& path, const RawFrameOptions& o, co
   frames::check_sample_range(path, frame, 0);
   frame.synthetic = o.synthetic;
   frame.lens_json = o.lens_json;
-  frame.read_options = nlohmann::json{{"width", o.width},
-                                      {"height", o.height},
-                                      {"pattern", pattern},
-                                      {"bit_depth", o.bit_depth},
-                                      {"endianness", o.big_endian ? "big" : "little"},
-                                      {"synthetic", o.synthetic}}
-                           .dump();
+  frame.read_options = nlohmann::json{
+      {"width", o.width},
+      {"height", o.height},
+      {"pattern", pattern},
+      {"bit_depth", o.bit_depth},
+      {"endianness", o.big_endian ? "big" : "little"},
+      {"synthetic",
+       o.synthetic}}.dump();
   if (o.synthetic) {
     frame.provenance.origin = DataOrigin::Unknown;
     frame.provenance.tool = "benchscope-cli synth-frame";

@@ -20,7 +20,7 @@ struct RawFrameOptions {
   int bit_depth = 8;             // 1..16; above 8 two bytes per sample
   bool big_endian = false;
   bool synthetic = false;
-  std::string lens_json;         // lens + view JSON, when known
+  std::string lens_json;  // lens + view JSON, when known
 };
 
 // Reads a sidecar; every error names the sidecar file and the JSON field.

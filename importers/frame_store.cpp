@@ -30,7 +30,8 @@ Frame load_frame(const Workspace& ws, const StoredFrame& stored, const CancelTok
     // The geometry recorded at import, so a sidecar edited later cannot change how the bytes are read.
     const auto j = nlohmann::json::parse(stored.frame.read_options, nullptr, false);
     if (!j.is_object())
-      throw ImportError(ImportErrorCategory::Syntax, {ws.path(), 0, 0, "read_options"}, "stored raw geometry is damaged");
+      throw ImportError(ImportErrorCategory::Syntax, {ws.path(), 0, 0, "read_options"},
+                        "stored raw geometry is damaged");
     RawFrameOptions o;
     o.width = j.value("width", 0);
     o.height = j.value("height", 0);

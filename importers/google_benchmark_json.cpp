@@ -5,8 +5,8 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <set>
@@ -22,12 +22,30 @@ using json_access::json;
 using json_access::Reader;
 
 // Keys of a benchmark row that are bookkeeping, not user counters.
-constexpr std::array<std::string_view, 24> kReservedKeys = {
-    "name",           "family_index",    "per_family_instance_index", "run_name",       "run_type",
-    "repetitions",    "repetition_index", "threads",                  "iterations",     "real_time",
-    "cpu_time",       "time_unit",       "aggregate_name",            "aggregate_unit", "error_occurred",
-    "error_message",  "skipped",         "skip_message",              "label",          "big_o",
-    "cpu_coefficient", "real_coefficient", "rms",                     "memory"};
+constexpr std::array<std::string_view, 24> kReservedKeys = {"name",
+                                                            "family_index",
+                                                            "per_family_instance_index",
+                                                            "run_name",
+                                                            "run_type",
+                                                            "repetitions",
+                                                            "repetition_index",
+                                                            "threads",
+                                                            "iterations",
+                                                            "real_time",
+                                                            "cpu_time",
+                                                            "time_unit",
+                                                            "aggregate_name",
+                                                            "aggregate_unit",
+                                                            "error_occurred",
+                                                            "error_message",
+                                                            "skipped",
+                                                            "skip_message",
+                                                            "label",
+                                                            "big_o",
+                                                            "cpu_coefficient",
+                                                            "real_coefficient",
+                                                            "rms",
+                                                            "memory"};
 
 bool is_reserved(std::string_view key) {
   return std::find(kReservedKeys.begin(), kReservedKeys.end(), key) != kReservedKeys.end();
@@ -58,12 +76,23 @@ CounterUnit counter_unit(const std::string& name) {
     double scale = 1;
     if (flop > 0 && (flop == 1 || !std::isalnum(static_cast<unsigned char>(n[flop - 2])))) {
       switch (n[flop - 1]) {
-        case 'k': scale = 1e3; break;
-        case 'm': scale = 1e6; break;
-        case 'g': scale = 1e9; break;
-        case 't': scale = 1e12; break;
-        case 'p': scale = 1e15; break;
-        default: break;
+        case 'k':
+          scale = 1e3;
+          break;
+        case 'm':
+          scale = 1e6;
+          break;
+        case 'g':
+          scale = 1e9;
+          break;
+        case 't':
+          scale = 1e12;
+          break;
+        case 'p':
+          scale = 1e15;
+          break;
+        default:
+          break;
       }
     }
     return {"FLOP/s", scale};
@@ -141,11 +170,12 @@ std::string cache_text(const json& c) {
     if (it == c.end() || !it->is_number()) return std::nullopt;
     return it->get<double>();
   };
-  std::string out = "L" + (num("level") ? std::to_string(std::llround(*num("level"))) : std::string("?")) + " " + str("type");
+  std::string out =
+      "L" + (num("level") ? std::to_string(std::llround(*num("level"))) : std::string("?")) + " " + str("type");
   if (const auto size = num("size"); size && *size > 0) {
     const double kib = *size / 1024.0;
     out += kib >= 1024 && std::fmod(kib, 1024.0) == 0 ? " " + std::to_string(std::llround(kib / 1024)) + " MiB"
-                                                       : " " + std::to_string(std::llround(kib)) + " KiB";
+                                                      : " " + std::to_string(std::llround(kib)) + " KiB";
   }
   if (const auto sharing = num("num_sharing"); sharing && *sharing > 1)
     out += " (x" + std::to_string(std::llround(*sharing)) + ")";
@@ -229,7 +259,8 @@ WorkersArgument workers_argument_of(const Reader& r, const json& context, const 
     const std::string text = v->get<std::string>();
     if (text == "threads") return std::nullopt;
     if (text.empty() || text.size() > 3 || text.find_first_not_of("0123456789") != std::string::npos)
-      r.fail(ImportErrorCategory::InvalidValue, at, "'" + text + "' is neither \"threads\" nor an argument index 0-999");
+      r.fail(ImportErrorCategory::InvalidValue, at,
+             "'" + text + "' is neither \"threads\" nor an argument index 0-999");
     return std::stoi(text);
   }
   return static_cast<int>(r.integer(*v, at, 0, 999));
@@ -263,8 +294,8 @@ int GoogleBenchmarkJsonImporter::sniff(std::string_view head, std::string_view) 
                        head.find("\"mhz_per_cpu\"") != std::string_view::npos;
   if (benchmarks && context) return 90;
   if (context && machine) return 80;
-  if (benchmarks && (head.find("\"run_type\"") != std::string_view::npos ||
-                     head.find("\"cpu_time\"") != std::string_view::npos))
+  if (benchmarks &&
+      (head.find("\"run_type\"") != std::string_view::npos || head.find("\"cpu_time\"") != std::string_view::npos))
     return 60;
   return 0;
 }
@@ -278,9 +309,8 @@ ImportBatch GoogleBenchmarkJsonImporter::parse(const std::string& path, const Im
   return parse_google_benchmark_json(text, path, limits, &cancel);
 }
 
-ImportBatch parse_google_benchmark_json(std::string_view original, const std::string& file,
-                                        const ImportLimits& limits, const CancelToken* cancel,
-                                        const GoogleBenchmarkOptions& options) {
+ImportBatch parse_google_benchmark_json(std::string_view original, const std::string& file, const ImportLimits& limits,
+                                        const CancelToken* cancel, const GoogleBenchmarkOptions& options) {
   if (original.starts_with("\xEF\xBB\xBF")) original.remove_prefix(3);
   std::string text(original);
   quote_non_finite_tokens(text);
@@ -337,7 +367,8 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
     // Before version 1.5 aggregates had no run_type: a row "BM_X_mean" after rows named "BM_X" is one.
     if (!run_type_value && !row.contains("run_name")) {
       for (const char* suffix : {"_mean", "_median", "_stddev", "_cv"}) {
-        const std::string base = name.size() > std::strlen(suffix) ? name.substr(0, name.size() - std::strlen(suffix)) : "";
+        const std::string base =
+            name.size() > std::strlen(suffix) ? name.substr(0, name.size() - std::strlen(suffix)) : "";
         if (name.ends_with(suffix) && iteration_names.count(base)) {
           run_type = "aggregate";
           aggregate = suffix + 1;
@@ -356,8 +387,8 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
     if (threads) {
       if (const auto named = threads_in_name(run_name); named && *named != *threads)
         r.fail(ImportErrorCategory::InvalidValue, child(at, "threads"),
-               std::to_string(*threads) + " disagrees with the name '" + run_name + "' (threads:" +
-                   std::to_string(*named) + ")");
+               std::to_string(*threads) + " disagrees with the name '" + run_name +
+                   "' (threads:" + std::to_string(*named) + ")");
       const auto [it, added] = threads_of.emplace(run_name, std::make_pair(*threads, i));
       if (!added && it->second.first != *threads)
         r.fail(ImportErrorCategory::InvalidValue, child(at, "threads"),
@@ -391,8 +422,7 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
     // How many repetitions an aggregate summarises: its "repetitions" (since 1.5). Older aggregates carry the
     // first repetition's iteration count instead (google/benchmark#586), so their n is the number of repetition
     // rows read, which summarize_measurement() uses when no ("repetitions", n) is recorded.
-    const std::optional<std::int64_t> reps =
-        is_aggregate ? optional_count(r, row, at, "repetitions", 1) : std::nullopt;
+    const std::optional<std::int64_t> reps = is_aggregate ? optional_count(r, row, at, "repetitions", 1) : std::nullopt;
 
     auto record = [&](const std::string& metric, const std::string& unit, double value, double to_si) {
       Measurement& m = table.at(run_name, metric, unit);
@@ -415,7 +445,8 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
       if (v.is_string()) times_ok = false;
     }
     if (!times_ok) {
-      batch.warnings.push_back(r.where(at) + ": benchmark '" + name + "' has a time that is not a finite number; "
+      batch.warnings.push_back(r.where(at) + ": benchmark '" + name +
+                               "' has a time that is not a finite number; "
                                "row skipped");
       continue;
     }

@@ -38,8 +38,8 @@ class GoogleBenchmarkJsonImporter final : public Importer {
 // "debug" gives Google Benchmark's own warning. Context fields (host_name, num_cpus, mhz_per_cpu, caches,
 // library_version, library_build_type, custom context keys) become provenance settings. items_per_second is in
 // FLOP/s when the context says benchscope_item = "flop", else in 1/s.
-ImportBatch parse_google_benchmark_json(std::string_view text, const std::string& file,
-                                        const ImportLimits& limits = {}, const CancelToken* cancel = nullptr,
+ImportBatch parse_google_benchmark_json(std::string_view text, const std::string& file, const ImportLimits& limits = {},
+                                        const CancelToken* cancel = nullptr,
                                         const GoogleBenchmarkOptions& options = {});
 
 }  // namespace bs

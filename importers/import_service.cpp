@@ -41,7 +41,8 @@ bool skippable_in_folder(const ImportError& e) {
 }
 
 int ImportResult::count(FileOutcome::Kind kind) const {
-  return static_cast<int>(std::count_if(files.begin(), files.end(), [&](const FileOutcome& f) { return f.kind == kind; }));
+  return static_cast<int>(
+      std::count_if(files.begin(), files.end(), [&](const FileOutcome& f) { return f.kind == kind; }));
 }
 
 std::string describe_batch(const ImportBatch& b) {
@@ -51,11 +52,13 @@ std::string describe_batch(const ImportBatch& b) {
   if (!b.result_sets.empty()) s += ", " + std::to_string(b.result_sets.size()) + " result sets";
   if (!b.power_traces.empty()) s += ", " + std::to_string(b.power_traces.size()) + " power traces";
   for (const Frame& f : b.frames)
-    s += std::string(s.empty() ? "" : ", ") + "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) + " " +
-         (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " + std::to_string(f.bit_depth) +
-         "-bit" + (f.synthetic ? " synthetic" : "") + (f.storage == FrameStorage::Copy ? " (copied)" : " (by reference)");
+    s += std::string(s.empty() ? "" : ", ") + "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) +
+         " " + (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " +
+         std::to_string(f.bit_depth) + "-bit" + (f.synthetic ? " synthetic" : "") +
+         (f.storage == FrameStorage::Copy ? " (copied)" : " (by reference)");
   if (!b.pipeline_runs.empty())
-    s += ", " + std::to_string(b.pipeline_runs.size()) + (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
+    s += ", " + std::to_string(b.pipeline_runs.size()) +
+         (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
   return s + " (" + b.format + ")";
 }
 
@@ -106,8 +109,8 @@ void mark_duplicate(FileOutcome& o, const std::string& earlier_path, const std::
 std::optional<ImportBatch> parse_one(const ImportCandidate& file, const ImportOptions& options,
                                      const CancelToken& cancel, FileOutcome& o) {
   try {
-    ImportBatch batch = import_file_with_raw_geometry(file.path, options.raw_geometry, cancel,
-                                                      options.raw_geometry_source);
+    ImportBatch batch =
+        import_file_with_raw_geometry(file.path, options.raw_geometry, cancel, options.raw_geometry_source);
     for (Frame& f : batch.frames) f.storage = options.frames;
     o.warnings = batch.warnings;
     o.summary = describe_batch(batch);
@@ -138,7 +141,7 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
   for (std::size_t i = 0; i < files.size(); ++i) result.files[i].path = files[i].path;
   const bool each_file = options.atomicity == ImportAtomicity::EachFile;
   Target target(workspace_path);
-  std::map<std::string, std::string> seen;  // hash -> path, for twins within this import
+  std::map<std::string, std::string> seen;                   // hash -> path, for twins within this import
   std::vector<std::pair<std::size_t, ImportBatch>> pending;  // AllOrNothing: parsed, not yet stored
   bool failed = false;
 

@@ -53,16 +53,16 @@ struct ImportOptions {
 // What became of one file.
 struct FileOutcome {
   enum class Kind {
-    Imported,   // stored (or, with AllOrNothing, would have been had nothing failed: see ImportResult::committed)
-    Duplicate,  // the same bytes are already in the workspace, or earlier in this import: skipped
-    NotData,    // found in a folder and no importer reads it: skipped
-    Failed,     // an error; `reason` is the importer's "file:line: field: reason"
-    NotReached, // cancelled, or AllOrNothing after a failure, before it was stored
+    Imported,    // stored (or, with AllOrNothing, would have been had nothing failed: see ImportResult::committed)
+    Duplicate,   // the same bytes are already in the workspace, or earlier in this import: skipped
+    NotData,     // found in a folder and no importer reads it: skipped
+    Failed,      // an error; `reason` is the importer's "file:line: field: reason"
+    NotReached,  // cancelled, or AllOrNothing after a failure, before it was stored
   };
   std::string path;
   Kind kind = Kind::NotReached;
-  std::string reason;        // NotData: why; Duplicate: "already imported on DATE as PATH"; Failed: the error
-  std::string summary;       // Imported: what the file held, e.g. "3 runs (benchscope-run-v1)" (describe_batch)
+  std::string reason;   // NotData: why; Duplicate: "already imported on DATE as PATH"; Failed: the error
+  std::string summary;  // Imported: what the file held, e.g. "3 runs (benchscope-run-v1)" (describe_batch)
   std::vector<std::string> warnings;  // the importer's warnings, each naming file:line
   std::string content_hash;
   std::int64_t import_id = 0;  // Imported and committed: the workspace's import id

@@ -45,8 +45,7 @@ class Importer {
   // Binary formats (images) are sniffed on the raw head before the text checks that reject NUL bytes.
   virtual bool binary() const { return false; }
   // Parses the whole file. Throws ImportError (or Cancelled). Never returns a partial batch.
-  virtual ImportBatch parse(const std::string& path, const ImportLimits& limits,
-                            const CancelToken& cancel) const = 0;
+  virtual ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const = 0;
 };
 
 // All importers BenchScope knows, in sniffing order.
@@ -59,8 +58,8 @@ const Importer* find_importer(std::string_view id);
 ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits = {});
 
 // Helpers shared by importers.
-std::string read_head(const std::string& path, std::size_t max_bytes = 64 * 1024);        // throws Io
-std::string read_whole_file(const std::string& path, std::size_t max_bytes);               // throws Io/TooLarge
+std::string read_head(const std::string& path, std::size_t max_bytes = 64 * 1024);  // throws Io
+std::string read_whole_file(const std::string& path, std::size_t max_bytes);        // throws Io/TooLarge
 // Rejects empty, binary (NUL bytes) and UTF-16/32 content with the right category; strips nothing.
 void check_text(std::string_view head, const std::string& path);
 

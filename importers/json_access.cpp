@@ -15,8 +15,11 @@ namespace {
 struct StopParsing {
   StopParsing(ImportErrorCategory c, std::string why) : category(c), reason(std::move(why)) {}
   StopParsing(std::string why, std::string object, std::string key)
-      : category(ImportErrorCategory::InvalidValue), reason(std::move(why)), pointer(std::move(object)),
-        duplicate_key(std::move(key)), duplicate(true) {}
+      : category(ImportErrorCategory::InvalidValue),
+        reason(std::move(why)),
+        pointer(std::move(object)),
+        duplicate_key(std::move(key)),
+        duplicate(true) {}
   ImportErrorCategory category;
   std::string reason;
   std::string pointer;
@@ -180,8 +183,7 @@ bool enter_member(Scanner& s, const std::string& key) {
 
 // Offset of the `occurrence`-th (0-based) member named `key` of the object starting at `object_offset`; the
 // object's offset when there are fewer.
-std::size_t offset_of_member(std::string_view text, std::size_t object_offset, const std::string& key,
-                             int occurrence) {
+std::size_t offset_of_member(std::string_view text, std::size_t object_offset, const std::string& key, int occurrence) {
   Scanner s(text, object_offset);
   if (!s.at('{')) return object_offset;
   s.advance();
@@ -327,10 +329,17 @@ json parse(std::string_view text, const std::string& file, const ImportLimits& l
   const json::parser_callback_t guard = [&](int depth, json::parse_event_t event, json& parsed) {
     switch (event) {
       case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end: duplicates.close(); return true;
-      case json::parse_event_t::key: duplicates.key(parsed); break;
-      case json::parse_event_t::value: duplicates.value(parsed); break;
-      default: break;
+      case json::parse_event_t::array_end:
+        duplicates.close();
+        return true;
+      case json::parse_event_t::key:
+        duplicates.key(parsed);
+        break;
+      case json::parse_event_t::value:
+        duplicates.value(parsed);
+        break;
+      default:
+        break;
     }
     // The depth argument is the nesting of the container being opened: checked before its children exist.
     if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
@@ -354,8 +363,8 @@ json parse(std::string_view text, const std::string& file, const ImportLimits& l
       loc.field = child(stop.pointer, stop.duplicate_key);
       throw ImportError(stop.category, loc, stop.reason);
     }
-    const std::size_t at = stop.category == ImportErrorCategory::TooDeep ? offset_of_depth(text, limits.max_json_depth)
-                                                                          : text.size();
+    const std::size_t at =
+        stop.category == ImportErrorCategory::TooDeep ? offset_of_depth(text, limits.max_json_depth) : text.size();
     ErrorLocation loc = location_of_offset(file, text, at);
     if (stop.category == ImportErrorCategory::TooLarge) loc.line = loc.column = 0;
     throw ImportError(stop.category, loc, stop.reason);
@@ -454,7 +463,8 @@ std::string Reader::optional_string(const json& object, const std::string& point
   const json* v = optional(object, key);
   if (!v) return fallback;
   if (!v->is_string())
-    fail(ImportErrorCategory::WrongType, child(pointer, key), std::string("expected a string, found ") + v->type_name());
+    fail(ImportErrorCategory::WrongType, child(pointer, key),
+         std::string("expected a string, found ") + v->type_name());
   return v->get<std::string>();
 }
 

@@ -56,8 +56,8 @@ class Reader {
   double require_number(const json& object, const std::string& pointer, std::string_view key) const;
   std::optional<double> optional_number(const json& object, const std::string& pointer, std::string_view key) const;
   std::int64_t integer(const json& value, const std::string& pointer, std::int64_t min, std::int64_t max) const;
-  std::int64_t require_integer(const json& object, const std::string& pointer, std::string_view key,
-                               std::int64_t min, std::int64_t max) const;
+  std::int64_t require_integer(const json& object, const std::string& pointer, std::string_view key, std::int64_t min,
+                               std::int64_t max) const;
 
  private:
   ErrorLocation locate(const std::string& pointer) const;

@@ -85,9 +85,12 @@ std::optional<double> parse_timedelta(std::string_view s) {
   double days = 0;
   if (const std::size_t comma = s.find(','); comma != std::string_view::npos) {
     std::string_view d = trim(s.substr(0, comma));
-    if (d.ends_with("days")) d.remove_suffix(4);
-    else if (d.ends_with("day")) d.remove_suffix(3);
-    else return std::nullopt;
+    if (d.ends_with("days"))
+      d.remove_suffix(4);
+    else if (d.ends_with("day"))
+      d.remove_suffix(3);
+    else
+      return std::nullopt;
     const auto n = number(d);
     if (!n || !std::isfinite(*n) || *n != std::floor(*n)) return std::nullopt;
     days = *n;
@@ -202,7 +205,8 @@ void JtopParser::header(std::size_t line_no) {
 void JtopParser::line(std::string_view raw, std::size_t line_no, bool last) {
   if (!split_row(raw, cells_)) {
     if (last && have_header_) {
-      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": cut-off last row (unterminated quote); skipped");
+      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) +
+                                ": cut-off last row (unterminated quote); skipped");
       return;
     }
     fail(ImportErrorCategory::Syntax, line_no, raw.size() + 1, {}, "unterminated quote");
@@ -303,7 +307,6 @@ ImportBatch JtopParser::finish() {
   return std::move(batch_);
 }
 
-
 }  // namespace
 
 int JtopCsvImporter::sniff(std::string_view head, std::string_view) const {
@@ -328,11 +331,13 @@ int JtopCsvImporter::sniff(std::string_view head, std::string_view) const {
 bool JtopCsvImporter::usual_extension(std::string_view path) const {
   if (path.size() < 4) return false;
   std::string ext(path.substr(path.size() - 4));
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".csv";
 }
 
-ImportBatch JtopCsvImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch JtopCsvImporter::parse(const std::string& path, const ImportLimits& limits,
+                                   const CancelToken& cancel) const {
   return read_jtop_csv(path, {}, limits, cancel);
 }
 

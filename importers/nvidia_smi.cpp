@@ -37,14 +37,22 @@ Column classify(std::string_view cell) {
     name = trim(name.substr(0, open));
   }
   c.name = std::string(name);
-  if (name == "timestamp") c.role = Role::Time;
-  else if (name == "pci.bus_id" || name == "gpu_bus_id") c.role = Role::Bus;
-  else if (name == "uuid" || name == "gpu_uuid") c.role = Role::Uuid;
-  else if (name == "index") c.role = Role::Index;
-  else if (name == "name" || name == "gpu_name") c.role = Role::Name;
-  else if (name == "power.draw" || name == "power.draw.instant" || name == "power.draw.average") c.role = Role::Power;
-  else if (name == "driver_version") c.role = Role::Driver;
-  else if (name == "power.limit" || name == "enforced.power.limit") c.role = Role::Limit;
+  if (name == "timestamp")
+    c.role = Role::Time;
+  else if (name == "pci.bus_id" || name == "gpu_bus_id")
+    c.role = Role::Bus;
+  else if (name == "uuid" || name == "gpu_uuid")
+    c.role = Role::Uuid;
+  else if (name == "index")
+    c.role = Role::Index;
+  else if (name == "name" || name == "gpu_name")
+    c.role = Role::Name;
+  else if (name == "power.draw" || name == "power.draw.instant" || name == "power.draw.average")
+    c.role = Role::Power;
+  else if (name == "driver_version")
+    c.role = Role::Driver;
+  else if (name == "power.limit" || name == "enforced.power.limit")
+    c.role = Role::Limit;
   return c;
 }
 
@@ -87,11 +95,13 @@ class NvidiaSmiParser {
   ImportBatch finish();
 
  private:
-  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field, const std::string& why) const {
+  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
+                         const std::string& why) const {
     throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
   }
   void skip(std::size_t line_no, const std::string& why) {
-    if (++skipped_ <= kListedWarnings) batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
+    if (++skipped_ <= kListedWarnings)
+      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
   }
   void header(std::size_t line_no);
   bool infer_columns(std::size_t line_no);
@@ -118,28 +128,44 @@ void NvidiaSmiParser::header(std::size_t line_no) {
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     Column c = classify(cells_[i]);
     switch (c.role) {
-      case Role::Time: time_col_ = i; break;
-      case Role::Bus: key_col_ = i; break;
-      case Role::Uuid: if (!key_col_ || cols_[*key_col_].role != Role::Bus) key_col_ = i; break;
-      case Role::Index: if (!key_col_ || cols_[*key_col_].role == Role::Name) key_col_ = i; break;
+      case Role::Time:
+        time_col_ = i;
+        break;
+      case Role::Bus:
+        key_col_ = i;
+        break;
+      case Role::Uuid:
+        if (!key_col_ || cols_[*key_col_].role != Role::Bus) key_col_ = i;
+        break;
+      case Role::Index:
+        if (!key_col_ || cols_[*key_col_].role == Role::Name) key_col_ = i;
+        break;
       case Role::Name:
         name_col_ = i;
         if (!key_col_) key_col_ = i;
         break;
       case Role::Power:
         if (!c.unit.empty() && c.unit != "W")
-          fail(ImportErrorCategory::Unsupported, line_no, c.name, "unit '" + c.unit + "' for power (nvidia-smi writes W)");
+          fail(ImportErrorCategory::Unsupported, line_no, c.name,
+               "unit '" + c.unit + "' for power (nvidia-smi writes W)");
         power_cols_.push_back(i);
         break;
-      case Role::Driver: driver_col_ = i; break;
-      case Role::Limit: if (!limit_col_) limit_col_ = i; break;
-      case Role::Other: ignored += (ignored.empty() ? "" : ", ") + c.name; break;
+      case Role::Driver:
+        driver_col_ = i;
+        break;
+      case Role::Limit:
+        if (!limit_col_) limit_col_ = i;
+        break;
+      case Role::Other:
+        ignored += (ignored.empty() ? "" : ", ") + c.name;
+        break;
     }
     cols_.push_back(std::move(c));
   }
   if (power_cols_.empty())
     fail(ImportErrorCategory::MissingField, line_no, "header",
-         "no power.draw column (query it: nvidia-smi --query-gpu=timestamp,name,pci.bus_id,power.draw --format=csv -l 1)");
+         "no power.draw column (query it: nvidia-smi --query-gpu=timestamp,name,pci.bus_id,power.draw --format=csv -l "
+         "1)");
   if (std::none_of(cols_.begin(), cols_.end(), [](const Column& c) { return c.role == Role::Time; }))
     fail(ImportErrorCategory::MissingField, line_no, "header",
          "no timestamp column: the times of the samples are not in the file (add timestamp to --query-gpu)");
@@ -194,8 +220,8 @@ Gpu& NvidiaSmiParser::gpu_for(std::size_t line_no) {
   std::string key = key_col_ ? std::string(cells_[*key_col_]) : std::string();
   if (const auto it = gpu_index_.find(key); it != gpu_index_.end()) return gpus_[it->second];
   if (gpus_.size() >= kMaxGpus)
-    fail(ImportErrorCategory::TooLarge, line_no, key_col_ ? cols_[*key_col_].name : "", "more than " +
-         std::to_string(kMaxGpus) + " different GPUs");
+    fail(ImportErrorCategory::TooLarge, line_no, key_col_ ? cols_[*key_col_].name : "",
+         "more than " + std::to_string(kMaxGpus) + " different GPUs");
   gpu_index_.emplace(key, gpus_.size());
   Gpu& g = gpus_.emplace_back();
   g.key = std::move(key);
@@ -232,8 +258,8 @@ void NvidiaSmiParser::line(std::string_view raw, std::size_t line_no, bool last)
   }
   if (cells_.size() != cols_.size()) {
     if (last) return skip(line_no, "incomplete last line (nvidia-smi stopped while writing it)");
-    fail(ImportErrorCategory::Syntax, line_no, "", std::to_string(cells_.size()) + " cells; the header has " +
-         std::to_string(cols_.size()));
+    fail(ImportErrorCategory::Syntax, line_no, "",
+         std::to_string(cells_.size()) + " cells; the header has " + std::to_string(cols_.size()));
   }
   const auto epoch = parse_timestamp(cells_[time_col_]);
   if (!epoch) {
@@ -244,7 +270,8 @@ void NvidiaSmiParser::line(std::string_view raw, std::size_t line_no, bool last)
   std::vector<double> values(power_cols_.size());
   for (std::size_t k = 0; k < power_cols_.size(); ++k) {
     switch (watts(cells_[power_cols_[k]], values[k])) {
-      case Cell::Ok: break;
+      case Cell::Ok:
+        break;
       case Cell::Missing:
         values[k] = std::numeric_limits<double>::quiet_NaN();
         ++missing_;
@@ -256,8 +283,8 @@ void NvidiaSmiParser::line(std::string_view raw, std::size_t line_no, bool last)
     }
   }
   if (++samples_ > limits_.max_samples)
-    fail(ImportErrorCategory::TooLarge, line_no, "", "more than " + std::to_string(limits_.max_samples) +
-         " rows (the limit for one log)");
+    fail(ImportErrorCategory::TooLarge, line_no, "",
+         "more than " + std::to_string(limits_.max_samples) + " rows (the limit for one log)");
   Gpu& g = gpu_for(line_no);
   PowerTrace& t = g.trace;
   if (t.time_s.empty()) {
@@ -325,7 +352,7 @@ int NvidiaSmiImporter::sniff(std::string_view head, std::string_view) const {
       timestamp_cell = timestamp_cell || slash_timestamp(c);
       watt_cell = watt_cell || (c.size() > 2 && c.ends_with(" W"));
     }
-    if (power_in_watts) return 95;     // "power.draw [W]": nvidia-smi's own header
+    if (power_in_watts) return 95;       // "power.draw [W]": nvidia-smi's own header
     if (power && known >= 2) return 90;  // nounits header, or a wrapper's header of nvidia-smi field names
     if (power) return 60;
     // noheader: nvidia-smi's timestamp format; parse() decides whether the columns can be inferred.
@@ -335,7 +362,8 @@ int NvidiaSmiImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-ImportBatch NvidiaSmiImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch NvidiaSmiImporter::parse(const std::string& path, const ImportLimits& limits,
+                                     const CancelToken& cancel) const {
   return read_nvidia_smi(path, {}, limits, cancel);
 }
 

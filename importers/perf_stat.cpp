@@ -29,8 +29,8 @@ std::string_view rapl_domain(std::string_view event) {
 // One count as perf printed it: the raw number text (converted once the file's decimal mark is known) or missing.
 struct Record {
   std::optional<std::string_view> time;  // -I: seconds since perf started, as text
-  std::string channel;                    // "pkg", "S0 pkg"; "duration_time" for that event
-  std::string value;                      // empty: <not counted> / <not supported>
+  std::string channel;                   // "pkg", "S0 pkg"; "duration_time" for that event
+  std::string value;                     // empty: <not counted> / <not supported>
   std::string_view unit;
 };
 
@@ -162,7 +162,8 @@ class PerfStatParser {
   ImportBatch finish();
 
  private:
-  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field, const std::string& why) const {
+  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
+                         const std::string& why) const {
     throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
   }
   void interval_record(const Record& r, std::size_t line_no);
@@ -209,15 +210,16 @@ void PerfStatParser::interval_record(const Record& r, std::size_t line_no) {
     fail(ImportErrorCategory::InvalidValue, line_no, "time", "'" + std::string(*r.time) + "' is not an interval time");
   if (ends_.empty() || t > ends_.back()) {
     if (ends_.size() >= limits_.max_samples)
-      fail(ImportErrorCategory::TooLarge, line_no, "", "more than " + std::to_string(limits_.max_samples) + " intervals");
+      fail(ImportErrorCategory::TooLarge, line_no, "",
+           "more than " + std::to_string(limits_.max_samples) + " intervals");
     ends_.push_back(t);
   } else if (t < ends_.back()) {
     fail(ImportErrorCategory::InvalidValue, line_no, "time", "time goes backwards (" + std::string(*r.time) + " s)");
   }
   Channel& c = channel(r.channel, ends_.size() - 1);
   if (c.joules.size() == ends_.size())
-    fail(ImportErrorCategory::Syntax, line_no, r.channel, "the event appears twice in the interval ending at " +
-         std::string(*r.time) + " s");
+    fail(ImportErrorCategory::Syntax, line_no, r.channel,
+         "the event appears twice in the interval ending at " + std::string(*r.time) + " s");
   c.joules.resize(ends_.size() - 1, kNaN);
   double j = kNaN;
   if (!r.value.empty() && !locale_number(r.value, decimal_comma_, j))
@@ -255,15 +257,15 @@ void PerfStatParser::line(std::string_view raw, std::size_t line_no, bool last) 
   if (!r) return;  // not a RAPL count: another event, or the measured program's own output
   if (r->channel != "duration_time" && r->unit != "Joules") {
     if (last) return;  // cut off
-    fail(ImportErrorCategory::InvalidValue, line_no, r->channel, "unit '" + std::string(r->unit) +
-         "' for a RAPL energy event (perf prints Joules)");
+    fail(ImportErrorCategory::InvalidValue, line_no, r->channel,
+         "unit '" + std::string(r->unit) + "' for a RAPL energy event (perf prints Joules)");
   }
   ++records_;
   const bool interval = r->time.has_value();
   if (!interval_mode_) interval_mode_ = interval;
   if (*interval_mode_ != interval)
-    fail(ImportErrorCategory::Syntax, line_no, "", interval ? "an interval (-I) count after summary counts"
-                                                            : "a summary count after interval (-I) counts");
+    fail(ImportErrorCategory::Syntax, line_no, "",
+         interval ? "an interval (-I) count after summary counts" : "a summary count after interval (-I) counts");
   if (interval) return interval_record(*r, line_no);
   if (block_.size() >= 4096) fail(ImportErrorCategory::TooLarge, line_no, "", "more than 4096 counts in one block");
   block_.push_back({r->channel, r->value, std::string(r->unit), line_no});
@@ -308,7 +310,8 @@ void PerfStatParser::close_block(std::optional<double> elapsed, std::size_t line
     if (!p.value.empty() && !locale_number(p.value, decimal_comma_, j))
       fail(ImportErrorCategory::InvalidValue, p.line_no, p.channel, "'" + p.value + "' is not a count");
     Channel& c = channel(p.channel, 0);
-    if (!c.joules.empty()) fail(ImportErrorCategory::Syntax, p.line_no, p.channel, "the event appears twice in one block");
+    if (!c.joules.empty())
+      fail(ImportErrorCategory::Syntax, p.line_no, p.channel, "the event appears twice in one block");
     c.joules.push_back(j);
   }
   if (!channels_.empty()) batch_.power_traces.push_back(make_trace({*elapsed}));
@@ -346,8 +349,10 @@ ImportBatch PerfStatParser::finish() {
       for (double v : c.values) missing += std::isnan(v);
     }
     if (packages > 1 && t.total_channel.find("psys") == std::string::npos)
-      batch_.warnings.push_back(file_ + ": " + std::to_string(packages) + " packages counted separately; the total "
-                                "channel is '" + t.total_channel + "', add the others for the whole machine");
+      batch_.warnings.push_back(file_ + ": " + std::to_string(packages) +
+                                " packages counted separately; the total "
+                                "channel is '" +
+                                t.total_channel + "', add the others for the whole machine");
     // The total first as well: readers that take the first power channel (as before total_channel) agree.
     std::stable_partition(t.channels.begin(), t.channels.end(),
                           [&](const PowerChannel& c) { return c.name == t.total_channel; });
@@ -364,7 +369,8 @@ ImportBatch PerfStatParser::finish() {
                                                : "mean power over the run (energy / elapsed time)";
   }
   if (missing > 0)
-    batch_.warnings.push_back(file_ + ": " + std::to_string(missing / 2) + " counts <not counted> or <not supported> "
+    batch_.warnings.push_back(file_ + ": " + std::to_string(missing / 2) +
+                              " counts <not counted> or <not supported> "
                               "are missing samples");
   return std::move(batch_);
 }
@@ -388,7 +394,8 @@ int PerfStatImporter::sniff(std::string_view head, std::string_view) const {
   return score;
 }
 
-ImportBatch PerfStatImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch PerfStatImporter::parse(const std::string& path, const ImportLimits& limits,
+                                    const CancelToken& cancel) const {
   return read_perf_stat(path, {}, limits, cancel);
 }
 

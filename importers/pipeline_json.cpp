@@ -77,8 +77,7 @@ StageStats read_stage(const Reader& r, const json& value, const std::string& at,
     r.fail(ImportErrorCategory::InvalidValue, child(at, "max_s"), "is less than mean_s");
   if (s.p50_s && s.p95_s && !le(*s.p50_s, *s.p95_s))
     r.fail(ImportErrorCategory::InvalidValue, child(at, "p95_s"), "is less than p50_s");
-  if (s.n == 1 && s.sd_s != 0)
-    r.fail(ImportErrorCategory::InvalidValue, child(at, "sd_s"), "must be 0 when n is 1");
+  if (s.n == 1 && s.sd_s != 0) r.fail(ImportErrorCategory::InvalidValue, child(at, "sd_s"), "must be 0 when n is 1");
   return s;
 }
 
@@ -87,8 +86,7 @@ StageStats read_stage(const Reader& r, const json& value, const std::string& at,
 int PipelineJsonImporter::sniff(std::string_view head, std::string_view) const {
   // Any version: a newer one is then refused as unsupported rather than as an unknown format.
   if (head.find("\"benchscope-pipeline-v") != std::string_view::npos) return 100;
-  if (head.find("\"stages\"") != std::string_view::npos && head.find("\"mean_s\"") != std::string_view::npos)
-    return 40;
+  if (head.find("\"stages\"") != std::string_view::npos && head.find("\"mean_s\"") != std::string_view::npos) return 40;
   return 0;
 }
 
@@ -164,7 +162,8 @@ std::string write_pipeline_json(const PipelineRun& run) {
   j["backend"] = run.backend.empty() ? "cpu" : run.backend;
   if (!run.demosaic.empty()) j["demosaic"] = run.demosaic;
   if (!run.detector.empty()) j["detector"] = run.detector;
-  if (run.frame_width > 0 && run.frame_height > 0) j["frame"] = {{"width", run.frame_width}, {"height", run.frame_height}};
+  if (run.frame_width > 0 && run.frame_height > 0)
+    j["frame"] = {{"width", run.frame_width}, {"height", run.frame_height}};
   if (run.throughput_fps) {
     if (!(*run.throughput_fps > 0) || !std::isfinite(*run.throughput_fps)) bad("throughput is not a positive number");
     j["throughput_fps"] = *run.throughput_fps;

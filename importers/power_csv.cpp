@@ -5,8 +5,8 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -60,15 +60,36 @@ std::optional<double> unit_scale(Role role, std::string_view unit) {
     double scale;
   };
   static constexpr U units[] = {
-      {Role::Time, "", 1},          {Role::Time, "s", 1},          {Role::Time, "sec", 1},
-      {Role::Time, "secs", 1},      {Role::Time, "seconds", 1},    {Role::Time, "ms", 1e-3},
-      {Role::Time, "us", 1e-6},     {Role::Time, "\xC2\xB5s", 1e-6}, {Role::Time, "ns", 1e-9},
-      {Role::Current, "", 1},       {Role::Current, "a", 1},       {Role::Current, "amps", 1},
-      {Role::Current, "ma", 1e-3},  {Role::Current, "ua", 1e-6},   {Role::Current, "\xC2\xB5" "a", 1e-6},
-      {Role::Voltage, "", 1},       {Role::Voltage, "v", 1},       {Role::Voltage, "volts", 1},
-      {Role::Voltage, "mv", 1e-3},  {Role::Power, "", 1},          {Role::Power, "w", 1},
-      {Role::Power, "watt", 1},     {Role::Power, "watts", 1},     {Role::Power, "mw", 1e-3},
-      {Role::Power, "uw", 1e-6},    {Role::Power, "\xC2\xB5w", 1e-6}, {Role::Power, "kw", 1e3},
+      {Role::Time, "", 1},
+      {Role::Time, "s", 1},
+      {Role::Time, "sec", 1},
+      {Role::Time, "secs", 1},
+      {Role::Time, "seconds", 1},
+      {Role::Time, "ms", 1e-3},
+      {Role::Time, "us", 1e-6},
+      {Role::Time, "\xC2\xB5s", 1e-6},
+      {Role::Time, "ns", 1e-9},
+      {Role::Current, "", 1},
+      {Role::Current, "a", 1},
+      {Role::Current, "amps", 1},
+      {Role::Current, "ma", 1e-3},
+      {Role::Current, "ua", 1e-6},
+      {Role::Current,
+       "\xC2\xB5"
+       "a",
+       1e-6},
+      {Role::Voltage, "", 1},
+      {Role::Voltage, "v", 1},
+      {Role::Voltage, "volts", 1},
+      {Role::Voltage, "mv", 1e-3},
+      {Role::Power, "", 1},
+      {Role::Power, "w", 1},
+      {Role::Power, "watt", 1},
+      {Role::Power, "watts", 1},
+      {Role::Power, "mw", 1e-3},
+      {Role::Power, "uw", 1e-6},
+      {Role::Power, "\xC2\xB5w", 1e-6},
+      {Role::Power, "kw", 1e3},
   };
   for (const U& u : units)
     if (u.role == role && u.unit == unit) return u.scale;
@@ -109,15 +130,14 @@ Classified classify(std::string_view raw) {
   }
   const auto has = [&](std::string_view word) { return n.find(word) != std::string::npos; };
   Role role = Role::Ignore;
-  if (has("shunt") || has("charge") || has("energy") || has("limit") || has("cumulative") || has("pl1") ||
-      has("pl2") || has("pl4") || has("tdp")) {
+  if (has("shunt") || has("charge") || has("energy") || has("limit") || has("cumulative") || has("pl1") || has("pl2") ||
+      has("pl4") || has("tdp")) {
     // INA219's shunt drop is not the supply voltage; Joulescope's charge/energy and Power Gadget's cumulative
     // energy are integrals; power limits (Power Gadget's "Package PL1_0(Watt)", nvidia-smi's power.limit) are
     // settings, not measurements.
     role = Role::Ignore;
-  } else if (n == "t" || has("time") || has("second") || n == "sec" || n == "secs" || n == "millis" ||
-             n == "micros" || has("elapsed") || has("zeit") || n == "date" || n == "datetime" || has("epoch") ||
-             n == "unix") {
+  } else if (n == "t" || has("time") || has("second") || n == "sec" || n == "secs" || n == "millis" || n == "micros" ||
+             has("elapsed") || has("zeit") || n == "date" || n == "datetime" || has("epoch") || n == "unix") {
     role = Role::Time;
     if (unit.empty() && n == "millis") unit = "ms";
     if (unit.empty() && n == "micros") unit = "us";
@@ -144,8 +164,10 @@ Classified classify(std::string_view raw) {
   }
   out.column.role = role;
   if (role != Role::Ignore) {
-    if (const auto s = unit_scale(role, unit)) out.column.scale = *s;
-    else out.bad_unit = unit;
+    if (const auto s = unit_scale(role, unit))
+      out.column.scale = *s;
+    else
+      out.bad_unit = unit;
   }
   return out;
 }
@@ -184,10 +206,14 @@ char sniff_separator(std::string_view header) {
   std::size_t counts[3] = {0, 0, 0};
   bool quoted = false;
   for (char c : header) {
-    if (c == '"') quoted = !quoted;
-    else if (!quoted && c == ',') ++counts[0];
-    else if (!quoted && c == ';') ++counts[1];
-    else if (!quoted && c == '\t') ++counts[2];
+    if (c == '"')
+      quoted = !quoted;
+    else if (!quoted && c == ',')
+      ++counts[0];
+    else if (!quoted && c == ';')
+      ++counts[1];
+    else if (!quoted && c == '\t')
+      ++counts[2];
   }
   const char candidates[3] = {',', ';', '\t'};
   char best = ',';
@@ -203,7 +229,7 @@ char sniff_separator(std::string_view header) {
 std::string separator_name(char sep) { return sep == '\t' ? "tab" : std::string("'") + sep + "'"; }
 
 struct HeaderCell {
-  std::string text;   // unquoted: "a ""b""" -> a "b"
+  std::string text;    // unquoted: "a ""b""" -> a "b"
   std::size_t column;  // 1-based byte column of the cell in the line
 };
 
@@ -281,7 +307,8 @@ void advise_huge_pages(std::vector<double>& v) {
   const auto first = reinterpret_cast<std::uintptr_t>(v.data());
   const std::uintptr_t begin = (first + huge - 1) & ~(huge - 1);
   const std::uintptr_t end = (first + v.capacity() * sizeof(double)) & ~(huge - 1);
-  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // a hint: errors are harmless
+  if (end > begin)
+    ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // a hint: errors are harmless
 #else
   (void)v;
 #endif
@@ -332,7 +359,8 @@ class PowerCsvParser {
                    std::size_t col);
   void decide_time_mode(std::string_view cell, std::string_view raw, std::size_t line_no, std::size_t col);
   void absolute_start(std::string_view cell, bool utc_column);
-  void bad_cell(std::string_view line, std::string_view cell, std::size_t line_no, std::size_t col, std::size_t index) const;
+  void bad_cell(std::string_view line, std::string_view cell, std::size_t line_no, std::size_t col,
+                std::size_t index) const;
   void detect_source(const std::vector<HeaderCell>& cells, bool comment_header);
   void choose_total();
   void drop_empty_channels();
@@ -341,7 +369,7 @@ class PowerCsvParser {
   const PowerImportOptions& options_;
   const ImportLimits& limits_;
   std::vector<Column> columns_;
-  std::vector<int> channel_of_;  // column index -> channel index, -1 for time and ignored columns
+  std::vector<int> channel_of_;             // column index -> channel index, -1 for time and ignored columns
   std::vector<std::vector<double>*> sink_;  // column index -> the channel's values (set when the rows start)
   std::size_t time_col_ = 0;
   std::size_t abs_col_ = std::size_t(-1);  // a second time column that may give the absolute start time
@@ -352,7 +380,7 @@ class PowerCsvParser {
   bool first_row_ = true;
   double t0_ = 0, last_t_ = 0;
   std::size_t header_line_ = 0;
-  std::size_t repeats_ = 0, first_repeat_line_ = 0;  // rows whose time equals the previous row's
+  std::size_t repeats_ = 0, first_repeat_line_ = 0;        // rows whose time equals the previous row's
   std::vector<std::size_t> missing_, first_missing_line_;  // per channel: empty / N/A cells
   std::size_t footer_lines_ = 0, first_footer_line_ = 0;
   std::string scratch_;  // a quoted cell with doubled quotes, unescaped
@@ -393,7 +421,8 @@ void PowerCsvParser::header_or_comment(std::string_view raw, std::size_t line_no
   }
   if (bad < cells.size())
     fail(ImportErrorCategory::Unsupported, line_no, offset + cells[bad].column, cols[bad].name,
-         "unit '" + bad_unit + "' does not fit this column (known: s ms us ns, UTC for date-times / A mA uA / V mV / W mW uW kW)");
+         "unit '" + bad_unit +
+             "' does not fit this column (known: s ms us ns, UTC for date-times / A mA uA / V mV / W mW uW kW)");
   if (!time)
     fail(ImportErrorCategory::MissingField, line_no, 1, "header",
          "no time column (expected a header such as time_s,current_A; found '" + std::string(l.substr(0, 80)) + "')");
@@ -453,7 +482,8 @@ void PowerCsvParser::detect_source(const std::vector<HeaderCell>& cells, bool co
   const auto any = [&](std::string_view prefix) {
     return std::any_of(names.begin(), names.end(), [&](const std::string& n) { return n.starts_with(prefix); });
   };
-  const bool joulescope_columns = names.size() >= 3 && names[0] == "time" && names[1] == "current" && names[2] == "voltage";
+  const bool joulescope_columns =
+      names.size() >= 3 && names[0] == "time" && names[1] == "current" && names[2] == "voltage";
   if (joulescope_columns && (comment_header || any("charge") || any("energy"))) {
     header_measurement_ = MeasurementKind::ExternalMeter;
     header_sensor_ = "Joulescope";
@@ -474,11 +504,13 @@ void PowerCsvParser::bad_cell(std::string_view line, std::string_view cell, std:
   if (cell.find_first_of(others) != std::string_view::npos ||
       (sep_ != ',' && line.find(sep_) == std::string_view::npos && line.find(',') != std::string_view::npos))
     fail(ImportErrorCategory::Syntax, line_no, col, name,
-         "mixed separators: '" + std::string(cell.substr(0, 60)) + "' in a file whose header uses " + separator_name(sep_));
+         "mixed separators: '" + std::string(cell.substr(0, 60)) + "' in a file whose header uses " +
+             separator_name(sep_));
   if (cell.empty())
     fail(ImportErrorCategory::InvalidValue, line_no, col, name,
          index == time_col_ ? "empty cell: missing time" : "empty cell: missing value");
-  fail(ImportErrorCategory::InvalidValue, line_no, col, name, "'" + std::string(cell.substr(0, 60)) + "' is not a number");
+  fail(ImportErrorCategory::InvalidValue, line_no, col, name,
+       "'" + std::string(cell.substr(0, 60)) + "' is not a number");
 }
 
 // The text of the cell that starts at `p`, without its quotes (RFC 4180: "a ""b"", c" is a "b", c) and
@@ -541,7 +573,8 @@ void PowerCsvParser::absolute_start(std::string_view cell, bool utc_column) {
   }
 }
 
-void PowerCsvParser::decide_time_mode(std::string_view cell, std::string_view raw, std::size_t line_no, std::size_t col) {
+void PowerCsvParser::decide_time_mode(std::string_view cell, std::string_view raw, std::size_t line_no,
+                                      std::size_t col) {
   const Column& c = columns_[time_col_];
   double v = 0;
   if (parse_number(cell, decimal_comma_, v)) {
@@ -552,7 +585,8 @@ void PowerCsvParser::decide_time_mode(std::string_view cell, std::string_view ra
     if (std::fabs(v) >= 9007199254740992.0) {
       if (!integer)
         fail(ImportErrorCategory::InvalidValue, line_no, col, c.name,
-             "'" + std::string(cell.substr(0, 60)) + "' is too large for a time (an integer up to 2^63 is read exactly)");
+             "'" + std::string(cell.substr(0, 60)) +
+                 "' is too large for a time (an integer up to 2^63 is read exactly)");
       time_mode_ = TimeMode::Integer;
       t0_int_ = whole;
     } else {
@@ -625,7 +659,8 @@ double PowerCsvParser::time_cell(const char* p, const char* stop, const char*& e
       }
       return *abs;
     }
-    case TimeMode::Undecided: break;
+    case TimeMode::Undecided:
+      break;
   }
   return 0;
 }
@@ -639,7 +674,8 @@ bool PowerCsvParser::footer_line(std::string_view raw, std::size_t line_no) {
   if (l.empty() || !letter(l.front()) || l.find(sep_) != std::string_view::npos) return false;
   const auto eq = l.find('=');
   if (eq == std::string_view::npos) return false;
-  trace_.provenance.settings.emplace_back(std::string(trim_spaces(l.substr(0, eq))), std::string(trim_spaces(l.substr(eq + 1))));
+  trace_.provenance.settings.emplace_back(std::string(trim_spaces(l.substr(0, eq))),
+                                          std::string(trim_spaces(l.substr(eq + 1))));
   if (footer_lines_++ == 0) first_footer_line_ = line_no;
   return true;
 }
@@ -765,8 +801,7 @@ void PowerCsvParser::drop_empty_channels() {
     fail(ImportErrorCategory::InvalidValue, first_empty_line, 0, first_empty_name,
          "every cell of the column is empty (empty cell from line " + std::to_string(first_empty_line) +
              " on): no current or power sample in the file");
-  if (!dropped.empty())
-    batch_.warnings.push_back(file_ + ": columns with no value in any row, not kept: " + dropped);
+  if (!dropped.empty()) batch_.warnings.push_back(file_ + ": columns with no value in any row, not kept: " + dropped);
   for (std::size_t c = 0; c < trace_.channels.size(); ++c)
     if (missing_[c] > 0)
       batch_.warnings.push_back(file_ + ":" + std::to_string(first_missing_line_[c]) + ": '" + trace_.channels[c].name +
@@ -788,7 +823,8 @@ void PowerCsvParser::choose_total() {
       trace_.total_channel = c->name;
       if (candidates.size() > 1)
         batch_.warnings.push_back(file_ + ": " + std::to_string(candidates.size()) + (power ? " power" : " current") +
-                                  " columns; statistics use '" + c->name + "' (named as the total), the others are channels");
+                                  " columns; statistics use '" + c->name +
+                                  "' (named as the total), the others are channels");
       return;
     }
   if (candidates.size() > 1) {
@@ -828,7 +864,8 @@ ImportBatch PowerCsvParser::finish(std::size_t last_line) {
     if (key == "supply_voltage_v") {
       double v = 0;
       if (!parse_number(value, false, v) || !(v > 0))
-        fail(ImportErrorCategory::InvalidValue, 0, 0, "supply_voltage_V", "'" + std::string(value) + "': expected volts > 0");
+        fail(ImportErrorCategory::InvalidValue, 0, 0, "supply_voltage_V",
+             "'" + std::string(value) + "': expected volts > 0");
       trace_.supply_voltage_v = v;
     }
     // "# meter: Keysight N6705C" (or instrument): an external meter, named; "# sensor: INA3221" names the sensor;
@@ -852,10 +889,12 @@ ImportBatch PowerCsvParser::finish(std::size_t last_line) {
     batch_.warnings.push_back(file_ + ":" + std::to_string(first_footer_line_) + ": summary footer (" +
                               std::to_string(footer_lines_) + " 'name = value' lines) kept as settings, not samples");
   const auto has = [&](PowerQuantity q) {
-    return std::any_of(trace_.channels.begin(), trace_.channels.end(), [&](const PowerChannel& c) { return c.quantity == q; });
+    return std::any_of(trace_.channels.begin(), trace_.channels.end(),
+                       [&](const PowerChannel& c) { return c.quantity == q; });
   };
   if (!has(PowerQuantity::Power) && !has(PowerQuantity::Voltage) && !trace_.supply_voltage_v)
-    batch_.warnings.push_back(file_ + ": current only and no supply voltage (no '# supply_voltage_V:' line): "
+    batch_.warnings.push_back(file_ +
+                              ": current only and no supply voltage (no '# supply_voltage_V:' line): "
                               "power and energy stay unknown until one is given");
   // Give back a reservation that overshot by more than a quarter (the estimate from the first rows was off);
   // a small overshoot is cheaper to keep than to copy.
@@ -905,7 +944,8 @@ int PowerCsvImporter::sniff(std::string_view head, std::string_view) const {
 
 bool PowerCsvImporter::usual_extension(std::string_view path) const { return usual(path); }
 
-ImportBatch PowerCsvImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch PowerCsvImporter::parse(const std::string& path, const ImportLimits& limits,
+                                    const CancelToken& cancel) const {
   return read_power_csv(path, {}, limits, cancel);
 }
 

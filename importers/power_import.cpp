@@ -5,8 +5,8 @@
 #include "nvidia_smi.h"
 #include "perf_stat.h"
 #include "power_csv.h"
-#include "ptd_log.h"
 #include "power_recording.h"
+#include "ptd_log.h"
 #include "tegrastats.h"
 
 namespace bs {

@@ -31,7 +31,8 @@ PowerLineReader::PowerLineReader(const std::string& path) : path_(path), eof_(fa
   const auto size = std::filesystem::file_size(path, ec);
   file_size_ = ec ? 0 : static_cast<std::size_t>(size);
   file_ = std::fopen(path.c_str(), "rb");
-  if (!file_) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, std::string("cannot open: ") + std::strerror(errno));
+  if (!file_)
+    throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, std::string("cannot open: ") + std::strerror(errno));
   // One block plus room for the longest allowed line carried over from the previous block.
   buffer_.resize(kBlockBytes + kMaxPowerLogLineBytes);
 }

@@ -25,7 +25,7 @@ bool number(std::string_view s, double& v) {
 
 // What the comment block says, with the line of each phase for errors.
 struct Header {
-  std::vector<std::pair<std::string, std::string>> keys;  // in file order
+  std::vector<std::pair<std::string, std::string>> keys;    // in file order
   std::vector<std::pair<std::string, std::size_t>> phases;  // "NAME = A .. B", line
   std::vector<std::pair<std::string, std::string>> settings;
 };
@@ -36,7 +36,8 @@ Header read_header(std::string_view text, const std::string& file) {
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   while (pos < text.size()) {
     const auto nl = text.find('\n', pos);
-    const std::string_view line = trim(text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos));
+    const std::string_view line =
+        trim(text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos));
     pos = nl == std::string_view::npos ? text.size() : nl + 1;
     ++line_no;
     if (line.empty()) continue;
@@ -47,7 +48,8 @@ Header read_header(std::string_view text, const std::string& file) {
     if (colon == std::string_view::npos) continue;
     const std::string key(trim(body.substr(0, colon)));
     const std::string value(trim(body.substr(colon + 1)));
-    if (key == "phase") h.phases.emplace_back(value, line_no);
+    if (key == "phase")
+      h.phases.emplace_back(value, line_no);
     else if (key == "setting") {
       const auto eq = value.find(" = ");
       if (eq == std::string::npos)
@@ -80,8 +82,8 @@ ImportBatch finish(ImportBatch batch, const Header& h, const std::string& file) 
     throw ImportError(ImportErrorCategory::InvalidValue, {file, 0, 0, "measurement"},
                       "'" + measurement + "': a BenchScope recording is from an on-board sensor");
   t.total_channel = key(h, "total_channel");
-  if (!t.total_channel.empty() &&
-      std::none_of(t.channels.begin(), t.channels.end(), [&](const PowerChannel& c) { return c.name == t.total_channel; }))
+  if (!t.total_channel.empty() && std::none_of(t.channels.begin(), t.channels.end(),
+                                               [&](const PowerChannel& c) { return c.name == t.total_channel; }))
     throw ImportError(ImportErrorCategory::MissingField, {file, 0, 0, "total_channel"},
                       "total channel '" + t.total_channel + "' is not one of the columns");
   // The header names the total, so the CSV reader's guess at it from the column names ("statistics use ...") does

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -54,11 +54,13 @@ class PtdParser {
   ImportBatch finish();
 
  private:
-  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field, const std::string& why) const {
+  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
+                         const std::string& why) const {
     throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
   }
   void skip(std::size_t line_no, const std::string& why) {
-    if (++skipped_ <= kListedWarnings) batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
+    if (++skipped_ <= kListedWarnings)
+      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
   }
 
   const std::string& file_;
@@ -116,9 +118,12 @@ void PtdParser::line(std::string_view raw, std::size_t line_no, bool last) {
       continue;
     }
     std::optional<PowerQuantity> q;
-    if (key == "Watts") q = PowerQuantity::Power;
-    else if (key == "Volts") q = PowerQuantity::Voltage;
-    else if (key == "Amps") q = PowerQuantity::Current;
+    if (key == "Watts")
+      q = PowerQuantity::Power;
+    else if (key == "Volts")
+      q = PowerQuantity::Voltage;
+    else if (key == "Amps")
+      q = PowerQuantity::Current;
     if (!q) {
       unknown_keys_ = unknown_keys_ || key != "PF";
       continue;
@@ -143,16 +148,18 @@ void PtdParser::line(std::string_view raw, std::size_t line_no, bool last) {
   if (slots_.empty()) {
     slots_ = slots;
     for (const Slot& s : slots_) {
-      const char* what = s.quantity == PowerQuantity::Power ? "power" : s.quantity == PowerQuantity::Voltage ? "voltage" : "current";
+      const char* what = s.quantity == PowerQuantity::Power     ? "power"
+                         : s.quantity == PowerQuantity::Voltage ? "voltage"
+                                                                : "current";
       trace_.channels.push_back({s.group.empty() ? what : s.group + " " + what, s.quantity, {}});
     }
   } else if (slots.size() != slots_.size() ||
-             !std::equal(slots.begin(), slots.end(), slots_.begin(), [](const Slot& a, const Slot& b) {
-               return a.group == b.group && a.quantity == b.quantity;
-             })) {
+             !std::equal(slots.begin(), slots.end(), slots_.begin(),
+                         [](const Slot& a, const Slot& b) { return a.group == b.group && a.quantity == b.quantity; })) {
     if (last) return skip(line_no, "incomplete last line");
-    fail(ImportErrorCategory::InvalidValue, line_no, "", "the channels differ from the first sample's (" +
-         std::to_string(slots.size()) + " readings vs " + std::to_string(slots_.size()) + ")");
+    fail(ImportErrorCategory::InvalidValue, line_no, "",
+         "the channels differ from the first sample's (" + std::to_string(slots.size()) + " readings vs " +
+             std::to_string(slots_.size()) + ")");
   }
   if (seconds_.size() >= limits_.max_samples)
     fail(ImportErrorCategory::TooLarge, line_no, "", "more than " + std::to_string(limits_.max_samples) + " samples");
@@ -208,9 +215,11 @@ ImportBatch PtdParser::finish() {
   if (skipped_ > kListedWarnings)
     batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped");
   if (missing_ > 0)
-    batch_.warnings.push_back(file_ + ": " + std::to_string(missing_) + " readings of -1 (PTDaemon: no reading) are missing samples");
+    batch_.warnings.push_back(file_ + ": " + std::to_string(missing_) +
+                              " readings of -1 (PTDaemon: no reading) are missing samples");
   if (analyzers_)
-    batch_.warnings.push_back(file_ + ": merged multi-analyzer lines: only the combined values before the first "
+    batch_.warnings.push_back(file_ +
+                              ": merged multi-analyzer lines: only the combined values before the first "
                               "AnalyzerN group are read");
   if (unknown_keys_) batch_.warnings.push_back(file_ + ": fields other than Watts, Volts, Amps, PF and Mark ignored");
   if (day_first) batch_.warnings.push_back(file_ + ": dates read as DD-MM-YYYY (a first field above 12)");
@@ -241,7 +250,8 @@ int PtdLogImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-ImportBatch PtdLogImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch PtdLogImporter::parse(const std::string& path, const ImportLimits& limits,
+                                  const CancelToken& cancel) const {
   return read_ptd_log(path, {}, limits, cancel);
 }
 

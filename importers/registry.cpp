@@ -16,8 +16,8 @@
 #include "perf_stat.h"
 #include "pipeline_json.h"
 #include "power_csv.h"
-#include "ptd_log.h"
 #include "power_recording.h"
+#include "ptd_log.h"
 #include "run_json.h"
 #include "tegrastats.h"
 

@@ -136,8 +136,7 @@ FlopsRun read_run(ReadState& st, const json& run, const std::string& at) {
     out.samples.push_back(std::move(ws));
   }
   const json* prov = r.optional(run, "provenance");
-  out.provenance =
-      prov ? read_provenance(r, *prov, child(at, "provenance"), st.file_provenance) : st.file_provenance;
+  out.provenance = prov ? read_provenance(r, *prov, child(at, "provenance"), st.file_provenance) : st.file_provenance;
   out.provenance.source_file = r.file();
   return out;
 }

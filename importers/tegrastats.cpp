@@ -32,8 +32,9 @@ void tokens(std::string_view line, std::vector<std::string_view>& out) {
 
 // Rail names are upper case: VDD_IN, POM_5V_GPU, VIN_SYS_5V0, and on AGX Xavier plain GPU, CPU, SOC, SYS5V.
 bool rail_name(std::string_view t) {
-  return t.size() >= 2 && t.front() >= 'A' && t.front() <= 'Z' &&
-         std::all_of(t.begin(), t.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; });
+  return t.size() >= 2 && t.front() >= 'A' && t.front() <= 'Z' && std::all_of(t.begin(), t.end(), [](char c) {
+           return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+         });
 }
 
 // One number of a rail reading: "3981", "5000mW", "-392mW" (AGX Thor near zero). std::from_chars reads any
@@ -112,7 +113,8 @@ class TegrastatsParser {
 
  private:
   void skip(std::size_t line_no, const std::string& why) {
-    if (++skipped_ <= kListedWarnings) batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
+    if (++skipped_ <= kListedWarnings)
+      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
   }
   const std::string& file_;
   const PowerImportOptions& options_;
@@ -149,8 +151,9 @@ void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last
       ++i;
     } else if (malformed_rail_value(value) && !(last && i + 2 == tok_.size())) {  // a cut-off last line is fine
       throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, column, std::string(tok_[i])},
-                        "'" + std::string(value) + "' is not a power reading (expected cur/avg or cur/avg/max in "
-                        "mW, like 5000mW/4980mW, 3981/3981 or 4385mW/3787mW/4385mW)");
+                        "'" + std::string(value) +
+                            "' is not a power reading (expected cur/avg or cur/avg/max in "
+                            "mW, like 5000mW/4980mW, 3981/3981 or 4385mW/3787mW/4385mW)");
     }
   }
   if (values_.empty()) return skip(line_no, "no power rails on this line");
@@ -164,7 +167,8 @@ void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last
     if (summed_) trace_.channels.push_back({std::string(kSumChannel), PowerQuantity::Power, {}});
     for (std::size_t k : order_) trace_.channels.push_back({rails_[k], PowerQuantity::Power, {}});
   } else if (values_.size() != rails_.size() ||
-             !std::equal(values_.begin(), values_.end(), rails_.begin(), [](const auto& a, const std::string& b) { return a.first == b; })) {
+             !std::equal(values_.begin(), values_.end(), rails_.begin(),
+                         [](const auto& a, const std::string& b) { return a.first == b; })) {
     if (last) return skip(line_no, "incomplete last line (tegrastats stopped while writing it)");
     throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, 1, "rails"},
                       "the rails differ from the first line's (" + std::to_string(values_.size()) + " rails vs " +
@@ -210,7 +214,8 @@ ImportBatch TegrastatsParser::finish() {
                       "no lines with power rails (VDD_*, POM_*; tegrastats shows them only when run as root on boards "
                       "with power monitors)");
   if (skipped_ > kListedWarnings)
-    batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped (no power rails)");
+    batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) +
+                              " more lines skipped (no power rails)");
   std::string rails;
   for (const std::string& r : rails_) rails += (rails.empty() ? "" : " + ") + r;
   std::string how;
@@ -218,8 +223,10 @@ ImportBatch TegrastatsParser::finish() {
     how = "board total = " + std::string(kSumChannel) + " (" + rails +
           "), as jetson-stats reports it; this board has no input rail (VDD_IN, POM_5V_IN, VIN), so the carrier "
           "board and conversion losses are not measured: a lower bound of the power at the supply";
-    batch_.warnings.push_back(file_ + ": no board input rail (VDD_IN, POM_5V_IN, VIN): the board total is the sum of "
-                              "the rails (" + rails + "), a lower bound of the power at the supply");
+    batch_.warnings.push_back(file_ +
+                              ": no board input rail (VDD_IN, POM_5V_IN, VIN): the board total is the sum of "
+                              "the rails (" +
+                              rails + "), a lower bound of the power at the supply");
   } else {
     how = "board total = " + rails_[order_.front()] + " (the input rail; the other rails are parts of it)";
   }
@@ -232,7 +239,8 @@ ImportBatch TegrastatsParser::finish() {
   trace_.provenance.date = trace_.start_time;
   trace_.provenance.measurement = MeasurementKind::OnBoardSensor;
   // AGX Thor's VIN comes from a separate board monitor; every other rail tegrastats prints is an INA3221 channel.
-  trace_.provenance.sensor = trace_.total_channel == "VIN" ? "on-board power monitors (tegrastats)" : "INA3221 (tegrastats)";
+  trace_.provenance.sensor =
+      trace_.total_channel == "VIN" ? "on-board power monitors (tegrastats)" : "INA3221 (tegrastats)";
   trace_.provenance.note = how;
   if (!*timestamped_) {
     char seconds[32];
@@ -247,7 +255,6 @@ ImportBatch TegrastatsParser::finish() {
   return std::move(batch_);
 }
 
-
 }  // namespace
 
 int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
@@ -260,7 +267,9 @@ int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
     tokens(*line, tok);
     const bool ram = std::find(tok.begin(), tok.end(), "RAM") != tok.end();
     for (std::size_t i = 0; ram && i + 1 < tok.size(); ++i)
-      if (rail_name(tok[i]) && rail_value(tok[i + 1]).reading == Reading::Ok && tok[i] != "RAM" && tok[i] != "SWAP" && tok[i] != "IRAM") return 90;
+      if (rail_name(tok[i]) && rail_value(tok[i + 1]).reading == Reading::Ok && tok[i] != "RAM" && tok[i] != "SWAP" &&
+          tok[i] != "IRAM")
+        return 90;
     // tegrastats without rails (not run as root, or a board without monitors): still ours, so that parse() can say
     // why there is nothing to import instead of "unknown format".
     if (ram && std::find(tok.begin(), tok.end(), "CPU") != tok.end()) score = 30;
@@ -268,7 +277,8 @@ int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
   return score;
 }
 
-ImportBatch TegrastatsImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch TegrastatsImporter::parse(const std::string& path, const ImportLimits& limits,
+                                      const CancelToken& cancel) const {
   return read_tegrastats(path, {}, limits, cancel);
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "battery_view.h"
 
+#include <qcustomplot.h>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -16,7 +17,6 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
-#include <qcustomplot.h>
 #include <stdexcept>
 
 #include "device_palette.h"
@@ -65,11 +65,13 @@ BatteryView::BatteryView(QWidget* parent)
   resistance_->setToolTip(tr("Whole-pack DC internal resistance (LiPo model only)"));
   model_->addItem(tr("Constant power (the paper)"));
   model_->addItem(tr("LiPo curve + internal resistance"));
-  model_->setToolTip(tr("Constant power: t = V × capacity × depth of discharge / P. LiPo: open-circuit voltage vs state "
-                        "of charge, internal resistance and a cut-off voltage, the load drawing constant power."));
+  model_->setToolTip(
+      tr("Constant power: t = V × capacity × depth of discharge / P. LiPo: open-circuit voltage vs state "
+         "of charge, internal resistance and a cut-off voltage, the load drawing constant power."));
   mission_->setPlaceholderText(tr("none: constant load; e.g. idle:60:12,walk:30:140,kick:5:225"));
-  mission_->setToolTip(tr("Mission phases name:seconds:watts, comma separated, repeated until the pack is empty; the "
-                          "watts come on top of the computer's mean power and the extra load"));
+  mission_->setToolTip(
+      tr("Mission phases name:seconds:watts, comma separated, repeated until the pack is empty; the "
+         "watts come on top of the computer's mean power and the extra load"));
   error_->setStyleSheet(QStringLiteral("color: #b00020"));
   error_->setWordWrap(true);
   pack_label_->setWordWrap(true);
@@ -168,7 +170,8 @@ void BatteryView::restore_saved_setup() {
       remembered_ = json;
       recompute();
     } catch (const std::invalid_argument& e) {
-      error_->setText(tr("The battery setup saved in this workspace was not restored: %1").arg(QString::fromUtf8(e.what())));
+      error_->setText(
+          tr("The battery setup saved in this workspace was not restored: %1").arg(QString::fromUtf8(e.what())));
     }
   }
 }
@@ -218,7 +221,9 @@ void BatteryView::reload_presets(const QString& select, bool keep_fields) {
   int index = 0;
   for (std::size_t i = 0; i < presets_.size(); ++i) {
     const BatteryPack& p = presets_[i].pack;
-    QString text = QStringLiteral("%1 (%2 V, %3 mAh)").arg(QString::fromStdString(p.name)).arg(p.nominal_v(), 0, 'f', 1)
+    QString text = QStringLiteral("%1 (%2 V, %3 mAh)")
+                       .arg(QString::fromStdString(p.name))
+                       .arg(p.nominal_v(), 0, 'f', 1)
                        .arg(p.capacity_ah * 1000, 0, 'f', 0);
     if (presets_[i].from_workspace) text += tr(", workspace");
     preset_->addItem(text);

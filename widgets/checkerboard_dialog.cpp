@@ -61,7 +61,8 @@ CheckerboardDialog::CheckerboardDialog(const vision::TunerParams& base, QWidget*
   fov_->setDecimals(1);
   fov_->setSuffix(tr("°"));
   fov_->setValue(base.lens.fov_deg);
-  fov_->setToolTip(tr("A checkerboard does not measure where the image circle ends: the lens keeps this field of view"));
+  fov_->setToolTip(
+      tr("A checkerboard does not measure where the image circle ends: the lens keeps this field of view"));
   auto* board_row = new QHBoxLayout;
   board_row->addWidget(cols_);
   board_row->addWidget(new QLabel(tr("×")));
@@ -162,8 +163,9 @@ void CheckerboardDialog::set_images(const QStringList& paths) {
   result_.reset();
   error_.clear();
   fill_table();
-  summary_->setText(paths_.isEmpty() ? tr("Add photos of the board from many angles, filling the whole field of view.")
-                                     : tr("%n image(s), not calibrated yet.", nullptr, static_cast<int>(paths_.size())));
+  summary_->setText(paths_.isEmpty()
+                        ? tr("Add photos of the board from many angles, filling the whole field of view.")
+                        : tr("%n image(s), not calibrated yet.", nullptr, static_cast<int>(paths_.size())));
   update_buttons();
 }
 
@@ -199,10 +201,13 @@ void CheckerboardDialog::start() {
   auto cancel = cancel_;
   auto report = [this](double fraction, std::string_view step) {
     const QString text = QString::fromUtf8(step.data(), static_cast<qsizetype>(step.size()));
-    QMetaObject::invokeMethod(this, [this, fraction, text] {
-      progress_->setValue(static_cast<int>(fraction * 1000));
-      step_->setText(text);
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this,
+        [this, fraction, text] {
+          progress_->setValue(static_cast<int>(fraction * 1000));
+          step_->setText(text);
+        },
+        Qt::QueuedConnection);
   };
   watcher_->setFuture(QtConcurrent::run([images, board, model, base, cancel, report] {
     Outcome o;
@@ -242,8 +247,9 @@ void CheckerboardDialog::fill_table() {
   for (int i = 0; i < paths_.size(); ++i) {
     table_->setItem(i, kImage, item(QFileInfo(paths_[i]).fileName()));
     table_->item(i, kImage)->setToolTip(paths_[i]);
-    const vision::CalibrationImageResult* r =
-        result_ && i < static_cast<int>(result_->images.size()) ? &result_->images[static_cast<std::size_t>(i)] : nullptr;
+    const vision::CalibrationImageResult* r = result_ && i < static_cast<int>(result_->images.size())
+                                                  ? &result_->images[static_cast<std::size_t>(i)]
+                                                  : nullptr;
     const auto right = Qt::AlignRight | Qt::AlignVCenter;
     table_->setItem(i, kCorners, item(r && !r->corners.empty() ? QString::number(r->corners.size()) : "–", right));
     table_->setItem(i, kRms, item(r && r->rms_px ? QString::number(*r->rms_px, 'f', 3) : "–", right));
@@ -286,7 +292,8 @@ QString CheckerboardDialog::summary_text() const {
                   .arg(r.free_rms_px, 0, 'f', 3)
                   .arg(r.max_theta_deg, 0, 'f', 0);
   for (const auto& w : r.warnings)
-    s += "<br><span style='color:#a05000'>" + tr("Warning: %1").arg(QString::fromStdString(w).toHtmlEscaped()) + "</span>";
+    s += "<br><span style='color:#a05000'>" + tr("Warning: %1").arg(QString::fromStdString(w).toHtmlEscaped()) +
+         "</span>";
   return s;
 }
 

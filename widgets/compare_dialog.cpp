@@ -26,17 +26,22 @@ QString summary_text(const Summary& s, const std::string& unit) {
 
 QColor verdict_color(CompareVerdict v) {
   switch (v) {
-    case CompareVerdict::Regression: return QColor(0xf8, 0xd0, 0xd0);
-    case CompareVerdict::Improvement: return QColor(0xd9, 0xf2, 0xd9);
-    case CompareVerdict::NotSignificant: return QColor(0xfb, 0xef, 0xc8);
-    default: return {};
+    case CompareVerdict::Regression:
+      return QColor(0xf8, 0xd0, 0xd0);
+    case CompareVerdict::Improvement:
+      return QColor(0xd9, 0xf2, 0xd9);
+    case CompareVerdict::NotSignificant:
+      return QColor(0xfb, 0xef, 0xc8);
+    default:
+      return {};
   }
 }
 
 }  // namespace
 
 CompareDialog::CompareDialog(std::vector<FlopsRun> runs_a, std::vector<ResultSet> sets_a, std::vector<FlopsRun> runs_b,
-                             std::vector<ResultSet> sets_b, const QString& name_a, const QString& name_b, QWidget* parent)
+                             std::vector<ResultSet> sets_b, const QString& name_a, const QString& name_b,
+                             QWidget* parent)
     : QDialog(parent),
       runs_a_(std::move(runs_a)),
       runs_b_(std::move(runs_b)),
@@ -109,7 +114,9 @@ void CompareDialog::recompute() {
     const int row = shown++;
     table_->insertRow(row);
     const bool both = r.a.n > 0 && r.b.n > 0;
-    const QStringList cells{QString::fromStdString(r.measure), QString::fromStdString(r.key), summary_text(r.a, r.unit),
+    const QStringList cells{QString::fromStdString(r.measure),
+                            QString::fromStdString(r.key),
+                            summary_text(r.a, r.unit),
                             summary_text(r.b, r.unit),
                             both ? QString::asprintf("%+.1f %%", 100 * r.change) : QStringLiteral("–"),
                             both ? QString::number(r.test.p_value, 'g', 3) + (r.test.exact ? tr(" (exact)") : QString())

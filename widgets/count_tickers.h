@@ -2,8 +2,8 @@
 #pragma once
 // Axis tickers for counts (workers, tasks): tick labels "500", "10k", "1.5M" instead of "1000000" or "10⁶", so a
 // sweep from 1 to 1,024,000 workers reads at a glance on linear and on logarithmic axes.
-#include <QString>
 #include <qcustomplot.h>
+#include <QString>
 
 namespace bs::ui {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "efficiency_view.h"
 
+#include <qcustomplot.h>
 #include <QHeaderView>
 #include <QLabel>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
-#include <qcustomplot.h>
 
 namespace bs::ui {
 namespace {
@@ -34,11 +34,13 @@ EfficiencyView::EfficiencyView(QWidget* parent)
                                      tr("Supply (V)"), tr("Max current (A)"), tr("Mean current (A)"),
                                      tr("Mean power (W)"), tr("GFLOPS/W paper\npeak / (V × max I)"),
                                      tr("GFLOPS/W\npeak / mean power"), tr("Energy (J/GFLOP)\nmean power / peak")});
-  table_->horizontalHeaderItem(Paper)->setToolTip(tr("The paper's definition: peak FLOPS / (supply voltage × the "
-                                                     "largest current in the log)"));
+  table_->horizontalHeaderItem(Paper)->setToolTip(
+      tr("The paper's definition: peak FLOPS / (supply voltage × the "
+         "largest current in the log)"));
   table_->horizontalHeaderItem(AtMean)->setToolTip(tr("Peak FLOPS / mean power over the whole log"));
-  table_->horizontalHeaderItem(Energy)->setToolTip(tr("Joules per 10^9 floating-point operations at the peak rate, "
-                                                      "drawing the mean power"));
+  table_->horizontalHeaderItem(Energy)->setToolTip(
+      tr("Joules per 10^9 floating-point operations at the peak rate, "
+         "drawing the mean power"));
   table_->verticalHeader()->hide();
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -97,7 +99,8 @@ void EfficiencyView::fill_table() {
       const QString why = QString::fromStdString(flags_text(e.flags));
       const bool peak_flagged = !e.peak.flags.empty();
       const bool power_flagged = e.flags.size() > e.peak.flags.size();  // the log's flags follow the peak's
-      for (int col : {int(Peak), int(MaxCurrent), int(MeanCurrent), int(MeanPower), int(Paper), int(AtMean), int(Energy)}) {
+      for (int col :
+           {int(Peak), int(MaxCurrent), int(MeanCurrent), int(MeanPower), int(Paper), int(AtMean), int(Energy)}) {
         const bool ratio = col == Paper || col == AtMean || col == Energy;
         if (!ratio && !(col == Peak ? peak_flagged : power_flagged)) continue;
         QTableWidgetItem* item = table_->item(static_cast<int>(r), col);
@@ -114,7 +117,8 @@ void EfficiencyView::fill_plot() {
   plot_->clearPlottables();
   const int n = static_cast<int>(rows_.size());
   QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
-  for (int i = 0; i < n; ++i) ticker->addTick(i + 1, QString::fromStdString(rows_[static_cast<std::size_t>(i)].peak.platform));
+  for (int i = 0; i < n; ++i)
+    ticker->addTick(i + 1, QString::fromStdString(rows_[static_cast<std::size_t>(i)].peak.platform));
   plot_->xAxis->setTicker(ticker);
   plot_->xAxis->setSubTicks(false);
   plot_->xAxis->setTickLength(0, 4);

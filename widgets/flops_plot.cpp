@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flops_plot.h"
 
+#include <qcustomplot.h>
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QPushButton>
@@ -8,7 +9,6 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
-#include <qcustomplot.h>
 
 #include "analysis/peaks/flops.h"
 #include "analysis/stats/units.h"
@@ -22,9 +22,11 @@ namespace {
 QString series_name(const FlopsRun& r) {
   // A Google Benchmark sweep has no D: its variant (family and counter) names it.
   if (r.dims <= 0)
-    return QStringLiteral("%1 · %2 (%3)").arg(QString::fromStdString(r.device), QString::fromStdString(r.backend),
-                                              QString::fromStdString(r.variant));
-  QString name = QStringLiteral("%1 · %2 · D=%3").arg(QString::fromStdString(r.device), QString::fromStdString(r.backend)).arg(r.dims);
+    return QStringLiteral("%1 · %2 (%3)")
+        .arg(QString::fromStdString(r.device), QString::fromStdString(r.backend), QString::fromStdString(r.variant));
+  QString name = QStringLiteral("%1 · %2 · D=%3")
+                     .arg(QString::fromStdString(r.device), QString::fromStdString(r.backend))
+                     .arg(r.dims);
   if (r.variant != "paper") name += QStringLiteral(" (%1)").arg(QString::fromStdString(r.variant));
   return name;
 }
@@ -89,16 +91,20 @@ bool FlopsPlot::log_y() const { return plot_->yAxis->scaleType() == QCPAxis::stL
 void FlopsPlot::set_log_x(bool on) {
   log_x_box_->setChecked(on);
   plot_->xAxis->setScaleType(on ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
-  if (on) plot_->xAxis->setTicker(QSharedPointer<CountTickerLog>::create());
-  else plot_->xAxis->setTicker(QSharedPointer<CountTicker>::create());
+  if (on)
+    plot_->xAxis->setTicker(QSharedPointer<CountTickerLog>::create());
+  else
+    plot_->xAxis->setTicker(QSharedPointer<CountTicker>::create());
   reset_view();
 }
 
 void FlopsPlot::set_log_y(bool on) {
   log_y_box_->setChecked(on);
   plot_->yAxis->setScaleType(on ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
-  if (on) plot_->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>::create());
-  else plot_->yAxis->setTicker(QSharedPointer<QCPAxisTicker>::create());
+  if (on)
+    plot_->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>::create());
+  else
+    plot_->yAxis->setTicker(QSharedPointer<QCPAxisTicker>::create());
   reset_view();
 }
 
@@ -170,9 +176,9 @@ void FlopsPlot::rebuild() {
     g->setPen(pen);
     // Colour is the device, line style D, and a sparse marker along the curve the backend: the same device's CUDA
     // and OpenCL curves (one colour, one D) are told apart, in the legend too.
-    g->setScatterStyle(QCPScatterStyle(static_cast<QCPScatterStyle::ScatterShape>(
-                                           backend_marker_shape(QString::fromStdString(run.backend))),
-                                       color, Qt::white, 6));
+    g->setScatterStyle(QCPScatterStyle(
+        static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(QString::fromStdString(run.backend))), color,
+        Qt::white, 6));
     g->setScatterSkip(std::max(0, static_cast<int>(keys.size()) / 8 - 1));
     g->setName(series_name(run));
     series_.push_back({g, stored});
@@ -182,21 +188,22 @@ void FlopsPlot::rebuild() {
       QCPGraph* marker = plot_->addGraph();
       marker->setData({static_cast<double>(peak->workers)}, {peak->flops / scale_}, true);
       marker->setLineStyle(QCPGraph::lsNone);
-      marker->setScatterStyle(QCPScatterStyle(static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(
-                                                  QString::fromStdString(run.backend))),
-                                              color.darker(130), color, 9));
+      marker->setScatterStyle(QCPScatterStyle(
+          static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(QString::fromStdString(run.backend))),
+          color.darker(130), color, 9));
       marker->removeFromLegend();
       const std::vector<PeakRow> checked = peak_table(std::span<const FlopsRun>(&run, 1));
-      peaks.push_back({peak->flops, static_cast<double>(peak->workers), color, !checked.empty() && !checked.front().flags.empty()});
+      peaks.push_back(
+          {peak->flops, static_cast<double>(peak->workers), color, !checked.empty() && !checked.front().flags.empty()});
     }
   }
   plot_->legend->setVisible(!series_.empty());
   // Labels in order of peak height: where two collide, the higher peak keeps its label.
   std::stable_sort(peaks.begin(), peaks.end(), [](const PeakMark& a, const PeakMark& b) { return a.flops > b.flops; });
   for (const PeakMark& p : peaks)
-    overlay_->add_peak_label(p.workers, p.flops / scale_,
-                             (p.flagged ? QStringLiteral("⚠ ") : QString()) + QString::fromStdString(format_si(p.flops, "FLOPS")),
-                             p.color);
+    overlay_->add_peak_label(
+        p.workers, p.flops / scale_,
+        (p.flagged ? QStringLiteral("⚠ ") : QString()) + QString::fromStdString(format_si(p.flops, "FLOPS")), p.color);
   reset_view();
 }
 
@@ -219,14 +226,15 @@ QString FlopsPlot::read_out_at(const QPointF& pixel) const {
       const int e = si_exponent(f.mean);
       const double sc = std::pow(10.0, e);
       const QString unit = QString::fromUtf8(si_prefix(e).data()) + "FLOPS";
-      text = QStringLiteral("%1\n%2 on %3, %4\nWorkers: %L5\n%6")
-                 .arg(QString::fromStdString(s.run->run.device), QString::fromStdString(s.run->run.backend),
-                      QString::fromStdString(s.run->run.platform))
-                 .arg(s.run->run.dims > 0 ? QStringLiteral("D = %1").arg(s.run->run.dims)
-                                          : QString::fromStdString(s.run->run.variant))
-                 .arg(static_cast<qlonglong>(curve[index].workers))
-                 .arg(f.n > 1 ? QString::fromStdString(format_mean_sd(f.mean / sc, f.sd / sc, f.n, unit.toStdString(), 3))
-                              : QStringLiteral("%1 %2 (n = 1)").arg(f.mean / sc, 0, 'f', 3).arg(unit));
+      text =
+          QStringLiteral("%1\n%2 on %3, %4\nWorkers: %L5\n%6")
+              .arg(QString::fromStdString(s.run->run.device), QString::fromStdString(s.run->run.backend),
+                   QString::fromStdString(s.run->run.platform))
+              .arg(s.run->run.dims > 0 ? QStringLiteral("D = %1").arg(s.run->run.dims)
+                                       : QString::fromStdString(s.run->run.variant))
+              .arg(static_cast<qlonglong>(curve[index].workers))
+              .arg(f.n > 1 ? QString::fromStdString(format_mean_sd(f.mean / sc, f.sd / sc, f.n, unit.toStdString(), 3))
+                           : QStringLiteral("%1 %2 (n = 1)").arg(f.mean / sc, 0, 'f', 3).arg(unit));
     }
   }
   return text;
@@ -234,8 +242,10 @@ QString FlopsPlot::read_out_at(const QPointF& pixel) const {
 
 void FlopsPlot::on_mouse_move(QMouseEvent* event) {
   const QString text = read_out_at(event->position());
-  if (text.isEmpty()) QToolTip::hideText();
-  else QToolTip::showText(event->globalPosition().toPoint(), text, plot_);
+  if (text.isEmpty())
+    QToolTip::hideText();
+  else
+    QToolTip::showText(event->globalPosition().toPoint(), text, plot_);
 }
 
 }  // namespace bs::ui

@@ -52,11 +52,16 @@ cv::Vec3i rgb_at(const cv::Mat& bgr, int x, int y) {
 
 QString method_name(vision::DemosaicMethod m) {
   switch (m) {
-    case vision::DemosaicMethod::Bilinear: return QObject::tr("bilinear");
-    case vision::DemosaicMethod::MalvarHeCutler: return QObject::tr("Malvar-He-Cutler");
-    case vision::DemosaicMethod::OpenCvBilinear: return QObject::tr("OpenCV bilinear");
-    case vision::DemosaicMethod::OpenCvEdgeAware: return QObject::tr("OpenCV edge-aware");
-    case vision::DemosaicMethod::OpenCvVng: return QObject::tr("OpenCV VNG");
+    case vision::DemosaicMethod::Bilinear:
+      return QObject::tr("bilinear");
+    case vision::DemosaicMethod::MalvarHeCutler:
+      return QObject::tr("Malvar-He-Cutler");
+    case vision::DemosaicMethod::OpenCvBilinear:
+      return QObject::tr("OpenCV bilinear");
+    case vision::DemosaicMethod::OpenCvEdgeAware:
+      return QObject::tr("OpenCV edge-aware");
+    case vision::DemosaicMethod::OpenCvVng:
+      return QObject::tr("OpenCV VNG");
   }
   return {};
 }
@@ -95,8 +100,9 @@ FrameTriptych::FrameTriptych(QWidget* parent)
   controls->addWidget(full_range_);
   controls->addSpacing(16);
   overlay_box_->setChecked(true);
-  overlay_box_->setToolTip(tr("On the fisheye panels: the image circle of the lens's field of view (yellow) and "
-                              "the border of the reprojected view (cyan)"));
+  overlay_box_->setToolTip(
+      tr("On the fisheye panels: the image circle of the lens's field of view (yellow) and "
+         "the border of the reprojected view (cyan)"));
   controls->addWidget(overlay_box_);
   controls->addStretch(1);
 
@@ -128,9 +134,8 @@ FrameTriptych::FrameTriptych(QWidget* parent)
   layout->addLayout(row, 1);
   layout->addWidget(inspector_);
 
-  connect(method_box_, &QComboBox::currentIndexChanged, this, [this] {
-    set_demosaic_method(static_cast<vision::DemosaicMethod>(method_box_->currentData().toInt()));
-  });
+  connect(method_box_, &QComboBox::currentIndexChanged, this,
+          [this] { set_demosaic_method(static_cast<vision::DemosaicMethod>(method_box_->currentData().toInt())); });
   connect(low_box_, &QSpinBox::valueChanged, this, [this](int v) { set_window(v, std::max(v + 1, window_high_)); });
   connect(high_box_, &QSpinBox::valueChanged, this, [this](int v) { set_window(std::min(window_low_, v - 1), v); });
   connect(full_range_, &QPushButton::clicked, this,
@@ -188,15 +193,16 @@ void FrameTriptych::set_frame(const Frame& frame) {
     low_box_->setValue(0);
     high_box_->setValue(top);
   }
-  for (QWidget* w : std::initializer_list<QWidget*>{low_box_, high_box_, full_range_, overlay_box_}) w->setEnabled(true);
+  for (QWidget* w : std::initializer_list<QWidget*>{low_box_, high_box_, full_range_, overlay_box_})
+    w->setEnabled(true);
   method_box_->setEnabled(frame_.is_mosaic());
   QString banner;
   if (frame_.synthetic)
     banner = tr("<b>Synthetic capture</b>: a test chart rendered through a lens model, not a camera image. ");
   banner += fl.from_frame ? tr("Lens: recorded with the frame (%1, %2°, r<sub>pp</sub> = %3 mrad/px).")
-                                .arg(QString::fromUtf8(vision::to_string(lens_.type).data()))
-                                .arg(lens_.fov_deg, 0, 'g', 4)
-                                .arg(lens_.r_pp * 1000, 0, 'f', 4) +
+                                    .arg(QString::fromUtf8(vision::to_string(lens_.type).data()))
+                                    .arg(lens_.fov_deg, 0, 'g', 4)
+                                    .arg(lens_.r_pp * 1000, 0, 'f', 4) +
                                 tr(" Obtained by: %1.").arg(QString::fromStdString(vision::describe(lens_.calibration)))
                           : tr("Lens: none recorded with the frame; showing the paper's 195° equidistant lens.");
   banner_->setText(banner);
@@ -342,8 +348,7 @@ std::array<QImage, 3> FrameTriptych::panel_images() const {
   std::array<QImage, 3> out;
   if (images_.demosaiced.empty()) return out;
   const cv::Mat* mats[] = {&images_.mosaic, &images_.demosaiced, &images_.reprojected};
-  for (std::size_t i = 0; i < 3; ++i)
-    out[i] = to_qimage(vision::window_to_8bit(*mats[i], window_low_, window_high_));
+  for (std::size_t i = 0; i < 3; ++i) out[i] = to_qimage(vision::window_to_8bit(*mats[i], window_low_, window_high_));
   return out;
 }
 
@@ -381,8 +386,8 @@ std::array<QString, 3> FrameTriptych::captions() const {
   const QString a = frame_.is_mosaic()
                         ? tr("(a) Raw Bayer mosaic (%1, %2)").arg(QString::fromStdString(frame_.pattern), bits)
                         : tr("(a) Raw image as grey (%1)").arg(bits);
-  const QString b = frame_.is_mosaic() ? tr("(b) Demosaiced (%1)").arg(method_name(method_))
-                                       : tr("(b) Colour (no mosaic)");
+  const QString b =
+      frame_.is_mosaic() ? tr("(b) Demosaiced (%1)").arg(method_name(method_)) : tr("(b) Colour (no mosaic)");
   const QString c = tr("(c) Reprojected (%1° rectilinear)").arg(view_.fov_deg, 0, 'g', 4);
   return {a, b, c};
 }
@@ -408,8 +413,8 @@ PixelInspection FrameTriptych::inspect(int pane, QPointF q) const {
     r.fisheye_exact = cv::Point2d(f.x, f.y);
     r.output_exact = vision::output_of(lens_, view_, f.x, f.y);
     if (r.output_exact)
-      r.output = cv::Point(static_cast<int>(std::lround(r.output_exact->x)),
-                           static_cast<int>(std::lround(r.output_exact->y)));
+      r.output =
+          cv::Point(static_cast<int>(std::lround(r.output_exact->x)), static_cast<int>(std::lround(r.output_exact->y)));
   }
   if (r.fisheye) {
     const int x = r.fisheye->x, y = r.fisheye->y;
@@ -420,7 +425,7 @@ PixelInspection FrameTriptych::inspect(int pane, QPointF q) const {
       else
         r.channel = 'Y';
     } else {
-      r.raw = images_.mosaic.empty() ? -1
+      r.raw = images_.mosaic.empty()             ? -1
               : images_.mosaic.depth() == CV_16U ? images_.mosaic.at<std::uint16_t>(y, x)
                                                  : images_.mosaic.at<std::uint8_t>(y, x);
       r.channel = 'Y';
@@ -457,9 +462,13 @@ void FrameTriptych::show_inspection(int pane, QPointF image_point) {
   else
     text += tr("output: this point is not in the reprojected view");
   inspector_->setText(text);
-  const std::optional<QPointF> fish = r.fisheye_exact ? std::optional<QPointF>(QPointF(r.fisheye_exact->x + 0.5, r.fisheye_exact->y + 0.5)) : std::nullopt;
-  const std::optional<QPointF> out = r.output_exact ? std::optional<QPointF>(QPointF(r.output_exact->x + 0.5, r.output_exact->y + 0.5)) : std::nullopt;
-  for (int i = 0; i < 3; ++i) panes_[static_cast<std::size_t>(i)]->set_marker(i == pane ? std::nullopt : (i == 2 ? out : fish));
+  const std::optional<QPointF> fish =
+      r.fisheye_exact ? std::optional<QPointF>(QPointF(r.fisheye_exact->x + 0.5, r.fisheye_exact->y + 0.5))
+                      : std::nullopt;
+  const std::optional<QPointF> out =
+      r.output_exact ? std::optional<QPointF>(QPointF(r.output_exact->x + 0.5, r.output_exact->y + 0.5)) : std::nullopt;
+  for (int i = 0; i < 3; ++i)
+    panes_[static_cast<std::size_t>(i)]->set_marker(i == pane ? std::nullopt : (i == 2 ? out : fish));
   emit cursor_moved(r.fisheye_exact ? QPointF(r.fisheye_exact->x, r.fisheye_exact->y) : QPointF(-1, -1),
                     r.output_exact ? QPointF(r.output_exact->x, r.output_exact->y) : QPointF(-1, -1));
 }

@@ -32,11 +32,11 @@ class ImagePane;
 
 // What the inspector reports for one cursor position.
 struct PixelInspection {
-  std::optional<cv::Point> fisheye;   // source pixel (column, row) in the capture
-  std::optional<cv::Point> output;    // pixel (column, row) in the reprojected view
+  std::optional<cv::Point> fisheye;                        // source pixel (column, row) in the capture
+  std::optional<cv::Point> output;                         // pixel (column, row) in the reprojected view
   std::optional<cv::Point2d> fisheye_exact, output_exact;  // before rounding to a pixel
-  int raw = -1;                       // the recorded sample at `fisheye`, in counts
-  char channel = '?';                 // which colour the sensor measures there: 'R', 'G', 'B', or 'Y' (grey)
+  int raw = -1;                                            // the recorded sample at `fisheye`, in counts
+  char channel = '?';                    // which colour the sensor measures there: 'R', 'G', 'B', or 'Y' (grey)
   std::optional<cv::Vec3i> fisheye_rgb;  // demosaiced colour at `fisheye` (R, G, B), counts
   std::optional<cv::Vec3i> output_rgb;   // reprojected colour at `output` (R, G, B), counts
 };

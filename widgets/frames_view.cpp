@@ -36,7 +36,8 @@ void FramesView::set_workspace(const Workspace* ws) {
   list_->clear();
   for (const StoredFrame& s : frames_) {
     const Frame& f = s.frame;
-    const QString kind = f.is_mosaic() ? QString::fromStdString(f.pattern) : (f.channels == 3 ? tr("colour") : tr("grey"));
+    const QString kind =
+        f.is_mosaic() ? QString::fromStdString(f.pattern) : (f.channels == 3 ? tr("colour") : tr("grey"));
     auto* item = new QListWidgetItem(
         tr("%1\n%2×%3 px, %4, %5-bit\n%6, %7")
             .arg(QString::fromStdString(f.label))
@@ -50,8 +51,9 @@ void FramesView::set_workspace(const Workspace* ws) {
     item->setToolTip(QString::fromStdString(s.path));
   }
   if (frames_.empty()) {
-    triptych_->clear(tr("This workspace has no frames. Import a capture: a .raw file with its JSON sidecar, PGM/PPM, "
-                        "PNG or TIFF (File > Import files, or benchscope-cli import WS FILE.raw)."));
+    triptych_->clear(
+        tr("This workspace has no frames. Import a capture: a .raw file with its JSON sidecar, PGM/PPM, "
+           "PNG or TIFF (File > Import files, or benchscope-cli import WS FILE.raw)."));
     return;
   }
   list_->setCurrentRow(0);
@@ -88,8 +90,8 @@ void FramesView::export_figure_dialog() {
     QMessageBox::information(this, tr("Export Figure 3"), tr("Open the Frames tab and select a frame first."));
     return;
   }
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Figure 3 (triptych)"), QStringLiteral("figure3.pdf"),
-                                                    tr("PDF (*.pdf);;PNG image (*.png)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Figure 3 (triptych)"), QStringLiteral("figure3.pdf"), tr("PDF (*.pdf);;PNG image (*.png)"));
   if (path.isEmpty()) return;
   QString error;
   if (!export_figure(path, &error)) QMessageBox::warning(this, tr("Export Figure 3"), error);

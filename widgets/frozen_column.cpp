@@ -8,7 +8,8 @@
 
 namespace bs::ui {
 
-FrozenFirstColumn::FrozenFirstColumn(QTableView* table) : QObject(table), table_(table), frozen_(new QTableView(table)) {
+FrozenFirstColumn::FrozenFirstColumn(QTableView* table)
+    : QObject(table), table_(table), frozen_(new QTableView(table)) {
   frozen_->setObjectName(QStringLiteral("frozen-first-column"));
   frozen_->setModel(table->model());
   frozen_->setSelectionModel(table->selectionModel());
@@ -19,7 +20,8 @@ FrozenFirstColumn::FrozenFirstColumn(QTableView* table) : QObject(table), table_
   frozen_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   frozen_->setVerticalScrollMode(table->verticalScrollMode());
   frozen_->setEditTriggers(table->editTriggers());
-  frozen_->setStyleSheet(QStringLiteral("QTableView#frozen-first-column { border: none; border-right: 1px solid palette(mid); }"));
+  frozen_->setStyleSheet(
+      QStringLiteral("QTableView#frozen-first-column { border: none; border-right: 1px solid palette(mid); }"));
   // Sorting from the overlay's header sorts the table (they share the model).
   frozen_->horizontalHeader()->setSectionsClickable(true);
   connect(frozen_->horizontalHeader(), &QHeaderView::sectionClicked, table, [table](int section) {
@@ -37,9 +39,12 @@ FrozenFirstColumn::FrozenFirstColumn(QTableView* table) : QObject(table), table_
           [this](int section, int, int size) { frozen_->setRowHeight(section, size); });
   // A double-click on a name in the overlay is a double-click on the table's cell (QTableWidget turns it into
   // cellDoubleClicked).
-  connect(frozen_, &QAbstractItemView::doubleClicked, table, [table](const QModelIndex& index) { emit table->doubleClicked(index); });
-  connect(frozen_->verticalScrollBar(), &QAbstractSlider::valueChanged, table->verticalScrollBar(), &QAbstractSlider::setValue);
-  connect(table->verticalScrollBar(), &QAbstractSlider::valueChanged, frozen_->verticalScrollBar(), &QAbstractSlider::setValue);
+  connect(frozen_, &QAbstractItemView::doubleClicked, table,
+          [table](const QModelIndex& index) { emit table->doubleClicked(index); });
+  connect(frozen_->verticalScrollBar(), &QAbstractSlider::valueChanged, table->verticalScrollBar(),
+          &QAbstractSlider::setValue);
+  connect(table->verticalScrollBar(), &QAbstractSlider::valueChanged, frozen_->verticalScrollBar(),
+          &QAbstractSlider::setValue);
   connect(table->model(), &QAbstractItemModel::modelReset, this, &FrozenFirstColumn::sync_columns);
   connect(table->model(), &QAbstractItemModel::columnsInserted, this, &FrozenFirstColumn::sync_columns);
   connect(table->model(), &QAbstractItemModel::layoutChanged, this, &FrozenFirstColumn::sync_columns);
@@ -67,8 +72,8 @@ void FrozenFirstColumn::sync_columns() {
 }
 
 bool FrozenFirstColumn::eventFilter(QObject* watched, QEvent* event) {
-  if (watched == table_ && (event->type() == QEvent::Resize || event->type() == QEvent::LayoutRequest ||
-                            event->type() == QEvent::Show))
+  if (watched == table_ &&
+      (event->type() == QEvent::Resize || event->type() == QEvent::LayoutRequest || event->type() == QEvent::Show))
     sync_columns();
   return QObject::eventFilter(watched, event);
 }

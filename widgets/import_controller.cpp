@@ -34,13 +34,20 @@ ImportReport report_of(const ImportResult& result) {
   report.cancelled = result.cancelled;
   for (const FileOutcome& f : result.files) {
     switch (f.kind) {
-      case FileOutcome::Kind::Imported: ++report.imported; break;
-      case FileOutcome::Kind::Duplicate: report.skipped << file_name(f.path) + ": " + duplicate_reason(f); break;
+      case FileOutcome::Kind::Imported:
+        ++report.imported;
+        break;
+      case FileOutcome::Kind::Duplicate:
+        report.skipped << file_name(f.path) + ": " + duplicate_reason(f);
+        break;
       case FileOutcome::Kind::NotData:
         report.skipped << file_name(f.path) + ": " + QString::fromStdString(f.reason);
         break;
-      case FileOutcome::Kind::Failed: report.failures << QString::fromStdString(f.reason); break;
-      case FileOutcome::Kind::NotReached: break;
+      case FileOutcome::Kind::Failed:
+        report.failures << QString::fromStdString(f.reason);
+        break;
+      case FileOutcome::Kind::NotReached:
+        break;
     }
   }
   return report;
@@ -50,15 +57,18 @@ ImportReport report_of(const ImportResult& result) {
 
 ImportMessage import_message(const ImportReport& r) {
   ImportMessage m;
-  m.headline = QObject::tr("Imported %n file(s)", nullptr, r.imported) +
-               (r.skipped.isEmpty() ? QString() : QObject::tr(", skipped %n", nullptr, static_cast<int>(r.skipped.size()))) +
-               (r.failures.isEmpty() ? QString() : QObject::tr(", %n failed", nullptr, static_cast<int>(r.failures.size()))) +
-               (r.cancelled ? QObject::tr(" (cancelled)") : QString());
+  m.headline =
+      QObject::tr("Imported %n file(s)", nullptr, r.imported) +
+      (r.skipped.isEmpty() ? QString() : QObject::tr(", skipped %n", nullptr, static_cast<int>(r.skipped.size()))) +
+      (r.failures.isEmpty() ? QString() : QObject::tr(", %n failed", nullptr, static_cast<int>(r.failures.size()))) +
+      (r.cancelled ? QObject::tr(" (cancelled)") : QString());
   QStringList all;
   for (const QString& f : r.failures) all << QObject::tr("failed: %1").arg(f);
   for (const QString& s : r.skipped) all << QObject::tr("skipped %1").arg(s);
-  if (all.size() <= kFewProblems) m.lines = all;
-  else m.details = all.join('\n');
+  if (all.size() <= kFewProblems)
+    m.lines = all;
+  else
+    m.details = all.join('\n');
   return m;
 }
 
@@ -109,14 +119,20 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
   };
   auto where = std::make_shared<Where>();
   auto show = [guard, where](int file, int total, int permille, const QString& name, const QString& step) {
-    QMetaObject::invokeMethod(guard.data(), [guard, file, total, permille, name, step] {
-      if (!guard) return;
-      guard->setMaximum(total * 1000);
-      guard->setValue(std::min(total * 1000, file * 1000 + std::max(permille, 0)));
-      guard->setLabelText(QObject::tr("File %1 of %2\n%3%4")
-                              .arg(std::min(file + 1, total)).arg(total).arg(QFileInfo(name).fileName())
-                              .arg(step.isEmpty() ? QString() : QObject::tr(" — %1 %2 %").arg(step).arg(permille / 10)));
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        guard.data(),
+        [guard, file, total, permille, name, step] {
+          if (!guard) return;
+          guard->setMaximum(total * 1000);
+          guard->setValue(std::min(total * 1000, file * 1000 + std::max(permille, 0)));
+          guard->setLabelText(
+              QObject::tr("File %1 of %2\n%3%4")
+                  .arg(std::min(file + 1, total))
+                  .arg(total)
+                  .arg(QFileInfo(name).fileName())
+                  .arg(step.isEmpty() ? QString() : QObject::tr(" — %1 %2 %").arg(step).arg(permille / 10)));
+        },
+        Qt::QueuedConnection);
   };
   auto progress = [where, show](int done, int total, const QString& file) {
     where->file = done;
@@ -128,7 +144,8 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
   cancel->set_progress([where, show](double fraction, std::string_view step) {
     const int permille = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 1000);
     if (where->permille.exchange(permille) == permille) return;  // one queued update per thousandth, not per call
-    show(where->file, where->total, permille, where->name, QString::fromUtf8(step.data(), static_cast<qsizetype>(step.size())));
+    show(where->file, where->total, permille, where->name,
+         QString::fromUtf8(step.data(), static_cast<qsizetype>(step.size())));
   });
   auto* watcher = new QFutureWatcher<ImportReport>(this);
   connect(watcher, &QFutureWatcher<ImportReport>::finished, this, [this, watcher, dialog] {
@@ -138,10 +155,10 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
     running_ = false;
     emit finished(report);
   });
-  watcher->setFuture(QtConcurrent::run([workspace_path, paths, cancel, progress, frames = frame_storage_,
-                                        geometry = raw_geometry_] {
-    return import_now(workspace_path, paths, *cancel, progress, frames, geometry);
-  }));
+  watcher->setFuture(
+      QtConcurrent::run([workspace_path, paths, cancel, progress, frames = frame_storage_, geometry = raw_geometry_] {
+        return import_now(workspace_path, paths, *cancel, progress, frames, geometry);
+      }));
 }
 
 }  // namespace bs::ui

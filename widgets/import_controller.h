@@ -25,9 +25,9 @@ struct ImportReport {
 // The words shown after an import. With few skipped or failed files each one's reason is in `lines` (shown in
 // the message itself); with many, `lines` is empty and `details` lists them all.
 struct ImportMessage {
-  QString headline;  // "Imported 3 files, skipped 1"
-  QStringList lines; // "skipped nuc.csv: already imported on 2026-11-20 (same content)", "failed: bad.json:3: ..."
-  QString details;   // every skip and failure, one per line; empty when `lines` says it all
+  QString headline;   // "Imported 3 files, skipped 1"
+  QStringList lines;  // "skipped nuc.csv: already imported on 2026-11-20 (same content)", "failed: bad.json:3: ..."
+  QString details;    // every skip and failure, one per line; empty when `lines` says it all
 };
 ImportMessage import_message(const ImportReport& report);
 

@@ -29,17 +29,20 @@ class NumericItem : public QTableWidgetItem {
 };
 
 QString provenance_tip(const DnnRun& r) {
-  QString tip = QObject::tr("%1, %2 on %3\nmodel hash %4\n%5 FLOPs per forward pass (OpenCV's count: %6)\n%7\n%8, %9")
-                    .arg(QString::fromStdString(r.model), QString::fromStdString(r.backend),
-                         QString::fromStdString(r.device), QString::fromStdString(r.model_hash))
-                    .arg(static_cast<double>(r.flops), 0, 'g', 4)
-                    .arg(static_cast<double>(r.opencv_flops), 0, 'g', 4)
-                    .arg(QString::fromStdString(r.provenance.note), QString::fromUtf8(to_string(r.provenance.origin).data()),
-                         QString::fromStdString(r.provenance.host + " " + r.provenance.date));
+  QString tip =
+      QObject::tr("%1, %2 on %3\nmodel hash %4\n%5 FLOPs per forward pass (OpenCV's count: %6)\n%7\n%8, %9")
+          .arg(QString::fromStdString(r.model), QString::fromStdString(r.backend), QString::fromStdString(r.device),
+               QString::fromStdString(r.model_hash))
+          .arg(static_cast<double>(r.flops), 0, 'g', 4)
+          .arg(static_cast<double>(r.opencv_flops), 0, 'g', 4)
+          .arg(QString::fromStdString(r.provenance.note), QString::fromUtf8(to_string(r.provenance.origin).data()),
+               QString::fromStdString(r.provenance.host + " " + r.provenance.date));
   if (r.mean_power_w) tip += QObject::tr("\nmean power during the timed passes: %1 W").arg(*r.mean_power_w, 0, 'f', 2);
   if (r.architecture_only)
-    tip = QObject::tr("Built-in architecture with random weights: this row times the network's cost; it detects "
-                      "nothing.\n\n") + tip;
+    tip = QObject::tr(
+              "Built-in architecture with random weights: this row times the network's cost; it detects "
+              "nothing.\n\n") +
+          tip;
   return tip;
 }
 
@@ -86,7 +89,8 @@ void InferenceTable::set_runs(std::vector<DnnRun> runs) {
     const DnnRun& r = runs_[static_cast<std::size_t>(i)];
     const QString tip = provenance_tip(r);
     for (int c = 0; c < static_cast<int>(t.header.size()); ++c) {
-      auto* item = new NumericItem(QString::fromStdString(t.rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)]));
+      auto* item =
+          new NumericItem(QString::fromStdString(t.rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)]));
       item->setToolTip(tip);
       if (c < columns) {
         const auto col = static_cast<InferenceColumn>(c);

@@ -5,11 +5,11 @@
 #include <QFormLayout>
 #include <QFutureWatcher>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QHeaderView>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QtConcurrent>
@@ -18,9 +18,9 @@
 
 #include "analysis/peaks/ceiling_check.h"
 #include "analysis/peaks/flops.h"
-#include "analysis/stats/stats.h"
-#include "analysis/power/sweep_energy.h"
 #include "analysis/peaks/plausibility.h"
+#include "analysis/power/sweep_energy.h"
+#include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
 #include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
@@ -56,8 +56,9 @@ KernelRunner::KernelRunner(QWidget* parent)
   repeats_->setRange(1, 100);
   repeats_->setValue(3);
   repeats_->setToolTip(tr("Timings per point; the plot shows mean ± SD"));
-  workers_->setToolTip(tr("Worker counts: 1,2,4,8 or start:stop:step such as 256:1024000:256 (paper GPUs) or "
-                          "1:4096:32 (paper CPUs)"));
+  workers_->setToolTip(
+      tr("Worker counts: 1,2,4,8 or start:stop:step such as 256:1024000:256 (paper GPUs) or "
+         "1:4096:32 (paper CPUs)"));
   dims_->setToolTip(tr("D values: 2D points per worker (paper: 1, 2, 4)"));
   variant_->addItem(tr("throughput (fills the vector units)"), "throughput");
   variant_->addItem(tr("paper (one task per worker)"), "paper");
@@ -66,9 +67,10 @@ KernelRunner::KernelRunner(QWidget* parent)
   ceilings_->setWordWrap(true);
   ceilings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   ceilings_->setObjectName("ceilingsLabel");
-  measure_ceilings_->setToolTip(tr("Measure this CPU's empirical ceilings now (~5 s): the rotation kernel's instruction "
-                                   "mix and plain FMA with enough independent chains, and the memory bandwidth. Stored "
-                                   "per host and in the workspace (peak table, roofline)"));
+  measure_ceilings_->setToolTip(
+      tr("Measure this CPU's empirical ceilings now (~5 s): the rotation kernel's instruction "
+         "mix and plain FMA with enough independent chains, and the memory bandwidth. Stored "
+         "per host and in the workspace (peak table, roofline)"));
   details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   stop_->setEnabled(false);
   run_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
@@ -138,7 +140,8 @@ void KernelRunner::populate() {
   ceiling_set_ = kernels::cached_ceilings(cpu_);  // measured earlier on this host: no re-measuring on every start
   backend_->clear();
   for (const auto& b : backends_)
-    backend_->addItem(QStringLiteral("%1 — %2").arg(QString::fromStdString(b.label), QString::fromStdString(b.device_name)));
+    backend_->addItem(
+        QStringLiteral("%1 — %2").arg(QString::fromStdString(b.label), QString::fromStdString(b.device_name)));
   show_backend_details();
 }
 
@@ -173,11 +176,11 @@ void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
   const kernels::CeilingSet& c = *ceiling_set_;
   const Summary mix = summarize(c.rotation_mix.values);
   const auto own = compare_to_ceilings(mix.mean, c.computed_peak_flops, std::nullopt, "The rotation-mix ceiling");
-  QString text = tr("<small>rotation mix %1 ± %2 (n = %3) = %4 of the computed peak")
-                     .arg(QString::fromStdString(format_si(mix.mean, "FLOPS")),
-                          QString::fromStdString(format_si(mix.sd, "FLOPS")))
-                     .arg(mix.n)
-                     .arg(QString::fromStdString(fraction_text(own.fraction_of_peak, !own.flags.empty())));
+  QString text =
+      tr("<small>rotation mix %1 ± %2 (n = %3) = %4 of the computed peak")
+          .arg(QString::fromStdString(format_si(mix.mean, "FLOPS")), QString::fromStdString(format_si(mix.sd, "FLOPS")))
+          .arg(mix.n)
+          .arg(QString::fromStdString(fraction_text(own.fraction_of_peak, !own.flags.empty())));
   if (c.fma.measured())
     text += tr("; FMA %1").arg(QString::fromStdString(format_si(summarize(c.fma.values).mean, "FLOPS")));
   if (c.bandwidth.measured())
@@ -198,9 +201,9 @@ void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
     merge_flags(flags, cmp.flags);
   }
   ceilings_->setText(text + QStringLiteral("</small>"));
-  ceilings_->setToolTip(QString::fromStdString(
-      (flags.empty() ? std::string() : flags_text(flags) + "\n\n") + c.rotation_mix.how + "\n" + c.fma.how +
-      (c.bandwidth.measured() ? "\n" + c.bandwidth.how : std::string())));
+  ceilings_->setToolTip(QString::fromStdString((flags.empty() ? std::string() : flags_text(flags) + "\n\n") +
+                                               c.rotation_mix.how + "\n" + c.fma.how +
+                                               (c.bandwidth.measured() ? "\n" + c.bandwidth.how : std::string())));
 }
 
 void KernelRunner::measure_ceilings() {
@@ -242,8 +245,11 @@ void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
   energy_->setRowCount(static_cast<int>(points.size()));
   for (std::size_t r = 0; r < points.size(); ++r) {
     const PointEnergy& p = points[r];
-    const QString texts[] = {QString::number(p.dims), QString::number(p.workers), QString::number(p.gflops, 'f', 2),
-                             QString::number(p.mean_power_w, 'f', 2), QString::number(p.joules_per_run, 'f', 4),
+    const QString texts[] = {QString::number(p.dims),
+                             QString::number(p.workers),
+                             QString::number(p.gflops, 'f', 2),
+                             QString::number(p.mean_power_w, 'f', 2),
+                             QString::number(p.joules_per_run, 'f', 4),
                              QString::number(p.gflops_per_watt, 'f', 3)};
     for (int c = 0; c < 6; ++c) {
       auto* item = new QTableWidgetItem(texts[c]);
@@ -274,9 +280,12 @@ QString parse_error(const QLineEdit* field, Parse parse) {
 }  // namespace
 
 QString KernelRunner::input_error() const {
-  if (const QString why = parse_error(workers_, [](std::string_view t) { return kernels::parse_worker_spec(t); }); !why.isEmpty())
+  if (const QString why = parse_error(workers_, [](std::string_view t) { return kernels::parse_worker_spec(t); });
+      !why.isEmpty())
     return tr("Workers: %1").arg(why);
-  if (const QString why = parse_error(dims_, [](std::string_view t) { return kernels::parse_dims_list(t); }); !why.isEmpty()) return tr("D: %1").arg(why);
+  if (const QString why = parse_error(dims_, [](std::string_view t) { return kernels::parse_dims_list(t); });
+      !why.isEmpty())
+    return tr("D: %1").arg(why);
   return {};
 }
 
@@ -337,7 +346,8 @@ void KernelRunner::start() {
       progress_->setValue(1000);
       if (recorder_) {
         const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
-        trace_ = recorder_->finish("Kernel Runner " + (first ? first->backend + " " + first->provenance.date : std::string()));
+        trace_ = recorder_->finish("Kernel Runner " +
+                                   (first ? first->backend + " " + first->provenance.date : std::string()));
         if (first) trace_->platform = first->platform;  // paired with the run's platform in every view
         recorder_.reset();
       }
@@ -356,8 +366,12 @@ void KernelRunner::start() {
     return kernels::run_sweep(
         backend, cpu, spec, *cancel,
         [self, rec, &last_end, &current_d, warmup = spec.warmup](double f, std::string_view step) {
-          QMetaObject::invokeMethod(self.data(), [self, f] { if (self) self->progress_->setValue(static_cast<int>(f * 1000)); },
-                                    Qt::QueuedConnection);
+          QMetaObject::invokeMethod(
+              self.data(),
+              [self, f] {
+                if (self) self->progress_->setValue(static_cast<int>(f * 1000));
+              },
+              Qt::QueuedConnection);
           const auto comma = step.find(", D=");
           if (!rec || !step.starts_with("W=") || comma == std::string_view::npos) return;
           const long long w = std::stoll(std::string(step.substr(2, comma - 2)));
@@ -373,7 +387,12 @@ void KernelRunner::start() {
             rec->end_phase();
             last_end = rec->now_s();
           }
-          QMetaObject::invokeMethod(self.data(), [self, run] { if (self) emit self->live_run(run); }, Qt::QueuedConnection);
+          QMetaObject::invokeMethod(
+              self.data(),
+              [self, run] {
+                if (self) emit self->live_run(run);
+              },
+              Qt::QueuedConnection);
         });
   }));
 }

@@ -3,11 +3,11 @@
 
 #include <QFutureWatcher>
 #include <QGuiApplication>
-#include <QtConcurrent>
 #include <QLabel>
 #include <QSplitter>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <QtConcurrent>
 
 #include "checkerboard_dialog.h"
 #include "lens_view_3d.h"
@@ -17,7 +17,6 @@
 namespace bs::ui {
 
 cv::Mat synthetic_fisheye() { return vision::render_fisheye(vision::Lens::paper()); }
-
 
 LensTab::LensTab(QWidget* parent) : QWidget(parent), tuner_(new ReprojectionTuner), split_(new QSplitter) {
   placeholder_ = new QLabel(tr("The 3D lens view needs an OpenGL display (it is not available on the '%1' platform).")
@@ -40,15 +39,18 @@ LensTab::LensTab(QWidget* parent) : QWidget(parent), tuner_(new ReprojectionTune
 namespace {
 
 QString synthetic_caption() {
-  return QObject::tr("synthetic fisheye: the paper's lens (195°, 1280×1024) seeing the test chart (no frames in "
-                     "the workspace)");
+  return QObject::tr(
+      "synthetic fisheye: the paper's lens (195°, 1280×1024) seeing the test chart (no frames in "
+      "the workspace)");
 }
 
 }  // namespace
 
 void LensTab::set_fisheye(const cv::Mat& bgr, const QString& caption) {
-  if (bgr.empty()) apply_fisheye(synthetic_fisheye(), synthetic_caption());
-  else apply_fisheye(bgr, caption);
+  if (bgr.empty())
+    apply_fisheye(synthetic_fisheye(), synthetic_caption());
+  else
+    apply_fisheye(bgr, caption);
 }
 
 void LensTab::apply_fisheye(const cv::Mat& bgr, const QString& caption) {

@@ -101,8 +101,9 @@ LensView3D::LensView3D(QWidget* parent) : QOpenGLWidget(parent), d_(std::make_un
   d_->widget = this;
   setMinimumSize(240, 200);
   setFocusPolicy(Qt::StrongFocus);
-  setToolTip(tr("Lens in 3D: the fisheye frame on the unit sphere of rays it covers (lens axis along the grey "
-                "line), the output camera's frustum (yellow) and image plane. Drag to rotate, wheel to zoom."));
+  setToolTip(
+      tr("Lens in 3D: the fisheye frame on the unit sphere of rays it covers (lens axis along the grey "
+         "line), the output camera's frustum (yellow) and image plane. Drag to rotate, wheel to zoom."));
   auto& w = *d_->window;
   w.SetReadyForRendering(false);
   w.SetFrameBlitModeToNoBlit();
@@ -303,10 +304,11 @@ void LensView3D::rebuild() {
   d_->plane->SetPolys(quad);
   d_->plane->Modified();
   char text[200];
-  std::snprintf(text, sizeof text,
-                "lens: %s, %.1f deg FOV (grey: lens axis)\nview (yellow): %.1f deg FOV, yaw %.1f, pitch %.1f, roll %.1f deg",
-                std::string(vision::to_string(lens.type)).c_str(), lens.fov_deg, view.fov_deg, view.yaw_deg,
-                view.pitch_deg, view.roll_deg);
+  std::snprintf(
+      text, sizeof text,
+      "lens: %s, %.1f deg FOV (grey: lens axis)\nview (yellow): %.1f deg FOV, yaw %.1f, pitch %.1f, roll %.1f deg",
+      std::string(vision::to_string(lens.type)).c_str(), lens.fov_deg, view.fov_deg, view.yaw_deg, view.pitch_deg,
+      view.roll_deg);
   d_->caption->SetInput(text);
   d_->renderer->ResetCameraClippingRange();
 }
@@ -390,9 +392,8 @@ void LensView3D::wheelEvent(QWheelEvent* e) {
   const qreal dpr = devicePixelRatioF();
   d_->interactor->SetEventInformationFlipY(static_cast<int>(e->position().x() * dpr),
                                            static_cast<int>(e->position().y() * dpr));
-  d_->interactor->InvokeEvent(e->angleDelta().y() > 0 ? vtkCommand::MouseWheelForwardEvent
-                                                      : vtkCommand::MouseWheelBackwardEvent,
-                              e);
+  d_->interactor->InvokeEvent(
+      e->angleDelta().y() > 0 ? vtkCommand::MouseWheelForwardEvent : vtkCommand::MouseWheelBackwardEvent, e);
 }
 
 }  // namespace bs::ui

@@ -25,8 +25,10 @@ double clipped_length(const QRectF& rect, const QPointF& a, const QPointF& b) {
       continue;
     }
     const double t = q[i] / p[i];
-    if (p[i] < 0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
+    if (p[i] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
   }
   return t1 > t0 ? (t1 - t0) * std::hypot(dx, dy) : 0;
 }
@@ -81,18 +83,18 @@ Qt::Alignment least_covered_corner(const QRectF& area, const QSizeF& size, const
 }
 
 std::vector<std::optional<QRectF>> place_labels_greedy(const QRectF& area, const std::vector<QPointF>& anchors,
-                                                const std::vector<QSizeF>& sizes, const std::vector<QRectF>& obstacles,
-                                                const std::vector<QPolygonF>& curves, double gap) {
+                                                       const std::vector<QSizeF>& sizes,
+                                                       const std::vector<QRectF>& obstacles,
+                                                       const std::vector<QPolygonF>& curves, double gap) {
   std::vector<std::optional<QRectF>> placed(anchors.size());
   std::vector<QRectF> taken = obstacles;
   for (std::size_t i = 0; i < anchors.size() && i < sizes.size(); ++i) {
     const QPointF p = anchors[i];
     const double w = sizes[i].width(), h = sizes[i].height();
     // Above-left first: peaks sit on plateaus that run to the right edge, and curves rise from the lower left.
-    const std::array<QRectF, 4> candidates = {QRectF(p.x() - gap - w, p.y() - gap - h, w, h),
-                                              QRectF(p.x() + gap, p.y() - gap - h, w, h),
-                                              QRectF(p.x() - gap - w, p.y() + gap, w, h),
-                                              QRectF(p.x() + gap, p.y() + gap, w, h)};
+    const std::array<QRectF, 4> candidates = {
+        QRectF(p.x() - gap - w, p.y() - gap - h, w, h), QRectF(p.x() + gap, p.y() - gap - h, w, h),
+        QRectF(p.x() - gap - w, p.y() + gap, w, h), QRectF(p.x() + gap, p.y() + gap, w, h)};
     double best_cost = std::numeric_limits<double>::max();
     for (const QRectF& c : candidates) {
       if (!area.contains(c)) continue;

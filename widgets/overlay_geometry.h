@@ -30,7 +30,8 @@ Qt::Alignment least_covered_corner(const QRectF& area, const QSizeF& size, const
 // pixels away) and takes the free one that covers the least curve length. Free = inside `area`, overlapping
 // no obstacle and no label placed before. A label with no free position gets nullopt and is not drawn.
 std::vector<std::optional<QRectF>> place_labels_greedy(const QRectF& area, const std::vector<QPointF>& anchors,
-                                                const std::vector<QSizeF>& sizes, const std::vector<QRectF>& obstacles,
-                                                const std::vector<QPolygonF>& curves, double gap);
+                                                       const std::vector<QSizeF>& sizes,
+                                                       const std::vector<QRectF>& obstacles,
+                                                       const std::vector<QPolygonF>& curves, double gap);
 
 }  // namespace bs::ui

@@ -3,19 +3,19 @@
 
 #include <algorithm>
 
+#include <qcustomplot.h>
 #include <QFontMetricsF>
 #include <array>
 #include <cmath>
-#include <qcustomplot.h>
 
 #include "overlay_geometry.h"
 
 namespace bs::ui {
 namespace {
 
-constexpr double kGap = 6;          // pixels between a peak marker and its label
-constexpr double kMarkerHalf = 5;   // half the peak marker size: labels must not hide other markers
-constexpr int kPadding = 2;         // label padding, pixels
+constexpr double kGap = 6;            // pixels between a peak marker and its label
+constexpr double kMarkerHalf = 5;     // half the peak marker size: labels must not hide other markers
+constexpr int kPadding = 2;           // label padding, pixels
 constexpr double kMaxHeadroom = 0.3;  // at most this much of an axis is added to keep the legend off the data
 
 }  // namespace
@@ -159,8 +159,8 @@ void PeakOverlay::make_room_for_legend(Qt::Alignment corner) {
   for (const Option& o : options)
     if (o.fraction > 0 && (!best || o.fraction < best->fraction)) best = &o;
   if (!best) return;  // no affordable room: the legend stays where it hides least
-  best->axis->setRange(widened(best->axis->range(), best->axis->scaleType() == QCPAxis::stLogarithmic, best->upper,
-                               best->fraction));
+  best->axis->setRange(
+      widened(best->axis->range(), best->axis->scaleType() == QCPAxis::stLogarithmic, best->upper, best->fraction));
   // The axes computed their ticks before this layout hook ran: draw once more with the new range.
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }

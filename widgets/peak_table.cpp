@@ -2,8 +2,8 @@
 #include "peak_table.h"
 
 #include <QApplication>
-#include <QColor>
 #include <QClipboard>
+#include <QColor>
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QSortFilterProxyModel>
@@ -23,7 +23,9 @@ void PeakTableModel::set_rows(std::vector<PeakRow> rows, std::vector<int> color_
     if (std::find(platforms.begin(), platforms.end(), r.platform) == platforms.end()) platforms.push_back(r.platform);
   std::vector<std::size_t> order(rows.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  const auto rank = [&](std::size_t i) { return std::find(platforms.begin(), platforms.end(), rows[i].platform) - platforms.begin(); };
+  const auto rank = [&](std::size_t i) {
+    return std::find(platforms.begin(), platforms.end(), rows[i].platform) - platforms.begin();
+  };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
   beginResetModel();
   rows_.clear();
@@ -47,18 +49,25 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
   const auto qs = [](const std::string& s) { return QString::fromStdString(s); };
   if (role == Qt::DisplayRole) {
     switch (index.column()) {
-      case Platform: return qs(r.platform);
-      case Device: return qs(r.device);
-      case Backend: return r.variant == "paper" ? qs(r.backend) : qs(r.backend + " (" + r.variant + ")");
-      case Dims: return r.dims > 0 ? QVariant(r.dims) : QVariant(QStringLiteral("–"));  // "–": another tool's sweep
+      case Platform:
+        return qs(r.platform);
+      case Device:
+        return qs(r.device);
+      case Backend:
+        return r.variant == "paper" ? qs(r.backend) : qs(r.backend + " (" + r.variant + ")");
+      case Dims:
+        return r.dims > 0 ? QVariant(r.dims) : QVariant(QStringLiteral("–"));  // "–": another tool's sweep
       case Peak: {
         QString s = qs(format_si(r.peak.flops, "FLOPS"));
         if (r.peak.at_peak.n > 1) s += QStringLiteral(" ± ") + qs(format_si(r.peak.at_peak.sd, "FLOPS"));
         return r.flags.empty() ? s : QStringLiteral("⚠ ") + s;
       }
-      case Workers: return QLocale().toString(static_cast<qlonglong>(r.peak.workers));
-      case Reported: return r.reported_flops ? qs(format_si(*r.reported_flops, "FLOPS")) : QStringLiteral("–");
-      case Ratio: return r.ratio_to_reported ? QStringLiteral("%1×").arg(*r.ratio_to_reported, 0, 'f', 2) : QStringLiteral("–");
+      case Workers:
+        return QLocale().toString(static_cast<qlonglong>(r.peak.workers));
+      case Reported:
+        return r.reported_flops ? qs(format_si(*r.reported_flops, "FLOPS")) : QStringLiteral("–");
+      case Ratio:
+        return r.ratio_to_reported ? QStringLiteral("%1×").arg(*r.ratio_to_reported, 0, 'f', 2) : QStringLiteral("–");
       case OfTheoretical:
         return r.fraction_of_theoretical ? QStringLiteral("%1 %").arg(*r.fraction_of_theoretical * 100, 0, 'f', 1)
                                          : QStringLiteral("–");
@@ -66,8 +75,10 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
         return r.fraction_of_ceiling ? QStringLiteral("%1 %").arg(*r.fraction_of_ceiling * 100, 0, 'f', 1)
                                      : QStringLiteral("–");
       case OfSpec:
-        return r.fraction_of_spec ? QStringLiteral("%1 %").arg(*r.fraction_of_spec * 100, 0, 'f', 1) : QStringLiteral("–");
-      case Origin: return QString::fromUtf8(to_string(r.origin).data());
+        return r.fraction_of_spec ? QStringLiteral("%1 %").arg(*r.fraction_of_spec * 100, 0, 'f', 1)
+                                  : QStringLiteral("–");
+      case Origin:
+        return QString::fromUtf8(to_string(r.origin).data());
     }
   }
   if (role == kFlaggedRole) return !r.flags.empty();
@@ -75,19 +86,30 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
   if (role == Qt::ForegroundRole && !r.flags.empty() && index.column() == Peak) return QColor(0x8a, 0x4b, 0x00);
   if (role == kSortRole) {
     switch (index.column()) {
-      case Platform: return qs(r.platform);
-      case Dims: return r.dims;
-      case Peak: return r.peak.flops;
-      case Workers: return static_cast<qlonglong>(r.peak.workers);
-      case Reported: return r.reported_flops.value_or(-1);
-      case Ratio: return r.ratio_to_reported.value_or(-1);
-      case OfTheoretical: return r.fraction_of_theoretical.value_or(-1);
-      case OfCeiling: return r.fraction_of_ceiling.value_or(-1);
-      case OfSpec: return r.fraction_of_spec.value_or(-1);
-      default: return data(index, Qt::DisplayRole);
+      case Platform:
+        return qs(r.platform);
+      case Dims:
+        return r.dims;
+      case Peak:
+        return r.peak.flops;
+      case Workers:
+        return static_cast<qlonglong>(r.peak.workers);
+      case Reported:
+        return r.reported_flops.value_or(-1);
+      case Ratio:
+        return r.ratio_to_reported.value_or(-1);
+      case OfTheoretical:
+        return r.fraction_of_theoretical.value_or(-1);
+      case OfCeiling:
+        return r.fraction_of_ceiling.value_or(-1);
+      case OfSpec:
+        return r.fraction_of_spec.value_or(-1);
+      default:
+        return data(index, Qt::DisplayRole);
     }
   }
-  if (role == Qt::DecorationRole && index.column() == Device) return device_color(colors_[static_cast<std::size_t>(index.row())]);
+  if (role == Qt::DecorationRole && index.column() == Device)
+    return device_color(colors_[static_cast<std::size_t>(index.row())]);
   if (role == Qt::TextAlignmentRole && index.column() >= Dims && index.column() <= OfSpec)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   if (role == Qt::ToolTipRole) {
@@ -103,7 +125,8 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
     else
       tip += tr("\nNot in the device table: no vendor peak to check against");
     if (r.empirical_ceiling_flops)
-      tip += tr("\nEmpirical ceiling: %1 (%2)").arg(qs(format_si(*r.empirical_ceiling_flops, "FLOPS")), qs(r.ceiling_how));
+      tip +=
+          tr("\nEmpirical ceiling: %1 (%2)").arg(qs(format_si(*r.empirical_ceiling_flops, "FLOPS")), qs(r.ceiling_how));
     else
       tip += tr("\nNo empirical ceiling measured for this device (Kernel Runner: Measure ceilings)");
     // The ratio columns say what they divide, with both numbers, above the row's provenance.
@@ -131,22 +154,24 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return {};
-  static const char* names[] = {"Platform", "Device", "Backend", "D", "Peak", "Workers at peak", "Reported", "Ratio",
-                                "% of theoretical", "% of ceiling", "% of spec", "Origin"};
-  static const char* tips[] = {"The computer; its rows are grouped under it",
-                               "Compute device (colour as in every plot)",
-                               "API the kernel ran through",
-                               "2D points rotated per worker",
-                               "Highest mean FLOPS = 6·D·N·W / t",
-                               "Worker count where the peak occurred",
-                               "Vendor or literature peak figure",
-                               "Measured peak ÷ the vendor or literature figure in Reported (hover a cell for both numbers)",
-                               "Measured peak ÷ this kernel's theoretical peak on the device (its instruction mix at "
-                               "the device's clock and SIMD width; hover a cell for both numbers); above 100 % is flagged ⚠",
-                               "Measured peak ÷ the device's empirical ceiling: the rotation kernel's instruction mix "
-                               "measured by BenchScope's micro-kernel (docs/ceilings.md)",
-                               "Measured peak ÷ the vendor's FP32 peak (device table); above 130 % is flagged ⚠",
-                               "measured on a machine, or reconstructed from published figures"};
+  static const char* names[] = {
+      "Platform", "Device",           "Backend",      "D",         "Peak",  "Workers at peak", "Reported",
+      "Ratio",    "% of theoretical", "% of ceiling", "% of spec", "Origin"};
+  static const char* tips[] = {
+      "The computer; its rows are grouped under it",
+      "Compute device (colour as in every plot)",
+      "API the kernel ran through",
+      "2D points rotated per worker",
+      "Highest mean FLOPS = 6·D·N·W / t",
+      "Worker count where the peak occurred",
+      "Vendor or literature peak figure",
+      "Measured peak ÷ the vendor or literature figure in Reported (hover a cell for both numbers)",
+      "Measured peak ÷ this kernel's theoretical peak on the device (its instruction mix at "
+      "the device's clock and SIMD width; hover a cell for both numbers); above 100 % is flagged ⚠",
+      "Measured peak ÷ the device's empirical ceiling: the rotation kernel's instruction mix "
+      "measured by BenchScope's micro-kernel (docs/ceilings.md)",
+      "Measured peak ÷ the vendor's FP32 peak (device table); above 130 % is flagged ⚠",
+      "measured on a machine, or reconstructed from published figures"};
   if (role == Qt::DisplayRole) return tr(names[section]);
   if (role == Qt::ToolTipRole) return tr(tips[section]);
   return {};
@@ -170,7 +195,8 @@ PeakTableView::PeakTableView(QWidget* parent) : QTableView(parent), model_(new P
   setWordWrap(false);
 }
 
-bool PeakTableView::show_row(const std::string& platform, const std::string& device, const std::string& backend, int dims) {
+bool PeakTableView::show_row(const std::string& platform, const std::string& device, const std::string& backend,
+                             int dims) {
   const auto& rows = model_->rows();
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const PeakRow& r = rows[i];

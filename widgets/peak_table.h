@@ -11,8 +11,21 @@ namespace bs::ui {
 class PeakTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Platform, Device, Backend, Dims, Peak, Workers, Reported, Ratio, OfTheoretical, OfCeiling, OfSpec, Origin,
-                ColumnCount };
+  enum Column {
+    Platform,
+    Device,
+    Backend,
+    Dims,
+    Peak,
+    Workers,
+    Reported,
+    Ratio,
+    OfTheoretical,
+    OfCeiling,
+    OfSpec,
+    Origin,
+    ColumnCount
+  };
   static constexpr int kSortRole = Qt::UserRole + 1;
   // true for every cell of a row whose peak carries plausibility flags (analysis/plausibility.h). Such a row is
   // tinted, its peak shows "⚠", and every cell's tooltip starts with the reasons.

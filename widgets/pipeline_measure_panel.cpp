@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline_measure_panel.h"
 
-#include <QCoreApplication>
 #include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QDoubleSpinBox>
 #include <QFutureWatcher>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -54,8 +54,9 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   frames_->setRange(1, 100000);
   frames_->setValue(settings.value(kFramesKey, 20).toInt());
   frames_->setSuffix(tr(" frames"));
-  frames_->setToolTip(tr("How many frames of the synthetic paper capture (1280x1024 BGGR through the 195° lens) "
-                         "go through the pipeline"));
+  frames_->setToolTip(
+      tr("How many frames of the synthetic paper capture (1280x1024 BGGR through the 195° lens) "
+         "go through the pipeline"));
   workers_->setRange(1, static_cast<int>(vision::kMaxDetectionWorkers));
   workers_->setValue(settings.value(kWorkersKey, static_cast<int>(vision::default_detection_workers())).toInt());
   workers_->setToolTip(tr("Detection worker threads: each detects its own frame, so detection (the slow stage) "
@@ -66,14 +67,16 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   scale_->setSingleStep(0.05);
   scale_->setDecimals(2);
   scale_->setValue(settings.value(kScaleKey, 0.5).toDouble());
-  scale_->setToolTip(tr("Detection scale: HOG runs on the reprojected frame shrunk by this factor (0.5: 640x512 "
-                        "of 1280x1024) and its boxes are mapped back to full-frame pixels. Smaller is faster and "
-                        "misses smaller (more distant) people."));
+  scale_->setToolTip(
+      tr("Detection scale: HOG runs on the reprojected frame shrunk by this factor (0.5: 640x512 "
+         "of 1280x1024) and its boxes are mapped back to full-frame pixels. Smaller is faster and "
+         "misses smaller (more distant) people."));
   backend_->addItem(tr("CPU (fused)"), QStringLiteral("cpu"));
   backend_->addItem(tr("OpenCL"), QStringLiteral("opencl"));
   backend_->addItem(tr("CUDA"), QStringLiteral("cuda"));
-  backend_->setToolTip(tr("Where demosaicing + reprojection run; detection (HOG) always runs on the CPU. OpenCL "
-                          "takes the first OpenCL device (GPU preferred; PoCL gives a CPU device)."));
+  backend_->setToolTip(
+      tr("Where demosaicing + reprojection run; detection (HOG) always runs on the CPU. OpenCL "
+         "takes the first OpenCL device (GPU preferred; PoCL gives a CPU device)."));
   // A CUDA entry that cannot run stays visible, disabled, saying why: nobody wonders where it went.
   if (const std::string why = vision::cuda_preprocessing_unavailable(); !why.empty()) {
     auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
@@ -88,14 +91,18 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   detector_->addItem(tr("mobilenet-ssd (architecture timing)"), QStringLiteral("mobilenet-ssd"));
   detector_->addItem(tr("yolo-n (architecture timing)"), QStringLiteral("yolo-n"));
   detector_->addItem(tr("Model file…"), QString::fromLatin1(kModelFile));
-  detector_->setItemData(1, tr("SSD300 MobileNet v1 built with random weights: times the network's cost, detects nothing"),
+  detector_->setItemData(1,
+                         tr("SSD300 MobileNet v1 built with random weights: times the network's cost, detects nothing"),
                          Qt::ToolTipRole);
   detector_->setItemData(2, tr("YOLOv8n layout built with random weights: times the network's cost, detects nothing"),
                          Qt::ToolTipRole);
-  detector_->setItemData(3, tr("A detection network cv::dnn reads (ONNX, Caffe, TensorFlow, Darknet) with SSD, YOLOv5 "
-                               "or YOLOv8 outputs"), Qt::ToolTipRole);
-  detector_->setToolTip(tr("The detection stage: OpenCV's HOG, a built-in architecture (architecture timing: no "
-                           "detections) or a network from a model file"));
+  detector_->setItemData(3,
+                         tr("A detection network cv::dnn reads (ONNX, Caffe, TensorFlow, Darknet) with SSD, YOLOv5 "
+                            "or YOLOv8 outputs"),
+                         Qt::ToolTipRole);
+  detector_->setToolTip(
+      tr("The detection stage: OpenCV's HOG, a built-in architecture (architecture timing: no "
+         "detections) or a network from a model file"));
   {
     const QString saved_detector = settings.value(kDetectorKey, QStringLiteral("hog")).toString();
     int at = detector_->findData(saved_detector);
@@ -107,8 +114,8 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   }
   connect(detector_, &QComboBox::activated, this, [this](int i) {
     if (detector_->itemData(i).toString() != QString::fromLatin1(kModelFile)) return;
-    const QString file = QFileDialog::getOpenFileName(this, tr("Detection network"), QString(),
-                                                      tr("Networks (*.onnx *.pb *.caffemodel *.weights);;All files (*)"));
+    const QString file = QFileDialog::getOpenFileName(
+        this, tr("Detection network"), QString(), tr("Networks (*.onnx *.pb *.caffemodel *.weights);;All files (*)"));
     if (file.isEmpty()) {
       detector_->setCurrentIndex(0);
       return;
@@ -137,8 +144,8 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   auto* backend_label = new QLabel(tr("Preprocessing on:"), this);
   backend_label->setToolTip(backend_->toolTip());
   int column = 0;
-  for (QWidget* w : std::initializer_list<QWidget*>{frames_label, frames_, workers_label, workers_, scale_label,
-                                                    scale_, backend_label, backend_})
+  for (QWidget* w : std::initializer_list<QWidget*>{frames_label, frames_, workers_label, workers_, scale_label, scale_,
+                                                    backend_label, backend_})
     layout->addWidget(w, 0, column++);
   layout->setColumnStretch(column, 1);
   auto* second_row = new QHBoxLayout;
@@ -196,7 +203,8 @@ void PipelineMeasurePanel::start() {
   options.detect_scale = scale_->value();
   options.backend = backend_->currentData().toString().toStdString();
   options.detector = detector_->currentData().toString().toStdString();
-  options.tool = QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
+  options.tool =
+      QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
   trace_.reset();
   try {
     recorder_ = power_->start_recorder();  // null when "Record power" is off
@@ -219,11 +227,10 @@ void PipelineMeasurePanel::start() {
                        .arg(backend_->currentText()));
   watcher_->setFuture(QtConcurrent::run([options, token = token_, percent = percent_]() -> Outcome {
     try {
-      return {vision::measure_synthetic_pipeline(options, *token,
-                                                 [percent](double f, std::string_view) {
-                                                   percent->store(static_cast<int>(f * 100));
-                                                 }),
-              {}};
+      return {
+          vision::measure_synthetic_pipeline(
+              options, *token, [percent](double f, std::string_view) { percent->store(static_cast<int>(f * 100)); }),
+          {}};
     } catch (const std::exception& e) {
       return {std::nullopt, QString::fromUtf8(e.what())};
     }
@@ -246,7 +253,9 @@ void PipelineMeasurePanel::finished() {
   std::optional<PowerTrace> trace;
   if (recorder_) {
     recorder_->end_phase();
-    trace = recorder_->finish("Pipeline tab" + (outcome.run ? " " + outcome.run->platform + " " + outcome.run->provenance.date : std::string()));
+    trace = recorder_->finish("Pipeline tab" + (outcome.run
+                                                    ? " " + outcome.run->platform + " " + outcome.run->provenance.date
+                                                    : std::string()));
     recorder_.reset();
   }
   measure_->setEnabled(true);
@@ -271,19 +280,22 @@ void PipelineMeasurePanel::finished() {
     const std::size_t frames = pre ? pre->n : 0;
     if (!phases.empty() && frames > 0) {
       const PhaseEnergy& e = phases.front();
-      energy = tr(" %1 J per frame through the pipeline (mean %2 W)").arg(e.energy_j / static_cast<double>(frames), 0, 'f', 3).arg(e.mean_power_w, 0, 'f', 2);
+      energy = tr(" %1 J per frame through the pipeline (mean %2 W)")
+                   .arg(e.energy_j / static_cast<double>(frames), 0, 'f', 3)
+                   .arg(e.mean_power_w, 0, 'f', 2);
       if (pre) energy += tr(", %1 J per preprocessed frame").arg(e.mean_power_w * pre->mean_s, 0, 'f', 4);
       if (det) energy += tr(", %1 J per inference").arg(e.mean_power_w * det->mean_s, 0, 'f', 4);
-      energy += tr(" (%1: %2).").arg(QString::fromUtf8(to_string(trace->provenance.measurement).data()),
-                                     QString::fromStdString(trace->provenance.sensor));
+      energy += tr(" (%1: %2).")
+                    .arg(QString::fromUtf8(to_string(trace->provenance.measurement).data()),
+                         QString::fromStdString(trace->provenance.sensor));
     }
     trace_ = std::move(trace);
   }
-  status_->setText((run.throughput_fps ? tr("Measured %1 fps on %2.")
-                                             .arg(*run.throughput_fps, 0, 'f', 2)
-                                             .arg(QString::fromStdString(run.platform))
-                                       : tr("Measured on %1.").arg(QString::fromStdString(run.platform))) +
-                   energy);
+  status_->setText(
+      (run.throughput_fps
+           ? tr("Measured %1 fps on %2.").arg(*run.throughput_fps, 0, 'f', 2).arg(QString::fromStdString(run.platform))
+           : tr("Measured on %1.").arg(QString::fromStdString(run.platform))) +
+      energy);
   emit run_measured(run);
 }
 

@@ -13,8 +13,8 @@
 #include <cmath>
 #include <limits>
 
-#include "inference_table.h"
 #include "analysis/platform/pipeline_table.h"
+#include "inference_table.h"
 #include "pipeline_measure_panel.h"
 
 namespace bs::ui {
@@ -48,18 +48,24 @@ QString fps_text(double fps) { return QString::number(fps, 'f', fps >= 100 ? 0 :
 }  // namespace
 
 PipelineView::PipelineView(QWidget* parent)
-    : QWidget(parent), measure_(new PipelineMeasurePanel(this)), summary_(new QLabel(this)), table_(new QTableWidget(0, ColumnCount, this)) {
-  table_->setHorizontalHeaderLabels({tr("Stage"), tr("Platform"), tr("Device (backend)"),
-                                     tr("Time, mean ± SD (n)"), tr("p95 (ms)"), tr("Stage rate (fps)"),
-                                     tr("Pipeline (fps)"), tr("Data"), tr("Lens")});
-  table_->horizontalHeaderItem(LensColumn)->setToolTip(
-      tr("How the lens the run reprojected with was obtained: manual, circle fit, checkerboard (RMS, images) or line "
-         "fit (residual before/after)"));
-  table_->horizontalHeaderItem(Time)->setToolTip(tr("Per-frame time of the stage in milliseconds: mean ± sample SD "
-                                                    "over n frames"));
-  table_->horizontalHeaderItem(StageRate)->setToolTip(tr("1 / mean time: the frame rate this stage alone keeps up with"));
-  table_->horizontalHeaderItem(Throughput)->setToolTip(
-      tr("Frames through the whole concurrent pipeline per second of wall time (measured runs only)"));
+    : QWidget(parent),
+      measure_(new PipelineMeasurePanel(this)),
+      summary_(new QLabel(this)),
+      table_(new QTableWidget(0, ColumnCount, this)) {
+  table_->setHorizontalHeaderLabels({tr("Stage"), tr("Platform"), tr("Device (backend)"), tr("Time, mean ± SD (n)"),
+                                     tr("p95 (ms)"), tr("Stage rate (fps)"), tr("Pipeline (fps)"), tr("Data"),
+                                     tr("Lens")});
+  table_->horizontalHeaderItem(LensColumn)
+      ->setToolTip(tr(
+          "How the lens the run reprojected with was obtained: manual, circle fit, checkerboard (RMS, images) or line "
+          "fit (residual before/after)"));
+  table_->horizontalHeaderItem(Time)->setToolTip(
+      tr("Per-frame time of the stage in milliseconds: mean ± sample SD "
+         "over n frames"));
+  table_->horizontalHeaderItem(StageRate)->setToolTip(
+      tr("1 / mean time: the frame rate this stage alone keeps up with"));
+  table_->horizontalHeaderItem(Throughput)
+      ->setToolTip(tr("Frames through the whole concurrent pipeline per second of wall time (measured runs only)"));
   table_->horizontalHeaderItem(P95)->setToolTip(tr("95th percentile of the per-frame time (measured runs only)"));
   // No sort column until the user picks one: rows keep core's order (stage, then platform), as in the paper.
   table_->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder);
@@ -124,33 +130,38 @@ void PipelineView::fill() {
     table_->item(i, Device)->setData(kSortRole, QVariant());
     table_->setItem(i, Time, cell(QString::fromStdString(r.time_text()), r.mean_ms, tip));
     table_->setItem(i, P95, cell(QString::fromStdString(r.p95_text()), r.p95_ms ? *r.p95_ms : nan, tip));
-    table_->setItem(i, StageRate, cell(r.stage_fps ? fps_text(*r.stage_fps) : QStringLiteral("–"),
-                                       r.stage_fps ? *r.stage_fps : nan, tip));
-    table_->setItem(i, Throughput, cell(r.throughput_fps ? fps_text(*r.throughput_fps) : QStringLiteral("–"),
-                                        r.throughput_fps ? *r.throughput_fps : nan, tip));
-    auto* origin = cell(rebuilt ? tr("reconstructed") : QString::fromStdString(std::string(to_string(r.origin))), nan, tip);
+    table_->setItem(
+        i, StageRate,
+        cell(r.stage_fps ? fps_text(*r.stage_fps) : QStringLiteral("–"), r.stage_fps ? *r.stage_fps : nan, tip));
+    table_->setItem(i, Throughput,
+                    cell(r.throughput_fps ? fps_text(*r.throughput_fps) : QStringLiteral("–"),
+                         r.throughput_fps ? *r.throughput_fps : nan, tip));
+    auto* origin =
+        cell(rebuilt ? tr("reconstructed") : QString::fromStdString(std::string(to_string(r.origin))), nan, tip);
     origin->setData(kSortRole, QVariant());
     if (rebuilt) origin->setForeground(QColor(0x9a, 0x5b, 0x00));  // never passes for a measurement
     table_->setItem(i, Data, origin);
     const QString lens = QString::fromStdString(r.lens_calibration);
-    auto* lens_cell = cell(lens.isEmpty() ? QStringLiteral("–") : lens, nan,
-                           lens.isEmpty() ? tr("The run did not record its lens (imported or older runs)")
-                                          : tr("Lens: %1").arg(lens));
+    auto* lens_cell = cell(
+        lens.isEmpty() ? QStringLiteral("–") : lens, nan,
+        lens.isEmpty() ? tr("The run did not record its lens (imported or older runs)") : tr("Lens: %1").arg(lens));
     lens_cell->setData(kSortRole, QVariant());
     table_->setItem(i, LensColumn, lens_cell);
   }
   table_->setSortingEnabled(true);
   if (rows.empty())
-    summary_->setText(tr("No pipeline runs yet: import pipeline JSON (sample_data/paper-2018/pipeline-*.json), "
-                         "measure one above, or run <code>benchscope-cli pipeline FRAME --lens LENS.json --workspace "
-                         "WS</code>."));
+    summary_->setText(
+        tr("No pipeline runs yet: import pipeline JSON (sample_data/paper-2018/pipeline-*.json), "
+           "measure one above, or run <code>benchscope-cli pipeline FRAME --lens LENS.json --workspace "
+           "WS</code>."));
   else
-    summary_->setText(tr("%n stage timing(s) from %1 run(s), %2 of them reconstructed from published figures (hover a row "
-                         "for its provenance). Times are per frame; stages run concurrently (measured runs: detection on the "
-                         "worker threads named under Device).",
-                         nullptr, static_cast<int>(rows.size()))
-                          .arg(runs_.size())
-                          .arg(reconstructed));
+    summary_->setText(
+        tr("%n stage timing(s) from %1 run(s), %2 of them reconstructed from published figures (hover a row "
+           "for its provenance). Times are per frame; stages run concurrently (measured runs: detection on the "
+           "worker threads named under Device).",
+           nullptr, static_cast<int>(rows.size()))
+            .arg(runs_.size())
+            .arg(reconstructed));
 }
 
 void PipelineView::export_table(bool latex) {

@@ -10,10 +10,10 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
-#include <QSignalBlocker>
 #include <QMessageBox>
-#include <QRegularExpression>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -21,9 +21,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "analysis/power/battery.h"
 #include "analysis/peaks/plausibility.h"
 #include "analysis/platform/platform_table.h"
+#include "analysis/power/battery.h"
 #include "frozen_column.h"
 #include "inference_table.h"
 
@@ -84,9 +84,10 @@ QString tooltip_for(const PlatformRow& r, const std::string& column) {
   const auto it = r.sources.find(column);
   if (it == r.sources.end()) return {};
   const CellSource& s = it->second;
-  QString tip = QObject::tr("%1\nfrom %2 (%3)\nDouble-click to show it in the workspace")
-                    .arg(QString::fromStdString(s.how), QString::fromStdString(s.source_file.empty() ? "?" : s.source_file),
-                         QString::fromUtf8(to_string(s.origin).data()));
+  QString tip =
+      QObject::tr("%1\nfrom %2 (%3)\nDouble-click to show it in the workspace")
+          .arg(QString::fromStdString(s.how), QString::fromStdString(s.source_file.empty() ? "?" : s.source_file),
+               QString::fromUtf8(to_string(s.origin).data()));
   if (column == column::kPower && !r.power_measurement.empty())
     tip += QObject::tr("\nMeasured by: %1").arg(QString::fromStdString(r.power_measurement));
   return tip;
@@ -130,24 +131,27 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   mission_->setMinimumContentsLength(18);  // fits a 1280 px window; the field scrolls for longer missions
   mission_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   mission_->lineEdit()->setPlaceholderText(tr("name:s:W, … (none: constant load)"));
-  mission_->setToolTip(tr("Mission profile: phases name:seconds:watts, comma separated (e.g. the servos per phase), "
-                          "repeated until the pack is empty, in parallel with each computer's mean power and the "
-                          "parallel load; the battery runtime then follows the mission. Missions saved with the "
-                          "Battery tab's presets are listed; empty: a constant load."));
+  mission_->setToolTip(
+      tr("Mission profile: phases name:seconds:watts, comma separated (e.g. the servos per phase), "
+         "repeated until the pack is empty, in parallel with each computer's mean power and the "
+         "parallel load; the battery runtime then follows the mission. Missions saved with the "
+         "Battery tab's presets are listed; empty: a constant load."));
   setups_ = builtin_battery_setups();
   fill_battery_choices();
   extra_load_ = spin(this, 0, 10000, 0, tr(" W"), 1);
   use_budget_->setToolTip(tr("Mean power during the platform's power log must stay within this budget"));
   use_fps_->setToolTip(tr("Preprocessing + detection in sequence, from the platform's pipeline run"));
   use_runtime_->setToolTip(tr("Constant-power battery runtime at the mean power plus the parallel load"));
-  extra_load_->setToolTip(tr("Load in parallel with the computer, e.g. the robot's servos (the paper's robot: up to 225 W)"));
+  extra_load_->setToolTip(
+      tr("Load in parallel with the computer, e.g. the robot's servos (the paper's robot: up to 225 W)"));
   auto* export_tex = new QPushButton(tr("Export LaTeX…"), this);
   auto* export_csv = new QPushButton(tr("Export CSV…"), this);
 
   // Two rows: the constraints (and exports), then what the battery column assumes (pack, parallel load, mission).
   auto* controls = new QHBoxLayout;
-  for (QWidget* w : {static_cast<QWidget*>(use_budget_), static_cast<QWidget*>(budget_), static_cast<QWidget*>(use_fps_),
-                     static_cast<QWidget*>(fps_), static_cast<QWidget*>(use_runtime_), static_cast<QWidget*>(runtime_)})
+  for (QWidget* w :
+       {static_cast<QWidget*>(use_budget_), static_cast<QWidget*>(budget_), static_cast<QWidget*>(use_fps_),
+        static_cast<QWidget*>(fps_), static_cast<QWidget*>(use_runtime_), static_cast<QWidget*>(runtime_)})
     controls->addWidget(w);
   controls->addStretch(1);
   controls->addWidget(export_tex);
@@ -181,7 +185,8 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   inference_ = new InferenceTable(this);
   layout->addWidget(inference_, 1);
 
-  for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_}) connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
+  for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_})
+    connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
   for (QDoubleSpinBox* s : {budget_, fps_, runtime_, extra_load_})
     connect(s, &QDoubleSpinBox::valueChanged, this, &PlatformView::recompute);
   connect(battery_, &QComboBox::currentIndexChanged, this, [this](int i) {
@@ -228,16 +233,18 @@ void PlatformView::fill_battery_choices() {
   battery_->clear();
   mission_->clear();
   mission_->addItem(QString());  // none: a constant load
-  mission_->setItemData(0, tr("No mission: the computer's mean power plus the parallel load, constant"), Qt::ToolTipRole);
+  mission_->setItemData(0, tr("No mission: the computer's mean power plus the parallel load, constant"),
+                        Qt::ToolTipRole);
   for (std::size_t i = 0; i < setups_.size(); ++i) {
     const BatterySetup& s = setups_[i];
     if (i == 0 && has_tab_setup_) {
       battery_->addItem(tab_setup_label_, QStringLiteral("\x01battery-tab"));  // a data key no preset name can have
-      battery_->setItemData(0, tr("The pack as the Battery tab shows it now (%1 V, %2 mAh, %3 % usable), with its "
-                                  "parallel load and mission")
-                                   .arg(s.pack.nominal_v(), 0, 'f', 1)
-                                   .arg(s.pack.capacity_ah * 1000, 0, 'f', 0)
-                                   .arg(s.depth_of_discharge * 100, 0, 'f', 0),
+      battery_->setItemData(0,
+                            tr("The pack as the Battery tab shows it now (%1 V, %2 mAh, %3 % usable), with its "
+                               "parallel load and mission")
+                                .arg(s.pack.nominal_v(), 0, 'f', 1)
+                                .arg(s.pack.capacity_ah * 1000, 0, 'f', 0)
+                                .arg(s.depth_of_discharge * 100, 0, 'f', 0),
                             Qt::ToolTipRole);
     } else {
       battery_->addItem(QString::fromStdString(s.pack.description.empty() ? s.pack.name : s.pack.description),
@@ -245,7 +252,8 @@ void PlatformView::fill_battery_choices() {
     }
     if (s.mission.empty() || mission_->findText(QString::fromStdString(s.mission)) >= 0) continue;
     mission_->addItem(QString::fromStdString(s.mission));
-    mission_->setItemData(mission_->count() - 1, tr("Mission of the battery preset %1").arg(QString::fromStdString(s.pack.name)),
+    mission_->setItemData(mission_->count() - 1,
+                          tr("Mission of the battery preset %1").arg(QString::fromStdString(s.pack.name)),
                           Qt::ToolTipRole);
   }
   // The Battery tab's example mission (servo loads of a walking robot; the paper's robot peaks at 225 W).
@@ -351,27 +359,33 @@ void PlatformView::recompute() {
   fill_table();
   const Constraints c = constraints();
   const bool constrained = c.power_budget_w || c.min_fps || c.min_runtime_h;
-  const QString hidden = empty_columns_.isEmpty() ? QString()
-                                                  : tr("<br><span style='color:gray'>No data yet (hidden): %1.</span>")
-                                                        .arg(empty_columns_.join(", "));
+  const QString hidden =
+      empty_columns_.isEmpty()
+          ? QString()
+          : tr("<br><span style='color:gray'>No data yet (hidden): %1.</span>").arg(empty_columns_.join(", "));
   if (rows_.empty()) {
-    summary_->setText(tr("No FLOPS runs or power logs in the workspace yet: import some (File ▸ Import) to compare platforms."));
+    summary_->setText(
+        tr("No FLOPS runs or power logs in the workspace yet: import some (File ▸ Import) to compare platforms."));
   } else if (!constrained) {
     summary_->setText(tr("Most compute among the platforms with a power log: <b>%1</b>. Set constraints above to see "
                          "which platforms meet them.")
                           .arg(recommendation().isEmpty() ? tr("none") : recommendation()));
   } else {
-    summary_->setText(recommendation().isEmpty()
-                          ? tr("<b>No platform meets every constraint</b>; the last column says which one each fails and by how much.")
-                          : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
-                                .arg(recommendation()));
+    summary_->setText(
+        recommendation().isEmpty()
+            ? tr("<b>No platform meets every constraint</b>; the last column says which one each fails and by how "
+                 "much.")
+            : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
+                  .arg(recommendation()));
   }
   if (rows_.empty()) return;
   // A flagged peak is shown but never decides: say whose compute was ranked by what.
   QStringList ranking;
   for (const auto& v : verdicts_)
     if (!v.ranking_note.empty())
-      ranking << tr("%1: %2").arg(QString::fromStdString(v.platform), QString::fromStdString(v.ranking_note)).toHtmlEscaped();
+      ranking << tr("%1: %2")
+                     .arg(QString::fromStdString(v.platform), QString::fromStdString(v.ranking_note))
+                     .toHtmlEscaped();
   if (!ranking.isEmpty())
     summary_->setText(summary_->text() + tr("<br><span style='color:#8a4b00'>⚠ %1.</span>").arg(ranking.join("; ")));
   // What the battery column assumes: the pack, and the mission with each platform's mean load on the pack.
@@ -381,7 +395,8 @@ void PlatformView::recompute() {
   } else if (!o.mission.empty()) {
     QStringList loads;
     for (const PlatformRow& r : rows_)
-      if (r.battery_load_w) loads << tr("%1 %2 W").arg(QString::fromStdString(r.platform)).arg(*r.battery_load_w, 0, 'f', 1);
+      if (r.battery_load_w)
+        loads << tr("%1 %2 W").arg(QString::fromStdString(r.platform)).arg(*r.battery_load_w, 0, 'f', 1);
     battery += tr(", mission <tt>%1</tt> repeated with each computer in parallel (mean load: %2)")
                    .arg(QString::fromStdString(o.mission).toHtmlEscaped(), loads.join(", "));
   } else if (o.extra_load_w > 0) {
@@ -392,8 +407,8 @@ void PlatformView::recompute() {
 
 void PlatformView::fill_table() {
   const bool constrained = constraints().power_budget_w || constraints().min_fps || constraints().min_runtime_h;
-  const ExportTable t = platform_table(rows_, constrained ? std::span<const PlatformVerdict>(verdicts_)
-                                                          : std::span<const PlatformVerdict>());
+  const ExportTable t = platform_table(
+      rows_, constrained ? std::span<const PlatformVerdict>(verdicts_) : std::span<const PlatformVerdict>());
   const auto ids = platform_table_columns(constrained);
   table_->setSortingEnabled(false);
   table_->clear();
@@ -404,12 +419,14 @@ void PlatformView::fill_table() {
     const std::string& id = ids[static_cast<std::size_t>(c)];
     QString& tip = header_tips[static_cast<std::size_t>(c)];
     if (id == column::kFramesPerWh)
-      tip = tr("Frames per watt-hour: frames preprocessed and detected per Wh of the computer, 3600 / energy per "
-               "frame (J); energy per frame = mean power × (preprocessing + detection) mean time, or the logged "
-               "energy over the pipeline run when the log covers it.");
+      tip =
+          tr("Frames per watt-hour: frames preprocessed and detected per Wh of the computer, 3600 / energy per "
+             "frame (J); energy per frame = mean power × (preprocessing + detection) mean time, or the logged "
+             "energy over the pipeline run when the log covers it.");
     else if (id == column::kBattery)
-      tip = tr("Battery runtime on the chosen pack (constant-power model): the computer's mean power plus the "
-               "parallel load, or over the mission profile when one is set.");
+      tip =
+          tr("Battery runtime on the chosen pack (constant-power model): the computer's mean power plus the "
+             "parallel load, or over the mission profile when one is set.");
   }
   // The best value per numeric column among the platforms that have one.
   std::vector<double> best(t.header.size(), std::numeric_limits<double>::quiet_NaN());
@@ -442,13 +459,15 @@ void PlatformView::fill_table() {
         constrained && r < static_cast<int>(verdicts_.size()) ? &verdicts_[static_cast<std::size_t>(r)] : nullptr;
     // A platform that fails a constraint is dimmed, with the reason on every cell of its row.
     const bool fails = verdict && !verdict->meets_all;
-    const QString fail_reason = fails ? tr("Fails the constraints: %1").arg(QString::fromStdString(t.rows[r].back())) : QString();
+    const QString fail_reason =
+        fails ? tr("Fails the constraints: %1").arg(QString::fromStdString(t.rows[r].back())) : QString();
     const PlatformRow& row = rows_[static_cast<std::size_t>(r)];
     for (int c = 0; c < static_cast<int>(order.size()); ++c) {
       const std::size_t cu = order[static_cast<std::size_t>(c)];
       QString text = QString::fromStdString(t.rows[r][cu]);
       // The table's footnote marker " [n]" (for LaTeX/CSV) becomes "⚠" here: the reason is in the tooltip.
-      if (row.flags.count(ids[cu])) text.replace(QRegularExpression(QStringLiteral(" \\[[0-9,]+\\]$")), QStringLiteral(" ⚠"));
+      if (row.flags.count(ids[cu]))
+        text.replace(QRegularExpression(QStringLiteral(" \\[[0-9,]+\\]$")), QStringLiteral(" ⚠"));
       auto* item = new NumericItem(text);
       item->setData(Qt::UserRole, r);
       item->setData(kColumnRole, QString::fromStdString(ids[cu]));
@@ -475,7 +494,8 @@ void PlatformView::fill_table() {
         f.setBold(true);
         item->setFont(f);
         item->setBackground(QColor(0xd6, 0xe4, 0xf5));
-        item->setToolTip(tr("Recommended: the most compute among the platforms with a power log that meet every constraint"));
+        item->setToolTip(
+            tr("Recommended: the most compute among the platforms with a power log that meet every constraint"));
       }
       table_->setItem(r, c, item);
     }
@@ -485,7 +505,8 @@ void PlatformView::fill_table() {
   empty_columns_.clear();
   for (int c = 1; c < table_->columnCount(); ++c) {
     bool empty = true;
-    for (int r = 0; r < table_->rowCount() && empty; ++r) empty = table_->item(r, c)->text() == QString::fromUtf8("\u2013");
+    for (int r = 0; r < table_->rowCount() && empty; ++r)
+      empty = table_->item(r, c)->text() == QString::fromUtf8("\u2013");
     table_->setColumnHidden(c, empty && table_->rowCount() > 0);
     if (empty && table_->rowCount() > 0) empty_columns_ << table_->horizontalHeaderItem(c)->text();
   }
@@ -494,7 +515,11 @@ void PlatformView::fill_table() {
   // Numbers need little room; headers wrap onto three lines instead of widening their columns.
   for (int c = 0; c < table_->columnCount(); ++c) {
     const QString id = table_->item(0, c) ? table_->item(0, c)->data(kColumnRole).toString() : QString();
-    const int cap = c == 0 ? 200 : id == "meets" ? 150 : id == "failed" ? 220 : (id == QString::fromUtf8(column::kGpuPeak) || id == QString::fromUtf8(column::kCpuPeak)) ? 160 : 104;
+    const int cap = c == 0                                                                                     ? 200
+                    : id == "meets"                                                                            ? 150
+                    : id == "failed"                                                                           ? 220
+                    : (id == QString::fromUtf8(column::kGpuPeak) || id == QString::fromUtf8(column::kCpuPeak)) ? 160
+                                                                                                               : 104;
     table_->setColumnWidth(c, std::min(table_->columnWidth(c), cap));
   }
   table_->horizontalHeader()->setMinimumHeight(64);
@@ -508,11 +533,12 @@ void PlatformView::export_table(bool latex) {
                                                     latex ? "platforms.tex" : "platforms.csv", filter);
   if (path.isEmpty()) return;
   const bool constrained = constraints().power_budget_w || constraints().min_fps || constraints().min_runtime_h;
-  const ExportTable t = platform_table(rows_, constrained ? std::span<const PlatformVerdict>(verdicts_)
-                                                          : std::span<const PlatformVerdict>());
+  const ExportTable t = platform_table(
+      rows_, constrained ? std::span<const PlatformVerdict>(verdicts_) : std::span<const PlatformVerdict>());
   const std::string text = latex ? to_latex(t) : to_csv(t);
   QFile f(path);
-  if (!f.open(QIODevice::WriteOnly) || f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
+  if (!f.open(QIODevice::WriteOnly) ||
+      f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
     QMessageBox::warning(this, tr("Export failed"), tr("Cannot write %1: %2").arg(path, f.errorString()));
 }
 

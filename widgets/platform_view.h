@@ -69,7 +69,7 @@ class PlatformView : public QWidget {
   QCheckBox *use_budget_, *use_fps_, *use_runtime_;
   QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;
   QComboBox* battery_;
-  QComboBox* mission_;   // editable: the presets' missions, or typed name:seconds:watts,...
+  QComboBox* mission_;  // editable: the presets' missions, or typed name:seconds:watts,...
   QString mission_error_;
   std::vector<BatterySetup> setups_;  // in the Battery choice's order: the Battery tab's setup first when known
   bool has_tab_setup_ = false;

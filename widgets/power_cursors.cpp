@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power_cursors.h"
 
+#include <qcustomplot.h>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <cmath>
-#include <qcustomplot.h>
 
 namespace bs::ui {
 namespace {
@@ -31,7 +31,8 @@ void PowerCursors::rebuild_items() {
     band_->setBrush(QColor(0x80, 0x80, 0x80, 40));
     band_->setSelectable(false);
   }
-  const auto make_line = [&](QPointer<QCPItemStraightLine>& line, QPointer<QCPItemText>& label, const QColor& c, const char* name) {
+  const auto make_line = [&](QPointer<QCPItemStraightLine>& line, QPointer<QCPItemText>& label, const QColor& c,
+                             const char* name) {
     if (!line) {
       line = new QCPItemStraightLine(plot_);
       line->setPen(QPen(c, 1.5));
@@ -114,13 +115,18 @@ bool PowerCursors::eventFilter(QObject* watched, QEvent* event) {
       return true;
     case QEvent::KeyPress: {
       const int key = static_cast<QKeyEvent*>(event)->key();
-      if (key == Qt::Key_A) set(mouse_x_, b_);
-      else if (key == Qt::Key_B) set(a_, mouse_x_);
-      else if (key == Qt::Key_Escape) clear();
-      else return false;
+      if (key == Qt::Key_A)
+        set(mouse_x_, b_);
+      else if (key == Qt::Key_B)
+        set(a_, mouse_x_);
+      else if (key == Qt::Key_Escape)
+        clear();
+      else
+        return false;
       return true;
     }
-    default: return false;
+    default:
+      return false;
   }
 }
 

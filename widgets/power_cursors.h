@@ -6,8 +6,8 @@
 // the mouse, Esc clears both. Every move emits changed(false); the end of a drag or a key emits changed(true), when
 // the costlier exact statistics (percentiles) are worth computing.
 #include <QObject>
-#include <algorithm>
 #include <QPointer>
+#include <algorithm>
 #include <optional>
 
 class QCustomPlot;

@@ -27,8 +27,9 @@ PowerOverlayPanel::PowerOverlayPanel(QWidget* parent)
   table_->verticalHeader()->hide();
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
-  phase_box_->setToolTip(tr("A phase or marker the traces share (PTDaemon marks, BenchScope's runs, saved "
-                            "selections): Align shifts every trace that has it so that it starts at 0 s"));
+  phase_box_->setToolTip(
+      tr("A phase or marker the traces share (PTDaemon marks, BenchScope's runs, saved "
+         "selections): Align shifts every trace that has it so that it starts at 0 s"));
   phase_box_->setMinimumContentsLength(16);
   align_->setToolTip(tr("Shift the traces so that the chosen phase starts at 0 s on each of them"));
   reset_->setToolTip(tr("Every trace back at its own start (offset 0 s)"));
@@ -69,7 +70,8 @@ void PowerOverlayPanel::set_traces(const std::vector<QString>& names, std::vecto
     spin->setDecimals(3);
     spin->setSuffix(tr(" s"));
     spin->setToolTip(tr("Seconds added to this trace's time on the shared axis (negative: earlier)"));
-    connect(spin, &QDoubleSpinBox::valueChanged, this, [this, r](double v) { set_offset(static_cast<std::size_t>(r), v); });
+    connect(spin, &QDoubleSpinBox::valueChanged, this,
+            [this, r](double v) { set_offset(static_cast<std::size_t>(r), v); });
     table_->setCellWidget(r, 2, spin);
   }
   set_phases(std::move(phases_));

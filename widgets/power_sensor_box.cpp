@@ -9,8 +9,9 @@
 namespace bs::ui {
 
 PowerSensorBox::PowerSensorBox(QWidget* parent) : QComboBox(parent) {
-  setToolTip(tr("Sample one of this computer's power sensors while it runs (RAPL, Jetson INA3221, hwmon, NVML); "
-                "auto takes the board's or package's total. The trace is stored with the run (Power tab)."));
+  setToolTip(
+      tr("Sample one of this computer's power sensors while it runs (RAPL, Jetson INA3221, hwmon, NVML); "
+         "auto takes the board's or package's total. The trace is stored with the run (Power tab)."));
   if (const QByteArray root = qgetenv("BENCHSCOPE_SYSFS_ROOT"); !root.isEmpty()) root_ = QString::fromLocal8Bit(root);
   refresh();
 }
@@ -19,7 +20,8 @@ void PowerSensorBox::refresh() {
   clear();
   addItem(tr("off"), QString());
   const sensors::SensorSet set = sensors::find_sensors({root_.toStdString(), sensors::default_nvml_library()});
-  const bool any = std::any_of(set.sensors.begin(), set.sensors.end(), [](const auto& s) { return s->info().readable; });
+  const bool any =
+      std::any_of(set.sensors.begin(), set.sensors.end(), [](const auto& s) { return s->info().readable; });
   if (any) addItem(tr("auto (board or package total)"), QStringLiteral("auto"));
   auto* items = qobject_cast<QStandardItemModel*>(model());
   for (const auto& s : set.sensors) {
@@ -49,8 +51,8 @@ bool PowerSensorBox::choose(const QString& spec) {
 std::shared_ptr<sensors::PowerRecorder> PowerSensorBox::start_recorder() const {
   if (off()) return nullptr;
   sensors::SensorSet set = sensors::find_sensors({root_.toStdString(), sensors::default_nvml_library()});
-  auto rec = std::make_shared<sensors::PowerRecorder>(sensors::select_sensors(set, currentData().toString().toStdString()),
-                                                      std::chrono::milliseconds(100));
+  auto rec = std::make_shared<sensors::PowerRecorder>(
+      sensors::select_sensors(set, currentData().toString().toStdString()), std::chrono::milliseconds(100));
   rec->start();
   return rec;
 }

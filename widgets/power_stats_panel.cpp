@@ -23,8 +23,9 @@ PowerStatsPanel::PowerStatsPanel(const QString& placeholder, bool can_save_phase
       copy_(new QPushButton(tr("Copy as table"), this)),
       placeholder_(placeholder) {
   caption_->setWordWrap(true);
-  copy_->setToolTip(tr("Copy these rows to the clipboard as tab-separated text with units in the headers "
-                       "(pastes into a spreadsheet)"));
+  copy_->setToolTip(
+      tr("Copy these rows to the clipboard as tab-separated text with units in the headers "
+         "(pastes into a spreadsheet)"));
   copy_->setEnabled(false);
   connect(copy_, &QPushButton::clicked, this, [this] { QApplication::clipboard()->setText(tsv()); });
   table_->verticalHeader()->hide();
@@ -35,13 +36,15 @@ PowerStatsPanel::PowerStatsPanel(const QString& placeholder, bool can_save_phase
   top->addWidget(caption_, 1);
   if (can_save_phase) {
     save_ = new QPushButton(tr("Save as phase…"), this);
-    save_->setToolTip(tr("Store the selection A–B as a named phase of every trace it covers, in the workspace: it "
-                         "is then shaded, listed under Phases and printed by benchscope-cli power --phases"));
+    save_->setToolTip(
+        tr("Store the selection A–B as a named phase of every trace it covers, in the workspace: it "
+           "is then shaded, listed under Phases and printed by benchscope-cli power --phases"));
     save_->setEnabled(false);
     connect(save_, &QPushButton::clicked, this, [this] {
       bool ok = false;
       const QString name = QInputDialog::getText(this, tr("Save selection as phase"), tr("Phase name:"),
-                                                 QLineEdit::Normal, tr("selection"), &ok).trimmed();
+                                                 QLineEdit::Normal, tr("selection"), &ok)
+                               .trimmed();
       if (ok && !name.isEmpty()) emit save_phase(name);
     });
     top->addWidget(save_);

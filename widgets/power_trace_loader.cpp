@@ -94,9 +94,12 @@ void PowerTraceLoader::start(const std::string& path, std::vector<StoredPowerTra
                                         static_cast<double>(total);
     const int permille = static_cast<int>(std::clamp(all, 0.0, 1.0) * 1000);
     if (last->exchange(permille) == permille) return;
-    QMetaObject::invokeMethod(bar.data(), [bar, permille] {
-      if (bar) bar->setValue(permille);
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        bar.data(),
+        [bar, permille] {
+          if (bar) bar->setValue(permille);
+        },
+        Qt::QueuedConnection);
   });
   auto* watcher = new QFutureWatcher<LoadResult>(this);
   connect(watcher, &QFutureWatcher<LoadResult>::finished, this, [this, watcher, generation] {
@@ -105,11 +108,13 @@ void PowerTraceLoader::start(const std::string& path, std::vector<StoredPowerTra
     if (generation != generation_) return;  // superseded by a newer load (another workspace, a reload)
     cancel_.reset();
     hide();
-    if (r.error.isEmpty()) emit loaded(r.traces);
-    else emit failed(r.error);
+    if (r.error.isEmpty())
+      emit loaded(r.traces);
+    else
+      emit failed(r.error);
   });
-  watcher->setFuture(QtConcurrent::run(
-      [path, traces = std::move(traces), token, weights, done_before, current]() mutable {
+  watcher->setFuture(
+      QtConcurrent::run([path, traces = std::move(traces), token, weights, done_before, current]() mutable {
         LoadResult r;
         try {
           const Workspace ws(path);  // SQLite connections are per thread
@@ -121,8 +126,9 @@ void PowerTraceLoader::start(const std::string& path, std::vector<StoredPowerTra
           r.traces = std::move(traces);
         } catch (const Cancelled&) {
           r.cancelled = true;
-          r.error = QObject::tr("Loading the power logs was cancelled; the Power, Efficiency, Battery and Platforms "
-                                "tabs show no power data until the workspace is opened again");
+          r.error = QObject::tr(
+              "Loading the power logs was cancelled; the Power, Efficiency, Battery and Platforms "
+              "tabs show no power data until the workspace is opened again");
         } catch (const std::exception& e) {
           r.error = QObject::tr("Could not load the power logs' samples: %1").arg(QString::fromUtf8(e.what()));
         }

@@ -24,7 +24,7 @@ class PowerTraceLoader : public QWidget {
   static constexpr std::size_t kBackgroundSamples = 2'000'000;
 
   explicit PowerTraceLoader(QWidget* parent = nullptr);  // a status bar widget: text, bar, Cancel; hidden when idle
-  ~PowerTraceLoader() override;                         // cancels a load in progress and waits for it
+  ~PowerTraceLoader() override;                          // cancels a load in progress and waits for it
 
   static std::size_t sample_count(const std::vector<StoredPowerTrace>& traces);
   // Fills every trace's samples on the calling thread.

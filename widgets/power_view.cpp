@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power_view.h"
 
+#include <qcustomplot.h>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
@@ -18,12 +19,11 @@
 #include <cstdio>
 #include <limits>
 #include <map>
-#include <qcustomplot.h>
 
 #include "analysis/power/decimate.h"
-#include "analysis/stats/measurement_text.h"
 #include "analysis/power/power.h"
 #include "analysis/power/range_table.h"
+#include "analysis/stats/measurement_text.h"
 #include "device_palette.h"
 #include "phase_markers.h"
 #include "power_cursors.h"
@@ -45,7 +45,8 @@ double start_epoch_s(const PowerTrace& t) {
   QDateTime when = QDateTime::fromString(QString::fromStdString(t.start_time), Qt::ISODateWithMs);
   if (!when.isValid()) when = QDateTime::fromString(QString::fromStdString(t.start_time), Qt::ISODate);
   if (!when.isValid()) return std::nan("");
-  if (when.timeSpec() == Qt::LocalTime) when.setTimeSpec(Qt::UTC);  // no zone stated: read as UTC, as the importers write it
+  if (when.timeSpec() == Qt::LocalTime)
+    when.setTimeSpec(Qt::UTC);  // no zone stated: read as UTC, as the importers write it
   return static_cast<double>(when.toMSecsSinceEpoch()) / 1000.0;
 }
 
@@ -64,28 +65,35 @@ PowerView::PowerView(QWidget* parent)
       panels_(new QTabWidget(this)),
       table_(new QTableWidget(this)),
       selection_(new PowerStatsPanel(tr("No selection: Shift + drag on the plot, or press A and B with the mouse "
-                                        "over it, to place the cursors"), true, this)),
+                                        "over it, to place the cursors"),
+                                     true, this)),
       phases_(new PowerStatsPanel(tr("No phases: the logs have no marks; tick \"Detected phases\" for level "
-                                     "changes, or save a selection as a phase"), false, this)),
+                                     "changes, or save a selection as a phase"),
+                                  false, this)),
       overlay_(new PowerOverlayPanel(this)),
       cursors_(new PowerCursors(plot_)) {
-  wall_clock_box_->setToolTip(tr("Plot against the time of day the logs were recorded (when every log states its "
-                                 "absolute start) instead of seconds from each log's start"));
+  wall_clock_box_->setToolTip(
+      tr("Plot against the time of day the logs were recorded (when every log states its "
+         "absolute start) instead of seconds from each log's start"));
   connect(wall_clock_box_, &QCheckBox::toggled, this, [this](bool on) { set_wall_clock(on); });
-  detect_box_->setToolTip(tr("Also shade and list load phases found from level changes of each trace (idle / load), "
-                             "as benchscope-cli power --phases does"));
+  detect_box_->setToolTip(
+      tr("Also shade and list load phases found from level changes of each trace (idle / load), "
+         "as benchscope-cli power --phases does"));
   connect(detect_box_, &QCheckBox::toggled, this, [this](bool on) { set_detected_phases(on); });
   quantity_box_->addItem(tr("Current (A)"));
   quantity_box_->addItem(tr("Power (W)"));
-  quantity_box_->setToolTip(tr("Supply current as in the paper's figure 4, or power; the tables' level columns "
-                               "follow it"));
+  quantity_box_->setToolTip(
+      tr("Supply current as in the paper's figure 4, or power; the tables' level columns "
+         "follow it"));
   connect(quantity_box_, &QComboBox::currentIndexChanged, this,
           [this](int i) { set_quantity(i == 0 ? Quantity::Current : Quantity::Power); });
   auto* hint = new QLabel(tr("Shift + drag: select · drag A/B: move a cursor · keys A/B: cursor at the mouse · "
-                             "Esc: clear · wheel/drag: zoom/pan · double-click: whole log"), this);
+                             "Esc: clear · wheel/drag: zoom/pan · double-click: whole log"),
+                          this);
   hint->setWordWrap(true);
-  hint->setToolTip(tr("The View range tab summarises the range in view; the Selection tab the range between the "
-                      "cursors A and B"));
+  hint->setToolTip(
+      tr("The View range tab summarises the range in view; the Selection tab the range between the "
+         "cursors A and B"));
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   plot_->setToolTip(tr("Shift + drag to select a range; A / B place the cursors at the mouse; Esc clears"));
   plot_->axisRect()->setRangeZoom(Qt::Horizontal);
@@ -317,7 +325,8 @@ void PowerView::set_quantity(Quantity q) {
   plot_->yAxis->setLabel(current ? tr("Current (A)") : tr("Power (W)"));
   for (std::size_t i = 0; i < traces_.size() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
     const QString missing = current ? tr(" (no current channel)") : tr(" (power unknown: no supply voltage)");
-    plot_->graph(static_cast<int>(i))->setName(platform_name(traces_[i].trace) + (shown(i).empty() ? missing : QString()));
+    plot_->graph(static_cast<int>(i))
+        ->setName(platform_name(traces_[i].trace) + (shown(i).empty() ? missing : QString()));
   }
   rescale();
   update_selection(true);
@@ -337,7 +346,7 @@ void PowerView::rescale() {
       if (!std::isnan(v)) max_v = std::max(max_v, v);
   }
   if (!std::isfinite(min_t)) min_t = 0;
-  if (!wall_clock_on_) min_t = std::min(min_t, 0.0);  // offsets may move a trace before 0 s
+  if (!wall_clock_on_) min_t = std::min(min_t, 0.0);        // offsets may move a trace before 0 s
   plot_->yAxis->setRange(0, max_v > 0 ? max_v * 1.25 : 1);  // headroom: the legend sits above the traces
   const QCPRange before = plot_->xAxis->range();
   plot_->xAxis->setRange(min_t, max_t > min_t ? max_t : min_t + 1);
@@ -356,7 +365,8 @@ void PowerView::redraw_visible() {
     QVector<double> keys, vals;
     if (!values.empty()) {
       const double off = offset(i);
-      const DecimatedSeries d = decimate_min_max(traces_[i].trace.time_s, values, range.lower - off, range.upper - off, columns);
+      const DecimatedSeries d =
+          decimate_min_max(traces_[i].trace.time_s, values, range.lower - off, range.upper - off, columns);
       keys = QVector<double>(d.t.begin(), d.t.end());
       for (double& k : keys) k += off;
       vals = QVector<double>(d.v.begin(), d.v.end());
@@ -400,7 +410,8 @@ void PowerView::update_table() {
     for (const PeakRow& r : peaks_)
       if (r.platform == t.platform && (!best || r.peak.flops > best->peak.flops)) best = &r;
     if (best && current_a && t.supply_voltage_v)
-      gflops_w = QString::number(paper_flops_per_watt(best->peak.flops, *t.supply_voltage_v, current_a->max) / 1e9, 'f', 2);
+      gflops_w =
+          QString::number(paper_flops_per_watt(best->peak.flops, *t.supply_voltage_v, current_a->max) / 1e9, 'f', 2);
     cell(6, gflops_w);
     if (best && !best->flags.empty() && table_->item(static_cast<int>(i), 6)) {  // the peak behind GFLOPS/W is flagged
       QTableWidgetItem* item = table_->item(static_cast<int>(i), 6);
@@ -437,14 +448,18 @@ void PowerView::update_selection(bool final) {
     std::vector<std::string> row = {platform_name(traces_[i].trace).toStdString()};
     for (std::string& c : range_cells(s, signal)) row.push_back(std::move(c));
     rows.push_back(std::move(row));
-    tips.push_back(tr("%1: %2 .. %3 s of its own time; %4").arg(platform_name(traces_[i].trace))
-                       .arg(s.from_s, 0, 'f', 3).arg(s.to_s, 0, 'f', 3)
+    tips.push_back(tr("%1: %2 .. %3 s of its own time; %4")
+                       .arg(platform_name(traces_[i].trace))
+                       .arg(s.from_s, 0, 'f', 3)
+                       .arg(s.to_s, 0, 'f', 3)
                        .arg(QString::fromUtf8(to_string(s.power_source).data())));
   }
   const QString unit = wall_clock_on_ ? tr(" (s since 1970, UTC)") : tr(" s");
   selection_->set_table(tr("Selection A–B: %1 .. %2%3, %4 s; charge and energy integrate over exactly this range "
                            "(interpolated at its ends)")
-                            .arg(cursors_->from(), 0, 'f', 3).arg(cursors_->to(), 0, 'f', 3).arg(unit)
+                            .arg(cursors_->from(), 0, 'f', 3)
+                            .arg(cursors_->to(), 0, 'f', 3)
+                            .arg(unit)
                             .arg(cursors_->to() - cursors_->from(), 0, 'f', 3),
                         headers, rows, tips);
 }
@@ -484,7 +499,8 @@ void PowerView::update_phase_table() {
   std::vector<std::vector<std::string>> cells;
   for (Row& r : rows) cells.push_back(std::move(r.cells));
   phases_->set_table(tr("%n phase row(s); times in each trace's own seconds; the table benchscope-cli power "
-                        "--phases prints", nullptr, static_cast<int>(cells.size())),
+                        "--phases prints",
+                        nullptr, static_cast<int>(cells.size())),
                      headers, cells);
 }
 

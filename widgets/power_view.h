@@ -37,7 +37,8 @@ class PowerView : public QWidget {
  public:
   explicit PowerView(QWidget* parent = nullptr);
   // `peaks` supplies each platform's best FLOPS for GFLOPS/W; `colors` maps platform -> colour index.
-  void set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakRow> peaks, std::vector<std::pair<std::string, int>> colors);
+  void set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakRow> peaks,
+                std::vector<std::pair<std::string, int>> colors);
   // Where selections are saved as phases and the battery pack comes from (the Battery tab's current setup,
   // workspace setting "battery-tab/current", else the first built-in preset). May be null.
   void set_workspace(Workspace* workspace);
@@ -98,10 +99,10 @@ class PowerView : public QWidget {
   PowerCursors* cursors_;
   Workspace* workspace_ = nullptr;
   std::vector<StoredPowerTrace> traces_;
-  std::vector<PowerIndex> index_;             // per trace: the range statistics, built once
+  std::vector<PowerIndex> index_;                  // per trace: the range statistics, built once
   std::vector<std::vector<TracePhase>> detected_;  // per trace: level-change phases (filled when shown)
-  std::vector<std::vector<double>> power_;    // W per sample, per trace (empty: unknown)
-  std::vector<std::vector<double>> current_;  // A per sample, per trace (empty: no current channel)
+  std::vector<std::vector<double>> power_;         // W per sample, per trace (empty: unknown)
+  std::vector<std::vector<double>> current_;       // A per sample, per trace (empty: no current channel)
   std::vector<std::pair<std::size_t, PowerStats>> selection_stats_;
   Quantity quantity_ = Quantity::Current;
   std::vector<PeakRow> peaks_;

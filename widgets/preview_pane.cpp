@@ -40,13 +40,15 @@ QRectF PreviewPane::target() const {
 QPointF PreviewPane::to_image(QPointF p) const {
   const QRectF t = target();
   if (image_.isNull() || t.isEmpty()) return {};
-  return {(p.x() - t.left()) * image_.width() / t.width() - 0.5, (p.y() - t.top()) * image_.height() / t.height() - 0.5};
+  return {(p.x() - t.left()) * image_.width() / t.width() - 0.5,
+          (p.y() - t.top()) * image_.height() / t.height() - 0.5};
 }
 
 QPointF PreviewPane::to_widget(QPointF q) const {
   const QRectF t = target();
   if (image_.isNull()) return {};
-  return {t.left() + (q.x() + 0.5) * t.width() / image_.width(), t.top() + (q.y() + 0.5) * t.height() / image_.height()};
+  return {t.left() + (q.x() + 0.5) * t.width() / image_.width(),
+          t.top() + (q.y() + 0.5) * t.height() / image_.height()};
 }
 
 void PreviewPane::paintEvent(QPaintEvent*) {

@@ -15,8 +15,8 @@ class PreviewPane : public QWidget {
   struct Overlay {
     QPolygonF points;  // image pixel coordinates
     QColor colour;
-    bool closed = false;     // a polygon (filled translucent) rather than a polyline
-    bool markers = false;    // draw a small cross on every point
+    bool closed = false;   // a polygon (filled translucent) rather than a polyline
+    bool markers = false;  // draw a small cross on every point
   };
   struct Circle {
     QPointF centre;

@@ -41,10 +41,11 @@ RawGeometryDialog::RawGeometryDialog(const QString& raw_path, QWidget* parent)
   setWindowTitle(tr("Raw frame geometry"));
   setMinimumWidth(420);
   auto* form = new QFormLayout(this);
-  auto* intro = new QLabel(tr("<b>%1</b> has no JSON sidecar (%2), so its geometry is not recorded. "
-                              "Give it once; it is remembered for the next capture.")
-                               .arg(QFileInfo(raw_path).fileName(),
-                                    QFileInfo(QString::fromStdString(raw_sidecar_path(raw_path.toStdString()))).fileName()));
+  auto* intro =
+      new QLabel(tr("<b>%1</b> has no JSON sidecar (%2), so its geometry is not recorded. "
+                    "Give it once; it is remembered for the next capture.")
+                     .arg(QFileInfo(raw_path).fileName(),
+                          QFileInfo(QString::fromStdString(raw_sidecar_path(raw_path.toStdString()))).fileName()));
   intro->setWordWrap(true);
   form->addRow(intro);
   width_ = new QSpinBox;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "reprojection_tuner.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
@@ -10,13 +11,12 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSlider>
-#include <QAbstractSpinBox>
-#include <QKeyEvent>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QToolBar>
@@ -38,7 +38,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kCoarseStep = 8;  // fast_map.h: under 0.01 px from the exact map for the paper's lens
 
 QImage to_qimage(const cv::Mat& m) {
-  if (m.type() == CV_8UC3) return QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_BGR888).copy();
+  if (m.type() == CV_8UC3)
+    return QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_BGR888).copy();
   if (m.type() == CV_8UC1)
     return QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_Grayscale8).copy();
   return {};
@@ -108,45 +109,57 @@ void ReprojectionTuner::build_ui() {
   addAction(undo_);
   addAction(redo_);
   bar->addSeparator();
-  bar->addAction(tr("Load lens…"), this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load lens"), {}, tr("Lens JSON (*.json)"));
-    if (path.isEmpty()) return;
-    try {
-      load_json(path);
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Load lens"), QString::fromStdString(e.what()));
-    }
-  })->setToolTip(tr("Load a BenchScope lens JSON (lens, view and masks)"));
-  bar->addAction(tr("Save lens…"), this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)"));
-    if (path.isEmpty()) return;
-    try {
-      save_json(path);
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Save lens"), QString::fromStdString(e.what()));
-    }
-  })->setToolTip(tr("Save lens, view and masks as JSON"));
-  bar->addAction(tr("Export LUT…"), this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export lookup table"), "view.bslut", tr("BenchScope LUT (*.bslut)"));
-    if (path.isEmpty()) return;
-    try {
-      export_lut(path);
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Export LUT"), QString::fromStdString(e.what()));
-    }
-  })->setToolTip(tr("Write the exact lookup table (float32 source x, y per output pixel; docs/lut-format.md)"));
+  bar->addAction(tr("Load lens…"), this,
+                 [this] {
+                   const QString path =
+                       QFileDialog::getOpenFileName(this, tr("Load lens"), {}, tr("Lens JSON (*.json)"));
+                   if (path.isEmpty()) return;
+                   try {
+                     load_json(path);
+                   } catch (const std::exception& e) {
+                     QMessageBox::warning(this, tr("Load lens"), QString::fromStdString(e.what()));
+                   }
+                 })
+      ->setToolTip(tr("Load a BenchScope lens JSON (lens, view and masks)"));
+  bar->addAction(tr("Save lens…"), this,
+                 [this] {
+                   const QString path =
+                       QFileDialog::getSaveFileName(this, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)"));
+                   if (path.isEmpty()) return;
+                   try {
+                     save_json(path);
+                   } catch (const std::exception& e) {
+                     QMessageBox::warning(this, tr("Save lens"), QString::fromStdString(e.what()));
+                   }
+                 })
+      ->setToolTip(tr("Save lens, view and masks as JSON"));
+  bar->addAction(tr("Export LUT…"), this,
+                 [this] {
+                   const QString path = QFileDialog::getSaveFileName(this, tr("Export lookup table"), "view.bslut",
+                                                                     tr("BenchScope LUT (*.bslut)"));
+                   if (path.isEmpty()) return;
+                   try {
+                     export_lut(path);
+                   } catch (const std::exception& e) {
+                     QMessageBox::warning(this, tr("Export LUT"), QString::fromStdString(e.what()));
+                   }
+                 })
+      ->setToolTip(tr("Write the exact lookup table (float32 source x, y per output pixel; docs/lut-format.md)"));
   bar->addSeparator();
-  bar->addAction(tr("Detect circle"), this, [this] {
-    if (!auto_calibrate()) status_->setText(tr("No image circle found in the fisheye frame."));
-  })->setToolTip(tr("Find the fisheye image circle and set principal point and r_pp so the lens FOV fills it"));
+  bar->addAction(tr("Detect circle"), this,
+                 [this] {
+                   if (!auto_calibrate()) status_->setText(tr("No image circle found in the fisheye frame."));
+                 })
+      ->setToolTip(tr("Find the fisheye image circle and set principal point and r_pp so the lens FOV fills it"));
 
   fisheye_pane_ = new PreviewPane(tr("No fisheye frame"));
-  fisheye_pane_->setToolTip(tr("Fisheye source. With 'Add mask' on, click to add polygon points (source pixels), "
-                               "double-click to close the polygon."));
+  fisheye_pane_->setToolTip(
+      tr("Fisheye source. With 'Add mask' on, click to add polygon points (source pixels), "
+         "double-click to close the polygon."));
   output_pane_ = new PreviewPane(tr("Reprojected view appears here"));
-  output_pane_->setToolTip(tr("Reprojected rectilinear view. With 'Measure line' on, click points along a line that "
-                              "is straight in the world; the residual is shown below."));
+  output_pane_->setToolTip(
+      tr("Reprojected rectilinear view. With 'Measure line' on, click points along a line that "
+         "is straight in the world; the residual is shown below."));
   connect(fisheye_pane_, &PreviewPane::clicked, this, [this](QPointF p) {
     if (mask_editing_) add_mask_point(p);
   });
@@ -185,15 +198,18 @@ QWidget* ReprojectionTuner::build_controls() {
   auto* lens_box = new QGroupBox(tr("Lens"));
   auto* lf = new QFormLayout(lens_box);
   model_ = new QComboBox;
-  for (int i = 0; i < 6; ++i) model_->addItem(QString::fromUtf8(vision::to_string(static_cast<vision::LensType>(i)).data()));
-  model_->setToolTip(tr("Projection model r(θ): equidistant r = θ/r_pp, equisolid 2f sin(θ/2), stereographic "
-                        "2f tan(θ/2), orthographic f sin θ, rectilinear f tan θ, Kannala-Brandt f θ(1+k1θ²+…)"));
+  for (int i = 0; i < 6; ++i)
+    model_->addItem(QString::fromUtf8(vision::to_string(static_cast<vision::LensType>(i)).data()));
+  model_->setToolTip(
+      tr("Projection model r(θ): equidistant r = θ/r_pp, equisolid 2f sin(θ/2), stereographic "
+         "2f tan(θ/2), orthographic f sin θ, rectilinear f tan θ, Kannala-Brandt f θ(1+k1θ²+…)"));
   connect(model_, &QComboBox::currentIndexChanged, this, [this](int i) {
     if (!syncing_) change("model", [i](auto& p) { p.lens.type = static_cast<vision::LensType>(i); });
   });
   lf->addRow(tr("Model"), model_);
   focal_mode_ = new QCheckBox(tr("edit as focal length"));
-  focal_mode_->setToolTip(tr("Edit the scale as focal length f = 1/r_pp in pixels instead of r_pp in radians per pixel"));
+  focal_mode_->setToolTip(
+      tr("Edit the scale as focal length f = 1/r_pp in pixels instead of r_pp in radians per pixel"));
   connect(focal_mode_, &QCheckBox::toggled, this, [this] { update_scale_mode(); });
   lf->addRow(QString(), focal_mode_);
   scale_spin_ = spin(1e-5, 1.0, 7, 1e-5, tr(" rad/px"), {});
@@ -204,9 +220,12 @@ QWidget* ReprojectionTuner::build_controls() {
   });
   lf->addRow(tr("Scale"), scale_spin_);
   for (int i = 0; i < 4; ++i) {
-    k_[i] = spin(-10, 10, 6, 0.001, {}, tr("Kannala-Brandt k%1 (dimensionless): θ_d = θ(1 + k1θ² + k2θ⁴ + k3θ⁶ + k4θ⁸), θ in radians").arg(i + 1));
+    k_[i] =
+        spin(-10, 10, 6, 0.001, {},
+             tr("Kannala-Brandt k%1 (dimensionless): θ_d = θ(1 + k1θ² + k2θ⁴ + k3θ⁶ + k4θ⁸), θ in radians").arg(i + 1));
     connect(k_[i], &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
-      if (!syncing_) change("k" + std::to_string(i + 1), [i, v](auto& p) { p.lens.k[static_cast<std::size_t>(i)] = v; });
+      if (!syncing_)
+        change("k" + std::to_string(i + 1), [i, v](auto& p) { p.lens.k[static_cast<std::size_t>(i)] = v; });
     });
     lf->addRow(tr("k%1").arg(i + 1), k_[i]);
   }
@@ -222,7 +241,8 @@ QWidget* ReprojectionTuner::build_controls() {
   });
   lf->addRow(tr("cx"), cx_);
   lf->addRow(tr("cy"), cy_);
-  lens_fov_ = spin(1, 360, 1, 0.5, tr(" °"), tr("Lens field of view in degrees: rays beyond FOV/2 off the axis are outside the image circle"));
+  lens_fov_ = spin(1, 360, 1, 0.5, tr(" °"),
+                   tr("Lens field of view in degrees: rays beyond FOV/2 off the axis are outside the image circle"));
   connect(lens_fov_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
     if (!syncing_) change("lens_fov", [v](auto& p) { p.lens.fov_deg = v; });
   });
@@ -231,7 +251,8 @@ QWidget* ReprojectionTuner::build_controls() {
 
   auto* view_box = new QGroupBox(tr("Output view"));
   auto* vf = new QFormLayout(view_box);
-  out_fov_ = spin(1, 179, 1, 1, tr(" °"), tr("Output field of view in degrees across the image diagonal (paper: 150°)"));
+  out_fov_ =
+      spin(1, 179, 1, 1, tr(" °"), tr("Output field of view in degrees across the image diagonal (paper: 150°)"));
   connect(out_fov_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
     if (!syncing_) change("out_fov", [v](auto& p) { p.view.fov_deg = v; });
   });
@@ -282,7 +303,8 @@ QWidget* ReprojectionTuner::build_controls() {
   angle_row(tr("Pitch"), "pitch", &vision::View::pitch_deg, pitch_slider_, pitch_,
             tr("Pitch in degrees: tilts the view about the horizontal axis (+ up)"));
   angle_row(tr("Roll"), "roll", &vision::View::roll_deg, roll_slider_, roll_,
-            tr("Roll in degrees: rotates the view about its optical axis (+ turns the camera counter-clockwise: the scene turns clockwise in the view)"));
+            tr("Roll in degrees: rotates the view about its optical axis (+ turns the camera counter-clockwise: the "
+               "scene turns clockwise in the view)"));
   lay->addWidget(view_box);
 
   auto* tools = new QGroupBox(tr("Masks and checks"));
@@ -291,8 +313,9 @@ QWidget* ReprojectionTuner::build_controls() {
   mask_button_ = new QToolButton;
   mask_button_->setText(tr("Add mask"));
   mask_button_->setCheckable(true);
-  mask_button_->setToolTip(tr("Click points around an occluder (e.g. the robot's nose) on the fisheye preview; "
-                              "double-click or press again to close the polygon. Masked source pixels are blanked."));
+  mask_button_->setToolTip(
+      tr("Click points around an occluder (e.g. the robot's nose) on the fisheye preview; "
+         "double-click or press again to close the polygon. Masked source pixels are blanked."));
   connect(mask_button_, &QToolButton::toggled, this, [this](bool on) { set_mask_editing(on); });
   auto* clear_masks_button = new QPushButton(tr("Clear masks"));
   clear_masks_button->setToolTip(tr("Remove every mask polygon (undoable)"));
@@ -311,8 +334,9 @@ QWidget* ReprojectionTuner::build_controls() {
   line_button_ = new QToolButton;
   line_button_->setText(tr("Measure line"));
   line_button_->setCheckable(true);
-  line_button_->setToolTip(tr("Click 3 or more points along a line that is straight in the world, on the "
-                              "reprojected preview: with the right lens they lie on a straight line"));
+  line_button_->setToolTip(
+      tr("Click 3 or more points along a line that is straight in the world, on the "
+         "reprojected preview: with the right lens they lie on a straight line"));
   auto* next_line = new QPushButton(tr("New line"));
   next_line->setToolTip(tr("Start another line: the next clicks belong to it"));
   connect(next_line, &QPushButton::clicked, this, [this] { new_line(); });
@@ -329,8 +353,9 @@ QWidget* ReprojectionTuner::build_controls() {
   tl->addWidget(line_label_);
   auto* fit_row = new QHBoxLayout;
   auto* fit_button = new QPushButton(tr("Fit lens to lines"));
-  fit_button->setToolTip(tr("Least-squares fit of r_pp, principal point and k1..k4 (Kannala-Brandt) that makes the "
-                            "picked lines straight, keeping the image circle's rim; one undo step (Ctrl+Z)"));
+  fit_button->setToolTip(
+      tr("Least-squares fit of r_pp, principal point and k1..k4 (Kannala-Brandt) that makes the "
+         "picked lines straight, keeping the image circle's rim; one undo step (Ctrl+Z)"));
   connect(fit_button, &QPushButton::clicked, this, [this] {
     try {
       fit_lens_to_lines();
@@ -363,9 +388,10 @@ QWidget* ReprojectionTuner::build_controls() {
   });
   fit_centre_ = new QCheckBox(tr("centre"));
   fit_centre_->setChecked(true);
-  fit_centre_->setToolTip(tr("Fit the principal point too. Turn off to keep it, e.g. after Detect circle, which "
-                             "measures it to a fraction of a pixel: lines see it weakly (near the axis a shifted "
-                             "centre looks like a turned camera, and lines stay straight)"));
+  fit_centre_->setToolTip(
+      tr("Fit the principal point too. Turn off to keep it, e.g. after Detect circle, which "
+         "measures it to a fraction of a pixel: lines see it weakly (near the axis a shifted "
+         "centre looks like a turned camera, and lines stay straight)"));
   fit_row->addWidget(fit_button);
   fit_row->addWidget(fit_centre_);
   fit_row->addWidget(save_lines);
@@ -373,8 +399,9 @@ QWidget* ReprojectionTuner::build_controls() {
   tl->addLayout(fit_row);
   line_fit_label_ = new QLabel(tr("Line fit: pick 3 or more lines, then fit"));
   line_fit_label_->setWordWrap(true);
-  line_fit_label_->setToolTip(tr("Straightness of all picked lines: RMS distance in fisheye pixels of the points "
-                                 "from the image of the best straight 3D line through them, before and after the fit"));
+  line_fit_label_->setToolTip(
+      tr("Straightness of all picked lines: RMS distance in fisheye pixels of the points "
+         "from the image of the best straight 3D line through them, before and after the fit"));
   tl->addWidget(line_fit_label_);
   lay->addWidget(tools);
   lay->addStretch(1);
@@ -685,7 +712,10 @@ QString ReprojectionTuner::line_residual_text() const {
   if (pts.size() < 3) return tr("Line residual: click %1 more point(s)").arg(3 - static_cast<int>(pts.size()));
   try {
     const auto r = vision::line_residual(pts);
-    return tr("Line residual: RMS %1 px, max %2 px (n = %3)").arg(r.rms_px, 0, 'f', 2).arg(r.max_px, 0, 'f', 2).arg(r.points);
+    return tr("Line residual: RMS %1 px, max %2 px (n = %3)")
+        .arg(r.rms_px, 0, 'f', 2)
+        .arg(r.max_px, 0, 'f', 2)
+        .arg(r.points);
   } catch (const std::exception& e) {
     return tr("Line residual: %1").arg(QString::fromStdString(e.what()));
   }
@@ -721,7 +751,9 @@ void ReprojectionTuner::clear_masks() {
   update_overlays();
 }
 
-void ReprojectionTuner::save_json(const QString& path) const { vision::save_tuner_json(state_.params(), path.toStdString()); }
+void ReprojectionTuner::save_json(const QString& path) const {
+  vision::save_tuner_json(state_.params(), path.toStdString());
+}
 
 void ReprojectionTuner::load_json(const QString& path) {
   const vision::TunerParams p = vision::load_tuner_json(path.toStdString());

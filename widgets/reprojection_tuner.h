@@ -75,7 +75,7 @@ class ReprojectionTuner : public QWidget {
   // circle's rim, and applies the result as one undo step. Throws std::invalid_argument (too few lines...).
   vision::LineFitResult fit_lens_to_lines();
   QString line_fit_text() const { return line_fit_text_; }
-  QString lines_summary_text() const;  // all picked lines' straightness under the current lens
+  QString lines_summary_text() const;                        // all picked lines' straightness under the current lens
   QCheckBox* fit_centre_box() const { return fit_centre_; }  // off: the line fit keeps the principal point
   // Mask editing: while on, clicks on the fisheye preview add polygon points; a double click (or turning it off)
   // closes the polygon.

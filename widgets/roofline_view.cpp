@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roofline_view.h"
 
+#include <qcustomplot.h>
 #include <QHelpEvent>
 #include <QLabel>
 #include <QToolTip>
 #include <QVBoxLayout>
 #include <cmath>
-#include <qcustomplot.h>
 
 #include "analysis/peaks/flops.h"
 #include "analysis/stats/units.h"
@@ -48,9 +48,10 @@ RooflineView::RooflineView(QWidget* parent) : QWidget(parent), plot_(new QCustom
 
 QString RooflineView::stage_tooltip(const StagePlacement& s) const {
   const auto si = [](double v, const char* unit) { return QString::fromStdString(format_si(v, unit)); };
-  QString t = tr("<b>%1 preprocessing</b> under %2<br>%3<br>").arg(QString::fromStdString(s.platform).toHtmlEscaped(),
-                                                                  QString::fromStdString(s.device).toHtmlEscaped(),
-                                                                  QString::fromStdString(s.cost.label).toHtmlEscaped());
+  QString t =
+      tr("<b>%1 preprocessing</b> under %2<br>%3<br>")
+          .arg(QString::fromStdString(s.platform).toHtmlEscaped(), QString::fromStdString(s.device).toHtmlEscaped(),
+               QString::fromStdString(s.cost.label).toHtmlEscaped());
   t += tr("Frame %1×%2 → %3×%4%5<br>")
            .arg(s.geometry.source_width)
            .arg(s.geometry.source_height)
@@ -61,22 +62,26 @@ QString RooflineView::stage_tooltip(const StagePlacement& s) const {
            .arg(s.cost.ops_per_output_pixel, 0, 'f', 1)
            .arg(s.cost.bytes_per_output_pixel, 0, 'f', 1)
            .arg(s.point.intensity, 0, 'f', 3);
-  t += tr("Measured %1 ± %2 ms (n = %3) → achieved %4").arg(s.time.mean_s * 1e3, 0, 'f', 2).arg(s.time.sd_s * 1e3, 0, 'f', 2)
-           .arg(s.time.n).arg(si(s.point.flops, "op/s"));
+  t += tr("Measured %1 ± %2 ms (n = %3) → achieved %4")
+           .arg(s.time.mean_s * 1e3, 0, 'f', 2)
+           .arg(s.time.sd_s * 1e3, 0, 'f', 2)
+           .arg(s.time.n)
+           .arg(si(s.point.flops, "op/s"));
   if (s.ops_per_s_low)
-    t += tr(" (%1 … %2 at mean ± SD)").arg(si(*s.ops_per_s_low, "op/s"),
-                                          s.ops_per_s_high ? si(*s.ops_per_s_high, "op/s") : tr("∞"));
+    t += tr(" (%1 … %2 at mean ± SD)")
+             .arg(si(*s.ops_per_s_low, "op/s"), s.ops_per_s_high ? si(*s.ops_per_s_high, "op/s") : tr("∞"));
   t += tr("<br>Roof at this intensity %1: %2 of it%3<br>")
            .arg(si(s.point.attainable, "op/s"))
            .arg(QString::number(100 * s.point.fraction, 'f', 2) + " %")
            .arg(!s.memory_ceiling_known ? tr(" (no measured bandwidth: the roof is the compute peak alone)")
-                : s.point.memory_bound   ? tr(", memory-bound")
-                                         : tr(", compute-bound"));
-  t += tr("Run: %1 (%2), %3 backend<br>").arg(QString::fromStdString(s.source).toHtmlEscaped(),
-                                              QString::fromUtf8(to_string(s.origin).data()),
-                                              QString::fromStdString(s.backend).toHtmlEscaped());
-  t += tr("<i>Ops: integer adds, multiplies, shifts counted in the kernels; bytes: compulsory DRAM traffic, "
-          "perfect cache reuse, no write-allocate.</i>");
+                : s.point.memory_bound  ? tr(", memory-bound")
+                                        : tr(", compute-bound"));
+  t += tr("Run: %1 (%2), %3 backend<br>")
+           .arg(QString::fromStdString(s.source).toHtmlEscaped(), QString::fromUtf8(to_string(s.origin).data()),
+                QString::fromStdString(s.backend).toHtmlEscaped());
+  t +=
+      tr("<i>Ops: integer adds, multiplies, shifts counted in the kernels; bytes: compulsory DRAM traffic, "
+         "perfect cache reuse, no write-allocate.</i>");
   return t;
 }
 
@@ -137,9 +142,11 @@ void RooflineView::redraw() {
       // The empirical ceiling: the same roof with the measured instruction-mix peak, dotted.
       QVector<double> ex, ey;
       const double ridge_e = c.bandwidth_bps ? *c.empirical_flops / *c.bandwidth_bps : kMinIntensity;
-      ex = c.bandwidth_bps ? QVector<double>{kMinIntensity, std::clamp(ridge_e, kMinIntensity, kMaxIntensity), kMaxIntensity}
-                           : QVector<double>{kMinIntensity, kMaxIntensity};
-      for (double x : ex) ey.push_back(c.bandwidth_bps ? std::min(*c.empirical_flops, x * *c.bandwidth_bps) : *c.empirical_flops);
+      ex = c.bandwidth_bps
+               ? QVector<double>{kMinIntensity, std::clamp(ridge_e, kMinIntensity, kMaxIntensity), kMaxIntensity}
+               : QVector<double>{kMinIntensity, kMaxIntensity};
+      for (double x : ex)
+        ey.push_back(c.bandwidth_bps ? std::min(*c.empirical_flops, x * *c.bandwidth_bps) : *c.empirical_flops);
       QCPGraph* emp = plot_->addGraph();
       emp->setData(ex, ey, true);
       emp->setPen(QPen(color, 1.5, Qt::DotLine));
@@ -163,9 +170,9 @@ void RooflineView::redraw() {
     const auto it = colors_.find({row.platform, row.device});
     QCPGraph* g = plot_->addGraph();
     g->setLineStyle(QCPGraph::lsNone);
-    g->setScatterStyle(QCPScatterStyle(static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(
-                                           QString::fromStdString(row.backend))),
-                                       device_color(it == colors_.end() ? 0 : it->second), 7));
+    g->setScatterStyle(QCPScatterStyle(
+        static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(QString::fromStdString(row.backend))),
+        device_color(it == colors_.end() ? 0 : it->second), 7));
     g->addData(p.intensity, p.flops);
     g->removeFromLegend();
     y_min = std::min(y_min, p.flops);
@@ -212,11 +219,12 @@ void RooflineView::redraw() {
   if (ceilings_.empty()) {
     note_->setText(tr("No FLOPS runs yet: import runs or measure them with the Kernel Runner to see rooflines."));
   } else {
-    note_->setText(tr("Markers: the rotation kernel's runs at their peak (6·D·N flops per worker over 16·D + 4 bytes). "
-                      "%1 Measure a memory ceiling with <tt>benchscope-cli run bandwidth --workspace …</tt>.")
-                       .arg(without_bandwidth ? tr("%1 device(s) without a measured bandwidth: flat dashed roof only.")
-                                                     .arg(without_bandwidth)
-                                              : QString()));
+    note_->setText(
+        tr("Markers: the rotation kernel's runs at their peak (6·D·N flops per worker over 16·D + 4 bytes). "
+           "%1 Measure a memory ceiling with <tt>benchscope-cli run bandwidth --workspace …</tt>.")
+            .arg(without_bandwidth
+                     ? tr("%1 device(s) without a measured bandwidth: flat dashed roof only.").arg(without_bandwidth)
+                     : QString()));
     if (!stages_.placed.empty())
       note_->setText(note_->text() +
                      tr("<br>Stars: each pipeline run's preprocessing at its modelled intensity (integer ops and "

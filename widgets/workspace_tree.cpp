@@ -14,7 +14,7 @@ namespace bs::ui {
 namespace {
 
 constexpr int kRunIdRole = Qt::UserRole + 1;
-constexpr int kKindRole = Qt::UserRole + 2;    // TreeItemRef::Kind of an item below the runs or of a platform
+constexpr int kKindRole = Qt::UserRole + 2;  // TreeItemRef::Kind of an item below the runs or of a platform
 constexpr int kIdRole = Qt::UserRole + 3;
 constexpr int kImportRole = Qt::UserRole + 4;
 constexpr int kNameRole = Qt::UserRole + 5;
@@ -24,12 +24,18 @@ constexpr int kPaletteSize = 15;                // device_palette.cpp's distinct
 
 QString section_title(TreeItemRef::Kind kind) {
   switch (kind) {
-    case TreeItemRef::Kind::PowerLog: return WorkspaceTree::tr("Power logs");
-    case TreeItemRef::Kind::Frame: return WorkspaceTree::tr("Frames");
-    case TreeItemRef::Kind::PipelineRun: return WorkspaceTree::tr("Pipeline runs");
-    case TreeItemRef::Kind::ResultSet: return WorkspaceTree::tr("Throughput results");
-    case TreeItemRef::Kind::BatteryPreset: return WorkspaceTree::tr("Battery presets");
-    default: return {};
+    case TreeItemRef::Kind::PowerLog:
+      return WorkspaceTree::tr("Power logs");
+    case TreeItemRef::Kind::Frame:
+      return WorkspaceTree::tr("Frames");
+    case TreeItemRef::Kind::PipelineRun:
+      return WorkspaceTree::tr("Pipeline runs");
+    case TreeItemRef::Kind::ResultSet:
+      return WorkspaceTree::tr("Throughput results");
+    case TreeItemRef::Kind::BatteryPreset:
+      return WorkspaceTree::tr("Battery presets");
+    default:
+      return {};
   }
 }
 
@@ -84,8 +90,9 @@ WorkspaceTree::WorkspaceTree(QWidget* parent) : QTreeView(parent) {
   setModel(&model_);
   setHeaderHidden(true);
   setUniformRowHeights(true);
-  setToolTip(tr("Tick runs to show them in the plot and the peak table. Right-click, F2 (rename) or Delete "
-                "(remove the import that brought an item) to edit; Ctrl+Z undoes."));
+  setToolTip(
+      tr("Tick runs to show them in the plot and the peak table. Right-click, F2 (rename) or Delete "
+         "(remove the import that brought an item) to edit; Ctrl+Z undoes."));
   setContextMenuPolicy(Qt::CustomContextMenu);
   connect(this, &QWidget::customContextMenuRequested, this, &WorkspaceTree::show_menu);
   connect(&model_, &QStandardItemModel::itemChanged, this, &WorkspaceTree::on_item_changed);
@@ -117,14 +124,16 @@ void WorkspaceTree::set_items(const std::vector<WorkspaceItem>& items) {
     row->setData(it.ref.name, kNameRole);
     section->appendRow(row);
   }
-  for (auto& [kind, section] : sections) section->setText(QStringLiteral("%1 (%2)").arg(section->text()).arg(section->rowCount()));
+  for (auto& [kind, section] : sections)
+    section->setText(QStringLiteral("%1 (%2)").arg(section->text()).arg(section->rowCount()));
   updating_ = false;
 }
 
 int WorkspaceTree::item_count(TreeItemRef::Kind kind) const {
   const QStandardItem* root = model_.invisibleRootItem();
   for (int r = 0; r < root->rowCount(); ++r)
-    if (root->child(r)->data(kSectionRole).isValid() && root->child(r)->data(kSectionRole).toInt() == static_cast<int>(kind))
+    if (root->child(r)->data(kSectionRole).isValid() &&
+        root->child(r)->data(kSectionRole).toInt() == static_cast<int>(kind))
       return root->child(r)->rowCount();
   return 0;
 }
@@ -162,8 +171,8 @@ void WorkspaceTree::show_menu(const QPoint& pos) {
     // Colour is the device's, in every view and export: pick another palette entry (colour-blind-safe first).
     QMenu* colors = menu.addMenu(tr("Colour"));
     for (int i = 0; i < kPaletteSize; ++i) {
-      QAction* a = colors->addAction(swatch(device_color(i)), tr("Palette colour %1").arg(i + 1),
-                                     this, [this, ref, i] { emit color_requested(ref, i); });
+      QAction* a = colors->addAction(swatch(device_color(i)), tr("Palette colour %1").arg(i + 1), this,
+                                     [this, ref, i] { emit color_requested(ref, i); });
       a->setCheckable(true);
       a->setChecked(i == ref.color_index % kPaletteSize);
     }
@@ -171,12 +180,11 @@ void WorkspaceTree::show_menu(const QPoint& pos) {
     return;
   }
   if (!ref.renamable() && !ref.removable()) return;
-  if (ref.renamable())
-    menu.addAction(tr("Rename…\tF2"), this, [this, ref] { emit rename_requested(ref); });
+  if (ref.renamable()) menu.addAction(tr("Rename…\tF2"), this, [this, ref] { emit rename_requested(ref); });
   if (ref.removable())
-    menu.addAction(ref.kind == TreeItemRef::Kind::BatteryPreset ? tr("Remove preset\tDel")
-                                                                : tr("Remove its import\tDel"),
-                   this, [this, ref] { emit remove_requested(ref); });
+    menu.addAction(
+        ref.kind == TreeItemRef::Kind::BatteryPreset ? tr("Remove preset\tDel") : tr("Remove its import\tDel"), this,
+        [this, ref] { emit remove_requested(ref); });
   menu.exec(viewport()->mapToGlobal(pos));
 }
 
@@ -205,14 +213,13 @@ void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
     device->setData(s.color_index, kColorRole);
     QStandardItem* backend = child_named(device, QString::fromStdString(r.backend));
     // A sweep from another tool (Google Benchmark) states FLOPS, not D and N: its family and counter name it.
-    auto* item = new QStandardItem(r.dims > 0 ? QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")
-                                                    .arg(r.dims)
-                                                    .arg(QString::fromStdString(r.variant))
-                                                    .arg(r.iterations)
-                                                    .arg(r.samples.size())
-                                              : QStringLiteral("%1 · %2 pts")
-                                                    .arg(QString::fromStdString(r.variant))
-                                                    .arg(r.samples.size()));
+    auto* item = new QStandardItem(
+        r.dims > 0 ? QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")
+                         .arg(r.dims)
+                         .arg(QString::fromStdString(r.variant))
+                         .arg(r.iterations)
+                         .arg(r.samples.size())
+                   : QStringLiteral("%1 · %2 pts").arg(QString::fromStdString(r.variant)).arg(r.samples.size()));
     item->setData(QVariant::fromValue<qint64>(s.id), kRunIdRole);
     // Sweeps derived from stored Google Benchmark results (negative ids) are removed with their result set's import.
     item->setData(QVariant::fromValue<qint64>(s.import_id), kImportRole);
@@ -228,11 +235,14 @@ void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
     int checked = 0, unchecked = 0;
     for (int r = 0; r < it->rowCount(); ++r) {
       const auto st = sync(it->child(r));
-      if (st == Qt::Checked) ++checked;
-      else if (st == Qt::Unchecked) ++unchecked;
+      if (st == Qt::Checked)
+        ++checked;
+      else if (st == Qt::Unchecked)
+        ++unchecked;
     }
-    const auto st = checked == it->rowCount() ? Qt::Checked : unchecked == it->rowCount() ? Qt::Unchecked
-                                                                                          : Qt::PartiallyChecked;
+    const auto st = checked == it->rowCount()     ? Qt::Checked
+                    : unchecked == it->rowCount() ? Qt::Unchecked
+                                                  : Qt::PartiallyChecked;
     if (it != model_.invisibleRootItem()) it->setCheckState(st);
     return st;
   };
@@ -255,11 +265,14 @@ void WorkspaceTree::on_item_changed(QStandardItem* item) {
   for (QStandardItem* p = item->parent(); p; p = p->parent()) {
     int checked = 0, unchecked = 0;
     for (int r = 0; r < p->rowCount(); ++r) {
-      if (p->child(r)->checkState() == Qt::Checked) ++checked;
-      else if (p->child(r)->checkState() == Qt::Unchecked) ++unchecked;
+      if (p->child(r)->checkState() == Qt::Checked)
+        ++checked;
+      else if (p->child(r)->checkState() == Qt::Unchecked)
+        ++unchecked;
     }
-    p->setCheckState(checked == p->rowCount() ? Qt::Checked : unchecked == p->rowCount() ? Qt::Unchecked
-                                                                                          : Qt::PartiallyChecked);
+    p->setCheckState(checked == p->rowCount()     ? Qt::Checked
+                     : unchecked == p->rowCount() ? Qt::Unchecked
+                                                  : Qt::PartiallyChecked);
   }
   updating_ = false;
   // Remember hidden runs so a reload (after an import) keeps the user's choice.
@@ -267,8 +280,10 @@ void WorkspaceTree::on_item_changed(QStandardItem* item) {
   std::function<void(QStandardItem*)> note_hidden = [&](QStandardItem* it) {
     const QVariant id = it->data(kRunIdRole);
     if (id.isValid()) {
-      if (visible.contains(id.toLongLong())) hidden_.remove(id.toLongLong());
-      else hidden_.insert(id.toLongLong());
+      if (visible.contains(id.toLongLong()))
+        hidden_.remove(id.toLongLong());
+      else
+        hidden_.insert(id.toLongLong());
     }
     for (int r = 0; r < it->rowCount(); ++r) note_hidden(it->child(r));
   };

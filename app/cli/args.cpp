@@ -28,7 +28,8 @@ ParsedArgs parse_args(const std::vector<std::string>& args, const std::set<std::
   bool only_positional = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (only_positional || a.size() < 2 || a[0] != '-' || (a[1] != '-' && !std::isalpha(static_cast<unsigned char>(a[1])))) {
+    if (only_positional || a.size() < 2 || a[0] != '-' ||
+        (a[1] != '-' && !std::isalpha(static_cast<unsigned char>(a[1])))) {
       out.positional.push_back(a);
       continue;
     }

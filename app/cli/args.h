@@ -16,8 +16,8 @@ struct UsageError : std::runtime_error {
 
 struct ParsedArgs {
   std::vector<std::string> positional;
-  std::set<std::string> flags;                  // given boolean options, e.g. "--json"
-  std::map<std::string, std::string> options;   // options with a value, e.g. "--out" -> "dir"
+  std::set<std::string> flags;                 // given boolean options, e.g. "--json"
+  std::map<std::string, std::string> options;  // options with a value, e.g. "--out" -> "dir"
   bool has(const std::string& flag) const { return flags.count(flag) > 0; }
   std::optional<std::string> value(const std::string& option) const;
   double number(const std::string& option, double fallback) const;  // throws UsageError on junk

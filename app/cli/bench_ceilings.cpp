@@ -40,15 +40,16 @@ void print_ceilings(const kernels::CeilingSet& set, std::ostream& out, const cha
   if (set.rotation_mix.measured()) {
     const double mean = summarize(set.rotation_mix.values).mean;
     auto cmp = compare_to_ceilings(mean, set.computed_peak_flops, std::nullopt, "the rotation-mix ceiling");
-    std::snprintf(line, sizeof line, "%srotation-mix ceiling: %s, %s; %s of the computed peak %.2f GFLOPS\n",
-                  indent, spread(set.rotation_mix.values, 1e9, "GFLOPS").c_str(), spread(set.rotation_mix.per_cpu_second, 1e9, "GFLOP per CPU-s").c_str(),
+    std::snprintf(line, sizeof line, "%srotation-mix ceiling: %s, %s; %s of the computed peak %.2f GFLOPS\n", indent,
+                  spread(set.rotation_mix.values, 1e9, "GFLOPS").c_str(),
+                  spread(set.rotation_mix.per_cpu_second, 1e9, "GFLOP per CPU-s").c_str(),
                   fraction_text(cmp.fraction_of_peak, !cmp.flags.empty()).c_str(), set.computed_peak_flops / 1e9);
     out << line;
     // Per CPU-second against one core's computed peak: the figure that other processes on the cores do not lower.
     if (set.threads > 0 && !set.rotation_mix.per_cpu_second.empty()) {
-      const auto per_core = compare_to_ceilings(summarize(set.rotation_mix.per_cpu_second).mean,
-                                                set.computed_peak_flops / set.threads, std::nullopt,
-                                                "the rotation-mix ceiling per CPU-second");
+      const auto per_core =
+          compare_to_ceilings(summarize(set.rotation_mix.per_cpu_second).mean, set.computed_peak_flops / set.threads,
+                              std::nullopt, "the rotation-mix ceiling per CPU-second");
       std::snprintf(line, sizeof line, "%s  per CPU-second: %s of one core's computed peak %.2f GFLOPS\n", indent,
                     fraction_text(per_core.fraction_of_peak, !per_core.flags.empty()).c_str(),
                     set.computed_peak_flops / set.threads / 1e9);
@@ -59,14 +60,15 @@ void print_ceilings(const kernels::CeilingSet& set, std::ostream& out, const cha
     print_flags(cmp.flags, out, indent);
   }
   if (set.fma.measured()) {
-    std::snprintf(line, sizeof line, "%sFMA ceiling: %s, %s\n", indent,
-                  spread(set.fma.values, 1e9, "GFLOPS").c_str(), spread(set.fma.per_cpu_second, 1e9, "GFLOP per CPU-s").c_str());
+    std::snprintf(line, sizeof line, "%sFMA ceiling: %s, %s\n", indent, spread(set.fma.values, 1e9, "GFLOPS").c_str(),
+                  spread(set.fma.per_cpu_second, 1e9, "GFLOP per CPU-s").c_str());
     out << line << indent << "  how: " << set.fma.how << '\n';
   } else {
     out << indent << "FMA ceiling: not measured (" << set.fma.how << ")\n";
   }
   if (set.bandwidth.measured()) {
-    std::snprintf(line, sizeof line, "%smemory bandwidth ceiling: %s\n", indent, spread(set.bandwidth.values, 1e9, "GB/s").c_str());
+    std::snprintf(line, sizeof line, "%smemory bandwidth ceiling: %s\n", indent,
+                  spread(set.bandwidth.values, 1e9, "GB/s").c_str());
     out << line << indent << "  how: " << set.bandwidth.how << '\n';
   }
 }

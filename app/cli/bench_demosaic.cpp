@@ -80,15 +80,15 @@ void print_demosaic_bench(std::ostream& out, int frames, int all_threads) {
   cv::Mat dst_ocv, dst_ours;
 
   char line[1024];
-  std::snprintf(line, sizeof line,
-                "\nDemosaic, 1280x1024 BGGR mosaic -> BGR. BenchScope: Highway %s (run-time choice; equal to the scalar "
-                "reference pixel for pixel, tests compare), row stripes on OpenCV's pool; OpenCV %s: cvtColor "
-                "COLOR_BayerRG2BGR (bilinear), its pool = %s with %d threads here.\n"
-                "ms per frame: mean +- SD (n frames), median and minimum, in blocks of 10 (after 2 uncounted) in alternating "
-                "order. ratio = BenchScope / OpenCV of the same threads and depth, of the medians (the targets are "
-                "judged on it: a shared machine's preemptions inflate means and SDs) and, in brackets, of the means.\n",
-                demosaic_simd_target(), CV_VERSION, opencv_parallel_framework().c_str(),
-                all_threads);
+  std::snprintf(
+      line, sizeof line,
+      "\nDemosaic, 1280x1024 BGGR mosaic -> BGR. BenchScope: Highway %s (run-time choice; equal to the scalar "
+      "reference pixel for pixel, tests compare), row stripes on OpenCV's pool; OpenCV %s: cvtColor "
+      "COLOR_BayerRG2BGR (bilinear), its pool = %s with %d threads here.\n"
+      "ms per frame: mean +- SD (n frames), median and minimum, in blocks of 10 (after 2 uncounted) in alternating "
+      "order. ratio = BenchScope / OpenCV of the same threads and depth, of the medians (the targets are "
+      "judged on it: a shared machine's preemptions inflate means and SDs) and, in brackets, of the means.\n",
+      demosaic_simd_target(), CV_VERSION, opencv_parallel_framework().c_str(), all_threads);
   out << line << "load average before: " << load_average() << "\n\n";
   std::snprintf(line, sizeof line, "%-7s %-6s %-17s %-52s %-52s %-16s %s\n", "threads", "depth", "method",
                 "BenchScope, ms/frame", "OpenCV bilinear, ms/frame", "ratio", "target");
@@ -110,9 +110,9 @@ void print_demosaic_bench(std::ostream& out, int frames, int all_threads) {
         char ratios[40], target[48];
         std::snprintf(ratios, sizeof ratios, "%.2fx (%.2fx)", ratio, ratio_of_means);
         std::snprintf(target, sizeof target, "<= %.0fx: %s", limit, ratio <= limit ? "met" : "not met");
-        std::snprintf(line, sizeof line, "%-7d %-6s %-17s %-52s %-52s %-16s %s\n", threads, depth == 8 ? "8-bit" : "16-bit",
-                      k == 1 ? "bilinear" : "Malvar-He-Cutler", figure(methods[k].ms).c_str(),
-                      figure(methods[0].ms).c_str(), ratios, target);
+        std::snprintf(line, sizeof line, "%-7d %-6s %-17s %-52s %-52s %-16s %s\n", threads,
+                      depth == 8 ? "8-bit" : "16-bit", k == 1 ? "bilinear" : "Malvar-He-Cutler",
+                      figure(methods[k].ms).c_str(), figure(methods[0].ms).c_str(), ratios, target);
         out << line;
       }
     }

@@ -2,8 +2,8 @@
 #include "bench_dnn.h"
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -133,11 +133,12 @@ std::optional<double> device_ceiling(const DnnTarget& t, const kernels::CpuInfo&
 }  // namespace
 
 int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  std::set<std::string> valued = {"--model", "--arch", "--input", "--batch", "--runs", "--backend", "--platform",
-                                     "--workspace"};
+  std::set<std::string> valued = {"--model", "--arch",    "--input",    "--batch",
+                                  "--runs",  "--backend", "--platform", "--workspace"};
   valued.insert(kPowerOptions.begin(), kPowerOptions.end());
   const ParsedArgs args = parse_args(raw, {}, valued);
-  if (!args.positional.empty()) throw UsageError("bench dnn takes no positional arguments (got '" + args.positional.front() + "')");
+  if (!args.positional.empty())
+    throw UsageError("bench dnn takes no positional arguments (got '" + args.positional.front() + "')");
   if (args.value("--model") && args.value("--arch")) throw UsageError("give --model or --arch, not both");
   const double runs_arg = args.number("--runs", 20), batch_arg = args.number("--batch", 1);
   if (!(runs_arg >= 1 && runs_arg <= 100000) || runs_arg != std::floor(runs_arg))
@@ -146,7 +147,8 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     throw UsageError("--batch must be a whole number from 1 to 256");
   const int runs = static_cast<int>(runs_arg), batch = static_cast<int>(batch_arg);
   constexpr int kWarmup = 2;
-  const std::optional<cv::Size> input = args.value("--input") ? std::optional(parse_size(*args.value("--input"))) : std::nullopt;
+  const std::optional<cv::Size> input =
+      args.value("--input") ? std::optional(parse_size(*args.value("--input"))) : std::nullopt;
   const std::string backend_arg = args.value("--backend").value_or("all");
   std::vector<DnnTarget> targets;
   if (backend_arg == "all")
@@ -187,8 +189,9 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   for (Network& n : networks) {
     const cv::dnn::MatShape shape{batch, 3, n.input.height, n.input.width};
     const DnnFlops flops = count_flops(n.net, shape);
-    out << "\n" << n.model << " (" << n.family << " output), input " << n.input.width << "x" << n.input.height
-        << ", batch " << batch << (n.architecture_only ? std::string(": ") + kArchitectureTimingLabel : std::string())
+    out << "\n"
+        << n.model << " (" << n.family << " output), input " << n.input.width << "x" << n.input.height << ", batch "
+        << batch << (n.architecture_only ? std::string(": ") + kArchitectureTimingLabel : std::string())
         << "\n  FLOPs per image: " << fixed(static_cast<double>(flops.counted) / batch / 1e9, 3)
         << " G (2 per multiply-add, grouped convolutions per group); OpenCV 4.6 Net::getFLOPS: "
         << fixed(static_cast<double>(flops.opencv) / batch / 1e9, 3) << " G\n";

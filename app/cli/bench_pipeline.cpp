@@ -122,8 +122,9 @@ class ThreadingGuard {
 }  // namespace
 
 int bench_pipeline(const std::vector<std::string>& arguments, std::ostream& out) {
-  const ParsedArgs args = parse_args(arguments, {}, {"--frames", "--rounds", "--detect-workers", "--detect-scale", "--power",
-                                                     "--power-interval-ms", "--sysfs-root"});
+  const ParsedArgs args = parse_args(
+      arguments, {},
+      {"--frames", "--rounds", "--detect-workers", "--detect-scale", "--power", "--power-interval-ms", "--sysfs-root"});
   const double rounds_arg = args.number("--rounds", 3);
   if (!(rounds_arg >= 1 && rounds_arg <= 100) || rounds_arg != static_cast<double>(static_cast<long>(rounds_arg)))
     throw UsageError("--rounds must be a whole number from 1 to 100");
@@ -227,10 +228,11 @@ int bench_pipeline(const std::vector<std::string>& arguments, std::ostream& out)
   out << "  preprocessing  " << stat(seq.pre_ms) << '\n';
   out << "  detection      " << stat(seq.detect_ms) << '\n';
   out << "  per frame      " << stat(seq_total) << '\n';
-  std::snprintf(line, sizeof line,
-                "  throughput     %9.2f fps (%zu frames in %.3f s; %.2f cores busy on average, %.1f ms CPU per frame)\n",
-                seq_fps, seq.pre_ms.size(), seq.wall_s, seq.wall_s > 0 ? seq.cpu_s / seq.wall_s : 0,
-                seq.pre_ms.empty() ? 0 : 1e3 * seq.cpu_s / static_cast<double>(seq.pre_ms.size()));
+  std::snprintf(
+      line, sizeof line,
+      "  throughput     %9.2f fps (%zu frames in %.3f s; %.2f cores busy on average, %.1f ms CPU per frame)\n", seq_fps,
+      seq.pre_ms.size(), seq.wall_s, seq.wall_s > 0 ? seq.cpu_s / seq.wall_s : 0,
+      seq.pre_ms.empty() ? 0 : 1e3 * seq.cpu_s / static_cast<double>(seq.pre_ms.size()));
   out << line;
 
   std::snprintf(line, sizeof line, "concurrent pipeline (capture, preprocessing, %zu detection workers):\n", workers);
@@ -238,17 +240,18 @@ int bench_pipeline(const std::vector<std::string>& arguments, std::ostream& out)
   out << "  preprocessing  " << stat(conc.pre_ms) << '\n';
   out << "  detection      " << stat(conc.detect_ms) << '\n';
   out << "  end-to-end     " << stat(conc.e2e_ms) << '\n';
-  std::snprintf(line, sizeof line,
-                "  throughput     %9.2f fps (%zu frames in %.3f s; %.2f cores busy on average, %.1f ms CPU per frame)\n",
-                conc_fps, conc.processed, conc.wall_s, conc.wall_s > 0 ? conc.cpu_s / conc.wall_s : 0,
-                conc.processed == 0 ? 0 : 1e3 * conc.cpu_s / static_cast<double>(conc.processed));
+  std::snprintf(
+      line, sizeof line,
+      "  throughput     %9.2f fps (%zu frames in %.3f s; %.2f cores busy on average, %.1f ms CPU per frame)\n",
+      conc_fps, conc.processed, conc.wall_s, conc.wall_s > 0 ? conc.cpu_s / conc.wall_s : 0,
+      conc.processed == 0 ? 0 : 1e3 * conc.cpu_s / static_cast<double>(conc.processed));
   out << line;
 
   // Bound: the pipeline can go no faster than its slowest stage (preprocessing on one thread, detection on W) and
   // than the cores allow for the work of a frame, both taken from the sequential run's stage means.
   const double t_pre = summarize(seq.pre_ms).mean, t_det = summarize(seq.detect_ms).mean;
-  const double bound_fps = std::min({1e3 / t_pre, 1e3 * static_cast<double>(workers) / t_det,
-                                     1e3 * cores / (t_pre + t_det)});
+  const double bound_fps =
+      std::min({1e3 / t_pre, 1e3 * static_cast<double>(workers) / t_det, 1e3 * cores / (t_pre + t_det)});
   const double ratio = seq_fps > 0 ? conc_fps / seq_fps : 0;
   std::snprintf(line, sizeof line,
                 "\nconcurrent / sequential = %.2fx (target >= 1.6x: %s)\n"

@@ -88,7 +88,7 @@ int bench_range_stats(const std::vector<std::string>& raw, std::ostream& out) {
   // A drag: B moves across the trace from A near the start, so ranges grow from a few samples to nearly all.
   std::vector<double> ours, ref, pct;
   double worst = 0, sink = 0;
-  const double a = t[n / 50] + 3e-5;  // between samples
+  const double a = t[n / 50] + 3e-5;    // between samples
   for (int u = 0; u <= updates; ++u) {  // update 0 warms caches and is not counted
     const double b = a + (t.back() - a) * (0.02 + 0.97 * u / std::max(1, updates)) - 1e-5;
     const auto t0 = clock::now();
@@ -96,8 +96,9 @@ int bench_range_stats(const std::vector<std::string>& raw, std::ostream& out) {
     const auto t1 = clock::now();
     const Plain p = rescan(t, v, a, b);
     const auto t2 = clock::now();
-    worst = std::max({worst, rel(s.power_w->summary.mean, p.mean), rel(s.power_w->summary.sd, p.sd),
-                      rel(*s.energy_j, p.energy), rel(s.power_w->summary.max, p.max), rel(s.power_w->summary.min, p.min)});
+    worst =
+        std::max({worst, rel(s.power_w->summary.mean, p.mean), rel(s.power_w->summary.sd, p.sd),
+                  rel(*s.energy_j, p.energy), rel(s.power_w->summary.max, p.max), rel(s.power_w->summary.min, p.min)});
     if (s.power_w->summary.n != p.n) throw std::runtime_error("bench range-stats: sample counts disagree");
     sink += s.power_w->summary.mean + p.mean;
     if (u == 0) continue;
@@ -108,21 +109,23 @@ int bench_range_stats(const std::vector<std::string>& raw, std::ostream& out) {
       pct.push_back(ms(clock::now() - t3));
     }
   }
-  if (worst > 1e-9) throw std::runtime_error("bench range-stats: index and rescan disagree (relative " + std::to_string(worst) + ")");
+  if (worst > 1e-9)
+    throw std::runtime_error("bench range-stats: index and rescan disagree (relative " + std::to_string(worst) + ")");
   double load = 0;
   std::ifstream("/proc/loadavg") >> load;
   const Summary so = summarize(ours), sr = summarize(ref), sp = summarize(pct);
   char line[600];
-  std::snprintf(line, sizeof line,
-                "range statistics on a %zu-sample power trace (one update = n, mean, SD, min, max, energy, charge of a\n"
-                "selection dragged from 2 %% to 99 %% of the trace), %d updates, load average %.2f\n"
-                "  index build (once per trace):          %9.1f ms\n"
-                "  PowerIndex::stats per update:          %9.4f \xC2\xB1 %.4f ms (max %.4f ms)\n"
-                "  reference, plain rescan of the range:  %9.4f \xC2\xB1 %.4f ms (max %.4f ms)\n"
-                "  rescan / index = %.0fx; largest relative difference %.1e; 16 ms budget %s\n"
-                "  exact p5/p50/p95/p99 on release (nth_element): %.1f \xC2\xB1 %.1f ms (n = %zu)\n",
-                n, updates, load, build_ms, so.mean, so.sd, so.max, sr.mean, sr.sd, sr.max, sr.mean / std::max(so.mean, 1e-9),
-                worst, so.max <= 16 ? "met" : "not met in this run", sp.mean, sp.sd, sp.n);
+  std::snprintf(
+      line, sizeof line,
+      "range statistics on a %zu-sample power trace (one update = n, mean, SD, min, max, energy, charge of a\n"
+      "selection dragged from 2 %% to 99 %% of the trace), %d updates, load average %.2f\n"
+      "  index build (once per trace):          %9.1f ms\n"
+      "  PowerIndex::stats per update:          %9.4f \xC2\xB1 %.4f ms (max %.4f ms)\n"
+      "  reference, plain rescan of the range:  %9.4f \xC2\xB1 %.4f ms (max %.4f ms)\n"
+      "  rescan / index = %.0fx; largest relative difference %.1e; 16 ms budget %s\n"
+      "  exact p5/p50/p95/p99 on release (nth_element): %.1f \xC2\xB1 %.1f ms (n = %zu)\n",
+      n, updates, load, build_ms, so.mean, so.sd, so.max, sr.mean, sr.sd, sr.max, sr.mean / std::max(so.mean, 1e-9),
+      worst, so.max <= 16 ? "met" : "not met in this run", sp.mean, sp.sd, sp.n);
   out << line;
   if (sink == 0.123) out << ' ';  // keeps both sides from being optimised away
   return 0;

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <ostream>
@@ -62,7 +62,8 @@ int bench_tuner(const std::vector<std::string>& arguments, std::ostream& out) {
                        cv::remap(scene, coarse_img, coarse_map, cv::noArray(), cv::INTER_LINEAR);
                      }});
   methods.push_back({"exact map build only", [&](const View& v) { map = build_reprojection_map(lens, v); }});
-  methods.push_back({"coarse map build only", [&](const View& v) { build_reprojection_map_coarse(lens, v, coarse_map, step); }});
+  methods.push_back(
+      {"coarse map build only", [&](const View& v) { build_reprojection_map_coarse(lens, v, coarse_map, step); }});
 
   constexpr int kPasses = 4, kWarmUp = 2;
   int change = 0;
@@ -106,9 +107,10 @@ int bench_tuner(const std::vector<std::string>& arguments, std::ostream& out) {
     out << line;
   }
   const double coarse = median(methods[1].ms);
-  std::snprintf(line, sizeof line,
-                "\ncoarse map + remap: median %.2f ms wall, %.2f ms CPU per parameter change (target < 20 ms wall: %s)\n",
-                coarse, median(methods[1].cpu_ms), coarse < 20 ? "met" : "not met in this run");
+  std::snprintf(
+      line, sizeof line,
+      "\ncoarse map + remap: median %.2f ms wall, %.2f ms CPU per parameter change (target < 20 ms wall: %s)\n", coarse,
+      median(methods[1].cpu_ms), coarse < 20 ? "met" : "not met in this run");
   out << line;
   return 0;
 }

@@ -32,7 +32,8 @@ struct Method {
 }  // namespace
 
 int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
-  const ParsedArgs args = parse_args(arguments, {}, {"--frames", "--threads", "--power", "--power-interval-ms", "--sysfs-root"});
+  const ParsedArgs args =
+      parse_args(arguments, {}, {"--frames", "--threads", "--power", "--power-interval-ms", "--sysfs-root"});
   const int frames = static_cast<int>(args.number("--frames", 200));
   if (frames < 1 || frames > 100000) throw UsageError("--frames must be between 1 and 100000");
   if (args.value("--threads")) {
@@ -58,7 +59,8 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
 
   // OpenCV calls a BGGR sensor "BayerRG" (see bayer.cpp); the speed is the same for every pattern.
   std::vector<Method> methods;
-  methods.push_back({"OpenCV cvtColor BayerRG2BGR (bilinear demosaic)", [&] { cv::cvtColor(raw, rgb, cv::COLOR_BayerRG2BGR); }});
+  methods.push_back(
+      {"OpenCV cvtColor BayerRG2BGR (bilinear demosaic)", [&] { cv::cvtColor(raw, rgb, cv::COLOR_BayerRG2BGR); }});
   methods.push_back({"OpenCV cvtColor + remap (CV_16SC2 map) [reference]", [&] {
                        cv::cvtColor(raw, rgb, cv::COLOR_BayerRG2BGR);
                        cv::remap(rgb, view_img, map16, map_fraction, cv::INTER_LINEAR);
@@ -90,7 +92,9 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
       if (power) power->begin_phase(m.name);
       struct EndPhase {
         sensors::PowerRecorder* r;
-        ~EndPhase() { if (r) r->end_phase(); }
+        ~EndPhase() {
+          if (r) r->end_phase();
+        }
       } end_phase{power.get()};
       for (int i = 0; i < kWarmUp + count; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
@@ -105,7 +109,8 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
   std::ifstream("/proc/loadavg") >> load;
   std::snprintf(line, sizeof line,
                 "1280x1024 BGGR 8-bit -> 1280x1024 BGR, 150 deg rectilinear from a 195 deg equidistant lens\n"
-                "threads: %d in OpenCV's pool (OpenCV, our demosaic and fused path), %d OpenMP (building tables); n = %d frames per method, in %d blocks (each after %d warm-up frames) "
+                "threads: %d in OpenCV's pool (OpenCV, our demosaic and fused path), %d OpenMP (building tables); n = "
+                "%d frames per method, in %d blocks (each after %d warm-up frames) "
                 "of alternating order; 1-min load average at the end: %.2f\n\n",
                 opencv_threads(), vision_threads(), frames, kPasses, kWarmUp, load);
   out << line;

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/power/battery.h"
 #include "analysis/platform/platform_battery.h"
+#include "analysis/power/battery.h"
 #include "analysis/power/power_stats.h"
 #include "args.h"
 #include "command.h"
@@ -60,12 +60,16 @@ BatterySetup setup_from_args(const ParsedArgs& args, const Workspace* ws) {
   }
   if (args.value("--cutoff-cell-volts")) {
     pack.cutoff_cell_v = args.number("--cutoff-cell-volts", 0);
-    if (!(pack.cutoff_cell_v >= 0 && pack.cutoff_cell_v < 4.2)) throw UsageError("--cutoff-cell-volts must be in [0, 4.2)");
+    if (!(pack.cutoff_cell_v >= 0 && pack.cutoff_cell_v < 4.2))
+      throw UsageError("--cutoff-cell-volts must be in [0, 4.2)");
   }
   if (const auto model = args.value("--model")) {
-    if (*model == "lipo") setup.model = BatteryModel::Lipo;
-    else if (*model == "constant-power") setup.model = BatteryModel::ConstantPower;
-    else throw UsageError("--model must be constant-power or lipo");
+    if (*model == "lipo")
+      setup.model = BatteryModel::Lipo;
+    else if (*model == "constant-power")
+      setup.model = BatteryModel::ConstantPower;
+    else
+      throw UsageError("--model must be constant-power or lipo");
   }
   setup.depth_of_discharge = args.number("--dod", setup.depth_of_discharge);
   if (!(setup.depth_of_discharge > 0 && setup.depth_of_discharge <= 1)) throw UsageError("--dod must be in (0, 1]");
@@ -90,26 +94,37 @@ int per_platform(const LoadedData& data, const BatterySetup& setup, const Discha
   if (json) {
     nlohmann::json list = nlohmann::json::array();
     for (const PlatformBattery& b : rows)
-      list.push_back({{"platform", b.platform}, {"computer_mean_w", b.computer_mean_w}, {"mean_load_w", b.mission.mean_load_w()},
-                      {"runtime_min", b.result.runtime_s / 60}, {"runtime_h", b.result.runtime_s / 3600},
-                      {"stop_reason", b.result.stop_reason}, {"lipo_runtime_min", b.lipo.runtime_s / 60}});
-    out << nlohmann::json{{"format", "benchscope-battery-platforms"}, {"version", 1}, {"preset", pack.name},
-                          {"model", std::string(to_string(options.model))}, {"model_label", rows[0].result.model_label},
-                          {"nominal_v", pack.nominal_v()}, {"capacity_mah", pack.capacity_ah * 1000},
-                          {"usable_fraction", options.depth_of_discharge}, {"extra_load_w", setup.extra_load_w},
-                          {"mission", setup.mission}, {"platforms", list}}
+      list.push_back({{"platform", b.platform},
+                      {"computer_mean_w", b.computer_mean_w},
+                      {"mean_load_w", b.mission.mean_load_w()},
+                      {"runtime_min", b.result.runtime_s / 60},
+                      {"runtime_h", b.result.runtime_s / 3600},
+                      {"stop_reason", b.result.stop_reason},
+                      {"lipo_runtime_min", b.lipo.runtime_s / 60}});
+    out << nlohmann::json{{"format", "benchscope-battery-platforms"},
+                          {"version", 1},
+                          {"preset", pack.name},
+                          {"model", std::string(to_string(options.model))},
+                          {"model_label", rows[0].result.model_label},
+                          {"nominal_v", pack.nominal_v()},
+                          {"capacity_mah", pack.capacity_ah * 1000},
+                          {"usable_fraction", options.depth_of_discharge},
+                          {"extra_load_w", setup.extra_load_w},
+                          {"mission", setup.mission},
+                          {"platforms", list}}
                .dump(2)
         << '\n';
     return 0;
   }
   char line[512];
-  std::snprintf(line, sizeof line, "battery %s: %.1f V (%dS) x %.0f mAh = %.2f Wh, usable %.0f %%, extra load %g W%s%s\n",
+  std::snprintf(line, sizeof line,
+                "battery %s: %.1f V (%dS) x %.0f mAh = %.2f Wh, usable %.0f %%, extra load %g W%s%s\n",
                 pack.name.c_str(), pack.nominal_v(), pack.cells_series, pack.capacity_ah * 1000, pack.nominal_wh(),
                 options.depth_of_discharge * 100, setup.extra_load_w, setup.mission.empty() ? "" : ", mission ",
                 setup.mission.c_str());
   out << line << "model: " << rows[0].result.model_label << '\n';
-  std::snprintf(line, sizeof line, "%-20s %14s %14s %14s  %s\n", "platform", "computer (W)", "total (W)", "runtime (min)",
-                "ends by");
+  std::snprintf(line, sizeof line, "%-20s %14s %14s %14s  %s\n", "platform", "computer (W)", "total (W)",
+                "runtime (min)", "ends by");
   out << line;
   for (const PlatformBattery& b : rows) {
     std::snprintf(line, sizeof line, "%-20s %14.2f %14.2f %14.2f  %s\n", b.platform.c_str(), b.computer_mean_w,
@@ -155,7 +170,8 @@ int run_battery(const std::vector<std::string>& raw, std::ostream& out, std::ost
   int given = (args.value("--watts") ? 1 : 0) + (args.value("--power-log") ? 1 : 0) + (args.value("--mission") ? 1 : 0);
   if (given == 0 && !setup.mission.empty()) given = 1;  // the preset's own mission
   if (given != 1)
-    throw UsageError("give exactly one of --watts P, --power-log FILE or --mission SPEC (or --workspace WS alone: per platform)");
+    throw UsageError(
+        "give exactly one of --watts P, --power-log FILE or --mission SPEC (or --workspace WS alone: per platform)");
 
   Mission mission;
   std::string source;
@@ -202,7 +218,8 @@ int run_battery(const std::vector<std::string>& raw, std::ostream& out, std::ost
   }
   if (args.has("--json")) {
     nlohmann::json phases = nlohmann::json::array();
-    for (const MissionPhase& p : mission.phases) phases.push_back({{"name", p.name}, {"seconds", p.duration_s}, {"load_w", p.load_w}});
+    for (const MissionPhase& p : mission.phases)
+      phases.push_back({{"name", p.name}, {"seconds", p.duration_s}, {"load_w", p.load_w}});
     out << nlohmann::json{{"format", "benchscope-battery"},
                           {"version", 2},
                           {"model", std::string(to_string(options.model))},

@@ -9,14 +9,14 @@
 #include <random>
 #include <sstream>
 
-#include "analysis/power/decimate.h"
 #include "analysis/peaks/flops.h"
+#include "analysis/power/decimate.h"
 #include "analysis/power/phase_energy.h"
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
 #include "args.h"
-#include "bench_dnn.h"
 #include "bench_ceilings.h"
+#include "bench_dnn.h"
 #include "bench_pipeline.h"
 #include "bench_range_stats.h"
 #include "bench_tuner.h"
@@ -59,12 +59,14 @@ double per_core_peak(const kernels::Backend& b, const kernels::CpuInfo& cpu) {
 void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, const kernels::CpuInfo& cpu, int runs,
                           std::ostream& out) {
   const kernels::RotationParams params{4, 40000};
-  const std::int64_t workers = args.value("--workers") ? static_cast<std::int64_t>(args.number("--workers", 16384)) : 16384;
+  const std::int64_t workers =
+      args.value("--workers") ? static_cast<std::int64_t>(args.number("--workers", 16384)) : 16384;
   const double flops = rotation_flop_count(params.dims, params.iterations, workers);
   std::vector<float> outputs;
   std::vector<double> without, with;
   const auto timed = [&](std::vector<double>& into) {
-    into.push_back(flops / b.run_point(params, workers, kernels::Variant::Throughput, outputs, interrupt_token()) / 1e9);
+    into.push_back(flops / b.run_point(params, workers, kernels::Variant::Throughput, outputs, interrupt_token()) /
+                   1e9);
   };
   b.run_point(params, workers, kernels::Variant::Throughput, outputs, interrupt_token());  // warm-up
   for (int r = 0; r < runs; ++r) timed(without);
@@ -91,15 +93,15 @@ void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, con
   if (!energies.empty()) {
     const double n = static_cast<double>(energies.size());
     std::snprintf(line, sizeof line, "  %s: %.3f J per run, mean %.2f W, %.3f GFLOPS/W at mean power (%s)\n",
-                  std::string(to_string(trace.provenance.measurement)).c_str(), joules / n, watts / n,
-                  p / (watts / n), trace.provenance.sensor.c_str());
+                  std::string(to_string(trace.provenance.measurement)).c_str(), joules / n, watts / n, p / (watts / n),
+                  trace.provenance.sensor.c_str());
     out << line;
   }
 }
 
 // The ceiling section (bench_ceilings.h), then the per-host cache and the load average.
-void bench_and_cache_ceilings(const kernels::CpuInfo& cpu, const kernels::Backend& simd, int runs,
-                              std::int64_t workers, std::ostream& out) {
+void bench_and_cache_ceilings(const kernels::CpuInfo& cpu, const kernels::Backend& simd, int runs, std::int64_t workers,
+                              std::ostream& out) {
   const kernels::CeilingSet ceilings = bench_ceilings(cpu, simd, runs, workers, out);
   try {
     kernels::store_ceilings(ceilings);
@@ -112,7 +114,8 @@ void bench_and_cache_ceilings(const kernels::CpuInfo& cpu, const kernels::Backen
 
 int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   const ParsedArgs args =
-      parse_args(raw, {"--no-ceilings", "--ceilings-only"}, {"--runs", "--workers", "--power", "--power-interval-ms", "--sysfs-root", "--isa"});
+      parse_args(raw, {"--no-ceilings", "--ceilings-only"},
+                 {"--runs", "--workers", "--power", "--power-interval-ms", "--sysfs-root", "--isa"});
   const int runs = static_cast<int>(args.number("--runs", 7));
   if (runs < 1 || runs > 1000) throw UsageError("--runs must be between 1 and 1000");
   if (args.has("--no-ceilings") && args.has("--ceilings-only"))
@@ -157,7 +160,7 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
     for (const auto v : b.variants) {
       // The single-threaded scalar reference gets 8 workers so the benchmark stays short.
       const std::int64_t workers = b.id == "cpu-scalar"           ? 8
-                                   : w_override                    ? static_cast<std::int64_t>(w_given)
+                                   : w_override                   ? static_cast<std::int64_t>(w_given)
                                    : v == kernels::Variant::Paper ? 2048
                                                                   : 16384;
       std::vector<double> gflops, cpu_efficiency;
@@ -184,9 +187,8 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
         opencl_best = std::max(opencl_best, g);
         opencl_best_cpu = std::max(opencl_best_cpu, eff);
       }
-      const std::string name = b.id.starts_with("opencl") || b.id.starts_with("cuda")
-                                   ? b.id + " " + b.device_name.substr(0, 24)
-                                   : b.label;
+      const std::string name =
+          b.id.starts_with("opencl") || b.id.starts_with("cuda") ? b.id + " " + b.device_name.substr(0, 24) : b.label;
       char spread[64], eff_text[32];
       std::snprintf(spread, sizeof spread, "%.2f \xC2\xB1 %.2f (%zu)", sum.mean, sum.sd, sum.n);
       if (eff > 0)
@@ -286,7 +288,8 @@ int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
 
 const CommandRegistrar registrar({
     "bench",
-    "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate | range-stats | dnn)",
+    "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate | "
+    "range-stats | dnn)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--isa avx512|avx2|sse4|generic]\n"
     "         [--no-ceilings | --ceilings-only]\n"
     "         [--power SENSOR|auto] [--power-interval-ms M] [--sysfs-root DIR]\n"
@@ -299,27 +302,34 @@ const CommandRegistrar registrar({
     "       benchscope-cli bench power-csv [--rows R] [--runs K]\n"
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
     "       benchscope-cli bench range-stats [--samples N] [--updates U]   (the Power tab's selection statistics per\n"
-    "         mouse move on an N-sample trace, default 10,000,000, vs a plain rescan of the range)\n"
-    + std::string(kBenchDnnUsage) +
-    "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
-    "  median and mean \xC2\xB1 SD of R\n"
-    "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU SIMD\n"
-    "  ratio and the sweep bookkeeping overhead. Then the empirical ceilings measured afresh (rotation mix, FMA,\n"
-    "  memory bandwidth; docs/ceilings.md), R rounds alternating with the CPU SIMD throughput variant: mean \xC2\xB1 SD\n"
-    "  (n), % of the computed peak (flagged above it), % of the ceiling, paired ratios (wall clock and per\n"
-    "  CPU-second) and whether the 97 % target is met; stored in the per-host cache. --isa forces the CPU SIMD\n"
-    "  dispatch (kernel, peak and ceilings) to one instruction set this CPU has. --no-ceilings skips the section;\n"
-    "  --ceilings-only runs only it (with the CPU line and the load average).\n"
-    "  Figures only: nothing passes or fails on time.\n"
-    "  bench vision: preprocessing of a 1280x1024 frame (OpenCV cvtColor + remap, BenchScope's reprojection and fused\n"
-    "  pass), then BenchScope's bilinear and Malvar-He-Cutler demosaics against OpenCV's cvtColor bilinear, 8 and 16\n"
-    "  bit, on 1 and on all threads: mean \xC2\xB1 SD (n), medians, ratios, the targets (<= 1x, <= 2x) and the load average.\n"
-    "  bench pipeline: the vision pipeline's stages one after another on one thread vs the concurrent pipeline with\n"
-    "  W detection workers (default: this machine's threads) on R rounds (default 3) of N synthetic paper frames\n"
-    "  (default 16), HOG at scale\n"
-    "  S (default 0.5); per-stage mean \xC2\xB1 SD (n), both throughputs, their ratio and the theoretical bound, with 1\n"
-    "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.\n"
-    + std::string(kBenchDnnHelp),
+    "         mouse move on an N-sample trace, default 10,000,000, vs a plain rescan of the range)\n" +
+        std::string(kBenchDnnUsage) +
+        "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
+        "  median and mean \xC2\xB1 SD of R\n"
+        "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU "
+        "SIMD\n"
+        "  ratio and the sweep bookkeeping overhead. Then the empirical ceilings measured afresh (rotation mix, FMA,\n"
+        "  memory bandwidth; docs/ceilings.md), R rounds alternating with the CPU SIMD throughput variant: mean "
+        "\xC2\xB1 SD\n"
+        "  (n), % of the computed peak (flagged above it), % of the ceiling, paired ratios (wall clock and per\n"
+        "  CPU-second) and whether the 97 % target is met; stored in the per-host cache. --isa forces the CPU SIMD\n"
+        "  dispatch (kernel, peak and ceilings) to one instruction set this CPU has. --no-ceilings skips the section;\n"
+        "  --ceilings-only runs only it (with the CPU line and the load average).\n"
+        "  Figures only: nothing passes or fails on time.\n"
+        "  bench vision: preprocessing of a 1280x1024 frame (OpenCV cvtColor + remap, BenchScope's reprojection and "
+        "fused\n"
+        "  pass), then BenchScope's bilinear and Malvar-He-Cutler demosaics against OpenCV's cvtColor bilinear, 8 and "
+        "16\n"
+        "  bit, on 1 and on all threads: mean \xC2\xB1 SD (n), medians, ratios, the targets (<= 1x, <= 2x) and the "
+        "load average.\n"
+        "  bench pipeline: the vision pipeline's stages one after another on one thread vs the concurrent pipeline "
+        "with\n"
+        "  W detection workers (default: this machine's threads) on R rounds (default 3) of N synthetic paper frames\n"
+        "  (default 16), HOG at scale\n"
+        "  S (default 0.5); per-stage mean \xC2\xB1 SD (n), both throughputs, their ratio and the theoretical bound, "
+        "with 1\n"
+        "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.\n" +
+        std::string(kBenchDnnHelp),
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
       if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
@@ -330,8 +340,9 @@ const CommandRegistrar registrar({
       if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
       if (!args.empty() && args[0] == "range-stats") return bench_range_stats(rest, out);
       if (!args.empty() && args[0] == "dnn") return bench_dnn(rest, out, err);
-      throw UsageError("expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv', "
-                       "'bench decimate', 'bench range-stats' or 'bench dnn'");
+      throw UsageError(
+          "expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv', "
+          "'bench decimate', 'bench range-stats' or 'bench dnn'");
     },
 });
 

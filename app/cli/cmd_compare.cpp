@@ -72,15 +72,26 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
   if (args.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& r : rows) {
-      list.push_back({{"key", r.key}, {"measure", r.measure}, {"unit", r.unit},
+      list.push_back({{"key", r.key},
+                      {"measure", r.measure},
+                      {"unit", r.unit},
                       {"a", {{"n", r.a.n}, {"mean", r.a.mean}, {"sd", r.a.sd}}},
                       {"b", {{"n", r.b.n}, {"mean", r.b.mean}, {"sd", r.b.sd}}},
-                      {"change", r.change}, {"u", r.test.u}, {"p_value", r.test.p_value}, {"exact", r.test.exact},
+                      {"change", r.change},
+                      {"u", r.test.u},
+                      {"p_value", r.test.p_value},
+                      {"exact", r.test.exact},
                       {"verdict", std::string(to_string(r.verdict))}});
     }
-    out << nlohmann::json{{"format", "benchscope-compare"}, {"version", 1}, {"a", args.positional[0]},
-                          {"b", args.positional[1]}, {"threshold", options.threshold}, {"alpha", options.alpha},
-                          {"regressions", regressions}, {"improvements", improvements}, {"rows", list}}
+    out << nlohmann::json{{"format", "benchscope-compare"},
+                          {"version", 1},
+                          {"a", args.positional[0]},
+                          {"b", args.positional[1]},
+                          {"threshold", options.threshold},
+                          {"alpha", options.alpha},
+                          {"regressions", regressions},
+                          {"improvements", improvements},
+                          {"rows", list}}
                .dump(2)
         << '\n';
   } else {

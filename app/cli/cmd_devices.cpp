@@ -6,10 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/stats/units.h"
-#include "analysis/peaks/device_table.h"
 #include "analysis/peaks/ceiling_check.h"
+#include "analysis/peaks/device_table.h"
 #include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
 #include "args.h"
 #include "bench_ceilings.h"
 #include "command.h"
@@ -25,18 +25,25 @@ namespace {
 nlohmann::json ceiling_json(const kernels::Ceiling& c) {
   if (!c.measured()) return {{"how", c.how}, {"mean", nullptr}};
   const Summary w = summarize(c.values), p = summarize(c.per_cpu_second);
-  return {{"unit", c.unit}, {"mean", w.mean}, {"sd", w.sd}, {"n", w.n}, {"per_cpu_second_mean", p.mean},
+  return {{"unit", c.unit},     {"mean", w.mean}, {"sd", w.sd}, {"n", w.n}, {"per_cpu_second_mean", p.mean},
           {"values", c.values}, {"how", c.how}};
 }
 
 nlohmann::json ceilings_json(const kernels::CeilingSet& s) {
-  nlohmann::json j{{"date", s.date}, {"isa", s.isa}, {"threads", s.threads}, {"clock_hz", s.clock_hz},
-                   {"computed_peak_flops", s.computed_peak_flops}, {"rotation_mix", ceiling_json(s.rotation_mix)},
-                   {"fma", ceiling_json(s.fma)}, {"bandwidth", ceiling_json(s.bandwidth)}, {"flags", nlohmann::json::array()}};
+  nlohmann::json j{{"date", s.date},
+                   {"isa", s.isa},
+                   {"threads", s.threads},
+                   {"clock_hz", s.clock_hz},
+                   {"computed_peak_flops", s.computed_peak_flops},
+                   {"rotation_mix", ceiling_json(s.rotation_mix)},
+                   {"fma", ceiling_json(s.fma)},
+                   {"bandwidth", ceiling_json(s.bandwidth)},
+                   {"flags", nlohmann::json::array()}};
   if (s.rotation_mix.measured()) {
     const auto cmp = compare_to_ceilings(summarize(s.rotation_mix.values).mean, s.computed_peak_flops, std::nullopt,
                                          "the rotation-mix ceiling");
-    j["rotation_mix"]["fraction_of_computed_peak"] = cmp.fraction_of_peak ? nlohmann::json(*cmp.fraction_of_peak) : nlohmann::json();
+    j["rotation_mix"]["fraction_of_computed_peak"] =
+        cmp.fraction_of_peak ? nlohmann::json(*cmp.fraction_of_peak) : nlohmann::json();
     for (const PlausibilityFlag& f : cmp.flags) j["flags"].push_back({{"code", f.code}, {"reason", f.reason}});
   }
   return j;
@@ -53,15 +60,18 @@ int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
       e["note"] = s.note;
       list.push_back(std::move(e));
     }
-    out << nlohmann::json{{"format", "benchscope-device-specs"}, {"version", 1}, {"path", table.path}, {"devices", list}}
+    out << nlohmann::json{{"format", "benchscope-device-specs"},
+                          {"version", 1},
+                          {"path", table.path},
+                          {"devices", list}}
                .dump(2)
         << '\n';
     return 0;
   }
   out << "device table " << table.path << " (" << table.devices.size() << " devices)\n";
   for (const DeviceSpec& s : table.devices) {
-    out << s.id << " (" << to_string(s.kind) << "): " << s.name << "\n    FP32 peak " << format_si(s.fp32_peak_flops, "FLOPS")
-        << " = " << s.derivation;
+    out << s.id << " (" << to_string(s.kind) << "): " << s.name << "\n    FP32 peak "
+        << format_si(s.fp32_peak_flops, "FLOPS") << " = " << s.derivation;
     if (s.memory_bandwidth_bytes_per_s) out << "; memory " << format_si(*s.memory_bandwidth_bytes_per_s, "B/s");
     if (s.tdp_w) out << "; TDP " << format_si(*s.tdp_w, "W");
     out << "\n    source: " << s.source_title << (s.source_url.empty() ? "" : " <" + s.source_url + ">") << '\n';
@@ -115,10 +125,15 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
     for (const auto& b : backends) {
       nlohmann::json variants = nlohmann::json::array();
       for (auto v : b.variants) variants.push_back(b.variant_label(v));
-      nlohmann::json entry{{"backend", b.id}, {"label", b.label}, {"device", b.device_name},
-                           {"kind", std::string(to_string(b.kind))}, {"variants", variants},
-                           {"theoretical_peak_flops", b.theoretical_peak_flops}, {"details", b.details},
-                           {"spec", spec_json(spec_of(b))}, {"empirical_ceilings", nullptr}};
+      nlohmann::json entry{{"backend", b.id},
+                           {"label", b.label},
+                           {"device", b.device_name},
+                           {"kind", std::string(to_string(b.kind))},
+                           {"variants", variants},
+                           {"theoretical_peak_flops", b.theoretical_peak_flops},
+                           {"details", b.details},
+                           {"spec", spec_json(spec_of(b))},
+                           {"empirical_ceilings", nullptr}};
       if (b.id == "cpu-simd" && ceilings) entry["empirical_ceilings"] = ceilings_json(*ceilings);
       list.push_back(std::move(entry));
     }

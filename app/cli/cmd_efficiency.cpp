@@ -28,11 +28,18 @@ int run_efficiency(const std::vector<std::string>& raw, std::ostream& out) {
     const PeakRow& peak = e.peak;
     const std::string& platform = peak.platform;
     if (args.has("--json")) {
-      list.push_back({{"platform", platform}, {"device", peak.device}, {"backend", peak.backend},
-                      {"peak_flops", peak.peak.flops}, {"supply_voltage_v", e.supply_v}, {"max_current_a", e.current_a.max},
-                      {"mean_power_w", e.power_w.mean}, {"flops_per_watt_paper", e.paper_gflops_per_w * 1e9},
-                      {"flops_per_watt_mean_power", e.mean_power_gflops_per_w * 1e9}, {"joules_per_gflop", e.joules_per_gflop},
-                      {"measurement", e.measurement}, {"flags", flags_json(e.flags)}});
+      list.push_back({{"platform", platform},
+                      {"device", peak.device},
+                      {"backend", peak.backend},
+                      {"peak_flops", peak.peak.flops},
+                      {"supply_voltage_v", e.supply_v},
+                      {"max_current_a", e.current_a.max},
+                      {"mean_power_w", e.power_w.mean},
+                      {"flops_per_watt_paper", e.paper_gflops_per_w * 1e9},
+                      {"flops_per_watt_mean_power", e.mean_power_gflops_per_w * 1e9},
+                      {"joules_per_gflop", e.joules_per_gflop},
+                      {"measurement", e.measurement},
+                      {"flags", flags_json(e.flags)}});
       continue;
     }
     char line[512];
@@ -46,7 +53,8 @@ int run_efficiency(const std::vector<std::string>& raw, std::ostream& out) {
     out << line << "  power measured by: " << e.measurement << '\n';
     for (const PlausibilityFlag& f : e.flags) out << "  \xE2\x9A\xA0 " << f.code << ": " << f.reason << '\n';
   }
-  if (args.has("--json")) out << nlohmann::json{{"format", "benchscope-efficiency"}, {"version", 1}, {"platforms", list}}.dump(2) << '\n';
+  if (args.has("--json"))
+    out << nlohmann::json{{"format", "benchscope-efficiency"}, {"version", 1}, {"platforms", list}}.dump(2) << '\n';
   if (rows.empty()) throw std::runtime_error("no platform has both FLOPS runs and a current log with a supply voltage");
   return 0;
 }

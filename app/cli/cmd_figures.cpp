@@ -21,8 +21,8 @@ int run_figures(const std::vector<std::string>& raw, std::ostream& out, std::ost
   values.insert("--out");
   values.insert("--data");
 #else
-  const std::set<std::string> values{"--out", "--data", "--format", "--preset", "--width-mm", "--height-mm", "--dpi", "--font-pt",
-                                     "--template"};
+  const std::set<std::string> values{"--out",       "--data", "--format",  "--preset",  "--width-mm",
+                                     "--height-mm", "--dpi",  "--font-pt", "--template"};
 #endif
   const ParsedArgs args = parse_args(raw, {"--quiet"}, values);
   if (args.positional.empty()) throw UsageError("figures needs a workspace or files");
@@ -31,22 +31,24 @@ int run_figures(const std::vector<std::string>& raw, std::ostream& out, std::ost
 #ifndef BENCHSCOPE_WITH_FIGURES
   (void)out;
   (void)err;
-  throw std::runtime_error("this benchscope-cli was built without Qt (BENCHSCOPE_GUI=OFF), so it cannot render "
-                           "figures; use a build with the GUI, or the GUI's File > Reproduce paper figures");
+  throw std::runtime_error(
+      "this benchscope-cli was built without Qt (BENCHSCOPE_GUI=OFF), so it cannot render "
+      "figures; use a build with the GUI, or the GUI's File > Reproduce paper figures");
 #else
   const ui::FigureOptions o = parse_figure_options(args);
   const auto templates = figure_templates(args);
   const std::string data = args.value("--data").value_or("all");
   if (data != "all" && data != "paper") throw UsageError("--data takes all or paper");
-  const ui::FigureData fd =
-      ui::select_figure_data(figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token()),
-                             data == "paper" ? ui::FigureDataChoice::PaperOnly : ui::FigureDataChoice::All);
+  const ui::FigureData fd = ui::select_figure_data(
+      figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token()),
+      data == "paper" ? ui::FigureDataChoice::PaperOnly : ui::FigureDataChoice::All);
   const auto app = offscreen_application();
   const bool quiet = args.has("--quiet");
   const auto result = ui::render_figures(templates, fd, QString::fromStdString(*out_dir), o, interrupt_token(),
                                          [&](int done, int total, const QString& what) {
-                                           if (!quiet) err << "\r[" << done << "/" << total << "] " << what.toStdString()
-                                                           << "        " << std::flush;
+                                           if (!quiet)
+                                             err << "\r[" << done << "/" << total << "] " << what.toStdString()
+                                                 << "        " << std::flush;
                                          });
   if (!quiet) {
     err << '\n' << "data: " << fd.selection << '\n';

@@ -22,8 +22,7 @@ namespace bs::cli {
 namespace {
 
 int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
-  const ParsedArgs args =
-      parse_args(raw_args, {}, {"--triptych", "--out", "--method", "--lens", "--window"});
+  const ParsedArgs args = parse_args(raw_args, {}, {"--triptych", "--out", "--method", "--lens", "--window"});
   if (args.positional.size() != 1) throw UsageError("frames needs exactly one workspace");
   const Workspace ws(args.positional[0]);
   const auto frames = ws.frames();
@@ -36,9 +35,9 @@ int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
     for (std::size_t i = 0; i < frames.size(); ++i) {
       const Frame& f = frames[i].frame;
       t.add({std::to_string(i + 1), f.label, std::to_string(f.width) + "x" + std::to_string(f.height),
-                 f.is_mosaic() ? f.pattern : (f.channels == 3 ? "colour" : "grey"), std::to_string(f.bit_depth),
-                 f.synthetic ? "synthetic" : "captured", f.storage == FrameStorage::Copy ? "copy" : "reference",
-                 frames[i].path});
+             f.is_mosaic() ? f.pattern : (f.channels == 3 ? "colour" : "grey"), std::to_string(f.bit_depth),
+             f.synthetic ? "synthetic" : "captured", f.storage == FrameStorage::Copy ? "copy" : "reference",
+             frames[i].path});
     }
     t.print(out);
     return 0;
@@ -78,13 +77,14 @@ int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
       {"-a-mosaic.png", &t.mosaic}, {"-b-demosaiced.png", &t.demosaiced}, {"-c-reprojected.png", &t.reprojected}};
   for (const auto& [suffix, mat] : panels) {
     const std::string path = *prefix + suffix;
-    if (!cv::imwrite(path, vision::window_to_8bit(*mat, low, high))) throw std::runtime_error(path + ": cannot write PNG");
+    if (!cv::imwrite(path, vision::window_to_8bit(*mat, low, high)))
+      throw std::runtime_error(path + ": cannot write PNG");
     out << "wrote " << path << " (" << mat->cols << "x" << mat->rows << " px)\n";
   }
   out << "frame " << frame.label << (frame.synthetic ? " (synthetic)" : "") << ", demosaic "
-      << vision::to_string(method) << ", lens " << vision::to_string(fl.lens.type) << " " << fl.lens.fov_deg
-      << " deg" << (fl.from_frame ? " (recorded with the frame)" : " (paper default)") << ", view " << fl.view.fov_deg
-      << " deg " << fl.view.width << "x" << fl.view.height << " px\n";
+      << vision::to_string(method) << ", lens " << vision::to_string(fl.lens.type) << " " << fl.lens.fov_deg << " deg"
+      << (fl.from_frame ? " (recorded with the frame)" : " (paper default)") << ", view " << fl.view.fov_deg << " deg "
+      << fl.view.width << "x" << fl.view.height << " px\n";
   return 0;
 }
 
@@ -96,7 +96,8 @@ const CommandRegistrar registrar({
     "  Without --triptych: one line per frame (size, Bayer pattern, bit depth, synthetic or captured, kept by\n"
     "  reference or copied). With --triptych N: frame N as the paper's Figure 3 panels, PREFIX-a-mosaic.png (raw\n"
     "  mosaic as grey), PREFIX-b-demosaiced.png and PREFIX-c-reprojected.png, through the lens recorded with the\n"
-    "  frame (or LENS.json, as the reprojection tuner saves it; else the paper's 195 degree lens and 150 degree view),\n"
+    "  frame (or LENS.json, as the reprojection tuner saves it; else the paper's 195 degree lens and 150 degree "
+    "view),\n"
     "  8-bit through the display window (default: the frame's full range).",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_frames(args, out);

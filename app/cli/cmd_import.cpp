@@ -75,7 +75,8 @@ const CommandRegistrar registrar({
     "         [--raw-geometry WxH[:PATTERN[:BITS[:le|be]]]]\n"
     "  Imports files (formats recognised by content) and folders (walked recursively) into WORKSPACE (an SQLite\n"
     "  .bsw file, created when missing). Every file is parsed before anything is written; if one fails, nothing is\n"
-    "  imported unless --keep-going is given; all files go in one transaction (with --keep-going, one per file). A\n  file whose content was imported before is skipped.\n"
+    "  imported unless --keep-going is given; all files go in one transaction (with --keep-going, one per file). A\n  "
+    "file whose content was imported before is skipped.\n"
     "  Frames (.raw + JSON sidecar, PGM/PPM, PNG, TIFF) are kept by reference (path + content hash, the file is read\n"
     "  again when opened) unless --copy-frames stores their pixels in the workspace. --raw-geometry gives the size,\n"
     "  Bayer pattern (BGGR, RGGB, GRBG, GBRG or grey), bit depth and byte order of .raw files that have no sidecar.",

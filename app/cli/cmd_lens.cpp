@@ -40,12 +40,13 @@ int lens_circle(const std::vector<std::string>& raw, std::ostream& out) {
   if (circle_fov < 0 || circle_fov > 360) throw UsageError("--circle-fov must be in (0, 360] degrees");
   p.lens = vision::propose_lens(p.lens, *circle, circle_fov);
   char line[256];
-  std::snprintf(line, sizeof line,
-                "image circle: centre (%.2f, %.2f) px, radius %.2f px (fit RMS %.3f px over %d edge points)\n"
-                "proposed %s lens: principal point (%.2f, %.2f) px, r_pp %.6g rad/px (focal %.2f px) for %.1f deg FOV\n",
-                circle->centre.x, circle->centre.y, circle->radius, circle->rms_px, circle->edge_points,
-                std::string(vision::to_string(p.lens.type)).c_str(), p.lens.cx, p.lens.cy, p.lens.r_pp,
-                1 / p.lens.r_pp, p.lens.fov_deg);
+  std::snprintf(
+      line, sizeof line,
+      "image circle: centre (%.2f, %.2f) px, radius %.2f px (fit RMS %.3f px over %d edge points)\n"
+      "proposed %s lens: principal point (%.2f, %.2f) px, r_pp %.6g rad/px (focal %.2f px) for %.1f deg FOV\n",
+      circle->centre.x, circle->centre.y, circle->radius, circle->rms_px, circle->edge_points,
+      std::string(vision::to_string(p.lens.type)).c_str(), p.lens.cx, p.lens.cy, p.lens.r_pp, 1 / p.lens.r_pp,
+      p.lens.fov_deg);
   out << line << "calibration: " << vision::describe(p.lens.calibration) << '\n';
   if (const auto o = args.value("--out")) {
     vision::save_tuner_json(p, *o);
@@ -117,8 +118,7 @@ int lens_refine_lines(const std::vector<std::string>& raw, std::ostream& out) {
                 "kannala-brandt lens: principal point (%.2f, %.2f) px, r_pp %.6g rad/px (focal %.2f px), "
                 "k = (%.5g, %.5g, %.5g, %.5g)\n",
                 fit.after.lines, fit.after.points, fit.before.rms_px, fit.after.rms_px, fit.before.max_px,
-                fit.after.max_px, fit.iterations, l.cx, l.cy, l.r_pp,
-                1 / l.r_pp, l.k[0], l.k[1], l.k[2], l.k[3]);
+                fit.after.max_px, fit.iterations, l.cx, l.cy, l.r_pp, 1 / l.r_pp, l.k[0], l.k[1], l.k[2], l.k[3]);
   out << text << "calibration: " << vision::describe(l.calibration) << '\n';
   p.lens = l;
   if (const auto o = args.value("--out")) {
@@ -140,15 +140,16 @@ int lens_show(const std::vector<std::string>& raw, std::ostream& out) {
                 "%.2f px), k = (%.5g, %.5g, %.5g, %.5g)\nview: %dx%d px, %.1f deg FOV, yaw %.1f, pitch %.1f, roll "
                 "%.1f deg; %zu mask polygon(s)\n",
                 std::string(vision::to_string(l.type)).c_str(), l.width, l.height, l.fov_deg, c.x, c.y, l.r_pp,
-                1 / l.r_pp, l.k[0], l.k[1], l.k[2], l.k[3], p.view.width, p.view.height, p.view.fov_deg,
-                p.view.yaw_deg, p.view.pitch_deg, p.view.roll_deg, p.masks.size());
+                1 / l.r_pp, l.k[0], l.k[1], l.k[2], l.k[3], p.view.width, p.view.height, p.view.fov_deg, p.view.yaw_deg,
+                p.view.pitch_deg, p.view.roll_deg, p.masks.size());
   out << text << "calibration: " << vision::describe(l.calibration) << '\n';
   return 0;
 }
 
 const CommandRegistrar registrar({
     "lens",
-    "lens calibration helpers (lens circle | lens calibrate | lens refine-lines | lens show | lens export-lut | lens line)",
+    "lens calibration helpers (lens circle | lens calibrate | lens refine-lines | lens show | lens export-lut | lens "
+    "line)",
     "usage: benchscope-cli lens circle IMAGE [--lens LENS.json] [--min-level L] [--circle-fov DEG] [--out LENS.json]\n"
     "       benchscope-cli lens calibrate IMAGE... --board COLSxROWS --square MM --out LENS.json\n"
     "         [--model kannala-brandt|equidistant] [--lens BASE.json] [--fov DEG]\n"
@@ -176,7 +177,8 @@ const CommandRegistrar registrar({
       if (!args.empty() && args[0] == "refine-lines") return lens_refine_lines(rest, out);
       if (!args.empty() && args[0] == "show") return lens_show(rest, out);
       throw UsageError(
-          "expected 'lens circle', 'lens calibrate', 'lens refine-lines', 'lens show', 'lens export-lut' or 'lens line'");
+          "expected 'lens circle', 'lens calibrate', 'lens refine-lines', 'lens show', 'lens export-lut' or 'lens "
+          "line'");
     },
 });
 

@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/peaks/flops.h"
+#include "analysis/peaks/peak_ceilings.h"
 #include "analysis/peaks/result_peaks.h"
 #include "analysis/stats/units.h"
-#include "analysis/peaks/peak_ceilings.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"
@@ -68,11 +68,12 @@ json peaks_json(const std::vector<PeakRow>& rows, const std::vector<ResultPeak>&
                   {"unit", t.measurement->unit},
                   {"flags", flags_json(throughput_flags(*t.set, *t.measurement, t.summary.mean))}});
   const BundledDeviceTable& table = bundled_device_table();
-  return {{"format", "benchscope-peaks"},
-          {"version", 1},
-          {"device_table", {{"path", table.table.path}, {"devices", table.table.devices.size()}, {"error", table.error}}},
-          {"rows", jrows},
-          {"throughput", jt}};
+  return {
+      {"format", "benchscope-peaks"},
+      {"version", 1},
+      {"device_table", {{"path", table.table.path}, {"devices", table.table.devices.size()}, {"error", table.error}}},
+      {"rows", jrows},
+      {"throughput", jt}};
 }
 
 std::string ratio_text(const std::optional<double>& r) {
@@ -91,18 +92,18 @@ std::string percent_text(const std::optional<double>& f) {
 
 void print_human(std::ostream& out, const std::vector<PeakRow>& rows, const std::vector<ResultPeak>& throughput,
                  const ResultPeakQuery& query, std::size_t left_out) {
-  TextTable table({"Platform", "Device", "Kind", "Backend", "Variant", "D", "Peak", "Workers at peak", "n",
-                   "Reported", "Ratio", "% of theor.", "% of spec", "Origin", "Flags"});
+  TextTable table({"Platform", "Device", "Kind", "Backend", "Variant", "D", "Peak", "Workers at peak", "n", "Reported",
+                   "Ratio", "% of theor.", "% of spec", "Origin", "Flags"});
   FlagNotes notes;
   for (const PeakRow& r : rows) {
     std::string peak = format_si(r.peak.flops, "FLOPS");
     if (r.peak.at_peak.n > 1) peak += " \xC2\xB1 " + format_si(r.peak.at_peak.sd, "FLOPS");
     // A sweep from another tool states FLOPS, not D and N: "-".
     table.add({r.platform, r.device, std::string(to_string(r.device_kind)), r.backend, r.variant,
-               r.dims > 0 ? std::to_string(r.dims) : "-", peak, std::to_string(r.peak.workers), std::to_string(r.peak.at_peak.n),
-               r.reported_flops ? format_si(*r.reported_flops, "FLOPS") : "-", ratio_text(r.ratio_to_reported),
-               percent_text(r.fraction_of_theoretical), percent_text(r.fraction_of_spec),
-               std::string(to_string(r.origin)), notes.marker(r.flags)});
+               r.dims > 0 ? std::to_string(r.dims) : "-", peak, std::to_string(r.peak.workers),
+               std::to_string(r.peak.at_peak.n), r.reported_flops ? format_si(*r.reported_flops, "FLOPS") : "-",
+               ratio_text(r.ratio_to_reported), percent_text(r.fraction_of_theoretical),
+               percent_text(r.fraction_of_spec), std::string(to_string(r.origin)), notes.marker(r.flags)});
   }
   if (table.empty()) {
     out << "no FLOPS runs\n";
@@ -153,8 +154,10 @@ int run_peaks(const std::vector<std::string>& raw, std::ostream& out) {
     } else if (const auto precision = precision_from_string(*p)) {
       query.precision = *precision;
     } else {
-      throw UsageError("--precision must be fp32 (single), fp64 (double), fp16 (half), bf16, tf32, mixed, fp8, fp4, "
-                       "int64, int32, int24, int16, int8, int4 or all; got '" + *p + "'");
+      throw UsageError(
+          "--precision must be fp32 (single), fp64 (double), fp16 (half), bf16, tf32, mixed, fp8, fp4, "
+          "int64, int32, int24, int16, int8, int4 or all; got '" +
+          *p + "'");
     }
   }
   const std::vector<ResultPeak> throughput = result_peaks(data.result_sets, query);
@@ -174,9 +177,7 @@ const CommandRegistrar registrar({
     "  fp32 (single, the default, as the paper), fp64, fp16, bf16, tf32, mixed, fp8, fp4, int32, int24, int16,\n"
     "  int8, int4; 'all' gives one row per precision and kind. With --json: {\"format\":\"benchscope-peaks\",\n"
     "  \"version\":1,\"rows\":[...],\"throughput\":[...]} as documented in docs/cli.md.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_peaks(args, out);
-    },
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) { return run_peaks(args, out); },
 });
 
 }  // namespace

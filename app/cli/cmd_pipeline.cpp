@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli pipeline: runs the paper's vision pipeline (capture -> demosaic + reprojection -> detection, one
-// thread each for capture and preprocessing, --detect-workers threads for detection) on frame files, prints per-stage timings, writes the figure-3 images and can store the run.
+// thread each for capture and preprocessing, --detect-workers threads for detection) on frame files, prints per-stage
+// timings, writes the figure-3 images and can store the run.
 
 #include <cstdio>
 #include <filesystem>
@@ -21,16 +22,16 @@
 #include "signals.h"
 #include "store/workspace.h"
 #include "text_table.h"
+#include "util/host_clock.h"
+#include "vision/cuda_preprocess.h"
 #include "vision/detector.h"
 #include "vision/dnn_architectures.h"
 #include "vision/frame_file.h"
-#include "vision/cuda_preprocess.h"
 #include "vision/opencl_preprocess.h"
 #include "vision/pipeline.h"
 #include "vision/pipeline_record.h"
 #include "vision/preprocess.h"
 #include "vision/threads.h"
-#include "util/host_clock.h"
 
 namespace bs::cli {
 namespace {
@@ -106,7 +107,8 @@ Detector detector_option(const std::string& s, double scale) {
   if (comma != std::string::npos) o.config = s.substr(comma + 1);
   for (const std::string& file : {o.model, o.config})
     if (!file.empty() && !std::filesystem::is_regular_file(file))
-      throw std::runtime_error(file + ": no such model file (--detector takes hog, none, mobilenet-ssd, yolo-n or "
+      throw std::runtime_error(file +
+                               ": no such model file (--detector takes hog, none, mobilenet-ssd, yolo-n or "
                                "MODEL[,CONFIG])");
   return scaled_detector(dnn_detector(o), scale);
 }
@@ -130,7 +132,8 @@ void print_table(const PipelineRun& run, const PipelineResult& r, std::ostream& 
            s.p95_s ? ms(*s.p95_s) : "–", s.min_s ? ms(*s.min_s) : "–", s.max_s ? ms(*s.max_s) : "–"});
   t.print(out);
   char line[256];
-  std::snprintf(line, sizeof line, "\nthroughput: %.2f fps (%zu frames processed in %.3f s; %zu captured, %zu dropped)\n",
+  std::snprintf(line, sizeof line,
+                "\nthroughput: %.2f fps (%zu frames processed in %.3f s; %zu captured, %zu dropped)\n",
                 r.throughput_fps, r.processed, r.wall_s, r.captured, r.dropped);
   out << line;
   if (r.detection_workers > 0) {
@@ -181,7 +184,8 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   const std::string demosaic_name = args.value("--demosaic").value_or(backend == "opencl" ? "bilinear" : "fused");
   const Demosaic dm = demosaic_option(demosaic_name);
   if (backend != "cpu" && dm.method != DemosaicMethod::Bilinear)
-    throw UsageError("--backend " + backend + " demosaics bilinearly: use --demosaic bilinear (got '" + demosaic_name + "')");
+    throw UsageError("--backend " + backend + " demosaics bilinearly: use --demosaic bilinear (got '" + demosaic_name +
+                     "')");
   const double frames_arg = args.number("--frames", 50);
   if (frames_arg < 1 || frames_arg > 1e7 || frames_arg != static_cast<double>(static_cast<long>(frames_arg)))
     throw UsageError("--frames must be a whole number from 1 to 10,000,000");
@@ -249,13 +253,13 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   PipelineRun run = to_pipeline_run(result);
   run.platform = args.value("--platform").value_or(bs::host_name());
   run.device = backend == "opencl" ? cl_info.device + " (OpenCL) preprocessing, CPU detection"
-               : backend == "cuda"  ? cuda_info.device + " (CUDA) preprocessing, CPU detection"
-                                    : "CPU (" + std::to_string(opencv_threads()) + " threads)";
-  if (detector) run.device += ", " + std::to_string(detect_workers) + " detection worker" + (detect_workers == 1 ? "" : "s");
+               : backend == "cuda" ? cuda_info.device + " (CUDA) preprocessing, CPU detection"
+                                   : "CPU (" + std::to_string(opencv_threads()) + " threads)";
+  if (detector)
+    run.device += ", " + std::to_string(detect_workers) + " detection worker" + (detect_workers == 1 ? "" : "s");
   run.backend = backend;
   run.demosaic = demosaic_name;
-  run.detector = detector_name == "hog" || detector_name == "none"
-                     ? detector_name
+  run.detector = detector_name == "hog" || detector_name == "none" ? detector_name
                  : architecture_from_string(detector_name)
                      ? architecture_detector_name(*architecture_from_string(detector_name))
                      : std::filesystem::path(detector_name.substr(0, detector_name.find(','))).filename().string();
@@ -268,12 +272,12 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   run.provenance.date = bs::utc_timestamp();
   run.provenance.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
   run.provenance.compiler = BENCHSCOPE_COMPILER;
-  run.provenance.note = "benchscope-cli pipeline on " + std::to_string(args.positional.size()) + " frame file(s), " +
-                        std::to_string(view.width) + "x" + std::to_string(view.height) + " view, policy " + policy +
-                        ", queue " + std::to_string(config.queue_capacity) +
-                        (detector ? ", " + std::to_string(detect_workers) + " detection workers, detect scale " +
-                                        scale_text(detect_scale)
-                                  : std::string());
+  run.provenance.note =
+      "benchscope-cli pipeline on " + std::to_string(args.positional.size()) + " frame file(s), " +
+      std::to_string(view.width) + "x" + std::to_string(view.height) + " view, policy " + policy + ", queue " +
+      std::to_string(config.queue_capacity) +
+      (detector ? ", " + std::to_string(detect_workers) + " detection workers, detect scale " + scale_text(detect_scale)
+                : std::string());
   const std::string json_text = write_pipeline_json(run);
   std::optional<PowerTrace> trace;
   if (power) {
@@ -288,7 +292,8 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   else
     print_table(run, result, out);
   if (trace) print_pipeline_energy(info, *trace, run, result.processed);
-  if (const auto dir = args.value("--out")) write_figures(*dir, files.front(), mosaics.front(), dm, preprocess, detector, info);
+  if (const auto dir = args.value("--out"))
+    write_figures(*dir, files.front(), mosaics.front(), dm, preprocess, detector, info);
   if (const auto ws_path = args.value("--workspace")) {
     Workspace ws(*ws_path);
     // With --power the trace goes into the same import as the run (stored and removed together).
@@ -310,7 +315,8 @@ const CommandRegistrar registrar({
     "         [--backend cpu|opencl|cuda] [--detector hog|none|mobilenet-ssd|yolo-n|MODEL[,CONFIG]] [--frames N]\n"
     "         [--policy block|drop-oldest] [--queue N] [--detect-workers W] [--detect-scale S]\n"
     "         [--pattern BGGR|RGGB|GRBG|GBRG] [--platform NAME]\n"
-    "         [--out DIR] [--workspace WS] [--json] [--power SENSOR|auto|none] [--power-interval-ms M] [--sysfs-root DIR]\n"
+    "         [--out DIR] [--workspace WS] [--json] [--power SENSOR|auto|none] [--power-interval-ms M] [--sysfs-root "
+    "DIR]\n"
     "  Runs capture -> preprocessing (demosaic + reprojection) -> detection, capture and preprocessing on a thread\n"
     "  each, detection on W worker threads (--detect-workers, default this machine's threads), with\n"
     "  bounded queues (--queue frames each, default 2; --policy block, or drop-oldest like a live camera), over N\n"

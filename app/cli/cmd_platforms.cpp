@@ -56,8 +56,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   const auto rows = compare_platforms(data.runs, data.power_traces, pipelines, options);
   if (rows.empty()) throw std::runtime_error("no FLOPS runs or power logs to compare");
   const auto verdicts = recommend(rows, c);
-  const ExportTable table = platform_table(rows, constrained ? std::span<const PlatformVerdict>(verdicts)
-                                                             : std::span<const PlatformVerdict>());
+  const ExportTable table = platform_table(
+      rows, constrained ? std::span<const PlatformVerdict>(verdicts) : std::span<const PlatformVerdict>());
   if (const auto p = args.value("--latex")) write_file(*p, to_latex(table));
   if (const auto p = args.value("--csv")) write_file(*p, to_csv(table));
 
@@ -67,8 +67,12 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
       const PlatformRow& r = rows[i];
       nlohmann::json checks = nlohmann::json::array();
       for (const auto& k : verdicts[i].checks)
-        checks.push_back({{"name", k.name}, {"unit", k.unit}, {"required", k.required}, {"actual", opt(k.actual)},
-                          {"met", k.met}, {"margin", k.margin}});
+        checks.push_back({{"name", k.name},
+                          {"unit", k.unit},
+                          {"required", k.required},
+                          {"actual", opt(k.actual)},
+                          {"met", k.met},
+                          {"margin", k.margin}});
       nlohmann::json sources = nlohmann::json::object();
       for (const auto& [col, s] : r.sources)
         sources[col] = {{"file", s.source_file}, {"origin", std::string(to_string(s.origin))}, {"how", s.how}};
@@ -77,23 +81,34 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
       list.push_back({{"platform", r.platform},
                       {"gpu_peak_flops", r.gpu ? nlohmann::json(r.gpu->peak.flops) : nlohmann::json(nullptr)},
                       {"cpu_peak_flops", r.cpu ? nlohmann::json(r.cpu->peak.flops) : nlohmann::json(nullptr)},
-                      {"mean_power_w", opt(r.mean_power_w)}, {"max_power_w", opt(r.max_power_w)},
+                      {"mean_power_w", opt(r.mean_power_w)},
+                      {"max_power_w", opt(r.max_power_w)},
                       {"gflops_per_watt_paper", opt(r.gflops_per_watt_paper)},
                       {"gflops_per_watt_mean_power", opt(r.gflops_per_watt_mean)},
-                      {"preprocess_ms", stage_json(r.preprocess_ms)}, {"detect_ms", stage_json(r.detect_ms)},
-                      {"fps", opt(r.fps)}, {"energy_per_frame_j", opt(r.energy_per_frame_j)},
+                      {"preprocess_ms", stage_json(r.preprocess_ms)},
+                      {"detect_ms", stage_json(r.detect_ms)},
+                      {"fps", opt(r.fps)},
+                      {"energy_per_frame_j", opt(r.energy_per_frame_j)},
                       {"energy_per_preprocess_j", opt(r.energy_per_preprocess_j)},
                       {"energy_per_inference_j", opt(r.energy_per_inference_j)},
-                      {"battery_runtime_h", opt(r.battery_runtime_h)}, {"battery_load_w", opt(r.battery_load_w)},
+                      {"battery_runtime_h", opt(r.battery_runtime_h)},
+                      {"battery_load_w", opt(r.battery_load_w)},
                       {"frames_per_wh", opt(r.frames_per_wh)},
-                      {"meets_constraints", verdicts[i].meets_all}, {"recommended", verdicts[i].recommended},
-                      {"note", verdicts[i].note}, {"ranking_note", verdicts[i].ranking_note},
-                      {"checks", checks}, {"sources", sources},
+                      {"meets_constraints", verdicts[i].meets_all},
+                      {"recommended", verdicts[i].recommended},
+                      {"note", verdicts[i].note},
+                      {"ranking_note", verdicts[i].ranking_note},
+                      {"checks", checks},
+                      {"sources", sources},
                       {"power_measurement", r.power_measurement},
-                      {"flags", flags_json(r.all_flags())}, {"column_flags", column_flags}});
+                      {"flags", flags_json(r.all_flags())},
+                      {"column_flags", column_flags}});
     }
-    out << nlohmann::json{{"format", "benchscope-platforms"}, {"version", 1}, {"battery", pack->name},
-                          {"extra_load_w", options.extra_load_w}, {"mission", options.mission},
+    out << nlohmann::json{{"format", "benchscope-platforms"},
+                          {"version", 1},
+                          {"battery", pack->name},
+                          {"extra_load_w", options.extra_load_w},
+                          {"mission", options.mission},
                           {"platforms", list}}
                .dump(2)
         << '\n';
@@ -138,8 +153,9 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     std::string chosen;
     for (const auto& v : verdicts)
       if (v.recommended) chosen = v.platform;
-    out << (chosen.empty() ? "recommendation: no platform meets every constraint\n"
-                           : "recommendation: " + chosen + " (the most compute among the platforms that meet every constraint)\n");
+    out << (chosen.empty()
+                ? "recommendation: no platform meets every constraint\n"
+                : "recommendation: " + chosen + " (the most compute among the platforms that meet every constraint)\n");
   }
   return 0;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli power: statistics of current/power logs (the paper's section on current consumption), and
 // `bench power-csv`, the throughput of the power-log parser against a getline + stod reference.
+#include <malloc.h>
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,17 +10,15 @@
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <malloc.h>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/power/power.h"
-#include "analysis/stats/measurement_text.h"
 #include "analysis/peaks/plausibility.h"
+#include "analysis/power/power.h"
 #include "analysis/power/power_phases.h"
 #include "analysis/power/power_stats.h"
 #include "analysis/power/range_table.h"
+#include "analysis/stats/measurement_text.h"
 #include "args.h"
 #include "command.h"
 #include "flag_output.h"
@@ -42,16 +42,17 @@ std::string fmt(const char* format, double v) {
 
 nlohmann::json signal_json(const std::optional<SignalStats>& s) {
   if (!s) return nullptr;
-  return {{"n", s->summary.n},      {"mean", s->summary.mean}, {"sd", s->summary.sd},   {"min", s->summary.min},
-          {"max", s->summary.max},  {"p5", s->pct.p5},         {"p50", s->pct.p50},     {"p95", s->pct.p95},
-          {"p99", s->pct.p99}};
+  return {{"n", s->summary.n},     {"mean", s->summary.mean}, {"sd", s->summary.sd},
+          {"min", s->summary.min}, {"max", s->summary.max},   {"p5", s->pct.p5},
+          {"p50", s->pct.p50},     {"p95", s->pct.p95},       {"p99", s->pct.p99}};
 }
 
 // "2.53 ± 0.35 A (n = 1200), min 1.92, p5 2.08 / p50 2.51 / p95 3.01 / p99 3.05, max 3.14 A"
 std::string signal_line(const SignalStats& s, std::string_view unit) {
   const std::string u(unit);
   char buf[320];
-  std::snprintf(buf, sizeof buf, "%.3f \xC2\xB1 %.3f %s (n = %zu), min %.3f, p5 %.3f / p50 %.3f / p95 %.3f / p99 %.3f, max %.3f %s",
+  std::snprintf(buf, sizeof buf,
+                "%.3f \xC2\xB1 %.3f %s (n = %zu), min %.3f, p5 %.3f / p50 %.3f / p95 %.3f / p99 %.3f, max %.3f %s",
                 s.summary.mean, s.summary.sd, u.c_str(), s.summary.n, s.summary.min, s.pct.p5, s.pct.p50, s.pct.p95,
                 s.pct.p99, s.summary.max, u.c_str());
   return buf;
@@ -83,8 +84,8 @@ std::vector<LoadedTrace> load_traces(const std::vector<std::string>& paths, cons
 }
 
 int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  const ParsedArgs args =
-      parse_args(raw, {"--json", "--phases"}, {"--supply-volts", "--from", "--to", "--interval", "--min-phase", "--min-step"});
+  const ParsedArgs args = parse_args(raw, {"--json", "--phases"},
+                                     {"--supply-volts", "--from", "--to", "--interval", "--min-phase", "--min-step"});
   if (args.positional.empty()) throw UsageError("power needs current/power log files (or a workspace)");
   PowerImportOptions options;
   PowerStatsOptions stats_options;
@@ -123,16 +124,27 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     if (json) {
       nlohmann::json channels = nlohmann::json::array();
       for (const ChannelStats& c : s.channels)
-        channels.push_back({{"name", c.name}, {"unit", std::string(unit_of(c.quantity))}, {"stats", signal_json(c.stats)}});
+        channels.push_back(
+            {{"name", c.name}, {"unit", std::string(unit_of(c.quantity))}, {"stats", signal_json(c.stats)}});
       nlohmann::json phase_list = nlohmann::json::array();
       for (const PhaseStatsRow& p : phases) {
         const PowerStats& ps = p.stats;
-        const auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-        phase_list.push_back({{"name", p.name}, {"origin", p.origin}, {"start_s", p.start_s}, {"end_s", p.end_s},
-                              {"n", ps.n}, {"duration_s", ps.duration_s},
-                              {"mean", ps.power_w ? ps.power_w->summary.mean : ps.current_a ? ps.current_a->summary.mean : 0.0},
-                              {"current_a", signal_json(ps.current_a)}, {"power_w", signal_json(ps.power_w)},
-                              {"charge_c", opt(ps.charge_c)}, {"energy_j", opt(ps.energy_j)},
+        const auto opt = [](const std::optional<double>& v) {
+          return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+        };
+        phase_list.push_back({{"name", p.name},
+                              {"origin", p.origin},
+                              {"start_s", p.start_s},
+                              {"end_s", p.end_s},
+                              {"n", ps.n},
+                              {"duration_s", ps.duration_s},
+                              {"mean", ps.power_w     ? ps.power_w->summary.mean
+                                       : ps.current_a ? ps.current_a->summary.mean
+                                                      : 0.0},
+                              {"current_a", signal_json(ps.current_a)},
+                              {"power_w", signal_json(ps.power_w)},
+                              {"charge_c", opt(ps.charge_c)},
+                              {"energy_j", opt(ps.energy_j)},
                               {"mean_power_w", opt(ps.mean_power_w)}});
       }
       list.push_back({{"platform", t.platform},
@@ -176,16 +188,19 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     }
     if (s.energy_j)
       out << "  energy   " << fmt("%.1f", *s.energy_j) << " J (" << fmt("%.4f", *s.energy_j / 3600)
-          << " Wh), trapezoidal; mean power " << fmt("%.3f", s.mean_power_w.value_or(0)) << " W over " << fmt("%.3f", s.duration_s) << " s\n";
+          << " Wh), trapezoidal; mean power " << fmt("%.3f", s.mean_power_w.value_or(0)) << " W over "
+          << fmt("%.3f", s.duration_s) << " s\n";
     if (s.charge_c)
       out << "  charge   " << fmt("%.2f", *s.charge_c) << " C (" << fmt("%.2f", *s.charge_c / 3.6) << " mAh)\n";
     if (s.channels.size() > 1) {
       out << "  channels\n";
-      for (const ChannelStats& c : s.channels) out << "    " << c.name << ": " << signal_line(c.stats, unit_of(c.quantity)) << '\n';
+      for (const ChannelStats& c : s.channels)
+        out << "    " << c.name << ": " << signal_line(c.stats, unit_of(c.quantity)) << '\n';
     }
     if (args.has("--phases")) {
       // The Power tab's per-phase table (analysis/range_table.h): the same columns and numbers.
-      out << "  phases (the log's own, then level changes of at least " << fmt("%g", phase_options.min_phase_s) << " s)\n";
+      out << "  phases (the log's own, then level changes of at least " << fmt("%g", phase_options.min_phase_s)
+          << " s)\n";
       const RangeSignal signal = default_signal(s);
       std::vector<std::string> header = {"phase", "origin", "from (s)", "to (s)"};
       for (std::string& h : range_headers(signal)) header.push_back(std::move(h));
@@ -195,8 +210,10 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
         for (std::string& c : range_cells(p.stats, signal)) row.push_back(std::move(c));
         table.add(std::move(row));
       }
-      if (table.empty()) out << "  (none)\n";
-      else table.print(out);
+      if (table.empty())
+        out << "  (none)\n";
+      else
+        table.print(out);
     }
   }
   if (json) out << nlohmann::json{{"format", "benchscope-power"}, {"version", 2}, {"traces", list}}.dump(2) << '\n';
@@ -222,9 +239,9 @@ bool reset_peak_rss() {
 
 struct ParseRun {
   double seconds = 0;
-  double sum = 0;             // checksum of the parsed values, so both parsers are seen to agree
+  double sum = 0;  // checksum of the parsed values, so both parsers are seen to agree
   std::size_t rows = 0;
-  long peak_extra_kb = -1;    // peak resident memory above the level before parsing
+  long peak_extra_kb = -1;  // peak resident memory above the level before parsing
 };
 
 template <class Parse>
@@ -290,7 +307,10 @@ int bench_power_csv_impl(const std::vector<std::string>& raw, std::ostream& out)
   }
   const double mb = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
   // Warm the page cache so both parsers read from memory, then alternate them.
-  { std::ifstream warm(path, std::ios::binary); std::string all((std::istreambuf_iterator<char>(warm)), {}); }
+  {
+    std::ifstream warm(path, std::ios::binary);
+    std::string all((std::istreambuf_iterator<char>(warm)), {});
+  }
   std::vector<double> ours_s, ref_s;
   ParseRun ours, ref;
   for (int r = 0; r < runs; ++r) {
@@ -314,21 +334,25 @@ int bench_power_csv_impl(const std::vector<std::string>& raw, std::ostream& out)
   const double ours_med = ours_s[ours_s.size() / 2], ref_med = ref_s[ref_s.size() / 2];
   const double column_mb = static_cast<double>(rows) * 2 * sizeof(double) / 1e6;
   char line[256];
-  std::snprintf(line, sizeof line, "power-csv bench: %zu rows of time_s,current_A, %.1f MB, page cache warm, 1 thread, median of %d\n",
+  std::snprintf(line, sizeof line,
+                "power-csv bench: %zu rows of time_s,current_A, %.1f MB, page cache warm, 1 thread, median of %d\n",
                 rows, mb, runs);
   out << line;
-  std::snprintf(line, sizeof line, "  BenchScope power-csv (streaming, from_chars): %8.1f MB/s  (%.3f s)\n", mb / ours_med, ours_med);
+  std::snprintf(line, sizeof line, "  BenchScope power-csv (streaming, from_chars): %8.1f MB/s  (%.3f s)\n",
+                mb / ours_med, ours_med);
   out << line;
-  std::snprintf(line, sizeof line, "  reference std::getline + std::stod:            %8.1f MB/s  (%.3f s)\n", mb / ref_med, ref_med);
+  std::snprintf(line, sizeof line, "  reference std::getline + std::stod:            %8.1f MB/s  (%.3f s)\n",
+                mb / ref_med, ref_med);
   out << line;
   std::snprintf(line, sizeof line, "  ratio: %.2fx\n", ref_med / ours_med);
   out << line;
   if (ours.peak_extra_kb >= 0) {
-    std::snprintf(line, sizeof line,
-                  "  peak memory while parsing (last run, above the level before): BenchScope %.1f MB, reference %.1f MB;\n"
-                  "  parsed columns %.1f MB (2 x %zu doubles) -> BenchScope peak / columns = %.2f\n",
-                  static_cast<double>(ours.peak_extra_kb) / 1e3, static_cast<double>(ref.peak_extra_kb) / 1e3, column_mb,
-                  rows, static_cast<double>(ours.peak_extra_kb) / 1e3 / column_mb);
+    std::snprintf(
+        line, sizeof line,
+        "  peak memory while parsing (last run, above the level before): BenchScope %.1f MB, reference %.1f MB;\n"
+        "  parsed columns %.1f MB (2 x %zu doubles) -> BenchScope peak / columns = %.2f\n",
+        static_cast<double>(ours.peak_extra_kb) / 1e3, static_cast<double>(ref.peak_extra_kb) / 1e3, column_mb, rows,
+        static_cast<double>(ours.peak_extra_kb) / 1e3 / column_mb);
     out << line;
   } else {
     out << "  peak memory: not available (/proc/self/clear_refs not writable)\n";
@@ -342,7 +366,8 @@ const CommandRegistrar registrar({
     "usage: benchscope-cli power (FILE... | FOLDER | WORKSPACE) [--supply-volts V] [--from S] [--to S] [--interval S]\n"
     "         [--phases [--min-phase S] [--min-step X]] [--json]\n"
     "  Per log: current and power (a power channel, else I x a voltage channel, else I x the supply voltage of a\n"
-    "  current-only log) as mean \xC2\xB1 SD (n), min, p5/p50/p95/p99, max; energy (trapezoidal) and every channel (e.g.\n"
+    "  current-only log) as mean \xC2\xB1 SD (n), min, p5/p50/p95/p99, max; energy (trapezoidal) and every channel "
+    "(e.g.\n"
     "  tegrastats rails), over the whole log or seconds [S, S] from its start. --interval: seconds between\n"
     "  tegrastats lines without timestamps (default 1). A range cut between samples is interpolated at its ends.\n"
     "  --phases: a statistics table per phase (n, duration, mean, SD, min, max, p2p, p5/p50/p95, charge, energy,\n"

@@ -26,8 +26,10 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
   const auto dashes = std::find(raw.begin(), raw.end(), std::string("--"));
   const std::vector<std::string> own(raw.begin(), dashes);
   const std::vector<std::string> command(dashes == raw.end() ? dashes : dashes + 1, raw.end());
-  const ParsedArgs args = parse_args(own, {"--quiet"}, {"--out", "--sensor", "--interval-ms", "--sysfs-root", "--seconds"});
-  if (!args.positional.empty()) throw UsageError("unexpected argument '" + args.positional[0] + "' (a command goes after --)");
+  const ParsedArgs args =
+      parse_args(own, {"--quiet"}, {"--out", "--sensor", "--interval-ms", "--sysfs-root", "--seconds"});
+  if (!args.positional.empty())
+    throw UsageError("unexpected argument '" + args.positional[0] + "' (a command goes after --)");
   const auto path = args.value("--out");
   if (!path) throw UsageError("--out FILE.csv is required");
   const bool timed = args.value("--seconds").has_value();
@@ -68,7 +70,8 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
   for (const auto& a : command) label += " " + a;
   PowerTrace trace = rec->finish(label);
   sensors::save_recording_csv(*path, trace);
-  if (cancel.cancelled()) err << "benchscope-cli: interrupted; keeping the " << trace.time_s.size() << " samples recorded\n";
+  if (cancel.cancelled())
+    err << "benchscope-cli: interrupted; keeping the " << trace.time_s.size() << " samples recorded\n";
   if (!quiet) {
     const auto all = window_energy(trace, trace.time_s.empty() ? 0 : trace.time_s.front(),
                                    trace.time_s.empty() ? 0 : trace.time_s.back(), "whole recording");
@@ -76,8 +79,8 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
     if (all) {
       char line[160];
       std::snprintf(line, sizeof line, "%.3f J over %.3f s, mean %.3f W (%s, %s)\n", all->energy_j,
-                    all->end_s - all->start_s, all->mean_power_w, std::string(to_string(trace.provenance.measurement)).c_str(),
-                    trace.provenance.sensor.c_str());
+                    all->end_s - all->start_s, all->mean_power_w,
+                    std::string(to_string(trace.provenance.measurement)).c_str(), trace.provenance.sensor.c_str());
       out << line;
     }
   }

@@ -37,12 +37,14 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   (void)out;
   (void)err;
   (void)platform;
-  throw std::runtime_error("this benchscope-cli was built without Qt (BENCHSCOPE_GUI=OFF), so it cannot render the "
-                           "report's figures; use a build with the GUI, or the GUI's File > Export report");
+  throw std::runtime_error(
+      "this benchscope-cli was built without Qt (BENCHSCOPE_GUI=OFF), so it cannot render the "
+      "report's figures; use a build with the GUI, or the GUI's File > Export report");
 #else
   const ui::FigureOptions o = parse_figure_options(args);
   const auto templates = figure_templates(args);
-  const ui::FigureData fd = figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token());
+  const ui::FigureData fd =
+      figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token());
   if (fd.runs.empty() && fd.traces.empty()) throw std::runtime_error("no FLOPS runs or power logs to report on");
   const auto app = offscreen_application();
   ui::ReportRequest request;
@@ -52,11 +54,10 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   request.constraints = platform.constraints;
   request.comparison = platform.options;
   const bool quiet = args.has("--quiet");
-  const QStringList files = ui::write_report(request, templates, fd, o, interrupt_token(),
-                                             [&](int done, int total, const QString& what) {
-                                               if (!quiet) err << "\r[" << done << "/" << total << "] " << what.toStdString()
-                                                               << "        " << std::flush;
-                                             });
+  const QStringList files =
+      ui::write_report(request, templates, fd, o, interrupt_token(), [&](int done, int total, const QString& what) {
+        if (!quiet) err << "\r[" << done << "/" << total << "] " << what.toStdString() << "        " << std::flush;
+      });
   if (!quiet) err << '\n';
   for (const QString& f : files) out << f.toStdString() << '\n';
   return 0;
@@ -68,7 +69,8 @@ const CommandRegistrar registrar({
     "one-page-per-platform report with the figures embedded (HTML and/or PDF)",
     "usage: benchscope-cli report (WORKSPACE | PATH...) --out report.html [--pdf report.pdf]\n"
     "                             [--budget W] [--min-fps FPS] [--min-runtime MIN] [--battery PRESET]\n"
-    "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt 8]\n"
+    "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt "
+    "8]\n"
     "                             [--quiet]\n"
     "  The platform comparison, then one page per platform: best GPU and CPU peak with device, backend and % of\n"
     "  theoretical peak, pipeline timings (ms, mean ± SD (n)), mean and max power, GFLOPS/W (the paper's and at\n"

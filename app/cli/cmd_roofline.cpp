@@ -26,8 +26,8 @@ std::string fmt(const char* format, double v) {
 }
 
 nlohmann::json point_json(const RooflinePoint& p) {
-  return {{"label", p.label}, {"intensity", p.intensity}, {"achieved", p.flops}, {"attainable", p.attainable},
-          {"fraction_of_roof", p.fraction}, {"memory_bound", p.memory_bound}};
+  return {{"label", p.label},           {"intensity", p.intensity},       {"achieved", p.flops},
+          {"attainable", p.attainable}, {"fraction_of_roof", p.fraction}, {"memory_bound", p.memory_bound}};
 }
 
 int run_roofline(const std::vector<std::string>& raw, std::ostream& out) {
@@ -53,8 +53,11 @@ int run_roofline(const std::vector<std::string>& raw, std::ostream& out) {
     nlohmann::json cs = nlohmann::json::array(), rs = nlohmann::json::array(), ss = nlohmann::json::array();
     for (const RooflineCeiling& c : ceilings) {
       const auto ridge = c.ridge_intensity();
-      cs.push_back({{"platform", c.platform}, {"device", c.device}, {"kind", std::string(to_string(c.kind))},
-                    {"peak_flops", c.peak_flops}, {"peak_source", c.peak_source},
+      cs.push_back({{"platform", c.platform},
+                    {"device", c.device},
+                    {"kind", std::string(to_string(c.kind))},
+                    {"peak_flops", c.peak_flops},
+                    {"peak_source", c.peak_source},
                     {"bandwidth_bps", c.bandwidth_bps ? nlohmann::json(*c.bandwidth_bps) : nlohmann::json(nullptr)},
                     {"bandwidth_source", c.bandwidth_source},
                     {"ridge_intensity", ridge ? nlohmann::json(*ridge) : nlohmann::json(nullptr)}});
@@ -68,25 +71,39 @@ int run_roofline(const std::vector<std::string>& raw, std::ostream& out) {
     }
     for (const StagePlacement& s : stages.placed) {
       nlohmann::json j = point_json(s.point);
-      j.update({{"platform", s.platform}, {"device", s.device}, {"run_device", s.run_device}, {"backend", s.backend},
-                {"stage", pipeline_stage::kPreprocess}, {"kernels", s.cost.label},
-                {"geometry", {{"source", {s.geometry.source_width, s.geometry.source_height}},
-                              {"output", {s.geometry.output_width, s.geometry.output_height}},
-                              {"output_assumed_equal_to_source", s.geometry_assumed}}},
-                {"ops_per_frame", s.cost.ops}, {"bytes_per_frame", s.cost.bytes},
-                {"ops_per_output_pixel", s.cost.ops_per_output_pixel},
-                {"bytes_per_output_pixel", s.cost.bytes_per_output_pixel},
-                {"time_s", {{"mean", s.time.mean_s}, {"sd", s.time.sd_s}, {"n", s.time.n}}},
-                {"achieved_at_mean_plus_sd", s.ops_per_s_low ? nlohmann::json(*s.ops_per_s_low) : nlohmann::json(nullptr)},
-                {"achieved_at_mean_minus_sd", s.ops_per_s_high ? nlohmann::json(*s.ops_per_s_high) : nlohmann::json(nullptr)},
-                {"memory_ceiling_known", s.memory_ceiling_known},
-                {"source", s.source}, {"origin", std::string(to_string(s.origin))}});
+      j.update(
+          {{"platform", s.platform},
+           {"device", s.device},
+           {"run_device", s.run_device},
+           {"backend", s.backend},
+           {"stage", pipeline_stage::kPreprocess},
+           {"kernels", s.cost.label},
+           {"geometry",
+            {{"source", {s.geometry.source_width, s.geometry.source_height}},
+             {"output", {s.geometry.output_width, s.geometry.output_height}},
+             {"output_assumed_equal_to_source", s.geometry_assumed}}},
+           {"ops_per_frame", s.cost.ops},
+           {"bytes_per_frame", s.cost.bytes},
+           {"ops_per_output_pixel", s.cost.ops_per_output_pixel},
+           {"bytes_per_output_pixel", s.cost.bytes_per_output_pixel},
+           {"time_s", {{"mean", s.time.mean_s}, {"sd", s.time.sd_s}, {"n", s.time.n}}},
+           {"achieved_at_mean_plus_sd", s.ops_per_s_low ? nlohmann::json(*s.ops_per_s_low) : nlohmann::json(nullptr)},
+           {"achieved_at_mean_minus_sd",
+            s.ops_per_s_high ? nlohmann::json(*s.ops_per_s_high) : nlohmann::json(nullptr)},
+           {"memory_ceiling_known", s.memory_ceiling_known},
+           {"source", s.source},
+           {"origin", std::string(to_string(s.origin))}});
       ss.push_back(j);
     }
-    out << nlohmann::json{{"format", "benchscope-roofline"}, {"version", 1},
-                          {"ops_note", "stage ops are integer arithmetic ops (add, sub, mul, shift) per the source; "
-                                       "bytes are compulsory DRAM traffic with perfect cache reuse, no write-allocate"},
-                          {"ceilings", cs}, {"rotation", rs}, {"stages", ss}, {"skipped_stages", stages.skipped}}
+    out << nlohmann::json{{"format", "benchscope-roofline"},
+                          {"version", 1},
+                          {"ops_note",
+                           "stage ops are integer arithmetic ops (add, sub, mul, shift) per the source; "
+                           "bytes are compulsory DRAM traffic with perfect cache reuse, no write-allocate"},
+                          {"ceilings", cs},
+                          {"rotation", rs},
+                          {"stages", ss},
+                          {"skipped_stages", stages.skipped}}
                .dump(2)
         << '\n';
     return 0;
@@ -116,10 +133,12 @@ int run_roofline(const std::vector<std::string>& raw, std::ostream& out) {
     for (const StagePlacement& s : stages.placed)
       st.add({s.platform + " / " + s.device, s.cost.label, fmt("%.1f", s.cost.ops_per_output_pixel),
               fmt("%.1f", s.cost.bytes_per_output_pixel), fmt("%.3f", s.point.intensity),
-              fmt("%.2f", s.time.mean_s * 1e3) + " \xC2\xB1 " + fmt("%.2f", s.time.sd_s * 1e3) + " (n = " +
-                  std::to_string(s.time.n) + ")",
+              fmt("%.2f", s.time.mean_s * 1e3) + " \xC2\xB1 " + fmt("%.2f", s.time.sd_s * 1e3) +
+                  " (n = " + std::to_string(s.time.n) + ")",
               format_si(s.point.flops, "op/s"), fmt("%.1f %%", 100 * s.point.fraction),
-              !s.memory_ceiling_known ? "? (no bandwidth)" : s.point.memory_bound ? "memory" : "compute"});
+              !s.memory_ceiling_known ? "? (no bandwidth)"
+              : s.point.memory_bound  ? "memory"
+                                      : "compute"});
     st.print(out);
     out << "  ops: integer adds, multiplies and shifts of the kernels as implemented (clamps, loads, addressing not\n"
            "  counted); bytes: compulsory DRAM traffic (each mosaic/RGB/LUT byte read once, output written once, no\n"

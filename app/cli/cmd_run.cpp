@@ -7,17 +7,17 @@
 
 #include "analysis/peaks/ceiling_check.h"
 #include "analysis/peaks/flops.h"
+#include "analysis/power/sweep_energy.h"
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
-#include "analysis/power/sweep_energy.h"
 #include "args.h"
 #include "command.h"
 #include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power_args.h"
-#include "sensors/recording_csv.h"
 #include "run_json.h"
+#include "sensors/recording_csv.h"
 #include "signals.h"
 #include "store/workspace.h"
 
@@ -34,7 +34,8 @@ void print_point_energies(std::ostream& out, const PowerTrace& trace, const std:
   out << "energy per sweep point (" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor
       << "):\n";
   char line[200];
-  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %10s\n", "D", "W", "GFLOPS", "mean W", "J per run", "GFLOPS/W");
+  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %10s\n", "D", "W", "GFLOPS", "mean W", "J per run",
+                "GFLOPS/W");
   out << line;
   for (const PointEnergy& p : sweep_point_energies(trace, runs)) {
     std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.3f %12.4f %10.3f%s\n", p.dims,
@@ -62,12 +63,11 @@ void print_ceiling_comparison(double flops, const kernels::CpuInfo& cpu, std::os
 
 int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   if (!raw.empty() && raw[0] == "bandwidth") return run_bandwidth(raw, out, err);
-  const ParsedArgs args = parse_args(raw, {"--json", "--no-warmup", "--quiet"},
-                                     {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out",
-                                      "--workspace", "--variant", "--device", "--power", "--power-interval-ms",
-                                      "--sysfs-root", "--isa"});
-  if (args.positional.size() != 1 || args.positional[0] != "flops")
-    throw UsageError("expected 'run flops'");
+  const ParsedArgs args =
+      parse_args(raw, {"--json", "--no-warmup", "--quiet"},
+                 {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out", "--workspace",
+                  "--variant", "--device", "--power", "--power-interval-ms", "--sysfs-root", "--isa"});
+  if (args.positional.size() != 1 || args.positional[0] != "flops") throw UsageError("expected 'run flops'");
   kernels::SweepSpec spec;
   try {
     spec.workers = kernels::parse_worker_spec(args.value("--workers").value_or("1,2,4,8,16,32,64,128,256"));
@@ -122,8 +122,9 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     result = kernels::run_sweep(
         backend, cpu, spec, cancel,
         [&](double f, std::string_view step) {
-          if (!quiet) err << "\r" << std::setw(5) << std::fixed << std::setprecision(1) << f * 100 << " % " << step
-                          << "          " << std::flush;
+          if (!quiet)
+            err << "\r" << std::setw(5) << std::fixed << std::setprecision(1) << f * 100 << " % " << step
+                << "          " << std::flush;
           if (!power || !step.starts_with("W=")) return;
           const auto comma = step.find(", D=");
           if (comma == std::string_view::npos) return;
@@ -180,8 +181,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   } else {
     for (const PeakRow& row : peak_table(result.runs)) {
       out << row.backend << ", D = " << row.dims << ": peak " << format_si(row.peak.flops, "FLOPS") << " \xC2\xB1 "
-          << format_si(row.peak.at_peak.sd, "FLOPS") << " (n = " << row.peak.at_peak.n << ") at W = "
-          << row.peak.workers;
+          << format_si(row.peak.at_peak.sd, "FLOPS") << " (n = " << row.peak.at_peak.n
+          << ") at W = " << row.peak.workers;
       if (row.fraction_of_theoretical)
         out << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
             << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";

@@ -15,7 +15,8 @@
 namespace bs::cli {
 
 int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  const ParsedArgs args = parse_args(raw, {"--json", "--quiet"}, {"--backend", "--device", "--mib", "--repeats", "--workspace"});
+  const ParsedArgs args =
+      parse_args(raw, {"--json", "--quiet"}, {"--backend", "--device", "--mib", "--repeats", "--workspace"});
   if (args.positional.size() != 1 || args.positional[0] != "bandwidth") throw UsageError("expected 'run bandwidth'");
   kernels::BandwidthSpec spec;
   const double mib = args.number("--mib", 128), repeats = args.number("--repeats", 10);
@@ -58,10 +59,18 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
     if (!quiet) err << "benchscope-cli: stored in " << *ws_path << '\n';
   }
   if (args.has("--json")) {
-    out << nlohmann::json{{"format", "benchscope-bandwidth"}, {"version", 1}, {"platform", set.platform},
-                          {"device", set.device}, {"backend", set.backend}, {"kernel", "stream-triad"},
-                          {"bytes_per_element", kernels::kTriadBytesPerElement}, {"mib_per_array", spec.mib_per_array},
-                          {"bytes_per_second", m.values}, {"mean", s.mean}, {"sd", s.sd}, {"max", s.max}}
+    out << nlohmann::json{{"format", "benchscope-bandwidth"},
+                          {"version", 1},
+                          {"platform", set.platform},
+                          {"device", set.device},
+                          {"backend", set.backend},
+                          {"kernel", "stream-triad"},
+                          {"bytes_per_element", kernels::kTriadBytesPerElement},
+                          {"mib_per_array", spec.mib_per_array},
+                          {"bytes_per_second", m.values},
+                          {"mean", s.mean},
+                          {"sd", s.sd},
+                          {"max", s.max}}
                .dump(2)
         << '\n';
   } else {

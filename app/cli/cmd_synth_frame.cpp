@@ -15,15 +15,16 @@
 #include "command.h"
 #include "model/raw_sidecar.h"
 #include "synth_checkerboard.h"
+#include "vision/line_fit.h"
 #include "vision/synthetic.h"
 #include "vision/synthetic_room.h"
-#include "vision/line_fit.h"
 
 namespace bs::cli {
 namespace {
 
 // Each 3D segment sampled at 1/48 steps, projected through the lens; runs of >= 6 points inside FOV and sensor.
-std::vector<vision::PickedLine> room_lines_in_image(const vision::Lens& lens, const std::vector<vision::Segment3d>& segs) {
+std::vector<vision::PickedLine> room_lines_in_image(const vision::Lens& lens,
+                                                    const std::vector<vision::Segment3d>& segs) {
   std::vector<vision::PickedLine> out;
   const cv::Point2d c = lens.centre();
   for (const auto& seg : segs) {
@@ -33,7 +34,8 @@ std::vector<vision::PickedLine> room_lines_in_image(const vision::Lens& lens, co
       const cv::Vec3d u = v / cv::norm(v);
       const auto r = lens.radius(std::acos(std::clamp(u[0], -1.0, 1.0)));
       const double len = std::hypot(u[1], u[2]);
-      const cv::Point2d p = r && len > 0 ? cv::Point2d(c.x + *r * u[1] / len, c.y - *r * u[2] / len) : cv::Point2d(-1, -1);
+      const cv::Point2d p =
+          r && len > 0 ? cv::Point2d(c.x + *r * u[1] / len, c.y - *r * u[2] / len) : cv::Point2d(-1, -1);
       if (p.x >= 0 && p.y >= 0 && p.x <= lens.width - 1 && p.y <= lens.height - 1) {
         run.push_back(p);
         continue;
@@ -136,7 +138,8 @@ int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
 const CommandRegistrar registrar({
     "synth-frame",
     "render a synthetic Bayer capture of a test chart through a lens, with ground truth",
-    "usage: benchscope-cli synth-frame --out PREFIX [--lens paper|LENS.json] [--size WxH] [--pattern BGGR|RGGB|GRBG|GBRG]\n"
+    "usage: benchscope-cli synth-frame --out PREFIX [--lens paper|LENS.json] [--size WxH] [--pattern "
+    "BGGR|RGGB|GRBG|GBRG]\n"
     "         [--bits 8|10|12|16] [--scene chart|room] [--vignetting V] [--noise SIGMA] [--seed N]\n"
     "       benchscope-cli synth-frame --scene checkerboard --out PREFIX [--lens paper|LENS.json] [--size WxH]\n"
     "         [--board COLSxROWS] [--square MM] (--pose RX,RY,RZ,TX,TY,TZ[;...] | --poses FILE) [--bits 8|10|12|16]\n"
@@ -154,9 +157,7 @@ const CommandRegistrar registrar({
     "  a poses file has one pose per line), ray-traced through the lens with NxN samples per pixel (default 4):\n"
     "  PREFIX-01.png... (grey), PREFIX.json (ground truth). --noise here: Gaussian noise in grey levels; --blur:\n"
     "  sigma, px.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_synth(args, out);
-    },
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) { return run_synth(args, out); },
 });
 
 }  // namespace

@@ -23,7 +23,9 @@ std::string bash_completion(const std::vector<Command>& commands) {
       "# /usr/share/bash-completion/completions/benchscope-cli.\n"
       "_benchscope_cli() {\n"
       "  local cur=\"${COMP_WORDS[COMP_CWORD]}\"\n"
-      "  local commands=\"" + names + "\"\n"
+      "  local commands=\"" +
+      names +
+      "\"\n"
       "  if [[ $COMP_CWORD -eq 1 ]]; then\n"
       "    COMPREPLY=($(compgen -W \"$commands --help --version\" -- \"$cur\"))\n"
       "    return\n"

@@ -2,16 +2,16 @@
 #include "figure_cli.h"
 
 #ifdef BENCHSCOPE_WITH_FIGURES
-#include "device_palette.h"
 #include <algorithm>
 #include <cstdlib>
+#include "device_palette.h"
 
 #include "frame_store.h"
 
 namespace bs::cli {
 
 const std::set<std::string>& figure_value_options() {
-  static const std::set<std::string> names{"--preset", "--width-mm", "--height-mm", "--dpi",
+  static const std::set<std::string> names{"--preset",  "--width-mm", "--height-mm", "--dpi",
                                            "--font-pt", "--format",   "--template"};
   return names;
 }

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "model/import_batch.h"
 #include "import_error.h"
 #include "import_service.h"
+#include "model/import_batch.h"
 #include "util/cancel.h"
 
 namespace bs::cli {
@@ -14,7 +14,9 @@ namespace bs::cli {
 // Folder expansion and the skip rule are the import service's (importers/import_service.h), so the data commands
 // read exactly the files `import` would store. These names stay for the commands that walk inputs themselves.
 using InputFile = ImportCandidate;
-inline std::vector<InputFile> expand_inputs(const std::vector<std::string>& paths) { return expand_import_paths(paths); }
+inline std::vector<InputFile> expand_inputs(const std::vector<std::string>& paths) {
+  return expand_import_paths(paths);
+}
 
 // True when `path` is an SQLite file (a BenchScope workspace or at least a candidate for one).
 bool looks_like_workspace(const std::string& path);

@@ -38,11 +38,10 @@ int lens_calibrate(const std::vector<std::string>& raw, std::ostream& out, std::
     images.push_back({std::filesystem::path(path).filename().string(), path, {}});
   const std::size_t n = images.size();
   std::size_t seen = 0;
-  const auto result = vision::calibrate_checkerboard(images, board, model, p.lens, nullptr,
-                                                     [&](double, std::string_view step) {
-                                                       if (step.rfind("corners: ", 0) == 0)
-                                                         err << "[" << ++seen << "/" << n << "] " << step << '\n';
-                                                     });
+  const auto result =
+      vision::calibrate_checkerboard(images, board, model, p.lens, nullptr, [&](double, std::string_view step) {
+        if (step.rfind("corners: ", 0) == 0) err << "[" << ++seen << "/" << n << "] " << step << '\n';
+      });
 
   char line[512];
   std::size_t name_width = 5;

@@ -6,8 +6,8 @@
 namespace bs::cli {
 
 const std::set<std::string>& platform_value_options() {
-  static const std::set<std::string> names{"--budget", "--min-fps", "--min-runtime", "--battery", "--extra-load",
-                                              "--supply-volts", "--mission"};
+  static const std::set<std::string> names{"--budget",     "--min-fps",      "--min-runtime", "--battery",
+                                           "--extra-load", "--supply-volts", "--mission"};
   return names;
 }
 

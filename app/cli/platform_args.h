@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The battery and constraint options shared by `platforms` and `report`.
-#include <string>
 #include <set>
+#include <string>
 
-#include "analysis/power/battery.h"
 #include "analysis/platform/platform_comparison.h"
+#include "analysis/power/battery.h"
 #include "args.h"
 
 namespace bs::cli {
@@ -18,9 +18,7 @@ struct PlatformArgs {
   const BatteryPack* pack = nullptr;
   ComparisonOptions options;
   Constraints constraints;
-  bool constrained() const {
-    return constraints.power_budget_w || constraints.min_fps || constraints.min_runtime_h;
-  }
+  bool constrained() const { return constraints.power_budget_w || constraints.min_fps || constraints.min_runtime_h; }
 };
 
 // Throws UsageError for an unknown battery preset, naming the known ones, or a malformed mission.

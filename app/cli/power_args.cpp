@@ -20,8 +20,7 @@ std::unique_ptr<sensors::PowerRecorder> make_recorder(const std::string& spec, c
   }
   if (!quiet) {
     err << "benchscope-cli: recording power from " << sel.note << ": ";
-    for (std::size_t i = 0; i < sel.sensors.size(); ++i)
-      err << (i ? ", " : "") << sel.sensors[i]->info().id;
+    for (std::size_t i = 0; i < sel.sensors.size(); ++i) err << (i ? ", " : "") << sel.sensors[i]->info().id;
     err << ", every " << interval_ms << " ms\n";
   }
   auto rec = std::make_unique<sensors::PowerRecorder>(

@@ -45,15 +45,17 @@ int synth_checkerboard(const ParsedArgs& args, const vision::Lens& lens, const v
 
   const std::filesystem::path parent = std::filesystem::path(prefix).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
-  nlohmann::json truth = {{"format", "benchscope-synthetic-checkerboard"},
-                          {"board", {{"cols", how.board.cols}, {"rows", how.board.rows}, {"square_mm", how.board.square_mm}}},
-                          {"pose_convention", "rx,ry,rz degrees (R = Rz Ry Rx), tx,ty,tz mm of the board centre; "
-                                              "camera frame x forward, y right, z up"},
-                          {"noise", how.noise_sigma},
-                          {"blur_px", how.blur_sigma_px},
-                          {"bits", bits},
-                          {"lens", vision::lens_to_json(lens, view)},
-                          {"images", nlohmann::json::array()}};
+  nlohmann::json truth = {
+      {"format", "benchscope-synthetic-checkerboard"},
+      {"board", {{"cols", how.board.cols}, {"rows", how.board.rows}, {"square_mm", how.board.square_mm}}},
+      {"pose_convention",
+       "rx,ry,rz degrees (R = Rz Ry Rx), tx,ty,tz mm of the board centre; "
+       "camera frame x forward, y right, z up"},
+      {"noise", how.noise_sigma},
+      {"blur_px", how.blur_sigma_px},
+      {"bits", bits},
+      {"lens", vision::lens_to_json(lens, view)},
+      {"images", nlohmann::json::array()}};
   for (std::size_t i = 0; i < poses.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "-%02zu.png", i + 1);

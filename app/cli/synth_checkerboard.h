@@ -10,8 +10,8 @@
 namespace bs::cli {
 
 // The options synth-frame accepts for this scene (besides --out, --lens, --size, --bits).
-inline const std::set<std::string> kCheckerboardSceneOptions = {"--board", "--square", "--pose", "--poses",
-                                                                 "--noise", "--blur", "--supersample", "--seed"};
+inline const std::set<std::string> kCheckerboardSceneOptions = {"--board", "--square", "--pose",        "--poses",
+                                                                "--noise", "--blur",   "--supersample", "--seed"};
 
 int synth_checkerboard(const ParsedArgs& args, const vision::Lens& lens, const vision::View& view,
                        const std::string& prefix, int bits, std::ostream& out);

@@ -1,28 +1,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope [WORKSPACE.bsw | FILE/FOLDER...] [--screenshot DIR [--window-size WxH]] [--startup-time]
 #include <QApplication>
-#include <cstdio>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QTabWidget>
 #include <QTimer>
+#include <cstdio>
 
+#include "battery_view.h"
+#include "efficiency_view.h"
 #include "flops_plot.h"
 #include "frame_triptych.h"
 #include "frames_view.h"
-#include "kernel_runner.h"
-#include "pipeline_view.h"
-#include "lens_view_3d.h"
 #include "inference_table.h"
-#include "platform_view.h"
-#include "roofline_view.h"
-#include "power_view.h"
-#include "power_trace_loader.h"
-#include "efficiency_view.h"
-#include "battery_view.h"
+#include "kernel_runner.h"
+#include "lens_view_3d.h"
 #include "main_window.h"
 #include "peak_table.h"
+#include "pipeline_view.h"
+#include "platform_view.h"
+#include "power_trace_loader.h"
+#include "power_view.h"
+#include "roofline_view.h"
 #include "workspace_tree.h"
 
 namespace {
@@ -50,14 +50,19 @@ int main(int argc, char** argv) {
   cli.addPositionalArgument("paths", "A workspace (.bsw) to open, or files/folders to import into a new one.");
   QCommandLineOption shot("screenshot", "Save PNG screenshots of the window and views into DIR, then quit.", "DIR");
   cli.addOption(shot);
-  QCommandLineOption sweep("sweep", "Start a Kernel Runner sweep over SPEC workers right away (with --screenshot: "
-                                    "the shots are taken mid-sweep).", "SPEC");
+  QCommandLineOption sweep("sweep",
+                           "Start a Kernel Runner sweep over SPEC workers right away (with --screenshot: "
+                           "the shots are taken mid-sweep).",
+                           "SPEC");
   cli.addOption(sweep);
-  QCommandLineOption size("window-size", "With --screenshot: also save the whole window with each tab in front, at "
-                                         "this size (e.g. 1280x800), as window-<tab>.png.", "WxH");
+  QCommandLineOption size("window-size",
+                          "With --screenshot: also save the whole window with each tab in front, at "
+                          "this size (e.g. 1280x800), as window-<tab>.png.",
+                          "WxH");
   cli.addOption(size);
-  QCommandLineOption startup("startup-time", "Print how long the window took to show and answer events (ms from "
-                                             "start), then quit: the figure issue #19 asks to stay under 2 s.");
+  QCommandLineOption startup("startup-time",
+                             "Print how long the window took to show and answer events (ms from "
+                             "start), then quit: the figure issue #19 asks to stay under 2 s.");
   cli.addOption(startup);
   cli.process(app);
 
@@ -79,10 +84,11 @@ int main(int argc, char** argv) {
     QTimer::singleShot(0, &window, [&window, &since_start, shown_ms] {
       const qint64 answering_ms = since_start.elapsed();
       const auto report = [&since_start, shown_ms, answering_ms] {
-        std::printf("startup: window shown after %lld ms, answering events after %lld ms, power samples in the views "
-                    "after %lld ms\n",
-                    static_cast<long long>(shown_ms), static_cast<long long>(answering_ms),
-                    static_cast<long long>(since_start.elapsed()));
+        std::printf(
+            "startup: window shown after %lld ms, answering events after %lld ms, power samples in the views "
+            "after %lld ms\n",
+            static_cast<long long>(shown_ms), static_cast<long long>(answering_ms),
+            static_cast<long long>(since_start.elapsed()));
         std::fflush(stdout);
         QApplication::quit();
       };
@@ -123,7 +129,7 @@ int main(int argc, char** argv) {
       save_png(window.kernel_runner(), dir + "/kernel-runner.png");
       window.power_view()->resize(window.flops_plot()->size());
       save_png(window.power_view(), dir + "/power-view.png");
-      window.platform_view()->resize(1900, 540);  // every column of the comparison side by side
+      window.platform_view()->resize(1900, 540);       // every column of the comparison side by side
       window.platform_view()->set_power_budget(10.0);  // the paper's conclusion: under 10 W the Jetson
       window.platform_view()->set_mission("idle:60:12,walk:30:140,kick:5:225");  // servos per phase
       save_png(window.platform_view(), dir + "/platform-view.png");

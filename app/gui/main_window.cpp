@@ -4,6 +4,7 @@
 #include "analysis/peaks/peak_ceilings.h"
 #include "lens_tab.h"
 
+#include <qcustomplot.h>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -17,30 +18,29 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
-#include <qcustomplot.h>
 
-#include "analysis/peaks/flops.h"
-#include "analysis/peaks/foreign_sweeps.h"
-#include "flops_plot.h"
-#include "import_controller.h"
-#include "kernel_runner.h"
-#include "run_json.h"
-#include "peak_table.h"
-#include "power_view.h"
-#include "power_trace_loader.h"
 #include <QTabWidget>
 #include <QUndoStack>
+#include "analysis/peaks/flops.h"
+#include "analysis/peaks/foreign_sweeps.h"
+#include "battery_view.h"
+#include "device_palette.h"
+#include "efficiency_view.h"
+#include "flops_plot.h"
+#include "frames_view.h"
+#include "import_controller.h"
+#include "kernel_runner.h"
+#include "peak_table.h"
 #include "pipeline_json.h"
 #include "pipeline_measure_panel.h"
 #include "pipeline_view.h"
 #include "platform_view.h"
-#include "roofline_view.h"
-#include "efficiency_view.h"
-#include "battery_view.h"
-#include "device_palette.h"
+#include "power_trace_loader.h"
+#include "power_view.h"
 #include "recent_files.h"
+#include "roofline_view.h"
+#include "run_json.h"
 #include "workspace_tree.h"
-#include "frames_view.h"
 
 namespace bs::ui {
 namespace {
@@ -76,7 +76,8 @@ MainWindow::MainWindow(QWidget* parent)
   flops_split_->setStretchFactor(0, 3);
   flops_split_->setStretchFactor(1, 1);
   flops_split_->setChildrenCollapsible(false);
-  tab(flops_split_, tr("FLOPS"), tr("FLOPS against workers for the runs ticked in the workspace tree, with their peaks"));
+  tab(flops_split_, tr("FLOPS"),
+      tr("FLOPS against workers for the runs ticked in the workspace tree, with their peaks"));
   tab(power_, tr("Power"), tr("Current/power logs: traces, statistics over a selected range (the paper's Figure 4)"));
   tab(efficiency_, tr("Efficiency"), tr("GFLOPS/W per platform: the paper's and at mean power"));
   tab(battery_, tr("Battery"), tr("Battery life per platform, presets saved in the workspace"));
@@ -123,7 +124,7 @@ MainWindow::MainWindow(QWidget* parent)
   resizeDocks({tree_dock}, {340}, Qt::Horizontal);
   connect(runner_, &KernelRunner::started, runner_dock, &QDockWidget::raise);
   resize(1400, 900);
-  default_state_ = saveState();  // View > Reset layout returns here
+  default_state_ = saveState();        // View > Reset layout returns here
   flops_split_->setSizes({560, 300});  // the paper's 13 peak rows without scrolling at the default size
   default_split_ = flops_split_->saveState();
   edits_ = new QUndoStack(this);
@@ -231,7 +232,8 @@ void MainWindow::import_paths(const QStringList& paths) {
 
 void MainWindow::import_paths_now(const QStringList& paths) {
   if (!workspace_) new_untitled_workspace();
-  const ImportReport report = ImportController::import_now(QString::fromStdString(workspace_->path()), paths, CancelToken{});
+  const ImportReport report =
+      ImportController::import_now(QString::fromStdString(workspace_->path()), paths, CancelToken{});
   reload();
   if (!report.failures.isEmpty()) show_import_report(report);
 }
@@ -239,12 +241,11 @@ void MainWindow::import_paths_now(const QStringList& paths) {
 void MainWindow::show_import_report(const ImportReport& r) {
   // Few skips or failures: their reasons are in the message itself; many: counted, and listed under Details.
   const ImportMessage m = import_message(r);
-  statusBar()->showMessage(r.failures.isEmpty() && !m.lines.isEmpty() ? m.headline + " — " + m.lines.join("; ")
-                                                                      : m.headline,
-                           10000);
+  statusBar()->showMessage(
+      r.failures.isEmpty() && !m.lines.isEmpty() ? m.headline + " — " + m.lines.join("; ") : m.headline, 10000);
   if (r.failures.isEmpty()) return;
-  const QString text = tr("%n file(s) could not be imported; nothing of them was stored.", nullptr,
-                          static_cast<int>(r.failures.size()));
+  const QString text =
+      tr("%n file(s) could not be imported; nothing of them was stored.", nullptr, static_cast<int>(r.failures.size()));
   QMessageBox box(QMessageBox::Warning, tr("Import problems"),
                   m.lines.isEmpty() ? text + "\n" + m.headline : text + "\n\n" + m.lines.join('\n'), QMessageBox::Ok,
                   this);
@@ -260,7 +261,8 @@ void MainWindow::reload() {
   if (workspace_) {
     std::int64_t id = kFirstForeignSweepId;
     for (const StoredResultSet& s : workspace_->result_sets())
-      for (FlopsRun& run : foreign_sweeps(s.set)) runs_.push_back(StoredRun{id--, s.import_id, s.device_id, s.color_index, std::move(run)});
+      for (FlopsRun& run : foreign_sweeps(s.set))
+        runs_.push_back(StoredRun{id--, s.import_id, s.device_id, s.color_index, std::move(run)});
   }
   tree_->set_runs(runs_);
   tree_->set_items(workspace_items());
@@ -271,7 +273,8 @@ void MainWindow::reload() {
   platforms_->set_workspace(workspace_.get());
   // Power traces: summaries now, samples now for a small workspace, else on a worker thread (PowerTraceLoader)
   // while the window already answers; the trace views are filled when they arrive (show_traces).
-  std::vector<StoredPowerTrace> traces = workspace_ ? workspace_->power_trace_summaries() : std::vector<StoredPowerTrace>{};
+  std::vector<StoredPowerTrace> traces =
+      workspace_ ? workspace_->power_trace_summaries() : std::vector<StoredPowerTrace>{};
   if (workspace_ && PowerTraceLoader::sample_count(traces) > PowerTraceLoader::kBackgroundSamples) {
     trace_loader_->start(workspace_->path(), std::move(traces));
     show_traces({});
@@ -336,15 +339,17 @@ void MainWindow::show_source(const PlatformRow& row, const QString& column) {
           r.run.variant == peak->variant && r.run.dims == peak->dims && tree_->select_run(r.id)) {
         if (auto* dock = findChild<QDockWidget*>("workspaceDock")) dock->raise();
         statusBar()->showMessage(tr("%1: %2").arg(QString::fromStdString(row.platform),
-                                                  QString::fromStdString(row.sources.at(column.toStdString()).how)), 10000);
+                                                  QString::fromStdString(row.sources.at(column.toStdString()).how)),
+                                 10000);
         return;
       }
   }
   const auto it = row.sources.find(column.toStdString());
   if (column == column::kPower) static_cast<QTabWidget*>(centralWidget())->setCurrentWidget(power_);
   statusBar()->showMessage(it == row.sources.end() ? tr("No source recorded for this cell")
-                                                   : tr("%1 — from %2").arg(QString::fromStdString(it->second.how),
-                                                                            QString::fromStdString(it->second.source_file)),
+                                                   : tr("%1 — from %2")
+                                                         .arg(QString::fromStdString(it->second.how),
+                                                              QString::fromStdString(it->second.source_file)),
                            10000);
 }
 
@@ -375,10 +380,10 @@ void MainWindow::refresh_views() {
   peaks_->peak_model()->set_rows(std::move(peak_rows), colors);
   // A permanent label: import summaries and action tips are temporary messages and must not erase it.
   status_label_->setText(tr("%1 — %2 of %3 runs shown%4")
-                               .arg(workspace_ ? QString::fromStdString(workspace_->path()) : tr("no workspace"))
-                               .arg(shown.size() - live_.size())
-                               .arg(runs_.size())
-                               .arg(live_.empty() ? QString() : tr(", plus the sweep running now")));
+                             .arg(workspace_ ? QString::fromStdString(workspace_->path()) : tr("no workspace"))
+                             .arg(shown.size() - live_.size())
+                             .arg(runs_.size())
+                             .arg(live_.empty() ? QString() : tr(", plus the sweep running now")));
 }
 
 void MainWindow::show_live_run(const FlopsRun& run) {
@@ -388,7 +393,8 @@ void MainWindow::show_live_run(const FlopsRun& run) {
     for (const DeviceRecord& d : workspace_->devices())
       if (d.platform == run.platform && d.device == run.device) color = d.color_index;
   auto it = std::find_if(live_.begin(), live_.end(), [&](const StoredRun& s) { return s.run.dims == run.dims; });
-  if (it == live_.end()) it = live_.insert(live_.end(), StoredRun{-1 - static_cast<qint64>(live_.size()), 0, 0, color, {}});
+  if (it == live_.end())
+    it = live_.insert(live_.end(), StoredRun{-1 - static_cast<qint64>(live_.size()), 0, 0, color, {}});
   it->run = run;
   refresh_views();
 }
@@ -435,7 +441,7 @@ void MainWindow::save_as() {
 }
 
 void MainWindow::update_title() {
-  const QString name = !workspace_ ? tr("no workspace")
+  const QString name = !workspace_     ? tr("no workspace")
                        : untitled_dir_ ? tr("untitled")
                                        : QFileInfo(QString::fromStdString(workspace_->path())).fileName();
   setWindowTitle(tr("BenchScope — %1").arg(name));

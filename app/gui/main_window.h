@@ -73,7 +73,7 @@ class MainWindow : public QMainWindow {
   void show_source(const PlatformRow& row, const QString& column);
 
  private:
-  void create_actions();  // main_window_menus.cpp
+  void create_actions();          // main_window_menus.cpp
   void compare_with_workspace();  // main_window_menus.cpp
   void show_help();               // main_window_menus.cpp (F1)
   void restore_layout();
@@ -110,7 +110,7 @@ class MainWindow : public QMainWindow {
 
   std::unique_ptr<Workspace> workspace_;
   std::vector<StoredRun> runs_;
-  std::vector<StoredRun> live_;  // a sweep in progress, drawn before it is stored
+  std::vector<StoredRun> live_;                  // a sweep in progress, drawn before it is stored
   std::unique_ptr<QTemporaryDir> untitled_dir_;  // holds an untitled workspace until "Save As"
   WorkspaceTree* tree_;
   QSplitter* flops_split_ = nullptr;  // the FLOPS tab: plot over the peak table

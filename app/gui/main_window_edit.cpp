@@ -106,43 +106,49 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
     QString lens_line;
     if (!fr.lens_json.empty()) {
       try {
-        lens_line = tr("<br>Lens: %1").arg(QString::fromStdString(
-            vision::describe(vision::lens_from_json(nlohmann::json::parse(fr.lens_json)).first.calibration)));
+        lens_line = tr("<br>Lens: %1")
+                        .arg(QString::fromStdString(vision::describe(
+                            vision::lens_from_json(nlohmann::json::parse(fr.lens_json)).first.calibration)));
       } catch (const std::exception&) {
         lens_line = tr("<br>Lens: unreadable");
       }
     }
-    out.push_back({item_ref(K::Frame, f.id, f.import_id, QString::fromStdString(fr.label)),
-                   tr("%1 (%2×%3, %4-bit)").arg(QString::fromStdString(fr.label)).arg(fr.width).arg(fr.height).arg(fr.bit_depth),
-                   tr("<b>%1</b><br>%2<br>%3%4")
-                       .arg(QString::fromStdString(fr.label).toHtmlEscaped(), QString::fromStdString(f.path).toHtmlEscaped(),
-                            provenance_line(fr.provenance), lens_line)});
+    out.push_back(
+        {item_ref(K::Frame, f.id, f.import_id, QString::fromStdString(fr.label)),
+         tr("%1 (%2×%3, %4-bit)").arg(QString::fromStdString(fr.label)).arg(fr.width).arg(fr.height).arg(fr.bit_depth),
+         tr("<b>%1</b><br>%2<br>%3%4")
+             .arg(QString::fromStdString(fr.label).toHtmlEscaped(), QString::fromStdString(f.path).toHtmlEscaped(),
+                  provenance_line(fr.provenance), lens_line)});
   }
   for (const StoredPipelineRun& p : workspace_->pipeline_runs()) {
     const PipelineRun& r = p.run;
     out.push_back({item_ref(K::PipelineRun, p.id, p.import_id, QString::fromStdString(r.platform)),
-                   tr("%1 — %2 (%3)").arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
-                                          QString::fromStdString(r.backend)),
-                   tr("<b>%1</b>, %2 stage(s)<br>%3").arg(QString::fromStdString(r.platform).toHtmlEscaped())
+                   tr("%1 — %2 (%3)")
+                       .arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
+                            QString::fromStdString(r.backend)),
+                   tr("<b>%1</b>, %2 stage(s)<br>%3")
+                       .arg(QString::fromStdString(r.platform).toHtmlEscaped())
                        .arg(r.stages.size())
                        .arg(provenance_line(r.provenance))});
   }
   for (const StoredResultSet& s : workspace_->result_sets()) {
     const ResultSet& r = s.set;
     out.push_back({item_ref(K::ResultSet, s.id, s.import_id, QString::fromStdString(r.device)),
-                   tr("%1 — %2 (%3)").arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
-                                          QString::fromStdString(r.source_format)),
-                   tr("<b>%1</b>, %2 measurement(s)<br>%3").arg(QString::fromStdString(r.device).toHtmlEscaped())
+                   tr("%1 — %2 (%3)")
+                       .arg(QString::fromStdString(r.platform), QString::fromStdString(r.device),
+                            QString::fromStdString(r.source_format)),
+                   tr("<b>%1</b>, %2 measurement(s)<br>%3")
+                       .arg(QString::fromStdString(r.device).toHtmlEscaped())
                        .arg(r.measurements.size())
                        .arg(provenance_line(r.provenance))});
   }
   for (const BatterySetup& b : workspace_battery_setups(*workspace_)) {
-    out.push_back({item_ref(K::BatteryPreset, 0, 0, QString::fromStdString(b.pack.name)),
-                   QString::fromStdString(b.pack.name),
-                   tr("Battery preset saved in this workspace: %1 V nominal, %2 Ah%3")
-                       .arg(b.pack.nominal_v())
-                       .arg(b.pack.capacity_ah)
-                       .arg(b.mission.empty() ? QString() : tr(", mission %1").arg(QString::fromStdString(b.mission)))});
+    out.push_back(
+        {item_ref(K::BatteryPreset, 0, 0, QString::fromStdString(b.pack.name)), QString::fromStdString(b.pack.name),
+         tr("Battery preset saved in this workspace: %1 V nominal, %2 Ah%3")
+             .arg(b.pack.nominal_v())
+             .arg(b.pack.capacity_ah)
+             .arg(b.mission.empty() ? QString() : tr(", mission %1").arg(QString::fromStdString(b.mission)))});
   }
   return out;
 }
@@ -162,9 +168,14 @@ void MainWindow::rename_item(const TreeItemRef& item) {
   const std::string from = item.name.toStdString(), to = name.toStdString();
   std::function<void(const std::string&)> apply;
   switch (item.kind) {
-    case TreeItemRef::Kind::PowerLog: apply = [ws, id = item.id](const std::string& n) { ws->rename_power_trace(id, n); }; break;
-    case TreeItemRef::Kind::Frame: apply = [ws, id = item.id](const std::string& n) { ws->rename_frame(id, n); }; break;
-    default: break;
+    case TreeItemRef::Kind::PowerLog:
+      apply = [ws, id = item.id](const std::string& n) { ws->rename_power_trace(id, n); };
+      break;
+    case TreeItemRef::Kind::Frame:
+      apply = [ws, id = item.id](const std::string& n) { ws->rename_frame(id, n); };
+      break;
+    default:
+      break;
   }
   std::function<void()> redo, undo;
   if (item.kind == TreeItemRef::Kind::Platform) {
@@ -237,7 +248,9 @@ void MainWindow::set_device_color(const TreeItemRef& device, int color_index) {
   Workspace* ws = workspace_.get();
   const std::string platform = device.platform.toStdString(), name = device.name.toStdString();
   std::function<void()> redo = [ws, platform, name, color_index] { ws->set_device_color(platform, name, color_index); };
-  std::function<void()> undo = [ws, platform, name, old = device.color_index] { ws->set_device_color(platform, name, old); };
+  std::function<void()> undo = [ws, platform, name, old = device.color_index] {
+    ws->set_device_color(platform, name, old);
+  };
   try {
     redo();
   } catch (const std::exception& e) {

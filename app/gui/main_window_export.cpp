@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // File > Export figure / Reproduce paper figures / Export report: the same renderers as `benchscope-cli figures`
 // and `benchscope-cli report`, with a progress dialog that cancels between figures.
+#include <qcustomplot.h>
 #include <QDesktopServices>
 #include <QDir>
 #include <QFileDialog>
@@ -10,7 +11,6 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QUrl>
-#include <qcustomplot.h>
 
 #include "export_figure_dialog.h"
 #include "frame_store.h"
@@ -43,7 +43,8 @@ bool with_progress(QWidget* parent, const QString& title,
       if (dialog.wasCanceled()) cancel.cancel();
     });
   } catch (const Cancelled&) {
-    parent->window()->findChild<QStatusBar*>()->showMessage(QObject::tr("%1 cancelled; nothing was written").arg(title), 8000);
+    parent->window()->findChild<QStatusBar*>()->showMessage(QObject::tr("%1 cancelled; nothing was written").arg(title),
+                                                            8000);
     return false;
   } catch (const std::exception& e) {
     QMessageBox::warning(parent, title, QString::fromUtf8(e.what()));
@@ -61,8 +62,8 @@ FigureData MainWindow::figure_data() const {
     d.colors[{r.run.platform, r.run.device}] = r.color_index;
     if (ticked.contains(r.id)) d.runs.push_back(r.run);
   }
-  d.selection = "runs ticked in the workspace (" + std::to_string(d.runs.size()) + " of " + std::to_string(runs_.size()) +
-                "), all power logs and pipeline runs";
+  d.selection = "runs ticked in the workspace (" + std::to_string(d.runs.size()) + " of " +
+                std::to_string(runs_.size()) + "), all power logs and pipeline runs";
   if (workspace_) {
     for (const StoredPowerTrace& t : workspace_->power_traces()) d.traces.push_back(t.trace);
     std::vector<PipelineRun> pipelines;
@@ -89,9 +90,10 @@ void MainWindow::export_current_figure() {
       break;
     }
   if (!plot) {
-    QMessageBox::information(this, tr("Export figure"),
-                             tr("The %1 tab has no plot to export; its tables export as LaTeX or CSV from the tab itself.")
-                                 .arg(tabs->tabText(tabs->currentIndex()).remove('&')));
+    QMessageBox::information(
+        this, tr("Export figure"),
+        tr("The %1 tab has no plot to export; its tables export as LaTeX or CSV from the tab itself.")
+            .arg(tabs->tabText(tabs->currentIndex()).remove('&')));
     return;
   }
   const QString name = tabs->tabText(tabs->currentIndex()).remove('&').toLower();
@@ -112,18 +114,19 @@ void MainWindow::reproduce_paper_figures() {
   if (dialog.exec() != QDialog::Accepted) return;
   const QString folder = dialog.destination();
   QStringList files, contents;
-  const bool ok = with_progress(this, tr("Paper figures"), [&](const CancelToken& cancel, const ProgressCallback& progress) {
-    const auto templates = load_figure_templates(paper_template_path().toStdString());
-    const FigureOutput out =
-        render_figures(templates, select_figure_data(figure_data(), dialog.data_choice()), folder, dialog.options(),
-                       cancel, progress);
-    files = out.files;
-    contents = out.contents;
-  });
+  const bool ok =
+      with_progress(this, tr("Paper figures"), [&](const CancelToken& cancel, const ProgressCallback& progress) {
+        const auto templates = load_figure_templates(paper_template_path().toStdString());
+        const FigureOutput out = render_figures(templates, select_figure_data(figure_data(), dialog.data_choice()),
+                                                folder, dialog.options(), cancel, progress);
+        files = out.files;
+        contents = out.contents;
+      });
   if (!ok) return;
   // What each figure shows and what it left out (and why) is said here, not hidden: a figure that silently mixed a
   // run measured on this machine into the paper's data, or dropped a power log, would mislead a reader.
-  QString text = tr("Wrote %1 files (figures, tables and figures.json) to %2.<ul>").arg(files.size()).arg(folder.toHtmlEscaped());
+  QString text =
+      tr("Wrote %1 files (figures, tables and figures.json) to %2.<ul>").arg(files.size()).arg(folder.toHtmlEscaped());
   for (const QString& line : contents) text += "<li>" + line.toHtmlEscaped() + "</li>";
   text += "</ul>";
   QMessageBox box(QMessageBox::Information, tr("Paper figures"), text, QMessageBox::Ok, this);
@@ -135,11 +138,13 @@ void MainWindow::reproduce_paper_figures() {
 }
 
 void MainWindow::export_report() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export report"), QDir(export_folder()).filePath("report.html"),
-                                                    tr("HTML report (*.html);;PDF report (*.pdf)"));
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Export report"), QDir(export_folder()).filePath("report.html"),
+                                   tr("HTML report (*.html);;PDF report (*.pdf)"));
   if (path.isEmpty()) return;
   ReportRequest request;
-  request.workspace_name = workspace_ ? QFileInfo(QString::fromStdString(workspace_->path())).fileName() : tr("untitled");
+  request.workspace_name =
+      workspace_ ? QFileInfo(QString::fromStdString(workspace_->path())).fileName() : tr("untitled");
   (path.endsWith(".pdf", Qt::CaseInsensitive) ? request.pdf_path : request.html_path) = path;
   request.constraints = platforms_->constraints();
   request.comparison = platforms_->options();

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's menus and actions, apart from main_window.cpp so the window itself stays about wiring views.
+#include <qcustomplot.h>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QTabWidget>
 #include <QUndoStack>
-#include <qcustomplot.h>
 
 #include "compare_dialog.h"
 #include "flops_plot.h"
-#include "main_window.h"
 #include "frames_view.h"
 #include "import_controller.h"
+#include "main_window.h"
 #include "recent_files.h"
 
 namespace bs::ui {
@@ -33,8 +33,9 @@ void MainWindow::compare_with_workspace() {
     for (const StoredRun& r : b.runs()) runs_b.push_back(r.run);
     for (const StoredResultSet& s : workspace_->result_sets()) sets_a.push_back(s.set);
     for (const StoredResultSet& s : b.result_sets()) sets_b.push_back(s.set);
-    CompareDialog dialog(runs_a, sets_a, runs_b, sets_b, QFileInfo(QString::fromStdString(workspace_->path())).fileName(),
-                         QFileInfo(other).fileName(), this);
+    CompareDialog dialog(runs_a, sets_a, runs_b, sets_b,
+                         QFileInfo(QString::fromStdString(workspace_->path())).fileName(), QFileInfo(other).fileName(),
+                         this);
     dialog.exec();
   } catch (const std::exception& e) {
     QMessageBox::warning(this, tr("Compare"), QString::fromUtf8(e.what()));
@@ -53,7 +54,8 @@ void MainWindow::create_actions() {
   add(file, tr("&New workspace"), QKeySequence::New, tr("Start an empty, untitled workspace"),
       [this] { new_untitled_workspace(); });
   add(file, tr("&Open workspace…"), QKeySequence::Open, tr("Open a BenchScope workspace (.bsw)"), [this] {
-    const QString p = QFileDialog::getOpenFileName(this, tr("Open workspace"), {}, tr("BenchScope workspace (*.bsw);;All files (*)"));
+    const QString p =
+        QFileDialog::getOpenFileName(this, tr("Open workspace"), {}, tr("BenchScope workspace (*.bsw);;All files (*)"));
     if (!p.isEmpty()) open_workspace(p);
   });
   recent_ = new RecentFiles(file->addMenu(tr("Open &recent")), this);
@@ -75,12 +77,14 @@ void MainWindow::create_actions() {
   add(file, tr("&Compare with workspace…"), QKeySequence(Qt::CTRL | Qt::Key_D),
       tr("Regression compare of this workspace (A) against another (B), as benchscope-cli compare does"),
       [this] { compare_with_workspace(); });
-  QAction* copy_frames = add(file, tr("Copy imported &frames into the workspace"), QKeySequence(),
-                             tr("Store the pixels of imported frames in the workspace instead of a reference to the "
-                                "file (path + content hash)"),
-                             [this](bool on) { importer_->set_frame_storage(on ? FrameStorage::Copy : FrameStorage::Reference); });
+  QAction* copy_frames =
+      add(file, tr("Copy imported &frames into the workspace"), QKeySequence(),
+          tr("Store the pixels of imported frames in the workspace instead of a reference to the "
+             "file (path + content hash)"),
+          [this](bool on) { importer_->set_frame_storage(on ? FrameStorage::Copy : FrameStorage::Reference); });
   copy_frames->setCheckable(true);
-  add(file, tr("Export &Figure 3 (triptych)…"), QKeySequence(), tr("The Frames tab's triptych as the paper's Figure 3 (PDF or PNG)"),
+  add(file, tr("Export &Figure 3 (triptych)…"), QKeySequence(),
+      tr("The Frames tab's triptych as the paper's Figure 3 (PDF or PNG)"),
       [this] { frames_->export_figure_dialog(); });
   file->addSeparator();
   add(file, tr("&Export figure…"), QKeySequence(Qt::CTRL | Qt::Key_E),
@@ -101,16 +105,15 @@ void MainWindow::create_actions() {
                    [this] { edits_->undo(); });
   redo_edit_ = add(edit, tr("&Redo"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), tr("Redo what Undo undid"),
                    [this] { edits_->redo(); });
-  connect(edits_, &QUndoStack::undoTextChanged, this, [this](const QString& t) {
-    undo_edit_->setText(t.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(t));
-  });
-  connect(edits_, &QUndoStack::redoTextChanged, this, [this](const QString& t) {
-    redo_edit_->setText(t.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(t));
-  });
+  connect(edits_, &QUndoStack::undoTextChanged, this,
+          [this](const QString& t) { undo_edit_->setText(t.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(t)); });
+  connect(edits_, &QUndoStack::redoTextChanged, this,
+          [this](const QString& t) { redo_edit_->setText(t.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(t)); });
   connect(edits_, &QUndoStack::canUndoChanged, this, &MainWindow::update_edit_actions);
   connect(edits_, &QUndoStack::canRedoChanged, this, &MainWindow::update_edit_actions);
   edit->addSeparator();
-  add(edit, tr("Re&name selected item…"), QKeySequence(Qt::Key_F2), tr("Rename the platform, power log or frame selected in the workspace tree"),
+  add(edit, tr("Re&name selected item…"), QKeySequence(Qt::Key_F2),
+      tr("Rename the platform, power log or frame selected in the workspace tree"),
       [this] { rename_item(tree_->current_ref()); });
   update_edit_actions();
 
@@ -123,15 +126,16 @@ void MainWindow::create_actions() {
                        tr("Logarithmic FLOPS axis"), [this](bool on) { plot_->set_log_y(on); });
   log_y->setCheckable(true);
   log_y->setChecked(plot_->log_y());
-  add(view, tr("&Reset zoom"), QKeySequence(Qt::CTRL | Qt::Key_0), tr("Fit all visible series"), [this] { plot_->reset_view(); });
+  add(view, tr("&Reset zoom"), QKeySequence(Qt::CTRL | Qt::Key_0), tr("Fit all visible series"),
+      [this] { plot_->reset_view(); });
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
-  add(view, tr("Reset &layout"), QKeySequence(), tr("Docks, the FLOPS tab's split and the window size as on first start"),
-      [this] { reset_layout(); });
+  add(view, tr("Reset &layout"), QKeySequence(),
+      tr("Docks, the FLOPS tab's split and the window size as on first start"), [this] { reset_layout(); });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
-  add(help, tr("&Views and shortcuts"), QKeySequence::HelpContents, tr("What each tab shows and every keyboard shortcut"),
-      [this] { show_help(); });
+  add(help, tr("&Views and shortcuts"), QKeySequence::HelpContents,
+      tr("What each tab shows and every keyboard shortcut"), [this] { show_help(); });
   add(help, tr("&About BenchScope"), QKeySequence(), tr("Version and licence"), [this] {
     QMessageBox::about(this, tr("About BenchScope"),
                        tr("<h3>BenchScope %1</h3><p>Which computer should this robot carry? FLOPS, power and vision "
@@ -155,12 +159,14 @@ void MainWindow::show_help() {
       if (!a->shortcut().isEmpty())
         html += QStringLiteral("<tr><td><tt>%1</tt></td><td>%2 ▸ %3</td></tr>")
                     .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
-                         menu->title().remove('&').toHtmlEscaped(), a->text().remove('&').remove(QStringLiteral("…")).toHtmlEscaped());
-  html += tr("<tr><td><tt>Ctrl+Z / Ctrl+Shift+Z</tt></td><td>Lens tab: undo / redo a lens change</td></tr>"
-             "<tr><td><tt>F2 / Del</tt></td><td>Workspace tree: rename the platform, power log or frame; remove "
-             "the import that brought the selected item (Ctrl+Z outside the Lens tab undoes)</td></tr>"
-             "<tr><td><tt>Double-click</tt></td><td>Platforms and peak tables: show where a number came from</td></tr>"
-             "</table><p>The README's <i>Views</i> section and <tt>docs/cli.md</tt> describe every view and command.</p>");
+                         menu->title().remove('&').toHtmlEscaped(),
+                         a->text().remove('&').remove(QStringLiteral("…")).toHtmlEscaped());
+  html +=
+      tr("<tr><td><tt>Ctrl+Z / Ctrl+Shift+Z</tt></td><td>Lens tab: undo / redo a lens change</td></tr>"
+         "<tr><td><tt>F2 / Del</tt></td><td>Workspace tree: rename the platform, power log or frame; remove "
+         "the import that brought the selected item (Ctrl+Z outside the Lens tab undoes)</td></tr>"
+         "<tr><td><tt>Double-click</tt></td><td>Platforms and peak tables: show where a number came from</td></tr>"
+         "</table><p>The README's <i>Views</i> section and <tt>docs/cli.md</tt> describe every view and command.</p>");
   QMessageBox box(QMessageBox::NoIcon, tr("BenchScope: views and shortcuts"), html, QMessageBox::Close, this);
   box.setObjectName(QStringLiteral("help"));
   box.setTextFormat(Qt::RichText);

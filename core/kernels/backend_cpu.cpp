@@ -3,8 +3,8 @@
 #include <cstdio>
 
 #include "kernels/backend.h"
-#include "kernels/triad_cpu.h"
 #include "kernels/step_chunker.h"
+#include "kernels/triad_cpu.h"
 #include "util/host_clock.h"
 
 namespace bs::kernels {
@@ -16,7 +16,8 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 // Advances the scalar reference N steps in chunks of ~40 ms, polling `cancel` before each; returns the seconds of
 // all chunks.
-double advance_in_chunks(ScalarRotation& state, const RotationParams& p, std::int64_t workers, const CancelToken& cancel) {
+double advance_in_chunks(ScalarRotation& state, const RotationParams& p, std::int64_t workers,
+                         const CancelToken& cancel) {
   StepChunker chunks(p.iterations, workers * p.dims);
   const auto t0 = std::chrono::steady_clock::now();
   while (!chunks.done()) {
@@ -80,8 +81,10 @@ std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
   // independent chains (D = 1 is latency-bound far below it).
   const double scalar_per_cycle = rotation_flops_per_cycle(1, false, cpu.fma_ports, cpu.separate_add_pipes);
   scalar.theoretical_peak_flops = cpu.clock_hz * scalar_per_cycle;
-  std::snprintf(details, sizeof details, "1 thread, scalar float without FMA, the paper's exact semantics, "
-                "%.2f GHz measured, %.0f flop/cycle", cpu.clock_hz / 1e9, scalar_per_cycle);
+  std::snprintf(details, sizeof details,
+                "1 thread, scalar float without FMA, the paper's exact semantics, "
+                "%.2f GHz measured, %.0f flop/cycle",
+                cpu.clock_hz / 1e9, scalar_per_cycle);
   scalar.details = details;
   scalar.run_point = [](const RotationParams& p, std::int64_t w, Variant, std::vector<float>& out,
                         const CancelToken& c) { return run_scalar(p, w, out, c); };

@@ -45,7 +45,8 @@ __kernel void rotate_throughput(__global float16* xs, __global float16* ys, cons
 )CL";
 
 void check(cl_int err, const char* what) {
-  if (err != CL_SUCCESS) throw std::runtime_error(std::string("OpenCL: ") + what + " failed (error " + std::to_string(err) + ")");
+  if (err != CL_SUCCESS)
+    throw std::runtime_error(std::string("OpenCL: ") + what + " failed (error " + std::to_string(err) + ")");
 }
 
 std::string device_string(cl_device_id d, cl_device_info what) {
@@ -113,7 +114,10 @@ class Device {
     check(err, "clCreateBuffer");
     struct Release {
       cl_mem a, b;
-      ~Release() { clReleaseMemObject(a); clReleaseMemObject(b); }
+      ~Release() {
+        clReleaseMemObject(a);
+        clReleaseMemObject(b);
+      }
     } release{bx, by};
     const float c = rotation_cos(), s = rotation_sin();
     check(clSetKernelArg(kernel, 0, sizeof bx, &bx), "clSetKernelArg");
@@ -252,7 +256,8 @@ GpuLanes gpu_lanes_per_compute_unit(cl_device_id id, const std::string& vendor) 
     if (clGetDeviceInfo(id, kComputeCapabilityMajorNv, sizeof major, &major, nullptr) == CL_SUCCESS &&
         clGetDeviceInfo(id, kComputeCapabilityMinorNv, sizeof minor, &minor, nullptr) == CL_SUCCESS) {
       const bool narrow = major == 7 || (major == 8 && minor == 0) || (major == 6 && minor == 0);
-      return {narrow ? 64 : 128, "NVIDIA SM, compute capability " + std::to_string(major) + "." + std::to_string(minor)};
+      return {narrow ? 64 : 128,
+              "NVIDIA SM, compute capability " + std::to_string(major) + "." + std::to_string(minor)};
     }
     return {128, "NVIDIA SM, compute capability unknown"};
   }
@@ -295,8 +300,9 @@ std::vector<Backend> opencl_backends(const CpuInfo& cpu) {
       b.id = "opencl:" + std::to_string(index++);
       b.label = "OpenCL";
       b.device_name = device_string(id, CL_DEVICE_NAME);
-      b.kind = (type & CL_DEVICE_TYPE_GPU) ? DeviceKind::Gpu : (type & CL_DEVICE_TYPE_CPU) ? DeviceKind::Cpu
-                                                                                          : DeviceKind::Other;
+      b.kind = (type & CL_DEVICE_TYPE_GPU)   ? DeviceKind::Gpu
+               : (type & CL_DEVICE_TYPE_CPU) ? DeviceKind::Cpu
+                                             : DeviceKind::Other;
       b.variants = {Variant::Throughput, Variant::Paper};
       b.throughput_label = "float16x4";
       b.paper_dims = {1, 2, 4};
@@ -309,8 +315,8 @@ std::vector<Backend> opencl_backends(const CpuInfo& cpu) {
         // lane per cycle, and a rotation step is 4 ops (2 mul + 2 FMA) for 6 counted flops.
         const GpuLanes lanes = gpu_lanes_per_compute_unit(id, device_string(id, CL_DEVICE_VENDOR));
         b.theoretical_peak_flops = units * static_cast<double>(lanes.lanes) * mhz * 1e6 * 6.0 / 4.0;
-        b.details += ", peak approximate (" + std::to_string(lanes.lanes) + " FP32 lanes per compute unit: " +
-                     lanes.why + ")";
+        b.details +=
+            ", peak approximate (" + std::to_string(lanes.lanes) + " FP32 lanes per compute unit: " + lanes.why + ")";
       }
       auto device = std::make_shared<Device>(id);
       b.run_point = [device](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& outputs,

@@ -9,7 +9,8 @@ namespace bs::kernels {
 
 // One Backend per OpenCL device the ICD loader lists (PoCL gives a CPU device on every machine). Variants:
 // "paper" (one work-item per worker, float / float2 / float4 for D = 1, 2, 4, as in the paper) and the throughput
-// variant "float16x4" (4 independent float16 chains = 64 points per work-item). Returns none when no platform is installed.
+// variant "float16x4" (4 independent float16 chains = 64 points per work-item). Returns none when no platform is
+// installed.
 std::vector<Backend> opencl_backends(const CpuInfo& cpu);
 
 // Why there is no OpenCL device ("no OpenCL platform installed (...)", "no device on any platform"); empty when

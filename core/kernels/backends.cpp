@@ -23,7 +23,8 @@ std::vector<Backend> available_backends(const CpuInfo& cpu) {
     b.throughput_label = "float4x4";
     b.paper_dims = {1, 2, 4};
     // One FMA per lane per cycle; a rotation step is 4 ops for 6 counted flops.
-    b.theoretical_peak_flops = d.multiprocessors * static_cast<double>(d.fp32_lanes_per_sm) * d.clock_khz * 1e3 * 6.0 / 4.0;
+    b.theoretical_peak_flops =
+        d.multiprocessors * static_cast<double>(d.fp32_lanes_per_sm) * d.clock_khz * 1e3 * 6.0 / 4.0;
     b.details = std::to_string(d.multiprocessors) + " SMs x " + std::to_string(d.fp32_lanes_per_sm) + " lanes, " +
                 std::to_string(d.clock_khz / 1000) + " MHz, compute capability " + std::to_string(d.cc_major) + "." +
                 std::to_string(d.cc_minor);

@@ -11,7 +11,8 @@ ResultSet measure_bandwidth(const Backend& backend, const CpuInfo& cpu, const Ba
                             const CancelToken& cancel, const ProgressFn& progress) {
   if (!backend.run_triad) throw std::invalid_argument(backend.id + " has no bandwidth kernel");
   if (spec.repeats < 1 || spec.repeats > 1000) throw std::invalid_argument("repeats must be 1 to 1000");
-  if (spec.mib_per_array < 1 || spec.mib_per_array > 16384) throw std::invalid_argument("MiB per array must be 1 to 16384");
+  if (spec.mib_per_array < 1 || spec.mib_per_array > 16384)
+    throw std::invalid_argument("MiB per array must be 1 to 16384");
   const std::size_t elements = spec.mib_per_array * (std::size_t{1} << 20) / sizeof(float);
   ResultSet set;
   set.platform = bs::host_name();

@@ -106,10 +106,16 @@ void store_ceilings(const CeilingSet& set, const std::string& path) {
   all.push_back(set);
   json entries = json::array();
   for (const CeilingSet& s : all)
-    entries.push_back({{"host", s.host}, {"cpu_model", s.cpu_model}, {"backend", s.backend}, {"isa", s.isa},
-                       {"threads", s.threads}, {"clock_hz", s.clock_hz},
-                       {"computed_peak_flops", s.computed_peak_flops}, {"date", s.date},
-                       {"rotation_mix", ceiling_json(s.rotation_mix)}, {"fma", ceiling_json(s.fma)},
+    entries.push_back({{"host", s.host},
+                       {"cpu_model", s.cpu_model},
+                       {"backend", s.backend},
+                       {"isa", s.isa},
+                       {"threads", s.threads},
+                       {"clock_hz", s.clock_hz},
+                       {"computed_peak_flops", s.computed_peak_flops},
+                       {"date", s.date},
+                       {"rotation_mix", ceiling_json(s.rotation_mix)},
+                       {"fma", ceiling_json(s.fma)},
                        {"bandwidth", ceiling_json(s.bandwidth)}});
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);

@@ -9,7 +9,6 @@
 #include <immintrin.h>  // the AVX2/AVX-512 operations of simd_ops_impl.h
 #endif
 
-
 namespace bs::kernels::BS_SIMD_NS::ceiling {
 
 typedef float vf __attribute__((vector_size(BS_SIMD_BYTES), aligned(BS_SIMD_BYTES)));
@@ -34,7 +33,8 @@ void mix(float* xs, float* ys, std::int64_t steps, float c, float s) {
   vf x[K], y[K];
   const vf vc = vf{} + c, vs = vf{} + s;
 #pragma GCC unroll 16
-  for (int k = 0; k < K; ++k) __builtin_memcpy(&x[k], xs + k * kLanes, sizeof(vf)), __builtin_memcpy(&y[k], ys + k * kLanes, sizeof(vf));
+  for (int k = 0; k < K; ++k)
+    __builtin_memcpy(&x[k], xs + k * kLanes, sizeof(vf)), __builtin_memcpy(&y[k], ys + k * kLanes, sizeof(vf));
   for (std::int64_t n = 0; n < steps; ++n) {
 #pragma GCC unroll 16
     for (int k = 0; k < K; ++k) {
@@ -44,20 +44,36 @@ void mix(float* xs, float* ys, std::int64_t steps, float c, float s) {
     }
   }
 #pragma GCC unroll 16
-  for (int k = 0; k < K; ++k) __builtin_memcpy(xs + k * kLanes, &x[k], sizeof(vf)), __builtin_memcpy(ys + k * kLanes, &y[k], sizeof(vf));
+  for (int k = 0; k < K; ++k)
+    __builtin_memcpy(xs + k * kLanes, &x[k], sizeof(vf)), __builtin_memcpy(ys + k * kLanes, &y[k], sizeof(vf));
 }
 
 // K chains: one of 2, 4, 5, 6, 8, 10, 12 (false otherwise). xs/ys hold K * lanes() floats each.
 bool rotation_mix(int chains, float* xs, float* ys, std::int64_t steps, float c, float s) {
   switch (chains) {
-    case 2: mix<2>(xs, ys, steps, c, s); return true;
-    case 4: mix<4>(xs, ys, steps, c, s); return true;
-    case 5: mix<5>(xs, ys, steps, c, s); return true;
-    case 6: mix<6>(xs, ys, steps, c, s); return true;
-    case 8: mix<8>(xs, ys, steps, c, s); return true;
-    case 10: mix<10>(xs, ys, steps, c, s); return true;
-    case 12: mix<12>(xs, ys, steps, c, s); return true;
-    default: return false;
+    case 2:
+      mix<2>(xs, ys, steps, c, s);
+      return true;
+    case 4:
+      mix<4>(xs, ys, steps, c, s);
+      return true;
+    case 5:
+      mix<5>(xs, ys, steps, c, s);
+      return true;
+    case 6:
+      mix<6>(xs, ys, steps, c, s);
+      return true;
+    case 8:
+      mix<8>(xs, ys, steps, c, s);
+      return true;
+    case 10:
+      mix<10>(xs, ys, steps, c, s);
+      return true;
+    case 12:
+      mix<12>(xs, ys, steps, c, s);
+      return true;
+    default:
+      return false;
   }
 }
 

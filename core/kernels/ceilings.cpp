@@ -18,12 +18,12 @@
 namespace bs::kernels {
 
 // Per-ISA micro-kernels (ceiling_simd_<isa>.cpp).
-#define BS_DECLARE_CEILING(ns)                                                                    \
-  namespace ns::ceiling {                                                                         \
-  int lanes();                                                                                    \
-  int fma_chains();                                                                               \
-  bool rotation_mix(int chains, float* xs, float* ys, std::int64_t steps, float c, float s);      \
-  bool fma(float* acc, std::int64_t steps, float a, float b);                                     \
+#define BS_DECLARE_CEILING(ns)                                                               \
+  namespace ns::ceiling {                                                                    \
+  int lanes();                                                                               \
+  int fma_chains();                                                                          \
+  bool rotation_mix(int chains, float* xs, float* ys, std::int64_t steps, float c, float s); \
+  bool fma(float* acc, std::int64_t steps, float a, float b);                                \
   }
 BS_DECLARE_CEILING(generic)
 #if BENCHSCOPE_X86_SIMD
@@ -45,11 +45,16 @@ struct CeilingFunctions {
 CeilingFunctions functions_for(Isa isa) {
   switch (isa) {
 #if BENCHSCOPE_X86_SIMD
-    case Isa::Avx512: return {avx512::ceiling::lanes, avx512::ceiling::fma_chains, avx512::ceiling::rotation_mix, avx512::ceiling::fma};
-    case Isa::Avx2: return {avx2::ceiling::lanes, avx2::ceiling::fma_chains, avx2::ceiling::rotation_mix, avx2::ceiling::fma};
-    case Isa::Sse4: return {sse4::ceiling::lanes, sse4::ceiling::fma_chains, sse4::ceiling::rotation_mix, sse4::ceiling::fma};
+    case Isa::Avx512:
+      return {avx512::ceiling::lanes, avx512::ceiling::fma_chains, avx512::ceiling::rotation_mix, avx512::ceiling::fma};
+    case Isa::Avx2:
+      return {avx2::ceiling::lanes, avx2::ceiling::fma_chains, avx2::ceiling::rotation_mix, avx2::ceiling::fma};
+    case Isa::Sse4:
+      return {sse4::ceiling::lanes, sse4::ceiling::fma_chains, sse4::ceiling::rotation_mix, sse4::ceiling::fma};
 #endif
-    default: return {generic::ceiling::lanes, generic::ceiling::fma_chains, generic::ceiling::rotation_mix, generic::ceiling::fma};
+    default:
+      return {generic::ceiling::lanes, generic::ceiling::fma_chains, generic::ceiling::rotation_mix,
+              generic::ceiling::fma};
   }
 }
 
@@ -139,7 +144,8 @@ CeilingMeter::CeilingMeter(const SimdTarget& target, int threads, double target_
       f.fma(acc.data(), steps, 0.999f, 0.001f);
       const double t = thread_cpu_seconds() - t0;
       if (t >= 0.02 || steps >= (std::int64_t{1} << 34)) {
-        fma_steps_ = std::max<std::int64_t>(1000, static_cast<std::int64_t>(static_cast<double>(steps) * target_seconds / std::max(t, 1e-9)));
+        fma_steps_ = std::max<std::int64_t>(
+            1000, static_cast<std::int64_t>(static_cast<double>(steps) * target_seconds / std::max(t, 1e-9)));
         break;
       }
     }
@@ -172,7 +178,8 @@ CeilingSample CeilingMeter::run_mix(int chains, std::int64_t steps) {
   for (int t = 0; t < threads_; ++t) {
     const double x = state[t * kThreadStride], y = state[t * kThreadStride + kThreadStride / 2];
     if (!(std::fabs(std::log(x * x + y * y) - per_step * static_cast<double>(steps)) < 0.1))
-      throw std::runtime_error("rotation-mix ceiling: the final state is not that of " + std::to_string(steps) + " steps");
+      throw std::runtime_error("rotation-mix ceiling: the final state is not that of " + std::to_string(steps) +
+                               " steps");
   }
   return sample;
 }
@@ -299,7 +306,8 @@ ResultSet ceiling_result_set(const CeilingSet& c) {
   char note[160];
   std::snprintf(note, sizeof note, "empirical ceilings, %d threads, %.3f GHz measured, computed peak %.4g FLOP/s; ",
                 c.threads, c.clock_hz / 1e9, c.computed_peak_flops);
-  set.provenance.note = note + c.rotation_mix.how + "; " + c.fma.how + (c.bandwidth.measured() ? "; " + c.bandwidth.how : "");
+  set.provenance.note =
+      note + c.rotation_mix.how + "; " + c.fma.how + (c.bandwidth.measured() ? "; " + c.bandwidth.how : "");
   const auto add = [&](const Ceiling& ceil, std::string name, std::string metric) {
     if (!ceil.measured()) return;
     Measurement m;

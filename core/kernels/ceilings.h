@@ -95,7 +95,7 @@ ResultSet ceiling_result_set(const CeilingSet& set);
 // Raw single-thread access for tests: false when the ISA has no such kernel (or `chains` is not offered).
 int ceiling_lanes(Isa isa);
 std::vector<int> ceiling_mix_chain_options(Isa isa);  // chain counts the rotation mix is compiled for
-int ceiling_fma_chains(Isa isa);                       // 0 without FMA
+int ceiling_fma_chains(Isa isa);                      // 0 without FMA
 bool ceiling_rotation_mix(Isa isa, int chains, float* xs, float* ys, std::int64_t steps, float c, float s);
 bool ceiling_fma(Isa isa, float* acc, std::int64_t steps, float a, float b);
 

@@ -4,8 +4,8 @@
 #include <omp.h>
 #include <unistd.h>
 
-#include <ctime>
 #include <cstdint>
+#include <ctime>
 #include <fstream>
 
 namespace bs::kernels {
@@ -83,7 +83,8 @@ void use_simd_target(CpuInfo& info, const SimdTarget& target) {
   if (info.vendor == "AuthenticAMD" && info.simd.isa == Isa::Avx512 &&
       read_key("/proc/cpuinfo", "cpu family", ':') == "25")
     info.fma_ports = 1;
-  info.flops_per_cycle = rotation_flops_per_cycle(info.simd.lanes, info.simd.fma, info.fma_ports, info.separate_add_pipes);
+  info.flops_per_cycle =
+      rotation_flops_per_cycle(info.simd.lanes, info.simd.fma, info.fma_ports, info.separate_add_pipes);
   info.peak_flops = info.threads * info.clock_hz * info.flops_per_cycle;
 }
 

@@ -7,19 +7,19 @@
 namespace bs::kernels {
 
 struct CpuInfo {
-  std::string model;          // /proc/cpuinfo "model name" (or "unknown CPU")
-  int threads = 1;            // OpenMP threads the kernels use
-  double clock_hz = 0;        // sustained clock measured by calibrate_clock_hz()
-  SimdTarget simd;            // the ISA the SIMD backend uses
-  std::string vendor;         // "GenuineIntel", "AuthenticAMD", ...
+  std::string model;    // /proc/cpuinfo "model name" (or "unknown CPU")
+  int threads = 1;      // OpenMP threads the kernels use
+  double clock_hz = 0;  // sustained clock measured by calibrate_clock_hz()
+  SimdTarget simd;      // the ISA the SIMD backend uses
+  std::string vendor;   // "GenuineIntel", "AuthenticAMD", ...
   // Full-width FP ops per cycle: 2 pipes on Intel since Haswell, Zen, Apple and Neoverse cores; AMD Zen 4 splits a
   // 512-bit op over both 256-bit pipes, so AVX-512 there retires one zmm op per cycle (Zen 5 does not).
   int fma_ports = 2;
   // Whether FP adds have pipes of their own (AMD Zen: FADD pipes 2-3 beside the FMUL/FMA pipes 0-1). Intel cores
   // run mul, add and FMA on the same ports. Matters only for code without FMA (the scalar reference, SSE4).
   bool separate_add_pipes = false;
-  double flops_per_cycle = 0; // this kernel's counted flops per cycle per core (SIMD backend)
-  double peak_flops = 0;      // threads * clock * flops_per_cycle
+  double flops_per_cycle = 0;  // this kernel's counted flops per cycle per core (SIMD backend)
+  double peak_flops = 0;       // threads * clock * flops_per_cycle
 };
 
 // Measures the clock with a dependent chain of 64-bit multiplies (3 cycles latency on every x86 core since

@@ -11,14 +11,13 @@
 namespace bs::kernels {
 
 // Per-ISA entry points (rotation_simd_<isa>.cpp).
-#define BS_DECLARE_ISA(ns)                                                                                   \
-  namespace ns {                                                                                             \
-  int lanes();                                                                                               \
-  int chains();                                                                                              \
-  bool advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t steps, float c, float s,      \
-                          bool (*cancelled)(const void*), const void* token);                                \
-  void advance_paper(float* xs, float* ys, std::int64_t workers, int stride, std::int64_t steps, float c,    \
-                     float s);                                                                               \
+#define BS_DECLARE_ISA(ns)                                                                                          \
+  namespace ns {                                                                                                    \
+  int lanes();                                                                                                      \
+  int chains();                                                                                                     \
+  bool advance_throughput(float* xs, float* ys, std::int64_t nvec, std::int64_t steps, float c, float s,            \
+                          bool (*cancelled)(const void*), const void* token);                                       \
+  void advance_paper(float* xs, float* ys, std::int64_t workers, int stride, std::int64_t steps, float c, float s); \
   }
 BS_DECLARE_ISA(generic)
 #if BENCHSCOPE_X86_SIMD
@@ -39,11 +38,15 @@ struct IsaFunctions {
 IsaFunctions functions_for(Isa isa) {
   switch (isa) {
 #if BENCHSCOPE_X86_SIMD
-    case Isa::Avx512: return {avx512::chains, avx512::advance_throughput, avx512::advance_paper};
-    case Isa::Avx2: return {avx2::chains, avx2::advance_throughput, avx2::advance_paper};
-    case Isa::Sse4: return {sse4::chains, sse4::advance_throughput, sse4::advance_paper};
+    case Isa::Avx512:
+      return {avx512::chains, avx512::advance_throughput, avx512::advance_paper};
+    case Isa::Avx2:
+      return {avx2::chains, avx2::advance_throughput, avx2::advance_paper};
+    case Isa::Sse4:
+      return {sse4::chains, sse4::advance_throughput, sse4::advance_paper};
 #endif
-    default: return {generic::chains, generic::advance_throughput, generic::advance_paper};
+    default:
+      return {generic::chains, generic::advance_throughput, generic::advance_paper};
   }
 }
 
@@ -65,7 +68,8 @@ std::vector<SimdTarget> available_simd_targets() {
   std::vector<SimdTarget> out;
 #if BENCHSCOPE_X86_SIMD
   __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma")) out.push_back({Isa::Avx512, "AVX-512", 16, true});
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))
+    out.push_back({Isa::Avx512, "AVX-512", 16, true});
   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) out.push_back({Isa::Avx2, "AVX2+FMA", 8, true});
   if (__builtin_cpu_supports("sse4.1")) out.push_back({Isa::Sse4, "SSE4.1", 4, false});
   out.push_back({Isa::Generic, "generic 128-bit", 4, false});
@@ -81,10 +85,14 @@ SimdTarget best_simd_target() { return available_simd_targets().front(); }
 
 std::string isa_id(Isa isa) {
   switch (isa) {
-    case Isa::Avx512: return "avx512";
-    case Isa::Avx2: return "avx2";
-    case Isa::Sse4: return "sse4";
-    default: return "generic";
+    case Isa::Avx512:
+      return "avx512";
+    case Isa::Avx2:
+      return "avx2";
+    case Isa::Sse4:
+      return "sse4";
+    default:
+      return "generic";
   }
 }
 

@@ -23,8 +23,8 @@ struct SimdTarget {
   int lanes = 4;     // floats per vector
   bool fma = false;
 };
-SimdTarget best_simd_target();                      // the widest this CPU supports
-std::vector<SimdTarget> available_simd_targets();   // best first
+SimdTarget best_simd_target();                     // the widest this CPU supports
+std::vector<SimdTarget> available_simd_targets();  // best first
 // Short ids for forcing the dispatch (`--isa`): "avx512", "avx2", "sse4", "generic".
 std::string isa_id(Isa isa);
 // The target with that id if this CPU supports it; std::invalid_argument naming the ids this CPU has otherwise.
@@ -33,11 +33,11 @@ SimdTarget simd_target_by_id(const std::string& id);
 class SimdRotation {
  public:
   SimdRotation(const SimdTarget& target, Variant variant, const RotationParams& params, std::int64_t workers);
-  void advance(std::int64_t steps);         // all points, `steps` more rotations
+  void advance(std::int64_t steps);  // all points, `steps` more rotations
   // The same, polling `cancel` at least every ~40 ms of work; throws Cancelled (the state is then unusable).
   // Throughput: one parallel region for all steps; paper: one task per worker and chunk of steps.
   void run(std::int64_t steps, const CancelToken& cancel);
-  void outputs(std::span<float> out) const; // one per worker: sum over its D points of (x + y)
+  void outputs(std::span<float> out) const;  // one per worker: sum over its D points of (x + y)
 
  private:
   struct Aligned {

@@ -28,8 +28,8 @@ class StepChunker {
     std::int64_t wanted = next_ * kMaxGrowth;
     if (seconds > 0) {
       const double at_rate = static_cast<double>(steps) * target_ / seconds;
-      wanted = std::min<std::int64_t>(wanted, at_rate >= static_cast<double>(kMaxChunk) ? kMaxChunk
-                                                                                      : static_cast<std::int64_t>(at_rate));
+      wanted = std::min<std::int64_t>(
+          wanted, at_rate >= static_cast<double>(kMaxChunk) ? kMaxChunk : static_cast<std::int64_t>(at_rate));
     }
     next_ = std::clamp<std::int64_t>(wanted, 1, kMaxChunk);
   }

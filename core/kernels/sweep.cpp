@@ -22,7 +22,8 @@ SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpe
     check_problem_size({d, spec.iterations}, workers.front());
     if (spec.variant == Variant::Paper && !backend.paper_dims.empty() &&
         std::find(backend.paper_dims.begin(), backend.paper_dims.end(), d) == backend.paper_dims.end())
-      throw std::invalid_argument(backend.label + ": the paper kernel runs D = 1, 2 or 4 (float, float2, float4), not D = " +
+      throw std::invalid_argument(backend.label +
+                                  ": the paper kernel runs D = 1, 2 or 4 (float, float2, float4), not D = " +
                                   std::to_string(d) + "; use the throughput variant for other D");
   }
   SweepResult result;
@@ -52,8 +53,8 @@ SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpe
           const double seconds = backend.run_point(params, w, spec.variant, outputs, cancel);
           const std::int64_t bad = first_wrong_output(outputs, params);
           if (bad >= 0)
-            throw std::runtime_error(backend.label + ": wrong result at D=" + std::to_string(d) + ", W=" +
-                                     std::to_string(w) + ", worker " + std::to_string(bad) + ": got " +
+            throw std::runtime_error(backend.label + ": wrong result at D=" + std::to_string(d) +
+                                     ", W=" + std::to_string(w) + ", worker " + std::to_string(bad) + ": got " +
                                      std::to_string(outputs[static_cast<std::size_t>(bad)]) + ", expected " +
                                      std::to_string(closed_form_output(params)));
           sample.seconds.push_back(seconds);

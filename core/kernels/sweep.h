@@ -11,8 +11,8 @@ struct SweepSpec {
   std::vector<std::int64_t> workers;  // ascending
   std::vector<int> dims = {4};
   std::int64_t iterations = 40000;
-  int repeats = 1;       // timings per point; views show mean ± SD
-  bool warmup = true;    // one untimed run of the first point per D (thread start-up, page faults)
+  int repeats = 1;     // timings per point; views show mean ± SD
+  bool warmup = true;  // one untimed run of the first point per D (thread start-up, page faults)
   Variant variant = Variant::Throughput;
 };
 
@@ -25,7 +25,6 @@ struct SweepResult {
 // std::runtime_error naming the point when one is wrong), reports progress and, after each completed point,
 // calls `on_point` with the run so far (a live view can redraw). Cancel stops within one chunk (~20 ms).
 SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpec& spec, const CancelToken& cancel,
-                      const ProgressFn& progress = {},
-                      const std::function<void(const FlopsRun&)>& on_point = {});
+                      const ProgressFn& progress = {}, const std::function<void(const FlopsRun&)>& on_point = {});
 
 }  // namespace bs::kernels

@@ -17,7 +17,8 @@ std::int64_t number(std::string_view text, std::string_view part) {
   if (ec == std::errc::result_out_of_range)
     throw std::invalid_argument("'" + std::string(part) + "': number too large");
   if (ec != std::errc() || ptr != text.data() + text.size() || text.empty())
-    throw std::invalid_argument("'" + std::string(part) + "': expected a whole number, got '" + std::string(text) + "'");
+    throw std::invalid_argument("'" + std::string(part) + "': expected a whole number, got '" + std::string(text) +
+                                "'");
   if (v < 1) throw std::invalid_argument("'" + std::string(part) + "': numbers must be at least 1");
   return v;
 }

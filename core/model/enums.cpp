@@ -6,9 +6,12 @@ namespace bs {
 
 std::string_view to_string(DataOrigin origin) {
   switch (origin) {
-    case DataOrigin::Measured: return "measured";
-    case DataOrigin::Reconstructed: return "reconstructed";
-    case DataOrigin::Unknown: break;
+    case DataOrigin::Measured:
+      return "measured";
+    case DataOrigin::Reconstructed:
+      return "reconstructed";
+    case DataOrigin::Unknown:
+      break;
   }
   return "unknown";
 }
@@ -21,10 +24,14 @@ DataOrigin data_origin_from_string(std::string_view text) {
 
 std::string_view to_string(MeasurementKind kind) {
   switch (kind) {
-    case MeasurementKind::ExternalMeter: return "external meter";
-    case MeasurementKind::OnBoardSensor: return "on-board sensor";
-    case MeasurementKind::SoftwareEstimate: return "software estimate";
-    case MeasurementKind::Unknown: break;
+    case MeasurementKind::ExternalMeter:
+      return "external meter";
+    case MeasurementKind::OnBoardSensor:
+      return "on-board sensor";
+    case MeasurementKind::SoftwareEstimate:
+      return "software estimate";
+    case MeasurementKind::Unknown:
+      break;
   }
   return "unknown";
 }
@@ -38,9 +45,12 @@ MeasurementKind measurement_kind_from_string(std::string_view text) {
 
 std::string_view to_string(DeviceKind kind) {
   switch (kind) {
-    case DeviceKind::Cpu: return "cpu";
-    case DeviceKind::Gpu: return "gpu";
-    case DeviceKind::Other: break;
+    case DeviceKind::Cpu:
+      return "cpu";
+    case DeviceKind::Gpu:
+      return "gpu";
+    case DeviceKind::Other:
+      break;
   }
   return "other";
 }

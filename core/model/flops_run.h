@@ -11,7 +11,7 @@
 namespace bs {
 
 enum class DeviceKind { Other, Cpu, Gpu };
-std::string_view to_string(DeviceKind kind);               // "cpu", "gpu", "other"
+std::string_view to_string(DeviceKind kind);                // "cpu", "gpu", "other"
 DeviceKind device_kind_from_string(std::string_view text);  // unknown -> Other
 
 // FLOP/s at one worker count as another tool states it (a Google Benchmark FLOPS counter): mean over n
@@ -39,12 +39,12 @@ struct FlopsRun {
   std::string platform;  // the computer: "NUC", "Jetson TX2", "Desktop (Alienware Area-51)"
   std::string device;    // the compute device: "NUC GPU", "GTX1080Ti", "i7-7800X"
   DeviceKind device_kind = DeviceKind::Other;
-  std::string backend;   // "OpenCL", "CUDA", "CPU SIMD (AVX2)", "CPU scalar", ...
+  std::string backend;  // "OpenCL", "CUDA", "CPU SIMD (AVX2)", "CPU scalar", ...
   std::string kernel = "rotation2d";
-  std::string variant = "paper";  // "paper" (faithful) or a named throughput variant, e.g. "float16x4"
-  std::int64_t iterations = 40000;  // N
-  int dims = 1;                     // D: 2D points rotated per worker (1, 2 or 4 in the paper)
-  std::vector<WorkerSample> samples;  // ascending by workers, unique worker counts
+  std::string variant = "paper";                 // "paper" (faithful) or a named throughput variant, e.g. "float16x4"
+  std::int64_t iterations = 40000;               // N
+  int dims = 1;                                  // D: 2D points rotated per worker (1, 2 or 4 in the paper)
+  std::vector<WorkerSample> samples;             // ascending by workers, unique worker counts
   std::optional<double> reported_peak_flops;     // literature / vendor figure, FLOP/s
   std::optional<double> theoretical_peak_flops;  // this kernel's peak on this device, FLOP/s
   Provenance provenance;
@@ -52,9 +52,9 @@ struct FlopsRun {
 
 // A single named measurement with its repetitions, in SI units (seconds, FLOP/s, B/s, 1/s).
 struct Measurement {
-  std::string name;    // "BM_Rotate/4096", or the clpeak variant "float4"
-  std::string metric;  // "real_time", "cpu_time", a user counter name, "single-precision compute", ...
-  std::string unit;    // "s", "FLOP/s", "B/s", "1/s" or "" for dimensionless
+  std::string name;            // "BM_Rotate/4096", or the clpeak variant "float4"
+  std::string metric;          // "real_time", "cpu_time", a user counter name, "single-precision compute", ...
+  std::string unit;            // "s", "FLOP/s", "B/s", "1/s" or "" for dimensionless
   std::vector<double> values;  // one per repetition
   // Aggregates as the source reported them (Google Benchmark's mean/median/stddev/cv rows), keyed by name, plus
   // ("repetitions", n) when the source states how many repetitions its aggregates summarise.

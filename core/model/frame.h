@@ -16,16 +16,16 @@ namespace bs {
 enum class FrameStorage { Reference, Copy };
 
 struct Frame {
-  std::string label;     // e.g. the file stem
+  std::string label;  // e.g. the file stem
   int width = 0;
   int height = 0;
-  int channels = 1;      // 1: Bayer mosaic or grey; 3: colour, interleaved B, G, R (OpenCV's order)
-  int bit_depth = 8;     // significant bits per sample (1..16); above 8 each sample takes two bytes
-  std::string pattern;   // "BGGR", "RGGB", "GRBG", "GBRG" for a Bayer mosaic; empty for grey or colour
-  bool synthetic = false;        // rendered (benchscope-cli synth-frame), not captured by a camera
-  std::string lens_json;         // lens + view from the sidecar ("lens" object), empty when none was given
-  std::string source_format;     // importer id, e.g. "raw-bayer", "pnm", "png", "tiff"
-  std::string read_options;      // JSON the importer needs to read the file again (raw geometry), "{}" if none
+  int channels = 1;           // 1: Bayer mosaic or grey; 3: colour, interleaved B, G, R (OpenCV's order)
+  int bit_depth = 8;          // significant bits per sample (1..16); above 8 each sample takes two bytes
+  std::string pattern;        // "BGGR", "RGGB", "GRBG", "GBRG" for a Bayer mosaic; empty for grey or colour
+  bool synthetic = false;     // rendered (benchscope-cli synth-frame), not captured by a camera
+  std::string lens_json;      // lens + view from the sidecar ("lens" object), empty when none was given
+  std::string source_format;  // importer id, e.g. "raw-bayer", "pnm", "png", "tiff"
+  std::string read_options;   // JSON the importer needs to read the file again (raw geometry), "{}" if none
   FrameStorage storage = FrameStorage::Reference;
   // Row-major samples; 16-bit samples (bit_depth > 8) in the host's byte order, values in the low bits.
   std::vector<std::uint8_t> pixels;

@@ -27,21 +27,45 @@ bool has_any(const std::string& text, const std::array<std::string_view, N>& wor
 // Tokens that name one number format. The leftmost in a title wins: "Cooperative-matrix fp16xfp16+fp32" has fp16
 // inputs, "Mixed-precision compute fp16xfp16+fp32" says mixed first, "Half-precision compute fp16xfp16+fp16" half.
 constexpr std::array<std::pair<std::string_view, Precision>, 33> kSpecific{{
-    {"mixed", Precision::MixedFP16FP32}, {"bf16", Precision::BF16},    {"tf32", Precision::TF32},
-    {"fp8", Precision::FP8},             {"e4m3", Precision::FP8},     {"e5m2", Precision::FP8},
-    {"mxf4", Precision::FP4},            {"nvf4", Precision::FP4},     {"e2m1", Precision::FP4},
-    {"fp4", Precision::FP4},             {"half", Precision::FP16},    {"fp16", Precision::FP16},
-    {"single", Precision::FP32},         {"fp32", Precision::FP32},    {"sgemm", Precision::FP32},
-    {"double", Precision::FP64},         {"fp64", Precision::FP64},    {"dgemm", Precision::FP64},
-    {"int4", Precision::INT4},           {"int8", Precision::INT8},    {"char", Precision::INT8},
-    {"8bit", Precision::INT8},           {"8-bit", Precision::INT8},   {"dp4a", Precision::INT8},
-    {"int16", Precision::INT16},         {"short", Precision::INT16},  {"16bit", Precision::INT16},
-    {"24bit", Precision::INT24},         {"24-bit", Precision::INT24}, {"mad24", Precision::INT24},
-    {"int64", Precision::INT64},         {"u64", Precision::INT64},    {"int32", Precision::INT32},
+    {"mixed", Precision::MixedFP16FP32},
+    {"bf16", Precision::BF16},
+    {"tf32", Precision::TF32},
+    {"fp8", Precision::FP8},
+    {"e4m3", Precision::FP8},
+    {"e5m2", Precision::FP8},
+    {"mxf4", Precision::FP4},
+    {"nvf4", Precision::FP4},
+    {"e2m1", Precision::FP4},
+    {"fp4", Precision::FP4},
+    {"half", Precision::FP16},
+    {"fp16", Precision::FP16},
+    {"single", Precision::FP32},
+    {"fp32", Precision::FP32},
+    {"sgemm", Precision::FP32},
+    {"double", Precision::FP64},
+    {"fp64", Precision::FP64},
+    {"dgemm", Precision::FP64},
+    {"int4", Precision::INT4},
+    {"int8", Precision::INT8},
+    {"char", Precision::INT8},
+    {"8bit", Precision::INT8},
+    {"8-bit", Precision::INT8},
+    {"dp4a", Precision::INT8},
+    {"int16", Precision::INT16},
+    {"short", Precision::INT16},
+    {"16bit", Precision::INT16},
+    {"24bit", Precision::INT24},
+    {"24-bit", Precision::INT24},
+    {"mad24", Precision::INT24},
+    {"int64", Precision::INT64},
+    {"u64", Precision::INT64},
+    {"int32", Precision::INT32},
 }};
 // Words that imply a default format when nothing more specific is said ("Integer compute", "float4").
 constexpr std::array<std::pair<std::string_view, Precision>, 3> kGeneric{{
-    {"integer", Precision::INT32}, {"imad", Precision::INT32}, {"float", Precision::FP32},
+    {"integer", Precision::INT32},
+    {"imad", Precision::INT32},
+    {"float", Precision::FP32},
 }};
 
 template <std::size_t N>
@@ -80,7 +104,7 @@ MeasureClass classify_measurement(std::string_view metric_text, std::string_view
     if (has(metric, "transfer")) {
       c.kind = MeasureKind::TransferBandwidth;
     } else if (has_any(metric, std::array<std::string_view, 9>{"local", "shared", "l1", "l2", "l3", "cache", "image",
-                                                                 "string", "scan"})) {
+                                                               "string", "scan"})) {
       c.kind = MeasureKind::OnChipBandwidth;
     } else {
       c.kind = MeasureKind::MemoryBandwidth;  // global memory, DRAM, STREAM triad, a benchmark's bytes/s
@@ -92,10 +116,10 @@ MeasureClass classify_measurement(std::string_view metric_text, std::string_view
   const bool says_compute = has(metric, "compute") || has(metric, "throughput") || has(metric, "ops");
   if (unit != "FLOP/s" && !says_compute) return c;
   if (has_any(metric, std::array<std::string_view, 11>{"matrix", "coopmat", "wmma", "mfma", "xmx", "dot-product",
-                                                        "blas", "gemm", "tensor", "simdgroup", "smfmac"})) {
+                                                       "blas", "gemm", "tensor", "simdgroup", "smfmac"})) {
     c.kind = MeasureKind::MatrixCompute;
-  } else if (has_any(metric, std::array<std::string_view, 8>{"divide", "sqrt", "atomic", "crypto", "aes", "sha",
-                                                              "crc", "transcend"})) {
+  } else if (has_any(metric, std::array<std::string_view, 8>{"divide", "sqrt", "atomic", "crypto", "aes", "sha", "crc",
+                                                             "transcend"})) {
     c.kind = MeasureKind::OtherCompute;
   } else {
     c.kind = MeasureKind::VectorCompute;
@@ -106,49 +130,78 @@ MeasureClass classify_measurement(std::string_view metric_text, std::string_view
 
 std::string_view to_string(Precision p) {
   switch (p) {
-    case Precision::Unknown: return "unknown";
-    case Precision::FP64: return "fp64";
-    case Precision::FP32: return "fp32";
-    case Precision::TF32: return "tf32";
-    case Precision::FP16: return "fp16";
-    case Precision::BF16: return "bf16";
-    case Precision::MixedFP16FP32: return "mixed";
-    case Precision::FP8: return "fp8";
-    case Precision::FP4: return "fp4";
-    case Precision::INT64: return "int64";
-    case Precision::INT32: return "int32";
-    case Precision::INT24: return "int24";
-    case Precision::INT16: return "int16";
-    case Precision::INT8: return "int8";
-    case Precision::INT4: return "int4";
+    case Precision::Unknown:
+      return "unknown";
+    case Precision::FP64:
+      return "fp64";
+    case Precision::FP32:
+      return "fp32";
+    case Precision::TF32:
+      return "tf32";
+    case Precision::FP16:
+      return "fp16";
+    case Precision::BF16:
+      return "bf16";
+    case Precision::MixedFP16FP32:
+      return "mixed";
+    case Precision::FP8:
+      return "fp8";
+    case Precision::FP4:
+      return "fp4";
+    case Precision::INT64:
+      return "int64";
+    case Precision::INT32:
+      return "int32";
+    case Precision::INT24:
+      return "int24";
+    case Precision::INT16:
+      return "int16";
+    case Precision::INT8:
+      return "int8";
+    case Precision::INT4:
+      return "int4";
   }
   return "unknown";
 }
 
 std::string_view precision_label(Precision p) {
   switch (p) {
-    case Precision::Unknown: return "unstated";
-    case Precision::FP64: return "FP64 (double)";
-    case Precision::FP32: return "FP32 (single)";
-    case Precision::FP16: return "FP16 (half)";
-    case Precision::MixedFP16FP32: return "FP16 x FP16 + FP32 (mixed)";
-    default: break;
+    case Precision::Unknown:
+      return "unstated";
+    case Precision::FP64:
+      return "FP64 (double)";
+    case Precision::FP32:
+      return "FP32 (single)";
+    case Precision::FP16:
+      return "FP16 (half)";
+    case Precision::MixedFP16FP32:
+      return "FP16 x FP16 + FP32 (mixed)";
+    default:
+      break;
   }
-  static const std::array<std::string_view, 15> kUpper{"", "", "", "TF32", "", "BF16", "", "FP8", "FP4",
-                                                        "INT64", "INT32", "INT24", "INT16", "INT8", "INT4"};
+  static const std::array<std::string_view, 15> kUpper{"",    "",      "",      "TF32",  "",      "BF16", "",    "FP8",
+                                                       "FP4", "INT64", "INT32", "INT24", "INT16", "INT8", "INT4"};
   return kUpper[static_cast<std::size_t>(p)];
 }
 
 std::string_view to_string(MeasureKind k) {
   switch (k) {
-    case MeasureKind::VectorCompute: return "vector-compute";
-    case MeasureKind::MatrixCompute: return "matrix-compute";
-    case MeasureKind::OtherCompute: return "other-compute";
-    case MeasureKind::MemoryBandwidth: return "memory-bandwidth";
-    case MeasureKind::OnChipBandwidth: return "on-chip-bandwidth";
-    case MeasureKind::TransferBandwidth: return "transfer-bandwidth";
-    case MeasureKind::Latency: return "latency";
-    case MeasureKind::Other: return "other";
+    case MeasureKind::VectorCompute:
+      return "vector-compute";
+    case MeasureKind::MatrixCompute:
+      return "matrix-compute";
+    case MeasureKind::OtherCompute:
+      return "other-compute";
+    case MeasureKind::MemoryBandwidth:
+      return "memory-bandwidth";
+    case MeasureKind::OnChipBandwidth:
+      return "on-chip-bandwidth";
+    case MeasureKind::TransferBandwidth:
+      return "transfer-bandwidth";
+    case MeasureKind::Latency:
+      return "latency";
+    case MeasureKind::Other:
+      return "other";
   }
   return "other";
 }

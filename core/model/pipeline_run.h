@@ -30,14 +30,14 @@ struct StageStats {
 };
 
 struct PipelineRun {
-  std::string platform;      // "NUC", "Jetson TX2", or this host's name
-  std::string device;        // what ran it, e.g. "NUC CPU (i7-7567U)", "Jetson GPU (Pascal, 256 cores)"
-  std::string backend;       // "cpu", "opencl", "cuda"
-  std::string demosaic;      // "bilinear", "mhc", "opencv", "fused", ... ; empty when unknown
-  std::string detector;      // "hog", "none", a model file name, "pedestrian detector (paper)"
+  std::string platform;                   // "NUC", "Jetson TX2", or this host's name
+  std::string device;                     // what ran it, e.g. "NUC CPU (i7-7567U)", "Jetson GPU (Pascal, 256 cores)"
+  std::string backend;                    // "cpu", "opencl", "cuda"
+  std::string demosaic;                   // "bilinear", "mhc", "opencv", "fused", ... ; empty when unknown
+  std::string detector;                   // "hog", "none", a model file name, "pedestrian detector (paper)"
   int frame_width = 0, frame_height = 0;  // camera frame; 0 when unknown
   std::vector<StageStats> stages;
-  std::optional<double> throughput_fps;   // frames through the whole pipeline per second of wall time
+  std::optional<double> throughput_fps;  // frames through the whole pipeline per second of wall time
   Provenance provenance;
 
   const StageStats* stage(std::string_view name) const {

@@ -29,9 +29,9 @@ struct TracePhase {
 // A supply current/power log of one platform. Timestamps are seconds from the first sample, non-decreasing;
 // irregular spacing is allowed (energy integrates trapezoidally).
 struct PowerTrace {
-  std::string platform;      // "NUC", "Jetson TX2"
-  std::string label;         // e.g. file stem or "pedestrian detection run"
-  std::string start_time;    // ISO 8601 of the first sample when the log had absolute times, else empty
+  std::string platform;    // "NUC", "Jetson TX2"
+  std::string label;       // e.g. file stem or "pedestrian detection run"
+  std::string start_time;  // ISO 8601 of the first sample when the log had absolute times, else empty
   std::vector<double> time_s;
   std::vector<PowerChannel> channels;
   // Supply voltage used to turn current into power when the log has no voltage channel (paper: 16 V).

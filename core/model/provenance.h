@@ -18,7 +18,7 @@ DataOrigin data_origin_from_string(std::string_view text);  // unknown text -> D
 // sensor on the board itself (INA3221, RAPL, NVML, hwmon), or a software estimate (a model, not a measurement).
 enum class MeasurementKind { Unknown, ExternalMeter, OnBoardSensor, SoftwareEstimate };
 
-std::string_view to_string(MeasurementKind kind);                   // "external meter", "on-board sensor", ...
+std::string_view to_string(MeasurementKind kind);                     // "external meter", "on-board sensor", ...
 MeasurementKind measurement_kind_from_string(std::string_view text);  // unknown text -> Unknown
 
 struct Provenance {

@@ -26,9 +26,9 @@ struct RawSidecar {
   std::optional<std::string> pattern;  // upper case; absent when the sidecar names none
   int bit_depth = 8;
   bool big_endian = false;
-  bool synthetic = false;   // rendered (synth-frame), not captured
-  std::string lens_json;    // the "lens" object (lens + view), serialised; empty when absent
-  std::string truth;        // the ground-truth image synth-frame wrote beside it; empty when absent
+  bool synthetic = false;  // rendered (synth-frame), not captured
+  std::string lens_json;   // the "lens" object (lens + view), serialised; empty when absent
+  std::string truth;       // the ground-truth image synth-frame wrote beside it; empty when absent
 };
 
 // A sidecar that breaks the rules: which member (a JSON pointer such as "/bit_depth") and why.

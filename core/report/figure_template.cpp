@@ -12,7 +12,8 @@ namespace bs {
 
 bool FigureTemplate::selects(const FlopsRun& run) const {
   if (device_kind && run.device_kind != *device_kind) return false;
-  if (!platforms.empty() && std::find(platforms.begin(), platforms.end(), run.platform) == platforms.end()) return false;
+  if (!platforms.empty() && std::find(platforms.begin(), platforms.end(), run.platform) == platforms.end())
+    return false;
   if (!dims.empty() && std::find(dims.begin(), dims.end(), run.dims) == dims.end()) return false;
   return true;
 }
@@ -23,7 +24,8 @@ std::vector<FigureTemplate> parse_figure_templates(const std::string& text, cons
   if (!doc.is_object() || doc.value("format", "") != "benchscope-figures")
     throw std::runtime_error(name + ": /format must be \"benchscope-figures\"");
   if (doc.value("version", 0) != 1) throw std::runtime_error(name + ": /version must be 1");
-  if (!doc.contains("figures") || !doc["figures"].is_array()) throw std::runtime_error(name + ": /figures must be an array");
+  if (!doc.contains("figures") || !doc["figures"].is_array())
+    throw std::runtime_error(name + ": /figures must be an array");
   std::vector<FigureTemplate> out;
   for (std::size_t i = 0; i < doc["figures"].size(); ++i) {
     const auto& f = doc["figures"][i];

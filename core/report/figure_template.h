@@ -11,14 +11,14 @@
 namespace bs {
 
 struct FigureTemplate {
-  std::string id;      // file stem: "fig1a"
-  std::string kind;    // "flops", "current", "triptych"
+  std::string id;    // file stem: "fig1a"
+  std::string kind;  // "flops", "current", "triptych"
   std::string title;
   std::optional<DeviceKind> device_kind;  // flops: only GPUs or CPUs
   std::vector<std::string> platforms;     // empty: every platform
   std::vector<int> dims;                  // flops: empty = every D
   std::string x_label, y_label;
-  double y_scale = 1;                     // values are divided by it (1e12 for TFLOPS)
+  double y_scale = 1;  // values are divided by it (1e12 for TFLOPS)
   bool log_x = false, log_y = false;
   bool selects(const FlopsRun& run) const;
 };

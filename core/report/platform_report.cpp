@@ -61,11 +61,11 @@ void platform_page(std::ostringstream& h, const ExportTable& table, std::size_t 
   h << "</table>\n";
   if (row.gpu) h << "<p>GPU peak: " << html_escape(peak_detail(*row.gpu)) << ".</p>\n";
   if (row.cpu) h << "<p>CPU peak: " << html_escape(peak_detail(*row.cpu)) << ".</p>\n";
-  if (!row.power_measurement.empty())
-    h << "<p>Power measured by: " << html_escape(row.power_measurement) << ".</p>\n";
+  if (!row.power_measurement.empty()) h << "<p>Power measured by: " << html_escape(row.power_measurement) << ".</p>\n";
   flag_list(h, row.all_flags());
   if (!row.sources.empty()) {
-    h << "<h3>Where the numbers come from</h3>\n<table>\n<tr><th>Measure</th><th>Source</th><th>Origin</th><th>How</th></tr>\n";
+    h << "<h3>Where the numbers come "
+         "from</h3>\n<table>\n<tr><th>Measure</th><th>Source</th><th>Origin</th><th>How</th></tr>\n";
     for (const auto& [column, src] : row.sources)
       h << "<tr><td>" << html_escape(column) << "</td><td>" << html_escape(src.source_file) << "</td><td>"
         << html_escape(to_string(src.origin)) << "</td><td>" << html_escape(src.how) << "</td></tr>\n";
@@ -81,11 +81,20 @@ std::string html_escape(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -118,7 +127,8 @@ std::string report_html(const ReportInput& in) {
   for (const PlatformVerdict& v : in.verdicts)
     if (v.recommended)
       h << "<p><b>Recommended" << (in.constraints.empty() ? "" : " under " + html_escape(in.constraints)) << ": "
-        << html_escape(v.platform) << "</b> (the highest peak among the platforms that meet every constraint and have a "
+        << html_escape(v.platform)
+        << "</b> (the highest peak among the platforms that meet every constraint and have a "
         << "power log).</p>\n";
 
   // Detection networks timed with bench dnn: one row per platform, network, input and target, as in the views.
@@ -129,7 +139,8 @@ std::string report_html(const ReportInput& in) {
     h << "</tr>\n";
     for (const auto& cells : inf.rows) {
       h << "<tr>";
-      for (std::size_t c = 0; c < cells.size(); ++c) h << "<td" << (c >= 4 ? " class=\"num\"" : "") << ">" << html_escape(cells[c]) << "</td>";
+      for (std::size_t c = 0; c < cells.size(); ++c)
+        h << "<td" << (c >= 4 ? " class=\"num\"" : "") << ">" << html_escape(cells[c]) << "</td>";
       h << "</tr>\n";
     }
     h << "</table>\n";

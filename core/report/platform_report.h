@@ -20,12 +20,12 @@ struct ReportFigure {
 };
 
 struct ReportInput {
-  std::string workspace;       // shown in the heading
-  std::string generated;       // ISO 8601 date-time
-  std::string tool;            // "benchscope 0.1.0"
+  std::string workspace;  // shown in the heading
+  std::string generated;  // ISO 8601 date-time
+  std::string tool;       // "benchscope 0.1.0"
   std::vector<PlatformRow> rows;
   std::vector<PlatformVerdict> verdicts;  // same order as rows, may be empty
-  std::string constraints;     // human-readable constraints the verdicts used, e.g. "power budget 10 W"
+  std::string constraints;                // human-readable constraints the verdicts used, e.g. "power budget 10 W"
   std::vector<ReportFigure> figures;
   std::vector<DnnRun> inference_runs;  // bench dnn runs: a table after the comparison when there are any
 };

@@ -96,8 +96,8 @@ Selection select_sensors(SensorSet& set, const std::string& spec) {
       const std::string id = spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
       start = comma == std::string::npos ? spec.size() + 1 : comma + 1;
       if (id.empty()) continue;
-      const auto it = std::find_if(set.sensors.begin(), set.sensors.end(),
-                                   [&](const auto& s) { return s && s->info().id == id; });
+      const auto it =
+          std::find_if(set.sensors.begin(), set.sensors.end(), [&](const auto& s) { return s && s->info().id == id; });
       if (it == set.sensors.end())
         throw std::invalid_argument("no sensor '" + id + "' (sensors here: " + ids_of(set) + ")");
       if (!(*it)->info().readable)
@@ -118,7 +118,8 @@ Selection select_sensors(SensorSet& set, const std::string& spec) {
     for (auto& r : set.sensors)
       if (readable(r, SensorKind::Ina3221)) sel.sensors.push_back(std::move(r));
     std::erase(set.sensors, nullptr);
-    sel.note = "INA3221 input rail " + sel.sensors.front()->info().label + " (the board's total; other rails beside it)";
+    sel.note =
+        "INA3221 input rail " + sel.sensors.front()->info().label + " (the board's total; other rails beside it)";
     return sel;
   }
   // 2. RAPL: psys (the whole SoC platform) when there is one, else the package(s); sub-zones beside it.
@@ -126,8 +127,10 @@ Selection select_sensors(SensorSet& set, const std::string& spec) {
   Sensor* psys = nullptr;
   for (auto& s : set.sensors) {
     if (!readable(s, SensorKind::Rapl) || !s->info().board_total) continue;
-    if (s->info().label == "psys") psys = s.get();
-    else packages.push_back(s.get());
+    if (s->info().label == "psys")
+      psys = s.get();
+    else
+      packages.push_back(s.get());
   }
   if (psys || !packages.empty()) {
     if (psys) {
@@ -160,16 +163,19 @@ Selection select_sensors(SensorSet& set, const std::string& spec) {
   std::string why;
   for (const auto& s : set.sensors)
     if (!s->info().readable) why += "\n  " + s->info().id + ": " + s->info().reason;
-  throw std::invalid_argument(set.sensors.empty() ? "no power sensors found"
-                                                  : "no readable power sensor:" + why);
+  throw std::invalid_argument(set.sensors.empty() ? "no power sensors found" : "no readable power sensor:" + why);
 }
 
 std::string_view to_string(SensorKind kind) {
   switch (kind) {
-    case SensorKind::Rapl: return "rapl";
-    case SensorKind::Ina3221: return "ina3221";
-    case SensorKind::Hwmon: return "hwmon";
-    case SensorKind::Nvml: return "nvml";
+    case SensorKind::Rapl:
+      return "rapl";
+    case SensorKind::Ina3221:
+      return "ina3221";
+    case SensorKind::Hwmon:
+      return "hwmon";
+    case SensorKind::Nvml:
+      return "nvml";
   }
   return "unknown";
 }

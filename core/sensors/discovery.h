@@ -13,7 +13,7 @@
 namespace bs::sensors {
 
 struct DiscoveryOptions {
-  std::filesystem::path root = "/";           // --sysfs-root
+  std::filesystem::path root = "/";                // --sysfs-root
   std::string nvml_library = "libnvidia-ml.so.1";  // empty: do not look for NVML
 };
 

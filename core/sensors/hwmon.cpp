@@ -22,8 +22,10 @@ class HwmonSensor final : public Sensor {
     info_.quantity = energy ? SensorQuantity::Energy : SensorQuantity::Power;
     info_.unit = energy ? "uJ" : "uW";
     int err = 0;
-    if (read_sysfs_integer(file_, &err)) info_.readable = true;
-    else info_.reason = describe_error(err);
+    if (read_sysfs_integer(file_, &err))
+      info_.readable = true;
+    else
+      info_.reason = describe_error(err);
   }
   std::optional<double> read() override {
     const auto v = read_sysfs_integer(file_);

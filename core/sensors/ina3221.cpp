@@ -22,8 +22,10 @@ class Ina3221HwmonRail final : public Sensor {
     info_.unit = "mV x mA";
     info_.board_total = is_input_rail(rail);
     int err = 0;
-    if (read_sysfs_integer(volts_, &err) && read_sysfs_integer(amps_, &err)) info_.readable = true;
-    else info_.reason = describe_error(err);
+    if (read_sysfs_integer(volts_, &err) && read_sysfs_integer(amps_, &err))
+      info_.readable = true;
+    else
+      info_.reason = describe_error(err);
   }
   std::optional<double> read() override {
     const auto mv = read_sysfs_integer(volts_);
@@ -51,8 +53,10 @@ class Ina3221xRail final : public Sensor {
     info_.unit = "mW";
     info_.board_total = is_input_rail(rail);
     int err = 0;
-    if (read_sysfs_integer(power_, &err)) info_.readable = true;
-    else info_.reason = describe_error(err);
+    if (read_sysfs_integer(power_, &err))
+      info_.readable = true;
+    else
+      info_.reason = describe_error(err);
   }
   std::optional<double> read() override {
     const auto mw = read_sysfs_integer(power_);
@@ -71,9 +75,7 @@ bool usable_rail(const std::string& label) {
 
 }  // namespace
 
-bool is_input_rail(std::string_view rail) {
-  return rail == "VDD_IN" || rail == "POM_5V_IN" || rail == "5V_IN";
-}
+bool is_input_rail(std::string_view rail) { return rail == "VDD_IN" || rail == "POM_5V_IN" || rail == "5V_IN"; }
 
 std::vector<std::unique_ptr<Sensor>> find_ina3221(const std::filesystem::path& root) {
   std::vector<std::unique_ptr<Sensor>> out;

@@ -29,9 +29,10 @@ RaplSensor::RaplSensor(const std::filesystem::path& root, const std::filesystem:
   if (read_sysfs_integer(energy_file_, &err)) {
     info_.readable = true;
   } else if (err == EACCES || err == EPERM) {
-    info_.reason = "energy_uj is readable by root only (kernels since 2020, CVE-2020-8694): run as root, or "
-                   "`sudo chmod o+r /sys/class/powercap/intel-rapl:*/energy_uj /sys/class/powercap/intel-rapl:*:*/energy_uj` "
-                   "(until reboot; a udev rule makes it permanent)";
+    info_.reason =
+        "energy_uj is readable by root only (kernels since 2020, CVE-2020-8694): run as root, or "
+        "`sudo chmod o+r /sys/class/powercap/intel-rapl:*/energy_uj /sys/class/powercap/intel-rapl:*:*/energy_uj` "
+        "(until reboot; a udev rule makes it permanent)";
   } else {
     info_.reason = "energy_uj: " + describe_error(err);
   }

@@ -24,7 +24,7 @@ class RaplSensor final : public Sensor {
   std::filesystem::path energy_file_;
   long long max_range_uj_ = 0;  // 0: unknown (a counter going down is then a read error, not a wrap)
   long long last_uj_ = -1;
-  double total_uj_ = 0;         // since the first read, wraparounds added back
+  double total_uj_ = 0;  // since the first read, wraparounds added back
 };
 
 // Every RAPL zone under `root`, packages first, sub-zones after their package.

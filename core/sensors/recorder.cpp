@@ -17,8 +17,7 @@ std::vector<double> power_from_energy(const std::vector<double>& time_s, const s
   std::vector<double> watts(joules.size(), nan);
   for (std::size_t i = 1; i < joules.size() && i < time_s.size(); ++i) {
     const double dt = time_s[i] - time_s[i - 1];
-    if (std::isfinite(joules[i]) && std::isfinite(joules[i - 1]) && dt > 0)
-      watts[i] = (joules[i] - joules[i - 1]) / dt;
+    if (std::isfinite(joules[i]) && std::isfinite(joules[i - 1]) && dt > 0) watts[i] = (joules[i] - joules[i - 1]) / dt;
   }
   if (watts.size() >= 2) watts[0] = watts[1];
   return watts;

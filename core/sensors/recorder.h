@@ -25,8 +25,8 @@ class PowerRecorder {
   PowerRecorder(const PowerRecorder&) = delete;
   PowerRecorder& operator=(const PowerRecorder&) = delete;
 
-  void start();                             // first sample now, then one every interval
-  double now_s() const;                     // seconds since start()
+  void start();          // first sample now, then one every interval
+  double now_s() const;  // seconds since start()
   // Phases: begin_phase closes the open one (if any) at now and opens `name`; end_phase closes it.
   void begin_phase(const std::string& name);
   void end_phase();

@@ -14,16 +14,16 @@ namespace {
 // comma-separated comment that happened to name "time" and "power" would pass for a CSV header.
 std::string one_line(std::string s) {
   for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-    else if (c == ',') c = ';';
+    if (c == '\n' || c == '\r')
+      c = ' ';
+    else if (c == ',')
+      c = ';';
   return s;
 }
 
 }  // namespace
 
-std::string recording_column(const std::string& channel) {
-  return one_line(channel) + " power (W)";
-}
+std::string recording_column(const std::string& channel) { return one_line(channel) + " power (W)"; }
 
 void write_recording_csv(std::ostream& out, const PowerTrace& trace) {
   const Provenance& p = trace.provenance;

@@ -17,13 +17,13 @@ std::string_view to_string(SensorKind kind);  // "rapl", "ina3221", "hwmon", "nv
 enum class SensorQuantity { Power, Energy };
 
 struct SensorInfo {
-  std::string id;      // stable and unique on this machine: "rapl:package-0", "ina3221:1-0040:VDD_IN", "nvml:0"
+  std::string id;  // stable and unique on this machine: "rapl:package-0", "ina3221:1-0040:VDD_IN", "nvml:0"
   SensorKind kind = SensorKind::Hwmon;
   std::string label;   // the rail or domain: "package-0", "VDD_IN", "power1", "NVIDIA H100"
   std::string device;  // the chip or driver it belongs to: "intel-rapl:0", "ina3221 1-0040", "hwmon2 (amdgpu)"
   std::string source;  // the file(s) or library it reads, for the user to check by hand
   SensorQuantity quantity = SensorQuantity::Power;
-  std::string unit;    // as read: "uJ", "mW", "uW", "mV x mA", "mW (NVML)"
+  std::string unit;  // as read: "uJ", "mW", "uW", "mV x mA", "mW (NVML)"
   bool readable = false;
   std::string reason;  // when not readable: why, and the fix when there is one
   // The whole board's or package's power (RAPL package/psys, the INA3221 input rail VDD_IN/POM_5V_IN), as

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sensors/sysfs_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace bs::sensors {
 
@@ -87,9 +87,8 @@ std::vector<std::filesystem::path> entries_with_prefix(const std::filesystem::pa
     const std::string name = it->path().filename().string();
     if (name.starts_with(prefix)) out.push_back(it->path());
   }
-  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
-    return natural_less(a.filename().string(), b.filename().string());
-  });
+  std::sort(out.begin(), out.end(),
+            [](const auto& a, const auto& b) { return natural_less(a.filename().string(), b.filename().string()); });
   return out;
 }
 

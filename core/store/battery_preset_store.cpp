@@ -62,12 +62,14 @@ BatterySetup battery_setup_from_json(std::string_view text) {
   BatterySetup s;
   const auto number = [&](const char* key, double fallback) {
     if (!j.contains(key)) return fallback;
-    if (!j[key].is_number()) throw std::invalid_argument(std::string("battery preset: field '") + key + "' is not a number");
+    if (!j[key].is_number())
+      throw std::invalid_argument(std::string("battery preset: field '") + key + "' is not a number");
     return j[key].get<double>();
   };
   const auto text_field = [&](const char* key) {
     if (!j.contains(key)) return std::string();
-    if (!j[key].is_string()) throw std::invalid_argument(std::string("battery preset: field '") + key + "' is not a string");
+    if (!j[key].is_string())
+      throw std::invalid_argument(std::string("battery preset: field '") + key + "' is not a string");
     return j[key].get<std::string>();
   };
   s.pack.name = text_field("name");
@@ -83,9 +85,12 @@ BatterySetup battery_setup_from_json(std::string_view text) {
   s.depth_of_discharge = number("depth_of_discharge", 1.0);
   s.extra_load_w = number("extra_load_w", 0);
   const std::string model = text_field("model");
-  if (model == "lipo") s.model = BatteryModel::Lipo;
-  else if (model.empty() || model == "constant-power") s.model = BatteryModel::ConstantPower;
-  else throw std::invalid_argument("battery preset: field 'model' must be constant-power or lipo");
+  if (model == "lipo")
+    s.model = BatteryModel::Lipo;
+  else if (model.empty() || model == "constant-power")
+    s.model = BatteryModel::ConstantPower;
+  else
+    throw std::invalid_argument("battery preset: field 'model' must be constant-power or lipo");
   s.mission = text_field("mission");
   if (j.contains("ocv")) {
     if (!j["ocv"].is_array()) throw std::invalid_argument("battery preset: field 'ocv' is not an array");

@@ -20,8 +20,8 @@ struct BatterySetup {
   double depth_of_discharge = 1.0;  // usable fraction, (0, 1]
   double extra_load_w = 0;          // parallel load on top of the computer (servos)
   BatteryModel model = BatteryModel::ConstantPower;
-  std::string mission;              // parse_mission() text; empty: the computer's mean power as a constant load
-  bool from_workspace = false;      // set when read back from a workspace
+  std::string mission;          // parse_mission() text; empty: the computer's mean power as a constant load
+  bool from_workspace = false;  // set when read back from a workspace
 };
 
 // The built-in packs as setups with the paper's defaults (full depth of discharge, no extra load, constant power).

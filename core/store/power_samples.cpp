@@ -24,7 +24,10 @@ void write_series(const sqlite::Db& db, std::int64_t trace_id, std::int64_t seri
   for (std::size_t first = 0; first < values.size(); first += kChunkSamples) {
     const std::size_t n = std::min(kChunkSamples, values.size() - first);
     // Bound in place: the vector outlives the step, so SQLite need not copy the chunk first.
-    st.bind(1, trace_id).bind(2, series).bind(3, static_cast<std::int64_t>(first)).bind_doubles_static(4, values.data() + first, n);
+    st.bind(1, trace_id)
+        .bind(2, series)
+        .bind(3, static_cast<std::int64_t>(first))
+        .bind_doubles_static(4, values.data() + first, n);
     st.run();
     progress.advance(n);
   }
@@ -64,9 +67,16 @@ void write_summary(const sqlite::Db& db, std::int64_t trace_id, const std::vecto
   for (std::size_t k = 0; k < channel_ids.size() && k < summary.channels.size(); ++k) {
     const ChannelSummary& c = summary.channels[k];
     const Summary& s = c.stats.summary;
-    const nlohmann::json j = {{"n", s.n},          {"mean", s.mean},     {"sd", s.sd},           {"min", s.min},
-                              {"max", s.max},      {"p5", c.stats.pct.p5}, {"p50", c.stats.pct.p50},
-                              {"p95", c.stats.pct.p95}, {"p99", c.stats.pct.p99}, {"integral", c.integral}};
+    const nlohmann::json j = {{"n", s.n},
+                              {"mean", s.mean},
+                              {"sd", s.sd},
+                              {"min", s.min},
+                              {"max", s.max},
+                              {"p5", c.stats.pct.p5},
+                              {"p50", c.stats.pct.p50},
+                              {"p95", c.stats.pct.p95},
+                              {"p99", c.stats.pct.p99},
+                              {"integral", c.integral}};
     std::vector<double> pairs;
     pairs.reserve(c.overview.t.size() * 2);
     for (std::size_t i = 0; i < c.overview.t.size(); ++i) {

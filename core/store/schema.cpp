@@ -216,23 +216,26 @@ void migrate_5_to_6(const sqlite::Db& db) {
       while (st.step()) {
         channel_ids.push_back(st.int64(0));
         const std::string q = st.text(2);
-        t.channels.push_back({st.text(1), q == "current" ? PowerQuantity::Current
-                                          : q == "voltage" ? PowerQuantity::Voltage : PowerQuantity::Power,
+        t.channels.push_back({st.text(1),
+                              q == "current"   ? PowerQuantity::Current
+                              : q == "voltage" ? PowerQuantity::Voltage
+                                               : PowerQuantity::Power,
                               st.doubles(3)});
       }
     }
     db.exec(("DELETE FROM power_chunks WHERE trace_id = " + std::to_string(id)).c_str());
     write_series(db, id, 0, t.time_s, quiet);
-    for (std::size_t k = 0; k < t.channels.size(); ++k) write_series(db, id, channel_ids[k], t.channels[k].values, quiet);
+    for (std::size_t k = 0; k < t.channels.size(); ++k)
+      write_series(db, id, channel_ids[k], t.channels[k].values, quiet);
     write_summary(db, id, channel_ids, summarize_trace(t));
     sqlite::Statement(db, "UPDATE power_traces SET time_s = x'' WHERE id = ?").bind(1, id).run();
     sqlite::Statement(db, "UPDATE power_channels SET vals = x'' WHERE trace_id = ?").bind(1, id).run();
   }
 }
 
-// Version 6 -> 7: dnn inference runs (`bench dnn`): one row per model x device x input, seconds per forward pass, FLOPs and the
-// energy per inference when power was recorded. Self-contained and idempotent (CREATE ... IF NOT EXISTS) so that
-// it can be renumbered next to other migrations of the same version.
+// Version 6 -> 7: dnn inference runs (`bench dnn`): one row per model x device x input, seconds per forward pass, FLOPs
+// and the energy per inference when power was recorded. Self-contained and idempotent (CREATE ... IF NOT EXISTS) so
+// that it can be renumbered next to other migrations of the same version.
 void migrate_add_dnn_runs(const sqlite::Db& db) {
   db.exec(R"sql(
     CREATE TABLE IF NOT EXISTS dnn_runs(
@@ -263,7 +266,7 @@ void migrate_add_dnn_runs(const sqlite::Db& db) {
 }
 
 using Migration = void (*)(const sqlite::Db&);
-constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4,
+constexpr Migration kMigrations[] = {migrate_0_to_1, migrate_1_to_2, migrate_2_to_3,      migrate_3_to_4,
                                      migrate_4_to_5, migrate_5_to_6, migrate_add_dnn_runs};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");

@@ -61,9 +61,7 @@ Statement& Statement::bind(int index, std::string_view v) {
   return *this;
 }
 
-Statement& Statement::bind(int index, const std::optional<double>& v) {
-  return v ? bind(index, *v) : bind_null(index);
-}
+Statement& Statement::bind(int index, const std::optional<double>& v) { return v ? bind(index, *v) : bind_null(index); }
 
 Statement& Statement::bind_doubles(int index, const std::vector<double>& values) {
   const auto bytes = static_cast<sqlite3_uint64>(values.size() * sizeof(double));

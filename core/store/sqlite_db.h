@@ -43,13 +43,13 @@ class Statement {
   Statement& bind(int index, std::string_view v);
   Statement& bind(int index, const std::optional<double>& v);
   Statement& bind_null(int index);
-  Statement& bind_doubles(int index, const std::vector<double>& values);  // as a BLOB of native doubles
+  Statement& bind_doubles(int index, const std::vector<double>& values);     // as a BLOB of native doubles
   Statement& bind_bytes(int index, const std::vector<std::uint8_t>& bytes);  // as a BLOB
   // n doubles as a BLOB without SQLite's copy: `values` must stay valid until the statement is stepped and reset.
   Statement& bind_doubles_static(int index, const double* values, std::size_t n);
 
-  bool step();        // true while a row is available
-  void run();         // step to completion, then reset for reuse
+  bool step();  // true while a row is available
+  void run();   // step to completion, then reset for reuse
   void reset();
   std::int64_t int64(int column) const;
   double real(int column) const;

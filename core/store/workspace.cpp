@@ -11,7 +11,6 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
-#include <stdexcept>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -65,9 +64,9 @@ void check_sqlite_header(const std::string& path) {
   if (std::filesystem::file_size(path + "-wal", ec) > 0 && !ec) return;
   const std::uint64_t size = std::filesystem::file_size(path, ec);
   if (!ec && size < pages * page_size)
-    throw WorkspaceError(WorkspaceError::Kind::Corrupt,
-                         path + ": workspace file is truncated (" + std::to_string(size) + " bytes, its header says " +
-                             std::to_string(pages * page_size) + ")");
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt, path + ": workspace file is truncated (" +
+                                                            std::to_string(size) + " bytes, its header says " +
+                                                            std::to_string(pages * page_size) + ")");
 }
 
 constexpr int kCancelCheckRows = 1000;
@@ -111,16 +110,16 @@ Workspace::Workspace(const std::string& path) {
     app_id = db.pragma_int("PRAGMA application_id");
     version = db.pragma_int("PRAGMA user_version");
   } catch (const WorkspaceError& e) {
-    throw WorkspaceError(WorkspaceError::Kind::Corrupt, path + ": workspace is damaged and cannot be read (" +
-                                                            std::string(e.what()) + ")");
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt,
+                         path + ": workspace is damaged and cannot be read (" + std::string(e.what()) + ")");
   }
   if (existed && app_id != store::kApplicationId)
     throw WorkspaceError(WorkspaceError::Kind::NotAWorkspace,
                          path + ": is an SQLite database but not a BenchScope workspace");
   if (version > kSchemaVersion)
-    throw WorkspaceError(WorkspaceError::Kind::NewerVersion,
-                         path + ": was written by a newer BenchScope (schema " + std::to_string(version) +
-                             ", this build reads up to " + std::to_string(kSchemaVersion) + ")");
+    throw WorkspaceError(WorkspaceError::Kind::NewerVersion, path + ": was written by a newer BenchScope (schema " +
+                                                                 std::to_string(version) + ", this build reads up to " +
+                                                                 std::to_string(kSchemaVersion) + ")");
   db.exec("PRAGMA foreign_keys = ON");
   db.exec("PRAGMA journal_mode = WAL");
   db.exec("PRAGMA synchronous = NORMAL");
@@ -217,7 +216,8 @@ std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::st
     // A sweep derived from another tool's results has no timings to store; its ResultSet is stored instead.
     for (const WorkerSample& s : run.samples)
       if (s.stated_flops)
-        throw std::invalid_argument("a sweep derived from " + run.kernel + " results is not stored; store its result set");
+        throw std::invalid_argument("a sweep derived from " + run.kernel +
+                                    " results is not stored; store its result set");
     run_st.bind(1, import_id)
         .bind(2, devices.get(run.platform, run.device, run.device_kind))
         .bind(3, std::string_view(run.backend))
@@ -295,7 +295,9 @@ std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::st
     std::vector<std::int64_t> channel_ids;
     for (const PowerChannel& c : t.channels) {
       check();
-      const char* q = c.quantity == PowerQuantity::Current ? "current" : c.quantity == PowerQuantity::Voltage ? "voltage" : "power";
+      const char* q = c.quantity == PowerQuantity::Current   ? "current"
+                      : c.quantity == PowerQuantity::Voltage ? "voltage"
+                                                             : "power";
       channel_st.bind(1, trace_id).bind(2, std::string_view(c.name)).bind(3, std::string_view(q)).run();
       channel_ids.push_back(sqlite3_last_insert_rowid(db.get()));
       store::write_series(db, trace_id, channel_ids.back(), c.values, progress);
@@ -447,14 +449,20 @@ void require_name(const std::string& what, const std::string& name) {
 
 void Workspace::rename_power_trace(std::int64_t trace_id, const std::string& label) {
   require_name("power log", label);
-  Statement(impl_->db, "UPDATE power_traces SET label = ? WHERE id = ?").bind(1, std::string_view(label)).bind(2, trace_id).run();
+  Statement(impl_->db, "UPDATE power_traces SET label = ? WHERE id = ?")
+      .bind(1, std::string_view(label))
+      .bind(2, trace_id)
+      .run();
   if (sqlite3_changes(impl_->db.get()) == 0)
     throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no power log #" + std::to_string(trace_id));
 }
 
 void Workspace::rename_frame(std::int64_t frame_id, const std::string& label) {
   require_name("frame", label);
-  Statement(impl_->db, "UPDATE frames SET label = ? WHERE id = ?").bind(1, std::string_view(label)).bind(2, frame_id).run();
+  Statement(impl_->db, "UPDATE frames SET label = ? WHERE id = ?")
+      .bind(1, std::string_view(label))
+      .bind(2, frame_id)
+      .run();
   if (sqlite3_changes(impl_->db.get()) == 0)
     throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no frame #" + std::to_string(frame_id));
 }
@@ -468,17 +476,18 @@ void Workspace::rename_platform(const std::string& from, const std::string& to) 
                   "b.platform = ? LIMIT 1");
   clash.bind(1, std::string_view(from)).bind(2, std::string_view(to));
   if (clash.step())
-    throw WorkspaceError(WorkspaceError::Kind::Constraint,
-                         "platform '" + to + "' already has a device '" + clash.text(0) + "' like '" + from +
-                             "': renaming would merge their runs");
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, "platform '" + to + "' already has a device '" +
+                                                               clash.text(0) + "' like '" + from +
+                                                               "': renaming would merge their runs");
   int changed = 0;
-  for (const char* sql : {"UPDATE devices SET platform = ? WHERE platform = ?",
-                          "UPDATE power_traces SET platform = ? WHERE platform = ?",
-                          "UPDATE pipeline_runs SET platform = ? WHERE platform = ?"}) {
+  for (const char* sql :
+       {"UPDATE devices SET platform = ? WHERE platform = ?", "UPDATE power_traces SET platform = ? WHERE platform = ?",
+        "UPDATE pipeline_runs SET platform = ? WHERE platform = ?"}) {
     Statement(impl_->db, sql).bind(1, std::string_view(to)).bind(2, std::string_view(from)).run();
     changed += sqlite3_changes(impl_->db.get());
   }
-  if (changed == 0) throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no platform '" + from + "'");
+  if (changed == 0)
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no platform '" + from + "'");
   tx.commit();
 }
 
@@ -495,7 +504,9 @@ void Workspace::set_setting(const std::string& key, const std::string& value) {
 }
 
 void Workspace::remove_setting(const std::string& key) {
-  Statement(impl_->db, "DELETE FROM meta WHERE key = ?").bind(1, std::string_view(std::string(kSettingPrefix) + key)).run();
+  Statement(impl_->db, "DELETE FROM meta WHERE key = ?")
+      .bind(1, std::string_view(std::string(kSettingPrefix) + key))
+      .run();
 }
 
 std::vector<std::pair<std::string, std::string>> Workspace::settings(const std::string& prefix) const {
@@ -515,8 +526,9 @@ std::vector<std::pair<std::string, std::string>> Workspace::settings(const std::
 
 std::vector<ImportRecord> Workspace::imports() const {
   std::vector<ImportRecord> out;
-  Statement st(impl_->db,
-               "SELECT id, path, format, imported_at, content_hash, run_count, result_set_count FROM imports ORDER BY id");
+  Statement st(
+      impl_->db,
+      "SELECT id, path, format, imported_at, content_hash, run_count, result_set_count FROM imports ORDER BY id");
   while (st.step())
     out.push_back({st.int64(0), st.text(1), st.text(2), st.text(3), st.text(4), st.int64(5), st.int64(6)});
   return out;
@@ -526,18 +538,20 @@ std::vector<DeviceRecord> Workspace::devices() const {
   std::vector<DeviceRecord> out;
   Statement st(impl_->db, "SELECT id, platform, device, kind, color_index FROM devices ORDER BY color_index");
   while (st.step())
-    out.push_back({st.int64(0), st.text(1), st.text(2), device_kind_from_string(st.text(3)),
-                   static_cast<int>(st.int64(4))});
+    out.push_back(
+        {st.int64(0), st.text(1), st.text(2), device_kind_from_string(st.text(3)), static_cast<int>(st.int64(4))});
   return out;
 }
 
 void Workspace::set_device_color(const std::string& platform, const std::string& device, int color_index) {
   if (color_index < 0)
-    throw WorkspaceError(WorkspaceError::Kind::Constraint, "colour index must be 0 or more, not " + std::to_string(color_index));
+    throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                         "colour index must be 0 or more, not " + std::to_string(color_index));
   Statement st(impl_->db, "UPDATE devices SET color_index = ? WHERE platform = ? AND device = ?");
   st.bind(1, color_index).bind(2, std::string_view(platform)).bind(3, std::string_view(device)).run();
   if (sqlite3_changes(impl_->db.get()) == 0)
-    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no device '" + device + "' on platform '" + platform + "'");
+    throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                         impl_->path + ": no device '" + device + "' on platform '" + platform + "'");
 }
 
 void Workspace::add_trace_phase(std::int64_t trace_id, const TracePhase& phase) {
@@ -547,7 +561,8 @@ void Workspace::add_trace_phase(std::int64_t trace_id, const TracePhase& phase) 
   Statement probe(impl_->db, "SELECT 1 FROM power_traces WHERE id = ?");
   probe.bind(1, trace_id);
   if (!probe.step())
-    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no power trace with id " + std::to_string(trace_id));
+    throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                         impl_->path + ": no power trace with id " + std::to_string(trace_id));
   Statement st(impl_->db, "INSERT INTO power_phases(trace_id, name, start_s, end_s) VALUES (?,?,?,?)");
   st.bind(1, trace_id).bind(2, std::string_view(phase.name)).bind(3, phase.start_s).bind(4, phase.end_s).run();
 }
@@ -614,8 +629,9 @@ std::vector<StoredResultSet> Workspace::result_sets() const {
     index[s.id] = out.size();
     out.push_back(std::move(s));
   }
-  Statement m(impl_->db,
-              "SELECT result_set_id, name, metric, unit, vals, aggregates FROM measurements ORDER BY result_set_id, id");
+  Statement m(
+      impl_->db,
+      "SELECT result_set_id, name, metric, unit, vals, aggregates FROM measurements ORDER BY result_set_id, id");
   while (m.step()) {
     const auto it = index.find(m.int64(0));
     if (it == index.end()) continue;
@@ -656,14 +672,18 @@ std::vector<StoredPowerTrace> Workspace::power_trace_summaries() const {
     index[s.id] = out.size();
     out.push_back(std::move(s));
   }
-  Statement ch(impl_->db, "SELECT trace_id, name, quantity, summary, overview FROM power_channels ORDER BY trace_id, id");
+  Statement ch(impl_->db,
+               "SELECT trace_id, name, quantity, summary, overview FROM power_channels ORDER BY trace_id, id");
   while (ch.step()) {
     const auto it = index.find(ch.int64(0));
     if (it == index.end()) continue;
     const std::string q = ch.text(2);
     StoredPowerTrace& s = out[it->second];
-    s.trace.channels.push_back(
-        {ch.text(1), q == "current" ? PowerQuantity::Current : q == "voltage" ? PowerQuantity::Voltage : PowerQuantity::Power, {}});
+    s.trace.channels.push_back({ch.text(1),
+                                q == "current"   ? PowerQuantity::Current
+                                : q == "voltage" ? PowerQuantity::Voltage
+                                                 : PowerQuantity::Power,
+                                {}});
     ChannelSummary cs;
     cs.name = s.trace.channels.back().name;
     cs.quantity = s.trace.channels.back().quantity;
@@ -691,8 +711,8 @@ void Workspace::load_power_samples(StoredPowerTrace& t, const CancelToken* cance
   ch.bind(1, t.id);
   while (ch.step()) channel_ids.push_back(ch.int64(0));
   if (channel_ids.size() != t.trace.channels.size())
-    throw WorkspaceError(WorkspaceError::Kind::Corrupt, impl_->path + ": power trace " + std::to_string(t.id) +
-                                                            " changed while it was being read");
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt,
+                         impl_->path + ": power trace " + std::to_string(t.id) + " changed while it was being read");
   const std::size_t n = t.summary.samples;
   store::SampleProgress progress{cancel, "loading samples", 0, n * (1 + channel_ids.size())};
   t.trace.time_s = store::read_series(impl_->db, t.id, 0, n, progress);
@@ -739,7 +759,8 @@ std::vector<std::uint8_t> Workspace::frame_pixels(std::int64_t frame_id) const {
   Statement st(impl_->db, "SELECT width, height, channels, bit_depth, byte_order, pixels FROM frames WHERE id = ?");
   st.bind(1, frame_id);
   if (!st.step())
-    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no frame with id " + std::to_string(frame_id));
+    throw WorkspaceError(WorkspaceError::Kind::Constraint,
+                         impl_->path + ": no frame with id " + std::to_string(frame_id));
   Frame geometry;
   geometry.width = static_cast<int>(st.int64(0));
   geometry.height = static_cast<int>(st.int64(1));
@@ -819,8 +840,10 @@ std::vector<StoredDnnRun> Workspace::dnn_runs() const {
     d.batch = static_cast<int>(st.int64(11));
     d.flops = st.int64(12);
     d.opencv_flops = st.int64(13);
-    d.forward = {"inference", static_cast<std::size_t>(st.int64(14)), st.real(15), st.real(16), st.optional_real(17),
-                 st.optional_real(18), st.optional_real(19), st.optional_real(20)};
+    d.forward = {"inference",          static_cast<std::size_t>(st.int64(14)),
+                 st.real(15),          st.real(16),
+                 st.optional_real(17), st.optional_real(18),
+                 st.optional_real(19), st.optional_real(20)};
     d.device_peak_flops = st.optional_real(21);
     d.energy_per_inference_j = st.optional_real(22);
     d.mean_power_w = st.optional_real(23);

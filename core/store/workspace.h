@@ -25,10 +25,10 @@ class WorkspaceError : public std::runtime_error {
 
 struct ImportRecord {
   std::int64_t id = 0;
-  std::string path;         // as given at import time
-  std::string format;       // importer id
-  std::string imported_at;  // ISO 8601 UTC
-  std::string content_hash; // hex digest of the file bytes; the same file is not imported twice
+  std::string path;          // as given at import time
+  std::string format;        // importer id
+  std::string imported_at;   // ISO 8601 UTC
+  std::string content_hash;  // hex digest of the file bytes; the same file is not imported twice
   std::int64_t run_count = 0;
   std::int64_t result_set_count = 0;
 };
@@ -62,8 +62,8 @@ struct StoredResultSet {
 struct StoredPowerTrace {
   std::int64_t id = 0;
   std::int64_t import_id = 0;
-  PowerTrace trace;      // from power_trace_summaries(): everything but time_s and the channels' values
-  TraceSummary summary;  // cached at import: sample count, duration, whole-log statistics, overview per channel
+  PowerTrace trace;            // from power_trace_summaries(): everything but time_s and the channels' values
+  TraceSummary summary;        // cached at import: sample count, duration, whole-log statistics, overview per channel
   bool samples_loaded = true;  // false from power_trace_summaries() until load_power_samples()
 };
 

@@ -9,10 +9,10 @@ namespace bs {
 
 struct ExportTable {
   std::string caption;
-  std::string label;                  // LaTeX \label, e.g. "tab:platforms"
-  std::vector<std::string> header;    // may contain units, e.g. "Mean power (W)"
+  std::string label;                // LaTeX \label, e.g. "tab:platforms"
+  std::vector<std::string> header;  // may contain units, e.g. "Mean power (W)"
   std::vector<std::vector<std::string>> rows;
-  std::string align;                  // LaTeX column spec, e.g. "lrrr"; empty: first column l, others r
+  std::string align;  // LaTeX column spec, e.g. "lrrr"; empty: first column l, others r
   // Footnotes under the table ("[1] above_spec_peak: ..."): LaTeX prints them below the tabular in \footnotesize;
   // CSV after one empty line, one note per line in the first column.
   std::vector<std::string> notes{};

@@ -21,9 +21,12 @@ constexpr int kCells[4][4] = {{0, 1, 1, 2}, {2, 1, 1, 0}, {1, 2, 0, 1}, {1, 0, 2
 // OpenCV names its Bayer codes after the pixels in the second row, second and third columns ("BayerRG" = R, G
 // there), so a BGGR sensor (row 1: G R G R) is COLOR_BayerRG2BGR; the test checks this against ground truth.
 int opencv_code(BayerPattern p, DemosaicMethod m) {
-  static const int bilinear[4] = {cv::COLOR_BayerRG2BGR, cv::COLOR_BayerBG2BGR, cv::COLOR_BayerGB2BGR, cv::COLOR_BayerGR2BGR};
-  static const int ea[4] = {cv::COLOR_BayerRG2BGR_EA, cv::COLOR_BayerBG2BGR_EA, cv::COLOR_BayerGB2BGR_EA, cv::COLOR_BayerGR2BGR_EA};
-  static const int vng[4] = {cv::COLOR_BayerRG2BGR_VNG, cv::COLOR_BayerBG2BGR_VNG, cv::COLOR_BayerGB2BGR_VNG, cv::COLOR_BayerGR2BGR_VNG};
+  static const int bilinear[4] = {cv::COLOR_BayerRG2BGR, cv::COLOR_BayerBG2BGR, cv::COLOR_BayerGB2BGR,
+                                  cv::COLOR_BayerGR2BGR};
+  static const int ea[4] = {cv::COLOR_BayerRG2BGR_EA, cv::COLOR_BayerBG2BGR_EA, cv::COLOR_BayerGB2BGR_EA,
+                            cv::COLOR_BayerGR2BGR_EA};
+  static const int vng[4] = {cv::COLOR_BayerRG2BGR_VNG, cv::COLOR_BayerBG2BGR_VNG, cv::COLOR_BayerGB2BGR_VNG,
+                             cv::COLOR_BayerGR2BGR_VNG};
   const int i = static_cast<int>(p);
   return m == DemosaicMethod::OpenCvEdgeAware ? ea[i] : m == DemosaicMethod::OpenCvVng ? vng[i] : bilinear[i];
 }
@@ -56,13 +59,16 @@ DemosaicMethod demosaic_method_from_string(std::string_view s) {
 int bayer_channel(BayerPattern p, int row, int col) { return kCells[static_cast<int>(p)][(row & 1) * 2 + (col & 1)]; }
 
 cv::Mat mosaic(const cv::Mat& bgr, BayerPattern p) {
-  if (bgr.type() != CV_8UC3 && bgr.type() != CV_16UC3) throw std::invalid_argument("mosaic needs an 8- or 16-bit BGR image");
+  if (bgr.type() != CV_8UC3 && bgr.type() != CV_16UC3)
+    throw std::invalid_argument("mosaic needs an 8- or 16-bit BGR image");
   cv::Mat out(bgr.size(), bgr.depth() == CV_8U ? CV_8UC1 : CV_16UC1);
   for (int r = 0; r < bgr.rows; ++r)
     for (int c = 0; c < bgr.cols; ++c) {
       const int ch = bayer_channel(p, r, c);
-      if (bgr.depth() == CV_8U) out.at<std::uint8_t>(r, c) = bgr.at<cv::Vec3b>(r, c)[ch];
-      else out.at<std::uint16_t>(r, c) = bgr.at<cv::Vec3w>(r, c)[ch];
+      if (bgr.depth() == CV_8U)
+        out.at<std::uint8_t>(r, c) = bgr.at<cv::Vec3b>(r, c)[ch];
+      else
+        out.at<std::uint16_t>(r, c) = bgr.at<cv::Vec3w>(r, c)[ch];
     }
   return out;
 }
@@ -70,7 +76,8 @@ cv::Mat mosaic(const cv::Mat& bgr, BayerPattern p) {
 void demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m, cv::Mat& out) {
   detail::check_demosaic_input(raw);
   if (m == DemosaicMethod::OpenCvBilinear || m == DemosaicMethod::OpenCvEdgeAware || m == DemosaicMethod::OpenCvVng) {
-    if (m == DemosaicMethod::OpenCvVng && raw.depth() != CV_8U) throw std::invalid_argument("OpenCV's VNG is 8-bit only");
+    if (m == DemosaicMethod::OpenCvVng && raw.depth() != CV_8U)
+      throw std::invalid_argument("OpenCV's VNG is 8-bit only");
     cv::cvtColor(raw, out, opencv_code(p, m));
     return;
   }
@@ -85,7 +92,8 @@ cv::Mat demosaic(const cv::Mat& raw, BayerPattern p, DemosaicMethod m) {
 }
 
 double psnr(const cv::Mat& a, const cv::Mat& b, int border) {
-  if (a.size() != b.size() || a.type() != b.type()) throw std::invalid_argument("psnr needs images of equal size and type");
+  if (a.size() != b.size() || a.type() != b.type())
+    throw std::invalid_argument("psnr needs images of equal size and type");
   const cv::Rect inner(border, border, a.cols - 2 * border, a.rows - 2 * border);
   cv::Mat da, db;
   a(inner).convertTo(da, CV_64F);

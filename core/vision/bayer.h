@@ -22,7 +22,8 @@ enum class DemosaicMethod {
   OpenCvVng,        // cv::cvtColor COLOR_Bayer*2BGR_VNG (8-bit only)
 };
 std::string_view to_string(DemosaicMethod m);
-DemosaicMethod demosaic_method_from_string(std::string_view s);  // "bilinear", "mhc", "opencv", "opencv-ea", "opencv-vng"
+DemosaicMethod demosaic_method_from_string(
+    std::string_view s);  // "bilinear", "mhc", "opencv", "opencv-ea", "opencv-vng"
 
 // Which colour (0 = B, 1 = G, 2 = R) the sensor measures at (row, col).
 int bayer_channel(BayerPattern p, int row, int col);

@@ -77,17 +77,20 @@ HWY_INLINE void bilinear_vector(D d, const T* const row[5], int c, M green, int 
   const T* const down = row[3] + c;
   const V v = hn::LoadU(d, r0), w = hn::LoadU(d, r0 - 1), e = hn::LoadU(d, r0 + 1);
   const V n = hn::LoadU(d, up), s = hn::LoadU(d, down);
-  const V nw = hn::LoadU(d, up - 1), ne = hn::LoadU(d, up + 1), sw = hn::LoadU(d, down - 1), se = hn::LoadU(d, down + 1);
-  const V we = hn::AverageRound(w, e), ns = hn::AverageRound(n, s);    // at green sites: x and 2 - x
-  const V cross = mean4_rounded(d, we, ns, w, e, n, s);                 // at x sites: green
+  const V nw = hn::LoadU(d, up - 1), ne = hn::LoadU(d, up + 1), sw = hn::LoadU(d, down - 1),
+          se = hn::LoadU(d, down + 1);
+  const V we = hn::AverageRound(w, e), ns = hn::AverageRound(n, s);  // at green sites: x and 2 - x
+  const V cross = mean4_rounded(d, we, ns, w, e, n, s);              // at x sites: green
   const V top = hn::AverageRound(nw, ne), bottom = hn::AverageRound(sw, se);
-  const V diagonal = mean4_rounded(d, top, bottom, nw, ne, sw, se);     // at x sites: 2 - x
+  const V diagonal = mean4_rounded(d, top, bottom, nw, ne, sw, se);  // at x sites: 2 - x
   const V ch_g = hn::IfThenElse(green, v, cross);
   const V ch_x = hn::IfThenElse(green, we, v);
   const V ch_y = hn::IfThenElse(green, ns, diagonal);
   T* const out = dst + 3 * c;
-  if (x == 0) hn::StoreInterleaved3(ch_x, ch_g, ch_y, d, out);
-  else hn::StoreInterleaved3(ch_y, ch_g, ch_x, d, out);
+  if (x == 0)
+    hn::StoreInterleaved3(ch_x, ch_g, ch_y, d, out);
+  else
+    hn::StoreInterleaved3(ch_y, ch_g, ch_x, d, out);
 }
 
 static_assert(std::endian::native == std::endian::little, "split_load and merge assume little-endian lanes");
@@ -122,7 +125,8 @@ struct Taps {
 template <class DW, class V>
 HWY_INLINE void mhc_green(DW dw, const Taps<V>& t, V& x, V& y) {
   // 10 v - 2 D + 8 shared; x: + 8 (W + E) - 2 (W2 + E2) + (N2 + S2); y: the same turned by 90 degrees.
-  const V base = hn::Sub(hn::Add(hn::Add(hn::ShiftLeft<3>(t.v), hn::ShiftLeft<1>(t.v)), hn::Set(dw, 8)), hn::ShiftLeft<1>(t.d));
+  const V base =
+      hn::Sub(hn::Add(hn::Add(hn::ShiftLeft<3>(t.v), hn::ShiftLeft<1>(t.v)), hn::Set(dw, 8)), hn::ShiftLeft<1>(t.d));
   x = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(t.we)), hn::ShiftLeft<1>(t.w2)), t.n2));
   y = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(t.ns)), hn::ShiftLeft<1>(t.n2)), t.w2));
 }
@@ -134,8 +138,9 @@ HWY_INLINE void mhc_colour(DW dw, const Taps<V>& t, V& g, V& y) {
   // (4 v + 2 (N + S + W + E) - (N2 + S2) - (W2 + E2) + 4) >> 3
   g = hn::ShiftRight<3>(hn::Sub(hn::Add(hn::Add(v4, hn::ShiftLeft<1>(hn::Add(t.we, t.ns))), hn::Set(dw, 4)), nw2));
   // (12 v + 4 D - 3 (N2 + S2 + W2 + E2) + 8) >> 4
-  y = hn::ShiftRight<4>(hn::Sub(hn::Add(hn::Add(hn::Add(hn::ShiftLeft<1>(v4), v4), hn::ShiftLeft<2>(t.d)), hn::Set(dw, 8)),
-                                hn::Add(nw2, hn::ShiftLeft<1>(nw2))));
+  y = hn::ShiftRight<4>(
+      hn::Sub(hn::Add(hn::Add(hn::Add(hn::ShiftLeft<1>(v4), v4), hn::ShiftLeft<2>(t.d)), hn::Set(dw, 8)),
+              hn::Add(nw2, hn::ShiftLeft<1>(nw2))));
 }
 
 // Two results of one channel, first-kind and second-kind lanes, clamped to [0, max] as the scalar definition
@@ -157,10 +162,13 @@ HWY_INLINE void mhc_vector(DW dw, const T* const row[5], int c, bool first_green
   using V = hn::Vec<DW>;
   const hn::Repartition<T, hn::RebindToUnsigned<DW>> dt;
   // Suffixes: 0 = the pair at columns (c + 2k, c + 2k + 1), m = the pair before it, p = the one after.
-  const SplitRow<DW> mid_m = split_load(dw, row[2] + c - 2), mid0 = split_load(dw, row[2] + c), mid_p = split_load(dw, row[2] + c + 2);
+  const SplitRow<DW> mid_m = split_load(dw, row[2] + c - 2), mid0 = split_load(dw, row[2] + c),
+                     mid_p = split_load(dw, row[2] + c + 2);
   const SplitRow<DW> up0 = split_load(dw, row[1] + c), down0 = split_load(dw, row[3] + c);
-  const V up_m = split_load(dw, row[1] + c - 1).first, down_m = split_load(dw, row[3] + c - 1).first;    // column c + 2k - 1
-  const V up_p = split_load(dw, row[1] + c + 1).second, down_p = split_load(dw, row[3] + c + 1).second;  // column c + 2k + 2
+  const V up_m = split_load(dw, row[1] + c - 1).first,
+          down_m = split_load(dw, row[3] + c - 1).first;  // column c + 2k - 1
+  const V up_p = split_load(dw, row[1] + c + 1).second,
+          down_p = split_load(dw, row[3] + c + 1).second;  // column c + 2k + 2
   const SplitRow<DW> up2 = split_load(dw, row[0] + c), down2 = split_load(dw, row[4] + c);
   // Column c + 2k: west is the second lane of the pair before, east the second of this pair.
   const Taps<V> first{mid0.first,
@@ -188,8 +196,10 @@ HWY_INLINE void mhc_vector(DW dw, const T* const row[5], int c, bool first_green
   const auto ch_x = in_order(green_x, colour.v);
   const auto ch_y = in_order(green_y, colour_y);
   T* const out = dst + 3 * c;
-  if (x == 0) hn::StoreInterleaved3(ch_x, ch_g, ch_y, dt, out);
-  else hn::StoreInterleaved3(ch_y, ch_g, ch_x, dt, out);
+  if (x == 0)
+    hn::StoreInterleaved3(ch_x, ch_g, ch_y, dt, out);
+  else
+    hn::StoreInterleaved3(ch_y, ch_g, ch_x, dt, out);
 }
 
 // The lanes on green sites of a vector whose first column is a green site (first_green) or not.
@@ -217,7 +227,8 @@ void demosaic_rows_with(const DemosaicJob& job, int r_begin, int r_end, int lane
     for (int k = 0; k < 5; ++k) row[k] = raw.ptr<T>(reflect(r - 2 + k, rows));
     T* const dst = job.out->ptr<T>(r);
     const int here0 = bayer_channel(p, r, 0), here1 = bayer_channel(p, r, 1);
-    for (int c = 0; c < 2; ++c) demosaic_edge_pixel<T>(row, c, cols, c ? here1 : here0, c ? here0 : here1, kMhc, maxv, dst);
+    for (int c = 0; c < 2; ++c)
+      demosaic_edge_pixel<T>(row, c, cols, c ? here1 : here0, c ? here0 : here1, kMhc, maxv, dst);
     const bool green_even = here0 == 1;
     const int x = green_even ? here1 : here0;
     int c = 2;
@@ -225,7 +236,8 @@ void demosaic_rows_with(const DemosaicJob& job, int r_begin, int r_end, int lane
     if (vectors && c < cols - 2) {
       vector_fn(row, last_start, last_start % 2 == 0 ? green_even : !green_even, x, dst);
     } else {
-      for (; c < cols - 2; ++c) demosaic_inner_pixel<T>(row, c, c % 2 ? here1 : here0, c % 2 ? here0 : here1, kMhc, maxv, dst);
+      for (; c < cols - 2; ++c)
+        demosaic_inner_pixel<T>(row, c, c % 2 ? here1 : here0, c % 2 ? here0 : here1, kMhc, maxv, dst);
     }
     for (c = cols - 2; c < cols; ++c)
       demosaic_edge_pixel<T>(row, c, cols, c % 2 ? here1 : here0, c % 2 ? here0 : here1, kMhc, maxv, dst);
@@ -249,21 +261,24 @@ void demosaic_rows(const DemosaicJob& job, int r_begin, int r_end) {
     using W = std::conditional_t<sizeof(T) == 1, std::int16_t, std::int32_t>;
     const hn::ScalableTag<W> dw;
     demosaic_rows_with<T, true>(job, r_begin, r_end, 2 * static_cast<int>(hn::Lanes(dw)),
-                                [dw](const T* const row[5], int c, bool first_green, int x, T* dst) HWY_ATTR {
-                                  mhc_vector(dw, row, c, first_green, x, dst);
-                                });
+                                [dw](const T* const row[5], int c, bool first_green, int x, T* dst)
+                                    HWY_ATTR { mhc_vector(dw, row, c, first_green, x, dst); });
 #endif
   }
 }
 
 void demosaic_rows8(const DemosaicJob& job, int r_begin, int r_end) {
-  if (job.mhc) demosaic_rows<std::uint8_t, true>(job, r_begin, r_end);
-  else demosaic_rows<std::uint8_t, false>(job, r_begin, r_end);
+  if (job.mhc)
+    demosaic_rows<std::uint8_t, true>(job, r_begin, r_end);
+  else
+    demosaic_rows<std::uint8_t, false>(job, r_begin, r_end);
 }
 
 void demosaic_rows16(const DemosaicJob& job, int r_begin, int r_end) {
-  if (job.mhc) demosaic_rows<std::uint16_t, true>(job, r_begin, r_end);
-  else demosaic_rows<std::uint16_t, false>(job, r_begin, r_end);
+  if (job.mhc)
+    demosaic_rows<std::uint16_t, true>(job, r_begin, r_end);
+  else
+    demosaic_rows<std::uint16_t, false>(job, r_begin, r_end);
 }
 
 const char* target_name() { return hwy::TargetName(HWY_TARGET); }
@@ -285,10 +300,15 @@ void demosaic_simd(const cv::Mat& raw, BayerPattern p, bool mhc, cv::Mat& out) {
   // Stripes of rows on OpenCV's pool, as cvtColor's own demosaic (and the fused path: fused.cpp says why not
   // OpenMP). ~64K pixels per stripe, as cvtColor uses, keeps the pool's overhead small against the work.
   const double stripes = std::max(1.0, static_cast<double>(raw.total()) / (1 << 16));
-  cv::parallel_for_(cv::Range(0, raw.rows), [&](const cv::Range& range) {
-    if (eight) HWY_DYNAMIC_DISPATCH(detail::demosaic_rows8)(job, range.start, range.end);
-    else HWY_DYNAMIC_DISPATCH(detail::demosaic_rows16)(job, range.start, range.end);
-  }, stripes);
+  cv::parallel_for_(
+      cv::Range(0, raw.rows),
+      [&](const cv::Range& range) {
+        if (eight)
+          HWY_DYNAMIC_DISPATCH(detail::demosaic_rows8)(job, range.start, range.end);
+        else
+          HWY_DYNAMIC_DISPATCH(detail::demosaic_rows16)(job, range.start, range.end);
+      },
+      stripes);
 }
 
 const char* demosaic_simd_target() { return HWY_DYNAMIC_DISPATCH(detail::target_name)(); }
@@ -304,7 +324,8 @@ void demosaic_simd_pin_target(const std::string& name) {
   if (name.empty()) return;
   for (const std::int64_t t : hwy::SupportedAndGeneratedTargets())
     if (name == hwy::TargetName(t)) return hwy::SetSupportedTargetsForTest(t);
-  throw std::invalid_argument("demosaic_simd_pin_target: '" + name + "' is not an instruction set this build runs here");
+  throw std::invalid_argument("demosaic_simd_pin_target: '" + name +
+                              "' is not an instruction set this build runs here");
 }
 
 }  // namespace bs::vision

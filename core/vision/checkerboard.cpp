@@ -21,8 +21,7 @@ void Checkerboard::validate() const {
   if (cols < 3 || rows < 3 || cols > 100 || rows > 100)
     throw std::invalid_argument("a checkerboard needs 3 to 100 squares per side, got " + std::to_string(cols) + "x" +
                                 std::to_string(rows));
-  if (!(square_mm > 0) || square_mm > 10000)
-    throw std::invalid_argument("the square size must be in (0, 10000] mm");
+  if (!(square_mm > 0) || square_mm > 10000) throw std::invalid_argument("the square size must be in (0, 10000] mm");
 }
 
 Checkerboard parse_board(std::string_view text, double square_mm) {

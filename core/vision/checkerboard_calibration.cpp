@@ -30,8 +30,10 @@ std::string fmt(const char* f, double v) {
 // 8-bit grey for the corner finder: 16-bit images are stretched by their maximum (any bit depth in the low bits).
 cv::Mat grey8(const cv::Mat& image) {
   cv::Mat grey = image;
-  if (image.channels() == 3) cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  else if (image.channels() == 4) cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
+  if (image.channels() == 3)
+    cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  else if (image.channels() == 4)
+    cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
   if (grey.depth() == CV_8U) return grey;
   double max = 0;
   cv::minMaxLoc(grey, nullptr, &max);
@@ -111,8 +113,8 @@ class Calibrator {
             const double err = errors[static_cast<std::size_t>(idx)], med = median(errors);
             if (!outlier(err, med)) {
               note(results_[static_cast<std::size_t>(views[static_cast<std::size_t>(idx)])].name +
-                               ": CALIB_CHECK_COND flagged it, but without the check it reprojects at " +
-                               fmt("%.3f", err) + " px (median view " + fmt("%.3f", med) + " px): kept");
+                   ": CALIB_CHECK_COND flagged it, but without the check it reprojects at " + fmt("%.3f", err) +
+                   " px (median view " + fmt("%.3f", med) + " px): kept");
               return *unchecked;
             }
           }
@@ -125,8 +127,7 @@ class Calibrator {
         // A failure that names no view (e.g. InitExtrinsics' assertion): find the view without which it succeeds.
         const int culprit = leave_one_out(views, flags, K0, D0);
         if (culprit < 0)
-          throw std::runtime_error("cv::fisheye::calibrate failed with every view left out in turn: " +
-                                   short_error(e));
+          throw std::runtime_error("cv::fisheye::calibrate failed with every view left out in turn: " + short_error(e));
         reject(views[static_cast<std::size_t>(culprit)],
                "cv::fisheye::calibrate fails with this view and succeeds without it (" + short_error(e) + ")");
         views.erase(views.begin() + culprit);
@@ -140,7 +141,8 @@ class Calibrator {
     r.rejected = reason;
   }
 
-  std::optional<Fit> try_run(const std::vector<int>& views, int flags, const cv::Matx33d& K0, const cv::Vec4d& D0) const {
+  std::optional<Fit> try_run(const std::vector<int>& views, int flags, const cv::Matx33d& K0,
+                             const cv::Vec4d& D0) const {
     try {
       return run(views, flags, K0, D0);
     } catch (const cv::Exception&) {
@@ -155,8 +157,8 @@ class Calibrator {
 
   void require_views(const std::vector<int>& views) const {
     if (views.size() >= 3) return;
-    std::string msg = "checkerboard calibration needs at least 3 usable views, " + std::to_string(views.size()) +
-                      " left:";
+    std::string msg =
+        "checkerboard calibration needs at least 3 usable views, " + std::to_string(views.size()) + " left:";
     for (const auto& r : results_) msg += "\n  " + r.name + ": " + (r.rejected.empty() ? "used" : r.rejected);
     throw std::runtime_error(msg);
   }
@@ -263,8 +265,8 @@ std::optional<std::vector<cv::Point2f>> find_board_corners(const cv::Mat& image,
   // and the exhaustive search are only the second try, for dim or low-contrast views.
   bool found = cv::findChessboardCornersSB(grey, inner, corners, cv::CALIB_CB_ACCURACY);
   if (!found)
-    found = cv::findChessboardCornersSB(
-        grey, inner, corners, cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY);
+    found = cv::findChessboardCornersSB(grey, inner, corners,
+                                        cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY);
   if (!found || static_cast<int>(corners.size()) != inner.area()) {
     if (reason)
       *reason = "no checkerboard of " + std::to_string(board.cols) + "x" + std::to_string(board.rows) + " squares (" +
@@ -298,8 +300,8 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
     r.name = in.name.empty() ? in.path : in.name;
     std::error_code ec;
     const bool missing = in.image.empty() && !std::filesystem::is_regular_file(in.path, ec);
-    const cv::Mat image = in.image.empty() && !missing ? cv::imread(in.path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE)
-                                                       : in.image;
+    const cv::Mat image =
+        in.image.empty() && !missing ? cv::imread(in.path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE) : in.image;
     if (image.empty()) {
       r.rejected = missing ? "no such file" : "cannot read the image";
     } else {
@@ -326,7 +328,8 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
     auto& r = result.images[static_cast<std::size_t>(i)];
     const cv::Size s = sizes[static_cast<std::size_t>(i)];
     if (s.empty()) continue;
-    if (size.empty()) size = s;
+    if (size.empty())
+      size = s;
     else if (s != size && r.used) {
       r.used = false;
       r.rejected = std::to_string(s.width) + "x" + std::to_string(s.height) + " px, but the first image is " +
@@ -356,8 +359,8 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
   if (progress) progress(0.88, "cv::fisheye::calibrate");
   int flags = cv::fisheye::CALIB_RECOMPUTE_EXTRINSIC | cv::fisheye::CALIB_FIX_SKEW | cv::fisheye::CALIB_CHECK_COND;
   if (model == CalibrationModel::Equidistant)
-    flags |= cv::fisheye::CALIB_FIX_K1 | cv::fisheye::CALIB_FIX_K2 | cv::fisheye::CALIB_FIX_K3 |
-             cv::fisheye::CALIB_FIX_K4;
+    flags |=
+        cv::fisheye::CALIB_FIX_K1 | cv::fisheye::CALIB_FIX_K2 | cv::fisheye::CALIB_FIX_K3 | cv::fisheye::CALIB_FIX_K4;
   const cv::Matx33d K0 = cv::Matx33d::eye();  // cv::fisheye starts from f = max(w, h) / pi at the image centre
   const cv::Vec4d D0(0, 0, 0, 0);
 
@@ -369,11 +372,13 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
     const auto worst = static_cast<std::size_t>(std::max_element(errors.begin(), errors.end()) - errors.begin());
     if (views.size() <= 3) break;
     if (outlier(errors[worst], med)) {
-      calibrator.reject(views[worst], "reprojection error " + fmt("%.2f", errors[worst]) + " px, more than 4x the "
-                                      "median view's " + fmt("%.2f", med) + " px (corners mis-detected?)");
+      calibrator.reject(views[worst], "reprojection error " + fmt("%.2f", errors[worst]) +
+                                          " px, more than 4x the "
+                                          "median view's " +
+                                          fmt("%.2f", med) + " px (corners mis-detected?)");
       views.erase(views.begin() + static_cast<long>(worst));
       calibrator.notes_.clear();  // notes on the fit this view spoiled no longer hold
-    free = calibrator.fit(views, flags, K0, D0);
+      free = calibrator.fit(views, flags, K0, D0);
       continue;
     }
     if (med <= 1.0) break;
@@ -392,7 +397,7 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
     }
     if (!culprit || best > free.rms / 2) break;
     calibrator.reject(views[*culprit], "without this view the fit's RMS drops from " + fmt("%.2f", free.rms) +
-                                       " px to " + fmt("%.2f", best) + " px (corners no board pose explains)");
+                                           " px to " + fmt("%.2f", best) + " px (corners no board pose explains)");
     views.erase(views.begin() + static_cast<long>(*culprit));
     calibrator.notes_.clear();  // notes on the fit this view spoiled no longer hold
     free = calibrator.fit(views, flags, K0, D0);
@@ -406,8 +411,8 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
   //    adapt to it instead of the average being imposed afterwards.
   const double f = std::sqrt(result.fx * result.fy);
   const cv::Matx33d Kiso(f, 0, free.K(0, 2), 0, f, free.K(1, 2), 0, 0, 1);
-  const Fit iso = calibrator.fit(views, flags | cv::fisheye::CALIB_USE_INTRINSIC_GUESS |
-                                            cv::fisheye::CALIB_FIX_FOCAL_LENGTH, Kiso, free.D);
+  const Fit iso = calibrator.fit(
+      views, flags | cv::fisheye::CALIB_USE_INTRINSIC_GUESS | cv::fisheye::CALIB_FIX_FOCAL_LENGTH, Kiso, free.D);
   Lens lens = base;
   lens.width = size.width;
   lens.height = size.height;
@@ -420,30 +425,37 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
   const double aspect = result.fy / result.fx;
   if (std::abs(aspect - 1) > kAspectWarning)
     result.warnings.push_back("the free fit's fy/fx is " + fmt("%.4f", aspect) + " (fx " + fmt("%.2f", result.fx) +
-                              " px, fy " + fmt("%.2f", result.fy) + " px): BenchScope's lens has one focal length, "
-                              "refitted at " + fmt("%.2f", f) + " px; non-square pixels or views that do not pin "
+                              " px, fy " + fmt("%.2f", result.fy) +
+                              " px): BenchScope's lens has one focal length, "
+                              "refitted at " +
+                              fmt("%.2f", f) +
+                              " px; non-square pixels or views that do not pin "
                               "the focal length down");
   for (double deg = 0.5; deg <= lens.fov_deg / 2; deg += 0.5) {
     const auto r0 = lens.radius((deg - 0.5) * kPi / 180), r1 = lens.radius(deg * kPi / 180);
     if (r0 && r1 && *r1 <= *r0) {
-      result.warnings.push_back("the fitted polynomial folds back at " + fmt("%.1f", deg) + " degrees off the axis, "
-                                "inside the lens's " + fmt("%.0f", lens.fov_deg) + " degree field of view");
+      result.warnings.push_back("the fitted polynomial folds back at " + fmt("%.1f", deg) +
+                                " degrees off the axis, "
+                                "inside the lens's " +
+                                fmt("%.0f", lens.fov_deg) + " degree field of view");
       break;
     }
   }
   if (result.max_theta_deg < lens.fov_deg / 2 - 5)
-    result.warnings.push_back("corners were seen up to " + fmt("%.0f", result.max_theta_deg) + " degrees off the "
-                              "axis; beyond that, up to the lens's " + fmt("%.1f", lens.fov_deg / 2) +
-                              " degrees, the model is extrapolated");
+    result.warnings.push_back("corners were seen up to " + fmt("%.0f", result.max_theta_deg) +
+                              " degrees off the "
+                              "axis; beyond that, up to the lens's " +
+                              fmt("%.1f", lens.fov_deg / 2) + " degrees, the model is extrapolated");
 
   lens.calibration.method = LensCalibration::Method::Checkerboard;
   lens.calibration.rms_px = result.rms_px;
   lens.calibration.images_used = result.used();
   lens.calibration.images_rejected = result.rejected();
   lens.calibration.detail = std::to_string(board.cols) + "x" + std::to_string(board.rows) + " squares of " +
-                            fmt("%g", board.square_mm) + " mm, " + std::string(to_string(model)) + " model; free fit fx " +
-                            fmt("%.2f", result.fx) + " px, fy " + fmt("%.2f", result.fy) + " px, refitted with f = " +
-                            fmt("%.2f", f) + " px; corners up to " + fmt("%.0f", result.max_theta_deg) + " deg off axis";
+                            fmt("%g", board.square_mm) + " mm, " + std::string(to_string(model)) +
+                            " model; free fit fx " + fmt("%.2f", result.fx) + " px, fy " + fmt("%.2f", result.fy) +
+                            " px, refitted with f = " + fmt("%.2f", f) + " px; corners up to " +
+                            fmt("%.0f", result.max_theta_deg) + " deg off axis";
   result.lens = lens;
   if (progress) progress(1.0, "done");
   return result;

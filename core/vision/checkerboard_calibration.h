@@ -40,10 +40,10 @@ struct CalibrationImage {
 struct CalibrationImageResult {
   std::string name;
   bool used = false;
-  std::string rejected;                // the reason, empty when used
-  std::vector<cv::Point2f> corners;    // found corners (also for images rejected after detection)
-  std::optional<double> rms_px;        // reprojection RMS of this view under the calibrated lens
-  double max_theta_deg = 0;            // the largest angle off the axis at which this view's corners were seen
+  std::string rejected;              // the reason, empty when used
+  std::vector<cv::Point2f> corners;  // found corners (also for images rejected after detection)
+  std::optional<double> rms_px;      // reprojection RMS of this view under the calibrated lens
+  double max_theta_deg = 0;          // the largest angle off the axis at which this view's corners were seen
 };
 
 struct CheckerboardResult {
@@ -66,8 +66,8 @@ std::optional<std::vector<cv::Point2f>> find_board_corners(const cv::Mat& image,
 // std::runtime_error when fewer than 3 views remain (the message lists every image with its reason),
 // bs::Cancelled when `cancel` fires. `progress` may be called from several threads at once.
 CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& images, const Checkerboard& board,
-                                          CalibrationModel model, const Lens& base,
-                                          const CancelToken* cancel = nullptr, const ProgressFn& progress = {});
+                                          CalibrationModel model, const Lens& base, const CancelToken* cancel = nullptr,
+                                          const ProgressFn& progress = {});
 
 // The fit alone, for corners found elsewhere: `images` with `used` set and their corners (inner_corners().area()
 // each, in Checkerboard::object_points order), all from images of `size`. Throws as calibrate_checkerboard, and

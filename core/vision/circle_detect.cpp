@@ -264,9 +264,12 @@ std::optional<RobustFit> robust_fit(const std::vector<cv::Point2d>& pts, double 
 std::optional<ImageCircle> detect_image_circle(const cv::Mat& image, double min_level) {
   if (image.empty()) return std::nullopt;
   cv::Mat gray;
-  if (image.channels() == 3) cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
-  else if (image.channels() == 1) gray = image;
-  else return std::nullopt;
+  if (image.channels() == 3)
+    cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+  else if (image.channels() == 1)
+    gray = image;
+  else
+    return std::nullopt;
   if (gray.depth() != CV_8U && gray.depth() != CV_16U) return std::nullopt;
   const auto coarse = coarse_circle(gray8_of(gray), min_level);
   if (!coarse) return std::nullopt;

@@ -24,7 +24,8 @@ std::string cuda_preprocessing_unavailable(std::string* device) {
 #endif
 }
 
-Preprocessor make_cuda_preprocessor(const Lens& lens, const View& view, BayerPattern pattern, CudaPreprocessorInfo* info) {
+Preprocessor make_cuda_preprocessor(const Lens& lens, const View& view, BayerPattern pattern,
+                                    CudaPreprocessorInfo* info) {
   const ReprojectionLut lut(lens, view);  // validates lens and view first: a bad lens is reported as such
   if (const std::string why = cuda_preprocessing_unavailable(); !why.empty())
     throw std::runtime_error("CUDA preprocessing: " + why);

@@ -16,7 +16,8 @@ namespace bs::vision {
 
 Detector scaled_detector(Detector inner, double scale) {
   if (!(scale > 0 && scale <= 1))
-    throw std::invalid_argument("detection scale must be greater than 0 and at most 1 (got " + std::to_string(scale) + ")");
+    throw std::invalid_argument("detection scale must be greater than 0 and at most 1 (got " + std::to_string(scale) +
+                                ")");
   if (!inner) throw std::invalid_argument("scaled_detector needs a detector");
   if (scale == 1) return inner;
   return [inner = std::move(inner), scale](const cv::Mat& bgr) {
@@ -27,7 +28,8 @@ Detector scaled_detector(Detector inner, double scale) {
     for (Detection& d : found) {
       const cv::Rect& b = d.box;
       d.box = cv::Rect(cv::Point(cvRound(b.x / scale), cvRound(b.y / scale)),
-                       cv::Point(cvRound((b.x + b.width) / scale), cvRound((b.y + b.height) / scale))) & frame;
+                       cv::Point(cvRound((b.x + b.width) / scale), cvRound((b.y + b.height) / scale))) &
+              frame;
     }
     return found;
   };
@@ -94,7 +96,9 @@ DnnDetectorInfo probe_detector_network(cv::dnn::Net& net, const DnnOptions& o, c
         input = s;
         break;
       }
-    if (outs.empty()) throw std::runtime_error(name + ": the network runs on neither a 300x300 nor a 640x640 input; give its input size");
+    if (outs.empty())
+      throw std::runtime_error(name +
+                               ": the network runs on neither a 300x300 nor a 640x640 input; give its input size");
   }
   FamilyMatch match;
   try {
@@ -103,7 +107,8 @@ DnnDetectorInfo probe_detector_network(cv::dnn::Net& net, const DnnOptions& o, c
     throw std::runtime_error(name + ": " + e.what());
   }
   const bool yolo = match.family != DnnOutputFamily::Ssd;
-  if (yolo && o.input_size.area() == 0 && input != cv::Size(640, 640) && !probe(net, {640, 640}).empty()) input = {640, 640};
+  if (yolo && o.input_size.area() == 0 && input != cv::Size(640, 640) && !probe(net, {640, 640}).empty())
+    input = {640, 640};
   return {to_string(match.family), input, o.scale.value_or(yolo ? 1.0 / 255 : 1.0 / 127.5),
           o.mean.value_or(yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5))};
 }

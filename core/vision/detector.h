@@ -13,9 +13,9 @@
 namespace bs::vision {
 
 struct Detection {
-  cv::Rect box;        // in the image given to the detector
-  double score = 0;    // HOG: SVM margin; SSD: confidence 0..1
-  int class_id = -1;   // SSD class; -1 for HOG
+  cv::Rect box;       // in the image given to the detector
+  double score = 0;   // HOG: SVM margin; SSD: confidence 0..1
+  int class_id = -1;  // SSD class; -1 for HOG
 };
 
 using Detector = std::function<std::vector<Detection>(const cv::Mat& bgr)>;

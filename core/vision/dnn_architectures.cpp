@@ -61,7 +61,8 @@ class Builder {
     p.name = name;
     p.type = type;
     const int id = net_.addLayer(name, type, p);
-    for (std::size_t i = 0; i < inputs.size(); ++i) net_.connect(inputs[i].layer, inputs[i].pin, id, static_cast<int>(i));
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+      net_.connect(inputs[i].layer, inputs[i].pin, id, static_cast<int>(i));
     return {id, 0, inputs.empty() ? 0 : inputs.front().channels};
   }
   Tensor concat(const std::vector<Tensor>& in, int axis) {
@@ -105,13 +106,13 @@ BuiltNetwork mobilenet_ssd(cv::Size input, unsigned seed) {
   constexpr int kClasses = 91;  // COCO as in the TensorFlow model zoo: 90 + background
   Tensor x = b.conv(b.input(3), 32, 3, 2, 1, "ReLU6");
   // MobileNet v1: (output channels, stride) of each depthwise-separable block.
-  const int blocks[13][2] = {{64, 1},  {128, 2}, {128, 1}, {256, 2}, {256, 1}, {512, 2}, {512, 1},
+  const int blocks[13][2] = {{64, 1},  {128, 2}, {128, 1}, {256, 2}, {256, 1},  {512, 2}, {512, 1},
                              {512, 1}, {512, 1}, {512, 1}, {512, 1}, {1024, 2}, {1024, 1}};
   std::vector<Tensor> maps;
   for (int i = 0; i < 13; ++i) {
     x = b.conv(x, x.channels, 3, blocks[i][1], x.channels, "ReLU6");  // depthwise
     x = b.conv(x, blocks[i][0], 1, 1, 1, "ReLU6");                    // pointwise
-    if (i == 10 || i == 12) maps.push_back(x);                         // conv11 (19x19), conv13 (10x10)
+    if (i == 10 || i == 12) maps.push_back(x);                        // conv11 (19x19), conv13 (10x10)
   }
   // Extra feature layers: 1x1 to half the depth, then 3x3 stride 2 (5x5, 3x3, 2x2, 1x1 at 300x300).
   for (const int depth : {512, 256, 256, 128}) {
@@ -164,13 +165,16 @@ BuiltNetwork mobilenet_ssd(cv::Size input, unsigned seed) {
   out.name = "mobilenet-ssd (SSD300 MobileNet v1, COCO layout, random weights)";
   out.default_input = {300, 300};
   out.published_gflops = 2.4;
-  out.published_note = "1.2 billion multiply-adds (MobileNets paper, Howard et al. 2017, table 13: SSD 300 MobileNet "
-                       "on COCO) = 2.4 GFLOPs at 2 FLOPs per multiply-add";
+  out.published_note =
+      "1.2 billion multiply-adds (MobileNets paper, Howard et al. 2017, table 13: SSD 300 MobileNet "
+      "on COCO) = 2.4 GFLOPs at 2 FLOPs per multiply-add";
   return out;
 }
 
 // YOLOv8's Conv: convolution (batch norm folded) + SiLU.
-Tensor yconv(Builder& b, const Tensor& in, int out_c, int k, int stride) { return b.conv(in, out_c, k, stride, 1, "Swish"); }
+Tensor yconv(Builder& b, const Tensor& in, int out_c, int k, int stride) {
+  return b.conv(in, out_c, k, stride, 1, "Swish");
+}
 
 // C2f: 1x1 conv to 2c, split in halves, n bottlenecks on the second half each adding its output to the list,
 // concatenation of all, 1x1 conv to out_c.
@@ -253,8 +257,9 @@ BuiltNetwork yolo_n(cv::Size input, unsigned seed) {
   out.name = "yolo-n (YOLOv8n layout, random weights)";
   out.default_input = {640, 640};
   out.published_gflops = 8.7;
-  out.published_note = "8.7 GFLOPs at 640x640 (Ultralytics YOLOv8n model card; FLOPs = 2 x multiply-adds, as "
-                       "counted by thop)";
+  out.published_note =
+      "8.7 GFLOPs at 640x640 (Ultralytics YOLOv8n model card; FLOPs = 2 x multiply-adds, as "
+      "counted by thop)";
   return out;
 }
 

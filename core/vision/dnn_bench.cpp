@@ -27,7 +27,8 @@ DnnFlops count_flops(const cv::dnn::Net& net, const cv::dnn::MatShape& input_sha
     const cv::Mat& w = layer->blobs[0];  // out_c x (in_c / group) x kh x kw
     const std::int64_t macs_per_output = static_cast<std::int64_t>(w.size[1]) * w.size[2] * w.size[3];
     for (const cv::dnn::MatShape& o : out)
-      f.counted += static_cast<std::int64_t>(cv::dnn::total(o)) * (2 * macs_per_output + (layer->blobs.size() > 1 ? 1 : 0));
+      f.counted +=
+          static_cast<std::int64_t>(cv::dnn::total(o)) * (2 * macs_per_output + (layer->blobs.size() > 1 ? 1 : 0));
   }
   return f;
 }

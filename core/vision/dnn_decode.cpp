@@ -11,9 +11,12 @@ namespace bs::vision {
 
 const char* to_string(DnnOutputFamily family) {
   switch (family) {
-    case DnnOutputFamily::Ssd: return "SSD";
-    case DnnOutputFamily::YoloV5: return "YOLOv5";
-    case DnnOutputFamily::YoloV8: return "YOLOv8";
+    case DnnOutputFamily::Ssd:
+      return "SSD";
+    case DnnOutputFamily::YoloV5:
+      return "YOLOv5";
+    case DnnOutputFamily::YoloV8:
+      return "YOLOv8";
   }
   return "?";
 }
@@ -130,7 +133,8 @@ std::vector<Detection> decode_yolov8(const cv::Mat& out, const DecodeOptions& o)
     for (int c = 4; c < k; ++c)
       if (cols.at<float>(c, i) > score) score = cols.at<float>(c, i), best = c - 4;
     if (score < o.min_confidence) continue;
-    const float cx = cols.at<float>(0, i), cy = cols.at<float>(1, i), w = cols.at<float>(2, i), h = cols.at<float>(3, i);
+    const float cx = cols.at<float>(0, i), cy = cols.at<float>(1, i), w = cols.at<float>(2, i),
+                h = cols.at<float>(3, i);
     cands.push_back({cv::Rect2d(cx - w / 2, cy - h / 2, w, h), score, best});
   }
   return nms_and_map(cands, o);
@@ -140,9 +144,12 @@ std::vector<Detection> decode_detections(const std::vector<cv::Mat>& outputs, co
   const FamilyMatch m = detect_output_family(outputs);
   const cv::Mat& out = outputs[m.output_index];
   switch (m.family) {
-    case DnnOutputFamily::Ssd: return decode_ssd(out, o);
-    case DnnOutputFamily::YoloV5: return decode_yolov5(out, o);
-    case DnnOutputFamily::YoloV8: return decode_yolov8(out, o);
+    case DnnOutputFamily::Ssd:
+      return decode_ssd(out, o);
+    case DnnOutputFamily::YoloV5:
+      return decode_yolov5(out, o);
+    case DnnOutputFamily::YoloV8:
+      return decode_yolov8(out, o);
   }
   return {};
 }

@@ -31,8 +31,8 @@ struct FamilyMatch {
 FamilyMatch detect_output_family(const std::vector<cv::Mat>& outputs);
 
 struct DecodeOptions {
-  cv::Size input_size;   // the network's input (YOLO coordinates are in these pixels)
-  cv::Size image_size;   // the image the boxes are for
+  cv::Size input_size;  // the network's input (YOLO coordinates are in these pixels)
+  cv::Size image_size;  // the image the boxes are for
   float min_confidence = 0.5f;
   float nms_threshold = 0.45f;  // IoU above which a lower-scoring box of the same class is dropped (YOLO)
 };

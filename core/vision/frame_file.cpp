@@ -34,7 +34,9 @@ FrameFile read_raw(const std::string& path) {
     fail(side, e.what());
   }
   const int w = s.width, h = s.height;
-  if (w < 2 || h < 2) fail(side, "/width: a " + std::to_string(w) + "x" + std::to_string(h) + " frame is smaller than one 2x2 Bayer cell");
+  if (w < 2 || h < 2)
+    fail(side,
+         "/width: a " + std::to_string(w) + "x" + std::to_string(h) + " frame is smaller than one 2x2 Bayer cell");
   FrameFile f;
   f.bit_depth = s.bit_depth;
   if (s.pattern) {

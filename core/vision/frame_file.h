@@ -15,10 +15,10 @@
 namespace bs::vision {
 
 struct FrameFile {
-  cv::Mat mosaic;                          // CV_8UC1, or CV_16UC1 with values in the low `bit_depth` bits
+  cv::Mat mosaic;  // CV_8UC1, or CV_16UC1 with values in the low `bit_depth` bits
   int bit_depth = 8;
   BayerPattern pattern = BayerPattern::BGGR;
-  bool pattern_from_file = false;          // the sidecar named the pattern (images carry none)
+  bool pattern_from_file = false;  // the sidecar named the pattern (images carry none)
 };
 
 // `path` ending in .raw/.bin needs a sidecar (find_raw_sidecar: the same path with .json instead, or path +

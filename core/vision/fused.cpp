@@ -58,10 +58,14 @@ inline cv::Vec3b quad(const std::uint8_t* p, int s, int fx, int fy) {
 template <int L00, int L01, int L10, int L11>
 inline cv::Vec3b pixel_for_parity(int parity, const std::uint8_t* p, int s, int fx, int fy) {
   switch (parity) {
-    case 0: return quad<L00>(p, s, fx, fy);
-    case 1: return quad<L01>(p, s, fx, fy);
-    case 2: return quad<L10>(p, s, fx, fy);
-    default: return quad<L11>(p, s, fx, fy);
+    case 0:
+      return quad<L00>(p, s, fx, fy);
+    case 1:
+      return quad<L01>(p, s, fx, fy);
+    case 2:
+      return quad<L10>(p, s, fx, fy);
+    default:
+      return quad<L11>(p, s, fx, fy);
   }
 }
 
@@ -92,7 +96,8 @@ FusedTable::FusedTable(const cv::Mat& map, cv::Size source_size, BayerPattern pa
     entries_.resize(n);
     for (int y = 0; y < out_.height; ++y) {
       const auto* row = map.ptr<cv::Vec2f>(y);
-      for (int x = 0; x < out_.width; ++x) entries_[static_cast<std::size_t>(y) * out_.width + x] = make_entry(row[x][0], row[x][1]);
+      for (int x = 0; x < out_.width; ++x)
+        entries_[static_cast<std::size_t>(y) * out_.width + x] = make_entry(row[x][0], row[x][1]);
     }
     return;
   }
@@ -132,7 +137,8 @@ FusedTable::FusedTable(const cv::Mat& map, cv::Size source_size, BayerPattern pa
         const auto fractions = static_cast<std::uint32_t>(e.fx) << 22 | static_cast<std::uint32_t>(e.fy) << 27;
         const int wx = e.offset % src_.width - 1, wy = e.offset / src_.width - 1;
         if (tiled)
-          packed = static_cast<std::uint32_t>((wx - left) | (wy - top) << 6 | (wx & 1) << 9 | (wy & 1) << 10) | fractions;
+          packed =
+              static_cast<std::uint32_t>((wx - left) | (wy - top) << 6 | (wx & 1) << 9 | (wy & 1) << 10) | fractions;
         else
           packed = static_cast<std::uint32_t>(wy * src_.width + wx) | fractions;
       }
@@ -154,10 +160,18 @@ void FusedTable::run(const cv::Mat& mosaic, cv::Mat& out, const cv::Vec3b& fill)
   out.create(out_, CV_8UC3);
   // Shifting a pattern by one row or column gives another pattern: BGGR -> GBRG (column), GRBG (row), RGGB (both).
   switch (pattern_) {
-    case BayerPattern::BGGR: run_rows<0, 3, 2, 1>(m, out, fill); break;
-    case BayerPattern::RGGB: run_rows<1, 2, 3, 0>(m, out, fill); break;
-    case BayerPattern::GRBG: run_rows<2, 1, 0, 3>(m, out, fill); break;
-    case BayerPattern::GBRG: run_rows<3, 0, 1, 2>(m, out, fill); break;
+    case BayerPattern::BGGR:
+      run_rows<0, 3, 2, 1>(m, out, fill);
+      break;
+    case BayerPattern::RGGB:
+      run_rows<1, 2, 3, 0>(m, out, fill);
+      break;
+    case BayerPattern::GRBG:
+      run_rows<2, 1, 0, 3>(m, out, fill);
+      break;
+    case BayerPattern::GBRG:
+      run_rows<3, 0, 1, 2>(m, out, fill);
+      break;
   }
 }
 
@@ -178,15 +192,17 @@ void FusedTable::run_rows(const cv::Mat& m, cv::Mat& out, const cv::Vec3b& fill)
   // Blue's column and row parity, for the vector kernel: the layout index of the pattern's (0, 0) cell is L00.
   const int blue_col = kCh(L00, 0, 0) == 0 || kCh(L00, 1, 0) == 0 ? 0 : 1;
   const int blue_row = kCh(L00, 0, 0) == 0 || kCh(L00, 0, 1) == 0 ? 0 : 1;
-  const std::size_t blocks_per_row = (static_cast<std::size_t>(out_.width) + detail::kBlockPixels - 1) / detail::kBlockPixels;
+  const std::size_t blocks_per_row =
+      (static_cast<std::size_t>(out_.width) + detail::kBlockPixels - 1) / detail::kBlockPixels;
   const auto rows = [&](int y_begin, int y_end) {
     for (int y = y_begin; y < y_end; ++y) {
       auto* dst = out.ptr<cv::Vec3b>(y);
       const std::size_t first = static_cast<std::size_t>(y) * out_.width;
       if (vectorised()) {
-          detail::fused_row_avx512(packed_.data() + first, blocks_.data() + static_cast<std::size_t>(y) * blocks_per_row,
+        detail::fused_row_avx512(packed_.data() + first, blocks_.data() + static_cast<std::size_t>(y) * blocks_per_row,
                                  out_.width, m.data, width, blue_col, blue_row, out.ptr<std::uint8_t>(y));
-        for (std::size_t i = row_specials_[static_cast<std::size_t>(y)]; i < row_specials_[static_cast<std::size_t>(y) + 1]; ++i)
+        for (std::size_t i = row_specials_[static_cast<std::size_t>(y)];
+             i < row_specials_[static_cast<std::size_t>(y) + 1]; ++i)
           dst[specials_[i].x] = scalar_pixel(specials_[i].entry);
       } else {
         for (int x = 0; x < out_.width; ++x) dst[x] = scalar_pixel(entries_[first + static_cast<std::size_t>(x)]);
@@ -197,8 +213,8 @@ void FusedTable::run_rows(const cv::Mat& m, cv::Mat& out, const cv::Vec3b& fill)
   // taken, so on a shared machine a worker that does not get a core costs nothing (an OpenMP team waits at its
   // barrier for every thread, a 4 ms scheduler tick when one is descheduled), and our work and OpenCV's stages
   // in the same pipeline share one pool instead of two spinning against each other.
-  cv::parallel_for_(cv::Range(0, out_.height), [&](const cv::Range& r) { rows(r.start, r.end); },
-                    std::max(1.0, out_.height / 16.0));
+  cv::parallel_for_(
+      cv::Range(0, out_.height), [&](const cv::Range& r) { rows(r.start, r.end); }, std::max(1.0, out_.height / 16.0));
 }
 
 }  // namespace bs::vision

@@ -57,11 +57,11 @@ class FusedTable {
 
   cv::Size out_, src_;
   BayerPattern pattern_;
-  std::vector<Entry> entries_;          // scalar kernel: every output pixel
-  std::vector<std::uint32_t> packed_;   // vectorised kernel: every output pixel
+  std::vector<Entry> entries_;              // scalar kernel: every output pixel
+  std::vector<std::uint32_t> packed_;       // vectorised kernel: every output pixel
   std::vector<detail::FusedBlock> blocks_;  // vectorised kernel: every 16 pixels of a row
-  std::vector<Special> specials_;       // vectorised kernel: pixels the scalar code writes, by row
-  std::vector<std::size_t> row_specials_;  // specials_ of row y: [row_specials_[y], row_specials_[y + 1])
+  std::vector<Special> specials_;           // vectorised kernel: pixels the scalar code writes, by row
+  std::vector<std::size_t> row_specials_;   // specials_ of row y: [row_specials_[y], row_specials_[y + 1])
 };
 
 }  // namespace bs::vision

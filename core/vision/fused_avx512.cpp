@@ -36,7 +36,7 @@ namespace bs::vision::detail {
 
 // Each lane's 4 bytes of one tile row (a lambda would not inherit the target attribute).
 BS_AVX512_TARGET __attribute__((always_inline)) inline __m512i pick_tile_row(const std::uint8_t* row, __mmask64 load,
-                                                                           __m512i pick) {
+                                                                             __m512i pick) {
   return _mm512_permutexvar_epi8(pick, _mm512_maskz_loadu_epi8(load, row));
 }
 
@@ -45,9 +45,9 @@ bool fused_avx512_supported() {
          __builtin_cpu_supports("avx512vbmi");
 }
 
-BS_AVX512_TARGET void fused_row_avx512(
-    const std::uint32_t* lut, const FusedBlock* blocks, int count, const std::uint8_t* mosaic, int width,
-    int blue_col, int blue_row, std::uint8_t* out) {
+BS_AVX512_TARGET void fused_row_avx512(const std::uint32_t* lut, const FusedBlock* blocks, int count,
+                                       const std::uint8_t* mosaic, int width, int blue_col, int blue_row,
+                                       std::uint8_t* out) {
   const __m512i one = _mm512_set1_epi32(1);
   const __m512i special = _mm512_set1_epi32(-1);
   const __m512i offset_bits = _mm512_set1_epi32((1 << kPackedOffsetBits) - 1);
@@ -134,8 +134,8 @@ BS_AVX512_TARGET void fused_row_avx512(
     const __m512i fy_pair = _mm512_sub_epi32(_mm512_slli_epi32(fy, 16), fy);
     // Bytes (32 - fx, 32 + fx, 64 - fx, fx) = 0x00402020 + fx * 0x00FF00FF.
     const __m512i fx255 = _mm512_sub_epi32(_mm512_slli_epi32(fx, 8), fx);
-    const __m512i w_cols = _mm512_add_epi32(_mm512_set1_epi32(0x00402020),
-                                            _mm512_add_epi32(fx255, _mm512_slli_epi32(fx255, 16)));
+    const __m512i w_cols =
+        _mm512_add_epi32(_mm512_set1_epi32(0x00402020), _mm512_add_epi32(fx255, _mm512_slli_epi32(fx255, 16)));
     const __m512i w_rows13 = _mm512_add_epi32(_mm512_set1_epi32(64), fy_pair);          // (64 - fy, fy)
     const __m512i w_rows02 = _mm512_add_epi32(_mm512_set1_epi32(0x00200020), fy_pair);  // (32 - fy, 32 + fy)
     const __m512i w_green_x = _mm512_add_epi32(_mm512_set1_epi32(32), fx_pair);         // (32 - fx, fx)
@@ -147,10 +147,14 @@ BS_AVX512_TARGET void fused_row_avx512(
     const __m512i p2 = _mm512_maddubs_epi16(_mm512_shuffle_epi8(r2, pair_cols), w_cols);
     const __m512i p3 = _mm512_maddubs_epi16(_mm512_shuffle_epi8(r3, pair_cols), w_cols);
     // Pair rows 1/3 and 0/2 word by word, then the y weights: 4096 x the value.
-    const __m512i c02_r13 = _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, p1, _mm512_slli_epi32(p3, 16)), w_rows13);
-    const __m512i c13_r13 = _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, _mm512_srli_epi32(p1, 16), p3), w_rows13);
-    const __m512i c02_r02 = _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, p0, _mm512_slli_epi32(p2, 16)), w_rows02);
-    const __m512i c13_r02 = _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, _mm512_srli_epi32(p0, 16), p2), w_rows02);
+    const __m512i c02_r13 =
+        _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, p1, _mm512_slli_epi32(p3, 16)), w_rows13);
+    const __m512i c13_r13 =
+        _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, _mm512_srli_epi32(p1, 16), p3), w_rows13);
+    const __m512i c02_r02 =
+        _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, p0, _mm512_slli_epi32(p2, 16)), w_rows02);
+    const __m512i c13_r02 =
+        _mm512_madd_epi16(_mm512_mask_blend_epi16(odd_words, _mm512_srli_epi32(p0, 16), p2), w_rows02);
     const __m512i blue_r13 = _mm512_mask_blend_epi32(blue_cols13, c02_r13, c13_r13);
     const __m512i red_r13 = _mm512_mask_blend_epi32(blue_cols13, c13_r13, c02_r13);
     const __m512i blue_r02 = _mm512_mask_blend_epi32(blue_cols13, c02_r02, c13_r02);
@@ -199,8 +203,8 @@ BS_AVX512_TARGET void fused_row_avx512(
 
 bool fused_avx512_supported() { return false; }
 
-void fused_row_avx512(const std::uint32_t*, const FusedBlock*, int, const std::uint8_t*, int, int, int,
-                      std::uint8_t*) {}
+void fused_row_avx512(const std::uint32_t*, const FusedBlock*, int, const std::uint8_t*, int, int, int, std::uint8_t*) {
+}
 
 #endif
 

@@ -57,7 +57,8 @@ BS_HOST_DEVICE inline int round_even(float v) {
 }
 
 // The BGR pixel sampled at mosaic position (sx, sy); `fill` when the table has no source there (negative).
-BS_HOST_DEVICE inline void sample(const Mosaic& m, float sx, float sy, const std::uint8_t fill[3], std::uint8_t out[3]) {
+BS_HOST_DEVICE inline void sample(const Mosaic& m, float sx, float sy, const std::uint8_t fill[3],
+                                  std::uint8_t out[3]) {
   if (sx < 0 || sy < 0) {
     out[0] = fill[0], out[1] = fill[1], out[2] = fill[2];
     return;

@@ -17,8 +17,8 @@ double rad(double deg) { return deg * kPi / 180.0; }
 }  // namespace
 
 std::string_view to_string(LensType t) {
-  static const char* names[] = {"equidistant", "equisolid", "stereographic", "orthographic", "rectilinear",
-                                "kannala-brandt"};
+  static const char* names[] = {"equidistant",  "equisolid",   "stereographic",
+                                "orthographic", "rectilinear", "kannala-brandt"};
   return names[static_cast<int>(t)];
 }
 
@@ -39,14 +39,16 @@ cv::Matx33d view_rotation(const View& v) {
   return yaw * pitch * roll;
 }
 
-
 std::optional<double> Lens::radius(double theta) const {
   if (theta > rad(fov_deg) / 2 + 1e-12) return std::nullopt;
   const double f = 1.0 / r_pp;
   switch (type) {
-    case LensType::Equidistant: return theta / r_pp;
-    case LensType::Equisolid: return 2 * f * std::sin(theta / 2);
-    case LensType::Stereographic: return 2 * f * std::tan(theta / 2);
+    case LensType::Equidistant:
+      return theta / r_pp;
+    case LensType::Equisolid:
+      return 2 * f * std::sin(theta / 2);
+    case LensType::Stereographic:
+      return 2 * f * std::tan(theta / 2);
     case LensType::Orthographic:
       if (theta > kPi / 2) return std::nullopt;
       return f * std::sin(theta);
@@ -61,9 +63,7 @@ std::optional<double> Lens::radius(double theta) const {
   return std::nullopt;
 }
 
-cv::Point2d Lens::centre() const {
-  return {cx >= 0 ? cx : (width - 1) / 2.0, cy >= 0 ? cy : (height - 1) / 2.0};
-}
+cv::Point2d Lens::centre() const { return {cx >= 0 ? cx : (width - 1) / 2.0, cy >= 0 ? cy : (height - 1) / 2.0}; }
 
 void Lens::validate() const {
   if (!(r_pp > 0) || !std::isfinite(r_pp)) throw std::invalid_argument("lens r_pp must be > 0 radians per pixel");
@@ -83,9 +83,7 @@ Lens Lens::paper() {
   return l;
 }
 
-double View::focal_px() const {
-  return std::hypot(width - 1.0, height - 1.0) / (2 * std::tan(rad(fov_deg) / 2));
-}
+double View::focal_px() const { return std::hypot(width - 1.0, height - 1.0) / (2 * std::tan(rad(fov_deg) / 2)); }
 
 void View::validate() const {
   if (width <= 0 || height <= 0) throw std::invalid_argument("output size must be > 0");
@@ -95,10 +93,14 @@ void View::validate() const {
 
 std::string_view to_string(LensCalibration::Method m) {
   switch (m) {
-    case LensCalibration::Method::Manual: return "manual";
-    case LensCalibration::Method::CircleFit: return "circle-fit";
-    case LensCalibration::Method::Checkerboard: return "checkerboard";
-    case LensCalibration::Method::LineFit: return "line-fit";
+    case LensCalibration::Method::Manual:
+      return "manual";
+    case LensCalibration::Method::CircleFit:
+      return "circle-fit";
+    case LensCalibration::Method::Checkerboard:
+      return "checkerboard";
+    case LensCalibration::Method::LineFit:
+      return "line-fit";
   }
   return "manual";
 }

@@ -26,7 +26,7 @@ struct LensCalibration {
   std::optional<double> rms_px;  // reprojection error (checkerboard) or residual (line fit), pixels
   int images_used = 0;           // checkerboard: images whose corners were found and used
   int images_rejected = 0;
-  std::string detail;            // free text: board, model, line count, fit residual before/after...
+  std::string detail;  // free text: board, model, line count, fit residual before/after...
 };
 std::string_view to_string(LensCalibration::Method m);
 LensCalibration::Method calibration_method_from_string(std::string_view s);  // throws std::invalid_argument
@@ -54,7 +54,7 @@ struct Lens {
 // The rectilinear view to produce.
 struct View {
   int width = 1280, height = 1024;
-  double fov_deg = 150;              // diagonal-based, as the paper: f = |(W-1, H-1)| / (2 tan(FOV/2))
+  double fov_deg = 150;  // diagonal-based, as the paper: f = |(W-1, H-1)| / (2 tan(FOV/2))
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;
   double focal_px() const;
   void validate() const;

@@ -19,15 +19,18 @@ constexpr double kPi = 3.14159265358979323846;
 std::optional<double> theta_of_radius(const Lens& lens, double r) {
   const double t = r * lens.r_pp;  // radius in focal lengths
   switch (lens.type) {
-    case LensType::Equidistant: return t;
+    case LensType::Equidistant:
+      return t;
     case LensType::Equisolid:
       if (t / 2 > 1) return std::nullopt;
       return 2 * std::asin(t / 2);
-    case LensType::Stereographic: return 2 * std::atan(t / 2);
+    case LensType::Stereographic:
+      return 2 * std::atan(t / 2);
     case LensType::Orthographic:
       if (t > 1) return std::nullopt;
       return std::asin(t);
-    case LensType::Rectilinear: return std::atan(t);
+    case LensType::Rectilinear:
+      return std::atan(t);
     case LensType::KannalaBrandt: {
       // Newton on theta (1 + k1 theta^2 + ... + k4 theta^8) = t, from theta = t; the polynomial must rise there.
       const auto& k = lens.k;
@@ -72,7 +75,8 @@ bool plane_distances(const Lens& lens, const std::vector<PickedLine>& lines, std
       const auto v = pixel_to_ray(lens, line[pi]);
       if (!v) {
         if (error)
-          *error = "line " + std::to_string(li + 1) + ", point " + std::to_string(pi + 1) + ": the lens has no ray there";
+          *error =
+              "line " + std::to_string(li + 1) + ", point " + std::to_string(pi + 1) + ": the lens has no ray there";
         return false;
       }
       rays.push_back(*v);
@@ -164,8 +168,8 @@ Lens to_kannala_brandt(const Lens& lens) {
   std::vector<std::array<double, 6>> rows;
   for (int i = 1; i <= 200; ++i) {
     const double th = top * i / 200.0;
-    if (const auto r = lens.radius(th)) rows.push_back({th, std::pow(th, 3), std::pow(th, 5), std::pow(th, 7),
-                                                       std::pow(th, 9), *r});
+    if (const auto r = lens.radius(th))
+      rows.push_back({th, std::pow(th, 3), std::pow(th, 5), std::pow(th, 7), std::pow(th, 9), *r});
   }
   if (rows.size() < 10) return out;
   cv::Mat A(static_cast<int>(rows.size()), 5, CV_64F), b(static_cast<int>(rows.size()), 1, CV_64F), a;
@@ -202,8 +206,9 @@ LineFitResult fit_lens_to_lines(const Lens& start_lens, const std::vector<Picked
                                 const LineFitOptions& options) {
   int usable = 0;
   for (const auto& l : lines) usable += l.size() >= 3;
-  if (usable < 3) throw std::invalid_argument("a line fit needs at least 3 lines of 3 or more points (got " +
-                                              std::to_string(usable) + ")");
+  if (usable < 3)
+    throw std::invalid_argument("a line fit needs at least 3 lines of 3 or more points (got " + std::to_string(usable) +
+                                ")");
   Lens start = to_kannala_brandt(start_lens);
   const cv::Point2d c0 = start.centre();
   start.cx = c0.x;

@@ -58,7 +58,8 @@ __kernel void reproject(__global const uchar* bgr, int cols, int rows, __global 
 )CLC";
 
 void check(cl_int err, const char* what) {
-  if (err != CL_SUCCESS) throw std::runtime_error(std::string("OpenCL: ") + what + " failed (error " + std::to_string(err) + ")");
+  if (err != CL_SUCCESS)
+    throw std::runtime_error(std::string("OpenCL: ") + what + " failed (error " + std::to_string(err) + ")");
 }
 
 // Owns every OpenCL object of one preprocessor; released in reverse order.
@@ -137,7 +138,8 @@ Preprocessor make_opencl_preprocessor(const Lens& lens, const View& view, BayerP
   check(err, "clCreateKernel(reproject)");
   st->source = lut.source_size();
   st->view = lut.map().size();
-  const std::size_t src_px = static_cast<std::size_t>(st->source.area()), view_px = static_cast<std::size_t>(st->view.area());
+  const std::size_t src_px = static_cast<std::size_t>(st->source.area()),
+                    view_px = static_cast<std::size_t>(st->view.area());
   st->raw = clCreateBuffer(st->context, CL_MEM_READ_ONLY, src_px, nullptr, &err);
   check(err, "clCreateBuffer(raw)");
   st->bgr = clCreateBuffer(st->context, CL_MEM_READ_WRITE, 3 * src_px, nullptr, &err);
@@ -171,13 +173,19 @@ Preprocessor make_opencl_preprocessor(const Lens& lens, const View& view, BayerP
     const cv::Mat in = mosaic.isContinuous() ? mosaic : mosaic.clone();
     cv::Mat out(st->view, CV_8UC3);
     const std::lock_guard lock(st->mutex);
-    const std::size_t src_global[2] = {static_cast<std::size_t>(st->source.width), static_cast<std::size_t>(st->source.height)};
-    const std::size_t view_global[2] = {static_cast<std::size_t>(st->view.width), static_cast<std::size_t>(st->view.height)};
+    const std::size_t src_global[2] = {static_cast<std::size_t>(st->source.width),
+                                       static_cast<std::size_t>(st->source.height)};
+    const std::size_t view_global[2] = {static_cast<std::size_t>(st->view.width),
+                                        static_cast<std::size_t>(st->view.height)};
     // Upload, both kernels and the read-back in order on one in-order queue; the blocking read waits for all.
-    check(clEnqueueWriteBuffer(st->queue, st->raw, CL_FALSE, 0, in.total(), in.data, 0, nullptr, nullptr), "clEnqueueWriteBuffer");
-    check(clEnqueueNDRangeKernel(st->queue, st->demosaic, 2, nullptr, src_global, nullptr, 0, nullptr, nullptr), "clEnqueueNDRangeKernel(demosaic)");
-    check(clEnqueueNDRangeKernel(st->queue, st->reproject, 2, nullptr, view_global, nullptr, 0, nullptr, nullptr), "clEnqueueNDRangeKernel(reproject)");
-    check(clEnqueueReadBuffer(st->queue, st->out, CL_TRUE, 0, out.total() * 3, out.data, 0, nullptr, nullptr), "clEnqueueReadBuffer");
+    check(clEnqueueWriteBuffer(st->queue, st->raw, CL_FALSE, 0, in.total(), in.data, 0, nullptr, nullptr),
+          "clEnqueueWriteBuffer");
+    check(clEnqueueNDRangeKernel(st->queue, st->demosaic, 2, nullptr, src_global, nullptr, 0, nullptr, nullptr),
+          "clEnqueueNDRangeKernel(demosaic)");
+    check(clEnqueueNDRangeKernel(st->queue, st->reproject, 2, nullptr, view_global, nullptr, 0, nullptr, nullptr),
+          "clEnqueueNDRangeKernel(reproject)");
+    check(clEnqueueReadBuffer(st->queue, st->out, CL_TRUE, 0, out.total() * 3, out.data, 0, nullptr, nullptr),
+          "clEnqueueReadBuffer");
     return out;
   };
 }

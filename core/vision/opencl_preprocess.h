@@ -14,7 +14,7 @@
 namespace bs::vision {
 
 struct OpenClPreprocessorInfo {
-  std::string device;    // "pthread-cpu-haswell (Portable Computing Language)" on PoCL
+  std::string device;  // "pthread-cpu-haswell (Portable Computing Language)" on PoCL
 };
 
 // The first OpenCL device (GPU preferred). Throws std::runtime_error naming the failing OpenCL call when there is

@@ -30,10 +30,10 @@ inline constexpr std::size_t kMaxDetectionWorkers = 256;
 std::size_t default_detection_workers();
 
 struct PipelineConfig {
-  std::size_t max_frames = 100;     // stop after this many captured frames
-  std::size_t queue_capacity = 2;   // per queue
+  std::size_t max_frames = 100;    // stop after this many captured frames
+  std::size_t queue_capacity = 2;  // per queue
   QueuePolicy policy = QueuePolicy::Block;
-  double capture_fps = 0;           // pace the capture like a camera; 0: as fast as the pipeline takes frames
+  double capture_fps = 0;  // pace the capture like a camera; 0: as fast as the pipeline takes frames
   // Threads running the detector, each on its own frame (1..kMaxDetectionWorkers). With more than one the
   // detector is called concurrently: HOG's detectMultiScale is const and safe; the cv::dnn detector serialises
   // forward() with its own mutex.
@@ -41,9 +41,9 @@ struct PipelineConfig {
 };
 
 struct StageTiming {
-  std::string stage;          // "preprocessing", "detection", "end-to-end"
-  std::vector<double> ms;     // one per processed frame
-  Summary summary;            // of ms
+  std::string stage;       // "preprocessing", "detection", "end-to-end"
+  std::vector<double> ms;  // one per processed frame
+  Summary summary;         // of ms
   double p50 = 0, p95 = 0, p99 = 0;
 };
 
@@ -51,11 +51,11 @@ struct PipelineResult {
   std::vector<StageTiming> stages;  // preprocessing, detection (when a detector ran), end-to-end
   std::size_t captured = 0, processed = 0, dropped = 0;
   double wall_s = 0;
-  double throughput_fps = 0;        // processed / wall
+  double throughput_fps = 0;  // processed / wall
   bool cancelled = false;
   std::vector<Detection> last_detections;
-  cv::Mat last_output;              // the reprojected frame with the highest index (for drawing the detections)
-  std::size_t last_index = 0;       // its index; last_detections are its detections
+  cv::Mat last_output;                // the reprojected frame with the highest index (for drawing the detections)
+  std::size_t last_index = 0;         // its index; last_detections are its detections
   std::size_t detection_workers = 0;  // how many detection threads ran (0 without a detector)
   const StageTiming* stage(const std::string& name) const;
 };

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "util/host_clock.h"
 #include "vision/cuda_preprocess.h"
 #include "vision/detector.h"
 #include "vision/dnn_architectures.h"
@@ -13,7 +14,6 @@
 #include "vision/preprocess.h"
 #include "vision/synthetic.h"
 #include "vision/threads.h"
-#include "util/host_clock.h"
 
 namespace bs::vision {
 

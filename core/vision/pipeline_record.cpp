@@ -11,8 +11,8 @@ PipelineRun to_pipeline_run(const PipelineResult& result) {
                              : t.stage == "detection"   ? pipeline_stage::kDetect
                                                         : t.stage;
     constexpr double s = 1e-3;
-    run.stages.push_back({name, t.summary.n, t.summary.mean * s, t.summary.sd * s, t.summary.min * s,
-                          t.summary.max * s, t.p50 * s, t.p95 * s});
+    run.stages.push_back({name, t.summary.n, t.summary.mean * s, t.summary.sd * s, t.summary.min * s, t.summary.max * s,
+                          t.p50 * s, t.p95 * s});
   }
   if (result.throughput_fps > 0) run.throughput_fps = result.throughput_fps;
   return run;

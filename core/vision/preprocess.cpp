@@ -25,8 +25,8 @@ Preprocessor make_preprocessor(const Lens& lens, const View& view, BayerPattern 
     if (method != DemosaicMethod::Bilinear)
       throw std::invalid_argument("the fused path demosaics bilinearly; use --path separate for " +
                                   std::string(to_string(method)));
-    auto table = std::make_shared<const FusedTable>(build_reprojection_map(lens, view), cv::Size(lens.width, lens.height),
-                                                    pattern);
+    auto table = std::make_shared<const FusedTable>(build_reprojection_map(lens, view),
+                                                    cv::Size(lens.width, lens.height), pattern);
     return [table](const cv::Mat& mosaic) {
       cv::Mat out;
       table->run(mosaic, out);

@@ -30,8 +30,10 @@ std::optional<double> lens_theta(const Lens& lens, double radius_px) {
   for (int i = 0; i < 60; ++i) {
     const double mid = (lo + hi) / 2;
     const auto r = lens.radius(mid);
-    if (r && *r < radius_px) lo = mid;
-    else hi = mid;
+    if (r && *r < radius_px)
+      lo = mid;
+    else
+      hi = mid;
   }
   return (lo + hi) / 2;
 }
@@ -59,13 +61,13 @@ cv::Mat render_fisheye(const Lens& lens, int bits) {
       }
       const cv::Vec3d v = sum * (scale / 4);
       if (wide)
-        out.at<cv::Vec3w>(row, col) = cv::Vec3w(static_cast<std::uint16_t>(std::lround(v[0])),
-                                                static_cast<std::uint16_t>(std::lround(v[1])),
-                                                static_cast<std::uint16_t>(std::lround(v[2])));
+        out.at<cv::Vec3w>(row, col) =
+            cv::Vec3w(static_cast<std::uint16_t>(std::lround(v[0])), static_cast<std::uint16_t>(std::lround(v[1])),
+                      static_cast<std::uint16_t>(std::lround(v[2])));
       else
-        out.at<cv::Vec3b>(row, col) = cv::Vec3b(static_cast<std::uint8_t>(std::lround(v[0])),
-                                                static_cast<std::uint8_t>(std::lround(v[1])),
-                                                static_cast<std::uint8_t>(std::lround(v[2])));
+        out.at<cv::Vec3b>(row, col) =
+            cv::Vec3b(static_cast<std::uint8_t>(std::lround(v[0])), static_cast<std::uint8_t>(std::lround(v[1])),
+                      static_cast<std::uint8_t>(std::lround(v[2])));
     }
   }
   return out;

@@ -65,8 +65,8 @@ BoardPose parse_pose(std::string_view text) {
   BoardPose p;
   char extra = 0;
   const std::string s(text);
-  if (std::sscanf(s.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf%c", &p.rx_deg, &p.ry_deg, &p.rz_deg, &p.tx_mm, &p.ty_mm,
-                  &p.tz_mm, &extra) != 6)
+  if (std::sscanf(s.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf%c", &p.rx_deg, &p.ry_deg, &p.rz_deg, &p.tx_mm, &p.ty_mm, &p.tz_mm,
+                  &extra) != 6)
     throw std::invalid_argument("pose '" + s + "': expected rx,ry,rz,tx,ty,tz (degrees, millimetres)");
   for (double v : {p.rx_deg, p.ry_deg, p.rz_deg, p.tx_mm, p.ty_mm, p.tz_mm})
     if (!std::isfinite(v)) throw std::invalid_argument("pose '" + s + "': not a finite number");
@@ -140,7 +140,8 @@ cv::Mat render_checkerboard(const Lens& lens, const BoardPose& pose, const Check
           const cv::Vec3d local = Rt * (along * d - t);
           const double u = local[1], v = -local[2];
           if (std::abs(u) <= half_w && std::abs(v) <= half_h) {
-            const auto i = static_cast<long>(std::floor((u + half_w) / sq)), j = static_cast<long>(std::floor((v + half_h) / sq));
+            const auto i = static_cast<long>(std::floor((u + half_w) / sq)),
+                       j = static_cast<long>(std::floor((v + half_h) / sq));
             sum += ((i + j) % 2 == 0) ? kDark : kWhite;
           } else if (std::abs(u) <= half_w + sq && std::abs(v) <= half_h + sq) {
             sum += kWhite;  // the quiet zone findChessboardCornersSB needs around the squares

@@ -32,9 +32,12 @@ cv::Vec3d surface_colour(int face, double u, double v) {
   // Light surfaces with a gentle texture (plaster, wood), so edges inside the circle are not all the same strength.
   const double tex = 0.07 * std::sin(3.1 * u + 0.7) * std::cos(2.3 * v) + 0.03 * std::sin(17.0 * u + 11.0 * v);
   switch (face) {
-    case 4: return {0.32 + tex, 0.42 + tex, 0.55 + tex};  // floor: wood
-    case 5: return {0.86 + tex, 0.86 + tex, 0.84 + tex};  // ceiling
-    default: return {0.70 + tex, 0.74 + tex, 0.76 + tex};
+    case 4:
+      return {0.32 + tex, 0.42 + tex, 0.55 + tex};  // floor: wood
+    case 5:
+      return {0.86 + tex, 0.86 + tex, 0.84 + tex};  // ceiling
+    default:
+      return {0.70 + tex, 0.74 + tex, 0.76 + tex};
   }
 }
 
@@ -62,10 +65,13 @@ cv::Vec3d room_colour(const cv::Vec3d& dir_camera, double yaw_rad) {
   const cv::Vec3d p = d * t;
   switch (face) {
     case 0:
-    case 1: return surface_colour(face, p[1], p[2]);
+    case 1:
+      return surface_colour(face, p[1], p[2]);
     case 2:
-    case 3: return surface_colour(face, p[0], p[2]);
-    default: return surface_colour(face, p[0], p[1]);
+    case 3:
+      return surface_colour(face, p[0], p[2]);
+    default:
+      return surface_colour(face, p[0], p[1]);
   }
 }
 

@@ -17,8 +17,8 @@ constexpr char kMagic[8] = {'B', 'S', 'L', 'U', 'T', '1', '\n', '\0'};
 constexpr std::uint32_t kMaxHeader = 1 << 20;
 
 bool same_lens(const Lens& a, const Lens& b) {
-  return a.type == b.type && a.r_pp == b.r_pp && a.k == b.k && a.cx == b.cx && a.cy == b.cy &&
-         a.fov_deg == b.fov_deg && a.width == b.width && a.height == b.height;
+  return a.type == b.type && a.r_pp == b.r_pp && a.k == b.k && a.cx == b.cx && a.cy == b.cy && a.fov_deg == b.fov_deg &&
+         a.width == b.width && a.height == b.height;
 }
 bool same_view(const View& a, const View& b) {
   return a.width == b.width && a.height == b.height && a.fov_deg == b.fov_deg && a.yaw_deg == b.yaw_deg &&
@@ -135,10 +135,11 @@ void TunerState::rebase(const TunerParams& p) {
 }
 
 void export_lut(const cv::Mat& map, const TunerParams& p, const std::filesystem::path& path) {
-  if (map.type() != CV_32FC2 || !map.isContinuous()) throw std::invalid_argument("export_lut needs a continuous CV_32FC2 map");
-  nlohmann::json h = {{"format", "benchscope-lut"}, {"version", 1},   {"width", map.cols},
-                      {"height", map.rows},       {"dtype", "float32"}, {"channels", 2},
-                      {"byte_order", "little"},   {"invalid", -1},      {"lens", tuner_to_json(p)}};
+  if (map.type() != CV_32FC2 || !map.isContinuous())
+    throw std::invalid_argument("export_lut needs a continuous CV_32FC2 map");
+  nlohmann::json h = {{"format", "benchscope-lut"}, {"version", 1},       {"width", map.cols},
+                      {"height", map.rows},         {"dtype", "float32"}, {"channels", 2},
+                      {"byte_order", "little"},     {"invalid", -1},      {"lens", tuner_to_json(p)}};
   const std::string header = h.dump();
   std::ofstream f(path, std::ios::binary);
   if (!f) throw std::runtime_error(path.string() + ": cannot open for writing");
@@ -177,7 +178,8 @@ cv::Mat read_lut(const std::filesystem::path& path, nlohmann::json* header_out) 
   if (!h.is_object() || h.value("format", "") != "benchscope-lut") throw fail("header/format: not benchscope-lut");
   if (h.value("dtype", "") != "float32" || h.value("channels", 0) != 2 || h.value("byte_order", "") != "little")
     throw fail("header: only float32, 2 channels, little-endian is supported");
-  if (!h.contains("width") || !h["width"].is_number_integer() || !h.contains("height") || !h["height"].is_number_integer())
+  if (!h.contains("width") || !h["width"].is_number_integer() || !h.contains("height") ||
+      !h["height"].is_number_integer())
     throw fail("header/width, header/height: expected integers");
   const long long w = h["width"].get<long long>(), hh = h["height"].get<long long>();
   if (w <= 0 || hh <= 0 || w > 65536 || hh > 65536) throw fail("header: width/height out of range");
@@ -185,7 +187,8 @@ cv::Mat read_lut(const std::filesystem::path& path, nlohmann::json* header_out) 
   if (12ull + n + payload != size)
     throw fail("payload is " + std::to_string(size - 12 - n) + " bytes, header says " + std::to_string(payload));
   cv::Mat map(static_cast<int>(hh), static_cast<int>(w), CV_32FC2);
-  if (!f.read(reinterpret_cast<char*>(map.data), static_cast<std::streamsize>(payload))) throw fail("truncated payload");
+  if (!f.read(reinterpret_cast<char*>(map.data), static_cast<std::streamsize>(payload)))
+    throw fail("truncated payload");
   if (header_out) *header_out = std::move(h);
   return map;
 }

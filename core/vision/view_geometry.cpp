@@ -24,7 +24,7 @@ std::optional<cv::Point2d> output_of(const Lens& lens, const View& view, double 
   const cv::Vec3d ray(std::cos(*theta), r > 0 ? s * dx / r : 0.0, r > 0 ? s * dz / r : 0.0);
   // The inverse of the rotation source_of() applies (lens.cpp): back into the view's frame.
   const cv::Vec3d u = view_rotation(view).t() * ray;
-  if (u[0] <= 1e-12) return std::nullopt;           // behind the image plane
+  if (u[0] <= 1e-12) return std::nullopt;  // behind the image plane
   const double f = view.focal_px();
   double x = f * u[1] / u[0] + (view.width - 1) / 2.0;
   double y = (view.height - 1) / 2.0 - f * u[2] / u[0];

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QFile>
-#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QTest>
 #include <map>
@@ -13,8 +13,8 @@
 namespace {
 
 using Result = bs::test::CliResult;
-using bs::test::cli;
 using bs::test::bytes_of;
+using bs::test::cli;
 
 const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
 
@@ -92,7 +92,8 @@ class TestCli : public QObject {
       QCOMPARE(o["origin"].toString(), QString("reconstructed"));
       if (e.reported > 0) {
         QCOMPARE(rounded(o["reported_flops"].toDouble(), e.unit), e.reported);
-        QVERIFY(std::abs(o["ratio_to_reported"].toDouble() - o["peak_flops"].toDouble() / (e.reported * e.unit)) < 1e-9);
+        QVERIFY(std::abs(o["ratio_to_reported"].toDouble() - o["peak_flops"].toDouble() / (e.reported * e.unit)) <
+                1e-9);
       } else {
         QVERIFY(o["reported_flops"].isNull());
       }
@@ -128,7 +129,8 @@ class TestCli : public QObject {
   void bad_files_fail_cleanly_and_leave_the_workspace_unchanged_data() {
     QTest::addColumn<QByteArray>("content");
     QTest::newRow("empty") << QByteArray();
-    QTest::newRow("truncated") << QByteArray("{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": [{\"platform\"");
+    QTest::newRow("truncated") << QByteArray(
+        "{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": [{\"platform\"");
     QTest::newRow("nan") << QByteArray(
         "{\"format\":\"benchscope-run\",\"version\":1,\"runs\":[{\"platform\":\"p\",\"device\":\"d\",\"backend\":\"b\","
         "\"params\":{\"iterations\":1,\"dims\":1},\"samples\":[{\"workers\":1,\"seconds\":[NaN]}]}]}");
@@ -168,8 +170,8 @@ class TestCli : public QObject {
   void run_flops_writes_a_measured_run() {
     QTemporaryDir dir;
     const QString json = dir.filePath("run.json"), ws = dir.filePath("w.bsw");
-    const Result r = cli({"run", "flops", "--workers", "1,4,16", "--points", "1,4", "--iterations", "500",
-                          "--repeats", "2", "--out", json, "--workspace", ws, "--quiet"});
+    const Result r = cli({"run", "flops", "--workers", "1,4,16", "--points", "1,4", "--iterations", "500", "--repeats",
+                          "2", "--out", json, "--workspace", ws, "--quiet"});
     QCOMPARE(r.code, 0);
     QVERIFY(r.out.contains("D = 4: peak") && r.out.contains("% of"));
     const QJsonArray rows = QJsonDocument::fromJson(cli({"peaks", json, "--json"}).out).object()["rows"].toArray();
@@ -201,7 +203,8 @@ class TestCli : public QObject {
       QCOMPARE(rounded(w, 1.0), t["platform"].toString() == "NUC" ? 40.52 : 9.48);
       QCOMPARE(t["origin"].toString(), QString("reconstructed"));
     }
-    const QJsonArray eff = QJsonDocument::fromJson(cli({"efficiency", ws, "--json"}).out).object()["platforms"].toArray();
+    const QJsonArray eff =
+        QJsonDocument::fromJson(cli({"efficiency", ws, "--json"}).out).object()["platforms"].toArray();
     QCOMPARE(eff.size(), 2);
     for (const auto& v : eff) {
       const QJsonObject e = v.toObject();
@@ -210,8 +213,8 @@ class TestCli : public QObject {
     const Result nuc = cli({"battery", "--power-log", kPaper + "/power/nuc-current.csv", "--json"});
     QCOMPARE(nuc.code, 0);
     QCOMPARE(rounded(QJsonDocument::fromJson(nuc.out).object()["runtime_min"].toDouble(), 1.0), 84.36);
-    const Result jetson = cli({"battery", "--volts", "14.8", "--capacity-mah", "3850", "--power-log",
-                               kPaper + "/power/jetson-current.csv"});
+    const Result jetson = cli(
+        {"battery", "--volts", "14.8", "--capacity-mah", "3850", "--power-log", kPaper + "/power/jetson-current.csv"});
     QVERIFY2(jetson.out.contains("360.48 min"), jetson.out.constData());
     QCOMPARE(cli({"battery", "--watts", "0"}).code, 2);
     QCOMPARE(cli({"battery"}).code, 2);
@@ -234,8 +237,8 @@ class TestCli : public QObject {
     QCOMPARE(paper.code, 0);
     QCOMPARE(rounded(minutes(paper)["NUC"], 1.0), 84.36);
     QCOMPARE(rounded(minutes(paper)["Jetson TX2"], 1.0), 360.48);
-    const Result saved = cli({"battery", "--workspace", ws, "--capacity-mah", "5000", "--dod", "0.8", "--extra-load", "60",
-                              "--save-preset", "robot pack", "--json"});
+    const Result saved = cli({"battery", "--workspace", ws, "--capacity-mah", "5000", "--dod", "0.8", "--extra-load",
+                              "60", "--save-preset", "robot pack", "--json"});
     QCOMPARE(saved.code, 0);
     QVERIFY(saved.err.contains("saved battery preset 'robot pack'"));
     // The saved preset's pack, depth of discharge and extra load come back as the defaults.
@@ -245,7 +248,8 @@ class TestCli : public QObject {
     QVERIFY(std::abs(minutes(robot)["NUC"] - 14.8 * 5.0 * 0.8 / (40.524 + 60) * 60) < 0.01);
     const Result given = cli({"battery", "--workspace", ws, "--preset", "robot pack", "--watts", "10", "--json"});
     QCOMPARE(given.code, 0);
-    QVERIFY(std::abs(QJsonDocument::fromJson(given.out).object()["runtime_min"].toDouble() - 14.8 * 5.0 * 0.8 / 70 * 60) < 1e-6);
+    QVERIFY(std::abs(QJsonDocument::fromJson(given.out).object()["runtime_min"].toDouble() -
+                     14.8 * 5.0 * 0.8 / 70 * 60) < 1e-6);
     QCOMPARE(cli({"battery", "--preset", "robot pack", "--watts", "10"}).code, 2);  // not a built-in
     QCOMPARE(cli({"battery", "--workspace", dir.filePath("missing.bsw")}).code, 2);
     QCOMPARE(cli({"battery", "--save-preset", "x", "--watts", "10"}).code, 2);

@@ -12,9 +12,8 @@
 
 namespace {
 
-using bs::test::run_cli;
 using bs::test::bytes_of;
-
+using bs::test::run_cli;
 
 }  // namespace
 

@@ -3,11 +3,11 @@
 // exit code 3; the same build measured again (noise only) passes with 0; --json carries the verdicts.
 #include <random>
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
-#include <QFile>
 #include <QTest>
 
 #include "../support/cli_harness.h"
@@ -16,7 +16,6 @@ namespace {
 
 using bs::test::run_cli;
 
-
 // A run JSON v1 file with one OpenCL run, 8 repetitions per worker count, times scaled by `slowdown`.
 QString write_run(const QString& path, double slowdown, unsigned seed) {
   std::mt19937 rng(seed);
@@ -24,10 +23,12 @@ QString write_run(const QString& path, double slowdown, unsigned seed) {
   QJsonArray samples;
   for (int w : {1024, 2048, 4096}) {
     QJsonArray seconds;
-    for (int k = 0; k < 8; ++k) seconds.append(1e-3 * w / 1024.0 * (w == 4096 ? 0.8 : 1.0) * (1 + slowdown) * (1 + noise(rng)));
+    for (int k = 0; k < 8; ++k)
+      seconds.append(1e-3 * w / 1024.0 * (w == 4096 ? 0.8 : 1.0) * (1 + slowdown) * (1 + noise(rng)));
     samples.append(QJsonObject{{"workers", w}, {"seconds", seconds}});
   }
-  const QJsonObject run{{"platform", "robot"}, {"device", "GPU"}, {"device_kind", "gpu"}, {"backend", "OpenCL"},
+  const QJsonObject run{{"platform", "robot"},    {"device", "GPU"},
+                        {"device_kind", "gpu"},   {"backend", "OpenCL"},
                         {"kernel", "rotation2d"}, {"params", QJsonObject{{"dims", 4}, {"iterations", 40000}}},
                         {"samples", samples}};
   QFile f(path);

@@ -19,15 +19,17 @@ class TestCliDnn : public QObject {
  private slots:
   void architecture_timing_is_stored_and_labelled() {
     const QString ws = dir_.filePath("dnn.bsw");
-    const auto r = cli({"bench", "dnn", "--arch", "mobilenet-ssd", "--input", "128x128", "--runs", "3", "--backend", "all",
-                        "--platform", "robot", "--workspace", ws});
+    const auto r = cli({"bench", "dnn", "--arch", "mobilenet-ssd", "--input", "128x128", "--runs", "3", "--backend",
+                        "all", "--platform", "robot", "--workspace", ws});
     QVERIFY2(r.code == 0, r.err.constData());
     const QString out = QString::fromUtf8(r.out);
     QVERIFY2(out.contains("architecture timing: no detections"), r.out.constData());
     QVERIFY(out.contains("load average before"));
     // Targets that cannot run here are named with the reason (on Debian's OpenCV at least CUDA).
     for (const bs::vision::DnnTarget& t : bs::vision::dnn_targets())
-      if (!t.available) QVERIFY2(out.contains(QString::fromStdString("target " + t.id + ": not available: " + t.why_not)), r.out.constData());
+      if (!t.available)
+        QVERIFY2(out.contains(QString::fromStdString("target " + t.id + ": not available: " + t.why_not)),
+                 r.out.constData());
     const bs::Workspace w(ws.toStdString());
     const auto runs = w.dnn_runs();
     QVERIFY(!runs.empty());
@@ -45,8 +47,9 @@ class TestCliDnn : public QObject {
     QVERIFY2(imp.code == 0, imp.err.constData());
     const auto p = cli({"platforms", ws});
     QVERIFY2(p.code == 0, p.err.constData());
-    QVERIFY2(p.out.contains("Detection network inference") && p.out.contains("mobilenet-ssd (SSD), architecture timing"),
-             p.out.constData());
+    QVERIFY2(
+        p.out.contains("Detection network inference") && p.out.contains("mobilenet-ssd (SSD), architecture timing"),
+        p.out.constData());
   }
 
   void usage_errors() {

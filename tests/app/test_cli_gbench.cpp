@@ -24,7 +24,8 @@ Result cli(const QStringList& args) {
   QProcess p;
   p.start(kCli, args);
   p.waitForFinished(120000);
-  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
+  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+          p.readAllStandardError()};
 }
 
 QJsonObject row_named(const QJsonArray& rows, const QString& variant) {

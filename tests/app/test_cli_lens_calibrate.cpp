@@ -22,12 +22,12 @@ class TestCliLensCalibrate : public QObject {
     // The paper's 195 degree equidistant lens at half size (640x512), seven poses from a file.
     QFile poses(dir.filePath("poses.txt"));
     QVERIFY(poses.open(QIODevice::WriteOnly));
-    poses.write("# rx,ry,rz,tx,ty,tz\n0,0,0,250,0,0\n0,0,45,220,220,0\n0,0,-45,220,-220,0\n0,-40,0,230,0,200\n"
-                "0,40,0,230,0,-200\n20,-30,35,230,150,130\n-20,30,-35,230,-150,-130\n");
+    poses.write(
+        "# rx,ry,rz,tx,ty,tz\n0,0,0,250,0,0\n0,0,45,220,220,0\n0,0,-45,220,-220,0\n0,-40,0,230,0,200\n"
+        "0,40,0,230,0,-200\n20,-30,35,230,150,130\n-20,30,-35,230,-150,-130\n");
     poses.close();
-    auto r = cli({"synth-frame", "--scene", "checkerboard", "--size", "640x512", "--poses", poses.fileName(),
-                  "--board", "10x7", "--square", "30", "--supersample", "2", "--noise", "1", "--out",
-                  dir.filePath("cb/view")});
+    auto r = cli({"synth-frame", "--scene", "checkerboard", "--size", "640x512", "--poses", poses.fileName(), "--board",
+                  "10x7", "--square", "30", "--supersample", "2", "--noise", "1", "--out", dir.filePath("cb/view")});
     QVERIFY2(r.code == 0, r.err.constData());
     QVERIFY(r.out.contains("view-07.png (640x512, 8-bit grey)"));
     QFile truth_file(dir.filePath("cb/view.json"));
@@ -38,8 +38,13 @@ class TestCliLensCalibrate : public QObject {
 
     QStringList args{"lens", "calibrate"};
     for (int i = 1; i <= 7; ++i) args << dir.filePath(QString("cb/view-0%1.png").arg(i));
-    args << dir.filePath("cb/missing.png") << "--board" << "10x7" << "--square" << "30" << "--model"
-         << "equidistant" << "--out" << dir.filePath("lens.json");
+    args << dir.filePath("cb/missing.png") << "--board"
+         << "10x7"
+         << "--square"
+         << "30"
+         << "--model"
+         << "equidistant"
+         << "--out" << dir.filePath("lens.json");
     r = cli(args);
     QVERIFY2(r.code == 0, r.err.constData());
     QVERIFY2(r.out.contains("missing.png  rejected: no such file"), r.out.constData());
@@ -62,9 +67,11 @@ class TestCliLensCalibrate : public QObject {
     QCOMPARE(cli({"lens", "calibrate", "a.png", "--square", "30", "--out", "x.json"}).code, 2);  // no --board
     QCOMPARE(cli({"lens", "calibrate", "a.png", "--board", "10x7", "--square", "30"}).code, 2);  // no --out
     QCOMPARE(cli({"lens", "calibrate", "a.png", "--board", "10x7", "--square", "30", "--model", "pinhole", "--out",
-                  "x.json"}).code, 2);
+                  "x.json"})
+                 .code,
+             2);
     QCOMPARE(cli({"synth-frame", "--scene", "checkerboard", "--out", "x"}).code, 2);  // no pose
-    QCOMPARE(cli({"synth-frame", "--out", "x", "--board", "10x7"}).code, 2);           // board without the scene
+    QCOMPARE(cli({"synth-frame", "--out", "x", "--board", "10x7"}).code, 2);          // board without the scene
     const auto r = cli({"lens", "calibrate", "nothere.png", "--board", "10x7", "--square", "30", "--out", "x.json"});
     QCOMPARE(r.code, 1);
     QVERIFY(r.err.contains("nothere.png: no such file"));

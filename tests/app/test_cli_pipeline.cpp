@@ -19,7 +19,6 @@ namespace {
 using Result = bs::test::CliResult;
 using bs::test::cli;
 
-
 }  // namespace
 
 class TestCliPipeline : public QObject {
@@ -39,15 +38,17 @@ class TestCliPipeline : public QObject {
 
   void table_figures_and_workspace() {
     const QString figs = dir_.filePath("figs"), ws = dir_.filePath("w.bsw");
-    const Result r = cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "6", "--detector", "none",
-                          "--demosaic", "mhc", "--out", figs, "--workspace", ws, "--platform", "test-robot"});
+    const Result r = cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "6", "--detector", "none", "--demosaic",
+                          "mhc", "--out", figs, "--workspace", ws, "--platform", "test-robot"});
     QVERIFY2(r.code == 0, r.err.constData());
     for (const char* want : {"stage", "mean ± SD (ms)", "p95 (ms)", "preprocess", "end-to-end", "throughput:", " fps",
                              "6 frames processed"})
       QVERIFY2(r.out.contains(want), qPrintable(QString(want) + "\n" + r.out));
     QVERIFY(!r.out.contains("detect "));  // --detector none: no detection stage
     // Figure 3: mosaic as grey at the sensor size, then colour images.
-    const auto read = [&](const char* name) { return cv::imread((figs + "/" + name).toStdString(), cv::IMREAD_UNCHANGED); };
+    const auto read = [&](const char* name) {
+      return cv::imread((figs + "/" + name).toStdString(), cv::IMREAD_UNCHANGED);
+    };
     const cv::Mat raw = read("fig3-raw.png"), dem = read("fig3-demosaiced.png"), rep = read("fig3-reprojected.png");
     QCOMPARE(raw.size(), cv::Size(320, 256));
     QCOMPARE(raw.channels(), 1);
@@ -111,18 +112,21 @@ class TestCliPipeline : public QObject {
 
   void bench_pipeline_prints_both_throughputs() {
     // Two frames at a small scale: checks the report's shape and arithmetic inputs, not any speed.
-    const Result r = cli({"bench", "pipeline", "--frames", "2", "--rounds", "1", "--detect-workers", "2", "--detect-scale", "0.25"});
+    const Result r =
+        cli({"bench", "pipeline", "--frames", "2", "--rounds", "1", "--detect-workers", "2", "--detect-scale", "0.25"});
     QVERIFY2(r.code == 0, r.err.constData());
-    for (const char* want : {"sequential (one thread", "concurrent pipeline (capture, preprocessing, 2 detection workers)",
-                             "(n = 2)", "concurrent / sequential = ", "theoretical bound: ", "default threading",
-                             "HOG people detector at scale 0.25 (320x256)"})
+    for (const char* want :
+         {"sequential (one thread", "concurrent pipeline (capture, preprocessing, 2 detection workers)", "(n = 2)",
+          "concurrent / sequential = ", "theoretical bound: ", "default threading",
+          "HOG people detector at scale 0.25 (320x256)"})
       QVERIFY2(r.out.contains(want), qPrintable(QString(want) + "\n" + r.out));
   }
 
   void grey_png_frame() {
     // The figure's grey mosaic is itself a valid frame (PNG, one channel, pattern BGGR by default).
     const QString figs = dir_.filePath("figs2");
-    QVERIFY(cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "1", "--detector", "none", "--out", figs}).code == 0);
+    QVERIFY(cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "1", "--detector", "none", "--out", figs}).code ==
+            0);
     const Result r = cli({"pipeline", figs + "/fig3-raw.png", "--lens", sidecar_, "--frames", "2", "--detector", "none",
                           "--demosaic", "opencv", "--policy", "drop-oldest"});
     QVERIFY2(r.code == 0, r.err.constData());
@@ -130,8 +134,8 @@ class TestCliPipeline : public QObject {
   }
 
   void opencl_backend() {
-    const Result r = cli({"pipeline", raw_, "--lens", sidecar_, "--frames", "3", "--detector", "none", "--backend",
-                          "opencl", "--json"});
+    const Result r = cli(
+        {"pipeline", raw_, "--lens", sidecar_, "--frames", "3", "--detector", "none", "--backend", "opencl", "--json"});
     if (r.code == 1 && r.err.contains("OpenCL:")) QSKIP(r.err.constData());  // no OpenCL device on this machine
     QVERIFY2(r.code == 0, r.err.constData());
     const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
@@ -144,8 +148,8 @@ class TestCliPipeline : public QObject {
     // With a GPU (and nvcc at build time) the run succeeds on it; otherwise it fails at once with the reason the
     // library gives, never with a crash or a silent CPU fallback.
     const std::string why = bs::vision::cuda_preprocessing_unavailable();
-    const Result r = cli({"pipeline", raw_, "--lens", sidecar_, "--backend", "cuda", "--detector", "none", "--frames", "2",
-                          "--json"});
+    const Result r = cli(
+        {"pipeline", raw_, "--lens", sidecar_, "--backend", "cuda", "--detector", "none", "--frames", "2", "--json"});
     if (why.empty()) {
       QVERIFY2(r.code == 0, r.err.constData());
       const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
@@ -153,7 +157,8 @@ class TestCliPipeline : public QObject {
       QVERIFY(doc["device"].toString().contains("(CUDA)"));
     } else {
       QCOMPARE(r.code, 1);
-      QVERIFY2(QString::fromUtf8(r.err).contains("CUDA preprocessing: " + QString::fromStdString(why)), r.err.constData());
+      QVERIFY2(QString::fromUtf8(r.err).contains("CUDA preprocessing: " + QString::fromStdString(why)),
+               r.err.constData());
     }
   }
 
@@ -179,7 +184,9 @@ class TestCliPipeline : public QObject {
         {{"pipeline", raw_, "--lens", sidecar_, "--frames", "0"}, 2, "--frames"},
         {{"pipeline", raw_, "--lens", sidecar_, "--bogus"}, 2, "--bogus"},
         {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "0"}, 2, "--detect-workers must be a whole number"},
-        {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "1.5"}, 2, "--detect-workers must be a whole number"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "1.5"},
+         2,
+         "--detect-workers must be a whole number"},
         {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "9999"}, 2, "from 1 to 256"},
         {{"pipeline", raw_, "--lens", sidecar_, "--detect-workers", "two"}, 2, "--detect-workers expects a number"},
         {{"pipeline", raw_, "--lens", sidecar_, "--detect-scale", "0"}, 2, "--detect-scale must be greater than 0"},
@@ -193,7 +200,9 @@ class TestCliPipeline : public QObject {
         {{"pipeline", dir_.filePath("short.raw"), "--lens", sidecar_}, 1, "short.raw: is 100 bytes"},
         {{"pipeline", raw_, "--lens", "paper"}, 1, "but the lens is for 1280x1024"},
         {{"pipeline", dir_.filePath("f-truth.png"), "--lens", sidecar_}, 1, "channels"},
-        {{"pipeline", raw_, "--lens", sidecar_, "--detector", dir_.filePath("missing.onnx")}, 1, "missing.onnx: no such model file"},
+        {{"pipeline", raw_, "--lens", sidecar_, "--detector", dir_.filePath("missing.onnx")},
+         1,
+         "missing.onnx: no such model file"},
     };
     for (const Case& c : cases) {
       const Result r = cli(c.args);

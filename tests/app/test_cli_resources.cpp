@@ -3,8 +3,8 @@
 // with PREFIX/share/benchscope/resources, before the source tree it was built from; $BENCHSCOPE_RESOURCE_DIR first.
 #include <QDir>
 #include <QFile>
-#include <QJsonDocument>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -37,7 +37,8 @@ class TestCliResources : public QObject {
     fs::create_directories(root / "bin");
     fs::create_directories(root / "share/benchscope");
     fs::copy_file(kCli.toStdString(), root / "bin/benchscope-cli");
-    fs::copy(fs::path(BENCHSCOPE_SOURCE_DIR) / "resources", root / "share/benchscope/resources", fs::copy_options::recursive);
+    fs::copy(fs::path(BENCHSCOPE_SOURCE_DIR) / "resources", root / "share/benchscope/resources",
+             fs::copy_options::recursive);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.remove("BENCHSCOPE_RESOURCE_DIR");
     const QString installed = QString::fromStdString((root / "bin/benchscope-cli").string());

@@ -33,7 +33,8 @@ Result cli(const QStringList& args) {
   no_nvml(p);
   p.start(kCli, args);
   p.waitForFinished(120000);
-  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
+  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+          p.readAllStandardError()};
 }
 
 QByteArray bytes_of(const QString& path) {
@@ -59,7 +60,8 @@ class TestCliSensors : public QObject {
     const Result r = cli({"sensors", "--sysfs-root", dir.path()});
     QCOMPARE(r.code, 0);
     QVERIFY2(r.out.startsWith("no power sensors found"), r.out.constData());
-    const Result rec = cli({"record-power", "--sysfs-root", dir.path(), "--out", dir.filePath("x.csv"), "--seconds", "0.1"});
+    const Result rec =
+        cli({"record-power", "--sysfs-root", dir.path(), "--out", dir.filePath("x.csv"), "--seconds", "0.1"});
     QCOMPARE(rec.code, 2);
     QVERIFY(rec.err.contains("no power sensors found"));
   }
@@ -87,7 +89,8 @@ class TestCliSensors : public QObject {
     QTemporaryDir dir;
     nano(dir.path());
     const QString csv = dir.filePath("nano.csv");
-    const Result r = cli({"record-power", "--sysfs-root", dir.path(), "--out", csv, "--seconds", "0.5", "--interval-ms", "50"});
+    const Result r =
+        cli({"record-power", "--sysfs-root", dir.path(), "--out", csv, "--seconds", "0.5", "--interval-ms", "50"});
     QCOMPARE(r.code, 0);
     // Constant 3.96 W: the whole recording's mean power is exactly that.
     QVERIFY2(r.out.contains("mean 3.960 W"), r.out.constData());
@@ -108,12 +111,13 @@ class TestCliSensors : public QObject {
     QTemporaryDir dir;
     nano(dir.path());
     const QString csv = dir.filePath("cmd.csv");
-    const Result r = cli({"record-power", "--sysfs-root", dir.path(), "--out", csv, "--interval-ms", "20", "--",
-                          "sh", "-c", "sleep 0.2; exit 3"});
+    const Result r = cli({"record-power", "--sysfs-root", dir.path(), "--out", csv, "--interval-ms", "20", "--", "sh",
+                          "-c", "sleep 0.2; exit 3"});
     QCOMPARE(r.code, 3);
     QVERIFY(bytes_of(csv).contains("# phase: sh = 0."));
     QCOMPARE(cli({"record-power", "--sysfs-root", dir.path(), "--out", csv, "--", "/no/such/program"}).code, 127);
-    QCOMPARE(cli({"record-power", "--sysfs-root", dir.path(), "--out", csv}).code, 2);  // neither --seconds nor a command
+    QCOMPARE(cli({"record-power", "--sysfs-root", dir.path(), "--out", csv}).code,
+             2);  // neither --seconds nor a command
   }
 
   void ctrl_c_keeps_what_was_recorded() {
@@ -141,9 +145,29 @@ class TestCliSensors : public QObject {
     QTemporaryDir dir;
     nano(dir.path());
     const QString json = dir.filePath("run.json");
-    const Result r = cli({"run", "flops", "--backend", "cpu", "--points", "4", "--workers", "64,128", "--iterations",
-                          "20000", "--repeats", "2", "--power", "auto", "--power-interval-ms", "10", "--sysfs-root",
-                          dir.path(), "--out", json, "--workspace", dir.filePath("w.bsw"), "--quiet"});
+    const Result r = cli({"run",
+                          "flops",
+                          "--backend",
+                          "cpu",
+                          "--points",
+                          "4",
+                          "--workers",
+                          "64,128",
+                          "--iterations",
+                          "20000",
+                          "--repeats",
+                          "2",
+                          "--power",
+                          "auto",
+                          "--power-interval-ms",
+                          "10",
+                          "--sysfs-root",
+                          dir.path(),
+                          "--out",
+                          json,
+                          "--workspace",
+                          dir.filePath("w.bsw"),
+                          "--quiet"});
     QVERIFY2(r.code == 0, r.err.constData());
     QVERIFY2(r.out.contains("energy per sweep point (on-board sensor: ina3221 POM_5V_IN"), r.out.constData());
     QVERIFY(r.out.contains("warm-up D=4") && r.out.contains("point W=128 D=4"));

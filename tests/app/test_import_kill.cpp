@@ -28,7 +28,8 @@ void write_log(const QString& path, int file) {
   QByteArray text = "# round: 000000\n# platform: NUC\n# supply_voltage_V: 16\ntime_s,current_A\n";
   text.reserve(kRows * 20);
   for (int i = 0; i < kRows; ++i)
-    text += QByteArray::number(i * 0.001, 'f', 3) + ',' + QByteArray::number(2.5 + 0.001 * ((i * 37 + file) % 500), 'f', 3) + '\n';
+    text += QByteArray::number(i * 0.001, 'f', 3) + ',' +
+            QByteArray::number(2.5 + 0.001 * ((i * 37 + file) % 500), 'f', 3) + '\n';
   QVERIFY(f.write(text) == text.size());
 }
 
@@ -101,8 +102,10 @@ class TestImportKill : public QObject {
       imports = now;
     }
     // Most kills must have hit a running import, or the test proves nothing.
-    QVERIFY2(killed_mid_way >= kKills / 2, qPrintable(QString("only %1 kills hit a running import").arg(killed_mid_way)));
-    qInfo("%d of %d kills hit a running import; the workspace holds %zu whole imports", killed_mid_way, kKills, imports);
+    QVERIFY2(killed_mid_way >= kKills / 2,
+             qPrintable(QString("only %1 kills hit a running import").arg(killed_mid_way)));
+    qInfo("%d of %d kills hit a running import; the workspace holds %zu whole imports", killed_mid_way, kKills,
+          imports);
   }
 };
 

@@ -32,9 +32,9 @@ class TestDevicePalette : public QObject {
     const auto colors = bs::ui::platform_color_indices({{"NUC", 3}, {"NUC", 1}, {"Jetson", 0}, {"NUC", 5}},
                                                        {"RobotPC", "NUC", "Jetson", "Alpha"});
     const std::map<std::string, int> got(colors.begin(), colors.end());
-    QCOMPARE(got.at("NUC"), 1);     // its first device's colour
+    QCOMPARE(got.at("NUC"), 1);  // its first device's colour
     QCOMPARE(got.at("Jetson"), 0);
-    QCOMPARE(got.at("Alpha"), 2);   // power logs only: free indices in name order
+    QCOMPARE(got.at("Alpha"), 2);  // power logs only: free indices in name order
     QCOMPARE(got.at("RobotPC"), 4);
     QCOMPARE(got.size(), std::size_t{4});
   }

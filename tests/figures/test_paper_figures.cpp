@@ -1,18 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `figures` on the paper's sample data: every figure in every format, valid and at the journal size (PDF page in
 // mm, one page, fonts embedded; SVG parses and keeps its labels as text; PNG pixels = dpi x size), the series and
-// labels each figure must show, the tables' published numbers, figures.json, cancellation and a template whose data is missing.
+// labels each figure must show, the tables' published numbers, figures.json, cancellation and a template whose data is
+// missing.
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include <QXmlStreamReader>
-#include <QDir>
-#include <QFileInfo>
 #include <QTest>
+#include <QXmlStreamReader>
 
 #include <chrono>
 #include <thread>
@@ -39,7 +40,8 @@ struct PdfInfo {
 PdfInfo pdf_info(const QByteArray& pdf) {
   PdfInfo info;
   const QString text = QString::fromLatin1(pdf);
-  const auto box = QRegularExpression(R"(/MediaBox\s*\[\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s*\])").match(text);
+  const auto box =
+      QRegularExpression(R"(/MediaBox\s*\[\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)\s*\])").match(text);
   if (box.hasMatch())
     info.page_pt = QSizeF(box.captured(3).toDouble() - box.captured(1).toDouble(),
                           box.captured(4).toDouble() - box.captured(2).toDouble());
@@ -107,8 +109,8 @@ class TestPaperFigures : public QObject {
         QVERIFY2(files_.contains(path), qPrintable(path));
         QVERIFY2(QFileInfo(path).size() > 1000, qPrintable(path));
       }
-    for (const char* name : {"table1.tex", "table1.csv", "table2.tex", "table2.csv", "platforms.tex", "platforms.csv",
-                             "figures.json"})
+    for (const char* name :
+         {"table1.tex", "table1.csv", "table2.tex", "table2.csv", "platforms.tex", "platforms.csv", "figures.json"})
       QVERIFY2(files_.contains(dir_.filePath(name)), name);
   }
 
@@ -118,7 +120,8 @@ class TestPaperFigures : public QObject {
       QVERIFY(pdf.startsWith("%PDF-"));
       const PdfInfo info = pdf_info(pdf);
       QCOMPARE(info.pages, 1);
-      QVERIFY2(std::abs(info.page_pt.width() / kPtPerMm - 122.0) < 0.6, qPrintable(QString::number(info.page_pt.width())));
+      QVERIFY2(std::abs(info.page_pt.width() / kPtPerMm - 122.0) < 0.6,
+               qPrintable(QString::number(info.page_pt.width())));
       QVERIFY(info.page_pt.height() > 20 * kPtPerMm && info.page_pt.height() < 122 * kPtPerMm);
       QVERIFY(std::abs(info.page_pt.height() / kPtPerMm - listed_height_mm(id)) < 0.6);  // as figures.json says
       QVERIFY2(info.fonts_embedded, id);  // text stays text, in an embedded font
@@ -190,8 +193,8 @@ class TestPaperFigures : public QObject {
       QTemporaryDir out;
       bs::ui::FigureOptions o;
       o.formats = {"svg"};
-      const auto result = bs::ui::render_figures(templates, bs::ui::select_figure_data(d, choice), out.path(), o,
-                                                 bs::CancelToken{});
+      const auto result =
+          bs::ui::render_figures(templates, bs::ui::select_figure_data(d, choice), out.path(), o, bs::CancelToken{});
       const QString contents = result.contents.join('\n');
       QVERIFY(contents.contains("RobotPC (not one of the figure's platforms"));
       QCOMPARE(contents.contains("AMD EPYC"), choice == bs::ui::FigureDataChoice::All);
@@ -224,7 +227,8 @@ class TestPaperFigures : public QObject {
   }
 
   void fig3_uses_the_workspace_capture() {
-    auto batch = bs::import_file(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/frames/paper-capture.raw", bs::CancelToken{});
+    auto batch =
+        bs::import_file(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/frames/paper-capture.raw", bs::CancelToken{});
     QCOMPARE(batch.frames.size(), std::size_t{1});
     bs::ui::FigureData d = paper_data();
     d.frame = batch.frames.front();
@@ -249,8 +253,8 @@ class TestPaperFigures : public QObject {
     QTemporaryDir dir;
     bs::CancelToken cancel;
     const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::ui::render_figures(templates, paper_data(), dir.path(), options_, cancel,
-                                                                   [&](int done, int, const QString&) {
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::ui::render_figures(templates, paper_data(), dir.path(), options_,
+                                                                   cancel, [&](int done, int, const QString&) {
                                                                      if (done == 2) cancel.cancel();
                                                                    }));
     QVERIFY(QDir(dir.path()).entryList(QDir::Files).isEmpty());
@@ -260,7 +264,8 @@ class TestPaperFigures : public QObject {
   // or, on a loaded machine, within one step of the export (a figure in one format: a fifth of the whole at most),
   // measured as a ratio so the load slows both sides alike. Unloaded here: 45-90 ms.
   void cancel_is_prompt() {
-    auto batch = bs::import_file(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/frames/paper-capture.raw", bs::CancelToken{});
+    auto batch =
+        bs::import_file(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/frames/paper-capture.raw", bs::CancelToken{});
     bs::ui::FigureData d = paper_data();
     d.frame = batch.frames.front();
     const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());

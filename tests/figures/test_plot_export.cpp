@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // File > Export figure for a plot on screen: the files come out at the chosen journal width and dpi with the
 // figure's font size, and the view gets its own look back afterwards.
+#include <qcustomplot.h>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
-#include <qcustomplot.h>
 
 #include "paper_figures.h"
 #include "plot_export.h"

@@ -2,10 +2,10 @@
 // The report on the paper's sample data: self-contained HTML with the comparison, one section per platform, the
 // paper's numbers and the figures embedded; an A4 PDF with a page per platform; the recommendation under a 10 W
 // budget; nothing left behind when cancelled.
+#include <QDir>
 #include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include <QDir>
 #include <QTest>
 
 #include "../support/paper_sample.h"

@@ -31,7 +31,8 @@ class TestBadCorpus : public QObject {
         if (c.place) QVERIFY2(e.location().line > 0 || !e.location().field.empty(), what.c_str());
         QVERIFY2(what.find('\n') == std::string::npos, what.c_str());  // one line, fit for a terminal or a dialog
         for (const std::string& text : c.contains)
-          QVERIFY2(what.find(text) != std::string::npos, qPrintable(QString::fromStdString(what + "  (expected to contain \"" + text + "\")")));
+          QVERIFY2(what.find(text) != std::string::npos,
+                   qPrintable(QString::fromStdString(what + "  (expected to contain \"" + text + "\")")));
       }
     }
     QVERIFY(bad_dir_files >= 40);

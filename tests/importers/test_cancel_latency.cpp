@@ -34,8 +34,9 @@ void write_big_log(const QString& path, int rows) {
   f.write(chunk);
 }
 
-// Runs `work(cancel)` twice to completion (warm-up, then timed) to learn its duration T, then again cancelling at fractions of T.
-// Returns the worst ratio (time from cancel() to the work ending) / T over the runs that were cancelled.
+// Runs `work(cancel)` twice to completion (warm-up, then timed) to learn its duration T, then again cancelling at
+// fractions of T. Returns the worst ratio (time from cancel() to the work ending) / T over the runs that were
+// cancelled.
 template <class Work>
 double worst_cancel_ratio(Work work, int* cancelled_runs) {
   bs::CancelToken never;
@@ -80,8 +81,8 @@ class TestCancelLatency : public QObject {
     const QString path = dir.filePath("big.csv");
     write_big_log(path, 1'500'000);
     int cancelled = 0;
-    const double ratio = worst_cancel_ratio(
-        [&](const bs::CancelToken& c) { (void)bs::import_file(path.toStdString(), c); }, &cancelled);
+    const double ratio =
+        worst_cancel_ratio([&](const bs::CancelToken& c) { (void)bs::import_file(path.toStdString(), c); }, &cancelled);
     QVERIFY2(cancelled >= 2, "the cancels did not reach a running parse");
     QVERIFY2(ratio < 0.1, qPrintable(QString("cancel took %1 of the whole parse").arg(ratio)));
   }

@@ -70,7 +70,7 @@ class TestClpeakText : public QObject {
     QCOMPARE(find(gpu, "int16", "integer compute")->unit, std::string("1/s"));
     QVERIFY(near(find(gpu, "int16", "integer compute")->values[0], 3757.27e9));
     QVERIFY(near(find(gpu, "double", "double-precision compute")->values[0], 357.79e9));
-    QVERIFY(!find(gpu, "half", "half-precision compute"));  // "No half precision support! Skipped"
+    QVERIFY(!find(gpu, "half", "half-precision compute"));            // "No half precision support! Skipped"
     QCOMPARE(batch.result_sets[1].device_kind, bs::DeviceKind::Cpu);  // PoCL pthread device
     QCOMPARE(batch.result_sets[1].platform, std::string("Portable Computing Language"));
     QVERIFY(batch.warnings.empty());
@@ -87,7 +87,7 @@ class TestClpeakText : public QObject {
     QVERIFY(near(find(gpu, "half2", "half-precision compute")->values[0], 1634.17e9));
     QVERIFY(near(find(gpu, "double", "double-precision compute")->values[0], 203.47e9));
     QVERIFY(!find(gpu, "double2", "double-precision compute"));  // clEnqueueNDRangeKernel (-5)
-    QVERIFY(!find(gpu, "int2", "double-precision compute"));       // the section ended at the failure
+    QVERIFY(!find(gpu, "int2", "double-precision compute"));     // the section ended at the failure
     QVERIFY(near(find(gpu, "int", "integer compute fast 24bit")->values[0], 269.02e9));
     QVERIFY(near(find(gpu, "kernel launch latency", "kernel launch latency")->values[0], 27.81e-6));
     QVERIFY(gpu.provenance.note.find("Driver version: 21.49.21786 (Linux x64)") != std::string::npos);
@@ -106,9 +106,9 @@ class TestClpeakText : public QObject {
     QCOMPARE(gpu.device, std::string("NVIDIA GeForce GTX 1080 Ti"));
     QCOMPARE(gpu.backend, std::string("OpenCL"));
     QVERIFY(near(find(gpu, "float4", "single-precision compute")->values[0], 11455.09e9));  // "(was ...)" ignored
-    QVERIFY(!find(gpu, "half", "half-precision compute"));                                   // [unsupported]
-    QCOMPARE(find(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));       // (GB/s)
-    QVERIFY(near(find(gpu, "launch", "kernel launch latency")->values[0], 5.41e-6));          // (µs)
+    QVERIFY(!find(gpu, "half", "half-precision compute"));                                  // [unsupported]
+    QCOMPARE(find(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));     // (GB/s)
+    QVERIFY(near(find(gpu, "launch", "kernel launch latency")->values[0], 5.41e-6));        // (µs)
     const bs::ResultSet& cpu = batch.result_sets[1];
     QCOMPARE(cpu.backend, std::string("CPU"));
     QCOMPARE(cpu.platform, std::string("CPU"));
@@ -143,8 +143,8 @@ class TestClpeakText : public QObject {
     const auto ok = bs::parse_clpeak_text(
         "Platform: P\r\n  Device: D\r\n    Single-precision compute (GFLOPS)\r\n      float : 1.5\r\n", "c.txt");
     QCOMPARE(ok.result_sets[0].measurements[0].values[0], 1.5e9);
-    const bs::ImportError e = error_of(
-        "Platform: P\n  Device: D\n    Single-precision compute (GFLOPS)\n      float : fast\n");
+    const bs::ImportError e =
+        error_of("Platform: P\n  Device: D\n    Single-precision compute (GFLOPS)\n      float : fast\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::Syntax);
     QCOMPARE(e.location().line, std::size_t{4});
     QCOMPARE(e.location().field, std::string("float"));
@@ -165,8 +165,7 @@ class TestClpeakText : public QObject {
     const bs::ImportError orphan = error_of("  Device: D\n");
     QCOMPARE(orphan.category(), bs::ImportErrorCategory::MissingField);
     QCOMPARE(orphan.location().line, std::size_t{1});
-    const bs::ImportError all_skipped =
-        error_of("Platform: P\n  Device: D\n    No half precision support! Skipped\n");
+    const bs::ImportError all_skipped = error_of("Platform: P\n  Device: D\n    No half precision support! Skipped\n");
     QCOMPARE(all_skipped.category(), bs::ImportErrorCategory::MissingField);
     QCOMPARE(all_skipped.location().line, std::size_t{2});
   }

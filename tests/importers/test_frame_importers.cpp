@@ -171,12 +171,13 @@ class TestFrameImporters : public QObject {
     QCOMPARE(std::memcmp(f.pixels.data(), bytes.data() + bytes.size() - 24, 24), 0);
 
     f = bs::import_file(data + "grey-10bit.pgm", bs::CancelToken{}).frames.at(0);
-    QCOMPARE(f.bit_depth, 10);  // maxval 1023
+    QCOMPARE(f.bit_depth, 10);                 // maxval 1023
     QCOMPARE(f.pattern, std::string("BGGR"));  // the default
     const std::string b10 = read_all(data + "grey-10bit.pgm");
     const std::size_t body = b10.size() - 24;
     for (std::size_t i = 0; i < 12; ++i) {
-      const int expected = (static_cast<unsigned char>(b10[body + 2 * i]) << 8) | static_cast<unsigned char>(b10[body + 2 * i + 1]);
+      const int expected =
+          (static_cast<unsigned char>(b10[body + 2 * i]) << 8) | static_cast<unsigned char>(b10[body + 2 * i + 1]);
       QCOMPARE(int(sample16(f, i)), expected);  // big-endian in the file, host order in memory
     }
     f = bs::import_file(data + "colour-16bit.ppm", bs::CancelToken{}).frames.at(0);

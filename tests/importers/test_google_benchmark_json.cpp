@@ -92,7 +92,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QVERIFY(real);
     QCOMPARE(real->unit, std::string("s"));
     QCOMPARE(real->values.size(), std::size_t{3});  // one per repetition
-    QVERIFY(near(real->values[0], 13.280e-3));       // ms -> s
+    QVERIFY(near(real->values[0], 13.280e-3));      // ms -> s
     QVERIFY(near(real->values[2], 13.442e-3));
     QCOMPARE(real->reported_aggregates.size(), std::size_t{4});  // mean, (repetitions 3), stddev, cv
     QCOMPARE(aggregate(*real, "repetitions"), 3.0);
@@ -111,7 +111,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QVERIFY(copy);
     QCOMPARE(copy->unit, std::string("B/s"));
     QVERIFY(near(find(s, "BM_Copy/1048576", "real_time")->values[0], 206.4e-6));  // us -> s
-    QVERIFY(!find(s, "BM_Rotate/4096", "iterations"));  // bookkeeping, not a counter
+    QVERIFY(!find(s, "BM_Rotate/4096", "iterations"));                            // bookkeeping, not a counter
     QVERIFY(!find(s, "BM_Broken", "real_time"));
     QCOMPARE(batch.warnings.size(), std::size_t{1});
     QVERIFY(batch.warnings[0].find("OpenCL device not found") != std::string::npos);
@@ -168,7 +168,8 @@ class TestGoogleBenchmarkJson : public QObject {
   void bad_time_unit_names_the_field() {
     try {
       bs::parse_google_benchmark_json(
-          "{\"context\":{},\n\"benchmarks\":[{\"name\":\"a\",\"real_time\":1,\"cpu_time\":1,\"time_unit\":\"fortnights\"}]}",
+          "{\"context\":{},\n\"benchmarks\":[{\"name\":\"a\",\"real_time\":1,\"cpu_time\":1,\"time_unit\":"
+          "\"fortnights\"}]}",
           "g.json");
       QFAIL("accepted");
     } catch (const bs::ImportError& e) {
@@ -211,8 +212,9 @@ class TestGoogleBenchmarkJson : public QObject {
     QCOMPARE(s.platform, std::string("LEGION"));
     QCOMPARE(s.device, std::string("CPU (12 x 2994 MHz)"));
     QCOMPARE(s.provenance.tool, std::string("google-benchmark v1.9.3"));
-    QCOMPARE(setting(s.provenance, "caches"),
-             std::string("L1 Data 32 KiB (x2), L1 Instruction 32 KiB (x2), L2 Unified 512 KiB (x2), L3 Unified 4 MiB (x6)"));
+    QCOMPARE(
+        setting(s.provenance, "caches"),
+        std::string("L1 Data 32 KiB (x2), L1 Instruction 32 KiB (x2), L2 Unified 512 KiB (x2), L3 Unified 4 MiB (x6)"));
     QCOMPARE(setting(s.provenance, "num_cpus"), std::string("12"));
     QCOMPARE(setting(s.provenance, "library_build_type"), std::string("release"));
     QCOMPARE(setting(s.provenance, "executable"), std::string("bin\\spla-measure.exe"));
@@ -231,7 +233,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QVERIFY(near(summary->sd, 23701.523609235577e-6));
     QVERIFY(near(summary->min, 17028.600000230654e-6));  // repetition 2
     QVERIFY(near(summary->max, 117996.89999952534e-6));  // repetition 6
-    QVERIFY(find(s, run, "triangles"));  // a user counter without a unit
+    QVERIFY(find(s, run, "triangles"));                  // a user counter without a unit
     QVERIFY(batch.warnings.empty());
     QVERIFY(bs::foreign_sweeps(s).empty());  // no FLOP/s counter: nothing for the FLOPS view
   }
@@ -340,8 +342,8 @@ class TestGoogleBenchmarkJson : public QObject {
     QVERIFY(p && p->family == "BM_X/4096" && p->workers == 1);
     p = bs::sweep_point("BM_X/iterations:10/4/repeats:3/size:16/real_time", 1);
     QVERIFY(p && p->family == "BM_X/iterations:10/4/repeats:3/size:*/real_time" && p->workers == 16);
-    QVERIFY(!bs::sweep_point("BM_X/4/real_time", 1));   // no second argument
-    QVERIFY(!bs::sweep_point("BM_X/0/real_time", 0));   // 0 workers is no worker count
+    QVERIFY(!bs::sweep_point("BM_X/4/real_time", 1));  // no second argument
+    QVERIFY(!bs::sweep_point("BM_X/0/real_time", 0));  // 0 workers is no worker count
     QVERIFY(!bs::sweep_point("BM_X/-2", 0));
     QVERIFY(!bs::sweep_point("BM_X/threads:x", std::nullopt));
   }
@@ -416,8 +418,9 @@ class TestGoogleBenchmarkJson : public QObject {
 
   // items_per_second is a FLOP rate only when the context says an item is a FLOP (SetItemsProcessed(flops)).
   void items_are_flop_only_when_the_file_says_so() {
-    const std::string rows = "\"benchmarks\":[{\"name\":\"BM/threads:2\",\"threads\":2,\"real_time\":1,\"cpu_time\":1,"
-                             "\"items_per_second\":3e9}]}";
+    const std::string rows =
+        "\"benchmarks\":[{\"name\":\"BM/threads:2\",\"threads\":2,\"real_time\":1,\"cpu_time\":1,"
+        "\"items_per_second\":3e9}]}";
     auto batch = bs::parse_google_benchmark_json("{\"context\":{\"benchscope_item\":\"flop\"}," + rows, "i.json");
     QCOMPARE(find(batch.result_sets[0], "BM/threads:2", "items_per_second")->unit, std::string("FLOP/s"));
     const auto runs = bs::foreign_sweeps(batch.result_sets[0]);
@@ -431,14 +434,16 @@ class TestGoogleBenchmarkJson : public QObject {
 
   // A NaN FLOPS counter is missing data: no point, never a 0 FLOPS point.
   void nan_flops_is_missing_not_zero() {
-    const std::string row = "\"name\":\"BM/threads:%\",\"run_type\":\"iteration\",\"threads\":%,\"real_time\":1,"
-                            "\"cpu_time\":1,\"FLOPS\":";
+    const std::string row =
+        "\"name\":\"BM/threads:%\",\"run_type\":\"iteration\",\"threads\":%,\"real_time\":1,"
+        "\"cpu_time\":1,\"FLOPS\":";
     auto r = [&](const char* threads, const std::string& flops) {
       std::string s = row;
       for (auto at = s.find('%'); at != std::string::npos; at = s.find('%')) s.replace(at, 1, threads);
       return s + flops;
     };
-    const auto batch = bs::parse_google_benchmark_json(with_rows({r("1", "2e9"), r("2", "NaN"), r("4", "7e9")}), "n.json");
+    const auto batch =
+        bs::parse_google_benchmark_json(with_rows({r("1", "2e9"), r("2", "NaN"), r("4", "7e9")}), "n.json");
     const auto runs = bs::foreign_sweeps(batch.result_sets.at(0));
     QCOMPARE(runs.size(), std::size_t{1});
     QCOMPARE(runs[0].samples.size(), std::size_t{2});
@@ -452,7 +457,8 @@ class TestGoogleBenchmarkJson : public QObject {
     const std::string r = "\"real_time\":2,\"cpu_time\":2,\"time_unit\":\"ns\",\"iterations\":";
     const auto batch = bs::parse_google_benchmark_json(
         with_rows({"\"name\":\"BM_X\"," + r + "10,\"FLOPS\":4", "\"name\":\"BM_X\"," + r + "10,\"FLOPS\":6",
-                   "\"name\":\"BM_X_mean\"," + r + "2,\"FLOPS\":5", "\"name\":\"BM_X_stddev\"," + r + "2,\"FLOPS\":1.4142"}),
+                   "\"name\":\"BM_X_mean\"," + r + "2,\"FLOPS\":5",
+                   "\"name\":\"BM_X_stddev\"," + r + "2,\"FLOPS\":1.4142"}),
         "o.json");
     const bs::ResultSet& s = batch.result_sets.at(0);
     QVERIFY(!find(s, "BM_X_mean", "FLOPS"));

@@ -146,15 +146,12 @@ class TestImportRegistry : public QObject {
     const struct {
       const char* name;
       bs::ImportErrorCategory category;
-    } expected[] = {{"blob.bin", bs::ImportErrorCategory::Binary},
-                    {"blob.json", bs::ImportErrorCategory::Binary},
-                    {"utf16-bom.json", bs::ImportErrorCategory::Encoding},
-                    {"utf16.json", bs::ImportErrorCategory::Encoding},
-                    {"utf16be.json", bs::ImportErrorCategory::Encoding},
-                    {"utf32.json", bs::ImportErrorCategory::Encoding},
-                    {"utf32-bom.json", bs::ImportErrorCategory::Encoding},
-                    {"notes.txt", bs::ImportErrorCategory::UnknownFormat},
-                    {"missing.json", bs::ImportErrorCategory::Io}};
+    } expected[] = {
+        {"blob.bin", bs::ImportErrorCategory::Binary},         {"blob.json", bs::ImportErrorCategory::Binary},
+        {"utf16-bom.json", bs::ImportErrorCategory::Encoding}, {"utf16.json", bs::ImportErrorCategory::Encoding},
+        {"utf16be.json", bs::ImportErrorCategory::Encoding},   {"utf32.json", bs::ImportErrorCategory::Encoding},
+        {"utf32-bom.json", bs::ImportErrorCategory::Encoding}, {"notes.txt", bs::ImportErrorCategory::UnknownFormat},
+        {"missing.json", bs::ImportErrorCategory::Io}};
     for (const auto& e : expected) {
       const Outcome out = import(dir.filePath(e.name));
       QVERIFY2(out.threw, e.name);
@@ -170,7 +167,9 @@ class TestImportRegistry : public QObject {
 
   void check_text_tolerates_a_stray_latin1_byte() {
     // "µA" in Latin-1 inside otherwise plain text is text, not binary.
-    QByteArray text = "time_s,current_\xB5" "A\n0,1.5\n1,1.6\n";
+    QByteArray text =
+        "time_s,current_\xB5"
+        "A\n0,1.5\n1,1.6\n";
     bs::check_text(std::string_view(text.constData(), static_cast<std::size_t>(text.size())), "latin1.csv");
     QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::check_text(std::string_view("\x01\x02\x03\x04\x05\x06", 6), "c"));
   }

@@ -125,22 +125,33 @@ class TestPipelineJson : public QObject {
         {R"({"format": "benchscope-pipeline-v1", "stages": {}})", "/platform", bs::ImportErrorCategory::MissingField},
         {doc("{}"), "/stages", bs::ImportErrorCategory::MissingField},
         {doc("[]"), "/stages", bs::ImportErrorCategory::WrongType},
-        {doc(R"({"preprocess": {"mean_s": 0.01, "sd_s": 0}})"), "/stages/preprocess/n", bs::ImportErrorCategory::MissingField},
-        {doc(R"({"preprocess": {"n": 0, "mean_s": 0.01, "sd_s": 0}})"), "/stages/preprocess/n", bs::ImportErrorCategory::InvalidValue},
-        {doc(R"({"detect": {"n": 3, "mean_s": -0.01, "sd_s": 0}})"), "/stages/detect/mean_s", bs::ImportErrorCategory::InvalidValue},
-        {doc(R"({"detect": {"n": 3, "mean_s": "fast", "sd_s": 0}})"), "/stages/detect/mean_s", bs::ImportErrorCategory::WrongType},
-        {doc(R"({"detect": {"n": 1, "mean_s": 0.1, "sd_s": 0.2}})"), "/stages/detect/sd_s", bs::ImportErrorCategory::InvalidValue},
-        {doc(R"({"detect": {"n": 3, "mean_s": 0.1, "sd_s": 0, "max_s": 0.05}})"), "/stages/detect/max_s", bs::ImportErrorCategory::InvalidValue},
-        {doc(R"({"detect": {"n": 3, "mean_s": 0.1, "sd_s": 0, "p50_s": 0.1, "p95_s": 0.05}})"), "/stages/detect/p95_s", bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"preprocess": {"mean_s": 0.01, "sd_s": 0}})"), "/stages/preprocess/n",
+         bs::ImportErrorCategory::MissingField},
+        {doc(R"({"preprocess": {"n": 0, "mean_s": 0.01, "sd_s": 0}})"), "/stages/preprocess/n",
+         bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"detect": {"n": 3, "mean_s": -0.01, "sd_s": 0}})"), "/stages/detect/mean_s",
+         bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"detect": {"n": 3, "mean_s": "fast", "sd_s": 0}})"), "/stages/detect/mean_s",
+         bs::ImportErrorCategory::WrongType},
+        {doc(R"({"detect": {"n": 1, "mean_s": 0.1, "sd_s": 0.2}})"), "/stages/detect/sd_s",
+         bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"detect": {"n": 3, "mean_s": 0.1, "sd_s": 0, "max_s": 0.05}})"), "/stages/detect/max_s",
+         bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"detect": {"n": 3, "mean_s": 0.1, "sd_s": 0, "p50_s": 0.1, "p95_s": 0.05}})"), "/stages/detect/p95_s",
+         bs::ImportErrorCategory::InvalidValue},
         {doc(R"({"classify": )" + ok + "}"), "/stages/classify", bs::ImportErrorCategory::InvalidValue},
         {doc(R"({"detect": )" + ok + "}", R"("backend": "fpga", )"), "/backend", bs::ImportErrorCategory::InvalidValue},
-        {doc(R"({"detect": )" + ok + "}", R"("frame": {"width": 0, "height": 10}, )"), "/frame/width", bs::ImportErrorCategory::InvalidValue},
-        {doc(R"({"detect": )" + ok + "}", R"("throughput_fps": 0, )"), "/throughput_fps", bs::ImportErrorCategory::InvalidValue},
-        {doc(R"({"detect": )" + ok + "}", R"("provenance": {"origin": "guessed"}, )"), "/provenance/origin", bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"detect": )" + ok + "}", R"("frame": {"width": 0, "height": 10}, )"), "/frame/width",
+         bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"detect": )" + ok + "}", R"("throughput_fps": 0, )"), "/throughput_fps",
+         bs::ImportErrorCategory::InvalidValue},
+        {doc(R"({"detect": )" + ok + "}", R"("provenance": {"origin": "guessed"}, )"), "/provenance/origin",
+         bs::ImportErrorCategory::InvalidValue},
     };
     for (const Case& c : cases) {
       const bs::ImportError e = error_of(c.text);
-      QVERIFY2(e.location().field == c.field, qPrintable(QString::fromStdString(std::string(e.what()) + "  expected " + c.field)));
+      QVERIFY2(e.location().field == c.field,
+               qPrintable(QString::fromStdString(std::string(e.what()) + "  expected " + c.field)));
       QVERIFY2(e.category() == c.category, e.what());
       QCOMPARE(e.location().file, std::string("t.json"));
       QVERIFY(e.location().line > 0);

@@ -41,7 +41,8 @@ class TestPowerCsv : public QObject {
  private slots:
   void paper_sample_log() {
     const bs::CancelToken cancel;
-    const auto batch = bs::PowerCsvImporter().parse(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/nuc-current.csv", {}, cancel);
+    const auto batch =
+        bs::PowerCsvImporter().parse(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/nuc-current.csv", {}, cancel);
     const bs::PowerTrace& t = batch.power_traces.at(0);
     QCOMPARE(t.platform, std::string("NUC"));
     QCOMPARE(*t.supply_voltage_v, 16.0);
@@ -127,14 +128,18 @@ class TestPowerCsv : public QObject {
     QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-12-31T23:59:59.500"));
     QVERIFY(std::abs(t.time_s[1] - 0.75) < 1e-6);
     // Otii's wall clock: "(UTC)" is a zone, not a unit; the start time gets its "Z".
-    auto b = bs::parse_power_csv("Wall-clock time (UTC),Main current (A),Main voltage (V)\n"
-                                 "2026-11-22 10:00:01.000,0.1,3.3\n2026-11-22 10:00:01.500,0.2,3.3\n", "otii.csv");
+    auto b = bs::parse_power_csv(
+        "Wall-clock time (UTC),Main current (A),Main voltage (V)\n"
+        "2026-11-22 10:00:01.000,0.1,3.3\n2026-11-22 10:00:01.500,0.2,3.3\n",
+        "otii.csv");
     QCOMPARE(QString::fromStdString(b.power_traces[0].start_time), QStringLiteral("2026-11-22 10:00:01.000Z"));
     QCOMPARE(b.power_traces[0].time_s[1], 0.5);
     QCOMPARE(b.power_traces[0].provenance.measurement, bs::MeasurementKind::ExternalMeter);
     QCOMPARE(b.power_traces[0].provenance.sensor, std::string("Otii"));
     // Relative seconds beside a wall clock: time from the seconds, start time from the wall clock.
-    t = parse("Timestamp (s),Wall-clock time (UTC),Main current (A)\n0.5,2026-11-22T10:00:01.5,0.1\n1.0,2026-11-22T10:00:02,0.2\n");
+    t = parse(
+        "Timestamp (s),Wall-clock time (UTC),Main current "
+        "(A)\n0.5,2026-11-22T10:00:01.5,0.1\n1.0,2026-11-22T10:00:02,0.2\n");
     QCOMPARE(t.time_s[1], 0.5);
     QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-11-22T10:00:01.5Z"));
     // Unix time in seconds, milliseconds, and nanoseconds beyond a double's 53 bits (read exactly as integers:
@@ -144,7 +149,8 @@ class TestPowerCsv : public QObject {
     QCOMPARE(t.time_s[1], 0.5);
     t = parse("time_ms,power_W\n1763805601250,5\n1763805601750,5\n");
     QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2025-11-22T10:00:01.250Z"));
-    t = parse("Timestamp (ns),Power Draw (W)\n1763805601250000000,12.84\n1763805601250000001,12.9\n1763805601350000000,13\n");
+    t = parse(
+        "Timestamp (ns),Power Draw (W)\n1763805601250000000,12.84\n1763805601250000001,12.9\n1763805601350000000,13\n");
     QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2025-11-22T10:00:01.250Z"));
     QCOMPARE(t.time_s[1], 1e-9);
     QVERIFY(std::abs(t.time_s[2] - 0.1) < 1e-12);
@@ -162,7 +168,8 @@ class TestPowerCsv : public QObject {
     QCOMPARE(e.location().line, std::size_t{4});
     QVERIFY(std::string(e.what()).find("time goes backwards (1.000000 s after 2.000000 s") != std::string::npos);
     // A time of day without a date is neither a number nor a date-time.
-    QVERIFY(std::string(error_of("time,power_W\n12:00:01,1\n").what()).find("neither a number nor a date-time") != std::string::npos);
+    QVERIFY(std::string(error_of("time,power_W\n12:00:01,1\n").what()).find("neither a number nor a date-time") !=
+            std::string::npos);
   }
   void everyday_headers() {
     // "sec,mw" (a minimal logger): mW -> W.
@@ -178,12 +185,14 @@ class TestPowerCsv : public QObject {
     // Several power columns and no total: none named, and a warning says which one the statistics use.
     b = bs::parse_power_csv("time_s,GPU0 Power (W),GPU1 Power (W)\n0,100,120\n1,110,130\n", "gpus.csv");
     QVERIFY(b.power_traces[0].total_channel.empty());
-    QVERIFY(warned(b, "2 power columns ('GPU0 Power (W)', 'GPU1 Power (W)') and none named total/sum/package: "
-                      "statistics use 'GPU0 Power (W)' (the first)"));
+    QVERIFY(warned(b,
+                   "2 power columns ('GPU0 Power (W)', 'GPU1 Power (W)') and none named total/sum/package: "
+                   "statistics use 'GPU0 Power (W)' (the first)"));
     // jtop-style "Power TOT" as a whole word; "summary" is not a sum.
     QCOMPARE(parse("time_s,Power CPU,Power TOT\n0,1,5\n").total_channel, std::string("Power TOT"));
     // nvidia-smi-like columns: the power limit is a setting, not a sample; an empty cell is a missing sample.
-    b = bs::parse_power_csv("timestamp,power.draw [W],power.limit [W],current_A\n0,50,250,\n1,,250,4\n2,52,,4.1\n", "smi.csv");
+    b = bs::parse_power_csv("timestamp,power.draw [W],power.limit [W],current_A\n0,50,250,\n1,,250,4\n2,52,,4.1\n",
+                            "smi.csv");
     t = b.power_traces[0];
     QCOMPARE(t.channels.size(), std::size_t{2});
     QVERIFY(named(t, "power.draw [W]"));

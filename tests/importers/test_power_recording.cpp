@@ -82,9 +82,10 @@ class TestPowerRecording : public QObject {
     } catch (const ImportError& e) {
       QCOMPARE(e.location().line, std::size_t{3});
     }
-    QVERIFY_THROWS_EXCEPTION(ImportError, parse_power_recording(std::string(sensors::kRecordingMagic) +
-                                                                    "\n# measurement: external meter\ntime_s,a power (W)\n0,1\n",
-                                                                "m.csv"));
+    QVERIFY_THROWS_EXCEPTION(ImportError,
+                             parse_power_recording(std::string(sensors::kRecordingMagic) +
+                                                       "\n# measurement: external meter\ntime_s,a power (W)\n0,1\n",
+                                                   "m.csv"));
   }
 };
 

@@ -66,8 +66,7 @@ class TestRawSidecar : public QObject {
     // Every member written is one the schema describes.
     std::ifstream schema_file(BENCHSCOPE_SOURCE_DIR "/resources/schema/benchscope-raw-v1.schema.json");
     const auto schema = nlohmann::json::parse(schema_file);
-    for (const auto& [key, value] : j.items())
-      QVERIFY2(schema.at("properties").contains(key), key.c_str());
+    for (const auto& [key, value] : j.items()) QVERIFY2(schema.at("properties").contains(key), key.c_str());
     QVERIFY(schema.at("required") == (nlohmann::json{"width", "height", "bit_depth"}));
   }
 
@@ -82,13 +81,20 @@ class TestRawSidecar : public QObject {
       return std::pair{K::Invalid, std::string("accepted")};
     };
     QVERIFY(kind_of(R"({"height": 2, "bit_depth": 8})") == std::pair(K::Missing, std::string("/width")));
-    QVERIFY(kind_of(R"({"width": 2.5, "height": 2, "bit_depth": 8})") == std::pair(K::WrongType, std::string("/width")));
-    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 17})") == std::pair(K::Invalid, std::string("/bit_depth")));
-    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 12})") == std::pair(K::Missing, std::string("/endianness")));
-    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 8, "pattern": "BGRG"})") == std::pair(K::Invalid, std::string("/pattern")));
-    QVERIFY(kind_of(R"({"format": "other", "width": 2, "height": 2, "bit_depth": 8})") == std::pair(K::Unsupported, std::string("/format")));
-    QVERIFY(kind_of(R"({"version": 2, "width": 2, "height": 2, "bit_depth": 8})") == std::pair(K::Unsupported, std::string("/version")));
-    QCOMPARE(kind_of(R"({"width": 4e1, "height": 2, "bit_depth": 8, "pattern": "rggb", "extra": 1})").second, std::string("accepted"));
+    QVERIFY(kind_of(R"({"width": 2.5, "height": 2, "bit_depth": 8})") ==
+            std::pair(K::WrongType, std::string("/width")));
+    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 17})") ==
+            std::pair(K::Invalid, std::string("/bit_depth")));
+    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 12})") ==
+            std::pair(K::Missing, std::string("/endianness")));
+    QVERIFY(kind_of(R"({"width": 2, "height": 2, "bit_depth": 8, "pattern": "BGRG"})") ==
+            std::pair(K::Invalid, std::string("/pattern")));
+    QVERIFY(kind_of(R"({"format": "other", "width": 2, "height": 2, "bit_depth": 8})") ==
+            std::pair(K::Unsupported, std::string("/format")));
+    QVERIFY(kind_of(R"({"version": 2, "width": 2, "height": 2, "bit_depth": 8})") ==
+            std::pair(K::Unsupported, std::string("/version")));
+    QCOMPARE(kind_of(R"({"width": 4e1, "height": 2, "bit_depth": 8, "pattern": "rggb", "extra": 1})").second,
+             std::string("accepted"));
   }
 
   void both_readers_accept_the_same_files() {

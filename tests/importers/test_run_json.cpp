@@ -156,9 +156,9 @@ class TestRunJson : public QObject {
     QCOMPARE(cpu.provenance.source_file, kData + "run-json/two-runs.json");
     const bs::FlopsRun& gpu = batch.runs[1];
     QCOMPARE(gpu.variant, std::string("float16x4"));
-    QCOMPARE(gpu.kernel, std::string("rotation2d"));  // default
+    QCOMPARE(gpu.kernel, std::string("rotation2d"));                 // default
     QCOMPARE(gpu.provenance.origin, bs::DataOrigin::Reconstructed);  // run-level override
-    QCOMPARE(gpu.provenance.host, std::string("lab-pc"));              // inherited field by field
+    QCOMPARE(gpu.provenance.host, std::string("lab-pc"));            // inherited field by field
     QCOMPARE(gpu.provenance.note, std::string("from a table"));
     QVERIFY2(batch.warnings.empty(), batch.warnings.empty() ? "" : batch.warnings[0].c_str());
   }
@@ -168,7 +168,7 @@ class TestRunJson : public QObject {
     const std::string text = bs::write_run_json(first.runs);
     const auto second = bs::parse_run_json(text, "memory");
     expect_same_runs(first.runs, second.runs);
-    QVERIFY(second.warnings.empty());  // the writer's flops_mean agrees with the timings
+    QVERIFY(second.warnings.empty());                 // the writer's flops_mean agrees with the timings
     QCOMPARE(bs::write_run_json(second.runs), text);  // stable text: same runs, same bytes
   }
 
@@ -240,7 +240,8 @@ class TestRunJson : public QObject {
     for (const std::string& k : written) QVERIFY2(declared.count(k), ("not in the schema: " + k).c_str());
     // and the schema's required lists are what the reader requires
     QVERIFY(schema["required"] == nlohmann::json({"format", "version", "runs"}));
-    QVERIFY(schema["$defs"]["run"]["required"] == nlohmann::json({"platform", "device", "backend", "params", "samples"}));
+    QVERIFY(schema["$defs"]["run"]["required"] ==
+            nlohmann::json({"platform", "device", "backend", "params", "samples"}));
   }
 
   void documented_example_reads_cleanly() {
@@ -298,7 +299,8 @@ class TestRunJson : public QObject {
   void stated_flops_mismatch_is_a_warning() {
     const auto batch = bs::parse_run_json(
         R"({"format":"benchscope-run","version":1,"runs":[{"platform":"p","device":"d","backend":"b",
-        "params":{"iterations":10,"dims":1},"samples":[{"workers":1,"seconds":[1.0],"flops_mean":999}]}]})", "m.json");
+        "params":{"iterations":10,"dims":1},"samples":[{"workers":1,"seconds":[1.0],"flops_mean":999}]}]})",
+        "m.json");
     QCOMPARE(batch.runs.size(), std::size_t{1});
     QCOMPARE(batch.warnings.size(), std::size_t{1});
     QVERIFY(batch.warnings[0].starts_with("m.json:2:"));
@@ -330,7 +332,7 @@ class TestRunJson : public QObject {
     const std::string path = dir.filePath("out.json").toStdString();
     const auto batch = load_fixture();
     bs::save_run_json(path, batch.runs);
-    bs::save_run_json(path, batch.runs);  // replaces an existing file
+    bs::save_run_json(path, batch.runs);                                         // replaces an existing file
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"out.json"});  // no temporary left behind
     const bs::CancelToken cancel;
     expect_same_runs(batch.runs, bs::RunJsonImporter().parse(path, {}, cancel).runs);
@@ -355,7 +357,8 @@ class TestRunJson : public QObject {
   void too_many_samples_or_values_are_rejected() {
     bs::ImportLimits limits;
     limits.max_samples = 3;
-    const char* const text = R"({"format":"benchscope-run","version":1,"runs":[{"platform":"p","device":"d","backend":"b",
+    const char* const text =
+        R"({"format":"benchscope-run","version":1,"runs":[{"platform":"p","device":"d","backend":"b",
         "params":{"iterations":10,"dims":1},"samples":[{"workers":1,"seconds":[1,1,1,1]}]}]})";
     try {
       bs::parse_run_json(text, "big.json", limits);
@@ -376,8 +379,7 @@ class TestRunJson : public QObject {
   void cancelling_stops_the_import() {
     bs::CancelToken cancel;
     cancel.cancel();
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled,
-                             bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, cancel));
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, cancel));
   }
 
   void pointers_map_to_offsets() {

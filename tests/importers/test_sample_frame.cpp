@@ -29,8 +29,8 @@ class TestSampleFrame : public QObject {
     QCOMPARE(fl.lens.fov_deg, 195.0);
     QVERIFY(std::abs(fl.lens.r_pp - bs::vision::Lens::paper().r_pp) < 1e-15);
     QCOMPARE(fl.view.fov_deg, 150.0);
-    const cv::Mat fresh = bs::vision::mosaic(bs::vision::render_fisheye(bs::vision::Lens::paper(), 8),
-                                             bs::vision::BayerPattern::BGGR);
+    const cv::Mat fresh =
+        bs::vision::mosaic(bs::vision::render_fisheye(bs::vision::Lens::paper(), 8), bs::vision::BayerPattern::BGGR);
     QCOMPARE(cv::norm(bs::vision::frame_to_mat(f), fresh, cv::NORM_INF), 0.0);
   }
 };

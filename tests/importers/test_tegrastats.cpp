@@ -8,10 +8,11 @@ class TestTegrastats : public QObject {
   Q_OBJECT
  private slots:
   void jetpack4_tx2() {
-    const auto batch = bs::import_file(BENCHSCOPE_TEST_DATA_DIR "/power/tegrastats-tx2-jetpack4.log", bs::CancelToken{});
+    const auto batch =
+        bs::import_file(BENCHSCOPE_TEST_DATA_DIR "/power/tegrastats-tx2-jetpack4.log", bs::CancelToken{});
     QCOMPARE(batch.format, std::string("tegrastats"));
     const bs::PowerTrace& t = batch.power_traces.at(0);
-    QCOMPARE(t.time_s.size(), std::size_t{3});  // the cut-off last line is skipped with a warning
+    QCOMPARE(t.time_s.size(), std::size_t{3});        // the cut-off last line is skipped with a warning
     QCOMPARE(batch.warnings.size(), std::size_t{2});  // ... and one says the times assume a 1 s interval
     QVERIFY(batch.warnings[0].find(":4:") != std::string::npos);
     QVERIFY(batch.warnings[1].find("no timestamps") != std::string::npos);
@@ -19,11 +20,12 @@ class TestTegrastats : public QObject {
     QCOMPARE(t.channels.size(), std::size_t{6});
     QCOMPARE(t.channels[0].name, std::string("VDD_IN"));  // input rail first
     QCOMPARE(t.total_channel, std::string("VDD_IN"));
-    QCOMPARE(t.channels[0].values[2], 9.648);             // mW -> W, the current (not average) value
+    QCOMPARE(t.channels[0].values[2], 9.648);  // mW -> W, the current (not average) value
     QCOMPARE(t.channels[0].quantity, bs::PowerQuantity::Power);
   }
   void jetpack5_orin_with_timestamps() {
-    const auto batch = bs::import_file(BENCHSCOPE_TEST_DATA_DIR "/power/tegrastats-orin-jetpack5.log", bs::CancelToken{});
+    const auto batch =
+        bs::import_file(BENCHSCOPE_TEST_DATA_DIR "/power/tegrastats-orin-jetpack5.log", bs::CancelToken{});
     const bs::PowerTrace& t = batch.power_traces.at(0);
     QCOMPARE(t.time_s.size(), std::size_t{3});
     QCOMPARE(t.time_s[1], 1.0);
@@ -39,7 +41,9 @@ class TestTegrastats : public QObject {
   }
   void inconsistent_rails_and_no_rails() {
     try {
-      bs::parse_tegrastats("RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 100/100\nRAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\n", "t.log");
+      bs::parse_tegrastats(
+          "RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 100/100\nRAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\n",
+          "t.log");
       QFAIL("accepted");
     } catch (const bs::ImportError& e) {
       QCOMPARE(e.location().line, std::size_t{2});

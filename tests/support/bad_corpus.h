@@ -13,9 +13,9 @@
 namespace bs::test {
 
 struct BadCase {
-  std::string path;      // absolute, ready to import
-  std::string category;  // to_string(ImportErrorCategory)
-  bool place = false;    // the error must name a line or a field
+  std::string path;                   // absolute, ready to import
+  std::string category;               // to_string(ImportErrorCategory)
+  bool place = false;                 // the error must name a line or a field
   std::vector<std::string> contains;  // text the error message must contain (a file:line:col prefix, the reason)
 };
 
@@ -57,7 +57,8 @@ inline std::vector<BadCase> load_bad_corpus(const std::string& data_dir, const s
     BadCase c{"", e.at("category").get<std::string>(), e.at("place").get<bool>(), {}};
     // "contains": one text or a list of texts the error must contain.
     if (const auto it = e.find("contains"); it != e.end())
-      c.contains = it->is_string() ? std::vector<std::string>{it->get<std::string>()} : it->get<std::vector<std::string>>();
+      c.contains =
+          it->is_string() ? std::vector<std::string>{it->get<std::string>()} : it->get<std::vector<std::string>>();
     if (e.contains("generate")) {
       c.path = scratch_dir + "/" + e.at("file").get<std::string>();
       write_generated(e.at("generate").get<std::string>(), c.path);

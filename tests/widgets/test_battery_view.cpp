@@ -2,6 +2,7 @@
 // The Battery tab on the paper's sample data: 84.36 / 360.48 min with the paper's pack and model; edits recompute
 // at once (capacity, depth of discharge, extra load, model, mission); a preset saved from the view lives in the
 // workspace and comes back after reopening it; the plot has a state-of-charge and a voltage curve per platform.
+#include <qcustomplot.h>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
@@ -9,10 +10,9 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
-#include <qcustomplot.h>
 
-#include "battery_view.h"
 #include "../support/paper_sample.h"
+#include "battery_view.h"
 #include "store/workspace.h"
 
 namespace {

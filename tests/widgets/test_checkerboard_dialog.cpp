@@ -45,9 +45,9 @@ QStringList write_views(const QTemporaryDir& dir) {
   how.noise_sigma = 1;
   QStringList paths;
   int n = 0;
-  for (const char* p : {"0,0,0,250,0,0", "15,20,0,260,0,0", "-10,-25,15,240,40,30", "0,0,45,220,220,0",
-                        "0,0,-45,220,-220,0", "0,-40,0,230,0,200", "0,40,0,230,0,-200", "20,-30,35,230,150,130",
-                        "-20,30,-35,230,-150,-130"}) {
+  for (const char* p :
+       {"0,0,0,250,0,0", "15,20,0,260,0,0", "-10,-25,15,240,40,30", "0,0,45,220,220,0", "0,0,-45,220,-220,0",
+        "0,-40,0,230,0,200", "0,40,0,230,0,-200", "20,-30,35,230,150,130", "-20,30,-35,230,-150,-130"}) {
     const QString path = dir.filePath(QString("board-%1.png").arg(++n, 2, 10, QChar('0')));
     how.seed = static_cast<unsigned>(n);
     cv::imwrite(path.toStdString(), vision::render_checkerboard(truth_lens(), vision::parse_pose(p), how));
@@ -72,7 +72,8 @@ class TestCheckerboardDialog : public QObject {
     tab.tuner()->set_fisheye(cv::Mat(512, 640, CV_8UC3, cv::Scalar(0, 0, 0)));
     // The tab's toolbar offers the dialog.
     bool offered = false;
-    for (QAction* a : tab.tuner()->tool_bar()->actions()) offered |= a->text().startsWith("Calibrate from checkerboard");
+    for (QAction* a : tab.tuner()->tool_bar()->actions())
+      offered |= a->text().startsWith("Calibrate from checkerboard");
     QVERIFY(offered);
     const vision::Lens before = tab.tuner()->params().lens;
     ui::CheckerboardDialog* d = tab.open_checkerboard_dialog();

@@ -18,7 +18,8 @@ bs::FlopsRun run(double scale) {
   r.iterations = 40000;
   for (int w : {1024, 2048}) {
     bs::WorkerSample s{w, {}};
-    for (int k = 0; k < 8; ++k) s.seconds.push_back(1e-3 * w / 1024 * (w == 2048 ? 0.8 : 1.0) * scale * (1 + 0.001 * k));
+    for (int k = 0; k < 8; ++k)
+      s.seconds.push_back(1e-3 * w / 1024 * (w == 2048 ? 0.8 : 1.0) * scale * (1 + 0.001 * k));
     r.samples.push_back(s);
   }
   return r;

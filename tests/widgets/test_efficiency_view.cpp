@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Efficiency tab on the paper's sample data: the table shows the paper's 104.64 / 41.26 GFLOPS/W and
 // 40.52 / 9.48 W, says which run gave each peak, and the bar chart has one bar per platform and variant.
+#include <qcustomplot.h>
 #include <QTableWidget>
 #include <QTest>
-#include <qcustomplot.h>
 
-#include "efficiency_view.h"
 #include "../support/paper_sample.h"
+#include "efficiency_view.h"
 
 namespace {
 
@@ -38,9 +38,9 @@ class TestEfficiencyView : public QObject {
     QCOMPARE(t->rowCount(), 2);  // the NUC and the Jetson have current logs
     const int nuc = row_of(t, "NUC"), jetson = row_of(t, "Jetson TX2");
     QVERIFY(nuc >= 0 && jetson >= 0);
-    const int paper = column(t, "GFLOPS/W paper"), power = column(t, "Mean power (W)"), peak = column(t, "Peak (GFLOPS)"),
-              from = column(t, "Peak from"), supply = column(t, "Supply (V)"), at_mean = column(t, "GFLOPS/W\npeak / mean"),
-              energy = column(t, "Energy (J/GFLOP)");
+    const int paper = column(t, "GFLOPS/W paper"), power = column(t, "Mean power (W)"),
+              peak = column(t, "Peak (GFLOPS)"), from = column(t, "Peak from"), supply = column(t, "Supply (V)"),
+              at_mean = column(t, "GFLOPS/W\npeak / mean"), energy = column(t, "Energy (J/GFLOP)");
     QVERIFY(paper > 0 && power > 0 && peak > 0 && from > 0 && supply > 0 && at_mean > 0 && energy > 0);
     // The NUC's peak (5.25 TFLOPS, 5.9x its GPU's vendor peak) is flagged, and so is every ratio made from it.
     QCOMPARE(t->item(nuc, paper)->text(), QString("⚠ 104.64"));
@@ -57,7 +57,8 @@ class TestEfficiencyView : public QObject {
     // The honest variant divides by the mean power, which is below V x max current: a larger number.
     const auto number = [&](int r, int c) { return t->item(r, c)->text().remove(QStringLiteral("⚠ ")).toDouble(); };
     QVERIFY(number(nuc, at_mean) > 104.64);
-    QCOMPARE(number(nuc, at_mean), std::round(5250.0 / view.rows()[static_cast<std::size_t>(nuc)].power_w.mean * 100) / 100);
+    QCOMPARE(number(nuc, at_mean),
+             std::round(5250.0 / view.rows()[static_cast<std::size_t>(nuc)].power_w.mean * 100) / 100);
     QVERIFY(t->item(jetson, energy)->text().toDouble() > 0);
     // The chart: two variants x two platforms, values equal to the table's, platforms on the axis.
     QCustomPlot* plot = view.plot();

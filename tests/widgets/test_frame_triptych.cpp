@@ -3,14 +3,14 @@
 // the inspector's values are core's (source_of / output_of, the raw and demosaiced samples), the newest lens
 // request wins, 16-bit frames go through the window, Figure 3 exports as PNG and PDF, and the Frames tab lists a
 // workspace's frames.
-#include <QListWidget>
-#include <QSignalSpy>
-#include <QTemporaryDir>
-#include <QWheelEvent>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <cstring>
 
@@ -54,7 +54,9 @@ Frame small_frame(int bits) {
   return f;
 }
 
-double max_diff(const cv::Mat& a, const cv::Mat& b) { return a.size() == b.size() ? cv::norm(a, b, cv::NORM_INF) : 1e9; }
+double max_diff(const cv::Mat& a, const cv::Mat& b) {
+  return a.size() == b.size() ? cv::norm(a, b, cv::NORM_INF) : 1e9;
+}
 
 void wheel(QWidget* w, QPointF at, int delta) {
   QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, delta), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
@@ -79,7 +81,8 @@ class TestFrameTriptych : public QObject {
     QCOMPARE(max_diff(t.images().mosaic, want.mosaic), 0.0);
     QCOMPARE(max_diff(t.images().demosaiced, want.demosaiced), 0.0);
     QCOMPARE(max_diff(t.images().reprojected, want.reprojected), 0.0);
-    QVERIFY(t.captions()[0].startsWith("(a)") && t.captions()[1].startsWith("(b)") && t.captions()[2].startsWith("(c)"));
+    QVERIFY(t.captions()[0].startsWith("(a)") && t.captions()[1].startsWith("(b)") &&
+            t.captions()[2].startsWith("(c)"));
     QVERIFY(t.captions()[0].contains("BGGR"));
 
     QSignalSpy rendered(&t, &ui::FrameTriptych::rendered);
@@ -148,8 +151,8 @@ class TestFrameTriptych : public QObject {
     ui::ImagePane* c = t.pane(2);
     const QPoint from(c->width() / 2, c->height() / 2);
     QTest::mousePress(c, Qt::LeftButton, Qt::NoModifier, from);
-    QMouseEvent move(QEvent::MouseMove, QPointF(from + QPoint(40, -25)), c->mapToGlobal(QPointF(from + QPoint(40, -25))),
-                     Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QMouseEvent move(QEvent::MouseMove, QPointF(from + QPoint(40, -25)),
+                     c->mapToGlobal(QPointF(from + QPoint(40, -25))), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
     QApplication::sendEvent(c, &move);
     QTest::mouseRelease(c, Qt::LeftButton, Qt::NoModifier, from + QPoint(40, -25));
     QVERIFY(c->centre() != a->centre() || c->centre() == t.pane(1)->centre());
@@ -204,7 +207,8 @@ class TestFrameTriptych : public QObject {
     QVERIFY(src2);
     QVERIFY(std::abs(fish.x() - src2->x) < 1e-9 && std::abs(fish.y() - src2->y) < 1e-9);
     QCOMPARE(outp, QPointF(std::floor(hit.x()), std::floor(hit.y())));
-    QVERIFY2(t.inspector_text().contains("counts") && t.inspector_text().contains("px"), qPrintable(t.inspector_text()));
+    QVERIFY2(t.inspector_text().contains("counts") && t.inspector_text().contains("px"),
+             qPrintable(t.inspector_text()));
   }
 
   void sixteen_bit_window() {

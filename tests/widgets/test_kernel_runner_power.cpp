@@ -81,14 +81,15 @@ class TestKernelRunnerPower : public QObject {
     QCOMPARE(t.provenance.measurement, bs::MeasurementKind::OnBoardSensor);
     QVERIFY(t.provenance.sensor.find("rapl:package-0") != std::string::npos);
     QCOMPARE(t.platform, w.workspace()->runs().at(0).run.platform);  // paired with the run
-    QCOMPARE(t.phases.size(), std::size_t{5});  // the warm-up and four points
+    QCOMPARE(t.phases.size(), std::size_t{5});                       // the warm-up and four points
     QCOMPARE(t.phases[0].name, std::string("warm-up D=4"));
     QCOMPARE(t.phases[4].name, std::string("point W=16384 D=4"));
     // The writer adds at most 2,000 uJ + 100 uJ per 0.25 s elapsed every millisecond (it sleeps at least 1 ms, more
     // on a loaded machine): no phase can show more than that rate at the end of the recording, and, wraps
     // included, none shows a negative or missing power.
     const double top = 2.0 + 0.1 * std::ceil(t.time_s.back() / 0.25) + 0.05;
-    for (const bs::PhaseEnergy& e : bs::phase_energies(t)) QVERIFY2(e.mean_power_w > 0 && e.mean_power_w < top, e.name.c_str());
+    for (const bs::PhaseEnergy& e : bs::phase_energies(t))
+      QVERIFY2(e.mean_power_w > 0 && e.mean_power_w < top, e.name.c_str());
     for (int r = 0; r < 4; ++r) QVERIFY(runner->energy_table()->item(r, 4)->text().toDouble() > 0);
     w.resize(1400, 900);
     w.show();

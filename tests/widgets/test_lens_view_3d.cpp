@@ -7,8 +7,8 @@
 
 #include "lens_tab.h"
 #include "lens_view_3d.h"
-#include "reprojection_tuner.h"
 #include "preview_pane.h"
+#include "reprojection_tuner.h"
 
 using namespace bs;
 
@@ -21,7 +21,8 @@ double non_background_share(const QImage& img) {
   for (int y = img.height() / 2 - 30; y < img.height() / 2 + 30; ++y)
     for (int x = img.width() / 2 - 30; x < img.width() / 2 + 30; ++x, ++n) {
       const QColor c = img.pixelColor(x, y);
-      if (std::abs(c.red() - bg.red()) + std::abs(c.green() - bg.green()) + std::abs(c.blue() - bg.blue()) > 30) ++differ;
+      if (std::abs(c.red() - bg.red()) + std::abs(c.green() - bg.green()) + std::abs(c.blue() - bg.blue()) > 30)
+        ++differ;
     }
   return static_cast<double>(differ) / n;
 }
@@ -49,7 +50,8 @@ class TestLensView3D : public QObject {
     QVERIFY(view != nullptr);
     QVERIFY(view->textured_triangles() > 1000);
     QTRY_VERIFY_WITH_TIMEOUT(tab.tuner()->shown_generation() == tab.tuner()->requested_generation() &&
-                                 !tab.tuner()->output_pane()->image().isNull(), 30000);
+                                 !tab.tuner()->output_pane()->image().isNull(),
+                             30000);
     QImage shot = view->grabFramebuffer();
     QVERIFY(!shot.isNull());
     QVERIFY2(non_background_share(shot) > 0.9, qPrintable(QString::number(non_background_share(shot))));

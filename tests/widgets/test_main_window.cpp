@@ -1,25 +1,26 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Opens the paper's sample data in the main window, offscreen, as a user would, and checks what is plotted.
+#include <qcustomplot.h>
 #include <QAbstractItemModel>
-#include <QMessageBox>
 #include <QApplication>
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QFile>
 #include <QInputDialog>
-#include <QStandardItemModel>
-#include <QTabWidget>
-#include <QSplitter>
-#include <QDockWidget>
 #include <QLabel>
+#include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSplitter>
+#include <QStandardItemModel>
+#include <QTabWidget>
 #include <QTemporaryDir>
-#include <QTimer>
 #include <QTest>
-#include <qcustomplot.h>
+#include <QTimer>
 #include <map>
 #include <set>
 
+#include <QTableWidget>
 #include "export_figure_dialog.h"
 #include "flops_plot.h"
 #include "import_controller.h"
@@ -29,7 +30,6 @@
 #include "peak_table.h"
 #include "plot_export.h"
 #include "power_view.h"
-#include <QTableWidget>
 #include "workspace_tree.h"
 
 class TestMainWindow : public QObject {
@@ -72,7 +72,8 @@ class TestMainWindow : public QObject {
       bool cuda_and_opencl_apart = false;
       for (const auto& [key, shapes] : shapes_by_colour_and_style) cuda_and_opencl_apart |= shapes.size() >= 2;
       QVERIFY(cuda_and_opencl_apart);
-      for (const QCPGraph* g : w.flops_plot()->series_graphs()) QVERIFY(g->scatterStyle().shape() != QCPScatterStyle::ssNone);
+      for (const QCPGraph* g : w.flops_plot()->series_graphs())
+        QVERIFY(g->scatterStyle().shape() != QCPScatterStyle::ssNone);
     }
     // The legend is inside the plot and, once laid out, hides no data; peaks carry labels.
     QCustomPlot* plot = w.flops_plot()->plot();
@@ -243,7 +244,8 @@ class TestMainWindow : public QObject {
     const auto it = g->data()->findBegin(100000);
     const QPointF pixel(plot->xAxis->coordToPixel(it->key), plot->yAxis->coordToPixel(it->value));
     const QString text = w.flops_plot()->read_out_at(pixel);
-    QVERIFY2(text.contains("Intel HD Graphics 630") && text.contains("TFLOPS") && text.contains("n = 1"), qPrintable(text));
+    QVERIFY2(text.contains("Intel HD Graphics 630") && text.contains("TFLOPS") && text.contains("n = 1"),
+             qPrintable(text));
     QVERIFY(w.flops_plot()->read_out_at(QPointF(-500, -500)).isEmpty());
   }
 
@@ -271,7 +273,8 @@ class TestMainWindow : public QObject {
     QWidget parent;
     bs::ui::ImportController controller(&parent);
     QSignalSpy done(&controller, &bs::ui::ImportController::finished);
-    controller.start(dir.filePath("w.bsw"), {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", dir.filePath("bad.json")});
+    controller.start(dir.filePath("w.bsw"),
+                     {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", dir.filePath("bad.json")});
     QVERIFY(controller.busy());
     QVERIFY(done.wait(60000));
     QVERIFY(!controller.busy());
@@ -284,7 +287,8 @@ class TestMainWindow : public QObject {
     // A cancelled import stops before the next file and stores nothing more.
     bs::CancelToken cancel;
     cancel.cancel();
-    const auto cancelled = bs::ui::ImportController::import_now(dir.filePath("w2.bsw"), {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"}, cancel);
+    const auto cancelled = bs::ui::ImportController::import_now(
+        dir.filePath("w2.bsw"), {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"}, cancel);
     QVERIFY(cancelled.cancelled);
     QCOMPARE(cancelled.imported, 0);
   }

@@ -10,9 +10,9 @@ class TestOverlayGeometry : public QObject {
  private slots:
   void covered_length_clips_segments() {
     const QRectF box(0, 0, 10, 10);
-    QCOMPARE(bs::ui::covered_length(box, {QPolygonF({{-5, 5}, {15, 5}})}), 10.0);  // crosses the box
-    QCOMPARE(bs::ui::covered_length(box, {QPolygonF({{2, 2}, {5, 6}})}), 5.0);     // 3-4-5, inside
-    QCOMPARE(bs::ui::covered_length(box, {QPolygonF({{20, 0}, {30, 10}})}), 0.0);  // outside
+    QCOMPARE(bs::ui::covered_length(box, {QPolygonF({{-5, 5}, {15, 5}})}), 10.0);                // crosses the box
+    QCOMPARE(bs::ui::covered_length(box, {QPolygonF({{2, 2}, {5, 6}})}), 5.0);                   // 3-4-5, inside
+    QCOMPARE(bs::ui::covered_length(box, {QPolygonF({{20, 0}, {30, 10}})}), 0.0);                // outside
     QCOMPARE(bs::ui::covered_length(box, {QPolygonF({{-5, -5}, {15, 15}})}), std::sqrt(200.0));  // the diagonal
   }
 

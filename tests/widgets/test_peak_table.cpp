@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The peak table model: what each column shows, numeric sorting through the proxy, TSV copy.
+#include <QAbstractItemModel>
 #include <QClipboard>
 #include <QSortFilterProxyModel>
-#include <QAbstractItemModel>
 #include <QTest>
 
 #include "../support/paper_sample.h"
@@ -71,9 +71,9 @@ class TestPeakTable : public QObject {
     bs::ui::PeakTableView view;
     // As text "9.34 TFLOPS" < "49.68 GFLOPS" < "5.25 TFLOPS" is wrong three ways; by value it is 49.68 G < 5.25 T <
     // 9.34 T.
-    view.peak_model()->set_rows({row("A", "CUDA", 4, 9.34e12, 408576), row("B", "CPU", 4, 49.68e9, 1345),
-                                 row("C", "OpenCL", 4, 5.25e12, 2048)},
-                                {0, 1, 2});
+    view.peak_model()->set_rows(
+        {row("A", "CUDA", 4, 9.34e12, 408576), row("B", "CPU", 4, 49.68e9, 1345), row("C", "OpenCL", 4, 5.25e12, 2048)},
+        {0, 1, 2});
     view.sortByColumn(M::Peak, Qt::DescendingOrder);
     const QAbstractItemModel* m = view.model();
     QCOMPARE(cell(m, 0, M::Peak), QString("9.34 TFLOPS"));

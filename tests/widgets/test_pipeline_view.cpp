@@ -17,9 +17,9 @@
 #include "analysis/platform/pipeline_table.h"
 #include "importer.h"
 #include "pipeline_measure_panel.h"
+#include "pipeline_view.h"
 #include "vision/cuda_preprocess.h"
 #include "vision/pipeline.h"
-#include "pipeline_view.h"
 
 using bs::ui::PipelineMeasurePanel;
 using bs::ui::PipelineView;
@@ -152,7 +152,8 @@ class TestPipelineView : public QObject {
     p->measure_button()->click();
     QVERIFY(p->running() || measured.count() == 1);
     QVERIFY(!p->measure_button()->isEnabled() || measured.count() == 1);
-    QVERIFY2(measured.wait(120000) || measured.count() == 1, failed.isEmpty() ? "no run" : qPrintable(failed[0][0].toString()));
+    QVERIFY2(measured.wait(120000) || measured.count() == 1,
+             failed.isEmpty() ? "no run" : qPrintable(failed[0][0].toString()));
     const auto run = measured[0][0].value<bs::PipelineRun>();
     QVERIFY(run.stage("detect"));
     QCOMPARE(run.stage("detect")->n, std::size_t{3});

@@ -5,13 +5,13 @@
 
 #include <QComboBox>
 #include <QLabel>
+#include <QSignalSpy>
 #include <QTableView>
 #include <QTableWidget>
-#include <QSignalSpy>
 #include <QTest>
 
-#include "importer.h"
 #include "analysis/platform/inference_table.h"
+#include "importer.h"
 #include "inference_table.h"
 #include "platform_view.h"
 
@@ -66,7 +66,7 @@ class TestPlatformView : public QObject {
     const int power = column(t, "Mean power (W)");
     QVERIFY(power > 0);
     QCOMPARE(t->item(row_of(t, "Jetson TX2"), power)->text(), QString("9.48"));
-    QVERIFY(t->item(row_of(t, "Jetson TX2"), power)->font().bold());   // lowest power is best
+    QVERIFY(t->item(row_of(t, "Jetson TX2"), power)->font().bold());  // lowest power is best
     QVERIFY(!t->item(row_of(t, "NUC"), power)->font().bold());
     const int paper = column(t, "GFLOPS/W (paper: peak / max power)");
     // The NUC's figure rests on its GPU peak of 5.25 TFLOPS, 5.9x the Iris Plus 650's vendor peak: flagged, tinted,
@@ -233,10 +233,11 @@ class TestPlatformView : public QObject {
     QVERIFY(view.inference_table()->isVisible());
     QTableWidget* t = view.inference_table()->table();
     QCOMPARE(t->rowCount(), 2);
-    const int network = static_cast<int>(bs::InferenceColumn::Network), time = static_cast<int>(bs::InferenceColumn::TimePerImage);
+    const int network = static_cast<int>(bs::InferenceColumn::Network),
+              time = static_cast<int>(bs::InferenceColumn::TimePerImage);
     QVERIFY(t->item(0, network)->text().contains("architecture timing: no detections"));
     QVERIFY(t->item(0, network)->font().italic());
-    QVERIFY(t->item(1, time)->font().bold());   // 25 ms beats 40 ms
+    QVERIFY(t->item(1, time)->font().bold());  // 25 ms beats 40 ms
     QVERIFY(!t->item(0, time)->font().bold());
     view.set_inference_runs({});
     QVERIFY(!view.inference_table()->isVisible());

@@ -7,6 +7,7 @@
 //   phase reaches the workspace;
 // - overlay offsets, typed and aligned at a phase; the battery pack comes from the workspace's Battery tab setup.
 // Set BENCHSCOPE_SCREENSHOT_DIR to also save the tab (1600x1000) with a selection, an overlay and shaded phases.
+#include <qcustomplot.h>
 #include <QApplication>
 #include <QCheckBox>
 #include <QClipboard>
@@ -19,7 +20,6 @@
 #include <QTest>
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <qcustomplot.h>
 
 #include "../support/cli_harness.h"
 #include "../support/paper_sample.h"
@@ -97,13 +97,14 @@ class TestPowerSelection : public QObject {
     QVERIFY(c["charge_c"].get<double>() == *g.charge_c);
     QVERIFY(c["mean_power_w"].get<double>() == *g.mean_power_w);
     for (const char* key : {"mean", "sd", "min", "max", "p5", "p50", "p95", "p99"}) {
-      const double gui = std::string(key) == "mean" ? g.power_w->summary.mean
-                         : std::string(key) == "sd" ? g.power_w->summary.sd
+      const double gui = std::string(key) == "mean"  ? g.power_w->summary.mean
+                         : std::string(key) == "sd"  ? g.power_w->summary.sd
                          : std::string(key) == "min" ? g.power_w->summary.min
                          : std::string(key) == "max" ? g.power_w->summary.max
-                         : std::string(key) == "p5" ? g.power_w->pct.p5
+                         : std::string(key) == "p5"  ? g.power_w->pct.p5
                          : std::string(key) == "p50" ? g.power_w->pct.p50
-                         : std::string(key) == "p95" ? g.power_w->pct.p95 : g.power_w->pct.p99;
+                         : std::string(key) == "p95" ? g.power_w->pct.p95
+                                                     : g.power_w->pct.p99;
       QVERIFY2(c["power_w"][key].get<double>() == gui, key);
     }
     // The per-phase table: the CLI's --phases rows are the Phases tab's rows, cell for cell (the tab has the trace
@@ -115,8 +116,10 @@ class TestPowerSelection : public QObject {
     QStringList cli_rows;
     bool in_table = false;
     for (const QString& line : QString::fromUtf8(out).split('\n')) {
-      if (line.trimmed().startsWith("phase ")) in_table = true;
-      else if (in_table && !line.trimmed().isEmpty() && !line.startsWith("---")) cli_rows << line.simplified();
+      if (line.trimmed().startsWith("phase "))
+        in_table = true;
+      else if (in_table && !line.trimmed().isEmpty() && !line.startsWith("---"))
+        cli_rows << line.simplified();
     }
     QCOMPARE(cli_rows.size(), phases->rowCount());
     for (int r = 0; r < phases->rowCount(); ++r) {
@@ -159,7 +162,7 @@ class TestPowerSelection : public QObject {
     QVERIFY(std::abs(cell_number(t, 0, "duration (s)") - (b - a)) < 1e-4);
     QVERIFY(std::abs(cell_number(t, 0, "mean power (W)") - ramp_j / (b - a)) < 1e-4);
     QVERIFY(std::abs(cell_number(t, 0, "p2p (W)") - 0.5 * (7.77 - 3.34)) < 1e-4);  // samples 3.34 .. 7.77 s
-    QCOMPARE(t->item(0, column(t, "charge (C)"))->text(), QString("-"));  // a power log: no current, no charge
+    QCOMPARE(t->item(0, column(t, "charge (C)"))->text(), QString("-"));           // a power log: no current, no charge
     // The sine: charge ∫ I dt = (b − a) + 0.5 (cos a − cos b); trapezoids at 10 ms are within 1e-5 of it.
     const double charge = (b - a) + 0.5 * (std::cos(a) - std::cos(b));
     QVERIFY(std::abs(*view.selection_stats()[1].second.charge_c - charge) < 1e-5);

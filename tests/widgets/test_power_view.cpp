@@ -2,12 +2,12 @@
 // The Power tab: the paper's figure 4 (supply current of the NUC and the Jetson against time, one time axis,
 // labelled axes, a legend) by default, power on request, and a long trace drawn through the min/max decimation
 // with its true extremes kept.
+#include <qcustomplot.h>
 #include <QComboBox>
 #include <QDateTime>
-#include <cmath>
 #include <QTableWidget>
 #include <QTest>
-#include <qcustomplot.h>
+#include <cmath>
 
 #include "../support/paper_sample.h"
 #include "power_view.h"
@@ -22,7 +22,8 @@ std::vector<bs::StoredPowerTrace> stored(const std::vector<bs::PowerTrace>& trac
 
 std::pair<double, double> value_range(const QCPGraph* g) {
   double lo = 1e300, hi = -1e300;
-  for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) lo = std::min(lo, it->value), hi = std::max(hi, it->value);
+  for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it)
+    lo = std::min(lo, it->value), hi = std::max(hi, it->value);
   return {lo, hi};
 }
 
@@ -71,7 +72,8 @@ class TestPowerView : public QObject {
     t.supply_voltage_v = 12;
     const std::size_t n = 2'000'000;
     std::vector<double> amps(n);
-    for (std::size_t i = 0; i < n; ++i) t.time_s.push_back(static_cast<double>(i) * 1e-4), amps[i] = 1 + 0.1 * std::sin(i * 0.001);
+    for (std::size_t i = 0; i < n; ++i)
+      t.time_s.push_back(static_cast<double>(i) * 1e-4), amps[i] = 1 + 0.1 * std::sin(i * 0.001);
     amps[1'234'567] = 9.5;
     amps[345'678] = 0.05;
     t.channels.push_back({"current", bs::PowerQuantity::Current, amps});
@@ -125,7 +127,8 @@ class TestPowerView : public QObject {
     };
     bs::ui::PowerView view;
     view.resize(1000, 600);
-    view.set_data(stored({make("NUC", "2026-11-20T10:00:00Z", 40), make("Jetson", "2026-11-20T11:00:00.500Z", 9)}), {}, {});
+    view.set_data(stored({make("NUC", "2026-11-20T10:00:00Z", 40), make("Jetson", "2026-11-20T11:00:00.500Z", 9)}), {},
+                  {});
     view.set_quantity(bs::ui::PowerView::Quantity::Power);
     const QString relative_mean = view.table()->item(0, 3)->text();
     QVERIFY(view.set_wall_clock(true));

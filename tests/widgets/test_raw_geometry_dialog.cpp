@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The raw-geometry dialog for a .raw file without a sidecar: OK only when the geometry matches the file's size,
 // the answer is remembered, and the import controller reads the file with it.
-#include <QFile>
-#include <QDialogButtonBox>
-#include <QPushButton>
-#include <QTemporaryDir>
 #include <QCoreApplication>
+#include <QDialogButtonBox>
+#include <QFile>
+#include <QPushButton>
 #include <QSettings>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include "import_controller.h"
@@ -65,7 +65,8 @@ class TestRawGeometryDialog : public QObject {
     auto report = bs::ui::ImportController::import_now(ws, {raw}, bs::CancelToken{});
     QCOMPARE(report.imported, 0);  // without a geometry: a clear failure
     QCOMPARE(report.failures.size(), 1);
-    report = bs::ui::ImportController::import_now(ws, {raw}, bs::CancelToken{}, {}, bs::FrameStorage::Reference, remembered);
+    report =
+        bs::ui::ImportController::import_now(ws, {raw}, bs::CancelToken{}, {}, bs::FrameStorage::Reference, remembered);
     QCOMPARE(report.imported, 1);
     const bs::Workspace w(ws.toStdString());
     QCOMPARE(w.frames().size(), std::size_t{1});

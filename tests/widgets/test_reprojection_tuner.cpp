@@ -107,7 +107,8 @@ class TestReprojectionTuner : public QObject {
     t.redo_action()->trigger();
     // A mask polygon clicked on the fisheye: blanks the view where it covers the source.
     t.set_mask_editing(true);
-    for (const QPointF q : {QPointF(100, 60), QPointF(230, 60), QPointF(230, 200), QPointF(100, 200)}) t.add_mask_point(q);
+    for (const QPointF q : {QPointF(100, 60), QPointF(230, 60), QPointF(230, 200), QPointF(100, 200)})
+      t.add_mask_point(q);
     t.set_mask_editing(false);
     QCOMPARE(t.params().masks.size(), std::size_t{1});
     QCOMPARE(t.params().masks[0].size(), std::size_t{4});
@@ -123,8 +124,7 @@ class TestReprojectionTuner : public QObject {
     t.add_line_point({20, 20});
     QVERIFY(t.line_residual_text().contains("1 more"));
     t.add_line_point({30, 31});  // off by 1 px: TLS distances 0.116, 0.230, 0.114 px (worked by hand)
-    QVERIFY2(t.line_residual_text().contains("RMS 0.16 px, max 0.23 px (n = 3)"),
-             qPrintable(t.line_residual_text()));
+    QVERIFY2(t.line_residual_text().contains("RMS 0.16 px, max 0.23 px (n = 3)"), qPrintable(t.line_residual_text()));
     // Save and load: the loaded file is an undoable change.
     QTemporaryDir dir;
     t.save_json(dir.filePath("lens.json"));

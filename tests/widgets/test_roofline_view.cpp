@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Roofline tab: one roof per device (sloped when a bandwidth is known), one marker per run at its peak.
-#include <QTest>
 #include <qcustomplot.h>
+#include <QTest>
 
 #include "roofline_view.h"
 
@@ -68,7 +68,8 @@ class TestRooflineView : public QObject {
     QVERIFY(s.point.memory_bound);  // 2.19 op/B left of the ridge at 50
     // Roof, rotation marker, the legend's star, the stage's star.
     QCOMPARE(view.plot()->graphCount(), 4);
-    QCOMPARE(view.plot()->graph(2)->name(), QString("Preprocessing stage of a pipeline run (hover: numbers, source); bar: ± SD"));
+    QCOMPARE(view.plot()->graph(2)->name(),
+             QString("Preprocessing stage of a pipeline run (hover: numbers, source); bar: ± SD"));
     QCOMPARE(view.plot()->graph(3)->scatterStyle().shape(), QCPScatterStyle::ssStar);
     const QString tip = view.stage_tooltip(s);
     QVERIFY(tip.contains("6.21 ± 0.99 ms (n = 500)"));

@@ -34,8 +34,9 @@ CeilingComparison compare_to_ceilings(double measured, std::optional<double> pea
       reason += "It is above the empirical ceiling " + format_si(*ceiling, "FLOPS") + how +
                 " too: check the timing and that every counted flop ran.";
     else
-      reason += "No empirical ceiling was measured for this device: the model may understate the core, or the "
-                "timing or the flop count is wrong; measure the ceilings (bench kernels, devices --measure).";
+      reason +=
+          "No empirical ceiling was measured for this device: the model may understate the core, or the "
+          "timing or the flop count is wrong; measure the ceilings (bench kernels, devices --measure).";
     out.flags.push_back({flag_code::kAboveComputedPeak, reason});
   }
   if (out.fraction_of_ceiling && *out.fraction_of_ceiling > 1.0)

@@ -38,8 +38,8 @@ std::optional<double> optional_positive(const json& e, const char* key, const st
 }
 
 bool is_noise_word(const std::string& w) {
-  static const char* const kNoise[] = {"r", "tm", "intel", "nvidia", "amd", "geforce", "radeon", "core", "graphics",
-                                       "corporation"};
+  static const char* const kNoise[] = {"r",       "tm",     "intel", "nvidia",   "amd",
+                                       "geforce", "radeon", "core",  "graphics", "corporation"};
   return std::any_of(std::begin(kNoise), std::end(kNoise), [&](const char* n) { return w == n; });
 }
 

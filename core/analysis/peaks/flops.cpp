@@ -41,8 +41,8 @@ std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs) {
   std::vector<PeakRow> rows = peak_table(runs, bundled.table);
   if (!bundled.error.empty())
     for (PeakRow& row : rows)
-      row.flags.push_back({flag_code::kSpecCheckUnavailable,
-                           "Not checked against the device's vendor peak: " + bundled.error});
+      row.flags.push_back(
+          {flag_code::kSpecCheckUnavailable, "Not checked against the device's vendor peak: " + bundled.error});
   return rows;
 }
 

@@ -44,7 +44,7 @@ struct PeakRow {
   std::int64_t iterations = 0;
   Peak peak;
   std::optional<double> reported_flops;
-  std::optional<double> ratio_to_reported;       // peak / reported
+  std::optional<double> ratio_to_reported;  // peak / reported
   std::optional<double> theoretical_flops;
   std::optional<double> fraction_of_theoretical;  // peak / theoretical
   DataOrigin origin = DataOrigin::Unknown;

@@ -23,8 +23,8 @@ std::vector<std::string_view> split(std::string_view name) {
 }
 
 bool is_option_segment(std::string_view s) {
-  constexpr std::array<std::string_view, 5> prefixed = {"min_time:", "min_warmup_time:", "iterations:", "repeats:",
-                                                        "threads:"};
+  constexpr std::array<std::string_view, 5> prefixed = {
+      "min_time:", "min_warmup_time:", "iterations:", "repeats:", "threads:"};
   constexpr std::array<std::string_view, 3> flags = {"real_time", "process_time", "manual_time"};
   for (std::string_view p : prefixed)
     if (s.starts_with(p)) return true;

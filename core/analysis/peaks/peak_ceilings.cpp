@@ -40,8 +40,8 @@ void apply_empirical_ceilings(std::vector<PeakRow>& rows, std::span<const Result
       row.empirical_ceiling_flops = c->flops.mean;
       row.ceiling_how = c->how;
     }
-    const CeilingComparison cmp = compare_to_ceilings(row.peak.flops, row.theoretical_flops, ceiling,
-                                                      "The peak", c ? c->how : std::string());
+    const CeilingComparison cmp =
+        compare_to_ceilings(row.peak.flops, row.theoretical_flops, ceiling, "The peak", c ? c->how : std::string());
     row.fraction_of_ceiling = cmp.fraction_of_ceiling;
     merge_flags(row.flags, cmp.flags);
   }

@@ -38,18 +38,24 @@ std::string spec_text(const DeviceSpec& spec) {
 
 std::string_view quantity_noun(PowerQuantity q) {
   switch (q) {
-    case PowerQuantity::Current: return "current";
-    case PowerQuantity::Voltage: return "voltage";
-    case PowerQuantity::Power: return "power";
+    case PowerQuantity::Current:
+      return "current";
+    case PowerQuantity::Voltage:
+      return "voltage";
+    case PowerQuantity::Power:
+      return "power";
   }
   return "value";
 }
 
 double magnitude_limit(PowerQuantity q) {
   switch (q) {
-    case PowerQuantity::Current: return kMaxPlausibleCurrentA;
-    case PowerQuantity::Voltage: return kMaxPlausibleVoltageV;
-    case PowerQuantity::Power: return kMaxPlausiblePowerW;
+    case PowerQuantity::Current:
+      return kMaxPlausibleCurrentA;
+    case PowerQuantity::Voltage:
+      return kMaxPlausibleVoltageV;
+    case PowerQuantity::Power:
+      return kMaxPlausiblePowerW;
   }
   return kMaxPlausiblePowerW;
 }
@@ -80,14 +86,14 @@ std::string where_text(const PowerTrace& trace, const PowerChannel& ch, const Fi
 std::vector<PlausibilityFlag> check_flops(double flops, const DeviceSpec* spec, std::optional<double> theoretical) {
   std::vector<PlausibilityFlag> flags;
   if (spec && spec->fp32_peak_flops > 0 && flops > kSpecPeakTolerance * spec->fp32_peak_flops)
-    flags.push_back({flag_code::kAboveSpecPeak,
-                     format_si(flops, "FLOPS") + " is " + ratio_text(flops / spec->fp32_peak_flops) + " the " +
-                         spec_text(*spec) + "." + kFlopsCauses});
+    flags.push_back({flag_code::kAboveSpecPeak, format_si(flops, "FLOPS") + " is " +
+                                                    ratio_text(flops / spec->fp32_peak_flops) + " the " +
+                                                    spec_text(*spec) + "." + kFlopsCauses});
   if (theoretical && *theoretical > 0 && flops > kTheoreticalPeakTolerance * *theoretical)
-    flags.push_back({flag_code::kAboveTheoreticalPeak,
-                     format_si(flops, "FLOPS") + " is " + ratio_text(flops / *theoretical) +
-                         " the theoretical peak BenchScope computed for the measured device (" +
-                         format_si(*theoretical, "FLOPS") + ")." + kFlopsCauses});
+    flags.push_back(
+        {flag_code::kAboveTheoreticalPeak, format_si(flops, "FLOPS") + " is " + ratio_text(flops / *theoretical) +
+                                               " the theoretical peak BenchScope computed for the measured device (" +
+                                               format_si(*theoretical, "FLOPS") + ")." + kFlopsCauses});
   return flags;
 }
 
@@ -132,16 +138,17 @@ std::vector<PlausibilityFlag> check_power_trace(const PowerTrace& trace, std::op
                            "not what its header says."});
     if (huge.count > 0)
       flags.push_back({flag_code::kImplausibleMagnitude,
-                       label + ": " + noun + " of " + format_si(huge.value, unit) + " in " + where_text(trace, ch, huge) +
-                           ", above the " + format_si(magnitude_limit(ch.quantity), unit) +
+                       label + ": " + noun + " of " + format_si(huge.value, unit) + " in " +
+                           where_text(trace, ch, huge) + ", above the " +
+                           format_si(magnitude_limit(ch.quantity), unit) +
                            " no robot computer draws: likely a unit error (mA or mW read as A or W) or a corrupt "
                            "sample."});
     if (jump.count > 0)
-      flags.push_back({flag_code::kMagnitudeJump,
-                       label + ": " + noun + " jumps " + ratio_text(jump.value / jump.other) + " (" +
-                           format_si(jump.other, unit) + " to " + format_si(jump.value, unit) +
-                           ") between neighbouring samples in " + where_text(trace, ch, jump) +
-                           ": likely a unit change or a corrupt sample, not a change of load."});
+      flags.push_back(
+          {flag_code::kMagnitudeJump, label + ": " + noun + " jumps " + ratio_text(jump.value / jump.other) + " (" +
+                                          format_si(jump.other, unit) + " to " + format_si(jump.value, unit) +
+                                          ") between neighbouring samples in " + where_text(trace, ch, jump) +
+                                          ": likely a unit change or a corrupt sample, not a change of load."});
   }
   if (platform_tdp && max_power && max_power_channel && *max_power > kPlatformTdpFactor * *platform_tdp &&
       *max_power <= kMaxPlausiblePowerW)

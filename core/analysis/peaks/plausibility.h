@@ -46,7 +46,7 @@ inline constexpr double kMaxPlausibleCurrentA = 1e3;    // 1 kA
 inline constexpr double kMaxPlausibleVoltageV = 1e3;    // 1 kV
 inline constexpr double kPlatformTdpFactor = 10;        // power above 10x the platform's TDP (device table)
 inline constexpr double kNegativeNoiseFraction = 0.01;  // negatives within 1 % of the median |value| are offset,
-inline constexpr double kNegativeNoiseFloor = 1e-3;      // ... or within 1 mA / 1 mW / 1 mV
+inline constexpr double kNegativeNoiseFloor = 1e-3;     // ... or within 1 mA / 1 mW / 1 mV
 inline constexpr double kJumpRatio = 100;               // two orders of magnitude between neighbouring samples
 inline constexpr double kJumpFloorFraction = 0.01;      // ... where the smaller is >= 1 % of the channel's median
 

@@ -47,7 +47,8 @@ double joules_per_gflop_measured(double energy_j, double flop_count) {
 std::vector<EfficiencyFigure> efficiency_figures(const EfficiencyInputs& in) {
   std::vector<EfficiencyFigure> out;
   if (in.supply_v && in.max_current_a)
-    out.push_back({format("GFLOPS/W as the paper defines it: peak / (%.1f V x max current %.3f A)", *in.supply_v, *in.max_current_a),
+    out.push_back({format("GFLOPS/W as the paper defines it: peak / (%.1f V x max current %.3f A)", *in.supply_v,
+                          *in.max_current_a),
                    paper_gflops_per_watt(in.peak_flops, *in.supply_v, *in.max_current_a), "GFLOPS/W"});
   if (in.mean_power_w) {
     out.push_back({format("GFLOPS/W at mean power: peak / %.2f W", *in.mean_power_w),

@@ -22,7 +22,7 @@ double joules_per_gflop_measured(double energy_j, double flop_count);
 struct EfficiencyFigure {
   std::string label;  // says how the number was made, e.g. "GFLOPS/W, paper: peak / (16 V x max current 3.136 A)"
   double value = 0;
-  std::string unit;   // "GFLOPS/W", "J/GFLOP"
+  std::string unit;  // "GFLOPS/W", "J/GFLOP"
 };
 
 struct EfficiencyInputs {

@@ -14,8 +14,18 @@ namespace bs {
 
 // Column ids in table order, for the views' sorting and best-value marks.
 enum class InferenceColumn {
-  Platform, Network, Input, Target, TimePerImage, InferencesPerS, Gflops, OfCeiling, EnergyPerInference,
-  InferencesPerWh, FlopsPerImage, Count
+  Platform,
+  Network,
+  Input,
+  Target,
+  TimePerImage,
+  InferencesPerS,
+  Gflops,
+  OfCeiling,
+  EnergyPerInference,
+  InferencesPerWh,
+  FlopsPerImage,
+  Count
 };
 
 // Text of the Network cell: the model, its output family, and the architecture-timing label when it applies.

@@ -48,9 +48,9 @@ ExportTable gpu_peak_table(std::span<const FlopsRun> runs) {
     std::vector<std::string> row{d};
     for (const char* column : {"OpenCL", "CUDA"}) {
       const auto it = best.find({d, column});
-      row.push_back(it == best.end() ? kDash
-                                     : notes.mark(value(it->second.peak.flops, 1e12, it->second.peak.at_peak),
-                                                  it->second.flags));
+      row.push_back(it == best.end()
+                        ? kDash
+                        : notes.mark(value(it->second.peak.flops, 1e12, it->second.peak.at_peak), it->second.flags));
     }
     char rep[32];
     if (reported.count(d)) std::snprintf(rep, sizeof rep, "%.2f", reported[d] / 1e12);
@@ -66,8 +66,10 @@ ExportTable cpu_peak_table(std::span<const FlopsRun> runs) {
   for (const PeakRow& r : peak_table(runs)) {
     if (r.device_kind != DeviceKind::Cpu) continue;
     auto it = std::find_if(best.begin(), best.end(), [&](const PeakRow& b) { return b.device == r.device; });
-    if (it == best.end()) best.push_back(r);
-    else if (r.peak.flops > it->peak.flops) *it = r;
+    if (it == best.end())
+      best.push_back(r);
+    else if (r.peak.flops > it->peak.flops)
+      *it = r;
   }
   ExportTable t;
   t.caption = "Peak single-precision throughput of the rotation kernel on the CPUs (GFLOPS)";

@@ -36,7 +36,10 @@ std::string provenance_text(const PipelineRun& r) {
 }  // namespace
 
 int pipeline_stage_order(const std::string& s) {
-  return s == pipeline_stage::kPreprocess ? 0 : s == pipeline_stage::kDetect ? 1 : s == pipeline_stage::kEndToEnd ? 2 : 3;
+  return s == pipeline_stage::kPreprocess ? 0
+         : s == pipeline_stage::kDetect   ? 1
+         : s == pipeline_stage::kEndToEnd ? 2
+                                          : 3;
 }
 
 std::string format_ms(double ms) { return fixed(ms, decimals(ms)); }
@@ -86,8 +89,7 @@ ExportTable pipeline_table(std::span<const PipelineRun> runs) {
   for (const PipelineTableRow& r : pipeline_table_rows(runs)) {
     char fps[32] = "–";
     if (r.stage_fps) std::snprintf(fps, sizeof fps, "%.1f", *r.stage_fps);
-    t.rows.push_back({r.stage_label, r.platform, r.time_text(), r.p95_text(), fps,
-                      std::string(to_string(r.origin))});
+    t.rows.push_back({r.stage_label, r.platform, r.time_text(), r.p95_text(), fps, std::string(to_string(r.origin))});
   }
   return t;
 }

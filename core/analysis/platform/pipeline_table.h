@@ -14,8 +14,8 @@
 namespace bs {
 
 struct PipelineTableRow {
-  std::string stage;         // canonical name (pipeline_stage::k...)
-  std::string stage_label;   // "Preprocessing (demosaic + reprojection)", "Detection", "End to end"
+  std::string stage;        // canonical name (pipeline_stage::k...)
+  std::string stage_label;  // "Preprocessing (demosaic + reprojection)", "Detection", "End to end"
   std::string platform, device, backend;
   std::size_t n = 0;
   double mean_ms = 0, sd_ms = 0;
@@ -23,12 +23,12 @@ struct PipelineTableRow {
   // 1000 / mean ms: frames per second this stage alone keeps up with. None for end to end: that is a latency
   // (queueing included), and the run's throughput says the rate.
   std::optional<double> stage_fps;
-  std::optional<double> throughput_fps;   // of the whole run, when measured
+  std::optional<double> throughput_fps;  // of the whole run, when measured
   DataOrigin origin = DataOrigin::Unknown;
-  std::string provenance;                 // one paragraph: origin, note, host, date, file
-  std::string lens_calibration;           // how the run's lens was obtained (vision::describe); empty: not recorded
-  std::string time_text() const;          // "6.21 ± 0.99 ms (n = 500)": SD to the mean's decimals
-  std::string p95_text() const;           // "8.10", "–" when unknown
+  std::string provenance;         // one paragraph: origin, note, host, date, file
+  std::string lens_calibration;   // how the run's lens was obtained (vision::describe); empty: not recorded
+  std::string time_text() const;  // "6.21 ± 0.99 ms (n = 500)": SD to the mean's decimals
+  std::string p95_text() const;   // "8.10", "–" when unknown
 };
 
 // Three significant figures like the paper's 6.21 ms (0 to 2 decimals by magnitude, never exponents).

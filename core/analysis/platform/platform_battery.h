@@ -23,8 +23,8 @@ struct PlatformBattery {
   std::string trace_label;
   double computer_mean_w = 0;  // mean power of the platform's log
   Mission mission;
-  DischargeResult result;      // with the options' model
-  DischargeResult lipo;        // with the LiPo model, for the pack-voltage curve (equal to `result` when LiPo)
+  DischargeResult result;  // with the options' model
+  DischargeResult lipo;    // with the LiPo model, for the pack-voltage curve (equal to `result` when LiPo)
 };
 
 // One row per platform that has a log with a known power (the first such log of each platform), in log order.

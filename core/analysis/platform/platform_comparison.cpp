@@ -4,14 +4,14 @@
 #include "analysis/stats/units.h"
 
 #include <algorithm>
-#include <limits>
 #include <cstdio>
+#include <limits>
 
-#include "analysis/power/battery.h"
 #include "analysis/platform/platform_battery.h"
-#include "analysis/stats/measurement_text.h"
+#include "analysis/power/battery.h"
 #include "analysis/power/power.h"
 #include "analysis/power/power_stats.h"
+#include "analysis/stats/measurement_text.h"
 
 namespace bs {
 namespace {
@@ -19,8 +19,7 @@ namespace {
 std::string peak_how(const PeakRow& r) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "peak of %s / %s / %s, D = %d, at %lld workers (n = %zu)", r.device.c_str(),
-                r.backend.c_str(), r.variant.c_str(), r.dims, static_cast<long long>(r.peak.workers),
-                r.peak.at_peak.n);
+                r.backend.c_str(), r.variant.c_str(), r.dims, static_cast<long long>(r.peak.workers), r.peak.at_peak.n);
   return buf;
 }
 
@@ -49,14 +48,15 @@ void add_power(PlatformRow& row, const PowerTrace& trace, const ComparisonOption
   const double peak = row.best_peak_flops();
   if (peak > 0) {
     row.gflops_per_watt_mean = peak / 1e9 / s.power_w->summary.mean;
-    if (s.current_a && s.supply_v) row.gflops_per_watt_paper = paper_flops_per_watt(peak, *s.supply_v, s.current_a->summary.max) / 1e9;
+    if (s.current_a && s.supply_v)
+      row.gflops_per_watt_paper = paper_flops_per_watt(peak, *s.supply_v, s.current_a->summary.max) / 1e9;
   }
 }
 
 // Spreads the peaks' and the power log's flags (set above) over every cell computed from them.
 void attach_flags(PlatformRow& row) {
-  const std::vector<PlausibilityFlag> power = row.flags.count(column::kPower) ? row.flags[column::kPower]
-                                                                               : std::vector<PlausibilityFlag>{};
+  const std::vector<PlausibilityFlag> power =
+      row.flags.count(column::kPower) ? row.flags[column::kPower] : std::vector<PlausibilityFlag>{};
   if (row.gpu && !row.gpu->flags.empty()) row.flags[column::kGpuPeak] = row.gpu->flags;
   if (row.cpu && !row.cpu->flags.empty()) row.flags[column::kCpuPeak] = row.cpu->flags;
   std::vector<PlausibilityFlag> per_watt = row.best_peak() ? row.best_peak()->flags : std::vector<PlausibilityFlag>{};
@@ -143,7 +143,8 @@ std::vector<PipelineTimings> pipeline_timings(std::span<const PipelineRun> runs)
   for (const PipelineRun& r : runs) {
     auto t = pipeline_timings(r);
     if (!t) continue;
-    const auto same = std::find_if(out.begin(), out.end(), [&](const PipelineTimings& p) { return p.platform == t->platform; });
+    const auto same =
+        std::find_if(out.begin(), out.end(), [&](const PipelineTimings& p) { return p.platform == t->platform; });
     if (same != out.end())
       *same = std::move(*t);
     else
@@ -176,13 +177,14 @@ std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::
     if (frame_ms > 0) row.fps = 1000.0 / frame_ms;
     // Energy per frame: from the power trace over the pipeline's window when both are known, otherwise the mean
     // power of the platform's log times the frame time (labelled as such).
-    const auto trace = std::find_if(traces.begin(), traces.end(), [&](const PowerTrace& t) { return t.platform == p.platform; });
+    const auto trace =
+        std::find_if(traces.begin(), traces.end(), [&](const PowerTrace& t) { return t.platform == p.platform; });
     if (trace != traces.end() && p.window_from_s && p.window_to_s) {
       row.energy_per_frame_j = energy_per_frame_j(*trace, *p.window_from_s, *p.window_to_s, p.frames, o.supply_v);
       if (row.energy_per_frame_j)
-        row.sources[column::kEnergyPerFrame] = {trace->provenance.source_file, trace->provenance.origin,
-                                                "energy of " + trace->label + " over the pipeline run / " +
-                                                    std::to_string(p.frames) + " frames"};
+        row.sources[column::kEnergyPerFrame] = {
+            trace->provenance.source_file, trace->provenance.origin,
+            "energy of " + trace->label + " over the pipeline run / " + std::to_string(p.frames) + " frames"};
     }
     // Per stage: the platform's mean power over each stage's mean time (the paper's NUC: 40.52 W x 6.21 ms).
     if (row.mean_power_w) {
@@ -204,9 +206,11 @@ std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::
     if (o.mission.empty()) {
       const double load = *row.mean_power_w + o.extra_load_w;
       row.battery_load_w = load;
-      row.battery_runtime_h = constant_power_runtime_h(o.battery_nominal_v, o.battery_capacity_ah, load, o.usable_fraction);
+      row.battery_runtime_h =
+          constant_power_runtime_h(o.battery_nominal_v, o.battery_capacity_ah, load, o.usable_fraction);
       std::snprintf(how, sizeof how, "constant power: %.2f V x %.3f Ah x %.0f %% / (%.2f W computer + %.2f W parallel)",
-                    o.battery_nominal_v, o.battery_capacity_ah, o.usable_fraction * 100, *row.mean_power_w, o.extra_load_w);
+                    o.battery_nominal_v, o.battery_capacity_ah, o.usable_fraction * 100, *row.mean_power_w,
+                    o.extra_load_w);
     } else {
       // The mission's phases with the computer and the parallel load on top, through the same simulation as the
       // Battery tab; the pack is only its nominal energy in the constant-power model.
@@ -226,16 +230,16 @@ std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::
                     o.mission.c_str(), *row.mean_power_w, o.extra_load_w, m.mean_load_w(), o.battery_nominal_v,
                     o.battery_capacity_ah, o.usable_fraction * 100, r.stop_reason.c_str());
     }
-    row.sources[column::kBattery] = {row.sources.count(column::kPower) ? row.sources[column::kPower].source_file : "",
-                                     row.sources.count(column::kPower) ? row.sources[column::kPower].origin
-                                                                       : DataOrigin::Unknown,
-                                     how};
+    row.sources[column::kBattery] = {
+        row.sources.count(column::kPower) ? row.sources[column::kPower].source_file : "",
+        row.sources.count(column::kPower) ? row.sources[column::kPower].origin : DataOrigin::Unknown, how};
     if (row.energy_per_frame_j && *row.energy_per_frame_j > 0) {
       row.frames_per_wh = 3600.0 / *row.energy_per_frame_j;
       const CellSource& e = row.sources[column::kEnergyPerFrame];
       row.sources[column::kFramesPerWh] = {e.source_file, e.origin,
                                            "frames preprocessed and detected per Wh of the computer: 3600 / energy "
-                                           "per frame (" + e.how + ")"};
+                                           "per frame (" +
+                                               e.how + ")"};
     }
   }
   for (PlatformRow& row : rows) attach_flags(row);
@@ -263,8 +267,10 @@ std::vector<PlatformVerdict> recommend(std::span<const PlatformRow> rows, const 
       check("battery runtime", "min", *c.min_runtime_h * 60,
             row.battery_runtime_h ? std::optional<double>(*row.battery_runtime_h * 60) : std::nullopt, false);
     v.meets_all = std::all_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.met; });
-    if (!row.mean_power_w) v.note = "no power log: its power and battery runtime are unknown";
-    else if (row.best_peak_flops() <= 0) v.note = "no FLOPS runs";
+    if (!row.mean_power_w)
+      v.note = "no power log: its power and battery runtime are unknown";
+    else if (row.best_peak_flops() <= 0)
+      v.note = "no FLOPS runs";
     out.push_back(std::move(v));
   }
   // Among the platforms that meet every constraint, the most compute wins (the paper's reasoning), ranked by peaks
@@ -279,8 +285,7 @@ std::vector<PlatformVerdict> recommend(std::span<const PlatformRow> rows, const 
   }
   const PlatformRow* best = nullptr;
   for (std::size_t i = 0; i < rows.size(); ++i)
-    if (out[i].meets_all && out[i].note.empty() &&
-        (!best || rows[i].trusted_peak_flops() > best->trusted_peak_flops()))
+    if (out[i].meets_all && out[i].note.empty() && (!best || rows[i].trusted_peak_flops() > best->trusted_peak_flops()))
       best = &rows[i];
   for (std::size_t i = 0; i < rows.size(); ++i) out[i].recommended = best == &rows[i];
   return out;

@@ -32,7 +32,7 @@ struct PipelineTimings {
   Summary preprocess_ms;
   std::optional<Summary> detect_ms;
   std::optional<double> window_from_s, window_to_s;  // seconds from the trace's start
-  std::size_t frames = 0;                             // frames processed in the window
+  std::size_t frames = 0;                            // frames processed in the window
   CellSource source;
 };
 
@@ -46,7 +46,7 @@ std::vector<PipelineTimings> pipeline_timings(std::span<const PipelineRun> runs)
 
 struct PlatformRow {
   std::string platform;
-  std::optional<PeakRow> gpu, cpu;         // the highest-FLOPS run of each kind
+  std::optional<PeakRow> gpu, cpu;  // the highest-FLOPS run of each kind
   std::optional<double> mean_power_w, max_power_w;
   std::optional<double> gflops_per_watt_paper;  // best peak / (supply V x max current), as the paper defines it
   std::optional<double> gflops_per_watt_mean;   // best peak / mean power
@@ -60,26 +60,26 @@ struct PlatformRow {
   // Frames preprocessed and detected per watt-hour of the computer: 3600 / energy per frame (J), i.e. the mean
   // power over (preprocessing + detection) mean time, or the time-aligned energy when the log covers the run.
   std::optional<double> frames_per_wh;
-  std::map<std::string, CellSource> sources;      // column id -> where the number came from
+  std::map<std::string, CellSource> sources;  // column id -> where the number came from
   // Column id (platform_table_columns()) -> plausibility flags of that cell: the peaks' own, the power log's on
   // every power-derived column, and both on GFLOPS/W. A column without an entry is not flagged.
   std::map<std::string, std::vector<PlausibilityFlag>> flags;
-  std::string power_measurement;                  // how the power log was measured (measurement_text())
+  std::string power_measurement;  // how the power log was measured (measurement_text())
   double best_peak_flops() const;
   // What the recommendation ranks by: the highest peak, where a peak that carries a plausibility flag counts at
   // most its device's vendor spec or computed peak (0 when neither is known), so an impossible figure (the paper's
   // NUC GPU at 6x its spec) never wins by its excess.
   double trusted_peak_flops() const;
-  const PeakRow* best_peak() const;               // the run behind best_peak_flops(), nullptr when none
+  const PeakRow* best_peak() const;                 // the run behind best_peak_flops(), nullptr when none
   std::vector<PlausibilityFlag> all_flags() const;  // every column's, each once
 };
 
 struct ComparisonOptions {
-  double battery_nominal_v = 14.8;    // the paper's 4S LiPo
+  double battery_nominal_v = 14.8;  // the paper's 4S LiPo
   double battery_capacity_ah = 3.85;
   double usable_fraction = 1.0;
-  double extra_load_w = 0;            // in parallel, e.g. servos
-  std::optional<double> supply_v;     // overrides the traces' supply voltage
+  double extra_load_w = 0;         // in parallel, e.g. servos
+  std::optional<double> supply_v;  // overrides the traces' supply voltage
   // A mission profile (parse_mission() text, e.g. "idle:60:12,walk:30:140,kick:5:225": servo loads per phase) in
   // parallel with the computer's mean power and extra_load_w (platform_mission(), as the Battery tab); the runtime
   // is then simulate_discharge()'s with the constant-power model. Empty: the constant load alone.
@@ -116,12 +116,12 @@ struct Constraints {
 };
 
 struct ConstraintCheck {
-  std::string name;      // "power budget", "frame rate", "battery runtime"
-  std::string unit;      // "W", "fps", "min"
+  std::string name;  // "power budget", "frame rate", "battery runtime"
+  std::string unit;  // "W", "fps", "min"
   double required = 0;
   std::optional<double> actual;  // nullopt: the platform has no data for it (fails)
   bool met = false;
-  double margin = 0;     // how far inside (+) or outside (-) the limit, in `unit`
+  double margin = 0;  // how far inside (+) or outside (-) the limit, in `unit`
 };
 
 struct PlatformVerdict {

@@ -4,9 +4,9 @@
 #include <map>
 #include <set>
 
-#include "analysis/stats/measurement_text.h"
 #include "analysis/peaks/plausibility.h"
 #include "analysis/power/power.h"
+#include "analysis/stats/measurement_text.h"
 
 namespace bs {
 

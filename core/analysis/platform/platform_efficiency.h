@@ -8,22 +8,22 @@
 #include <string>
 #include <vector>
 
-#include "analysis/platform/efficiency.h"
 #include "analysis/peaks/flops.h"
+#include "analysis/platform/efficiency.h"
 #include "analysis/stats/stats.h"
 #include "model/power_trace.h"
 
 namespace bs {
 
 struct PlatformEfficiency {
-  PeakRow peak;                  // the platform's best run: device, backend, D, peak FLOPS
-  std::string trace_label;       // the current log used
-  double supply_v = 0;           // the log's (or the override's) supply voltage
-  Summary current_a;             // n, mean, SD, min, max of the supply current over the whole log
-  Summary power_w;               // the same for power
-  double paper_gflops_per_w = 0;       // peak / (V x max current): the paper's figure
-  double mean_power_gflops_per_w = 0;  // peak / mean power
-  double joules_per_gflop = 0;         // mean power / (peak / 1e9)
+  PeakRow peak;                           // the platform's best run: device, backend, D, peak FLOPS
+  std::string trace_label;                // the current log used
+  double supply_v = 0;                    // the log's (or the override's) supply voltage
+  Summary current_a;                      // n, mean, SD, min, max of the supply current over the whole log
+  Summary power_w;                        // the same for power
+  double paper_gflops_per_w = 0;          // peak / (V x max current): the paper's figure
+  double mean_power_gflops_per_w = 0;     // peak / mean power
+  double joules_per_gflop = 0;            // mean power / (peak / 1e9)
   std::vector<EfficiencyFigure> figures;  // the same three, labelled (analysis/efficiency.h)
   std::string measurement;                // how the log was measured (measurement_text())
   // The peak's flags and the log's (check_power_trace_bundled()): a GFLOPS/W figure is as doubtful as either.

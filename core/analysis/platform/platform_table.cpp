@@ -38,9 +38,20 @@ std::string fraction(const PlatformRow& r) {
 }  // namespace
 
 std::vector<std::string> platform_table_columns(bool with_verdicts) {
-  std::vector<std::string> c{"platform", column::kGpuPeak, column::kCpuPeak, "theoretical", column::kPipeline,
-                             "detect", column::kPower, "max_power", "gflops_w_paper", "gflops_w_mean",
-                             column::kEnergyPerFrame, column::kEnergyPerStage, column::kEnergyPerStage, "battery",
+  std::vector<std::string> c{"platform",
+                             column::kGpuPeak,
+                             column::kCpuPeak,
+                             "theoretical",
+                             column::kPipeline,
+                             "detect",
+                             column::kPower,
+                             "max_power",
+                             "gflops_w_paper",
+                             "gflops_w_mean",
+                             column::kEnergyPerFrame,
+                             column::kEnergyPerStage,
+                             column::kEnergyPerStage,
+                             "battery",
                              "frames_per_wh"};
   if (with_verdicts) {
     c.push_back("meets");
@@ -53,10 +64,21 @@ ExportTable platform_table(std::span<const PlatformRow> rows, std::span<const Pl
   ExportTable t;
   t.caption = "Platform comparison";
   t.label = "tab:platforms";
-  t.header = {"Platform", "GPU peak (TFLOPS)", "CPU peak (GFLOPS)", "Of theoretical peak", "Preprocessing (ms)",
-              "Detection (ms)", "Mean power (W)", "Max power (W)", "GFLOPS/W (paper: peak / max power)",
-              "GFLOPS/W (peak / mean power)", "Energy per frame (J)", "Energy per preprocessed frame (J)",
-              "Energy per inference (J)", "Battery runtime (min)", "Frames per Wh"};
+  t.header = {"Platform",
+              "GPU peak (TFLOPS)",
+              "CPU peak (GFLOPS)",
+              "Of theoretical peak",
+              "Preprocessing (ms)",
+              "Detection (ms)",
+              "Mean power (W)",
+              "Max power (W)",
+              "GFLOPS/W (paper: peak / max power)",
+              "GFLOPS/W (peak / mean power)",
+              "Energy per frame (J)",
+              "Energy per preprocessed frame (J)",
+              "Energy per inference (J)",
+              "Battery runtime (min)",
+              "Frames per Wh"};
   const bool with_verdicts = verdicts.size() == rows.size() && !rows.empty();
   if (with_verdicts) {
     t.header.push_back("Meets constraints");
@@ -66,21 +88,22 @@ ExportTable platform_table(std::span<const PlatformRow> rows, std::span<const Pl
   FlagNotes notes;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const PlatformRow& r = rows[i];
-    std::vector<std::string> cells{r.platform,
-                                   peak(r.gpu, 1e12, "%.2f"),
-                                   peak(r.cpu, 1e9, "%.1f"),
-                                   fraction(r),
-                                   ms(r.preprocess_ms),
-                                   ms(r.detect_ms),
-                                   num(r.mean_power_w),
-                                   num(r.max_power_w),
-                                   num(r.gflops_per_watt_paper),
-                                   num(r.gflops_per_watt_mean),
-                                   num(r.energy_per_frame_j, "%.3f"),
-                                   num(r.energy_per_preprocess_j, "%.3f"),
-                                   num(r.energy_per_inference_j, "%.3f"),
-                                   num(r.battery_runtime_h ? std::optional<double>(*r.battery_runtime_h * 60) : std::nullopt),
-                                   num(r.frames_per_wh, "%.0f")};
+    std::vector<std::string> cells{
+        r.platform,
+        peak(r.gpu, 1e12, "%.2f"),
+        peak(r.cpu, 1e9, "%.1f"),
+        fraction(r),
+        ms(r.preprocess_ms),
+        ms(r.detect_ms),
+        num(r.mean_power_w),
+        num(r.max_power_w),
+        num(r.gflops_per_watt_paper),
+        num(r.gflops_per_watt_mean),
+        num(r.energy_per_frame_j, "%.3f"),
+        num(r.energy_per_preprocess_j, "%.3f"),
+        num(r.energy_per_inference_j, "%.3f"),
+        num(r.battery_runtime_h ? std::optional<double>(*r.battery_runtime_h * 60) : std::nullopt),
+        num(r.frames_per_wh, "%.0f")};
     // Flagged cells get a footnote marker; the notes go under the table (analysis/flag_notes.h).
     for (std::size_t c = 0; c < cells.size() && c < columns.size(); ++c)
       if (const auto f = r.flags.find(columns[c]); f != r.flags.end()) cells[c] = notes.mark(cells[c], f->second);

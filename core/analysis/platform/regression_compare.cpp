@@ -94,8 +94,8 @@ void compare_runs(std::span<const FlopsRun> ra, std::span<const FlopsRun> rb, co
       if (!o.every_point && s.workers != peak->workers) continue;
       const WorkerSample* t = at_workers(other, s.workers);
       if (!t) continue;
-      out.push_back(judge(key + " | W=" + std::to_string(s.workers), "FLOPS", "FLOP/s", flops_of(r, s),
-                          flops_of(other, *t), o));
+      out.push_back(
+          judge(key + " | W=" + std::to_string(s.workers), "FLOPS", "FLOP/s", flops_of(r, s), flops_of(other, *t), o));
     }
   }
   for (const auto& r : rb) {
@@ -130,7 +130,8 @@ void compare_sets(std::span<const ResultSet> sa, std::span<const ResultSet> sb, 
   for (const auto& s : sb)
     for (const auto& m : s.measurements) {
       const Key key{set_key(s, m), m.metric};
-      if (!m.values.empty() && !matched.count(key)) out.push_back(only_in(key.first, m.metric, m.unit, m.values, false));
+      if (!m.values.empty() && !matched.count(key))
+        out.push_back(only_in(key.first, m.metric, m.unit, m.values, false));
     }
 }
 
@@ -138,13 +139,20 @@ void compare_sets(std::span<const ResultSet> sa, std::span<const ResultSet> sb, 
 
 std::string_view to_string(CompareVerdict v) {
   switch (v) {
-    case CompareVerdict::Unchanged: return "unchanged";
-    case CompareVerdict::Regression: return "regression";
-    case CompareVerdict::Improvement: return "improvement";
-    case CompareVerdict::NotSignificant: return "not significant";
-    case CompareVerdict::Changed: return "changed";
-    case CompareVerdict::OnlyInA: return "only in A";
-    case CompareVerdict::OnlyInB: return "only in B";
+    case CompareVerdict::Unchanged:
+      return "unchanged";
+    case CompareVerdict::Regression:
+      return "regression";
+    case CompareVerdict::Improvement:
+      return "improvement";
+    case CompareVerdict::NotSignificant:
+      return "not significant";
+    case CompareVerdict::Changed:
+      return "changed";
+    case CompareVerdict::OnlyInA:
+      return "only in A";
+    case CompareVerdict::OnlyInB:
+      return "only in B";
   }
   return "?";
 }

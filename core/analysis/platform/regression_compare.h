@@ -16,11 +16,11 @@
 namespace bs {
 
 enum class CompareVerdict {
-  Unchanged,      // within the threshold
-  Regression,     // worse beyond the threshold, significant
-  Improvement,    // better beyond the threshold, significant
-  NotSignificant, // beyond the threshold but not significant (too few repetitions or too much noise)
-  Changed,        // beyond the threshold, significant, but the measure has no better direction (unknown unit)
+  Unchanged,       // within the threshold
+  Regression,      // worse beyond the threshold, significant
+  Improvement,     // better beyond the threshold, significant
+  NotSignificant,  // beyond the threshold but not significant (too few repetitions or too much noise)
+  Changed,         // beyond the threshold, significant, but the measure has no better direction (unknown unit)
   OnlyInA,
   OnlyInB,
 };
@@ -38,9 +38,9 @@ struct MeasureComparison {
 };
 
 struct CompareOptions {
-  double threshold = 0.05;  // relative change that matters
-  double alpha = 0.05;      // significance level
-  bool every_point = false; // FLOPS runs: compare every common worker count, not only A's peak
+  double threshold = 0.05;   // relative change that matters
+  double alpha = 0.05;       // significance level
+  bool every_point = false;  // FLOPS runs: compare every common worker count, not only A's peak
 };
 
 struct CompareInput {

@@ -42,8 +42,8 @@ class MissionClock {
 };
 
 void check(const BatteryPack& pack, const Mission& mission, const DischargeOptions& o) {
-  if (pack.cells_series < 1 || !(pack.capacity_ah > 0) || !(pack.nominal_cell_v > 0) || !(pack.internal_resistance_ohm >= 0) ||
-      !(pack.cutoff_cell_v >= 0))
+  if (pack.cells_series < 1 || !(pack.capacity_ah > 0) || !(pack.nominal_cell_v > 0) ||
+      !(pack.internal_resistance_ohm >= 0) || !(pack.cutoff_cell_v >= 0))
     invalid("the pack needs >= 1 cell, capacity > 0, nominal voltage > 0, resistance >= 0");
   if (mission.phases.empty()) invalid("the mission has no phases");
   double pass = 0;
@@ -162,9 +162,10 @@ DischargeResult lipo(const BatteryPack& pack, const Mission& mission, const Disc
   DischargeResult r;
   const std::vector<OcvPoint>& curve = pack.ocv.empty() ? typical_lipo_ocv() : pack.ocv;
   char label[200];
-  std::snprintf(label, sizeof label,
-                "LiPo discharge curve, %dS, %.0f mOhm internal resistance, cut-off %.2f V/cell, %.0f %% depth of discharge",
-                pack.cells_series, pack.internal_resistance_ohm * 1000, pack.cutoff_cell_v, o.depth_of_discharge * 100);
+  std::snprintf(
+      label, sizeof label,
+      "LiPo discharge curve, %dS, %.0f mOhm internal resistance, cut-off %.2f V/cell, %.0f %% depth of discharge",
+      pack.cells_series, pack.internal_resistance_ohm * 1000, pack.cutoff_cell_v, o.depth_of_discharge * 100);
   r.model_label = label;
   const MissionClock clock(mission);
   const double full_c = pack.capacity_ah * 3600;
@@ -244,12 +245,14 @@ const std::vector<OcvPoint>& typical_lipo_ocv() {
 double ocv_per_cell(const std::vector<OcvPoint>& curve, double soc) {
   if (curve.empty()) return 0;
   soc = std::clamp(soc, 0.0, 1.0);
-  const auto hi = std::lower_bound(curve.begin(), curve.end(), soc, [](const OcvPoint& p, double s) { return p.soc < s; });
+  const auto hi =
+      std::lower_bound(curve.begin(), curve.end(), soc, [](const OcvPoint& p, double s) { return p.soc < s; });
   if (hi == curve.begin()) return hi->volts_per_cell;
   if (hi == curve.end()) return curve.back().volts_per_cell;
   const auto lo = hi - 1;
   const double span = hi->soc - lo->soc;
-  return span > 0 ? lo->volts_per_cell + (hi->volts_per_cell - lo->volts_per_cell) * (soc - lo->soc) / span : hi->volts_per_cell;
+  return span > 0 ? lo->volts_per_cell + (hi->volts_per_cell - lo->volts_per_cell) * (soc - lo->soc) / span
+                  : hi->volts_per_cell;
 }
 
 double mean_ocv_per_cell(const std::vector<OcvPoint>& curve, double lo, double hi) {

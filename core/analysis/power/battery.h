@@ -17,8 +17,8 @@
 namespace bs {
 
 struct OcvPoint {
-  double soc = 0;            // state of charge, 0..1, ascending in a curve
-  double volts_per_cell = 0; // open-circuit (rested) voltage
+  double soc = 0;             // state of charge, 0..1, ascending in a curve
+  double volts_per_cell = 0;  // open-circuit (rested) voltage
 };
 // A typical LiPo cell at rest, 3.27 V empty .. 4.20 V full (hobby-pack tables; real cells differ by ~0.05 V).
 const std::vector<OcvPoint>& typical_lipo_ocv();
@@ -28,7 +28,7 @@ double ocv_per_cell(const std::vector<OcvPoint>& curve, double soc);
 double mean_ocv_per_cell(const std::vector<OcvPoint>& curve, double lo = 0, double hi = 1);
 
 struct BatteryPack {
-  std::string name;                    // preset id, e.g. "paper-4s-3850"
+  std::string name;  // preset id, e.g. "paper-4s-3850"
   std::string description;
   int cells_series = 4;
   double capacity_ah = 3.85;
@@ -51,9 +51,9 @@ struct MissionPhase {
 };
 struct Mission {
   std::vector<MissionPhase> phases;
-  bool repeat = true;         // run the phases again and again until the battery is empty
-  double extra_load_w = 0;    // in parallel with every phase (servos, sensors)
-  double mean_load_w() const; // over one pass, extra load included
+  bool repeat = true;          // run the phases again and again until the battery is empty
+  double extra_load_w = 0;     // in parallel with every phase (servos, sensors)
+  double mean_load_w() const;  // over one pass, extra load included
 };
 Mission constant_load(double watts, double extra_load_w = 0);
 // "idle:60:12,walk:30:140,kick:5:225" (name:seconds:watts, comma separated). Throws std::invalid_argument.
@@ -72,18 +72,18 @@ struct DischargeOptions {
 
 struct DischargePoint {
   double t_s = 0;
-  double soc = 1;          // 0..1
-  double terminal_v = 0;   // pack voltage under load (nominal in the constant-power model)
+  double soc = 1;         // 0..1
+  double terminal_v = 0;  // pack voltage under load (nominal in the constant-power model)
   double current_a = 0;
   double load_w = 0;
-  std::size_t phase = 0;   // index into the mission's phases
+  std::size_t phase = 0;  // index into the mission's phases
 };
 
 struct DischargeResult {
-  std::string model_label;   // e.g. "constant power at 14.8 V nominal (the paper's model)"
+  std::string model_label;  // e.g. "constant power at 14.8 V nominal (the paper's model)"
   double runtime_s = 0;
-  std::string stop_reason;   // "depth of discharge reached", "cut-off voltage reached", ...
-  double energy_wh = 0;      // delivered to the load
+  std::string stop_reason;  // "depth of discharge reached", "cut-off voltage reached", ...
+  double energy_wh = 0;     // delivered to the load
   double mean_load_w = 0;
   double peak_current_a = 0;
   double min_terminal_v = 0;
@@ -91,6 +91,7 @@ struct DischargeResult {
 };
 
 // Throws std::invalid_argument for an empty mission, negative loads or durations, or a bad pack/options.
-DischargeResult simulate_discharge(const BatteryPack& pack, const Mission& mission, const DischargeOptions& options = {});
+DischargeResult simulate_discharge(const BatteryPack& pack, const Mission& mission,
+                                   const DischargeOptions& options = {});
 
 }  // namespace bs

@@ -37,10 +37,10 @@ DecimatedSeries decimate_min_max(std::span<const double> t, std::span<const doub
       // The column's samples end where column_of first exceeds this one: a binary search per column rather than
       // a division per sample (10 M samples, ~1600 columns).
       const std::size_t c = column_of(t[i]);
-      const auto end = static_cast<std::size_t>(
-          std::partition_point(t.begin() + static_cast<std::ptrdiff_t>(i), t.begin() + static_cast<std::ptrdiff_t>(last),
-                               [&](double x) { return column_of(x) <= c; }) -
-          t.begin());
+      const auto end = static_cast<std::size_t>(std::partition_point(t.begin() + static_cast<std::ptrdiff_t>(i),
+                                                                     t.begin() + static_cast<std::ptrdiff_t>(last),
+                                                                     [&](double x) { return column_of(x) <= c; }) -
+                                                t.begin());
       std::size_t k = i;
       while (k < end && std::isnan(v[k])) ++k;
       if (k < end) {
@@ -52,9 +52,12 @@ DecimatedSeries decimate_min_max(std::span<const double> t, std::span<const doub
           if (v[j] > hi) hi = v[j], i_max = j;
         }
         // In time order, so the line goes through both extremes of the column.
-        if (i_min == i_max) push(i_min);
-        else if (i_min < i_max) push(i_min), push(i_max);
-        else push(i_max), push(i_min);
+        if (i_min == i_max)
+          push(i_min);
+        else if (i_min < i_max)
+          push(i_min), push(i_max);
+        else
+          push(i_max), push(i_min);
       }
       i = end;
     }

@@ -16,14 +16,15 @@ struct PhaseEnergy {
   std::string name;
   double start_s = 0, end_s = 0;
   double energy_j = 0;
-  double mean_power_w = 0;     // energy / duration
-  std::size_t samples = 0;     // samples of the trace inside [start, end]: under 2, the figure is interpolated
+  double mean_power_w = 0;  // energy / duration
+  std::size_t samples = 0;  // samples of the trace inside [start, end]: under 2, the figure is interpolated
 };
 
 // Every phase of `trace`, in its order, over the trace's total power (power_series). Empty without power.
 std::vector<PhaseEnergy> phase_energies(const PowerTrace& trace);
 // The energy of [from_s, to_s] over the total power, or empty when the trace has no power there.
-std::optional<PhaseEnergy> window_energy(const PowerTrace& trace, double from_s, double to_s, const std::string& name = {});
+std::optional<PhaseEnergy> window_energy(const PowerTrace& trace, double from_s, double to_s,
+                                         const std::string& name = {});
 
 // Energy per item of work (J per frame, J per inference): energy / count; empty when count is 0.
 std::optional<double> joules_per_item(const PhaseEnergy& phase, std::size_t count);

@@ -74,7 +74,8 @@ TraceStats trace_stats(const PowerTrace& trace, std::optional<double> supply_v, 
 }
 
 double paper_flops_per_watt(double peak_flops, double supply_v, double max_current_a) {
-  if (!(supply_v > 0 && max_current_a > 0)) throw std::invalid_argument("supply voltage and maximum current must be > 0");
+  if (!(supply_v > 0 && max_current_a > 0))
+    throw std::invalid_argument("supply voltage and maximum current must be > 0");
   return peak_flops / (supply_v * max_current_a);
 }
 

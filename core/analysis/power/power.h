@@ -54,6 +54,7 @@ double paper_flops_per_watt(double peak_flops, double supply_v, double max_curre
 
 // The paper's battery model: t = V_nominal x capacity / P_mean (constant power), in hours. `usable_fraction` is
 // the depth of discharge a LiPo is allowed (1 in the paper).
-double constant_power_runtime_h(double nominal_v, double capacity_ah, double mean_power_w, double usable_fraction = 1.0);
+double constant_power_runtime_h(double nominal_v, double capacity_ah, double mean_power_w,
+                                double usable_fraction = 1.0);
 
 }  // namespace bs

@@ -99,8 +99,10 @@ std::vector<DetectedPhase> detect_phases(std::span<const double> t, std::span<co
   };
   std::vector<Segment> merged;
   for (const Segment& g : done) {
-    if (!merged.empty() && std::abs(raw_mean(merged.back()) - raw_mean(g)) < step) merged.back().end = g.end;
-    else merged.push_back(g);
+    if (!merged.empty() && std::abs(raw_mean(merged.back()) - raw_mean(g)) < step)
+      merged.back().end = g.end;
+    else
+      merged.push_back(g);
   }
   std::vector<DetectedPhase> phases;
   double lowest = 0;
@@ -125,7 +127,8 @@ std::vector<TracePhase> to_trace_phases(const std::vector<DetectedPhase>& phases
   return out;
 }
 
-std::optional<TimeWindow> align_run(const PowerTrace& trace, std::string_view run_start_iso, std::string_view run_end_iso) {
+std::optional<TimeWindow> align_run(const PowerTrace& trace, std::string_view run_start_iso,
+                                    std::string_view run_end_iso) {
   if (trace.start_time.empty() || trace.time_s.empty()) return std::nullopt;
   const auto origin = parse_iso8601(trace.start_time);
   const auto start = parse_iso8601(run_start_iso);
@@ -138,7 +141,8 @@ std::optional<TimeWindow> align_run(const PowerTrace& trace, std::string_view ru
   return w;
 }
 
-std::optional<DetectedPhase> match_load_phase(const std::vector<DetectedPhase>& phases, double run_duration_s, double tolerance) {
+std::optional<DetectedPhase> match_load_phase(const std::vector<DetectedPhase>& phases, double run_duration_s,
+                                              double tolerance) {
   std::optional<DetectedPhase> best;
   double best_err = 0;
   for (const DetectedPhase& p : phases) {

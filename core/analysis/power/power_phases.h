@@ -47,7 +47,8 @@ struct TimeWindow {
 
 // A benchmark run given by absolute ISO 8601 start and end times, in the trace's own seconds. Empty when the
 // trace has no absolute start time, a time does not parse, or the run does not overlap the trace.
-std::optional<TimeWindow> align_run(const PowerTrace& trace, std::string_view run_start_iso, std::string_view run_end_iso);
+std::optional<TimeWindow> align_run(const PowerTrace& trace, std::string_view run_start_iso,
+                                    std::string_view run_end_iso);
 
 // When the clocks were not shared: the load phase whose duration is closest to the run's, if within
 // `tolerance` (relative, 0.25 = 25 %).

@@ -8,14 +8,14 @@
 #include <cmath>
 #include <stdexcept>
 
-
 namespace bs {
 namespace {
 
 // The trace's main channel of quantity q (its named total, else the first: analysis/power.h).
 const PowerChannel* first_channel(const PowerTrace& t, PowerQuantity q) { return main_channel(t, q); }
 
-SignalStats signal_of(const TraceIndex& index, const RangeSummary& r, double from_s, double to_s, bool with_percentiles) {
+SignalStats signal_of(const TraceIndex& index, const RangeSummary& r, double from_s, double to_s,
+                      bool with_percentiles) {
   SignalStats s;
   s.summary = r.samples;
   s.has_percentiles = with_percentiles;
@@ -25,23 +25,32 @@ SignalStats signal_of(const TraceIndex& index, const RangeSummary& r, double fro
 
 }  // namespace
 
-SignalStats signal_stats(std::span<const double> values) { return {summarize_samples(values), percentiles(values), true}; }
+SignalStats signal_stats(std::span<const double> values) {
+  return {summarize_samples(values), percentiles(values), true};
+}
 
 std::string_view to_string(PowerSource source) {
   switch (source) {
-    case PowerSource::Channel: return "power channel";
-    case PowerSource::CurrentTimesVoltage: return "current x voltage channel";
-    case PowerSource::CurrentTimesSupply: return "current x supply voltage";
-    case PowerSource::Unknown: break;
+    case PowerSource::Channel:
+      return "power channel";
+    case PowerSource::CurrentTimesVoltage:
+      return "current x voltage channel";
+    case PowerSource::CurrentTimesSupply:
+      return "current x supply voltage";
+    case PowerSource::Unknown:
+      break;
   }
   return "unknown (current only, no supply voltage)";
 }
 
 std::string_view unit_of(PowerQuantity quantity) {
   switch (quantity) {
-    case PowerQuantity::Current: return "A";
-    case PowerQuantity::Voltage: return "V";
-    case PowerQuantity::Power: return "W";
+    case PowerQuantity::Current:
+      return "A";
+    case PowerQuantity::Voltage:
+      return "V";
+    case PowerQuantity::Power:
+      return "W";
   }
   return "";
 }
@@ -108,10 +117,13 @@ void PowerIndex::note_missing_rows(const PowerTrace& trace) {
   const PowerChannel* voltage = first_channel(trace, PowerQuantity::Voltage);
   for (std::size_t k = 0; k < trace.time_s.size(); ++k) {
     bool missing = true;
-    if (main_power) missing = std::isnan(main_power->values[k]);
+    if (main_power)
+      missing = std::isnan(main_power->values[k]);
     else if (main_current && source_ != PowerSource::Unknown)
-      missing = std::isnan(main_current->values[k]) || (source_ == PowerSource::CurrentTimesVoltage && std::isnan(voltage->values[k]));
-    else if (main_current) missing = std::isnan(main_current->values[k]);
+      missing = std::isnan(main_current->values[k]) ||
+                (source_ == PowerSource::CurrentTimesVoltage && std::isnan(voltage->values[k]));
+    else if (main_current)
+      missing = std::isnan(main_current->values[k]);
     if (missing) missing_t_.push_back(trace.time_s[k]);
   }
 }
@@ -142,7 +154,8 @@ PowerStats PowerIndex::stats(std::optional<double> from, std::optional<double> t
     return s;
   }
   // The range is the main signal's, clamped to its samples; every other signal is asked over the same range.
-  const RangeSummary m = main_signal->summary(from.value_or(main_signal->first_s()), to.value_or(main_signal->last_s()));
+  const RangeSummary m =
+      main_signal->summary(from.value_or(main_signal->first_s()), to.value_or(main_signal->last_s()));
   if (from && *from > main_signal->last_s()) return s;  // entirely after the log: nothing inside
   if (to && *to < main_signal->first_s()) return s;
   s.from_s = m.from_s;

@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/stats/stats.h"
 #include "analysis/power/trace_index.h"
+#include "analysis/stats/stats.h"
 #include "model/power_trace.h"
 
 namespace bs {
@@ -48,15 +48,15 @@ struct PowerStatsOptions {
 };
 
 struct PowerStats {
-  std::size_t n = 0;               // rows (timestamps) inside the range, present or missing
-  double from_s = 0, to_s = 0;     // the range actually covered (clamped to the main signal's present samples)
-  double duration_s = 0;           // to_s - from_s (interpolated ends: not the span of the samples inside)
+  std::size_t n = 0;            // rows (timestamps) inside the range, present or missing
+  double from_s = 0, to_s = 0;  // the range actually covered (clamped to the main signal's present samples)
+  double duration_s = 0;        // to_s - from_s (interpolated ends: not the span of the samples inside)
   std::optional<SignalStats> current_a;
   std::optional<SignalStats> power_w;
   PowerSource power_source = PowerSource::Unknown;
-  std::optional<double> supply_v;  // the voltage used when power_source is CurrentTimesSupply
-  std::optional<double> energy_j;  // trapezoidal over [from_s, to_s], interpolated at the range's ends
-  std::optional<double> charge_c;  // the same for current (A s = C)
+  std::optional<double> supply_v;      // the voltage used when power_source is CurrentTimesSupply
+  std::optional<double> energy_j;      // trapezoidal over [from_s, to_s], interpolated at the range's ends
+  std::optional<double> charge_c;      // the same for current (A s = C)
   std::optional<double> mean_power_w;  // energy_j / duration_s: time-weighted, unlike power_w's sample mean
   std::vector<ChannelStats> channels;
 };
@@ -74,7 +74,9 @@ class PowerIndex {
   // percentiles of current, power and channels), for live updates over long ranges.
   PowerStats stats(std::optional<double> from_s = std::nullopt, std::optional<double> to_s = std::nullopt,
                    bool with_percentiles = true) const;
-  const TraceIndex* current() const { return current_ < 0 ? nullptr : &channels_[static_cast<std::size_t>(current_)].index; }
+  const TraceIndex* current() const {
+    return current_ < 0 ? nullptr : &channels_[static_cast<std::size_t>(current_)].index;
+  }
   const TraceIndex* power() const;  // nullptr when power is unknown
   // The main signal: power when known, else current; nullptr for a trace with neither.
   const TraceIndex* main() const;
@@ -107,9 +109,9 @@ struct PowerSeries {
 PowerSeries derive_power(const PowerTrace& trace, std::optional<double> supply_v = std::nullopt);
 
 // Trapezoidal integral over irregular timestamps restricted to [from_s, to_s] (TraceIndex::integral, built for one
-// query; keep a TraceIndex for many); the values at the ends are interpolated linearly, so a window cut between two samples gets its exact share. Timestamps non-decreasing.
-// Missing samples (NaN) are bridged by the line between the present samples around them; the range is clipped to
-// the first..last present sample.
+// query; keep a TraceIndex for many); the values at the ends are interpolated linearly, so a window cut between two
+// samples gets its exact share. Timestamps non-decreasing. Missing samples (NaN) are bridged by the line between the
+// present samples around them; the range is clipped to the first..last present sample.
 double integrate_range(std::span<const double> time_s, std::span<const double> values, double from_s, double to_s);
 
 }  // namespace bs

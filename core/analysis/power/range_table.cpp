@@ -20,9 +20,9 @@ RangeSignal default_signal(const PowerStats& s) { return s.power_w ? RangeSignal
 
 std::vector<std::string> range_headers(RangeSignal signal) {
   const std::string u = signal == RangeSignal::Power ? " (W)" : " (A)";
-  return {"n",        "duration (s)", "mean" + u,    "SD" + u,      "min" + u,       "max" + u,
-          "p2p" + u,  "p5" + u,       "p50" + u,     "p95" + u,     "charge (C)",    "charge (mAh)",
-          "energy (J)", "energy (Wh)", "mean power (W)"};
+  return {"n",          "duration (s)", "mean" + u,   "SD" + u,      "min" + u,
+          "max" + u,    "p2p" + u,      "p5" + u,     "p50" + u,     "p95" + u,
+          "charge (C)", "charge (mAh)", "energy (J)", "energy (Wh)", "mean power (W)"};
 }
 
 std::vector<std::string> range_cells(const PowerStats& s, RangeSignal signal) {

@@ -20,7 +20,8 @@ std::vector<PointEnergy> sweep_point_energies(const PowerTrace& trace, const std
   for (const FlopsRun& run : runs)
     for (const WorkerSample& s : run.samples) {
       const std::string name = sweep_point_phase(s.workers, run.dims);
-      const auto e = std::find_if(energies.begin(), energies.end(), [&](const PhaseEnergy& p) { return p.name == name; });
+      const auto e =
+          std::find_if(energies.begin(), energies.end(), [&](const PhaseEnergy& p) { return p.name == name; });
       if (e == energies.end() || s.seconds.empty()) continue;
       double mean_s = 0;
       for (double v : s.seconds) mean_s += v;

@@ -18,11 +18,11 @@ std::string sweep_warmup_phase(int dims);                       // "warm-up D=4"
 struct PointEnergy {
   int dims = 0;
   std::int64_t workers = 0;
-  double gflops = 0;          // at the point's mean time
-  double mean_power_w = 0;    // over the point's phase
-  double joules_per_run = 0;  // the phase's energy / repeats
-  double gflops_per_watt = 0; // gflops / mean power
-  std::size_t samples = 0;    // trace samples inside the phase: under 2, interpolated
+  double gflops = 0;           // at the point's mean time
+  double mean_power_w = 0;     // over the point's phase
+  double joules_per_run = 0;   // the phase's energy / repeats
+  double gflops_per_watt = 0;  // gflops / mean power
+  std::size_t samples = 0;     // trace samples inside the phase: under 2, interpolated
 };
 
 // One entry per point of `runs` that has a phase in `trace`, in run and worker order.

@@ -23,7 +23,8 @@ Percentiles quantiles_in_place(std::vector<double>& w) {
     const std::size_t hi = std::min(lo + 1, m - 1);
     // Everything before `start` is <= everything from it on (the previous nth_element), so partitioning the tail
     // is enough.
-    std::nth_element(w.begin() + static_cast<std::ptrdiff_t>(start), w.begin() + static_cast<std::ptrdiff_t>(lo), w.end());
+    std::nth_element(w.begin() + static_cast<std::ptrdiff_t>(start), w.begin() + static_cast<std::ptrdiff_t>(lo),
+                     w.end());
     start = lo;
     const double vlo = w[lo];
     const double vhi = hi == lo ? vlo : *std::min_element(w.begin() + static_cast<std::ptrdiff_t>(hi), w.end());
@@ -204,7 +205,8 @@ RangeSummary TraceIndex::summary(double from_s, double to_s) const {
 
 Percentiles TraceIndex::percentiles(double from_s, double to_s) const {
   const auto [first, last] = sample_range(from_s, to_s);
-  std::vector<double> w(v_.begin() + static_cast<std::ptrdiff_t>(first), v_.begin() + static_cast<std::ptrdiff_t>(last));
+  std::vector<double> w(v_.begin() + static_cast<std::ptrdiff_t>(first),
+                        v_.begin() + static_cast<std::ptrdiff_t>(last));
   return quantiles_in_place(w);
 }
 

@@ -16,7 +16,8 @@ TraceSummary summarize_trace(const PowerTrace& trace, std::size_t overview_colum
     cs.stats = signal_stats(c.values);
     cs.integral = integrate_trapezoid(trace.time_s, c.values);
     if (!trace.time_s.empty() && c.values.size() == trace.time_s.size() && overview_columns > 0)
-      cs.overview = decimate_min_max(trace.time_s, c.values, trace.time_s.front(), trace.time_s.back(), overview_columns);
+      cs.overview =
+          decimate_min_max(trace.time_s, c.values, trace.time_s.front(), trace.time_s.back(), overview_columns);
     s.channels.push_back(std::move(cs));
   }
   return s;

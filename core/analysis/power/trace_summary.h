@@ -17,14 +17,14 @@ namespace bs {
 struct ChannelSummary {
   std::string name;
   PowerQuantity quantity = PowerQuantity::Current;
-  SignalStats stats;      // n (present samples), mean, sample SD, min, max, p5/p50/p95/p99 of the whole log
-  double integral = 0;    // trapezoidal over time, missing samples bridged (analysis/power.h): J, C or V s
+  SignalStats stats;         // n (present samples), mean, sample SD, min, max, p5/p50/p95/p99 of the whole log
+  double integral = 0;       // trapezoidal over time, missing samples bridged (analysis/power.h): J, C or V s
   DecimatedSeries overview;  // min/max per column over the whole log (analysis/decimate.h)
 };
 
 struct TraceSummary {
-  std::size_t samples = 0;  // timestamps, present or not
-  double duration_s = 0;    // last timestamp minus the first
+  std::size_t samples = 0;               // timestamps, present or not
+  double duration_s = 0;                 // last timestamp minus the first
   std::vector<ChannelSummary> channels;  // in the trace's channel order
 };
 

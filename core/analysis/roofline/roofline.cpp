@@ -30,7 +30,8 @@ RooflinePoint place_on_roofline(const RooflineCeiling& c, std::string label, dou
   const auto ridge = c.ridge_intensity();
   p.memory_bound = ridge && p.intensity < *ridge;
   if (c.empirical_flops && *c.empirical_flops > 0) {
-    const double roof = c.bandwidth_bps ? std::min(*c.empirical_flops, p.intensity * *c.bandwidth_bps) : *c.empirical_flops;
+    const double roof =
+        c.bandwidth_bps ? std::min(*c.empirical_flops, p.intensity * *c.bandwidth_bps) : *c.empirical_flops;
     if (roof > 0) p.fraction_of_empirical = p.flops / roof;
   }
   return p;
@@ -67,9 +68,7 @@ std::vector<RooflineCeiling> roofline_ceilings(std::span<const FlopsRun> runs, s
     for (const Measurement& m : s.measurements) {
       // Only device-memory bandwidth is the memory ceiling: clpeak's transfer (PCIe), local-memory and image
       // bandwidths are other roofs, and their "best" can be a map call clpeak times as 1e6 GB/s.
-      if (m.unit != "B/s" || m.values.empty() ||
-          classify_measurement(m).kind != MeasureKind::MemoryBandwidth)
-        continue;
+      if (m.unit != "B/s" || m.values.empty() || classify_measurement(m).kind != MeasureKind::MemoryBandwidth) continue;
       const double best = *std::max_element(m.values.begin(), m.values.end());
       RooflineCeiling& c = find(s.platform, s.device);
       if (!c.bandwidth_bps || best > *c.bandwidth_bps) {
@@ -85,7 +84,8 @@ std::vector<RooflineCeiling> roofline_ceilings(std::span<const FlopsRun> runs, s
       c.empirical_source = e->how;
       // A measured mix above the computed peak is flagged with the reason, never drawn silently above it.
       if (c.peak_source.rfind("theoretical", 0) == 0)
-        c.flags = compare_to_ceilings(e->flops.mean, c.peak_flops, std::nullopt, "The rotation-mix ceiling", e->how).flags;
+        c.flags =
+            compare_to_ceilings(e->flops.mean, c.peak_flops, std::nullopt, "The rotation-mix ceiling", e->how).flags;
     }
   return out;
 }

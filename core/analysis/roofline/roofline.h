@@ -16,27 +16,27 @@ namespace bs {
 
 struct RooflineCeiling {
   std::string platform, device;
-  double peak_flops = 0;                  // compute ceiling, FLOP/s
-  std::string peak_source;                // "theoretical", "measured peak of <backend>", ...
-  std::optional<double> bandwidth_bps;    // memory ceiling, B/s (best repetition)
+  double peak_flops = 0;                // compute ceiling, FLOP/s
+  std::string peak_source;              // "theoretical", "measured peak of <backend>", ...
+  std::optional<double> bandwidth_bps;  // memory ceiling, B/s (best repetition)
   std::string bandwidth_source;
-  DeviceKind kind = DeviceKind::Other;    // of the device's FLOPS runs
+  DeviceKind kind = DeviceKind::Other;  // of the device's FLOPS runs
   // The rotation kernel's instruction mix measured on the device (analysis/peak_ceilings.h), when stored, and the
   // flags of comparing it with the computed peak (above it: the model understates the core).
   std::optional<double> empirical_flops;
   std::string empirical_source;
   std::vector<PlausibilityFlag> flags;
-  double attainable(double intensity) const;  // min(peak, I x bandwidth); peak when the bandwidth is unknown
+  double attainable(double intensity) const;      // min(peak, I x bandwidth); peak when the bandwidth is unknown
   std::optional<double> ridge_intensity() const;  // peak / bandwidth: where memory-bound turns compute-bound
 };
 
 struct RooflinePoint {
   std::string label;
-  double intensity = 0;      // FLOP/byte
-  double flops = 0;          // achieved FLOP/s
-  double attainable = 0;     // the roof above it
-  double fraction = 0;       // flops / attainable
-  bool memory_bound = false; // left of the ridge
+  double intensity = 0;                         // FLOP/byte
+  double flops = 0;                             // achieved FLOP/s
+  double attainable = 0;                        // the roof above it
+  double fraction = 0;                          // flops / attainable
+  bool memory_bound = false;                    // left of the ridge
   std::optional<double> fraction_of_empirical;  // flops / min(empirical ceiling, intensity x bandwidth)
 };
 

@@ -30,10 +30,14 @@ constexpr double kFusedLutBytes = 8;
 
 std::string stage_kernel_name(StageKernel k) {
   switch (k) {
-    case StageKernel::DemosaicBilinear: return "demosaic (bilinear)";
-    case StageKernel::DemosaicMhc: return "demosaic (Malvar-He-Cutler)";
-    case StageKernel::Reprojection: return "reprojection (bilinear, fixed-point LUT)";
-    case StageKernel::Fused: return "fused demosaic + reprojection";
+    case StageKernel::DemosaicBilinear:
+      return "demosaic (bilinear)";
+    case StageKernel::DemosaicMhc:
+      return "demosaic (Malvar-He-Cutler)";
+    case StageKernel::Reprojection:
+      return "reprojection (bilinear, fixed-point LUT)";
+    case StageKernel::Fused:
+      return "fused demosaic + reprojection";
   }
   return "?";
 }
@@ -112,7 +116,7 @@ const RooflineCeiling* ceiling_for(std::span<const RooflineCeiling> ceilings, co
         (!best || c.device.size() > best->device.size()))
       best = &c;
   if (best) return best;
-  const DeviceKind kind = run.backend == "cpu" ? DeviceKind::Cpu
+  const DeviceKind kind = run.backend == "cpu"                               ? DeviceKind::Cpu
                           : run.backend == "opencl" || run.backend == "cuda" ? DeviceKind::Gpu
                                                                              : DeviceKind::Other;
   if (kind == DeviceKind::Other) return nullptr;

@@ -45,7 +45,7 @@ std::string stage_kernel_name(StageKernel k);
 struct KernelCost {
   StageKernel kernel;
   double ops_per_pixel = 0;
-  double bytes_per_pixel = 0;   // not counting source reads that depend on the geometry (reprojection, fused)
+  double bytes_per_pixel = 0;  // not counting source reads that depend on the geometry (reprojection, fused)
   std::string ops_note, bytes_note;
 };
 KernelCost kernel_cost(StageKernel k);
@@ -59,9 +59,9 @@ struct FrameGeometry {
 
 // Ops and bytes of one frame through a sequence of kernels (a stage = one or more kernels timed together).
 struct StageCost {
-  std::string label;               // "demosaic (bilinear) + reprojection (bilinear, fixed-point LUT)"
+  std::string label;  // "demosaic (bilinear) + reprojection (bilinear, fixed-point LUT)"
   std::vector<StageKernel> kernels;
-  double ops = 0, bytes = 0;       // per frame
+  double ops = 0, bytes = 0;  // per frame
   double intensity() const { return bytes > 0 ? ops / bytes : 0; }
   double ops_per_output_pixel = 0, bytes_per_output_pixel = 0;
 };
@@ -76,9 +76,9 @@ std::optional<std::vector<StageKernel>> preprocessing_kernels(const std::string&
 
 // One pipeline run's preprocessing stage placed on a ceiling.
 struct StagePlacement {
-  std::string platform, device;       // of the ceiling it sits under
-  std::string run_device, backend;    // what the run says ran it
-  std::string source;                 // the run's file, or its note when stored in-process
+  std::string platform, device;     // of the ceiling it sits under
+  std::string run_device, backend;  // what the run says ran it
+  std::string source;               // the run's file, or its note when stored in-process
   DataOrigin origin = DataOrigin::Unknown;
   StageCost cost;
   FrameGeometry geometry;
@@ -91,7 +91,7 @@ struct StagePlacement {
 
 struct StagePlacements {
   std::vector<StagePlacement> placed;
-  std::vector<std::string> skipped;   // "Jetson TX2 (cuda): no roofline ceiling for its device", ...
+  std::vector<std::string> skipped;  // "Jetson TX2 (cuda): no roofline ceiling for its device", ...
 };
 
 // Places the preprocessing stage of every run that has one: under the ceiling of the same platform whose device

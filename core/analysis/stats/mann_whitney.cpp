@@ -19,7 +19,7 @@ std::vector<double> exact_u_counts(int n_a, int n_b) {
     cur[0] = {1.0};
     for (int n = 1; n <= n_b; ++n) {
       std::vector<double> f(static_cast<std::size_t>(m * n + 1), 0.0);
-      for (std::size_t u = 0; u < prev[n].size(); ++u) f[u + n] += prev[n][u];  // largest in a: +n
+      for (std::size_t u = 0; u < prev[n].size(); ++u) f[u + n] += prev[n][u];    // largest in a: +n
       for (std::size_t u = 0; u < cur[n - 1].size(); ++u) f[u] += cur[n - 1][u];  // largest in b
       cur[n] = std::move(f);
     }

@@ -17,7 +17,8 @@ std::vector<double> select_percentiles(std::vector<double>& values, std::span<co
     std::nth_element(first, values.begin() + static_cast<std::ptrdiff_t>(lo), values.end());
     const double at_lo = values[lo];
     // The next value in sorted order is the smallest of those after lo (nth_element put only larger ones there).
-    const double at_hi = lo + 1 < n ? *std::min_element(values.begin() + static_cast<std::ptrdiff_t>(lo + 1), values.end()) : at_lo;
+    const double at_hi =
+        lo + 1 < n ? *std::min_element(values.begin() + static_cast<std::ptrdiff_t>(lo + 1), values.end()) : at_lo;
     out[i] = at_lo + (at_hi - at_lo) * (pos - static_cast<double>(lo));
     settled = lo;
   }

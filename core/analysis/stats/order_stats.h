@@ -9,8 +9,8 @@
 
 namespace bs {
 
-// `values` holds present samples only (no NaN) and is reordered. `qs` in [0, 100]; ascending ones reuse the previous selection. One result per q;
-// all 0 when `values` is empty.
+// `values` holds present samples only (no NaN) and is reordered. `qs` in [0, 100]; ascending ones reuse the previous
+// selection. One result per q; all 0 when `values` is empty.
 std::vector<double> select_percentiles(std::vector<double>& values, std::span<const double> qs);
 
 }  // namespace bs

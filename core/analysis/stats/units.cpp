@@ -29,17 +29,28 @@ int si_exponent(double value) noexcept {
 
 std::string_view si_prefix(int exponent) noexcept {
   switch (exponent) {
-    case -12: return "p";
-    case -9: return "n";
-    case -6: return "\xC2\xB5";  // micro sign, UTF-8
-    case -3: return "m";
-    case 3: return "k";
-    case 6: return "M";
-    case 9: return "G";
-    case 12: return "T";
-    case 15: return "P";
-    case 18: return "E";
-    default: return "";
+    case -12:
+      return "p";
+    case -9:
+      return "n";
+    case -6:
+      return "\xC2\xB5";  // micro sign, UTF-8
+    case -3:
+      return "m";
+    case 3:
+      return "k";
+    case 6:
+      return "M";
+    case 9:
+      return "G";
+    case 12:
+      return "T";
+    case 15:
+      return "P";
+    case 18:
+      return "E";
+    default:
+      return "";
   }
 }
 

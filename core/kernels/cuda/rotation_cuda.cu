@@ -18,8 +18,12 @@ __device__ inline float2 operator*(float a, float2 v) { return make_float2(a * v
 __device__ inline float2 operator-(float2 a, float2 b) { return make_float2(a.x - b.x, a.y - b.y); }
 __device__ inline float2 operator+(float2 a, float2 b) { return make_float2(a.x + b.x, a.y + b.y); }
 __device__ inline float4 operator*(float a, float4 v) { return make_float4(a * v.x, a * v.y, a * v.z, a * v.w); }
-__device__ inline float4 operator-(float4 a, float4 b) { return make_float4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
-__device__ inline float4 operator+(float4 a, float4 b) { return make_float4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
+__device__ inline float4 operator-(float4 a, float4 b) {
+  return make_float4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w);
+}
+__device__ inline float4 operator+(float4 a, float4 b) {
+  return make_float4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w);
+}
 
 // The paper's kernel: one thread per worker, its D points in one float/float2/float4.
 template <class V>
@@ -54,8 +58,14 @@ __global__ void rotate_throughput(float4* xs, float4* ys, long long items, int s
     x2 = n2;
     x3 = n3;
   }
-  xs[4 * i] = x0; xs[4 * i + 1] = x1; xs[4 * i + 2] = x2; xs[4 * i + 3] = x3;
-  ys[4 * i] = y0; ys[4 * i + 1] = y1; ys[4 * i + 2] = y2; ys[4 * i + 3] = y3;
+  xs[4 * i] = x0;
+  xs[4 * i + 1] = x1;
+  xs[4 * i + 2] = x2;
+  xs[4 * i + 3] = x3;
+  ys[4 * i] = y0;
+  ys[4 * i + 1] = y1;
+  ys[4 * i + 2] = y2;
+  ys[4 * i + 3] = y3;
 }
 
 // FP32 lanes per SM: 64 on GP100, Volta, Turing and A100; 128 on Pascal consumer parts, GA10x, Ada, Hopper,
@@ -100,7 +110,10 @@ double run_point(int device, int dims, std::int64_t iterations, std::int64_t wor
   struct Free {
     float** a;
     float** b;
-    ~Free() { cudaFree(*a); cudaFree(*b); }
+    ~Free() {
+      cudaFree(*a);
+      cudaFree(*b);
+    }
   } release{&dx, &dy};
   check(cudaMalloc(&dy, bytes), "cudaMalloc");
   check(cudaMemcpy(dx, xs.data(), bytes, cudaMemcpyHostToDevice), "cudaMemcpy");
@@ -117,10 +130,17 @@ double run_point(int device, int dims, std::int64_t iterations, std::int64_t wor
     cancel.throw_if_cancelled();
     const int steps = static_cast<int>(chunks.next());
     const auto c0 = std::chrono::steady_clock::now();
-    if (!paper) rotate_throughput<<<grid, block>>>(reinterpret_cast<float4*>(dx), reinterpret_cast<float4*>(dy), threads, steps, c, s);
-    else if (dims == 1) rotate_paper<float><<<grid, block>>>(dx, dy, workers, steps, c, s);
-    else if (dims == 2) rotate_paper<float2><<<grid, block>>>(reinterpret_cast<float2*>(dx), reinterpret_cast<float2*>(dy), workers, steps, c, s);
-    else rotate_paper<float4><<<grid, block>>>(reinterpret_cast<float4*>(dx), reinterpret_cast<float4*>(dy), workers, steps, c, s);
+    if (!paper)
+      rotate_throughput<<<grid, block>>>(reinterpret_cast<float4*>(dx), reinterpret_cast<float4*>(dy), threads, steps,
+                                         c, s);
+    else if (dims == 1)
+      rotate_paper<float><<<grid, block>>>(dx, dy, workers, steps, c, s);
+    else if (dims == 2)
+      rotate_paper<float2>
+          <<<grid, block>>>(reinterpret_cast<float2*>(dx), reinterpret_cast<float2*>(dy), workers, steps, c, s);
+    else
+      rotate_paper<float4>
+          <<<grid, block>>>(reinterpret_cast<float4*>(dx), reinterpret_cast<float4*>(dy), workers, steps, c, s);
     check(cudaGetLastError(), "kernel launch");
     check(cudaDeviceSynchronize(), "kernel");
     chunks.completed(steps, std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count());

@@ -100,8 +100,9 @@ const std::string& FusedCuda::device_name() const { return impl_->name; }
 void FusedCuda::run(const std::uint8_t* mosaic, std::size_t stride, std::uint8_t* bgr) {
   Impl& d = *impl_;
   const std::size_t row = static_cast<std::size_t>(d.mosaic.width);
-  check(cudaMemcpy2D(d.raw, row, mosaic, stride, row, static_cast<std::size_t>(d.mosaic.height), cudaMemcpyHostToDevice),
-        "cudaMemcpy2D(mosaic)");
+  check(
+      cudaMemcpy2D(d.raw, row, mosaic, stride, row, static_cast<std::size_t>(d.mosaic.height), cudaMemcpyHostToDevice),
+      "cudaMemcpy2D(mosaic)");
   const dim3 block(32, 8);
   const dim3 grid((d.out_width + block.x - 1) / block.x, (d.out_height + block.y - 1) / block.y);
   fused_kernel<<<grid, block>>>(d.mosaic, d.map, d.out_width, d.out_height, d.fill, d.bgr);

@@ -34,11 +34,13 @@ class TestBandwidth : public QObject {
     none.id = "none";
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, measure_bandwidth(none, cpu, {}, bs::CancelToken{}));
     const Backend cpu_backend = cpu_backends(cpu).front();
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             measure_bandwidth(cpu_backend, cpu, {.mib_per_array = 0, .repeats = 1}, bs::CancelToken{}));
+    QVERIFY_THROWS_EXCEPTION(
+        std::invalid_argument,
+        measure_bandwidth(cpu_backend, cpu, {.mib_per_array = 0, .repeats = 1}, bs::CancelToken{}));
     bs::CancelToken cancelled;
     cancelled.cancel();
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, measure_bandwidth(cpu_backend, cpu, {.mib_per_array = 1, .repeats = 1}, cancelled));
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled,
+                             measure_bandwidth(cpu_backend, cpu, {.mib_per_array = 1, .repeats = 1}, cancelled));
   }
 };
 

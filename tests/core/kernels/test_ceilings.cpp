@@ -11,9 +11,9 @@
 
 #include "kernels/ceiling_cache.h"
 #include "kernels/ceilings.h"
-#include "util/host_clock.h"
 #include "kernels/rotation.h"
 #include "kernels/rotation_simd.h"
+#include "util/host_clock.h"
 
 using namespace bs::kernels;
 
@@ -27,14 +27,16 @@ class TestCeilings : public QObject {
         QCOMPARE(lanes, t.lanes);
         const int n = chains * lanes;
         std::vector<float> xs(static_cast<std::size_t>(n)), ys(xs.size());
-        for (int i = 0; i < n; ++i) xs[i] = static_cast<float>(std::cos(0.1 * i)), ys[i] = static_cast<float>(std::sin(0.1 * i));
+        for (int i = 0; i < n; ++i)
+          xs[i] = static_cast<float>(std::cos(0.1 * i)), ys[i] = static_cast<float>(std::sin(0.1 * i));
         const std::int64_t steps = 1000;
         QVERIFY(ceiling_rotation_mix(t.isa, chains, xs.data(), ys.data(), steps, rotation_cos(), rotation_sin()));
         // Every lane of every chain was rotated by 2 rad exactly `steps` times: (cos(0.1 i + 2 steps), sin(...)).
         // So the counted work, 6 flops x lanes x chains x steps, was done. Float error ~1.2e-7 per step.
         for (int i = 0; i < n; ++i) {
           const double a = 0.1 * i + 2.0 * steps;
-          const QByteArray where = QString("%1, %2 chains, lane %3").arg(QString::fromStdString(t.name)).arg(chains).arg(i).toUtf8();
+          const QByteArray where =
+              QString("%1, %2 chains, lane %3").arg(QString::fromStdString(t.name)).arg(chains).arg(i).toUtf8();
           QVERIFY2(std::abs(xs[i] - std::cos(a)) < 1e-3 && std::abs(ys[i] - std::sin(a)) < 1e-3, where.constData());
           // One step fewer would sit 2 rad away: the check can tell the step count.
           QVERIFY(std::abs(xs[i] - std::cos(a - 2.0)) + std::abs(ys[i] - std::sin(a - 2.0)) > 0.1);

@@ -27,8 +27,10 @@ class TestOpenClBackend : public QObject {
             QVERIFY(seconds > 0);
             QCOMPARE(out.size(), static_cast<std::size_t>(w));
             QVERIFY2(first_wrong_output(out, p) == -1,
-                     qPrintable(QString("%1 %2 D=%3 W=%4").arg(QString::fromStdString(b.device_name),
-                                                                QString::fromStdString(variant_name(v))).arg(d).arg(w)));
+                     qPrintable(QString("%1 %2 D=%3 W=%4")
+                                    .arg(QString::fromStdString(b.device_name), QString::fromStdString(variant_name(v)))
+                                    .arg(d)
+                                    .arg(w)));
           }
       std::vector<float> out;
       QVERIFY_THROWS_EXCEPTION(std::invalid_argument, b.run_point({3, 10}, 4, Variant::Paper, out, bs::CancelToken{}));

@@ -43,8 +43,11 @@ class TestRotation : public QObject {
             rot.outputs(out);
             std::vector<float> ref(static_cast<std::size_t>(w));
             rotate_scalar(p, ref);
-            const QByteArray where = QString("%1 %2 D=%3 W=%4").arg(QString::fromStdString(t.name),
-                                                                     QString::fromStdString(variant_name(v))).arg(d).arg(w).toUtf8();
+            const QByteArray where = QString("%1 %2 D=%3 W=%4")
+                                         .arg(QString::fromStdString(t.name), QString::fromStdString(variant_name(v)))
+                                         .arg(d)
+                                         .arg(w)
+                                         .toUtf8();
             QVERIFY2(first_wrong_output(out, p) == -1, where.constData());
             for (std::size_t i = 0; i < out.size(); ++i) QVERIFY2(std::abs(out[i] - ref[i]) < 1e-3, where.constData());
           }

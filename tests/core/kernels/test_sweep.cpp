@@ -24,19 +24,32 @@ class TestSweep : public QObject {
   void bad_specs_name_the_problem_data() {
     QTest::addColumn<QString>("spec");
     QTest::addColumn<QString>("message");
-    QTest::newRow("empty") << "" << "empty";
-    QTest::newRow("zero") << "0,4" << "at least 1";
-    QTest::newRow("negative step") << "1:10:-1" << "at least 1";
-    QTest::newRow("zero step") << "1:10:0" << "at least 1";
-    QTest::newRow("reversed") << "10:1:1" << "start is greater than stop";
-    QTest::newRow("junk") << "4x" << "expected a whole number";
-    QTest::newRow("two colons") << "1:2" << "START:STOP:STEP";
-    QTest::newRow("too many") << "1:2000000:1" << "more than";
-    QTest::newRow("overflow") << "99999999999999999999" << "too large";
-    QTest::newRow("range near INT64_MAX") << "9223372036854775000:9223372036854775807:1000" << "workers";
-    QTest::newRow("count beyond memory") << "1,300000000" << "workers";
-    QTest::newRow("empty part") << "1,,4" << "expected a whole number";
-    QTest::newRow("four fields") << "1:2:3:4" << "START:STOP:STEP";
+    QTest::newRow("empty") << ""
+                           << "empty";
+    QTest::newRow("zero") << "0,4"
+                          << "at least 1";
+    QTest::newRow("negative step") << "1:10:-1"
+                                   << "at least 1";
+    QTest::newRow("zero step") << "1:10:0"
+                               << "at least 1";
+    QTest::newRow("reversed") << "10:1:1"
+                              << "start is greater than stop";
+    QTest::newRow("junk") << "4x"
+                          << "expected a whole number";
+    QTest::newRow("two colons") << "1:2"
+                                << "START:STOP:STEP";
+    QTest::newRow("too many") << "1:2000000:1"
+                              << "more than";
+    QTest::newRow("overflow") << "99999999999999999999"
+                              << "too large";
+    QTest::newRow("range near INT64_MAX") << "9223372036854775000:9223372036854775807:1000"
+                                          << "workers";
+    QTest::newRow("count beyond memory") << "1,300000000"
+                                         << "workers";
+    QTest::newRow("empty part") << "1,,4"
+                                << "expected a whole number";
+    QTest::newRow("four fields") << "1:2:3:4"
+                                 << "START:STOP:STEP";
   }
   void bad_specs_name_the_problem() {
     QFETCH(QString, spec);
@@ -81,7 +94,8 @@ class TestSweep : public QObject {
       for (std::size_t i = 0; i < curve.size(); ++i) {
         const auto& sample = run.samples[i];
         double sum = 0;
-        for (double t : sample.seconds) sum += 6.0 * run.dims * run.iterations * static_cast<double>(sample.workers) / t;
+        for (double t : sample.seconds)
+          sum += 6.0 * run.dims * run.iterations * static_cast<double>(sample.workers) / t;
         QCOMPARE(curve[i].workers, sample.workers);
         QVERIFY(std::abs(curve[i].flops.mean - sum / static_cast<double>(sample.seconds.size())) <=
                 1e-9 * curve[i].flops.mean);
@@ -165,7 +179,8 @@ class TestSweep : public QObject {
       });
       std::vector<float> out;
       const std::int64_t workers = b.id == "cpu-scalar" ? 4 : 4096;
-      QVERIFY_THROWS_EXCEPTION(bs::Cancelled, b.run_point({4, 1'000'000'000}, workers, b.variants.front(), out, cancel));
+      QVERIFY_THROWS_EXCEPTION(bs::Cancelled,
+                               b.run_point({4, 1'000'000'000}, workers, b.variants.front(), out, cancel));
       canceller.join();
     }
   }

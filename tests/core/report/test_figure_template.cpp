@@ -54,7 +54,8 @@ class TestFigureTemplate : public QObject {
                 .contains("/figures/0/kind"));
     QVERIFY(error_of(R"({"format":"benchscope-figures","version":1,"figures":[{"id":"../x","kind":"flops"}]})")
                 .contains("/figures/0/id"));
-    QVERIFY(error_of(R"({"format":"benchscope-figures","version":1,"figures":[{"kind":"flops"}]})").contains("/figures/0"));
+    QVERIFY(
+        error_of(R"({"format":"benchscope-figures","version":1,"figures":[{"kind":"flops"}]})").contains("/figures/0"));
     QVERIFY(error_of(R"({"format":"benchscope-figures","version":1,"figures":[{"id":"a","kind":"flops","y_scale":0}]})")
                 .contains("y_scale"));
     QVERIFY(!bs::preset_width_mm("a4"));

@@ -8,9 +8,7 @@
 class TestPlatformReport : public QObject {
   Q_OBJECT
  private slots:
-  void escapes() {
-    QCOMPARE(bs::html_escape("a<b & \"c\">"), std::string("a&lt;b &amp; &quot;c&quot;&gt;"));
-  }
+  void escapes() { QCOMPARE(bs::html_escape("a<b & \"c\">"), std::string("a&lt;b &amp; &quot;c&quot;&gt;")); }
 
   void pages_numbers_sources_figures() {
     bs::ReportInput in;
@@ -43,11 +41,12 @@ class TestPlatformReport : public QObject {
     QVERIFY(html.find("lab &lt;1&gt;.bsw") != std::string::npos);
     QCOMPARE(std::count(html.begin(), html.end(), '\n') > 10, true);
     std::size_t pages = 0;
-    for (auto p = html.find("class=\"platform\""); p != std::string::npos; p = html.find("class=\"platform\"", p + 1)) ++pages;
+    for (auto p = html.find("class=\"platform\""); p != std::string::npos; p = html.find("class=\"platform\"", p + 1))
+      ++pages;
     QCOMPARE(pages, std::size_t{3});  // two platforms + the figures
     QVERIFY(html.find("<h2>Robot A</h2>") != std::string::npos);
-    QVERIFY(html.find("12.50") != std::string::npos);         // mean power
-    QVERIFY(html.find("120.00") != std::string::npos);        // 2 h of battery in minutes
+    QVERIFY(html.find("12.50") != std::string::npos);   // mean power
+    QVERIFY(html.find("120.00") != std::string::npos);  // 2 h of battery in minutes
     QVERIFY(html.find("50.0 % of the theoretical peak") != std::string::npos);
     QVERIFY(html.find("1500.00 GFLOPS on GPU X (OpenCL, D = 4, 4096 workers)") != std::string::npos);
     QVERIFY(html.find("mean of a-current.csv x 12 V") != std::string::npos);
@@ -73,7 +72,8 @@ class TestPlatformReport : public QObject {
     in.rows = {a};
     const std::string html = bs::report_html(in);
     QVERIFY(html.find("5.25 (GPU X, OpenCL) [1]") != std::string::npos);
-    QVERIFY(html.find("[1] above_spec_peak: 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;") != std::string::npos);
+    QVERIFY(html.find("[1] above_spec_peak: 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;") !=
+            std::string::npos);
     QVERIFY(html.find("&#9888; above_spec_peak</b>: 5.25 TFLOPS") != std::string::npos);
     QVERIFY(html.find("Power measured by: on-board sensor: INA3221 VDD_IN.") != std::string::npos);
   }

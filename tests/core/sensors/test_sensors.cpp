@@ -3,19 +3,19 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <atomic>
 #include <cmath>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
 
+#include "../../support/sysfs_fixture.h"
 #include "analysis/power/phase_energy.h"
 #include "sensors/discovery.h"
 #include "sensors/ina3221.h"
 #include "sensors/nvml.h"
 #include "sensors/rapl.h"
 #include "sensors/recorder.h"
-#include "../../support/sysfs_fixture.h"
 
 using namespace bs;
 using namespace bs::sensors;
@@ -124,10 +124,10 @@ class TestSensors : public QObject {
     const fs::path root = dir.path().toStdString();
     // Orin NX / Xavier NX rails (energymon's JetsonPowerRails.md): VDD_IN, VDD_CPU_GPU_CV, VDD_SOC on 0x40.
     const std::string d = test::ina3221_hwmon_dir("1-0040", 3);
-    test::ina3221_hwmon_channel(root, d, 1, "VDD_IN", 5000, 1200);        // 5.000 V x 1.200 A = 6.0 W
+    test::ina3221_hwmon_channel(root, d, 1, "VDD_IN", 5000, 1200);         // 5.000 V x 1.200 A = 6.0 W
     test::ina3221_hwmon_channel(root, d, 2, "VDD_CPU_GPU_CV", 5000, 400);  // 2.0 W
     test::ina3221_hwmon_channel(root, d, 3, "VDD_SOC", 5000, 300);         // 1.5 W
-    test::put(root, d + "/in7_label", "Sum of shunt voltages");           // Orin's extra channel: no rail
+    test::put(root, d + "/in7_label", "Sum of shunt voltages");            // Orin's extra channel: no rail
     test::put(root, d + "/name", "ina3221");
     // The same chip under /sys/class/hwmon is not listed twice.
     test::put(root, "sys/class/hwmon/hwmon3/name", "ina3221");

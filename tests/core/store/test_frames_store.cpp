@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Frames in the workspace: imported by reference or as a copy, read back after reopening with the same pixels, a
 // referenced file that changed or vanished is an error naming it, and a failing import stores nothing.
+#include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
-#include <QFile>
 #include <QTest>
 
 #include <fstream>
@@ -154,7 +154,8 @@ class TestFramesStore : public QObject {
     p.start(BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli", {"frames", ws_path});
     QVERIFY(p.waitForFinished(60000));
     const QByteArray listing = p.readAllStandardOutput();
-    QVERIFY2(listing.contains("10x6") && listing.contains("synthetic") && listing.contains("copy"), listing.constData());
+    QVERIFY2(listing.contains("10x6") && listing.contains("synthetic") && listing.contains("copy"),
+             listing.constData());
     // A broken file among good ones: nothing at all is imported.
     const QString ws2 = dir.filePath("w2.bsw"), broken = dir.filePath("broken.pgm");
     write(broken.toStdString(), "P5 40 20 255\nshort");

@@ -45,10 +45,10 @@ bs::PowerTrace make_trace(std::size_t n) {
 }
 
 bool same_stats(const bs::SignalStats& a, const bs::SignalStats& b) {
-  return a.summary.n == b.summary.n && same_bits(a.summary.mean, b.summary.mean) && same_bits(a.summary.sd, b.summary.sd) &&
-         same_bits(a.summary.min, b.summary.min) && same_bits(a.summary.max, b.summary.max) &&
-         same_bits(a.pct.p5, b.pct.p5) && same_bits(a.pct.p50, b.pct.p50) && same_bits(a.pct.p95, b.pct.p95) &&
-         same_bits(a.pct.p99, b.pct.p99);
+  return a.summary.n == b.summary.n && same_bits(a.summary.mean, b.summary.mean) &&
+         same_bits(a.summary.sd, b.summary.sd) && same_bits(a.summary.min, b.summary.min) &&
+         same_bits(a.summary.max, b.summary.max) && same_bits(a.pct.p5, b.pct.p5) && same_bits(a.pct.p50, b.pct.p50) &&
+         same_bits(a.pct.p95, b.pct.p95) && same_bits(a.pct.p99, b.pct.p99);
 }
 
 bool same_summary(const bs::TraceSummary& a, const bs::TraceSummary& b) {
@@ -159,7 +159,8 @@ class TestPowerLazy : public QObject {
     cancel.set_progress([&](double f, std::string_view) {
       if (f > 0.5) cancel.cancel();  // halfway through storing the chunks
     });
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, ws.add_import(batch_of(make_trace(4 * bs::store::kChunkSamples)), "h1", &cancel));
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled,
+                             ws.add_import(batch_of(make_trace(4 * bs::store::kChunkSamples)), "h1", &cancel));
     QCOMPARE(ws.imports().size(), std::size_t{0});
     QCOMPARE(RawDb(path).scalar("SELECT COUNT(*) FROM power_chunks"), std::string("0"));
     QCOMPARE(RawDb(path).scalar("SELECT COUNT(*) FROM power_traces"), std::string("0"));

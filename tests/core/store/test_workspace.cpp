@@ -116,10 +116,16 @@ class TestWorkspace : public QObject {
     batch.format = "google-benchmark-json";
     batch.runs.push_back(make_run("i7-7567U", "CPU SIMD (AVX2)", 4, 2, 2));
     batch.runs.back().device_kind = bs::DeviceKind::Cpu;  // the same CPU device as the result set below
-    bs::ResultSet cpu{"NUC", "i7-7567U", bs::DeviceKind::Cpu, "CPU", "google-benchmark-json", {}, full_provenance("gb")};
-    cpu.measurements.push_back({"BM_Rotate/4096", "real_time", "s", {1.0 / 3.0, 0.1, 2e-9},
+    bs::ResultSet cpu{"NUC", "i7-7567U",           bs::DeviceKind::Cpu, "CPU", "google-benchmark-json",
+                      {},    full_provenance("gb")};
+    cpu.measurements.push_back({"BM_Rotate/4096",
+                                "real_time",
+                                "s",
+                                {1.0 / 3.0, 0.1, 2e-9},
                                 {{"mean", 0.14444}, {"median", 0.1}, {"stddev", 1e-12}, {"cv", 0.0}}});
-    cpu.measurements.push_back({"BM_Rotate/4096", "items_per_second", "1/s",
+    cpu.measurements.push_back({"BM_Rotate/4096",
+                                "items_per_second",
+                                "1/s",
                                 {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                                  -std::numeric_limits<double>::infinity(), -0.0, 5e-324},
                                 {{"mean", std::numeric_limits<double>::quiet_NaN()}}});

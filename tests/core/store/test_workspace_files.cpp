@@ -2,8 +2,8 @@
 // The workspace as a file: what is opened, what is refused (and left untouched), how old schemas are migrated,
 // and copies made with save_as.
 #include <QDir>
-#include <QTemporaryDir>
 #include <QFile>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include "store/workspace.h"
@@ -85,9 +85,8 @@ class TestWorkspaceFiles : public QObject {
     const struct {
       const char* name;
       QByteArray bytes;
-    } cases[] = {{"text.bsw", "hello, I am a text file\nwith two lines\n"},
-                 {"random.bsw", random},
-                 {"tiny.bsw", "SQLite"}};
+    } cases[] = {
+        {"text.bsw", "hello, I am a text file\nwith two lines\n"}, {"random.bsw", random}, {"tiny.bsw", "SQLite"}};
     for (const auto& c : cases) {
       const QString path = dir.filePath(c.name);
       QVERIFY(write_file(path, c.bytes));
@@ -194,7 +193,8 @@ class TestWorkspaceFiles : public QObject {
     QVERIFY(same_run(ws.runs()[0].run, run));
     bs::ImportBatch b;
     b.format = "power-csv";
-    b.power_traces.push_back({"NUC", "load", "", {0, 1}, {{"I", bs::PowerQuantity::Current, {2.5, 2.6}}}, 16.0, {}, {}, ""});
+    b.power_traces.push_back(
+        {"NUC", "load", "", {0, 1}, {{"I", bs::PowerQuantity::Current, {2.5, 2.6}}}, 16.0, {}, {}, ""});
     ws.add_import(b, "trace");
     QCOMPARE(ws.power_traces().size(), std::size_t{1});
     QCOMPARE(RawDb(path).scalar("PRAGMA user_version"), std::to_string(bs::Workspace::kSchemaVersion));
@@ -207,7 +207,8 @@ class TestWorkspaceFiles : public QObject {
     auto batch = batch_of({make_run("A", "OpenCL", 4, 10, 2), make_run("B", "CUDA", 1, 3, 1)});
     batch.result_sets.push_back(
         {"NUC", "B", bs::DeviceKind::Gpu, "OpenCL", "clpeak-text", {{"float", "bandwidth", "B/s", {3e10}, {}}}, {}});
-    batch.power_traces.push_back({"NUC", "idle", "", {0, 1}, {{"P", bs::PowerQuantity::Power, {9.5, 9.4}}}, {}, {}, {}, ""});
+    batch.power_traces.push_back(
+        {"NUC", "idle", "", {0, 1}, {{"P", bs::PowerQuantity::Power, {9.5, 9.4}}}, {}, {}, {}, ""});
     ws.add_import(batch, "h1");
     const auto removed = ws.add_import(batch_of({make_run("C", "OpenCL", 4, 1, 1)}), "h2");
     ws.remove_import(removed);  // device C stays, with its colour
@@ -269,9 +270,10 @@ class TestWorkspaceFiles : public QObject {
     {
       // Break an index behind SQLite's back: integrity_check must say so instead of "ok".
       RawDb raw(path.toStdString(), false);
-      QVERIFY(raw.exec("PRAGMA writable_schema = ON; "
-                       "UPDATE sqlite_schema SET sql = 'CREATE INDEX runs_by_import ON runs(dims)' "
-                       "WHERE name = 'runs_by_import';"));
+      QVERIFY(
+          raw.exec("PRAGMA writable_schema = ON; "
+                   "UPDATE sqlite_schema SET sql = 'CREATE INDEX runs_by_import ON runs(dims)' "
+                   "WHERE name = 'runs_by_import';"));
     }
     const bs::Workspace ws(path.toStdString());
     const std::string result = ws.integrity_check();

@@ -82,7 +82,10 @@ inline Provenance full_provenance(const std::string& tag) {
   p.tool = "benchscope 0.1.0";
   p.git_revision = "0123abc";
   p.date = "2018-06-01T00:00:00Z";
-  p.note = "\xC3\xBCn\xC3\xAF" "code, \"quotes\" and \\ backslash " + tag;
+  p.note =
+      "\xC3\xBCn\xC3\xAF"
+      "code, \"quotes\" and \\ backslash " +
+      tag;
   p.source_file = tag + ".json";
   return p;
 }
@@ -162,9 +165,9 @@ class RawDb {
 };
 
 inline const std::vector<std::string>& workspace_tables() {
-  static const std::vector<std::string> tables = {"meta",         "imports",      "devices",      "runs",
-                                                  "run_samples",  "result_sets",  "measurements", "power_traces",
-                                                  "power_channels"};
+  static const std::vector<std::string> tables = {"meta",         "imports",      "devices",
+                                                  "runs",         "run_samples",  "result_sets",
+                                                  "measurements", "power_traces", "power_channels"};
   return tables;
 }
 

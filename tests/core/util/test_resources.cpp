@@ -19,7 +19,8 @@ class TestResources : public QObject {
   void source_tree_is_found_from_a_build_dir() {
     ::unsetenv("BENCHSCOPE_RESOURCE_DIR");
     const fs::path p = bs::find_resource("devices/devices.json");
-    QCOMPARE(fs::weakly_canonical(p), fs::weakly_canonical(fs::path(BENCHSCOPE_SOURCE_DIR) / "resources/devices/devices.json"));
+    QCOMPARE(fs::weakly_canonical(p),
+             fs::weakly_canonical(fs::path(BENCHSCOPE_SOURCE_DIR) / "resources/devices/devices.json"));
     QVERIFY(fs::is_regular_file(bs::find_resource("figures/paper-2018.json")));
   }
   void environment_overrides() {

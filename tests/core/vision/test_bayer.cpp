@@ -62,7 +62,8 @@ QString first_difference(const cv::Mat& got, const cv::Mat& want) {
       for (int k = 0; k < 3; ++k) {
         const int a = got.depth() == CV_8U ? got.at<cv::Vec3b>(y, x)[k] : got.at<cv::Vec3w>(y, x)[k];
         const int b = want.depth() == CV_8U ? want.at<cv::Vec3b>(y, x)[k] : want.at<cv::Vec3w>(y, x)[k];
-        if (a != b) return QString("pixel (x %1, y %2) channel %3: %4, reference %5").arg(x).arg(y).arg(k).arg(a).arg(b);
+        if (a != b)
+          return QString("pixel (x %1, y %2) channel %3: %4, reference %5").arg(x).arg(y).arg(k).arg(a).arg(b);
       }
   return {};
 }
@@ -91,7 +92,11 @@ class TestBayer : public QObject {
       const double mhc = psnr(demosaic(raw, p, DemosaicMethod::MalvarHeCutler), truth);
       const double ocv = psnr(demosaic(raw, p, DemosaicMethod::OpenCvBilinear), truth);
       const QByteArray what = QString("%1: bilinear %2 dB, MHC %3 dB, OpenCV %4 dB")
-                                  .arg(QString::fromUtf8(to_string(p).data())).arg(bil).arg(mhc).arg(ocv).toUtf8();
+                                  .arg(QString::fromUtf8(to_string(p).data()))
+                                  .arg(bil)
+                                  .arg(mhc)
+                                  .arg(ocv)
+                                  .toUtf8();
       QVERIFY2(bil > 28, what.constData());
       QVERIFY2(mhc > bil, what.constData());  // gradient correction helps
       QVERIFY2(ocv > 28, what.constData());   // proves the OpenCV code mapping per pattern
@@ -132,11 +137,15 @@ class TestBayer : public QObject {
             for (BayerPattern p : kPatterns)
               for (DemosaicMethod m : {DemosaicMethod::Bilinear, DemosaicMethod::MalvarHeCutler}) {
                 const QString diff = first_difference(demosaic(raw, p, m), demosaic_reference(raw, p, m));
-                const QByteArray what = QString("%1, %2-bit %3x%4 kind %5, %6 %7: %8")
-                                            .arg(QString::fromStdString(target)).arg(depth == CV_8U ? 8 : 16)
-                                            .arg(size.width).arg(size.height).arg(kind)
-                                            .arg(QString::fromUtf8(to_string(p).data()), QString::fromUtf8(to_string(m).data()), diff)
-                                            .toUtf8();
+                const QByteArray what =
+                    QString("%1, %2-bit %3x%4 kind %5, %6 %7: %8")
+                        .arg(QString::fromStdString(target))
+                        .arg(depth == CV_8U ? 8 : 16)
+                        .arg(size.width)
+                        .arg(size.height)
+                        .arg(kind)
+                        .arg(QString::fromUtf8(to_string(p).data()), QString::fromUtf8(to_string(m).data()), diff)
+                        .toUtf8();
                 QVERIFY2(diff.isEmpty(), what.constData());
                 ++compared;
               }
@@ -149,14 +158,23 @@ class TestBayer : public QObject {
         const cv::Mat raw = random_mosaic(1280, 1024, depth, kind, rng);
         for (BayerPattern p : kPatterns)
           for (DemosaicMethod m : {DemosaicMethod::Bilinear, DemosaicMethod::MalvarHeCutler}) {
-            const QByteArray what = QString("1280x1024 %1-bit kind %2, %3 %4").arg(depth == CV_8U ? 8 : 16).arg(kind)
-                                        .arg(QString::fromUtf8(to_string(p).data()), QString::fromUtf8(to_string(m).data())).toUtf8();
+            const QByteArray what =
+                QString("1280x1024 %1-bit kind %2, %3 %4")
+                    .arg(depth == CV_8U ? 8 : 16)
+                    .arg(kind)
+                    .arg(QString::fromUtf8(to_string(p).data()), QString::fromUtf8(to_string(m).data()))
+                    .toUtf8();
             QVERIFY2(first_difference(demosaic(raw, p, m), demosaic_reference(raw, p, m)).isEmpty(), what.constData());
             ++compared;
           }
       }
     qInfo("demosaic() equal to demosaic_reference() in %ld images; instruction sets: %s", compared,
-          [&] { std::string s; for (const auto& t : targets) s += t + " "; return s; }().c_str());
+          [&] {
+            std::string s;
+            for (const auto& t : targets) s += t + " ";
+            return s;
+          }()
+              .c_str());
   }
 
   // The overload that writes into `out`: reuses a buffer of the right size and type (as cvtColor does), replaces
@@ -167,7 +185,8 @@ class TestBayer : public QObject {
     cv::Mat out(5, 5, CV_8UC1);
     demosaic(raw, BayerPattern::GRBG, DemosaicMethod::MalvarHeCutler, out);
     QCOMPARE(out.type(), CV_16UC3);
-    QVERIFY(first_difference(out, demosaic_reference(raw, BayerPattern::GRBG, DemosaicMethod::MalvarHeCutler)).isEmpty());
+    QVERIFY(
+        first_difference(out, demosaic_reference(raw, BayerPattern::GRBG, DemosaicMethod::MalvarHeCutler)).isEmpty());
     const uchar* kept = out.data;
     demosaic(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear, out);
     QCOMPARE(out.data, kept);
@@ -187,19 +206,23 @@ class TestBayer : public QObject {
 
   // Below 4x4 neither path is defined (the 5x5 MHC window cannot be reflected into 1 or 2 pixels): both refuse.
   void tiny_images_are_refused_by_both_paths() {
-    for (const cv::Size size : {cv::Size(1, 1), cv::Size(2, 2), cv::Size(3, 5), cv::Size(5, 3), cv::Size(3, 3), cv::Size(4, 3)})
+    for (const cv::Size size :
+         {cv::Size(1, 1), cv::Size(2, 2), cv::Size(3, 5), cv::Size(5, 3), cv::Size(3, 3), cv::Size(4, 3)})
       for (int type : {CV_8UC1, CV_16UC1})
         for (DemosaicMethod m : {DemosaicMethod::Bilinear, DemosaicMethod::MalvarHeCutler}) {
           const cv::Mat raw(size, type, cv::Scalar(7));
           QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic(raw, BayerPattern::RGGB, m));
           QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic_reference(raw, BayerPattern::RGGB, m));
         }
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic_reference(cv::Mat(8, 8, CV_8UC1), BayerPattern::BGGR, DemosaicMethod::OpenCvBilinear));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic_reference(cv::Mat(8, 8, CV_8UC1), BayerPattern::BGGR,
+                                                                       DemosaicMethod::OpenCvBilinear));
   }
 
   void bad_input() {
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic(cv::Mat(8, 8, CV_32FC1), BayerPattern::BGGR, DemosaicMethod::Bilinear));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, demosaic(cv::Mat(2, 2, CV_8UC1), BayerPattern::BGGR, DemosaicMethod::Bilinear));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             demosaic(cv::Mat(8, 8, CV_32FC1), BayerPattern::BGGR, DemosaicMethod::Bilinear));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             demosaic(cv::Mat(2, 2, CV_8UC1), BayerPattern::BGGR, DemosaicMethod::Bilinear));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, mosaic(cv::Mat(8, 8, CV_8UC1), BayerPattern::BGGR));
     QVERIFY(std::isinf(psnr(scene(16, 16, CV_8U), scene(16, 16, CV_8U))));
   }

@@ -36,10 +36,10 @@ Lens truth_lens() {
 // Thirteen views: straight ahead, tilted, rolled, and swung out to 45-70 degrees off the axis in every direction.
 std::vector<BoardPose> truth_poses() {
   std::vector<BoardPose> poses;
-  for (const char* p : {"0,0,0,300,0,0", "15,20,0,350,0,0", "-10,-25,15,320,50,30", "0,0,45,300,300,0",
-                        "0,0,-45,300,-300,0", "0,-45,0,300,0,300", "0,45,0,300,0,-300", "0,0,70,150,412,0",
-                        "0,0,-70,150,-412,0", "20,-30,35,300,200,170", "-20,30,-35,300,-200,-170", "30,0,0,400,0,0",
-                        "0,30,30,250,0,0"})
+  for (const char* p :
+       {"0,0,0,300,0,0", "15,20,0,350,0,0", "-10,-25,15,320,50,30", "0,0,45,300,300,0", "0,0,-45,300,-300,0",
+        "0,-45,0,300,0,300", "0,45,0,300,0,-300", "0,0,70,150,412,0", "0,0,-70,150,-412,0", "20,-30,35,300,200,170",
+        "-20,30,-35,300,-200,-170", "30,0,0,400,0,0", "0,30,30,250,0,0"})
     poses.push_back(parse_pose(p));
   return poses;
 }
@@ -109,7 +109,8 @@ class TestCheckerboardCalibration : public QObject {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const auto ours = project_camera_point(lens, cv::Vec3d(points[i].x, points[i].y, points[i].z));
       QVERIFY(ours);
-      QVERIFY2(cv::norm(*ours - theirs[i]) < 1e-6, qPrintable(QString("point %1: %2 px apart").arg(i).arg(cv::norm(*ours - theirs[i]))));
+      QVERIFY2(cv::norm(*ours - theirs[i]) < 1e-6,
+               qPrintable(QString("point %1: %2 px apart").arg(i).arg(cv::norm(*ours - theirs[i]))));
       // And back: the pixel's ray is the point's direction.
       const auto ray = camera_ray(lens, *ours);
       QVERIFY(ray);
@@ -185,12 +186,19 @@ class TestCheckerboardCalibration : public QObject {
     QCOMPARE(fractions.back(), 1.0);
     for (const auto& r : result.images)
       qInfo("%s: %s", r.name.c_str(),
-            r.used ? QString("RMS %1 px, up to %2 deg").arg(*r.rms_px, 0, 'f', 3).arg(r.max_theta_deg, 0, 'f', 0).toUtf8().constData()
+            r.used ? QString("RMS %1 px, up to %2 deg")
+                         .arg(*r.rms_px, 0, 'f', 3)
+                         .arg(r.max_theta_deg, 0, 'f', 0)
+                         .toUtf8()
+                         .constData()
                    : r.rejected.c_str());
     const Lens& got = result.lens;
-    qInfo("r_pp %.8g (truth %.8g, %.3f %%), centre (%.3f, %.3f) (truth (%.1f, %.1f)), k %.5f %.5f %.5f %.5f, RMS %.3f px, "
-          "free fx %.3f fy %.3f", got.r_pp, lens.r_pp, 100 * (got.r_pp / lens.r_pp - 1), got.cx, got.cy, lens.cx,
-          lens.cy, got.k[0], got.k[1], got.k[2], got.k[3], result.rms_px, result.fx, result.fy);
+    qInfo(
+        "r_pp %.8g (truth %.8g, %.3f %%), centre (%.3f, %.3f) (truth (%.1f, %.1f)), k %.5f %.5f %.5f %.5f, RMS %.3f "
+        "px, "
+        "free fx %.3f fy %.3f",
+        got.r_pp, lens.r_pp, 100 * (got.r_pp / lens.r_pp - 1), got.cx, got.cy, lens.cx, lens.cy, got.k[0], got.k[1],
+        got.k[2], got.k[3], result.rms_px, result.fx, result.fy);
     for (const auto& w : result.warnings) qInfo("warning: %s", w.c_str());
     QCOMPARE(result.used(), 13);
     QCOMPARE(result.rejected(), 3);
@@ -235,12 +243,15 @@ class TestCheckerboardCalibration : public QObject {
     bad.used = true;
     cv::RNG rng(3);
     for (int k = 0; k < board().inner_corners().area(); ++k)
-      bad.corners.emplace_back(static_cast<float>(rng.uniform(100.0, 1180.0)), static_cast<float>(rng.uniform(100.0, 900.0)));
+      bad.corners.emplace_back(static_cast<float>(rng.uniform(100.0, 1180.0)),
+                               static_cast<float>(rng.uniform(100.0, 900.0)));
     views.insert(views.begin() + 4, bad);
     Lens base = lens;
     base.fov_deg = 190;
-    const auto result = calibrate_from_corners(views, cv::Size(1280, 1024), board(), CalibrationModel::KannalaBrandt, base);
-    for (const auto& r : result.images) qInfo("%s: %s %.3f", r.name.c_str(), r.used ? "used" : r.rejected.c_str(), r.rms_px.value_or(-1));
+    const auto result =
+        calibrate_from_corners(views, cv::Size(1280, 1024), board(), CalibrationModel::KannalaBrandt, base);
+    for (const auto& r : result.images)
+      qInfo("%s: %s %.3f", r.name.c_str(), r.used ? "used" : r.rejected.c_str(), r.rms_px.value_or(-1));
     for (const auto& w : result.warnings) qInfo("warning: %s", w.c_str());
     QVERIFY(!result.images[4].used);
     QVERIFY(!result.images[4].rejected.empty());
@@ -262,7 +273,7 @@ class TestCheckerboardCalibration : public QObject {
     // A used view with the wrong number of corners is a caller's error.
     views[0].corners.pop_back();
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, calibrate_from_corners(views, cv::Size(1280, 1024), board(),
-                                                                          CalibrationModel::KannalaBrandt, base));
+                                                                           CalibrationModel::KannalaBrandt, base));
   }
 
   void equidistant_model_keeps_k_at_zero() {
@@ -303,8 +314,8 @@ class TestCheckerboardCalibration : public QObject {
     bs::CancelToken cancel;
     cancel.cancel();
     std::vector<CalibrationImage> images{{"a.png", "", cv::Mat(100, 100, CV_8UC1, cv::Scalar(0))}};
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled,
-                             calibrate_checkerboard(images, board(), CalibrationModel::KannalaBrandt, Lens::paper(), &cancel));
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, calibrate_checkerboard(images, board(), CalibrationModel::KannalaBrandt,
+                                                                   Lens::paper(), &cancel));
   }
 
   void parses_boards_and_poses() {

@@ -18,7 +18,8 @@ class TestDnnArchitectures : public QObject {
     QCOMPARE(b.default_input, cv::Size(300, 300));
     const cv::dnn::MatShape shape{1, 3, 300, 300};
     const DnnFlops f = count_flops(b.net, shape);
-    QVERIFY2(std::fabs(f.counted / 1e9 - b.published_gflops) < 0.1 * b.published_gflops, std::to_string(f.counted).c_str());
+    QVERIFY2(std::fabs(f.counted / 1e9 - b.published_gflops) < 0.1 * b.published_gflops,
+             std::to_string(f.counted).c_str());
     QVERIFY(f.opencv > 5 * f.counted);  // OpenCV 4.6 counts each depthwise convolution as a full one
     cv::Mat blob(shape, CV_32F);
     cv::randu(blob, -1, 1);
@@ -39,7 +40,8 @@ class TestDnnArchitectures : public QObject {
     BuiltNetwork b = build_architecture(DnnArchitecture::YoloN, {640, 640});
     const cv::dnn::MatShape shape{1, 3, 640, 640};
     const DnnFlops f = count_flops(b.net, shape);
-    QVERIFY2(std::fabs(f.counted / 1e9 - b.published_gflops) < 0.1 * b.published_gflops, std::to_string(f.counted).c_str());
+    QVERIFY2(std::fabs(f.counted / 1e9 - b.published_gflops) < 0.1 * b.published_gflops,
+             std::to_string(f.counted).c_str());
     QCOMPARE(f.opencv, f.counted);  // no grouped convolutions
     cv::Mat blob(shape, CV_32F);
     cv::randu(blob, 0, 1);
@@ -69,7 +71,8 @@ class TestDnnArchitectures : public QObject {
       p.set("num_output", out_c);
       p.set("group", group);
       p.set("bias_term", true);
-      p.blobs = {cv::Mat(std::vector<int>{out_c, 4 / group, k, k}, CV_32F, cv::Scalar(0.1)), cv::Mat(1, out_c, CV_32F, cv::Scalar(0))};
+      p.blobs = {cv::Mat(std::vector<int>{out_c, 4 / group, k, k}, CV_32F, cv::Scalar(0.1)),
+                 cv::Mat(1, out_c, CV_32F, cv::Scalar(0))};
       const int id = net.addLayer("conv" + std::to_string(out_c), "Convolution", p);
       net.connect(prev, 0, id, 0);
       prev = id;

@@ -57,7 +57,8 @@ class TestDnnDecode : public QObject {
  private slots:
   void ssd_rows_scale_to_the_image() {
     cv::Mat out(std::vector<int>{1, 1, 3, 7}, CV_32F, cv::Scalar(0));
-    const float rows[3][7] = {{0, 1, 0.9f, 0.1f, 0.2f, 0.5f, 0.8f}, {0, 2, 0.4f, 0, 0, 1, 1}, {-1, 1, 0.99f, 0, 0, 1, 1}};
+    const float rows[3][7] = {
+        {0, 1, 0.9f, 0.1f, 0.2f, 0.5f, 0.8f}, {0, 2, 0.4f, 0, 0, 1, 1}, {-1, 1, 0.99f, 0, 0, 1, 1}};
     std::memcpy(out.ptr<float>(), rows, sizeof rows);
     QCOMPARE(detect_output_family({out}).family, DnnOutputFamily::Ssd);
     const auto d = decode_detections({out}, opts({300, 300}, {200, 100}));
@@ -70,11 +71,11 @@ class TestDnnDecode : public QObject {
     // 8 anchors x (5 + 2 classes), input 64x32, image 640x320: boxes scale by 10.
     cv::Mat out = blob3(8, 7);
     auto row = [&](int i, std::initializer_list<float> v) { std::copy(v.begin(), v.end(), out.ptr<float>(0, i)); };
-    row(0, {20, 10, 8, 4, 0.9f, 0.1f, 1.0f});   // class 1, score 0.9
-    row(1, {21, 10, 8, 4, 0.8f, 0.2f, 1.0f});   // overlaps row 0 (IoU 0.78), class 1, 0.8: suppressed
-    row(2, {21, 10, 8, 4, 0.8f, 0.9f, 0.1f});   // same place, class 0, 0.72: kept (NMS is per class)
-    row(3, {40, 20, 10, 10, 0.6f, 0.5f, 0.5f}); // 0.6 x 0.5 = 0.3: below threshold though objectness is 0.6
-    row(4, {50, 16, 100, 40, 0.95f, 1.0f, 0});  // class 0, 0.95, reaches past the image: clipped
+    row(0, {20, 10, 8, 4, 0.9f, 0.1f, 1.0f});    // class 1, score 0.9
+    row(1, {21, 10, 8, 4, 0.8f, 0.2f, 1.0f});    // overlaps row 0 (IoU 0.78), class 1, 0.8: suppressed
+    row(2, {21, 10, 8, 4, 0.8f, 0.9f, 0.1f});    // same place, class 0, 0.72: kept (NMS is per class)
+    row(3, {40, 20, 10, 10, 0.6f, 0.5f, 0.5f});  // 0.6 x 0.5 = 0.3: below threshold though objectness is 0.6
+    row(4, {50, 16, 100, 40, 0.95f, 1.0f, 0});   // class 0, 0.95, reaches past the image: clipped
     QCOMPARE(detect_output_family({out}).family, DnnOutputFamily::YoloV5);
     const auto d = decode_detections({out}, opts({64, 32}, {640, 320}));
     QCOMPARE(d.size(), std::size_t{3});
@@ -128,7 +129,9 @@ class TestDnnDecode : public QObject {
   // anchor per block (the linear downscale samples inside a block), boxes scale back by 10 on both axes.
   void yolo_networks_end_to_end() {
     cv::Mat img(10, 80, CV_8UC3, cv::Scalar(0, 0, 0));
-    const auto paint = [&](int block, int B, int G, int R) { img(cv::Rect(10 * block, 0, 10, 10)).setTo(cv::Scalar(B, G, R)); };
+    const auto paint = [&](int block, int B, int G, int R) {
+      img(cv::Rect(10 * block, 0, 10, 10)).setTo(cv::Scalar(B, G, R));
+    };
     paint(1, 102, 128, 230);  // cx 3.2, score 0.90
     paint(2, 106, 128, 204);  // cx 3.33, score 0.80: IoU 0.88 with block 1, suppressed
     paint(5, 204, 128, 255);  // cx 6.4, score 1.0
@@ -161,7 +164,8 @@ class TestDnnDecode : public QObject {
       QFAIL("no error for an unknown output family");
     } catch (const std::runtime_error& e) {
       QVERIFY2(std::string(e.what()).find("odd.onnx") != std::string::npos &&
-                   std::string(e.what()).find("1x2x8") != std::string::npos, e.what());
+                   std::string(e.what()).find("1x2x8") != std::string::npos,
+               e.what());
     }
   }
 };

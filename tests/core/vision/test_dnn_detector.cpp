@@ -25,7 +25,7 @@ layer { name: "rows" type: "Reshape" bottom: "data" top: "rows"
     bs::vision::DnnOptions o;
     o.model = model;
     o.input_size = {7, 1};
-    o.scale = 1.0 / 200;                    // (pixel - 1) / 200
+    o.scale = 1.0 / 200;  // (pixel - 1) / 200
     o.mean = cv::Scalar::all(1);
     o.swap_rb = false;
     o.min_confidence = 0.5f;

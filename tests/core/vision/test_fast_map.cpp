@@ -52,8 +52,8 @@ class TestFastMap : public QObject {
  private slots:
   void paper_lens_step_8_is_within_a_tenth_of_a_pixel() {
     const Comparison c = compare(Lens::paper(), View{}, 8);
-    qInfo("paper lens, 150 deg view, step 8: max error %.5f px over %d valid pixels, %d border mismatches",
-          c.max_error, c.valid, c.mismatched);
+    qInfo("paper lens, 150 deg view, step 8: max error %.5f px over %d valid pixels, %d border mismatches", c.max_error,
+          c.valid, c.mismatched);
     QVERIFY(c.valid > 1000000);
     QVERIFY2(c.max_error < 0.1, qPrintable(QString::number(c.max_error)));
     QCOMPARE(c.mismatched_off_border, 0);

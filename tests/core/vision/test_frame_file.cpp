@@ -58,7 +58,8 @@ class TestFrameFile : public QObject {
     write(raw, std::string(10, '\0'));
     QVERIFY(error_of(raw).contains("needs a JSON sidecar"));
     write(side, R"({"width": 4, "height": 2, "bit_depth": 8})");
-    QVERIFY2(error_of(raw).contains("b.raw: is 10 bytes") && error_of(raw).contains("needs 8"), qPrintable(error_of(raw)));
+    QVERIFY2(error_of(raw).contains("b.raw: is 10 bytes") && error_of(raw).contains("needs 8"),
+             qPrintable(error_of(raw)));
     // A size claim far beyond the file is refused before any allocation.
     write(side, R"({"width": 65536, "height": 65536, "bit_depth": 16, "endianness": "little"})");
     QVERIFY(error_of(raw).contains("needs 8589934592"));
@@ -74,7 +75,8 @@ class TestFrameFile : public QObject {
     // Above 8 bits the byte order must be stated (model/raw_sidecar.h, the importer's rule; this reader used to
     // assume little-endian).
     write(side, R"({"width": 4, "height": 2, "bit_depth": 10})");
-    QVERIFY2(error_of(raw).contains("b.json: /endianness: a sidecar for samples above 8 bits"), qPrintable(error_of(raw)));
+    QVERIFY2(error_of(raw).contains("b.json: /endianness: a sidecar for samples above 8 bits"),
+             qPrintable(error_of(raw)));
   }
 
   void grey_images_and_colour_refused() {

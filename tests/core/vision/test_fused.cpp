@@ -56,7 +56,9 @@ class TestFused : public QObject {
         FusedTable(map, raw.size(), p).run(raw, fused);
         const int diff = max_difference(reference, fused);
         QVERIFY2(diff <= 1, qPrintable(QString("%1 yaw %2: max difference %3 grey levels")
-                                           .arg(QString::fromUtf8(to_string(p).data())).arg(yaw).arg(diff)));
+                                           .arg(QString::fromUtf8(to_string(p).data()))
+                                           .arg(yaw)
+                                           .arg(diff)));
       }
   }
   void vector_kernel_equals_scalar_kernel_bit_for_bit() {
@@ -88,7 +90,9 @@ class TestFused : public QObject {
         QCOMPARE(max_difference(a, b), 0);
         tiled += automatic.tiled_blocks();
         gathered += automatic.gather_blocks();
-        if (yaw == 100.0) QVERIFY(cv::countNonZero(map.reshape(1, static_cast<int>(map.total())).col(0) < 0) > 0);  // some pixels have no source
+        if (yaw == 100.0)
+          QVERIFY(cv::countNonZero(map.reshape(1, static_cast<int>(map.total())).col(0) < 0) >
+                  0);  // some pixels have no source
       }
     // Both ways of reading the mosaic were compared (when this CPU has the vector kernel at all).
     if (FusedTable(cv::Mat(2, 2, CV_32FC2, cv::Scalar(5, 5)), {16, 16}, BayerPattern::BGGR).vectorised()) {
@@ -101,7 +105,8 @@ class TestFused : public QObject {
     FusedTable table(map, {16, 16}, BayerPattern::BGGR);
     cv::Mat out;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, table.run(cv::Mat(8, 8, CV_8UC1), out));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, FusedTable(cv::Mat(10, 10, CV_32FC1), {16, 16}, BayerPattern::BGGR));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             FusedTable(cv::Mat(10, 10, CV_32FC1), {16, 16}, BayerPattern::BGGR));
   }
 };
 

@@ -59,7 +59,9 @@ class TestFusedCuda : public QObject {
           FusedTable(map, raw.size(), p, kernel).run(raw, table);
           const int diff = differing_pixels(table, fused_reference(map, raw, p));
           QVERIFY2(diff == 0, qPrintable(QString("%1 yaw %2: %3 channel values differ")
-                                             .arg(QString::fromUtf8(to_string(p).data())).arg(yaw).arg(diff)));
+                                             .arg(QString::fromUtf8(to_string(p).data()))
+                                             .arg(yaw)
+                                             .arg(diff)));
         }
       }
   }
@@ -69,8 +71,9 @@ class TestFusedCuda : public QObject {
     // (round half to even), and "no source" (negative) which takes the fill colour.
     const cv::Mat raw = noisy_mosaic({16, 12}, 3);
     cv::Mat map(1, 10, CV_32FC2);
-    const cv::Vec2f at[10] = {{0, 0}, {15, 11}, {14.99f, 0.01f}, {0, 10.5f}, {7.5f, 5.5f},
-                              {3 + 1.0f / 64, 4 + 3.0f / 64}, {-1, -1}, {5, -1}, {-0.5f, 2}, {15, 5}};
+    const cv::Vec2f at[10] = {
+        {0, 0},   {15, 11}, {14.99f, 0.01f}, {0, 10.5f}, {7.5f, 5.5f}, {3 + 1.0f / 64, 4 + 3.0f / 64},
+        {-1, -1}, {5, -1},  {-0.5f, 2},      {15, 5}};
     for (int i = 0; i < 10; ++i) map.at<cv::Vec2f>(0, i) = at[i];
     for (BayerPattern p : kPatterns) {
       cv::Mat table;

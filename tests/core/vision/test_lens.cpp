@@ -35,14 +35,19 @@ class TestLens : public QObject {
   void equals_the_paper_equations() {
     const Lens lens = Lens::paper();
     const View view;
-    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0, 0}, {1279, 1023}, {100, 900}, {640, 10},
-                                                                      {1000, 512}, {639.5, 511.5}, {333, 777}}) {
+    for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+             {0, 0}, {1279, 1023}, {100, 900}, {640, 10}, {1000, 512}, {639.5, 511.5}, {333, 777}}) {
       const auto got = source_of(lens, view, x, y);
       QVERIFY(got.has_value());
       const cv::Point2d want = paper_equation(x, y);
       QVERIFY2(std::abs(got->x - want.x) < 1e-9 && std::abs(got->y - want.y) < 1e-9,
-               qPrintable(QString("(%1, %2): got (%3, %4), paper (%5, %6)").arg(x).arg(y).arg(got->x).arg(got->y)
-                              .arg(want.x).arg(want.y)));
+               qPrintable(QString("(%1, %2): got (%3, %4), paper (%5, %6)")
+                              .arg(x)
+                              .arg(y)
+                              .arg(got->x)
+                              .arg(got->y)
+                              .arg(want.x)
+                              .arg(want.y)));
     }
   }
   void centre_is_theta_zero_and_corners_are_half_the_fov() {
@@ -70,7 +75,7 @@ class TestLens : public QObject {
     l.k = {0, 0, 0, 0};
     QCOMPARE(*l.radius(big), big / l.r_pp);  // zero coefficients = equidistant
     l.fov_deg = 100;
-    QVERIFY(!l.radius(1.0).has_value());    // 57 degrees > 50: outside the image circle
+    QVERIFY(!l.radius(1.0).has_value());  // 57 degrees > 50: outside the image circle
   }
   void map_and_mask() {
     Lens lens = Lens::paper();
@@ -88,16 +93,18 @@ class TestLens : public QObject {
     cv::Mat mask = cv::Mat::zeros(256, 320, CV_8UC1);
     mask.rowRange(200, 256).setTo(255);  // the robot's nose at the bottom of the fisheye image
     const cv::Mat out = reproject(src, map, mask, cv::Scalar(255, 0, 255));
-    QCOMPARE(out.at<cv::Vec3b>(64, 80), cv::Vec3b(10, 20, 30));      // centre: plain source colour
-    QCOMPARE(out.at<cv::Vec3b>(127, 80), cv::Vec3b(255, 0, 255));    // bottom centre samples the masked rows
+    QCOMPARE(out.at<cv::Vec3b>(64, 80), cv::Vec3b(10, 20, 30));    // centre: plain source colour
+    QCOMPARE(out.at<cv::Vec3b>(127, 80), cv::Vec3b(255, 0, 255));  // bottom centre samples the masked rows
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, reproject(src, map, cv::Mat::zeros(10, 10, CV_8UC1)));
     // The fixed-point table samples on OpenCV's 1/32 grid: within one level of the float map, same mask rule.
     const ReprojectionLut lut(lens, view);
     cv::Mat smooth(256, 320, CV_8UC3);
     for (int y = 0; y < 256; ++y)
-      for (int x = 0; x < 320; ++x) smooth.at<cv::Vec3b>(y, x) = cv::Vec3b(uchar(x * 255 / 319), uchar(y), uchar((x + y) / 3));
+      for (int x = 0; x < 320; ++x)
+        smooth.at<cv::Vec3b>(y, x) = cv::Vec3b(uchar(x * 255 / 319), uchar(y), uchar((x + y) / 3));
     cv::Mat diff;
-    cv::absdiff(lut.apply(smooth, mask, cv::Scalar(255, 0, 255)), reproject(smooth, map, mask, cv::Scalar(255, 0, 255)), diff);
+    cv::absdiff(lut.apply(smooth, mask, cv::Scalar(255, 0, 255)), reproject(smooth, map, mask, cv::Scalar(255, 0, 255)),
+                diff);
     double worst = 0;
     cv::minMaxLoc(diff.reshape(1), nullptr, &worst);
     QVERIFY2(worst <= 1, qPrintable(QString("fixed-point vs float map: %1 levels").arg(worst)));

@@ -2,8 +2,8 @@
 #include <QTest>
 #include <cmath>
 
-#include "vision/line_fit.h"
 #include "vision/fisheye_opencv.h"
+#include "vision/line_fit.h"
 #include "vision/synthetic_room.h"
 
 using namespace bs::vision;
@@ -185,10 +185,11 @@ class TestLineFit : public QObject {
       double s = 1;
       const double family_err = distance_from_scale_family(fit.lens, truth, &s);
       const double truth_rms = line_straightness(truth, lines).rms_px;
-      qInfo("seed %d: %d lines, %d points: RMS %.3f -> %.3f px (truth %.3f); centre error %.3f px, r(theta) error "
-            "%.3f px, %.3f px from the truth's family (s = %.4f)",
-            static_cast<int>(seed), fit.after.lines, fit.after.points, fit.before.rms_px, fit.after.rms_px, truth_rms,
-            centre_err, max_radius_difference(fit.lens, truth), family_err, s);
+      qInfo(
+          "seed %d: %d lines, %d points: RMS %.3f -> %.3f px (truth %.3f); centre error %.3f px, r(theta) error "
+          "%.3f px, %.3f px from the truth's family (s = %.4f)",
+          static_cast<int>(seed), fit.after.lines, fit.after.points, fit.before.rms_px, fit.after.rms_px, truth_rms,
+          centre_err, max_radius_difference(fit.lens, truth), family_err, s);
       QVERIFY(fit.after.rms_px < fit.before.rms_px);
       QVERIFY(fit.after.rms_px < 1.05 * truth_rms);
       QVERIFY(centre_err < 1.0);

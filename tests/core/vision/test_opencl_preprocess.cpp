@@ -32,7 +32,8 @@ class TestOpenClPreprocess : public QObject {
         QSKIP(e.what());
       }
       QVERIFY(!info.device.empty());
-      const Preprocessor cpu = make_preprocessor(lens, view, pattern, DemosaicMethod::Bilinear, PreprocessPath::Separate);
+      const Preprocessor cpu =
+          make_preprocessor(lens, view, pattern, DemosaicMethod::Bilinear, PreprocessPath::Separate);
       const cv::Mat a = gpu(raw), b = cpu(raw);
       QCOMPARE(a.size(), cv::Size(400, 300));
       QCOMPARE(a.type(), b.type());

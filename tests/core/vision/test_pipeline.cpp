@@ -74,7 +74,8 @@ class TestPipeline : public QObject {
       ++detected;
       return std::vector<Detection>{{cv::Rect(0, 0, 4, 4), bgr.at<cv::Vec3b>(0, 0)[0] * 1.0, 1}};
     };
-    const auto r = run_pipeline(small_frames(40), to_bgr(), det, {.max_frames = 100, .queue_capacity = 2}, bs::CancelToken{});
+    const auto r =
+        run_pipeline(small_frames(40), to_bgr(), det, {.max_frames = 100, .queue_capacity = 2}, bs::CancelToken{});
     QCOMPARE(r.captured, std::size_t{40});
     QCOMPARE(r.processed, std::size_t{40});
     QCOMPARE(r.dropped, std::size_t{0});
@@ -94,9 +95,9 @@ class TestPipeline : public QObject {
       std::this_thread::sleep_for(std::chrono::milliseconds(3));
       return std::vector<Detection>{};
     };
-    const auto r = run_pipeline(small_frames(200), to_bgr(), slow,
-                                {.max_frames = 200, .queue_capacity = 1, .policy = QueuePolicy::DropOldest},
-                                bs::CancelToken{});
+    const auto r =
+        run_pipeline(small_frames(200), to_bgr(), slow,
+                     {.max_frames = 200, .queue_capacity = 1, .policy = QueuePolicy::DropOldest}, bs::CancelToken{});
     QCOMPARE(r.captured, std::size_t{200});
     QVERIFY(r.dropped > 0);
     QCOMPARE(r.processed + r.dropped, r.captured);
@@ -126,7 +127,9 @@ class TestPipeline : public QObject {
       m.at<uchar>(0, 1) = static_cast<uchar>(i / 256);
       return m;
     };
-    const auto index_of = [](const cv::Mat& bgr) { return bgr.at<cv::Vec3b>(0, 0)[0] + 256 * bgr.at<cv::Vec3b>(0, 1)[0]; };
+    const auto index_of = [](const cv::Mat& bgr) {
+      return bgr.at<cv::Vec3b>(0, 0)[0] + 256 * bgr.at<cv::Vec3b>(0, 1)[0];
+    };
     std::mutex mutex;
     std::vector<int> seen;
     std::atomic<int> running{0}, most_running{0};
@@ -140,8 +143,8 @@ class TestPipeline : public QObject {
       seen.push_back(index_of(bgr));
       return std::vector<Detection>{{cv::Rect(0, 0, 2, 2), static_cast<double>(seen.back()), -1}};
     };
-    const auto r = run_pipeline(numbered, to_bgr(), det, {.max_frames = 1000, .queue_capacity = 4, .detection_workers = 4},
-                                bs::CancelToken{});
+    const auto r = run_pipeline(numbered, to_bgr(), det,
+                                {.max_frames = 1000, .queue_capacity = 4, .detection_workers = 4}, bs::CancelToken{});
     QCOMPARE(r.detection_workers, std::size_t{4});
     QCOMPARE(r.captured, std::size_t{n});
     QCOMPARE(r.processed, std::size_t{n});
@@ -171,7 +174,8 @@ class TestPipeline : public QObject {
     const auto r = run_pipeline(small_frames(100000), to_bgr(), det,
                                 {.max_frames = 100000, .queue_capacity = 2, .detection_workers = kWorkers}, cancel);
     QVERIFY(r.cancelled);
-    QVERIFY2(calls.load() >= 10 && calls.load() <= 10 + static_cast<int>(kWorkers) - 1, qPrintable(QString::number(calls)));
+    QVERIFY2(calls.load() >= 10 && calls.load() <= 10 + static_cast<int>(kWorkers) - 1,
+             qPrintable(QString::number(calls)));
     QCOMPARE(r.processed, static_cast<std::size_t>(calls.load()));
     QCOMPARE(r.stage("detection")->summary.n, r.processed);
     QVERIFY(r.captured < 100);
@@ -182,10 +186,10 @@ class TestPipeline : public QObject {
       std::this_thread::sleep_for(std::chrono::milliseconds(3));
       return std::vector<Detection>{};
     };
-    const auto r = run_pipeline(small_frames(300), to_bgr(), slow,
-                                {.max_frames = 300, .queue_capacity = 1, .policy = QueuePolicy::DropOldest,
-                                 .detection_workers = 2},
-                                bs::CancelToken{});
+    const auto r = run_pipeline(
+        small_frames(300), to_bgr(), slow,
+        {.max_frames = 300, .queue_capacity = 1, .policy = QueuePolicy::DropOldest, .detection_workers = 2},
+        bs::CancelToken{});
     QCOMPARE(r.captured, std::size_t{300});
     QVERIFY(r.dropped > 0);
     QCOMPARE(r.processed + r.dropped, r.captured);
@@ -257,19 +261,22 @@ class TestPipeline : public QObject {
     view.height = 256;
     const cv::Mat rgb = render_fisheye(lens);
     const cv::Mat raw = mosaic(rgb, BayerPattern::BGGR);
-    const auto fused = make_preprocessor(lens, view, BayerPattern::BGGR, DemosaicMethod::Bilinear, PreprocessPath::Fused);
-    const auto separate = make_preprocessor(lens, view, BayerPattern::BGGR, DemosaicMethod::Bilinear, PreprocessPath::Separate);
+    const auto fused =
+        make_preprocessor(lens, view, BayerPattern::BGGR, DemosaicMethod::Bilinear, PreprocessPath::Fused);
+    const auto separate =
+        make_preprocessor(lens, view, BayerPattern::BGGR, DemosaicMethod::Bilinear, PreprocessPath::Separate);
     const cv::Mat a = fused(raw), b = separate(raw);
     QCOMPARE(a.size(), cv::Size(320, 256));
     QCOMPARE(a.type(), CV_8UC3);
     double max_diff = 0;
     cv::minMaxLoc(cv::abs(a - b) + cv::abs(b - a), nullptr, &max_diff);
     QVERIFY2(max_diff <= 2, qPrintable(QString::number(max_diff)));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             make_preprocessor(lens, view, BayerPattern::BGGR, DemosaicMethod::MalvarHeCutler, PreprocessPath::Fused));
+    QVERIFY_THROWS_EXCEPTION(
+        std::invalid_argument,
+        make_preprocessor(lens, view, BayerPattern::BGGR, DemosaicMethod::MalvarHeCutler, PreprocessPath::Fused));
     // The whole pipeline with the real stage and OpenCV's HOG people detector.
-    const auto r = run_pipeline([&](std::size_t i) { return i < 3 ? std::optional<cv::Mat>(raw) : std::nullopt; }, fused,
-                                hog_people_detector(1.0), {}, bs::CancelToken{});
+    const auto r = run_pipeline([&](std::size_t i) { return i < 3 ? std::optional<cv::Mat>(raw) : std::nullopt; },
+                                fused, hog_people_detector(1.0), {}, bs::CancelToken{});
     QCOMPARE(r.processed, std::size_t{3});
     QCOMPARE(r.stage("detection")->summary.n, std::size_t{3});
   }

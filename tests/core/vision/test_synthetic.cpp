@@ -75,7 +75,8 @@ class TestSynthetic : public QObject {
     Lens lens = Lens::paper();
     for (LensType t : {LensType::Equidistant, LensType::Equisolid, LensType::Stereographic}) {
       lens.type = t;
-      for (double theta : {0.0, 0.3, 1.0, 1.6}) QVERIFY(std::abs(*lens_theta(lens, *lens.radius(theta)) - theta) < 1e-9);
+      for (double theta : {0.0, 0.3, 1.0, 1.6})
+        QVERIFY(std::abs(*lens_theta(lens, *lens.radius(theta)) - theta) < 1e-9);
     }
     QVERIFY(!lens_theta(Lens::paper(), 5000).has_value());
   }

@@ -77,9 +77,9 @@ class TestJetsonRealLogs : public QObject {
     QCOMPARE(t.total_channel, std::string("VDD_IN"));
     const auto p = bs::power_series(t);
     QCOMPARE(p.size(), std::size_t{24});
-    QCOMPARE(p[0], 5.542);    // 20:05:55 VDD_IN 5542mW/5542mW (CPU burn)
-    QCOMPARE(p[11], 9.315);   // 20:06:06 VDD_IN 9315mW/5909mW (GPU burn starts)
-    QCOMPARE(p[23], 13.711);  // 20:06:19 VDD_IN 13711mW/9773mW
+    QCOMPARE(p[0], 5.542);         // 20:05:55 VDD_IN 5542mW/5542mW (CPU burn)
+    QCOMPARE(p[11], 9.315);        // 20:06:06 VDD_IN 9315mW/5909mW (GPU burn starts)
+    QCOMPARE(p[23], 13.711);       // 20:06:19 VDD_IN 13711mW/9773mW
     QCOMPARE(t.time_s[16], 17.0);  // 20:06:12 - 20:05:55: the log's clock, which skipped 20:06:11
     QCOMPARE(t.start_time, std::string("2025-10-01T20:05:55"));
     QVERIFY(b.warnings.empty());  // an input rail and timestamps: nothing to assume
@@ -104,7 +104,7 @@ class TestJetsonRealLogs : public QObject {
     QCOMPARE(t.total_channel, std::string("sum of rails"));
     const auto p = bs::power_series(t);
     QCOMPARE(p.size(), std::size_t{15});
-    QCOMPARE(p[0], 6.912);  // 16:33:42: VDD_GPU_SOC 2798 + VDD_CPU_CV 799 + VIN_SYS_5V0 3315 = 6912 mW
+    QCOMPARE(p[0], 6.912);   // 16:33:42: VDD_GPU_SOC 2798 + VDD_CPU_CV 799 + VIN_SYS_5V0 3315 = 6912 mW
     QCOMPARE(p[11], 5.510);  // 16:33:54: 2399 + 399 + 2712 = 5510 mW
     // Per line: 6912 6811 6812 6711 6812 6812 6711 6711 6711 6711 6311 5510 5510 5611 5611, sum 96267 mW over
     // 15 lines: mean 6417.8 mW. VIN_SYS_5V0 alone (what was reported before) averages about 3.1 W.

@@ -36,7 +36,8 @@ class TestJtopCsv : public QObject {
   Q_OBJECT
  private slots:
   void reads_times_total_rails_and_settings() {
-    const std::string text = kHeader + row("2024-03-01 10:00:00.250000", "1 day, 2:03:04.500000", 5000, 1500, 1200, 5000) +
+    const std::string text = kHeader +
+                             row("2024-03-01 10:00:00.250000", "1 day, 2:03:04.500000", 5000, 1500, 1200, 5000) +
                              row("2024-03-01 10:00:01.250000", "1 day, 2:03:05.500000", 7000, 3000, 1300, 7000) +
                              row("2024-03-01 10:00:02", "1 day, 2:03:06.250000", 6500, 2500, 1250, 6500);
     const auto b = bs::parse_jtop_csv(text, "j.csv");
@@ -54,15 +55,17 @@ class TestJtopCsv : public QObject {
     QVERIFY(b.warnings.empty());
   }
   void uptime_when_there_is_no_time_column() {
-    const std::string text = "uptime,Power TOT,nvp model\n\"3 days, 0:07:35.540000\",3852,15W\n"
-                             "\"3 days, 0:07:36.040000\",3900,15W\n23:59:59,1,15W\n";
+    const std::string text =
+        "uptime,Power TOT,nvp model\n\"3 days, 0:07:35.540000\",3852,15W\n"
+        "\"3 days, 0:07:36.040000\",3900,15W\n23:59:59,1,15W\n";
     // The third row's uptime (23:59:59, a fresh boot?) is before the first: time goes backwards.
     const auto e = error_of(text);
     QCOMPARE(e.location().line, std::size_t{4});
     QCOMPARE(e.location().field, std::string("uptime"));
-    const auto b = bs::parse_jtop_csv("uptime,Power TOT,nvp model\n\"3 days, 0:07:35.540000\",3852,15W\n"
-                                      "\"3 days, 0:07:36.040000\",3900,15W\n",
-                                      "j.csv");
+    const auto b = bs::parse_jtop_csv(
+        "uptime,Power TOT,nvp model\n\"3 days, 0:07:35.540000\",3852,15W\n"
+        "\"3 days, 0:07:36.040000\",3900,15W\n",
+        "j.csv");
     QVERIFY(std::abs(b.power_traces.at(0).time_s[1] - 0.5) < 1e-9);
     QVERIFY(b.power_traces.at(0).start_time.empty());
   }
@@ -87,8 +90,9 @@ class TestJtopCsv : public QObject {
   }
   void broken_logs() {
     // A huge value: a clear error at its line and column, never a mean of 1e17 W.
-    auto e = error_of(kHeader + row("2024-03-01 10:00:00", "0:01:00", 5000, 1, 1, 5000) +
-                      "2024-03-01 10:00:01,\"0:01:01\",5,OFF,0.25,26.7,44.6,-256,5000,1,1,99999999999999999999,OFF,MAXN\r\n");
+    auto e = error_of(
+        kHeader + row("2024-03-01 10:00:00", "0:01:00", 5000, 1, 1, 5000) +
+        "2024-03-01 10:00:01,\"0:01:01\",5,OFF,0.25,26.7,44.6,-256,5000,1,1,99999999999999999999,OFF,MAXN\r\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{3});
     QCOMPARE(e.location().field, std::string("Power TOT"));
@@ -99,11 +103,13 @@ class TestJtopCsv : public QObject {
     QCOMPARE(e.location().line, std::size_t{2});
     QCOMPARE(e.location().field, std::string("Power TOT"));
     // A row with a cell too many in the middle; a cut-off last row is skipped.
-    e = error_of(kHeader + row("2024-03-01 10:00:00", "0:01:00", 1, 1, 1, 1) + "2024-03-01 10:00:01,\"0:01:01\",5,OFF,0.25,26.7,44.6,-256,1,1,1,1,OFF,MAXN,extra\r\n" +
+    e = error_of(kHeader + row("2024-03-01 10:00:00", "0:01:00", 1, 1, 1, 1) +
+                 "2024-03-01 10:00:01,\"0:01:01\",5,OFF,0.25,26.7,44.6,-256,1,1,1,1,OFF,MAXN,extra\r\n" +
                  row("2024-03-01 10:00:02", "0:01:02", 1, 1, 1, 1));
     QCOMPARE(e.category(), bs::ImportErrorCategory::Syntax);
     QCOMPARE(e.location().line, std::size_t{3});
-    const auto cut = bs::parse_jtop_csv(kHeader + row("2024-03-01 10:00:00", "0:01:00", 1, 1, 1, 1) + "2024-03-01 10:00:01,\"0:0", "j.csv");
+    const auto cut = bs::parse_jtop_csv(
+        kHeader + row("2024-03-01 10:00:00", "0:01:00", 1, 1, 1, 1) + "2024-03-01 10:00:01,\"0:0", "j.csv");
     QCOMPARE(cut.power_traces.at(0).time_s.size(), std::size_t{1});
     QVERIFY(cut.warnings.at(0).find("j.csv:3: cut-off last row") != std::string::npos);
     // No total, no time, a bad date, time backwards, a header without rows.
@@ -115,7 +121,9 @@ class TestJtopCsv : public QObject {
     e = error_of("time,Power TOT,nvp model\n03/01/2024 10:00,1,MAXN\n2024-03-01 10:00:00,1,MAXN\n");
     QCOMPARE(e.location().line, std::size_t{2});
     QCOMPARE(e.location().field, std::string("time"));
-    e = error_of("time,Power TOT,nvp model\n2024-03-01 10:00:05,1,MAXN\n2024-03-01 10:00:04,1,MAXN\n2024-03-01 10:00:06,1,MAXN\n");
+    e = error_of(
+        "time,Power TOT,nvp model\n2024-03-01 10:00:05,1,MAXN\n2024-03-01 10:00:04,1,MAXN\n2024-03-01 "
+        "10:00:06,1,MAXN\n");
     QVERIFY(std::string(e.what()).find("backwards") != std::string::npos);
     e = error_of(kHeader);
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);

@@ -90,13 +90,15 @@ class TestMeterLogs : public QObject {
     const bs::PowerTrace& c = b.power_traces[1];
     QCOMPARE(c.start_time, std::string("2023-10-05T14:31:02.125"));
     QVERIFY(std::isnan(c.channels[0].values[0]) && std::isnan(c.channels[0].values[1]));  // never 0 W
-    QVERIFY(std::any_of(b.warnings.begin(), b.warnings.end(), [](const std::string& w) { return w.find("2 power readings") != std::string::npos; }));
+    QVERIFY(std::any_of(b.warnings.begin(), b.warnings.end(),
+                        [](const std::string& w) { return w.find("2 power readings") != std::string::npos; }));
   }
   void nvidia_smi_nounits_instant_and_average() {
     const auto b = bs::parse_nvidia_smi(
         "timestamp, index, power.draw.average [W], power.draw.instant [W]\n"
         "2024/01/01 00:00:00.000, 0, 70.00, 71.50\n"
-        "2024/01/01 00:00:00.500, 0, 72.00, 80.25\n", "n.csv");
+        "2024/01/01 00:00:00.500, 0, 72.00, 80.25\n",
+        "n.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QCOMPARE(t.channels.size(), std::size_t{2});
     QCOMPARE(t.total_channel, std::string("power.draw.instant"));
@@ -122,20 +124,29 @@ class TestMeterLogs : public QObject {
     auto e = error_of([] { bs::parse_nvidia_smi("power.draw [W]\n20.0 W\n", "x.csv"); });
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
     QVERIFY(e.reason().find("timestamp") != std::string::npos);
-    e = error_of([] { bs::parse_nvidia_smi("timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 20 W\n"
-                                           "2024/01/01 00:00:00.000, 20 W\n2024/01/01 00:00:02.000, 20 W\n", "x.csv"); });
+    e = error_of([] {
+      bs::parse_nvidia_smi(
+          "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 20 W\n"
+          "2024/01/01 00:00:00.000, 20 W\n2024/01/01 00:00:02.000, 20 W\n",
+          "x.csv");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{3});
-    e = error_of([] { bs::parse_nvidia_smi("timestamp, power.draw [W]\n2024/01/01 00:00:01.000, lots W\n"
-                                           "2024/01/01 00:00:02.000, 20 W\n", "x.csv"); });
+    e = error_of([] {
+      bs::parse_nvidia_smi(
+          "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, lots W\n"
+          "2024/01/01 00:00:02.000, 20 W\n",
+          "x.csv");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().field, std::string("power.draw"));
     e = error_of([] { bs::parse_nvidia_smi("timestamp, power.draw [kW]\n2024/01/01 00:00:01.000, 1\n", "x.csv"); });
     QCOMPARE(e.category(), bs::ImportErrorCategory::Unsupported);
     // A cut-off last line and a repeated header are skipped with warnings.
-    const auto b = bs::parse_nvidia_smi("timestamp, power.draw [W]\n2024/01/01 00:00:00.000, 20 W\n"
-                                        "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 22 W\n2024/01/01 00:0",
-                                        "x.csv");
+    const auto b = bs::parse_nvidia_smi(
+        "timestamp, power.draw [W]\n2024/01/01 00:00:00.000, 20 W\n"
+        "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 22 W\n2024/01/01 00:0",
+        "x.csv");
     QCOMPARE(b.power_traces.at(0).time_s.size(), std::size_t{2});
     QCOMPARE(b.warnings.size(), std::size_t{2});
   }
@@ -221,10 +232,12 @@ class TestMeterLogs : public QObject {
     QCOMPARE(t.provenance.settings.at(0).second, std::string("5"));
     // A French locale groups thousands with a space: "5 005,68" is one number (the shape of a paste seen in a public
     // course repository; numbers as there).
-    const auto fr = bs::parse_perf_stat("         5 005,68 Joules power/energy-cores/\n"
-                                        "          5 591,86 Joules power/energy-pkg/\n"
-                                        "             34,22 Joules power/energy-gpu/\n"
-                                        "287,542923380 seconds time elapsed\n", "fr.txt");
+    const auto fr = bs::parse_perf_stat(
+        "         5 005,68 Joules power/energy-cores/\n"
+        "          5 591,86 Joules power/energy-pkg/\n"
+        "             34,22 Joules power/energy-gpu/\n"
+        "287,542923380 seconds time elapsed\n",
+        "fr.txt");
     QVERIFY(near(channel(fr.power_traces.at(0), "pkg").values[0], 5591.86 / 287.542923380));
     QVERIFY(near(channel(fr.power_traces.at(0), "gpu").values[0], 34.22 / 287.542923380));
     // Thousands grouping in the C locale, and two runs pasted one after the other: one trace each.
@@ -245,17 +258,29 @@ class TestMeterLogs : public QObject {
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
     QVERIFY(e.reason().find("-I") != std::string::npos);
     // ... unless duration_time was counted: 893.33 J over 20.0 s.
-    const auto d = bs::parse_perf_stat("893.33,Joules,power/energy-pkg/,20005559241,100.00,,\n"
-                                       "20000000000,ns,duration_time,20000000000,100.00,,\n", "d.csv");
+    const auto d = bs::parse_perf_stat(
+        "893.33,Joules,power/energy-pkg/,20005559241,100.00,,\n"
+        "20000000000,ns,duration_time,20000000000,100.00,,\n",
+        "d.csv");
     QVERIFY(near(d.power_traces.at(0).channels.at(0).values[0], 893.33 / 20.0));
-    e = error_of([] { bs::parse_perf_stat(" Performance counter stats for 'sleep 1':\n 1,990,524 cycles\n"
-                                          " 1.0 seconds time elapsed\n", "x.txt"); });
+    e = error_of([] {
+      bs::parse_perf_stat(
+          " Performance counter stats for 'sleep 1':\n 1,990,524 cycles\n"
+          " 1.0 seconds time elapsed\n",
+          "x.txt");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
-    e = error_of([] { bs::parse_perf_stat("1.0,abc,Joules,power/energy-pkg/,1,100\n2.0,1,Joules,power/energy-pkg/,1,100\n", "x.csv"); });
+    e = error_of([] {
+      bs::parse_perf_stat("1.0,abc,Joules,power/energy-pkg/,1,100\n2.0,1,Joules,power/energy-pkg/,1,100\n", "x.csv");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{1});
-    e = error_of([] { bs::parse_perf_stat("2.0,1,Joules,power/energy-pkg/,1,100\n1.0,1,Joules,power/energy-pkg/,1,100\n"
-                                          "3.0,1,Joules,power/energy-pkg/,1,100\n", "x.csv"); });
+    e = error_of([] {
+      bs::parse_perf_stat(
+          "2.0,1,Joules,power/energy-pkg/,1,100\n1.0,1,Joules,power/energy-pkg/,1,100\n"
+          "3.0,1,Joules,power/energy-pkg/,1,100\n",
+          "x.csv");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{2});
   }
@@ -292,11 +317,17 @@ class TestMeterLogs : public QObject {
   }
   void ptd_marks_channels_and_missing_readings() {
     const auto b = bs::parse_ptd_log(
-        "Time,03-01-2021 09:00:00.000,Watts,-1.000000,Volts,230.0,Amps,0.1,PF,0.5,Mark,ranging,Ch1,Watts,10.0,Volts,230.0,Amps,0.05,PF,0.9\n"
-        "Time,03-01-2021 09:00:01.000,Watts,20.0,Volts,230.0,Amps,0.1,PF,0.5,Mark,ranging,Ch1,Watts,11.0,Volts,230.0,Amps,0.05,PF,0.9\n"
+        "Time,03-01-2021 "
+        "09:00:00.000,Watts,-1.000000,Volts,230.0,Amps,0.1,PF,0.5,Mark,ranging,Ch1,Watts,10.0,Volts,230.0,Amps,0.05,PF,"
+        "0.9\n"
+        "Time,03-01-2021 "
+        "09:00:01.000,Watts,20.0,Volts,230.0,Amps,0.1,PF,0.5,Mark,ranging,Ch1,Watts,11.0,Volts,230.0,Amps,0.05,PF,0.9\n"
         "02-26-2021 17:07:11.443: ERROR: Can't evaluate uncertainty of this sample!\n"
-        "Time,03-01-2021 09:00:05.000,Watts,30.0,Volts,230.0,Amps,0.2,PF,0.5,Mark,testing,Ch1,Watts,12.0,Volts,230.0,Amps,0.05,PF,0.9\n"
-        "Time,03-01-2021 09:00:06.500,Watts,31.0,Volts,230.0,Amps,0.2,PF,0.5,Mark,testing,Ch1,Watts,13.0,Volts,230.0,Amps,0.05,PF,0.9\n",
+        "Time,03-01-2021 "
+        "09:00:05.000,Watts,30.0,Volts,230.0,Amps,0.2,PF,0.5,Mark,testing,Ch1,Watts,12.0,Volts,230.0,Amps,0.05,PF,0.9\n"
+        "Time,03-01-2021 "
+        "09:00:06.500,Watts,31.0,Volts,230.0,Amps,0.2,PF,0.5,Mark,testing,Ch1,Watts,13.0,Volts,230.0,Amps,0.05,PF,0."
+        "9\n",
         "spl.txt");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QCOMPARE(t.channels.size(), std::size_t{6});
@@ -311,17 +342,26 @@ class TestMeterLogs : public QObject {
   }
   void ptd_day_first_dates_and_errors() {
     // mlcommons/power-dev's README shows "28-12-2020": a first field above 12 can only be a day.
-    const auto b = bs::parse_ptd_log("Time,28-12-2020 15:21:14.682,Watts,22.95,Volts,228.57,Amps,0.20643,PF,0.4864,Mark,x\n"
-                                     "Time,28-12-2020 15:21:15.686,Watts,23.08,Volts,228.44,Amps,0.20732,PF,0.4874,Mark,x\n",
-                                     "dm.txt");
+    const auto b = bs::parse_ptd_log(
+        "Time,28-12-2020 15:21:14.682,Watts,22.95,Volts,228.57,Amps,0.20643,PF,0.4864,Mark,x\n"
+        "Time,28-12-2020 15:21:15.686,Watts,23.08,Volts,228.44,Amps,0.20732,PF,0.4874,Mark,x\n",
+        "dm.txt");
     QCOMPARE(b.power_traces.at(0).start_time, std::string("2020-12-28T15:21:14.682"));
-    auto e = error_of([] { bs::parse_ptd_log("Time,12-23-2020 10:21:52.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
-                                             "Time,12-23-2020 10:21:51.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
-                                             "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n", "x.txt"); });
+    auto e = error_of([] {
+      bs::parse_ptd_log(
+          "Time,12-23-2020 10:21:52.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
+          "Time,12-23-2020 10:21:51.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
+          "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n",
+          "x.txt");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{2});
-    e = error_of([] { bs::parse_ptd_log("Time,12-23-2020 10:21:52.000,Watts,x,Volts,1,Amps,1,PF,1,Mark,a\n"
-                                        "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n", "x.txt"); });
+    e = error_of([] {
+      bs::parse_ptd_log(
+          "Time,12-23-2020 10:21:52.000,Watts,x,Volts,1,Amps,1,PF,1,Mark,a\n"
+          "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n",
+          "x.txt");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().field, std::string("Watts"));
   }
@@ -329,9 +369,11 @@ class TestMeterLogs : public QObject {
     // benchscope-cli power goes through import_power_log: the meter formats are picked there too.
     QCOMPARE(bs::import_power_log(kReal + "ptd-power-dev-example-spl.txt").format, std::string("ptdaemon"));
     QCOMPARE(bs::import_power_log(kReal + "nvidia-smi-flame-2col.csv").format, std::string("nvidia-smi"));
-    QCOMPARE(bs::import_power_log(kReal + "perf-rapl-validation-sleep-interval.csv").format, std::string("perf-stat-rapl"));
+    QCOMPARE(bs::import_power_log(kReal + "perf-rapl-validation-sleep-interval.csv").format,
+             std::string("perf-stat-rapl"));
     // ... and the generic CSV keeps its own files.
-    QCOMPARE(bs::import_power_log(BENCHSCOPE_TEST_DATA_DIR "/power/joulescope-export.csv").format, std::string("power-csv"));
+    QCOMPARE(bs::import_power_log(BENCHSCOPE_TEST_DATA_DIR "/power/joulescope-export.csv").format,
+             std::string("power-csv"));
   }
 };
 

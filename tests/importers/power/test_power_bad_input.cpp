@@ -6,9 +6,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "../../support/import_errors.h"
 #include "importer.h"
 #include "power_csv.h"
-#include "../../support/import_errors.h"
 
 namespace {
 
@@ -30,13 +30,12 @@ class TestPowerBadInput : public QObject {
     for (const auto& entry : manifest.at("files")) {
       if (entry.value("importer", "") != "power-csv") continue;
       const std::string path = std::string(BENCHSCOPE_TEST_DATA_DIR "/") + entry.at("file").get<std::string>();
-      const bs::ImportError e =
-          bs::test::import_error_of([&] { return bs::import_file(path, bs::CancelToken{}); });
+      const bs::ImportError e = bs::test::import_error_of([&] { return bs::import_file(path, bs::CancelToken{}); });
       const std::string what = e.what();
       QVERIFY2(std::string(bs::to_string(e.category())) == entry.at("category").get<std::string>(), what.c_str());
       for (const std::string& text : entry.at("contains").is_string()
-                                           ? std::vector<std::string>{entry.at("contains").get<std::string>()}
-                                           : entry.at("contains").get<std::vector<std::string>>())
+                                         ? std::vector<std::string>{entry.at("contains").get<std::string>()}
+                                         : entry.at("contains").get<std::vector<std::string>>())
         QVERIFY2(what.find(text) != std::string::npos, what.c_str());
       QVERIFY2(e.location().line > 0, what.c_str());
       try {

@@ -51,7 +51,8 @@ class TestPowerFormats : public QObject {
     QCOMPARE(t.provenance.settings.size(), std::size_t{14});
     QCOMPARE(t.provenance.settings[0], (std::pair<std::string, std::string>{"Total Elapsed Time (sec)", "1.040852"}));
     bool footer_warned = false;
-    for (const auto& w : b.warnings) footer_warned = footer_warned || w.find(":13: summary footer (14") != std::string::npos;
+    for (const auto& w : b.warnings)
+      footer_warned = footer_warned || w.find(":13: summary footer (14") != std::string::npos;
     QVERIFY(footer_warned);
     // By hand, package power 7.163 12.414 2.998 6.171 4.152 2.443 4.778 6.874 17.094 9.811 W:
     //   sum 73.898 W, mean 7.3898 W (n 10);
@@ -74,7 +75,8 @@ class TestPowerFormats : public QObject {
     QCOMPARE(t.channels.size(), std::size_t{3});     // Processor, IA, DRAM; "Package Power Limit_0(Watt)" is not
     QCOMPARE(t.total_channel, std::string("Processor Power_0(Watt)"));
     QCOMPARE(t.provenance.settings.size(), std::size_t{11});
-    QCOMPARE(t.provenance.settings[4], (std::pair<std::string, std::string>{"Average Package Power_0 (Watt)", "62.575186"}));
+    QCOMPARE(t.provenance.settings[4],
+             (std::pair<std::string, std::string>{"Average Package Power_0 (Watt)", "62.575186"}));
     // By hand, package power 86.324 92.903 57.964 59.288 58.359 46.596 W: sum 401.434, mean 66.905667 W;
     //   trapezoids .109 x 89.6135 + .722 x 75.4335 + .102 x 58.626 + .102 x 58.8235 + .104 x 52.4775
     //   = 9.7678715 + 54.462987 + 5.979852 + 5.999997 + 5.45766 = 81.6683675 J.
@@ -89,12 +91,14 @@ class TestPowerFormats : public QObject {
     // tests/data/power/real/SOURCES: arsho/powerlog's documented samples CSV (Unix ns beside an elapsed clock).
     const auto b = import("real/powerlog-samples-doc.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
-    QVERIFY(std::abs(t.time_s[1] - 0.1035) < 1e-12);                // from "Elapsed (s)": 0.2086 - 0.1051
-    QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-09-09T15:14:01.539Z"));  // 1788966841539282000 ns
+    QVERIFY(std::abs(t.time_s[1] - 0.1035) < 1e-12);  // from "Elapsed (s)": 0.2086 - 0.1051
+    QCOMPARE(QString::fromStdString(t.start_time),
+             QStringLiteral("2026-09-09T15:14:01.539Z"));  // 1788966841539282000 ns
     QCOMPARE(t.channels.size(), std::size_t{4});
     QVERIFY(t.total_channel.empty());  // "GPU Power (W)" sums the GPUs, not the machine: no total named
     bool said = false;
-    for (const auto& w : b.warnings) said = said || w.find("statistics use 'CPU Power (W)' (the first)") != std::string::npos;
+    for (const auto& w : b.warnings)
+      said = said || w.find("statistics use 'CPU Power (W)' (the first)") != std::string::npos;
     QVERIFY(said);
     // Mean of the first power column: (77.42 + 78.10) / 2 = 77.76 W; energy 0.1035 s x 77.76 W = 8.04816 J.
     const bs::PowerStats s = bs::power_stats(t);
@@ -116,7 +120,8 @@ class TestPowerFormats : public QObject {
     QVERIFY(std::abs(channel(t, bs::PowerQuantity::Current).values[30] - (0.612 + 0.003 * std::sin(30.0))) < 1e-6);
     QVERIFY(b.warnings.size() == 1 && b.warnings[0].find("'charge' (5), 'energy' (6)") != std::string::npos);
     // The older export's '#'-prefixed header line.
-    const auto hashed = bs::parse_power_csv("#time,current,voltage,power\n0.000000,0.512,5.01,2.565\n0.001000,0.514,5.01,2.575\n", "js.csv");
+    const auto hashed = bs::parse_power_csv(
+        "#time,current,voltage,power\n0.000000,0.512,5.01,2.565\n0.001000,0.514,5.01,2.575\n", "js.csv");
     QCOMPARE(channel(hashed.power_traces.at(0), bs::PowerQuantity::Power).values[1], 2.575);
   }
   void otii_export_with_irregular_times() {
@@ -129,7 +134,7 @@ class TestPowerFormats : public QObject {
   void ina219_logger() {
     const auto b = import("ina219-logger.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
-    QCOMPARE(t.channels.size(), std::size_t{3});  // bus V, mA, mW; the shunt drop is not the supply
+    QCOMPARE(t.channels.size(), std::size_t{3});    // bus V, mA, mW; the shunt drop is not the supply
     QVERIFY(std::abs(t.time_s[11] - 1.1) < 1e-12);  // millis, relative to the first row
     QCOMPARE(channel(t, bs::PowerQuantity::Current).values[1], 0.83);
     QCOMPARE(channel(t, bs::PowerQuantity::Voltage).values[1], 12.09);
@@ -205,7 +210,8 @@ class TestPowerFormats : public QObject {
     const std::string path = dir.filePath("big.csv").toStdString();
     std::string text = "time_s,current_A,voltage_V\n";
     for (int k = 0; k < 120000; ++k)
-      text += std::to_string(k * 0.001) + "," + std::to_string(2.0 + (k % 97) * 0.001) + ",16.0" + std::string(k % 7, ' ') + "\n";
+      text += std::to_string(k * 0.001) + "," + std::to_string(2.0 + (k % 97) * 0.001) + ",16.0" +
+              std::string(k % 7, ' ') + "\n";
     QFile f(QString::fromStdString(path));
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(text.data(), static_cast<qint64>(text.size()));

@@ -69,14 +69,18 @@ class TestTegrastatsLogs : public QObject {
   }
   void broken_logs() {
     // Rails that change in the middle: an error at that line; at the very end: a cut-off line, skipped.
-    auto e = error_of("RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 100/100\nRAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\n");
+    auto e = error_of(
+        "RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 100/100\nRAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\n");
     QCOMPARE(e.location().line, std::size_t{2});
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
-    const auto cut = bs::parse_tegrastats("RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 120/110\n\n", "t.log");
+    const auto cut =
+        bs::parse_tegrastats("RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 120/110\n\n", "t.log");
     QCOMPARE(cut.power_traces.at(0).time_s.size(), std::size_t{1});
     QVERIFY(cut.warnings.at(0).find("t.log:2: incomplete last line") != std::string::npos);
     // Timestamps going backwards, and on some lines only.
-    e = error_of("01-02-2027 10:00:05 RAM 1/2MB VDD_IN 1/1\n01-02-2027 10:00:04 RAM 1/2MB VDD_IN 1/1\n01-02-2027 10:00:06 RAM 1/2MB VDD_IN 1/1\n");
+    e = error_of(
+        "01-02-2027 10:00:05 RAM 1/2MB VDD_IN 1/1\n01-02-2027 10:00:04 RAM 1/2MB VDD_IN 1/1\n01-02-2027 10:00:06 RAM "
+        "1/2MB VDD_IN 1/1\n");
     QCOMPARE(e.location().line, std::size_t{2});
     QVERIFY(std::string(e.what()).find("backwards") != std::string::npos);
     e = error_of("01-02-2027 10:00:05 RAM 1/2MB VDD_IN 1/1\nRAM 1/2MB VDD_IN 1/1\nRAM 1/2MB VDD_IN 1/1\n");
@@ -95,8 +99,9 @@ class TestTegrastatsLogs : public QObject {
   }
   void readings_beyond_a_rail_are_errors() {
     // A VDD_IN past int64 once became a "mean power" of 1.7e18 W; now it names the file, line, column and rail.
-    auto e = error_of("RAM 1/2MB VDD_IN 5000mW/5000mW VDD_SOC 1/1\nRAM 1/2MB VDD_IN 99999999999999999999mW/5000mW VDD_SOC 1/1\n"
-                      "RAM 1/2MB VDD_IN 5000mW/5000mW VDD_SOC 1/1\n");
+    auto e = error_of(
+        "RAM 1/2MB VDD_IN 5000mW/5000mW VDD_SOC 1/1\nRAM 1/2MB VDD_IN 99999999999999999999mW/5000mW VDD_SOC 1/1\n"
+        "RAM 1/2MB VDD_IN 5000mW/5000mW VDD_SOC 1/1\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{2});
     QCOMPARE(e.location().column, std::size_t{18});
@@ -105,7 +110,8 @@ class TestTegrastatsLogs : public QObject {
     // 1 kW is the bound, in the average as well; exactly 1 kW is accepted.
     QCOMPARE(error_of("RAM 1/2MB VDD_IN 1000001/5\nRAM 1/2MB VDD_IN 1/1\n").location().line, std::size_t{1});
     QCOMPARE(error_of("RAM 1/2MB VDD_IN 5/1000001\nRAM 1/2MB VDD_IN 1/1\n").location().line, std::size_t{1});
-    QCOMPARE(bs::parse_tegrastats("RAM 1/2MB VDD_IN 1000000/5\n", "t.log").power_traces.at(0).channels[0].values[0], 1000.0);
+    QCOMPARE(bs::parse_tegrastats("RAM 1/2MB VDD_IN 1000000/5\n", "t.log").power_traces.at(0).channels[0].values[0],
+             1000.0);
     // A number too long even for a double.
     QCOMPARE(error_of("RAM 1/2MB VDD_IN " + std::string(400, '9') + "/1\nRAM 1/2MB VDD_IN 1/1\n").category(),
              bs::ImportErrorCategory::InvalidValue);
@@ -119,10 +125,12 @@ class TestTegrastatsLogs : public QObject {
     QCOMPARE(t.total_channel, std::string("VIN"));
     QCOMPARE(t.channels[0].values[0], 15.004);
     QCOMPARE(t.channels[1].values[0], -0.392);
-    QCOMPARE(error_of("RAM 1/2MB VDD_IN -2001mW/1mW\nRAM 1/2MB VDD_IN 1/1\n").category(), bs::ImportErrorCategory::InvalidValue);
+    QCOMPARE(error_of("RAM 1/2MB VDD_IN -2001mW/1mW\nRAM 1/2MB VDD_IN 1/1\n").category(),
+             bs::ImportErrorCategory::InvalidValue);
   }
   void jetpack7_three_values_and_four() {
-    const auto b = bs::parse_tegrastats("RAM 1/2MB VDD_GPU_SOC 4385mW/3787mW/4385mW VDD_CPU_CV 1196mW/897mW/1196mW\n", "t.log");
+    const auto b =
+        bs::parse_tegrastats("RAM 1/2MB VDD_GPU_SOC 4385mW/3787mW/4385mW VDD_CPU_CV 1196mW/897mW/1196mW\n", "t.log");
     QCOMPARE(b.power_traces.at(0).channels[0].values[0], 4.385 + 1.196);  // sum of rails: no input rail
     // Four values are no tegrastats format: an error, not a guess.
     const auto e = error_of("RAM 1/2MB VDD_IN 1mW/2mW/3mW/4mW\nRAM 1/2MB VDD_IN 1/1\n");

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../../support/paper_sample.h"
 #include "analysis/peaks/device_table.h"
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/plausibility.h"
-#include "../../support/paper_sample.h"
 #include "util/resources.h"
 
 namespace {
@@ -121,8 +121,8 @@ class TestPlausibility : public QObject {
     QVERIFY(has_code(nuc.flags, bs::flag_code::kAboveSpecPeak));
     const std::string& why = nuc.flags.front().reason;
     QVERIFY2(why.find("5.9x") != std::string::npos, why.c_str());
-    QVERIFY2(why.find("compiler") != std::string::npos, why.c_str());       // FLOPs not executed
-    QVERIFY2(why.find("asynchronous") != std::string::npos, why.c_str());   // timing wrong
+    QVERIFY2(why.find("compiler") != std::string::npos, why.c_str());      // FLOPs not executed
+    QVERIFY2(why.find("asynchronous") != std::string::npos, why.c_str());  // timing wrong
     // GTX 1080 Ti, 9.14 TFLOPS (OpenCL, D = 4): 3584 x 2 x 1.582 GHz = 11.34 TFLOPS; 9.14 / 11.34 = 0.806.
     const bs::PeakRow& gtx = row_of(rows, "GTX1080Ti", "OpenCL", 4);
     QVERIFY(std::fabs(gtx.peak.flops - 9.14e12) < 0.01e12);
@@ -158,7 +158,7 @@ class TestPlausibility : public QObject {
              negative.front().reason.c_str());
     // A spike does not hide a negative sample: the noise allowance is 1 % of the median |value| (9.2 W: 0.092 W).
     const auto spiked = bs::check_power_trace(trace_of(Q::Power, {9.1, 9.3, -9.2, 9200, 9.4, 9.0, 9.2, 9.1, 9.3, 9.2,
-                                                                   9.1, 9.3, 9.2, 9.1, 9.3, 9.2, 9.1, 9.3, 9.2, 9.1}));
+                                                                  9.1, 9.3, 9.2,  9.1,  9.3, 9.2, 9.1, 9.3, 9.2, 9.1}));
     QVERIFY(has_code(spiked, bs::flag_code::kNegativeValue));
     QVERIFY(has_code(spiked, bs::flag_code::kMagnitudeJump));  // 9.4 W -> 9.2 kW
     QVERIFY(has_code(bs::check_power_trace(trace_of(Q::Power, {40, 41, 12e3, 12e3, 12e3})),
@@ -176,7 +176,8 @@ class TestPlausibility : public QObject {
     QVERIFY(bs::check_power_trace(trace_of(Q::Current, {0.0001, 0.3, 2.5, 2.4, 0.3})).empty());
     QVERIFY(bs::check_power_trace(trace_of(Q::Current, {1.0, NAN, 1.1})).empty());
     // 200 W on a platform whose TDP is 15 W (13x): above 10x the TDP.
-    QVERIFY(has_code(bs::check_power_trace(trace_of(Q::Power, {9, 200, 10}), 15.0), bs::flag_code::kAbovePlatformPower));
+    QVERIFY(
+        has_code(bs::check_power_trace(trace_of(Q::Power, {9, 200, 10}), 15.0), bs::flag_code::kAbovePlatformPower));
     QVERIFY(bs::check_power_trace(trace_of(Q::Power, {9, 20, 10}), 15.0).empty());
     // The paper's logs (NUC 2.53 A, Jetson 0.59 A at 16 V) are plausible.
     for (const auto& t : bs::test::load_paper_sample().traces) QVERIFY(bs::check_power_trace_bundled(t).empty());

@@ -50,12 +50,12 @@ class TestInferenceTable : public QObject {
     QCOMPARE(a[1], std::string("yolo-n (YOLOv8), architecture timing: no detections"));
     QCOMPARE(a[2], std::string("640x640, 4"));
     QVERIFY2(a[4].starts_with("200.00 ± 10.00") && a[4].find("n = 10") != std::string::npos, a[4].c_str());
-    QCOMPARE(a[5], std::string("5.00"));       // 4 images / 0.8 s
-    QCOMPARE(a[6], std::string("44.00"));      // 35.2 GFLOP / 0.8 s
-    QCOMPARE(a[7], std::string("10.0 %"));     // of 440 GFLOPS
+    QCOMPARE(a[5], std::string("5.00"));    // 4 images / 0.8 s
+    QCOMPARE(a[6], std::string("44.00"));   // 35.2 GFLOP / 0.8 s
+    QCOMPARE(a[7], std::string("10.0 %"));  // of 440 GFLOPS
     QCOMPARE(a[8], std::string("2.5000"));
-    QCOMPARE(a[9], std::string("1440"));       // 3600 J per Wh / 2.5 J
-    QCOMPARE(a[10], std::string("8.80"));      // per image
+    QCOMPARE(a[9], std::string("1440"));   // 3600 J per Wh / 2.5 J
+    QCOMPARE(a[10], std::string("8.80"));  // per image
     const auto& b = t.rows[1];
     QCOMPARE(b[1], std::string("ssd.onnx (SSD)"));
     QCOMPARE(b[7], std::string("\xE2\x80\x93"));

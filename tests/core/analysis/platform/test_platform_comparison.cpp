@@ -85,7 +85,8 @@ class TestPlatformComparison : public QObject {
     QCOMPARE(round2(*jetson.battery_runtime_h * 60), 360.48);
     QCOMPARE(round2(nuc.gpu->peak.flops / 1e12), 5.25);
     QVERIFY(nuc.cpu && jetson.cpu && jetson.gpu);
-    QVERIFY(nuc.sources.count(bs::column::kPower) && nuc.sources.at(bs::column::kPower).source_file.ends_with("nuc-current.csv"));
+    QVERIFY(nuc.sources.count(bs::column::kPower) &&
+            nuc.sources.at(bs::column::kPower).source_file.ends_with("nuc-current.csv"));
     QCOMPARE(nuc.sources.at(bs::column::kGpuPeak).origin, bs::DataOrigin::Reconstructed);
     QVERIFY(!row(rows, "Desktop (Alienware Area-51)").mean_power_w);
   }
@@ -99,7 +100,7 @@ class TestPlatformComparison : public QObject {
         if (v.recommended) chosen = v.platform;
       return chosen;
     };
-    QCOMPARE(pick({}), std::string("NUC"));                             // no budget: the most compute
+    QCOMPARE(pick({}), std::string("NUC"));  // no budget: the most compute
     // The NUC's 5.25 TFLOPS GPU figure is flagged (about 6x the Iris Plus 650's spec): it is ranked at the spec
     // peak, which still beats the Jetson's 0.49 TFLOPS, and the verdict says so.
     const bs::PlatformRow& nuc = row(rows, "NUC");
@@ -120,7 +121,7 @@ class TestPlatformComparison : public QObject {
       if (v.recommended) chosen = v.platform;
     QCOMPARE(chosen, std::string("Jetson TX2"));
     QCOMPARE(pick({.power_budget_w = 10.0}), std::string("Jetson TX2"));  // under 10 W
-    QCOMPARE(pick({.power_budget_w = 5.0}), std::string());             // nothing fits
+    QCOMPARE(pick({.power_budget_w = 5.0}), std::string());               // nothing fits
     // Margins and failures are reported per constraint.
     for (const auto& v : bs::recommend(rows, {.power_budget_w = 10.0, .min_runtime_h = 2.0})) {
       if (v.platform == "NUC") {
@@ -269,7 +270,8 @@ class TestPlatformComparison : public QObject {
     // Walking at 140 W of servos: 56.98 Wh / (40.52 + 140) W = 18.94 min; / (9.48 + 140) W = 22.87 min.
     o.mission = "walk:30:140";
     rows = bs::compare_platforms(p.runs, p.traces, {}, o);
-    QCOMPARE(round2(*row(rows, "NUC").battery_runtime_h * 60), round2(56.98 * 60 / (*row(rows, "NUC").mean_power_w + 140)));
+    QCOMPARE(round2(*row(rows, "NUC").battery_runtime_h * 60),
+             round2(56.98 * 60 / (*row(rows, "NUC").mean_power_w + 140)));
     QVERIFY(std::fabs(*row(rows, "NUC").battery_runtime_h * 60 - 18.94) < 0.01);
     QVERIFY(std::fabs(*row(rows, "Jetson TX2").battery_runtime_h * 60 - 22.87) < 0.01);
     std::string chosen;

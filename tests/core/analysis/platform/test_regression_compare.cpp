@@ -102,7 +102,8 @@ class TestRegressionCompare : public QObject {
   }
 
   void benchmark_times_lower_is_better() {
-    const std::vector<bs::ResultSet> a{make_set(0.0, 12, 5)}, slower{make_set(0.10, 12, 6)}, faster{make_set(-0.10, 12, 7)};
+    const std::vector<bs::ResultSet> a{make_set(0.0, 12, 5)}, slower{make_set(0.10, 12, 6)},
+        faster{make_set(-0.10, 12, 7)};
     QCOMPARE(only_row(bs::compare_results({{}, a}, {{}, slower})).verdict, bs::CompareVerdict::Regression);
     QCOMPARE(only_row(bs::compare_results({{}, a}, {{}, faster})).verdict, bs::CompareVerdict::Improvement);
     const auto t = bs::compare_results({{}, a}, {{}, a}, {.threshold = 0.05});

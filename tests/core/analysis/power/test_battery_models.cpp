@@ -33,7 +33,8 @@ class TestBatteryModels : public QObject {
     }
     bs::DischargeOptions half;
     half.depth_of_discharge = 0.8;
-    QVERIFY(std::abs(bs::simulate_discharge(pack, bs::constant_load(40), half).runtime_s - 14.8 * 3.85 * 0.8 / 40 * 3600) < 1e-6);
+    QVERIFY(std::abs(bs::simulate_discharge(pack, bs::constant_load(40), half).runtime_s -
+                     14.8 * 3.85 * 0.8 / 40 * 3600) < 1e-6);
     // A parallel load (servos) adds to every phase.
     QVERIFY(std::abs(bs::simulate_discharge(pack, bs::constant_load(40.5, 225)).runtime_s -
                      14.8 * 3.85 / 265.5 * 3600) < 1e-6);

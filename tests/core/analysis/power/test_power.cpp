@@ -57,7 +57,7 @@ class TestPower : public QObject {
     QCOMPARE(s.energy_j, 150.0);
     QCOMPARE(bs::trace_stats(t, 5.0).power_w->max, 15.0);  // an explicit supply overrides the log's
     t.supply_voltage_v.reset();
-    QVERIFY(!bs::trace_stats(t).power_w.has_value());     // current only and no supply: power unknown
+    QVERIFY(!bs::trace_stats(t).power_w.has_value());  // current only and no supply: power unknown
   }
   void battery_model_checks_its_inputs() {
     QCOMPARE(bs::constant_power_runtime_h(10, 2, 20, 0.5), 0.5);

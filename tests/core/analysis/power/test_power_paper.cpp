@@ -3,14 +3,14 @@
 // mean current (SD), power at 16 V, GFLOPS/W with the GPU peaks, battery life on 14.8 V x 3.85 Ah.
 #include <QTest>
 
-#include "../../../support/paper_sample.h"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include "../../../support/paper_sample.h"
 
-#include "analysis/power/battery.h"
 #include "analysis/platform/efficiency.h"
 #include "analysis/platform/platform_efficiency.h"
+#include "analysis/power/battery.h"
 #include "analysis/power/power_stats.h"
 #include "importer.h"
 
@@ -42,8 +42,8 @@ class TestPowerPaper : public QObject {
     QFETCH(double, peak_flops);
     QFETCH(double, gflops_per_w);
     QFETCH(double, minutes);
-    const bs::ImportBatch batch = bs::import_file(
-        BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/" + file.toStdString(), bs::CancelToken{});
+    const bs::ImportBatch batch =
+        bs::import_file(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/" + file.toStdString(), bs::CancelToken{});
     QCOMPARE(batch.format, std::string("power-csv"));
     const bs::PowerTrace& trace = batch.power_traces.at(0);
     QCOMPARE(trace.provenance.origin, bs::DataOrigin::Reconstructed);

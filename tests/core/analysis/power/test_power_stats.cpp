@@ -106,7 +106,7 @@ class TestPowerStats : public QObject {
     const std::vector<double> v = {5, 1, 4, 2, 3};  // sorted 1..5
     const bs::Percentiles p = bs::percentiles(v);
     QCOMPARE(p.p50, 3.0);
-    QCOMPARE(p.p5, 1.2);   // pos 0.2 between 1 and 2
+    QCOMPARE(p.p5, 1.2);  // pos 0.2 between 1 and 2
     QCOMPARE(p.p95, 4.8);
     QCOMPARE(p.p99, 4.96);
     std::vector<double> ramp;
@@ -223,7 +223,8 @@ class TestPowerStats : public QObject {
     const auto figures = bs::efficiency_figures(in);
     QCOMPARE(figures.size(), std::size_t{3});
     QCOMPARE(figures[0].value, 25.0);
-    QVERIFY(figures[0].label.find("paper") != std::string::npos && figures[0].label.find("16.0 V") != std::string::npos);
+    QVERIFY(figures[0].label.find("paper") != std::string::npos &&
+            figures[0].label.find("16.0 V") != std::string::npos);
     QCOMPARE(figures[1].unit, std::string("GFLOPS/W"));
     QCOMPARE(figures[2].unit, std::string("J/GFLOP"));
     in.mean_power_w = 0;

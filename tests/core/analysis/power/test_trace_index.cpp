@@ -9,12 +9,14 @@
 #include "analysis/power/power.h"
 #include "analysis/power/power_stats.h"
 #include "analysis/power/range_table.h"
-#include "analysis/stats/stats.h"
 #include "analysis/power/trace_index.h"
+#include "analysis/stats/stats.h"
 
 namespace {
 
-bool near(double a, double b, double tol) { return std::abs(a - b) <= tol * std::max(1.0, std::max(std::abs(a), std::abs(b))); }
+bool near(double a, double b, double tol) {
+  return std::abs(a - b) <= tol * std::max(1.0, std::max(std::abs(a), std::abs(b)));
+}
 
 }  // namespace
 

@@ -8,7 +8,8 @@ class TestRoofline : public QObject {
   Q_OBJECT
  private slots:
   void roof_and_ridge() {
-    const bs::RooflineCeiling c{"vm", "CPU", 400e9, "theoretical", 50e9, "triad", bs::DeviceKind::Other, std::nullopt, "", {}};
+    const bs::RooflineCeiling c{"vm",         "CPU", 400e9, "theoretical", 50e9, "triad", bs::DeviceKind::Other,
+                                std::nullopt, "",    {}};
     QCOMPARE(*c.ridge_intensity(), 8.0);
     QCOMPARE(c.attainable(1.0), 50e9);     // memory-bound: I x bandwidth
     QCOMPARE(c.attainable(100.0), 400e9);  // compute-bound: the peak
@@ -18,7 +19,8 @@ class TestRoofline : public QObject {
     QVERIFY(!no_bw.ridge_intensity());
   }
   void placement() {
-    const bs::RooflineCeiling c{"vm", "CPU", 400e9, "theoretical", 50e9, "triad", bs::DeviceKind::Other, std::nullopt, "", {}};
+    const bs::RooflineCeiling c{"vm",         "CPU", 400e9, "theoretical", 50e9, "triad", bs::DeviceKind::Other,
+                                std::nullopt, "",    {}};
     // 2 GFLOP moving 1 GB in 0.1 s: I = 2, 20 GFLOP/s under a roof of 100 GFLOP/s.
     const auto p = bs::place_on_roofline(c, "stage", 2e9, 1e9, 0.1);
     QCOMPARE(p.intensity, 2.0);
@@ -28,7 +30,8 @@ class TestRoofline : public QObject {
     QVERIFY(p.memory_bound);
     // The rotation kernel, D = 4, N = 40000: 960000 flops per 68 bytes, far right of any ridge.
     QCOMPARE(bs::rotation_intensity(4, 40000), 6.0 * 4 * 40000 / 68.0);
-    const auto r = bs::place_on_roofline(c, "rotation", 6.0 * 4 * 40000 * 1024, 68.0 * 1024, 6.0 * 4 * 40000 * 1024 / 350e9);
+    const auto r =
+        bs::place_on_roofline(c, "rotation", 6.0 * 4 * 40000 * 1024, 68.0 * 1024, 6.0 * 4 * 40000 * 1024 / 350e9);
     QVERIFY(!r.memory_bound);
     QVERIFY(std::fabs(r.fraction - 350.0 / 400.0) < 1e-12);
   }

@@ -13,7 +13,9 @@
 
 namespace {
 
-bool close(double a, double b, double rel = 1e-12) { return std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b)); }
+bool close(double a, double b, double rel = 1e-12) {
+  return std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b));
+}
 
 bs::PipelineRun run_of(const std::string& platform, const std::string& device, const std::string& backend,
                        const std::string& demosaic, int w, int h, double mean_s, double sd_s) {
@@ -63,7 +65,8 @@ class TestStageRoofline : public QObject {
     QCOMPARE(s.intensity(), 236.0 / 148.0);
     QCOMPARE(s.ops_per_output_pixel, 59.0);
     QCOMPARE(s.bytes_per_output_pixel, 37.0);
-    QCOMPARE(QString::fromStdString(s.label), QString("demosaic (bilinear) + reprojection (bilinear, fixed-point LUT)"));
+    QCOMPARE(QString::fromStdString(s.label),
+             QString("demosaic (bilinear) + reprojection (bilinear, fixed-point LUT)"));
 
     // Fused: 4 x 59 = 236 ops (the same work, no RGB frame in between); bytes 4 x (8 + 3) + 16 x 1 = 60.
     const std::vector<bs::StageKernel> fused{bs::StageKernel::Fused};
@@ -90,9 +93,11 @@ class TestStageRoofline : public QObject {
 
   void placement_arithmetic() {
     // A 1000x1000 frame in 10 ms (SD 2 ms) on a device of 100 GOP/s and 10 GB/s.
-    const bs::RooflineCeiling c{"robot", "CPU", 100e9, "theoretical", 10e9, "triad", bs::DeviceKind::Cpu, std::nullopt, "", {}};
+    const bs::RooflineCeiling c{"robot",      "CPU", 100e9, "theoretical", 10e9, "triad", bs::DeviceKind::Cpu,
+                                std::nullopt, "",    {}};
     const std::vector<bs::RooflineCeiling> cs{c};
-    const std::vector<bs::PipelineRun> runs{run_of("robot", "CPU (4 threads)", "cpu", "bilinear", 1000, 1000, 0.010, 0.002)};
+    const std::vector<bs::PipelineRun> runs{
+        run_of("robot", "CPU (4 threads)", "cpu", "bilinear", 1000, 1000, 0.010, 0.002)};
     const bs::StagePlacements p = bs::place_preprocessing(cs, runs);
     QCOMPARE(p.placed.size(), std::size_t{1});
     const bs::StagePlacement& s = p.placed.front();
@@ -119,9 +124,9 @@ class TestStageRoofline : public QObject {
     const std::vector<bs::PipelineRun> runs{
         run_of("box", "GPU X (OpenCL) preprocessing, CPU detection", "opencl", "", 8, 8, 1e-3, 0),  // longest name
         run_of("box", "something else", "opencl", "", 8, 8, 1e-3, 0),  // two GPUs: ambiguous, skipped
-        run_of("box", "CPU", "cpu", "opencv-ea", 8, 8, 1e-3, 0),        // no op model
-        run_of("box", "CPU", "cpu", "bilinear", 0, 0, 1e-3, 0),         // no frame size
-        run_of("other", "CPU", "cpu", "bilinear", 8, 8, 1e-3, 0)};      // no ceiling at all
+        run_of("box", "CPU", "cpu", "opencv-ea", 8, 8, 1e-3, 0),       // no op model
+        run_of("box", "CPU", "cpu", "bilinear", 0, 0, 1e-3, 0),        // no frame size
+        run_of("other", "CPU", "cpu", "bilinear", 8, 8, 1e-3, 0)};     // no ceiling at all
     const bs::StagePlacements p = bs::place_preprocessing(cs, runs);
     QCOMPARE(p.placed.size(), std::size_t{1});
     QCOMPARE(QString::fromStdString(p.placed.front().device), QString("GPU X"));
