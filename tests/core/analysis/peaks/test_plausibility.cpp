@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "../../support/paper_sample.h"
+#include "../../../support/paper_sample.h"
 #include "analysis/peaks/device_table.h"
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/plausibility.h"
