@@ -64,7 +64,7 @@ Statement& Statement::bind(int index, std::string_view v) {
 Statement& Statement::bind(int index, const std::optional<double>& v) { return v ? bind(index, *v) : bind_null(index); }
 
 Statement& Statement::bind_doubles(int index, const std::vector<double>& values) {
-  const auto bytes = static_cast<sqlite3_uint64>(values.size() * sizeof(double));
+  const auto bytes = static_cast<sqlite3_uint64>(values.size()) * sizeof(double);
   if (sqlite3_bind_blob64(stmt_, index, values.empty() ? "" : static_cast<const void*>(values.data()), bytes,
                           SQLITE_TRANSIENT) != SQLITE_OK)
     db_.fail("bind failed");
@@ -73,7 +73,7 @@ Statement& Statement::bind_doubles(int index, const std::vector<double>& values)
 
 Statement& Statement::bind_doubles_static(int index, const double* values, std::size_t n) {
   if (sqlite3_bind_blob64(stmt_, index, n == 0 ? static_cast<const void*>("") : static_cast<const void*>(values),
-                          static_cast<sqlite3_uint64>(n * sizeof(double)), SQLITE_STATIC) != SQLITE_OK)
+                          static_cast<sqlite3_uint64>(n) * sizeof(double), SQLITE_STATIC) != SQLITE_OK)
     db_.fail("bind failed");
   return *this;
 }

@@ -16,7 +16,7 @@ namespace bs {
 class WorkspaceError : public std::runtime_error {
  public:
   enum class Kind { Io, NotAWorkspace, Corrupt, NewerVersion, Constraint };
-  WorkspaceError(Kind kind, std::string message) : std::runtime_error(std::move(message)), kind_(kind) {}
+  WorkspaceError(Kind kind, std::string message) : std::runtime_error(message), kind_(kind) {}
   Kind kind() const noexcept { return kind_; }
 
  private:
