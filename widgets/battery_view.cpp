@@ -206,6 +206,10 @@ void BatteryView::mark_modified() {
 }
 
 void BatteryView::set_data(std::vector<PowerTrace> traces, std::vector<std::pair<std::string, int>> colors) {
+  set_data(share_traces(std::move(traces)), std::move(colors));
+}
+
+void BatteryView::set_data(SharedTraces traces, std::vector<std::pair<std::string, int>> colors) {
   traces_ = std::move(traces);
   colors_ = std::move(colors);
   recompute();
@@ -301,7 +305,7 @@ void BatteryView::recompute() {
   options.model = s.model;
   options.depth_of_discharge = s.depth_of_discharge;
   try {
-    rows_ = platform_battery(traces_, s.pack, options, s.extra_load_w, s.mission);
+    rows_ = platform_battery(traces_->traces, s.pack, options, s.extra_load_w, s.mission);
     error_->clear();
   } catch (const std::invalid_argument& e) {
     rows_.clear();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/platform/platform_battery.h"
+#include "shared_traces.h"
 #include "store/battery_preset_store.h"
 
 class QComboBox;
@@ -35,6 +36,8 @@ class BatteryView : public QWidget {
   // Called again with the same workspace (after an import or a run), it refreshes the preset list and keeps what
   // the fields show. A newly opened workspace brings back the setup last edited in it ("battery-tab/current").
   void set_workspace(Workspace* workspace);
+  // The traces are shared with the other views (widgets/shared_traces.h), never copied.
+  void set_data(SharedTraces traces, std::vector<std::pair<std::string, int>> colors = {});
   void set_data(std::vector<PowerTrace> traces, std::vector<std::pair<std::string, int>> colors = {});
   // The setup the fields show now.
   BatterySetup setup() const;
@@ -75,7 +78,7 @@ class BatteryView : public QWidget {
   void delete_preset();
 
   Workspace* workspace_ = nullptr;
-  std::vector<PowerTrace> traces_;
+  SharedTraces traces_ = share_traces(std::vector<PowerTrace>{});
   std::vector<std::pair<std::string, int>> colors_;
   std::vector<BatterySetup> presets_;
   BatterySetup base_;  // the selected preset: keeps what the fields do not show (description, curve, cut-off)

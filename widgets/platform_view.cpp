@@ -219,6 +219,10 @@ PlatformView::~PlatformView() { delete frozen_; }  // before the table and its m
 
 void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces,
                             std::vector<PipelineRun> pipelines) {
+  set_data(std::move(runs), share_traces(std::move(traces)), std::move(pipelines));
+}
+
+void PlatformView::set_data(std::vector<FlopsRun> runs, SharedTraces traces, std::vector<PipelineRun> pipelines) {
   runs_ = std::move(runs);
   traces_ = std::move(traces);
   pipelines_ = pipeline_timings(pipelines);
@@ -348,12 +352,12 @@ void PlatformView::recompute() {
   ComparisonOptions o = options();
   mission_error_.clear();
   try {
-    rows_ = compare_platforms(runs_, traces_, pipelines_, o);
+    rows_ = compare_platforms(runs_, traces_->traces, pipelines_, o);
   } catch (const std::invalid_argument& e) {
     // A mistyped mission: say why, and show the constant-load numbers meanwhile.
     mission_error_ = QString::fromStdString(e.what());
     o.mission.clear();
-    rows_ = compare_platforms(runs_, traces_, pipelines_, o);
+    rows_ = compare_platforms(runs_, traces_->traces, pipelines_, o);
   }
   verdicts_ = recommend(rows_, constraints());
   fill_table();

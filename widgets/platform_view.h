@@ -6,6 +6,7 @@
 
 #include "analysis/platform/platform_comparison.h"
 #include "model/dnn_run.h"
+#include "shared_traces.h"
 #include "store/battery_preset_store.h"
 
 class QCheckBox;
@@ -33,6 +34,8 @@ class PlatformView : public QWidget {
   explicit PlatformView(QWidget* parent = nullptr);
   ~PlatformView() override;
   // Pipeline runs give the preprocessing and detection columns and, with a power log, energy per frame.
+  // The traces are shared with the other views (widgets/shared_traces.h), never copied.
+  void set_data(std::vector<FlopsRun> runs, SharedTraces traces, std::vector<PipelineRun> pipelines = {});
   void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces, std::vector<PipelineRun> pipelines = {});
   // bench dnn runs: the inference table under the comparison (hidden while there are none).
   void set_inference_runs(std::vector<DnnRun> runs);
@@ -79,7 +82,7 @@ class PlatformView : public QWidget {
   InferenceTable* inference_ = nullptr;
   FrozenFirstColumn* frozen_ = nullptr;  // keeps the platform's name in view while the numbers scroll
   std::vector<FlopsRun> runs_;
-  std::vector<PowerTrace> traces_;
+  SharedTraces traces_ = share_traces(std::vector<PowerTrace>{});
   std::vector<PipelineTimings> pipelines_;
   std::vector<PlatformRow> rows_;
   std::vector<PlatformVerdict> verdicts_;

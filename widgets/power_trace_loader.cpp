@@ -109,7 +109,7 @@ void PowerTraceLoader::start(const std::string& path, std::vector<StoredPowerTra
     cancel_.reset();
     hide();
     if (r.error.isEmpty())
-      emit loaded(r.traces);
+      emit loaded(share_traces(std::move(r.traces)));
     else
       emit failed(r.error);
   });

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "shared_traces.h"
 #include "store/workspace.h"
 
 class QLabel;
@@ -37,8 +38,8 @@ class PowerTraceLoader : public QWidget {
   bool running() const { return static_cast<bool>(cancel_); }
 
  signals:
-  void loaded(const std::vector<bs::StoredPowerTrace>& traces);
-  void failed(const QString& message);  // cancelled by the user, or the file could not be read
+  void loaded(const bs::ui::SharedTraces& traces);  // the samples moved in, not copied
+  void failed(const QString& message);              // cancelled by the user, or the file could not be read
 
  private:
   QLabel* text_;

@@ -29,6 +29,7 @@
 #include "power_cursors.h"
 #include "power_overlay.h"
 #include "power_stats_panel.h"
+#include "power_trace_drag.h"
 #include "store/battery_preset_store.h"
 
 namespace bs::ui {
@@ -71,7 +72,8 @@ PowerView::PowerView(QWidget* parent)
                                      "changes, or save a selection as a phase"),
                                   false, this)),
       overlay_(new PowerOverlayPanel(this)),
-      cursors_(new PowerCursors(plot_)) {
+      cursors_(new PowerCursors(plot_)),
+      trace_drag_(new PowerTraceDrag(plot_)) {
   wall_clock_box_->setToolTip(
       tr("Plot against the time of day the logs were recorded (when every log states its "
          "absolute start) instead of seconds from each log's start"));
@@ -88,14 +90,17 @@ PowerView::PowerView(QWidget* parent)
   connect(quantity_box_, &QComboBox::currentIndexChanged, this,
           [this](int i) { set_quantity(i == 0 ? Quantity::Current : Quantity::Power); });
   auto* hint = new QLabel(tr("Shift + drag: select · drag A/B: move a cursor · keys A/B: cursor at the mouse · "
-                             "Esc: clear · wheel/drag: zoom/pan · double-click: whole log"),
+                             "Esc: clear · Ctrl + drag a trace: shift it · wheel/drag: zoom/pan · double-click: "
+                             "whole log"),
                           this);
   hint->setWordWrap(true);
   hint->setToolTip(
       tr("The View range tab summarises the range in view; the Selection tab the range between the "
          "cursors A and B"));
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-  plot_->setToolTip(tr("Shift + drag to select a range; A / B place the cursors at the mouse; Esc clears"));
+  plot_->setToolTip(
+      tr("Shift + drag to select a range; A / B place the cursors at the mouse; Esc clears; "
+         "Ctrl + drag a trace to shift it in time (Overlay tab: typed offsets, alignment)"));
   plot_->axisRect()->setRangeZoom(Qt::Horizontal);
   plot_->axisRect()->setRangeDrag(Qt::Horizontal);
   plot_->xAxis->setLabel(tr("Time (s)"));
@@ -113,6 +118,11 @@ PowerView::PowerView(QWidget* parent)
       QMessageBox::information(this, tr("Save as phase"), tr("The selection does not overlap any visible trace."));
   });
   connect(overlay_, &PowerOverlayPanel::changed, this, [this] { overlay_changed(); });
+  connect(trace_drag_, &PowerTraceDrag::dragged, this, [this](std::size_t trace, double by_s, bool final) {
+    if (!drag_base_s_) drag_base_s_ = overlay_->offset(trace);  // the offset at the press
+    overlay_->set_offset(trace, *drag_base_s_ + by_s);
+    if (final) drag_base_s_.reset();
+  });
   table_->setColumnCount(8);
   table_->setHorizontalHeaderLabels({tr("Platform"), tr("Samples"), tr("Current (A)"), tr("Power (W)"),
                                      tr("Max power (W)"), tr("Energy (J)"), tr("GFLOPS/W (paper)"),
@@ -197,40 +207,44 @@ double PowerView::offset(std::size_t trace) const {
 
 void PowerView::set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakRow> peaks,
                          std::vector<std::pair<std::string, int>> colors) {
-  traces_ = std::move(traces);
+  set_data(share_traces(std::move(traces)), std::move(peaks), std::move(colors));
+}
+
+void PowerView::set_data(SharedTraces traces, std::vector<PeakRow> peaks,
+                         std::vector<std::pair<std::string, int>> colors) {
+  traces_ = traces ? std::move(traces) : share_traces(std::vector<PowerTrace>{});
   peaks_ = std::move(peaks);
-  power_.clear();
-  current_.clear();
   flags_.clear();
+  trace_phases_.clear();
   index_.clear();
   detected_.clear();
   start_epoch_.clear();
   colors_.clear();
   plot_->clearGraphs();
-  for (const StoredPowerTrace& s : traces_) {
-    flags_.push_back(check_power_trace_bundled(s.trace));
-    power_.push_back(power_series(s.trace));
-    current_.push_back(current_series(s.trace));
-    index_.emplace_back(s.trace);  // once per trace: every selection, phase and view range asks it
+  for (std::size_t i = 0; i < count(); ++i) {
+    const PowerTrace& t = trace(i);
+    flags_.push_back(check_power_trace_bundled(t));
+    trace_phases_.push_back(t.phases);
+    index_.emplace_back(trace_of(traces_, i));  // once per trace, in place: every selection, phase and range asks it
     detected_.emplace_back();
     QCPGraph* g = plot_->addGraph();
     int color = static_cast<int>(plot_->graphCount()) + 7;
     for (const auto& [platform, index] : colors)
-      if (platform == s.trace.platform) color = index;
+      if (platform == t.platform) color = index;
     g->setPen(QPen(device_color(color), 1));
     colors_.push_back(color);
-    start_epoch_.push_back(start_epoch_s(s.trace));
+    start_epoch_.push_back(start_epoch_s(t));
   }
-  const bool all_absolute = !traces_.empty() && std::none_of(start_epoch_.begin(), start_epoch_.end(),
-                                                             [](double e) { return std::isnan(e); });
+  const bool all_absolute =
+      count() > 0 && std::none_of(start_epoch_.begin(), start_epoch_.end(), [](double e) { return std::isnan(e); });
   wall_clock_box_->setEnabled(all_absolute);
   if (!all_absolute && wall_clock_on_) set_wall_clock(false);
   {
     const QSignalBlocker block(overlay_);
     std::vector<QString> names;
     std::vector<std::vector<TracePhase>> phases;
-    for (const StoredPowerTrace& s : traces_) names.push_back(platform_name(s.trace)), phases.push_back(s.trace.phases);
-    overlay_->set_traces(names, std::move(phases));
+    for (std::size_t i = 0; i < count(); ++i) names.push_back(platform_name(trace(i)));
+    overlay_->set_traces(names, trace_phases_);
   }
   const bool detect = detect_box_->isChecked();
   if (detect) set_detected_phases(true);  // recomputed for the new traces
@@ -246,12 +260,12 @@ void PowerView::set_detected_phases(bool on) {
     const QSignalBlocker block(detect_box_);
     detect_box_->setChecked(on);
   }
-  for (std::size_t i = 0; i < traces_.size(); ++i)
+  for (std::size_t i = 0; i < count(); ++i)
     detected_[i] = on ? detect_level_phases(index_[i], PhaseOptions{}) : std::vector<TracePhase>{};
   // Alignment can use detected phases too ("load": the first load step of each trace).
   std::vector<std::vector<TracePhase>> phases;
-  for (std::size_t i = 0; i < traces_.size(); ++i) {
-    phases.push_back(traces_[i].trace.phases);
+  for (std::size_t i = 0; i < count(); ++i) {
+    phases.push_back(trace_phases_[i]);
     phases.back().insert(phases.back().end(), detected_[i].begin(), detected_[i].end());
   }
   overlay_->set_phases(std::move(phases));
@@ -260,7 +274,7 @@ void PowerView::set_detected_phases(bool on) {
 }
 
 void PowerView::overlay_changed() {
-  for (std::size_t i = 0; i < traces_.size() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
+  for (std::size_t i = 0; i < count() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
     plot_->graph(static_cast<int>(i))->setVisible(overlay_->visible(i));
     plot_->graph(static_cast<int>(i))->removeFromLegend();
     if (overlay_->visible(i)) plot_->graph(static_cast<int>(i))->addToLegend();
@@ -274,9 +288,9 @@ void PowerView::overlay_changed() {
 
 void PowerView::place_phase_markers() {
   plot_->clearItems();  // the previous traces' phase markers (and the cursors' items, brought back below)
-  for (std::size_t i = 0; i < traces_.size(); ++i) {
+  for (std::size_t i = 0; i < count(); ++i) {
     if (!overlay_->visible(i)) continue;
-    std::vector<TracePhase> phases = traces_[i].trace.phases;
+    std::vector<TracePhase> phases = trace_phases_[i];
     if (i < detected_.size()) phases.insert(phases.end(), detected_[i].begin(), detected_[i].end());
     for (TracePhase& p : phases) p.start_s += offset(i), p.end_s += offset(i);
     // Marks, runs, saved selections, level changes; up to 60 named (idle and load alternate: naming every second
@@ -290,7 +304,7 @@ bool PowerView::set_wall_clock(bool on) {
   if (on && !wall_clock_box_->isEnabled()) on = false;
   const bool was = wall_clock_on_;
   wall_clock_on_ = on;
-  if (was != on && !traces_.empty()) {  // the cursors keep the same samples: move them with the axis
+  if (was != on && count() > 0) {  // the cursors keep the same samples: move them with the axis
     const QSignalBlocker block(cursors_);
     cursors_->shift(on ? start_epoch_[0] : -start_epoch_[0]);
   }
@@ -313,8 +327,9 @@ bool PowerView::set_wall_clock(bool on) {
   return on;
 }
 
-const std::vector<double>& PowerView::shown(std::size_t trace) const {
-  return quantity_ == Quantity::Current ? current_[trace] : power_[trace];
+const TraceIndex* PowerView::shown(std::size_t trace) const {
+  const TraceIndex* index = quantity_ == Quantity::Current ? index_[trace].current() : index_[trace].power();
+  return index && !index->empty() ? index : nullptr;
 }
 
 void PowerView::set_quantity(Quantity q) {
@@ -323,10 +338,9 @@ void PowerView::set_quantity(Quantity q) {
   const QSignalBlocker block(quantity_box_);
   quantity_box_->setCurrentIndex(current ? 0 : 1);
   plot_->yAxis->setLabel(current ? tr("Current (A)") : tr("Power (W)"));
-  for (std::size_t i = 0; i < traces_.size() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
+  for (std::size_t i = 0; i < count() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
     const QString missing = current ? tr(" (no current channel)") : tr(" (power unknown: no supply voltage)");
-    plot_->graph(static_cast<int>(i))
-        ->setName(platform_name(traces_[i].trace) + (shown(i).empty() ? missing : QString()));
+    plot_->graph(static_cast<int>(i))->setName(platform_name(trace(i)) + (shown(i) ? QString() : missing));
   }
   rescale();
   update_selection(true);
@@ -336,14 +350,14 @@ void PowerView::set_quantity(Quantity q) {
 void PowerView::rescale() {
   // Every log on one time axis from its own start (t = 0 s), so the platforms line up as in the paper's figure 4.
   double min_t = wall_clock_on_ ? std::numeric_limits<double>::infinity() : 0, max_t = 0, max_v = 0;
-  for (std::size_t i = 0; i < traces_.size(); ++i) {
+  for (std::size_t i = 0; i < count(); ++i) {
     if (!overlay_->visible(i)) continue;
-    if (!traces_[i].trace.time_s.empty()) {
-      min_t = std::min(min_t, offset(i) + traces_[i].trace.time_s.front());
-      max_t = std::max(max_t, offset(i) + traces_[i].trace.time_s.back());
+    if (!trace(i).time_s.empty()) {
+      min_t = std::min(min_t, offset(i) + trace(i).time_s.front());
+      max_t = std::max(max_t, offset(i) + trace(i).time_s.back());
     }
-    for (double v : shown(i))
-      if (!std::isnan(v)) max_v = std::max(max_v, v);
+    if (const TraceIndex* v = shown(i))  // O(log n) from the index: no pass over a long log
+      max_v = std::max(max_v, v->summary(v->first_s(), v->last_s()).samples.max);
   }
   if (!std::isfinite(min_t)) min_t = 0;
   if (!wall_clock_on_) min_t = std::min(min_t, 0.0);        // offsets may move a trace before 0 s
@@ -360,16 +374,16 @@ void PowerView::redraw_visible() {
   // Min/max per pixel column of the visible range: a 10-million-sample trace stays a few thousand points.
   const QCPRange range = plot_->xAxis->range();
   const auto columns = static_cast<std::size_t>(std::max(200, plot_->axisRect()->width()));
-  for (std::size_t i = 0; i < traces_.size() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
-    const std::vector<double>& values = shown(i);
+  for (std::size_t i = 0; i < count() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
     QVector<double> keys, vals;
-    if (!values.empty()) {
+    if (const TraceIndex* shown_index = shown(i)) {  // its present samples, read in place; power may be scaled current
       const double off = offset(i);
-      const DecimatedSeries d =
-          decimate_min_max(traces_[i].trace.time_s, values, range.lower - off, range.upper - off, columns);
+      const DecimatedSeries d = decimate_min_max(shown_index->time(), shown_index->unscaled_values(), range.lower - off,
+                                                 range.upper - off, columns);
       keys = QVector<double>(d.t.begin(), d.t.end());
       for (double& k : keys) k += off;
       vals = QVector<double>(d.v.begin(), d.v.end());
+      for (double& v : vals) v *= shown_index->scale();
     }
     plot_->graph(static_cast<int>(i))->setData(keys, vals, true);
   }
@@ -378,9 +392,9 @@ void PowerView::redraw_visible() {
 
 void PowerView::update_table() {
   const QCPRange range = plot_->xAxis->range();
-  table_->setRowCount(static_cast<int>(traces_.size()));
-  for (std::size_t i = 0; i < traces_.size(); ++i) {
-    const PowerTrace& t = traces_[i].trace;
+  table_->setRowCount(static_cast<int>(count()));
+  for (std::size_t i = 0; i < count(); ++i) {
+    const PowerTrace& t = trace(i);
     const PowerStats ps = index_[i].stats(range.lower - offset(i), range.upper - offset(i), false);
     std::optional<Summary> current_a, power_w;
     if (ps.current_a) current_a = ps.current_a->summary;
@@ -436,7 +450,7 @@ void PowerView::update_selection(bool final) {
   for (std::string& h : range_headers(signal)) headers.push_back(std::move(h));
   std::vector<std::vector<std::string>> rows;
   std::vector<QString> tips;
-  for (std::size_t i = 0; i < traces_.size(); ++i) {
+  for (std::size_t i = 0; i < count(); ++i) {
     if (!overlay_->visible(i)) continue;
     const double from = cursors_->from() - offset(i), to = cursors_->to() - offset(i);
     // Percentiles are exact: live for short ranges, at the end of a drag for long ones (they cost O(samples)).
@@ -445,11 +459,11 @@ void PowerView::update_selection(bool final) {
     const bool with_pct = final || last - first <= kLivePercentileSamples;
     const PowerStats s = index_[i].stats(from, to, with_pct);
     selection_stats_.emplace_back(i, s);
-    std::vector<std::string> row = {platform_name(traces_[i].trace).toStdString()};
+    std::vector<std::string> row = {platform_name(trace(i)).toStdString()};
     for (std::string& c : range_cells(s, signal)) row.push_back(std::move(c));
     rows.push_back(std::move(row));
     tips.push_back(tr("%1: %2 .. %3 s of its own time; %4")
-                       .arg(platform_name(traces_[i].trace))
+                       .arg(platform_name(trace(i)))
                        .arg(s.from_s, 0, 'f', 3)
                        .arg(s.to_s, 0, 'f', 3)
                        .arg(QString::fromUtf8(to_string(s.power_source).data())));
@@ -476,17 +490,17 @@ void PowerView::update_phase_table() {
   };
   std::vector<Row> rows;
   std::vector<std::pair<std::string, int>> groups;
-  for (std::size_t i = 0; i < traces_.size(); ++i) {
+  for (std::size_t i = 0; i < count(); ++i) {
     if (!overlay_->visible(i)) continue;
     std::map<std::string, int> seen;
-    for (const PhaseStatsRow& p : phase_stats_rows(index_[i], traces_[i].trace.phases, detected_[i])) {
+    for (const PhaseStatsRow& p : phase_stats_rows(index_[i], trace_phases_[i], detected_[i])) {
       const std::pair<std::string, int> key{p.name, seen[p.name]++};
       auto it = std::find(groups.begin(), groups.end(), key);
       if (it == groups.end()) it = groups.insert(groups.end(), key);
       char from[32], to[32];
       std::snprintf(from, sizeof from, "%.3f", p.start_s);
       std::snprintf(to, sizeof to, "%.3f", p.end_s);
-      std::vector<std::string> cells = {p.name, platform_name(traces_[i].trace).toStdString(), p.origin, from, to};
+      std::vector<std::string> cells = {p.name, platform_name(trace(i)).toStdString(), p.origin, from, to};
       for (std::string& c : range_cells(p.stats, signal)) cells.push_back(std::move(c));
       rows.push_back({static_cast<std::size_t>(it - groups.begin()), std::move(cells)});
     }
@@ -507,23 +521,24 @@ void PowerView::update_phase_table() {
 int PowerView::save_selection_as_phase(const QString& name) {
   if (!cursors_->has_selection() || name.trimmed().isEmpty()) return 0;
   int saved = 0;
-  for (std::size_t i = 0; i < traces_.size(); ++i) {
+  for (std::size_t i = 0; i < count(); ++i) {
     if (!overlay_->visible(i) || !index_[i].main()) continue;
     const TraceIndex& main = *index_[i].main();
     const double from = std::max(cursors_->from() - offset(i), main.first_s());
     const double to = std::min(cursors_->to() - offset(i), main.last_s());
     if (!(to > from)) continue;
     const TracePhase phase{name.trimmed().toStdString(), from, to};
-    if (workspace_ && traces_[i].id > 0) {
+    const std::int64_t id = traces_->ids[i];
+    if (workspace_ && id > 0) {
       try {
-        workspace_->add_trace_phase(traces_[i].id, phase);
+        workspace_->add_trace_phase(id, phase);
       } catch (const std::exception& e) {
         QMessageBox::warning(this, tr("Save as phase"),
                              tr("The phase could not be saved in the workspace: %1").arg(QString::fromUtf8(e.what())));
         return saved;
       }
     }
-    auto& phases = traces_[i].trace.phases;
+    auto& phases = trace_phases_[i];
     phases.insert(std::upper_bound(phases.begin(), phases.end(), phase,
                                    [](const TracePhase& a, const TracePhase& b) { return a.start_s < b.start_s; }),
                   phase);

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <QWidget>
+#include <optional>
 #include <vector>
 
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/plausibility.h"
 #include "analysis/power/power_stats.h"
+#include "shared_traces.h"
 #include "store/workspace.h"
 
 class QCheckBox;
@@ -20,6 +22,7 @@ namespace bs::ui {
 class PowerCursors;
 class PowerOverlayPanel;
 class PowerStatsPanel;
+class PowerTraceDrag;
 
 // Supply current (A, the paper's figure 4) or power (W) against time for the workspace's current/power logs, all
 // on one time axis (each log from its own start, shifted by its overlay offset), with
@@ -28,7 +31,8 @@ class PowerStatsPanel;
 //   exact percentiles when the drag ends), copied as a table or saved as a named phase in the workspace;
 // - phases shaded and named (the log's own: PTDaemon marks, BenchScope's runs, saved selections; and, on
 //   request, level changes) with a per-phase statistics table, the one `benchscope-cli power --phases` prints;
-// - an overlay panel: traces shown or hidden and shifted by typed offsets or aligned at a shared phase;
+// - an overlay panel: traces shown or hidden and shifted by typed offsets, by Ctrl + drag on the plot
+//   (PowerTraceDrag) or aligned at a shared phase;
 // - the range in view (zoom or pan to choose it): mean ± SD current and power, max, energy, GFLOPS/W as the paper
 //   defines it and battery life with the Battery tab's current pack.
 // Long traces are drawn as min/max per pixel column of the visible range (analysis/decimate.h).
@@ -37,12 +41,15 @@ class PowerView : public QWidget {
  public:
   explicit PowerView(QWidget* parent = nullptr);
   // `peaks` supplies each platform's best FLOPS for GFLOPS/W; `colors` maps platform -> colour index.
+  // The traces are shared with the other views and read in place (widgets/shared_traces.h): a 100-million-sample
+  // log is not copied. Phases saved from the selection are kept here (and in the workspace), not in the set.
+  void set_data(SharedTraces traces, std::vector<PeakRow> peaks, std::vector<std::pair<std::string, int>> colors);
   void set_data(std::vector<StoredPowerTrace> traces, std::vector<PeakRow> peaks,
                 std::vector<std::pair<std::string, int>> colors);
   // Where selections are saved as phases and the battery pack comes from (the Battery tab's current setup,
   // workspace setting "battery-tab/current", else the first built-in preset). May be null.
   void set_workspace(Workspace* workspace);
-  int trace_count() const { return static_cast<int>(traces_.size()); }
+  int trace_count() const { return static_cast<int>(count()); }
   QTableWidget* table() const { return table_; }
   QCustomPlot* plot() const { return plot_; }
   PowerCursors* cursors() const { return cursors_; }
@@ -81,7 +88,10 @@ class PowerView : public QWidget {
   void read_battery();
   void overlay_changed();
   double offset(std::size_t trace) const;
-  const std::vector<double>& shown(std::size_t trace) const;
+  std::size_t count() const { return traces_->traces.size(); }
+  const PowerTrace& trace(std::size_t i) const { return traces_->traces[i]; }
+  // The quantity shown (current or power) of trace i as its range index; nullptr when the trace has none.
+  const TraceIndex* shown(std::size_t trace) const;
   QComboBox* quantity_box_;
   QCheckBox* wall_clock_box_;
   QCheckBox* detect_box_;
@@ -97,12 +107,13 @@ class PowerView : public QWidget {
   PowerStatsPanel* phases_;
   PowerOverlayPanel* overlay_;
   PowerCursors* cursors_;
+  PowerTraceDrag* trace_drag_;
+  std::optional<double> drag_base_s_;  // the dragged trace's overlay offset when the drag began
   Workspace* workspace_ = nullptr;
-  std::vector<StoredPowerTrace> traces_;
-  std::vector<PowerIndex> index_;                  // per trace: the range statistics, built once
-  std::vector<std::vector<TracePhase>> detected_;  // per trace: level-change phases (filled when shown)
-  std::vector<std::vector<double>> power_;         // W per sample, per trace (empty: unknown)
-  std::vector<std::vector<double>> current_;       // A per sample, per trace (empty: no current channel)
+  SharedTraces traces_ = share_traces(std::vector<PowerTrace>{});
+  std::vector<std::vector<TracePhase>> trace_phases_;  // per trace: the log's phases and the selections saved since
+  std::vector<PowerIndex> index_;                      // per trace: the range statistics, built once, reading in place
+  std::vector<std::vector<TracePhase>> detected_;      // per trace: level-change phases (filled when shown)
   std::vector<std::pair<std::size_t, PowerStats>> selection_stats_;
   Quantity quantity_ = Quantity::Current;
   std::vector<PeakRow> peaks_;

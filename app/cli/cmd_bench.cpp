@@ -2,12 +2,14 @@
 // benchscope-cli bench kernels: figures and ratios measured in one process (a benchmark, not a test).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <iostream>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include "analysis/peaks/flops.h"
 #include "analysis/power/decimate.h"
@@ -87,6 +89,17 @@ void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, con
                 "  without: %.2f GFLOPS (median), with: %.2f GFLOPS; with / without = %.4f (%.2f %% cost)\n",
                 b.label.c_str(), static_cast<long long>(workers), runs, runs, a, p, p / a, 100.0 * (1.0 - p / a));
   out << line << "  " << chosen.str();
+  // The direct measure: what the sampling thread itself used, independent of how noisy the ratio above is.
+  if (std::isfinite(rec->sampler_cpu_s()) && rec->recorded_s() > 0) {
+    const double share = rec->sampler_cpu_s() / rec->recorded_s();
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::snprintf(line, sizeof line,
+                  "  sampler thread: %.3f ms CPU in %.3f s of recording, %zu samples = %.4f %% of one core, %.4f %% "
+                  "of this machine's %u hardware threads\n",
+                  rec->sampler_cpu_s() * 1e3, rec->recorded_s(), trace.time_s.size(), 100.0 * share,
+                  100.0 * share / threads, threads);
+    out << line;
+  }
   const auto energies = phase_energies(trace);
   double joules = 0, watts = 0;
   for (const PhaseEnergy& e : energies) joules += e.energy_j, watts += e.mean_power_w;

@@ -277,11 +277,11 @@ void MainWindow::reload() {
       workspace_ ? workspace_->power_trace_summaries() : std::vector<StoredPowerTrace>{};
   if (workspace_ && PowerTraceLoader::sample_count(traces) > PowerTraceLoader::kBackgroundSamples) {
     trace_loader_->start(workspace_->path(), std::move(traces));
-    show_traces({});
+    show_traces(share_traces(std::vector<PowerTrace>{}));
   } else {
     trace_loader_->abandon();
     if (workspace_) PowerTraceLoader::load_now(*workspace_, traces);
-    show_traces(traces);
+    show_traces(share_traces(std::move(traces)));
   }
   std::vector<DnnRun> inference_runs;
   if (workspace_)
@@ -310,7 +310,7 @@ std::vector<PipelineRun> MainWindow::pipeline_runs() const {
   return pipelines;
 }
 
-void MainWindow::show_traces(const std::vector<StoredPowerTrace>& traces) {
+void MainWindow::show_traces(const SharedTraces& traces) {
   std::vector<FlopsRun> all;
   std::vector<std::pair<std::string, int>> platform_colors;
   for (const StoredRun& r : runs_) {
@@ -318,16 +318,15 @@ void MainWindow::show_traces(const std::vector<StoredPowerTrace>& traces) {
     platform_colors.emplace_back(r.run.platform, r.color_index);
   }
   std::vector<std::string> trace_platforms;
-  for (const auto& t : traces) trace_platforms.push_back(t.trace.platform);
+  for (const PowerTrace& t : traces->traces) trace_platforms.push_back(t.platform);
   platform_colors = platform_color_indices(platform_colors, std::move(trace_platforms));  // one per platform
-  std::vector<PowerTrace> plain_traces;
-  for (const auto& t : traces) plain_traces.push_back(t.trace);
+  // One set of samples for every view (a 100-million-sample log is 1.6 GB): shared, never copied.
   power_->set_data(traces, bs::peak_table(all), platform_colors);
-  efficiency_->set_data(all, plain_traces);
-  battery_->set_data(plain_traces, platform_colors);
+  efficiency_->set_data(all, traces->traces);
+  battery_->set_data(traces, platform_colors);
   std::vector<PipelineRun> pipelines = pipeline_runs();
   pipeline_->set_data(pipelines);
-  platforms_->set_data(std::move(all), std::move(plain_traces), std::move(pipelines));
+  platforms_->set_data(std::move(all), traces, std::move(pipelines));
 }
 
 void MainWindow::show_source(const PlatformRow& row, const QString& column) {

@@ -12,6 +12,7 @@ class QUndoStack;
 #include "analysis/platform/platform_comparison.h"
 #include "frame_raw.h"
 #include "paper_figures.h"
+#include "shared_traces.h"
 #include "store/workspace.h"
 #include "workspace_tree.h"
 
@@ -99,7 +100,7 @@ class MainWindow : public QMainWindow {
   void push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo);
   void report_edit_error(const QString& message);
   void update_edit_actions();
-  void show_traces(const std::vector<StoredPowerTrace>& traces);  // the views that draw or use power logs
+  void show_traces(const SharedTraces& traces);  // the views that draw or use power logs
   std::vector<PipelineRun> pipeline_runs() const;
   void refresh_views();
   void show_import_report(const ImportReport& report);

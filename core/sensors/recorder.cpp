@@ -59,8 +59,25 @@ void PowerRecorder::sample() {
   }
 }
 
+namespace {
+
+// CPU seconds the calling thread has used (POSIX per-thread clock); NaN without one.
+double thread_cpu_s() {
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+  timespec ts{};
+  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) == 0) return static_cast<double>(ts.tv_sec) + ts.tv_nsec * 1e-9;
+#endif
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 void PowerRecorder::loop() {
   std::unique_lock lock(mutex_);
+  struct CpuAtExit {  // every way out of the loop records what the thread used
+    double& into;
+    ~CpuAtExit() { into = thread_cpu_s(); }
+  } cpu_at_exit{sampler_cpu_s_};
   auto next = t0_ + interval_;
   while (!stop_) {
     // Deadlines on a fixed grid, so a slow read does not shift every later sample.
@@ -108,6 +125,7 @@ PowerTrace PowerRecorder::finish(const std::string& label) {
   if (thread_.joinable()) thread_.join();
   std::lock_guard lock(mutex_);
   if (started_ && !finished_) sample();  // the end of the last interval
+  if (started_ && !finished_) recorded_s_ = now_s();
   finished_ = true;
   PowerTrace trace;
   trace.platform = host_name();
@@ -143,6 +161,12 @@ PowerTrace PowerRecorder::finish(const std::string& label) {
   std::snprintf(interval, sizeof interval, "%g ms", static_cast<double>(interval_.count()) / 1000.0);
   p.settings.emplace_back("sample interval", interval);
   if (!selection_.note.empty()) p.settings.emplace_back("sensor choice", selection_.note);
+  if (std::isfinite(sampler_cpu_s_) && recorded_s_ > 0) {
+    char cost[96];
+    std::snprintf(cost, sizeof cost, "%.3f ms CPU in %.3f s (%.4f %% of one core)", sampler_cpu_s_ * 1e3, recorded_s_,
+                  100.0 * sampler_cpu_s_ / recorded_s_);
+    p.settings.emplace_back("sampler cost", cost);
+  }
   return trace;
 }
 

@@ -8,6 +8,7 @@
 // costs the benchmark next to nothing: `bench kernels` measures how much.
 #include <chrono>
 #include <condition_variable>
+#include <limits>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -32,6 +33,11 @@ class PowerRecorder {
   void end_phase();
   void add_phase(const std::string& name, double start_s, double end_s);
   std::size_t samples() const;
+  // CPU time the sampling thread used (reads, bookkeeping, wake-ups), known after finish(): the direct measure of
+  // what recording costs a benchmark, immune to the noise of a shared machine that a with/without ratio suffers.
+  // NaN where the platform has no per-thread CPU clock.
+  double sampler_cpu_s() const { return sampler_cpu_s_; }
+  double recorded_s() const { return recorded_s_; }  // wall time from start() to finish()
   // Stops the thread after one last sample and builds the trace (platform = this host, label, provenance:
   // measured, on-board sensor, the total sensor's id and the selection note in the settings).
   PowerTrace finish(const std::string& label);
@@ -55,6 +61,8 @@ class PowerRecorder {
   std::string open_phase_;
   double open_start_ = 0;
   bool phase_open_ = false;
+  double sampler_cpu_s_ = std::numeric_limits<double>::quiet_NaN();  // written by the thread as it ends
+  double recorded_s_ = 0;
 };
 
 // Raw readings of one energy counter (cumulative J, NaN where a read failed) at `time_s` -> watts: the mean

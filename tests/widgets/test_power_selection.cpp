@@ -304,6 +304,48 @@ class TestPowerSelection : public QObject {
     QCOMPARE(view.selection_panel()->table()->rowCount(), 1);
   }
 
+  void ctrl_drag_shifts_one_trace_in_time() {
+    // Two flat logs, 5 W and 10 W: Ctrl + drag on the 10 W line shifts that trace by the distance dragged.
+    bs::PowerTrace low, high;
+    low.platform = "low";
+    high.platform = "high";
+    for (int k = 0; k <= 100; ++k) low.time_s.push_back(k), high.time_s.push_back(k);
+    low.channels.push_back({"P", bs::PowerQuantity::Power, std::vector<double>(101, 5.0)});
+    high.channels.push_back({"P", bs::PowerQuantity::Power, std::vector<double>(101, 10.0)});
+    bs::ui::PowerView view;
+    view.resize(1200, 800);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.set_data(stored({low, high}), {}, {});
+    view.set_quantity(bs::ui::PowerView::Quantity::Power);
+    QCustomPlot* plot = view.plot();
+    plot->replot();
+    const QCPRange before = plot->xAxis->range();
+    const QPoint p1(static_cast<int>(plot->xAxis->coordToPixel(40)), static_cast<int>(plot->yAxis->coordToPixel(10)));
+    const QPoint p2 = p1 + QPoint(200, 30);  // the vertical part of the drag is ignored
+    QTest::mousePress(plot, Qt::LeftButton, Qt::ControlModifier, p1);
+    QTest::mouseMove(plot, p2);
+    QTest::mouseRelease(plot, Qt::LeftButton, Qt::ControlModifier, p2);
+    const double expected = plot->xAxis->pixelToCoord(p2.x()) - plot->xAxis->pixelToCoord(p1.x());
+    QVERIFY(expected > 5);
+    QVERIFY2(std::abs(view.overlay()->offset(1) - expected) < 1e-9,
+             qPrintable(QString::number(view.overlay()->offset(1))));
+    QCOMPARE(view.overlay()->offset(0), 0.0);
+    QCOMPARE(plot->xAxis->range(), before);  // no pan while a trace moves
+    // The moved trace's statistics follow: the selection 0 .. 10 s now lies before its first sample.
+    view.cursors()->set(0.0, 10.0);
+    QCOMPARE(view.selection_stats().size(), std::size_t{2});
+    QCOMPARE(view.selection_stats()[0].second.duration_s, 10.0);
+    QCOMPARE(view.selection_stats()[1].second.power_w.has_value(), false);
+    // A second drag continues from the new offset; a Ctrl + press away from every line moves nothing.
+    QTest::mousePress(plot, Qt::LeftButton, Qt::ControlModifier,
+                      QPoint(p1.x(), static_cast<int>(plot->yAxis->coordToPixel(7.5))));
+    QTest::mouseRelease(plot, Qt::LeftButton, Qt::ControlModifier,
+                        QPoint(p1.x(), static_cast<int>(plot->yAxis->coordToPixel(7.5))));
+    QVERIFY(std::abs(view.overlay()->offset(1) - expected) < 1e-9);
+    QCOMPARE(view.overlay()->offset(0), 0.0);
+  }
+
   void screenshots_of_the_paper_platforms() {
     if (qEnvironmentVariable("BENCHSCOPE_SCREENSHOT_DIR").isEmpty()) QSKIP("BENCHSCOPE_SCREENSHOT_DIR not set");
     std::vector<bs::FlopsRun> runs;

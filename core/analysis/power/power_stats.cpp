@@ -88,14 +88,26 @@ double integrate_range(std::span<const double> t, std::span<const double> v, dou
   return TraceIndex(t.first(n), v.first(n)).integral(from_s, to_s);
 }
 
-PowerIndex::PowerIndex(const PowerTrace& trace, std::optional<double> supply_v) {
+PowerIndex::PowerIndex(const PowerTrace& trace, std::optional<double> supply_v) { build(trace, supply_v, nullptr); }
+
+PowerIndex::PowerIndex(std::shared_ptr<const PowerTrace> trace, std::optional<double> supply_v) {
+  if (!trace) throw std::invalid_argument("power index: no trace");
+  const PowerTrace& t = *trace;
+  build(t, supply_v, std::move(trace));
+}
+
+void PowerIndex::build(const PowerTrace& trace, std::optional<double> supply_v, std::shared_ptr<const void> owner) {
+  // With an owner the samples are read in place (TraceIndex's borrowing constructor), else copied.
+  const auto index_of = [&](std::span<const double> values) {
+    return owner ? TraceIndex(trace.time_s, values, owner) : TraceIndex(trace.time_s, values);
+  };
   const PowerChannel* main_current = first_channel(trace, PowerQuantity::Current);
   const PowerChannel* main_power = first_channel(trace, PowerQuantity::Power);
   for (const PowerChannel& c : trace.channels) {
     if (c.values.size() != trace.time_s.size()) continue;
     if (&c == main_current) current_ = static_cast<int>(channels_.size());
     if (&c == main_power) power_ = static_cast<int>(channels_.size());
-    channels_.push_back({c.name, c.quantity, TraceIndex(trace.time_s, c.values)});
+    channels_.push_back({c.name, c.quantity, index_of(c.values)});
   }
   if (main_power) {
     source_ = PowerSource::Channel;
@@ -103,7 +115,17 @@ PowerIndex::PowerIndex(const PowerTrace& trace, std::optional<double> supply_v) 
     note_missing_rows(trace);
     return;
   }
-  PowerSeries p = derive_power(trace, supply_v);  // current x voltage or x supply: its own index
+  if (supply_v && !(*supply_v > 0)) throw std::invalid_argument("the supply voltage must be > 0 V");
+  const std::optional<double> volts = supply_v ? supply_v : trace.supply_voltage_v;
+  if (main_current && !first_channel(trace, PowerQuantity::Voltage) && volts && *volts > 0 && std::isfinite(*volts)) {
+    // Current x a constant supply voltage: the current's own index, scaled (no second copy of a long log).
+    source_ = PowerSource::CurrentTimesSupply;
+    supply_v_ = volts;
+    derived_power_ = channels_[static_cast<std::size_t>(current_)].index.scaled(*volts);
+    note_missing_rows(trace);
+    return;
+  }
+  PowerSeries p = derive_power(trace, supply_v);  // current x voltage channel: its own index
   source_ = p.source;
   supply_v_ = p.supply_v;
   if (!p.values.empty()) derived_power_ = TraceIndex(trace.time_s, p.values);
@@ -188,7 +210,9 @@ PowerStats PowerIndex::stats(std::optional<double> from, std::optional<double> t
 PowerStats power_stats(const PowerTrace& trace, const PowerStatsOptions& options) {
   if (options.from_s && options.to_s && *options.to_s < *options.from_s)
     throw std::invalid_argument("the range ends before it starts");
-  return PowerIndex(trace, options.supply_v).stats(options.from_s, options.to_s);
+  // Asked once and dropped: the index reads the trace in place (an owner that owns nothing; `trace` outlives it).
+  const std::shared_ptr<const PowerTrace> in_place(std::shared_ptr<const PowerTrace>{}, &trace);
+  return PowerIndex(in_place, options.supply_v).stats(options.from_s, options.to_s);
 }
 
 }  // namespace bs

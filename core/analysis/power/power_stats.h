@@ -6,6 +6,7 @@
 // channel, else current x supply voltage (the paper: 16 V); which one was used is reported, so a derived number
 // never passes for a measured one. Missing samples (NaN) are skipped by every statistic: n counts present samples,
 // and a signal with none present is reported as unknown, never as 0.
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -68,8 +69,12 @@ struct PowerStats {
 class PowerIndex {
  public:
   PowerIndex() = default;
-  // Throws std::invalid_argument for a supply voltage <= 0.
+  // Copies the samples it needs. Throws std::invalid_argument for a supply voltage <= 0.
   explicit PowerIndex(const PowerTrace& trace, std::optional<double> supply_v = std::nullopt);
+  // Reads the trace's samples in place and keeps `trace` alive (copies only channels with missing samples):
+  // what a view holding a 100-million-sample log uses, so the log is not duplicated. Power as current x a
+  // constant supply voltage shares the current's index in either form.
+  explicit PowerIndex(std::shared_ptr<const PowerTrace> trace, std::optional<double> supply_v = std::nullopt);
   // Throws std::invalid_argument when to_s < from_s. `with_percentiles` false skips the one O(m) part (the
   // percentiles of current, power and channels), for live updates over long ranges.
   PowerStats stats(std::optional<double> from_s = std::nullopt, std::optional<double> to_s = std::nullopt,
@@ -83,6 +88,7 @@ class PowerIndex {
   PowerSource power_source() const { return source_; }
 
  private:
+  void build(const PowerTrace& trace, std::optional<double> supply_v, std::shared_ptr<const void> owner);
   void note_missing_rows(const PowerTrace& trace);
   struct Channel {
     std::string name;

@@ -76,7 +76,10 @@ std::vector<PhaseStatsRow> phase_stats_rows(const PowerIndex& index, const std::
 std::vector<TracePhase> detect_level_phases(const PowerIndex& index, const PhaseOptions& options) {
   const TraceIndex* signal = index.main();
   if (!signal) return {};
-  return to_trace_phases(detect_phases(signal->time(), signal->values(), options));
+  // The phases of k x v are those of v with the step scaled by 1/k (power as current x supply is a scaled index).
+  PhaseOptions unscaled = options;
+  if (unscaled.min_step) *unscaled.min_step /= signal->scale();
+  return to_trace_phases(detect_phases(signal->time(), signal->unscaled_values(), unscaled));
 }
 
 }  // namespace bs

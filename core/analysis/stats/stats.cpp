@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/stats/stats.h"
+#include "analysis/stats/order_stats.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,12 +33,8 @@ Summary summarize(std::span<const double> values) noexcept {
 
 double percentile(std::vector<double> values, double q) {
   values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }), values.end());
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const double pos = std::clamp(q, 0.0, 100.0) / 100.0 * static_cast<double>(values.size() - 1);
-  const auto lo = static_cast<std::size_t>(pos);
-  const std::size_t hi = std::min(lo + 1, values.size() - 1);
-  return values[lo] + (values[hi] - values[lo]) * (pos - static_cast<double>(lo));
+  const double qs[] = {q};
+  return select_percentiles(values, qs).front();  // the one implementation (order_stats.h): selection, no sort
 }
 
 double median(std::vector<double> values) { return percentile(std::move(values), 50); }

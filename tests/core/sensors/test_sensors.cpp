@@ -108,6 +108,15 @@ class TestSensors : public QObject {
     for (std::size_t i = 1; i < p.size(); ++i) joules += p[i] * (trace.time_s[i] - trace.time_s[i - 1]);
     QCOMPARE(std::round(joules * 1e6), static_cast<double>(steps.load() * step));
     for (double w : p) QVERIFY(std::isfinite(w) && w >= 0 && w < 100);  // no wrap ever shows as a spike
+    // What the sampling thread cost, measured on its own CPU clock: some, and less than the time it ran (it sleeps
+    // between samples). The figure travels with the trace's provenance.
+    QVERIFY(std::isfinite(rec.sampler_cpu_s()) && rec.sampler_cpu_s() > 0);
+    QVERIFY(rec.recorded_s() > 0.1);
+    QVERIFY2(rec.sampler_cpu_s() < 0.5 * rec.recorded_s(), qPrintable(QString::number(rec.sampler_cpu_s())));
+    bool noted = false;
+    for (const auto& [key, value] : trace.provenance.settings)
+      noted = noted || (key == "sampler cost" && value.find("% of one core") != std::string::npos);
+    QVERIFY(noted);
   }
 
   void power_from_energy_by_hand() {

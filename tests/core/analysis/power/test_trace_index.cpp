@@ -4,6 +4,7 @@
 // sparse table cannot drift from the definition.
 #include <QTest>
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include "analysis/power/power.h"
@@ -142,6 +143,83 @@ class TestTraceIndex : public QObject {
     QCOMPARE(head[11], std::string("charge (mAh)"));
     QVERIFY(near(std::stod(row[11]), charge / 3.6, 1e-4));
     QCOMPARE(bs::to_tsv({"a", "b (W)"}, {{"1", "2"}}), std::string("a\tb (W)\n1\t2\n"));
+  }
+
+  void in_place_and_scaled_indexes_answer_as_copies_do() {
+    // Issue #19 "Scale": a view reads a long log in place (no copy) and power = current x supply is the current's
+    // index scaled; both must give the numbers a copied index of the same values gives.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.5, 3.0);
+    auto samples = std::make_shared<std::vector<std::vector<double>>>(2);
+    std::vector<double>&t = (*samples)[0], &amps = (*samples)[1];
+    for (int k = 0; k < 5000; ++k) t.push_back(k * 0.01 + (k % 7) * 1e-4), amps.push_back(u(rng));
+    const bs::TraceIndex copied(t, amps);
+    const bs::TraceIndex in_place(t, amps, samples);
+    QCOMPARE(in_place.time().data(), t.data());  // read in place, not copied
+    QVERIFY(copied.time().data() != t.data());
+    const double volts = 15.2;
+    std::vector<double> watts;
+    for (double a : amps) watts.push_back(a * volts);
+    const bs::TraceIndex product(t, watts);
+    const bs::TraceIndex scaled = in_place.scaled(volts);
+    QCOMPARE(scaled.time().data(), t.data());  // shares the samples
+    QCOMPARE(scaled.scale(), volts);
+    for (auto [from, to] : {std::pair{0.0, 50.0}, std::pair{1.234, 1.2345}, std::pair{3.005, 41.777}}) {
+      const bs::RangeSummary a = copied.summary(from, to), b = in_place.summary(from, to);
+      QCOMPARE(b.samples.n, a.samples.n);
+      QCOMPARE(b.samples.mean, a.samples.mean);
+      QCOMPARE(b.integral, a.integral);
+      QCOMPARE(b.samples.max, a.samples.max);
+      const bs::RangeSummary p = product.summary(from, to), s = scaled.summary(from, to);
+      QCOMPARE(s.samples.n, p.samples.n);
+      QVERIFY(near(s.samples.mean, p.samples.mean, 1e-13));
+      QVERIFY(near(s.samples.sd, p.samples.sd, 1e-12));
+      QVERIFY(near(s.samples.min, p.samples.min, 1e-15));
+      QVERIFY(near(s.samples.max, p.samples.max, 1e-15));
+      QVERIFY(near(s.integral, p.integral, 1e-13));
+      QVERIFY(near(scaled.percentiles(from, to).p95, product.percentiles(from, to).p95, 1e-15));
+      QVERIFY(near(scaled.value_at(from), product.value_at(from), 1e-15));
+    }
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, in_place.scaled(0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, in_place.scaled(-2));
+    // The owner keeps the samples alive after everyone else let go of them.
+    const std::vector<double>* held = &t;
+    samples.reset();
+    QCOMPARE(in_place.time().data(), held->data());
+    QCOMPARE(in_place.summary(0, 50).samples.n, std::size_t{5000});
+    // With a missing sample the index copies the present ones (so it never reads NaN in place).
+    auto gappy = std::make_shared<std::vector<double>>(std::vector<double>{1, std::nan(""), 3});
+    const std::vector<double> tt = {0, 1, 2};
+    const bs::TraceIndex g(tt, *gappy, gappy);
+    QCOMPARE(g.size(), std::size_t{2});
+    QVERIFY(g.unscaled_values().data() != gappy->data());
+    QCOMPARE(g.integral(0, 2), 4.0);
+  }
+
+  void power_index_in_place_matches_the_copying_one() {
+    auto trace = std::make_shared<bs::PowerTrace>();
+    for (int k = 0; k <= 2000; ++k) trace->time_s.push_back(k * 0.001);
+    std::vector<double> amps;
+    for (double x : trace->time_s) amps.push_back(1 + std::sin(7 * x));
+    trace->channels.push_back({"I", bs::PowerQuantity::Current, amps});
+    trace->supply_voltage_v = 16;
+    const bs::PowerIndex copying(*trace), in_place{std::shared_ptr<const bs::PowerTrace>(trace)};
+    QCOMPARE(in_place.power_source(), bs::PowerSource::CurrentTimesSupply);
+    QCOMPARE(in_place.power()->time().data(), trace->time_s.data());  // neither current nor power copied
+    const bs::PowerStats a = copying.stats(0.1234, 1.777), b = in_place.stats(0.1234, 1.777);
+    QCOMPARE(b.n, a.n);
+    QCOMPARE(*b.energy_j, *a.energy_j);
+    QCOMPARE(*b.charge_c, *a.charge_c);
+    QCOMPARE(b.power_w->summary.mean, a.power_w->summary.mean);
+    QCOMPARE(b.power_w->pct.p50, a.power_w->pct.p50);
+    // And both equal current x 16 V computed per sample (power_stats of a trace with a power channel).
+    bs::PowerTrace as_power = *trace;
+    std::vector<double> watts;
+    for (double a_i : amps) watts.push_back(16 * a_i);
+    as_power.channels = {{"P", bs::PowerQuantity::Power, watts}};
+    const bs::PowerStats w = bs::power_stats(as_power, {.from_s = 0.1234, .to_s = 1.777});
+    QVERIFY(near(*w.energy_j, *b.energy_j, 1e-13));
+    QVERIFY(near(w.power_w->summary.sd, b.power_w->summary.sd, 1e-12));
   }
 };
 
