@@ -58,6 +58,15 @@ int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
       e["kind"] = std::string(to_string(s.kind));
       e["aliases"] = s.aliases;
       e["note"] = s.note;
+      e["more_urls"] = s.source_more_urls;
+      nlohmann::json terms = nlohmann::json::array();
+      for (const PeakTerm& t : s.peak_terms)
+        terms.push_back({{"units", t.units},
+                         {"unit", t.unit},
+                         {"flop_per_unit_per_cycle", t.flop_per_unit_per_cycle},
+                         {"clock_ghz", t.clock_ghz}});
+      e["peak_terms"] = terms;
+      e["peak_exempt"] = s.peak_exempt;
       list.push_back(std::move(e));
     }
     out << nlohmann::json{{"format", "benchscope-device-specs"},
@@ -68,13 +77,24 @@ int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
         << '\n';
     return 0;
   }
-  out << "device table " << table.path << " (" << table.devices.size() << " devices)\n";
+  out << "device table " << table.path << " (" << table.devices.size()
+      << " devices; a value ending in '?' was not confirmed by the entry's sources)\n";
   for (const DeviceSpec& s : table.devices) {
+    const auto mark = [&](bool unverified) { return unverified ? "?" : ""; };
     out << s.id << " (" << to_string(s.kind) << "): " << s.name << "\n    FP32 peak "
-        << format_si(s.fp32_peak_flops, "FLOPS") << " = " << s.derivation;
-    if (s.memory_bandwidth_bytes_per_s) out << "; memory " << format_si(*s.memory_bandwidth_bytes_per_s, "B/s");
-    if (s.tdp_w) out << "; TDP " << format_si(*s.tdp_w, "W");
+        << format_si(s.fp32_peak_flops, "FLOPS") << mark(s.peak_unverified()) << " = " << s.derivation;
+    if (s.memory_bandwidth_bytes_per_s)
+      out << "; memory " << format_si(*s.memory_bandwidth_bytes_per_s, "B/s")
+          << mark(s.is_unverified("memory_bandwidth_bytes_per_s"));
+    if (s.tdp_w) out << "; TDP " << format_si(*s.tdp_w, "W") << mark(s.is_unverified("tdp_w"));
     out << "\n    source: " << s.source_title << (s.source_url.empty() ? "" : " <" + s.source_url + ">") << '\n';
+    for (const std::string& url : s.source_more_urls) out << "    also: <" << url << ">\n";
+    if (!s.unverified.empty()) {
+      out << "    unverified:";
+      for (const std::string& f : s.unverified) out << ' ' << f;
+      out << '\n';
+    }
+    if (!s.peak_exempt.empty()) out << "    peak: " << s.peak_exempt << '\n';
     if (!s.note.empty()) out << "    note: " << s.note << '\n';
   }
   return 0;
@@ -179,10 +199,11 @@ const CommandRegistrar registrar({
     "  Every backend and device (CPU SIMD, CPU scalar, each OpenCL device, each CUDA GPU) with its properties, the\n"
     "  rotation kernel's theoretical peak and the vendor FP32 peak from the device table, then the backends this\n"
     "  build knows but cannot run here and why. --table: the device table (resources/devices/devices.json) with\n"
-    "  every entry's FP32 peak, derivation and source. The CPU SIMD backend also shows its empirical ceilings\n"
-    "  (rotation mix, FMA, memory bandwidth; docs/ceilings.md) with when and how they were measured, from the\n"
-    "  per-host cache; --measure-ceilings measures them now (~5 s) and updates the cache (--workspace: also stores\n"
-    "  them there, for peaks, the peak table and the roofline). --isa: another instruction set this CPU has.",
+    "  every entry's FP32 peak, derivation and sources; a value no source confirmed ends in '?'. The CPU SIMD\n"
+    "  backend also shows its empirical ceilings (rotation mix, FMA, memory bandwidth; docs/ceilings.md) with when\n"
+    "  and how they were measured, from the per-host cache; --measure-ceilings measures them now (~5 s) and\n"
+    "  updates the cache (--workspace: also stores them there, for peaks, the peak table and the roofline).\n"
+    "  --isa: another instruction set this CPU has.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_devices(args, out);
     },

@@ -21,7 +21,8 @@ nlohmann::json spec_json(const std::optional<DeviceSpec>& spec) {
           {"memory_bandwidth_bytes_per_s", opt(spec->memory_bandwidth_bytes_per_s)},
           {"tdp_w", opt(spec->tdp_w)},
           {"source", spec->source_title},
-          {"url", spec->source_url}};
+          {"url", spec->source_url},
+          {"unverified", spec->unverified}};
 }
 
 std::vector<PlausibilityFlag> throughput_flags(const ResultSet& set, const Measurement& m, double value) {

@@ -4,6 +4,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <map>
@@ -189,6 +190,30 @@ class TestCli : public QObject {
       QCOMPARE(ocl.code, 0);
       QVERIFY(ocl.out.contains("OpenCL, D = 4: peak"));
     }
+  }
+
+  // devices --table marks a value no source confirmed with a trailing '?' and lists the fields.
+  void device_table_marks_unverified_values() {
+    const Result r = cli({"devices", "--table"});
+    QCOMPARE(r.code, 0);
+    const QString out = QString::fromUtf8(r.out);
+    const auto entry = [&](const char* id) {
+      const qsizetype at = out.indexOf(QString(id) + " (");
+      const qsizetype next = out.indexOf(QRegularExpression("\\n\\S"), at + 1);
+      return at < 0 ? QString() : out.mid(at, next - at);
+    };
+    const QString tx2 = entry("nvidia-jetson-tx2-gpu");
+    QVERIFY2(tx2.contains("GB/s?") && tx2.contains("unverified: memory_bandwidth_bytes_per_s"), qPrintable(tx2));
+    QVERIFY2(!tx2.contains("FLOPS?") && !tx2.contains("W?"), qPrintable(tx2));
+    const QString nuc = entry("intel-iris-plus-650");
+    QVERIFY2(!nuc.isEmpty() && !nuc.contains('?') && !nuc.contains("unverified"), qPrintable(nuc));
+    const QString ti = entry("nvidia-rtx-3080-ti");
+    QVERIFY2(ti.contains("FLOPS?") && ti.contains("W?"), qPrintable(ti));
+    const QJsonArray devices =
+        QJsonDocument::fromJson(cli({"devices", "--table", "--json"}).out).object()["devices"].toArray();
+    for (const auto& v : devices)
+      if (v.toObject()["id"].toString() == "nvidia-rtx-3080-ti")
+        QVERIFY(v.toObject()["unverified"].toArray().contains(QJsonValue("tdp_w")));
   }
 
   void power_efficiency_and_battery_reproduce_the_paper() {

@@ -37,6 +37,47 @@ std::optional<double> optional_positive(const json& e, const char* key, const st
   return it->get<double>();
 }
 
+std::vector<std::string> string_list(const json& e, const char* key, const std::string& origin,
+                                     const std::string& where) {
+  std::vector<std::string> out;
+  const auto it = e.find(key);
+  if (it == e.end()) return out;
+  if (!it->is_array()) fail(origin, where + "." + key, "not an array");
+  for (const json& v : *it) {
+    if (!v.is_string() || v.get<std::string>().empty())
+      fail(origin, where + "." + key, "an element is not a non-empty string");
+    out.push_back(v.get<std::string>());
+  }
+  return out;
+}
+
+constexpr const char* kVerifiableFields[] = {"units",           "flop_per_unit_per_cycle",      "clock_ghz",
+                                             "fp32_peak_flops", "memory_bandwidth_bytes_per_s", "tdp_w"};
+
+std::vector<PeakTerm> peak_terms(const json& e, const std::string& origin, const std::string& where) {
+  std::vector<PeakTerm> terms;
+  const auto it = e.find("peak_terms");
+  if (it == e.end()) return terms;
+  if (!it->is_array()) fail(origin, where + ".peak_terms", "not an array");
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const json& t = (*it)[i];
+    const std::string at = where + ".peak_terms[" + std::to_string(i) + "]";
+    if (!t.is_object()) fail(origin, at, "not an object");
+    PeakTerm term;
+    const auto need = [&](const char* key) {
+      const auto v = optional_positive(t, key, origin, at);
+      if (!v) fail(origin, at + "." + key, "missing");
+      return *v;
+    };
+    term.units = need("units");
+    term.unit = required_string(t, "unit", origin, at);
+    term.flop_per_unit_per_cycle = need("flop_per_unit_per_cycle");
+    term.clock_ghz = need("clock_ghz");
+    terms.push_back(std::move(term));
+  }
+  return terms;
+}
+
 bool is_noise_word(const std::string& w) {
   static const char* const kNoise[] = {"r",       "tm",     "intel", "nvidia",   "amd",
                                        "geforce", "radeon", "core",  "graphics", "corporation"};
@@ -117,12 +158,35 @@ DeviceTable parse_device_table(std::string_view json_text, const std::string& or
     if (src == e.end() || !src->is_object()) fail(origin, where + ".source", "missing: every entry names its source");
     s.source_title = required_string(*src, "title", origin, where + ".source");
     s.source_url = src->value("url", "");
+    s.source_more_urls = string_list(*src, "more", origin, where + ".source");
     s.note = e.value("note", "");
+    s.peak_terms = peak_terms(e, origin, where);
+    s.peak_exempt = e.value("peak_exempt", "");
+    s.unverified = string_list(e, "unverified", origin, where);
+    for (const std::string& field : s.unverified)
+      if (std::none_of(std::begin(kVerifiableFields), std::end(kVerifiableFields),
+                       [&](const char* f) { return field == f; }))
+        fail(origin, where + ".unverified", "unknown field " + field);
     for (const DeviceSpec& other : table.devices)
       if (other.id == s.id) fail(origin, where + ".id", "duplicate id " + s.id);
     table.devices.push_back(std::move(s));
   }
   return table;
+}
+
+bool DeviceSpec::is_unverified(std::string_view field) const {
+  return std::find(unverified.begin(), unverified.end(), field) != unverified.end();
+}
+
+bool DeviceSpec::peak_unverified() const {
+  return is_unverified("fp32_peak_flops") || is_unverified("units") || is_unverified("flop_per_unit_per_cycle") ||
+         is_unverified("clock_ghz");
+}
+
+double DeviceSpec::peak_from_terms() const {
+  double sum = 0;
+  for (const PeakTerm& t : peak_terms) sum += t.units * t.flop_per_unit_per_cycle * t.clock_ghz * 1e9;
+  return sum;
 }
 
 DeviceTable load_device_table(const std::filesystem::path& path) {

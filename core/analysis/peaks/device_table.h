@@ -13,6 +13,14 @@
 
 namespace bs {
 
+// One product of a peak: units x FP32 FLOP per unit per cycle x clock (a heterogeneous CPU has one per cluster).
+struct PeakTerm {
+  double units = 0;                    // CUDA cores, stream processors, EUs, CPU cores
+  std::string unit;                    // what a unit is: "CUDA cores", "EUs", "Cortex-A57 cores"
+  double flop_per_unit_per_cycle = 0;  // FP32, an FMA counts 2
+  double clock_ghz = 0;
+};
+
 struct DeviceSpec {
   std::string id;    // stable, e.g. "intel-iris-plus-650"
   std::string name;  // e.g. "Intel Iris Plus Graphics 650"
@@ -24,7 +32,21 @@ struct DeviceSpec {
   std::optional<double> tdp_w;
   std::string source_title;  // vendor page or datasheet
   std::string source_url;
+  std::vector<std::string> source_more_urls;  // further pages that confirm other fields
   std::string note;
+  // The terms fp32_peak_flops is the sum of (tests recompute it); empty when the figure is the vendor's own.
+  std::vector<PeakTerm> peak_terms;
+  // Why fp32_peak_flops is not the sum of peak_terms within 2 %, or why there are no terms; "" when it is.
+  std::string peak_exempt;
+  // Fields no source confirmed: "units", "flop_per_unit_per_cycle", "clock_ghz" (the peak's terms),
+  // "fp32_peak_flops", "memory_bandwidth_bytes_per_s", "tdp_w". Shown with a trailing '?' in devices --table.
+  std::vector<std::string> unverified;
+
+  bool is_unverified(std::string_view field) const;
+  // fp32_peak_flops or one of its terms unconfirmed.
+  bool peak_unverified() const;
+  // The sum of peak_terms in FLOP/s (0 without terms).
+  double peak_from_terms() const;
 };
 
 struct DeviceTable {

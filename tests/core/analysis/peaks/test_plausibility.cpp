@@ -2,6 +2,7 @@
 // The device table (resources/devices/devices.json), name matching, and plausibility flags of FLOPS and power.
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -60,6 +61,96 @@ class TestPlausibility : public QObject {
       QVERIFY2(!d.source_title.empty(), d.id.c_str());  // the parser refuses an entry without a source
       QVERIFY2(d.fp32_peak_flops > 1e9 && d.fp32_peak_flops < 1e15, d.id.c_str());
     }
+  }
+  // Every FP32 peak is units x FP32 FLOP per unit per cycle x clock (summed over a heterogeneous CPU's clusters)
+  // within 2 %, or the entry says why not: a typo in a peak or a clock shows here, not as a wrong flag later.
+  void every_peak_is_the_sum_of_its_terms() {
+    int checked = 0;
+    for (const bs::DeviceSpec& d : table().devices) {
+      if (d.peak_terms.empty()) {
+        QVERIFY2(!d.peak_exempt.empty(), qPrintable(QString::fromStdString(d.id) + ": no peak_terms and no reason"));
+        continue;
+      }
+      const double ratio = d.peak_from_terms() / d.fp32_peak_flops;
+      const QString what = QString("%1: terms give %2 FLOP/s, the table %3 (ratio %4)")
+                               .arg(QString::fromStdString(d.id))
+                               .arg(d.peak_from_terms(), 0, 'g', 6)
+                               .arg(d.fp32_peak_flops, 0, 'g', 6)
+                               .arg(ratio, 0, 'f', 4);
+      if (std::fabs(ratio - 1) > 0.02) {
+        QVERIFY2(!d.peak_exempt.empty(), qPrintable(what + " and no peak_exempt"));
+      } else {
+        QVERIFY2(d.peak_exempt.empty(), qPrintable(what + ": agrees, so peak_exempt is stale"));
+        ++checked;
+      }
+      // The derivation a person reads names the same unit counts.
+      for (const bs::PeakTerm& t : d.peak_terms)
+        QVERIFY2(d.derivation.find(std::to_string(static_cast<long long>(t.units))) != std::string::npos,
+                 qPrintable(QString::fromStdString(d.id + ": derivation does not name " + t.unit)));
+    }
+    QVERIFY(checked >= 45);
+  }
+  void rules_of_thumb_per_unit_hold() {
+    // GPUs: 2 FLOP/cycle per CUDA core or stream processor (4 with RDNA 3 dual issue or CDNA 3 matrix), 16 per Intel
+    // EU; CPUs: 8 or 16 (128-bit NEON FMA pipes) or 32 (two 256-bit FMA units) per core.
+    for (const bs::DeviceSpec& d : table().devices)
+      for (const bs::PeakTerm& t : d.peak_terms) {
+        const double f = t.flop_per_unit_per_cycle;
+        const bool ok = t.unit == "EUs"                 ? f == 16
+                        : d.kind == bs::DeviceKind::Gpu ? (f == 2 || f == 4)
+                                                        : (f == 8 || f == 16 || f == 32);
+        QVERIFY2(ok, qPrintable(QString::fromStdString(d.id + " " + t.unit) + QString(": %1 FLOP/cycle").arg(f)));
+        QVERIFY2(t.clock_ghz > 0.3 && t.clock_ghz < 6, qPrintable(QString::fromStdString(d.id)));
+      }
+  }
+  void sources_and_unverified_fields() {
+    for (const bs::DeviceSpec& d : table().devices) {
+      const QString id = QString::fromStdString(d.id);
+      // An entry with no page behind it says which of its values are unconfirmed.
+      if (d.source_url.empty()) QVERIFY2(d.peak_unverified(), qPrintable(id));
+      QVERIFY2(d.source_url.empty() || d.source_url.rfind("http", 0) == 0, qPrintable(id));
+      for (const std::string& u : d.source_more_urls) QVERIFY2(u.rfind("http", 0) == 0, qPrintable(id));
+    }
+    // The paper's NUC and GTX 1080 Ti entries are confirmed; the TX2's memory bandwidth is not.
+    for (const char* id : {"intel-iris-plus-650", "intel-i7-7567u", "nvidia-gtx-1080-ti"}) {
+      const auto it = std::find_if(table().devices.begin(), table().devices.end(),
+                                   [&](const bs::DeviceSpec& d) { return d.id == id; });
+      QVERIFY(it != table().devices.end());
+      QVERIFY2(it->unverified.empty() && !it->source_url.empty(), id);
+    }
+    const bs::DeviceSpec* tx2 = bs::match_device(table(), "Jetson TX2 GPU", bs::DeviceKind::Gpu);
+    QVERIFY(tx2 && tx2->is_unverified("memory_bandwidth_bytes_per_s") && !tx2->peak_unverified());
+  }
+  void peak_terms_and_unverified_are_parsed_and_checked() {
+    const auto entry = [](const std::string& extra) {
+      return R"({"format":"benchscope-device-specs","version":1,"devices":[{"id":"x","name":"X","kind":"cpu",
+        "fp32_peak_flops":128e9,"derivation":"d","source":{"title":"s","more":["https://b"]})" +
+             extra + "}]}";
+    };
+    const bs::DeviceTable t = bs::parse_device_table(
+        entry(R"(,"peak_terms":[{"units":4,"unit":"A57","flop_per_unit_per_cycle":8,"clock_ghz":2},
+          {"units":2,"unit":"Denver 2","flop_per_unit_per_cycle":16,"clock_ghz":2}],"unverified":["clock_ghz"])"),
+        "t.json");
+    const bs::DeviceSpec& d = t.devices.front();
+    QCOMPARE(d.peak_terms.size(), std::size_t{2});
+    QCOMPARE(d.peak_from_terms(), 128e9);
+    QCOMPARE(d.source_more_urls, (std::vector<std::string>{"https://b"}));
+    QVERIFY(d.peak_unverified() && d.is_unverified("clock_ghz") && !d.is_unverified("tdp_w"));
+    // Without the new fields an entry still loads, with nothing unverified.
+    QVERIFY(bs::parse_device_table(entry(""), "t.json").devices.front().unverified.empty());
+    const auto refused = [&](const std::string& extra, const char* where) {
+      try {
+        bs::parse_device_table(entry(extra), "t.json");
+      } catch (const std::runtime_error& e) {
+        return std::string(e.what()).find(where) != std::string::npos;
+      }
+      return false;
+    };
+    QVERIFY(refused(R"(,"unverified":["clock"])", "devices[0].unverified"));  // a typo is not silently ignored
+    QVERIFY(refused(R"(,"peak_terms":[{"units":4,"unit":"c","flop_per_unit_per_cycle":8}])", "clock_ghz"));
+    QVERIFY(refused(R"(,"peak_terms":[{"units":-4,"unit":"c","flop_per_unit_per_cycle":8,"clock_ghz":2}])",
+                    "peak_terms[0].units"));
+    QVERIFY(refused(R"(,"peak_terms":{})", "peak_terms"));
   }
   void tokens_split_letters_from_digits_and_drop_vendor_words() {
     QCOMPARE(bs::device_name_tokens("GTX1080Ti"), (std::vector<std::string>{"gtx", "1080", "ti"}));
