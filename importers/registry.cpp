@@ -95,6 +95,12 @@ std::string read_whole_file(const std::string& path, std::size_t max_bytes) {
   return text;
 }
 
+std::string_view strip_utf8_bom(std::string_view text) {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  if (text.starts_with(kBom)) text.remove_prefix(kBom.size());
+  return text;
+}
+
 namespace {
 
 // Counts bytes that cannot be text: C0 controls other than tab, LF, CR, FF, and bytes that do not form UTF-8.
@@ -156,8 +162,7 @@ void check_text(std::string_view head, const std::string& path) {
     throw ImportError(ImportErrorCategory::Encoding, at, "file is UTF-32 (byte-order mark); save it as UTF-8");
   if (head.starts_with("\xFF\xFE") || head.starts_with("\xFE\xFF"))
     throw ImportError(ImportErrorCategory::Encoding, at, "file is UTF-16 (byte-order mark); save it as UTF-8");
-  std::string_view body = head;
-  if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
+  const std::string_view body = strip_utf8_bom(head);
   if (body.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
     throw ImportError(ImportErrorCategory::Empty, at,
                       head.empty() ? "file is empty (0 bytes)" : "file holds only whitespace");
@@ -197,14 +202,13 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
   }
   if (best) {
     cancel.throw_if_cancelled();
-    ImportBatch batch = best->parse(path, limits, cancel);
+    ImportBatch batch = best->parse(path, ParseOptions{}, limits, cancel);
     batch.source_path = path;
     batch.format = std::string(best->id());
     return batch;
   }
   check_text(head, path);
-  std::string_view view = head;
-  if (view.starts_with("\xEF\xBB\xBF")) view.remove_prefix(3);
+  const std::string_view view = strip_utf8_bom(head);
   for (const auto& imp : all_importers()) {
     if (imp->binary()) continue;
     const int content = imp->sniff(view, path);
@@ -222,7 +226,7 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
                       "not a format BenchScope reads (tried: " + tried + ")");
   }
   cancel.throw_if_cancelled();
-  ImportBatch batch = best->parse(path, limits, cancel);
+  ImportBatch batch = best->parse(path, ParseOptions{}, limits, cancel);
   batch.source_path = path;
   batch.format = std::string(best->id());
   return batch;
