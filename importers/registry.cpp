@@ -151,6 +151,16 @@ std::string_view wide_encoding(std::string_view head) {
   return {};
 }
 
+// The chosen importer's parse with the default options, the batch labelled with its file and format.
+ImportBatch parse_as(const Importer& importer, const std::string& path, const ImportLimits& limits,
+                     const CancelToken& cancel) {
+  cancel.throw_if_cancelled();
+  ImportBatch batch = importer.parse(path, ParseOptions{}, limits, cancel);
+  batch.source_path = path;
+  batch.format = std::string(importer.id());
+  return batch;
+}
+
 }  // namespace
 
 void check_text(std::string_view head, const std::string& path) {
@@ -200,13 +210,7 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
       best = imp.get();
     }
   }
-  if (best) {
-    cancel.throw_if_cancelled();
-    ImportBatch batch = best->parse(path, ParseOptions{}, limits, cancel);
-    batch.source_path = path;
-    batch.format = std::string(best->id());
-    return batch;
-  }
+  if (best) return parse_as(*best, path, limits, cancel);
   check_text(head, path);
   const std::string_view view = strip_utf8_bom(head);
   for (const auto& imp : all_importers()) {
@@ -225,11 +229,7 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
     throw ImportError(ImportErrorCategory::UnknownFormat, {path, 0, 0, {}},
                       "not a format BenchScope reads (tried: " + tried + ")");
   }
-  cancel.throw_if_cancelled();
-  ImportBatch batch = best->parse(path, ParseOptions{}, limits, cancel);
-  batch.source_path = path;
-  batch.format = std::string(best->id());
-  return batch;
+  return parse_as(*best, path, limits, cancel);
 }
 
 }  // namespace bs
