@@ -7,6 +7,8 @@
 #include <cmath>
 #include <optional>
 
+#include "text_file.h"
+
 namespace bs {
 namespace {
 
@@ -388,21 +390,20 @@ bool ClpeakTextImporter::usual_extension(std::string_view path) const {
   return path.ends_with(".txt") || path.ends_with(".log");
 }
 
-ImportBatch ClpeakTextImporter::parse(const std::string& path, const ImportLimits& limits,
+ImportBatch ClpeakTextImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                                       const CancelToken& cancel) const {
-  const std::string text = read_whole_file(path, limits.max_json_bytes);
-  cancel.throw_if_cancelled();
-  return parse_clpeak_text(text, path, &cancel);
+  return parse_text_file(path, options, limits, cancel, parse_clpeak_text);
 }
 
-ImportBatch parse_clpeak_text(std::string_view text, const std::string& file, const CancelToken* cancel) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+ImportBatch parse_clpeak_text(const std::string& text_in, const std::string& file, const ParseOptions& /*options*/,
+                              const ImportLimits& /*limits*/, const CancelToken& cancel) {
+  const std::string_view text = text_in;
   ClpeakParser parser(file);
   std::size_t line_no = 0;
   for (std::size_t pos = 0; pos < text.size();) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
     ++line_no;
-    if (cancel && (line_no & 0xFFF) == 0) cancel->throw_if_cancelled();
+    if ((line_no & 0xFFF) == 0) cancel.throw_if_cancelled();
     parser.line(text.substr(pos, end - pos), line_no);  // a trailing '\r' (CRLF) is trimmed as whitespace
     pos = end + 1;
   }

@@ -19,7 +19,8 @@ class ClpeakTextImporter final : public Importer {
   std::string_view description() const override { return "clpeak text output"; }
   int sniff(std::string_view head, std::string_view path) const override;
   bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
 // Reads what people save and paste: CRLF, tabs, a shell prompt or banner before the output, a paste that starts at
@@ -29,7 +30,9 @@ class ClpeakTextImporter final : public Importer {
 // error in place of a value, "[skipped]" rows) are warnings. A value that is not a measurement ("inf", a negative
 // latency, a crash message, nothing after the colon) is skipped with a warning naming file:line; the rest of the
 // file is kept. A device without any measurement is left out with a warning. Only a file without any measurement is
-// an error: the first unreadable value when there was one, else a missing-field error.
-ImportBatch parse_clpeak_text(std::string_view text, const std::string& file, const CancelToken* cancel = nullptr);
+// an error: the first unreadable value when there was one, else a missing-field error. No options or limits (the
+// file's size is bounded by ImportLimits::max_json_bytes when it is read).
+ImportBatch parse_clpeak_text(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                              const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

@@ -80,7 +80,8 @@ int PngImporter::sniff(std::string_view head, std::string_view) const { return h
 
 bool PngImporter::usual_extension(std::string_view path) const { return frames::ends_with_ci(path, ".png"); }
 
-ImportBatch PngImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch PngImporter::parse(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
+                               const CancelToken& cancel) const {
   const std::uint64_t size = frames::file_size(path);
   std::ifstream f(path, std::ios::binary);
   if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");
@@ -179,7 +180,8 @@ bool TiffImporter::usual_extension(std::string_view path) const {
   return frames::ends_with_ci(path, ".tif") || frames::ends_with_ci(path, ".tiff");
 }
 
-ImportBatch TiffImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch TiffImporter::parse(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
+                                const CancelToken& cancel) const {
   const std::uint64_t size = frames::file_size(path);
   std::ifstream f(path, std::ios::binary);
   if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");

@@ -130,7 +130,8 @@ bool PnmImporter::usual_extension(std::string_view path) const {
   return frames::ends_with_ci(path, ".pgm") || frames::ends_with_ci(path, ".ppm") || frames::ends_with_ci(path, ".pnm");
 }
 
-ImportBatch PnmImporter::parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const {
+ImportBatch PnmImporter::parse(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
+                               const CancelToken& cancel) const {
   const std::string head = read_head(path, kMaxHeaderBytes);
   if (head.size() < 3 || head[0] != 'P')
     throw ImportError(ImportErrorCategory::UnknownFormat, {path, 1, 1, {}}, "not a PGM/PPM file (no P5/P6 magic)");

@@ -142,8 +142,8 @@ int RawBayerImporter::sniff(std::string_view, std::string_view path) const {
 
 bool RawBayerImporter::usual_extension(std::string_view path) const { return frames::ends_with_ci(path, ".raw"); }
 
-ImportBatch RawBayerImporter::parse(const std::string& path, const ImportLimits& limits,
-                                    const CancelToken& cancel) const {
+ImportBatch RawBayerImporter::parse(const std::string& path, const ParseOptions& /*options*/,
+                                    const ImportLimits& limits, const CancelToken& cancel) const {
   const std::optional<std::string> found = find_raw_sidecar(path);
   if (!found)
     throw ImportError(ImportErrorCategory::MissingField, {path, 0, 0, "sidecar"},

@@ -44,7 +44,7 @@ Frame load_frame(const Workspace& ws, const StoredFrame& stored, const CancelTok
     if (!imp)
       throw ImportError(ImportErrorCategory::Unsupported, at,
                         "frame format \"" + stored.frame.source_format + "\" is unknown to this build");
-    batch = imp->parse(stored.path, limits, cancel);
+    batch = imp->parse(stored.path, ParseOptions{}, limits, cancel);
   }
   if (batch.frames.size() != 1 || batch.frames[0].width != out.width || batch.frames[0].height != out.height ||
       batch.frames[0].channels != out.channels)

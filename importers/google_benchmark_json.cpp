@@ -13,6 +13,7 @@
 
 #include "analysis/peaks/foreign_sweeps.h"
 #include "json_access.h"
+#include "text_file.h"
 
 namespace bs {
 namespace {
@@ -250,7 +251,7 @@ ResultSet result_set_from_context(const Reader& r, const json& context, const st
 }
 
 // The worker argument: the caller's option, else the custom context key.
-WorkersArgument workers_argument_of(const Reader& r, const json& context, const GoogleBenchmarkOptions& options) {
+WorkersArgument workers_argument_of(const Reader& r, const json& context, const ParseOptions& options) {
   if (options.workers_argument) return options.workers_argument;
   const json* v = r.optional(context, "benchscope_workers_argument");
   if (!v) return std::nullopt;
@@ -302,19 +303,17 @@ int GoogleBenchmarkJsonImporter::sniff(std::string_view head, std::string_view) 
 
 bool GoogleBenchmarkJsonImporter::usual_extension(std::string_view path) const { return path.ends_with(".json"); }
 
-ImportBatch GoogleBenchmarkJsonImporter::parse(const std::string& path, const ImportLimits& limits,
-                                               const CancelToken& cancel) const {
-  const std::string text = read_whole_file(path, limits.max_json_bytes);
-  cancel.throw_if_cancelled();
-  return parse_google_benchmark_json(text, path, limits, &cancel);
+ImportBatch GoogleBenchmarkJsonImporter::parse(const std::string& path, const ParseOptions& options,
+                                               const ImportLimits& limits, const CancelToken& cancel) const {
+  return parse_text_file(path, options, limits, cancel, parse_google_benchmark_json);
 }
 
-ImportBatch parse_google_benchmark_json(std::string_view original, const std::string& file, const ImportLimits& limits,
-                                        const CancelToken* cancel, const GoogleBenchmarkOptions& options) {
-  if (original.starts_with("\xEF\xBB\xBF")) original.remove_prefix(3);
+ImportBatch parse_google_benchmark_json(const std::string& original, const std::string& file,
+                                        const ParseOptions& options, const ImportLimits& limits,
+                                        const CancelToken& cancel) {
   std::string text(original);
   quote_non_finite_tokens(text);
-  const json doc = json_access::parse(text, file, limits, cancel);
+  const json doc = json_access::parse(text, file, limits, &cancel);
   const Reader r(file, text);
   r.require_object(doc, "");
   const json& context = r.require_object(r.require(doc, "", "context"), "/context");
@@ -341,7 +340,7 @@ ImportBatch parse_google_benchmark_json(std::string_view original, const std::st
   std::set<std::string> iteration_names;                                   // for aggregates of versions < 1.5
   std::set<std::string> unswept_warned;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (cancel && (i & 0x3FF) == 0) cancel->throw_if_cancelled();
+    if ((i & 0x3FF) == 0) cancel.throw_if_cancelled();
     const std::string at = child("/benchmarks", i);
     const json& row = r.require_object(rows[i], at);
     const std::string name = r.require_string(row, at, "name");

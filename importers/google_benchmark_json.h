@@ -5,20 +5,11 @@
 // cv). Imported as one ResultSet: per run_name, real_time and cpu_time in seconds and every user counter
 // (bytes_per_second in B/s, items_per_second in 1/s, FLOP counters in FLOP/s), one value per repetition, with the
 // aggregate rows kept as reported_aggregates. Rows with error_occurred or skipped become warnings.
-#include <optional>
 #include <string>
 
 #include "importer.h"
 
 namespace bs {
-
-// What the file may not say: which argument of the benchmark name is the worker count of a FLOPS sweep. Left
-// empty, the context key "benchscope_workers_argument" (Google Benchmark >= 1.6:
-// --benchmark_context=benchscope_workers_argument=0) decides, else the name's threads:N segment (1 when absent).
-// Recorded as the "workers from" setting of the set's provenance (analysis/foreign_sweeps.h reads it).
-struct GoogleBenchmarkOptions {
-  std::optional<int> workers_argument;
-};
 
 class GoogleBenchmarkJsonImporter final : public Importer {
  public:
@@ -26,7 +17,8 @@ class GoogleBenchmarkJsonImporter final : public Importer {
   std::string_view description() const override { return "Google Benchmark JSON"; }
   int sniff(std::string_view head, std::string_view path) const override;
   bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
 // Also reads the bare NaN / Infinity that Google Benchmark prints for non-finite values (not JSON): such a time
@@ -37,9 +29,10 @@ class GoogleBenchmarkJsonImporter final : public Importer {
 // different data; an identical repeated row is skipped with a warning. A context whose library_build_type is
 // "debug" gives Google Benchmark's own warning. Context fields (host_name, num_cpus, mhz_per_cpu, caches,
 // library_version, library_build_type, custom context keys) become provenance settings. items_per_second is in
-// FLOP/s when the context says benchscope_item = "flop", else in 1/s.
-ImportBatch parse_google_benchmark_json(std::string_view text, const std::string& file, const ImportLimits& limits = {},
-                                        const CancelToken* cancel = nullptr,
-                                        const GoogleBenchmarkOptions& options = {});
+// FLOP/s when the context says benchscope_item = "flop", else in 1/s. Reads ParseOptions::workers_argument (what
+// the file may not say: which argument of the benchmark name is the worker count of a FLOPS sweep).
+ImportBatch parse_google_benchmark_json(const std::string& text, const std::string& file,
+                                        const ParseOptions& options = {}, const ImportLimits& limits = {},
+                                        const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

@@ -8,6 +8,7 @@
 
 #include "import_error.h"
 #include "model/import_batch.h"
+#include "parse_options.h"
 #include "util/cancel.h"
 
 namespace bs {
@@ -44,8 +45,10 @@ class Importer {
   virtual bool usual_extension(std::string_view /*path*/) const { return false; }
   // Binary formats (images) are sniffed on the raw head before the text checks that reject NUL bytes.
   virtual bool binary() const { return false; }
-  // Parses the whole file. Throws ImportError (or Cancelled). Never returns a partial batch.
-  virtual ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const = 0;
+  // Parses the whole file, with the options the format reads (the rest are ignored). Throws ImportError (or
+  // Cancelled). Never returns a partial batch.
+  virtual ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                            const CancelToken& cancel) const = 0;
 };
 
 // All importers BenchScope knows, in sniffing order.
@@ -54,7 +57,7 @@ const Importer* find_importer(std::string_view id);
 
 // Reads the head of `path`, rejects empty / binary / UTF-16 input with a clear ImportError, picks the importer
 // with the highest sniff score (ties broken by usual_extension, then by order) and parses. UnknownFormat when
-// nothing scores above 0.
+// nothing scores above 0. Formats get the default ParseOptions.
 ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits = {});
 
 // Helpers shared by importers.
@@ -62,5 +65,8 @@ std::string read_head(const std::string& path, std::size_t max_bytes = 64 * 1024
 std::string read_whole_file(const std::string& path, std::size_t max_bytes);        // throws Io/TooLarge
 // Rejects empty, binary (NUL bytes) and UTF-16/32 content with the right category; strips nothing.
 void check_text(std::string_view head, const std::string& path);
+// `text` without a leading UTF-8 byte-order mark: the one place a BOM is recognised. Files reach the parsers
+// through it (parse_text_file, PowerLineReader), so parse_X() functions never see one from a file.
+std::string_view strip_utf8_bom(std::string_view text);
 
 }  // namespace bs

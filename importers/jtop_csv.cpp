@@ -118,7 +118,7 @@ bool is_total(std::string_view name) { return name == "Power TOT" || name == "po
 
 class JtopParser {
  public:
-  JtopParser(const std::string& file, const PowerImportOptions& options, const ImportLimits& limits)
+  JtopParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
       : file_(file), options_(options), limits_(limits) {}
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
@@ -134,7 +134,7 @@ class JtopParser {
   }
 
   const std::string& file_;
-  const PowerImportOptions& options_;
+  const ParseOptions& options_;
   const ImportLimits& limits_;
   std::vector<Cell> cells_;
   std::vector<Column> columns_;
@@ -336,24 +336,14 @@ bool JtopCsvImporter::usual_extension(std::string_view path) const {
   return ext == ".csv";
 }
 
-ImportBatch JtopCsvImporter::parse(const std::string& path, const ImportLimits& limits,
+ImportBatch JtopCsvImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                                    const CancelToken& cancel) const {
-  return read_jtop_csv(path, {}, limits, cancel);
+  return meter::parse_log<JtopParser>(PowerLineReader(path), path, options, limits, cancel);
 }
 
-ImportBatch read_jtop_csv(const std::string& path, const PowerImportOptions& options, const ImportLimits& limits,
-                          const CancelToken& cancel) {
-  PowerLineReader lines(path);
-  JtopParser parser(path, options, limits);
-  return meter::run_lines(lines, parser, cancel);
-}
-
-ImportBatch parse_jtop_csv(std::string_view text, const std::string& file, const PowerImportOptions& options) {
-  const ImportLimits limits;
-  const CancelToken cancel;
-  PowerLineReader lines(text, file);
-  JtopParser parser(file, options, limits);
-  return meter::run_lines(lines, parser, cancel);
+ImportBatch parse_jtop_csv(const std::string& text, const std::string& file, const ParseOptions& options,
+                           const ImportLimits& limits, const CancelToken& cancel) {
+  return meter::parse_log<JtopParser>(PowerLineReader(text, file), file, options, limits, cancel);
 }
 
 }  // namespace bs

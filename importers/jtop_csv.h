@@ -21,7 +21,6 @@
 #include <string>
 
 #include "importer.h"
-#include "power_options.h"
 
 namespace bs {
 
@@ -31,11 +30,13 @@ class JtopCsvImporter final : public Importer {
   std::string_view description() const override { return "jetson-stats (jtop) CSV log (Jetson power)"; }
   int sniff(std::string_view head, std::string_view path) const override;
   bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
-ImportBatch read_jtop_csv(const std::string& path, const PowerImportOptions& options = {},
-                          const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
-ImportBatch parse_jtop_csv(std::string_view text, const std::string& file, const PowerImportOptions& options = {});
+// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
+ImportBatch parse_jtop_csv(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                           const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "importer.h"
 #include "power_line_reader.h"
 #include "util/cancel.h"
 
@@ -75,6 +76,15 @@ auto run_lines(Lines& lines, Parser& parser, const CancelToken& cancel) {
   }
   if (have) parser.line(pending, pending_no, true);
   return parser.finish();
+}
+
+// The whole of a line-based power format's Importer::parse (the file's lines, streamed) and of its parse_X (lines
+// of text in memory): a Parser built from (file, options, limits) fed by run_lines.
+template <class Parser>
+ImportBatch parse_log(PowerLineReader&& lines, const std::string& file, const ParseOptions& options,
+                      const ImportLimits& limits, const CancelToken& cancel) {
+  Parser parser(file, options, limits);
+  return run_lines(lines, parser, cancel);
 }
 
 }  // namespace bs::meter

@@ -10,6 +10,7 @@
 
 #include "analysis/power/power_time.h"
 #include "meter_log_text.h"
+#include "power_line_reader.h"
 
 namespace bs {
 namespace {
@@ -89,7 +90,7 @@ struct Gpu {
 
 class NvidiaSmiParser {
  public:
-  NvidiaSmiParser(const std::string& file, const PowerImportOptions& options, const ImportLimits& limits)
+  NvidiaSmiParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
       : file_(file), options_(options), limits_(limits) {}
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
@@ -108,7 +109,7 @@ class NvidiaSmiParser {
   Gpu& gpu_for(std::size_t line_no);
 
   const std::string& file_;
-  const PowerImportOptions& options_;
+  const ParseOptions& options_;
   const ImportLimits& limits_;
   std::vector<std::string_view> cells_;
   std::vector<Column> cols_;
@@ -362,24 +363,14 @@ int NvidiaSmiImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-ImportBatch NvidiaSmiImporter::parse(const std::string& path, const ImportLimits& limits,
+ImportBatch NvidiaSmiImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                                      const CancelToken& cancel) const {
-  return read_nvidia_smi(path, {}, limits, cancel);
+  return meter::parse_log<NvidiaSmiParser>(PowerLineReader(path), path, options, limits, cancel);
 }
 
-ImportBatch read_nvidia_smi(const std::string& path, const PowerImportOptions& options, const ImportLimits& limits,
-                            const CancelToken& cancel) {
-  PowerLineReader lines(path);
-  NvidiaSmiParser parser(path, options, limits);
-  return meter::run_lines(lines, parser, cancel);
-}
-
-ImportBatch parse_nvidia_smi(std::string_view text, const std::string& file) {
-  const PowerImportOptions options;
-  const ImportLimits limits;
-  PowerLineReader lines(text, file);
-  NvidiaSmiParser parser(file, options, limits);
-  return meter::run_lines(lines, parser, CancelToken{});
+ImportBatch parse_nvidia_smi(const std::string& text, const std::string& file, const ParseOptions& options,
+                             const ImportLimits& limits, const CancelToken& cancel) {
+  return meter::parse_log<NvidiaSmiParser>(PowerLineReader(text, file), file, options, limits, cancel);
 }
 
 }  // namespace bs

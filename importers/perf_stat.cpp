@@ -10,6 +10,7 @@
 
 #include "analysis/power/power_time.h"
 #include "meter_log_text.h"
+#include "power_line_reader.h"
 
 namespace bs {
 namespace {
@@ -156,7 +157,7 @@ struct Channel {
 
 class PerfStatParser {
  public:
-  PerfStatParser(const std::string& file, const PowerImportOptions& options, const ImportLimits& limits)
+  PerfStatParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
       : file_(file), options_(options), limits_(limits) {}
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
@@ -172,7 +173,7 @@ class PerfStatParser {
   PowerTrace make_trace(const std::vector<double>& ends) const;
 
   const std::string& file_;
-  const PowerImportOptions& options_;
+  const ParseOptions& options_;
   const ImportLimits& limits_;
   std::vector<std::string_view> scratch_;
   std::optional<bool> interval_mode_;
@@ -394,24 +395,14 @@ int PerfStatImporter::sniff(std::string_view head, std::string_view) const {
   return score;
 }
 
-ImportBatch PerfStatImporter::parse(const std::string& path, const ImportLimits& limits,
+ImportBatch PerfStatImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                                     const CancelToken& cancel) const {
-  return read_perf_stat(path, {}, limits, cancel);
+  return meter::parse_log<PerfStatParser>(PowerLineReader(path), path, options, limits, cancel);
 }
 
-ImportBatch read_perf_stat(const std::string& path, const PowerImportOptions& options, const ImportLimits& limits,
-                           const CancelToken& cancel) {
-  PowerLineReader lines(path);
-  PerfStatParser parser(path, options, limits);
-  return meter::run_lines(lines, parser, cancel);
-}
-
-ImportBatch parse_perf_stat(std::string_view text, const std::string& file) {
-  const PowerImportOptions options;
-  const ImportLimits limits;
-  PowerLineReader lines(text, file);
-  PerfStatParser parser(file, options, limits);
-  return meter::run_lines(lines, parser, CancelToken{});
+ImportBatch parse_perf_stat(const std::string& text, const std::string& file, const ParseOptions& options,
+                            const ImportLimits& limits, const CancelToken& cancel) {
+  return meter::parse_log<PerfStatParser>(PowerLineReader(text, file), file, options, limits, cancel);
 }
 
 }  // namespace bs

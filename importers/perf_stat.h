@@ -20,7 +20,6 @@
 #include <string>
 
 #include "importer.h"
-#include "power_options.h"
 
 namespace bs {
 
@@ -29,11 +28,13 @@ class PerfStatImporter final : public Importer {
   std::string_view id() const override { return "perf-stat-rapl"; }
   std::string_view description() const override { return "perf stat RAPL energy (power/energy-pkg/ ...)"; }
   int sniff(std::string_view head, std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
-ImportBatch read_perf_stat(const std::string& path, const PowerImportOptions& options = {},
-                           const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
-ImportBatch parse_perf_stat(std::string_view text, const std::string& file);
+// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
+ImportBatch parse_perf_stat(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                            const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

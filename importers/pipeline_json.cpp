@@ -6,6 +6,7 @@
 
 #include "json_access.h"
 #include "model/provenance_json.h"
+#include "text_file.h"
 
 namespace bs {
 namespace {
@@ -90,17 +91,14 @@ int PipelineJsonImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-ImportBatch PipelineJsonImporter::parse(const std::string& path, const ImportLimits& limits,
-                                        const CancelToken& cancel) const {
-  const std::string text = read_whole_file(path, limits.max_json_bytes);
-  cancel.throw_if_cancelled();
-  return parse_pipeline_json(text, path, limits, &cancel);
+ImportBatch PipelineJsonImporter::parse(const std::string& path, const ParseOptions& options,
+                                        const ImportLimits& limits, const CancelToken& cancel) const {
+  return parse_text_file(path, options, limits, cancel, parse_pipeline_json);
 }
 
-ImportBatch parse_pipeline_json(std::string_view text, const std::string& file, const ImportLimits& limits,
-                                const CancelToken* cancel) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-  const json doc = json_access::parse(text, file, limits, cancel);
+ImportBatch parse_pipeline_json(const std::string& text, const std::string& file, const ParseOptions& /*options*/,
+                                const ImportLimits& limits, const CancelToken& cancel) {
+  const json doc = json_access::parse(text, file, limits, &cancel);
   const Reader r(file, text);
   r.require_object(doc, "");
   const std::string format = r.require_string(doc, "", "format");

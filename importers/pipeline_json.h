@@ -18,13 +18,14 @@ class PipelineJsonImporter final : public Importer {
   std::string_view description() const override { return "BenchScope pipeline timing JSON v1"; }
   int sniff(std::string_view head, std::string_view path) const override;
   bool usual_extension(std::string_view path) const override { return path.ends_with(".json"); }
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
 // Parses pipeline JSON text; `file` names the source in errors. Throws ImportError naming file, line:column and
-// the JSON pointer of the bad field.
-ImportBatch parse_pipeline_json(std::string_view text, const std::string& file, const ImportLimits& limits = {},
-                                const CancelToken* cancel = nullptr);
+// the JSON pointer of the bad field. No options.
+ImportBatch parse_pipeline_json(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                                const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 // Serialises one run (keys in a fixed order, doubles that read back bit-identical). Throws std::invalid_argument
 // when the run breaks a rule the reader enforces (no stages, n = 0, a negative or non-finite time, ...).

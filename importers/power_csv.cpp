@@ -325,7 +325,7 @@ enum class TimeMode {
 // The parser proper: header and comment lines first, then one row per line. Plain data in, ImportBatch out.
 class PowerCsvParser {
  public:
-  PowerCsvParser(const std::string& file, const PowerImportOptions& options, const ImportLimits& limits)
+  PowerCsvParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
       : file_(file), options_(options), limits_(limits) {}
 
   void line(std::string_view raw, std::size_t line_no) {
@@ -366,7 +366,7 @@ class PowerCsvParser {
   void drop_empty_channels();
 
   const std::string& file_;
-  const PowerImportOptions& options_;
+  const ParseOptions& options_;
   const ImportLimits& limits_;
   std::vector<Column> columns_;
   std::vector<int> channel_of_;             // column index -> channel index, -1 for time and ignored columns
@@ -944,17 +944,14 @@ int PowerCsvImporter::sniff(std::string_view head, std::string_view) const {
 
 bool PowerCsvImporter::usual_extension(std::string_view path) const { return usual(path); }
 
-ImportBatch PowerCsvImporter::parse(const std::string& path, const ImportLimits& limits,
-                                    const CancelToken& cancel) const {
-  return read_power_csv(path, {}, limits, cancel);
-}
-
 namespace {
 
 // One pass over the lines. Once some rows are in, the columns are sized from the mean row length and the total
 // size (for files the file system's, which the file cannot lie about), so a 100 MB log does not double its
 // vectors a dozen times; the reservation is capped by the row limit.
-ImportBatch parse_lines(PowerLineReader& lines, PowerCsvParser& parser, const CancelToken& cancel) {
+ImportBatch parse_lines(PowerLineReader&& lines, const std::string& file, const ParseOptions& options,
+                        const ImportLimits& limits, const CancelToken& cancel) {
+  PowerCsvParser parser(file, options, limits);
   bool reserved = false;
   while (const auto line = lines.next()) {
     parser.line(*line, lines.line_number());
@@ -975,18 +972,14 @@ ImportBatch parse_lines(PowerLineReader& lines, PowerCsvParser& parser, const Ca
 
 }  // namespace
 
-ImportBatch read_power_csv(const std::string& path, const PowerImportOptions& options, const ImportLimits& limits,
-                           const CancelToken& cancel) {
-  PowerLineReader lines(path);
-  PowerCsvParser parser(path, options, limits);
-  return parse_lines(lines, parser, cancel);
+ImportBatch PowerCsvImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                                    const CancelToken& cancel) const {
+  return parse_lines(PowerLineReader(path), path, options, limits, cancel);
 }
 
-ImportBatch parse_power_csv(std::string_view text, const std::string& file, const CancelToken& cancel,
-                            const PowerImportOptions& options, const ImportLimits& limits) {
-  PowerLineReader lines(text, file);
-  PowerCsvParser parser(file, options, limits);
-  return parse_lines(lines, parser, cancel);
+ImportBatch parse_power_csv(const std::string& text, const std::string& file, const ParseOptions& options,
+                            const ImportLimits& limits, const CancelToken& cancel) {
+  return parse_lines(PowerLineReader(text, file), file, options, limits, cancel);
 }
 
 }  // namespace bs

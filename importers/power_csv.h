@@ -32,7 +32,6 @@
 #include <string>
 
 #include "importer.h"
-#include "power_options.h"
 
 namespace bs {
 
@@ -42,14 +41,13 @@ class PowerCsvImporter final : public Importer {
   std::string_view description() const override { return "current/power log (CSV: generic, Joulescope, Otii, INA219)"; }
   int sniff(std::string_view head, std::string_view path) const override;
   bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  // Streams the file (memory: the parsed columns plus one 1 MiB block).
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
-// Streams the file at `path` (memory: the parsed columns plus one 1 MiB block).
-ImportBatch read_power_csv(const std::string& path, const PowerImportOptions& options = {},
-                           const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 // The same parser over text already in memory; `file` names it in errors.
-ImportBatch parse_power_csv(std::string_view text, const std::string& file, const CancelToken& cancel = CancelToken{},
-                            const PowerImportOptions& options = {}, const ImportLimits& limits = {});
+ImportBatch parse_power_csv(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                            const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Importing a power log with options the generic import_file() cannot pass (supply voltage, tegrastats
+// Importing a power log with the ParseOptions the generic import_file() does not pass (supply voltage, tegrastats
 // interval, platform): the same text checks and sniffing, restricted to the power formats.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "importer.h"
-#include "power_options.h"
 
 namespace bs {
 
@@ -17,7 +16,7 @@ std::vector<std::unique_ptr<Importer>> make_power_importers();
 
 // Rejects empty / binary / UTF-16 files like import_file(), picks the power format by content and parses
 // with `options`. UnknownFormat when the file is neither.
-ImportBatch import_power_log(const std::string& path, const PowerImportOptions& options = {},
+ImportBatch import_power_log(const std::string& path, const ParseOptions& options = {},
                              const CancelToken& cancel = CancelToken{}, const ImportLimits& limits = {});
 
 }  // namespace bs

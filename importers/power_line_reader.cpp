@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "import_error.h"
-#include "power_options.h"
+#include "importer.h"
 
 namespace bs {
 namespace {
@@ -15,12 +15,10 @@ namespace {
 // Big enough that the per-block bookkeeping is noise, small enough to stay in L2 with the parsed columns.
 constexpr std::size_t kBlockBytes = std::size_t{1} << 20;
 
-std::string_view drop_bom(std::string_view s) { return s.starts_with("\xEF\xBB\xBF") ? s.substr(3) : s; }
-
 }  // namespace
 
 PowerLineReader::PowerLineReader(std::string_view text, std::string name)
-    : path_(std::move(name)), text_(drop_bom(text)), file_size_(text.size()) {
+    : path_(std::move(name)), text_(strip_utf8_bom(text)), file_size_(text.size()) {
   consumed_ = text.size() - text_.size();
 }
 
@@ -59,7 +57,7 @@ bool PowerLineReader::refill() {
   if (first_block_) {
     first_block_ = false;
     const std::size_t before = text_.size();
-    text_ = drop_bom(text_);
+    text_ = strip_utf8_bom(text_);
     consumed_ += before - text_.size();
   }
   return got > 0;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Lines of a text log, read in fixed-size blocks so a log of any length is parsed in one pass with bounded
-// memory. Line endings LF or CRLF; a UTF-8 byte-order mark at the start is dropped. Used by the power importers.
+// memory. Line endings LF or CRLF; a UTF-8 byte-order mark at the start is dropped
+// (strip_utf8_bom). Used by the power importers.
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -10,6 +11,10 @@
 #include <vector>
 
 namespace bs {
+
+// The longest line a power log may have: anything longer is not a log line, and the streaming reader's buffer
+// never grows beyond it.
+inline constexpr std::size_t kMaxPowerLogLineBytes = std::size_t{1} << 20;
 
 class PowerLineReader {
  public:

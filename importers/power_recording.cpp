@@ -33,7 +33,6 @@ struct Header {
 Header read_header(std::string_view text, const std::string& file) {
   Header h;
   std::size_t line_no = 0, pos = 0;
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   while (pos < text.size()) {
     const auto nl = text.find('\n', pos);
     const std::string_view line =
@@ -131,18 +130,19 @@ int PowerRecordingImporter::sniff(std::string_view head, std::string_view) const
 
 bool PowerRecordingImporter::usual_extension(std::string_view path) const { return path.ends_with(".csv"); }
 
-ImportBatch PowerRecordingImporter::parse(const std::string& path, const ImportLimits& limits,
-                                          const CancelToken& cancel) const {
+// The settings come from the comment block, never from the options: the power-CSV parser gets the defaults.
+ImportBatch PowerRecordingImporter::parse(const std::string& path, const ParseOptions& /*options*/,
+                                          const ImportLimits& limits, const CancelToken& cancel) const {
   // The comment block is in the first 64 KiB (a few hundred phases at most); the rows stream through power-csv.
   const std::string head = read_head(path);
-  const Header h = read_header(head, path);
-  return finish(read_power_csv(path, {}, limits, cancel), h, path);
+  const Header h = read_header(strip_utf8_bom(head), path);
+  return finish(PowerCsvImporter().parse(path, ParseOptions{}, limits, cancel), h, path);
 }
 
-ImportBatch parse_power_recording(std::string_view text, const std::string& file, const ImportLimits& limits,
-                                  const CancelToken& cancel) {
-  const Header h = read_header(text.substr(0, 64 * 1024), file);
-  return finish(parse_power_csv(text, file, cancel, {}, limits), h, file);
+ImportBatch parse_power_recording(const std::string& text, const std::string& file, const ParseOptions& /*options*/,
+                                  const ImportLimits& limits, const CancelToken& cancel) {
+  const Header h = read_header(std::string_view(text).substr(0, 64 * 1024), file);
+  return finish(parse_power_csv(text, file, ParseOptions{}, limits, cancel), h, file);
 }
 
 }  // namespace bs

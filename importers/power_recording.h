@@ -18,11 +18,13 @@ class PowerRecordingImporter final : public Importer {
   std::string_view description() const override { return "BenchScope on-board sensor power recording (CSV)"; }
   int sniff(std::string_view head, std::string_view path) const override;
   bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
-// The same over text in memory (tests, fuzzing); `file` names it in errors.
-ImportBatch parse_power_recording(std::string_view text, const std::string& file, const ImportLimits& limits = {},
-                                  const CancelToken& cancel = CancelToken{});
+// The same over text in memory (tests, fuzzing); `file` names it in errors. No options: the comment block says
+// what they would.
+ImportBatch parse_power_recording(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                                  const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

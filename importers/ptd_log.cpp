@@ -12,6 +12,7 @@
 
 #include "analysis/power/power_time.h"
 #include "meter_log_text.h"
+#include "power_line_reader.h"
 
 namespace bs {
 namespace {
@@ -48,7 +49,7 @@ struct Slot {
 
 class PtdParser {
  public:
-  PtdParser(const std::string& file, const PowerImportOptions& options, const ImportLimits& limits)
+  PtdParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
       : file_(file), options_(options), limits_(limits) {}
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
@@ -64,7 +65,7 @@ class PtdParser {
   }
 
   const std::string& file_;
-  const PowerImportOptions& options_;
+  const ParseOptions& options_;
   const ImportLimits& limits_;
   std::vector<std::string_view> f_;
   std::vector<Slot> slots_;  // fixed by the first sample
@@ -250,24 +251,14 @@ int PtdLogImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-ImportBatch PtdLogImporter::parse(const std::string& path, const ImportLimits& limits,
+ImportBatch PtdLogImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                                   const CancelToken& cancel) const {
-  return read_ptd_log(path, {}, limits, cancel);
+  return meter::parse_log<PtdParser>(PowerLineReader(path), path, options, limits, cancel);
 }
 
-ImportBatch read_ptd_log(const std::string& path, const PowerImportOptions& options, const ImportLimits& limits,
-                         const CancelToken& cancel) {
-  PowerLineReader lines(path);
-  PtdParser parser(path, options, limits);
-  return meter::run_lines(lines, parser, cancel);
-}
-
-ImportBatch parse_ptd_log(std::string_view text, const std::string& file) {
-  const PowerImportOptions options;
-  const ImportLimits limits;
-  PowerLineReader lines(text, file);
-  PtdParser parser(file, options, limits);
-  return meter::run_lines(lines, parser, CancelToken{});
+ImportBatch parse_ptd_log(const std::string& text, const std::string& file, const ParseOptions& options,
+                          const ImportLimits& limits, const CancelToken& cancel) {
+  return meter::parse_log<PtdParser>(PowerLineReader(text, file), file, options, limits, cancel);
 }
 
 }  // namespace bs

@@ -13,7 +13,6 @@
 #include <string>
 
 #include "importer.h"
-#include "power_options.h"
 
 namespace bs {
 
@@ -22,11 +21,13 @@ class PtdLogImporter final : public Importer {
   std::string_view id() const override { return "ptdaemon"; }
   std::string_view description() const override { return "SPEC PTDaemon power log (MLPerf spl.txt)"; }
   int sniff(std::string_view head, std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
-ImportBatch read_ptd_log(const std::string& path, const PowerImportOptions& options = {},
-                         const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
-ImportBatch parse_ptd_log(std::string_view text, const std::string& file);
+// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
+ImportBatch parse_ptd_log(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                          const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

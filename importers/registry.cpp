@@ -95,6 +95,12 @@ std::string read_whole_file(const std::string& path, std::size_t max_bytes) {
   return text;
 }
 
+std::string_view strip_utf8_bom(std::string_view text) {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  if (text.starts_with(kBom)) text.remove_prefix(kBom.size());
+  return text;
+}
+
 namespace {
 
 // Counts bytes that cannot be text: C0 controls other than tab, LF, CR, FF, and bytes that do not form UTF-8.
@@ -145,6 +151,16 @@ std::string_view wide_encoding(std::string_view head) {
   return {};
 }
 
+// The chosen importer's parse with the default options, the batch labelled with its file and format.
+ImportBatch parse_as(const Importer& importer, const std::string& path, const ImportLimits& limits,
+                     const CancelToken& cancel) {
+  cancel.throw_if_cancelled();
+  ImportBatch batch = importer.parse(path, ParseOptions{}, limits, cancel);
+  batch.source_path = path;
+  batch.format = std::string(importer.id());
+  return batch;
+}
+
 }  // namespace
 
 void check_text(std::string_view head, const std::string& path) {
@@ -156,8 +172,7 @@ void check_text(std::string_view head, const std::string& path) {
     throw ImportError(ImportErrorCategory::Encoding, at, "file is UTF-32 (byte-order mark); save it as UTF-8");
   if (head.starts_with("\xFF\xFE") || head.starts_with("\xFE\xFF"))
     throw ImportError(ImportErrorCategory::Encoding, at, "file is UTF-16 (byte-order mark); save it as UTF-8");
-  std::string_view body = head;
-  if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
+  const std::string_view body = strip_utf8_bom(head);
   if (body.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
     throw ImportError(ImportErrorCategory::Empty, at,
                       head.empty() ? "file is empty (0 bytes)" : "file holds only whitespace");
@@ -195,16 +210,9 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
       best = imp.get();
     }
   }
-  if (best) {
-    cancel.throw_if_cancelled();
-    ImportBatch batch = best->parse(path, limits, cancel);
-    batch.source_path = path;
-    batch.format = std::string(best->id());
-    return batch;
-  }
+  if (best) return parse_as(*best, path, limits, cancel);
   check_text(head, path);
-  std::string_view view = head;
-  if (view.starts_with("\xEF\xBB\xBF")) view.remove_prefix(3);
+  const std::string_view view = strip_utf8_bom(head);
   for (const auto& imp : all_importers()) {
     if (imp->binary()) continue;
     const int content = imp->sniff(view, path);
@@ -221,11 +229,7 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
     throw ImportError(ImportErrorCategory::UnknownFormat, {path, 0, 0, {}},
                       "not a format BenchScope reads (tried: " + tried + ")");
   }
-  cancel.throw_if_cancelled();
-  ImportBatch batch = best->parse(path, limits, cancel);
-  batch.source_path = path;
-  batch.format = std::string(best->id());
-  return batch;
+  return parse_as(*best, path, limits, cancel);
 }
 
 }  // namespace bs

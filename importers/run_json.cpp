@@ -18,6 +18,7 @@
 #include "analysis/peaks/flops.h"
 #include "json_access.h"
 #include "model/provenance_json.h"
+#include "text_file.h"
 
 namespace bs {
 namespace {
@@ -229,17 +230,14 @@ int RunJsonImporter::sniff(std::string_view head, std::string_view) const {
 
 bool RunJsonImporter::usual_extension(std::string_view path) const { return path.ends_with(".json"); }
 
-ImportBatch RunJsonImporter::parse(const std::string& path, const ImportLimits& limits,
+ImportBatch RunJsonImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                                    const CancelToken& cancel) const {
-  const std::string text = read_whole_file(path, limits.max_json_bytes);
-  cancel.throw_if_cancelled();
-  return parse_run_json(text, path, limits, &cancel);
+  return parse_text_file(path, options, limits, cancel, parse_run_json);
 }
 
-ImportBatch parse_run_json(std::string_view text, const std::string& file, const ImportLimits& limits,
-                           const CancelToken* cancel) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-  const json doc = json_access::parse(text, file, limits, cancel);
+ImportBatch parse_run_json(const std::string& text, const std::string& file, const ParseOptions& /*options*/,
+                           const ImportLimits& limits, const CancelToken& cancel) {
+  const json doc = json_access::parse(text, file, limits, &cancel);
   const Reader r(file, text);
   r.require_object(doc, "");
   const std::string format = r.require_string(doc, "", "format");
@@ -260,7 +258,7 @@ ImportBatch parse_run_json(std::string_view text, const std::string& file, const
   batch.format = "benchscope-run-v1";
   const json& runs = r.require_array(r.require(doc, "", "runs"), "/runs");
   if (runs.empty()) r.fail(ImportErrorCategory::InvalidValue, "/runs", "the file holds no runs");
-  ReadState st{r, limits, cancel, file_provenance, batch};
+  ReadState st{r, limits, &cancel, file_provenance, batch};
   batch.runs.reserve(runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) batch.runs.push_back(read_run(st, runs[i], child("/runs", i)));
   return batch;

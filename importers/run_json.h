@@ -17,12 +17,13 @@ class RunJsonImporter final : public Importer {
   std::string_view description() const override { return "BenchScope run JSON v1"; }
   int sniff(std::string_view head, std::string_view path) const override;
   bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
-// Parses run JSON text; `file` names the source in errors. Throws ImportError (or Cancelled).
-ImportBatch parse_run_json(std::string_view text, const std::string& file, const ImportLimits& limits = {},
-                           const CancelToken* cancel = nullptr);
+// Parses run JSON text; `file` names the source in errors. Throws ImportError (or Cancelled). No options.
+ImportBatch parse_run_json(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                           const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 // Serialises runs as run JSON v1: pretty, keys in a fixed order, doubles in the shortest form that reads back
 // bit-identical, "flops_mean" per sample for human readers. With `file_default`, it is written as the file-level

@@ -102,7 +102,7 @@ constexpr std::string_view kSumChannel = "sum of rails";
 
 class TegrastatsParser {
  public:
-  TegrastatsParser(const std::string& file, const PowerImportOptions& options, const ImportLimits& limits)
+  TegrastatsParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
       : file_(file), options_(options), limits_(limits) {
     if (!(options.interval_s > 0) || !std::isfinite(options.interval_s))
       throw ImportError(ImportErrorCategory::InvalidValue, {file, 0, 0, "interval"}, "the interval must be > 0 s");
@@ -117,7 +117,7 @@ class TegrastatsParser {
       batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
   }
   const std::string& file_;
-  const PowerImportOptions& options_;
+  const ParseOptions& options_;
   const ImportLimits& limits_;
   std::vector<std::string_view> tok_;
   std::vector<std::pair<std::string_view, double>> values_;
@@ -277,26 +277,14 @@ int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
   return score;
 }
 
-ImportBatch TegrastatsImporter::parse(const std::string& path, const ImportLimits& limits,
+ImportBatch TegrastatsImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                                       const CancelToken& cancel) const {
-  return read_tegrastats(path, {}, limits, cancel);
+  return meter::parse_log<TegrastatsParser>(PowerLineReader(path), path, options, limits, cancel);
 }
 
-ImportBatch read_tegrastats(const std::string& path, const PowerImportOptions& options, const ImportLimits& limits,
-                            const CancelToken& cancel) {
-  PowerLineReader lines(path);
-  TegrastatsParser parser(path, options, limits);
-  return meter::run_lines(lines, parser, cancel);
-}
-
-ImportBatch parse_tegrastats(std::string_view text, const std::string& file, double interval_s) {
-  PowerImportOptions options;
-  options.interval_s = interval_s;
-  const ImportLimits limits;
-  const CancelToken cancel;
-  PowerLineReader lines(text, file);
-  TegrastatsParser parser(file, options, limits);
-  return meter::run_lines(lines, parser, cancel);
+ImportBatch parse_tegrastats(const std::string& text, const std::string& file, const ParseOptions& options,
+                             const ImportLimits& limits, const CancelToken& cancel) {
+  return meter::parse_log<TegrastatsParser>(PowerLineReader(text, file), file, options, limits, cancel);
 }
 
 }  // namespace bs

@@ -17,7 +17,6 @@
 #include <string>
 
 #include "importer.h"
-#include "power_options.h"
 
 namespace bs {
 
@@ -26,11 +25,13 @@ class TegrastatsImporter final : public Importer {
   std::string_view id() const override { return "tegrastats"; }
   std::string_view description() const override { return "NVIDIA tegrastats log (Jetson rails)"; }
   int sniff(std::string_view head, std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ImportLimits& limits, const CancelToken& cancel) const override;
+  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
 };
 
-ImportBatch read_tegrastats(const std::string& path, const PowerImportOptions& options = {},
-                            const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
-ImportBatch parse_tegrastats(std::string_view text, const std::string& file, double interval_s = 1.0);
+// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
+ImportBatch parse_tegrastats(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                             const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 
 }  // namespace bs

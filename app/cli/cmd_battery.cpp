@@ -181,7 +181,7 @@ int run_battery(const std::vector<std::string>& raw, std::ostream& out, std::ost
     mission = constant_load(watts, extra);
     source = "given";
   } else if (const auto log = args.value("--power-log")) {
-    PowerImportOptions import_options;
+    ParseOptions import_options;
     if (args.value("--supply-volts")) {
       import_options.supply_voltage_v = args.number("--supply-volts", 0);
       if (!(*import_options.supply_voltage_v > 0)) throw UsageError("--supply-volts must be > 0");

@@ -64,7 +64,7 @@ struct LoadedTrace {
 };
 
 // Files through the power importers with the options; a single workspace argument through the workspace.
-std::vector<LoadedTrace> load_traces(const std::vector<std::string>& paths, const PowerImportOptions& options) {
+std::vector<LoadedTrace> load_traces(const std::vector<std::string>& paths, const ParseOptions& options) {
   std::vector<LoadedTrace> out;
   if (paths.size() == 1 && looks_like_workspace(paths[0])) {
     for (PowerTrace& t : load_inputs(paths, interrupt_token()).power_traces) out.push_back({std::move(t), {}});
@@ -87,7 +87,7 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   const ParsedArgs args = parse_args(raw, {"--json", "--phases"},
                                      {"--supply-volts", "--from", "--to", "--interval", "--min-phase", "--min-step"});
   if (args.positional.empty()) throw UsageError("power needs current/power log files (or a workspace)");
-  PowerImportOptions options;
+  ParseOptions options;
   PowerStatsOptions stats_options;
   if (args.value("--supply-volts")) {
     options.supply_voltage_v = args.number("--supply-volts", 0);
@@ -315,7 +315,7 @@ int bench_power_csv_impl(const std::vector<std::string>& raw, std::ostream& out)
   ParseRun ours, ref;
   for (int r = 0; r < runs; ++r) {
     ours = measure([&] {
-      const ImportBatch b = read_power_csv(path, {}, {}, interrupt_token());
+      const ImportBatch b = PowerCsvImporter().parse(path, {}, {}, interrupt_token());
       ParseRun p;
       const PowerTrace& t = b.power_traces.at(0);
       p.rows = t.time_s.size();

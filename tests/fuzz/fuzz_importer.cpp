@@ -75,7 +75,7 @@ void run_one(const std::uint8_t* data, std::size_t size) {
           .write(samples.data(), static_cast<std::streamsize>(samples.size()));
       const Importer* imp = find_importer(id);
       if (!imp || imp->sniff({}, raw) != 100) finding("raw-bayer does not claim a .raw with a sidecar");
-      (void)imp->parse(raw, fuzz_limits(), cancel);
+      (void)imp->parse(raw, ParseOptions{}, fuzz_limits(), cancel);
     } else {
       const Importer* imp = find_importer(id);
       if (!imp) finding("unknown importer id");
@@ -83,7 +83,7 @@ void run_one(const std::uint8_t* data, std::size_t size) {
       (void)imp->sniff(text.substr(0, 64 * 1024), scratch_path());
       // As import_file does before any text importer runs; binary formats (frames) skip the text check.
       if (!imp->binary()) check_text(text.substr(0, 64 * 1024), scratch_path());
-      derive(imp->parse(scratch_path(), fuzz_limits(), cancel));
+      derive(imp->parse(scratch_path(), ParseOptions{}, fuzz_limits(), cancel));
     }
   } catch (const ImportError&) {
     // The expected way to reject a bad file.

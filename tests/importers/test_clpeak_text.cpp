@@ -16,7 +16,7 @@ const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";
 
 bs::ImportBatch parse_file(const std::string& name) {
   const bs::CancelToken cancel;
-  return bs::ClpeakTextImporter().parse(kData + name, {}, cancel);
+  return bs::ClpeakTextImporter().parse(kData + name, {}, {}, cancel);
 }
 
 const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, const std::string& metric) {

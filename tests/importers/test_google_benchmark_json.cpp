@@ -61,7 +61,7 @@ std::string read_text(const std::string& path) {
 
 bs::ImportBatch parse_file(const std::string& name) {
   const bs::CancelToken cancel;
-  return bs::GoogleBenchmarkJsonImporter().parse(kData + name, {}, cancel);
+  return bs::GoogleBenchmarkJsonImporter().parse(kData + name, {}, {}, cancel);
 }
 
 // A one-row document with the given counters, for unit inference.
@@ -327,7 +327,9 @@ class TestGoogleBenchmarkJson : public QObject {
     QVERIFY(peak && near(peak->flops, 15.2e9) && peak->workers == 4 && peak->at_peak.n == 1);
     // The caller's option wins over the file; argument 1 does not exist, so nothing is swept (with a warning).
     const std::string text = read_text(kData + "rotation-argument-sweep.json");
-    const auto other = bs::parse_google_benchmark_json(text, "a.json", {}, nullptr, {.workers_argument = 1});
+    bs::ParseOptions options;
+    options.workers_argument = 1;
+    const auto other = bs::parse_google_benchmark_json(text, "a.json", options);
     QCOMPARE(setting(other.result_sets[0].provenance, "workers from"), std::string("argument 1"));
     QVERIFY(bs::foreign_sweeps(other.result_sets[0]).empty());
     QCOMPARE(other.warnings.size(), std::size_t{4});

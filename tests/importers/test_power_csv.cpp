@@ -41,8 +41,8 @@ class TestPowerCsv : public QObject {
  private slots:
   void paper_sample_log() {
     const bs::CancelToken cancel;
-    const auto batch =
-        bs::PowerCsvImporter().parse(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/nuc-current.csv", {}, cancel);
+    const auto batch = bs::PowerCsvImporter().parse(
+        BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/nuc-current.csv", {}, {}, cancel);
     const bs::PowerTrace& t = batch.power_traces.at(0);
     QCOMPARE(t.platform, std::string("NUC"));
     QCOMPARE(*t.supply_voltage_v, 16.0);

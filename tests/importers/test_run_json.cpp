@@ -54,7 +54,7 @@ std::string read_text(const std::string& path) {
 
 bs::ImportBatch load_fixture() {
   const bs::CancelToken cancel;
-  return bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, cancel);
+  return bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, {}, cancel);
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -118,7 +118,7 @@ bs::FlopsRun awkward_run() {
   return run;
 }
 
-bs::ImportError error_of(std::string_view text, const std::string& file = "e.json") {
+bs::ImportError error_of(const std::string& text, const std::string& file = "e.json") {
   return bs::test::import_error_of([&] { return bs::parse_run_json(text, file); });
 }
 
@@ -335,7 +335,7 @@ class TestRunJson : public QObject {
     bs::save_run_json(path, batch.runs);                                         // replaces an existing file
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"out.json"});  // no temporary left behind
     const bs::CancelToken cancel;
-    expect_same_runs(batch.runs, bs::RunJsonImporter().parse(path, {}, cancel).runs);
+    expect_same_runs(batch.runs, bs::RunJsonImporter().parse(path, {}, {}, cancel).runs);
     QVERIFY_THROWS_EXCEPTION(std::runtime_error,
                              bs::save_run_json(dir.filePath("no-such-dir/out.json").toStdString(), batch.runs));
   }
@@ -361,7 +361,7 @@ class TestRunJson : public QObject {
         R"({"format":"benchscope-run","version":1,"runs":[{"platform":"p","device":"d","backend":"b",
         "params":{"iterations":10,"dims":1},"samples":[{"workers":1,"seconds":[1,1,1,1]}]}]})";
     try {
-      bs::parse_run_json(text, "big.json", limits);
+      bs::parse_run_json(text, "big.json", {}, limits);
       QFAIL("accepted");
     } catch (const bs::ImportError& e) {
       QCOMPARE(e.category(), bs::ImportErrorCategory::TooLarge);
@@ -369,7 +369,7 @@ class TestRunJson : public QObject {
     bs::ImportLimits values;
     values.max_json_values = 10;
     try {
-      bs::parse_run_json(text, "big.json", values);
+      bs::parse_run_json(text, "big.json", {}, values);
       QFAIL("accepted");
     } catch (const bs::ImportError& e) {
       QCOMPARE(e.category(), bs::ImportErrorCategory::TooLarge);
@@ -379,7 +379,8 @@ class TestRunJson : public QObject {
   void cancelling_stops_the_import() {
     bs::CancelToken cancel;
     cancel.cancel();
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, cancel));
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled,
+                             bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, {}, cancel));
   }
 
   void pointers_map_to_offsets() {

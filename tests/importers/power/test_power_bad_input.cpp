@@ -39,8 +39,8 @@ class TestPowerBadInput : public QObject {
         QVERIFY2(what.find(text) != std::string::npos, what.c_str());
       QVERIFY2(e.location().line > 0, what.c_str());
       try {
-        bs::read_power_csv(path);
-        QFAIL(qPrintable(QString::fromStdString(path) + " was accepted by read_power_csv"));
+        bs::PowerCsvImporter().parse(path, {}, {}, bs::CancelToken{});
+        QFAIL(qPrintable(QString::fromStdString(path) + " was accepted by PowerCsvImporter::parse"));
       } catch (const bs::ImportError&) {
       }
       ++checked;
@@ -84,7 +84,7 @@ class TestPowerBadInput : public QObject {
     bs::ImportLimits limits;
     limits.max_power_rows = 3;  // the meter CSV's own row limit (100M-row logs are allowed by default)
     try {
-      bs::parse_power_csv("time_s,current_A\n0,1\n1,1\n2,1\n3,1\n", "log.csv", bs::CancelToken{}, {}, limits);
+      bs::parse_power_csv("time_s,current_A\n0,1\n1,1\n2,1\n3,1\n", "log.csv", {}, limits);
       QFAIL("accepted more rows than the limit");
     } catch (const bs::ImportError& e) {
       QCOMPARE(e.category(), bs::ImportErrorCategory::TooLarge);
@@ -104,7 +104,7 @@ class TestPowerBadInput : public QObject {
     token.cancel();
     std::string text = "time_s,current_A\n";
     for (int k = 0; k < 5000; ++k) text += std::to_string(k) + ",1\n";
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::parse_power_csv(text, "log.csv", token));
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::parse_power_csv(text, "log.csv", {}, {}, token));
   }
 };
 

@@ -164,7 +164,7 @@ class TestPowerFormats : public QObject {
     QCOMPARE(channel(t, bs::PowerQuantity::Current).values[9], 0.599);
     QVERIFY(!t.supply_voltage_v);  // current only, no supply: kept empty, and said so
     QVERIFY(b.warnings.at(0).find("no supply voltage") != std::string::npos);
-    bs::PowerImportOptions options;
+    bs::ParseOptions options;
     options.supply_voltage_v = 16.0;
     options.platform = "Jetson TX2";
     b = bs::import_power_log(kData + "tab-ms-ma.tsv", options);
@@ -216,7 +216,7 @@ class TestPowerFormats : public QObject {
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(text.data(), static_cast<qint64>(text.size()));
     f.close();
-    const auto streamed = bs::read_power_csv(path).power_traces.at(0);
+    const auto streamed = bs::PowerCsvImporter().parse(path, {}, {}, bs::CancelToken{}).power_traces.at(0);
     const auto memory = bs::parse_power_csv(text, path).power_traces.at(0);
     QCOMPARE(streamed.time_s.size(), std::size_t{120000});
     QVERIFY(streamed.time_s == memory.time_s);

@@ -60,12 +60,13 @@ class TestTegrastatsLogs : public QObject {
     QCOMPARE(t.start_time, std::string("2026-12-31T23:59:59"));
   }
   void interval_option() {
-    bs::PowerImportOptions options;
+    bs::ParseOptions options;
     options.interval_s = 0.25;
     const auto b = bs::import_power_log(kData + "tegrastats-nano-jetpack4.log", options);
     QCOMPARE(b.format, std::string("tegrastats"));
     QCOMPARE(b.power_traces.at(0).time_s[3], 0.75);
-    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_tegrastats("RAM 1/2MB VDD_IN 1/1\n", "t.log", 0.0));
+    options.interval_s = 0.0;
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_tegrastats("RAM 1/2MB VDD_IN 1/1\n", "t.log", options));
   }
   void broken_logs() {
     // Rails that change in the middle: an error at that line; at the very end: a cut-off line, skipped.

@@ -13,7 +13,7 @@ namespace {
 
 std::vector<bs::ResultSet> sets_of(const std::string& fixture) {
   return bs::ClpeakTextImporter()
-      .parse(BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/" + fixture, {}, bs::CancelToken{})
+      .parse(BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/" + fixture, {}, {}, bs::CancelToken{})
       .result_sets;
 }
 
