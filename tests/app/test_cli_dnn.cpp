@@ -5,6 +5,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "store/workspace.h"
 #include "vision/dnn_bench.h"
 
@@ -50,6 +52,46 @@ class TestCliDnn : public QObject {
     QVERIFY2(
         p.out.contains("Detection network inference") && p.out.contains("mobilenet-ssd (SSD), architecture timing"),
         p.out.constData());
+  }
+
+  // A real ONNX file (tests/data/dnn/yolov8-known.onnx, SOURCES there): `bench dnn --model` finds its family and
+  // input size, times it and stores it with the file's hash; `pipeline --detector` runs it as the detection stage
+  // and figure 3 shows its two boxes where the fixture's known output puts them.
+  void onnx_model_file_is_timed_and_detects() {
+    const QString model = BENCHSCOPE_TEST_DATA_DIR "/dnn/yolov8-known.onnx";
+    const QString ws = dir_.filePath("onnx.bsw");
+    const auto r = cli(
+        {"bench", "dnn", "--model", model, "--runs", "2", "--backend", "cpu", "--platform", "lab", "--workspace", ws});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.out.contains("yolov8-known.onnx (YOLOv8 output), input 640x640, batch 1"), r.out.constData());
+    QVERIFY(!r.out.contains("architecture timing"));
+    const bs::Workspace w(ws.toStdString());
+    const auto runs = w.dnn_runs();
+    QCOMPARE(runs.size(), std::size_t{1});
+    const bs::DnnRun& d = runs.front().run;
+    QCOMPARE(d.model, std::string("yolov8-known.onnx"));
+    QCOMPARE(d.family, std::string("YOLOv8"));
+    QVERIFY(!d.architecture_only);
+    QCOMPARE(d.model_hash, bs::file_content_hash(model.toStdString()));
+    QCOMPARE(d.forward.n, std::size_t{2});
+    // The 1x1 convolution: 48 outputs x (2 x 3 multiply-adds + 1 bias add) = 336, plus the pooling's share.
+    QVERIFY2(d.flops >= 336, std::to_string(d.flops).c_str());
+
+    QVERIFY(cli({"synth-frame", "--out", dir_.filePath("f"), "--size", "320x256"}).code == 0);
+    const QString figs = dir_.filePath("figs");
+    const auto p = cli({"pipeline", dir_.filePath("f.raw"), "--lens", dir_.filePath("f.json"), "--frames", "2",
+                        "--detector", model, "--detect-scale", "1", "--detect-workers", "1", "--out", figs});
+    QVERIFY2(p.code == 0, p.err.constData());
+    const cv::Mat fig = cv::imread((figs + "/fig3-reprojected.png").toStdString(), cv::IMREAD_COLOR);
+    QCOMPARE(fig.size(), cv::Size(1280, 1024));  // the sidecar's view
+    // The view (1280x1024) is stretched to 640x640: x doubles, y x 1.6. Anchor 0 -> x 512..768, y 460.8..563.2;
+    // anchor 2 -> x 160..240, y 288..416. draw_detections draws each edge 3 px wide in pure green.
+    const auto green = [&](int x, int y) { return fig.at<cv::Vec3b>(y, x) == cv::Vec3b(0, 255, 0); };
+    for (const cv::Rect& b : {cv::Rect(cv::Point(512, 461), cv::Point(768, 563)), cv::Rect(160, 288, 80, 128)}) {
+      const int cx = b.x + b.width / 2, cy = b.y + b.height / 2;
+      QVERIFY2(green(b.x, cy) && green(b.x + b.width, cy) && green(cx, b.y) && green(cx, b.y + b.height),
+               qPrintable(QString("box %1,%2 %3x%4").arg(b.x).arg(b.y).arg(b.width).arg(b.height)));
+    }
   }
 
   void usage_errors() {

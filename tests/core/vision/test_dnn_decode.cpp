@@ -123,6 +123,38 @@ class TestDnnDecode : public QObject {
     QVERIFY_THROWS_EXCEPTION(std::runtime_error, decode_yolov8(blob3(8, 7), opts({64, 32}, {64, 32})));
   }
 
+  // A real ONNX file through the same path as `--detector MODEL`: tests/data/dnn/yolov8-known.onnx (written by
+  // scripts/make-onnx-fixture.py, see SOURCES there) outputs the same 1x6x8 YOLOv8 tensor for every image, so the
+  // boxes are known: anchor 0 (class 0, 0.9) at x 256..384, y 288..352 and anchor 2 (class 1, 0.75) at
+  // x 80..120, y 180..260 of the 640x640 input; anchor 1 overlaps anchor 0 (IoU 0.855), anchor 3 scores 0.4.
+  void onnx_fixture_file_gives_the_known_boxes() {
+    DnnOptions o;
+    o.model = BENCHSCOPE_TEST_DATA_DIR "/dnn/yolov8-known.onnx";
+    DnnDetectorInfo info;
+    Detector detect = dnn_detector(o, &info);
+    QCOMPARE(QString::fromStdString(info.family), QString("YOLOv8"));
+    QCOMPARE(info.input_size, cv::Size(640, 640));  // runs at 300x300 too, but a YOLO family takes 640x640
+    QCOMPARE(info.scale, 1.0 / 255);
+    const cv::Mat img(640, 1280, CV_8UC3, cv::Scalar(30, 60, 90));
+    auto d = detect(img);
+    QCOMPARE(d.size(), std::size_t{2});
+    QCOMPARE(d[0].class_id, 0);
+    QVERIFY(std::fabs(d[0].score - 0.9) < 1e-6);
+    QCOMPARE(d[0].box, cv::Rect(cv::Point(512, 288), cv::Point(768, 352)));  // x scaled by 1280 / 640, y by 1
+    QCOMPARE(d[1].class_id, 1);
+    QVERIFY(std::fabs(d[1].score - 0.75) < 1e-6);
+    QCOMPARE(d[1].box, cv::Rect(cv::Point(160, 180), cv::Point(240, 260)));
+    // The thresholds reach the decoder: at 0.85 only anchor 0 is left; with NMS at IoU 0.9 anchor 1 survives.
+    o.min_confidence = 0.85f;
+    QCOMPARE(dnn_detector(o)(img).size(), std::size_t{1});
+    o.min_confidence = 0.5f;
+    o.nms_threshold = 0.9f;
+    d = dnn_detector(o)(img);
+    QCOMPARE(d.size(), std::size_t{3});
+    QCOMPARE(d[1].box, cv::Rect(cv::Point(532, 288), cv::Point(788, 352)));  // anchor 1: x 266..394
+    QVERIFY(std::fabs(d[1].score - 0.8) < 1e-6);
+  }
+
   // End to end: image -> blobFromImage -> network -> decoder. The 1x1 convolution gives per pixel (B, G, R the
   // blob's channels = pixel / 255) cx = 8 B, cy = G, w = 2, h = 1 (input pixels), then YOLOv8: class 0 = R,
   // class 1 = 0.2; YOLOv5: objectness = R, class 0 = 1. Image 80x10 of 10x10 blocks, network input 8x1: one
