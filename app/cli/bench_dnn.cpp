@@ -198,7 +198,8 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     if (n.published_gflops > 0)
       out << "  published: " << n.published_note << "; counted here at this input / published = "
           << fixed(static_cast<double>(flops.counted) / batch / 1e9 / n.published_gflops, 3) << "\n";
-    // The images: a fixed pseudo-random colour picture (the same every run and machine), stretched to the input.
+    // The images: a fixed pseudo-random colour picture (the same every run and machine) made at the input size, so
+    // no resize or letterbox is part of the timed pass.
     std::vector<cv::Mat> images;
     std::mt19937 rng(7);
     for (int i = 0; i < batch; ++i) {

@@ -84,10 +84,12 @@ class TestCliDnn : public QObject {
     QVERIFY2(p.code == 0, p.err.constData());
     const cv::Mat fig = cv::imread((figs + "/fig3-reprojected.png").toStdString(), cv::IMREAD_COLOR);
     QCOMPARE(fig.size(), cv::Size(1280, 1024));  // the sidecar's view
-    // The view (1280x1024) is stretched to 640x640: x doubles, y x 1.6. Anchor 0 -> x 512..768, y 460.8..563.2;
-    // anchor 2 -> x 160..240, y 288..416. draw_detections draws each edge 3 px wide in pure green.
+    // The view (1280x1024) is letterboxed into 640x640: scaled by 0.5 to 640x512 at y = 64, so x doubles and
+    // y = (y - 64) x 2. Anchor 0 -> x 512..768, y 448..576; anchor 2 -> x 160..240, y 232..392. draw_detections
+    // draws each edge 3 px wide in pure green.
     const auto green = [&](int x, int y) { return fig.at<cv::Vec3b>(y, x) == cv::Vec3b(0, 255, 0); };
-    for (const cv::Rect& b : {cv::Rect(cv::Point(512, 461), cv::Point(768, 563)), cv::Rect(160, 288, 80, 128)}) {
+    for (const cv::Rect& b :
+         {cv::Rect(cv::Point(512, 448), cv::Point(768, 576)), cv::Rect(cv::Point(160, 232), cv::Point(240, 392))}) {
       const int cx = b.x + b.width / 2, cy = b.y + b.height / 2;
       QVERIFY2(green(b.x, cy) && green(b.x + b.width, cy) && green(cx, b.y) && green(cx, b.y + b.height),
                qPrintable(QString("box %1,%2 %3x%4").arg(b.x).arg(b.y).arg(b.width).arg(b.height)));
