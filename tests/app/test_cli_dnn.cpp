@@ -2,8 +2,15 @@
 // `benchscope-cli bench dnn` end to end on a built-in architecture at a small input: the table and labels, the run
 // stored in a workspace with its FLOPs (recounted, and OpenCV's), the targets that are not available saying why,
 // and usage errors; `platforms` then shows the stored run in its inference table.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
+#include <filesystem>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -11,6 +18,7 @@
 #include "vision/dnn_bench.h"
 
 #include "../support/cli_harness.h"
+#include "../support/sysfs_fixture.h"
 
 using bs::test::cli;
 
@@ -93,6 +101,91 @@ class TestCliDnn : public QObject {
       const int cx = b.x + b.width / 2, cy = b.y + b.height / 2;
       QVERIFY2(green(b.x, cy) && green(b.x + b.width, cy) && green(cx, b.y) && green(cx, b.y + b.height),
                qPrintable(QString("box %1,%2 %3x%4").arg(b.x).arg(b.y).arg(b.width).arg(b.height)));
+    }
+  }
+
+  // --json: stdout is the document alone (the tables go to stderr), one row per target that ran with every
+  // figure of the table, nothing rounded; the targets that could not run say why. With a fixture power sensor
+  // (constant 3.96 W) the energy per inference is there; without one it is null.
+  void json_rows() {
+    QTemporaryDir sys;
+    const std::filesystem::path root = sys.path().toStdString();
+    bs::test::ina3221x_channel(root, "6-0040", 0, "POM_5V_IN", 3960, 792, 5000);
+    bs::test::ina3221x_channel(root, "6-0040", 1, "POM_5V_CPU", 1068, 213, 5000);
+    for (const bool power : {false, true}) {
+      QStringList args{"bench", "dnn", "--arch", "mobilenet-ssd", "--input", "96x96", "--runs", "12", "--json"};
+      if (power)
+        args << "--power"
+             << "auto"
+             << "--sysfs-root" << sys.path() << "--power-interval-ms"
+             << "5";
+      QProcess p;
+      QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+      env.insert("BENCHSCOPE_NVML_LIBRARY", "none");  // the fixture's sensor only, whatever GPU is here
+      p.setProcessEnvironment(env);
+      p.start(bs::test::kCli, args);
+      QVERIFY(p.waitForFinished(300000));
+      const QByteArray out = p.readAllStandardOutput(), err = p.readAllStandardError();
+      QVERIFY2(p.exitCode() == 0, err.constData());
+      QJsonParseError pe;
+      const QJsonObject doc = QJsonDocument::fromJson(out, &pe).object();
+      QVERIFY2(pe.error == QJsonParseError::NoError, out.constData());
+      QVERIFY2(err.contains("forward mean ± SD (ms)") && err.contains("load average after"), err.constData());
+      QCOMPARE(doc["format"].toString(), QString("benchscope-dnn-bench"));
+      QCOMPARE(doc["version"].toInt(), 1);
+      QCOMPARE(doc["warmup_passes"].toInt(), 2);
+      QVERIFY(doc["cpu"].toObject()["ceiling_gflops"].toDouble() > 0);
+      int available = 0;
+      QStringList unavailable;
+      for (const bs::vision::DnnTarget& t : bs::vision::dnn_targets()) {
+        if (t.available)
+          ++available;
+        else
+          unavailable << QString::fromStdString(t.id + ": " + t.why_not);
+      }
+      QStringList listed;
+      for (const auto& v : doc["unavailable"].toArray())
+        listed << v.toObject()["backend"].toString() + ": " + v.toObject()["why_not"].toString();
+      QCOMPARE(listed, unavailable);
+      const QJsonArray runs = doc["runs"].toArray();
+      QCOMPARE(runs.size(), available);
+      const QJsonObject r = runs[0].toObject();
+      QCOMPARE(r["backend"].toString(), QString("cpu"));
+      QCOMPARE(r["model"].toString(), QString("mobilenet-ssd"));
+      QCOMPARE(r["family"].toString(), QString("SSD"));
+      QVERIFY(r["architecture_only"].toBool());
+      QCOMPARE(r["label"].toString(), QString("architecture timing: no detections"));
+      QCOMPARE(r["input"].toObject()["width"].toInt(), 96);
+      QCOMPARE(r["batch"].toInt(), 1);
+      QCOMPARE(r["n"].toInt(), 12);
+      const QJsonObject f = r["forward_s"].toObject();
+      const double mean = f["mean"].toDouble();
+      QVERIFY(mean > 0 && f["sd"].toDouble() >= 0);
+      QVERIFY(f["min"].toDouble() <= f["p50"].toDouble() && f["p50"].toDouble() <= f["p95"].toDouble() &&
+              f["p95"].toDouble() <= f["max"].toDouble());
+      QVERIFY(f["min"].toDouble() <= mean && mean <= f["max"].toDouble());
+      QCOMPARE(r["per_image_s"].toDouble(), mean);
+      QVERIFY(std::fabs(r["inferences_per_s"].toDouble() * mean - 1) < 1e-9);
+      const double flops = r["flops"].toDouble();
+      QVERIFY(flops > 0 && r["opencv_flops"].toDouble() > flops);  // depthwise counted as full convolutions
+      QCOMPARE(r["flops_per_image"].toDouble(), flops);
+      QVERIFY(std::fabs(r["achieved_gflops"].toDouble() - flops / mean / 1e9) < 1e-6 * flops / mean / 1e9);
+      // The published count is at the architecture's standard input (300x300): 1.2 G multiply-adds.
+      QCOMPARE(r["published"].toObject()["gflops_per_image"].toDouble(), 2.4);
+      QVERIFY(r["ceiling_gflops"].toDouble() > 0);
+      QVERIFY(std::fabs(r["fraction_of_ceiling"].toDouble() -
+                        r["achieved_gflops"].toDouble() / r["ceiling_gflops"].toDouble()) < 1e-9);
+      QVERIFY(r["cores_busy"].toDouble() > 0);
+      if (!power) {
+        QVERIFY(r["energy_per_inference_j"].isNull() && r["inferences_per_wh"].isNull() &&
+                doc["power_sensor"].isNull());
+        continue;
+      }
+      // 3.96 W over the timed passes: energy per inference = 3.96 W x the time per pass (and a little between).
+      QVERIFY2(std::fabs(r["mean_power_w"].toDouble() - 3.96) < 1e-6, out.constData());
+      const double e = r["energy_per_inference_j"].toDouble();
+      QVERIFY2(e >= 3.96 * mean * 0.9 && e <= 3.96 * f["max"].toDouble() * 1.5, out.constData());
+      QVERIFY(std::fabs(r["inferences_per_wh"].toDouble() * e - 3600) < 1e-6);
     }
   }
 
