@@ -60,6 +60,17 @@ class TestCliDnn : public QObject {
     QVERIFY2(
         p.out.contains("Detection network inference") && p.out.contains("mobilenet-ssd (SSD), architecture timing"),
         p.out.constData());
+#ifdef BENCHSCOPE_WITH_FIGURES_TEST
+    // `figures` draws the inference-time figure from the stored runs (skipped for data without any).
+    const QString figs = dir_.filePath("figs");
+    const auto f = cli({"figures", ws, "--out", figs, "--format", "svg"});
+    QVERIFY2(f.code == 0, f.err.constData());
+    QVERIFY2(f.out.contains("inference.svg"), f.out.constData());
+    const QByteArray svg = bs::test::bytes_of(figs + "/inference.svg");
+    QVERIFY(svg.contains("architecture timing: no detections") && svg.contains("mobilenet-ssd 128x128"));
+    QVERIFY2(f.err.contains("inference: robot mobilenet-ssd 128x128 cpu (architecture timing) (measured)"),
+             f.err.constData());
+#endif
   }
 
   // A real ONNX file (tests/data/dnn/yolov8-known.onnx, SOURCES there): `bench dnn --model` finds its family and
