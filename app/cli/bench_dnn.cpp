@@ -8,11 +8,13 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <optional>
 #include <ostream>
 #include <random>
 #include <set>
 
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/dnn.hpp>
 
@@ -131,6 +133,35 @@ std::optional<double> device_ceiling(const DnnTarget& t, const kernels::CpuInfo&
   return std::nullopt;
 }
 
+// OpenCV prints OpenCL program build logs with printf, on stdout. With --json stdout holds the document alone, so
+// while networks are built and timed file descriptor 1 is pointed at stderr; restore() points it back.
+class StdoutToStderr {
+ public:
+  StdoutToStderr() {
+    std::cout.flush();
+    std::fflush(stdout);
+    saved_ = ::dup(STDOUT_FILENO);
+    if (saved_ >= 0 && ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0) {
+      ::close(saved_);
+      saved_ = -1;
+    }
+  }
+  ~StdoutToStderr() { restore(); }
+  StdoutToStderr(const StdoutToStderr&) = delete;
+  StdoutToStderr& operator=(const StdoutToStderr&) = delete;
+  void restore() {
+    if (saved_ < 0) return;
+    std::cout.flush();
+    std::fflush(stdout);
+    ::dup2(saved_, STDOUT_FILENO);
+    ::close(saved_);
+    saved_ = -1;
+  }
+
+ private:
+  int saved_ = -1;
+};
+
 // A number, or null where there is none (JSON has no NaN).
 nlohmann::json number_or_null(const std::optional<double>& v) {
   return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json();
@@ -195,6 +226,8 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   valued.insert(kPowerOptions.begin(), kPowerOptions.end());
   const ParsedArgs args = parse_args(raw, {"--json"}, valued);
   const bool json = args.has("--json");
+  std::optional<StdoutToStderr> quiet_stdout;
+  if (json) quiet_stdout.emplace();
   std::ostream& text = json ? err : out;  // --json keeps stdout to the document alone
   if (!args.positional.empty())
     throw UsageError("bench dnn takes no positional arguments (got '" + args.positional.front() + "')");
@@ -365,6 +398,7 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
          << id << ")\n";
   }
   if (json) {
+    quiet_stdout->restore();
     nlohmann::json rows = nlohmann::json::array(), unavailable = nlohmann::json::array();
     for (std::size_t i = 0; i < stored.size(); ++i)
       rows.push_back(run_json(stored[i], cores_of[i], network_of[i]->published_gflops, network_of[i]->published_note));

@@ -200,6 +200,28 @@ class TestCliDnn : public QObject {
     }
   }
 
+  // OpenCV prints an OpenCL program's build log on stdout; with --json stdout must still be the document alone.
+  // Run where OpenCV's dnn can use an OpenCL device (PoCL's CPU device counts when allowed); skipped elsewhere.
+  void json_stays_clean_on_opencl() {
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("OPENCV_OPENCL_DEVICE", ":CPU:");
+    env.insert("OPENCV_DNN_OPENCL_ALLOW_ALL_DEVICES", "1");
+    p.setProcessEnvironment(env);
+    p.start(bs::test::kCli, {"bench", "dnn", "--arch", "mobilenet-ssd", "--input", "64x64", "--runs", "1", "--backend",
+                             "opencl", "--json"});
+    QVERIFY(p.waitForFinished(300000));
+    const QByteArray out = p.readAllStandardOutput(), err = p.readAllStandardError();
+    if (p.exitCode() == 1 && err.contains("no requested dnn target is available"))
+      QSKIP("no OpenCL device OpenCV's dnn can use here");
+    QVERIFY2(p.exitCode() == 0, err.constData());
+    QJsonParseError pe;
+    const QJsonObject doc = QJsonDocument::fromJson(out, &pe).object();
+    QVERIFY2(pe.error == QJsonParseError::NoError, out.constData());
+    QCOMPARE(doc["runs"].toArray().size(), 1);
+    QCOMPARE(doc["runs"].toArray()[0].toObject()["backend"].toString(), QString("opencl"));
+  }
+
   void usage_errors() {
     auto r = cli({"bench", "dnn", "--arch", "resnet"});
     QCOMPARE(r.code, 2);
