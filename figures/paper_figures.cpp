@@ -20,6 +20,7 @@
 #include "analysis/platform/platform_table.h"
 #include "analysis/power/power.h"
 #include "device_palette.h"
+#include "inference_figure.h"
 #include "plot_export.h"
 #include "triptych_figure.h"
 #include "util/resources.h"
@@ -125,7 +126,7 @@ QJsonArray flops_figure(QCustomPlot& plot, const FigureTemplate& t, const Figure
     g->setName(QString::fromStdString(name));
     sources.append(source_of(run));
   }
-  if (plot.graphCount() == 0) throw std::runtime_error(t.id + ": no runs match the template's selection");
+  if (plot.graphCount() == 0) throw NoFigureData(t.id + ": no runs match the template's selection");
   plot.xAxis->setRange(t.log_x ? std::max(1.0, x_min) : 0, x_max);
   plot.yAxis->setRange(0, y_max * 1.08);
   wrap_legend(plot, o.font_pt, plot.width());
@@ -183,7 +184,7 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
                                {"file", QString::fromStdString(trace.provenance.source_file)},
                                {"origin", QString::fromUtf8(to_string(trace.provenance.origin).data())}});
   }
-  if (plot.graphCount() == 0) throw std::runtime_error(t.id + ": no current logs for the template's platforms");
+  if (plot.graphCount() == 0) throw NoFigureData(t.id + ": no current logs for the template's platforms");
   plot.xAxis->setRange(0, x_max);
   plot.yAxis->setRange(0, y_max * 1.1);
   wrap_legend(plot, o.font_pt, plot.width());
@@ -195,7 +196,8 @@ QString contents_line(const FigureTemplate& t, const QJsonArray& sources, const 
   QStringList shown;
   for (const auto& v : sources) {
     const QJsonObject s = v.toObject();
-    QString what = s.value("device").toString().isEmpty()
+    QString what = s.contains("what") ? s.value("what").toString()
+                   : s.value("device").toString().isEmpty()
                        ? s.value("platform").toString()
                        : s.value("device").toString() + " " + s.value("backend").toString();
     if (s.contains("dims")) what += QStringLiteral(" D=%1").arg(s.value("dims").toInt());
@@ -207,7 +209,8 @@ QString contents_line(const FigureTemplate& t, const QJsonArray& sources, const 
   QStringList out;
   for (const auto& v : left_out) {
     const QJsonObject l = v.toObject();
-    out << l.value("platform").toString() + " (" + l.value("reason").toString() + ")";
+    out << (l.contains("what") ? l.value("what").toString() : l.value("platform").toString()) + " (" +
+               l.value("reason").toString() + ")";
   }
   if (!out.isEmpty()) line += QObject::tr("; left out: ") + out.join("; ");
   return line;
@@ -251,7 +254,7 @@ namespace {
 void render_all(const std::vector<FigureTemplate>& templates, const FigureData& data, const QString& out_dir,
                 const FigureOptions& o, const CancelToken& cancel,
                 const std::function<void(int, int, const QString&)>& progress, FigureOutput& out) {
-  QJsonArray list;
+  QJsonArray list, skipped;
   const PageSize p = page(o);
   const int total = static_cast<int>(templates.size()) + 1;
   int done = 0;
@@ -269,7 +272,21 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
         QCustomPlot plot;
         plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
         style_axes(plot, t, o);
-        sources = t.kind == "flops" ? flops_figure(plot, t, data, o) : current_figure(plot, t, data, o, left_out);
+        try {
+          sources = t.kind == "flops"       ? flops_figure(plot, t, data, o)
+                    : t.kind == "inference" ? inference_figure(plot, t, data.inference_runs, o, left_out)
+                                            : current_figure(plot, t, data, o, left_out);
+        } catch (const NoFigureData& e) {
+          if (!t.optional) throw;
+          // An optional figure without data: skipped, and said so (figures.json "skipped", the contents line).
+          std::string reason = e.what();
+          if (reason.starts_with(t.id + ": ")) reason.erase(0, t.id.size() + 2);
+          skipped.append(
+              QJsonObject{{"figure", QString::fromStdString(t.id)}, {"reason", QString::fromStdString(reason)}});
+          out.contents << QString::fromStdString(t.id + ": not drawn (optional figure): " + reason);
+          ++done;
+          continue;
+        }
         FigureOptions sized = o;
         if (o.height_mm <= 0) {
           // Automatic height: axes at 0.62 x width (0.8 for narrow figures, so the axis label fits), plus what the
@@ -328,7 +345,8 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
   const QByteArray json = QJsonDocument(QJsonObject{{"format", "benchscope-figure-list"},
                                                     {"version", 1},
                                                     {"data", QString::fromStdString(data.selection)},
-                                                    {"files", list}})
+                                                    {"files", list},
+                                                    {"skipped", skipped}})
                               .toJson();
   write_text(QDir(out_dir).filePath("figures.json"), json.toStdString(), out.files);
   if (progress) progress(total, total, "done");

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <functional>
+#include <stdexcept>
 
 #include "analysis/platform/platform_comparison.h"
 #include "model/dnn_run.h"
@@ -47,9 +48,15 @@ enum class FigureDataChoice { All, PaperOnly };
 // Keeps the runs, power logs and pipeline runs the choice allows and sets `selection`.
 FigureData select_figure_data(FigureData data, FigureDataChoice choice);
 
+// A figure whose template selects no data (no FLOPS runs match, no power log, no inference run): an error naming
+// the figure, unless the template is optional, when the figure is skipped and the contents line says why.
+struct NoFigureData : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct FigureOutput {
   QStringList files;     // every file written, figures.json last
-  QStringList contents;  // a line per figure: what it shows, and what it left out and why
+  QStringList contents;  // a line per figure: what it shows, and what it left out and why (or why it is skipped)
 };
 
 // Throws std::runtime_error (naming the file) when a file cannot be written, Cancelled when `cancel` fires

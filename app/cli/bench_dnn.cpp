@@ -8,11 +8,14 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <optional>
 #include <ostream>
 #include <random>
 #include <set>
 
+#include <unistd.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/dnn.hpp>
 
 #include "analysis/power/phase_energy.h"
@@ -130,13 +133,102 @@ std::optional<double> device_ceiling(const DnnTarget& t, const kernels::CpuInfo&
   return std::nullopt;
 }
 
+// OpenCV prints OpenCL program build logs with printf, on stdout. With --json stdout holds the document alone, so
+// while networks are built and timed file descriptor 1 is pointed at stderr; restore() points it back.
+class StdoutToStderr {
+ public:
+  StdoutToStderr() {
+    std::cout.flush();
+    std::fflush(stdout);
+    saved_ = ::dup(STDOUT_FILENO);
+    if (saved_ >= 0 && ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0) {
+      ::close(saved_);
+      saved_ = -1;
+    }
+  }
+  ~StdoutToStderr() { restore(); }
+  StdoutToStderr(const StdoutToStderr&) = delete;
+  StdoutToStderr& operator=(const StdoutToStderr&) = delete;
+  void restore() {
+    if (saved_ < 0) return;
+    std::cout.flush();
+    std::fflush(stdout);
+    ::dup2(saved_, STDOUT_FILENO);
+    ::close(saved_);
+    saved_ = -1;
+  }
+
+ private:
+  int saved_ = -1;
+};
+
+// A number, or null where there is none (JSON has no NaN).
+nlohmann::json number_or_null(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json();
+}
+
+// One row of the table (one network on one target) as benchscope-dnn-bench v1 JSON: seconds, FLOPs and joules
+// as measured, nothing rounded; null where a value is not known (no ceiling, no power recorded).
+// `published`: the published count of the network a built-in architecture follows, at its standard input (GFLOPs
+// per image) and what it counts; 0 and empty for a model file.
+nlohmann::json run_json(const DnnRun& r, double cores_busy, double published_gflops,
+                        const std::string& published_note) {
+  const double per_image_flops = r.batch > 0 ? static_cast<double>(r.flops) / r.batch : 0;
+  std::optional<double> ceiling_gflops, fraction, per_wh;
+  if (r.device_peak_flops && *r.device_peak_flops > 0) {
+    ceiling_gflops = *r.device_peak_flops / 1e9;
+    fraction = r.achieved_flops() / *r.device_peak_flops;
+  }
+  if (r.energy_per_inference_j && *r.energy_per_inference_j > 0) per_wh = 3600.0 / *r.energy_per_inference_j;
+  return nlohmann::json{
+      {"platform", r.platform},
+      {"backend", r.backend},
+      {"device", r.device},
+      {"model", r.model},
+      {"model_hash", r.model_hash},
+      {"family", r.family},
+      {"architecture_only", r.architecture_only},
+      {"label", r.architecture_only ? nlohmann::json(kArchitectureTimingLabel) : nlohmann::json()},
+      {"input", {{"width", r.input_width}, {"height", r.input_height}}},
+      {"batch", r.batch},
+      {"n", r.forward.n},
+      {"forward_s",
+       {{"mean", r.forward.mean_s},
+        {"sd", r.forward.sd_s},
+        {"p50", number_or_null(r.forward.p50_s)},
+        {"p95", number_or_null(r.forward.p95_s)},
+        {"min", number_or_null(r.forward.min_s)},
+        {"max", number_or_null(r.forward.max_s)}}},
+      {"per_image_s", r.inference_s()},
+      {"inferences_per_s", r.inferences_per_s()},
+      {"flops_per_image", per_image_flops},
+      {"flops", r.flops},
+      {"opencv_flops", r.opencv_flops},
+      {"published", published_gflops > 0
+                        ? nlohmann::json{{"gflops_per_image", published_gflops}, {"note", published_note}}
+                        : nlohmann::json()},
+      {"achieved_gflops", r.achieved_flops() / 1e9},
+      {"ceiling_gflops", number_or_null(ceiling_gflops)},
+      {"fraction_of_ceiling", number_or_null(fraction)},
+      {"cores_busy", r.backend == "cpu" ? number_or_null(cores_busy) : nlohmann::json()},
+      {"energy_per_inference_j", number_or_null(r.energy_per_inference_j)},
+      {"inferences_per_wh", number_or_null(per_wh)},
+      {"mean_power_w", number_or_null(r.mean_power_w)},
+      {"date", r.provenance.date},
+  };
+}
+
 }  // namespace
 
 int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   std::set<std::string> valued = {"--model", "--arch",    "--input",    "--batch",
                                   "--runs",  "--backend", "--platform", "--workspace"};
   valued.insert(kPowerOptions.begin(), kPowerOptions.end());
-  const ParsedArgs args = parse_args(raw, {}, valued);
+  const ParsedArgs args = parse_args(raw, {"--json"}, valued);
+  const bool json = args.has("--json");
+  std::optional<StdoutToStderr> quiet_stdout;
+  if (json) quiet_stdout.emplace();
+  std::ostream& text = json ? err : out;  // --json keeps stdout to the document alone
   if (!args.positional.empty())
     throw UsageError("bench dnn takes no positional arguments (got '" + args.positional.front() + "')");
   if (args.value("--model") && args.value("--arch")) throw UsageError("give --model or --arch, not both");
@@ -173,11 +265,12 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   const kernels::CpuInfo cpu = kernels::detect_cpu();
   const std::vector<kernels::Backend> backends = kernels::available_backends(cpu);
   const std::string platform = args.value("--platform").value_or(bs::host_name());
-  out << "CPU: " << cpu.model << ", " << cpu.threads << " threads, FP32 ceiling " << fixed(cpu.peak_flops / 1e9, 1)
-      << " GFLOPS (" << cpu.simd.name << ", " << fixed(cpu.clock_hz / 1e9, 3) << " GHz measured); OpenCV " CV_VERSION
-      << ", " << cv::getNumThreads() << " dnn threads\nload average before: " << load_average_text() << "\n";
+  const std::string load_before = load_average_text();
+  text << "CPU: " << cpu.model << ", " << cpu.threads << " threads, FP32 ceiling " << fixed(cpu.peak_flops / 1e9, 1)
+       << " GFLOPS (" << cpu.simd.name << ", " << fixed(cpu.clock_hz / 1e9, 3) << " GHz measured); OpenCV " CV_VERSION
+       << ", " << cv::getNumThreads() << " dnn threads\nload average before: " << load_before << "\n";
   for (const DnnTarget& t : targets)
-    if (!t.available) out << "target " << t.id << ": not available: " << t.why_not << "\n";
+    if (!t.available) text << "target " << t.id << ": not available: " << t.why_not << "\n";
   if (std::none_of(targets.begin(), targets.end(), [](const DnnTarget& t) { return t.available; })) {
     err << "benchscope-cli: no requested dnn target is available here\n";
     return 1;
@@ -185,20 +278,23 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
 
   const auto power = start_power(args, err, false);
   std::vector<DnnRun> stored;
+  std::vector<double> cores_of;  // per stored run, for --json
+  std::vector<const Network*> network_of;
   const CancelToken& cancel = interrupt_token();
   for (Network& n : networks) {
     const cv::dnn::MatShape shape{batch, 3, n.input.height, n.input.width};
     const DnnFlops flops = count_flops(n.net, shape);
-    out << "\n"
-        << n.model << " (" << n.family << " output), input " << n.input.width << "x" << n.input.height << ", batch "
-        << batch << (n.architecture_only ? std::string(": ") + kArchitectureTimingLabel : std::string())
-        << "\n  FLOPs per image: " << fixed(static_cast<double>(flops.counted) / batch / 1e9, 3)
-        << " G (2 per multiply-add, grouped convolutions per group); OpenCV 4.6 Net::getFLOPS: "
-        << fixed(static_cast<double>(flops.opencv) / batch / 1e9, 3) << " G\n";
+    text << "\n"
+         << n.model << " (" << n.family << " output), input " << n.input.width << "x" << n.input.height << ", batch "
+         << batch << (n.architecture_only ? std::string(": ") + kArchitectureTimingLabel : std::string())
+         << "\n  FLOPs per image: " << fixed(static_cast<double>(flops.counted) / batch / 1e9, 3)
+         << " G (2 per multiply-add, grouped convolutions per group); OpenCV 4.6 Net::getFLOPS: "
+         << fixed(static_cast<double>(flops.opencv) / batch / 1e9, 3) << " G\n";
     if (n.published_gflops > 0)
-      out << "  published: " << n.published_note << "; counted here at this input / published = "
-          << fixed(static_cast<double>(flops.counted) / batch / 1e9 / n.published_gflops, 3) << "\n";
-    // The images: a fixed pseudo-random colour picture (the same every run and machine), stretched to the input.
+      text << "  published: " << n.published_note << "; counted here at this input / published = "
+           << fixed(static_cast<double>(flops.counted) / batch / 1e9 / n.published_gflops, 3) << "\n";
+    // The images: a fixed pseudo-random colour picture (the same every run and machine) made at the input size, so
+    // no resize or letterbox is part of the timed pass.
     std::vector<cv::Mat> images;
     std::mt19937 rng(7);
     for (int i = 0; i < batch; ++i) {
@@ -253,6 +349,8 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
                           std::to_string(kWarmup) + " warm-up passes, OpenCV " CV_VERSION " dnn target " + t.id +
                           (n.architecture_only ? std::string(", ") + kArchitectureTimingLabel : std::string());
       stored.push_back(r);
+      cores_of.push_back(cores);
+      network_of.push_back(&n);
       table.add({t.id, t.device, std::to_string(sum.n), fixed(sum.mean * 1e3, 2) + " ± " + fixed(sum.sd * 1e3, 2),
                  fixed(pct.p50 * 1e3, 2), fixed(pct.p95 * 1e3, 2), fixed(r.inference_s() * 1e3, 2),
                  fixed(r.inferences_per_s(), 2), fixed(r.achieved_flops() / 1e9, 2),
@@ -260,16 +358,16 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
                  r.device_peak_flops ? fixed(100 * r.achieved_flops() / *r.device_peak_flops, 1) + "%" : "–",
                  t.id == "cpu" ? fixed(cores, 2) : "–"});
     }
-    table.print(out);
-    out << "  (cores busy: process CPU time / wall time over the timed passes, of " << cpu.threads << " threads)\n";
+    table.print(text);
+    text << "  (cores busy: process CPU time / wall time over the timed passes, of " << cpu.threads << " threads)\n";
   }
   std::optional<PowerTrace> trace;
   if (power) {
     trace = power->finish("bench dnn " + platform + " " + bs::utc_timestamp());
     trace->platform = platform;
     const std::vector<PhaseEnergy> phases = phase_energies(*trace);
-    out << "\nenergy per inference (" << to_string(trace->provenance.measurement) << ", " << trace->provenance.sensor
-        << "; whole-computer power during the timed passes):\n";
+    text << "\nenergy per inference (" << to_string(trace->provenance.measurement) << ", " << trace->provenance.sensor
+         << "; whole-computer power during the timed passes):\n";
     for (DnnRun& r : stored) {
       const std::string phase = r.model + " " + r.backend;
       for (const PhaseEnergy& e : phases)
@@ -277,13 +375,15 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
           const auto inferences = static_cast<std::size_t>(r.forward.n) * static_cast<std::size_t>(r.batch);
           r.energy_per_inference_j = e.energy_j / static_cast<double>(inferences);
           r.mean_power_w = e.mean_power_w;
-          out << "  " << phase << ": " << fixed(*r.energy_per_inference_j, 4) << " J per inference, "
-              << fixed(3600.0 / *r.energy_per_inference_j, 0) << " inferences per Wh, mean " << fixed(e.mean_power_w, 2)
-              << " W over " << fixed(e.end_s - e.start_s, 2) << " s (" << e.samples << " samples)\n";
+          text << "  " << phase << ": " << fixed(*r.energy_per_inference_j, 4) << " J per inference, "
+               << fixed(3600.0 / *r.energy_per_inference_j, 0) << " inferences per Wh, mean "
+               << fixed(e.mean_power_w, 2) << " W over " << fixed(e.end_s - e.start_s, 2) << " s (" << e.samples
+               << " samples)\n";
         }
     }
   }
-  out << "\nload average after: " << load_average_text() << "\n";
+  const std::string load_after = load_average_text();
+  text << "\nload average after: " << load_after << "\n";
   if (const auto ws_path = args.value("--workspace")) {
     Workspace ws(*ws_path);
     ImportBatch b;
@@ -294,8 +394,35 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     std::string key;
     for (const DnnRun& r : stored) key += r.model_hash + r.backend + r.provenance.date + fixed(r.forward.mean_s, 9);
     const std::int64_t id = ws.add_import(b, content_hash(key));
-    out << "stored " << stored.size() << " run" << (stored.size() == 1 ? "" : "s") << " in " << *ws_path << " (import "
-        << id << ")\n";
+    text << "stored " << stored.size() << " run" << (stored.size() == 1 ? "" : "s") << " in " << *ws_path << " (import "
+         << id << ")\n";
+  }
+  if (json) {
+    quiet_stdout->restore();
+    nlohmann::json rows = nlohmann::json::array(), unavailable = nlohmann::json::array();
+    for (std::size_t i = 0; i < stored.size(); ++i)
+      rows.push_back(run_json(stored[i], cores_of[i], network_of[i]->published_gflops, network_of[i]->published_note));
+    for (const DnnTarget& t : targets)
+      if (!t.available) unavailable.push_back({{"backend", t.id}, {"why_not", t.why_not}});
+    out << nlohmann::json{{"format", "benchscope-dnn-bench"},
+                          {"version", 1},
+                          {"platform", platform},
+                          {"opencv", CV_VERSION},
+                          {"cpu",
+                           {{"model", cpu.model},
+                            {"threads", cpu.threads},
+                            {"ceiling_gflops", cpu.peak_flops / 1e9},
+                            {"clock_ghz", cpu.clock_hz / 1e9},
+                            {"simd", cpu.simd.name},
+                            {"dnn_threads", cv::getNumThreads()}}},
+                          {"warmup_passes", kWarmup},
+                          {"load_average_before", load_before},
+                          {"load_average_after", load_after},
+                          {"power_sensor", trace ? nlohmann::json(trace->provenance.sensor) : nlohmann::json()},
+                          {"unavailable", unavailable},
+                          {"runs", rows}}
+               .dump(2)
+        << '\n';
   }
   return 0;
 }

@@ -13,7 +13,7 @@ int bench_dnn(const std::vector<std::string>& args, std::ostream& out, std::ostr
 inline constexpr const char* kBenchDnnUsage =
     "       benchscope-cli bench dnn [--model MODEL[,CONFIG] | --arch mobilenet-ssd|yolo-n] [--input WxH]\n"
     "         [--batch B] [--runs R] [--backend cpu|opencl|cuda|all] [--platform NAME] [--workspace WS]\n"
-    "         [--power SENSOR|auto] [--power-interval-ms M] [--sysfs-root DIR]\n";
+    "         [--power SENSOR|auto] [--power-interval-ms M] [--sysfs-root DIR] [--json]\n";
 
 inline constexpr const char* kBenchDnnHelp =
     "  bench dnn: forward passes of a detection network through OpenCV's dnn module on each target it offers here\n"
@@ -28,6 +28,8 @@ inline constexpr const char* kBenchDnnHelp =
     "  architecture with random weights in code (mobilenet-ssd: SSD300 MobileNet v1 as in the paper, 300x300;\n"
     "  yolo-n: the YOLOv8n layout, 640x640) and times its cost only: such runs are labelled 'architecture timing:\n"
     "  no detections'. Without --model or --arch both architectures are timed. --workspace WS stores one run per\n"
-    "  network and target (with the power trace) for the Pipeline and Platforms views and the report.\n";
+    "  network and target (with the power trace) for the Pipeline and Platforms views and the report. --json\n"
+    "  prints every row as benchscope-dnn-bench v1 JSON (seconds, FLOPs, joules; null where unknown; the label\n"
+    "  'architecture timing: no detections' on built-in architectures) and the tables on stderr.\n";
 
 }  // namespace bs::cli

@@ -66,11 +66,13 @@ const CommandRegistrar registrar({
     "                              [--preset lncs|lncs-half|ieee|ieee-double | --width-mm MM] [--height-mm MM]\n"
     "                              [--dpi 300] [--font-pt 8] [--template FILE] [--quiet]\n"
     "  Renders every figure of the template (default: resources/figures/paper-2018.json: fig1a, fig1b, fig2a,\n"
-    "  fig2b, fig3, fig4) at the journal width (LNCS 122 mm by default; height 0.62 x width unless given), text\n"
-    "  kept as text in PDF and SVG, PNG at --dpi; writes table1/table2 as .tex (booktabs) and .csv, and\n"
-    "  figures.json naming every file with its data sources and their provenance. --data paper keeps only the\n"
-    "  data reconstructed from the paper (a run measured here never slips into a paper figure); figures.json\n"
-    "  records the choice, and what each figure shows and leaves out (and why) is printed. Needs a build with Qt.",
+    "  fig2b, fig3, fig4, and inference (bench dnn time per image, mean ± SD per platform, network and target;\n"
+    "  architecture timings hatched) when the data has bench dnn runs) at the journal width (LNCS 122 mm by\n"
+    "  default; height 0.62 x width unless given), text kept as text in PDF and SVG, PNG at --dpi; writes\n"
+    "  table1/table2 as .tex (booktabs) and .csv, and figures.json naming every file with its data sources and\n"
+    "  their provenance. --data paper keeps only the data reconstructed from the paper (a run measured here never\n"
+    "  slips into a paper figure); figures.json records the choice, and what each figure shows and leaves out (and\n"
+    "  why) is printed. Needs a build with Qt.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       return run_figures(args, out, err);
     },

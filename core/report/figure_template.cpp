@@ -34,8 +34,8 @@ std::vector<FigureTemplate> parse_figure_templates(const std::string& text, cons
       FigureTemplate t;
       t.id = f.at("id").get<std::string>();
       t.kind = f.at("kind").get<std::string>();
-      if (t.kind != "flops" && t.kind != "current" && t.kind != "triptych")
-        throw std::runtime_error("/kind must be flops, current or triptych");
+      if (t.kind != "flops" && t.kind != "current" && t.kind != "triptych" && t.kind != "inference")
+        throw std::runtime_error("/kind must be flops, current, triptych or inference");
       if (t.id.empty() || t.id.find_first_of("/\\.") != std::string::npos)
         throw std::runtime_error("/id must be a plain file stem");
       t.title = f.value("title", "");
@@ -52,6 +52,7 @@ std::vector<FigureTemplate> parse_figure_templates(const std::string& text, cons
       if (!(t.y_scale > 0)) throw std::runtime_error("/y_scale must be > 0");
       t.log_x = f.value("log_x", false);
       t.log_y = f.value("log_y", false);
+      t.optional = f.value("optional", false);
       out.push_back(std::move(t));
     } catch (const nlohmann::json::exception& e) {
       throw std::runtime_error(where + ": " + e.what());

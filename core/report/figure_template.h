@@ -12,7 +12,7 @@ namespace bs {
 
 struct FigureTemplate {
   std::string id;    // file stem: "fig1a"
-  std::string kind;  // "flops", "current", "triptych"
+  std::string kind;  // "flops", "current", "triptych", "inference" (bench dnn: time per image per run, bars)
   std::string title;
   std::optional<DeviceKind> device_kind;  // flops: only GPUs or CPUs
   std::vector<std::string> platforms;     // empty: every platform
@@ -20,6 +20,9 @@ struct FigureTemplate {
   std::string x_label, y_label;
   double y_scale = 1;  // values are divided by it (1e12 for TFLOPS)
   bool log_x = false, log_y = false;
+  // Drawn only when the data has something for it: without, the figure is skipped (and said so) instead of an
+  // error. For figures of data many workspaces lack (inference runs).
+  bool optional = false;
   bool selects(const FlopsRun& run) const;
 };
 

@@ -110,7 +110,7 @@ DnnDetectorInfo probe_detector_network(cv::dnn::Net& net, const DnnOptions& o, c
   if (yolo && o.input_size.area() == 0 && input != cv::Size(640, 640) && !probe(net, {640, 640}).empty())
     input = {640, 640};
   return {to_string(match.family), input, o.scale.value_or(yolo ? 1.0 / 255 : 1.0 / 127.5),
-          o.mean.value_or(yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5))};
+          o.mean.value_or(yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5)), o.letterbox.value_or(yolo)};
 }
 
 Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::string& name, DnnDetectorInfo* info) {
@@ -120,10 +120,12 @@ Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::strin
   const cv::Size input = probed.input_size;
   const double scale = probed.scale;
   const cv::Scalar mean = probed.mean;
+  const bool letterbox = probed.letterbox;
   auto mutex = std::make_shared<std::mutex>();  // one Net, forward() is not reentrant
   const auto names = net->getUnconnectedOutLayersNames();
-  return [net, mutex, o, input, scale, mean, names](const cv::Mat& bgr) {
-    const cv::Mat blob = cv::dnn::blobFromImage(bgr, scale, input, mean, o.swap_rb, false);
+  return [net, mutex, o, input, scale, mean, letterbox, names](const cv::Mat& bgr) {
+    const cv::Mat blob =
+        cv::dnn::blobFromImage(letterbox ? letterbox_image(bgr, input) : bgr, scale, input, mean, o.swap_rb, false);
     std::vector<cv::Mat> outs;
     {
       std::lock_guard lock(*mutex);
@@ -133,6 +135,7 @@ Detector dnn_detector(cv::dnn::Net net_in, const DnnOptions& o, const std::strin
     DecodeOptions d;
     d.input_size = input;
     d.image_size = bgr.size();
+    d.letterbox = letterbox;
     d.min_confidence = o.min_confidence;
     d.nms_threshold = o.nms_threshold;
     return decode_detections(outs, d);

@@ -41,6 +41,9 @@ struct DnnOptions {
   std::optional<double> scale;
   std::optional<cv::Scalar> mean;
   bool swap_rb = true;
+  // Empty: YOLO families letterbox (aspect ratio kept, padded with 114 grey, boxes mapped back through it:
+  // vision/dnn_decode.h), SSD stretches the image to the input.
+  std::optional<bool> letterbox;
   float min_confidence = 0.5f;
   float nms_threshold = 0.45f;
 };
@@ -49,6 +52,7 @@ struct DnnDetectorInfo {
   cv::Size input_size;  // as used
   double scale = 0;
   cv::Scalar mean;
+  bool letterbox = false;
 };
 // What a detection network is: its output family, the input size it runs at and the preprocessing that family
 // takes (given values win). Found by forward passes of a blank image as described at DnnOptions. Throws

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/dnn_architectures.h"
 
+#include "vision/dnn_decode.h"
+
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -278,8 +280,10 @@ Detector architecture_timing_detector(DnnArchitecture a) {
   auto mutex = std::make_shared<std::mutex>();  // one Net, forward() is not reentrant
   const bool yolo = a == DnnArchitecture::YoloN;
   return [net, mutex, input, yolo](const cv::Mat& bgr) {
-    const cv::Mat blob = cv::dnn::blobFromImage(bgr, yolo ? 1.0 / 255 : 1.0 / 127.5, input,
-                                                yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5), true, false);
+    // Preprocessed as a trained network of the family would be: YOLO letterboxed, SSD stretched.
+    const cv::Mat blob =
+        cv::dnn::blobFromImage(yolo ? letterbox_image(bgr, input) : bgr, yolo ? 1.0 / 255 : 1.0 / 127.5, input,
+                               yolo ? cv::Scalar::all(0) : cv::Scalar::all(127.5), true, false);
     std::lock_guard lock(*mutex);
     net->setInput(blob);
     net->forward();

@@ -41,9 +41,10 @@ struct BuiltNetwork {
 // std::invalid_argument for an input the architecture cannot take.
 BuiltNetwork build_architecture(DnnArchitecture a, cv::Size input, unsigned seed = 1);
 
-// A detection stage that runs the architecture (at its default input, the image stretched to it, one forward
-// pass per image as a real detector would) and reports no detections: its random weights detect nothing. For
-// timing a pipeline's detection stage with a network's cost when no trained weights are at hand.
+// A detection stage that runs the architecture (at its default input, the image letterboxed (yolo-n) or
+// stretched (mobilenet-ssd) to it, one forward pass per image as a real detector would) and reports no detections: its
+// random weights detect nothing. For timing a pipeline's detection stage with a network's cost when no trained weights
+// are at hand.
 Detector architecture_timing_detector(DnnArchitecture a);
 // The pipeline run's detector name for it: "mobilenet-ssd (architecture timing: no detections)".
 std::string architecture_detector_name(DnnArchitecture a);

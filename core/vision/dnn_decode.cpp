@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <opencv2/dnn.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace bs::vision {
 
@@ -19,6 +20,31 @@ const char* to_string(DnnOutputFamily family) {
       return "YOLOv8";
   }
   return "?";
+}
+
+Letterbox letterbox_geometry(cv::Size image, cv::Size input) {
+  if (image.area() <= 0 || input.area() <= 0) throw std::invalid_argument("letterboxing needs two non-empty sizes");
+  const double s =
+      std::min(static_cast<double>(input.width) / image.width, static_cast<double>(input.height) / image.height);
+  const int w = std::clamp(static_cast<int>(std::lround(image.width * s)), 1, input.width);
+  const int h = std::clamp(static_cast<int>(std::lround(image.height * s)), 1, input.height);
+  return {input, image, cv::Rect((input.width - w) / 2, (input.height - h) / 2, w, h)};
+}
+
+cv::Mat letterbox_image(const cv::Mat& image, cv::Size input, const cv::Scalar& pad) {
+  const Letterbox lb = letterbox_geometry(image.size(), input);
+  cv::Mat out(input, image.type(), pad);
+  if (lb.content.size() == image.size())
+    image.copyTo(out(lb.content));
+  else
+    cv::resize(image, out(lb.content), lb.content.size(), 0, 0, cv::INTER_LINEAR);
+  return out;
+}
+
+cv::Rect2d letterbox_to_image(const cv::Rect2d& b, const Letterbox& lb) {
+  const double sx = static_cast<double>(lb.image.width) / lb.content.width;
+  const double sy = static_cast<double>(lb.image.height) / lb.content.height;
+  return {(b.x - lb.content.x) * sx, (b.y - lb.content.y) * sy, b.width * sx, b.height * sy};
 }
 
 std::string shape_text(const cv::Mat& blob) {
@@ -46,14 +72,25 @@ struct Candidate {
   int class_id;
 };
 
+// How boxes in input pixels go back to the image: through the letterbox, or (stretched) a letterbox whose content
+// is the whole input, i.e. scaled per axis.
+Letterbox input_to_image(const DecodeOptions& o) {
+  return o.letterbox ? letterbox_geometry(o.image_size, o.input_size)
+                     : Letterbox{o.input_size, o.image_size, cv::Rect(cv::Point(0, 0), o.input_size)};
+}
+
+// A box in image pixels (not yet rounded) to whole pixels, clipped to the image.
+cv::Rect to_pixels(const cv::Rect2d& b, cv::Size image) {
+  const cv::Rect r(cv::Point(cvRound(b.x), cvRound(b.y)), cv::Point(cvRound(b.x + b.width), cvRound(b.y + b.height)));
+  return r & cv::Rect(cv::Point(0, 0), image);
+}
+
 // Per-class NMS (a person box does not suppress a bicycle box), then the boxes mapped from the network's input
 // to the image and clipped.
 std::vector<Detection> nms_and_map(const std::vector<Candidate>& cands, const DecodeOptions& o) {
   std::map<int, std::vector<std::size_t>> by_class;
   for (std::size_t i = 0; i < cands.size(); ++i) by_class[cands[i].class_id].push_back(i);
-  const double sx = static_cast<double>(o.image_size.width) / o.input_size.width;
-  const double sy = static_cast<double>(o.image_size.height) / o.input_size.height;
-  const cv::Rect frame(cv::Point(0, 0), o.image_size);
+  const Letterbox lb = input_to_image(o);
   std::vector<Detection> dets;
   for (const auto& [cls, idx] : by_class) {
     std::vector<cv::Rect2d> boxes;
@@ -62,10 +99,7 @@ std::vector<Detection> nms_and_map(const std::vector<Candidate>& cands, const De
     std::vector<int> keep;
     cv::dnn::NMSBoxes(boxes, scores, o.min_confidence, o.nms_threshold, keep);
     for (int k : keep) {
-      const cv::Rect2d& b = boxes[static_cast<std::size_t>(k)];
-      const cv::Rect r(cv::Point(cvRound(b.x * sx), cvRound(b.y * sy)),
-                       cv::Point(cvRound((b.x + b.width) * sx), cvRound((b.y + b.height) * sy)));
-      const cv::Rect clipped = r & frame;
+      const cv::Rect clipped = to_pixels(letterbox_to_image(boxes[static_cast<std::size_t>(k)], lb), o.image_size);
       if (clipped.area() > 0) dets.push_back({clipped, scores[static_cast<std::size_t>(k)], cls});
     }
   }
@@ -98,7 +132,20 @@ std::vector<Detection> decode_ssd(const cv::Mat& out, const DecodeOptions& o) {
   if (!is_ssd(out)) throw std::runtime_error("SSD output must be 1x1xNx7, got " + shape_text(out));
   require_float(out, "SSD");
   check_sizes(o);
-  return parse_ssd_output(out, o.image_size, o.min_confidence);
+  if (!o.letterbox) return parse_ssd_output(out, o.image_size, o.min_confidence);
+  // Letterboxed: the rows' 0..1 are of the input; their boxes go back through the letterbox.
+  const Letterbox lb = input_to_image(o);
+  const double w = o.input_size.width, h = o.input_size.height;
+  const cv::Mat rows(static_cast<int>(out.total() / 7), 7, CV_32F, const_cast<float*>(out.ptr<float>()));
+  std::vector<Detection> dets;
+  for (int i = 0; i < rows.rows; ++i) {
+    const float* r = rows.ptr<float>(i);
+    if (r[0] < 0 || r[2] < o.min_confidence) continue;
+    const cv::Rect2d in(r[3] * w, r[4] * h, (r[5] - r[3]) * w, (r[6] - r[4]) * h);
+    const cv::Rect box = to_pixels(letterbox_to_image(in, lb), o.image_size);
+    if (box.area() > 0) dets.push_back({box, r[2], static_cast<int>(r[1])});
+  }
+  return dets;
 }
 
 std::vector<Detection> decode_yolov5(const cv::Mat& out, const DecodeOptions& o) {

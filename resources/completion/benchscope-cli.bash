@@ -11,7 +11,7 @@ _benchscope_cli() {
   local options=""
   case "${COMP_WORDS[1]}" in
     battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
-    bench) options="--help --arch --backend --batch --ceilings-only --columns --detect-scale --detect-workers --frames --input --isa --model --no-ceilings --platform --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers --workspace" ;;
+    bench) options="--help --arch --backend --batch --ceilings-only --columns --detect-scale --detect-workers --frames --input --isa --json --model --no-ceilings --platform --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers --workspace" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
     devices) options="--help --isa --json --measure-ceilings --table --workspace" ;;

@@ -10,12 +10,17 @@ class TestFigureTemplate : public QObject {
  private slots:
   void paper_template() {
     const auto t = bs::load_figure_templates(BENCHSCOPE_SOURCE_DIR "/resources/figures/paper-2018.json");
-    QCOMPARE(t.size(), std::size_t{6});
+    QCOMPARE(t.size(), std::size_t{7});
     QCOMPARE(t[1].id, std::string("fig1b"));
     QCOMPARE(t[1].dims, (std::vector<int>{1, 2, 4}));
     QVERIFY(t[0].log_x);
     QCOMPARE(t[0].y_scale, 1e12);
     QCOMPARE(t[5].kind, std::string("current"));
+    QVERIFY(!t[5].optional);
+    // The inference-time figure: optional, as most workspaces have no bench dnn run.
+    QCOMPARE(t[6].kind, std::string("inference"));
+    QVERIFY(t[6].optional);
+    QCOMPARE(t[6].y_scale, 1e-3);
   }
 
   void selection() {
