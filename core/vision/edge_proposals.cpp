@@ -66,8 +66,10 @@ Plane fit_plane(const std::vector<RayPoint>& pts, const Index& idx, bool great, 
     m += wi * pts[i].v;
     wsum += wi;
   }
-  if (great || wsum <= 0) m = cv::Vec3d(0, 0, 0);
-  else m *= 1 / wsum;
+  if (great || wsum <= 0)
+    m = cv::Vec3d(0, 0, 0);
+  else
+    m *= 1 / wsum;
   cv::Matx33d c = cv::Matx33d::zeros();
   std::size_t k = 0;
   for (const auto i : idx) {
@@ -143,8 +145,8 @@ constexpr double kMinPiecePx = 15;  // pieces shorter than this carry too little
 // Splits pts[lo, hi) into pieces that each lie on one plane: RANSAC (3-point planes, points drawn from the three
 // thirds of the range) for the plane with the most inliers, least squares on them, then the longest run of
 // inliers (gaps of a few outliers bridged) is a piece and the parts before and after are tried again.
-void split_straight(const std::vector<RayPoint>& pts, std::size_t lo, std::size_t hi, double inlier_px,
-                    cv::RNG& rng, std::vector<Piece>& out) {
+void split_straight(const std::vector<RayPoint>& pts, std::size_t lo, std::size_t hi, double inlier_px, cv::RNG& rng,
+                    std::vector<Piece>& out) {
   if (hi - lo < 8 || arc_length(pts, lo, hi) < kMinPiecePx) return;
   const std::size_t n = hi - lo;
   const auto count_inliers = [&](const Plane& pl) {
@@ -476,8 +478,10 @@ LineProposals propose_lines(const cv::Mat& image, const Lens& lens, const LinePr
   {
     cv::Mat f;
     image.convertTo(f, CV_32F);
-    if (f.channels() == 3) cv::cvtColor(f, gray, cv::COLOR_BGR2GRAY);
-    else gray = f;
+    if (f.channels() == 3)
+      cv::cvtColor(f, gray, cv::COLOR_BGR2GRAY);
+    else
+      gray = f;
   }
   std::vector<float> sample;
   for (int y = 0; y < gray.rows; y += 4)
@@ -515,8 +519,10 @@ LineProposals propose_lines(const cv::Mat& image, const Lens& lens, const LinePr
 
   // 2. Gradient, Canny, sub-pixel edge points.
   cv::Mat blurred, dx, dy, mag;
-  if (o.blur_sigma > 0) cv::GaussianBlur(gray, blurred, cv::Size(0, 0), o.blur_sigma);
-  else blurred = gray;
+  if (o.blur_sigma > 0)
+    cv::GaussianBlur(gray, blurred, cv::Size(0, 0), o.blur_sigma);
+  else
+    blurred = gray;
   cv::Sobel(blurred, dx, CV_32F, 1, 0, 3, 1.0 / 8);
   cv::Sobel(blurred, dy, CV_32F, 0, 1, 3, 1.0 / 8);
   cv::magnitude(dx, dy, mag);
@@ -561,8 +567,10 @@ LineProposals propose_lines(const cv::Mat& image, const Lens& lens, const LinePr
         cv::Point2d g(dx.at<float>(ip), dy.at<float>(ip));
         if (const double len = cv::norm(g); len > 0) g *= 1 / len;
         RayPoint r;
-        if (ray_point(lens, p, r, g)) run.push_back(r);
-        else flush();
+        if (ray_point(lens, p, r, g))
+          run.push_back(r);
+        else
+          flush();
       }
       flush();
     }

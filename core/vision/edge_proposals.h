@@ -28,18 +28,18 @@
 namespace bs::vision {
 
 struct LineProposalOptions {
-  double blur_sigma = 1.0;     // Gaussian blur before the gradient, px (larger for noisy frames)
-  double canny_low = 0.015;    // hysteresis thresholds on the gradient magnitude, fraction of the range per px
-  double canny_high = 0.04;    //   (the range: dark surround to bright level)
-  double rim_margin_px = 8;    // edges closer than this to the lit disc's rim are ignored
-  double corner_deg = 30;      // a chain turning more than this over +-5 px is split there
-  double inlier_px = 0.8;      // distance from a line's curve within which a point counts as on it
-  double max_rms_px = 0.5;     // RMS about the curve allowed (edge noise, not shape)
-  double max_bend_px = 6;      // largest distance from the best world-straight line under the lens
-  double min_length_px = 80;   // shortest proposal, arc length in the fisheye image
-  double max_gap_px = 80;      // pieces on one line are merged across gaps up to this
-  double point_spacing_px = 8; // spacing of the returned points along a line (each an average of +-3 edge pixels)
-  int max_lines = 80;          // the longest; <= 0: all
+  double blur_sigma = 1.0;      // Gaussian blur before the gradient, px (larger for noisy frames)
+  double canny_low = 0.015;     // hysteresis thresholds on the gradient magnitude, fraction of the range per px
+  double canny_high = 0.04;     //   (the range: dark surround to bright level)
+  double rim_margin_px = 8;     // edges closer than this to the lit disc's rim are ignored
+  double corner_deg = 30;       // a chain turning more than this over +-5 px is split there
+  double inlier_px = 0.8;       // distance from a line's curve within which a point counts as on it
+  double max_rms_px = 0.5;      // RMS about the curve allowed (edge noise, not shape)
+  double max_bend_px = 6;       // largest distance from the best world-straight line under the lens
+  double min_length_px = 80;    // shortest proposal, arc length in the fisheye image
+  double max_gap_px = 80;       // pieces on one line are merged across gaps up to this
+  double point_spacing_px = 8;  // spacing of the returned points along a line (each an average of +-3 edge pixels)
+  int max_lines = 80;           // the longest; <= 0: all
 };
 
 struct ProposedLine {

@@ -190,8 +190,8 @@ class TestEdgeProposals : public QObject {
     const auto lines = proposal_points(props);
     const Scores s = score(truth, lines, room.seed);
     qInfo("%d edge px, %d chains, %d pieces -> %zu lines (%d too bent, %d short or rough) in %.0f ms",
-          props.edge_pixels, props.chains, props.pieces, props.lines.size(), props.rejected_bent,
-          props.rejected_short, ms);
+          props.edge_pixels, props.chains, props.pieces, props.lines.size(), props.rejected_bent, props.rejected_short,
+          ms);
     qInfo("recall %d/%d = %.2f; precision %d/%d = %.2f (straight in the world), %.2f on a grid line", s.found,
           s.truth_lines, s.recall(), s.straight, s.proposals, s.precision(), s.grid_precision());
     if (qEnvironmentVariableIsSet("EDGE_DEBUG")) {
@@ -222,7 +222,8 @@ class TestEdgeProposals : public QObject {
     }
     // The curves drawn in are never proposed: no proposal runs along them.
     const auto on_curve = [](const cv::Point2d& p) {
-      return std::abs(cv::norm(p - cv::Point2d(420, 380)) - 70) < 4 || std::abs(cv::norm(p - cv::Point2d(880, 640)) - 110) < 4;
+      return std::abs(cv::norm(p - cv::Point2d(420, 380)) - 70) < 4 ||
+             std::abs(cv::norm(p - cv::Point2d(880, 640)) - 110) < 4;
     };
     for (const auto& l : props.lines) {
       int near = 0;
@@ -261,18 +262,19 @@ class TestEdgeProposals : public QObject {
       int bad_kept = 0, bad_rejected = 0;
       for (std::size_t i = 0; i < lines.size(); ++i) {
         const bool bad = line_straightness(truth, {lines[i]}).rms_px >= kStraightPx;
-        const bool rejected =
-            std::find(fit.rejected_lines.begin(), fit.rejected_lines.end(), static_cast<int>(i)) != fit.rejected_lines.end();
+        const bool rejected = std::find(fit.rejected_lines.begin(), fit.rejected_lines.end(), static_cast<int>(i)) !=
+                              fit.rejected_lines.end();
         bad_kept += bad && !rejected;
         bad_rejected += bad && rejected;
       }
-      qInfo("seed %d: %zu lines, %zu rejected (%d of them not straight in the world, %d such kept); RMS %.3f -> "
-            "%.3f px in %.0f ms; centre error %.2f -> %.3f px, r_pp error %.2f -> %.3f %% (no rejection: %.3f px, "
-            "%.3f %%)",
-            static_cast<int>(c.seed), lines.size(), fit.rejected_lines.size(), bad_rejected, bad_kept,
-            fit.before.rms_px, fit.after.rms_px, ms, centre_error(start, truth), centre_error(fit.lens, truth),
-            100 * r_pp_error(start, truth), 100 * r_pp_error(fit.lens, truth), centre_error(plain.lens, truth),
-            100 * r_pp_error(plain.lens, truth));
+      qInfo(
+          "seed %d: %zu lines, %zu rejected (%d of them not straight in the world, %d such kept); RMS %.3f -> "
+          "%.3f px in %.0f ms; centre error %.2f -> %.3f px, r_pp error %.2f -> %.3f %% (no rejection: %.3f px, "
+          "%.3f %%)",
+          static_cast<int>(c.seed), lines.size(), fit.rejected_lines.size(), bad_rejected, bad_kept, fit.before.rms_px,
+          fit.after.rms_px, ms, centre_error(start, truth), centre_error(fit.lens, truth),
+          100 * r_pp_error(start, truth), 100 * r_pp_error(fit.lens, truth), centre_error(plain.lens, truth),
+          100 * r_pp_error(plain.lens, truth));
       QVERIFY(centre_error(fit.lens, truth) < 1.0);
       QVERIFY(r_pp_error(fit.lens, truth) < 0.005);
       QVERIFY(fit.lens.calibration.detail.find("left out") != std::string::npos);
