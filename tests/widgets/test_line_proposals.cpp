@@ -53,7 +53,7 @@ class TestLineProposals : public QObject {
     room.vignetting = 0.3;
     room.noise = 0.005;
     ui::LensTab tab;
-    tab.resize(1500, 980);
+    tab.resize(1500, 1120);  // tall enough for the whole line panel in the screenshot
     tab.show();
     ReprojectionTuner& t = *tab.tuner();
     t.set_fisheye(vision::render_room_fisheye(truth, room), "synthetic room, Kannala-Brandt 195°");
