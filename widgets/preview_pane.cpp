@@ -66,7 +66,7 @@ void PreviewPane::paintEvent(QPaintEvent*) {
     for (const auto& q : o.points) w << to_widget(q);
     QColor fill = o.colour;
     fill.setAlpha(70);
-    p.setPen(QPen(o.colour, 2));
+    p.setPen(QPen(o.colour, o.width));
     if (o.closed && w.size() >= 3) {
       p.setBrush(fill);
       p.drawPolygon(w);

@@ -17,6 +17,7 @@ class PreviewPane : public QWidget {
     QColor colour;
     bool closed = false;   // a polygon (filled translucent) rather than a polyline
     bool markers = false;  // draw a small cross on every point
+    double width = 2;      // pen width, widget pixels
   };
   struct Circle {
     QPointF centre;

@@ -10,9 +10,11 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
@@ -28,6 +30,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "preview_pane.h"
+#include "vision/edge_proposals.h"
 #include "vision/fast_map.h"
 #include "vision/straight_line.h"
 
@@ -161,13 +164,38 @@ void ReprojectionTuner::build_ui() {
       tr("Reprojected rectilinear view. With 'Measure line' on, click points along a line that "
          "is straight in the world; the residual is shown below."));
   connect(fisheye_pane_, &PreviewPane::clicked, this, [this](QPointF p) {
-    if (mask_editing_) add_mask_point(p);
+    if (mask_editing_) {
+      add_mask_point(p);
+      return;
+    }
+    std::vector<QPolygonF> curves;
+    for (const auto& l : state_.lines()) {
+      QPolygonF q;
+      for (const auto& pt : l) q << QPointF(pt.x, pt.y);
+      curves.push_back(q);
+    }
+    // 8 widget pixels, in image pixels.
+    const double tol = 8 * fisheye_pane_->image().width() / std::max(1.0, double(fisheye_pane_->width()));
+    select_line(line_near(curves, p, std::max(tol, 3.0)));
   });
   connect(fisheye_pane_, &PreviewPane::double_clicked, this, [this](QPointF) {
     if (mask_editing_) finish_mask();
   });
   connect(output_pane_, &PreviewPane::clicked, this, [this](QPointF p) {
-    if (line_button_->isChecked()) add_line_point(p);
+    if (line_button_->isChecked()) {
+      add_line_point(p);
+      return;
+    }
+    const auto& prm = state_.params();
+    std::vector<QPolygonF> curves;
+    for (const auto& l : state_.lines()) {
+      QPolygonF q;
+      for (const auto& pt : l)
+        if (const auto o = vision::view_pixel_of(prm.lens, prm.view, pt)) q << QPointF(o->x, o->y);
+      curves.push_back(q);
+    }
+    const double tol = 8 * output_pane_->image().width() / std::max(1.0, double(output_pane_->width()));
+    select_line(line_near(curves, p, std::max(tol, 3.0)));
   });
 
   auto* previews = new QSplitter(Qt::Vertical);
@@ -351,6 +379,37 @@ QWidget* ReprojectionTuner::build_controls() {
   line_label_->setWordWrap(true);
   line_label_->setToolTip(tr("RMS and largest perpendicular distance in output pixels from the best-fit line"));
   tl->addWidget(line_label_);
+  auto* propose_row = new QHBoxLayout;
+  propose_button_ = new QPushButton(tr("Propose lines"));
+  propose_button_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+  propose_button_->setToolTip(
+      tr("Find long edges in the fisheye frame that are straight in the world under the current lens (a little "
+         "bend allowed, for a lens not yet right) and add them as lines to fit; edit them like picked lines. "
+         "One undo step (Ctrl+Shift+P)"));
+  connect(propose_button_, &QPushButton::clicked, this, [this] { propose_lines(); });
+  delete_line_button_ = new QPushButton(tr("Delete line"));
+  delete_line_button_->setToolTip(
+      tr("Remove the selected line (pick it in the list, or click near it on a preview); one undo step (Del)"));
+  delete_line_button_->setEnabled(false);
+  connect(delete_line_button_, &QPushButton::clicked, this, [this] { delete_selected_line(); });
+  // Del only while the focus is in the tuner: the workspace tree beside it takes Del for its own removals.
+  auto* delete_key = new QAction(this);
+  delete_key->setShortcut(QKeySequence::Delete);
+  delete_key->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+  connect(delete_key, &QAction::triggered, this, [this] { delete_selected_line(); });
+  addAction(delete_key);
+  propose_row->addWidget(propose_button_);
+  propose_row->addWidget(delete_line_button_);
+  tl->addLayout(propose_row);
+  lines_list_ = new QListWidget;
+  lines_list_->setToolTip(
+      tr("Picked and proposed lines: points, length in the fisheye and straightness RMS under the current lens "
+         "(fisheye pixels). Select one to highlight it; Delete line removes it"));
+  lines_list_->setMaximumHeight(130);
+  connect(lines_list_, &QListWidget::currentRowChanged, this, [this](int row) {
+    if (!syncing_) select_line(row);
+  });
+  tl->addWidget(lines_list_);
   auto* fit_row = new QHBoxLayout;
   auto* fit_button = new QPushButton(tr("Fit lens to lines"));
   fit_button->setToolTip(
@@ -370,7 +429,8 @@ QWidget* ReprojectionTuner::build_controls() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save lines"), "lines.json", tr("Lines JSON (*.json)"));
     if (path.isEmpty()) return;
     try {
-      vision::save_lines_json(lines_, state_.params().lens.width, state_.params().lens.height, path.toStdString());
+      vision::save_lines_json(state_.lines(), state_.params().lens.width, state_.params().lens.height,
+                              path.toStdString());
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Save lines"), QString::fromStdString(e.what()));
     }
@@ -392,11 +452,22 @@ QWidget* ReprojectionTuner::build_controls() {
       tr("Fit the principal point too. Turn off to keep it, e.g. after Detect circle, which "
          "measures it to a fraction of a pixel: lines see it weakly (near the axis a shifted "
          "centre looks like a turned camera, and lines stay straight)"));
+  reject_lines_ = new QCheckBox(tr("reject outliers"));
+  reject_lines_->setChecked(true);
+  reject_lines_->setToolTip(
+      tr("Leave out lines straight to worse than 3x the median line under the fitted lens, and fit again: edges "
+         "that are no lines of the world (two meeting at a slight angle) get into proposals. Left-out lines turn "
+         "red"));
   fit_row->addWidget(fit_button);
-  fit_row->addWidget(fit_centre_);
   fit_row->addWidget(save_lines);
   fit_row->addWidget(load_lines);
   tl->addLayout(fit_row);
+  auto* fit_options = new QHBoxLayout;
+  fit_options->addWidget(new QLabel(tr("Fit:")));
+  fit_options->addWidget(fit_centre_);
+  fit_options->addWidget(reject_lines_);
+  fit_options->addStretch(1);
+  tl->addLayout(fit_options);
   line_fit_label_ = new QLabel(tr("Line fit: pick 3 or more lines, then fit"));
   line_fit_label_->setWordWrap(true);
   line_fit_label_->setToolTip(
@@ -462,6 +533,8 @@ void ReprojectionTuner::state_changed() {
   redo_->setEnabled(state_.can_redo());
   line_label_->setText(line_residual_text());  // the picked points move with the lens
   line_fit_label_->setText(lines_summary_text());
+  if (selected_ >= static_cast<int>(state_.lines().size())) selected_ = -1;  // an undo took the line away
+  update_lines_list();
   request_preview();
   emit lens_changed(state_.params().lens, state_.params().view);
 }
@@ -505,11 +578,20 @@ void ReprojectionTuner::update_overlays() {
     for (const auto& pt : editing_mask_) q << QPointF(pt.x, pt.y);
     overlays.push_back({q, QColor(255, 160, 0), false, true});
   }
-  // Picked lines on the fisheye too (source pixels), so the user sees what the fit will use.
-  for (const auto& l : lines_) {
+  // Picked lines on the fisheye too (source pixels), so the user sees what the fit will use: the selected one
+  // thick and white, those the last fit left out red, the one taking clicks yellow. Markers on clicked lines
+  // (proposed ones have a point every few pixels).
+  const auto& picked = state_.lines();
+  const auto colour_of = [&](std::size_t i) {
+    if (static_cast<int>(i) == selected_) return QColor(255, 255, 255);
+    if (std::find(left_out_.begin(), left_out_.end(), picked[i]) != left_out_.end()) return QColor(255, 60, 60);
+    return i + 1 == picked.size() && !new_line_pending_ ? QColor(255, 200, 0) : QColor(0, 220, 255);
+  };
+  for (std::size_t i = 0; i < picked.size(); ++i) {
     QPolygonF q;
-    for (const auto& pt : l) q << QPointF(pt.x, pt.y);
-    overlays.push_back({q, QColor(255, 200, 0), false, true});
+    for (const auto& pt : picked[i]) q << QPointF(pt.x, pt.y);
+    const bool sel = static_cast<int>(i) == selected_;
+    overlays.push_back({q, colour_of(i), false, picked[i].size() < 25 || sel, sel ? 4.0 : 2.0});
   }
   fisheye_pane_->set_overlays(overlays);
   // The lens's image circle (FOV/2) and, after auto-calibration, the detected one.
@@ -523,12 +605,24 @@ void ReprojectionTuner::update_overlays() {
   if (circle_) circles.push_back({QPointF(circle_->centre.x, circle_->centre.y), circle_->radius, QColor(60, 220, 60)});
   fisheye_pane_->set_circles(circles);
   // The picked lines as the current lens maps them into the view: straight when the lens is right.
+  // Only the stretches inside the view (proposals span the whole fisheye; the view shows a part of it).
   std::vector<PreviewPane::Overlay> lines;
-  for (std::size_t i = 0; i < lines_.size(); ++i) {
+  const QRectF inside(-2.5, -2.5, p.view.width + 4, p.view.height + 4);
+  for (std::size_t i = 0; i < picked.size(); ++i) {
+    const bool sel = static_cast<int>(i) == selected_;
+    const auto flush = [&](QPolygonF& q) {
+      if (!q.isEmpty()) lines.push_back({q, colour_of(i), false, picked[i].size() < 25 || sel, sel ? 4.0 : 2.0});
+      q.clear();
+    };
     QPolygonF q;
-    for (const auto& s : lines_[i])
-      if (const auto o = vision::view_pixel_of(p.lens, p.view, s)) q << QPointF(o->x, o->y);
-    lines.push_back({q, i + 1 == lines_.size() ? QColor(255, 200, 0) : QColor(0, 220, 255), false, true});
+    for (const auto& s : picked[i]) {
+      const auto o = vision::view_pixel_of(p.lens, p.view, s);
+      if (o && inside.contains(QPointF(o->x, o->y)))
+        q << QPointF(o->x, o->y);
+      else
+        flush(q);
+    }
+    flush(q);
   }
   output_pane_->set_overlays(lines);
 }
@@ -631,19 +725,131 @@ bool ReprojectionTuner::add_line_point(QPointF p) {
 }
 
 void ReprojectionTuner::add_source_point(const cv::Point2d& source_px) {
-  if (lines_.empty()) lines_.emplace_back();
-  lines_.back().push_back(source_px);
+  auto lines = state_.lines();
+  if (lines.empty() || new_line_pending_) lines.emplace_back();
+  new_line_pending_ = false;
+  lines.back().push_back(source_px);
+  set_lines(std::move(lines), "line point");
+}
+
+void ReprojectionTuner::set_lines(std::vector<vision::PickedLine> lines, const std::string& what) {
+  state_.end_merge();  // every line edit is its own step
+  const bool changed = state_.set_lines(lines, what);
+  state_.end_merge();
+  if (changed) state_changed();
+}
+
+void ReprojectionTuner::lines_changed() {
   update_overlays();
   line_label_->setText(line_residual_text());
   line_fit_label_->setText(lines_summary_text());
+  update_lines_list();
+}
+
+void ReprojectionTuner::update_lines_list() {
+  const auto& lines = state_.lines();
+  const auto& lens = state_.params().lens;
+  syncing_ = true;
+  while (lines_list_->count() > static_cast<int>(lines.size())) delete lines_list_->takeItem(lines_list_->count() - 1);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    double length = 0;
+    for (std::size_t k = 1; k < lines[i].size(); ++k) length += cv::norm(lines[i][k] - lines[i][k - 1]);
+    QString text = tr("%1: %2 points, %3 px").arg(i + 1).arg(lines[i].size()).arg(length, 0, 'f', 0);
+    if (lines[i].size() >= 3) {
+      try {
+        text += tr(", RMS %1 px").arg(vision::line_straightness(lens, {lines[i]}).rms_px, 0, 'f', 2);
+      } catch (const std::exception&) {
+        text += tr(", no ray under this lens");
+      }
+    }
+    if (std::find(left_out_.begin(), left_out_.end(), lines[i]) != left_out_.end())
+      text += tr(" (left out by the fit)");
+    if (static_cast<int>(i) < lines_list_->count())
+      lines_list_->item(static_cast<int>(i))->setText(text);
+    else
+      lines_list_->addItem(text);
+  }
+  lines_list_->setCurrentRow(selected_);
+  syncing_ = false;
+  delete_line_button_->setEnabled(selected_ >= 0);
+}
+
+int ReprojectionTuner::line_near(const std::vector<QPolygonF>& curves, QPointF p, double tol) const {
+  int best = -1;
+  double best_d = tol;
+  for (std::size_t i = 0; i < curves.size(); ++i)
+    for (int k = 0; k < curves[i].size(); ++k) {
+      // Distance to the segment from point k to k + 1 (or to the point alone at the end).
+      const QPointF a = curves[i][k], b = k + 1 < curves[i].size() ? curves[i][k + 1] : a;
+      const QPointF d = b - a;
+      const double l2 = QPointF::dotProduct(d, d);
+      const double t = l2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / l2, 0.0, 1.0) : 0.0;
+      const QPointF c = a + t * d - p;
+      const double dist = std::hypot(c.x(), c.y());
+      if (dist < best_d) best_d = dist, best = static_cast<int>(i);
+    }
+  return best;
+}
+
+void ReprojectionTuner::select_line(int index) {
+  if (index < -1 || index >= static_cast<int>(state_.lines().size())) index = -1;
+  selected_ = index;
+  update_overlays();
+  update_lines_list();
+}
+
+bool ReprojectionTuner::delete_selected_line() {
+  if (selected_ < 0 || selected_ >= static_cast<int>(state_.lines().size())) return false;
+  auto lines = state_.lines();
+  lines.erase(lines.begin() + selected_);
+  const int next = std::min(selected_, static_cast<int>(lines.size()) - 1);
+  selected_ = -1;
+  set_lines(std::move(lines), "delete line");
+  select_line(next);
+  status_->setText(tr("Line deleted (Ctrl+Z brings it back)."));
+  return true;
+}
+
+int ReprojectionTuner::propose_lines() {
+  if (fisheye_.empty()) {
+    status_->setText(tr("No fisheye frame to propose lines in."));
+    return 0;
+  }
+  const auto& lens = state_.params().lens;
+  vision::LineProposals proposals;
+  QElapsedTimer t;
+  t.start();
+  try {
+    QGuiApplication::setOverrideCursor(Qt::WaitCursor);
+    proposals = vision::propose_lines(fisheye_, lens);
+    QGuiApplication::restoreOverrideCursor();
+  } catch (const std::exception& e) {
+    QGuiApplication::restoreOverrideCursor();
+    status_->setText(tr("Propose lines: %1").arg(QString::fromStdString(e.what())));
+    return 0;
+  }
+  const auto found = vision::proposal_points(proposals);
+  const auto fresh = vision::lines_not_in(found, state_.lines());
+  auto lines = state_.lines();
+  lines.insert(lines.end(), fresh.begin(), fresh.end());
+  new_line_pending_ = true;  // clicks after this start a line of their own
+  set_lines(std::move(lines), "propose lines");
+  status_->setText(tr("Proposed %1 line(s) in %2 ms (%3 already picked; %4 edges rejected as bent, %5 as short "
+                      "or rough). Delete any that is not straight in the world; Ctrl+Z takes them all back.")
+                       .arg(fresh.size())
+                       .arg(static_cast<double>(t.nsecsElapsed()) / 1e6, 0, 'f', 0)
+                       .arg(found.size() - fresh.size())
+                       .arg(proposals.rejected_bent)
+                       .arg(proposals.rejected_short));
+  return static_cast<int>(fresh.size());
 }
 
 QString ReprojectionTuner::lines_summary_text() const {
   int usable = 0;
-  for (const auto& l : lines_) usable += l.size() >= 3;
+  for (const auto& l : state_.lines()) usable += l.size() >= 3;
   if (usable == 0) return tr("Line fit: pick 3 or more lines (3+ points each), then fit");
   try {
-    const auto s = vision::line_straightness(state_.params().lens, lines_);
+    const auto s = vision::line_straightness(state_.params().lens, state_.lines());
     return tr("Line fit: %1 line(s), %2 points; straightness RMS %3 px, max %4 px with this lens%5")
         .arg(s.lines)
         .arg(s.points)
@@ -656,36 +862,39 @@ QString ReprojectionTuner::lines_summary_text() const {
 }
 
 void ReprojectionTuner::new_line() {
-  if (!lines_.empty() && lines_.back().empty()) return;
-  lines_.emplace_back();
+  if (state_.lines().empty()) return;  // the first click starts one anyway
+  new_line_pending_ = true;
+  update_overlays();
   line_label_->setText(line_residual_text());
 }
 
 void ReprojectionTuner::clear_line_points() {
-  lines_.clear();
-  update_overlays();
-  line_label_->setText(line_residual_text());
-  line_fit_label_->setText(lines_summary_text());
+  new_line_pending_ = false;
+  selected_ = -1;
+  set_lines({}, "clear lines");
 }
 
 void ReprojectionTuner::set_picked_lines(std::vector<vision::PickedLine> lines) {
-  lines_ = std::move(lines);
-  update_overlays();
-  line_label_->setText(line_residual_text());
-  line_fit_label_->setText(lines_summary_text());
+  new_line_pending_ = false;
+  selected_ = -1;
+  set_lines(std::move(lines), "load lines");
 }
 
 vision::LineFitResult ReprojectionTuner::fit_lens_to_lines() {
   vision::LineFitOptions options;
   options.fixed[1] = options.fixed[2] = !fit_centre_->isChecked();
-  const vision::LineFitResult fit = vision::fit_lens_to_lines(state_.params().lens, lines_, options);
+  options.reject_lines = reject_lines_->isChecked() ? 3 : 0;
+  const auto& lines = state_.lines();
+  const vision::LineFitResult fit = vision::fit_lens_to_lines(state_.params().lens, lines, options);
+  left_out_.clear();
+  for (const int i : fit.rejected_lines) left_out_.push_back(lines[static_cast<std::size_t>(i)]);
   state_.end_merge();
   change("line fit", [&fit](auto& p) { p.lens = fit.lens; });
   state_.end_merge();
   const auto& lens = state_.params().lens;
   line_fit_text_ = tr("Line fit over %1 lines, %2 points: straightness RMS %3 px before → %4 px after (max %5 → %6 "
                       "px); Kannala-Brandt k = (%7, %8, %9, %10), image circle rim r = %11 px held (Detect circle "
-                      "measures it). Ctrl+Z undoes it.")
+                      "measures it).%12 Ctrl+Z undoes it.")
                        .arg(fit.after.lines)
                        .arg(fit.after.points)
                        .arg(fit.before.rms_px, 0, 'f', 2)
@@ -696,8 +905,12 @@ vision::LineFitResult ReprojectionTuner::fit_lens_to_lines() {
                        .arg(fit.lens.k[1], 0, 'g', 3)
                        .arg(fit.lens.k[2], 0, 'g', 3)
                        .arg(fit.lens.k[3], 0, 'g', 3)
-                       .arg(lens.radius(lens.fov_deg * kPi / 360).value_or(0), 0, 'f', 1);
+                       .arg(lens.radius(lens.fov_deg * kPi / 360).value_or(0), 0, 'f', 1)
+                       .arg(fit.rejected_lines.empty()
+                                ? QString()
+                                : tr(" %1 line(s) left out as outliers (red).").arg(fit.rejected_lines.size()));
   line_fit_label_->setText(line_fit_text_);
+  lines_changed();
   line_label_->setText(line_residual_text());
   return fit;
 }
@@ -706,8 +919,8 @@ QString ReprojectionTuner::line_residual_text() const {
   // The current line as the current lens maps it into the view.
   std::vector<cv::Point2d> pts;
   const auto& s = state_.params();
-  if (!lines_.empty())
-    for (const auto& src : lines_.back())
+  if (!state_.lines().empty() && !new_line_pending_)
+    for (const auto& src : state_.lines().back())
       if (const auto o = vision::view_pixel_of(s.lens, s.view, src)) pts.push_back(*o);
   if (pts.size() < 3) return tr("Line residual: click %1 more point(s)").arg(3 - static_cast<int>(pts.size()));
   try {

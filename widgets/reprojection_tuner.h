@@ -22,6 +22,8 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QListWidget;
+class QPushButton;
 class QSlider;
 class QSpinBox;
 class QToolBar;
@@ -63,20 +65,34 @@ class ReprojectionTuner : public QWidget {
   std::optional<vision::ImageCircle> auto_calibrate();
   // Straight-line tool: points clicked on the output preview (output pixels), kept as source pixels, so they stay
   // on the same scene points when the lens changes; the current line's residual is shown under the preview.
-  // Clicks where the view has no source are ignored (returns false).
+  // Clicks where the view has no source are ignored (returns false). The lines are part of the undo history
+  // (vision::TunerState::lines): every click, proposal, deletion, load or clear is one step.
   bool add_line_point(QPointF output_px);
   void add_source_point(const cv::Point2d& source_px);
   void new_line();  // the next clicks start another line
   void clear_line_points();
   QString line_residual_text() const;
-  const std::vector<vision::PickedLine>& picked_lines() const { return lines_; }
+  const std::vector<vision::PickedLine>& picked_lines() const { return state_.lines(); }
   void set_picked_lines(std::vector<vision::PickedLine> lines);
+  // "Propose lines": long edges of the fisheye frame that are straight in the world under the current lens
+  // (vision::propose_lines), added as picked lines (those not already picked), one undo step. Returns how many.
+  int propose_lines();
+  // The selected line (index into picked_lines(), -1: none): highlighted in both previews; "Delete line" removes
+  // it (one undo step). Clicking near a line on either preview (not while measuring or masking) selects it.
+  void select_line(int index);
+  int selected_line() const { return selected_; }
+  bool delete_selected_line();
+  QListWidget* lines_list() const { return lines_list_; }
+  QPushButton* propose_button() const { return propose_button_; }
+  QPushButton* delete_line_button() const { return delete_line_button_; }
   // Line refinement: fits r_pp, principal point and k1..k4 (Kannala-Brandt) to the picked lines, keeping the image
-  // circle's rim, and applies the result as one undo step. Throws std::invalid_argument (too few lines...).
+  // circle's rim, and applies the result as one undo step; with "reject outlier lines" on, lines straight to
+  // worse than 3x the median line are left out (shown in red). Throws std::invalid_argument (too few lines...).
   vision::LineFitResult fit_lens_to_lines();
   QString line_fit_text() const { return line_fit_text_; }
   QString lines_summary_text() const;                        // all picked lines' straightness under the current lens
   QCheckBox* fit_centre_box() const { return fit_centre_; }  // off: the line fit keeps the principal point
+  QCheckBox* reject_lines_box() const { return reject_lines_; }
   // Mask editing: while on, clicks on the fisheye preview add polygon points; a double click (or turning it off)
   // closes the polygon.
   void set_mask_editing(bool on);
@@ -110,11 +126,17 @@ class ReprojectionTuner : public QWidget {
   void start_job();
   void job_finished();
   void update_scale_mode();
+  void set_lines(std::vector<vision::PickedLine> lines, const std::string& what);  // one undo step
+  void lines_changed();                                                            // overlays, list, labels
+  void update_lines_list();
+  int line_near(const std::vector<QPolygonF>& curves, QPointF p, double tol) const;
 
   vision::TunerState state_;
   cv::Mat fisheye_;
   std::optional<vision::ImageCircle> circle_;
-  std::vector<vision::PickedLine> lines_;  // source pixels; the last one takes the clicks
+  bool new_line_pending_ = false;  // the next click starts a line (else it goes to the last one)
+  int selected_ = -1;
+  std::vector<vision::PickedLine> left_out_;  // lines the last fit rejected, drawn red while they are picked
   QString line_fit_text_;
   vision::MaskPolygon editing_mask_;
   bool mask_editing_ = false;
@@ -141,7 +163,9 @@ class ReprojectionTuner : public QWidget {
   QDoubleSpinBox *yaw_, *pitch_, *roll_;
   QToolButton *mask_button_, *line_button_;
   QDoubleSpinBox* circle_fov_;
-  QCheckBox* fit_centre_;
+  QCheckBox *fit_centre_, *reject_lines_;
+  QListWidget* lines_list_;
+  QPushButton *propose_button_, *delete_line_button_;
 };
 
 }  // namespace bs::ui

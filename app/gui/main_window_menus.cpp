@@ -163,6 +163,8 @@ void MainWindow::show_help() {
                          a->text().remove('&').remove(QStringLiteral("…")).toHtmlEscaped());
   html +=
       tr("<tr><td><tt>Ctrl+Z / Ctrl+Shift+Z</tt></td><td>Lens tab: undo / redo a lens change</td></tr>"
+         "<tr><td><tt>Ctrl+Shift+P / Del</tt></td><td>Lens tab: propose straight lines in the fisheye frame; "
+         "delete the selected line</td></tr>"
          "<tr><td><tt>F2 / Del</tt></td><td>Workspace tree: rename the platform, power log or frame; remove "
          "the import that brought the selected item (Ctrl+Z outside the Lens tab undoes)</td></tr>"
          "<tr><td><tt>Double-click</tt></td><td>Platforms and peak tables: show where a number came from</td></tr>"

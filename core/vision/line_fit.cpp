@@ -202,8 +202,9 @@ LineStraightness line_straightness(const Lens& lens, const std::vector<PickedLin
   return s;
 }
 
-LineFitResult fit_lens_to_lines(const Lens& start_lens, const std::vector<PickedLine>& lines,
-                                const LineFitOptions& options) {
+namespace {
+
+LineFitResult fit_once(const Lens& start_lens, const std::vector<PickedLine>& lines, const LineFitOptions& options) {
   int usable = 0;
   for (const auto& l : lines) usable += l.size() >= 3;
   if (usable < 3)
@@ -310,6 +311,53 @@ LineFitResult fit_lens_to_lines(const Lens& start_lens, const std::vector<Picked
                 result.before.max_px, result.after.max_px, rim);
   cal.detail = detail;
   return result;
+}
+
+}  // namespace
+
+LineFitResult fit_lens_to_lines(const Lens& start, const std::vector<PickedLine>& lines,
+                                const LineFitOptions& options) {
+  LineFitResult fit = fit_once(start, lines, options);
+  if (!(options.reject_lines > 0)) return fit;
+  std::vector<int> rejected;
+  for (int round = 0; round < 4; ++round) {
+    // Every line's straightness under this fit, the dropped ones too (a better lens may take them back).
+    std::vector<double> rms(lines.size(), -1), usable;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (lines[i].size() < 3) continue;
+      try {
+        rms[i] = line_straightness(fit.lens, {lines[i]}).rms_px;
+        usable.push_back(rms[i]);
+      } catch (const std::invalid_argument&) {
+        rms[i] = std::numeric_limits<double>::infinity();  // a point without a ray under this lens
+      }
+    }
+    if (usable.empty()) break;
+    std::nth_element(usable.begin(), usable.begin() + static_cast<std::ptrdiff_t>(usable.size() / 2), usable.end());
+    const double limit = std::max(options.reject_lines * usable[usable.size() / 2], 0.1);
+    std::vector<int> out;
+    std::vector<PickedLine> kept;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (rms[i] > limit)
+        out.push_back(static_cast<int>(i));
+      else
+        kept.push_back(lines[i]);
+    }
+    if (out == rejected) break;
+    int kept_usable = 0;
+    for (const auto& l : kept) kept_usable += l.size() >= 3;
+    if (kept_usable < 3) break;
+    fit = fit_once(start, kept, options);
+    rejected = out;
+  }
+  fit.rejected_lines = rejected;
+  if (!rejected.empty()) {
+    char more[160];
+    std::snprintf(more, sizeof more, "; %zu line(s) left out (straightness RMS over %.3g x the median line's)",
+                  rejected.size(), options.reject_lines);
+    fit.lens.calibration.detail += more;
+  }
+  return fit;
 }
 
 nlohmann::json lines_to_json(const std::vector<PickedLine>& lines, int width, int height) {

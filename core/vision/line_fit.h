@@ -54,14 +54,20 @@ struct LineFitOptions {
   int max_iterations = 200;
   // Parameters held at the start's value, in the order r_pp, cx, cy, k1, k2, k3, k4.
   std::array<bool, 7> fixed{};
+  // > 0: lines that are no lines of the world (two lines meeting at a slight angle, an edge that bends) are left
+  // out: after a fit, every line whose straightness RMS under the fitted lens exceeds max(reject_lines x the
+  // median line's, 0.1 px) is dropped and the fit repeated from the start over the others, until the set settles
+  // (4 rounds at most). For proposed lines (edge_proposals.h), where a few such edges always get in; 3 suits.
+  double reject_lines = 0;
 };
 // "r_pp", "cx", "cy", "centre" (both), "k1".."k4", comma-separated -> LineFitOptions::fixed; throws
 // std::invalid_argument naming the unknown name.
 std::array<bool, 7> fixed_parameters_from_string(const std::string& names);
 struct LineFitResult {
   Lens lens;  // Kannala-Brandt, calibration = line-fit with RMS after and the residual before/after in detail
-  LineStraightness before, after;  // source pixels
+  LineStraightness before, after;  // source pixels, over the lines used (all but rejected_lines)
   int iterations = 0;
+  std::vector<int> rejected_lines;  // indices into the lines given, left out by LineFitOptions::reject_lines
 };
 // Needs at least 3 lines of 3+ points. Throws std::invalid_argument naming the line and point without a ray.
 LineFitResult fit_lens_to_lines(const Lens& start, const std::vector<PickedLine>& lines,

@@ -97,16 +97,25 @@ TunerParams load_tuner_json(const std::filesystem::path& path) {
   }
 }
 
-TunerState::TunerState(TunerParams initial) : initial_(initial), current_(std::move(initial)) {}
+TunerState::TunerState(TunerParams initial) : initial_(initial), current_{std::move(initial), {}} {}
 
-bool TunerState::set(const TunerParams& p, const std::string& field) {
-  if (p == current_) return false;
+bool TunerState::push(Snapshot next, const std::string& field) {
   // The step before a merge run holds the state from before the run began, so only the first change pushes.
   if (field.empty() || field != merge_field_) undo_.push_back(current_);
   merge_field_ = field;
-  current_ = p;
+  current_ = std::move(next);
   redo_.clear();
   return true;
+}
+
+bool TunerState::set(const TunerParams& p, const std::string& field) {
+  if (p == current_.params) return false;
+  return push({p, current_.lines}, field);
+}
+
+bool TunerState::set_lines(const Lines& lines, const std::string& field) {
+  if (lines == current_.lines) return false;
+  return push({current_.params, lines}, field);
 }
 
 bool TunerState::undo() {
@@ -128,7 +137,7 @@ bool TunerState::redo() {
 }
 
 void TunerState::rebase(const TunerParams& p) {
-  initial_ = current_ = p;
+  initial_ = current_.params = p;
   undo_.clear();
   redo_.clear();
   merge_field_.clear();

@@ -31,17 +31,22 @@ TunerParams tuner_from_json(const nlohmann::json& j);  // throws std::invalid_ar
 void save_tuner_json(const TunerParams& p, const std::filesystem::path& path);
 TunerParams load_tuner_json(const std::filesystem::path& path);  // throws std::runtime_error naming the file
 
-// Undo/redo over TunerParams. Every change names the field it edits; consecutive changes of the same field merge
-// into one undo step (a slider drag is one step) until end_merge() is called (slider released, editing finished)
-// or another field changes.
+// Undo/redo over TunerParams and the straight-line tool's picked lines (source pixels; kept beside the parameters,
+// not in them: they are no part of the lens file, and Reset, rebase and loading a lens keep them). Every change
+// names the field it edits; consecutive changes of the same field merge into one undo step (a slider drag is one
+// step) until end_merge() is called (slider released, editing finished) or another field changes.
 class TunerState {
  public:
+  using Lines = std::vector<std::vector<cv::Point2d>>;  // line_fit.h's PickedLine
   explicit TunerState(TunerParams initial = {});
-  const TunerParams& params() const { return current_; }
+  const TunerParams& params() const { return current_.params; }
   const TunerParams& initial() const { return initial_; }
+  const Lines& lines() const { return current_.lines; }
 
   // Returns false (and records nothing) when `p` equals the current parameters.
   bool set(const TunerParams& p, const std::string& field);
+  // The same for the picked lines (the parameters stay).
+  bool set_lines(const Lines& lines, const std::string& field);
   void end_merge() { merge_field_.clear(); }
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
@@ -49,13 +54,19 @@ class TunerState {
   bool redo();
   // Back to the initial parameters, as one undoable step.
   bool reset() { return set(initial_, "reset") && (end_merge(), true); }
-  // A new baseline (e.g. a loaded file becomes what Reset returns to): clears the history.
+  // A new baseline (e.g. a loaded file becomes what Reset returns to): clears the history; the lines stay.
   void rebase(const TunerParams& p);
   std::size_t undo_depth() const { return undo_.size(); }
 
  private:
-  TunerParams initial_, current_;
-  std::vector<TunerParams> undo_, redo_;
+  struct Snapshot {
+    TunerParams params;
+    Lines lines;
+  };
+  bool push(Snapshot next, const std::string& field);
+  TunerParams initial_;
+  Snapshot current_;
+  std::vector<Snapshot> undo_, redo_;
   std::string merge_field_;
 };
 

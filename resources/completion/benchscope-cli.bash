@@ -20,7 +20,7 @@ _benchscope_cli() {
     frames) options="--help --lens --method --out --triptych --window" ;;
     help) COMPREPLY=($(compgen -W "$commands" -- "$cur")); return ;;
     import) options="--help --copy-frames --keep-going --quiet --raw-geometry" ;;
-    lens) options="--help --board --circle-fov --circle-radius --fix --fov --lens --min-level --model --out --square" ;;
+    lens) options="--help --board --circle-fov --circle-radius --fix --fov --json --lens --max-bend --max-lines --min-length --min-level --model --out --propose --reject-lines --square" ;;
     peaks) options="--help --json --kind --precision" ;;
     pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
     platforms) options="--help --battery --budget --csv --extra-load --json --latex --min-fps --min-runtime --mission --supply-volts --workspace" ;;

@@ -235,6 +235,33 @@ class TestLineFit : public QObject {
     QVERIFY(max_radius_difference(fit.lens, truth) < 0.3);
     QVERIFY(r_pp_err < 0.005);
   }
+  void reject_lines_leaves_out_a_kinked_line() {
+    // One line made of two that meet at a slight angle (its second half turned by 3 px at the end): with
+    // reject_lines it is left out and the fit is as good as without it; without, it pulls the centre.
+    const Lens truth = true_lens();
+    auto lines = picked_room_lines(truth, 3, 0.1);
+    const std::size_t bad = lines.size() / 2;
+    auto& l = lines[bad];
+    const cv::Point2d d = l.back() - l.front();
+    const cv::Point2d across = cv::Point2d(-d.y, d.x) * (1 / cv::norm(d));
+    for (std::size_t i = l.size() / 2; i < l.size(); ++i)
+      l[i] += across * (3.0 * static_cast<double>(i - l.size() / 2) / static_cast<double>(l.size() / 2));
+    const Lens start = circle_fit_start(truth, 3.0, -2.0);
+    LineFitOptions o;
+    o.circle_radius_px = 600;
+    const auto plain = fit_lens_to_lines(start, lines, o);
+    o.reject_lines = 3;
+    const auto fit = fit_lens_to_lines(start, lines, o);
+    qInfo("kinked line %zu of %zu: rejected %zu line(s); centre error %.3f px (%.3f without rejection)", bad,
+          lines.size(), fit.rejected_lines.size(), std::hypot(fit.lens.cx - truth.cx, fit.lens.cy - truth.cy),
+          std::hypot(plain.lens.cx - truth.cx, plain.lens.cy - truth.cy));
+    QVERIFY(plain.rejected_lines.empty());
+    QCOMPARE(fit.rejected_lines, std::vector<int>{static_cast<int>(bad)});
+    QCOMPARE(fit.after.lines, static_cast<int>(lines.size()) - 1);
+    QVERIFY(fit.lens.calibration.detail.find("1 line(s) left out") != std::string::npos);
+    QVERIFY(std::hypot(fit.lens.cx - truth.cx, fit.lens.cy - truth.cy) <
+            std::hypot(plain.lens.cx - truth.cx, plain.lens.cy - truth.cy));
+  }
   void rejects_too_few_lines_and_bad_files() {
     const Lens truth = true_lens();
     auto lines = picked_room_lines(truth, 3, 0.0);

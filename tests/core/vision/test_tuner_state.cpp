@@ -50,6 +50,38 @@ class TestTunerState : public QObject {
     QVERIFY(!s.can_redo());
     QVERIFY(!s.set(s.params(), "pitch"));  // no change, no step
   }
+  void picked_lines_are_undo_steps_that_keep_the_lens() {
+    // The straight-line tool's lines live beside the parameters: each change of them is one step, undo brings
+    // them back without touching the lens, and Reset, rebase and lens changes keep them.
+    TunerState s;
+    TunerParams p = s.params();
+    const TunerState::Lines two = {{{1, 2}, {3, 4}, {5, 6}}, {{10, 10}, {20, 20}, {30, 31}}};
+    QVERIFY(s.set_lines(two, "propose lines"));
+    QVERIFY(!s.set_lines(two, "propose lines"));  // no change, no step
+    p.lens.r_pp *= 1.02;
+    QVERIFY(s.set(p, "r_pp"));
+    QCOMPARE(s.lines().size(), std::size_t{2});
+    s.end_merge();
+    QVERIFY(s.set_lines({two[0]}, "delete line"));
+    QCOMPARE(s.undo_depth(), std::size_t{3});
+    QVERIFY(s.undo());
+    QCOMPARE(s.lines().size(), std::size_t{2});
+    QCOMPARE(s.params().lens.r_pp, p.lens.r_pp);
+    QVERIFY(s.undo());
+    QCOMPARE(s.params().lens.r_pp, TunerParams{}.lens.r_pp);
+    QCOMPARE(s.lines().size(), std::size_t{2});
+    QVERIFY(s.undo());
+    QVERIFY(s.lines().empty());
+    QVERIFY(s.redo());
+    QVERIFY(s.lines() == two);
+    QVERIFY(s.redo());
+    QVERIFY(s.reset());  // the lens goes back, the lines stay
+    QVERIFY(s.params() == TunerParams{});
+    QVERIFY(s.lines() == two);
+    s.rebase(p);
+    QVERIFY(s.lines() == two);
+    QVERIFY(!s.can_undo());
+  }
   void reset_is_undoable_and_rebase_sets_the_baseline() {
     TunerState s;
     TunerParams p = s.params();
