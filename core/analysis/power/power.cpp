@@ -51,7 +51,8 @@ std::vector<double> power_series(const PowerTrace& trace, std::optional<double> 
 
 double integrate_trapezoid(const std::vector<double>& time_s, const std::vector<double>& values) {
   const std::size_t n = std::min(time_s.size(), values.size());
-  const TraceIndex index(std::span<const double>(time_s).first(n), std::span<const double>(values).first(n));
+  const TraceIndex index =
+      transient_index(std::span<const double>(time_s).first(n), std::span<const double>(values).first(n));
   return index.integral(index.first_s(), index.last_s());
 }
 

@@ -85,7 +85,7 @@ PowerSeries derive_power(const PowerTrace& trace, std::optional<double> supply_v
 double integrate_range(std::span<const double> t, std::span<const double> v, double from_s, double to_s) {
   const std::size_t n = std::min(t.size(), v.size());
   if (!(to_s > from_s)) return 0;
-  return TraceIndex(t.first(n), v.first(n)).integral(from_s, to_s);
+  return transient_index(t.first(n), v.first(n)).integral(from_s, to_s);
 }
 
 PowerIndex::PowerIndex(const PowerTrace& trace, std::optional<double> supply_v) { build(trace, supply_v, nullptr); }

@@ -81,6 +81,11 @@ TraceIndex::TraceIndex(std::span<const double> time_s, std::span<const double> v
   build_tables();
 }
 
+TraceIndex transient_index(std::span<const double> time_s, std::span<const double> values) {
+  // An owner that owns nothing (shared_ptr's aliasing constructor on an empty pointer): the caller keeps the samples.
+  return TraceIndex(time_s, values, std::shared_ptr<const void>(std::shared_ptr<const void>{}, values.data()));
+}
+
 TraceIndex TraceIndex::scaled(double factor) const {
   if (!(factor > 0) || !std::isfinite(factor))
     throw std::invalid_argument("trace index: a scale factor must be finite and > 0");

@@ -95,6 +95,11 @@ class TraceIndex {
   double scale_ = 1;
 };
 
+// An index that reads `time_s` and `values` in place without keeping them alive (when none is missing): for a query
+// or two on samples the caller holds for as long as the index lives. A 100-million-sample log is not copied to be
+// integrated once (trace summaries at import, integrate_range()).
+TraceIndex transient_index(std::span<const double> time_s, std::span<const double> values);
+
 // Exact linear-interpolated percentiles of the present (non-NaN) values: one copy, nth_element per quantile.
 Percentiles percentiles(std::span<const double> values);
 
