@@ -105,8 +105,11 @@ void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, con
   for (const PhaseEnergy& e : energies) joules += e.energy_j, watts += e.mean_power_w;
   if (!energies.empty()) {
     const double n = static_cast<double>(energies.size());
-    std::snprintf(line, sizeof line, "  %s: %.3f J per run, mean %.2f W, %.3f GFLOPS/W at mean power (%s)\n",
-                  std::string(to_string(trace.provenance.measurement)).c_str(), joules / n, watts / n, p / (watts / n),
+    // A sensor that read no energy (a counter that did not move) gives no GFLOPS/W, never "inf".
+    char per_watt[48] = "no GFLOPS/W (no power read)";
+    if (watts > 0) std::snprintf(per_watt, sizeof per_watt, "%.3f GFLOPS/W at mean power", p / (watts / n));
+    std::snprintf(line, sizeof line, "  %s: %.3f J per run, mean %.2f W, %s (%s)\n",
+                  std::string(to_string(trace.provenance.measurement)).c_str(), joules / n, watts / n, per_watt,
                   trace.provenance.sensor.c_str());
     out << line;
   }
