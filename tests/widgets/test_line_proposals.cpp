@@ -23,19 +23,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// As test_line_refinement.cpp: Kannala-Brandt, rim radius 600 px about (652.3, 498.7).
-vision::Lens true_lens() {
-  vision::Lens l;
-  l.type = vision::LensType::KannalaBrandt;
-  l.fov_deg = 195;
-  l.k = {0.06, -0.02, 0.003, 0};
-  l.cx = 652.3;
-  l.cy = 498.7;
-  l.r_pp = 1;
-  l.r_pp = *l.radius(195 * kPi / 360) / 600;
-  return l;
-}
-
 void wait_for_preview(ReprojectionTuner& t) {
   QTRY_VERIFY_WITH_TIMEOUT(t.shown_generation() == t.requested_generation() && !t.output_pane()->image().isNull(),
                            30000);
@@ -47,7 +34,7 @@ class TestLineProposals : public QObject {
   Q_OBJECT
  private slots:
   void propose_delete_undo_and_fit() {
-    const vision::Lens truth = true_lens();
+    const vision::Lens truth = bs::test::room_truth_lens();
     vision::RoomOptions room;
     room.seed = 5;
     room.vignetting = 0.3;
@@ -132,7 +119,7 @@ class TestLineProposals : public QObject {
   }
   void clicks_and_clear_are_undo_steps_too() {
     ReprojectionTuner t;
-    t.set_fisheye(vision::render_room_fisheye(true_lens()));
+    t.set_fisheye(vision::render_room_fisheye(bs::test::room_truth_lens()));
     t.add_source_point({100, 100});
     t.add_source_point({200, 110});
     t.add_source_point({300, 130});
@@ -153,4 +140,5 @@ class TestLineProposals : public QObject {
 };
 
 QTEST_MAIN(TestLineProposals)
+#include "../support/room_lens.h"
 #include "test_line_proposals.moc"

@@ -18,18 +18,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-vision::Lens true_lens() {
-  vision::Lens l;
-  l.type = vision::LensType::KannalaBrandt;
-  l.fov_deg = 195;
-  l.k = {0.06, -0.02, 0.003, 0};
-  l.cx = 652.3;
-  l.cy = 498.7;
-  l.r_pp = 1;
-  l.r_pp = *l.radius(195 * kPi / 360) / 600;
-  return l;
-}
-
 // Output pixel of a source point under a lens, when inside the output image.
 std::optional<cv::Point2d> in_view(const vision::TunerParams& p, const cv::Point2d& s) {
   const auto o = vision::view_pixel_of(p.lens, p.view, s);
@@ -86,7 +74,7 @@ class TestLineRefinement : public QObject {
   Q_OBJECT
  private slots:
   void fit_straightens_the_picked_lines_as_one_undo_step() {
-    const vision::Lens truth = true_lens();
+    const vision::Lens truth = bs::test::room_truth_lens();
     vision::RoomOptions room;
     room.seed = 5;
     room.vignetting = 0.3;
@@ -136,7 +124,7 @@ class TestLineRefinement : public QObject {
   }
   void circle_then_lines_land_on_the_truth() {
     // The recommended order: Detect circle (centre and rim), then the line fit for the shape of r(theta).
-    const vision::Lens truth = true_lens();
+    const vision::Lens truth = bs::test::room_truth_lens();
     vision::RoomOptions room;
     room.seed = 9;
     room.noise = 0.01;
@@ -172,4 +160,5 @@ class TestLineRefinement : public QObject {
 };
 
 QTEST_MAIN(TestLineRefinement)
+#include "../support/room_lens.h"
 #include "test_line_refinement.moc"

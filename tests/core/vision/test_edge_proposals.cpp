@@ -32,30 +32,6 @@ std::optional<cv::Point2d> project(const Lens& lens, const cv::Vec3d& v) {
   return p;
 }
 
-// As test_line_fit.cpp: Kannala-Brandt, rim radius 600 px about (652.3, 498.7).
-Lens true_lens() {
-  Lens l;
-  l.type = LensType::KannalaBrandt;
-  l.fov_deg = 195;
-  l.k = {0.06, -0.02, 0.003, 0};
-  l.cx = 652.3;
-  l.cy = 498.7;
-  l.r_pp = 1;
-  l.r_pp = *l.radius(195 * kPi / 360) / 600;
-  return l;
-}
-
-// What the circle fit gives to start from: equidistant with the right rim, the centre off.
-Lens circle_fit_start(const Lens& truth, double dx, double dy) {
-  Lens s = truth;
-  s.type = LensType::Equidistant;
-  s.k = {};
-  s.r_pp = (truth.fov_deg * kPi / 360) / *truth.radius(truth.fov_deg * kPi / 360);
-  s.cx += dx;
-  s.cy += dy;
-  return s;
-}
-
 double polyline_distance(const PickedLine& line, const cv::Point2d& q) {
   double best = 1e300;
   for (std::size_t i = 0; i + 1 < line.size(); ++i) {
@@ -165,7 +141,7 @@ cv::Mat room_with_curves(const Lens& truth, const RoomOptions& room) {
 }
 
 // The lens the stray-edge test works under: a few pixels off, as when proposing from a first guess.
-Lens start_lens_for_stray(const Lens& truth) { return circle_fit_start(truth, 3.0, -2.0); }
+Lens start_lens_for_stray(const Lens& truth) { return bs::test::circle_fit_start(truth, 3.0, -2.0); }
 
 }  // namespace
 
@@ -176,13 +152,13 @@ class TestEdgeProposals : public QObject {
   Q_OBJECT
  private slots:
   void proposals_on_the_room() {
-    const Lens truth = true_lens();
+    const Lens truth = bs::test::room_truth_lens();
     RoomOptions room;
     room.seed = 5;
     room.vignetting = 0.3;
     room.noise = 0.005;
     const cv::Mat img = room_with_curves(truth, room);
-    const Lens start = circle_fit_start(truth, 5.0, -4.0);
+    const Lens start = bs::test::circle_fit_start(truth, 5.0, -4.0);
     QElapsedTimer t;
     t.start();
     const auto props = propose_lines(img, start);
@@ -243,13 +219,13 @@ class TestEdgeProposals : public QObject {
       double noise, dx, dy;
     };
     for (const Case c : {Case{5, 0.005, 5.0, -4.0}, Case{9, 0.01, -4.0, 3.0}}) {
-      const Lens truth = true_lens();
+      const Lens truth = bs::test::room_truth_lens();
       RoomOptions room;
       room.seed = c.seed;
       room.vignetting = 0.3;
       room.noise = c.noise;
       const cv::Mat img = room_with_curves(truth, room);
-      const Lens start = circle_fit_start(truth, c.dx, c.dy);
+      const Lens start = bs::test::circle_fit_start(truth, c.dx, c.dy);
       const auto lines = proposal_points(propose_lines(img, start));
       LineFitOptions o;
       o.circle_radius_px = 600;
@@ -283,7 +259,7 @@ class TestEdgeProposals : public QObject {
   void one_stray_edge_does_not_bend_a_line() {
     // A grid line's true image points, every 4 px, with 0.1 px noise, and a stray edge running off it for 8 points
     // (a door handle touching a door frame): the second pass drops the stray points and nothing else.
-    const Lens truth = true_lens();
+    const Lens truth = bs::test::room_truth_lens();
     cv::RNG rng(7);
     PickedLine line;
     for (const auto& seg : room_grid_lines(room_yaw(5))) {  // the longest in view
@@ -312,7 +288,7 @@ class TestEdgeProposals : public QObject {
     QVERIFY(before > 3 * after);
   }
   void proposing_twice_adds_nothing_and_bad_input_throws() {
-    const Lens truth = true_lens();
+    const Lens truth = bs::test::room_truth_lens();
     const cv::Mat img = render_room_fisheye(truth);
     const auto lines = proposal_points(propose_lines(img, truth));
     QVERIFY(lines.size() > 20);
@@ -335,4 +311,5 @@ class TestEdgeProposals : public QObject {
 };
 
 QTEST_GUILESS_MAIN(TestEdgeProposals)
+#include "../../support/room_lens.h"
 #include "test_edge_proposals.moc"

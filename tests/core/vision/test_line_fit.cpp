@@ -78,29 +78,6 @@ double distance_from_scale_family(const Lens& fit, const Lens& truth, double* be
   return best / truth.r_pp;
 }
 
-Lens true_lens() {
-  Lens l;
-  l.type = LensType::KannalaBrandt;
-  l.fov_deg = 195;
-  l.k = {0.06, -0.02, 0.003, 0};  // r(theta) rises 1.12 to 1.19 times as fast as at the axis out at the rim
-  l.cx = 652.3;
-  l.cy = 498.7;
-  l.r_pp = 1;
-  l.r_pp = *l.radius(195 * kPi / 360) / 600;  // rim radius 600 px
-  return l;
-}
-
-// What the circle fit gives to start from: equidistant, the right rim, the centre a few pixels off.
-Lens circle_fit_start(const Lens& truth, double dx, double dy) {
-  Lens s = truth;
-  s.type = LensType::Equidistant;
-  s.k = {};
-  s.r_pp = (truth.fov_deg * kPi / 360) / *truth.radius(truth.fov_deg * kPi / 360);
-  s.cx += dx;
-  s.cy += dy;
-  return s;
-}
-
 }  // namespace
 
 class TestLineFit : public QObject {
@@ -109,7 +86,7 @@ class TestLineFit : public QObject {
   void rays_round_trip_for_every_model() {
     for (auto type : {LensType::Equidistant, LensType::Equisolid, LensType::Stereographic, LensType::Orthographic,
                       LensType::Rectilinear, LensType::KannalaBrandt}) {
-      Lens l = true_lens();
+      Lens l = bs::test::room_truth_lens();
       l.type = type;
       l.fov_deg = type == LensType::Rectilinear ? 120 : type == LensType::Orthographic ? 170 : 195;
       for (double th : {0.1, 0.6, 1.0, 1.4}) {
@@ -123,7 +100,7 @@ class TestLineFit : public QObject {
       }
     }
     // A view's pixel -> source (source_of) -> back to the view's pixel.
-    const Lens l = true_lens();
+    const Lens l = bs::test::room_truth_lens();
     View view{800, 600, 110, 30, -10, 5};
     for (auto [x, y] : {std::pair{10.0, 20.0}, {400.0, 300.0}, {790.0, 580.0}}) {
       const auto s = source_of(l, view, x, y);
@@ -133,7 +110,7 @@ class TestLineFit : public QObject {
     }
   }
   void kannala_brandt_stands_in_for_other_models() {
-    Lens e = true_lens();
+    Lens e = bs::test::room_truth_lens();
     e.type = LensType::Equisolid;
     e.fov_deg = 190;
     const Lens kb = to_kannala_brandt(e);
@@ -148,11 +125,11 @@ class TestLineFit : public QObject {
     QCOMPARE(kb_eq.k[0], 0.0);
   }
   void converges_to_the_truth_from_a_circle_fit_start() {
-    const Lens truth = true_lens();
+    const Lens truth = bs::test::room_truth_lens();
     const auto lines = picked_room_lines(truth, 3, 0.0);
     // The centre 6.4 px off (the old circle fit's error in issue #20 was 5.7 px); equidistant while the truth's
     // r(theta) bends by several pixels (printed).
-    const Lens start = circle_fit_start(truth, 5.0, -4.0);
+    const Lens start = bs::test::circle_fit_start(truth, 5.0, -4.0);
     const double start_err = max_radius_difference(to_kannala_brandt(start), truth);
     qInfo("start: r(theta) %.2f px from the truth", start_err);
     QVERIFY(start_err > 5);
@@ -177,9 +154,9 @@ class TestLineFit : public QObject {
     // 1 px of the truth up to the scale family lines cannot see; r(theta) itself is printed (2.5 and 1.5 px off
     // here), which is why a known focal length (next test) or a checkerboard is the way to metric accuracy.
     for (std::uint64_t seed : {5ULL, 9ULL}) {
-      const Lens truth = true_lens();
+      const Lens truth = bs::test::room_truth_lens();
       const auto lines = picked_room_lines(truth, seed, 0.3);
-      const Lens start = circle_fit_start(truth, -5.0, 4.0);
+      const Lens start = bs::test::circle_fit_start(truth, -5.0, 4.0);
       const auto fit = fit_lens_to_lines(start, lines);
       const double centre_err = std::hypot(fit.lens.cx - truth.cx, fit.lens.cy - truth.cy);
       double s = 1;
@@ -198,9 +175,9 @@ class TestLineFit : public QObject {
   }
   void known_focal_length_removes_the_scale_family() {
     // r_pp held at the truth's (a datasheet focal length): with 0.3 px click noise r(theta) itself is right.
-    const Lens truth = true_lens();
+    const Lens truth = bs::test::room_truth_lens();
     const auto lines = picked_room_lines(truth, 5, 0.3);
-    Lens start = circle_fit_start(truth, -3.0, 2.5);
+    Lens start = bs::test::circle_fit_start(truth, -3.0, 2.5);
     start = to_kannala_brandt(start);
     start.r_pp = truth.r_pp;
     LineFitOptions o;
@@ -219,7 +196,7 @@ class TestLineFit : public QObject {
   }
   void recovers_r_pp_with_the_measured_circle() {
     // Equidistant truth, start 3 % off in r_pp, exact clicks: the rim radius from the circle fit pins the scale.
-    Lens truth = true_lens();
+    Lens truth = bs::test::room_truth_lens();
     truth.type = LensType::Equidistant;
     truth.r_pp = (195 * kPi / 360) / 600;
     const auto lines = picked_room_lines(truth, 4, 0.0);
@@ -238,7 +215,7 @@ class TestLineFit : public QObject {
   void reject_lines_leaves_out_a_kinked_line() {
     // One line made of two that meet at a slight angle (its second half turned by 3 px at the end): with
     // reject_lines it is left out and the fit is as good as without it; without, it pulls the centre.
-    const Lens truth = true_lens();
+    const Lens truth = bs::test::room_truth_lens();
     auto lines = picked_room_lines(truth, 3, 0.1);
     const std::size_t bad = lines.size() / 2;
     auto& l = lines[bad];
@@ -246,7 +223,7 @@ class TestLineFit : public QObject {
     const cv::Point2d across = cv::Point2d(-d.y, d.x) * (1 / cv::norm(d));
     for (std::size_t i = l.size() / 2; i < l.size(); ++i)
       l[i] += across * (3.0 * static_cast<double>(i - l.size() / 2) / static_cast<double>(l.size() / 2));
-    const Lens start = circle_fit_start(truth, 3.0, -2.0);
+    const Lens start = bs::test::circle_fit_start(truth, 3.0, -2.0);
     LineFitOptions o;
     o.circle_radius_px = 600;
     const auto plain = fit_lens_to_lines(start, lines, o);
@@ -263,7 +240,7 @@ class TestLineFit : public QObject {
             std::hypot(plain.lens.cx - truth.cx, plain.lens.cy - truth.cy));
   }
   void rejects_too_few_lines_and_bad_files() {
-    const Lens truth = true_lens();
+    const Lens truth = bs::test::room_truth_lens();
     auto lines = picked_room_lines(truth, 3, 0.0);
     lines.resize(2);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fit_lens_to_lines(truth, lines));
@@ -285,4 +262,5 @@ class TestLineFit : public QObject {
 };
 
 QTEST_GUILESS_MAIN(TestLineFit)
+#include "../../support/room_lens.h"
 #include "test_line_fit.moc"
