@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "importer.h"
@@ -61,6 +62,37 @@ inline std::string file_name(const std::string& path) {
 
 // Feeds every non-blank line to parser.line(text, number, last) and returns parser.finish(). The pending line is
 // copied because the reader reuses its buffer. Checks for cancellation every 1024 lines.
+// What every line-by-line meter log parser holds and how it reports: errors name the file, the line and the field;
+// a skipped line becomes a warning naming file:line, the first kListedWarnings of them listed and the rest counted
+// (more_skipped_warning() at the end). The parsers derive from it rather than each carrying a copy.
+class LineParserBase {
+ public:
+  static constexpr std::size_t kListedWarnings = 10;
+
+ protected:
+  LineParserBase(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
+      : file_(file), options_(options), limits_(limits) {}
+  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
+                         const std::string& why) const {
+    throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
+  }
+  void skip(std::size_t line_no, const std::string& why) {
+    if (++skipped_ <= kListedWarnings)
+      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
+  }
+  // The count of the skipped lines not listed, as the last warning ("N more lines skipped"); nothing when none.
+  void more_skipped_warning() {
+    if (skipped_ > kListedWarnings)
+      batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped");
+  }
+
+  const std::string& file_;
+  const ParseOptions& options_;
+  const ImportLimits& limits_;
+  std::size_t skipped_ = 0;
+  ImportBatch batch_;
+};
+
 template <class Lines, class Parser>
 auto run_lines(Lines& lines, Parser& parser, const CancelToken& cancel) {
   std::string pending;

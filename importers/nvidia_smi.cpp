@@ -17,7 +17,6 @@ namespace {
 
 using meter::trim;
 
-constexpr std::size_t kListedWarnings = 10;
 // More distinct GPU keys than any machine has: a file that claims more is not a GPU log (and would otherwise make
 // one trace per garbage row).
 constexpr std::size_t kMaxGpus = 1024;
@@ -88,29 +87,18 @@ struct Gpu {
   PowerTrace trace;
 };
 
-class NvidiaSmiParser {
+class NvidiaSmiParser : meter::LineParserBase {
  public:
   NvidiaSmiParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : file_(file), options_(options), limits_(limits) {}
+      : LineParserBase(file, options, limits) {}
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
 
  private:
-  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
-                         const std::string& why) const {
-    throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
-  }
-  void skip(std::size_t line_no, const std::string& why) {
-    if (++skipped_ <= kListedWarnings)
-      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
-  }
   void header(std::size_t line_no);
   bool infer_columns(std::size_t line_no);
   Gpu& gpu_for(std::size_t line_no);
 
-  const std::string& file_;
-  const ParseOptions& options_;
-  const ImportLimits& limits_;
   std::vector<std::string_view> cells_;
   std::vector<Column> cols_;
   std::string header_line_;
@@ -120,8 +108,7 @@ class NvidiaSmiParser {
   std::vector<std::size_t> power_cols_;
   std::vector<Gpu> gpus_;
   std::unordered_map<std::string, std::size_t> gpu_index_;
-  std::size_t samples_ = 0, missing_ = 0, skipped_ = 0;
-  ImportBatch batch_;
+  std::size_t samples_ = 0, missing_ = 0;
 };
 
 void NvidiaSmiParser::header(std::size_t line_no) {
@@ -304,8 +291,7 @@ ImportBatch NvidiaSmiParser::finish() {
   if (gpus_.empty())
     throw ImportError(ImportErrorCategory::MissingField, {file_, 0, 0, {}},
                       have_columns_ ? "a header but no rows" : "no nvidia-smi rows");
-  if (skipped_ > kListedWarnings)
-    batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped");
+  more_skipped_warning();
   if (missing_ > 0)
     batch_.warnings.push_back(file_ + ": " + std::to_string(missing_) +
                               " power readings nvidia-smi could not take ([N/A], [Not Supported]) are missing samples");

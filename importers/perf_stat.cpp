@@ -155,26 +155,19 @@ struct Channel {
   std::vector<double> joules;  // per interval (NaN: not counted)
 };
 
-class PerfStatParser {
+class PerfStatParser : meter::LineParserBase {
  public:
   PerfStatParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : file_(file), options_(options), limits_(limits) {}
+      : LineParserBase(file, options, limits) {}
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
 
  private:
-  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
-                         const std::string& why) const {
-    throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
-  }
   void interval_record(const Record& r, std::size_t line_no);
   void close_block(std::optional<double> elapsed, std::size_t line_no);
   Channel& channel(const std::string& name, std::size_t intervals);
   PowerTrace make_trace(const std::vector<double>& ends) const;
 
-  const std::string& file_;
-  const ParseOptions& options_;
-  const ImportLimits& limits_;
   std::vector<std::string_view> scratch_;
   std::optional<bool> interval_mode_;
   bool decimal_comma_ = false, comma_known_ = false;
@@ -189,7 +182,6 @@ class PerfStatParser {
   };
   std::vector<Pending> block_;
   std::size_t records_ = 0;
-  ImportBatch batch_;
 };
 
 Channel& PerfStatParser::channel(const std::string& name, std::size_t intervals) {

@@ -19,7 +19,6 @@ namespace {
 
 using meter::trim;
 
-constexpr std::size_t kListedWarnings = 10;
 constexpr std::size_t kMaxDates = 100'000;  // distinct days in one log (274 years of continuous logging)
 
 // "12-23-2020" -> {12, 23, 2020}: which of the first two is the month is decided for the whole log at the end.
@@ -47,26 +46,14 @@ struct Slot {
   PowerQuantity quantity;
 };
 
-class PtdParser {
+class PtdParser : meter::LineParserBase {
  public:
   PtdParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : file_(file), options_(options), limits_(limits) {}
+      : LineParserBase(file, options, limits) {}
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
 
  private:
-  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
-                         const std::string& why) const {
-    throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
-  }
-  void skip(std::size_t line_no, const std::string& why) {
-    if (++skipped_ <= kListedWarnings)
-      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
-  }
-
-  const std::string& file_;
-  const ParseOptions& options_;
-  const ImportLimits& limits_;
   std::vector<std::string_view> f_;
   std::vector<Slot> slots_;  // fixed by the first sample
   std::vector<double> values_;
@@ -79,9 +66,8 @@ class PtdParser {
   };
   std::vector<Run> runs_;
   PowerTrace trace_;
-  std::size_t skipped_ = 0, missing_ = 0;
+  std::size_t missing_ = 0;
   bool analyzers_ = false, unknown_keys_ = false;
-  ImportBatch batch_;
 };
 
 void PtdParser::line(std::string_view raw, std::size_t line_no, bool last) {
@@ -213,8 +199,7 @@ ImportBatch PtdParser::finish() {
   trace_.start_time = format_iso8601(first);
   for (const Run& r : runs_)
     if (!r.mark.empty()) trace_.phases.push_back({r.mark, trace_.time_s[r.first], trace_.time_s[r.last]});
-  if (skipped_ > kListedWarnings)
-    batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped");
+  more_skipped_warning();
   if (missing_ > 0)
     batch_.warnings.push_back(file_ + ": " + std::to_string(missing_) +
                               " readings of -1 (PTDaemon: no reading) are missing samples");

@@ -17,7 +17,6 @@ namespace bs {
 namespace {
 
 // Past this many, skipped lines are counted instead of listed one by one.
-constexpr std::size_t kListedWarnings = 10;
 
 void tokens(std::string_view line, std::vector<std::string_view>& out) {
   out.clear();
@@ -100,10 +99,10 @@ bool input_rail(std::string_view name) { return name == "VDD_IN" || name == "POM
 // which is what jetson-stats reports as the total on these boards.
 constexpr std::string_view kSumChannel = "sum of rails";
 
-class TegrastatsParser {
+class TegrastatsParser : meter::LineParserBase {
  public:
   TegrastatsParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : file_(file), options_(options), limits_(limits) {
+      : LineParserBase(file, options, limits) {
     if (!(options.interval_s > 0) || !std::isfinite(options.interval_s))
       throw ImportError(ImportErrorCategory::InvalidValue, {file, 0, 0, "interval"}, "the interval must be > 0 s");
   }
@@ -112,13 +111,6 @@ class TegrastatsParser {
   ImportBatch finish();
 
  private:
-  void skip(std::size_t line_no, const std::string& why) {
-    if (++skipped_ <= kListedWarnings)
-      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
-  }
-  const std::string& file_;
-  const ParseOptions& options_;
-  const ImportLimits& limits_;
   std::vector<std::string_view> tok_;
   std::vector<std::pair<std::string_view, double>> values_;
   std::vector<std::string> rails_;  // names in file order; channel k holds rail order_[k]
@@ -126,9 +118,8 @@ class TegrastatsParser {
   std::optional<bool> timestamped_;
   bool summed_ = false;  // no input rail: channel 0 is the sum of the rails
   double first_time_ = 0;
-  std::size_t skipped_ = 0, sample_ = 0;
+  std::size_t sample_ = 0;
   PowerTrace trace_;
-  ImportBatch batch_;
 };
 
 void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last) {
