@@ -9,24 +9,10 @@
 #include <limits>
 
 #include "analysis/platform/inference_table.h"
+#include "numeric_item.h"
 
 namespace bs::ui {
 namespace {
-
-constexpr int kSortRole = Qt::UserRole + 1;
-
-// Sorts by the number behind the text; cells without one go by their text.
-class NumericItem : public QTableWidgetItem {
- public:
-  using QTableWidgetItem::QTableWidgetItem;
-  bool operator<(const QTableWidgetItem& other) const override {
-    const QVariant a = data(kSortRole), b = other.data(kSortRole);
-    if (!a.isValid() || !b.isValid()) return QTableWidgetItem::operator<(other);
-    const double x = a.toDouble(), y = b.toDouble();
-    if (std::isnan(x) || std::isnan(y)) return !std::isnan(x) && std::isnan(y);
-    return x < y;
-  }
-};
 
 QString provenance_tip(const DnnRun& r) {
   QString tip =

@@ -15,25 +15,11 @@
 
 #include "analysis/platform/pipeline_table.h"
 #include "inference_table.h"
+#include "numeric_item.h"
 #include "pipeline_measure_panel.h"
 
 namespace bs::ui {
 namespace {
-
-constexpr int kSortRole = Qt::UserRole + 1;
-
-// Sorts by the number behind the text (times in ms, rates in fps); cells without one sort by their text.
-class NumericItem : public QTableWidgetItem {
- public:
-  using QTableWidgetItem::QTableWidgetItem;
-  bool operator<(const QTableWidgetItem& other) const override {
-    const QVariant a = data(kSortRole), b = other.data(kSortRole);
-    if (!a.isValid() || !b.isValid()) return QTableWidgetItem::operator<(other);
-    const double x = a.toDouble(), y = b.toDouble();
-    if (std::isnan(x) != std::isnan(y)) return std::isnan(y);  // unknown after known
-    return x < y;
-  }
-};
 
 QTableWidgetItem* cell(const QString& text, double sort_value, const QString& tip) {
   auto* item = new NumericItem(text);

@@ -26,29 +26,12 @@
 #include "analysis/power/battery.h"
 #include "frozen_column.h"
 #include "inference_table.h"
+#include "numeric_item.h"
 
 namespace bs::ui {
 namespace {
 
-constexpr int kSortRole = Qt::UserRole + 1;
 constexpr int kColumnRole = Qt::UserRole + 2;
-
-// Sorts by the number behind the text; cells without a number go last whatever the order.
-class NumericItem : public QTableWidgetItem {
- public:
-  using QTableWidgetItem::QTableWidgetItem;
-  bool operator<(const QTableWidgetItem& other) const override {
-    const QVariant a = data(kSortRole), b = other.data(kSortRole);
-    if (!a.isValid() || !b.isValid()) return QTableWidgetItem::operator<(other);
-    const double x = a.toDouble(), y = b.toDouble();
-    if (std::isnan(x) != std::isnan(y)) {
-      const auto* view = tableWidget();
-      const bool ascending = !view || view->horizontalHeader()->sortIndicatorOrder() == Qt::AscendingOrder;
-      return std::isnan(x) ? !ascending : ascending;
-    }
-    return x < y;
-  }
-};
 
 double value_or_nan(std::optional<double> v) { return v ? *v : std::numeric_limits<double>::quiet_NaN(); }
 
