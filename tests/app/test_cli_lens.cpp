@@ -20,6 +20,17 @@ const char* kTruth = R"({"format":"benchscope-lens","version":1,"lens":{"model":
 "k":[0.06,-0.02,0.003,0],"cx":652.3,"cy":498.7,"fov_deg":195,"width":1280,"height":1024},"view":{"width":1280,
 "height":1024,"fov_deg":150,"yaw_deg":0,"pitch_deg":0,"roll_deg":0}})";
 
+// The true lens written into `dir` and the room rendered through it (16 bit, vignetting, noise) as dir/room*.
+bs::test::CliResult render_room(const QTemporaryDir& dir) {
+  const QString truth = dir.filePath("truth.json");
+  QFile f(truth);
+  if (!f.open(QIODevice::WriteOnly)) return {1, {}, "cannot write " + truth.toUtf8()};
+  f.write(kTruth);
+  f.close();
+  return cli({"synth-frame", "--scene", "room", "--lens", truth, "--seed", "5", "--vignetting", "0.4", "--noise",
+              "0.01", "--bits", "16", "--out", dir.filePath("room")});
+}
+
 QJsonObject lens_of(const QString& path) { return QJsonDocument::fromJson(bytes_of(path)).object()["lens"].toObject(); }
 
 }  // namespace
@@ -29,15 +40,9 @@ class TestCliLens : public QObject {
  private slots:
   void circle_then_lines_recover_the_true_lens() {
     QTemporaryDir dir;
-    const QString truth = dir.filePath("truth.json");
-    QFile f(truth);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(kTruth);
-    f.close();
-    const QString prefix = dir.filePath("room");
-    auto r = cli({"synth-frame", "--scene", "room", "--lens", truth, "--seed", "5", "--vignetting", "0.4", "--noise",
-                  "0.01", "--bits", "16", "--out", prefix});
+    auto r = render_room(dir);
     QVERIFY2(r.code == 0, r.err.constData());
+    const QString prefix = dir.filePath("room");
     QVERIFY(r.out.contains("-lines.json"));
     const QString circle = dir.filePath("circle.json");
     r = cli({"lens", "circle", prefix + "-truth.png", "--out", circle});
@@ -73,15 +78,9 @@ class TestCliLens : public QObject {
     // lens propose-lines on the same capture, then refine-lines --propose from the circle fit's lens. Measured:
     // 80 lines; the fit leaves 6 out and lands 0.07 px from the true centre with r_pp 0.08 % off.
     QTemporaryDir dir;
-    const QString truth = dir.filePath("truth.json");
-    QFile f(truth);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(kTruth);
-    f.close();
-    const QString prefix = dir.filePath("room");
-    auto r = cli({"synth-frame", "--scene", "room", "--lens", truth, "--seed", "5", "--vignetting", "0.4", "--noise",
-                  "0.01", "--bits", "16", "--out", prefix});
+    auto r = render_room(dir);
     QVERIFY2(r.code == 0, r.err.constData());
+    const QString prefix = dir.filePath("room");
     const QString image = prefix + "-truth.png", circle = dir.filePath("circle.json");
     QCOMPARE(cli({"lens", "circle", image, "--out", circle}).code, 0);
     r = cli({"lens", "propose-lines", image, "--lens", circle});
