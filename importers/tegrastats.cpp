@@ -18,17 +18,6 @@ namespace {
 
 // Past this many, skipped lines are counted instead of listed one by one.
 
-void tokens(std::string_view line, std::vector<std::string_view>& out) {
-  out.clear();
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-}
-
 // Rail names are upper case: VDD_IN, POM_5V_GPU, VIN_SYS_5V0, and on AGX Xavier plain GPU, CPU, SOC, SYS5V.
 bool rail_name(std::string_view t) {
   return t.size() >= 2 && t.front() >= 'A' && t.front() <= 'Z' && std::all_of(t.begin(), t.end(), [](char c) {
@@ -123,7 +112,7 @@ class TegrastatsParser : meter::LineParserBase {
 };
 
 void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last) {
-  tokens(raw, tok_);
+  meter::tokens(raw, tok_);
   if (tok_.empty()) return;
   values_.clear();
   for (std::size_t i = 0; i + 1 < tok_.size(); ++i) {
@@ -255,7 +244,7 @@ int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
   for (int seen = 0; seen < 16; ++seen) {
     const auto line = lines.next();
     if (!line) break;
-    tokens(*line, tok);
+    meter::tokens(*line, tok);
     const bool ram = std::find(tok.begin(), tok.end(), "RAM") != tok.end();
     for (std::size_t i = 0; ram && i + 1 < tok.size(); ++i)
       if (rail_name(tok[i]) && rail_value(tok[i + 1]).reading == Reading::Ok && tok[i] != "RAM" && tok[i] != "SWAP" &&

@@ -24,6 +24,7 @@
 #include "bench_tuner.h"
 #include "bench_vision.h"
 #include "command.h"
+#include "cpu_args.h"
 #include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "power_args.h"
@@ -143,14 +144,7 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   const double w_given = args.number("--workers", 0);
   if (w_override && (w_given < 1 || w_given > 1e6)) throw UsageError("--workers must be between 1 and 1e6");
   const std::string load_before = load_average();
-  kernels::CpuInfo cpu = kernels::detect_cpu();
-  if (const auto isa = args.value("--isa")) {
-    try {
-      kernels::use_simd_target(cpu, kernels::simd_target_by_id(*isa));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-  }
+  kernels::CpuInfo cpu = cpu_from_args(args);
   const auto backends = kernels::available_backends(cpu);
   const kernels::RotationParams params{4, 40000};
   char line[640];

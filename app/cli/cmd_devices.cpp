@@ -13,6 +13,7 @@
 #include "args.h"
 #include "bench_ceilings.h"
 #include "command.h"
+#include "cpu_args.h"
 #include "flag_output.h"
 #include "kernels/backend.h"
 #include "kernels/ceiling_cache.h"
@@ -111,14 +112,7 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
     const DeviceSpec* s = match_device(specs.table, b.device_name, b.kind);
     return s ? std::optional<DeviceSpec>(*s) : std::nullopt;
   };
-  kernels::CpuInfo cpu = kernels::detect_cpu();
-  if (const auto isa = args.value("--isa")) {
-    try {
-      kernels::use_simd_target(cpu, kernels::simd_target_by_id(*isa));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-  }
+  kernels::CpuInfo cpu = cpu_from_args(args);
   const auto backends = kernels::available_backends(cpu);
   // Empirical ceilings of the CPU with its SIMD target: measured now when asked, else from the per-host cache.
   std::optional<kernels::CeilingSet> ceilings;

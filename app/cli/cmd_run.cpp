@@ -12,6 +12,7 @@
 #include "analysis/stats/units.h"
 #include "args.h"
 #include "command.h"
+#include "cpu_args.h"
 #include "kernels/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
@@ -89,14 +90,7 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     throw UsageError("--variant must be paper or throughput");
   spec.variant = variant == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
 
-  kernels::CpuInfo cpu = kernels::detect_cpu();
-  if (const auto isa = args.value("--isa")) {
-    try {
-      kernels::use_simd_target(cpu, kernels::simd_target_by_id(*isa));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-  }
+  kernels::CpuInfo cpu = cpu_from_args(args);
   const auto backends = kernels::available_backends(cpu);
   std::string backend_id = args.value("--backend").value_or("cpu");
   if (const auto device = args.value("--device")) backend_id += ":" + *device;  // --backend opencl --device 1
