@@ -10,6 +10,7 @@
 #include <QTest>
 #include <cmath>
 
+#include "../support/room_lens.h"
 #include "lens_tab.h"
 #include "preview_pane.h"
 #include "reprojection_tuner.h"
@@ -140,5 +141,4 @@ class TestLineProposals : public QObject {
 };
 
 QTEST_MAIN(TestLineProposals)
-#include "../support/room_lens.h"
 #include "test_line_proposals.moc"

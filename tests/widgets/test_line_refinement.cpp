@@ -6,6 +6,7 @@
 #include <QTest>
 #include <cmath>
 
+#include "../support/room_lens.h"
 #include "preview_pane.h"
 #include "reprojection_tuner.h"
 #include "vision/line_fit.h"
@@ -160,5 +161,4 @@ class TestLineRefinement : public QObject {
 };
 
 QTEST_MAIN(TestLineRefinement)
-#include "../support/room_lens.h"
 #include "test_line_refinement.moc"

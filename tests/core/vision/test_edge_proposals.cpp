@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "../../support/room_lens.h"
 #include "vision/edge_proposals.h"
 #include "vision/fisheye_opencv.h"
 #include "vision/line_fit.h"
@@ -311,5 +312,4 @@ class TestEdgeProposals : public QObject {
 };
 
 QTEST_GUILESS_MAIN(TestEdgeProposals)
-#include "../../support/room_lens.h"
 #include "test_edge_proposals.moc"

@@ -2,6 +2,7 @@
 #include <QTest>
 #include <cmath>
 
+#include "../../support/room_lens.h"
 #include "vision/fisheye_opencv.h"
 #include "vision/line_fit.h"
 #include "vision/synthetic_room.h"
@@ -262,5 +263,4 @@ class TestLineFit : public QObject {
 };
 
 QTEST_GUILESS_MAIN(TestLineFit)
-#include "../../support/room_lens.h"
 #include "test_line_fit.moc"
