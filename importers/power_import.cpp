@@ -10,34 +10,19 @@
 #include "tegrastats.h"
 
 namespace bs {
-namespace {
 
-// Every power-log format, in the order that breaks a tie between equal sniff scores: measuring tools' own logs
-// first (they out-sniff the generic CSV on their files), tegrastats, then the generic CSV. BenchScope's own
-// record-power CSV reads its settings from its header comments, not from the options.
-std::vector<std::unique_ptr<Importer>> power_formats() {
-  std::vector<std::unique_ptr<Importer>> list;
-  list.push_back(std::make_unique<PowerRecordingImporter>());
-  list.push_back(std::make_unique<JtopCsvImporter>());
-  list.push_back(std::make_unique<NvidiaSmiImporter>());
-  list.push_back(std::make_unique<PerfStatImporter>());
-  list.push_back(std::make_unique<PtdLogImporter>());
-  list.push_back(std::make_unique<TegrastatsImporter>());
-  list.push_back(std::make_unique<PowerCsvImporter>());
-  return list;
-}
-
-}  // namespace
-
+// Every power-log format, in the order that breaks a tie between equal sniff scores: measuring tools' own logs first
+// (they out-sniff the generic CSV on their files), tegrastats, then the generic CSV. BenchScope's own record-power CSV
+// reads its settings from its header comments, not from the options.
 std::vector<std::unique_ptr<Importer>> make_power_importers() {
   std::vector<std::unique_ptr<Importer>> list;
-  list.push_back(std::make_unique<PowerCsvImporter>());
-  list.push_back(std::make_unique<TegrastatsImporter>());
+  list.push_back(std::make_unique<PowerRecordingImporter>());
   list.push_back(std::make_unique<JtopCsvImporter>());
   list.push_back(std::make_unique<NvidiaSmiImporter>());
   list.push_back(std::make_unique<PerfStatImporter>());
   list.push_back(std::make_unique<PtdLogImporter>());
-  list.push_back(std::make_unique<PowerRecordingImporter>());
+  list.push_back(std::make_unique<TegrastatsImporter>());
+  list.push_back(std::make_unique<PowerCsvImporter>());
   return list;
 }
 
@@ -46,7 +31,7 @@ ImportBatch import_power_log(const std::string& path, const ParseOptions& option
   const std::string head = read_head(path);
   check_text(head, path);
   const std::string_view view = strip_utf8_bom(head);
-  const auto formats = power_formats();
+  const auto formats = make_power_importers();
   const Importer* best = nullptr;
   int best_score = 0;
   for (const auto& f : formats)

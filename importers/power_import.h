@@ -10,8 +10,8 @@
 
 namespace bs {
 
-// The power-log importers ("power-csv", "tegrastats", "jtop-csv", "nvidia-smi", "perf-stat-rapl", "ptdaemon"),
-// for registries and format lists.
+// The power-log importers ("benchscope-power-recording", "jtop-csv", "nvidia-smi", "perf-stat-rapl", "ptdaemon",
+// "tegrastats", "power-csv"), in the order import_power_log() breaks a tie between equal sniff scores.
 std::vector<std::unique_ptr<Importer>> make_power_importers();
 
 // Rejects empty / binary / UTF-16 files like import_file(), picks the power format by content and parses

@@ -124,8 +124,10 @@ PowerTrace PowerRecorder::finish(const std::string& label) {
   wake_.notify_all();
   if (thread_.joinable()) thread_.join();
   std::lock_guard lock(mutex_);
-  if (started_ && !finished_) sample();  // the end of the last interval
-  if (started_ && !finished_) recorded_s_ = now_s();
+  if (started_ && !finished_) {
+    sample();  // the end of the last interval
+    recorded_s_ = now_s();
+  }
   finished_ = true;
   PowerTrace trace;
   trace.platform = host_name();

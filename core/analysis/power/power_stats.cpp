@@ -101,6 +101,7 @@ void PowerIndex::build(const PowerTrace& trace, std::optional<double> supply_v, 
   const auto index_of = [&](std::span<const double> values) {
     return owner ? TraceIndex(trace.time_s, values, owner) : TraceIndex(trace.time_s, values);
   };
+  if (supply_v && !(*supply_v > 0)) throw std::invalid_argument("the supply voltage must be > 0 V");
   const PowerChannel* main_current = first_channel(trace, PowerQuantity::Current);
   const PowerChannel* main_power = first_channel(trace, PowerQuantity::Power);
   for (const PowerChannel& c : trace.channels) {
@@ -109,26 +110,21 @@ void PowerIndex::build(const PowerTrace& trace, std::optional<double> supply_v, 
     if (&c == main_power) power_ = static_cast<int>(channels_.size());
     channels_.push_back({c.name, c.quantity, index_of(c.values)});
   }
+  const std::optional<double> volts = supply_v ? supply_v : trace.supply_voltage_v;
   if (main_power) {
     source_ = PowerSource::Channel;
-    if (supply_v && !(*supply_v > 0)) throw std::invalid_argument("the supply voltage must be > 0 V");
-    note_missing_rows(trace);
-    return;
-  }
-  if (supply_v && !(*supply_v > 0)) throw std::invalid_argument("the supply voltage must be > 0 V");
-  const std::optional<double> volts = supply_v ? supply_v : trace.supply_voltage_v;
-  if (main_current && !first_channel(trace, PowerQuantity::Voltage) && volts && *volts > 0 && std::isfinite(*volts)) {
+  } else if (main_current && !first_channel(trace, PowerQuantity::Voltage) && volts && *volts > 0 &&
+             std::isfinite(*volts)) {
     // Current x a constant supply voltage: the current's own index, scaled (no second copy of a long log).
     source_ = PowerSource::CurrentTimesSupply;
     supply_v_ = volts;
     derived_power_ = channels_[static_cast<std::size_t>(current_)].index.scaled(*volts);
-    note_missing_rows(trace);
-    return;
+  } else {
+    PowerSeries p = derive_power(trace, supply_v);  // current x voltage channel: its own index
+    source_ = p.source;
+    supply_v_ = p.supply_v;
+    if (!p.values.empty()) derived_power_ = TraceIndex(trace.time_s, p.values);
   }
-  PowerSeries p = derive_power(trace, supply_v);  // current x voltage channel: its own index
-  source_ = p.source;
-  supply_v_ = p.supply_v;
-  if (!p.values.empty()) derived_power_ = TraceIndex(trace.time_s, p.values);
   note_missing_rows(trace);
 }
 

@@ -19,18 +19,6 @@ Percentiles quantiles_in_place(std::vector<double>& w) {
   return {q[0], q[1], q[2], q[3]};
 }
 
-}  // namespace
-
-Percentiles percentiles(std::span<const double> values) {
-  std::vector<double> w;
-  w.reserve(values.size());
-  for (double v : values)
-    if (!std::isnan(v)) w.push_back(v);  // missing samples are skipped, never read as 0
-  return quantiles_in_place(w);
-}
-
-namespace {
-
 struct SampleCopy {
   std::vector<double> t, v;
 };
@@ -41,7 +29,10 @@ void check_lengths(std::span<const double> time_s, std::span<const double> value
                                 std::to_string(time_s.size()) + " timestamps");
 }
 
-std::shared_ptr<const SampleCopy> present_samples(std::span<const double> time_s, std::span<const double> values) {
+// Copies the present samples (NaN in either dropped), points `t` and `v` at the copy and returns it: the owner that
+// keeps them alive.
+std::shared_ptr<const void> copy_present(std::span<const double> time_s, std::span<const double> values,
+                                         std::span<const double>& t, std::span<const double>& v) {
   auto copy = std::make_shared<SampleCopy>();
   copy->t.reserve(time_s.size());
   copy->v.reserve(values.size());
@@ -50,17 +41,24 @@ std::shared_ptr<const SampleCopy> present_samples(std::span<const double> time_s
       copy->t.push_back(time_s[k]);
       copy->v.push_back(values[k]);
     }
+  t = copy->t;
+  v = copy->v;
   return copy;
 }
 
 }  // namespace
 
+Percentiles percentiles(std::span<const double> values) {
+  std::vector<double> w;
+  w.reserve(values.size());
+  for (double v : values)
+    if (!std::isnan(v)) w.push_back(v);  // missing samples are skipped, never read as 0
+  return quantiles_in_place(w);
+}
+
 TraceIndex::TraceIndex(std::span<const double> time_s, std::span<const double> values) {
   check_lengths(time_s, values);
-  auto copy = present_samples(time_s, values);
-  t_ = copy->t;
-  v_ = copy->v;
-  storage_ = std::move(copy);
+  storage_ = copy_present(time_s, values, t_, v_);
   build_tables();
 }
 
@@ -73,10 +71,7 @@ TraceIndex::TraceIndex(std::span<const double> time_s, std::span<const double> v
     v_ = values;
     storage_ = std::move(owner);
   } else {
-    auto copy = present_samples(time_s, values);
-    t_ = copy->t;
-    v_ = copy->v;
-    storage_ = std::move(copy);
+    storage_ = copy_present(time_s, values, t_, v_);
   }
   build_tables();
 }
