@@ -21,7 +21,7 @@ benchscope_require(OpenCL "ocl-icd-opencl-dev opencl-headers pocl-opencl-icd")
 # Components are always listed: without them OpenCV's highgui would pull Qt 5 into the process.
 find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs dnn objdetect calib3d)
 benchscope_require(OpenCV "libopencv-dev")
-# Highway: portable SIMD with run-time dispatch (core/vision/bayer_simd.cpp).
+# Highway: portable SIMD with run-time dispatch (core/vision/demosaic/bayer_simd.cpp).
 find_package(hwy QUIET)
 benchscope_require(hwy "libhwy-dev")
 find_package(Threads REQUIRED)

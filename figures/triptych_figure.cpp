@@ -10,11 +10,11 @@
 #include <stdexcept>
 
 #include "paper_figures.h"
-#include "vision/bayer.h"
-#include "vision/frame_image.h"
-#include "vision/lens.h"
-#include "vision/synthetic.h"
-#include "vision/triptych.h"
+#include "vision/demosaic/bayer.h"
+#include "vision/frames/frame_image.h"
+#include "vision/lens/lens.h"
+#include "vision/frames/synthetic.h"
+#include "vision/reproject/triptych.h"
 
 namespace bs::ui {
 namespace {

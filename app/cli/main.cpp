@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "args.h"
-#include "command.h"
+#include "common/args.h"
+#include "common/command.h"
 
 namespace {
 

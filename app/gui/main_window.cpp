@@ -2,7 +2,7 @@
 #include "main_window.h"
 
 #include "analysis/peaks/peak_ceilings.h"
-#include "lens_tab.h"
+#include "vision/lens_tab.h"
 
 #include <qcustomplot.h>
 #include <QApplication>
@@ -23,24 +23,24 @@
 #include <QUndoStack>
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/foreign_sweeps.h"
-#include "battery_view.h"
+#include "power/battery_view.h"
 #include "device_palette.h"
-#include "efficiency_view.h"
-#include "flops_plot.h"
-#include "frames_view.h"
-#include "import_controller.h"
-#include "kernel_runner.h"
-#include "peak_table.h"
-#include "pipeline_json.h"
-#include "pipeline_measure_panel.h"
-#include "pipeline_view.h"
-#include "platform_view.h"
-#include "power_trace_loader.h"
-#include "power_view.h"
-#include "recent_files.h"
-#include "roofline_view.h"
-#include "run_json.h"
-#include "workspace_tree.h"
+#include "platform/efficiency_view.h"
+#include "peaks/flops_plot.h"
+#include "vision/frames_view.h"
+#include "workspace/import_controller.h"
+#include "kernels/kernel_runner.h"
+#include "peaks/peak_table.h"
+#include "runs/pipeline_json.h"
+#include "vision/pipeline_measure_panel.h"
+#include "vision/pipeline_view.h"
+#include "platform/platform_view.h"
+#include "power/power_trace_loader.h"
+#include "power/power_view.h"
+#include "workspace/recent_files.h"
+#include "peaks/roofline_view.h"
+#include "runs/run_json.h"
+#include "workspace/workspace_tree.h"
 
 namespace bs::ui {
 namespace {

@@ -10,11 +10,11 @@ class QLabel;
 class QUndoStack;
 
 #include "analysis/platform/platform_comparison.h"
-#include "frame_raw.h"
+#include "frames/frame_raw.h"
 #include "paper_figures.h"
-#include "shared_traces.h"
+#include "power/shared_traces.h"
 #include "store/workspace.h"
-#include "workspace_tree.h"
+#include "workspace/workspace_tree.h"
 
 class QSplitter;
 

@@ -13,12 +13,12 @@
 #include <QUrl>
 
 #include "export_figure_dialog.h"
-#include "frame_store.h"
+#include "frames/frame_store.h"
 #include "main_window.h"
-#include "platform_view.h"
+#include "platform/platform_view.h"
 #include "plot_export.h"
 #include "report_writer.h"
-#include "workspace_tree.h"
+#include "workspace/workspace_tree.h"
 
 namespace bs::ui {
 namespace {

@@ -5,15 +5,15 @@
 #include <QFileInfo>
 #include <QStatusBar>
 
-#include "frame_store.h"
-#include "frame_triptych.h"
-#include "frames_view.h"
-#include "lens_tab.h"
+#include "frames/frame_store.h"
+#include "vision/frame_triptych.h"
+#include "vision/frames_view.h"
+#include "vision/lens_tab.h"
 #include "main_window.h"
-#include "raw_geometry_dialog.h"
-#include "reprojection_tuner.h"
-#include "vision/frame_image.h"
-#include "vision/triptych.h"
+#include "vision/raw_geometry_dialog.h"
+#include "vision/reprojection_tuner.h"
+#include "vision/frames/frame_image.h"
+#include "vision/reproject/triptych.h"
 
 namespace bs::ui {
 

@@ -8,12 +8,12 @@
 #include <QTabWidget>
 #include <QUndoStack>
 
-#include "compare_dialog.h"
-#include "flops_plot.h"
-#include "frames_view.h"
-#include "import_controller.h"
+#include "platform/compare_dialog.h"
+#include "peaks/flops_plot.h"
+#include "vision/frames_view.h"
+#include "workspace/import_controller.h"
 #include "main_window.h"
-#include "recent_files.h"
+#include "workspace/recent_files.h"
 
 namespace bs::ui {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One camera frame as imported: a Bayer mosaic (the paper's camera writes BGGR), a grey image or a colour image.
-// Kept free of OpenCV so the model and the store build without it; core/vision/frame_image.h turns it into a
+// Kept free of OpenCV so the model and the store build without it; core/vision/frames/frame_image.h turns it into a
 // cv::Mat.
 #include <cstdint>
 #include <string>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The JSON sidecar that gives a raw Bayer file its geometry (capture.raw -> capture.json), one module for everyone
-// who reads or writes it: `benchscope-cli synth-frame` writes it, the frame importer (importers/frame_raw.cpp)
-// and the pipeline's frame reader (core/vision/frame_file.cpp) read it. Its JSON Schema is
+// who reads or writes it: `benchscope-cli synth-frame` writes it, the frame importer (importers/frames/frame_raw.cpp)
+// and the pipeline's frame reader (core/vision/frames/frame_file.cpp) read it. Its JSON Schema is
 // resources/schema/benchscope-raw-v1.schema.json:
 //   {"format": "benchscope-raw", "version": 1, "width": 1280, "height": 1024, "pattern": "BGGR",
 //    "bit_depth": 8, "endianness": "little", "synthetic": true, "truth": "capture-truth.png", "lens": {...}}

@@ -60,7 +60,7 @@ void check_sqlite_header(const std::string& path) {
   std::error_code ec;
   // A process killed during a WAL checkpoint can leave page 1 (with the new page count) written before the file
   // grew; the WAL beside it still holds every page and SQLite completes the checkpoint on open. Found by the
-  // SIGKILL test (tests/app/test_import_kill.cpp).
+  // SIGKILL test (tests/app/workspace/test_import_kill.cpp).
   if (std::filesystem::file_size(path + "-wal", ec) > 0 && !ec) return;
   const std::uint64_t size = std::filesystem::file_size(path, ec);
   if (!ec && size < pages * page_size)

@@ -68,7 +68,7 @@ struct StoredPowerTrace {
 };
 
 // A frame's record; frame.pixels is filled only by frame_pixels() (copies) or by re-reading the file
-// (references, importers/frame_store.h).
+// (references, importers/frames/frame_store.h).
 struct StoredFrame {
   std::int64_t id = 0;
   std::int64_t import_id = 0;

@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "analysis/peaks/foreign_sweeps.h"
-#include "importer.h"
+#include "common/importer.h"
 
 #ifndef BENCHSCOPE_FUZZ_IMPORTER
 #error "define BENCHSCOPE_FUZZ_IMPORTER to an importer id or \"any\""

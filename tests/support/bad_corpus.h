@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The bad-input corpus (tests/data/bad/manifest.json): committed files plus a few generated ones that are too big
-// to commit. Shared by tests/importers/test_bad_corpus.cpp (categories and places) and
-// tests/app/test_cli_bad_corpus.cpp (the CLI rejects each and leaves the workspace untouched).
+// to commit. Shared by tests/importers/common/test_bad_corpus.cpp (categories and places) and
+// tests/app/workspace/test_cli_bad_corpus.cpp (the CLI rejects each and leaves the workspace untouched).
 #include <fstream>
 #include <stdexcept>
 #include <string>

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "import_error.h"
+#include "common/import_error.h"
 
 namespace bs::test {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "importer.h"
+#include "common/importer.h"
 
 namespace bs::test {
 

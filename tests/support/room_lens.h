@@ -2,7 +2,7 @@
 #pragma once
 // The lens the line-fit and edge-proposal tests render the synthetic room through (vision/synthetic_room.h), and
 // the start a circle fit gives them: one definition for the core and widget tests that recover it.
-#include "vision/lens.h"
+#include "vision/lens/lens.h"
 
 namespace bs::test {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "vision/fused_pixel.h"
+#include "vision/reproject/fused_pixel.h"
 
 namespace bs::vision::cuda {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <fstream>
 
-#include "frame_store.h"
-#include "importer.h"
+#include "frames/frame_store.h"
+#include "common/importer.h"
 #include "store/workspace.h"
 
 namespace {

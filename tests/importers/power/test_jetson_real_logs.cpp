@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "analysis/power/power.h"
-#include "importer.h"
-#include "power_import.h"
+#include "common/importer.h"
+#include "power/power_import.h"
 
 namespace {
 

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "importer.h"
-#include "jtop_csv.h"
-#include "power_csv.h"
+#include "common/importer.h"
+#include "power/jtop_csv.h"
+#include "power/power_csv.h"
 
 namespace {
 

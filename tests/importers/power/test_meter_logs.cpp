@@ -7,11 +7,11 @@
 #include <cmath>
 
 #include "analysis/power/power.h"
-#include "importer.h"
-#include "nvidia_smi.h"
-#include "perf_stat.h"
-#include "power_import.h"
-#include "ptd_log.h"
+#include "common/importer.h"
+#include "power/nvidia_smi.h"
+#include "power/perf_stat.h"
+#include "power/power_import.h"
+#include "power/ptd_log.h"
 
 namespace {
 

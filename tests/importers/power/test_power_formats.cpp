@@ -6,9 +6,9 @@
 #include <QTest>
 
 #include "analysis/power/power_stats.h"
-#include "importer.h"
-#include "power_csv.h"
-#include "power_import.h"
+#include "common/importer.h"
+#include "power/power_csv.h"
+#include "power/power_import.h"
 
 namespace {
 

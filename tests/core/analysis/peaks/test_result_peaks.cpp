@@ -6,7 +6,7 @@
 
 #include "analysis/peaks/result_peaks.h"
 #include "analysis/roofline/roofline.h"
-#include "clpeak_text.h"
+#include "runs/clpeak_text.h"
 #include "model/measure_class.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <QTest>
 
 #include "analysis/platform/paper_tables.h"
-#include "importer.h"
+#include "common/importer.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <QTest>
 
 #include "analysis/platform/platform_comparison.h"
-#include "importer.h"
+#include "common/importer.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "analysis/power/power.h"
-#include "importer.h"
+#include "common/importer.h"
 
 namespace {
 

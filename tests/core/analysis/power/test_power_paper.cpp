@@ -12,7 +12,7 @@
 #include "analysis/platform/platform_efficiency.h"
 #include "analysis/power/battery.h"
 #include "analysis/power/power_stats.h"
-#include "importer.h"
+#include "common/importer.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <QTest>
 
 #include "analysis/roofline/stage_roofline.h"
-#include "importer.h"
+#include "common/importer.h"
 #include "store/workspace.h"
 
 namespace {

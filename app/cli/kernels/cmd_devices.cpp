@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli devices: every backend/device the kernels can run on, with its theoretical peak.
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/peaks/ceiling_check.h"
+#include "analysis/peaks/device_table.h"
+#include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
+#include "common/args.h"
+#include "kernels/bench_ceilings.h"
+#include "common/command.h"
+#include "kernels/cpu_args.h"
+#include "common/flag_output.h"
+#include "kernels/backend.h"
+#include "kernels/ceiling_cache.h"
+#include "common/signals.h"
+#include "store/workspace.h"
+
+namespace bs::cli {
+namespace {
+
+nlohmann::json ceiling_json(const kernels::Ceiling& c) {
+  if (!c.measured()) return {{"how", c.how}, {"mean", nullptr}};
+  const Summary w = summarize(c.values), p = summarize(c.per_cpu_second);
+  return {{"unit", c.unit},     {"mean", w.mean}, {"sd", w.sd}, {"n", w.n}, {"per_cpu_second_mean", p.mean},
+          {"values", c.values}, {"how", c.how}};
+}
+
+nlohmann::json ceilings_json(const kernels::CeilingSet& s) {
+  nlohmann::json j{{"date", s.date},
+                   {"isa", s.isa},
+                   {"threads", s.threads},
+                   {"clock_hz", s.clock_hz},
+                   {"computed_peak_flops", s.computed_peak_flops},
+                   {"rotation_mix", ceiling_json(s.rotation_mix)},
+                   {"fma", ceiling_json(s.fma)},
+                   {"bandwidth", ceiling_json(s.bandwidth)},
+                   {"flags", nlohmann::json::array()}};
+  if (s.rotation_mix.measured()) {
+    const auto cmp = compare_to_ceilings(summarize(s.rotation_mix.values).mean, s.computed_peak_flops, std::nullopt,
+                                         "the rotation-mix ceiling");
+    j["rotation_mix"]["fraction_of_computed_peak"] =
+        cmp.fraction_of_peak ? nlohmann::json(*cmp.fraction_of_peak) : nlohmann::json();
+    for (const PlausibilityFlag& f : cmp.flags) j["flags"].push_back({{"code", f.code}, {"reason", f.reason}});
+  }
+  return j;
+}
+
+// The device table itself (resources/devices/devices.json): every entry with its FP32 peak and source.
+int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
+  if (json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const DeviceSpec& s : table.devices) {
+      nlohmann::json e = spec_json(s);
+      e["kind"] = std::string(to_string(s.kind));
+      e["aliases"] = s.aliases;
+      e["note"] = s.note;
+      e["more_urls"] = s.source_more_urls;
+      nlohmann::json terms = nlohmann::json::array();
+      for (const PeakTerm& t : s.peak_terms)
+        terms.push_back({{"units", t.units},
+                         {"unit", t.unit},
+                         {"flop_per_unit_per_cycle", t.flop_per_unit_per_cycle},
+                         {"clock_ghz", t.clock_ghz}});
+      e["peak_terms"] = terms;
+      e["peak_exempt"] = s.peak_exempt;
+      list.push_back(std::move(e));
+    }
+    out << nlohmann::json{{"format", "benchscope-device-specs"},
+                          {"version", 1},
+                          {"path", table.path},
+                          {"devices", list}}
+               .dump(2)
+        << '\n';
+    return 0;
+  }
+  out << "device table " << table.path << " (" << table.devices.size()
+      << " devices; a value ending in '?' was not confirmed by the entry's sources)\n";
+  for (const DeviceSpec& s : table.devices) {
+    const auto mark = [&](bool unverified) { return unverified ? "?" : ""; };
+    out << s.id << " (" << to_string(s.kind) << "): " << s.name << "\n    FP32 peak "
+        << format_si(s.fp32_peak_flops, "FLOPS") << mark(s.peak_unverified()) << " = " << s.derivation;
+    if (s.memory_bandwidth_bytes_per_s)
+      out << "; memory " << format_si(*s.memory_bandwidth_bytes_per_s, "B/s")
+          << mark(s.is_unverified("memory_bandwidth_bytes_per_s"));
+    if (s.tdp_w) out << "; TDP " << format_si(*s.tdp_w, "W") << mark(s.is_unverified("tdp_w"));
+    out << "\n    source: " << s.source_title << (s.source_url.empty() ? "" : " <" + s.source_url + ">") << '\n';
+    for (const std::string& url : s.source_more_urls) out << "    also: <" << url << ">\n";
+    if (!s.unverified.empty()) {
+      out << "    unverified:";
+      for (const std::string& f : s.unverified) out << ' ' << f;
+      out << '\n';
+    }
+    if (!s.peak_exempt.empty()) out << "    peak: " << s.peak_exempt << '\n';
+    if (!s.note.empty()) out << "    note: " << s.note << '\n';
+  }
+  return 0;
+}
+
+int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
+  const ParsedArgs args = parse_args(raw, {"--json", "--table", "--measure-ceilings"}, {"--isa", "--workspace"});
+  const BundledDeviceTable& specs = bundled_device_table();
+  if (args.has("--table")) {
+    if (!specs.error.empty()) throw std::runtime_error(specs.error);
+    return print_spec_table(specs.table, args.has("--json"), out);
+  }
+  const auto spec_of = [&](const kernels::Backend& b) -> std::optional<DeviceSpec> {
+    const DeviceSpec* s = match_device(specs.table, b.device_name, b.kind);
+    return s ? std::optional<DeviceSpec>(*s) : std::nullopt;
+  };
+  kernels::CpuInfo cpu = cpu_from_args(args);
+  const auto backends = kernels::available_backends(cpu);
+  // Empirical ceilings of the CPU with its SIMD target: measured now when asked, else from the per-host cache.
+  std::optional<kernels::CeilingSet> ceilings;
+  if (args.has("--measure-ceilings")) {
+    ceilings = kernels::measure_ceilings(cpu, {}, interrupt_token());
+    kernels::store_ceilings(*ceilings);
+    // In a workspace the peak table, peaks and the roofline show each run's % of this device's ceiling.
+    if (const auto ws_path = args.value("--workspace")) {
+      ImportBatch batch;
+      batch.source_path = "benchscope-cli devices --measure-ceilings";
+      batch.format = kernels::kCeilingSource;
+      const ResultSet set = kernels::ceiling_result_set(*ceilings);
+      batch.result_sets = {set};
+      Workspace ws(*ws_path);
+      ws.add_import(batch, content_hash(set.provenance.date + set.provenance.note));
+    }
+  } else if (args.value("--workspace")) {
+    throw UsageError("--workspace stores measured ceilings: use it with --measure-ceilings");
+  } else {
+    ceilings = kernels::cached_ceilings(cpu);
+  }
+  if (args.has("--json")) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& b : backends) {
+      nlohmann::json variants = nlohmann::json::array();
+      for (auto v : b.variants) variants.push_back(b.variant_label(v));
+      nlohmann::json entry{{"backend", b.id},
+                           {"label", b.label},
+                           {"device", b.device_name},
+                           {"kind", std::string(to_string(b.kind))},
+                           {"variants", variants},
+                           {"theoretical_peak_flops", b.theoretical_peak_flops},
+                           {"details", b.details},
+                           {"spec", spec_json(spec_of(b))},
+                           {"empirical_ceilings", nullptr}};
+      if (b.id == "cpu-simd" && ceilings) entry["empirical_ceilings"] = ceilings_json(*ceilings);
+      list.push_back(std::move(entry));
+    }
+    out << nlohmann::json{{"format", "benchscope-devices"},
+                          {"version", 1},
+                          {"devices", list},
+                          {"unavailable", kernels::unavailable_backends()}}
+               .dump(2)
+        << '\n';
+    return 0;
+  }
+  for (const auto& b : backends) {
+    out << b.id << ": " << b.label << " on " << b.device_name << "\n    " << b.details << "\n    variants:";
+    for (auto v : b.variants) out << ' ' << b.variant_label(v);
+    out << "\n    theoretical peak " << format_si(b.theoretical_peak_flops, "FLOPS") << "\n";
+    if (const auto s = spec_of(b))
+      out << "    vendor FP32 peak " << format_si(s->fp32_peak_flops, "FLOPS") << " (" << s->name << ": "
+          << s->derivation << ")\n";
+    if (b.id == "cpu-simd") {
+      if (ceilings) {
+        out << "    empirical ceilings (" << (args.has("--measure-ceilings") ? "measured now" : "cached") << ", "
+            << ceilings->date << ", " << ceilings->threads << " threads):\n";
+        print_ceilings(*ceilings, out, "      ");
+      } else {
+        out << "    empirical ceilings: none cached for " << cpu.simd.name << " and " << cpu.threads
+            << " threads; devices --measure-ceilings or bench kernels measures them (" << kernels::ceiling_cache_path()
+            << ")\n";
+      }
+    } else if (b.kind != DeviceKind::Cpu || b.id != "cpu-scalar") {
+      out << "    empirical ceilings: not measured for this backend (BenchScope's ceiling micro-kernels run on the CPU "
+             "SIMD backend only)\n";
+    }
+  }
+  for (const std::string& why : kernels::unavailable_backends()) out << "not available: " << why << '\n';
+  return 0;
+}
+
+const CommandRegistrar registrar({
+    "devices",
+    "list the backends and devices the kernels can run on, with theoretical peaks",
+    "usage: benchscope-cli devices [--table] [--json] [--isa avx512|avx2|sse4|generic]\n"
+    "         [--measure-ceilings [--workspace W.bsw]]\n"
+    "  Every backend and device (CPU SIMD, CPU scalar, each OpenCL device, each CUDA GPU) with its properties, the\n"
+    "  rotation kernel's theoretical peak and the vendor FP32 peak from the device table, then the backends this\n"
+    "  build knows but cannot run here and why. --table: the device table (resources/devices/devices.json) with\n"
+    "  every entry's FP32 peak, derivation and sources; a value no source confirmed ends in '?'. The CPU SIMD\n"
+    "  backend also shows its empirical ceilings (rotation mix, FMA, memory bandwidth; docs/ceilings.md) with when\n"
+    "  and how they were measured, from the per-host cache; --measure-ceilings measures them now (~5 s) and\n"
+    "  updates the cache (--workspace: also stores them there, for peaks, the peak table and the roofline).\n"
+    "  --isa: another instruction set this CPU has.",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+      return run_devices(args, out);
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

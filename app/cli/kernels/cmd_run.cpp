@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli run flops: measure the paper's kernel on this machine and write run JSON v1.
+#include <algorithm>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+
+#include "analysis/peaks/ceiling_check.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/power/sweep_energy.h"
+#include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
+#include "common/args.h"
+#include "common/command.h"
+#include "kernels/cpu_args.h"
+#include "kernels/ceiling_cache.h"
+#include "kernels/sweep.h"
+#include "kernels/worker_spec.h"
+#include "power/power_args.h"
+#include "runs/run_json.h"
+#include "sensors/recording_csv.h"
+#include "common/signals.h"
+#include "store/workspace.h"
+
+namespace bs::cli {
+
+int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err);  // cmd_run_bandwidth.cpp
+
+namespace {
+
+// Energy of each sweep point from the phases the sweep marked: J per timed run (the point's energy over its
+// repeats) and GFLOPS/W at the point's mean power.
+void print_point_energies(std::ostream& out, const PowerTrace& trace, const std::vector<FlopsRun>& runs) {
+  print_phase_energies(out, trace);
+  out << "energy per sweep point (" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor
+      << "):\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %10s\n", "D", "W", "GFLOPS", "mean W", "J per run",
+                "GFLOPS/W");
+  out << line;
+  for (const PointEnergy& p : sweep_point_energies(trace, runs)) {
+    std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.3f %12.4f %10.3f%s\n", p.dims,
+                  static_cast<long long>(p.workers), p.gflops, p.mean_power_w, p.joules_per_run, p.gflops_per_watt,
+                  p.samples < 2 ? "  (shorter than the sample interval)" : "");
+    out << line;
+  }
+}
+
+// "  = X % of the empirical ceiling ..." for a CPU SIMD figure, with flags spelled out; a hint when none is cached.
+void print_ceiling_comparison(double flops, const kernels::CpuInfo& cpu, std::ostream& out) {
+  const auto cached = kernels::cached_ceilings(cpu);
+  std::optional<double> ceiling;
+  std::string how = "no empirical ceiling cached for this CPU and ISA (bench kernels or devices --measure-ceilings)";
+  if (cached && cached->rotation_mix.measured()) {
+    ceiling = summarize(cached->rotation_mix.values).mean;
+    how = "rotation mix, cached, measured " + cached->date;
+  }
+  const auto cmp = compare_to_ceilings(flops, cpu.peak_flops, ceiling, "the peak", how);
+  out << "  " << fraction_text(cmp.fraction_of_peak, !cmp.flags.empty()) << " of the computed peak, "
+      << fraction_text(cmp.fraction_of_ceiling, !cmp.flags.empty()) << " of the empirical ceiling ("
+      << (ceiling ? format_si(*ceiling, "FLOPS") + ", " : "") << how << ")\n";
+  for (const PlausibilityFlag& f : cmp.flags) out << "  \xE2\x9A\xA0 " << f.code << ": " << f.reason << '\n';
+}
+
+int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  if (!raw.empty() && raw[0] == "bandwidth") return run_bandwidth(raw, out, err);
+  const ParsedArgs args =
+      parse_args(raw, {"--json", "--no-warmup", "--quiet"},
+                 {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out", "--workspace",
+                  "--variant", "--device", "--power", "--power-interval-ms", "--sysfs-root", "--isa"});
+  if (args.positional.size() != 1 || args.positional[0] != "flops") throw UsageError("expected 'run flops'");
+  kernels::SweepSpec spec;
+  try {
+    spec.workers = kernels::parse_worker_spec(args.value("--workers").value_or("1,2,4,8,16,32,64,128,256"));
+    spec.dims = kernels::parse_dims_list(args.value("--points").value_or("4"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--workers/--points: ") + e.what());
+  }
+  const double n = args.number("--iterations", 40000);
+  const double repeats = args.number("--repeats", 3);
+  if (n < 1 || n > 1e12 || n != static_cast<double>(static_cast<std::int64_t>(n)))
+    throw UsageError("--iterations must be a whole number >= 1");
+  if (repeats < 1 || repeats > 1000) throw UsageError("--repeats must be between 1 and 1000");
+  spec.iterations = static_cast<std::int64_t>(n);
+  spec.repeats = static_cast<int>(repeats);
+  spec.warmup = !args.has("--no-warmup");
+  const std::string variant = args.value("--variant").value_or("throughput");
+  // The throughput variant's per-backend labels (float16x4, float4x4) are accepted as its names too.
+  if (variant != "paper" && variant != "throughput" && variant != "float16x4" && variant != "float4x4")
+    throw UsageError("--variant must be paper or throughput");
+  spec.variant = variant == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
+
+  kernels::CpuInfo cpu = cpu_from_args(args);
+  const auto backends = kernels::available_backends(cpu);
+  std::string backend_id = args.value("--backend").value_or("cpu");
+  if (const auto device = args.value("--device")) backend_id += ":" + *device;  // --backend opencl --device 1
+  const kernels::Backend* found = nullptr;
+  try {
+    found = &kernels::find_backend(backends, backend_id);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const kernels::Backend& backend = *found;
+  if (!args.has("--quiet"))
+    err << "benchscope-cli: " << backend.label << " on " << backend.device_name << " (" << backend.details
+        << "), theoretical peak " << format_si(backend.theoretical_peak_flops, "FLOPS") << '\n';
+  const bool quiet = args.has("--quiet");
+  const CancelToken& cancel = interrupt_token();
+  // The sampler runs on its own thread; the sweep marks its phases: the warm-up of each D (the time from the
+  // previous point's end to this D's first point) and each point.
+  const auto power = start_power(args, err, quiet);
+  double last_end = power ? power->now_s() : 0;
+  int current_d = -1;
+  kernels::SweepResult result;
+  try {
+    result = kernels::run_sweep(
+        backend, cpu, spec, cancel,
+        [&](double f, std::string_view step) {
+          if (!quiet)
+            err << "\r" << std::setw(5) << std::fixed << std::setprecision(1) << f * 100 << " % " << step
+                << "          " << std::flush;
+          if (!power || !step.starts_with("W=")) return;
+          const auto comma = step.find(", D=");
+          if (comma == std::string_view::npos) return;
+          const std::string w(step.substr(2, comma - 2)), d(step.substr(comma + 4));
+          if (std::stoi(d) != current_d) {
+            current_d = std::stoi(d);
+            if (spec.warmup) power->add_phase(sweep_warmup_phase(current_d), last_end, power->now_s());
+          }
+          power->begin_phase(sweep_point_phase(std::stoll(w), current_d));
+        },
+        [&](const FlopsRun&) {
+          if (!power) return;
+          power->end_phase();
+          last_end = power->now_s();
+        });
+  } catch (const std::invalid_argument& e) {  // sizes or D the backend refuses before running anything
+    throw UsageError(e.what());
+  }
+  if (!quiet) err << '\n';
+  if (result.cancelled) err << "benchscope-cli: cancelled; keeping the " << result.runs.size() << " partial run(s)\n";
+
+  std::optional<PowerTrace> trace;
+  if (power) {
+    // Named after the run, so the workspace shows which run it belongs to.
+    const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
+    trace = power->finish("run flops " + backend.label + (first ? " " + first->variant : std::string()) + " " +
+                          (first ? first->provenance.date : std::string()));
+    if (first) trace->platform = first->platform;
+  }
+  if (result.runs.empty()) {
+    err << "benchscope-cli: error: no point completed; nothing written\n";
+    return 1;
+  }
+  if (const auto path = args.value("--out")) {
+    save_run_json(*path, result.runs);
+    if (!quiet) err << "benchscope-cli: wrote " << *path << '\n';
+    if (trace) {
+      sensors::save_recording_csv(power_csv_beside(*path), *trace);
+      if (!quiet) err << "benchscope-cli: wrote " << power_csv_beside(*path) << '\n';
+    }
+  }
+  if (const auto ws_path = args.value("--workspace")) {
+    ImportBatch batch;
+    batch.source_path = "benchscope-cli run flops";
+    batch.format = "benchscope-run-v1";
+    batch.runs = result.runs;
+    if (trace) batch.power_traces.push_back(*trace);  // the same import: stored, listed and removed with the run
+    Workspace ws(*ws_path);
+    ws.add_import(batch, content_hash(write_run_json(result.runs)));
+    if (!quiet) err << "benchscope-cli: stored " << result.runs.size() << " run(s) in " << *ws_path << '\n';
+  }
+  if (args.has("--json")) {
+    out << write_run_json(result.runs);
+  } else {
+    for (const PeakRow& row : peak_table(result.runs)) {
+      out << row.backend << ", D = " << row.dims << ": peak " << format_si(row.peak.flops, "FLOPS") << " \xC2\xB1 "
+          << format_si(row.peak.at_peak.sd, "FLOPS") << " (n = " << row.peak.at_peak.n
+          << ") at W = " << row.peak.workers;
+      if (row.fraction_of_theoretical)
+        out << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
+            << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
+      out << " [variant " << row.variant << "]\n";
+      // The empirical ceiling of this CPU and ISA from the per-host cache (bench kernels / devices --measure-ceilings).
+      if (found->id == "cpu-simd") print_ceiling_comparison(row.peak.flops, cpu, out);
+    }
+    if (trace) print_point_energies(out, *trace, result.runs);
+  }
+  return result.cancelled ? 1 : 0;
+}
+
+const CommandRegistrar registrar({
+    "run",
+    "measure the paper's rotation kernel (FLOPS sweep) or memory bandwidth on this machine",
+    "usage: benchscope-cli run flops [--backend cpu|cpu-simd|cpu-scalar|opencl|cuda [--device N]]\n"
+    "         [--variant throughput|paper] [--isa avx512|avx2|sse4|generic]\n"
+    "         [--points 1,2,4] [--iterations N] [--workers SPEC] [--repeats R] [--no-warmup]\n"
+    "         [--out run.json] [--workspace W.bsw] [--json] [--quiet]\n"
+    "  SPEC: 256:1024000:256 (start:stop:step), 1,2,4,8, or mixes such as 1,2,4:64:4.\n"
+    "  paper: the paper's kernel (OpenMP task / work-item / thread per worker; OpenCL and CUDA: float, float2,\n"
+    "  float4 for D = 1, 2, 4). throughput: enough independent vector chains per thread to reach the FMA pipes'\n"
+    "  peak (CPU: all W*D points packed into vectors; OpenCL: float16x4; CUDA: float4x4).\n"
+    "  Every output is checked against the closed form D*(cos 2N + sin 2N). Ctrl+C keeps the completed points.\n"
+    "  --isa forces the CPU SIMD dispatch to one instruction set this CPU has. CPU SIMD peaks are also shown as\n"
+    "  % of the empirical ceiling cached for this CPU and ISA (flagged above the computed peak or the ceiling).\n"
+    "         [--power SENSOR|auto|none] [--power-interval-ms 100] [--sysfs-root DIR]\n"
+    "  --power records the on-board sensors during the sweep (benchscope-cli sensors lists them): phases for the\n"
+    "  warm-up and every point, energy per point (J per timed run) and GFLOPS/W at the point's mean power; the\n"
+    "  trace is stored with the run (--workspace) and written beside it as RUN.power.csv (--out RUN.json).\n"
+    "usage: benchscope-cli run bandwidth [--backend cpu|cpu-scalar|opencl [--device N]] [--mib 128]\n"
+    "         [--repeats 10] [--workspace W.bsw] [--json] [--quiet]\n"
+    "  STREAM triad a = b + q c over three float arrays of --mib MiB (12 bytes per element), mean ± SD of the\n"
+    "  repetitions in GB/s: the memory ceiling of the roofline. --workspace stores it as a result set.",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+      return run_flops(args, out, err);
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

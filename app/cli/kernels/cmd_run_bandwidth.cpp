@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli run bandwidth: STREAM triad on a CPU or OpenCL backend, the roofline's memory ceiling.
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
+#include "common/args.h"
+#include "kernels/bandwidth.h"
+#include "common/signals.h"
+#include "store/workspace.h"
+
+namespace bs::cli {
+
+int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  const ParsedArgs args =
+      parse_args(raw, {"--json", "--quiet"}, {"--backend", "--device", "--mib", "--repeats", "--workspace"});
+  if (args.positional.size() != 1 || args.positional[0] != "bandwidth") throw UsageError("expected 'run bandwidth'");
+  kernels::BandwidthSpec spec;
+  const double mib = args.number("--mib", 128), repeats = args.number("--repeats", 10);
+  if (mib < 1 || mib > 16384 || mib != static_cast<double>(static_cast<long>(mib)))
+    throw UsageError("--mib must be a whole number of MiB per array, 1 to 16384");
+  if (repeats < 1 || repeats > 1000) throw UsageError("--repeats must be between 1 and 1000");
+  spec.mib_per_array = static_cast<std::size_t>(mib);
+  spec.repeats = static_cast<int>(repeats);
+
+  const kernels::CpuInfo cpu = kernels::detect_cpu();
+  const auto backends = kernels::available_backends(cpu);
+  std::string backend_id = args.value("--backend").value_or("cpu");
+  if (const auto device = args.value("--device")) backend_id += ":" + *device;
+  const kernels::Backend* backend = nullptr;
+  try {
+    backend = &kernels::find_backend(backends, backend_id);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  if (!backend->run_triad) throw UsageError(backend->label + " has no bandwidth kernel (use cpu or opencl)");
+  const bool quiet = args.has("--quiet");
+  if (!quiet)
+    err << "benchscope-cli: STREAM triad on " << backend->label << " (" << backend->device_name << "), 3 x "
+        << spec.mib_per_array << " MiB, " << spec.repeats << " repetitions\n";
+  ResultSet set;
+  try {
+    set = kernels::measure_bandwidth(*backend, cpu, spec, interrupt_token());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const Measurement& m = set.measurements.front();
+  const Summary s = summarize(m.values);
+  if (const auto ws_path = args.value("--workspace")) {
+    ImportBatch batch;
+    batch.source_path = "benchscope-cli run bandwidth";
+    batch.format = kernels::kBandwidthSource;
+    batch.result_sets = {set};
+    Workspace ws(*ws_path);
+    ws.add_import(batch, content_hash(set.provenance.date + set.backend + set.device + std::to_string(s.mean)));
+    if (!quiet) err << "benchscope-cli: stored in " << *ws_path << '\n';
+  }
+  if (args.has("--json")) {
+    out << nlohmann::json{{"format", "benchscope-bandwidth"},
+                          {"version", 1},
+                          {"platform", set.platform},
+                          {"device", set.device},
+                          {"backend", set.backend},
+                          {"kernel", "stream-triad"},
+                          {"bytes_per_element", kernels::kTriadBytesPerElement},
+                          {"mib_per_array", spec.mib_per_array},
+                          {"bytes_per_second", m.values},
+                          {"mean", s.mean},
+                          {"sd", s.sd},
+                          {"max", s.max}}
+               .dump(2)
+        << '\n';
+  } else {
+    const double scale = 1e9;
+    out << backend->label << " (" << backend->device_name << "): STREAM triad "
+        << format_mean_sd(s.mean / scale, s.sd / scale, s.n, "GB/s", 2) << ", best " << format_si(s.max, "B/s", 2)
+        << "\n  roofline ridge point at this bandwidth: ";
+    char line[160];
+    if (backend->theoretical_peak_flops > 0)
+      std::snprintf(line, sizeof line, "%.2f FLOP/byte (%s / %s)\n", backend->theoretical_peak_flops / s.max,
+                    format_si(backend->theoretical_peak_flops, "FLOPS").c_str(), format_si(s.max, "B/s").c_str());
+    else
+      std::snprintf(line, sizeof line, "unknown (no theoretical peak for this device)\n");
+    out << line;
+  }
+  return 0;
+}
+
+}  // namespace bs::cli

@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The CPU as this machine reports it, with the SIMD instruction set `--isa avx512|avx2|sse4|generic` asks for: how
+// `bench kernels`, `run flops` and `devices` all start.
+#include "common/args.h"
+#include "kernels/cpu_info.h"
+
+namespace bs::cli {
+
+// Throws UsageError for an instruction set this CPU does not have, or an unknown one.
+kernels::CpuInfo cpu_from_args(const ParsedArgs& args);
+
+}  // namespace bs::cli

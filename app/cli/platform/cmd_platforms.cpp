@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli platforms: one column per platform (peaks, power, GFLOPS/W, pipeline, energy per frame, battery),
+// and with constraints the recommendation: which platforms meet them, which constraint each one fails and by how
+// much, and the one to pick.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/platform/inference_table.h"
+#include "analysis/platform/platform_table.h"
+#include "common/args.h"
+#include "common/command.h"
+#include "common/flag_output.h"
+#include "workspace/inputs.h"
+#include "platform/platform_args.h"
+#include "common/signals.h"
+#include "common/text_table.h"
+
+namespace bs::cli {
+namespace {
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+  if (!f) throw std::runtime_error(path + ": cannot write");
+}
+
+std::string fmt_w(double w) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f W", w);
+  return buf;
+}
+
+nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+// A stage's per-frame time: mean, SD (ms) and n; null when the platform has no pipeline run.
+nlohmann::json stage_json(const std::optional<Summary>& s) {
+  if (!s) return nullptr;
+  return {{"mean", s->mean}, {"sd", s->sd}, {"n", s->n}};
+}
+
+int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
+  std::set<std::string> values = platform_value_options();
+  values.insert({"--latex", "--csv"});
+  const ParsedArgs args = parse_args(raw, {"--json"}, values);
+  if (args.positional.empty()) throw UsageError("platforms needs a workspace or files");
+  const PlatformArgs platform_args = parse_platform_args(args);
+  const BatteryPack* pack = platform_args.pack;
+  const ComparisonOptions& options = platform_args.options;
+  const Constraints& c = platform_args.constraints;
+  const bool constrained = platform_args.constrained();
+
+  const LoadedData data = load_inputs(args.positional, interrupt_token());
+  const auto pipelines = pipeline_timings(data.pipeline_runs);
+  const auto rows = compare_platforms(data.runs, data.power_traces, pipelines, options);
+  if (rows.empty()) throw std::runtime_error("no FLOPS runs or power logs to compare");
+  const auto verdicts = recommend(rows, c);
+  const ExportTable table = platform_table(
+      rows, constrained ? std::span<const PlatformVerdict>(verdicts) : std::span<const PlatformVerdict>());
+  if (const auto p = args.value("--latex")) write_file(*p, to_latex(table));
+  if (const auto p = args.value("--csv")) write_file(*p, to_csv(table));
+
+  if (args.has("--json")) {
+    nlohmann::json list = nlohmann::json::array();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const PlatformRow& r = rows[i];
+      nlohmann::json checks = nlohmann::json::array();
+      for (const auto& k : verdicts[i].checks)
+        checks.push_back({{"name", k.name},
+                          {"unit", k.unit},
+                          {"required", k.required},
+                          {"actual", opt(k.actual)},
+                          {"met", k.met},
+                          {"margin", k.margin}});
+      nlohmann::json sources = nlohmann::json::object();
+      for (const auto& [col, s] : r.sources)
+        sources[col] = {{"file", s.source_file}, {"origin", std::string(to_string(s.origin))}, {"how", s.how}};
+      nlohmann::json column_flags = nlohmann::json::object();
+      for (const auto& [col, f] : r.flags) column_flags[col] = flags_json(f);
+      list.push_back({{"platform", r.platform},
+                      {"gpu_peak_flops", r.gpu ? nlohmann::json(r.gpu->peak.flops) : nlohmann::json(nullptr)},
+                      {"cpu_peak_flops", r.cpu ? nlohmann::json(r.cpu->peak.flops) : nlohmann::json(nullptr)},
+                      {"mean_power_w", opt(r.mean_power_w)},
+                      {"max_power_w", opt(r.max_power_w)},
+                      {"gflops_per_watt_paper", opt(r.gflops_per_watt_paper)},
+                      {"gflops_per_watt_mean_power", opt(r.gflops_per_watt_mean)},
+                      {"preprocess_ms", stage_json(r.preprocess_ms)},
+                      {"detect_ms", stage_json(r.detect_ms)},
+                      {"fps", opt(r.fps)},
+                      {"energy_per_frame_j", opt(r.energy_per_frame_j)},
+                      {"energy_per_preprocess_j", opt(r.energy_per_preprocess_j)},
+                      {"energy_per_inference_j", opt(r.energy_per_inference_j)},
+                      {"battery_runtime_h", opt(r.battery_runtime_h)},
+                      {"battery_load_w", opt(r.battery_load_w)},
+                      {"frames_per_wh", opt(r.frames_per_wh)},
+                      {"meets_constraints", verdicts[i].meets_all},
+                      {"recommended", verdicts[i].recommended},
+                      {"note", verdicts[i].note},
+                      {"ranking_note", verdicts[i].ranking_note},
+                      {"checks", checks},
+                      {"sources", sources},
+                      {"power_measurement", r.power_measurement},
+                      {"flags", flags_json(r.all_flags())},
+                      {"column_flags", column_flags}});
+    }
+    out << nlohmann::json{{"format", "benchscope-platforms"},
+                          {"version", 1},
+                          {"battery", pack->name},
+                          {"extra_load_w", options.extra_load_w},
+                          {"mission", options.mission},
+                          {"platforms", list}}
+               .dump(2)
+        << '\n';
+    return 0;
+  }
+  // Transposed for a terminal: one column per platform, one line per measure.
+  std::vector<std::string> header{"measure"};
+  for (const auto& r : table.rows) header.push_back(r[0]);
+  TextTable text(header);
+  for (std::size_t col = 1; col < table.header.size(); ++col) {
+    std::vector<std::string> line{table.header[col]};
+    for (const auto& r : table.rows) line.push_back(r[col]);
+    text.add(line);
+  }
+  text.print(out);
+  if (!table.notes.empty()) {
+    out << "\nFlags (implausible numbers; docs/cli.md, \"Plausibility flags\"):\n";
+    for (const std::string& n : table.notes) out << "  " << n << '\n';
+  }
+  char extra[64] = "";
+  if (options.extra_load_w > 0) std::snprintf(extra, sizeof extra, ", plus %.1f W in parallel", options.extra_load_w);
+  out << "battery: " << pack->name << " (" << pack->description << "), constant-power model" << extra;
+  if (!options.mission.empty()) {
+    out << ", mission " << options.mission << " repeated (mean load";
+    for (const auto& r : rows)
+      if (r.battery_load_w) out << ' ' << r.platform << ' ' << fmt_w(*r.battery_load_w);
+    out << ')';
+  }
+  out << "\nframes per Wh: frames preprocessed and detected per Wh of the computer = 3600 / energy per frame (J)\n";
+  for (const auto& v : verdicts)
+    if (!v.ranking_note.empty()) out << "ranking: " << v.platform << ": " << v.ranking_note << '\n';
+  if (!data.dnn_runs.empty()) {
+    // bench dnn runs, one row each: the table the Platforms and Pipeline views and the report show.
+    const ExportTable inf = inference_table(data.dnn_runs);
+    out << '\n' << inf.caption << ":\n";
+    TextTable t(inf.header);
+    for (const auto& r : inf.rows) t.add(r);
+    t.print(out);
+    for (const std::string& n : inf.notes) out << n << '\n';
+  }
+  if (constrained) {
+    std::string chosen;
+    for (const auto& v : verdicts)
+      if (v.recommended) chosen = v.platform;
+    out << (chosen.empty()
+                ? "recommendation: no platform meets every constraint\n"
+                : "recommendation: " + chosen + " (the most compute among the platforms that meet every constraint)\n");
+  }
+  return 0;
+}
+
+const CommandRegistrar registrar({
+    "platforms",
+    "platform comparison and recommendation under constraints (power budget, fps, battery runtime)",
+    "usage: benchscope-cli platforms (WORKSPACE | PATH...) [--budget W] [--min-fps FPS] [--min-runtime MIN]\n"
+    "                                [--battery PRESET] [--extra-load W] [--mission SPEC] [--supply-volts V]\n"
+    "                                [--latex FILE] [--csv FILE] [--json]\n"
+    "  One column per platform: best GPU and CPU peak, % of theoretical peak, pipeline timings, mean and max power,\n"
+    "  GFLOPS/W (the paper's peak / max power, and peak / mean power), energy per frame, battery runtime\n"
+    "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh (frames\n"
+    "  preprocessed and detected per Wh of the computer: 3600 / energy per frame).\n"
+    "  --mission name:seconds:watts,... (e.g. idle:60:12,walk:30:140,kick:5:225) adds the phases' loads (servos)\n"
+    "  in parallel with each computer's mean power and --extra-load, repeated until the pack is empty, as\n"
+    "  `battery --mission`: the battery runtime and the runtime constraint then follow the mission.\n"
+    "  With constraints, each platform is checked against them (the power budget against the mean power) with its\n"
+    "  margin, and the platform with the most compute among those that meet all of them is recommended. Only\n"
+    "  platforms with a power log can be recommended. --latex/--csv write the table (booktabs / RFC 4180).\n"
+    "  Detection networks timed with `bench dnn --workspace` follow in a table of their own: time per image,\n"
+    "  inferences per second, achieved GFLOPS, energy per inference and inferences per Wh per network and target.",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+      return run_platforms(args, out);
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

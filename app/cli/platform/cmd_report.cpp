@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli report: one page per platform (peaks, % of theoretical peak, power, GFLOPS/W, battery runtime,
+// pipeline timings, where each number came from) with the figures embedded, as self-contained HTML and/or PDF.
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "common/args.h"
+#include "common/command.h"
+#include "platform/figure_cli.h"
+#include "workspace/inputs.h"
+#include "platform/platform_args.h"
+#include "common/signals.h"
+
+#ifdef BENCHSCOPE_WITH_FIGURES
+#include "report_writer.h"
+#endif
+
+namespace bs::cli {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  std::set<std::string> values = platform_value_options();
+  values.insert({"--out", "--pdf", "--preset", "--width-mm", "--height-mm", "--font-pt", "--template"});
+  const ParsedArgs args = parse_args(raw, {"--quiet"}, values);
+  if (args.positional.empty()) throw UsageError("report needs a workspace or files");
+  std::string html = args.value("--out").value_or("");
+  std::string pdf = args.value("--pdf").value_or("");
+  if (ends_with(html, ".pdf") && pdf.empty()) std::swap(html, pdf);  // --out report.pdf means the PDF
+  if (html.empty() && pdf.empty()) throw UsageError("report needs --out report.html and/or --pdf report.pdf");
+  const PlatformArgs platform = parse_platform_args(args);
+#ifndef BENCHSCOPE_WITH_FIGURES
+  (void)out;
+  (void)err;
+  (void)platform;
+  throw std::runtime_error(
+      "this benchscope-cli was built without Qt (BENCHSCOPE_GUI=OFF), so it cannot render the "
+      "report's figures; use a build with the GUI, or the GUI's File > Export report");
+#else
+  const ui::FigureOptions o = parse_figure_options(args);
+  const auto templates = figure_templates(args);
+  const ui::FigureData fd =
+      figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token());
+  if (fd.runs.empty() && fd.traces.empty()) throw std::runtime_error("no FLOPS runs or power logs to report on");
+  const auto app = offscreen_application();
+  ui::ReportRequest request;
+  request.workspace_name = QString::fromStdString(std::filesystem::path(args.positional.front()).filename().string());
+  request.html_path = QString::fromStdString(html);
+  request.pdf_path = QString::fromStdString(pdf);
+  request.constraints = platform.constraints;
+  request.comparison = platform.options;
+  const bool quiet = args.has("--quiet");
+  const QStringList files =
+      ui::write_report(request, templates, fd, o, interrupt_token(), [&](int done, int total, const QString& what) {
+        if (!quiet) err << "\r[" << done << "/" << total << "] " << what.toStdString() << "        " << std::flush;
+      });
+  if (!quiet) err << '\n';
+  for (const QString& f : files) out << f.toStdString() << '\n';
+  return 0;
+#endif
+}
+
+const CommandRegistrar registrar({
+    "report",
+    "one-page-per-platform report with the figures embedded (HTML and/or PDF)",
+    "usage: benchscope-cli report (WORKSPACE | PATH...) --out report.html [--pdf report.pdf]\n"
+    "                             [--budget W] [--min-fps FPS] [--min-runtime MIN] [--battery PRESET]\n"
+    "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt "
+    "8]\n"
+    "                             [--quiet]\n"
+    "  The platform comparison, then one page per platform: best GPU and CPU peak with device, backend and % of\n"
+    "  theoretical peak, pipeline timings (ms, mean ± SD (n)), mean and max power, GFLOPS/W (the paper's and at\n"
+    "  mean power), energy per frame, battery runtime (constant-power model, --battery preset, over --mission when\n"
+    "  given, as in `platforms`), and where each\n"
+    "  number came from; then the template's figures. The HTML embeds the figures (one self-contained file); the\n"
+    "  PDF is A4, printed by Qt. With constraints, the recommended platform is named. --out report.pdf alone\n"
+    "  writes only the PDF. Needs a build with Qt.",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+      return run_report(args, out, err);
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

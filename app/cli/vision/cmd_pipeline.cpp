@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli pipeline: runs the paper's vision pipeline (capture -> demosaic + reprojection -> detection, one
+// thread each for capture and preprocessing, --detect-workers threads for detection) on frame files, prints per-stage
+// timings, writes the figure-3 images and can store the run.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "analysis/power/phase_energy.h"
+#include "common/args.h"
+#include "common/command.h"
+#include "vision/pipeline_args.h"
+#include "runs/pipeline_json.h"
+#include "power/power_args.h"
+#include "sensors/recording_csv.h"
+#include "common/signals.h"
+#include "store/workspace.h"
+#include "common/text_table.h"
+#include "util/host_clock.h"
+#include "vision/reproject/cuda_preprocess.h"
+#include "vision/pipeline/detector.h"
+#include "vision/pipeline/dnn_architectures.h"
+#include "vision/frames/frame_file.h"
+#include "vision/reproject/opencl_preprocess.h"
+#include "vision/pipeline/pipeline.h"
+#include "vision/pipeline/pipeline_record.h"
+#include "vision/reproject/preprocess.h"
+#include "vision/pipeline/threads.h"
+
+namespace bs::cli {
+namespace {
+
+using namespace bs::vision;
+
+// A lens file (format benchscope-lens), or a raw frame's sidecar that carries one under "lens" (synth-frame
+// writes that), or the word "paper" for the paper's camera.
+// Energy of the pipeline from the on-board sensors: the whole run's energy per frame through the pipeline, and,
+// as the Platforms view computes them, the mean power during the run x each stage's mean time (per
+// preprocessed frame, per inference).
+void print_pipeline_energy(std::ostream& out, const PowerTrace& trace, const PipelineRun& run, std::size_t frames) {
+  print_phase_energies(out, trace);
+  const auto energies = phase_energies(trace);
+  if (energies.empty()) return;
+  const PhaseEnergy& e = energies.front();
+  char line[256];
+  if (const auto per = joules_per_item(e, frames)) {
+    std::snprintf(line, sizeof line, "energy per frame through the pipeline: %.4f J (%zu frames, %.3f J over %.3f s)\n",
+                  *per, frames, e.energy_j, e.end_s - e.start_s);
+    out << line;
+  }
+  if (const StageStats* pre = run.stage(pipeline_stage::kPreprocess)) {
+    std::snprintf(line, sizeof line, "energy per preprocessed frame: %.4f J (mean %.3f W x %.3f ms)\n",
+                  e.mean_power_w * pre->mean_s, e.mean_power_w, pre->mean_s * 1e3);
+    out << line;
+  }
+  if (const StageStats* det = run.stage(pipeline_stage::kDetect)) {
+    std::snprintf(line, sizeof line, "energy per inference: %.4f J (mean %.3f W x %.3f ms)\n",
+                  e.mean_power_w * det->mean_s, e.mean_power_w, det->mean_s * 1e3);
+    out << line;
+  }
+  out << "(" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor << ")\n";
+}
+
+std::pair<Lens, View> load_lens(const std::string& arg) {
+  if (arg == "paper") return {Lens::paper(), View{}};
+  std::ifstream f(arg);
+  if (!f) throw std::runtime_error(arg + ": cannot open lens file");
+  const nlohmann::json j = nlohmann::json::parse(f, nullptr, false);
+  if (j.is_discarded()) throw std::runtime_error(arg + ": lens file is not valid JSON");
+  try {
+    if (j.is_object() && j.contains("lens") && j["lens"].is_object() && j["lens"].contains("format"))
+      return lens_from_json(j["lens"]);
+    return lens_from_json(j);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(arg + ": " + e.what());
+  }
+}
+
+struct Demosaic {
+  DemosaicMethod method;
+  PreprocessPath path;
+};
+
+Demosaic demosaic_option(const std::string& s) {
+  if (s == "fused") return {DemosaicMethod::Bilinear, PreprocessPath::Fused};
+  if (s == "bilinear") return {DemosaicMethod::Bilinear, PreprocessPath::Separate};
+  if (s == "mhc") return {DemosaicMethod::MalvarHeCutler, PreprocessPath::Separate};
+  if (s == "opencv") return {DemosaicMethod::OpenCvBilinear, PreprocessPath::Separate};
+  throw UsageError("--demosaic must be fused, bilinear, mhc or opencv (got '" + s + "')");
+}
+
+Detector detector_option(const std::string& s, double scale) {
+  if (s == "none") return {};
+  if (s == "hog") return hog_people_detector(scale);
+  if (const auto arch = architecture_from_string(s)) return scaled_detector(architecture_timing_detector(*arch), scale);
+  // MODEL[,CONFIG]: a detection network cv::dnn reads (ONNX, Caffe .caffemodel + .prototxt, TensorFlow .pb +
+  // .pbtxt, Darknet .weights + .cfg) with SSD, YOLOv5 or YOLOv8 outputs.
+  DnnOptions o;
+  const auto comma = s.find(',');
+  o.model = s.substr(0, comma);
+  if (comma != std::string::npos) o.config = s.substr(comma + 1);
+  for (const std::string& file : {o.model, o.config})
+    if (!file.empty() && !std::filesystem::is_regular_file(file))
+      throw std::runtime_error(file +
+                               ": no such model file (--detector takes hog, none, mobilenet-ssd, yolo-n or "
+                               "MODEL[,CONFIG])");
+  return scaled_detector(dnn_detector(o), scale);
+}
+
+std::string scale_text(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", s);
+  return b;
+}
+
+std::string ms(double seconds) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", seconds * 1e3);
+  return b;
+}
+
+void print_table(const PipelineRun& run, const PipelineResult& r, std::ostream& out) {
+  TextTable t({"stage", "n", "mean ± SD (ms)", "p50 (ms)", "p95 (ms)", "min (ms)", "max (ms)"});
+  for (const StageStats& s : run.stages)
+    t.add({s.stage, std::to_string(s.n), ms(s.mean_s) + " ± " + ms(s.sd_s), s.p50_s ? ms(*s.p50_s) : "–",
+           s.p95_s ? ms(*s.p95_s) : "–", s.min_s ? ms(*s.min_s) : "–", s.max_s ? ms(*s.max_s) : "–"});
+  t.print(out);
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "\nthroughput: %.2f fps (%zu frames processed in %.3f s; %zu captured, %zu dropped)\n",
+                r.throughput_fps, r.processed, r.wall_s, r.captured, r.dropped);
+  out << line;
+  if (r.detection_workers > 0) {
+    std::snprintf(line, sizeof line, "detection on %zu worker thread%s\n", r.detection_workers,
+                  r.detection_workers == 1 ? "" : "s");
+    out << line;
+  }
+  // The stages overlap on their threads; run one after another they would take the sum of their means.
+  double sequential_s = 0;
+  for (const StageStats& s : run.stages)
+    if (s.stage != pipeline_stage::kEndToEnd) sequential_s += s.mean_s;
+  if (sequential_s > 0 && r.throughput_fps > 0) {
+    std::snprintf(line, sizeof line,
+                  "stages in sequence would give %.2f fps (1 / sum of stage means as measured here, while the stages "
+                  "shared the cores); concurrent / sequential = %.2fx (bench pipeline measures both)\n",
+                  1.0 / sequential_s, r.throughput_fps * sequential_s);
+    out << line;
+  }
+}
+
+void write_figures(const std::string& dir, const FrameFile& frame, const cv::Mat& mosaic8, const Demosaic& d,
+                   const Preprocessor& preprocess, const Detector& detector, std::ostream& out) {
+  std::filesystem::create_directories(dir);
+  const auto save = [&](const std::string& name, const cv::Mat& img) {
+    const std::string path = (std::filesystem::path(dir) / name).string();
+    if (!cv::imwrite(path, img)) throw std::runtime_error(path + ": cannot write image");
+    out << "wrote " << path << '\n';
+  };
+  // Figure 3 of the paper: the raw mosaic shown as grey | demosaiced | reprojected (here with the detections).
+  save("fig3-raw.png", mosaic8);
+  const DemosaicMethod shown = d.path == PreprocessPath::Fused ? DemosaicMethod::Bilinear : d.method;
+  save("fig3-demosaiced.png", demosaic(mosaic8, frame.pattern, shown));
+  const cv::Mat view = preprocess(mosaic8);
+  save("fig3-reprojected.png", detector ? draw_detections(view, detector(view)) : view);
+}
+
+int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  const ParsedArgs args = parse_args(raw, {"--json"},
+                                     {"--lens", "--demosaic", "--backend", "--detector", "--frames", "--policy",
+                                      "--out", "--workspace", "--pattern", "--platform", "--queue", "--detect-workers",
+                                      "--detect-scale", "--power", "--power-interval-ms", "--sysfs-root"});
+  if (args.positional.empty()) throw UsageError("pipeline needs at least one frame file");
+  const auto lens_arg = args.value("--lens");
+  if (!lens_arg) throw UsageError("--lens LENS.json is required (or --lens paper for the paper's camera)");
+  const std::string backend = args.value("--backend").value_or("cpu");
+  if (backend != "cpu" && backend != "opencl" && backend != "cuda")
+    throw UsageError("--backend must be cpu, opencl or cuda (got '" + backend + "')");
+  const std::string demosaic_name = args.value("--demosaic").value_or(backend == "opencl" ? "bilinear" : "fused");
+  const Demosaic dm = demosaic_option(demosaic_name);
+  if (backend != "cpu" && dm.method != DemosaicMethod::Bilinear)
+    throw UsageError("--backend " + backend + " demosaics bilinearly: use --demosaic bilinear (got '" + demosaic_name +
+                     "')");
+  const double frames_arg = args.number("--frames", 50);
+  if (frames_arg < 1 || frames_arg > 1e7 || frames_arg != static_cast<double>(static_cast<long>(frames_arg)))
+    throw UsageError("--frames must be a whole number from 1 to 10,000,000");
+  const double queue = args.number("--queue", 2);
+  if (queue < 1 || queue > 1024) throw UsageError("--queue must be between 1 and 1024");
+  const std::string policy = args.value("--policy").value_or("block");
+  if (policy != "block" && policy != "drop-oldest") throw UsageError("--policy must be block or drop-oldest");
+  const std::size_t detect_workers = detect_workers_option(args);
+  const double detect_scale = detect_scale_option(args);
+  BayerPattern default_pattern = BayerPattern::BGGR;
+  if (const auto p = args.value("--pattern")) {
+    try {
+      default_pattern = bayer_pattern_from_string(*p);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--pattern: ") + e.what());
+    }
+  }
+
+  const auto [lens, view] = load_lens(*lens_arg);
+  std::vector<FrameFile> files;
+  std::vector<cv::Mat> mosaics;
+  for (const std::string& path : args.positional) {
+    files.push_back(read_frame_file(path, default_pattern));
+    const FrameFile& f = files.back();
+    if (f.mosaic.cols != lens.width || f.mosaic.rows != lens.height)
+      throw std::runtime_error(path + ": frame is " + std::to_string(f.mosaic.cols) + "x" +
+                               std::to_string(f.mosaic.rows) + " but the lens is for " + std::to_string(lens.width) +
+                               "x" + std::to_string(lens.height));
+    if (f.pattern != files.front().pattern)
+      throw std::runtime_error(path + ": Bayer pattern " + std::string(to_string(f.pattern)) + " differs from " +
+                               args.positional.front() + " (" + std::string(to_string(files.front().pattern)) + ")");
+    mosaics.push_back(to_8bit(f.mosaic, f.bit_depth));
+  }
+  const BayerPattern pattern = files.front().pattern;
+  const std::string detector_name = args.value("--detector").value_or("hog");
+  const Detector detector = detector_option(detector_name, detect_scale);
+  Preprocessor preprocess;
+  OpenClPreprocessorInfo cl_info;
+  CudaPreprocessorInfo cuda_info;
+  try {
+    // The CUDA path says why it cannot run (no nvcc at build time, no GPU) before any frame is read.
+    preprocess = backend == "opencl" ? make_opencl_preprocessor(lens, view, pattern, &cl_info)
+                 : backend == "cuda" ? make_cuda_preprocessor(lens, view, pattern, &cuda_info)
+                                     : make_preprocessor(lens, view, pattern, dm.method, dm.path);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(*lens_arg + ": " + e.what());
+  }
+
+  PipelineConfig config;
+  config.max_frames = static_cast<std::size_t>(frames_arg);
+  config.queue_capacity = static_cast<std::size_t>(queue);
+  config.policy = policy == "block" ? QueuePolicy::Block : QueuePolicy::DropOldest;
+  config.detection_workers = detect_workers;
+  // The frame files play the camera, over and over until --frames frames were captured.
+  const FrameSource source = [&](std::size_t i) -> std::optional<cv::Mat> { return mosaics[i % mosaics.size()]; };
+  const CancelToken& cancel = interrupt_token();
+  const auto power = start_power(args, err, args.has("--json"));
+  if (power) power->begin_phase("pipeline");
+  const PipelineResult result = run_pipeline(source, preprocess, detector, config, cancel);
+  if (result.cancelled) {
+    err << "benchscope-cli: pipeline cancelled after " << result.processed << " frames; nothing stored\n";
+    return 1;
+  }
+
+  PipelineRun run = to_pipeline_run(result);
+  run.platform = args.value("--platform").value_or(bs::host_name());
+  run.device = backend == "opencl" ? cl_info.device + " (OpenCL) preprocessing, CPU detection"
+               : backend == "cuda" ? cuda_info.device + " (CUDA) preprocessing, CPU detection"
+                                   : "CPU (" + std::to_string(opencv_threads()) + " threads)";
+  if (detector)
+    run.device += ", " + std::to_string(detect_workers) + " detection worker" + (detect_workers == 1 ? "" : "s");
+  run.backend = backend;
+  run.demosaic = demosaic_name;
+  run.detector = detector_name == "hog" || detector_name == "none" ? detector_name
+                 : architecture_from_string(detector_name)
+                     ? architecture_detector_name(*architecture_from_string(detector_name))
+                     : std::filesystem::path(detector_name.substr(0, detector_name.find(','))).filename().string();
+  run.frame_width = lens.width;
+  run.frame_height = lens.height;
+  // How the lens was obtained travels with the timings (the Pipeline view's Lens column).
+  run.provenance.settings.emplace_back("lens calibration", describe(lens.calibration));
+  run.provenance.origin = DataOrigin::Measured;
+  run.provenance.host = bs::host_name();
+  run.provenance.date = bs::utc_timestamp();
+  run.provenance.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
+  run.provenance.compiler = BENCHSCOPE_COMPILER;
+  run.provenance.note =
+      "benchscope-cli pipeline on " + std::to_string(args.positional.size()) + " frame file(s), " +
+      std::to_string(view.width) + "x" + std::to_string(view.height) + " view, policy " + policy + ", queue " +
+      std::to_string(config.queue_capacity) +
+      (detector ? ", " + std::to_string(detect_workers) + " detection workers, detect scale " + scale_text(detect_scale)
+                : std::string());
+  const std::string json_text = write_pipeline_json(run);
+  std::optional<PowerTrace> trace;
+  if (power) {
+    power->end_phase();
+    trace = power->finish("pipeline " + run.platform + " " + run.backend + " " + run.provenance.date);
+    trace->platform = run.platform;  // the Platforms view pairs traces and runs by platform
+  }
+
+  std::ostream& info = args.has("--json") ? err : out;  // --json keeps stdout to the document alone
+  if (args.has("--json"))
+    out << json_text;
+  else
+    print_table(run, result, out);
+  if (trace) print_pipeline_energy(info, *trace, run, result.processed);
+  if (const auto dir = args.value("--out"))
+    write_figures(*dir, files.front(), mosaics.front(), dm, preprocess, detector, info);
+  if (const auto ws_path = args.value("--workspace")) {
+    Workspace ws(*ws_path);
+    // With --power the trace goes into the same import as the run (stored and removed together).
+    ImportBatch batch;
+    batch.source_path = "benchscope-cli pipeline (" + run.platform + ", " + run.provenance.date + ")";
+    batch.format = "benchscope-pipeline-v1";
+    batch.pipeline_runs = {run};
+    if (trace) batch.power_traces.push_back(*trace);
+    const std::int64_t id = ws.add_import(batch, content_hash(json_text));
+    info << "stored the run in " << *ws_path << " (import " << id << ")\n";
+  }
+  return 0;
+}
+
+const CommandRegistrar registrar({
+    "pipeline",
+    "run the vision pipeline (demosaic + reprojection, detection) on frames; timings, figure 3, store",
+    "usage: benchscope-cli pipeline FRAME... --lens LENS.json|paper [--demosaic fused|bilinear|mhc|opencv]\n"
+    "         [--backend cpu|opencl|cuda] [--detector hog|none|mobilenet-ssd|yolo-n|MODEL[,CONFIG]] [--frames N]\n"
+    "         [--policy block|drop-oldest] [--queue N] [--detect-workers W] [--detect-scale S]\n"
+    "         [--pattern BGGR|RGGB|GRBG|GBRG] [--platform NAME]\n"
+    "         [--out DIR] [--workspace WS] [--json] [--power SENSOR|auto|none] [--power-interval-ms M] [--sysfs-root "
+    "DIR]\n"
+    "  Runs capture -> preprocessing (demosaic + reprojection) -> detection, capture and preprocessing on a thread\n"
+    "  each, detection on W worker threads (--detect-workers, default this machine's threads), with\n"
+    "  bounded queues (--queue frames each, default 2; --policy block, or drop-oldest like a live camera), over N\n"
+    "  frames (default 50) taken from the FRAME files in turn. Frames: PNG/PGM/TIFF (one channel: the raw mosaic,\n"
+    "  pattern from --pattern, default BGGR) or raw Bayer FILE.raw with a FILE.json sidecar {width, height, pattern,\n"
+    "  bit_depth, endianness} as `synth-frame` writes. --lens takes a lens file, a sidecar that holds one, or paper.\n"
+    "  --demosaic fused (default) samples the bilinear demosaic only where the reprojection reads it, in one pass.\n"
+    "  --detector hog: OpenCV's HOG people detector; MODEL[,CONFIG]: a network via cv::dnn (ONNX, Caffe, TensorFlow,\n"
+    "  Darknet) with SSD, YOLOv5 or YOLOv8 outputs (YOLO inputs letterboxed, SSD stretched), decoded with its\n"
+    "  confidence threshold and NMS; mobilenet-ssd, yolo-n: a built-in architecture with random weights\n"
+    "  (architecture timing: no detections). The detector sees the view shrunk by --detect-scale S (0 < S <= 1,\n"
+    "  default 0.5); its boxes are mapped back to the full view.\n"
+    "  Prints per stage n, mean ± SD, p50, p95, min, max (ms) and the throughput; --json prints the run as\n"
+    "  benchscope-pipeline-v1 JSON (docs/pipeline-json-v1.md) instead. --out DIR writes the paper's figure 3 for\n"
+    "  the first frame: fig3-raw.png (mosaic as grey), fig3-demosaiced.png, fig3-reprojected.png (with boxes).\n"
+    "  --workspace WS stores the run (measured, this host's provenance) for the Pipeline and Platforms views.\n"
+    "  --backend opencl runs demosaic (bilinear) + reprojection as OpenCL kernels on the first OpenCL device (GPU\n"
+    "  preferred); detection stays on the CPU. --backend cuda runs the fused demosaic (bilinear) + reprojection\n"
+    "  kernel on the first CUDA GPU (bit-identical to the CPU's fused path); without nvcc at build time or without\n"
+    "  a GPU it stops at once saying why.\n"
+    "  --power records the on-board sensors during the run (phase \"pipeline\"): energy per frame through the\n"
+    "  pipeline, per preprocessed frame and per inference (mean power x stage mean time); --workspace stores the\n"
+    "  trace in the same import as the run.",
+    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+      return run_pipeline_cmd(args, out, err);
+    },
+});
+
+}  // namespace
+}  // namespace bs::cli

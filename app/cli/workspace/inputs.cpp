@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "workspace/inputs.h"
+
+#include <fstream>
+
+#include "analysis/peaks/foreign_sweeps.h"
+#include "common/import_error.h"
+#include "common/importer.h"
+#include "store/workspace.h"
+
+namespace bs::cli {
+
+bool looks_like_workspace(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  char magic[16] = {};
+  f.read(magic, sizeof magic);
+  return f.gcount() == 16 && std::string_view(magic, 16) == std::string_view("SQLite format 3\0", 16);
+}
+
+namespace {
+// FLOPS sweeps inside other tools' results (Google Benchmark threads:N families) join the runs, as in the GUI.
+void add_foreign_sweeps(LoadedData& data) {
+  std::vector<FlopsRun> sweeps = foreign_sweeps(data.result_sets);
+  std::move(sweeps.begin(), sweeps.end(), std::back_inserter(data.runs));
+}
+}  // namespace
+
+LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken& cancel) {
+  LoadedData data;
+  if (paths.size() == 1 && looks_like_workspace(paths[0])) {
+    const Workspace ws(paths[0]);
+    for (auto& r : ws.runs()) data.runs.push_back(std::move(r.run));
+    for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
+    for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
+    for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
+    for (auto& d : ws.dnn_runs()) data.dnn_runs.push_back(std::move(d.run));
+    add_foreign_sweeps(data);
+    return data;
+  }
+  for (const InputFile& in : expand_inputs(paths)) {
+    ImportBatch batch;
+    try {
+      batch = import_file(in.path, cancel);
+    } catch (const ImportError& e) {
+      // In a folder, files no importer recognises (READMEs, scripts) are not errors.
+      if (in.from_folder && skippable_in_folder(e)) continue;
+      throw;
+    }
+    std::move(batch.runs.begin(), batch.runs.end(), std::back_inserter(data.runs));
+    std::move(batch.result_sets.begin(), batch.result_sets.end(), std::back_inserter(data.result_sets));
+    std::move(batch.power_traces.begin(), batch.power_traces.end(), std::back_inserter(data.power_traces));
+    std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
+    std::move(batch.dnn_runs.begin(), batch.dnn_runs.end(), std::back_inserter(data.dnn_runs));
+    std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
+  }
+  add_foreign_sweeps(data);
+  return data;
+}
+
+}  // namespace bs::cli

@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "common/import_service.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "store/workspace.h"
+
+namespace bs {
+namespace fs = std::filesystem;
+
+std::vector<ImportCandidate> expand_import_paths(const std::vector<std::string>& paths) {
+  std::vector<ImportCandidate> files;
+  for (const std::string& p : paths) {
+    std::error_code ec;
+    if (!fs::is_directory(p, ec)) {
+      files.push_back({p, false});
+      continue;
+    }
+    std::vector<std::string> found;
+    for (auto it = fs::recursive_directory_iterator(p, fs::directory_options::skip_permission_denied, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (!name.empty() && name[0] == '.') {
+        if (it->is_directory()) it.disable_recursion_pending();
+        continue;
+      }
+      if (it->is_regular_file()) found.push_back(it->path().string());
+    }
+    if (ec) throw ImportError(ImportErrorCategory::Io, {p, 0, 0, {}}, "cannot list folder: " + ec.message());
+    std::sort(found.begin(), found.end());  // std::string's < compares bytes: no locale, no file-system order
+    for (auto& f : found) files.push_back({std::move(f), true});
+  }
+  return files;
+}
+
+bool skippable_in_folder(const ImportError& e) {
+  return e.category() == ImportErrorCategory::UnknownFormat || e.category() == ImportErrorCategory::Binary;
+}
+
+int ImportResult::count(FileOutcome::Kind kind) const {
+  return static_cast<int>(
+      std::count_if(files.begin(), files.end(), [&](const FileOutcome& f) { return f.kind == kind; }));
+}
+
+std::string describe_batch(const ImportBatch& b) {
+  std::string s = b.runs.empty() && !b.frames.empty()
+                      ? std::string()
+                      : std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
+  if (!b.result_sets.empty()) s += ", " + std::to_string(b.result_sets.size()) + " result sets";
+  if (!b.power_traces.empty()) s += ", " + std::to_string(b.power_traces.size()) + " power traces";
+  for (const Frame& f : b.frames)
+    s += std::string(s.empty() ? "" : ", ") + "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) +
+         " " + (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " +
+         std::to_string(f.bit_depth) + "-bit" + (f.synthetic ? " synthetic" : "") +
+         (f.storage == FrameStorage::Copy ? " (copied)" : " (by reference)");
+  if (!b.pipeline_runs.empty())
+    s += ", " + std::to_string(b.pipeline_runs.size()) +
+         (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
+  return s + " (" + b.format + ")";
+}
+
+namespace {
+
+// The workspace, opened on first need, and the content hashes it already holds.
+class Target {
+ public:
+  explicit Target(std::string path) : path_(std::move(path)) {}
+  Workspace& ws() {
+    if (!ws_) {
+      ws_ = std::make_unique<Workspace>(path_);
+      for (ImportRecord& r : ws_->imports()) known_.emplace(r.content_hash, std::move(r));
+    }
+    return *ws_;
+  }
+  // The earlier import of these bytes, if any.
+  const ImportRecord* earlier(const std::string& hash) {
+    ws();
+    const auto it = known_.find(hash);
+    if (it == known_.end()) return nullptr;
+    if (it->second.imported_at.empty())  // stored by this import: its record is read only when needed
+      for (ImportRecord& r : ws_->imports())
+        if (r.id == it->second.id) it->second = std::move(r);
+    return &it->second;
+  }
+  void remember(const std::string& hash, std::int64_t id) {
+    ImportRecord r;
+    r.id = id;
+    known_.emplace(hash, std::move(r));
+  }
+
+ private:
+  std::string path_;
+  std::unique_ptr<Workspace> ws_;
+  std::map<std::string, ImportRecord> known_;
+};
+
+void mark_duplicate(FileOutcome& o, const std::string& earlier_path, const std::string& earlier_at) {
+  o.kind = FileOutcome::Kind::Duplicate;
+  o.earlier_path = earlier_path;
+  o.earlier_imported_at = earlier_at;
+  o.reason = earlier_at.empty() ? "same content as " + earlier_path + " earlier in this import"
+                                : "already imported on " + earlier_at + " as " + earlier_path;
+}
+
+// Parses one file into `o`; returns the batch when the file holds data, nullopt when it was skipped or failed.
+std::optional<ImportBatch> parse_one(const ImportCandidate& file, const ImportOptions& options,
+                                     const CancelToken& cancel, FileOutcome& o) {
+  try {
+    ImportBatch batch =
+        import_file_with_raw_geometry(file.path, options.raw_geometry, cancel, options.raw_geometry_source);
+    for (Frame& f : batch.frames) f.storage = options.frames;
+    o.warnings = batch.warnings;
+    o.summary = describe_batch(batch);
+    o.content_hash = file_content_hash(file.path);
+    o.kind = FileOutcome::Kind::Imported;
+    return batch;
+  } catch (const ImportError& e) {
+    const bool not_data = file.from_folder && skippable_in_folder(e);
+    o.kind = not_data ? FileOutcome::Kind::NotData : FileOutcome::Kind::Failed;
+    o.reason = not_data ? e.reason() : std::string(e.what());
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const std::exception& e) {  // the file vanished or became unreadable between parsing and hashing
+    o.kind = FileOutcome::Kind::Failed;
+    o.reason = e.what();
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ImportResult import_paths(const std::string& workspace_path, const std::vector<std::string>& paths,
+                          const ImportOptions& options, const CancelToken& cancel) {
+  ImportResult result;
+  const std::vector<ImportCandidate> files = expand_import_paths(paths);
+  const int total = static_cast<int>(files.size());
+  result.files.resize(files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) result.files[i].path = files[i].path;
+  const bool each_file = options.atomicity == ImportAtomicity::EachFile;
+  Target target(workspace_path);
+  std::map<std::string, std::string> seen;                   // hash -> path, for twins within this import
+  std::vector<std::pair<std::size_t, ImportBatch>> pending;  // AllOrNothing: parsed, not yet stored
+  bool failed = false;
+
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (options.progress) options.progress(static_cast<int>(i), total, files[i].path);
+    FileOutcome& o = result.files[i];
+    if (cancel.cancelled()) {
+      result.cancelled = true;
+      break;
+    }
+    try {
+      std::optional<ImportBatch> batch = parse_one(files[i], options, cancel, o);
+      if (!batch) {
+        failed = failed || o.kind == FileOutcome::Kind::Failed;
+        continue;
+      }
+      if (const auto twin = seen.find(o.content_hash); twin != seen.end() && !each_file) {
+        mark_duplicate(o, twin->second, {});
+        continue;
+      }
+      if (!each_file) {
+        seen.emplace(o.content_hash, o.path);
+        pending.emplace_back(i, std::move(*batch));
+        continue;
+      }
+      if (const ImportRecord* r = target.earlier(o.content_hash)) {
+        mark_duplicate(o, r->path, r->imported_at);
+        continue;
+      }
+      o.import_id = target.ws().add_import(*batch, o.content_hash, &cancel);
+      target.remember(o.content_hash, o.import_id);
+      result.committed = true;
+    } catch (const Cancelled&) {
+      o.kind = FileOutcome::Kind::NotReached;
+      result.cancelled = true;
+      break;
+    } catch (const WorkspaceError& e) {
+      if (e.kind() != WorkspaceError::Kind::Constraint) throw;
+      o.kind = FileOutcome::Kind::Failed;  // e.g. a copied frame whose pixels do not fit its geometry
+      o.reason = o.path + ": " + e.what();
+      failed = true;
+    }
+  }
+  if (each_file) {
+    if (options.progress) options.progress(total, total, {});
+    return result;
+  }
+
+  // AllOrNothing: store only when every file parsed and nobody cancelled, then in one transaction.
+  const auto abandon = [&] {
+    for (auto& [i, batch] : pending) result.files[i].kind = FileOutcome::Kind::NotReached;
+  };
+  if (failed || result.cancelled || pending.empty()) {
+    abandon();
+    if (options.progress) options.progress(total, total, {});
+    return result;
+  }
+  std::vector<Workspace::HashedBatch> to_store;
+  std::vector<std::size_t> stored_index;
+  for (auto& [i, batch] : pending) {
+    FileOutcome& o = result.files[i];
+    if (const ImportRecord* r = target.earlier(o.content_hash)) {
+      mark_duplicate(o, r->path, r->imported_at);
+      continue;
+    }
+    to_store.push_back({&batch, o.content_hash});
+    stored_index.push_back(i);
+  }
+  try {
+    if (!to_store.empty()) {
+      const std::vector<std::int64_t> ids = target.ws().add_imports(to_store, &cancel);
+      for (std::size_t k = 0; k < ids.size(); ++k) result.files[stored_index[k]].import_id = ids[k];
+      result.committed = true;
+    }
+  } catch (const Cancelled&) {
+    for (std::size_t i : stored_index) result.files[i].kind = FileOutcome::Kind::NotReached;
+    result.cancelled = true;
+  }
+  if (options.progress) options.progress(total, total, {});
+  return result;
+}
+
+}  // namespace bs

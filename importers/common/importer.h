@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/import_error.h"
+#include "model/import_batch.h"
+#include "common/parse_options.h"
+#include "util/cancel.h"
+
+namespace bs {
+
+// Documented limits that bound what an untrusted file can make us allocate or recurse into.
+struct ImportLimits {
+  std::size_t max_json_bytes = std::size_t{256} << 20;  // whole-document formats (JSON, clpeak text)
+  std::size_t max_json_depth = 64;
+  std::size_t max_samples = 10'000'000;  // total timing values in one file
+  // Rows of a streamed meter CSV (power_csv): a 4 kS/s meter over 7 hours is 100 million; 250 million rows of
+  // time + one channel are 4 GB of samples, the most this 24 GB class of machine imports with room to spare.
+  std::size_t max_power_rows = 250'000'000;
+  // Values (numbers, strings, ...) in one JSON document: each costs 16+ bytes in the parsed tree, so this bounds
+  // the tree at about half a GiB whatever the bytes are.
+  std::size_t max_json_values = 32'000'000;
+  // Frames: pixels in one image (64 Mpx, 8192 x 8192; the paper's camera has 1.3 Mpx) and the longest side. A
+  // header or sidecar claiming more is rejected before anything is allocated.
+  std::size_t max_frame_pixels = std::size_t{64} << 20;
+  int max_frame_side = 65535;
+};
+
+// One file format. Importers are stateless and pure: bytes in, ImportBatch out, or an ImportError.
+class Importer {
+ public:
+  virtual ~Importer() = default;
+  // Stable id stored in the workspace, e.g. "benchscope-run-v1", "google-benchmark-json", "clpeak-text".
+  virtual std::string_view id() const = 0;
+  virtual std::string_view description() const = 0;
+  // Confidence 0..100 that `head` (the first <= 64 KiB of the file) is this format. Content decides; the
+  // extension only breaks ties.
+  virtual int sniff(std::string_view head, std::string_view path) const = 0;
+  // Whether `path` has an extension this format usually carries. Used only to break a tie between equal sniff
+  // scores, never to pick a format the content does not support.
+  virtual bool usual_extension(std::string_view /*path*/) const { return false; }
+  // Binary formats (images) are sniffed on the raw head before the text checks that reject NUL bytes.
+  virtual bool binary() const { return false; }
+  // Parses the whole file, with the options the format reads (the rest are ignored). Throws ImportError (or
+  // Cancelled). Never returns a partial batch.
+  virtual ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                            const CancelToken& cancel) const = 0;
+};
+
+// All importers BenchScope knows, in sniffing order.
+const std::vector<std::unique_ptr<Importer>>& all_importers();
+const Importer* find_importer(std::string_view id);
+
+// Reads the head of `path`, rejects empty / binary / UTF-16 input with a clear ImportError, picks the importer
+// with the highest sniff score (ties broken by usual_extension, then by order) and parses. UnknownFormat when
+// nothing scores above 0. Formats get the default ParseOptions.
+ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits = {});
+
+// Helpers shared by importers.
+std::string read_head(const std::string& path, std::size_t max_bytes = 64 * 1024);  // throws Io
+std::string read_whole_file(const std::string& path, std::size_t max_bytes);        // throws Io/TooLarge
+// Rejects empty, binary (NUL bytes) and UTF-16/32 content with the right category; strips nothing.
+void check_text(std::string_view head, const std::string& path);
+// `text` without a leading UTF-8 byte-order mark: the one place a BOM is recognised. Files reach the parsers
+// through it (parse_text_file, PowerLineReader), so parse_X() functions never see one from a file.
+std::string_view strip_utf8_bom(std::string_view text);
+
+}  // namespace bs

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// jetson-stats (jtop) CSV logs, as its examples/jtop_logger.py writes them: Python csv.DictWriter over the
+// jetson.stats dictionary, one row per jtop update, header = the keys in order:
+//   time,uptime,CPU1,...,RAM,SWAP,EMC,GPU,<engines>,Fan pwmfan0,Temp cpu,...,Power VDD_CPU_GPU_CV,Power VDD_SOC,
+//   Power TOT,jetson_clocks,nvp model
+// "time" is str(datetime) ("2025-12-16 17:14:33.703152"), "uptime" str(timedelta) ("3 days, 0:07:35.540000", quoted
+// because of its comma), powers are integers in mW, temperatures in degC with -256 for an absent sensor, CPU loads
+// and engines "OFF" when off.
+// What is read: every "Power <rail>" column as a Power channel in W; the total is "Power TOT" (PowerTrace::
+// total_channel), the value jetson-stats computes (the input rail VDD_IN / POM_5V_IN where the board has one, else
+// the sum of the rails): it is never added to the rails or they to it. jetson-stats up to 4.1 wrote only the total,
+// as "power cur" (its running average "power avg" is not a sample and is not imported). "nvp model" and
+// "jetson_clocks" go into Provenance::settings (a change during the log is a warning and both values are kept).
+// Times from "time" (absolute; start_time is kept), else from "uptime". Loads, temperatures, fan and engine columns
+// are not power and are not imported.
+// Errors (file:line:column and column name): no time/uptime or no total column, a row with more or fewer cells
+// than the header, an unterminated quote, a time or power cell that is not a number, a power reading outside what a
+// rail can read (jetson_rail_limits.h), time going backwards. An empty power cell is a missing sample (NaN,
+// counted in a warning); a cut-off last row is skipped with a warning.
+#include <string>
+
+#include "common/importer.h"
+
+namespace bs {
+
+class JtopCsvImporter final : public Importer {
+ public:
+  std::string_view id() const override { return "jtop-csv"; }
+  std::string_view description() const override { return "jetson-stats (jtop) CSV log (Jetson power)"; }
+  int sniff(std::string_view head, std::string_view path) const override;
+  bool usual_extension(std::string_view path) const override;
+  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
+};
+
+// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
+ImportBatch parse_jtop_csv(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                           const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+
+}  // namespace bs

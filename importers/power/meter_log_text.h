@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Small text helpers shared by the power-log importers (nvidia-smi, perf stat, SPEC PTDaemon, tegrastats, jtop):
+// trimming, splitting on one separator, strict numbers, the file's display name and the streaming loop with one
+// line of look-ahead, so each parser knows which line is the file's last (a logger stopped mid-line cuts only that
+// one).
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "common/importer.h"
+#include "power/power_line_reader.h"
+#include "util/cancel.h"
+
+namespace bs::meter {
+
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+// Fields between `sep`, each trimmed; an empty line gives one empty field.
+inline void split(std::string_view line, char sep, std::vector<std::string_view>& out) {
+  out.clear();
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = line.find(sep, start);
+    out.push_back(trim(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
+    if (end == std::string_view::npos) return;
+    start = end + 1;
+  }
+}
+
+// Whitespace-separated tokens.
+inline void tokens(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+}
+
+// The whole of `s` as a finite number ("+" allowed, nothing else around it).
+inline bool number(std::string_view s, double& v) {
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (s.empty()) return false;
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
+}
+
+inline std::string file_name(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// Feeds every non-blank line to parser.line(text, number, last) and returns parser.finish(). The pending line is
+// copied because the reader reuses its buffer. Checks for cancellation every 1024 lines.
+// What every line-by-line meter log parser holds and how it reports: errors name the file, the line and the field;
+// a skipped line becomes a warning naming file:line, the first kListedWarnings of them listed and the rest counted
+// (more_skipped_warning() at the end). The parsers derive from it rather than each carrying a copy.
+class LineParserBase {
+ public:
+  static constexpr std::size_t kListedWarnings = 10;
+
+ protected:
+  LineParserBase(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
+      : file_(file), options_(options), limits_(limits) {}
+  [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
+                         const std::string& why) const {
+    throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);
+  }
+  void skip(std::size_t line_no, const std::string& why) {
+    if (++skipped_ <= kListedWarnings)
+      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + why + "; skipped");
+  }
+  // The count of the skipped lines not listed, as the last warning ("N more lines skipped"); nothing when none.
+  void more_skipped_warning() {
+    if (skipped_ > kListedWarnings)
+      batch_.warnings.push_back(file_ + ": " + std::to_string(skipped_ - kListedWarnings) + " more lines skipped");
+  }
+
+  const std::string& file_;
+  const ParseOptions& options_;
+  const ImportLimits& limits_;
+  std::size_t skipped_ = 0;
+  ImportBatch batch_;
+};
+
+template <class Lines, class Parser>
+auto run_lines(Lines& lines, Parser& parser, const CancelToken& cancel) {
+  std::string pending;
+  std::size_t pending_no = 0;
+  bool have = false;
+  while (const auto line = lines.next()) {
+    if (trim(*line).empty()) continue;
+    if (have) parser.line(pending, pending_no, false);
+    pending.assign(*line);
+    pending_no = lines.line_number();
+    have = true;
+    if ((pending_no & 0x3ff) == 0) cancel.throw_if_cancelled();
+  }
+  if (have) parser.line(pending, pending_no, true);
+  return parser.finish();
+}
+
+// The whole of a line-based power format's Importer::parse (the file's lines, streamed) and of its parse_X (lines
+// of text in memory): a Parser built from (file, options, limits) fed by run_lines.
+template <class Parser>
+ImportBatch parse_log(PowerLineReader&& lines, const std::string& file, const ParseOptions& options,
+                      const ImportLimits& limits, const CancelToken& cancel) {
+  Parser parser(file, options, limits);
+  return run_lines(lines, parser, cancel);
+}
+
+}  // namespace bs::meter

@@ -1,0 +1,362 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "power/nvidia_smi.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "analysis/power/power_time.h"
+#include "power/meter_log_text.h"
+#include "power/power_line_reader.h"
+
+namespace bs {
+namespace {
+
+using meter::trim;
+
+// More distinct GPU keys than any machine has: a file that claims more is not a GPU log (and would otherwise make
+// one trace per garbage row).
+constexpr std::size_t kMaxGpus = 1024;
+
+enum class Role { Time, Bus, Uuid, Index, Name, Power, Driver, Limit, Other };
+
+struct Column {
+  std::string name;  // the field name without its unit: "power.draw"
+  std::string unit;  // from "[W]"; empty when the header has none (nounits keeps it, noheader has no header)
+  Role role = Role::Other;
+};
+
+Column classify(std::string_view cell) {
+  Column c;
+  std::string_view name = trim(cell);
+  if (const auto open = name.find(" ["); open != std::string_view::npos && name.back() == ']') {
+    c.unit = std::string(name.substr(open + 2, name.size() - open - 3));
+    name = trim(name.substr(0, open));
+  }
+  c.name = std::string(name);
+  if (name == "timestamp")
+    c.role = Role::Time;
+  else if (name == "pci.bus_id" || name == "gpu_bus_id")
+    c.role = Role::Bus;
+  else if (name == "uuid" || name == "gpu_uuid")
+    c.role = Role::Uuid;
+  else if (name == "index")
+    c.role = Role::Index;
+  else if (name == "name" || name == "gpu_name")
+    c.role = Role::Name;
+  else if (name == "power.draw" || name == "power.draw.instant" || name == "power.draw.average")
+    c.role = Role::Power;
+  else if (name == "driver_version")
+    c.role = Role::Driver;
+  else if (name == "power.limit" || name == "enforced.power.limit")
+    c.role = Role::Limit;
+  return c;
+}
+
+// nvidia-smi writes "2023/10/05 14:31:02.123"; wrapper scripts often write ISO 8601 instead.
+std::optional<double> parse_timestamp(std::string_view s) {
+  if (s.size() >= 10 && s.size() < 64 && s[4] == '/' && s[7] == '/') {
+    char copy[64];
+    s.copy(copy, s.size());
+    copy[4] = copy[7] = '-';
+    return parse_iso8601(std::string_view(copy, s.size()));
+  }
+  return parse_iso8601(s);
+}
+
+bool slash_timestamp(std::string_view s) { return s.size() >= 19 && s[4] == '/' && s[7] == '/' && parse_timestamp(s); }
+
+// "[N/A]", "[Not Supported]", "[Unknown Error]", "[GPU is lost]": nvidia-smi could not read the value.
+bool missing_cell(std::string_view c) { return (c.size() >= 2 && c.front() == '[' && c.back() == ']') || c == "N/A"; }
+
+enum class Cell { Ok, Missing, Bad };
+
+// A power cell: "285.43 W", or "285.43" with nounits.
+Cell watts(std::string_view c, double& v) {
+  if (missing_cell(c)) return Cell::Missing;
+  if (c.ends_with('W')) c = trim(c.substr(0, c.size() - 1));
+  return meter::number(c, v) ? Cell::Ok : Cell::Bad;
+}
+
+struct Gpu {
+  std::string key, name;
+  double first_epoch = 0;
+  PowerTrace trace;
+};
+
+class NvidiaSmiParser : meter::LineParserBase {
+ public:
+  NvidiaSmiParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
+      : LineParserBase(file, options, limits) {}
+  void line(std::string_view raw, std::size_t line_no, bool last);
+  ImportBatch finish();
+
+ private:
+  void header(std::size_t line_no);
+  bool infer_columns(std::size_t line_no);
+  Gpu& gpu_for(std::size_t line_no);
+
+  std::vector<std::string_view> cells_;
+  std::vector<Column> cols_;
+  std::string header_line_;
+  bool have_columns_ = false, noheader_ = false;
+  std::size_t time_col_ = 0;
+  std::optional<std::size_t> key_col_, name_col_, driver_col_, limit_col_;
+  std::vector<std::size_t> power_cols_;
+  std::vector<Gpu> gpus_;
+  std::unordered_map<std::string, std::size_t> gpu_index_;
+  std::size_t samples_ = 0, missing_ = 0;
+};
+
+void NvidiaSmiParser::header(std::size_t line_no) {
+  std::string ignored;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    Column c = classify(cells_[i]);
+    switch (c.role) {
+      case Role::Time:
+        time_col_ = i;
+        break;
+      case Role::Bus:
+        key_col_ = i;
+        break;
+      case Role::Uuid:
+        if (!key_col_ || cols_[*key_col_].role != Role::Bus) key_col_ = i;
+        break;
+      case Role::Index:
+        if (!key_col_ || cols_[*key_col_].role == Role::Name) key_col_ = i;
+        break;
+      case Role::Name:
+        name_col_ = i;
+        if (!key_col_) key_col_ = i;
+        break;
+      case Role::Power:
+        if (!c.unit.empty() && c.unit != "W")
+          fail(ImportErrorCategory::Unsupported, line_no, c.name,
+               "unit '" + c.unit + "' for power (nvidia-smi writes W)");
+        power_cols_.push_back(i);
+        break;
+      case Role::Driver:
+        driver_col_ = i;
+        break;
+      case Role::Limit:
+        if (!limit_col_) limit_col_ = i;
+        break;
+      case Role::Other:
+        ignored += (ignored.empty() ? "" : ", ") + c.name;
+        break;
+    }
+    cols_.push_back(std::move(c));
+  }
+  if (power_cols_.empty())
+    fail(ImportErrorCategory::MissingField, line_no, "header",
+         "no power.draw column (query it: nvidia-smi --query-gpu=timestamp,name,pci.bus_id,power.draw --format=csv -l "
+         "1)");
+  if (std::none_of(cols_.begin(), cols_.end(), [](const Column& c) { return c.role == Role::Time; }))
+    fail(ImportErrorCategory::MissingField, line_no, "header",
+         "no timestamp column: the times of the samples are not in the file (add timestamp to --query-gpu)");
+  if (!ignored.empty()) batch_.warnings.push_back(file_ + ": columns that are not power ignored: " + ignored);
+}
+
+// noheader: safe only with one nvidia-smi timestamp cell and exactly one cell in W (the power); the GPU is told
+// apart by a PCI bus id ("00000000:01:00.0") or a UUID ("GPU-...") cell, its name by a cell starting "NVIDIA".
+bool NvidiaSmiParser::infer_columns(std::size_t line_no) {
+  std::optional<std::size_t> time, power;
+  std::size_t in_watts = 0;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const std::string_view c = cells_[i];
+    double w = 0;
+    Column col;
+    col.name = "column " + std::to_string(i + 1);
+    if (!time && slash_timestamp(c)) {
+      time = i;
+      col.role = Role::Time;
+    } else if (c.size() > 2 && c.ends_with(" W") && watts(c, w) == Cell::Ok) {
+      ++in_watts;
+      power = i;
+      col.role = Role::Power;
+      col.name = "power.draw";
+    } else if (c.size() == 16 && c[8] == ':' && c[11] == ':' && c[14] == '.') {
+      key_col_ = i;
+      col.role = Role::Bus;
+    } else if (c.starts_with("GPU-") && !key_col_) {
+      key_col_ = i;
+      col.role = Role::Uuid;
+    } else if (c.starts_with("NVIDIA ")) {
+      name_col_ = i;
+      col.role = Role::Name;
+    }
+    cols_.push_back(std::move(col));
+  }
+  if (!time) return false;
+  if (in_watts != 1)
+    fail(ImportErrorCategory::MissingField, line_no, "header",
+         "nvidia-smi log without a header and " + std::to_string(in_watts) +
+             " columns in W: which one is power.draw cannot be told; keep the header (--format=csv, without "
+             "noheader) or keep the units (without nounits) and query one power field");
+  time_col_ = *time;
+  power_cols_.push_back(*power);
+  noheader_ = true;
+  batch_.warnings.push_back(file_ + ": no header; columns inferred from the first row (timestamp in column " +
+                            std::to_string(*time + 1) + ", power in W in column " + std::to_string(*power + 1) + ")");
+  return true;
+}
+
+Gpu& NvidiaSmiParser::gpu_for(std::size_t line_no) {
+  std::string key = key_col_ ? std::string(cells_[*key_col_]) : std::string();
+  if (const auto it = gpu_index_.find(key); it != gpu_index_.end()) return gpus_[it->second];
+  if (gpus_.size() >= kMaxGpus)
+    fail(ImportErrorCategory::TooLarge, line_no, key_col_ ? cols_[*key_col_].name : "",
+         "more than " + std::to_string(kMaxGpus) + " different GPUs");
+  gpu_index_.emplace(key, gpus_.size());
+  Gpu& g = gpus_.emplace_back();
+  g.key = std::move(key);
+  if (name_col_ && !missing_cell(cells_[*name_col_])) g.name = std::string(cells_[*name_col_]);
+  for (std::size_t col : power_cols_) g.trace.channels.push_back({cols_[col].name, PowerQuantity::Power, {}});
+  auto& settings = g.trace.provenance.settings;
+  if (driver_col_) settings.emplace_back("driver_version", std::string(cells_[*driver_col_]));
+  if (limit_col_) {
+    std::string limit(cells_[*limit_col_]);
+    if (!noheader_ && cols_[*limit_col_].unit == "W" && !limit.ends_with('W') && !missing_cell(limit)) limit += " W";
+    settings.emplace_back(cols_[*limit_col_].name, limit);
+  }
+  return g;
+}
+
+void NvidiaSmiParser::line(std::string_view raw, std::size_t line_no, bool last) {
+  meter::split(raw, ',', cells_);
+  if (!have_columns_) {
+    bool header_row = false;
+    for (std::string_view c : cells_) header_row = header_row || classify(c).role == Role::Power;
+    if (header_row) {
+      header(line_no);
+      header_line_ = std::string(trim(raw));
+      have_columns_ = true;
+      return;
+    }
+    if (!infer_columns(line_no))
+      fail(ImportErrorCategory::MissingField, line_no, "header",
+           "no nvidia-smi header with power.draw (the first line is '" + std::string(trim(raw).substr(0, 80)) +
+               "'); keep the header: nvidia-smi --query-gpu=timestamp,name,pci.bus_id,power.draw --format=csv");
+    have_columns_ = true;
+  } else if (!header_line_.empty() && trim(raw) == header_line_) {
+    return skip(line_no, "the header again (logs appended one after another)");
+  }
+  if (cells_.size() != cols_.size()) {
+    if (last) return skip(line_no, "incomplete last line (nvidia-smi stopped while writing it)");
+    fail(ImportErrorCategory::Syntax, line_no, "",
+         std::to_string(cells_.size()) + " cells; the header has " + std::to_string(cols_.size()));
+  }
+  const auto epoch = parse_timestamp(cells_[time_col_]);
+  if (!epoch) {
+    if (last) return skip(line_no, "incomplete last line");
+    fail(ImportErrorCategory::InvalidValue, line_no, "timestamp",
+         "'" + std::string(cells_[time_col_]) + "' is not a date-time (expected 2023/10/05 14:31:02.123)");
+  }
+  std::vector<double> values(power_cols_.size());
+  for (std::size_t k = 0; k < power_cols_.size(); ++k) {
+    switch (watts(cells_[power_cols_[k]], values[k])) {
+      case Cell::Ok:
+        break;
+      case Cell::Missing:
+        values[k] = std::numeric_limits<double>::quiet_NaN();
+        ++missing_;
+        break;
+      case Cell::Bad:
+        if (last) return skip(line_no, "incomplete last line");
+        fail(ImportErrorCategory::InvalidValue, line_no, cols_[power_cols_[k]].name,
+             "'" + std::string(cells_[power_cols_[k]]) + "' is not a power in W");
+    }
+  }
+  if (++samples_ > limits_.max_samples)
+    fail(ImportErrorCategory::TooLarge, line_no, "",
+         "more than " + std::to_string(limits_.max_samples) + " rows (the limit for one log)");
+  Gpu& g = gpu_for(line_no);
+  PowerTrace& t = g.trace;
+  if (t.time_s.empty()) {
+    g.first_epoch = *epoch;
+    t.start_time = format_iso8601(*epoch);
+  }
+  const double rel = *epoch - g.first_epoch;
+  if (!t.time_s.empty() && rel < t.time_s.back())
+    fail(ImportErrorCategory::InvalidValue, line_no, "timestamp",
+         "time goes backwards for GPU '" + g.key + "' (" + std::string(cells_[time_col_]) + ")");
+  t.time_s.push_back(rel);
+  for (std::size_t k = 0; k < values.size(); ++k) t.channels[k].values.push_back(values[k]);
+}
+
+ImportBatch NvidiaSmiParser::finish() {
+  if (gpus_.empty())
+    throw ImportError(ImportErrorCategory::MissingField, {file_, 0, 0, {}},
+                      have_columns_ ? "a header but no rows" : "no nvidia-smi rows");
+  more_skipped_warning();
+  if (missing_ > 0)
+    batch_.warnings.push_back(file_ + ": " + std::to_string(missing_) +
+                              " power readings nvidia-smi could not take ([N/A], [Not Supported]) are missing samples");
+  const std::string label = meter::file_name(file_);
+  for (Gpu& g : gpus_) {
+    PowerTrace& t = g.trace;
+    t.platform = options_.platform;
+    t.label = gpus_.size() > 1 ? label + " GPU " + g.key : label;
+    for (const char* pick : {"power.draw", "power.draw.instant", "power.draw.average"})
+      if (t.total_channel.empty())
+        for (const auto& c : t.channels)
+          if (c.name == pick) t.total_channel = c.name;
+    // The total first as well: readers that take the first power channel (as before total_channel) agree.
+    std::stable_partition(t.channels.begin(), t.channels.end(),
+                          [&](const PowerChannel& c) { return c.name == t.total_channel; });
+    auto& p = t.provenance;
+    p.origin = DataOrigin::Measured;
+    p.tool = "nvidia-smi";
+    p.source_file = file_;
+    p.date = t.start_time;
+    p.gpu_model = g.name;
+    p.measurement = MeasurementKind::OnBoardSensor;
+    p.sensor = "NVML (nvidia-smi)";
+    if (!g.key.empty() && gpus_.size() > 1) p.note = "GPU " + g.key;
+    batch_.power_traces.push_back(std::move(t));
+  }
+  return std::move(batch_);
+}
+
+}  // namespace
+
+int NvidiaSmiImporter::sniff(std::string_view head, std::string_view) const {
+  PowerLineReader lines(head, {});
+  std::vector<std::string_view> cells;
+  while (const auto line = lines.next()) {
+    if (trim(*line).empty()) continue;
+    meter::split(*line, ',', cells);
+    bool power = false, power_in_watts = false, timestamp_cell = false, watt_cell = false;
+    int known = 0;
+    for (std::string_view c : cells) {
+      const Column col = classify(c);
+      power = power || col.role == Role::Power;
+      power_in_watts = power_in_watts || (col.role == Role::Power && col.unit == "W");
+      known += col.role != Role::Other || !col.unit.empty();
+      timestamp_cell = timestamp_cell || slash_timestamp(c);
+      watt_cell = watt_cell || (c.size() > 2 && c.ends_with(" W"));
+    }
+    if (power_in_watts) return 95;       // "power.draw [W]": nvidia-smi's own header
+    if (power && known >= 2) return 90;  // nounits header, or a wrapper's header of nvidia-smi field names
+    if (power) return 60;
+    // noheader: nvidia-smi's timestamp format; parse() decides whether the columns can be inferred.
+    if (timestamp_cell) return watt_cell ? 85 : 40;
+    return 0;
+  }
+  return 0;
+}
+
+ImportBatch NvidiaSmiImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                                     const CancelToken& cancel) const {
+  return meter::parse_log<NvidiaSmiParser>(PowerLineReader(path), path, options, limits, cancel);
+}
+
+ImportBatch parse_nvidia_smi(const std::string& text, const std::string& file, const ParseOptions& options,
+                             const ImportLimits& limits, const CancelToken& cancel) {
+  return meter::parse_log<NvidiaSmiParser>(PowerLineReader(text, file), file, options, limits, cancel);
+}
+
+}  // namespace bs

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// nvidia-smi query logs: `nvidia-smi --query-gpu=timestamp,name,pci.bus_id,power.draw,... --format=csv[,noheader]
+// [,nounits] -l 1 | -lms 100`, parsed in one streaming pass.
+//  - Header names are nvidia-smi's field names, the unit in brackets ("power.draw [W]"); cells carry the unit too
+//    ("285.43 W") unless nounits. power.draw, power.draw.instant and power.draw.average become Power channels in W;
+//    the total channel is power.draw, else .instant, else .average. Other columns (utilization, clocks,
+//    temperature, memory) are not power and are ignored, named once in a warning; driver_version and
+//    power.limit of the first row become settings.
+//  - One PowerTrace per GPU: rows of several GPUs interleave and are told apart by pci.bus_id, else uuid, else
+//    index, else name. gpu_model = the name column; the label names the GPU when the log holds several.
+//  - timestamp "2023/10/05 14:31:02.123" (or ISO 8601) gives the times and the absolute start_time; a log without
+//    a timestamp column is an error (the sampling interval of -l is not in the file).
+//  - "[N/A]", "[Not Supported]", "[Unknown Error]" and any other bracketed cell are missing samples (NaN), never 0.
+//  - noheader: read only when the columns can be inferred safely (a "YYYY/MM/DD HH:MM:SS.mmm" cell and exactly one
+//    cell in W); otherwise the error says to keep the header.
+//  - A repeated header line (logs appended run after run) is skipped with a warning; a cut-off last line too.
+// Errors: no power.draw column, unknown unit, rows with a different number of cells, time going backwards for a
+// GPU, a number that does not parse.
+#include <string>
+
+#include "common/importer.h"
+
+namespace bs {
+
+class NvidiaSmiImporter final : public Importer {
+ public:
+  std::string_view id() const override { return "nvidia-smi"; }
+  std::string_view description() const override { return "nvidia-smi --query-gpu CSV log (GPU power)"; }
+  int sniff(std::string_view head, std::string_view path) const override;
+  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
+};
+
+// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
+ImportBatch parse_nvidia_smi(const std::string& text, const std::string& file, const ParseOptions& options = {},
+                             const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+
+}  // namespace bs

@@ -1,0 +1,404 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "kernels/kernel_runner.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QtConcurrent>
+
+#include <algorithm>
+
+#include "analysis/peaks/ceiling_check.h"
+#include "analysis/peaks/flops.h"
+#include "analysis/peaks/plausibility.h"
+#include "analysis/power/sweep_energy.h"
+#include "analysis/stats/stats.h"
+#include "analysis/stats/units.h"
+#include "kernels/ceiling_cache.h"
+#include "kernels/sweep.h"
+#include "kernels/worker_spec.h"
+#include "power/power_sensor_box.h"
+#include "sensors/recorder.h"
+
+namespace bs::ui {
+
+KernelRunner::KernelRunner(QWidget* parent)
+    : QWidget(parent),
+      backend_(new QComboBox(this)),
+      variant_(new QComboBox(this)),
+      workers_(new QLineEdit("1,2,4,8,16,32,64,128,256,512,1024", this)),
+      dims_(new QLineEdit("1,2,4", this)),
+      iterations_(new QSpinBox(this)),
+      repeats_(new QSpinBox(this)),
+      details_(new QLabel(this)),
+      input_error_(new QLabel(this)),
+      ceilings_(new QLabel(this)),
+      measure_ceilings_(new QPushButton(tr("Measure ceilings"), this)),
+      run_(new QPushButton(tr("Run"), this)),
+      stop_(new QPushButton(tr("Cancel"), this)),
+      progress_(new QProgressBar(this)),
+      power_(new PowerSensorBox(this)),
+      energy_(new QTableWidget(this)) {
+  qRegisterMetaType<bs::FlopsRun>();
+  qRegisterMetaType<std::vector<bs::FlopsRun>>();
+  iterations_->setRange(1, 100'000'000);
+  iterations_->setValue(40000);
+  iterations_->setGroupSeparatorShown(true);
+  iterations_->setToolTip(tr("N: rotations per point (the paper uses 40,000)"));
+  repeats_->setRange(1, 100);
+  repeats_->setValue(3);
+  repeats_->setToolTip(tr("Timings per point; the plot shows mean ± SD"));
+  workers_->setToolTip(
+      tr("Worker counts: 1,2,4,8 or start:stop:step such as 256:1024000:256 (paper GPUs) or "
+         "1:4096:32 (paper CPUs)"));
+  dims_->setToolTip(tr("D values: 2D points per worker (paper: 1, 2, 4)"));
+  variant_->addItem(tr("throughput (fills the vector units)"), "throughput");
+  variant_->addItem(tr("paper (one task per worker)"), "paper");
+  variant_->setToolTip(tr("Which kernel variant; views label curves with it"));
+  details_->setWordWrap(true);
+  ceilings_->setWordWrap(true);
+  ceilings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  ceilings_->setObjectName("ceilingsLabel");
+  measure_ceilings_->setToolTip(
+      tr("Measure this CPU's empirical ceilings now (~5 s): the rotation kernel's instruction "
+         "mix and plain FMA with enough independent chains, and the memory bandwidth. Stored "
+         "per host and in the workspace (peak table, roofline)"));
+  details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  stop_->setEnabled(false);
+  run_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  run_->setToolTip(tr("Start the sweep (Ctrl+R); every output is checked against the closed form"));
+  stop_->setToolTip(tr("Stop after the current chunk; completed points are kept"));
+  progress_->setRange(0, 1000);
+  progress_->setValue(0);
+
+  energy_->setColumnCount(6);
+  energy_->setHorizontalHeaderLabels({tr("D"), tr("W"), tr("GFLOPS"), tr("Mean W"), tr("J per run"), tr("GFLOPS/W")});
+  energy_->verticalHeader()->hide();
+  energy_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  energy_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  energy_->setVisible(false);
+
+  auto* form = new QFormLayout;
+  form->addRow(tr("Backend"), backend_);
+  form->addRow(QString(), details_);
+  auto* ceiling_row = new QHBoxLayout;
+  ceiling_row->addWidget(ceilings_, 1);
+  ceiling_row->addWidget(measure_ceilings_, 0, Qt::AlignTop);
+  form->addRow(tr("Ceilings"), ceiling_row);
+  form->addRow(tr("Variant"), variant_);
+  form->addRow(tr("Workers"), workers_);
+  form->addRow(tr("D"), dims_);
+  form->addRow(tr("N"), iterations_);
+  form->addRow(tr("Repeats"), repeats_);
+  input_error_->setWordWrap(true);
+  input_error_->setStyleSheet(QStringLiteral("color: #b00020;"));
+  input_error_->hide();
+  form->addRow(QString(), input_error_);
+  form->addRow(tr("Record power"), power_);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(run_);
+  buttons->addWidget(stop_);
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(form);
+  layout->addLayout(buttons);
+  layout->addWidget(progress_);
+  layout->addWidget(energy_, 1);
+  layout->addStretch(0);
+
+  connect(run_, &QPushButton::clicked, this, &KernelRunner::start);
+  connect(workers_, &QLineEdit::textChanged, this, &KernelRunner::validate_inputs);
+  connect(dims_, &QLineEdit::textChanged, this, &KernelRunner::validate_inputs);
+  connect(measure_ceilings_, &QPushButton::clicked, this, &KernelRunner::measure_ceilings);
+  connect(stop_, &QPushButton::clicked, this, &KernelRunner::cancel);
+  // Device and variant names can be long ("OpenCL: pthread-Intel(R) Xeon(R) Platinum …"): the open list shows them
+  // whole, the closed boxes do not set the dock's (and so the window's) minimum width.
+  for (QComboBox* box : {backend_, variant_}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(16);
+  }
+  connect(backend_, &QComboBox::currentIndexChanged, this, &KernelRunner::show_backend_details);
+  populate();
+}
+
+KernelRunner::~KernelRunner() {
+  if (cancel_) cancel_->cancel();
+  if (ceiling_cancel_) ceiling_cancel_->cancel();
+  QThreadPool::globalInstance()->waitForDone();  // the sweep thread refers to our backends
+}
+
+void KernelRunner::populate() {
+  cpu_ = kernels::detect_cpu();  // ~0.1 s clock calibration, once
+  backends_ = kernels::available_backends(cpu_);
+  ceiling_set_ = kernels::cached_ceilings(cpu_);  // measured earlier on this host: no re-measuring on every start
+  backend_->clear();
+  for (const auto& b : backends_)
+    backend_->addItem(
+        QStringLiteral("%1 — %2").arg(QString::fromStdString(b.label), QString::fromStdString(b.device_name)));
+  show_backend_details();
+}
+
+void KernelRunner::show_backend_details() {
+  const int i = backend_->currentIndex();
+  if (i < 0) return;
+  const auto& b = backends_[static_cast<std::size_t>(i)];
+  details_->setText(QStringLiteral("<small>%1<br>theoretical peak %2</small>")
+                        .arg(QString::fromStdString(b.details).toHtmlEscaped(),
+                             QString::fromStdString(format_si(b.theoretical_peak_flops, "FLOPS"))));
+  show_ceilings();
+}
+
+void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
+  const int i = backend_->currentIndex();
+  const bool simd = i >= 0 && backends_[static_cast<std::size_t>(i)].id == "cpu-simd";
+  measure_ceilings_->setVisible(simd);
+  measure_ceilings_->setEnabled(!measuring_ceilings());
+  if (!simd) {
+    ceilings_->setText(tr("<small>Empirical ceilings are measured for the CPU SIMD backend only.</small>"));
+    ceilings_->setToolTip({});
+    return;
+  }
+  if (!ceiling_set_ || !ceiling_set_->rotation_mix.measured()) {
+    ceilings_->setText(tr("<small>No empirical ceiling measured for %1 with %2 threads yet: "
+                          "“% of peak” rests on the computed model alone.</small>")
+                           .arg(QString::fromStdString(cpu_.simd.name))
+                           .arg(cpu_.threads));
+    ceilings_->setToolTip({});
+    return;
+  }
+  const kernels::CeilingSet& c = *ceiling_set_;
+  const Summary mix = summarize(c.rotation_mix.values);
+  const auto own = compare_to_ceilings(mix.mean, c.computed_peak_flops, std::nullopt, "The rotation-mix ceiling");
+  QString text =
+      tr("<small>rotation mix %1 ± %2 (n = %3) = %4 of the computed peak")
+          .arg(QString::fromStdString(format_si(mix.mean, "FLOPS")), QString::fromStdString(format_si(mix.sd, "FLOPS")))
+          .arg(mix.n)
+          .arg(QString::fromStdString(fraction_text(own.fraction_of_peak, !own.flags.empty())));
+  if (c.fma.measured())
+    text += tr("; FMA %1").arg(QString::fromStdString(format_si(summarize(c.fma.values).mean, "FLOPS")));
+  if (c.bandwidth.measured())
+    text += tr("; memory %1").arg(QString::fromStdString(format_si(summarize(c.bandwidth.values).mean, "B/s")));
+  text += tr("<br>measured %1").arg(QString::fromStdString(c.date));
+  std::vector<PlausibilityFlag> flags = own.flags;
+  // The last sweep's peak against both: the Kernel Runner's own "% of peak" and "% of empirical ceiling".
+  double best = 0;
+  for (const FlopsRun& r : last_runs)
+    if (const auto p = find_peak(r)) best = std::max(best, p->flops);
+  if (best > 0) {
+    const auto cmp = compare_to_ceilings(best, cpu_.peak_flops, mix.mean, "The last sweep's peak",
+                                         "rotation mix, measured " + c.date);
+    text += tr("<br>last sweep: peak %1 = %2 of the computed peak, %3 of the empirical ceiling")
+                .arg(QString::fromStdString(format_si(best, "FLOPS")),
+                     QString::fromStdString(fraction_text(cmp.fraction_of_peak, !cmp.flags.empty())),
+                     QString::fromStdString(fraction_text(cmp.fraction_of_ceiling, !cmp.flags.empty())));
+    merge_flags(flags, cmp.flags);
+  }
+  ceilings_->setText(text + QStringLiteral("</small>"));
+  ceilings_->setToolTip(QString::fromStdString((flags.empty() ? std::string() : flags_text(flags) + "\n\n") +
+                                               c.rotation_mix.how + "\n" + c.fma.how +
+                                               (c.bandwidth.measured() ? "\n" + c.bandwidth.how : std::string())));
+}
+
+void KernelRunner::measure_ceilings() {
+  if (measuring_ceilings()) return;
+  ceiling_cancel_ = std::make_shared<CancelToken>();
+  measure_ceilings_->setEnabled(false);
+  ceilings_->setText(tr("<small>Measuring the empirical ceilings…</small>"));
+  auto cancel = ceiling_cancel_;
+  const kernels::CpuInfo cpu = cpu_;
+  auto* watcher = new QFutureWatcher<kernels::CeilingSet>(this);
+  connect(watcher, &QFutureWatcher<kernels::CeilingSet>::finished, this, [this, watcher] {
+    watcher->deleteLater();
+    ceiling_cancel_.reset();
+    try {
+      ceiling_set_ = watcher->result();
+      try {
+        kernels::store_ceilings(*ceiling_set_);
+      } catch (const std::runtime_error& e) {
+        emit failed(tr("Ceilings measured but not cached: %1").arg(QString::fromUtf8(e.what())));
+      }
+      emit ceilings_measured(kernels::ceiling_result_set(*ceiling_set_));
+    } catch (const std::exception& e) {
+      emit failed(tr("Measuring the ceilings: %1").arg(QString::fromUtf8(e.what())));
+    }
+    show_ceilings();
+  });
+  watcher->setFuture(QtConcurrent::run([cpu, cancel] { return kernels::measure_ceilings(cpu, {}, *cancel); }));
+}
+
+std::optional<PowerTrace> KernelRunner::take_power_trace() {
+  auto t = std::move(trace_);
+  trace_.reset();
+  return t;
+}
+
+void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
+  const std::vector<PointEnergy> points = trace_ ? sweep_point_energies(*trace_, runs) : std::vector<PointEnergy>{};
+  energy_->setVisible(trace_.has_value());
+  energy_->setRowCount(static_cast<int>(points.size()));
+  for (std::size_t r = 0; r < points.size(); ++r) {
+    const PointEnergy& p = points[r];
+    const QString texts[] = {QString::number(p.dims),
+                             QString::number(p.workers),
+                             QString::number(p.gflops, 'f', 2),
+                             QString::number(p.mean_power_w, 'f', 2),
+                             QString::number(p.joules_per_run, 'f', 4),
+                             QString::number(p.gflops_per_watt, 'f', 3)};
+    for (int c = 0; c < 6; ++c) {
+      auto* item = new QTableWidgetItem(texts[c]);
+      item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+      if (p.samples < 2) item->setToolTip(tr("Shorter than the sample interval: interpolated between samples"));
+      energy_->setItem(static_cast<int>(r), c, item);
+    }
+  }
+  if (trace_)
+    energy_->setToolTip(tr("Energy per sweep point, %1: %2")
+                            .arg(QString::fromUtf8(to_string(trace_->provenance.measurement).data()),
+                                 QString::fromStdString(trace_->provenance.sensor)));
+}
+
+void KernelRunner::set_workers_spec(const QString& spec) { workers_->setText(spec); }
+
+namespace {
+// The parser's reason for `text`, or empty when it parses.
+template <class Parse>
+QString parse_error(const QLineEdit* field, Parse parse) {
+  try {
+    parse(field->text().toStdString());
+    return {};
+  } catch (const std::invalid_argument& e) {
+    return QString::fromUtf8(e.what());
+  }
+}
+}  // namespace
+
+QString KernelRunner::input_error() const {
+  if (const QString why = parse_error(workers_, [](std::string_view t) { return kernels::parse_worker_spec(t); });
+      !why.isEmpty())
+    return tr("Workers: %1").arg(why);
+  if (const QString why = parse_error(dims_, [](std::string_view t) { return kernels::parse_dims_list(t); });
+      !why.isEmpty())
+    return tr("D: %1").arg(why);
+  return {};
+}
+
+void KernelRunner::validate_inputs() {
+  const QString workers_why = parse_error(workers_, [](std::string_view t) { return kernels::parse_worker_spec(t); });
+  const QString dims_why = parse_error(dims_, [](std::string_view t) { return kernels::parse_dims_list(t); });
+  for (auto [field, why] : {std::pair{workers_, workers_why}, std::pair{dims_, dims_why}}) {
+    // Red field, the reason in its tooltip and under the form, so the user sees which field and why while typing.
+    field->setStyleSheet(why.isEmpty() ? QString() : QStringLiteral("QLineEdit { background: #ffd7d7; }"));
+    field->setProperty("invalid", !why.isEmpty());
+  }
+  const QString why = input_error();
+  input_error_->setText(why);
+  input_error_->setVisible(!why.isEmpty());
+  run_->setEnabled(why.isEmpty() && !running());
+}
+void KernelRunner::set_dims(const QString& dims) { dims_->setText(dims); }
+void KernelRunner::set_iterations(int n) { iterations_->setValue(n); }
+void KernelRunner::set_repeats(int r) { repeats_->setValue(r); }
+
+void KernelRunner::start() {
+  if (running() || backend_->currentIndex() < 0) return;
+  kernels::SweepSpec spec;
+  try {
+    spec.workers = kernels::parse_worker_spec(workers_->text().toStdString());
+    spec.dims = kernels::parse_dims_list(dims_->text().toStdString());
+  } catch (const std::invalid_argument&) {
+    emit failed(input_error());  // names the field; Run is disabled while a field is invalid, so rarely reached
+    return;
+  }
+  spec.iterations = iterations_->value();
+  spec.repeats = repeats_->value();
+  spec.variant = variant_->currentData().toString() == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
+  const kernels::Backend backend = backends_[static_cast<std::size_t>(backend_->currentIndex())];
+  trace_.reset();
+  recorder_.reset();
+  try {
+    recorder_ = power_->start_recorder();  // null when "Record power" is off
+  } catch (const std::exception& e) {
+    emit failed(tr("Record power: %1").arg(QString::fromUtf8(e.what())));
+    return;
+  }
+  cancel_ = std::make_shared<CancelToken>();
+  emit started();
+  run_->setEnabled(false);
+  stop_->setEnabled(true);
+  progress_->setValue(0);
+  auto cancel = cancel_;
+  const kernels::CpuInfo cpu = cpu_;
+  auto* watcher = new QFutureWatcher<kernels::SweepResult>(this);
+  connect(watcher, &QFutureWatcher<kernels::SweepResult>::finished, this, [this, watcher] {
+    watcher->deleteLater();
+    cancel_.reset();
+    validate_inputs();  // Run comes back only if the fields still parse
+    stop_->setEnabled(false);
+    try {
+      const kernels::SweepResult result = watcher->result();
+      progress_->setValue(1000);
+      if (recorder_) {
+        const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
+        trace_ = recorder_->finish("Kernel Runner " +
+                                   (first ? first->backend + " " + first->provenance.date : std::string()));
+        if (first) trace_->platform = first->platform;  // paired with the run's platform in every view
+        recorder_.reset();
+      }
+      show_energies(result.runs);
+      show_ceilings(result.runs);
+      emit finished(result.runs, result.cancelled);
+    } catch (const std::exception& e) {
+      emit failed(QString::fromUtf8(e.what()));
+    }
+  });
+  QPointer<KernelRunner> self(this);
+  // The recorder's phase calls are thread-safe: the sweep thread marks each D's warm-up and each point.
+  watcher->setFuture(QtConcurrent::run([backend, cpu, spec, cancel, self, rec = recorder_] {
+    double last_end = rec ? rec->now_s() : 0;
+    int current_d = -1;
+    return kernels::run_sweep(
+        backend, cpu, spec, *cancel,
+        [self, rec, &last_end, &current_d, warmup = spec.warmup](double f, std::string_view step) {
+          QMetaObject::invokeMethod(
+              self.data(),
+              [self, f] {
+                if (self) self->progress_->setValue(static_cast<int>(f * 1000));
+              },
+              Qt::QueuedConnection);
+          const auto comma = step.find(", D=");
+          if (!rec || !step.starts_with("W=") || comma == std::string_view::npos) return;
+          const long long w = std::stoll(std::string(step.substr(2, comma - 2)));
+          const int d = std::stoi(std::string(step.substr(comma + 4)));
+          if (d != current_d) {
+            current_d = d;
+            if (warmup) rec->add_phase(sweep_warmup_phase(d), last_end, rec->now_s());
+          }
+          rec->begin_phase(sweep_point_phase(w, d));
+        },
+        [self, rec, &last_end](const FlopsRun& run) {
+          if (rec) {
+            rec->end_phase();
+            last_end = rec->now_s();
+          }
+          QMetaObject::invokeMethod(
+              self.data(),
+              [self, run] {
+                if (self) emit self->live_run(run);
+              },
+              Qt::QueuedConnection);
+        });
+  }));
+}
+
+void KernelRunner::cancel() {
+  if (cancel_) cancel_->cancel();
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "platform/efficiency_view.h"
+
+#include <qcustomplot.h>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <algorithm>
+
+namespace bs::ui {
+namespace {
+
+enum Column { Platform, Peak, Source, Supply, MaxCurrent, MeanCurrent, MeanPower, Paper, AtMean, Energy, ColumnCount };
+
+QString mean_sd_n(const Summary& s, int decimals) {
+  return QStringLiteral("%1 ± %2 (n = %3)").arg(s.mean, 0, 'f', decimals).arg(s.sd, 0, 'f', decimals).arg(s.n);
+}
+
+}  // namespace
+
+EfficiencyView::EfficiencyView(QWidget* parent)
+    : QWidget(parent), table_(new QTableWidget(this)), plot_(new QCustomPlot(this)) {
+  auto* note = new QLabel(
+      tr("Each platform's highest FLOPS peak (any device) with its supply-current log. <b>Paper</b>: peak / (supply V "
+         "× <i>maximum</i> current), a best-case numerator over a worst-case denominator taken at different times. "
+         "<b>At mean power</b>: peak / mean power of the log. <b>Energy</b>: joules per GFLOP at the peak rate and "
+         "the mean power."),
+      this);
+  note->setWordWrap(true);
+  table_->setColumnCount(ColumnCount);
+  table_->setHorizontalHeaderLabels({tr("Platform"), tr("Peak (GFLOPS)"), tr("Peak from (device, backend, D)"),
+                                     tr("Supply (V)"), tr("Max current (A)"), tr("Mean current (A)"),
+                                     tr("Mean power (W)"), tr("GFLOPS/W paper\npeak / (V × max I)"),
+                                     tr("GFLOPS/W\npeak / mean power"), tr("Energy (J/GFLOP)\nmean power / peak")});
+  table_->horizontalHeaderItem(Paper)->setToolTip(
+      tr("The paper's definition: peak FLOPS / (supply voltage × the "
+         "largest current in the log)"));
+  table_->horizontalHeaderItem(AtMean)->setToolTip(tr("Peak FLOPS / mean power over the whole log"));
+  table_->horizontalHeaderItem(Energy)->setToolTip(
+      tr("Joules per 10^9 floating-point operations at the peak rate, "
+         "drawing the mean power"));
+  table_->verticalHeader()->hide();
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+
+  plot_->yAxis->setLabel(tr("Efficiency (GFLOPS/W)"));
+  plot_->xAxis->setLabel(tr("Platform"));
+  plot_->legend->setVisible(true);
+  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+
+  auto* split = new QSplitter(Qt::Vertical, this);
+  split->addWidget(table_);
+  split->addWidget(plot_);
+  split->setStretchFactor(0, 1);
+  split->setStretchFactor(1, 3);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(note);
+  layout->addWidget(split, 1);
+}
+
+void EfficiencyView::set_data(const std::vector<FlopsRun>& runs, const std::vector<PowerTrace>& traces) {
+  rows_ = platform_efficiency(runs, traces);
+  fill_table();
+  fill_plot();
+}
+
+void EfficiencyView::fill_table() {
+  table_->setRowCount(static_cast<int>(rows_.size()));
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const PlatformEfficiency& e = rows_[r];
+    const auto cell = [&](int col, const QString& text, const QString& tip = {}) {
+      auto* item = new QTableWidgetItem(text);
+      if (col != Platform && col != Source) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+      if (!tip.isEmpty()) item->setToolTip(tip);
+      table_->setItem(static_cast<int>(r), col, item);
+    };
+    cell(Platform, QString::fromStdString(e.peak.platform),
+         tr("current log: %1\npower measured by: %2")
+             .arg(QString::fromStdString(e.trace_label), QString::fromStdString(e.measurement)));
+    cell(Peak, QString::number(e.peak.peak.flops / 1e9, 'f', 2),
+         tr("at %1 workers; %2").arg(e.peak.peak.workers).arg(QString::fromStdString(e.peak.source_file)));
+    cell(Source, QStringLiteral("%1, %2, D = %3")
+                     .arg(QString::fromStdString(e.peak.device), QString::fromStdString(e.peak.backend))
+                     .arg(e.peak.dims));
+    cell(Supply, QString::number(e.supply_v, 'f', 1));
+    cell(MaxCurrent, QString::number(e.current_a.max, 'f', 3));
+    cell(MeanCurrent, mean_sd_n(e.current_a, 2));
+    cell(MeanPower, mean_sd_n(e.power_w, 2));
+    for (const auto& [col, i] : {std::pair{Paper, 0}, std::pair{AtMean, 1}, std::pair{Energy, 2}}) {
+      const EfficiencyFigure& f = e.figures.at(static_cast<std::size_t>(i));
+      cell(col, QString::number(f.value, 'f', col == Energy ? 4 : 2),
+           QString::fromStdString(f.label) + QStringLiteral(" (") + QString::fromStdString(f.unit) + ')');
+    }
+    // A flagged peak or power log: the numbers made from it are marked, tinted and explained.
+    if (!e.flags.empty()) {
+      const QString why = QString::fromStdString(flags_text(e.flags));
+      const bool peak_flagged = !e.peak.flags.empty();
+      const bool power_flagged = e.flags.size() > e.peak.flags.size();  // the log's flags follow the peak's
+      for (int col :
+           {int(Peak), int(MaxCurrent), int(MeanCurrent), int(MeanPower), int(Paper), int(AtMean), int(Energy)}) {
+        const bool ratio = col == Paper || col == AtMean || col == Energy;
+        if (!ratio && !(col == Peak ? peak_flagged : power_flagged)) continue;
+        QTableWidgetItem* item = table_->item(static_cast<int>(r), col);
+        if (!item) continue;
+        item->setText(QStringLiteral("⚠ ") + item->text());
+        item->setBackground(QColor(0xff, 0xe0, 0xb2));
+        item->setToolTip(why + "\n\n" + item->toolTip());
+      }
+    }
+  }
+}
+
+void EfficiencyView::fill_plot() {
+  plot_->clearPlottables();
+  const int n = static_cast<int>(rows_.size());
+  QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
+  for (int i = 0; i < n; ++i)
+    ticker->addTick(i + 1, QString::fromStdString(rows_[static_cast<std::size_t>(i)].peak.platform));
+  plot_->xAxis->setTicker(ticker);
+  plot_->xAxis->setSubTicks(false);
+  plot_->xAxis->setTickLength(0, 4);
+  // Two bars per platform side by side (QCPBarsGroup), one colour per variant.
+  auto* group = new QCPBarsGroup(plot_);
+  const struct {
+    QString name;
+    QColor color;
+    double PlatformEfficiency::*value;
+  } variants[] = {
+      {tr("Paper: peak / (V × max current)"), QColor(31, 119, 180), &PlatformEfficiency::paper_gflops_per_w},
+      {tr("Peak / mean power"), QColor(255, 127, 14), &PlatformEfficiency::mean_power_gflops_per_w},
+  };
+  double top = 0;
+  for (const auto& v : variants) {
+    auto* bars = new QCPBars(plot_->xAxis, plot_->yAxis);
+    bars->setName(v.name);
+    bars->setPen(QPen(v.color.darker(130)));
+    bars->setBrush(v.color);
+    bars->setWidth(0.35);
+    bars->setBarsGroup(group);
+    QVector<double> keys, values;
+    for (int i = 0; i < n; ++i) {
+      keys << i + 1;
+      values << rows_[static_cast<std::size_t>(i)].*v.value;
+      top = std::max(top, values.back());
+    }
+    bars->setData(keys, values);
+  }
+  // Value labels above the bars, so the figures can be read off the chart (104.64, 41.26 on the paper's data).
+  plot_->clearItems();
+  for (int i = 0; i < n; ++i) {
+    const PlatformEfficiency& e = rows_[static_cast<std::size_t>(i)];
+    const double offsets[] = {-0.19, 0.19};
+    const double values[] = {e.paper_gflops_per_w, e.mean_power_gflops_per_w};
+    for (int k = 0; k < 2; ++k) {
+      auto* label = new QCPItemText(plot_);
+      label->position->setCoords(i + 1 + offsets[k], values[k]);
+      label->setPositionAlignment(Qt::AlignHCenter | Qt::AlignBottom);
+      label->setText(QString::number(values[k], 'f', 2));
+      label->setPadding(QMargins(0, 0, 0, 2));
+    }
+  }
+  plot_->xAxis->setRange(0.4, n + 0.6);
+  plot_->yAxis->setRange(0, top > 0 ? top * 1.3 : 1);  // room for the value labels and the legend
+  plot_->replot();
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <QStringList>
+#include <QWidget>
+#include <vector>
+
+#include "analysis/platform/platform_comparison.h"
+#include "model/dnn_run.h"
+#include "power/shared_traces.h"
+#include "store/battery_preset_store.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QTableWidget;
+
+namespace bs {
+class Workspace;
+}
+
+namespace bs::ui {
+
+class FrozenFirstColumn;
+class InferenceTable;
+
+// One row per platform (peaks, power, GFLOPS/W, pipeline, energy per frame, battery), sortable, the best value of
+// each column highlighted, each cell's source in its tooltip; constraints (power budget, fps, runtime) add the
+// verdict columns and the recommendation. The numbers come from core (compare_platforms, recommend,
+// platform_table) so the view, the CLI and the exported tables agree.
+class PlatformView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PlatformView(QWidget* parent = nullptr);
+  ~PlatformView() override;
+  // Pipeline runs give the preprocessing and detection columns and, with a power log, energy per frame.
+  // The traces are shared with the other views (widgets/power/shared_traces.h), never copied.
+  void set_data(std::vector<FlopsRun> runs, SharedTraces traces, std::vector<PipelineRun> pipelines = {});
+  void set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces, std::vector<PipelineRun> pipelines = {});
+  // bench dnn runs: the inference table under the comparison (hidden while there are none).
+  void set_inference_runs(std::vector<DnnRun> runs);
+  InferenceTable* inference_table() const { return inference_; }
+  QTableWidget* table() const { return table_; }
+  QString recommendation() const;  // the recommended platform, empty when none
+  // The battery presets (built-in and the workspace's, with their missions) offered in the Battery and Mission
+  // choices; `ws` may be null (built-ins only).
+  void set_workspace(const Workspace* ws);
+  // The Battery tab's setup as it is now (its edits included): offered first in the Battery choice, and selected by
+  // default, so both tabs use the same pack unless the user picks another here. While it is selected, the parallel
+  // load and mission follow the Battery tab too.
+  void set_battery_tab_setup(const BatterySetup& setup, bool modified);
+  // A mission profile (parse_mission() text) in parallel with every computer; empty: a constant load.
+  void set_mission(const QString& spec);
+  QString mission() const;
+  void set_power_budget(std::optional<double> watts);
+  void set_min_fps(std::optional<double> fps);
+  void set_min_runtime_min(std::optional<double> minutes);
+  // What the controls say now (battery, extra load; constraints), for the report.
+  ComparisonOptions options() const;
+  Constraints constraints() const;
+
+ signals:
+  // The user asked where a cell's number came from (double-click): the platform and the column id.
+  void source_requested(const PlatformRow& row, const QString& column);
+
+ private:
+  void recompute();
+  void fill_table();
+  void export_table(bool latex);
+  void fill_battery_choices();
+
+  QCheckBox *use_budget_, *use_fps_, *use_runtime_;
+  QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;
+  QComboBox* battery_;
+  QComboBox* mission_;  // editable: the presets' missions, or typed name:seconds:watts,...
+  QString mission_error_;
+  std::vector<BatterySetup> setups_;  // in the Battery choice's order: the Battery tab's setup first when known
+  bool has_tab_setup_ = false;
+  QString tab_setup_label_;
+  QLabel* summary_;
+  QTableWidget* table_;
+  InferenceTable* inference_ = nullptr;
+  FrozenFirstColumn* frozen_ = nullptr;  // keeps the platform's name in view while the numbers scroll
+  std::vector<FlopsRun> runs_;
+  SharedTraces traces_ = share_traces(std::vector<PowerTrace>{});
+  std::vector<PipelineTimings> pipelines_;
+  std::vector<PlatformRow> rows_;
+  std::vector<PlatformVerdict> verdicts_;
+  QStringList empty_columns_;  // header texts of the columns hidden for lack of data
+};
+
+}  // namespace bs::ui

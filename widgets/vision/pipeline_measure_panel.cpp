@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vision/pipeline_measure_panel.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardItemModel>
+#include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "analysis/power/phase_energy.h"
+#include "power/power_sensor_box.h"
+#include "sensors/recorder.h"
+#include "vision/reproject/cuda_preprocess.h"
+#include "vision/pipeline/pipeline_measure.h"
+
+namespace bs::ui {
+namespace {
+
+constexpr auto kFramesKey = "pipeline/measure_frames";
+constexpr auto kWorkersKey = "pipeline/detect_workers";
+constexpr auto kScaleKey = "pipeline/detect_scale";
+constexpr auto kBackendKey = "pipeline/measure_backend";
+constexpr auto kDetectorKey = "pipeline/measure_detector";
+constexpr auto kModelFile = "\x01model-file";  // the "Model file…" entry: opens a file dialog
+
+}  // namespace
+
+PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
+    : QWidget(parent),
+      frames_(new QSpinBox(this)),
+      workers_(new QSpinBox(this)),
+      scale_(new QDoubleSpinBox(this)),
+      backend_(new QComboBox(this)),
+      detector_(new QComboBox(this)),
+      measure_(new QPushButton(tr("Measure on this machine"), this)),
+      cancel_(new QPushButton(tr("Cancel"), this)),
+      progress_(new QProgressBar(this)),
+      status_(new QLabel(this)),
+      power_(new PowerSensorBox(this)),
+      watcher_(new QFutureWatcher<Outcome>(this)),
+      percent_(std::make_shared<std::atomic<int>>(0)) {
+  const QSettings settings;
+  frames_->setRange(1, 100000);
+  frames_->setValue(settings.value(kFramesKey, 20).toInt());
+  frames_->setSuffix(tr(" frames"));
+  frames_->setToolTip(
+      tr("How many frames of the synthetic paper capture (1280x1024 BGGR through the 195° lens) "
+         "go through the pipeline"));
+  workers_->setRange(1, static_cast<int>(vision::kMaxDetectionWorkers));
+  workers_->setValue(settings.value(kWorkersKey, static_cast<int>(vision::default_detection_workers())).toInt());
+  workers_->setToolTip(tr("Detection worker threads: each detects its own frame, so detection (the slow stage) "
+                          "spreads over the cores. Default: this machine's %1 hardware threads. Capture and "
+                          "preprocessing keep one thread each.")
+                           .arg(vision::default_detection_workers()));
+  scale_->setRange(0.05, 1.0);
+  scale_->setSingleStep(0.05);
+  scale_->setDecimals(2);
+  scale_->setValue(settings.value(kScaleKey, 0.5).toDouble());
+  scale_->setToolTip(
+      tr("Detection scale: HOG runs on the reprojected frame shrunk by this factor (0.5: 640x512 "
+         "of 1280x1024) and its boxes are mapped back to full-frame pixels. Smaller is faster and "
+         "misses smaller (more distant) people."));
+  backend_->addItem(tr("CPU (fused)"), QStringLiteral("cpu"));
+  backend_->addItem(tr("OpenCL"), QStringLiteral("opencl"));
+  backend_->addItem(tr("CUDA"), QStringLiteral("cuda"));
+  backend_->setToolTip(
+      tr("Where demosaicing + reprojection run; detection (HOG) always runs on the CPU. OpenCL "
+         "takes the first OpenCL device (GPU preferred; PoCL gives a CPU device)."));
+  // A CUDA entry that cannot run stays visible, disabled, saying why: nobody wonders where it went.
+  if (const std::string why = vision::cuda_preprocessing_unavailable(); !why.empty()) {
+    auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
+    QStandardItem* cuda = model->item(2);
+    cuda->setEnabled(false);
+    cuda->setToolTip(tr("Not available here: %1").arg(QString::fromStdString(why)));
+  }
+  const int saved = backend_->findData(settings.value(kBackendKey, QStringLiteral("cpu")).toString());
+  const auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
+  backend_->setCurrentIndex(saved >= 0 && model->item(saved)->isEnabled() ? saved : 0);
+  detector_->addItem(tr("HOG people detector"), QStringLiteral("hog"));
+  detector_->addItem(tr("mobilenet-ssd (architecture timing)"), QStringLiteral("mobilenet-ssd"));
+  detector_->addItem(tr("yolo-n (architecture timing)"), QStringLiteral("yolo-n"));
+  detector_->addItem(tr("Model file…"), QString::fromLatin1(kModelFile));
+  detector_->setItemData(1,
+                         tr("SSD300 MobileNet v1 built with random weights: times the network's cost, detects nothing"),
+                         Qt::ToolTipRole);
+  detector_->setItemData(2, tr("YOLOv8n layout built with random weights: times the network's cost, detects nothing"),
+                         Qt::ToolTipRole);
+  detector_->setItemData(3,
+                         tr("A detection network cv::dnn reads (ONNX, Caffe, TensorFlow, Darknet) with SSD, YOLOv5 "
+                            "or YOLOv8 outputs"),
+                         Qt::ToolTipRole);
+  detector_->setToolTip(
+      tr("The detection stage: OpenCV's HOG, a built-in architecture (architecture timing: no "
+         "detections) or a network from a model file"));
+  {
+    const QString saved_detector = settings.value(kDetectorKey, QStringLiteral("hog")).toString();
+    int at = detector_->findData(saved_detector);
+    if (at < 0 && QFileInfo::exists(saved_detector)) {
+      detector_->insertItem(3, QFileInfo(saved_detector).fileName(), saved_detector);
+      at = 3;
+    }
+    detector_->setCurrentIndex(at >= 0 ? at : 0);
+  }
+  connect(detector_, &QComboBox::activated, this, [this](int i) {
+    if (detector_->itemData(i).toString() != QString::fromLatin1(kModelFile)) return;
+    const QString file = QFileDialog::getOpenFileName(
+        this, tr("Detection network"), QString(), tr("Networks (*.onnx *.pb *.caffemodel *.weights);;All files (*)"));
+    if (file.isEmpty()) {
+      detector_->setCurrentIndex(0);
+      return;
+    }
+    detector_->insertItem(i, QFileInfo(file).fileName(), file);
+    detector_->setCurrentIndex(i);
+  });
+  cancel_->setEnabled(false);
+  progress_->setRange(0, 100);
+  progress_->setTextVisible(true);
+  progress_->setMaximumWidth(160);
+  progress_->hide();
+  status_->setTextFormat(Qt::PlainText);
+  status_->setWordWrap(true);  // a long message wraps instead of widening the window
+
+  // Two rows, so that the panel fits a 1280 px window beside the workspace dock: what to measure on the first,
+  // how to run it and what happened on the second.
+  auto* layout = new QGridLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* frames_label = new QLabel(tr("Synthetic frames:"), this);
+  frames_label->setToolTip(tr("Frames of the synthetic paper capture to run through the pipeline"));
+  auto* workers_label = new QLabel(tr("Detection workers:"), this);
+  workers_label->setToolTip(workers_->toolTip());
+  auto* scale_label = new QLabel(tr("Detection scale:"), this);
+  scale_label->setToolTip(scale_->toolTip());
+  auto* backend_label = new QLabel(tr("Preprocessing on:"), this);
+  backend_label->setToolTip(backend_->toolTip());
+  int column = 0;
+  for (QWidget* w : std::initializer_list<QWidget*>{frames_label, frames_, workers_label, workers_, scale_label, scale_,
+                                                    backend_label, backend_})
+    layout->addWidget(w, 0, column++);
+  layout->setColumnStretch(column, 1);
+  auto* second_row = new QHBoxLayout;
+  auto* detector_label = new QLabel(tr("Detector:"), this);
+  detector_label->setToolTip(detector_->toolTip());
+  second_row->addWidget(detector_label);
+  second_row->addWidget(detector_);
+  second_row->addWidget(new QLabel(tr("Record power:"), this));
+  second_row->addWidget(power_);
+  second_row->addWidget(measure_);
+  second_row->addWidget(cancel_);
+  second_row->addWidget(progress_);
+  second_row->addWidget(status_, 1);
+  layout->addLayout(second_row, 1, 0, 1, column + 1);
+
+  connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
+  connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
+  connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &PipelineMeasurePanel::finished);
+  for (QSpinBox* box : {frames_, workers_})
+    connect(box, &QSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
+  connect(scale_, &QDoubleSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
+  connect(backend_, &QComboBox::currentIndexChanged, this, &PipelineMeasurePanel::save_settings);
+  connect(detector_, &QComboBox::currentIndexChanged, this, &PipelineMeasurePanel::save_settings);
+  auto* timer = new QTimer(this);
+  timer->setInterval(100);
+  connect(timer, &QTimer::timeout, this, [this] {
+    if (running()) progress_->setValue(percent_->load());
+  });
+  timer->start();
+}
+
+PipelineMeasurePanel::~PipelineMeasurePanel() {
+  // A run still going must not outlive the widget it reports to.
+  if (token_) token_->cancel();
+  watcher_->waitForFinished();
+}
+
+bool PipelineMeasurePanel::running() const { return watcher_->isRunning(); }
+
+void PipelineMeasurePanel::save_settings() const {
+  QSettings settings;
+  settings.setValue(kFramesKey, frames_->value());
+  settings.setValue(kWorkersKey, workers_->value());
+  settings.setValue(kScaleKey, scale_->value());
+  settings.setValue(kBackendKey, backend_->currentData().toString());
+  if (detector_->currentData().toString() != QString::fromLatin1(kModelFile))
+    settings.setValue(kDetectorKey, detector_->currentData().toString());
+}
+
+void PipelineMeasurePanel::start() {
+  if (running()) return;
+  vision::SyntheticPipelineOptions options;
+  options.frames = static_cast<std::size_t>(frames_->value());
+  options.detection_workers = static_cast<std::size_t>(workers_->value());
+  options.detect_scale = scale_->value();
+  options.backend = backend_->currentData().toString().toStdString();
+  options.detector = detector_->currentData().toString().toStdString();
+  options.tool =
+      QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
+  trace_.reset();
+  try {
+    recorder_ = power_->start_recorder();  // null when "Record power" is off
+  } catch (const std::exception& e) {
+    status_->setText(tr("Record power: %1").arg(QString::fromUtf8(e.what())));
+    emit failed(status_->text());
+    return;
+  }
+  if (recorder_) recorder_->begin_phase("pipeline");
+  token_ = std::make_shared<CancelToken>();
+  percent_->store(0);
+  measure_->setEnabled(false);
+  cancel_->setEnabled(true);
+  progress_->setValue(0);
+  progress_->show();
+  status_->setText(tr("Measuring %1 frames (preprocessing on %4) with %2 detection worker(s) at scale %3…")
+                       .arg(options.frames)
+                       .arg(options.detection_workers)
+                       .arg(options.detect_scale)
+                       .arg(backend_->currentText()));
+  watcher_->setFuture(QtConcurrent::run([options, token = token_, percent = percent_]() -> Outcome {
+    try {
+      return {
+          vision::measure_synthetic_pipeline(
+              options, *token, [percent](double f, std::string_view) { percent->store(static_cast<int>(f * 100)); }),
+          {}};
+    } catch (const std::exception& e) {
+      return {std::nullopt, QString::fromUtf8(e.what())};
+    }
+  }));
+}
+
+void PipelineMeasurePanel::cancel() {
+  if (token_) token_->cancel();
+  status_->setText(tr("Cancelling: the frames in flight finish first…"));
+}
+
+std::optional<PowerTrace> PipelineMeasurePanel::take_power_trace() {
+  auto t = std::move(trace_);
+  trace_.reset();
+  return t;
+}
+
+void PipelineMeasurePanel::finished() {
+  const Outcome outcome = watcher_->result();
+  std::optional<PowerTrace> trace;
+  if (recorder_) {
+    recorder_->end_phase();
+    trace = recorder_->finish("Pipeline tab" + (outcome.run
+                                                    ? " " + outcome.run->platform + " " + outcome.run->provenance.date
+                                                    : std::string()));
+    recorder_.reset();
+  }
+  measure_->setEnabled(true);
+  cancel_->setEnabled(false);
+  progress_->hide();
+  if (!outcome.error.isEmpty()) {
+    status_->setText(tr("Failed: %1").arg(outcome.error));
+    emit failed(outcome.error);
+    return;
+  }
+  if (!outcome.run) {
+    status_->setText(tr("Cancelled; nothing stored."));
+    return;
+  }
+  const PipelineRun& run = *outcome.run;
+  QString energy;
+  if (trace) {
+    trace->platform = run.platform;  // the Platforms view pairs runs and traces by platform
+    const auto phases = phase_energies(*trace);
+    const StageStats* pre = run.stage(pipeline_stage::kPreprocess);
+    const StageStats* det = run.stage(pipeline_stage::kDetect);
+    const std::size_t frames = pre ? pre->n : 0;
+    if (!phases.empty() && frames > 0) {
+      const PhaseEnergy& e = phases.front();
+      energy = tr(" %1 J per frame through the pipeline (mean %2 W)")
+                   .arg(e.energy_j / static_cast<double>(frames), 0, 'f', 3)
+                   .arg(e.mean_power_w, 0, 'f', 2);
+      if (pre) energy += tr(", %1 J per preprocessed frame").arg(e.mean_power_w * pre->mean_s, 0, 'f', 4);
+      if (det) energy += tr(", %1 J per inference").arg(e.mean_power_w * det->mean_s, 0, 'f', 4);
+      energy += tr(" (%1: %2).")
+                    .arg(QString::fromUtf8(to_string(trace->provenance.measurement).data()),
+                         QString::fromStdString(trace->provenance.sensor));
+    }
+    trace_ = std::move(trace);
+  }
+  status_->setText(
+      (run.throughput_fps
+           ? tr("Measured %1 fps on %2.").arg(*run.throughput_fps, 0, 'f', 2).arg(QString::fromStdString(run.platform))
+           : tr("Measured on %1.").arg(QString::fromStdString(run.platform))) +
+      energy);
+  emit run_measured(run);
+}
+
+}  // namespace bs::ui
