@@ -17,7 +17,7 @@
 // kind's own two formulas only. The last few interior pixels of a row are one more vector overlapping the one
 // before, and the two border columns at each side are the scalar definition itself.
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "vision/bayer_simd.cpp"
+#define HWY_TARGET_INCLUDE "vision/demosaic/bayer_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
