@@ -11,13 +11,13 @@
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
 #include "common/args.h"
-#include "kernels/bench_ceilings.h"
 #include "common/command.h"
-#include "kernels/cpu_args.h"
 #include "common/flag_output.h"
-#include "kernels/backend.h"
-#include "kernels/ceiling_cache.h"
 #include "common/signals.h"
+#include "kernels/backend.h"
+#include "kernels/bench_ceilings.h"
+#include "kernels/ceiling_cache.h"
+#include "kernels/cpu_args.h"
 #include "store/workspace.h"
 
 namespace bs::cli {

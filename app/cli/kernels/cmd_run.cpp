@@ -12,14 +12,14 @@
 #include "analysis/stats/units.h"
 #include "common/args.h"
 #include "common/command.h"
-#include "kernels/cpu_args.h"
+#include "common/signals.h"
 #include "kernels/ceiling_cache.h"
+#include "kernels/cpu_args.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power/power_args.h"
 #include "runs/run_json.h"
 #include "sensors/recording_csv.h"
-#include "common/signals.h"
 #include "store/workspace.h"
 
 namespace bs::cli {

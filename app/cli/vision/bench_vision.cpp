@@ -13,12 +13,12 @@
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
 #include "common/args.h"
-#include "vision/bench_demosaic.h"
 #include "power/power_args.h"
-#include "vision/reproject/cuda_preprocess.h"
-#include "vision/reproject/fused.h"
+#include "vision/bench_demosaic.h"
 #include "vision/lens/lens.h"
 #include "vision/pipeline/threads.h"
+#include "vision/reproject/cuda_preprocess.h"
+#include "vision/reproject/fused.h"
 
 namespace bs::cli {
 namespace {

@@ -12,9 +12,9 @@
 
 #include "common/args.h"
 #include "common/command.h"
+#include "common/text_table.h"
 #include "frames/frame_store.h"
 #include "store/workspace.h"
-#include "common/text_table.h"
 #include "vision/frames/frame_image.h"
 #include "vision/reproject/triptych.h"
 

@@ -7,9 +7,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "peaks/flops_plot.h"
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
+#include "peaks/flops_plot.h"
 #include "workspace/workspace_tree.h"
 
 class TestKernelRunner : public QObject {

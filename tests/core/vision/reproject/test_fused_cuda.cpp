@@ -4,10 +4,10 @@
 // one the path must refuse with a reason instead of failing later.
 #include <QTest>
 
+#include "vision/lens/lens.h"
 #include "vision/reproject/cuda_preprocess.h"
 #include "vision/reproject/fused.h"
 #include "vision/reproject/fused_reference.h"
-#include "vision/lens/lens.h"
 
 using namespace bs::vision;
 
