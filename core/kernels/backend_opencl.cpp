@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #define CL_TARGET_OPENCL_VERSION 120
 #include "kernels/backend_opencl.h"
+#include "kernels/ceilings_opencl.h"
 #include "kernels/step_chunker.h"
 
 #include <CL/cl.h>
@@ -326,6 +327,7 @@ std::vector<Backend> opencl_backends(const CpuInfo& cpu) {
       b.run_point = [device](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& outputs,
                              const CancelToken& cancel) { return device->run(p, w, v, outputs, cancel); };
       b.run_triad = [device](std::size_t n, const CancelToken& cancel) { return device->triad(n, cancel); };
+      b.ceiling_kernels = [id](const CeilingSpec& spec) { return make_opencl_ceiling_kernels(id, spec); };
       out.push_back(std::move(b));
     }
   }
