@@ -14,43 +14,57 @@
 namespace bs::kernels {
 namespace {
 
-// FMA: 8 accumulators per work-item, acc = fma(acc, a, b) with a = 1 and b = 2^-10 (exact: see ceilings.h).
-// Rotation mix: P points per work-item (mix4, mix8, mix16), the rotation kernel's own instructions (mad, as the
+// VEC is float on a GPU (one point per lane, the work-items fill the SIMT lanes) and float16 on a CPU device, where
+// PoCL and other CPU compilers vectorise explicit vector types but not the work-items of a kernel whose body is a
+// long loop (-DW=1 or 16). Lane l of vector p of work-item t is float (t * P + p) * W + l of the buffers.
+// FMA: 8 accumulators per work-item, acc = mad(acc, a, b) with a = 1 and b = 2^-10 (exact: see ceilings.h). mad,
+// not fma(): fma() must round once, and a device without a fused unit (or a CPU compiler that will not vectorise
+// the call) emulates it in software; mad is the FMA instruction wherever the device has one, as in the rotation
+// kernel.
+// Rotation mix: P vectors per work-item (mix4, mix8, mix16), the rotation kernel's own instructions (mad, as the
 // rotation kernel is built with -cl-mad-enable): u = s y; y = mad(s, x, c y); x = mad(c, x, -u).
 const char* kSource = R"CL(
+#if W == 1
+#define VEC float
+#define LANES 0.0f
+#define STORE(v, i, p) ((p)[i] = (v))
+#else
+#define VEC float16
+#define LANES ((float16)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
+#define STORE(v, i, p) vstore16((v), (i), (p))
+#endif
+
 __kernel void fma8(__global float* out, const int steps, const float a, const float b) {
   const uint t = get_global_id(0);
-  float acc[8];
-  for (int k = 0; k < 8; ++k) acc[k] = (float)(k + (t & 1023u));
-#pragma unroll 4
+  VEC acc[8];
+  for (int k = 0; k < 8; ++k) acc[k] = (VEC)((float)(k + (t & 1023u)));
   for (int n = 0; n < steps; ++n) {
-#pragma unroll
-    for (int k = 0; k < 8; ++k) acc[k] = fma(acc[k], a, b);
+    for (int k = 0; k < 8; ++k) acc[k] = mad(acc[k], (VEC)a, (VEC)b);
   }
-  for (int k = 0; k < 8; ++k) out[t * 8 + k] = acc[k];
+  for (int k = 0; k < 8; ++k) STORE(acc[k], t * 8 + k, out);
 }
 
-#define MIX(P)                                                                                         \
-  __kernel void mix##P(__global float* xs, __global float* ys, const int steps, const float c,       \
-                       const float s) {                                                              \
-    const uint t = get_global_id(0);                                                                 \
-    float x[P], y[P];                                                                                \
-    for (int p = 0; p < P; ++p) {                                                                    \
-      const float a = 1e-3f * (float)(t * P + p);                                                    \
-      x[p] = cos(a);                                                                                 \
-      y[p] = sin(a);                                                                                 \
-    }                                                                                                \
-    for (int n = 0; n < steps; ++n) {                                                                \
-      _Pragma("unroll") for (int p = 0; p < P; ++p) {                                                \
-        const float u = s * y[p];                                                                    \
-        y[p] = mad(s, x[p], c * y[p]);                                                               \
-        x[p] = mad(c, x[p], -u);                                                                     \
-      }                                                                                              \
-    }                                                                                                \
-    for (int p = 0; p < P; ++p) {                                                                    \
-      xs[t * P + p] = x[p];                                                                          \
-      ys[t * P + p] = y[p];                                                                          \
-    }                                                                                                \
+#define MIX(P)                                                                   \
+  __kernel void mix##P(__global float* xs, __global float* ys, const int steps,  \
+                       const float c, const float s) {                           \
+    const uint t = get_global_id(0);                                             \
+    VEC x[P], y[P];                                                              \
+    for (int p = 0; p < P; ++p) {                                                \
+      const VEC a = 1e-3f * ((float)((t * P + p) * W) + LANES);                  \
+      x[p] = cos(a);                                                             \
+      y[p] = sin(a);                                                             \
+    }                                                                            \
+    for (int n = 0; n < steps; ++n) {                                            \
+      for (int p = 0; p < P; ++p) {                                              \
+        const VEC u = s * y[p];                                                  \
+        y[p] = mad((VEC)s, x[p], c * y[p]);                                      \
+        x[p] = mad((VEC)c, x[p], -u);                                            \
+      }                                                                          \
+    }                                                                            \
+    for (int p = 0; p < P; ++p) {                                                \
+      STORE(x[p], t * P + p, xs);                                                \
+      STORE(y[p], t * P + p, ys);                                                \
+    }                                                                            \
   }
 MIX(4)
 MIX(8)
@@ -101,7 +115,10 @@ class OpenClCeilings final : public DeviceCeilingKernels {
     check(err, "clCreateCommandQueue");
     program_ = clCreateProgramWithSource(context_, 1, &kSource, nullptr, &err);
     check(err, "clCreateProgramWithSource");
-    if (const cl_int built = clBuildProgram(program_, 1, &id_, "-cl-mad-enable", nullptr, nullptr);
+    const auto type = info<cl_device_type>(id_, CL_DEVICE_TYPE);
+    width_ = (type & CL_DEVICE_TYPE_CPU) ? 16 : 1;
+    const std::string options = "-cl-mad-enable -DW=" + std::to_string(width_);
+    if (const cl_int built = clBuildProgram(program_, 1, &id_, options.c_str(), nullptr, nullptr);
         built != CL_SUCCESS) {
       std::size_t size = 0;
       clGetProgramBuildInfo(program_, id_, CL_PROGRAM_BUILD_LOG, 0, nullptr, &size);
@@ -114,14 +131,13 @@ class OpenClCeilings final : public DeviceCeilingKernels {
     copy_ = kernel("copy4");
     // Work-items: enough to fill a GPU (2048 per compute unit, as many as an NVIDIA SM holds), far fewer on a CPU
     // device, where each work-group runs on one core.
-    const auto type = info<cl_device_type>(id_, CL_DEVICE_TYPE);
     units_ = static_cast<int>(info<cl_uint>(id_, CL_DEVICE_MAX_COMPUTE_UNITS));
     items_ = static_cast<std::size_t>(std::max(units_, 1)) * ((type & CL_DEVICE_TYPE_GPU) ? 2048 : 256);
     const cl_float c = static_cast<float>(std::cos(2.0)), s = static_cast<float>(std::sin(2.0));
     c_ = c, s_ = s;
-    fma_out_.m = buffer(items_ * kFmaChains * sizeof(float));
-    mix_x_.m = buffer(items_ * 16 * sizeof(float));
-    mix_y_.m = buffer(items_ * 16 * sizeof(float));
+    fma_out_.m = buffer(items_ * kFmaChains * width_ * sizeof(float));
+    mix_x_.m = buffer(items_ * 16 * width_ * sizeof(float));
+    mix_y_.m = buffer(items_ * 16 * width_ * sizeof(float));
     // Copy buffers: the spec's size, else 256 MiB on a GPU and 64 MiB elsewhere, within the largest allocation and
     // an eighth of the device's memory (a Jetson or an integrated GPU shares it with the CPU).
     std::size_t bytes = (spec.device_copy_mib ? spec.device_copy_mib : (type & CL_DEVICE_TYPE_GPU) ? 256 : 64) << 20;
@@ -148,19 +164,19 @@ class OpenClCeilings final : public DeviceCeilingKernels {
 
   CeilingSample fma() override {
     const double seconds = launch_fma(fma_steps_);
-    std::vector<float> out(items_ * kFmaChains);
+    std::vector<float> out(items_ * kFmaChains * width_);
     check(clEnqueueReadBuffer(queue_, fma_out_.m, CL_TRUE, 0, out.size() * sizeof(float), out.data(), 0, nullptr,
                               nullptr),
           "clEnqueueReadBuffer");
     for (std::size_t i = 0; i < out.size(); ++i) {
-      const std::size_t t = i / kFmaChains, k = i % kFmaChains;
+      const std::size_t t = i / (kFmaChains * width_), k = i / width_ % kFmaChains;
       const double expected = static_cast<double>(k + (t & 1023u)) + static_cast<double>(fma_steps_) * kFmaStep;
       if (static_cast<double>(out[i]) != expected)
         throw std::runtime_error("OpenCL FMA ceiling: work-item " + std::to_string(t) + " accumulator " +
                                  std::to_string(k) + " is " + std::to_string(out[i]) + ", not " +
                                  std::to_string(expected) + " after " + std::to_string(fma_steps_) + " steps");
     }
-    return {2.0 * kFmaChains * static_cast<double>(fma_steps_) * static_cast<double>(items_), seconds, 0};
+    return {2.0 * kFmaChains * width_ * static_cast<double>(fma_steps_) * static_cast<double>(items_), seconds, 0};
   }
 
   CeilingSample rotation_mix() override {
@@ -170,7 +186,7 @@ class OpenClCeilings final : public DeviceCeilingKernels {
     for (int i = 0; i < 3; ++i) {
       const std::int64_t steps = mix_steps_[i];
       const double seconds = launch_mix(i, steps);
-      const std::size_t points = items_ * kMixPoints[i];
+      const std::size_t points = items_ * kMixPoints[i] * width_;
       std::vector<float> x(points), y(points);
       check(clEnqueueReadBuffer(queue_, mix_x_.m, CL_TRUE, 0, points * sizeof(float), x.data(), 0, nullptr, nullptr),
             "clEnqueueReadBuffer");
@@ -179,9 +195,11 @@ class OpenClCeilings final : public DeviceCeilingKernels {
       const double tolerance = 2e-7 * static_cast<double>(steps) + 1e-3;
       for (std::size_t j = 0; j < points; ++j) {
         const double start = 1e-3 * static_cast<double>(static_cast<float>(j));
-        const double error = std::remainder(std::atan2(y[j], x[j]) - (start + phi * static_cast<double>(steps)), 2 * M_PI);
+        const double error =
+            std::remainder(std::atan2(y[j], x[j]) - (start + phi * static_cast<double>(steps)), 2 * M_PI);
         const double log_norm = std::log(static_cast<double>(x[j]) * x[j] + static_cast<double>(y[j]) * y[j]);
-        if (!(std::fabs(error) < tolerance) || !(std::fabs(log_norm - log_norm_step * static_cast<double>(steps)) < 0.1))
+        if (!(std::fabs(error) < tolerance) ||
+            !(std::fabs(log_norm - log_norm_step * static_cast<double>(steps)) < 0.1))
           throw std::runtime_error("OpenCL rotation-mix ceiling: point " + std::to_string(j) + " of mix" +
                                    std::to_string(kMixPoints[i]) + " is not where " + std::to_string(steps) +
                                    " steps put it (angle off by " + std::to_string(error) + " rad)");
@@ -212,19 +230,21 @@ class OpenClCeilings final : public DeviceCeilingKernels {
 
   std::string fma_how() const override {
     char text[300];
-    std::snprintf(text, sizeof text,
-                  "FMA: %zu work-items (%d compute units), %d independent accumulators acc = fma(acc, a, b) each, %lld "
-                  "steps, 2 flops per FMA, OpenCL event profiling; every accumulator checked exactly",
-                  items_, units_, kFmaChains, static_cast<long long>(fma_steps_));
+    std::snprintf(
+        text, sizeof text,
+        "FMA: %zu work-items (%d compute units), %d independent accumulators acc = mad(acc, a, b) of %s "
+        "each, %lld steps, 2 flops per lane and mad, OpenCL event profiling; every accumulator checked exactly",
+        items_, units_, kFmaChains, width_ == 1 ? "float" : "float16", static_cast<long long>(fma_steps_));
     return text;
   }
   std::string mix_how() const override {
     char text[300];
     std::snprintf(text, sizeof text,
-                  "rotation mix: %zu work-items with 4/8/16 independent points each (per repetition the fastest; last: "
+                  "rotation mix: %zu work-items with 4/8/16 independent %s each (per repetition the fastest; last: "
                   "%d), ~%lld steps, 2 mul + 2 mad per point-step, 6 flops, OpenCL event profiling; every point's "
                   "final angle and norm checked",
-                  items_, last_points_, static_cast<long long>(mix_steps_[1]));
+                  items_, width_ == 1 ? "points" : "float16 vectors", last_points_,
+                  static_cast<long long>(mix_steps_[1]));
     return text;
   }
   std::string bandwidth_how() const override {
@@ -286,8 +306,8 @@ class OpenClCeilings final : public DeviceCeilingKernels {
     for (std::int64_t steps = 256;; steps *= 2) {
       const double t = launch(steps);
       if (t >= target / 5 || steps >= cap)
-        return std::clamp<std::int64_t>(static_cast<std::int64_t>(static_cast<double>(steps) * target / std::max(t, 1e-9)),
-                                        64, cap);
+        return std::clamp<std::int64_t>(
+            static_cast<std::int64_t>(static_cast<double>(steps) * target / std::max(t, 1e-9)), 64, cap);
     }
   }
 
@@ -297,7 +317,7 @@ class OpenClCeilings final : public DeviceCeilingKernels {
   cl_command_queue queue_ = nullptr;
   cl_program program_ = nullptr;
   cl_kernel fma_ = nullptr, mix_[3] = {}, copy_ = nullptr;
-  int units_ = 0, last_points_ = 0;
+  int units_ = 0, last_points_ = 0, width_ = 1;  // width_: floats per VEC (1 on a GPU, 16 on a CPU device)
   std::size_t items_ = 0, copy_floats4_ = 0;
   cl_float c_ = 0, s_ = 0;
   Mem fma_out_, mix_x_, mix_y_, src_, dst_;
