@@ -194,7 +194,7 @@ class OpenClCeilings final : public DeviceCeilingKernels {
             "clEnqueueReadBuffer");
       const double tolerance = 2e-7 * static_cast<double>(steps) + 1e-3;
       for (std::size_t j = 0; j < points; ++j) {
-        const double start = 1e-3 * static_cast<double>(static_cast<float>(j));
+        const double start = static_cast<double>(1e-3f * static_cast<float>(j));  // as the kernel computes it
         const double error =
             std::remainder(std::atan2(y[j], x[j]) - (start + phi * static_cast<double>(steps)), 2 * M_PI);
         const double log_norm = std::log(static_cast<double>(x[j]) * x[j] + static_cast<double>(y[j]) * y[j]);
