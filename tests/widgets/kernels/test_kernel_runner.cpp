@@ -124,6 +124,10 @@ class TestKernelRunner : public QObject {
     QVERIFY2(runner.ceilings_label()->text().contains("timed on the device"),
              qPrintable(runner.ceilings_label()->text()));
     QVERIFY(runner.ceilings_label()->toolTip().contains("OpenCL event profiling"));
+    if (const QByteArray shots = qgetenv("BENCHSCOPE_SCREENSHOT_DIR"); !shots.isEmpty()) {
+      runner.resize(560, 620);
+      QVERIFY(runner.grab().save(QString::fromUtf8(shots) + "/kernel-runner-device-ceilings.png"));
+    }
     bs::ui::KernelRunner again;  // a new start reads them from the cache, measuring nothing
     again.select_backend("opencl:0");
     QVERIFY(again.device_ceilings("opencl:0"));
