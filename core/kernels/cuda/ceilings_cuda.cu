@@ -206,6 +206,10 @@ CeilingKernels::CeilingKernels(int device, double target_seconds, std::size_t co
   fill_kernel<<<d.copy_blocks, kBlock>>>(d.src.p, d.src.n);
   check(cudaGetLastError(), "fill_kernel launch");
   check(cudaDeviceSynchronize(), "fill_kernel");
+  // One untimed launch of each first: CUDA loads modules lazily, at a kernel's first launch, and the events of a
+  // sizing probe would otherwise time the loading.
+  d.launch_fma(1);
+  for (int i = 0; i < 3; ++i) d.launch_mix(i, 1);
   d.fma_steps = d.size_steps([&](std::int64_t n) { return d.launch_fma(n); }, kFmaMaxSteps);
   for (int i = 0; i < 3; ++i) {
     // Each chain count gets a third of the target, so a repetition of the mix takes about `target_seconds`.
