@@ -19,6 +19,9 @@ void put_legend_below(QCustomPlot* plot, int columns) {
   grid->addElement(1, 0, legend);
   grid->setRowStretchFactor(1, 0.001);  // as tall as its entries, the plot keeps the rest
   legend->setMargins(QMargins(5, 3, 5, 3));
+  // Its columns must not set the plot's (and so the window's) minimum width: a narrower window clips the entries'
+  // ends instead of refusing to shrink (issue #32.7). Height 0: as tall as the entries need.
+  legend->setMinimumSize(QSize(50, 0));
 }
 
 void put_legend_inside(QCustomPlot* plot) {
@@ -29,6 +32,7 @@ void put_legend_inside(QCustomPlot* plot) {
   legend->setFillOrder(QCPLayoutGrid::foRowsFirst, false);
   legend->setWrap(0);
   legend->setFillOrder(QCPLayoutGrid::foRowsFirst, true);
+  legend->setMinimumSize(QSize(0, 0));  // its own size again
   plot->axisRect()->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
 }
 

@@ -102,7 +102,8 @@ BatteryView::BatteryView(QWidget* parent)
   box->setMaximumWidth(470);
 
   table_->setColumnCount(6);
-  table_->setHorizontalHeaderLabels({tr("Platform"), tr("Computer mean power (W)"), tr("Total mean load (W)"),
+  // Two-line headers: the runtime columns stay in view beside the settings on a 1280 px window (issue #32.7).
+  table_->setHorizontalHeaderLabels({tr("Platform"), tr("Computer\nmean power (W)"), tr("Total\nmean load (W)"),
                                      tr("Runtime (min)"), tr("Runtime (h)"), tr("Ends by")});
   table_->verticalHeader()->hide();
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -116,8 +117,8 @@ BatteryView::BatteryView(QWidget* parent)
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 8));
   // Under the plot: the state-of-charge and voltage curves run corner to corner, any inset legend hides some (and
-  // at 1280x800 it hid most, issue #32.7). Two columns: a platform's SoC and pack voltage side by side.
-  put_legend_below(plot_, 2);
+  // at 1280x800 it hid most, issue #32.7). One entry per line: the entries are long and stay whole.
+  put_legend_below(plot_, 1);
 
   left_out_ = new QLabel(this);
   left_out_->setWordWrap(true);

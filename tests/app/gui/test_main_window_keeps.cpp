@@ -7,6 +7,7 @@
 #include <QFile>
 #include <QMessageBox>
 #include <QStandardItemModel>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -260,6 +261,32 @@ class TestMainWindowKeeps : public QObject {
     // NUC's first log with power is the clamp now: 12 V (the supply's log, interpolated) x (1, 2, 1) A.
     QCOMPARE(w.battery_view()->rows()[0].trace_label, std::string("clamp.csv"));
     QCOMPARE(w.battery_view()->rows()[0].computer_mean_w, 16.0);
+  }
+
+  void every_tab_fits_1280x800() {
+    // Issue #32.7: with the Lens tab's header and wrapping tool bar, the Battery legend under its plot and the
+    // lists of logs left out, no tab may widen the window beyond 1280 px.
+    QTemporaryDir dir;
+    MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    w.resize(1280, 800);
+    w.show();
+    auto* tabs = qobject_cast<QTabWidget*>(w.centralWidget());
+    QVERIFY(tabs);
+    for (int i = 0; i < tabs->count(); ++i) {
+      tabs->setCurrentIndex(i);
+      QCoreApplication::processEvents();
+      QString widest;
+      for (QWidget* c : tabs->widget(i)->findChildren<QWidget*>())
+        if (c->isVisibleTo(tabs->widget(i)) && c->minimumSizeHint().width() > 700)
+          widest += QString(" %1(%2)").arg(c->metaObject()->className()).arg(c->minimumSizeHint().width());
+      QVERIFY2(w.minimumSizeHint().width() <= 1280, qPrintable(QString("%1: window needs %2 px; page %3 px;%4")
+                                                                   .arg(tabs->tabText(i))
+                                                                   .arg(w.minimumSizeHint().width())
+                                                                   .arg(tabs->widget(i)->minimumSizeHint().width())
+                                                                   .arg(widest)));
+    }
   }
 };
 
