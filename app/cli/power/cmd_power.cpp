@@ -20,14 +20,14 @@
 #include "analysis/power/range_table.h"
 #include "analysis/stats/measurement_text.h"
 #include "common/args.h"
-#include "store/log_settings_store.h"
-#include "store/workspace.h"
 #include "common/command.h"
 #include "common/flag_output.h"
 #include "common/signals.h"
 #include "common/text_table.h"
 #include "power/power_csv.h"
 #include "power/power_import.h"
+#include "store/log_settings_store.h"
+#include "store/workspace.h"
 #include "workspace/inputs.h"
 
 namespace bs::cli {

@@ -22,7 +22,6 @@
 #include <nlohmann/json.hpp>
 
 #include "../../support/cli_harness.h"
-#include "store/log_settings_store.h"
 #include "../../support/paper_sample.h"
 #include "analysis/power/range_table.h"
 #include "power/power_cursors.h"
@@ -30,6 +29,7 @@
 #include "power/power_stats_panel.h"
 #include "power/power_view.h"
 #include "store/battery_preset_store.h"
+#include "store/log_settings_store.h"
 
 namespace {
 
