@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/kernel_runner.h"
 
+#include <QColor>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QFutureWatcher>
@@ -10,6 +11,7 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QtConcurrent>
@@ -29,6 +31,9 @@
 #include "sensors/recorder.h"
 
 namespace bs::ui {
+namespace {
+constexpr int kEnergyColumns = 8;  // D, W, GFLOPS, mean W, J (point), J per run, GFLOPS/W, n samples
+}  // namespace
 
 KernelRunner::KernelRunner(QWidget* parent)
     : QWidget(parent),
@@ -79,8 +84,9 @@ KernelRunner::KernelRunner(QWidget* parent)
   progress_->setRange(0, 1000);
   progress_->setValue(0);
 
-  energy_->setColumnCount(6);
-  energy_->setHorizontalHeaderLabels({tr("D"), tr("W"), tr("GFLOPS"), tr("Mean W"), tr("J per run"), tr("GFLOPS/W")});
+  energy_->setColumnCount(kEnergyColumns);
+  energy_->setHorizontalHeaderLabels({tr("D"), tr("W"), tr("GFLOPS"), tr("Mean W"), tr("J (point)"), tr("J per run"),
+                                      tr("GFLOPS/W"), tr("n samples")});
   energy_->verticalHeader()->hide();
   energy_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   energy_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -126,6 +132,32 @@ KernelRunner::KernelRunner(QWidget* parent)
   }
   connect(backend_, &QComboBox::currentIndexChanged, this, &KernelRunner::show_backend_details);
   populate();
+  restore_parameters();
+}
+
+// The sweep's parameters are remembered from the last sweep started (QSettings), so a restart does not reset them.
+void KernelRunner::restore_parameters() {
+  QSettings s;
+  s.beginGroup(QStringLiteral("kernel-runner"));
+  if (const QString w = s.value("workers").toString(); !w.isEmpty()) workers_->setText(w);
+  if (const QString d = s.value("dims").toString(); !d.isEmpty()) dims_->setText(d);
+  if (const int n = s.value("iterations", 0).toInt(); n >= iterations_->minimum() && n <= iterations_->maximum())
+    iterations_->setValue(n);
+  if (const int r = s.value("repeats", 0).toInt(); r >= repeats_->minimum() && r <= repeats_->maximum())
+    repeats_->setValue(r);
+  if (const int v = variant_->findData(s.value("variant").toString()); v >= 0) variant_->setCurrentIndex(v);
+  if (const int b = backend_->findText(s.value("backend").toString()); b >= 0) backend_->setCurrentIndex(b);
+}
+
+void KernelRunner::save_parameters() const {
+  QSettings s;
+  s.beginGroup(QStringLiteral("kernel-runner"));
+  s.setValue("workers", workers_->text());
+  s.setValue("dims", dims_->text());
+  s.setValue("iterations", iterations_->value());
+  s.setValue("repeats", repeats_->value());
+  s.setValue("variant", variant_->currentData().toString());
+  s.setValue("backend", backend_->currentText());
 }
 
 KernelRunner::~KernelRunner() {
@@ -288,16 +320,25 @@ void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
   energy_->setRowCount(static_cast<int>(points.size()));
   for (std::size_t r = 0; r < points.size(); ++r) {
     const PointEnergy& p = points[r];
+    // The numbers as `run flops --power` prints them and the Power tab's Phases table shows the point's phase.
     const QString texts[] = {QString::number(p.dims),
                              QString::number(p.workers),
-                             QString::number(p.gflops, 'f', 2),
-                             QString::number(p.mean_power_w, 'f', 2),
+                             QString::number(p.gflops, 'f', 3),
+                             QString::number(p.mean_power_w, 'f', 4),
+                             QString::number(p.energy_j, 'f', 4),
                              QString::number(p.joules_per_run, 'f', 4),
-                             QString::number(p.gflops_per_watt, 'f', 3)};
-    for (int c = 0; c < 6; ++c) {
+                             QString::number(p.gflops_per_watt, 'f', 3),
+                             QString::number(p.samples) + QString::fromStdString(short_point_mark(p.samples))};
+    for (int c = 0; c < kEnergyColumns; ++c) {
       auto* item = new QTableWidgetItem(texts[c]);
       item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-      if (p.samples < 2) item->setToolTip(tr("Shorter than the sample interval: interpolated between samples"));
+      item->setToolTip(
+          p.too_short() ? tr("The sensor sampled this point %n time(s), fewer than %1: its energy leans "
+                             "on interpolation between samples outside it",
+                             nullptr, static_cast<int>(p.samples))
+                              .arg(kMinSamplesPerPoint)
+                        : tr("%n timed run(s) over %1 s", nullptr, static_cast<int>(p.runs)).arg(p.seconds, 0, 'f', 3));
+      if (p.too_short()) item->setBackground(QColor(0xff, 0xe0, 0xb2));
       energy_->setItem(static_cast<int>(r), c, item);
     }
   }
@@ -308,6 +349,7 @@ void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
 }
 
 void KernelRunner::set_workers_spec(const QString& spec) { workers_->setText(spec); }
+QString KernelRunner::workers_spec() const { return workers_->text(); }
 
 namespace {
 // The parser's reason for `text`, or empty when it parses.
@@ -371,11 +413,15 @@ void KernelRunner::start() {
     emit failed(tr("Record power: %1").arg(QString::fromUtf8(e.what())));
     return;
   }
+  // Each point lasts long enough for the sensor to sample it kMinSamplesPerPoint times (issue #32.4).
+  if (recorder_) spec.min_point_s = min_point_seconds(recorder_->interval_s());
+  save_parameters();
   cancel_ = std::make_shared<CancelToken>();
   emit started();
   run_->setEnabled(false);
   stop_->setEnabled(true);
   progress_->setValue(0);
+  progress_->setFormat(QStringLiteral("%p %"));
   auto cancel = cancel_;
   const kernels::CpuInfo cpu = cpu_;
   auto* watcher = new QFutureWatcher<kernels::SweepResult>(this);
@@ -386,7 +432,11 @@ void KernelRunner::start() {
     stop_->setEnabled(false);
     try {
       const kernels::SweepResult result = watcher->result();
-      progress_->setValue(1000);
+      // A cancelled sweep keeps the bar where it stopped (issue #32.8), saying so; a finished one fills it.
+      if (result.cancelled)
+        progress_->setFormat(tr("cancelled at %p %"));
+      else
+        progress_->setValue(1000);
       if (recorder_) {
         const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
         trace_ = recorder_->finish("Kernel Runner " +
@@ -409,6 +459,7 @@ void KernelRunner::start() {
     return kernels::run_sweep(
         backend, cpu, spec, *cancel,
         [self, rec, &last_end, &current_d, warmup = spec.warmup](double f, std::string_view step) {
+          if (step == "cancelled") return;  // the sweep's last report: the bar stays where the sweep stopped
           QMetaObject::invokeMethod(
               self.data(),
               [self, f] {

@@ -39,10 +39,12 @@ class KernelRunner : public QWidget {
   ~KernelRunner() override;
   bool running() const { return cancel_ != nullptr; }
   void set_workers_spec(const QString& spec);
+  QString workers_spec() const;  // as typed (remembered from the last sweep started, issue #32.8)
   void set_dims(const QString& dims);
   void set_iterations(int n);
   void set_repeats(int r);
   PowerSensorBox* power_box() const { return power_; }
+  QProgressBar* progress_bar() const { return progress_; }
   // Why the typed workers/D fields cannot run, naming the field ("Workers: ..."); empty when they can.
   QString input_error() const;
   QTableWidget* energy_table() const { return energy_; }
@@ -72,6 +74,8 @@ class KernelRunner : public QWidget {
 
  private:
   void populate();
+  void restore_parameters();  // the last sweep's workers, D, N, repeats, variant and backend (QSettings)
+  void save_parameters() const;
   void show_backend_details();
   void show_energies(const std::vector<FlopsRun>& runs);
   void validate_inputs();  // as the user types: a bad field turns red with the reason, Run is disabled

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/platform_view.h"
 
+#include "power/left_out_logs.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -198,7 +200,9 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   });
 }
 
-PlatformView::~PlatformView() { delete frozen_; }  // before the table and its model go
+PlatformView::~PlatformView() { delete frozen_; }
+
+QString PlatformView::summary_text() const { return summary_->text(); }  // before the table and its model go
 
 void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces,
                             std::vector<PipelineRun> pipelines) {
@@ -365,7 +369,14 @@ void PlatformView::recompute() {
             : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
                   .arg(recommendation()));
   }
-  if (rows_.empty()) return;
+  // Logs that give no power are not in the power columns: say which and why (issue #32.2).
+  QString left_out = left_out_logs_text(traces_->traces).toHtmlEscaped();
+  if (!left_out.isEmpty())
+    left_out = QStringLiteral("<br><span style='color:#8a5a00'>%1</span>").arg(left_out.replace('\n', "<br>"));
+  if (rows_.empty()) {
+    summary_->setText(summary_->text() + left_out);
+    return;
+  }
   // A flagged peak is shown but never decides: say whose compute was ranked by what.
   QStringList ranking;
   for (const auto& v : verdicts_)
@@ -389,7 +400,7 @@ void PlatformView::recompute() {
   } else if (o.extra_load_w > 0) {
     battery += tr(", computer + %1 W parallel load").arg(o.extra_load_w, 0, 'f', 1);
   }
-  summary_->setText(summary_->text() + battery + "." + hidden);
+  summary_->setText(summary_->text() + battery + "." + hidden + left_out);
 }
 
 void PlatformView::fill_table() {
@@ -433,6 +444,15 @@ void PlatformView::fill_table() {
   std::vector<std::size_t> order{0};
   if (constrained && t.header.size() >= 2)
     for (std::size_t c = t.header.size() - 2; c < t.header.size(); ++c) order.push_back(c);
+  // Then the columns a choice rests on (peaks, mean power, GFLOPS/W, battery runtime), so they show without
+  // scrolling on a 1280x800 window (issue #32.7); the pipeline and energy details follow.
+  for (const char* key :
+       {column::kGpuPeak, column::kCpuPeak, column::kPower, "gflops_w_mean", "gflops_w_paper", column::kBattery})
+    for (std::size_t c = 1; c < ids.size() && c < t.header.size(); ++c)
+      if (ids[c] == key && std::find(order.begin(), order.end(), c) == order.end()) {
+        order.push_back(c);
+        break;
+      }
   for (std::size_t c = 1; c < t.header.size(); ++c)
     if (std::find(order.begin(), order.end(), c) == order.end()) order.push_back(c);
   QStringList ordered_header;

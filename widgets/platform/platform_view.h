@@ -41,6 +41,7 @@ class PlatformView : public QWidget {
   void set_inference_runs(std::vector<DnnRun> runs);
   InferenceTable* inference_table() const { return inference_; }
   QTableWidget* table() const { return table_; }
+  QString summary_text() const;    // the line above the table (recommendation, battery, logs left out), rich text
   QString recommendation() const;  // the recommended platform, empty when none
   // The battery presets (built-in and the workspace's, with their missions) offered in the Battery and Mission
   // choices; `ws` may be null (built-ins only).

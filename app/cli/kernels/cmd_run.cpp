@@ -34,14 +34,15 @@ void print_point_energies(std::ostream& out, const PowerTrace& trace, const std:
   print_phase_energies(out, trace);
   out << "energy per sweep point (" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor
       << "):\n";
-  char line[200];
-  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %10s\n", "D", "W", "GFLOPS", "mean W", "J per run",
-                "GFLOPS/W");
+  char line[256];
+  // The columns and digits of the Kernel Runner's energy table.
+  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %12s %10s %s\n", "D", "W", "GFLOPS", "mean W",
+                "J (point)", "J per run", "GFLOPS/W", "n samples");
   out << line;
   for (const PointEnergy& p : sweep_point_energies(trace, runs)) {
-    std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.3f %12.4f %10.3f%s\n", p.dims,
-                  static_cast<long long>(p.workers), p.gflops, p.mean_power_w, p.joules_per_run, p.gflops_per_watt,
-                  p.samples < 2 ? "  (shorter than the sample interval)" : "");
+    std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.4f %12.4f %12.4f %10.3f %zu%s\n", p.dims,
+                  static_cast<long long>(p.workers), p.gflops, p.mean_power_w, p.energy_j, p.joules_per_run,
+                  p.gflops_per_watt, p.samples, short_point_mark(p.samples).c_str());
     out << line;
   }
 }
@@ -115,6 +116,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   // The sampler runs on its own thread; the sweep marks its phases: the warm-up of each D (the time from the
   // previous point's end to this D's first point) and each point.
   const auto power = start_power(args, err, quiet);
+  // Each point lasts long enough for kMinSamplesPerPoint sensor samples (the Kernel Runner does the same).
+  if (power) spec.min_point_s = min_point_seconds(power->interval_s());
   double last_end = power ? power->now_s() : 0;
   int current_d = -1;
   kernels::SweepResult result;
