@@ -20,6 +20,7 @@
 #include "power/ptd_log.h"
 #include "runs/run_json.h"
 #include "power/tegrastats.h"
+#include "mlperf/mlperf_submission.h"
 
 namespace bs {
 namespace {
@@ -37,6 +38,7 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<NvidiaSmiImporter>());
   list.push_back(std::make_unique<PerfStatImporter>());
   list.push_back(std::make_unique<PtdLogImporter>());
+  list.push_back(std::make_unique<MlperfLoadgenImporter>());
   list.push_back(std::make_unique<RawBayerImporter>());
   list.push_back(std::make_unique<PnmImporter>());
   list.push_back(std::make_unique<PngImporter>());
