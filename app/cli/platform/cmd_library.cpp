@@ -16,6 +16,11 @@
 #include "platform/platform_args.h"
 #include "workspace/inputs.h"
 
+#ifdef BENCHSCOPE_WITH_FIGURES
+#include "candidates_figure.h"
+#include "platform/figure_cli.h"
+#endif
+
 namespace bs::cli {
 namespace {
 
@@ -141,7 +146,7 @@ int run_show(const std::vector<std::string>& raw, std::ostream& out) {
 
 int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
   std::set<std::string> values = platform_value_options();
-  values.insert({"--csv", "--latex"});
+  values.insert({"--csv", "--latex", "--figure"});
   const ParsedArgs args = parse_args(raw, {"--json"}, values);
   if (args.positional.empty())
     throw UsageError("library compare needs COMPUTERS (e.g. orin,pi5), then optionally a workspace or files");
@@ -177,6 +182,17 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
     f << to_latex(table);
     if (!f) throw std::runtime_error(*p + ": cannot write");
   }
+  if (const auto p = args.value("--figure")) {
+#ifdef BENCHSCOPE_WITH_FIGURES
+    const auto app = offscreen_application();
+    QString note;
+    const QImage image = ui::render_candidates(classes, 1200, 750, &note);
+    if (!image.save(QString::fromStdString(*p), "PNG")) throw std::runtime_error(*p + ": cannot write");
+    if (!note.isEmpty()) out << note.toStdString() << '\n';
+#else
+    throw std::runtime_error("--figure needs a benchscope-cli built with Qt (BENCHSCOPE_GUI=ON)");
+#endif
+  }
   if (args.has("--json")) {
     out << nlohmann::json{{"format", "benchscope-candidates"},
                           {"version", 1},
@@ -207,7 +223,7 @@ const CommandRegistrar registrar({
     "       benchscope-cli library show ID [--json]\n"
     "       benchscope-cli library compare COMPUTERS [WORKSPACE | PATH...] [--budget W] [--min-fps FPS]\n"
     "                                      [--min-runtime MIN] [--battery PRESET] [--extra-load W]\n"
-    "                                      [--csv FILE] [--latex FILE] [--json]\n"
+    "                                      [--csv FILE] [--latex FILE] [--figure FILE.png] [--json]\n"
     "  The library (resources/library/library.json) holds published results of candidate robot computers, built\n"
     "  by scripts/build-library.py from public files kept with it: MLPerf Inference edge results (network,\n"
     "  scenario, precision, latency, throughput, power and energy where submitted), clpeak peaks and HPL results.\n"
@@ -215,7 +231,8 @@ const CommandRegistrar registrar({
     "  plausibility as imports are. COMPUTERS: ids or aliases (orin, orin-nx, xavier, xavier-nx, tx2, nano, pi4,\n"
     "  cm4, pi5, icl, uhd620) or result ids, comma-separated.\n"
     "  compare ranks the named published results beside a workspace's own platforms (detection stage, bench dnn,\n"
-    "  imported MLPerf runs) under the constraints, within one network, scenario and precision only.",
+    "  imported MLPerf runs) under the constraints, within one network, scenario and precision only. --figure\n"
+    "  writes the candidates figure (inferences per second against power, a marker per origin) as PNG.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_library(args, out);
     },

@@ -96,7 +96,13 @@ std::optional<Candidate> from_loadgen(const ResultSet& s) {
                             : m.metric.find("99th") != std::string::npos ? "p99"
                                                                          : m.metric.substr(8);
     }
-    if (m.metric == "samples per second") {
+    // SingleStream is rated in queries per second (one sample each), as the library rates it; the other
+    // scenarios in samples per second.
+    if (m.metric == "queries per second" && c.scenario == "SingleStream") {
+      c.throughput_per_s = v;
+      c.throughput_statistic = "queries per second";
+    }
+    if (m.metric == "samples per second" && c.scenario != "SingleStream") {
       c.throughput_per_s = v;
       c.throughput_statistic = "samples per second";
     }
@@ -209,7 +215,7 @@ void check(Candidate& c, const Constraints& k) {
   c.meets_all = std::all_of(c.checks.begin(), c.checks.end(), [](const ConstraintCheck& x) { return x.met; });
 }
 
-std::string ms(std::optional<double> s) { return s ? fmt(*s * 1e3, "%.3g") : "–"; }
+std::string ms(std::optional<double> s) { return s ? fmt(*s * 1e3, "%.4g") : "–"; }
 
 }  // namespace
 
@@ -355,7 +361,7 @@ ExportTable candidates_table(std::span<const CandidateClass> classes, bool with_
                                    ms(c.latency_s) + (c.latency_s ? " " + c.latency_statistic : ""),
                                    c.throughput_per_s ? fmt(*c.throughput_per_s, "%.4g") : "–",
                                    c.power_w ? fmt(*c.power_w, "%.3g") : "–",
-                                   c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.3g") : "–",
+                                   c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.4g") : "–",
                                    c.battery_runtime_h ? fmt(*c.battery_runtime_h, "%.3g") : "–"};
       if (with_verdicts) {
         std::vector<std::string> failed;
