@@ -35,6 +35,14 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
   plot.clearItems();
   plot.legend->setVisible(true);
   plot.legend->setFont(QFont(plot.font().family(), 8));
+  // The legend goes under the axes, never over the points (a box inside the axes hid the published ones in a
+  // small plot): taken out of the axis rect's inset layout once, in rows of three entries.
+  if (plot.axisRect()->insetLayout()->take(plot.legend)) {
+    plot.plotLayout()->addElement(1, 0, plot.legend);
+    plot.plotLayout()->setRowStretchFactor(1, 0.001);
+    plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    plot.legend->setWrap(2);
+  }
   plot.xAxis->setLabel(QObject::tr("Power (W)"));
   plot.yAxis->setLabel(QObject::tr("Inferences per second"));
   plot.yAxis->setScaleType(QCPAxis::stLogarithmic);

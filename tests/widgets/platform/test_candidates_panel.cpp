@@ -74,6 +74,8 @@ class TestCandidatesPanel : public QObject {
     for (int g = 0; g < plot->graphCount(); ++g) names << plot->graph(g)->name();
     QVERIFY(names.contains("origin: published"));
     QVERIFY(names.contains("origin: reconstructed"));
+    // The legend sits under the axes, not inside them where it would cover points.
+    QVERIFY(plot->legend->layout() == plot->plotLayout());
     // Every row with power and a rate is a point; the rest are named in the note, not drawn.
     int drawn = 0, with_power = 0;
     for (int g = 0; g < plot->graphCount(); ++g) drawn += plot->graph(g)->dataCount() > 0;
