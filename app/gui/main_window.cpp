@@ -323,6 +323,7 @@ void MainWindow::reload() {
       device_colors[{s.set.platform, s.set.device}] = s.color_index;
       sets.push_back(s.set);
     }
+  platforms_->set_result_sets(sets);  // imported MLPerf LoadGen results are own candidates
   roofline_->set_data(all, std::move(sets), std::move(device_colors), pipeline_runs());
   frames_->set_workspace(workspace_.get());
   feed_lens_tab();

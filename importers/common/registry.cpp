@@ -9,6 +9,7 @@
 #include "frames/frame_codec.h"
 #include "frames/frame_pnm.h"
 #include "frames/frame_raw.h"
+#include "mlperf/mlperf_submission.h"
 #include "power/jtop_csv.h"
 #include "power/nvidia_smi.h"
 #include "power/perf_stat.h"
@@ -37,6 +38,7 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<NvidiaSmiImporter>());
   list.push_back(std::make_unique<PerfStatImporter>());
   list.push_back(std::make_unique<PtdLogImporter>());
+  list.push_back(std::make_unique<MlperfLoadgenImporter>());
   list.push_back(std::make_unique<RawBayerImporter>());
   list.push_back(std::make_unique<PnmImporter>());
   list.push_back(std::make_unique<PngImporter>());

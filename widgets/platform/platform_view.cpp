@@ -28,6 +28,7 @@
 #include "analysis/power/battery.h"
 #include "common/frozen_column.h"
 #include "common/numeric_item.h"
+#include "platform/candidates_panel.h"
 #include "platform/inference_table.h"
 
 namespace bs::ui {
@@ -169,6 +170,8 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   layout->addWidget(table_, 2);
   inference_ = new InferenceTable(this);
   layout->addWidget(inference_, 1);
+  candidates_ = new CandidatesPanel(this);
+  layout->addWidget(candidates_, 2);
 
   for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_})
     connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
@@ -213,10 +216,20 @@ void PlatformView::set_data(std::vector<FlopsRun> runs, SharedTraces traces, std
   runs_ = std::move(runs);
   traces_ = std::move(traces);
   pipelines_ = pipeline_timings(pipelines);
+  pipeline_runs_ = std::move(pipelines);
   recompute();
 }
 
-void PlatformView::set_inference_runs(std::vector<DnnRun> runs) { inference_->set_runs(std::move(runs)); }
+void PlatformView::set_inference_runs(std::vector<DnnRun> runs) {
+  dnn_runs_ = runs;
+  inference_->set_runs(std::move(runs));
+  recompute();
+}
+
+void PlatformView::set_result_sets(std::vector<ResultSet> sets) {
+  result_sets_ = std::move(sets);
+  recompute();
+}
 
 void PlatformView::fill_battery_choices() {
   const QSignalBlocker b1(battery_), b2(mission_);
@@ -348,6 +361,7 @@ void PlatformView::recompute() {
   }
   verdicts_ = recommend(rows_, constraints());
   fill_table();
+  candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o);
   const Constraints c = constraints();
   const bool constrained = c.power_budget_w || c.min_fps || c.min_runtime_h;
   const QString hidden =
