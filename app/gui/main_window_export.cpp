@@ -18,8 +18,8 @@
 #include "main_window.h"
 #include "platform/candidates_panel.h"
 #include "platform/platform_view.h"
-#include "report/candidates_section.h"
 #include "plot_export.h"
+#include "report/candidates_section.h"
 #include "report_writer.h"
 #include "workspace/workspace_tree.h"
 
@@ -162,8 +162,8 @@ void MainWindow::export_report() {
       cp->plot()->toPixmap(900, 560).save(&buffer, "PNG");
       figure = "data:image/png;base64," + png.toBase64().toStdString();
     }
-    request.candidates_html = candidates_section_html({cp->classes(), cp->peaks(), cp->selection().toStdString(),
-                                                       describe_constraints(request.constraints), figure});
+    request.candidates_html = candidates_section_html(
+        {cp->classes(), cp->peaks(), cp->selection().toStdString(), describe_constraints(request.constraints), figure});
   }
   QStringList files;
   const bool ok = with_progress(this, tr("Report"), [&](const CancelToken& cancel, const ProgressCallback& progress) {
