@@ -3,11 +3,22 @@
 #
 #   -DBENCHSCOPE_SANITIZE=address,undefined   AddressSanitizer + UndefinedBehaviorSanitizer (scripts/dev sanitize)
 #   -DBENCHSCOPE_FUZZ=ON                       libFuzzer targets under tests/fuzz (clang only; scripts/fuzz)
+#   -DBENCHSCOPE_COVERAGE=ON                   clang source-based coverage, replay_<id> only (scripts/fuzz --coverage)
 #
 # Undefined behaviour is made fatal (-fno-sanitize-recover) so a test that triggers it fails instead of printing
 # a line nobody reads. Third-party libraries (Qt, OpenCV, PoCL) are not instrumented; that is fine for ASan.
 set(BENCHSCOPE_SANITIZE "" CACHE STRING "Sanitizers for all targets, e.g. address,undefined (empty: none)")
 option(BENCHSCOPE_FUZZ "Build the libFuzzer importer targets (needs clang)" OFF)
+option(BENCHSCOPE_COVERAGE "Build the fuzz replays with clang source-based coverage (needs clang)" OFF)
+
+if(BENCHSCOPE_COVERAGE)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "BENCHSCOPE_COVERAGE needs clang: use scripts/fuzz --coverage")
+  endif()
+  # Source-based (not gcov) coverage: exact line and branch counts that llvm-cov maps back to the sources.
+  add_compile_options("$<$<COMPILE_LANGUAGE:C,CXX>:-fprofile-instr-generate;-fcoverage-mapping>")
+  add_link_options(-fprofile-instr-generate)
+endif()
 
 set(_bs_sanitize "${BENCHSCOPE_SANITIZE}")
 if(BENCHSCOPE_FUZZ)

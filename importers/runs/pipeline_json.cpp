@@ -20,12 +20,6 @@ constexpr std::int64_t kMaxFrames = std::int64_t{1} << 40;
 constexpr std::int64_t kMaxSide = 1 << 16;
 constexpr const char* kStages[] = {pipeline_stage::kPreprocess, pipeline_stage::kDetect, pipeline_stage::kEndToEnd};
 
-bool known_stage(std::string_view s) {
-  for (const char* k : kStages)
-    if (s == k) return true;
-  return false;
-}
-
 Provenance read_provenance(const Reader& r, const json& value, const std::string& at) {
   r.require_object(value, at);
   Provenance p;
@@ -84,6 +78,12 @@ StageStats read_stage(const Reader& r, const json& value, const std::string& at,
 
 }  // namespace
 
+bool is_pipeline_stage(std::string_view s) {
+  for (const char* k : kStages)
+    if (s == k) return true;
+  return false;
+}
+
 int PipelineJsonImporter::sniff(std::string_view head, std::string_view) const {
   // Any version: a newer one is then refused as unsupported rather than as an unknown format.
   if (head.find("\"benchscope-pipeline-v") != std::string_view::npos) return 100;
@@ -133,7 +133,7 @@ ImportBatch parse_pipeline_json(const std::string& text, const std::string& file
     if (const auto it = stages.find(name); it != stages.end())
       run.stages.push_back(read_stage(r, *it, child("/stages", name), name));
   for (const auto& [key, value] : stages.items())
-    if (!known_stage(key))
+    if (!is_pipeline_stage(key))
       r.fail(ImportErrorCategory::InvalidValue, child("/stages", key),
              "unknown stage '" + key + "' (expected preprocess, detect, end-to-end)");
   if (const json* p = r.optional(doc, "provenance")) run.provenance = read_provenance(r, *p, "/provenance");
@@ -144,52 +144,6 @@ ImportBatch parse_pipeline_json(const std::string& text, const std::string& file
   batch.format = std::string(kPipelineJsonFormat);
   batch.pipeline_runs.push_back(std::move(run));
   return batch;
-}
-
-std::string write_pipeline_json(const PipelineRun& run) {
-  using ojson = nlohmann::ordered_json;
-  const auto bad = [&](const std::string& what) {
-    throw std::invalid_argument("pipeline run of " + run.platform + ": " + what);
-  };
-  if (run.platform.empty()) bad("platform is empty");
-  if (run.stages.empty()) bad("no stages");
-  ojson j;
-  j["format"] = kPipelineJsonFormat;
-  j["platform"] = run.platform;
-  j["device"] = run.device.empty() ? run.platform : run.device;
-  j["backend"] = run.backend.empty() ? "cpu" : run.backend;
-  if (!run.demosaic.empty()) j["demosaic"] = run.demosaic;
-  if (!run.detector.empty()) j["detector"] = run.detector;
-  if (run.frame_width > 0 && run.frame_height > 0)
-    j["frame"] = {{"width", run.frame_width}, {"height", run.frame_height}};
-  if (run.throughput_fps) {
-    if (!(*run.throughput_fps > 0) || !std::isfinite(*run.throughput_fps)) bad("throughput is not a positive number");
-    j["throughput_fps"] = *run.throughput_fps;
-  }
-  ojson stages = ojson::object();
-  for (const StageStats& s : run.stages) {
-    if (!known_stage(s.stage)) bad("unknown stage '" + s.stage + "'");
-    if (s.n == 0) bad(s.stage + ": n is 0");
-    ojson o;
-    o["n"] = s.n;
-    const auto put = [&](const char* key, double v) {
-      if (!std::isfinite(v) || v < 0) bad(s.stage + ": " + key + " is negative or not finite");
-      o[key] = v;
-    };
-    put("mean_s", s.mean_s);
-    put("sd_s", s.n == 1 ? 0.0 : s.sd_s);
-    if (s.min_s) put("min_s", *s.min_s);
-    if (s.max_s) put("max_s", *s.max_s);
-    if (s.p50_s) put("p50_s", *s.p50_s);
-    if (s.p95_s) put("p95_s", *s.p95_s);
-    stages[s.stage] = std::move(o);
-  }
-  j["stages"] = std::move(stages);
-  ojson prov;
-  const nlohmann::json shared = provenance_to_json(run.provenance, false);  // kept alive while iterating
-  for (const auto& [k, v] : shared.items()) prov[k] = v;
-  j["provenance"] = std::move(prov);
-  return j.dump(2) + "\n";
 }
 
 }  // namespace bs

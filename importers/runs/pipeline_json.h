@@ -31,4 +31,7 @@ ImportBatch parse_pipeline_json(const std::string& text, const std::string& file
 // when the run breaks a rule the reader enforces (no stages, n = 0, a negative or non-finite time, ...).
 std::string write_pipeline_json(const PipelineRun& run);
 
+// Whether `stage` is one of the format's stage names (pipeline_stage::kPreprocess, kDetect, kEndToEnd).
+bool is_pipeline_stage(std::string_view stage);
+
 }  // namespace bs

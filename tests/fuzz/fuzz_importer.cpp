@@ -6,12 +6,15 @@
 #include <cstdlib>
 #include <exception>
 #include <fstream>
+#include <optional>
+#include <stdexcept>
 #include <string_view>
 
 #include <unistd.h>
 
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/importer.h"
+#include "frames/frame_raw.h"
 
 #ifndef BENCHSCOPE_FUZZ_IMPORTER
 #error "define BENCHSCOPE_FUZZ_IMPORTER to an importer id or \"any\""
@@ -66,13 +69,28 @@ void run_one(const std::uint8_t* data, std::size_t size) {
       derive(import_file(scratch_path(), cancel, fuzz_limits()));
     } else if (id == "raw-bayer") {
       // A raw frame is two files: the input is "<sidecar JSON>\0<raw samples>" (no NUL: all sidecar, no samples).
+      // Input that does not start with '{' is "<geometry>\0<raw samples>" instead: a .raw without a sidecar and
+      // the geometry the user types (benchscope-cli import --raw-geometry WxH:PATTERN:BITS:le, the GUI's dialog).
       const std::string_view all(reinterpret_cast<const char*>(data), size);
       const std::size_t split = std::min(all.find('\0'), all.size());
       const std::string raw = scratch_path() + ".raw", sidecar = scratch_path() + ".json";
-      std::ofstream(sidecar, std::ios::binary | std::ios::trunc).write(all.data(), static_cast<std::streamsize>(split));
+      const std::string_view head = all.substr(0, split);
       const std::string_view samples = split < all.size() ? all.substr(split + 1) : std::string_view();
       std::ofstream(raw, std::ios::binary | std::ios::trunc)
           .write(samples.data(), static_cast<std::streamsize>(samples.size()));
+      if (!head.empty() && head.front() != '{') {
+        std::remove(sidecar.c_str());
+        std::optional<RawFrameOptions> geometry;
+        try {
+          geometry = parse_raw_geometry(std::string(head));
+        } catch (const std::invalid_argument&) {
+          // A geometry the CLI refuses as a usage error; the .raw is then read without one (no sidecar: an error).
+        }
+        (void)import_file_with_raw_geometry(raw, geometry, cancel, "--raw-geometry");
+        return;
+      }
+      std::ofstream(sidecar, std::ios::binary | std::ios::trunc)
+          .write(head.data(), static_cast<std::streamsize>(split));
       const Importer* imp = find_importer(id);
       if (!imp || imp->sniff({}, raw) != 100) finding("raw-bayer does not claim a .raw with a sidecar");
       (void)imp->parse(raw, ParseOptions{}, fuzz_limits(), cancel);

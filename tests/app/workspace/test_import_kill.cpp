@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Crash safety: `benchscope-cli import` is killed with SIGKILL at random moments (fixed seed, 24 times) while it
-// writes power logs into one workspace. After every kill the workspace must open, pass PRAGMA integrity_check, and
-// hold each import whole or not at all: every import row has its trace, every trace all of its samples.
+// Crash safety: `benchscope-cli import` is killed with SIGKILL at random points of its work (fixed seed, 24 times)
+// while it writes power logs into one workspace. The points are counted in bytes the process has read and written
+// (Linux /proc/<pid>/io), not in time, so where the kills land does not depend on how loaded the machine is. After
+// every kill the workspace must open, pass PRAGMA integrity_check, and hold each import whole or not at all: every
+// import row has its trace, every trace all of its samples.
+#include <algorithm>
 #include <csignal>
 #include <random>
 
-#include <QElapsedTimer>
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -57,6 +59,49 @@ void check_workspace(const QString& ws, std::size_t* imports_out) {
   *imports_out = imports.size();
 }
 
+// The bytes a process has read and written so far (rchar + wchar of /proc/<pid>/io): its work done, the same on a
+// fast and a loaded machine. -1 when it cannot be read (the process is gone).
+qint64 io_bytes(qint64 pid) {
+  QFile f(QString("/proc/%1/io").arg(pid));
+  if (!f.open(QIODevice::ReadOnly)) return -1;
+  qint64 total = 0;
+  bool seen = false;
+  for (const QByteArray& line : f.readAll().split('\n'))
+    if (line.startsWith("rchar:") || line.startsWith("wchar:")) {
+      total += line.mid(6).trimmed().toLongLong();
+      seen = true;
+    }
+  return seen ? total : -1;
+}
+
+struct Round {
+  bool killed = false;  // killed while it ran
+  int exit_code = -1;   // when it ended by itself
+  qint64 most_io = 0;   // the most I/O seen while it ran
+};
+
+// Runs the CLI until it ends, or until it has done `kill_at` bytes of I/O (0: never) and is then killed (SIGKILL).
+Round run_and_kill_at(const QStringList& args, qint64 kill_at) {
+  Round r;
+  QProcess p;
+  p.start(kCli, args);
+  if (!p.waitForStarted()) return r;
+  const qint64 pid = p.processId();
+  // Polled: waitForFinished(1) only paces the loop; the decision to kill looks at the work done.
+  while (!p.waitForFinished(1)) {
+    const qint64 io = io_bytes(pid);
+    r.most_io = std::max(r.most_io, io);
+    if (kill_at > 0 && io >= kill_at) {
+      ::kill(static_cast<pid_t>(pid), SIGKILL);
+      p.waitForFinished(-1);
+      r.killed = p.exitStatus() == QProcess::CrashExit;
+      return r;
+    }
+  }
+  r.exit_code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+  return r;
+}
+
 }  // namespace
 
 class TestImportKill : public QObject {
@@ -71,31 +116,23 @@ class TestImportKill : public QObject {
     }
     const QString ws = dir.filePath("w.bsw");
 
-    // One complete import tells how long a round takes; kills are spread over that time.
+    // One complete import tells how much I/O a round does; kills are spread over that much work.
     QStringList args{"import", ws};
     args << files << "--quiet";
-    QElapsedTimer clock;
-    clock.start();
-    QCOMPARE(QProcess::execute(kCli, args), 0);
-    const qint64 full_ms = std::max<qint64>(clock.elapsed(), 50);
+    const Round full = run_and_kill_at(args, 0);
+    QCOMPARE(full.exit_code, 0);
+    const qint64 full_io = full.most_io;
+    if (full_io <= 0) QSKIP("/proc/<pid>/io is not readable here: no way to count the work done");
     std::size_t imports = 0;
     check_workspace(ws, &imports);
     QCOMPARE(imports, std::size_t{kFiles});
 
     std::mt19937 rng(20181121);
-    std::uniform_int_distribution<qint64> when(0, full_ms * 6 / 5);
+    std::uniform_int_distribution<qint64> where(full_io / 50, full_io * 49 / 50);
     int killed_mid_way = 0;
     for (int round = 1; round <= kKills; ++round) {
       for (const QString& f : files) stamp_round(f, round);
-      QProcess p;
-      p.start(kCli, args);
-      QVERIFY(p.waitForStarted());
-      const qint64 delay = when(rng);
-      if (!p.waitForFinished(static_cast<int>(delay))) {
-        ::kill(static_cast<pid_t>(p.processId()), SIGKILL);
-        QVERIFY(p.waitForFinished(10000));
-        ++killed_mid_way;
-      }
+      if (run_and_kill_at(args, where(rng)).killed) ++killed_mid_way;
       std::size_t now = 0;
       check_workspace(ws, &now);
       QVERIFY(now >= imports && now <= imports + kFiles);

@@ -35,10 +35,12 @@ class RaplStaircase {
   explicit RaplStaircase(const std::filesystem::path& root) : root_(root) {
     bs::test::rapl_package(root_, 0, 0, kMax);
     thread_ = std::thread([this] {
+      // clock-ok: the fixture stands for a RAPL counter that advances with real time; no test bound uses the clock
       const auto t0 = std::chrono::steady_clock::now();
       long long counter = 0;
       while (!stop_) {
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        // clock-ok: as above, the simulated counter's rate; the assertions bound it by the trace's own times
         const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         counter = (counter + 2000 + 100 * static_cast<long long>(t / 0.25)) % kMax;
         bs::test::put(root_, "sys/class/powercap/intel-rapl:0/energy_uj", std::to_string(counter));
