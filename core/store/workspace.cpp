@@ -132,13 +132,16 @@ Workspace::Workspace(const std::string& path, OpenMode mode) : impl_(std::make_u
     throw WorkspaceError(WorkspaceError::Kind::Corrupt,
                          path + ": workspace is damaged and cannot be read (" + std::string(e.what()) + ")");
   }
-  if (!w.damage.empty()) {
-    w.read_only = true;
-    return;
-  }
-  // WAL (readers never wait for a writer) only once the file is known sound: switching writes to its header, and
-  // nothing is written to a damaged workspace.
-  if (!read_only) w.db->exec("PRAGMA journal_mode = WAL");
+  if (!w.damage.empty()) w.read_only = true;
+}
+
+// WAL (readers never wait for a writer) is switched on before the first write, not on opening: switching writes
+// to the file's header, and reading a workspace writes nothing to it (damage in the samples is only found when
+// they load, after opening). WAL stays on in the file once set.
+void Workspace::Impl::prepare_write() const {
+  if (wal) return;
+  db->exec("PRAGMA journal_mode = WAL");
+  wal = true;
 }
 
 Workspace::~Workspace() = default;
@@ -153,7 +156,7 @@ const ImportLimits& Workspace::limits() const { return impl_->limits; }
 
 void Workspace::Impl::require_writable() const {
   if (opened_read_only) throw WorkspaceError(WorkspaceError::Kind::Constraint, path + ": opened read-only");
-  if (damage.empty()) return;
+  if (damage.empty()) return prepare_write();
   // Corrupt, not Constraint: callers that treat Constraint as "this one file" (the import service) stop instead.
   throw WorkspaceError(WorkspaceError::Kind::Corrupt,
                        path + ": holds " + std::to_string(damage.size()) + " damaged item" +
@@ -174,6 +177,7 @@ void rescan(Workspace::Impl& w, const Workspace& ws) {
 std::size_t Workspace::remove_damaged() {
   Impl& w = *impl_;
   if (w.opened_read_only) throw WorkspaceError(WorkspaceError::Kind::Constraint, w.path + ": opened read-only");
+  w.prepare_write();
   std::size_t removed = 0;
   {
     Transaction tx(w.conn());
@@ -199,6 +203,7 @@ std::size_t Workspace::remove_damaged() {
 void Workspace::remove_import(std::int64_t import_id) {
   if (impl_->opened_read_only)
     throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": opened read-only");
+  impl_->prepare_write();
   Transaction tx(impl_->conn());
   Statement(impl_->conn(), "DELETE FROM imports WHERE id = ?").bind(1, import_id).run();
   tx.commit();

@@ -29,8 +29,10 @@ struct Workspace::Impl {
   const sqlite::Db& conn() const { return *db; }
   void record(WorkspaceDamage d) const;
   bool is_damaged(const std::string& table, std::int64_t id) const { return damaged_rows.count({table, id}) > 0; }
-  // Throws WorkspaceError(Constraint) naming the damage when writes are refused.
+  // Throws WorkspaceError naming the damage when writes are refused; else prepares the file for writing.
   void require_writable() const;
+  void prepare_write() const;  // WAL on, once (see workspace.cpp)
+  mutable bool wal = false;
   // Reads every entity once (without samples or pixels) so that `damage` lists all that is damaged.
   void scan(const Workspace& ws);
 };

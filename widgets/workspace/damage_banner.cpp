@@ -23,13 +23,11 @@ DamageBanner::DamageBanner(QWidget* parent) : QFrame(parent), label_(new QLabel(
   row->addWidget(label_, 1);
   row->addWidget(remove_);
   connect(remove_, &QPushButton::clicked, this, &DamageBanner::remove_requested);
-  hide();
 }
 
 void DamageBanner::set_damage(const std::vector<WorkspaceDamage>& damage) {
   if (damage.empty()) {
     label_->clear();
-    hide();
     return;
   }
   QStringList lines;
@@ -41,7 +39,6 @@ void DamageBanner::set_damage(const std::vector<WorkspaceDamage>& damage) {
                      "is written to it until they are removed.",
                      nullptr, static_cast<int>(damage.size())) +
                   "<br>" + lines.join("<br>"));
-  show();
 }
 
 QString DamageBanner::text() const { return label_->text(); }

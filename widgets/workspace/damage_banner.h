@@ -17,7 +17,8 @@ class DamageBanner : public QFrame {
   Q_OBJECT
  public:
   explicit DamageBanner(QWidget* parent = nullptr);
-  // Shows the list (at most kShown items, then how many more), or nothing when `damage` is empty.
+  // Says what is damaged (at most kShown items, then how many more). Whoever holds the banner shows or hides it
+  // (in a QToolBar only the bar's visibility works).
   void set_damage(const std::vector<WorkspaceDamage>& damage);
   QString text() const;  // what the banner says, for tests and screen readers
 
