@@ -6,14 +6,14 @@
 #include <QStatusBar>
 
 #include "frames/frame_store.h"
+#include "main_window.h"
 #include "vision/frame_triptych.h"
+#include "vision/frames/frame_image.h"
 #include "vision/frames_view.h"
 #include "vision/lens_tab.h"
-#include "main_window.h"
 #include "vision/raw_geometry_dialog.h"
-#include "vision/reprojection_tuner.h"
-#include "vision/frames/frame_image.h"
 #include "vision/reproject/triptych.h"
+#include "vision/reprojection_tuner.h"
 
 namespace bs::ui {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "frames/frame_raw.h"
 #include "common/importer.h"
+#include "frames/frame_raw.h"
 #include "model/frame.h"
 
 namespace bs {

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "common/json_access.h"
-#include "model/provenance_json.h"
 #include "common/text_file.h"
+#include "model/provenance_json.h"
 
 namespace bs {
 namespace {

@@ -17,8 +17,8 @@
 
 #include "analysis/peaks/flops.h"
 #include "common/json_access.h"
-#include "model/provenance_json.h"
 #include "common/text_file.h"
+#include "model/provenance_json.h"
 
 namespace bs {
 namespace {

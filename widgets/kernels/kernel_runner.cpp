@@ -138,6 +138,9 @@ void KernelRunner::populate() {
   cpu_ = kernels::detect_cpu();  // ~0.1 s clock calibration, once
   backends_ = kernels::available_backends(cpu_);
   ceiling_set_ = kernels::cached_ceilings(cpu_);  // measured earlier on this host: no re-measuring on every start
+  device_ceilings_.clear();
+  for (const auto& b : backends_)
+    if (auto set = kernels::cached_device_ceilings(b)) device_ceilings_[b.id] = std::move(*set);
   backend_->clear();
   for (const auto& b : backends_)
     backend_->addItem(
@@ -155,25 +158,52 @@ void KernelRunner::show_backend_details() {
   show_ceilings();
 }
 
-void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
+void KernelRunner::select_backend(const QString& id) {
+  for (std::size_t i = 0; i < backends_.size(); ++i)
+    if (QString::fromStdString(backends_[i].id) == id) backend_->setCurrentIndex(static_cast<int>(i));
+}
+
+const kernels::Backend* KernelRunner::current_backend() const {
   const int i = backend_->currentIndex();
-  const bool simd = i >= 0 && backends_[static_cast<std::size_t>(i)].id == "cpu-simd";
-  measure_ceilings_->setVisible(simd);
+  return i >= 0 && static_cast<std::size_t>(i) < backends_.size() ? &backends_[static_cast<std::size_t>(i)] : nullptr;
+}
+
+const kernels::CeilingSet* KernelRunner::device_ceilings(const std::string& backend_id) const {
+  const auto it = device_ceilings_.find(backend_id);
+  return it == device_ceilings_.end() ? nullptr : &it->second;
+}
+
+void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
+  const kernels::Backend* b = current_backend();
+  const bool simd = b && b->id == "cpu-simd", device = b && b->ceiling_kernels;
+  measure_ceilings_->setVisible(simd || device);
   measure_ceilings_->setEnabled(!measuring_ceilings());
-  if (!simd) {
-    ceilings_->setText(tr("<small>Empirical ceilings are measured for the CPU SIMD backend only.</small>"));
+  measure_ceilings_->setToolTip(
+      device ? tr("Measure this device's empirical ceilings now (a few seconds): FMA, the rotation kernel's "
+                  "instruction mix and a device-memory copy, timed on the device, each result checked. Stored per "
+                  "host and in the workspace (peak table, roofline)")
+             : tr("Measure this CPU's empirical ceilings now (~5 s): the rotation kernel's instruction "
+                  "mix and plain FMA with enough independent chains, and the memory bandwidth. Stored "
+                  "per host and in the workspace (peak table, roofline)"));
+  if (!simd && !device) {
+    ceilings_->setText(tr("<small>Empirical ceilings are measured for the CPU SIMD backend and for OpenCL and "
+                          "CUDA devices, not for %1.</small>")
+                           .arg(QString::fromStdString(b ? b->label : std::string()).toHtmlEscaped()));
     ceilings_->setToolTip({});
     return;
   }
-  if (!ceiling_set_ || !ceiling_set_->rotation_mix.measured()) {
-    ceilings_->setText(tr("<small>No empirical ceiling measured for %1 with %2 threads yet: "
-                          "“% of peak” rests on the computed model alone.</small>")
-                           .arg(QString::fromStdString(cpu_.simd.name))
-                           .arg(cpu_.threads));
+  const kernels::CeilingSet* set = simd ? (ceiling_set_ ? &*ceiling_set_ : nullptr) : device_ceilings(b->id);
+  if (!set || !set->rotation_mix.measured()) {
+    ceilings_->setText(simd ? tr("<small>No empirical ceiling measured for %1 with %2 threads yet: "
+                                 "“% of peak” rests on the computed model alone.</small>")
+                                  .arg(QString::fromStdString(cpu_.simd.name))
+                                  .arg(cpu_.threads)
+                            : tr("<small>No empirical ceiling measured for this device yet: "
+                                 "“% of peak” rests on the computed model alone.</small>"));
     ceilings_->setToolTip({});
     return;
   }
-  const kernels::CeilingSet& c = *ceiling_set_;
+  const kernels::CeilingSet& c = *set;
   const Summary mix = summarize(c.rotation_mix.values);
   const auto own = compare_to_ceilings(mix.mean, c.computed_peak_flops, std::nullopt, "The rotation-mix ceiling");
   QString text =
@@ -184,16 +214,18 @@ void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
   if (c.fma.measured())
     text += tr("; FMA %1").arg(QString::fromStdString(format_si(summarize(c.fma.values).mean, "FLOPS")));
   if (c.bandwidth.measured())
-    text += tr("; memory %1").arg(QString::fromStdString(format_si(summarize(c.bandwidth.values).mean, "B/s")));
-  text += tr("<br>measured %1").arg(QString::fromStdString(c.date));
+    text += (device ? tr("; device memory %1") : tr("; memory %1"))
+                .arg(QString::fromStdString(format_si(summarize(c.bandwidth.values).mean, "B/s")));
+  text += device ? tr("<br>measured %1, timed on the device").arg(QString::fromStdString(c.date))
+                 : tr("<br>measured %1").arg(QString::fromStdString(c.date));
   std::vector<PlausibilityFlag> flags = own.flags;
   // The last sweep's peak against both: the Kernel Runner's own "% of peak" and "% of empirical ceiling".
   double best = 0;
   for (const FlopsRun& r : last_runs)
     if (const auto p = find_peak(r)) best = std::max(best, p->flops);
   if (best > 0) {
-    const auto cmp = compare_to_ceilings(best, cpu_.peak_flops, mix.mean, "The last sweep's peak",
-                                         "rotation mix, measured " + c.date);
+    const auto cmp = compare_to_ceilings(best, simd ? cpu_.peak_flops : b->theoretical_peak_flops, mix.mean,
+                                         "The last sweep's peak", "rotation mix, measured " + c.date);
     text += tr("<br>last sweep: peak %1 = %2 of the computed peak, %3 of the empirical ceiling")
                 .arg(QString::fromStdString(format_si(best, "FLOPS")),
                      QString::fromStdString(fraction_text(cmp.fraction_of_peak, !cmp.flags.empty())),
@@ -208,29 +240,40 @@ void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
 
 void KernelRunner::measure_ceilings() {
   if (measuring_ceilings()) return;
+  const kernels::Backend* current = current_backend();
+  if (!current || (current->id != "cpu-simd" && !current->ceiling_kernels)) return;
   ceiling_cancel_ = std::make_shared<CancelToken>();
   measure_ceilings_->setEnabled(false);
   ceilings_->setText(tr("<small>Measuring the empirical ceilings…</small>"));
   auto cancel = ceiling_cancel_;
   const kernels::CpuInfo cpu = cpu_;
+  const bool device = current->id != "cpu-simd";
+  const kernels::Backend backend = *current;  // the closures share the device; the copy outlives a repopulate
   auto* watcher = new QFutureWatcher<kernels::CeilingSet>(this);
-  connect(watcher, &QFutureWatcher<kernels::CeilingSet>::finished, this, [this, watcher] {
+  connect(watcher, &QFutureWatcher<kernels::CeilingSet>::finished, this, [this, watcher, device, id = backend.id] {
     watcher->deleteLater();
     ceiling_cancel_.reset();
     try {
-      ceiling_set_ = watcher->result();
+      const kernels::CeilingSet set = watcher->result();
+      if (device)
+        device_ceilings_[id] = set;
+      else
+        ceiling_set_ = set;
       try {
-        kernels::store_ceilings(*ceiling_set_);
+        kernels::store_ceilings(set);
       } catch (const std::runtime_error& e) {
         emit failed(tr("Ceilings measured but not cached: %1").arg(QString::fromUtf8(e.what())));
       }
-      emit ceilings_measured(kernels::ceiling_result_set(*ceiling_set_));
+      emit ceilings_measured(kernels::ceiling_result_set(set));
     } catch (const std::exception& e) {
       emit failed(tr("Measuring the ceilings: %1").arg(QString::fromUtf8(e.what())));
     }
     show_ceilings();
   });
-  watcher->setFuture(QtConcurrent::run([cpu, cancel] { return kernels::measure_ceilings(cpu, {}, *cancel); }));
+  watcher->setFuture(QtConcurrent::run([cpu, cancel, device, backend] {
+    return device ? kernels::measure_device_ceilings(backend, {}, *cancel)
+                  : kernels::measure_ceilings(cpu, {}, *cancel);
+  }));
 }
 
 std::optional<PowerTrace> KernelRunner::take_power_trace() {

@@ -25,8 +25,8 @@
 #include "analysis/platform/platform_table.h"
 #include "analysis/power/battery.h"
 #include "common/frozen_column.h"
-#include "platform/inference_table.h"
 #include "common/numeric_item.h"
+#include "platform/inference_table.h"
 
 namespace bs::ui {
 namespace {

@@ -13,8 +13,8 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
-#include "vision/image_pane.h"
 #include "vision/frames/frame_image.h"
+#include "vision/image_pane.h"
 #include "vision/lens/view_geometry.h"
 
 namespace bs::ui {

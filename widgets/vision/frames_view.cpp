@@ -8,8 +8,8 @@
 #include <QSplitter>
 
 #include "frames/frame_store.h"
-#include "vision/frame_triptych.h"
 #include "triptych_panels.h"
+#include "vision/frame_triptych.h"
 
 namespace bs::ui {
 

@@ -10,9 +10,9 @@
 #include <QtConcurrent>
 
 #include "vision/checkerboard_dialog.h"
+#include "vision/frames/synthetic.h"
 #include "vision/lens_view_3d.h"
 #include "vision/reprojection_tuner.h"
-#include "vision/frames/synthetic.h"
 
 namespace bs::ui {
 

@@ -14,8 +14,8 @@
 #include <limits>
 
 #include "analysis/platform/pipeline_table.h"
-#include "platform/inference_table.h"
 #include "common/numeric_item.h"
+#include "platform/inference_table.h"
 #include "vision/pipeline_measure_panel.h"
 
 namespace bs::ui {

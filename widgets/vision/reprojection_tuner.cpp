@@ -29,10 +29,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "vision/preview_pane.h"
 #include "vision/lens/edge_proposals.h"
-#include "vision/reproject/fast_map.h"
 #include "vision/lens/straight_line.h"
+#include "vision/preview_pane.h"
+#include "vision/reproject/fast_map.h"
 
 namespace bs::ui {
 namespace {

@@ -12,14 +12,14 @@
 #include "analysis/stats/units.h"
 #include "common/args.h"
 #include "common/command.h"
-#include "kernels/cpu_args.h"
+#include "common/signals.h"
 #include "kernels/ceiling_cache.h"
+#include "kernels/cpu_args.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power/power_args.h"
 #include "runs/run_json.h"
 #include "sensors/recording_csv.h"
-#include "common/signals.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -46,16 +46,22 @@ void print_point_energies(std::ostream& out, const PowerTrace& trace, const std:
   }
 }
 
-// "  = X % of the empirical ceiling ..." for a CPU SIMD figure, with flags spelled out; a hint when none is cached.
-void print_ceiling_comparison(double flops, const kernels::CpuInfo& cpu, std::ostream& out) {
-  const auto cached = kernels::cached_ceilings(cpu);
+// "  = X % of the empirical ceiling ..." for a CPU SIMD or OpenCL/CUDA device figure, with flags spelled out; a hint
+// when none is cached.
+void print_ceiling_comparison(double flops, const kernels::Backend& backend, const kernels::CpuInfo& cpu,
+                              std::ostream& out) {
+  const bool device = backend.id != "cpu-simd";
+  const auto cached = device ? kernels::cached_device_ceilings(backend) : kernels::cached_ceilings(cpu);
   std::optional<double> ceiling;
-  std::string how = "no empirical ceiling cached for this CPU and ISA (bench kernels or devices --measure-ceilings)";
+  std::string how = device ? "no empirical ceiling cached for this device (bench kernels or devices --measure-ceilings)"
+                           : "no empirical ceiling cached for this CPU and ISA (bench kernels or devices "
+                             "--measure-ceilings)";
   if (cached && cached->rotation_mix.measured()) {
     ceiling = summarize(cached->rotation_mix.values).mean;
     how = "rotation mix, cached, measured " + cached->date;
   }
-  const auto cmp = compare_to_ceilings(flops, cpu.peak_flops, ceiling, "the peak", how);
+  const auto cmp =
+      compare_to_ceilings(flops, device ? backend.theoretical_peak_flops : cpu.peak_flops, ceiling, "the peak", how);
   out << "  " << fraction_text(cmp.fraction_of_peak, !cmp.flags.empty()) << " of the computed peak, "
       << fraction_text(cmp.fraction_of_ceiling, !cmp.flags.empty()) << " of the empirical ceiling ("
       << (ceiling ? format_si(*ceiling, "FLOPS") + ", " : "") << how << ")\n";
@@ -181,8 +187,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
         out << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
             << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
       out << " [variant " << row.variant << "]\n";
-      // The empirical ceiling of this CPU and ISA from the per-host cache (bench kernels / devices --measure-ceilings).
-      if (found->id == "cpu-simd") print_ceiling_comparison(row.peak.flops, cpu, out);
+      // The empirical ceiling of this CPU and ISA, or of the OpenCL/CUDA device, from the per-host cache.
+      if (found->id == "cpu-simd" || found->ceiling_kernels) print_ceiling_comparison(row.peak.flops, *found, cpu, out);
     }
     if (trace) print_point_energies(out, *trace, result.runs);
   }

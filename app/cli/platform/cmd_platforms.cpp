@@ -13,10 +13,10 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/flag_output.h"
-#include "workspace/inputs.h"
-#include "platform/platform_args.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "platform/platform_args.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {

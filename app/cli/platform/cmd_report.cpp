@@ -7,10 +7,10 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "platform/figure_cli.h"
-#include "workspace/inputs.h"
-#include "platform/platform_args.h"
 #include "common/signals.h"
+#include "platform/figure_cli.h"
+#include "platform/platform_args.h"
+#include "workspace/inputs.h"
 
 #ifdef BENCHSCOPE_WITH_FIGURES
 #include "report_writer.h"

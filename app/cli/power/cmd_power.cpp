@@ -22,11 +22,11 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/flag_output.h"
-#include "workspace/inputs.h"
-#include "power/power_csv.h"
-#include "power/power_import.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "power/power_csv.h"
+#include "power/power_import.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 

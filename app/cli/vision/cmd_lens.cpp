@@ -12,12 +12,12 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "vision/lens_calibrate.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/edge_proposals.h"
 #include "vision/lens/line_fit.h"
 #include "vision/lens/straight_line.h"
 #include "vision/lens/tuner_state.h"
+#include "vision/lens_calibrate.h"
 
 namespace bs::cli {
 namespace {

@@ -6,9 +6,9 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "frames/frame_raw.h"
 #include "common/import_service.h"
 #include "common/signals.h"
+#include "frames/frame_raw.h"
 #include "store/workspace.h"
 
 namespace bs::cli {

@@ -14,15 +14,15 @@
 
 #include <cstring>
 
-#include "vision/frame_triptych.h"
-#include "vision/frames_view.h"
-#include "vision/image_pane.h"
-#include "workspace/import_controller.h"
 #include "common/importer.h"
 #include "triptych_panels.h"
+#include "vision/frame_triptych.h"
 #include "vision/frames/frame_image.h"
 #include "vision/frames/synthetic.h"
+#include "vision/frames_view.h"
+#include "vision/image_pane.h"
 #include "vision/lens/view_geometry.h"
+#include "workspace/import_controller.h"
 
 using namespace bs;
 

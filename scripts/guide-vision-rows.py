@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Turns the demosaic part of `benchscope-cli bench vision` output (stdin) into README.md's vision rows (stdout).
+"""Turns the demosaic part of `benchscope-cli bench vision` output (stdin) into the vision rows of docs/guide.md, "Measured performance" (stdout).
 
-    build/app/cli/benchscope-cli bench vision | tee bench-vision.txt | scripts/readme-vision-rows.py
+    build/app/cli/benchscope-cli bench vision | tee bench-vision.txt | scripts/guide-vision-rows.py
 
-Copies the figures as the benchmark printed them; computes nothing, so the README says what the run said."""
+Copies the figures as the benchmark printed them; computes nothing, so the guide says what the run said."""
 import re
 import sys
 
@@ -18,7 +18,7 @@ row = re.compile(r"^(\d+)\s+(8-bit|16-bit)\s+(bilinear|Malvar-He-Cutler)\s+"
                  r"([\d.]+x) \(([\d.]+x)\)\s+(<= \dx): (met|not met)$", re.M)
 rows = row.findall(text)
 if not head or not rows:
-    sys.exit("readme-vision-rows: no demosaic table found in the input (is it `bench vision` output?)")
+    sys.exit("guide-vision-rows: no demosaic table found in the input (is it `bench vision` output?)")
 print(f"| threads | depth | demosaic | BenchScope ms/frame: median (mean ± SD, n; min) | OpenCV cvtColor bilinear "
       f"ms/frame: median (mean ± SD, n; min) | ratio of medians (of means) | target |")
 print("|---|---|---|---|---|---|---|")
