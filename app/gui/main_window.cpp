@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QScreen>
 #include <QSettings>
 #include <QSplitter>
@@ -126,6 +127,17 @@ MainWindow::MainWindow(QWidget* parent)
   tree_dock->raise();
   resizeDocks({tree_dock}, {340}, Qt::Horizontal);
   connect(runner_, &KernelRunner::started, runner_dock, &QDockWidget::raise);
+  // Above the views, out of the tab widget's way: shown only while the workspace holds damaged items.
+  damage_banner_ = new DamageBanner(this);
+  damage_bar_ = new QToolBar(tr("Damaged items"), this);
+  damage_bar_->setObjectName(QStringLiteral("damageBar"));
+  damage_bar_->setMovable(false);
+  damage_bar_->setFloatable(false);
+  damage_bar_->toggleViewAction()->setVisible(false);
+  damage_bar_->addWidget(damage_banner_);
+  addToolBar(Qt::TopToolBarArea, damage_bar_);
+  damage_bar_->hide();
+  connect(damage_banner_, &DamageBanner::remove_requested, this, &MainWindow::remove_damaged);
   resize(1400, 900);
   default_state_ = saveState();        // View > Reset layout returns here
   flops_split_->setSizes({560, 300});  // the paper's 13 peak rows without scrolling at the default size
@@ -187,6 +199,7 @@ void MainWindow::restore_layout() {
   if (const QByteArray g = s.value("geometry").toByteArray(); !g.isEmpty() && restoreGeometry(g)) clamp_to_screen();
   if (const QByteArray st = s.value("state").toByteArray(); !st.isEmpty()) restoreState(st);
   if (const QByteArray sp = s.value("flops-split").toByteArray(); !sp.isEmpty()) flops_split_->restoreState(sp);
+  show_damage();  // the banner follows the workspace, never a remembered layout
 }
 
 void MainWindow::clamp_to_screen() {
@@ -328,6 +341,7 @@ void MainWindow::reload() {
   frames_->set_workspace(workspace_.get());
   feed_lens_tab();
   refresh_views();
+  show_damage();
   update_title();
 }
 
@@ -467,11 +481,39 @@ void MainWindow::save_as() {
   open_workspace(path);
 }
 
+void MainWindow::show_damage() {
+  const bool damaged = workspace_ && !workspace_->damage().empty();
+  damage_banner_->set_damage(damaged ? workspace_->damage() : std::vector<WorkspaceDamage>{});
+  damage_bar_->setVisible(damaged);
+}
+
+void MainWindow::remove_damaged() {
+  if (!workspace_ || workspace_->damage().empty()) return;
+  QMessageBox box(QMessageBox::Warning, tr("Remove damaged items"),
+                  tr("Remove the %n damaged item(s) from %1? Each goes with what belongs to it (a run with its "
+                     "timings, a power log with its samples). This cannot be undone.",
+                     nullptr, static_cast<int>(workspace_->damage().size()))
+                      .arg(QString::fromStdString(workspace_->path())),
+                  QMessageBox::Cancel, this);
+  box.setDetailedText(damage_list(workspace_->damage()));
+  QPushButton* remove = box.addButton(tr("Remove"), QMessageBox::DestructiveRole);
+  box.exec();
+  if (box.clickedButton() != remove) return;
+  try {
+    workspace_->remove_damaged();
+  } catch (const WorkspaceError& e) {
+    QMessageBox::critical(this, tr("Cannot remove the damaged items"), QString::fromUtf8(e.what()));
+  }
+  edits_->clear();  // undo steps may name what was removed
+  reload();
+}
+
 void MainWindow::update_title() {
   const QString name = !workspace_     ? tr("no workspace")
                        : untitled_dir_ ? tr("untitled")
                                        : QFileInfo(QString::fromStdString(workspace_->path())).fileName();
-  setWindowTitle(tr("BenchScope — %1").arg(name));
+  const bool read_only = workspace_ && workspace_->read_only();
+  setWindowTitle(read_only ? tr("BenchScope — %1 (read-only)").arg(name) : tr("BenchScope — %1").arg(name));
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

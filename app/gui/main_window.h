@@ -2,6 +2,7 @@
 #pragma once
 #include <QMainWindow>
 #include <QTemporaryDir>
+#include <QToolBar>
 #include <functional>
 #include <memory>
 
@@ -15,6 +16,7 @@ class QUndoStack;
 #include "power/log_voltage_dialog.h"
 #include "power/shared_traces.h"
 #include "store/workspace.h"
+#include "workspace/damage_banner.h"
 #include "workspace/import_controller.h"
 #include "workspace/workspace_tree.h"
 
@@ -133,6 +135,8 @@ class MainWindow : public QMainWindow {
   void update_title();
   void show_live_run(const FlopsRun& run);
   void store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled);
+  void show_damage();     // the read-only banner, after every (re)load
+  void remove_damaged();  // the banner's button: asks, then removes every damaged item
 
   std::unique_ptr<Workspace> workspace_;
   std::vector<StoredRun> runs_;
@@ -153,6 +157,8 @@ class MainWindow : public QMainWindow {
   PipelineView* pipeline_;
   EfficiencyView* efficiency_;
   BatteryView* battery_;
+  DamageBanner* damage_banner_ = nullptr;
+  QToolBar* damage_bar_ = nullptr;  // holds the banner above the views; hidden while nothing is damaged
   LensTab* lens_ = nullptr;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
   QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens

@@ -3,9 +3,10 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include "store/tables.h"
 
 namespace bs::store {
 
@@ -35,15 +36,27 @@ void write_series(const sqlite::Db& db, std::int64_t trace_id, std::int64_t seri
 
 std::vector<double> read_series(const sqlite::Db& db, std::int64_t trace_id, std::int64_t series, std::size_t samples,
                                 SampleProgress& progress) {
-  std::vector<double> out(samples);
-  Statement st(db, "SELECT first, vals FROM power_chunks WHERE trace_id = ? AND series = ? ORDER BY first");
-  st.bind(1, trace_id).bind(2, series);
-  std::size_t next = 0;
   const auto corrupt = [&](const std::string& why) {
     throw WorkspaceError(WorkspaceError::Kind::Corrupt, db.path() + ": power trace " + std::to_string(trace_id) +
                                                             ", series " + std::to_string(series) + ": " + why);
   };
+  // `samples` comes from the workspace too: it must equal what the chunks hold (their lengths, read without their
+  // content) before anything is allocated from it.
+  {
+    Statement len(db, "SELECT COALESCE(SUM(length(vals)), 0) FROM power_chunks WHERE trace_id = ? AND series = ?");
+    len.bind(1, trace_id).bind(2, series);
+    const std::int64_t stored = len.step() ? len.int64(0) : 0;
+    if (stored < 0 || stored % static_cast<std::int64_t>(sizeof(double)) != 0 ||
+        static_cast<std::uint64_t>(stored) / sizeof(double) != samples)
+      corrupt("holds " + std::to_string(stored / static_cast<std::int64_t>(sizeof(double))) +
+              " samples, its summary says " + std::to_string(samples));
+  }
+  std::vector<double> out(samples);
+  Statement st(db, "SELECT first, vals FROM power_chunks WHERE trace_id = ? AND series = ? ORDER BY first");
+  st.bind(1, trace_id).bind(2, series);
+  std::size_t next = 0;
   while (st.step()) {
+    if (st.int64(0) < 0) corrupt("a chunk starts at " + std::to_string(st.int64(0)));
     const auto first = static_cast<std::size_t>(st.int64(0));
     std::size_t bytes = 0;
     const void* p = st.blob(1, bytes);
@@ -60,52 +73,23 @@ std::vector<double> read_series(const sqlite::Db& db, std::int64_t trace_id, std
 }
 
 void write_summary(const sqlite::Db& db, std::int64_t trace_id, const std::vector<std::int64_t>& channel_ids,
-                   const TraceSummary& summary) {
+                   const TraceSummary& summary_of) {
   Statement tr(db, "UPDATE power_traces SET samples = ?, duration_s = ? WHERE id = ?");
-  tr.bind(1, static_cast<std::int64_t>(summary.samples)).bind(2, summary.duration_s).bind(3, trace_id).run();
+  tr.bind(1, static_cast<std::int64_t>(summary_of.samples)).bind(2, summary_of.duration_s).bind(3, trace_id).run();
+  // The same columns, and so the same JSON and BLOB, as an import writes (store/tables.cpp).
+  const auto column = [](const char* name) -> const Column<ChannelSummary>& {
+    for (const auto& c : power_channels_table().columns)
+      if (c.sql == name) return c;
+    throw std::logic_error(std::string("power_channels has no column ") + name);
+  };
+  const auto& summary = column("summary");
+  const auto& overview = column("overview");
   Statement ch(db, "UPDATE power_channels SET summary = ?, overview = ? WHERE id = ?");
-  for (std::size_t k = 0; k < channel_ids.size() && k < summary.channels.size(); ++k) {
-    const ChannelSummary& c = summary.channels[k];
-    const Summary& s = c.stats.summary;
-    const nlohmann::json j = {{"n", s.n},
-                              {"mean", s.mean},
-                              {"sd", s.sd},
-                              {"min", s.min},
-                              {"max", s.max},
-                              {"p5", c.stats.pct.p5},
-                              {"p50", c.stats.pct.p50},
-                              {"p95", c.stats.pct.p95},
-                              {"p99", c.stats.pct.p99},
-                              {"integral", c.integral}};
-    std::vector<double> pairs;
-    pairs.reserve(c.overview.t.size() * 2);
-    for (std::size_t i = 0; i < c.overview.t.size(); ++i) {
-      pairs.push_back(c.overview.t[i]);
-      pairs.push_back(c.overview.v[i]);
-    }
-    ch.bind(1, std::string_view(j.dump())).bind_doubles(2, pairs).bind(3, channel_ids[k]).run();
+  for (std::size_t k = 0; k < channel_ids.size() && k < summary_of.channels.size(); ++k) {
+    summary.bind(ch, 1, summary_of.channels[k]);
+    overview.bind(ch, 2, summary_of.channels[k]);
+    ch.bind(3, channel_ids[k]).run();
   }
-}
-
-SignalStats channel_stats_from_json(const std::string& text, double& integral) {
-  const auto j = nlohmann::json::parse(text, nullptr, false);
-  if (!j.is_object()) throw WorkspaceError(WorkspaceError::Kind::Corrupt, "power channel summary is not JSON: " + text);
-  SignalStats s;
-  try {
-    s.summary.n = j.at("n").get<std::size_t>();
-    s.summary.mean = j.at("mean").get<double>();
-    s.summary.sd = j.at("sd").get<double>();
-    s.summary.min = j.at("min").get<double>();
-    s.summary.max = j.at("max").get<double>();
-    s.pct.p5 = j.at("p5").get<double>();
-    s.pct.p50 = j.at("p50").get<double>();
-    s.pct.p95 = j.at("p95").get<double>();
-    s.pct.p99 = j.at("p99").get<double>();
-    integral = j.at("integral").get<double>();
-  } catch (const nlohmann::json::exception& e) {
-    throw WorkspaceError(WorkspaceError::Kind::Corrupt, std::string("power channel summary: ") + e.what());
-  }
-  return s;
 }
 
 }  // namespace bs::store

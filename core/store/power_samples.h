@@ -38,7 +38,5 @@ std::vector<double> read_series(const sqlite::Db& db, std::int64_t trace_id, std
 // Stores the summary of trace `trace_id` whose channels' row ids are `channel_ids` (the trace's channel order).
 void write_summary(const sqlite::Db& db, std::int64_t trace_id, const std::vector<std::int64_t>& channel_ids,
                    const TraceSummary& summary);
-// A channel's statistics from their stored JSON; throws WorkspaceError(Corrupt) on malformed text.
-SignalStats channel_stats_from_json(const std::string& text, double& integral);
 
 }  // namespace bs::store

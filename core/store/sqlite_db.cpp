@@ -5,13 +5,13 @@
 
 namespace bs::sqlite {
 
-Db::Db(const std::string& path, int flags) : path_(path) {
+Db::Db(const std::string& path, int flags, const std::string& label) : path_(label.empty() ? path : label) {
   const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
   if (rc != SQLITE_OK) {
     const std::string msg = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
     sqlite3_close(db_);
     db_ = nullptr;
-    throw WorkspaceError(WorkspaceError::Kind::Io, path + ": cannot open workspace: " + msg);
+    throw WorkspaceError(WorkspaceError::Kind::Io, path_ + ": cannot open workspace: " + msg);
   }
   sqlite3_extended_result_codes(db_, 1);
   sqlite3_busy_timeout(db_, 5000);
@@ -37,6 +37,14 @@ void Db::exec(const char* sql) const {
 std::int64_t Db::pragma_int(const char* pragma) const {
   Statement st(*this, pragma);
   return st.step() ? st.int64(0) : 0;
+}
+
+void Db::copy_from(const Db& source) const {
+  sqlite3_backup* b = sqlite3_backup_init(db_, "main", source.get(), "main");
+  if (!b) fail("cannot copy the workspace");
+  const int rc = sqlite3_backup_step(b, -1);
+  sqlite3_backup_finish(b);
+  if (rc != SQLITE_DONE) source.fail("cannot copy the workspace", WorkspaceError::Kind::Corrupt);
 }
 
 Statement::Statement(const Db& db, const char* sql) : db_(db) {
@@ -129,6 +137,8 @@ void Statement::reset() {
   sqlite3_clear_bindings(stmt_);
 }
 
+int Statement::type(int column) const { return sqlite3_column_type(stmt_, column); }
+std::size_t Statement::size(int column) const { return static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column)); }
 std::int64_t Statement::int64(int column) const { return sqlite3_column_int64(stmt_, column); }
 double Statement::real(int column) const { return sqlite3_column_double(stmt_, column); }
 std::optional<double> Statement::optional_real(int column) const {

@@ -15,14 +15,17 @@ namespace bs::sqlite {
 
 class Db {
  public:
-  Db(const std::string& path, int flags);
+  // `label` names the database in messages (the file a ":memory:" copy was made from); defaults to `path`.
+  Db(const std::string& path, int flags, const std::string& label = {});
   ~Db();
   Db(const Db&) = delete;
   Db& operator=(const Db&) = delete;
   sqlite3* get() const { return db_; }
   const std::string& path() const { return path_; }
   void exec(const char* sql) const;
-  std::int64_t pragma_int(const char* pragma) const;  // "PRAGMA user_version" -> its value
+  std::int64_t pragma_int(const char* pragma) const;
+  // Replaces this database's content with a copy of `source` (SQLite's online backup), e.g. into memory.
+  void copy_from(const Db& source) const;  // "PRAGMA user_version" -> its value
   [[noreturn]] void fail(std::string_view what, WorkspaceError::Kind kind = WorkspaceError::Kind::Io) const;
 
  private:
@@ -51,6 +54,8 @@ class Statement {
   bool step();  // true while a row is available
   void run();   // step to completion, then reset for reuse
   void reset();
+  int type(int column) const;          // SQLITE_INTEGER, SQLITE_FLOAT, SQLITE_TEXT, SQLITE_BLOB or SQLITE_NULL
+  std::size_t size(int column) const;  // bytes of a TEXT or BLOB value, without reading a BLOB's content
   std::int64_t int64(int column) const;
   double real(int column) const;
   std::optional<double> optional_real(int column) const;

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "analysis/power/trace_summary.h"
+#include "model/error_category.h"
 #include "model/import_batch.h"
+#include "model/import_limits.h"
 #include "util/cancel.h"
 
 namespace bs {
@@ -93,6 +95,21 @@ struct StoredDnnRun {
   DnnRun run;
 };
 
+// An item a workspace holds that breaks the import rules when read back (a value out of range, negative, not
+// finite, of the wrong type, an unknown enumeration, JSON beyond the limits, sample chunks that do not add up).
+// Every read leaves the item out; the workspace names it (CLI: a warning, GUI: a banner) and refuses writes until
+// the user removes it (Workspace::remove_damaged) or the import it came with.
+struct WorkspaceDamage {
+  std::string item;     // "run #4 (NUC / NUC GPU, OpenCL rotation2d)", "power trace #2 'idle' (Jetson TX2)"
+  std::string table;    // the table of the item's own row ("runs"), which removing the item deletes
+  std::int64_t id = 0;  // that row's id
+  ImportErrorCategory category = ImportErrorCategory::InvalidValue;
+  std::string reason;  // "run_samples.workers: -256 is outside 1 .. 1099511627776"
+};
+// "run #4 (NUC / NUC GPU, OpenCL rotation2d): run_samples.workers: -256 is outside 1 .. 1099511627776
+// [invalid-value]"
+std::string describe(const WorkspaceDamage& d);
+
 // One SQLite file holds a whole workspace: schema version + migrations, foreign keys on, WAL journal, and one
 // transaction per import so a crash or a cancel leaves either all of an import or none of it.
 class Workspace {
@@ -103,7 +120,13 @@ class Workspace {
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
-  explicit Workspace(const std::string& path);
+  //
+  // Every entity is read once on opening, with the import rules (store/row_map.h); what breaks them is listed by
+  // damage(), left out of every read, and makes the workspace read-only until the user removes it.
+  // ReadOnly opens an existing file without writing to it at all (no journal change, no migration on the file:
+  // an older schema is migrated in memory), for `benchscope-cli check`.
+  enum class OpenMode { ReadWrite, ReadOnly };
+  explicit Workspace(const std::string& path, OpenMode mode = OpenMode::ReadWrite);
   ~Workspace();
   Workspace(Workspace&&) noexcept;
   Workspace& operator=(Workspace&&) noexcept;
@@ -112,6 +135,18 @@ class Workspace {
 
   const std::string& path() const;
   int schema_version() const;
+
+  // The damaged items found so far (all of them after opening, except sample values, which are checked when the
+  // samples load), in the order found.
+  const std::vector<WorkspaceDamage>& damage() const;
+  // True while damaged (or opened ReadOnly): every write throws WorkspaceError (Corrupt naming the damage; when
+  // opened ReadOnly, Constraint),
+  // except remove_import() and remove_damaged(), which are the user's word.
+  bool read_only() const;
+  // Deletes every damaged item with everything that belongs to it (a device with its runs and result sets) in one
+  // transaction, then reads the workspace again; writable once nothing damaged is left. Returns how many items
+  // were removed.
+  std::size_t remove_damaged();
 
   // Stores everything in `batch` in one transaction and returns the new import id. `content_hash` identifies the
   // file bytes; when an import with the same hash exists, throws WorkspaceError(Constraint) naming that import.
@@ -178,13 +213,17 @@ class Workspace {
   void save_as(const std::string& new_path) const;
   // "ok" when PRAGMA integrity_check finds nothing, else its messages joined by newlines.
   std::string integrity_check() const;
+  // The limits reads apply (the import limits); tests and the check command may lower them.
+  const ImportLimits& limits() const;
+
+  // The state behind the interface, shared by the store's own sources (store/workspace_impl.h) and nothing else.
+  struct Impl;
 
   // The open database, for the store's own extension files (store/lens_store.h, store/log_settings_store.h),
   // which keep their tables' SQL beside their API instead of growing this class.
   const sqlite::Db& database() const;
 
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 

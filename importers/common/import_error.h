@@ -5,24 +5,9 @@
 #include <string>
 #include <string_view>
 
-namespace bs {
+#include "model/error_category.h"
 
-// What kind of problem a file has; the bad-input corpus (tests/data/bad) records the expected category per file.
-enum class ImportErrorCategory {
-  Io,             // cannot open / read
-  Empty,          // zero bytes or only whitespace
-  Binary,         // NUL bytes or not text where text is required
-  Encoding,       // not UTF-8 (e.g. UTF-16)
-  UnknownFormat,  // no importer recognises the content
-  Syntax,         // malformed JSON / CSV / text, including truncation
-  MissingField,   // a required field is absent
-  WrongType,      // a field has the wrong JSON type
-  InvalidValue,   // NaN, Infinity, negative time, out-of-range number, unknown enum text
-  TooLarge,       // file or a declared size exceeds a documented limit
-  TooDeep,        // JSON nesting beyond the limit
-  Unsupported,    // a newer format version, an unsupported variant
-};
-std::string_view to_string(ImportErrorCategory category);
+namespace bs {
 
 // Where in the file the problem is. line/column are 1-based; 0 means unknown. field is a JSON pointer
 // ("/samples/3/seconds/0") or a column name, empty when not applicable.

@@ -3,7 +3,7 @@
 # /usr/share/bash-completion/completions/benchscope-cli.
 _benchscope_cli() {
   local cur="${COMP_WORDS[COMP_CWORD]}"
-  local commands="battery bench compare completion devices efficiency figures frames help import lens peaks pipeline platforms power record-power report roofline run sensors synth-frame synth-power"
+  local commands="battery bench check compare completion devices efficiency figures frames help import lens peaks pipeline platforms power record-power report roofline run sensors synth-frame synth-power"
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -12,6 +12,7 @@ _benchscope_cli() {
   case "${COMP_WORDS[1]}" in
     battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
     bench) options="--help --arch --backend --batch --ceilings-only --columns --detect-scale --detect-workers --frames --input --isa --json --model --no-ceilings --platform --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers --workspace" ;;
+    check) options="--help --remove-damaged" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
     devices) options="--help --isa --json --measure-ceilings --table --workspace" ;;

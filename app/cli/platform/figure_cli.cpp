@@ -51,6 +51,7 @@ ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedDa
     fd.frame = data.frames.front();
   } else if (paths.size() == 1 && looks_like_workspace(paths[0])) {
     const Workspace ws(paths[0]);
+    warn_damage(ws);
     if (const auto frames = ws.frames(); !frames.empty()) fd.frame = load_frame(ws, frames.front(), cancel);
   }
   // A workspace's devices keep their stored colours (the GUI's); loose files get colours in order.

@@ -144,6 +144,7 @@ int run_battery(const std::vector<std::string>& raw, std::ostream& out, std::ost
     // Only an existing workspace: opening a missing path would create an empty one.
     if (!looks_like_workspace(*path)) throw UsageError("--workspace: " + *path + " is not a BenchScope workspace");
     ws = std::make_unique<Workspace>(*path);
+    warn_damage(*ws);
   }
   const BatterySetup setup = setup_from_args(args, ws.get());
   const BatteryPack& pack = setup.pack;

@@ -18,6 +18,7 @@
 #include "vision/frames/frame_image.h"
 #include "vision/frames/workspace_lens.h"
 #include "vision/reproject/triptych.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {
@@ -26,6 +27,7 @@ int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
   const ParsedArgs args = parse_args(raw_args, {}, {"--triptych", "--out", "--method", "--lens", "--window"});
   if (args.positional.size() != 1) throw UsageError("frames needs exactly one workspace");
   const Workspace ws(args.positional[0]);
+  warn_damage(ws);
   const auto frames = ws.frames();
   if (!args.value("--triptych")) {
     if (frames.empty()) {

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "workspace/inputs.h"
 
+#include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <set>
 
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/import_error.h"
@@ -11,10 +14,22 @@
 namespace bs::cli {
 
 bool looks_like_workspace(const std::string& path) {
+  // A .bsw that is not an SQLite file is a damaged workspace (opening it says so), not a data file to sniff.
+  std::error_code ec;
+  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".bsw") == 0 && std::filesystem::is_regular_file(path, ec))
+    return true;
   std::ifstream f(path, std::ios::binary);
   char magic[16] = {};
   f.read(magic, sizeof magic);
   return f.gcount() == 16 && std::string_view(magic, 16) == std::string_view("SQLite format 3\0", 16);
+}
+
+void warn_damage(const Workspace& ws) {
+  static std::set<std::string> shown;
+  for (const WorkspaceDamage& d : ws.damage()) {
+    std::string line = "benchscope-cli: warning: " + ws.path() + ": " + describe(d) + "; left out";
+    if (shown.insert(line).second) std::cerr << line << '\n';
+  }
 }
 
 namespace {
@@ -34,6 +49,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
     for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
     for (auto& d : ws.dnn_runs()) data.dnn_runs.push_back(std::move(d.run));
+    warn_damage(ws);  // after the reads: loading the samples may have found more
     add_foreign_sweeps(data);
     return data;
   }

@@ -9,6 +9,10 @@
 #include "model/import_batch.h"
 #include "util/cancel.h"
 
+namespace bs {
+class Workspace;
+}
+
 namespace bs::cli {
 
 // Folder expansion and the skip rule are the import service's (importers/common/import_service.h), so the data commands
@@ -18,7 +22,12 @@ inline std::vector<InputFile> expand_inputs(const std::vector<std::string>& path
   return expand_import_paths(paths);
 }
 
-// True when `path` is an SQLite file (a BenchScope workspace or at least a candidate for one).
+// Prints each damaged item of `ws` (left out of what the command reads) as one warning line on stderr, once per
+// process however often the command opens the workspace. Exit codes stay as they are: the rest is sound.
+void warn_damage(const Workspace& ws);
+
+// True when `path` is an SQLite file or an existing file named .bsw (a BenchScope workspace or at least a candidate for
+// one).
 bool looks_like_workspace(const std::string& path);
 
 // Everything the data commands need, whether it came from a workspace or from files.

@@ -212,9 +212,10 @@ class TestPowerLazy : public QObject {
     QTemporaryDir dir;
     const std::string path = dir.filePath("ws.bsw").toStdString();
     bs::Workspace(path).add_import(batch_of(make_trace(2 * bs::store::kChunkSamples)), "h1");
-    QVERIFY(RawDb(path, false).exec("DELETE FROM power_chunks WHERE series = 0 AND first > 0"));
+    // Read the summary first, then lose a chunk: loading the samples notices before it allocates from the count.
     bs::Workspace ws(path);
     auto lazy = ws.power_trace_summaries();
+    QVERIFY(RawDb(path, false).exec("DELETE FROM power_chunks WHERE series = 0 AND first > 0"));
     try {
       ws.load_power_samples(lazy[0]);
       QFAIL("a missing chunk was not noticed");
@@ -222,6 +223,14 @@ class TestPowerLazy : public QObject {
       QCOMPARE(e.kind(), bs::WorkspaceError::Kind::Corrupt);
       QVERIFY2(std::string(e.what()).find("ws.bsw") != std::string::npos, e.what());
     }
+    // Opened again, the trace is damaged: left out, named, and the workspace read-only (issue #37).
+    bs::Workspace again(path);
+    QVERIFY(again.power_trace_summaries().empty());
+    QCOMPARE(again.damage().size(), std::size_t{1});
+    QVERIFY2(again.damage()[0].item.find("power trace #1") == 0, again.damage()[0].item.c_str());
+    QVERIFY2(again.damage()[0].reason.find("holds 262144 samples, its summary says 524288") != std::string::npos,
+             again.damage()[0].reason.c_str());
+    QVERIFY(again.read_only());
   }
 };
 

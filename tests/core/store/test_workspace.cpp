@@ -126,8 +126,8 @@ class TestWorkspace : public QObject {
     cpu.measurements.push_back({"BM_Rotate/4096",
                                 "items_per_second",
                                 "1/s",
-                                {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
-                                 -std::numeric_limits<double>::infinity(), -0.0, 5e-324},
+                                // NaN keeps a repetition that gave no number; infinities are refused (below).
+                                {std::numeric_limits<double>::quiet_NaN(), -0.0, 5e-324},
                                 {{"mean", std::numeric_limits<double>::quiet_NaN()}}});
     cpu.measurements.push_back({"BM_Empty", "cpu_time", "s", {}, {}});
     bs::ResultSet gpu{"NVIDIA CUDA", "GTX 1080 Ti", bs::DeviceKind::Gpu, "OpenCL", "clpeak-text", {}, {}};
@@ -147,6 +147,30 @@ class TestWorkspace : public QObject {
     QCOMPARE(sets[0].color_index, 0);
     QCOMPARE(sets[1].color_index, 1);
     QCOMPARE(ws.imports()[0].result_set_count, std::int64_t{2});
+    QVERIFY(ws.damage().empty());
+  }
+
+  // A value no importer produces (an infinite rate) is written as the workspace always did, but read back it breaks
+  // the import rules: the set is left out and named (issue #37).
+  void infinite_measurement_is_damage() {
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("w.bsw").toStdString();
+    bs::ImportBatch batch;
+    batch.source_path = "bench.json";
+    batch.format = "google-benchmark-json";
+    bs::ResultSet cpu{"NUC", "i7-7567U", bs::DeviceKind::Cpu, "CPU", "google-benchmark-json", {}, {}};
+    cpu.measurements.push_back(
+        {"BM_Rotate/4096", "items_per_second", "1/s", {1.0, std::numeric_limits<double>::infinity()}, {}});
+    batch.result_sets = {cpu};
+    bs::Workspace(path).add_import(batch, "h");
+    const bs::Workspace ws(path);
+    QVERIFY(ws.result_sets().empty());
+    QCOMPARE(ws.damage().size(), std::size_t{1});
+    QVERIFY2(ws.damage()[0].item.find("result set #1 (NUC / i7-7567U") == 0, ws.damage()[0].item.c_str());
+    QVERIFY2(ws.damage()[0].reason.find("measurements.vals: value 1") != std::string::npos,
+             ws.damage()[0].reason.c_str());
+    QCOMPARE(ws.damage()[0].category, bs::ImportErrorCategory::InvalidValue);
+    QVERIFY(ws.read_only());
   }
 
   void power_traces_round_trip() {
