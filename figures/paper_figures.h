@@ -33,6 +33,7 @@ struct FigureOptions {
 
 struct FigureData {
   std::vector<FlopsRun> runs;
+  std::vector<std::string> run_labels;  // the user's names of `runs`, same order (may be shorter; "": none)
   std::vector<PowerTrace> traces;
   std::vector<PipelineTimings> pipelines;
   std::vector<DnnRun> inference_runs;  // bench dnn runs: the report's inference table

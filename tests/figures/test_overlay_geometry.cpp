@@ -3,7 +3,7 @@
 #include <QTest>
 
 #include "common/count_tickers.h"
-#include "common/overlay_geometry.h"
+#include "overlay_geometry.h"
 
 class TestOverlayGeometry : public QObject {
   Q_OBJECT
