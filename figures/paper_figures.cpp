@@ -317,6 +317,22 @@ QString paper_template_path() {
   }
 }
 
+PlotFigure figure_plot(QCustomPlot& plot, const FigureTemplate& t, const FigureData& data, const FigureOptions& o,
+                       QJsonArray& left_out) {
+  const PageSize p = page(o);
+  plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
+  style_axes(plot, t, o);
+  PlotFigure out;
+  out.sources = t.kind == "flops"       ? flops_figure(plot, t, data, o)
+                : t.kind == "inference" ? inference_figure(plot, t, data.inference_runs, o, left_out)
+                                        : current_figure(plot, t, data, o, left_out);
+  // The one figure layout (plot_export.h): legend below, sized to content, nothing clipped.
+  out.sized = layout_figure(plot, o);
+  const QSizeF size = figure_size_pt(out.sized);
+  plot.resize(static_cast<int>(std::lround(size.width())), static_cast<int>(std::lround(size.height())));
+  return out;
+}
+
 namespace {
 
 // Renders every template and table into out_dir; `out.files` grows as files are written, so a caller can remove
@@ -340,12 +356,11 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
         sources = render_triptych_figure(stem, o, files, figure_height_mm, data.frame ? &*data.frame : nullptr, cancel);
       } else {
         QCustomPlot plot;
-        plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
-        style_axes(plot, t, o);
+        FigureOptions sized;
         try {
-          sources = t.kind == "flops"       ? flops_figure(plot, t, data, o)
-                    : t.kind == "inference" ? inference_figure(plot, t, data.inference_runs, o, left_out)
-                                            : current_figure(plot, t, data, o, left_out);
+          PlotFigure figure = figure_plot(plot, t, data, o, left_out);
+          sources = figure.sources;
+          sized = figure.sized;
         } catch (const NoFigureData& e) {
           if (!t.optional) throw;
           // An optional figure without data: skipped, and said so (figures.json "skipped", the contents line).
@@ -357,10 +372,6 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
           ++done;
           continue;
         }
-        // The one figure layout (plot_export.h): legend below, sized to content, nothing clipped.
-        const FigureOptions sized = layout_figure(plot, o);
-        const QSizeF size = figure_size_pt(sized);
-        plot.resize(static_cast<int>(std::lround(size.width())), static_cast<int>(std::lround(size.height())));
         save_plot(plot, stem, sized, QString::fromStdString(t.title), files, &cancel);
         figure_height_mm = sized.height_mm;
       }
