@@ -22,13 +22,16 @@ std::string marker_of(const std::string& cell) {
   return open == std::string::npos || cell.back() != ']' ? std::string() : cell.substr(open + 1);
 }
 
-// Long platform names wrap at spaces onto a second line under their bar.
+// Platform names wrap at spaces into lines of about 11 characters under their bar, so neighbours never touch.
 QString wrapped(const std::string& name) {
-  QString s = QString::fromStdString(name);
-  if (s.size() <= 14) return s;
-  const int space = s.indexOf(' ', s.size() / 2 - 4);
-  if (space > 0) s[space] = '\n';
-  return s;
+  QStringList lines;
+  for (const QString& word : QString::fromStdString(name).split(' ', Qt::SkipEmptyParts)) {
+    if (!lines.isEmpty() && lines.back().size() + 1 + word.size() <= 11)
+      lines.back() += ' ' + word;
+    else
+      lines << word;
+  }
+  return lines.join('\n');
 }
 
 }  // namespace
@@ -75,7 +78,8 @@ std::string comparison_chart(QCustomPlot& plot, const std::vector<PlatformRow>& 
     const bool chosen = i < verdicts.size() && verdicts[i].recommended;
     ticker->addTick(k, wrapped(rows[i].platform) + (chosen ? QStringLiteral("\n(recommended)") : QString()));
     // The value over the bar; a flagged one says so with the footnote number.
-    QString text = QString::fromStdString(format_si(peak->peak.flops, "FLOPS"));
+    // In the axis' unit, three significant digits: short enough for neighbouring bars.
+    QString text = QString::number(gflops, 'f', gflops >= 100 ? 0 : gflops >= 1 ? 2 : 3);
     if (!peak->flags.empty()) text = flag_label(text, QString::fromStdString(marker));
     auto* label = new QCPItemText(&plot);
     label->setFont(small);
@@ -94,10 +98,12 @@ std::string comparison_chart(QCustomPlot& plot, const std::vector<PlatformRow>& 
   plot.xAxis->setRange(0.4, k + 0.6);
   plot.xAxis->grid()->setVisible(false);
   plot.yAxis->setScaleType(QCPAxis::stLogarithmic);
-  plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+  QSharedPointer<QCPAxisTickerLog> log_ticker(new QCPAxisTickerLog);
+  log_ticker->setTickCount(4);  // a few decades labelled: the chart is short
+  plot.yAxis->setTicker(log_ticker);
   plot.yAxis->setNumberFormat("gb");
   // Bars on a log axis start at the decade below the smallest; a decade above the largest leaves room for labels.
-  plot.yAxis->setRange(std::pow(10, std::floor(std::log10(lo)) - 0.3), std::pow(10, std::ceil(std::log10(hi * 3))));
+  plot.yAxis->setRange(std::pow(10, std::floor(std::log10(lo)) - 0.3), hi * 40);
   plot.yAxis->setLabel("Peak (GFLOPS)");
   for (QCPAxis* a : {plot.xAxis, plot.yAxis}) {
     a->setLabelFont(font);

@@ -218,6 +218,8 @@ void fit_tables(QTextDocument& doc, QPaintDevice* device) {
         }
       }
     double need = 0, extra = 0;
+    // Row headings on one line where they are short ("Energy per frame"): a quarter of the width at most.
+    if (!widest.empty()) widest[0] = std::max(widest[0], std::min(natural[0], text_w * 0.22));
     for (std::size_t c = 0; c < widest.size(); ++c) {
       widest[c] += pad;
       natural[c] += pad;

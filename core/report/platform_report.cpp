@@ -41,11 +41,13 @@ struct Measure {
 // "GPU peak (TFLOPS)" -> {"GPU peak", "TFLOPS"}: units go to their own column, the measure keeps the words.
 Measure split_header(const std::string& h) {
   static const std::vector<std::pair<std::string, Measure>> kNamed = {
-      {"GFLOPS/W (paper: peak / max power)", {"Efficiency, paper (peak / max power)", "GFLOPS/W"}},
-      {"GFLOPS/W (peak / mean power)", {"Efficiency (peak / mean power)", "GFLOPS/W"}},
+      {"GFLOPS/W (paper: peak / max power)", {"Efficiency (paper)", "GFLOPS/W"}},
+      {"GFLOPS/W (peak / mean power)", {"Efficiency (mean)", "GFLOPS/W"}},
       {"Of theoretical peak", {"Of theoretical peak", "%"}},
-      {"Frames per Wh", {"Frames per watt-hour", "1/Wh"}},
-      {"Failed (margin)", {"Constraints failed (margin)", ""}},
+      {"Energy per preprocessed frame (J)", {"Energy, preprocessing", "J"}},
+      {"Energy per inference (J)", {"Energy, inference", "J"}},
+      {"Frames per Wh", {"Frames per Wh", "1/Wh"}},
+      {"Failed (margin)", {"Failed (margin)", ""}},
   };
   for (const auto& [full, m] : kNamed)
     if (h == full) return m;
@@ -103,6 +105,8 @@ std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>&
     for (const auto& cells : table.rows) {
       std::string cell = c < cells.size() ? cells[c] : kDash;
       if (peak) cell = without_nested_parentheses(cell);
+      if (cell == "yes (recommended)") cell = "yes: chosen";  // "(recommended)" is the table's widest word
+      for (std::string::size_type at; (at = cell.find(" (mean power)")) != std::string::npos;) cell.erase(at, 13);
       if (m.unit == "%")
         if (const auto p = cell.find(" %"); p != std::string::npos) cell.erase(p, 2);
       any = any || cell != kDash;
@@ -113,7 +117,7 @@ std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>&
   // Column widths from the longest words at ~5 pt a character (DejaVu Serif at 8.5 pt averages 4.7 pt) plus
   // padding: as many platforms per table as fit the text width after the measure and unit columns. The PDF writer
   // then sizes the columns from the real font metrics.
-  constexpr double kCharPt = 5.0, kPadPt = 8, kMeasurePct = 25, kUnitPct = 11;
+  constexpr double kCharPt = 5.0, kPadPt = 8, kMeasurePct = 22, kUnitPct = 9;
   const double platform_pt = ReportBuilder::kTextWidthPt * (100 - kMeasurePct - kUnitPct) / 100;
   std::size_t widest = 6;
   for (std::size_t p = 0; p < table.rows.size(); ++p) {
@@ -130,7 +134,10 @@ std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>&
     if (table.rows.size() > per_table)
       t.caption += " (platforms " + std::to_string(first + 1) + " to " + std::to_string(last) + " of " +
                    std::to_string(table.rows.size()) + ")";
-    t.caption += ". Timings are mean \xC2\xB1 SD (n); " + std::string(kDash) + ": no data.";
+    t.caption +=
+        ". Timings are mean \xC2\xB1 SD (n); efficiency (paper): peak / max power, (mean): peak / mean "
+        "power; " +
+        std::string(kDash) + ": no data.";
     std::vector<std::string> head{"Measure", "Unit"};
     t.width_percent = {static_cast<int>(kMeasurePct), static_cast<int>(kUnitPct)};
     const int each = static_cast<int>((100 - kMeasurePct - kUnitPct) / static_cast<double>(last - first));
@@ -145,9 +152,10 @@ std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>&
       t.rows.push_back(std::move(cells));
     }
     // The flags' footnotes once, under the last part, in short: the reasons in full are in the platform details.
-    if (last == table.rows.size())
-      for (const std::string& note : table.notes)
-        t.notes.push_back(short_flag_line(note) + " Details: Platform details.");
+    if (last == table.rows.size()) {
+      for (const std::string& note : table.notes) t.notes.push_back(short_flag_line(note));
+      if (!table.notes.empty()) t.notes.push_back("In full: Platform details.");
+    }
     out.push_back(std::move(t));
   }
   return out;

@@ -92,7 +92,12 @@ int ReportBuilder::table(const ReportTable& t) {
     out_ << "</tr>\n";
   }
   out_ << "</table>\n";
-  for (const std::string& note : t.notes) out_ << "<p class=\"note\">" << html_escape(note) << "</p>\n";
+  // The notes run on in one paragraph, as a journal sets table footnotes: no half-empty line per note.
+  if (!t.notes.empty()) {
+    out_ << "<p class=\"note\">";
+    for (std::size_t i = 0; i < t.notes.size(); ++i) out_ << (i ? " " : "") << html_escape(t.notes[i]);
+    out_ << "</p>\n";
+  }
   return n;
 }
 

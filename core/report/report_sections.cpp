@@ -90,15 +90,20 @@ void decision_section(const ReportInput& in, ReportBuilder& b) {
   std::string others;
   for (const auto& [why, platforms] : reasons) others += (others.empty() ? "" : "; ") + platforms + ": " + why;
   if (!others.empty()) others += ".";
-  if (!others.empty()) b.paragraph("Not chosen: " + others, "note");
   // A flagged peak is shown as measured but ranked at most at its device's peak: said in a line, the detail with
   // the platform.
   std::string capped;
   for (const PlatformVerdict& v : in.verdicts)
     if (!v.ranking_note.empty()) capped += (capped.empty() ? "" : ", ") + v.platform;
-  if (!capped.empty())
-    b.html("<p class=\"note flags\">&#9888; Ranked at their device's peak, not at their flagged value: " +
-           html_escape(capped) + " (Platform details).</p>\n");
+  // One paragraph for both, so that page one keeps its room for the table.
+  if (!others.empty() || !capped.empty()) {
+    b.html("<p class=\"note\">");
+    if (!others.empty()) b.html("Not chosen: " + html_escape(others) + " ");
+    if (!capped.empty())
+      b.html("<span class=\"flags\">&#9888; Ranked at their device's peak, not at their flagged value: " +
+             html_escape(capped) + " (Platform details).</span>");
+    b.html("</p>\n");
+  }
 
   if (in.comparison_chart) b.figure(*in.comparison_chart);
   for (const ReportTable& t : platform_summary_tables(in.rows, in.verdicts)) b.table(t);

@@ -156,7 +156,7 @@ class TestPlatformReport : public QObject {
     in.rows = {a};
     const std::string html = bs::report_html(in);
     QVERIFY(html.find("5.25 (GPU X, OpenCL) [1]") != std::string::npos);
-    QVERIFY(html.find("[1] 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;. Details: Platform details.") !=
+    QVERIFY(html.find("[1] 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;. In full: Platform details.") !=
             std::string::npos);
     QVERIFY(html.find("&#9888; above_spec_peak</b>: 5.25 TFLOPS") != std::string::npos);
     QVERIFY(html.find("Power measured by: on-board sensor: INA3221 VDD_IN.") != std::string::npos);
