@@ -20,7 +20,7 @@ struct FigureOptions;
 QSizeF figure_size_pt(const FigureOptions& options);
 
 // At most this many legend rows: entries beyond them are named in a note under the legend instead.
-inline constexpr int kMaxLegendRows = 6;
+inline constexpr int kMaxLegendRows = 8;
 
 // Lays `plot` out as a figure at the options' width: the figure's fonts (axes, legend, labels) and line widths;
 // the legend below the axes, unframed, in as many columns as fit, entries that read and look the same merged into
