@@ -63,4 +63,13 @@ int backend_marker_shape(const QString& backend) {
   return QCPScatterStyle::ssCircle;
 }
 
+int run_marker_shape(const QString& backend, int repeat) {
+  if (repeat <= 0) return backend_marker_shape(backend);
+  static const std::array<int, 8> shapes = {QCPScatterStyle::ssCross,       QCPScatterStyle::ssPlus,
+                                            QCPScatterStyle::ssStar,        QCPScatterStyle::ssTriangleInverted,
+                                            QCPScatterStyle::ssCrossSquare, QCPScatterStyle::ssPlusSquare,
+                                            QCPScatterStyle::ssCrossCircle, QCPScatterStyle::ssPlusCircle};
+  return shapes[static_cast<std::size_t>(repeat - 1) % shapes.size()];
+}
+
 }  // namespace bs::ui

@@ -28,4 +28,9 @@ Qt::PenStyle dims_pen_style(int dims);
 // A stable scatter marker per backend family (OpenCL, CUDA, CPU ...) for greyscale-safe peak markers.
 int backend_marker_shape(const QString& backend);  // a QCPScatterStyle::ScatterShape value
 
+// Runs of one series (same device, backend and D) in one chart: the first keeps its backend's marker, the
+// `repeat`-th (1, 2, ...) takes a marker no backend uses, so repeated sweeps stay apart while colour stays the
+// device's and line style the D.
+int run_marker_shape(const QString& backend, int repeat);
+
 }  // namespace bs::ui

@@ -183,7 +183,6 @@ QJsonArray inference_figure(QCustomPlot& plot, const FigureTemplate& t, const st
     label_px = std::max(label_px, QFontMetricsF(small).horizontalAdvance(text->text()) + 6);
   const double fraction = std::min(0.6, label_px / axis_px);  // of the axis the labels need
   plot.xAxis->setRange(0, x_max / (1 - fraction) * 1.02);
-  wrap_legend(plot, o.font_pt, plot.width());
   return sources;
 }
 

@@ -14,14 +14,18 @@
 #include <set>
 #include <stdexcept>
 
+#include "analysis/peaks/flag_notes.h"
 #include "analysis/peaks/flops.h"
 #include "analysis/platform/paper_tables.h"
 #include "analysis/platform/platform_comparison.h"
 #include "analysis/platform/platform_table.h"
 #include "analysis/power/power.h"
+#include "chart_marks.h"
 #include "device_palette.h"
 #include "inference_figure.h"
 #include "plot_export.h"
+#include "plot_labels.h"
+#include "report/run_names.h"
 #include "triptych_figure.h"
 #include "util/resources.h"
 
@@ -67,9 +71,9 @@ void style_axes(QCustomPlot& plot, const FigureTemplate& t, const FigureOptions&
     plot.yAxis->setScaleType(QCPAxis::stLogarithmic);
     plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
   }
-  // The legend goes below the axes, in columns, so it can never cover data at any size.
+  // The legend goes below the axes, in columns, so it can never cover data at any size (layout_figure).
   plot.legend->setFont(small);
-  place_legend_below(plot, o.font_pt);
+  plot.legend->setVisible(true);
 }
 
 // "Jetson GPU (Pascal, 256 cores)" -> "Jetson GPU", "CPU SIMD (AVX/SSE)" -> "CPU SIMD": the full names stay in
@@ -93,17 +97,39 @@ QJsonObject source_of(const FlopsRun& r) {
           {"origin", QString::fromUtf8(to_string(r.provenance.origin).data())}};
 }
 
-// Fills the plot with the template's FLOPS series; returns the data sources.
+// Fills the plot with the template's FLOPS series; returns the data sources. Series that would read alike add what
+// differs (run label, date and time, host, N); repeats of one series take their own marker. A flagged peak is drawn
+// where it was measured, as a hollow marker labelled "⚠[n]", and the figure's note gives footnote n.
 QJsonArray flops_figure(QCustomPlot& plot, const FigureTemplate& t, const FigureData& d, const FigureOptions& o) {
   QJsonArray sources;
   double y_max = 0, x_min = 1e300, x_max = 0;
   std::set<int> dims;  // the legend names D only when the figure shows more than one
-  for (const FlopsRun& run : d.runs)
-    if (t.selects(run)) dims.insert(run.dims);
-  for (const FlopsRun& run : d.runs) {
-    if (!t.selects(run)) continue;
+  std::vector<std::size_t> chosen;
+  for (std::size_t i = 0; i < d.runs.size(); ++i)
+    if (t.selects(d.runs[i]) && !flops_curve(d.runs[i]).empty()) {
+      dims.insert(d.runs[i].dims);
+      chosen.push_back(i);
+    }
+  std::vector<RunIdentity> identities;
+  for (const std::size_t i : chosen) {
+    const FlopsRun& run = d.runs[i];
+    std::string name = short_device(run.device) + ", " + short_device(run.backend);
+    if (dims.size() > 1) name += ", D = " + std::to_string(run.dims);
+    identities.push_back(run_identity(run, name, i < d.run_labels.size() ? d.run_labels[i] : std::string()));
+  }
+  const std::vector<std::string> names = distinct_names(identities);
+  std::map<std::string, int> repeats;
+  FlagNotes notes;
+  auto* labels = new AnchoredLabels(&plot);
+  struct Flagged {
+    double x, y;
+    QString text;
+    QColor color;
+  };
+  std::vector<Flagged> flagged;
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    const FlopsRun& run = d.runs[chosen[k]];
     const auto curve = flops_curve(run);
-    if (curve.empty()) continue;
     QVector<double> xs, ys;
     for (const CurvePoint& p : curve) {
       xs.push_back(static_cast<double>(p.workers));
@@ -116,20 +142,46 @@ QJsonArray flops_figure(QCustomPlot& plot, const FigureTemplate& t, const Figure
     g->setData(xs, ys, true);
     const QColor color = device_color(color_of(d, run.platform, run.device));
     g->setPen(QPen(color, o.line_width_pt, dims_pen_style(run.dims)));
-    // Backend by marker (a few per curve): two backends of one device stay apart in colour and in greyscale.
+    // Backend by marker (a few per curve): two backends of one device stay apart in colour and in greyscale; a
+    // repeated run of the same series takes a marker of its own.
+    const int repeat = repeats[run.platform + '\x1f' + identities[k].base]++;
     g->setScatterStyle(QCPScatterStyle(
-        static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(QString::fromStdString(run.backend))), color,
-        Qt::white, o.font_pt * 0.55));
+        static_cast<QCPScatterStyle::ScatterShape>(run_marker_shape(QString::fromStdString(run.backend), repeat)),
+        color, Qt::white, o.font_pt * 0.55));
     g->setScatterSkip(std::max(1, static_cast<int>(xs.size()) / 8));
-    std::string name = short_device(run.device) + ", " + short_device(run.backend);
-    if (dims.size() > 1) name += ", D = " + std::to_string(run.dims);
-    g->setName(QString::fromStdString(name));
-    sources.append(source_of(run));
+    g->setName(QString::fromStdString(names[k]));
+    labels->add_curve(g);
+    QJsonObject source = source_of(run);
+    const std::vector<PeakRow> peak = peak_table(std::span<const FlopsRun>(&run, 1));
+    if (!peak.empty() && !peak.front().flags.empty()) {
+      const PeakRow& p = peak.front();
+      const std::string marker = notes.marker(p.flags);
+      auto* point = plot.addGraph();
+      point->setData({static_cast<double>(p.peak.workers)}, {p.peak.flops / t.y_scale});
+      point->setLineStyle(QCPGraph::lsNone);
+      point->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, color, color, o.font_pt * 0.9));
+      mark_flagged_points(point, color);
+      point->removeFromLegend();
+      flagged.push_back({static_cast<double>(p.peak.workers), p.peak.flops / t.y_scale,
+                         flag_label(QString::number(p.peak.flops / t.y_scale, 'f', 2), QString::fromStdString(marker)),
+                         color});
+      QJsonArray flags;
+      for (const PlausibilityFlag& f : p.flags)
+        flags.append(
+            QJsonObject{{"code", QString::fromStdString(f.code)}, {"reason", QString::fromStdString(f.reason)}});
+      source["flags"] = flags;
+    }
+    sources.append(source);
   }
-  if (plot.graphCount() == 0) throw NoFigureData(t.id + ": no runs match the template's selection");
+  if (chosen.empty()) throw NoFigureData(t.id + ": no runs match the template's selection");
+  // Labels in order of value: where two would collide, the higher keeps its label.
+  std::stable_sort(flagged.begin(), flagged.end(), [](const Flagged& a, const Flagged& b) { return a.y > b.y; });
+  for (const Flagged& f : flagged) labels->add(f.x, f.y, f.text, f.color)->setColor(kFlagColor);
+  // The footnotes in short (the first sentence of each reason); figures.json and the report carry them whole.
+  for (const std::string& line : notes.lines())
+    add_figure_note(plot, QStringLiteral("\u26A0") + QString::fromStdString(short_flag_line(line)));
   plot.xAxis->setRange(t.log_x ? std::max(1.0, x_min) : 0, x_max);
   plot.yAxis->setRange(0, y_max * 1.08);
-  wrap_legend(plot, o.font_pt, plot.width());
   return sources;
 }
 
@@ -137,6 +189,9 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
                           QJsonArray& left_out) {
   QJsonArray sources;
   double y_max = 0, x_max = 0;
+  std::set<int> used_colors;
+  std::vector<QCPGraph*> trace_graphs;
+  std::vector<RunIdentity> trace_ids;
   const auto leave_out = [&](const PowerTrace& trace, const std::string& reason) {
     left_out.append(QJsonObject{{"platform", QString::fromStdString(trace.platform)},
                                 {"file", QString::fromStdString(trace.provenance.source_file)},
@@ -173,21 +228,28 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
     x_max = std::max(x_max, trace.time_s.back() - trace.time_s.front());
     QCPGraph* g = plot.addGraph();
     g->setData(xs, ys, true);
-    // The platform's colour: its first device's (lowest index), as in the Power and Battery tabs.
+    // The platform's colour: its first device's (lowest index), as in the Power and Battery tabs; a second log of
+    // a platform takes the next colour no other log of this figure has, so two logs never share one.
     int color = -1;
     for (const auto& [key, c] : d.colors)
       if (key.first == trace.platform && (color < 0 || c < color)) color = c;
     color = std::max(color, 0);
+    while (used_colors.count(color)) ++color;
+    used_colors.insert(color);
     g->setPen(QPen(device_color(color), o.line_width_pt * 0.6));
     g->setName(QString::fromStdString(trace.platform));
+    trace_graphs.push_back(g);
+    trace_ids.push_back({trace.platform, "", trace.provenance.date, trace.provenance.host, trace.label});
     sources.append(QJsonObject{{"platform", QString::fromStdString(trace.platform)},
                                {"file", QString::fromStdString(trace.provenance.source_file)},
                                {"origin", QString::fromUtf8(to_string(trace.provenance.origin).data())}});
   }
   if (plot.graphCount() == 0) throw NoFigureData(t.id + ": no current logs for the template's platforms");
+  // Two logs of one platform: the legend adds what differs (the log's label, date and time, host, file).
+  const std::vector<std::string> names = distinct_names(trace_ids);
+  for (std::size_t i = 0; i < trace_graphs.size(); ++i) trace_graphs[i]->setName(QString::fromStdString(names[i]));
   plot.xAxis->setRange(0, x_max);
   plot.yAxis->setRange(0, y_max * 1.1);
-  wrap_legend(plot, o.font_pt, plot.width());
   return sources;
 }
 
@@ -229,7 +291,15 @@ void write_text(const QString& path, const std::string& text, QStringList& files
 FigureData select_figure_data(FigureData d, FigureDataChoice choice) {
   if (choice == FigureDataChoice::All) return d;
   const auto measured = [](const Provenance& p) { return p.origin != DataOrigin::Reconstructed; };
-  std::erase_if(d.runs, [&](const FlopsRun& r) { return measured(r.provenance); });
+  std::vector<FlopsRun> runs;
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < d.runs.size(); ++i) {
+    if (measured(d.runs[i].provenance)) continue;
+    runs.push_back(std::move(d.runs[i]));
+    labels.push_back(i < d.run_labels.size() ? d.run_labels[i] : std::string());
+  }
+  d.runs = std::move(runs);
+  d.run_labels = std::move(labels);
   std::erase_if(d.traces, [&](const PowerTrace& t) { return measured(t.provenance); });
   std::erase_if(d.pipelines, [](const PipelineTimings& p) { return p.source.origin != DataOrigin::Reconstructed; });
   std::erase_if(d.inference_runs, [](const DnnRun& r) { return r.provenance.origin != DataOrigin::Reconstructed; });
@@ -245,6 +315,22 @@ QString paper_template_path() {
   } catch (const std::exception&) {
     return QStringLiteral(BENCHSCOPE_SOURCE_DIR "/resources/figures/paper-2018.json");
   }
+}
+
+PlotFigure figure_plot(QCustomPlot& plot, const FigureTemplate& t, const FigureData& data, const FigureOptions& o,
+                       QJsonArray& left_out) {
+  const PageSize p = page(o);
+  plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
+  style_axes(plot, t, o);
+  PlotFigure out;
+  out.sources = t.kind == "flops"       ? flops_figure(plot, t, data, o)
+                : t.kind == "inference" ? inference_figure(plot, t, data.inference_runs, o, left_out)
+                                        : current_figure(plot, t, data, o, left_out);
+  // The one figure layout (plot_export.h): legend below, sized to content, nothing clipped.
+  out.sized = layout_figure(plot, o);
+  const QSizeF size = figure_size_pt(out.sized);
+  plot.resize(static_cast<int>(std::lround(size.width())), static_cast<int>(std::lround(size.height())));
+  return out;
 }
 
 namespace {
@@ -270,12 +356,11 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
         sources = render_triptych_figure(stem, o, files, figure_height_mm, data.frame ? &*data.frame : nullptr, cancel);
       } else {
         QCustomPlot plot;
-        plot.resize(static_cast<int>(p.w_pt), static_cast<int>(p.h_pt));
-        style_axes(plot, t, o);
+        FigureOptions sized;
         try {
-          sources = t.kind == "flops"       ? flops_figure(plot, t, data, o)
-                    : t.kind == "inference" ? inference_figure(plot, t, data.inference_runs, o, left_out)
-                                            : current_figure(plot, t, data, o, left_out);
+          PlotFigure figure = figure_plot(plot, t, data, o, left_out);
+          sources = figure.sources;
+          sized = figure.sized;
         } catch (const NoFigureData& e) {
           if (!t.optional) throw;
           // An optional figure without data: skipped, and said so (figures.json "skipped", the contents line).
@@ -286,15 +371,6 @@ void render_all(const std::vector<FigureTemplate>& templates, const FigureData& 
           out.contents << QString::fromStdString(t.id + ": not drawn (optional figure): " + reason);
           ++done;
           continue;
-        }
-        FigureOptions sized = o;
-        if (o.height_mm <= 0) {
-          // Automatic height: axes at 0.62 x width (0.8 for narrow figures, so the axis label fits), plus what the
-          // legend below them needs.
-          const double legend_pt = plot.legend->minimumOuterSizeHint().height();
-          const double axes_pt = p.w_pt * (o.width_mm < 80 ? 0.8 : 0.62);
-          sized.height_mm = (axes_pt + legend_pt) * 25.4 / 72.0;
-          plot.resize(static_cast<int>(p.w_pt), static_cast<int>(std::lround(axes_pt + legend_pt)));
         }
         save_plot(plot, stem, sized, QString::fromStdString(t.title), files, &cancel);
         figure_height_mm = sized.height_mm;

@@ -3,6 +3,7 @@
 // Renders a figure template set (resources/figures/paper-2018.json) from a workspace's data into PDF, SVG and PNG
 // files at journal sizes, plus the paper's Tables 1 and 2 (LaTeX, CSV) and figures.json listing every file with
 // its data sources and their provenance. Needs a QApplication (QT_QPA_PLATFORM=offscreen works).
+#include <QJsonArray>
 #include <QString>
 #include <QStringList>
 #include <map>
@@ -20,6 +21,8 @@
 #include "report/figure_template.h"
 #include "util/cancel.h"
 
+class QCustomPlot;
+
 namespace bs::ui {
 
 struct FigureOptions {
@@ -33,6 +36,7 @@ struct FigureOptions {
 
 struct FigureData {
   std::vector<FlopsRun> runs;
+  std::vector<std::string> run_labels;  // the user's names of `runs`, same order (may be shorter; "": none)
   std::vector<PowerTrace> traces;
   std::vector<PipelineTimings> pipelines;
   std::vector<DnnRun> inference_runs;  // bench dnn runs: the report's inference table
@@ -64,6 +68,16 @@ struct FigureOutput {
 FigureOutput render_figures(const std::vector<FigureTemplate>& templates, const FigureData& data,
                             const QString& out_dir, const FigureOptions& options, const CancelToken& cancel,
                             const std::function<void(int done, int total, const QString& what)>& progress = {});
+
+// A plot template's figure (kind flops, current or inference) drawn into `plot` and laid out at the options' size by
+// the one figure layout (plot_export.h): what render_figures saves. `sized` has the automatic height resolved.
+// Throws NoFigureData when the template selects nothing; `left_out` gets what was left out and why.
+struct PlotFigure {
+  QJsonArray sources;
+  FigureOptions sized;
+};
+PlotFigure figure_plot(QCustomPlot& plot, const FigureTemplate& t, const FigureData& data, const FigureOptions& options,
+                       QJsonArray& left_out);
 
 // The bundled template of the paper's figures.
 QString paper_template_path();

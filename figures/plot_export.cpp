@@ -3,10 +3,12 @@
 
 #include <qcustomplot.h>
 #include <QFile>
+#include <QFontMetricsF>
 #include <QSvgGenerator>
 #include <QTemporaryDir>
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -15,17 +17,27 @@
 namespace bs::ui {
 namespace {
 
-// A legend shown over the axes (the views' layout) while it is moved below them for an export, and put back after.
-class LegendBelow {
+constexpr const char* kNoteName = "bs-legend-note";        // objectName of the note element under the legend
+constexpr const char* kNotesProperty = "bs_figure_notes";  // the figure's own note lines (QStringList)
+
+// Everything layout_figure changes on a view's plot, saved so that export_plot can put the view back as it was.
+class ViewState {
  public:
-  explicit LegendBelow(QCustomPlot& plot) : plot_(plot) {
+  explicit ViewState(QCustomPlot& plot) : plot_(plot) {
+    for (QCPAxis* a : plot.axisRect()->axes()) axes_.push_back({a, a->labelFont(), a->tickLabelFont(), a->range()});
+    legend_font_ = plot.legend->font();
+    for (int i = 0; i < plot.plottableCount(); ++i) {
+      QCPAbstractPlottable* p = plot.plottable(i);
+      plottables_.push_back({p, p->name(), p->pen().widthF(), plot.legend->hasItemWithPlottable(p)});
+    }
+    for (int i = 0; i < plot.itemCount(); ++i)
+      if (auto* t = qobject_cast<QCPItemText*>(plot.item(i))) texts_.push_back({t, t->font(), t->visible()});
     QCPLayoutInset* inset = plot.axisRect()->insetLayout();
     for (int i = 0; i < inset->elementCount(); ++i)
       if (inset->elementAt(i) == plot.legend) {
-        moved_ = plot.legend->visible();
+        legend_inside_ = true;
         alignment_ = inset->insetAlignment(i);
       }
-    if (!moved_) return;
     border_ = plot.legend->borderPen();
     brush_ = plot.legend->brush();
     wrap_ = plot.legend->wrap();
@@ -33,14 +45,30 @@ class LegendBelow {
     row_spacing_ = plot.legend->rowSpacing();
     column_spacing_ = plot.legend->columnSpacing();
     icon_size_ = plot.legend->iconSize();
+    legend_visible_ = plot.legend->visible();
     for (int i = 0; i < plot.legend->itemCount(); ++i) item_fonts_.push_back(plot.legend->item(i)->font());
   }
-  bool moved() const { return moved_; }
+
   void restore() {
-    if (!moved_) return;
-    plot_.plotLayout()->take(plot_.legend);
-    plot_.plotLayout()->simplify();
-    plot_.axisRect()->insetLayout()->addElement(plot_.legend, alignment_);
+    // The note, and the legend back where it was (over the axes, in its corner) with its own entries in order.
+    if (auto* note = plot_.findChild<QCPTextElement*>(kNoteName)) {
+      plot_.plotLayout()->remove(note);
+      plot_.plotLayout()->simplify();
+    }
+    if (legend_inside_ && plot_.legend->layout() != plot_.axisRect()->insetLayout()) {
+      plot_.plotLayout()->take(plot_.legend);
+      plot_.plotLayout()->simplify();
+      plot_.axisRect()->insetLayout()->addElement(plot_.legend, alignment_);
+    }
+    plot_.legend->clearItems();
+    for (const Plottable& p : plottables_) {
+      p.plottable->setName(p.name);
+      QPen pen = p.plottable->pen();
+      pen.setWidthF(p.pen_width);
+      p.plottable->setPen(pen);
+      if (p.in_legend) p.plottable->addToLegend(plot_.legend);
+    }
+    plot_.legend->setVisible(legend_visible_);
     plot_.legend->setBorderPen(border_);
     plot_.legend->setBrush(brush_);
     plot_.legend->setFillOrder(fill_order_, false);
@@ -49,14 +77,43 @@ class LegendBelow {
     plot_.legend->setRowSpacing(row_spacing_);
     plot_.legend->setColumnSpacing(column_spacing_);
     plot_.legend->setIconSize(icon_size_);
+    plot_.legend->setFont(legend_font_);
     for (int i = 0; i < plot_.legend->itemCount() && i < static_cast<int>(item_fonts_.size()); ++i)
       plot_.legend->item(i)->setFont(item_fonts_[static_cast<std::size_t>(i)]);
-    moved_ = false;
+    for (const Axis& a : axes_) {
+      a.axis->setLabelFont(a.label);
+      a.axis->setTickLabelFont(a.ticks);
+      a.axis->setRange(a.range);
+    }
+    for (const Text& t : texts_) {
+      t.item->setFont(t.font);
+      t.item->setVisible(t.visible);
+    }
   }
 
  private:
+  struct Axis {
+    QCPAxis* axis;
+    QFont label, ticks;
+    QCPRange range;
+  };
+  struct Plottable {
+    QCPAbstractPlottable* plottable;
+    QString name;
+    double pen_width;
+    bool in_legend;
+  };
+  struct Text {
+    QCPItemText* item;
+    QFont font;
+    bool visible;
+  };
   QCustomPlot& plot_;
-  bool moved_ = false;
+  std::vector<Axis> axes_;
+  std::vector<Plottable> plottables_;
+  std::vector<Text> texts_;
+  QFont legend_font_;
+  bool legend_inside_ = false, legend_visible_ = false;
   Qt::Alignment alignment_;
   QPen border_;
   QBrush brush_;
@@ -67,39 +124,13 @@ class LegendBelow {
   std::vector<QFont> item_fonts_;
 };
 
-// What export_plot changes and puts back.
-struct PlotLook {
-  struct AxisLook {
-    QCPAxis* axis;
-    QFont label, ticks;
-  };
-  std::vector<AxisLook> axes;
-  QFont legend;
-  std::vector<std::pair<QCPGraph*, double>> pen_widths;
-
-  explicit PlotLook(QCustomPlot& plot) : legend(plot.legend->font()) {
-    for (QCPAxis* a : plot.axisRect()->axes()) axes.push_back({a, a->labelFont(), a->tickLabelFont()});
-    for (int i = 0; i < plot.graphCount(); ++i) pen_widths.emplace_back(plot.graph(i), plot.graph(i)->pen().widthF());
-  }
-  void restore(QCustomPlot& plot) const {
-    for (const AxisLook& a : axes) {
-      a.axis->setLabelFont(a.label);
-      a.axis->setTickLabelFont(a.ticks);
-    }
-    plot.legend->setFont(legend);
-    for (const auto& [g, w] : pen_widths) {
-      QPen p = g->pen();
-      p.setWidthF(w);
-      g->setPen(p);
-    }
-  }
-};
-
 void apply_figure_look(QCustomPlot& plot, const FigureOptions& o) {
   QFont f("DejaVu Sans");
   f.setPointSizeF(o.font_pt);
   QFont small = f;
   small.setPointSizeF(o.font_pt * 0.9);
+  QFont label = f;
+  label.setPointSizeF(o.font_pt * 0.85);
   for (QCPAxis* a : plot.axisRect()->axes()) {
     a->setLabelFont(f);
     a->setTickLabelFont(small);
@@ -107,28 +138,52 @@ void apply_figure_look(QCustomPlot& plot, const FigureOptions& o) {
   plot.legend->setFont(small);
   for (int i = 0; i < plot.graphCount(); ++i) {
     QPen p = plot.graph(i)->pen();
+    if (p.style() == Qt::NoPen) continue;
     p.setWidthF(o.line_width_pt);
     plot.graph(i)->setPen(p);
   }
+  for (int i = 0; i < plot.itemCount(); ++i)
+    if (auto* t = qobject_cast<QCPItemText*>(plot.item(i))) t->setFont(label);
 }
 
-}  // namespace
-
 void place_legend_below(QCustomPlot& plot, double font_pt) {
-  plot.legend->setVisible(true);
   plot.legend->setBorderPen(Qt::NoPen);
   plot.legend->setBrush(Qt::NoBrush);
   plot.legend->setRowSpacing(0);
   plot.legend->setColumnSpacing(static_cast<int>(font_pt * 1.5));
   plot.legend->setIconSize(static_cast<int>(font_pt * 2.5), static_cast<int>(font_pt));
-  plot.axisRect()->insetLayout()->take(plot.legend);
-  plot.plotLayout()->addElement(1, 0, plot.legend);
-  plot.plotLayout()->setRowStretchFactor(1, 0.001);
+  if (plot.legend->layout() == plot.axisRect()->insetLayout()) plot.axisRect()->insetLayout()->take(plot.legend);
+  if (plot.legend->layout() != plot.plotLayout()) {
+    plot.plotLayout()->addElement(1, 0, plot.legend);
+    plot.plotLayout()->setRowStretchFactor(1, 0.001);
+  }
   plot.plotLayout()->setRowSpacing(0);
 }
 
+// Entries that read and look alike (repeated runs of one series) become one: "name (3 runs)".
+void merge_alike_entries(QCustomPlot& plot) {
+  std::map<QString, std::pair<QCPAbstractPlottable*, int>> seen;
+  std::vector<QCPAbstractPlottable*> in_order;
+  for (int i = 0; i < plot.legend->itemCount(); ++i)
+    if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i))) in_order.push_back(item->plottable());
+  for (QCPAbstractPlottable* p : in_order) {
+    QString key = p->name() + '|' + p->pen().color().name() + '|' + QString::number(p->pen().style());
+    if (auto* g = qobject_cast<QCPGraph*>(p)) key += '|' + QString::number(g->scatterStyle().shape());
+    const auto it = seen.find(key);
+    if (it == seen.end()) {
+      seen[key] = {p, 1};
+      continue;
+    }
+    ++it->second.second;
+    p->removeFromLegend(plot.legend);
+  }
+  for (auto& [key, entry] : seen)
+    if (entry.second > 1) entry.first->setName(entry.first->name() + QStringLiteral(" (%1 runs)").arg(entry.second));
+}
+
+// As many legend columns as fit `width_pt` (measured by the legend's own layout, fonts included); a smaller font
+// (down to 5 pt) when even one column is too wide.
 void wrap_legend(QCustomPlot& plot, double font_pt, double width_pt) {
-  // Fewer columns first; if even one column is too wide for a narrow figure, a smaller legend font (down to 5 pt).
   for (double pt = font_pt * 0.9; pt >= 5; pt -= 0.5) {
     QFont f = plot.legend->font();
     f.setPointSizeF(pt);
@@ -143,10 +198,141 @@ void wrap_legend(QCustomPlot& plot, double font_pt, double width_pt) {
   }
 }
 
+// `text` broken into lines at spaces so that each fits `width_pt` in `metrics`.
+QStringList wrapped(const QString& text, const QFontMetricsF& metrics, double width_pt) {
+  QStringList lines;
+  QString line;
+  for (const QString& word : text.split(' ', Qt::SkipEmptyParts)) {
+    const QString trial = line.isEmpty() ? word : line + ' ' + word;
+    if (!line.isEmpty() && metrics.horizontalAdvance(trial) > width_pt) {
+      lines << line;
+      line = word;
+    } else {
+      line = trial;
+    }
+  }
+  if (!line.isEmpty()) lines << line;
+  return lines;
+}
+
+// Entries beyond kMaxLegendRows rows leave the legend; returns the sentence that names them ("" when all fit).
+QString cap_legend(QCustomPlot& plot) {
+  const int columns = std::max(1, plot.legend->wrap());
+  const int keep = kMaxLegendRows * columns;
+  if (plot.legend->itemCount() <= keep) return {};
+  QStringList rest;
+  std::vector<QCPAbstractPlottable*> leaving;
+  for (int i = keep - 1; i < plot.legend->itemCount(); ++i)  // one slot less: the note says where they went
+    if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i))) leaving.push_back(item->plottable());
+  for (QCPAbstractPlottable* p : leaving) {
+    rest << p->name();
+    p->removeFromLegend(plot.legend);
+  }
+  plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+  return QStringLiteral("Also drawn (%1 more): %2.").arg(rest.size()).arg(rest.join("; "));
+}
+
+// The note under the legend: the figure's own lines, then the entries the legend left out (at most three lines of
+// them, then how many more), each wrapped to the width.
+void add_note(QCustomPlot& plot, const QString& also_drawn, double font_pt, double width_pt) {
+  QFont f("DejaVu Sans");
+  f.setPointSizeF(std::max(5.0, font_pt * 0.8));
+  const QFontMetricsF metrics(f);
+  QStringList lines;
+  for (const QString& note : plot.property(kNotesProperty).toStringList())
+    lines << wrapped(note, metrics, width_pt * 0.97);
+  if (!also_drawn.isEmpty()) {
+    QStringList rest = wrapped(also_drawn, metrics, width_pt * 0.97);
+    if (rest.size() > 3) {
+      const int more = static_cast<int>(also_drawn.count(';') + 1 - rest.mid(0, 3).join(' ').count(';'));
+      rest = rest.mid(0, 3);
+      rest.back() += QStringLiteral(" … and %1 more.").arg(std::max(1, more));
+    }
+    lines << rest;
+  }
+  if (lines.isEmpty()) return;
+  auto* note = new QCPTextElement(&plot, lines.join('\n'), f);
+  note->setObjectName(kNoteName);
+  note->setTextFlags(Qt::AlignLeft | Qt::AlignTop);
+  note->setTextColor(QColor(60, 60, 60));
+  note->setMargins(QMargins(4, 2, 4, 2));
+  plot.plotLayout()->addElement(plot.plotLayout()->rowCount(), 0, note);
+  plot.plotLayout()->setRowStretchFactor(plot.plotLayout()->rowCount() - 1, 0.001);
+}
+
+// Widens each value axis so that every visible plottable's values in the shown key range fit: a curve is never cut
+// off at the top of a figure because the view on screen was zoomed or the legend made room.
+void fit_value_axes(QCustomPlot& plot) {
+  std::map<QCPAxis*, QCPRange> need;
+  for (int i = 0; i < plot.plottableCount(); ++i) {
+    QCPAbstractPlottable* p = plot.plottable(i);
+    if (!p->visible() || !p->keyAxis() || !p->valueAxis()) continue;
+    bool found = false;
+    const QCP::SignDomain sign = p->valueAxis()->scaleType() == QCPAxis::stLogarithmic ? QCP::sdPositive : QCP::sdBoth;
+    const QCPRange r = p->getValueRange(found, sign, p->keyAxis()->range());
+    if (!found) continue;
+    auto it = need.find(p->valueAxis());
+    if (it == need.end())
+      need[p->valueAxis()] = r;
+    else
+      it->second.expand(r);
+  }
+  for (auto& [axis, r] : need) {
+    QCPRange range = axis->range();
+    const bool log = axis->scaleType() == QCPAxis::stLogarithmic;
+    if (r.upper > range.upper)
+      range.upper = log ? r.upper * 1.15 : r.upper + 0.05 * (r.upper - std::min(range.lower, r.lower));
+    if (r.lower < range.lower)
+      range.lower = log ? r.lower / 1.15 : r.lower - 0.05 * (std::max(range.upper, r.upper) - r.lower);
+    if (!(range == axis->range())) axis->setRange(range);
+  }
+}
+
+}  // namespace
+
 QSizeF figure_size_pt(const FigureOptions& o) {
   constexpr double kPtPerMm = 72.0 / 25.4;
   const double h_mm = o.height_mm > 0 ? o.height_mm : o.width_mm * 0.62;
   return {o.width_mm * kPtPerMm, h_mm * kPtPerMm};
+}
+
+FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
+  apply_figure_look(plot, o);
+  const double width_pt = figure_size_pt(o).width();
+  double below_pt = 0;
+  QString also_drawn;
+  if (plot.legend->visible() && plot.legend->itemCount() > 0) {
+    place_legend_below(plot, o.font_pt);
+    merge_alike_entries(plot);
+    wrap_legend(plot, o.font_pt, width_pt);
+    also_drawn = cap_legend(plot);
+    below_pt = plot.legend->minimumOuterSizeHint().height();
+  } else {
+    plot.legend->setVisible(false);
+  }
+  add_note(plot, also_drawn, o.font_pt, width_pt);
+  if (auto* note = plot.findChild<QCPTextElement*>(kNoteName))
+    below_pt += static_cast<QCPLayoutElement*>(note)->minimumOuterSizeHint().height();
+  fit_value_axes(plot);
+  FigureOptions sized = o;
+  if (o.height_mm <= 0) {
+    const double axes_pt = width_pt * (o.width_mm < 80 ? 0.8 : 0.62);
+    sized.height_mm = (axes_pt + below_pt) * 25.4 / 72.0;
+  }
+  return sized;
+}
+
+void add_figure_note(QCustomPlot& plot, const QString& line) {
+  QStringList notes = plot.property(kNotesProperty).toStringList();
+  notes << line;
+  plot.setProperty(kNotesProperty, notes);
+}
+
+void clear_figure_notes(QCustomPlot& plot) { plot.setProperty(kNotesProperty, QStringList()); }
+
+QString legend_note(const QCustomPlot& plot) {
+  const auto* note = plot.findChild<QCPTextElement*>(kNoteName);
+  return note ? note->text() : QString();
 }
 
 void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& o, const QString& title, QStringList& files,
@@ -182,32 +368,15 @@ void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& o, c
   }
 }
 
-FigureOptions prepare_export(QCustomPlot& plot, const FigureOptions& o) {
-  apply_figure_look(plot, o);
-  FigureOptions sized = o;
-  if (!plot.legend->visible()) return sized;
-  const double width_pt = figure_size_pt(o).width();
-  place_legend_below(plot, o.font_pt);
-  wrap_legend(plot, o.font_pt, width_pt);
-  if (o.height_mm <= 0) {  // automatic height: the axes keep their share of the width, the legend adds its own
-    const double legend_pt = plot.legend->minimumOuterSizeHint().height();
-    sized.height_mm = (width_pt * 0.62 + legend_pt) * 25.4 / 72.0;
-  }
-  return sized;
-}
-
 void export_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& o, const QString& title,
                  QStringList& files) {
-  const PlotLook look(plot);
-  LegendBelow legend(plot);
+  ViewState view(plot);
   const auto put_back = [&] {
-    legend.restore();
-    look.restore(plot);
+    view.restore();
     plot.replot();
   };
   try {
-    const FigureOptions sized = legend.moved() ? prepare_export(plot, o) : (apply_figure_look(plot, o), o);
-    save_plot(plot, stem, sized, title, files);
+    save_plot(plot, stem, layout_figure(plot, o), title, files);
   } catch (...) {
     put_back();
     throw;

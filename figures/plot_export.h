@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Saves a QCustomPlot as a publication figure: PDF and SVG with text kept as text, PNG at a dpi, at a journal width
-// in mm, with the figure's font size and line widths in pt. Used by the paper figures and by File > Export figure
-// for every plot view.
+// in mm, with the figure's font size and line widths in pt. One layout (layout_figure) for every figure that leaves
+// the program: File > Export figure (Ctrl+E) of every tab, the paper figures and the report's figures.
 #include <QImage>
 #include <QSizeF>
 #include <QString>
@@ -19,28 +19,36 @@ struct FigureOptions;
 // Page size of a figure in points (1/72 inch): width_mm, and height_mm or 0.62 x width.
 QSizeF figure_size_pt(const FigureOptions& options);
 
-// Puts the legend below the axes, unframed, so that it can never cover data (the paper figures' layout).
-void place_legend_below(QCustomPlot& plot, double font_pt);
-// As many legend columns as fit `width_pt`, measured by the legend's own layout (fonts included); a smaller legend
-// font (down to 5 pt) when even one column is too wide.
-void wrap_legend(QCustomPlot& plot, double font_pt, double width_pt);
+// At most this many legend rows: entries beyond them are named in a note under the legend instead.
+inline constexpr int kMaxLegendRows = 8;
+
+// Lays `plot` out as a figure at the options' width: the figure's fonts (axes, legend, labels) and line widths;
+// the legend below the axes, unframed, in as many columns as fit, entries that read and look the same merged into
+// one ("… (2 runs)"), at most kMaxLegendRows rows with the rest named in a note under it; the value axis widened
+// where a visible curve or bar would be clipped. Returns the options with an automatic height (0) resolved: the
+// axes keep 0.62 x the width (0.8 below 80 mm, so the axis label fits) and the legend and note add theirs.
+// The plot is left in the figure's look: export_plot puts a view back afterwards.
+FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& options);
+
+// A line for the figure's note under the legend (a flag's footnote, "⚠[1] above_spec_peak: …"): layout_figure
+// sets the note's lines at the figure's width. Kept with the plot; a view that adds none exports without a note.
+void add_figure_note(QCustomPlot& plot, const QString& line);
+void clear_figure_notes(QCustomPlot& plot);
+
+// The note layout_figure put under the legend (the figure's notes, then "Also drawn: …" for entries beyond
+// kMaxLegendRows rows), empty when there is none.
+QString legend_note(const QCustomPlot& plot);
 
 // Writes stem.<format> for every format of `options` (pdf, svg, png); appends the paths to `files`.
 // Throws std::runtime_error naming the file when it cannot be written, Cancelled between formats.
 void save_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title,
                QStringList& files, const CancelToken* cancel = nullptr);
 
-// As save_plot, for a plot shown on screen: applies the figure's font size and line widths for the export, moves a
-// visible legend from over the axes to below them in as many columns as fit (an automatic height grows by the
-// legend's height, so the axes keep 0.62 x the width), then restores the view's own look and legend.
-// The look and size export_plot gives `plot` (also what the export dialog's preview shows); the caller restores the
-// view afterwards. Returns the options with the automatic height resolved.
-FigureOptions prepare_export(QCustomPlot& plot, const FigureOptions& options);
+// layout_figure, save_plot, then the view's own look, legend, names and ranges restored.
+void export_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title,
+                 QStringList& files);
 
 // The figure export_plot would write, as an image `width_px` wide (the export dialog's preview).
 QImage render_export_preview(QCustomPlot& plot, const FigureOptions& options, int width_px);
-
-void export_plot(QCustomPlot& plot, const QString& stem, const FigureOptions& options, const QString& title,
-                 QStringList& files);
 
 }  // namespace bs::ui

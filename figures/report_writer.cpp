@@ -1,30 +1,67 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report_writer.h"
 
+#include <qcustomplot.h>
+#include <QAbstractTextDocumentLayout>
 #include <QBuffer>
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
+#include <QFontMetricsF>
 #include <QImage>
 #include <QPageLayout>
+#include <QPainter>
 #include <QPdfWriter>
 #include <QSaveFile>
 #include <QTemporaryDir>
+#include <QTextBlock>
+#include <QTextCursor>
 #include <QTextDocument>
+#include <QTextTable>
 #include <QUrl>
 
+#include <cmath>
+#include <numeric>
 #include <stdexcept>
 
+#include "plot_export.h"
 #include "report/platform_report.h"
+#include "report_chart.h"
 
 namespace bs::ui {
 namespace {
 
+constexpr double kPtPerMm = 72.0 / 25.4;
+constexpr double kMarginMm = 15;
+
 struct RenderedFigure {
-  QString caption, name;
+  ReportFigure meta;  // caption, size, id, sources; image_src set per output
+  QString name;
   QImage image;
   QByteArray png;
 };
+
+QByteArray read_all(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// "fig1a: GTX1080Ti OpenCL D=4 (reconstructed), ...": what render_figures says a figure shows, without the id.
+std::string shown_by(const QStringList& contents, const std::string& id) {
+  for (const QString& line : contents)
+    if (line.startsWith(QString::fromStdString(id) + ": "))
+      return line.mid(static_cast<int>(id.size()) + 2).toStdString();
+  return {};
+}
+
+std::string figure_caption(const FigureTemplate& t) {
+  if (t.kind == "flops")
+    return t.title + ": " + (t.y_label.empty() ? "FLOPS" : t.y_label) + " against " +
+           (t.x_label.empty() ? "workers" : t.x_label) + ", mean over repetitions.";
+  if (t.kind == "current") return t.title + ": supply current over time (minimum and maximum per time bucket).";
+  if (t.kind == "triptych") return "Camera frame: raw mosaic as grey, demosaiced, and reprojected.";
+  return t.title + ".";
+}
 
 std::vector<RenderedFigure> render_pngs(const std::vector<FigureTemplate>& templates, const FigureData& data,
                                         FigureOptions o, const CancelToken& cancel,
@@ -32,30 +69,68 @@ std::vector<RenderedFigure> render_pngs(const std::vector<FigureTemplate>& templ
   QTemporaryDir dir;
   if (!dir.isValid()) throw std::runtime_error("cannot create a temporary folder for the report's figures");
   o.formats = {"png"};
-  o.dpi = 150;  // on screen and on an A4 page; the figures command gives print resolution
-  // A template whose data the workspace lacks (no power log: no fig4) is left out of the report, not an error.
-  std::vector<FigureTemplate> usable;
+  o.dpi = 200;  // sharp on an A4 page; the figures command gives print resolution in vector formats
+  std::vector<RenderedFigure> out;
+  int done = 0;
   for (const FigureTemplate& t : templates) {
+    if (progress) progress(done++, static_cast<int>(templates.size()) + 1, QString::fromStdString(t.id));
+    // A template whose data the workspace lacks (no power log: no fig4) is left out of the report, not an error.
+    FigureOutput rendered;
     try {
-      render_figures({t}, data, dir.path(), o, cancel);
-      usable.push_back(t);
+      rendered = render_figures({t}, data, dir.path(), o, cancel);
     } catch (const Cancelled&) {
       throw;
     } catch (const std::runtime_error&) {
+      continue;
     }
-  }
-  std::vector<RenderedFigure> out;
-  int done = 0;
-  for (const FigureTemplate& t : usable) {
-    if (progress) progress(done++, static_cast<int>(usable.size()) + 1, QString::fromStdString(t.id));
     const QString name = QString::fromStdString(t.id) + ".png";
-    QFile f(QDir(dir.path()).filePath(name));
-    if (!f.open(QIODevice::ReadOnly)) continue;
-    RenderedFigure r{QString::fromStdString(t.title.empty() ? t.id : t.id + ": " + t.title), name, {}, f.readAll()};
-    r.image.loadFromData(r.png, "PNG");
+    RenderedFigure r;
+    r.name = name;
+    r.png = read_all(QDir(dir.path()).filePath(name));
+    if (r.png.isEmpty() || !r.image.loadFromData(r.png, "PNG")) continue;  // optional and skipped: no file
+    r.meta.caption = figure_caption(t);
+    r.meta.id = t.id;
+    r.meta.sources = shown_by(rendered.contents, t.id);
+    r.meta.width_pt = o.width_mm * kPtPerMm;
+    r.meta.height_pt = r.meta.width_pt * r.image.height() / std::max(1, r.image.width());
     out.push_back(std::move(r));
   }
   return out;
+}
+
+// Page one's chart at the text width, short enough to leave the page to the table.
+std::optional<RenderedFigure> render_chart(const std::vector<PlatformRow>& rows,
+                                           const std::vector<PlatformVerdict>& verdicts, const FigureData& data,
+                                           const FigureOptions& base) {
+  std::map<std::string, int> colors;
+  for (const auto& [key, index] : data.colors) {
+    const auto it = colors.find(key.first);
+    if (it == colors.end() || index < it->second) colors[key.first] = index;
+  }
+  FigureOptions o = base;
+  o.width_mm = 180;
+  o.height_mm = 40;
+  o.formats = {"png"};
+  o.dpi = 200;
+  QCustomPlot plot;
+  const QSizeF size = figure_size_pt(o);
+  plot.resize(static_cast<int>(size.width()), static_cast<int>(size.height()));
+  RenderedFigure r;
+  try {
+    r.meta.sources = comparison_chart(plot, rows, verdicts, colors, o);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;  // no FLOPS peak anywhere: page one has the table alone
+  }
+  QTemporaryDir dir;
+  QStringList files;
+  save_plot(plot, dir.filePath("comparison"), o, "comparison", files);
+  r.name = "comparison.png";
+  r.png = read_all(dir.filePath("comparison.png"));
+  r.image.loadFromData(r.png, "PNG");
+  r.meta.caption = comparison_chart_caption();
+  r.meta.width_pt = size.width();
+  r.meta.height_pt = size.height();
+  return r;
 }
 
 // The report's folder is created if missing, as `figures --out` does.
@@ -68,6 +143,108 @@ void save_whole(const QString& path, const QByteArray& bytes) {
     throw std::runtime_error(path.toStdString() + ": cannot write: " + f.errorString().toStdString());
 }
 
+// A format change relays out only from the change on, and leaves what follows a table that changed width with
+// stale positions (blocks of zero height, dropped from the pages): lay out the whole document again.
+void relayout(QTextDocument& doc) { doc.markContentsDirty(0, doc.characterCount()); }
+
+bool has_image(const QTextBlock& block) {
+  for (auto it = block.begin(); !it.atEnd(); ++it)
+    if (it.fragment().charFormat().isImageFormat()) return true;
+  return false;
+}
+
+int page_of(double y, double page_h) { return static_cast<int>(std::floor(y / page_h)); }
+
+// Keeps together what belongs together, as LaTeX does: a figure with its caption (one paragraph), a heading and a
+// table caption with what follows. A paragraph that would straddle a page break, or a heading left alone at a
+// page's foot, starts the next page. One fix per pass, since each moves everything after it.
+void keep_together(QTextDocument& doc) {
+  const double page_h = doc.pageSize().height();
+  QAbstractTextDocumentLayout* layout = doc.documentLayout();
+  for (int pass = 0; pass < 200; ++pass) {
+    bool moved = false;
+    for (QTextBlock b = doc.begin(); b.isValid() && !moved; b = b.next()) {
+      if (QTextCursor(b).currentTable()) continue;
+      const QRectF r = layout->blockBoundingRect(b);
+      const QTextBlock next = b.next();
+      const bool heading = b.blockFormat().headingLevel() > 0;
+      const bool before_table = next.isValid() && QTextCursor(next).currentTable() && !b.text().isEmpty();
+      bool bad = has_image(b) && page_of(r.top(), page_h) != page_of(r.bottom() - 1, page_h);
+      if ((heading || before_table) && next.isValid()) {
+        // The first line of what follows must be on this block's page.
+        const QTextLayout* nl = next.layout();
+        const double next_bottom =
+            layout->blockBoundingRect(next).top() + (nl && nl->lineCount() > 0 ? nl->lineAt(0).height() : 0);
+        bad = bad || page_of(r.top(), page_h) != page_of(next_bottom - 1, page_h);
+      }
+      if (bad && b.blockFormat().pageBreakPolicy() != QTextFormat::PageBreak_AlwaysBefore &&
+          page_of(r.top(), page_h) * page_h < r.top() - 1) {
+        QTextBlockFormat f;
+        f.setPageBreakPolicy(QTextFormat::PageBreak_AlwaysBefore);
+        QTextCursor(b).mergeBlockFormat(f);
+        relayout(doc);
+        moved = true;
+      }
+    }
+    if (!moved) return;
+  }
+}
+
+// Column widths from the fonts as printed: each column at least as wide as its widest word (so no word is broken,
+// "Preproces sing"), the rest of the text width shared out in proportion to the columns' natural widths.
+void fit_tables(QTextDocument& doc, QPaintDevice* device) {
+  const double text_w = doc.pageSize().width();
+  for (QTextFrame* frame : doc.rootFrame()->childFrames()) {
+    auto* table = qobject_cast<QTextTable*>(frame);
+    if (!table) continue;
+    const QTextTableFormat format = table->format();
+    const double pad = format.cellPadding() * 2 + format.cellSpacing() + 2;
+    std::vector<double> widest(static_cast<std::size_t>(table->columns()), 0), natural = widest;
+    for (int r = 0; r < table->rows(); ++r)
+      for (int c = 0; c < table->columns(); ++c) {
+        const QTextTableCell cell = table->cellAt(r, c);
+        if (cell.columnSpan() != 1) continue;
+        for (auto it = cell.begin(); !it.atEnd(); ++it) {
+          const QTextBlock block = it.currentBlock();
+          double line = 0;
+          for (auto f = block.begin(); !f.atEnd(); ++f) {
+            const QFontMetricsF m(f.fragment().charFormat().font(), device);
+            for (const QString& word : f.fragment().text().split(' ', Qt::SkipEmptyParts))
+              widest[static_cast<std::size_t>(c)] =
+                  std::max(widest[static_cast<std::size_t>(c)], m.horizontalAdvance(word));
+            line += m.horizontalAdvance(f.fragment().text());
+          }
+          natural[static_cast<std::size_t>(c)] = std::max(natural[static_cast<std::size_t>(c)], line);
+        }
+      }
+    double need = 0, extra = 0;
+    // Row headings on one line where they are short ("Energy per frame"): a quarter of the width at most.
+    if (!widest.empty()) widest[0] = std::max(widest[0], std::min(natural[0], text_w * 0.22));
+    for (std::size_t c = 0; c < widest.size(); ++c) {
+      widest[c] += pad;
+      natural[c] += pad;
+      need += widest[c];
+      extra += std::max(0.0, natural[c] - widest[c]);
+    }
+    const double spare = text_w - need - 4;
+    if (spare < 0) continue;  // too many columns for whole words: platform_summary_tables splits before this
+    // All on one line when that fits (the space left spread in proportion); else the widest words, plus the spare
+    // width where the text is longest.
+    const double total = std::accumulate(natural.begin(), natural.end(), 0.0);
+    QVector<QTextLength> widths;
+    for (std::size_t c = 0; c < widest.size(); ++c) {
+      const double w = total <= text_w - 4 ? natural[c] + (text_w - 4 - total) * natural[c] / total
+                                           : widest[c] + spare * std::max(0.0, natural[c] - widest[c]) / extra;
+      // QTextDocument scales fixed lengths by the device's dpi / 96, as if they were CSS pixels: give them so.
+      widths << QTextLength(QTextLength::FixedLength, w * 96.0 / device->logicalDpiX());
+    }
+    QTextTableFormat f = format;
+    f.setColumnWidthConstraints(widths);
+    table->setFormat(f);
+  }
+  relayout(doc);
+}
+
 void print_pdf(const QString& path, const std::string& html, const std::vector<RenderedFigure>& figures) {
   make_parent(path);
   QSaveFile file(path);
@@ -76,13 +253,50 @@ void print_pdf(const QString& path, const std::string& html, const std::vector<R
   {
     QPdfWriter pdf(&file);
     pdf.setPageSize(QPageSize(QPageSize::A4));
-    pdf.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+    pdf.setPageMargins(QMarginsF(kMarginMm, kMarginMm, kMarginMm, kMarginMm), QPageLayout::Millimeter);
+    pdf.setResolution(72);  // device units are points, the HTML's pt sizes come out as written
     pdf.setCreator("BenchScope");
     pdf.setTitle("BenchScope report");
+    const QSizeF text(pdf.width(), pdf.height());
     QTextDocument doc;
+    doc.documentLayout()->setPaintDevice(&pdf);
+    doc.setDocumentMargin(0);
+    // Whole words only: a word too long for its column overflows rather than breaks ("Preproces sing").
+    QTextOption option = doc.defaultTextOption();
+    option.setWrapMode(QTextOption::WordWrap);
+    doc.setDefaultTextOption(option);
+    QFont body("DejaVu Serif");
+    body.setPointSizeF(9.5);
+    doc.setDefaultFont(body);
     for (const RenderedFigure& f : figures) doc.addResource(QTextDocument::ImageResource, QUrl(f.name), f.image);
     doc.setHtml(QString::fromStdString(html));
-    doc.print(&pdf);
+    // The body's CSS margin is for browsers; on paper the page margins are the only ones.
+    QTextFrameFormat root = doc.rootFrame()->frameFormat();
+    root.setMargin(0);
+    root.setPadding(0);
+    doc.rootFrame()->setFrameFormat(root);
+    doc.setPageSize(text);
+    fit_tables(doc, &pdf);
+    keep_together(doc);
+    QPainter painter(&pdf);
+    const int pages = doc.pageCount();
+    for (int p = 0; p < pages; ++p) {
+      if (p > 0) pdf.newPage();
+      painter.save();
+      painter.translate(0, -p * text.height());
+      // Half a point inside the page: a block that starts exactly at the next page's top is that page's only.
+      const QRectF clip(0, p * text.height() + 0.5, text.width(), text.height() - 1);
+      doc.drawContents(&painter, clip);
+      painter.restore();
+      // Page numbers in the bottom margin, as a printed report has them.
+      QFont f = body;
+      f.setPointSizeF(8);
+      painter.setFont(f);
+      painter.setPen(QColor(90, 90, 90));
+      painter.drawText(QRectF(0, text.height() + 6, text.width(), 14), Qt::AlignHCenter | Qt::AlignTop,
+                       QStringLiteral("%1 / %2").arg(p + 1).arg(pages));
+    }
+    painter.end();
   }
   if (!file.commit())
     throw std::runtime_error(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
@@ -120,21 +334,36 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
   in.constraints = describe_constraints(request.constraints);
   in.inference_runs = data.inference_runs;
   in.candidates_html = request.candidates_html;
+  in.data_selection = data.selection;
+  const std::optional<RenderedFigure> chart = render_chart(in.rows, in.verdicts, data, figure_options);
 
+  // Figures as data: URIs for the one-file HTML, as resource names for the PDF (QTextDocument resources).
+  const auto with_figures = [&](bool embed) {
+    ReportInput out = in;
+    const auto src = [&](const RenderedFigure& f) {
+      return embed ? "data:image/png;base64," + f.png.toBase64().toStdString() : f.name.toStdString();
+    };
+    if (chart) {
+      out.comparison_chart = chart->meta;
+      out.comparison_chart->image_src = src(*chart);
+    }
+    for (const RenderedFigure& f : figures) {
+      out.figures.push_back(f.meta);
+      out.figures.back().image_src = src(f);
+    }
+    return out;
+  };
   QStringList written;
   try {
     if (!request.html_path.isEmpty()) {
-      ReportInput html_in = in;
-      for (const RenderedFigure& f : figures)
-        html_in.figures.push_back({f.caption.toStdString(), "data:image/png;base64," + f.png.toBase64().toStdString()});
-      save_whole(request.html_path, QByteArray::fromStdString(report_html(html_in)));
+      save_whole(request.html_path, QByteArray::fromStdString(report_html(with_figures(true))));
       written << request.html_path;
     }
     cancel.throw_if_cancelled();
     if (!request.pdf_path.isEmpty()) {
-      ReportInput pdf_in = in;
-      for (const RenderedFigure& f : figures) pdf_in.figures.push_back({f.caption.toStdString(), f.name.toStdString()});
-      print_pdf(request.pdf_path, report_html(pdf_in), figures);
+      std::vector<RenderedFigure> all = figures;
+      if (chart) all.push_back(*chart);
+      print_pdf(request.pdf_path, report_html(with_figures(false)), all);
       written << request.pdf_path;
     }
   } catch (...) {

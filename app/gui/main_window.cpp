@@ -39,6 +39,7 @@
 #include "power/power_view.h"
 #include "runs/pipeline_json.h"
 #include "runs/run_json.h"
+#include "store/run_label_store.h"
 #include "vision/frames_view.h"
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
@@ -304,7 +305,8 @@ void MainWindow::reload() {
       for (FlopsRun& run : foreign_sweeps(s.set))
         runs_.push_back(StoredRun{id--, s.import_id, s.device_id, s.color_index, std::move(run)});
   }
-  tree_->set_runs(runs_);
+  run_labels_ = workspace_ ? run_labels(*workspace_, runs_) : std::map<std::int64_t, std::string>{};
+  tree_->set_runs(runs_, run_labels_);
   tree_->set_items(workspace_items());
   std::vector<FlopsRun> all;
   for (const StoredRun& r : runs_) all.push_back(r.run);
@@ -410,7 +412,7 @@ void MainWindow::refresh_views() {
     peak_input.push_back(r.run);
     colors.push_back(r.color_index);
   }
-  plot_->set_runs(shown);
+  plot_->set_runs(shown, run_labels_);
   // Each row against its device's empirical ceiling (result sets stored by Measure ceilings); a peak above the
   // computed peak is flagged even without one.
   std::vector<PeakRow> peak_rows = bs::peak_table(peak_input);

@@ -140,8 +140,9 @@ class MainWindow : public QMainWindow {
 
   std::unique_ptr<Workspace> workspace_;
   std::vector<StoredRun> runs_;
-  std::vector<StoredRun> live_;                  // a sweep in progress, drawn before it is stored
-  std::unique_ptr<QTemporaryDir> untitled_dir_;  // holds an untitled workspace until "Save As"
+  std::map<std::int64_t, std::string> run_labels_;  // the user's names of runs (store/run_label_store.h)
+  std::vector<StoredRun> live_;                     // a sweep in progress, drawn before it is stored
+  std::unique_ptr<QTemporaryDir> untitled_dir_;     // holds an untitled workspace until "Save As"
   WorkspaceTree* tree_;
   QSplitter* flops_split_ = nullptr;  // the FLOPS tab: plot over the peak table
   QByteArray default_state_, default_split_;

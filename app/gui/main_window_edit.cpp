@@ -8,11 +8,13 @@
 #include <QTabWidget>
 #include <QUndoCommand>
 #include <QUndoStack>
+#include <algorithm>
 #include <functional>
 
 #include "main_window.h"
 #include "store/battery_preset_store.h"
 #include "store/import_snapshot.h"
+#include "store/run_label_store.h"
 #include "vision/lens/lens.h"
 #include "vision/lens_tab.h"
 
@@ -161,9 +163,14 @@ void MainWindow::report_edit_error(const QString& message) {
 void MainWindow::rename_item(const TreeItemRef& item) {
   if (!workspace_ || !item.renamable()) return;
   bool ok = false;
-  const QString title = item.kind == TreeItemRef::Kind::Platform ? tr("Rename platform") : tr("Rename");
-  const QString name = QInputDialog::getText(this, title, tr("New name:"), QLineEdit::Normal, item.name, &ok).trimmed();
-  if (!ok || name.isEmpty() || name == item.name) return;
+  const bool run = item.kind == TreeItemRef::Kind::Run;
+  const QString title = item.kind == TreeItemRef::Kind::Platform ? tr("Rename platform")
+                        : run                                    ? tr("Name this run")
+                                                                 : tr("Rename");
+  // A run keeps its own name (device, backend, D, N); its label is shown after it in every view, export and report.
+  const QString prompt = run ? tr("Label shown after the run's name (empty: none):") : tr("New name:");
+  const QString name = QInputDialog::getText(this, title, prompt, QLineEdit::Normal, item.name, &ok).trimmed();
+  if (!ok || (name.isEmpty() && !run) || name == item.name) return;
   Workspace* ws = workspace_.get();
   const std::string from = item.name.toStdString(), to = name.toStdString();
   std::function<void(const std::string&)> apply;
@@ -174,6 +181,12 @@ void MainWindow::rename_item(const TreeItemRef& item) {
     case TreeItemRef::Kind::Frame:
       apply = [ws, id = item.id](const std::string& n) { ws->rename_frame(id, n); };
       break;
+    case TreeItemRef::Kind::Run: {
+      const auto stored = std::find_if(runs_.begin(), runs_.end(), [&](const StoredRun& r) { return r.id == item.id; });
+      if (stored == runs_.end()) return;
+      apply = [ws, run = *stored](const std::string& n) { set_run_label(*ws, run, n); };
+      break;
+    }
     default:
       break;
   }
@@ -191,7 +204,8 @@ void MainWindow::rename_item(const TreeItemRef& item) {
     report_edit_error(QString::fromUtf8(e.what()));
     return;
   }
-  push_edit(tr("rename “%1” to “%2”").arg(item.name, name), std::move(redo), std::move(undo));
+  push_edit(run ? tr("label run “%1”").arg(name) : tr("rename “%1” to “%2”").arg(item.name, name), std::move(redo),
+            std::move(undo));
 }
 
 void MainWindow::remove_item(const TreeItemRef& item) {

@@ -63,7 +63,10 @@ FigureData MainWindow::figure_data() const {
   const QSet<qint64> ticked = tree_->visible_runs();
   for (const StoredRun& r : runs_) {
     d.colors[{r.run.platform, r.run.device}] = r.color_index;
-    if (ticked.contains(r.id)) d.runs.push_back(r.run);
+    if (!ticked.contains(r.id)) continue;
+    d.runs.push_back(r.run);
+    const auto label = run_labels_.find(r.id);
+    d.run_labels.push_back(label == run_labels_.end() ? std::string() : label->second);
   }
   d.selection = "runs ticked in the workspace (" + std::to_string(d.runs.size()) + " of " +
                 std::to_string(runs_.size()) + "), all power logs and pipeline runs";

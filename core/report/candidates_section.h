@@ -2,7 +2,8 @@
 #pragma once
 // The report's "Candidates" section: the own platforms beside published results from the library, as HTML
 // (analysis/library/candidates.h ranks them). Kept apart from platform_report.cpp so that the report's layout and
-// this section change independently; report_html() places ReportInput::candidates_html after the platform pages.
+// this section change independently; candidates_section() (report_sections.h) places ReportInput::candidates_html after
+// the details.
 #include <span>
 #include <string>
 

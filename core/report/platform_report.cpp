@@ -1,164 +1,182 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/platform_report.h"
 
+#include <algorithm>
 #include <cstdio>
-#include <sstream>
 
-#include "analysis/platform/inference_table.h"
+#include "analysis/peaks/flag_notes.h"
 #include "analysis/platform/platform_table.h"
+#include "report/report_sections.h"
 
 namespace bs {
 namespace {
 
-// Print-friendly: serif body like a paper, each platform on its own page, tables that fit A4 portrait.
+// Print-friendly: serif body like a paper, small tables with rules above and below (booktabs' look). Browsers
+// read all of it; Qt's QTextDocument reads the fonts, sizes, colours and borders.
 constexpr const char* kStyle = R"(
-body { font-family: 'DejaVu Serif', serif; font-size: 10pt; margin: 1.5em; }
-h1 { font-size: 16pt; } h2 { font-size: 13pt; } h3 { font-size: 11pt; }
-table { border-collapse: collapse; margin: 0.5em 0; width: 100%; }
-th, td { border-bottom: 1px solid #bbb; padding: 3px 8px; text-align: left; vertical-align: top; }
-th { background: #eee; }
-td.num { text-align: right; }
-.platform { page-break-before: always; }
-.note { color: #555; font-size: 9pt; }
+body { font-family: 'DejaVu Serif', serif; font-size: 9.5pt; max-width: 180mm; }
+h1 { font-size: 14pt; margin: 0 0 2pt 0; } h2 { font-size: 12pt; margin: 8pt 0 3pt 0; }
+h3 { font-size: 10pt; margin: 8pt 0 2pt 0; }
+p { margin: 2pt 0 4pt 0; }
+table.data { border-collapse: collapse; border-top: 1.2px solid black; border-bottom: 1.2px solid black;
+  font-size: 8.5pt; margin: 2pt 0 2pt 0; }
+table.data th { border-bottom: 0.6px solid black; font-weight: bold; vertical-align: bottom; }
+table.data tr.units th { font-weight: normal; font-style: italic; }
+table.data td { vertical-align: top; }
+td.rowhead { font-weight: normal; }
+.decision { font-size: 10pt; }
+.note { color: #444; font-size: 8pt; margin: 0; }
 .flags { color: #8a4b00; }
-figure { margin: 1em 0; page-break-inside: avoid; }
-figcaption { font-size: 9pt; }
+.caption { font-size: 8.5pt; }
+p.figure { margin: 6pt 0 10pt 0; }
+img { max-width: 100%; }
 )";
 
-std::string percent(double fraction) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f %%", 100 * fraction);
-  return buf;
-}
+const char* const kDash = "\xE2\x80\x93";  // en dash: no data
 
-std::string peak_detail(const PeakRow& p) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "%.2f GFLOPS on %s (%s, D = %d, %lld workers)", p.peak.flops / 1e9, p.device.c_str(),
-                p.backend.c_str(), p.dims, static_cast<long long>(p.peak.workers));
-  std::string s = buf;
-  if (p.fraction_of_theoretical) s += "; " + percent(*p.fraction_of_theoretical) + " of the theoretical peak";
-  if (p.ratio_to_reported) s += "; " + percent(*p.ratio_to_reported) + " of the figure the vendor reports";
-  if (p.fraction_of_spec) s += "; " + percent(*p.fraction_of_spec) + " of the " + p.spec->name + "'s FP32 peak";
-  return s;
-}
+struct Measure {
+  std::string name, unit;
+};
 
-// Flags as a warning list: a flagged number is never shown without the reason.
-void flag_list(std::ostringstream& h, const std::vector<PlausibilityFlag>& flags) {
-  if (flags.empty()) return;
-  h << "<ul class=\"flags\">\n";
-  for (const PlausibilityFlag& f : flags)
-    h << "<li><b>&#9888; " << html_escape(f.code) << "</b>: " << html_escape(f.reason) << "</li>\n";
-  h << "</ul>\n";
-}
-
-void cell_row(std::ostringstream& h, const std::string& name, const std::string& value) {
-  h << "<tr><th>" << html_escape(name) << "</th><td>" << html_escape(value) << "</td></tr>\n";
-}
-
-void platform_page(std::ostringstream& h, const ExportTable& table, std::size_t i, const PlatformRow& row) {
-  h << "<div class=\"platform\">\n<h2>" << html_escape(row.platform) << "</h2>\n<table width=\"100%\">\n";
-  for (std::size_t c = 1; c < table.header.size(); ++c) cell_row(h, table.header[c], table.rows[i][c]);
-  h << "</table>\n";
-  if (row.gpu) h << "<p>GPU peak: " << html_escape(peak_detail(*row.gpu)) << ".</p>\n";
-  if (row.cpu) h << "<p>CPU peak: " << html_escape(peak_detail(*row.cpu)) << ".</p>\n";
-  if (!row.power_measurement.empty()) h << "<p>Power measured by: " << html_escape(row.power_measurement) << ".</p>\n";
-  flag_list(h, row.all_flags());
-  if (!row.sources.empty()) {
-    h << "<h3>Where the numbers come "
-         "from</h3>\n<table>\n<tr><th>Measure</th><th>Source</th><th>Origin</th><th>How</th></tr>\n";
-    for (const auto& [column, src] : row.sources)
-      h << "<tr><td>" << html_escape(column) << "</td><td>" << html_escape(src.source_file) << "</td><td>"
-        << html_escape(to_string(src.origin)) << "</td><td>" << html_escape(src.how) << "</td></tr>\n";
-    h << "</table>\n";
+// "GPU peak (TFLOPS)" -> {"GPU peak", "TFLOPS"}: units go to their own column, the measure keeps the words.
+Measure split_header(const std::string& h) {
+  static const std::vector<std::pair<std::string, Measure>> kNamed = {
+      {"GFLOPS/W (paper: peak / max power)", {"Efficiency (paper)", "GFLOPS/W"}},
+      {"GFLOPS/W (peak / mean power)", {"Efficiency (mean)", "GFLOPS/W"}},
+      {"Of theoretical peak", {"Of theoretical peak", "%"}},
+      {"Energy per preprocessed frame (J)", {"Energy, preprocessing", "J"}},
+      {"Energy per inference (J)", {"Energy, inference", "J"}},
+      {"Frames per Wh", {"Frames per Wh", "1/Wh"}},
+      {"Failed (margin)", {"Failed (margin)", ""}},
+  };
+  for (const auto& [full, m] : kNamed)
+    if (h == full) return m;
+  const auto open = h.rfind(" (");
+  if (open != std::string::npos && h.back() == ')') {
+    const std::string unit = h.substr(open + 2, h.size() - open - 3);
+    if (unit.find(' ') == std::string::npos) return {h.substr(0, open), unit};
   }
-  h << "</div>\n";
+  return {h, ""};
 }
 
-}  // namespace
-
-std::string html_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
+// The longest word of `text` in characters (UTF-8 continuation bytes not counted): what a column must hold
+// without breaking a word.
+std::size_t longest_word(const std::string& text) {
+  std::size_t best = 0, run = 0;
+  for (const unsigned char c : text) {
+    if (c == ' ') {
+      best = std::max(best, run);
+      run = 0;
+    } else if ((c & 0xC0) != 0x80) {
+      ++run;
     }
+  }
+  return std::max(best, run);
+}
+
+// "4.7 (Jetson CPU (ARM A57 + Denver2), CPU SIMD (NEON))" -> "4.7 (Jetson CPU, CPU SIMD)": a device's details
+// stay in the platform details, the table keeps the names.
+std::string without_nested_parentheses(const std::string& text) {
+  std::string out;
+  int depth = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '(') ++depth;
+    if (depth < 2) out += c;
+    if (c == ')') --depth;
+    if (depth >= 2 && !out.empty() && out.back() == ' ') out.pop_back();  // the space before "(ARM ..."
   }
   return out;
 }
 
-std::string report_html(const ReportInput& in) {
-  const ExportTable table = platform_table(in.rows, in.verdicts);
-  std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">\n<title>BenchScope report: " << html_escape(in.workspace)
-    << "</title>\n<style>" << kStyle << "</style></head>\n<body>\n";
-  h << "<h1>BenchScope report</h1>\n<p class=\"note\">Workspace " << html_escape(in.workspace) << ", generated "
-    << html_escape(in.generated) << " by " << html_escape(in.tool)
-    << ". Timings are mean &plusmn; SD (n); power figures use the supply voltage of each log.</p>\n";
+}  // namespace
 
-  // Transposed, one column per platform: thirteen measures do not fit across an A4 page, four platforms do.
-  h << "<h2>Platforms at a glance</h2>\n<table width=\"100%\">\n<tr><th>Measure</th>";
-  for (const auto& cells : table.rows) h << "<th>" << html_escape(cells[0]) << "</th>";
-  h << "</tr>\n";
+std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>& rows,
+                                                 const std::vector<PlatformVerdict>& verdicts) {
+  const ExportTable table = platform_table(rows, verdicts);
+  // Transposed: a measure per row, a platform per column (fifteen measures never fit across a page, a few
+  // platforms do). Rows where no platform has a value are left out.
+  std::vector<std::vector<std::string>> body;
   for (std::size_t c = 1; c < table.header.size(); ++c) {
-    h << "<tr><th>" << html_escape(table.header[c]) << "</th>";
-    for (const auto& cells : table.rows) h << "<td class=\"num\">" << html_escape(cells[c]) << "</td>";
-    h << "</tr>\n";
+    const Measure m = split_header(table.header[c]);
+    std::vector<std::string> row{m.name, m.unit.empty() ? kDash : m.unit};
+    bool any = false;
+    const bool peak = m.name == "GPU peak" || m.name == "CPU peak";
+    for (const auto& cells : table.rows) {
+      std::string cell = c < cells.size() ? cells[c] : kDash;
+      if (peak) cell = without_nested_parentheses(cell);
+      if (cell == "yes (recommended)") cell = "yes: chosen";  // "(recommended)" is the table's widest word
+      for (std::string::size_type at; (at = cell.find(" (mean power)")) != std::string::npos;) cell.erase(at, 13);
+      if (m.unit == "%")
+        if (const auto p = cell.find(" %"); p != std::string::npos) cell.erase(p, 2);
+      any = any || cell != kDash;
+      row.push_back(std::move(cell));
+    }
+    if (any) body.push_back(std::move(row));
   }
-  h << "</table>\n";
-  if (!table.notes.empty()) {
-    h << "<div class=\"flags\"><p><b>Flags</b> (implausible numbers, marked [n] above):</p>\n";
-    for (const std::string& n : table.notes) h << "<p class=\"note\">" << html_escape(n) << "</p>\n";
-    h << "</div>\n";
+  // Column widths from the longest words at ~5 pt a character (DejaVu Serif at 8.5 pt averages 4.7 pt) plus
+  // padding: as many platforms per table as fit the text width after the measure and unit columns. The PDF writer
+  // then sizes the columns from the real font metrics.
+  constexpr double kCharPt = 5.0, kPadPt = 8, kMeasurePct = 22, kUnitPct = 9;
+  const double platform_pt = ReportBuilder::kTextWidthPt * (100 - kMeasurePct - kUnitPct) / 100;
+  std::size_t widest = 6;
+  for (std::size_t p = 0; p < table.rows.size(); ++p) {
+    widest = std::max(widest, longest_word(table.rows[p][0]));
+    for (const auto& row : body) widest = std::max(widest, longest_word(row[p + 2]));
   }
+  const std::size_t per_table = std::clamp<std::size_t>(
+      static_cast<std::size_t>(platform_pt / (static_cast<double>(widest) * kCharPt + kPadPt)), 1, 6);
+  std::vector<ReportTable> out;
+  for (std::size_t first = 0; first < table.rows.size(); first += per_table) {
+    const std::size_t last = std::min(table.rows.size(), first + per_table);
+    ReportTable t;
+    t.caption = "Platforms at a glance";
+    if (table.rows.size() > per_table)
+      t.caption += " (platforms " + std::to_string(first + 1) + " to " + std::to_string(last) + " of " +
+                   std::to_string(table.rows.size()) + ")";
+    t.caption +=
+        ". Timings are mean \xC2\xB1 SD (n); efficiency (paper): peak / max power, (mean): peak / mean "
+        "power; " +
+        std::string(kDash) + ": no data.";
+    std::vector<std::string> head{"Measure", "Unit"};
+    t.width_percent = {static_cast<int>(kMeasurePct), static_cast<int>(kUnitPct)};
+    const int each = static_cast<int>((100 - kMeasurePct - kUnitPct) / static_cast<double>(last - first));
+    for (std::size_t p = first; p < last; ++p) {
+      head.push_back(table.rows[p][0]);
+      t.width_percent.push_back(each);
+    }
+    t.header.push_back(std::move(head));
+    for (const auto& row : body) {
+      std::vector<std::string> cells{row[0], row[1]};
+      for (std::size_t p = first; p < last; ++p) cells.push_back(row[p + 2]);
+      t.rows.push_back(std::move(cells));
+    }
+    // The flags' footnotes once, under the last part, in short: the reasons in full are in the platform details.
+    if (last == table.rows.size()) {
+      for (const std::string& note : table.notes) t.notes.push_back(short_flag_line(note));
+      if (!table.notes.empty()) t.notes.push_back("In full: Platform details.");
+    }
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+std::string recommendation_text(const ReportInput& in) {
   for (const PlatformVerdict& v : in.verdicts)
     if (v.recommended)
-      h << "<p><b>Recommended" << (in.constraints.empty() ? "" : " under " + html_escape(in.constraints)) << ": "
-        << html_escape(v.platform)
-        << "</b> (the highest peak among the platforms that meet every constraint and have a "
-        << "power log).</p>\n";
+      return "Recommended" + (in.constraints.empty() ? std::string() : " under " + in.constraints) + ": " + v.platform;
+  return {};
+}
 
-  // Detection networks timed with bench dnn: one row per platform, network, input and target, as in the views.
-  if (!in.inference_runs.empty()) {
-    const ExportTable inf = inference_table(in.inference_runs);
-    h << "<h2>Detection network inference</h2>\n<table width=\"100%\">\n<tr>";
-    for (const std::string& c : inf.header) h << "<th>" << html_escape(c) << "</th>";
-    h << "</tr>\n";
-    for (const auto& cells : inf.rows) {
-      h << "<tr>";
-      for (std::size_t c = 0; c < cells.size(); ++c)
-        h << "<td" << (c >= 4 ? " class=\"num\"" : "") << ">" << html_escape(cells[c]) << "</td>";
-      h << "</tr>\n";
-    }
-    h << "</table>\n";
-    for (const std::string& n : inf.notes) h << "<p class=\"note\">" << html_escape(n) << "</p>\n";
-  }
+std::string report_html(const ReportInput& in) { return report_html(in, report_sections()); }
 
-  for (std::size_t i = 0; i < in.rows.size(); ++i) platform_page(h, table, i, in.rows[i]);
-  h << in.candidates_html;
-
-  if (!in.figures.empty()) {
-    h << "<div class=\"platform\">\n<h2>Figures</h2>\n";
-    for (const ReportFigure& f : in.figures)
-      h << "<figure><img src=\"" << html_escape(f.image_src) << "\" width=\"600\" alt=\"" << html_escape(f.caption)
-        << "\"><figcaption>" << html_escape(f.caption) << "</figcaption></figure>\n";
-    h << "</div>\n";
-  }
-  h << "</body></html>\n";
-  return h.str();
+std::string report_html(const ReportInput& in, const std::vector<ReportSection>& sections) {
+  ReportBuilder b;
+  b.html("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">\n<title>BenchScope report: " +
+         html_escape(in.workspace) + "</title>\n<style>" + kStyle + "</style></head>\n<body>\n");
+  for (const ReportSection& section : sections) section(in, b);
+  b.html("</body></html>\n");
+  return b.str();
 }
 
 }  // namespace bs

@@ -1,23 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The one-page-per-platform report (benchscope-cli report, GUI File > Export report) as self-contained HTML:
-// the comparison table, then per platform its peaks, % of theoretical peak, power, GFLOPS/W, battery runtime and
-// pipeline timings with where each number came from, then the figures. No Qt: the figures arrive as image URIs
-// (data: URIs for a self-contained file, resource names when Qt prints the same HTML to PDF).
-#include <span>
+// The platform report (benchscope-cli report, GUI File > Export report) as HTML, in the shape of a benchmark
+// report: page one holds the decision (the recommendation and the constraints it met, one comparison chart, the
+// platforms table at the text width), then the details per platform, the figures, and an appendix of sources and
+// provenance. No Qt: the figures arrive as image URIs (data: URIs for a self-contained file, resource names when Qt
+// prints the same HTML to PDF).
+//
+// The report is a list of sections, each one function (ReportSection) that writes into a ReportBuilder; a new part
+// of the report is one more function appended to the list in report_sections() (report_sections.h).
+#include <functional>
+#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "analysis/platform/platform_comparison.h"
 #include "model/dnn_run.h"
+#include "report/report_html.h"
 
 namespace bs {
-
-struct ReportFigure {
-  std::string caption;
-  std::string image_src;  // an <img src>: "data:image/png;base64,..." or a name the renderer resolves
-};
 
 struct ReportInput {
   std::string workspace;  // shown in the heading
@@ -26,12 +26,26 @@ struct ReportInput {
   std::vector<PlatformRow> rows;
   std::vector<PlatformVerdict> verdicts;  // same order as rows, may be empty
   std::string constraints;                // human-readable constraints the verdicts used, e.g. "power budget 10 W"
-  std::vector<ReportFigure> figures;
-  std::vector<DnnRun> inference_runs;  // bench dnn runs: a table after the comparison when there are any
-  std::string candidates_html;         // the "Candidates" section (report/candidates_section.h), after the pages
+  std::optional<ReportFigure> comparison_chart;  // page one's chart (report_chart in figures/)
+  std::vector<ReportFigure> figures;             // the template's figures, in template order
+  std::vector<DnnRun> inference_runs;            // bench dnn runs: a table after the details when there are any
+  std::string data_selection;                    // which data the report covers ("all data given")
+  std::string candidates_html;  // the "Candidates" section (report/candidates_section.h), after the details
 };
 
+using ReportSection = std::function<void(const ReportInput&, ReportBuilder&)>;
+
+// The sections of report_sections() in order.
 std::string report_html(const ReportInput& in);
-std::string html_escape(std::string_view text);
+std::string report_html(const ReportInput& in, const std::vector<ReportSection>& sections);
+
+// The platforms table of page one: one row per measure that has a value for some platform (a measure nobody has is
+// left out), a unit column, one column per platform. More platforms than fit across the text width (whole words,
+// measured in characters) split it into several tables of the same rows.
+std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>& rows,
+                                                 const std::vector<PlatformVerdict>& verdicts);
+
+// The recommendation in one sentence and the constraints it met, for page one ("" when nothing can be recommended).
+std::string recommendation_text(const ReportInput& in);
 
 }  // namespace bs

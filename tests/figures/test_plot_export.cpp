@@ -6,8 +6,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../support/figure_checks.h"
 #include "paper_figures.h"
 #include "plot_export.h"
+#include "plot_labels.h"
 
 class TestPlotExport : public QObject {
   Q_OBJECT
@@ -69,11 +71,11 @@ class TestPlotExport : public QObject {
     o.width_mm = 122;
     o.height_mm = 0;
     {
-      QCustomPlot probe;  // prepare_export on a copy of the situation: what the export lays out
+      QCustomPlot probe;  // layout_figure on a copy of the situation: what the export lays out
       probe.resize(1200, 700);
       for (int g = 0; g < 14; ++g) probe.addGraph()->setName(plot.graph(g)->name());
       probe.legend->setVisible(true);
-      const bs::ui::FigureOptions sized = bs::ui::prepare_export(probe, o);
+      const bs::ui::FigureOptions sized = bs::ui::layout_figure(probe, o);
       QVERIFY(sized.height_mm > 122 * 0.62);  // the legend's rows are added below the axes
       QCOMPARE(probe.plotLayout()->rowCount(), 2);
       QCOMPARE(probe.plotLayout()->element(1, 0), static_cast<QCPLayoutElement*>(probe.legend));
@@ -81,11 +83,9 @@ class TestPlotExport : public QObject {
       QVERIFY(probe.legend->columnCount() > 1);  // in columns, as many as fit the width
       const double width_pt = 122 / 25.4 * 72;
       QVERIFY(probe.legend->minimumOuterSizeHint().width() <= width_pt);
-      // Laid out at the figure's size, the legend is entirely below the axes.
-      probe.setViewport(QRect(0, 0, static_cast<int>(width_pt), static_cast<int>(sized.height_mm / 25.4 * 72)));
-      probe.plotLayout()->update(QCPLayoutElement::upPreparation);
-      probe.plotLayout()->update(QCPLayoutElement::upMargins);
-      probe.plotLayout()->update(QCPLayoutElement::upLayout);
+      // Drawn at the figure's size, the legend is entirely below the axes and nothing overlaps.
+      QVERIFY2(bs::test::figure_problems(probe, sized).isEmpty(),
+               qPrintable(bs::test::figure_problems(probe, sized).join('\n')));
       QVERIFY(probe.legend->outerRect().top() >= probe.axisRect()->outerRect().bottom() - 1);
     }
 
@@ -102,6 +102,96 @@ class TestPlotExport : public QObject {
     QCOMPARE(plot.axisRect()->insetLayout()->elementAt(0), static_cast<QCPLayoutElement*>(plot.legend));
     QCOMPARE(plot.axisRect()->insetLayout()->insetAlignment(0), Qt::AlignTop | Qt::AlignLeft);
     QCOMPARE(plot.legend->columnCount(), 1);
+  }
+
+  // Issue #33.2: eight sweeps of one series read and look alike: one legend entry "(8 runs)". Twenty more series
+  // than a reader can take in at a column's width: at most kMaxLegendRows rows, the rest named in a note under
+  // the legend. At LNCS and IEEE widths alike.
+  void legend_sized_to_content() {
+    for (const double width_mm : {122.0, 88.9}) {
+      QCustomPlot plot;
+      plot.resize(1000, 600);
+      for (int g = 0; g < 8; ++g) {
+        plot.addGraph()->setData({1, 10, 100}, {1.0 + g, 2.0, 3.0});
+        plot.graph(g)->setName("AMD EPYC · CPU SIMD · D=4 (throughput)");
+        plot.graph(g)->setPen(QPen(Qt::blue));
+      }
+      for (int g = 0; g < 24; ++g) {
+        QCPGraph* graph = plot.addGraph();
+        graph->setData({1, 10, 100}, {0.5 * g, 1.0 * g, 1.5 * g});
+        graph->setName(QStringLiteral("Device %1 · OpenCL · D=%2").arg(g).arg(1 + g % 3));
+        graph->setPen(QPen(QColor::fromHsv(g * 15, 200, 200)));
+      }
+      plot.legend->setVisible(true);
+      bs::ui::FigureOptions o;
+      o.width_mm = width_mm;
+      const bs::ui::FigureOptions sized = bs::ui::layout_figure(plot, o);
+      QStringList names;
+      for (int i = 0; i < plot.legend->itemCount(); ++i)
+        names << static_cast<QCPPlottableLegendItem*>(plot.legend->item(i))->plottable()->name();
+      QCOMPARE(names.count("AMD EPYC · CPU SIMD · D=4 (throughput) (8 runs)"), 1);
+      QVERIFY(!names.contains("AMD EPYC · CPU SIMD · D=4 (throughput)"));
+      QVERIFY(plot.legend->rowCount() <= bs::ui::kMaxLegendRows);
+      const QString note = bs::ui::legend_note(plot);
+      QVERIFY2(note.startsWith("Also drawn ("), qPrintable(note));
+      // The rest is named, or counted when more than three lines would be needed: never silently dropped.
+      QVERIFY2(note.contains("Device 23") || note.contains(" more."), qPrintable(note));
+      qInfo("%s", qPrintable(note));
+      const QStringList problems = bs::test::figure_problems(plot, sized);
+      QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
+    }
+  }
+
+  // Peak labels that would collide: the higher keeps its label, the lesser is dropped, none overlap, at LNCS and
+  // IEEE widths; the view's zoom that cut a curve off does not reach the figure, and comes back after the export.
+  void labels_apart_and_nothing_clipped() {
+    for (const double width_mm : {122.0, 88.9}) {
+      QCustomPlot plot;
+      plot.resize(1000, 600);
+      auto* labels = new bs::ui::AnchoredLabels(&plot);
+      const std::vector<double> peaks = {9.34, 9.14, 9.3, 5.25, 2.71, 2.4, 1.42, 0.49};
+      for (std::size_t g = 0; g < peaks.size(); ++g) {
+        QCPGraph* graph = plot.addGraph();
+        graph->setData({256, 1e3, 1e4, 1e5, 1e6}, {0.1, peaks[g] / 3, peaks[g] * 0.9, peaks[g], peaks[g] * 0.99});
+        graph->setName(QStringLiteral("series %1").arg(g));
+        labels->add_curve(graph);
+      }
+      for (std::size_t g = 0; g < peaks.size(); ++g)  // highest first
+        labels->add(1e5, peaks[g], QStringLiteral("%1 TFLOPS").arg(peaks[g], 0, 'f', 2), Qt::darkBlue);
+      plot.legend->setVisible(true);
+      plot.xAxis->setScaleType(QCPAxis::stLogarithmic);
+      plot.xAxis->setRange(256, 1e6);
+      plot.yAxis->setRange(0, 6);  // zoomed: the top three curves are cut off on screen
+      bs::ui::FigureOptions o;
+      o.width_mm = width_mm;
+      o.formats = {"png"};
+      o.dpi = 150;
+      QTemporaryDir dir;
+      QStringList files;
+      {
+        QCustomPlot& p = plot;
+        bs::ui::FigureOptions sized = bs::ui::layout_figure(p, o);
+        const QStringList problems = bs::test::figure_problems(p, sized);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
+        QVERIFY(p.yAxis->range().upper >= 9.34);
+        int shown = 0;
+        for (QCPItemText* t : labels->labels()) shown += t->visible();
+        QVERIFY(shown >= 3);
+        QVERIFY(labels->labels().front()->visible());  // the highest peak keeps its label
+      }
+    }
+    // export_plot restores the view's range afterwards.
+    QCustomPlot view;
+    view.resize(800, 500);
+    view.addGraph()->setData({1, 2, 3}, {1, 10, 2});
+    view.yAxis->setRange(0, 4);
+    QTemporaryDir dir;
+    bs::ui::FigureOptions o;
+    o.formats = {"png"};
+    o.dpi = 72;
+    QStringList files;
+    bs::ui::export_plot(view, dir.filePath("v"), o, "v", files);
+    QCOMPARE(view.yAxis->range().upper, 4.0);
   }
 
   void unknown_format_is_refused() {

@@ -12,9 +12,11 @@
 
 #include "analysis/peaks/flops.h"
 #include "analysis/stats/units.h"
+#include "chart_marks.h"
 #include "common/count_tickers.h"
 #include "device_palette.h"
 #include "peaks/peak_overlay.h"
+#include "report/run_names.h"
 
 namespace bs::ui {
 namespace {
@@ -80,8 +82,9 @@ FlopsPlot::FlopsPlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(t
   rebuild();
 }
 
-void FlopsPlot::set_runs(const std::vector<const StoredRun*>& runs) {
+void FlopsPlot::set_runs(const std::vector<const StoredRun*>& runs, const std::map<std::int64_t, std::string>& labels) {
   runs_ = runs;
+  labels_ = labels;
   rebuild();
 }
 
@@ -143,8 +146,20 @@ void FlopsPlot::rebuild() {
   scale_ = std::pow(10.0, exponent);
   plot_->yAxis->setLabel(tr("Performance (%1FLOPS)").arg(QString::fromUtf8(si_prefix(exponent).data())));
 
+  // Names that read apart, and a marker per repeat of one series.
+  std::vector<RunIdentity> identities;
+  for (const StoredRun* r : runs_) {
+    const auto label = labels_.find(r->id);
+    identities.push_back(run_identity(r->run, series_name(r->run).toStdString(),
+                                      label == labels_.end() ? std::string() : label->second));
+  }
+  const std::vector<std::string> names = distinct_names(identities);
+  std::map<std::string, int> repeats;
+  std::size_t index = 0;
   for (const StoredRun* stored : runs_) {
     const FlopsRun& run = stored->run;
+    const std::string& name = names[index++];
+    const int repeat = repeats[run.platform + '\x1f' + series_name(run).toStdString()]++;
     const auto curve = flops_curve(run);
     QVector<double> keys, mean, lo, hi;
     bool repeated = false;
@@ -177,10 +192,10 @@ void FlopsPlot::rebuild() {
     // Colour is the device, line style D, and a sparse marker along the curve the backend: the same device's CUDA
     // and OpenCL curves (one colour, one D) are told apart, in the legend too.
     g->setScatterStyle(QCPScatterStyle(
-        static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(QString::fromStdString(run.backend))), color,
-        Qt::white, 6));
+        static_cast<QCPScatterStyle::ScatterShape>(run_marker_shape(QString::fromStdString(run.backend), repeat)),
+        color, Qt::white, 6));
     g->setScatterSkip(std::max(0, static_cast<int>(keys.size()) / 8 - 1));
-    g->setName(series_name(run));
+    g->setName(QString::fromStdString(name));
     series_.push_back({g, stored});
     overlay_->add_curve(g);
 
@@ -189,21 +204,24 @@ void FlopsPlot::rebuild() {
       marker->setData({static_cast<double>(peak->workers)}, {peak->flops / scale_}, true);
       marker->setLineStyle(QCPGraph::lsNone);
       marker->setScatterStyle(QCPScatterStyle(
-          static_cast<QCPScatterStyle::ScatterShape>(backend_marker_shape(QString::fromStdString(run.backend))),
+          static_cast<QCPScatterStyle::ScatterShape>(run_marker_shape(QString::fromStdString(run.backend), repeat)),
           color.darker(130), color, 9));
       marker->removeFromLegend();
       const std::vector<PeakRow> checked = peak_table(std::span<const FlopsRun>(&run, 1));
-      peaks.push_back(
-          {peak->flops, static_cast<double>(peak->workers), color, !checked.empty() && !checked.front().flags.empty()});
+      const bool flagged = !checked.empty() && !checked.front().flags.empty();
+      // A flagged peak is drawn where it was measured, as a hollow marker; its label carries the warning sign.
+      if (flagged) mark_flagged_points(marker, color);
+      peaks.push_back({peak->flops, static_cast<double>(peak->workers), color, flagged});
     }
   }
   plot_->legend->setVisible(!series_.empty());
   // Labels in order of peak height: where two collide, the higher peak keeps its label.
   std::stable_sort(peaks.begin(), peaks.end(), [](const PeakMark& a, const PeakMark& b) { return a.flops > b.flops; });
   for (const PeakMark& p : peaks)
-    overlay_->add_peak_label(
-        p.workers, p.flops / scale_,
-        (p.flagged ? QStringLiteral("⚠ ") : QString()) + QString::fromStdString(format_si(p.flops, "FLOPS")), p.color);
+    overlay_->add_peak_label(p.workers, p.flops / scale_,
+                             p.flagged ? flag_label(QString::fromStdString(format_si(p.flops, "FLOPS")))
+                                       : QString::fromStdString(format_si(p.flops, "FLOPS")),
+                             p.color);
   reset_view();
 }
 

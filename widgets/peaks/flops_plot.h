@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <QWidget>
+#include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "store/workspace.h"
@@ -19,7 +22,9 @@ class FlopsPlot : public QWidget {
   Q_OBJECT
  public:
   explicit FlopsPlot(QWidget* parent = nullptr);
-  void set_runs(const std::vector<const StoredRun*>& runs);
+  // `labels`: the user's names of runs by id (store/run_label_store.h). Series that would read the same add what
+  // differs (label, date and time, host, N); repeated runs of one series take their own marker.
+  void set_runs(const std::vector<const StoredRun*>& runs, const std::map<std::int64_t, std::string>& labels = {});
   void set_log_x(bool on);
   void set_log_y(bool on);
   bool log_x() const;
@@ -48,6 +53,7 @@ class FlopsPlot : public QWidget {
   QCheckBox* log_x_box_;
   QCheckBox* log_y_box_;
   std::vector<const StoredRun*> runs_;
+  std::map<std::int64_t, std::string> labels_;
   std::vector<Series> series_;
   double scale_ = 1;  // FLOPS per displayed unit (1e12 when the axis reads TFLOPS)
 };

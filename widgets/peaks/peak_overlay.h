@@ -11,6 +11,7 @@ class QCPGraph;
 class QCPItemText;
 
 namespace bs::ui {
+class AnchoredLabels;
 
 // Keeps a plot's legend and its peak labels where they hide the least data. After every layout pass (zoom, pan,
 // resize) the labels are re-placed around their peaks, skipping any that would collide; the legend moves to the
@@ -37,18 +38,13 @@ class PeakOverlay : public QObject {
  private:
   void on_after_layout();
   void place_legend();
-  void place_labels();
   void make_room_for_legend(Qt::Alignment corner);
-  std::vector<QRectF> marker_boxes() const;  // peak markers in pixels
 
-  struct Label {
-    QPointer<QCPItemText> item;
-    double key, value;
-  };
   QCustomPlot* plot_;
+  AnchoredLabels* labels_;  // the peak labels: the same placement as in figure exports (figures/plot_labels.h)
   std::vector<QPointer<QCPGraph>> curves_;
-  std::vector<Label> labels_;
   bool legend_pending_ = true;
+  bool moved_below_ = false;  // this overlay put the legend under the plot (no room inside at that size)
   QSize laid_out_size_;
 };
 

@@ -9,6 +9,9 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
+#include "chart_marks.h"
+#include "plot_export.h"
+
 namespace bs::ui {
 namespace {
 
@@ -115,6 +118,8 @@ void EfficiencyView::fill_table() {
 
 void EfficiencyView::fill_plot() {
   plot_->clearPlottables();
+  plot_->clearItems();
+  clear_figure_notes(*plot_);
   const int n = static_cast<int>(rows_.size());
   QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
   for (int i = 0; i < n; ++i)
@@ -122,45 +127,60 @@ void EfficiencyView::fill_plot() {
   plot_->xAxis->setTicker(ticker);
   plot_->xAxis->setSubTicks(false);
   plot_->xAxis->setTickLength(0, 4);
-  // Two bars per platform side by side (QCPBarsGroup), one colour per variant.
-  auto* group = new QCPBarsGroup(plot_);
+  // Two bars per platform side by side, one colour per variant. A figure made from a flagged peak or power log is
+  // drawn at its value, hatched, and labelled "⚠": shown, marked, never replaced.
   const struct {
     QString name;
     QColor color;
     double PlatformEfficiency::*value;
+    double offset;
   } variants[] = {
-      {tr("Paper: peak / (V × max current)"), QColor(31, 119, 180), &PlatformEfficiency::paper_gflops_per_w},
-      {tr("Peak / mean power"), QColor(255, 127, 14), &PlatformEfficiency::mean_power_gflops_per_w},
+      {tr("Paper: peak / (V × max current)"), QColor(31, 119, 180), &PlatformEfficiency::paper_gflops_per_w, -0.19},
+      {tr("Peak / mean power"), QColor(255, 127, 14), &PlatformEfficiency::mean_power_gflops_per_w, 0.19},
   };
   double top = 0;
+  bool any_flagged = false;
   for (const auto& v : variants) {
-    auto* bars = new QCPBars(plot_->xAxis, plot_->yAxis);
-    bars->setName(v.name);
-    bars->setPen(QPen(v.color.darker(130)));
-    bars->setBrush(v.color);
-    bars->setWidth(0.35);
-    bars->setBarsGroup(group);
-    QVector<double> keys, values;
-    for (int i = 0; i < n; ++i) {
-      keys << i + 1;
-      values << rows_[static_cast<std::size_t>(i)].*v.value;
-      top = std::max(top, values.back());
+    auto* plain = new QCPBars(plot_->xAxis, plot_->yAxis);
+    auto* flagged = new QCPBars(plot_->xAxis, plot_->yAxis);
+    for (QCPBars* bars : {plain, flagged}) {
+      bars->setName(v.name);
+      bars->setPen(QPen(v.color.darker(130)));
+      bars->setBrush(v.color);
+      bars->setWidth(0.35);
     }
-    bars->setData(keys, values);
-  }
-  // Value labels above the bars, so the figures can be read off the chart (104.64, 41.26 on the paper's data).
-  plot_->clearItems();
-  for (int i = 0; i < n; ++i) {
-    const PlatformEfficiency& e = rows_[static_cast<std::size_t>(i)];
-    const double offsets[] = {-0.19, 0.19};
-    const double values[] = {e.paper_gflops_per_w, e.mean_power_gflops_per_w};
-    for (int k = 0; k < 2; ++k) {
+    mark_flagged_bars(flagged, v.color);
+    flagged->removeFromLegend();
+    QVector<double> keys, values, flagged_keys, flagged_values;
+    for (int i = 0; i < n; ++i) {
+      const PlatformEfficiency& e = rows_[static_cast<std::size_t>(i)];
+      const double value = e.*v.value;
+      (e.flags.empty() ? keys : flagged_keys) << i + 1 + v.offset;
+      (e.flags.empty() ? values : flagged_values) << value;
+      top = std::max(top, value);
+      // The value over its bar, so the figures can be read off the chart (104.64, 41.26 on the paper's data).
       auto* label = new QCPItemText(plot_);
-      label->position->setCoords(i + 1 + offsets[k], values[k]);
+      label->position->setCoords(i + 1 + v.offset, value);
       label->setPositionAlignment(Qt::AlignHCenter | Qt::AlignBottom);
-      label->setText(QString::number(values[k], 'f', 2));
+      label->setText(e.flags.empty() ? QString::number(value, 'f', 2) : flag_label(QString::number(value, 'f', 2)));
+      label->setColor(e.flags.empty() ? Qt::black : kFlagColor);
       label->setPadding(QMargins(0, 0, 0, 2));
     }
+    plain->setData(keys, values);
+    flagged->setData(flagged_keys, flagged_values);
+    any_flagged = any_flagged || !flagged_keys.isEmpty();
+  }
+  // One legend entry for the hatching, and the reasons in the figure's note (an export carries them).
+  if (any_flagged) {
+    auto* key = new QCPBars(plot_->xAxis, plot_->yAxis);
+    key->setName(tr("⚠ from a flagged peak or power log (hatched)"));
+    key->setPen(QPen(QColor(90, 90, 90)));
+    mark_flagged_bars(key, QColor(120, 120, 120));
+    for (const PlatformEfficiency& e : rows_)
+      if (!e.flags.empty())
+        add_figure_note(*plot_,
+                        QStringLiteral("⚠ %1: %2")
+                            .arg(QString::fromStdString(e.peak.platform), QString::fromStdString(flags_text(e.flags))));
   }
   plot_->xAxis->setRange(0.4, n + 0.6);
   plot_->yAxis->setRange(0, top > 0 ? top * 1.3 : 1);  // room for the value labels and the legend

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "device_palette.h"
+#include "report/run_names.h"
 
 namespace bs::ui {
 namespace {
@@ -146,7 +147,7 @@ TreeItemRef WorkspaceTree::ref_at(const QModelIndex& index) const {
     ref.kind = TreeItemRef::Kind::Run;
     ref.id = item->data(kRunIdRole).toLongLong();
     ref.import_id = item->data(kImportRole).toLongLong();
-    ref.name = item->text();
+    ref.name = item->data(kNameRole).toString();  // the run's label: what a rename changes
   } else if (item->data(kKindRole).isValid()) {
     ref.kind = static_cast<TreeItemRef::Kind>(item->data(kKindRole).toInt());
     ref.id = item->data(kIdRole).toLongLong();
@@ -206,10 +207,31 @@ void WorkspaceTree::keyPressEvent(QKeyEvent* event) {
   QTreeView::keyPressEvent(event);
 }
 
-void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
+void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs, const std::map<std::int64_t, std::string>& labels) {
   updating_ = true;
   model_.clear();
   QStandardItem* root = model_.invisibleRootItem();
+  // Row texts that read apart within each backend (distinct_names adds date and time, host, N where needed).
+  std::vector<RunIdentity> identities;
+  for (const StoredRun& s : runs) {
+    const FlopsRun& r = s.run;
+    // A sweep from another tool (Google Benchmark) states FLOPS, not D and N: its family and counter name it.
+    const QString text =
+        r.dims > 0 ? QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")
+                         .arg(r.dims)
+                         .arg(QString::fromStdString(r.variant))
+                         .arg(r.iterations)
+                         .arg(r.samples.size())
+                   : QStringLiteral("%1 · %2 pts").arg(QString::fromStdString(r.variant)).arg(r.samples.size());
+    const auto label = labels.find(s.id);
+    // Platform, device and backend are the tree's parents: they keep rows of different series from reading alike.
+    RunIdentity id = run_identity(r, r.platform + '\x1f' + r.device + '\x1f' + r.backend + '\x1f' + text.toStdString(),
+                                  label == labels.end() ? std::string() : label->second);
+    id.detail.clear();  // N is in the row already
+    identities.push_back(std::move(id));
+  }
+  const std::vector<std::string> names = distinct_names(identities);
+  std::size_t index = 0;
   for (const StoredRun& s : runs) {
     const FlopsRun& r = s.run;
     QStandardItem* platform = child_named(root, QString::fromStdString(r.platform));
@@ -217,14 +239,11 @@ void WorkspaceTree::set_runs(const std::vector<StoredRun>& runs) {
     device->setIcon(swatch(device_color(s.color_index)));
     device->setData(s.color_index, kColorRole);
     QStandardItem* backend = child_named(device, QString::fromStdString(r.backend));
-    // A sweep from another tool (Google Benchmark) states FLOPS, not D and N: its family and counter name it.
-    auto* item = new QStandardItem(
-        r.dims > 0 ? QStringLiteral("D = %1 · %2 · N = %L3 · %4 pts")
-                         .arg(r.dims)
-                         .arg(QString::fromStdString(r.variant))
-                         .arg(r.iterations)
-                         .arg(r.samples.size())
-                   : QStringLiteral("%1 · %2 pts").arg(QString::fromStdString(r.variant)).arg(r.samples.size()));
+    std::string name = names[index++];
+    name.erase(0, name.rfind('\x1f') + 1);  // the parents' part of the identity
+    auto* item = new QStandardItem(QString::fromStdString(name));
+    const auto label = labels.find(s.id);
+    item->setData(label == labels.end() ? QString() : QString::fromStdString(label->second), kNameRole);
     item->setData(QVariant::fromValue<qint64>(s.id), kRunIdRole);
     // Sweeps derived from stored Google Benchmark results (negative ids) are removed with their result set's import.
     item->setData(QVariant::fromValue<qint64>(s.import_id), kImportRole);

@@ -3,6 +3,9 @@
 #include <QSet>
 #include <QStandardItemModel>
 #include <QTreeView>
+#include <cstdint>
+#include <map>
+#include <string>
 
 #include "store/workspace.h"
 
@@ -14,10 +17,13 @@ struct TreeItemRef {
   Kind kind = Kind::None;
   qint64 id = 0;         // run, trace, frame, pipeline run or result set id
   qint64 import_id = 0;  // the import that brought it (0: none, e.g. a preset or a platform)
-  QString name;          // what is shown and renamed: platform name, log label, preset name, ...
+  QString name;          // what is shown and renamed: platform name, log label, preset name, a run's label, ...
   QString platform;      // a device's platform (devices are named within their platform)
   int color_index = -1;  // a device's colour
-  bool renamable() const { return kind == Kind::Platform || kind == Kind::PowerLog || kind == Kind::Frame; }
+  // A stored run (id > 0) is renamed by its label; sweeps derived from other tools' results (id < 0) are not.
+  bool renamable() const {
+    return kind == Kind::Platform || kind == Kind::PowerLog || kind == Kind::Frame || (kind == Kind::Run && id > 0);
+  }
   bool removable() const { return import_id > 0 || kind == Kind::BatteryPreset; }
 };
 
@@ -34,7 +40,9 @@ class WorkspaceTree : public QTreeView {
   Q_OBJECT
  public:
   explicit WorkspaceTree(QWidget* parent = nullptr);
-  void set_runs(const std::vector<StoredRun>& runs);  // keeps the visibility of runs already known
+  // Keeps the visibility of runs already known. `labels`: the user's names of runs by id, shown first in the run's
+  // row; rows of one backend that would read the same add what differs (date and time, host).
+  void set_runs(const std::vector<StoredRun>& runs, const std::map<std::int64_t, std::string>& labels = {});
   QSet<qint64> visible_runs() const;
   void set_run_visible(qint64 run_id, bool visible);
   bool select_run(qint64 run_id);  // expands its parents, selects and scrolls to it; false when unknown

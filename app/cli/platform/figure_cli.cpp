@@ -7,6 +7,7 @@
 #include "device_palette.h"
 
 #include "frames/frame_store.h"
+#include "store/run_label_store.h"
 
 namespace bs::cli {
 
@@ -54,9 +55,14 @@ ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedDa
     warn_damage(ws);
     if (const auto frames = ws.frames(); !frames.empty()) fd.frame = load_frame(ws, frames.front(), cancel);
   }
-  // A workspace's devices keep their stored colours (the GUI's); loose files get colours in order.
-  if (paths.size() == 1 && looks_like_workspace(paths[0]))
-    for (const DeviceRecord& d : Workspace(paths[0]).devices()) fd.colors[{d.platform, d.device}] = d.color_index;
+  // A workspace's devices keep their stored colours (the GUI's); loose files get colours in order. Its runs come
+  // first in data.runs, in ws.runs() order (load_inputs), so their labels line up with them.
+  if (paths.size() == 1 && looks_like_workspace(paths[0])) {
+    const Workspace ws(paths[0]);
+    for (const DeviceRecord& d : ws.devices()) fd.colors[{d.platform, d.device}] = d.color_index;
+    fd.run_labels = run_labels_in_order(ws);
+    fd.run_labels.resize(std::min(fd.run_labels.size(), fd.runs.size()));
+  }
   for (const FlopsRun& r : data.runs) fd.colors.try_emplace({r.platform, r.device}, static_cast<int>(fd.colors.size()));
   // A platform known only by its power log gets the colour the GUI's Power and Battery tabs give it.
   std::vector<std::pair<std::string, int>> device_colors;

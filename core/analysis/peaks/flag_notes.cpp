@@ -31,4 +31,19 @@ void FlagNotes::add_to(ExportTable& table) const {
   for (std::string& l : lines()) table.notes.push_back(std::move(l));
 }
 
+std::string short_flag_line(const std::string& line) {
+  std::string s = line;
+  const auto bracket = s.find("] ");
+  const auto code = s.find(": ");
+  if (bracket != std::string::npos && code != std::string::npos && code > bracket) s.erase(bracket + 2, code - bracket);
+  const auto paren = s.find(" (");
+  const auto stop = s.find(". ");
+  if (paren != std::string::npos && (stop == std::string::npos || paren < stop))
+    s.resize(paren);
+  else if (stop != std::string::npos)
+    s.resize(stop);
+  if (s.empty() || s.back() != '.') s += '.';
+  return s;
+}
+
 }  // namespace bs

@@ -26,4 +26,9 @@ class FlagNotes {
   std::vector<PlausibilityFlag> notes_;
 };
 
+// A note line in short, for a figure or a page that has room for one line: "[1] above_spec_peak: 2.40 TFLOPS is
+// 5.4x the X's FP32 peak of 441.60 GFLOPS (24 EUs ...). No measurement ..." -> "[1] 2.40 TFLOPS is 5.4x the X's
+// FP32 peak of 441.60 GFLOPS." (the code and everything after the first sentence or parenthesis left out).
+std::string short_flag_line(const std::string& line);
+
 }  // namespace bs

@@ -21,9 +21,9 @@
 #include <set>
 
 #include <QTableWidget>
-#include "common/overlay_geometry.h"
 #include "export_figure_dialog.h"
 #include "main_window.h"
+#include "overlay_geometry.h"
 #include "peaks/flops_plot.h"
 #include "peaks/peak_overlay.h"
 #include "peaks/peak_table.h"

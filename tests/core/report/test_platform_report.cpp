@@ -1,62 +1,146 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The report's HTML without Qt: escaping, one page per platform with its numbers and sources, the recommendation,
-// the figures.
+// The report's HTML without Qt: escaping, the decision first (recommendation, constraints met, chart, table), the
+// platforms table transposed with units in their own column and empty measures left out, numbered figures with
+// their captions in the same paragraph, the details and the sources appendix, and sections as a list.
 #include <QTest>
 
 #include "report/platform_report.h"
+#include "report/report_sections.h"
+
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+bs::ReportInput two_robots() {
+  bs::ReportInput in;
+  in.workspace = "lab <1>.bsw";
+  in.generated = "2026-11-23T07:00:00";
+  in.tool = "BenchScope test";
+  bs::PlatformRow a;
+  a.platform = "Robot A";
+  a.mean_power_w = 12.5;
+  a.battery_runtime_h = 2;
+  bs::PeakRow gpu;
+  gpu.platform = "Robot A";
+  gpu.device = "GPU X";
+  gpu.backend = "OpenCL";
+  gpu.dims = 4;
+  gpu.peak.flops = 1.5e12;
+  gpu.peak.workers = 4096;
+  gpu.theoretical_flops = 3e12;
+  gpu.fraction_of_theoretical = 0.5;
+  a.gpu = gpu;
+  a.sources[bs::column::kPower] = {"a-current.csv", bs::DataOrigin::Measured, "mean of a-current.csv x 12 V"};
+  bs::PlatformRow b;
+  b.platform = "Robot B";
+  b.mean_power_w = 30;
+  in.rows = {a, b};
+  bs::ConstraintCheck met{"power budget (mean power)", "W", 15, 12.5, true, 2.5};
+  bs::ConstraintCheck failed{"power budget (mean power)", "W", 15, 30, false, -15};
+  in.verdicts = {{"Robot A", true, {met}, true, "", ""}, {"Robot B", false, {failed}, false, "", ""}};
+  in.constraints = "a power budget of 15 W";
+  in.comparison_chart = bs::ReportFigure{"Best peak per platform.", "data:image/png;base64,CCCC", 500, 150, "", ""};
+  in.figures = {{"All GPUs: FLOPS against workers.", "data:image/png;base64,AAAA", 345, 240, "fig1a", "GPU X"},
+                {"All CPUs: FLOPS against tasks.", "data:image/png;base64,BBBB", 345, 240, "fig2a", "CPU Y"}};
+  return in;
+}
+
+}  // namespace
 
 class TestPlatformReport : public QObject {
   Q_OBJECT
  private slots:
   void escapes() { QCOMPARE(bs::html_escape("a<b & \"c\">"), std::string("a&lt;b &amp; &quot;c&quot;&gt;")); }
 
-  void pages_numbers_sources_figures() {
-    bs::ReportInput in;
-    in.workspace = "lab <1>.bsw";
-    in.generated = "2026-11-23T07:00:00";
-    in.tool = "BenchScope test";
-    bs::PlatformRow a;
-    a.platform = "Robot A";
-    a.mean_power_w = 12.5;
-    a.battery_runtime_h = 2;
-    bs::PeakRow gpu;
-    gpu.platform = "Robot A";
-    gpu.device = "GPU X";
-    gpu.backend = "OpenCL";
-    gpu.dims = 4;
-    gpu.peak.flops = 1.5e12;
-    gpu.peak.workers = 4096;
-    gpu.theoretical_flops = 3e12;
-    gpu.fraction_of_theoretical = 0.5;
-    a.gpu = gpu;
-    a.sources[bs::column::kPower] = {"a-current.csv", bs::DataOrigin::Measured, "mean of a-current.csv x 12 V"};
-    bs::PlatformRow b;
-    b.platform = "Robot B";
-    in.rows = {a, b};
-    bs::PlatformVerdict va{"Robot A", true, {}, true, "", ""}, vb{"Robot B", false, {}, false, "", ""};
-    in.verdicts = {va, vb};
-    in.constraints = "a power budget of 15 W";
-    in.figures = {{"fig1a: All GPUs", "data:image/png;base64,AAAA"}};
-    const std::string html = bs::report_html(in);
+  // Page one: the recommendation with the constraint it met and the margin, before the chart and the table; the
+  // others and why they were not chosen.
+  void decision_first() {
+    const std::string html = bs::report_html(two_robots());
     QVERIFY(html.find("lab &lt;1&gt;.bsw") != std::string::npos);
-    QCOMPARE(std::count(html.begin(), html.end(), '\n') > 10, true);
-    std::size_t pages = 0;
-    for (auto p = html.find("class=\"platform\""); p != std::string::npos; p = html.find("class=\"platform\"", p + 1))
-      ++pages;
-    QCOMPARE(pages, std::size_t{3});  // two platforms + the figures
-    QVERIFY(html.find("<h2>Robot A</h2>") != std::string::npos);
-    QVERIFY(html.find("12.50") != std::string::npos);   // mean power
-    QVERIFY(html.find("120.00") != std::string::npos);  // 2 h of battery in minutes
-    QVERIFY(html.find("50.0 % of the theoretical peak") != std::string::npos);
-    QVERIFY(html.find("1500.00 GFLOPS on GPU X (OpenCL, D = 4, 4096 workers)") != std::string::npos);
-    QVERIFY(html.find("mean of a-current.csv x 12 V") != std::string::npos);
-    QVERIFY(html.find("measured") != std::string::npos);
-    QVERIFY(html.find("Recommended under a power budget of 15 W: Robot A") != std::string::npos);
-    QVERIFY(html.find("<img src=\"data:image/png;base64,AAAA\"") != std::string::npos);
+    const auto rec = html.find("Recommended under a power budget of 15 W: Robot A");
+    const auto met = html.find(" Met: power budget (mean power): 12.50 W against at most 15.00 W (2.50 W to spare).");
+    const auto other = html.find("Not chosen: Robot B: power budget 30.00 W (15.00 W over).");
+    const auto chart = html.find("<b>Figure 1.</b> Best peak per platform.");
+    const auto table = html.find("<b>Table 1.</b> Platforms at a glance");
+    const auto details = html.find("Platform details");
+    for (auto p : {rec, met, other, chart, table, details}) QVERIFY(p != std::string::npos);
+    QVERIFY(rec < met && met < chart && chart < table && table < details);
   }
 
-  // A flagged number carries its footnote marker in the comparison table, the note under it, and the reason on its
-  // platform's page; the page says how the power was measured.
+  // Units in a column of their own, numbers bare; a measure no platform has is not a row; the peak says its device.
+  void table_transposed_without_empty_rows() {
+    const auto tables = bs::platform_summary_tables(two_robots().rows, two_robots().verdicts);
+    QCOMPARE(tables.size(), std::size_t{1});
+    const bs::ReportTable& t = tables[0];
+    QCOMPARE(t.header.at(0), (std::vector<std::string>{"Measure", "Unit", "Robot A", "Robot B"}));
+    const auto row = [&](const std::string& name) -> const std::vector<std::string>* {
+      for (const auto& r : t.rows)
+        if (r[0] == name) return &r;
+      return nullptr;
+    };
+    QVERIFY(row("Mean power"));
+    QCOMPARE(*row("Mean power"), (std::vector<std::string>{"Mean power", "W", "12.50", "30.00"}));
+    QCOMPARE(row("GPU peak")->at(2), std::string("1.50 (GPU X, OpenCL)"));
+    QCOMPARE(row("Of theoretical peak")->at(1), std::string("%"));
+    QCOMPARE(row("Of theoretical peak")->at(2), std::string("50"));
+    QCOMPARE(row("Battery runtime")->at(2), std::string("120.00"));
+    QVERIFY(!row("CPU peak"));       // nobody has one
+    QVERIFY(!row("Preprocessing"));  // no pipeline runs
+    QVERIFY(!row("Max power"));
+  }
+
+  // Twelve platforms do not fit across a page with whole words: the table splits, same rows in each part.
+  void many_platforms_split() {
+    std::vector<bs::PlatformRow> rows;
+    for (int i = 0; i < 12; ++i) {
+      bs::PlatformRow r;
+      r.platform = "Platform number " + std::to_string(i);
+      r.mean_power_w = i + 1;
+      rows.push_back(r);
+    }
+    const auto tables = bs::platform_summary_tables(rows, {});
+    QVERIFY(tables.size() >= 2);
+    std::size_t platforms = 0;
+    for (const auto& t : tables) {
+      QCOMPARE(t.rows.size(), tables[0].rows.size());
+      QVERIFY(t.header[0].size() <= 8);
+      platforms += t.header[0].size() - 2;
+    }
+    QCOMPARE(platforms, std::size_t{12});
+  }
+
+  // Figures numbered in report order (the chart first), image and caption in one paragraph, template id said.
+  void figures_numbered_with_captions() {
+    const std::string html = bs::report_html(two_robots());
+    QVERIFY(html.find("<img src=\"data:image/png;base64,AAAA\"") != std::string::npos);
+    const auto fig2 = html.find("<img src=\"data:image/png;base64,AAAA\"");
+    const auto cap2 = html.find("<b>Figure 2.</b> All GPUs: FLOPS against workers. (fig1a)");
+    const auto fig3 = html.find("<img src=\"data:image/png;base64,BBBB\"");
+    const auto cap3 = html.find("<b>Figure 3.</b> All CPUs: FLOPS against tasks. (fig2a)");
+    QVERIFY(cap2 != std::string::npos && cap3 != std::string::npos);
+    QVERIFY(fig2 < cap2 && cap2 < fig3 && fig3 < cap3);
+    // Same paragraph: no </p> between an image and its caption.
+    QVERIFY(html.substr(fig2, cap2 - fig2).find("</p>") == std::string::npos);
+    QCOMPARE(count(html, "<b>Figure "), std::size_t{3});
+  }
+
+  void sources_appendix() {
+    const std::string html = bs::report_html(two_robots());
+    const auto appendix = html.find("Appendix A. Sources and provenance");
+    QVERIFY(appendix != std::string::npos);
+    QVERIFY(html.find("mean of a-current.csv x 12 V", appendix) != std::string::npos);
+    QVERIFY(html.find("measured", appendix) != std::string::npos);
+    QVERIFY(html.find("Figure 2 (fig1a): GPU X", appendix) != std::string::npos);
+    QVERIFY(html.find("50.0 % of the theoretical peak") != std::string::npos);
+    QVERIFY(html.find("1500.00 GFLOPS on GPU X (OpenCL, D = 4, 4096 workers)") != std::string::npos);
+  }
+
+  // A flagged number carries its footnote marker in the table, the note under it, and the reason in the details;
+  // the details say how the power was measured.
   void flags_and_measurement() {
     bs::ReportInput in;
     bs::PlatformRow a;
@@ -72,10 +156,24 @@ class TestPlatformReport : public QObject {
     in.rows = {a};
     const std::string html = bs::report_html(in);
     QVERIFY(html.find("5.25 (GPU X, OpenCL) [1]") != std::string::npos);
-    QVERIFY(html.find("[1] above_spec_peak: 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;") !=
+    QVERIFY(html.find("[1] 5.25 TFLOPS is 5.9x the GPU X's FP32 peak &lt;here&gt;. In full: Platform details.") !=
             std::string::npos);
     QVERIFY(html.find("&#9888; above_spec_peak</b>: 5.25 TFLOPS") != std::string::npos);
     QVERIFY(html.find("Power measured by: on-board sensor: INA3221 VDD_IN.") != std::string::npos);
+  }
+
+  // A section is one function in a list: a list with one more writes it where it stands.
+  void sections_are_a_list() {
+    auto sections = bs::report_sections();
+    QCOMPARE(sections.size(), std::size_t{5});
+    sections.insert(sections.begin() + 1, [](const bs::ReportInput&, bs::ReportBuilder& b) {
+      b.heading(2, "Candidates");
+      b.paragraph("published results");
+    });
+    const std::string html = bs::report_html(two_robots(), sections);
+    const auto candidates = html.find("<h2>Candidates</h2>");
+    QVERIFY(candidates != std::string::npos);
+    QVERIFY(candidates > html.find("Platforms at a glance") && candidates < html.find("Platform details"));
   }
 };
 

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Placement of the legend and peak labels inside a plot, and the compact worker tick labels.
+// Placement of the legend and peak labels inside a plot.
 #include <QTest>
 
-#include "common/count_tickers.h"
-#include "common/overlay_geometry.h"
+#include "overlay_geometry.h"
 
 class TestOverlayGeometry : public QObject {
   Q_OBJECT
@@ -69,18 +68,6 @@ class TestOverlayGeometry : public QObject {
     const QPolygonF line_above({{0, 90}, {300, 90}});
     const auto below = bs::ui::place_labels_greedy(area, {QPointF(150, 100)}, {QSizeF(60, 14)}, {}, {line_above}, 6);
     QVERIFY(below[0] && below[0]->top() > 100);
-  }
-
-  void worker_ticks_are_compact() {
-    QCOMPARE(bs::ui::compact_count(0), QString("0"));
-    QCOMPARE(bs::ui::compact_count(1), QString("1"));
-    QCOMPARE(bs::ui::compact_count(750), QString("750"));
-    QCOMPARE(bs::ui::compact_count(1000), QString("1k"));
-    QCOMPARE(bs::ui::compact_count(256000), QString("256k"));
-    QCOMPARE(bs::ui::compact_count(1e6), QString("1M"));
-    QCOMPARE(bs::ui::compact_count(1024000), QString("1.02M"));
-    QCOMPARE(bs::ui::compact_count(999999.6), QString("1M"));
-    QCOMPARE(bs::ui::compact_count(0.5), QString("0.5"));
   }
 };
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "common/overlay_geometry.h"
+#include "overlay_geometry.h"
 
 #include <array>
 #include <cmath>
@@ -92,9 +92,12 @@ std::vector<std::optional<QRectF>> place_labels_greedy(const QRectF& area, const
     const QPointF p = anchors[i];
     const double w = sizes[i].width(), h = sizes[i].height();
     // Above-left first: peaks sit on plateaus that run to the right edge, and curves rise from the lower left.
-    const std::array<QRectF, 4> candidates = {
+    // Then straight above, right, left and below: on a crowded log axis the diagonals are often all taken.
+    const std::array<QRectF, 8> candidates = {
         QRectF(p.x() - gap - w, p.y() - gap - h, w, h), QRectF(p.x() + gap, p.y() - gap - h, w, h),
-        QRectF(p.x() - gap - w, p.y() + gap, w, h), QRectF(p.x() + gap, p.y() + gap, w, h)};
+        QRectF(p.x() - gap - w, p.y() + gap, w, h),     QRectF(p.x() + gap, p.y() + gap, w, h),
+        QRectF(p.x() - w / 2, p.y() - gap - h, w, h),   QRectF(p.x() + gap, p.y() - h / 2, w, h),
+        QRectF(p.x() - gap - w, p.y() - h / 2, w, h),   QRectF(p.x() - w / 2, p.y() + gap, w, h)};
     double best_cost = std::numeric_limits<double>::max();
     for (const QRectF& c : candidates) {
       if (!area.contains(c)) continue;

@@ -27,8 +27,9 @@ Qt::Alignment least_covered_corner(const QRectF& area, const QSizeF& size, const
                                    const std::vector<QRectF>& marks, double margin);
 
 // Greedy label placement in priority order: each label tries the four positions diagonal to its anchor (`gap`
-// pixels away) and takes the free one that covers the least curve length. Free = inside `area`, overlapping
-// no obstacle and no label placed before. A label with no free position gets nullopt and is not drawn.
+// pixels away), then straight above, right, left and below it, and takes the free one that covers the least curve
+// length. Free = inside `area`, overlapping no obstacle and no label placed before. A label with no free position gets
+// nullopt and is not drawn.
 std::vector<std::optional<QRectF>> place_labels_greedy(const QRectF& area, const std::vector<QPointF>& anchors,
                                                        const std::vector<QSizeF>& sizes,
                                                        const std::vector<QRectF>& obstacles,
