@@ -14,7 +14,8 @@
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME benchscope)
 set(CPACK_PACKAGE_VENDOR "BenchScope")
-set(CPACK_PACKAGE_CONTACT "BenchScope maintainers <benchscope@users.noreply.github.com>")
+# The Maintainer field: no project address exists yet, so no made-up e-mail either.
+set(CPACK_PACKAGE_CONTACT "BenchScope developers")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Compare robot computing platforms: FLOPS, power and the vision pipeline")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
