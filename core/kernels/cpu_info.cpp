@@ -47,8 +47,13 @@ double calibrate_clock_hz() {
     const std::uint64_t m = factor;
     const double t0 = thread_cpu_seconds();
     for (std::int64_t i = 0; i < kIterations; ++i) {
-      for (int u = 0; u < kUnroll; ++u) x *= m;  // each multiply waits for the previous one
-      asm volatile("" : "+r"(x));                // keep the chain: no reassociation into a power of m
+      // Each multiply waits for the previous one. The empty asm after every multiply keeps the chain: with it only
+      // after the block, GCC 11 at -O1 folded the eight multiplies into one by a hoisted m^8 and the clock came out
+      // eight times too high.
+      for (int u = 0; u < kUnroll; ++u) {
+        x *= m;
+        asm volatile("" : "+r"(x));
+      }
     }
     const double s = thread_cpu_seconds() - t0;
     seed = x;

@@ -27,11 +27,14 @@ echo "Depends: $depends"
 grep -q "libopencv" <<<"$depends" || fail "Depends lacks OpenCV: $depends"
 grep -q "libsqlite3" <<<"$depends" || fail "Depends lacks SQLite: $depends"
 if [ "$package" = benchscope-cli ] && grep -qi "qt" <<<"$depends"; then fail "benchscope-cli depends on Qt: $depends"; fi
+# The listing goes to a file: grep -q closing a pipe early would kill dpkg-deb (SIGPIPE) and fail under pipefail.
+dpkg-deb -c "$deb" >"$work/contents"
 if [ "$package" = benchscope ]; then
   grep -q "libqt6" <<<"$depends" || fail "the GUI package does not depend on Qt 6: $depends"
-  dpkg-deb -c "$deb" | grep -q "./usr/bin/benchscope$" || fail "no usr/bin/benchscope in the GUI package"
+  grep -q "\./usr/bin/benchscope$" "$work/contents" || fail "no usr/bin/benchscope in the GUI package"
 fi
-dpkg-deb -c "$deb" | grep -q "./usr/share/benchscope/resources/devices/devices.json" || fail "resources not packaged"
+grep -q "\./usr/bin/benchscope-cli$" "$work/contents" || fail "no usr/bin/benchscope-cli in the package"
+grep -q "\./usr/share/benchscope/resources/devices/cpu-cores.json$" "$work/contents" || fail "resources not packaged"
 
 dpkg -x "$deb" "$work/root"
 cli="$work/root/usr/bin/benchscope-cli"
