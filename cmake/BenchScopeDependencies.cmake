@@ -18,9 +18,14 @@ find_package(OpenMP QUIET COMPONENTS CXX)
 benchscope_require(OpenMP "libomp-dev (g++ ships libgomp)")
 find_package(OpenCL QUIET)
 benchscope_require(OpenCL "ocl-icd-opencl-dev opencl-headers pocl-opencl-icd")
-# Components are always listed: without them OpenCV's highgui would pull Qt 5 into the process.
-find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs dnn objdetect calib3d)
+# Components are always listed: without them OpenCV's highgui would pull Qt 5 into the process. Found without a
+# version so that a too old or too new one is named with the minimum (BenchScopeOpenCVVersion.cmake) instead of
+# a bare "not found".
+find_package(OpenCV QUIET COMPONENTS core imgproc imgcodecs dnn objdetect calib3d)
 benchscope_require(OpenCV "libopencv-dev")
+include(BenchScopeOpenCVVersion)
+benchscope_check_opencv_version("${OpenCV_VERSION}" "${OpenCV_DIR}")
+message(STATUS "BenchScope: OpenCV ${OpenCV_VERSION} (minimum ${BENCHSCOPE_OPENCV_MINIMUM}) from ${OpenCV_DIR}")
 # Highway: portable SIMD with run-time dispatch (core/vision/demosaic/bayer_simd.cpp).
 find_package(hwy QUIET)
 benchscope_require(hwy "libhwy-dev")

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 #include "kernels/backend.h"
 #include "kernels/step_chunker.h"
@@ -50,6 +51,25 @@ double run_scalar(const RotationParams& p, std::int64_t workers, std::vector<flo
   return seconds;
 }
 
+// ARM: the core types the peak adds up, shown wherever the backend's details are (devices, the Kernel Runner).
+std::string arm_cluster_details(const CpuInfo& cpu) {
+  if (!cpu.arm) return {};
+  std::string s = "; cores by type:";
+  const char* sep = " ";
+  for (const ArmCluster& c : cpu.arm->clusters) {
+    char part[160];
+    if (c.type)
+      std::snprintf(part, sizeof part, "%s%dx %s (%d lanes x %d FMA unit%s, %.2f GHz %s)", sep, c.cores,
+                    c.core_name.c_str(), c.type->fp32_lanes, c.type->fma_units, c.type->fma_units == 1 ? "" : "s",
+                    c.clock_ghz, c.clock_source == "measured" ? "measured" : "max");
+    else
+      std::snprintf(part, sizeof part, "%s%dx %s", sep, c.cores, c.core_name.c_str());
+    s += part;
+    sep = " + ";
+  }
+  return s;
+}
+
 }  // namespace
 
 std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
@@ -64,7 +84,7 @@ std::vector<Backend> cpu_backends(const CpuInfo& cpu) {
   simd.device_name = cpu.model;
   simd.variants = {Variant::Throughput, Variant::Paper};
   simd.theoretical_peak_flops = cpu.peak_flops;
-  simd.details = details;
+  simd.details = details + arm_cluster_details(cpu);
   const SimdTarget target = cpu.simd;
   simd.run_point = [target](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& out,
                             const CancelToken& c) { return run_simd(target, p, w, v, out, c); };

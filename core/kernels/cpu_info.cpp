@@ -4,6 +4,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <ctime>
 #include <fstream>
@@ -46,8 +47,13 @@ double calibrate_clock_hz() {
     const std::uint64_t m = factor;
     const double t0 = thread_cpu_seconds();
     for (std::int64_t i = 0; i < kIterations; ++i) {
-      for (int u = 0; u < kUnroll; ++u) x *= m;  // each multiply waits for the previous one
-      asm volatile("" : "+r"(x));                // keep the chain: no reassociation into a power of m
+      // Each multiply waits for the previous one. The empty asm after every multiply keeps the chain: with it only
+      // after the block, GCC 11 at -O1 folded the eight multiplies into one by a hoisted m^8 and the clock came out
+      // eight times too high.
+      for (int u = 0; u < kUnroll; ++u) {
+        x *= m;
+        asm volatile("" : "+r"(x));
+      }
     }
     const double s = thread_cpu_seconds() - t0;
     seed = x;
@@ -72,6 +78,16 @@ CpuInfo detect_cpu(bool calibrate) {
   info.vendor = read_key("/proc/cpuinfo", "vendor_id", ':');
   info.separate_add_pipes = info.vendor == "AuthenticAMD" || info.vendor == "HygonGenuine";
   if (calibrate) info.clock_hz = calibrate_clock_hz();
+  try {
+    info.arm = detect_arm_cpu("/", "/", info.clock_hz);
+  } catch (const std::exception&) {
+    info.arm.reset();  // no readable /proc/cpuinfo: the generic description above stands
+  }
+  if (info.arm) {
+    // ARM kernels print "ARMv8 Processor rev N" or nothing as the model: the core types say what it is.
+    info.model = (info.arm->board.empty() ? std::string() : info.arm->board + ": ") + info.arm->summary();
+    if (info.arm->clusters.front().type) info.vendor = info.arm->clusters.front().type->vendor;
+  }
   use_simd_target(info, best_simd_target());
   return info;
 }
@@ -86,6 +102,23 @@ void use_simd_target(CpuInfo& info, const SimdTarget& target) {
   info.flops_per_cycle =
       rotation_flops_per_cycle(info.simd.lanes, info.simd.fma, info.fma_ports, info.separate_add_pipes);
   info.peak_flops = info.threads * info.clock_hz * info.flops_per_cycle;
+  if (!info.arm || info.arm->cores() == 0) return;
+  // ARM: each cluster at its own clock and FMA width. With fewer threads than cores the sum is scaled by the share
+  // of cores in use (which cores the OS picks is not known). A cluster of an unknown core keeps the generic model.
+  double per_cycle_ghz = 0;  // sum of cores * flops per cycle * GHz
+  int widest = 0;
+  for (const ArmCluster& c : info.arm->clusters) {
+    const int units = c.type ? c.type->fma_units : 2;
+    widest = std::max(widest, units);
+    const double ghz = c.clock_ghz > 0 ? c.clock_ghz : info.clock_hz / 1e9;
+    per_cycle_ghz +=
+        c.cores * ghz * rotation_flops_per_cycle(info.simd.lanes, info.simd.fma, units, info.separate_add_pipes);
+  }
+  const double used = std::min(1.0, static_cast<double>(info.threads) / info.arm->cores());
+  info.fma_ports = widest;
+  info.peak_flops = used * per_cycle_ghz * 1e9;
+  // The per-core figure shown beside it: the peak's average per core and measured cycle.
+  if (info.clock_hz > 0 && info.threads > 0) info.flops_per_cycle = info.peak_flops / (info.threads * info.clock_hz);
 }
 
 std::string os_name() {

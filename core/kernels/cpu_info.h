@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <optional>
 #include <string>
 
+#include "kernels/arm_cores.h"
 #include "kernels/rotation_simd.h"
 
 namespace bs::kernels {
@@ -20,6 +22,9 @@ struct CpuInfo {
   bool separate_add_pipes = false;
   double flops_per_cycle = 0;  // this kernel's counted flops per cycle per core (SIMD backend)
   double peak_flops = 0;       // threads * clock * flops_per_cycle
+  // ARM: the core types by name, per cluster (arm_cores.h); then fma_ports, flops_per_cycle and peak_flops follow
+  // each cluster's core type and clock (cpufreq's maximum where readable, else the measured clock).
+  std::optional<ArmCpu> arm;
 };
 
 // Measures the clock with a dependent chain of 64-bit multiplies (3 cycles latency on every x86 core since
@@ -36,7 +41,8 @@ double calibrate_clock_hz();
 double rotation_flops_per_cycle(int lanes, bool fma, int fma_ports, bool separate_add_pipes);
 
 // Model, vendor, threads, best ISA and, when `calibrate`, the measured clock and the SIMD kernel's peak
-// = threads * clock * flops_per_cycle.
+// = threads * clock * flops_per_cycle. On ARM the model names the board and the core types ("Raspberry Pi 5 Model B
+// Rev 1.0: 4x Cortex-A76"), and the peak is the sum over clusters of cores * clock * flops per cycle of that core.
 CpuInfo detect_cpu(bool calibrate = true);
 
 // The same CPU with the SIMD backend forced to `target` (`--isa`): its lanes, FMA pipes, flops per cycle and peak.

@@ -157,21 +157,29 @@ void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last
   if (sample_ >= limits_.max_samples)
     throw ImportError(ImportErrorCategory::TooLarge, {file_, line_no, 1, {}},
                       "more than " + std::to_string(limits_.max_samples) + " lines (the limit for one log)");
-  const std::optional<double> stamp = tok_.size() >= 2 ? parse_month_day_year(tok_[0], tok_[1]) : std::nullopt;
-  if (!timestamped_) timestamped_ = stamp.has_value();
-  if (*timestamped_ != stamp.has_value()) {
+  // A plain flag and value rather than an optional kept across the branches below: GCC 11 at -O1 takes the
+  // optional's payload for "maybe uninitialized" in `*stamp - first_time_` (a false positive, fatal with -Werror).
+  bool has_stamp = false;
+  double stamp = 0;
+  if (tok_.size() >= 2)
+    if (const std::optional<double> s = parse_month_day_year(tok_[0], tok_[1])) {
+      has_stamp = true;
+      stamp = *s;
+    }
+  if (!timestamped_) timestamped_ = has_stamp;
+  if (*timestamped_ != has_stamp) {
     if (last) return skip(line_no, "incomplete last line (tegrastats stopped while writing it)");
     throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, 1, "timestamp"},
                       *timestamped_ ? "no leading MM-DD-YYYY HH:MM:SS timestamp, unlike the lines before"
                                     : "a timestamp on this line but not on the first");
   }
   double t = static_cast<double>(sample_) * options_.interval_s;
-  if (stamp) {
+  if (has_stamp) {
     if (sample_ == 0) {
-      first_time_ = *stamp;
-      trace_.start_time = format_iso8601(*stamp);
+      first_time_ = stamp;
+      trace_.start_time = format_iso8601(stamp);
     }
-    t = *stamp - first_time_;
+    t = stamp - first_time_;
     if (!trace_.time_s.empty() && t < trace_.time_s.back())
       throw ImportError(ImportErrorCategory::InvalidValue, {file_, line_no, 1, "timestamp"},
                         "time goes backwards (" + std::string(tok_[0]) + " " + std::string(tok_[1]) + ")");

@@ -15,7 +15,7 @@ _benchscope_cli() {
     check) options="--help --remove-damaged" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
-    devices) options="--help --isa --json --measure-ceilings --table --workspace" ;;
+    devices) options="--help --isa --json --measure-ceilings --proc-root --sysfs-root --table --workspace" ;;
     efficiency) options="--help --json --supply-volts" ;;
     figures) options="--help --data --dpi --font-pt --format --height-mm --out --preset --quiet --template --width-mm" ;;
     frames) options="--help --lens --method --out --triptych --window" ;;

@@ -15,6 +15,7 @@
 #include "common/command.h"
 #include "common/flag_output.h"
 #include "common/signals.h"
+#include "kernels/arm_cpu_print.h"
 #include "kernels/backend.h"
 #include "kernels/bench_ceilings.h"
 #include "kernels/ceiling_cache.h"
@@ -110,12 +111,30 @@ int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
 }
 
 int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {"--json", "--table", "--measure-ceilings"}, {"--isa", "--workspace"});
+  const ParsedArgs args = parse_args(raw, {"--json", "--table", "--measure-ceilings"},
+                                     {"--isa", "--workspace", "--proc-root", "--sysfs-root"});
   const BundledDeviceTable& specs = bundled_device_table();
   if (args.has("--table")) {
     if (!specs.error.empty()) throw std::runtime_error(specs.error);
     return print_spec_table(specs.table, args.has("--json"), out);
   }
+  if (const auto proc_root = args.value("--proc-root")) {
+    // Another machine's files (a copy of a robot's /proc, a test fixture): its CPU only, none of this host's backends.
+    const auto arm = kernels::detect_arm_cpu(*proc_root, args.value("--sysfs-root").value_or(*proc_root));
+    if (!arm)
+      throw std::runtime_error(*proc_root + "/proc/cpuinfo: no CPU with a 'CPU implementer' and 'CPU part' (not ARM)");
+    if (args.has("--json"))
+      out << nlohmann::json{{"format", "benchscope-arm-cpu"},
+                            {"version", 1},
+                            {"proc_root", *proc_root},
+                            {"cpu", arm_cpu_json(*arm)}}
+                 .dump(2)
+          << '\n';
+    else
+      print_arm_cpu(*arm, out);
+    return 0;
+  }
+  if (args.value("--sysfs-root")) throw UsageError("--sysfs-root goes with --proc-root");
   const auto spec_of = [&](const kernels::Backend& b) -> std::optional<DeviceSpec> {
     const DeviceSpec* s = match_device(specs.table, b.device_name, b.kind);
     return s ? std::optional<DeviceSpec>(*s) : std::nullopt;
@@ -181,14 +200,15 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
       if (const auto it = device_errors.find(b.id); it != device_errors.end()) entry["ceiling_error"] = it->second;
       list.push_back(std::move(entry));
     }
-    out << nlohmann::json{{"format", "benchscope-devices"},
-                          {"version", 1},
-                          {"devices", list},
-                          {"unavailable", kernels::unavailable_backends()}}
-               .dump(2)
-        << '\n';
+    nlohmann::json doc{{"format", "benchscope-devices"},
+                       {"version", 1},
+                       {"devices", list},
+                       {"unavailable", kernels::unavailable_backends()}};
+    if (cpu.arm) doc["arm_cpu"] = arm_cpu_json(*cpu.arm);
+    out << doc.dump(2) << '\n';
     return device_errors.empty() ? 0 : 1;
   }
+  if (cpu.arm) print_arm_cpu(*cpu.arm, out);
   for (const auto& b : backends) {
     out << b.id << ": " << b.label << " on " << b.device_name << "\n    " << b.details << "\n    variants:";
     for (auto v : b.variants) out << ' ' << b.variant_label(v);
@@ -228,7 +248,7 @@ const CommandRegistrar registrar({
     "devices",
     "list the backends and devices the kernels can run on, with theoretical peaks",
     "usage: benchscope-cli devices [--table] [--json] [--isa avx512|avx2|sse4|generic]\n"
-    "         [--measure-ceilings [--workspace W.bsw]]\n"
+    "         [--measure-ceilings [--workspace W.bsw]] [--proc-root DIR [--sysfs-root DIR]]\n"
     "  Every backend and device (CPU SIMD, CPU scalar, each OpenCL device, each CUDA GPU) with its properties, the\n"
     "  rotation kernel's theoretical peak and the vendor FP32 peak from the device table, then the backends this\n"
     "  build knows but cannot run here and why. --table: the device table (resources/devices/devices.json) with\n"
@@ -237,7 +257,11 @@ const CommandRegistrar registrar({
     "  bandwidth; docs/ceilings.md, docs/gpu-check.md) with when and how they were measured, from the per-host\n"
     "  cache; --measure-ceilings measures them all now (~5 s for the CPU, ~2 s per device) and updates the cache\n"
     "  (--workspace: also stores them there, for peaks, the peak table and the roofline).\n"
-    "  --isa: another instruction set this CPU has.",
+    "  --isa: another instruction set this CPU has. On ARM the CPU is named by its core types (/proc/cpuinfo 'CPU\n"
+    "  implementer'/'CPU part', the board from /proc/device-tree/model), with NEON lanes, FMA units, clock and FP32\n"
+    "  peak per cluster (resources/devices/cpu-cores.json) and their sum. --proc-root DIR: describe the ARM CPU of\n"
+    "  DIR/proc/cpuinfo and DIR/proc/device-tree/model (a copy of a robot's files) instead of this machine; clocks\n"
+    "  from DIR/sys/devices/system/cpu/cpuN/cpufreq (or --sysfs-root), else from the board's device-table entry.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_devices(args, out);
     },

@@ -14,9 +14,11 @@ namespace bs::vision {
 DnnFlops count_flops(const cv::dnn::Net& net, const cv::dnn::MatShape& input_shape) {
   DnnFlops f;
   f.opencv = net.getFLOPS(input_shape);
+  // Net::getLayerId and getLayer only read, but OpenCV 4.5 (Ubuntu 22.04, JetPack 5) declares them non-const.
+  cv::dnn::Net& queried = const_cast<cv::dnn::Net&>(net);
   for (const std::string& name : net.getLayerNames()) {
-    const int id = net.getLayerId(name);
-    const cv::Ptr<cv::dnn::Layer> layer = const_cast<cv::dnn::Net&>(net).getLayer(id);
+    const int id = queried.getLayerId(name);
+    const cv::Ptr<cv::dnn::Layer> layer = queried.getLayer(id);
     const std::int64_t theirs = net.getFLOPS(id, input_shape);
     if (layer->type != "Convolution" || layer->blobs.empty() || layer->blobs[0].dims != 4) {
       f.counted += theirs;

@@ -1,0 +1,50 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Debian packages (CPack DEB) of this build:
+#   -DBENCHSCOPE_GUI=OFF  benchscope-cli: /usr/bin/benchscope-cli and /usr/share/benchscope/resources, no Qt, no VTK
+#                         (what a robot needs)
+#   -DBENCHSCOPE_GUI=ON   benchscope: the Qt 6 GUI, the CLI (which then also renders figures, so it links Qt) and
+#                         the resources; it provides, and replaces, benchscope-cli
+# Build:   cmake --build build --target package      (build/packages/<name>_<version>_<arch>.deb)
+# Install: sudo apt install ./build/packages/benchscope-cli_<version>_<arch>.deb
+# Dependencies come from dpkg-shlibdeps (the shared libraries the binaries really link), with the package names and
+# versions of the distribution the build ran on: build on the robot's own OS (or a sysroot of it) for the robot.
+# Cross builds (the arm64 hook): configure with a toolchain file that sets CMAKE_SYSTEM_PROCESSOR aarch64 and the
+# package architecture becomes arm64; dpkg-shlibdeps then needs the target's libraries installed as dpkg multiarch
+# packages (libopencv-dev:arm64, ...) and aarch64-linux-gnu-objdump (binutils-aarch64-linux-gnu) on PATH.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME benchscope)
+set(CPACK_PACKAGE_VENDOR "BenchScope")
+# The Maintainer field: no project address exists yet, so no made-up e-mail either.
+set(CPACK_PACKAGE_CONTACT "BenchScope developers")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Compare robot computing platforms: FLOPS, power and the vision pipeline")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_PACKAGE_DIRECTORY ${PROJECT_BINARY_DIR}/packages)
+set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
+
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_ALL ${BENCHSCOPE_INSTALL_COMPONENT})
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # <name>_<version>_<arch>.deb
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_CLI_PACKAGE_NAME benchscope-cli)
+set(CPACK_DEBIAN_CLI_DESCRIPTION
+  "BenchScope command line (headless, no Qt)\n The paper's rotation kernel on CPU SIMD, OpenCL and CUDA, power sensors (RAPL, INA3221, NVML), the\n vision pipeline and the device table: what a robot runs.")
+set(CPACK_DEBIAN_GUI_PACKAGE_NAME benchscope)
+set(CPACK_DEBIAN_GUI_DESCRIPTION
+  "BenchScope desktop application (Qt 6) and command line\n Workspaces, peaks, rooflines, power traces and the vision pipeline in one window; the CLI with figures.")
+# Both install /usr/bin/benchscope-cli: the GUI package takes the CLI package's place.
+set(CPACK_DEBIAN_GUI_PACKAGE_PROVIDES benchscope-cli)
+set(CPACK_DEBIAN_GUI_PACKAGE_CONFLICTS benchscope-cli)
+set(CPACK_DEBIAN_GUI_PACKAGE_REPLACES benchscope-cli)
+
+# The package architecture of the target, not of the machine running cpack (a cross build's arm64 package).
+if(CMAKE_CROSSCOMPILING)
+  if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64|ARM64)$")
+    set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE arm64)
+  elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
+    set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE amd64)
+  endif()
+endif()
+
+include(CPack)
