@@ -323,6 +323,8 @@ void demosaic_simd(const cv::Mat& raw, BayerPattern p, bool mhc, cv::Mat& out) {
       stripes);
 }
 
+bool demosaic_simd_uses_highway() { return true; }
+
 const char* demosaic_simd_target() { return HWY_DYNAMIC_DISPATCH(detail::target_name)(); }
 
 std::vector<std::string> demosaic_simd_targets() {

@@ -194,6 +194,19 @@ class TestBayer : public QObject {
     QVERIFY(first_difference(out, demosaic_reference(raw, BayerPattern::GBRG, DemosaicMethod::Bilinear)).isEmpty());
   }
 
+  // The build's choice (Highway or the portable path) is the one CMake announced at configure time. Where the runner
+  // names the instruction sets this CPU must offer (BENCHSCOPE_EXPECT_DEMOSAIC_TARGETS, comma-separated, best first:
+  // the aarch64 cross test sets it for each CPU qemu emulates), the list is exactly that, so
+  // fast_path_equals_reference_bit_for_bit has compared each of them with the reference and skipped none.
+  void the_expected_instruction_sets_are_tested() {
+    QCOMPARE(demosaic_simd_uses_highway(), BENCHSCOPE_EXPECT_HIGHWAY != 0);
+    QStringList have;
+    for (const std::string& t : demosaic_simd_targets()) have << QString::fromStdString(t);
+    if (!demosaic_simd_uses_highway()) QCOMPARE(have, QStringList{"portable"});
+    const QString expected = qEnvironmentVariable("BENCHSCOPE_EXPECT_DEMOSAIC_TARGETS");
+    if (!expected.isEmpty()) QCOMPARE(have.join(','), expected);
+  }
+
   void pinning_an_instruction_set() {
     const std::string best = demosaic_simd_target();
     QCOMPARE(demosaic_simd_targets().front(), best);
