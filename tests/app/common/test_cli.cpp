@@ -9,7 +9,7 @@
 #include <QTest>
 #include <map>
 
-#include "../support/cli_harness.h"
+#include "../../support/cli_harness.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <QJsonObject>
 #include <QTest>
 
-#include "../support/cli_harness.h"
+#include "../../support/cli_harness.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "../support/cli_harness.h"
+#include "../../support/cli_harness.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 
 #include <csignal>
 
-#include "../support/sysfs_fixture.h"
+#include "../../support/sysfs_fixture.h"
 
 namespace {
 

@@ -17,8 +17,8 @@
 #include "store/workspace.h"
 #include "vision/pipeline/dnn_bench.h"
 
-#include "../support/cli_harness.h"
-#include "../support/sysfs_fixture.h"
+#include "../../support/cli_harness.h"
+#include "../../support/sysfs_fixture.h"
 
 using bs::test::cli;
 

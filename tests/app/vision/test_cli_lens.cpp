@@ -8,7 +8,7 @@
 #include <QTest>
 #include <cmath>
 
-#include "../support/cli_harness.h"
+#include "../../support/cli_harness.h"
 
 using bs::test::bytes_of;
 using bs::test::cli;

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "../support/cli_harness.h"
+#include "../../support/cli_harness.h"
 
 using bs::test::cli;
 

@@ -12,7 +12,7 @@
 #include "store/workspace.h"
 #include "vision/reproject/cuda_preprocess.h"
 
-#include "../support/cli_harness.h"
+#include "../../support/cli_harness.h"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "../support/bad_corpus.h"
+#include "../../support/bad_corpus.h"
 
-#include "../support/cli_harness.h"
+#include "../../support/cli_harness.h"
 
 namespace {
 

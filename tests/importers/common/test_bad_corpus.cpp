@@ -5,7 +5,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "../support/bad_corpus.h"
+#include "../../support/bad_corpus.h"
 #include "common/importer.h"
 
 class TestBadCorpus : public QObject {

@@ -8,7 +8,7 @@
 
 #include "common/text_file.h"
 
-#include "../support/import_errors.h"
+#include "../../support/import_errors.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 
 #include "power/power_csv.h"
 
-#include "../support/import_errors.h"
+#include "../../support/import_errors.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include "runs/clpeak_text.h"
 
-#include "../support/import_errors.h"
+#include "../../support/import_errors.h"
 
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";

@@ -8,7 +8,7 @@
 
 #include "runs/pipeline_json.h"
 
-#include "../support/import_errors.h"
+#include "../../support/import_errors.h"
 
 namespace {
 

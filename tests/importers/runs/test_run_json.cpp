@@ -17,7 +17,7 @@
 #include "common/json_access.h"
 #include "runs/run_json.h"
 
-#include "../support/import_errors.h"
+#include "../../support/import_errors.h"
 
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/";

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <thread>
 
-#include "../support/sysfs_fixture.h"
+#include "../../support/sysfs_fixture.h"
 #include "analysis/power/phase_energy.h"
 #include "kernels/kernel_runner.h"
 #include "main_window.h"

@@ -5,7 +5,7 @@
 #include <QSortFilterProxyModel>
 #include <QTest>
 
-#include "../support/paper_sample.h"
+#include "../../support/paper_sample.h"
 #include "device_palette.h"
 #include "peaks/peak_table.h"
 

@@ -5,7 +5,7 @@
 #include <QTableWidget>
 #include <QTest>
 
-#include "../support/paper_sample.h"
+#include "../../support/paper_sample.h"
 #include "platform/efficiency_view.h"
 
 namespace {

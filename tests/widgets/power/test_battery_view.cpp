@@ -11,7 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "../support/paper_sample.h"
+#include "../../support/paper_sample.h"
 #include "power/battery_view.h"
 #include "store/workspace.h"
 

@@ -21,8 +21,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "../support/cli_harness.h"
-#include "../support/paper_sample.h"
+#include "../../support/cli_harness.h"
+#include "../../support/paper_sample.h"
 #include "analysis/power/range_table.h"
 #include "power/power_cursors.h"
 #include "power/power_overlay.h"

@@ -9,7 +9,7 @@
 #include <QTest>
 #include <cmath>
 
-#include "../support/paper_sample.h"
+#include "../../support/paper_sample.h"
 #include "power/power_view.h"
 
 namespace {

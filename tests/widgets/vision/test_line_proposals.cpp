@@ -10,7 +10,7 @@
 #include <QTest>
 #include <cmath>
 
-#include "../support/room_lens.h"
+#include "../../support/room_lens.h"
 #include "vision/lens_tab.h"
 #include "vision/preview_pane.h"
 #include "vision/reprojection_tuner.h"

@@ -6,7 +6,7 @@
 #include <QTest>
 #include <cmath>
 
-#include "../support/room_lens.h"
+#include "../../support/room_lens.h"
 #include "vision/preview_pane.h"
 #include "vision/reprojection_tuner.h"
 #include "vision/lens/line_fit.h"

@@ -10,7 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "../../support/room_lens.h"
+#include "../../../support/room_lens.h"
 #include "vision/lens/edge_proposals.h"
 #include "vision/lens/fisheye_opencv.h"
 #include "vision/lens/line_fit.h"

@@ -2,7 +2,7 @@
 #include <QTest>
 #include <cmath>
 
-#include "../../support/room_lens.h"
+#include "../../../support/room_lens.h"
 #include "vision/lens/fisheye_opencv.h"
 #include "vision/lens/line_fit.h"
 #include "vision/frames/synthetic_room.h"
