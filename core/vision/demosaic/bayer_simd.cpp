@@ -4,7 +4,7 @@
 // the same source builds NEON on an ARM robot computer.
 //
 // Why the vector code is bit-exact with the scalar definition (bayer_pixel.h): it evaluates the same integer
-// expressions without overflow. Bilinear stays in the sample type: AverageRound is (a + b + 1) >> 1 exactly, the
+// expressions without overflow. Bilinear stays in the sample type: average_round is (a + b + 1) >> 1 exactly, the
 // mean of four is rebuilt exactly from two of them (mean4_rounded), and means need no clamp. Malvar-He-Cutler
 // works in signed lanes twice as wide as a sample (int16 for 8-bit mosaics: the largest magnitude is
 // 28 * 255 + 8 = 7148; int32 for 16-bit), shifts right arithmetically as C++20's >> does on negative ints, and
@@ -54,6 +54,19 @@ HWY_BEFORE_NAMESPACE();
 namespace bs::vision::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// (a + b + 1) >> 1 in the sample type. Highway's AverageRound is that on every target but SVE and SVE_256 (SVE
+// without SVE2, e.g. Graviton 3, A64FX), where Highway (1.0.3 and, checked in its sources, up to 1.2) computes
+// (a + b + 1) >> 1 in the lane type, which wraps when a + b + 1 exceeds the lane's maximum: the aarch64 test under
+// qemu found wrong pixels there. (a | b) - ((a ^ b) >> 1) is the same rounded mean and cannot overflow.
+template <class V>
+HWY_INLINE V average_round(V a, V b) {
+#if HWY_TARGET == HWY_SVE || HWY_TARGET == HWY_SVE_256
+  return hn::Sub(hn::Or(a, b), hn::ShiftRight<1>(hn::Xor(a, b)));
+#else
+  return hn::AverageRound(a, b);
+#endif
+}
+
 // (a + b + c + d + 2) >> 2 in the sample type, without widening: from the rounded pair means ab = (a + b + 1) >> 1
 // and cd, it is (ab + cd + 1) >> 1 when both pair sums are even, else (ab + cd) >> 1, i.e. one less when ab + cd
 // is odd. (With s1 = a + b, s2 = c + d: 2 ab + 2 cd = s1 + s2 + odd1 + odd2, so (s1 + s2 + 2) / 4 =
@@ -62,11 +75,11 @@ template <class D, class V>
 HWY_INLINE V mean4_rounded(D d, V ab, V cd, V a, V b, V c, V e) {
   const V odd_pair = hn::Or(hn::Xor(a, b), hn::Xor(c, e));
   const V correction = hn::And(hn::And(odd_pair, hn::Xor(ab, cd)), hn::Set(d, 1));
-  return hn::Sub(hn::AverageRound(ab, cd), correction);
+  return hn::Sub(average_round(ab, cd), correction);
 }
 
 // Bilinear: Lanes(d) pixels of one row from column c on (`green` marks the lanes on green sites), computed in
-// the sample type itself (AverageRound is (a + b + 1) >> 1 exactly), so a vector holds as many pixels as fit.
+// the sample type itself (average_round is (a + b + 1) >> 1 exactly), so a vector holds as many pixels as fit.
 // `x` is the colour (0 B or 2 R) of the row's other sites, `2 - x` the
 // one measured only in the rows above and below. Writes BGR to dst + 3 c.
 template <class D, class M, class T>
@@ -79,9 +92,9 @@ HWY_INLINE void bilinear_vector(D d, const T* const row[5], int c, M green, int 
   const V n = hn::LoadU(d, up), s = hn::LoadU(d, down);
   const V nw = hn::LoadU(d, up - 1), ne = hn::LoadU(d, up + 1), sw = hn::LoadU(d, down - 1),
           se = hn::LoadU(d, down + 1);
-  const V we = hn::AverageRound(w, e), ns = hn::AverageRound(n, s);  // at green sites: x and 2 - x
-  const V cross = mean4_rounded(d, we, ns, w, e, n, s);              // at x sites: green
-  const V top = hn::AverageRound(nw, ne), bottom = hn::AverageRound(sw, se);
+  const V we = average_round(w, e), ns = average_round(n, s);  // at green sites: x and 2 - x
+  const V cross = mean4_rounded(d, we, ns, w, e, n, s);        // at x sites: green
+  const V top = average_round(nw, ne), bottom = average_round(sw, se);
   const V diagonal = mean4_rounded(d, top, bottom, nw, ne, sw, se);  // at x sites: 2 - x
   const V ch_g = hn::IfThenElse(green, v, cross);
   const V ch_x = hn::IfThenElse(green, we, v);
