@@ -35,9 +35,9 @@ set(QT_HOST_PATH "/usr" CACHE PATH "Where the host's Qt 6 build tools live")
 set(QT_HOST_PATH_CMAKE_DIR "/usr/lib/x86_64-linux-gnu/cmake" CACHE PATH "The host Qt 6's CMake packages")
 
 # ctest and add_custom_command run the aarch64 programs through qemu-user, with the sysroot as their root ("/").
-# QEMU_LD_PREFIX rather than -L: the environment passes on to the programs a test starts (benchscope-cli), which the
-# kernel hands to qemu-aarch64 through binfmt_misc (scripts/cross-test registers it). QEMU_CPU, where a test sets it,
-# picks the emulated core (tests/core/vision/CMakeLists.txt: one demosaic run per Highway target set).
+# QEMU_LD_PREFIX rather than -L: the environment also reaches programs a test starts where the kernel hands aarch64
+# programs to qemu (binfmt_misc). QEMU_CPU, where a test sets it, picks the emulated core
+# (tests/core/vision/CMakeLists.txt: one demosaic run per Highway target set).
 find_program(BENCHSCOPE_QEMU_AARCH64 qemu-aarch64)
 if(BENCHSCOPE_QEMU_AARCH64)
   set(CMAKE_CROSSCOMPILING_EMULATOR "env;QEMU_LD_PREFIX=${BENCHSCOPE_SYSROOT};${BENCHSCOPE_QEMU_AARCH64}")
