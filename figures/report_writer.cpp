@@ -119,6 +119,7 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
   in.verdicts = recommend(in.rows, request.constraints);
   in.constraints = describe_constraints(request.constraints);
   in.inference_runs = data.inference_runs;
+  in.candidates_html = request.candidates_html;
 
   QStringList written;
   try {

@@ -16,6 +16,7 @@ struct ReportRequest {
   QString pdf_path;   // empty: no PDF
   Constraints constraints;
   ComparisonOptions comparison;
+  std::string candidates_html;  // the "Candidates" section, made by the caller (report/candidates_section.h)
 };
 
 // Returns the files written. Each file appears whole or not at all (QSaveFile); Cancelled or an error leaves none.

@@ -12,8 +12,8 @@
 #include "paper_figures.h"
 #include "vision/demosaic/bayer.h"
 #include "vision/frames/frame_image.h"
-#include "vision/lens/lens.h"
 #include "vision/frames/synthetic.h"
+#include "vision/lens/lens.h"
 #include "vision/reproject/triptych.h"
 
 namespace bs::ui {

@@ -8,21 +8,21 @@
 #include <QTimer>
 #include <cstdio>
 
-#include "power/battery_view.h"
-#include "platform/efficiency_view.h"
-#include "peaks/flops_plot.h"
-#include "vision/frame_triptych.h"
-#include "vision/frames_view.h"
-#include "platform/inference_table.h"
 #include "kernels/kernel_runner.h"
-#include "vision/lens_view_3d.h"
 #include "main_window.h"
+#include "peaks/flops_plot.h"
 #include "peaks/peak_table.h"
-#include "vision/pipeline_view.h"
+#include "peaks/roofline_view.h"
+#include "platform/efficiency_view.h"
+#include "platform/inference_table.h"
 #include "platform/platform_view.h"
+#include "power/battery_view.h"
 #include "power/power_trace_loader.h"
 #include "power/power_view.h"
-#include "peaks/roofline_view.h"
+#include "vision/frame_triptych.h"
+#include "vision/frames_view.h"
+#include "vision/lens_view_3d.h"
+#include "vision/pipeline_view.h"
 #include "workspace/workspace_tree.h"
 
 namespace {

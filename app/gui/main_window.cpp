@@ -15,31 +15,34 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <algorithm>
 
 #include <QTabWidget>
 #include <QUndoStack>
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/foreign_sweeps.h"
-#include "power/battery_view.h"
+#include "common/screen_fit.h"
 #include "device_palette.h"
-#include "platform/efficiency_view.h"
-#include "peaks/flops_plot.h"
-#include "vision/frames_view.h"
-#include "workspace/import_controller.h"
 #include "kernels/kernel_runner.h"
+#include "peaks/flops_plot.h"
 #include "peaks/peak_table.h"
-#include "runs/pipeline_json.h"
-#include "vision/pipeline_measure_panel.h"
-#include "vision/pipeline_view.h"
+#include "peaks/roofline_view.h"
+#include "platform/efficiency_view.h"
 #include "platform/platform_view.h"
+#include "power/battery_view.h"
 #include "power/power_trace_loader.h"
 #include "power/power_view.h"
-#include "workspace/recent_files.h"
-#include "peaks/roofline_view.h"
+#include "runs/pipeline_json.h"
 #include "runs/run_json.h"
+#include "vision/frames_view.h"
+#include "vision/pipeline_measure_panel.h"
+#include "vision/pipeline_view.h"
+#include "workspace/import_controller.h"
+#include "workspace/recent_files.h"
 #include "workspace/workspace_tree.h"
 
 namespace bs::ui {
@@ -131,6 +134,12 @@ MainWindow::MainWindow(QWidget* parent)
   connect(tree_, &WorkspaceTree::rename_requested, this, &MainWindow::rename_item);
   connect(tree_, &WorkspaceTree::remove_requested, this, &MainWindow::remove_item);
   connect(tree_, &WorkspaceTree::color_requested, this, &MainWindow::set_device_color);
+  connect(tree_, &WorkspaceTree::supply_voltage_requested, this, &MainWindow::ask_log_voltage);
+  connect(tree_, &WorkspaceTree::platform_requested, this, &MainWindow::ask_log_platform);
+  importer_->set_log_platform_chooser(
+      [this](const QString& log, const QString& path, const QString& guess, const QStringList& platforms) {
+        return choose_log_platform(log, path, guess, platforms);
+      });
   connect(views, &QTabWidget::currentChanged, this, &MainWindow::update_edit_actions);
   create_actions();
   connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);
@@ -174,9 +183,22 @@ MainWindow::MainWindow(QWidget* parent)
 void MainWindow::restore_layout() {
   QSettings s;
   s.beginGroup(QStringLiteral("main-window"));
-  if (const QByteArray g = s.value("geometry").toByteArray(); !g.isEmpty()) restoreGeometry(g);
+  // A size saved on a larger screen is fitted to this one (restoreGeometry keeps a too-large size as it was).
+  if (const QByteArray g = s.value("geometry").toByteArray(); !g.isEmpty() && restoreGeometry(g)) clamp_to_screen();
   if (const QByteArray st = s.value("state").toByteArray(); !st.isEmpty()) restoreState(st);
   if (const QByteArray sp = s.value("flops-split").toByteArray(); !sp.isEmpty()) flops_split_->restoreState(sp);
+}
+
+void MainWindow::clamp_to_screen() {
+  // A size saved on a larger screen (1600x1000) must not open off a smaller one (1280x800). Not under the offscreen
+  // platform, whose 800x600 "screen" is no user's (tests there size windows themselves).
+  if (QGuiApplication::platformName() == QLatin1String("offscreen")) return;
+  const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
+  if (!screen) return;
+  const QRect g = geometry(), f = frameGeometry();
+  const QMargins frame(g.left() - f.left(), g.top() - f.top(), f.right() - g.right(), f.bottom() - g.bottom());
+  const QRect fitted = fit_to_screen(g, frame, screen->availableGeometry(), minimumSizeHint());
+  if (fitted != geometry()) setGeometry(fitted);
 }
 
 void MainWindow::save_layout() const {
@@ -201,10 +223,12 @@ MainWindow::~MainWindow() {
 }
 
 bool MainWindow::open_workspace(const QString& path) {
+  if (workspace_ && !settle_unsaved_changes()) return false;
   try {
     auto ws = std::make_unique<Workspace>(path.toStdString());
     edits_->clear();  // its steps act on the workspace being closed
     workspace_ = std::move(ws);
+    lens_->clear_frame();  // its frame ids are the closed workspace's
   } catch (const WorkspaceError& e) {
     QMessageBox::critical(this, tr("Cannot open workspace"), QString::fromUtf8(e.what()));
     return false;
@@ -232,8 +256,11 @@ void MainWindow::import_paths(const QStringList& paths) {
 
 void MainWindow::import_paths_now(const QStringList& paths) {
   if (!workspace_) new_untitled_workspace();
-  const ImportReport report =
-      ImportController::import_now(QString::fromStdString(workspace_->path()), paths, CancelToken{});
+  // Without a prompt (the GUI's command line) a log without a platform takes the guess, which the status says.
+  LogPlatformChooser ask;
+  if (platform_prompt_) ask = platform_prompt_;
+  const ImportReport report = ImportController::import_now(
+      QString::fromStdString(workspace_->path()), paths, CancelToken{}, {}, FrameStorage::Reference, std::nullopt, ask);
   reload();
   if (!report.failures.isEmpty()) show_import_report(report);
 }
@@ -296,6 +323,7 @@ void MainWindow::reload() {
       device_colors[{s.set.platform, s.set.device}] = s.color_index;
       sets.push_back(s.set);
     }
+  platforms_->set_result_sets(sets);  // imported MLPerf LoadGen results are own candidates
   roofline_->set_data(all, std::move(sets), std::move(device_colors), pipeline_runs());
   frames_->set_workspace(workspace_.get());
   feed_lens_tab();
@@ -465,6 +493,10 @@ void MainWindow::dropEvent(QDropEvent* event) {
 void MainWindow::closeEvent(QCloseEvent* event) {
   if (importer_->busy()) {
     QMessageBox::information(this, tr("Import running"), tr("Cancel the running import before quitting."));
+    event->ignore();
+    return;
+  }
+  if (!settle_unsaved_changes()) {
     event->ignore();
     return;
   }

@@ -12,8 +12,10 @@ class QUndoStack;
 #include "analysis/platform/platform_comparison.h"
 #include "frames/frame_raw.h"
 #include "paper_figures.h"
+#include "power/log_voltage_dialog.h"
 #include "power/shared_traces.h"
 #include "store/workspace.h"
+#include "workspace/import_controller.h"
 #include "workspace/workspace_tree.h"
 
 class QSplitter;
@@ -66,6 +68,21 @@ class MainWindow : public QMainWindow {
   BatteryView* battery_view() const { return battery_; }
   LensTab* lens_tab() const { return lens_; }  // the lead feeds it a capture: lens_tab()->set_fisheye(bgr, name)
   const Workspace* workspace() const { return workspace_.get(); }
+  QUndoStack* edits() const { return edits_; }  // Edit > Undo's steps (workspace edits)
+  // Something the user did that the workspace does not hold yet (a lens tuned and not saved).
+  bool has_unsaved_changes() const;
+  // Asks about it (Save / Discard / Cancel) and saves on Save; false on Cancel. Quitting and opening another
+  // workspace go through here. Tests answer in place of the message box.
+  bool settle_unsaved_changes();
+  void set_unsaved_prompt(std::function<int(const QString& text)> prompt) { unsaved_prompt_ = std::move(prompt); }
+  // A power log's platform and supply voltage (or borrowed voltage channel), one undo step each
+  // (main_window_logs.cpp; the tree's "Platform…" and "Supply voltage…" ask, then call these).
+  void set_log_platform(std::int64_t trace_id, const QString& platform);
+  void set_log_voltage(std::int64_t trace_id, const LogVoltageChoice& choice);
+  // Answers, in place of the dialog, which platform an imported log without one belongs to (tests).
+  void set_platform_prompt(LogPlatformChooser prompt) { platform_prompt_ = std::move(prompt); }
+  // The Lens tab's "Save lens for this frame / camera": one undo step in Edit > Undo.
+  void save_tuned_lens(bool for_camera);
 
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -78,6 +95,7 @@ class MainWindow : public QMainWindow {
   void compare_with_workspace();  // main_window_menus.cpp
   void show_help();               // main_window_menus.cpp (F1)
   void restore_layout();
+  void clamp_to_screen();  // the window inside the available area of its screen
   void save_layout() const;
   // main_window_export.cpp
   void export_current_figure();
@@ -87,6 +105,13 @@ class MainWindow : public QMainWindow {
   // main_window_frames.cpp
   void connect_lens_and_frames();
   void feed_lens_tab();
+  // main_window_logs.cpp
+  QStringList known_platforms() const;
+  QString choose_log_platform(const QString& log, const QString& path, const QString& guess,
+                              const QStringList& platforms);
+  void ask_log_voltage(const TreeItemRef& log);
+  void ask_log_platform(const TreeItemRef& log);
+  void tune_frame(std::int64_t frame_id);  // the Lens tab tunes this workspace frame
   // A .raw file among `paths` (or in their folders) without a sidecar: asks its geometry; nullopt when none or
   // cancelled (such files then fail with an error that says how to give the geometry).
   std::optional<RawFrameOptions> ask_raw_geometry(const QStringList& paths);
@@ -133,7 +158,9 @@ class MainWindow : public QMainWindow {
   QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens
   QAction* undo_edit_ = nullptr;
   QAction* redo_edit_ = nullptr;
-  PowerTraceLoader* trace_loader_ = nullptr;  // samples of long power logs, loaded after the window shows
+  PowerTraceLoader* trace_loader_ = nullptr;           // samples of long power logs, loaded after the window shows
+  std::function<int(const QString&)> unsaved_prompt_;  // null: a QMessageBox asks
+  LogPlatformChooser platform_prompt_;                 // null: a dialog asks
 };
 
 }  // namespace bs::ui

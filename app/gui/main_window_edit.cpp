@@ -10,11 +10,11 @@
 #include <QUndoStack>
 #include <functional>
 
-#include "vision/lens_tab.h"
 #include "main_window.h"
 #include "store/battery_preset_store.h"
 #include "store/import_snapshot.h"
 #include "vision/lens/lens.h"
+#include "vision/lens_tab.h"
 
 namespace bs::ui {
 namespace {

@@ -2,6 +2,7 @@
 // File > Export figure / Reproduce paper figures / Export report: the same renderers as `benchscope-cli figures`
 // and `benchscope-cli report`, with a progress dialog that cancels between figures.
 #include <qcustomplot.h>
+#include <QBuffer>
 #include <QDesktopServices>
 #include <QDir>
 #include <QFileDialog>
@@ -15,7 +16,9 @@
 #include "export_figure_dialog.h"
 #include "frames/frame_store.h"
 #include "main_window.h"
+#include "platform/candidates_panel.h"
 #include "platform/platform_view.h"
+#include "report/candidates_section.h"
 #include "plot_export.h"
 #include "report_writer.h"
 #include "workspace/workspace_tree.h"
@@ -148,6 +151,20 @@ void MainWindow::export_report() {
   (path.endsWith(".pdf", Qt::CaseInsensitive) ? request.pdf_path : request.html_path) = path;
   request.constraints = platforms_->constraints();
   request.comparison = platforms_->options();
+  // The Platforms tab's candidates (library computers chosen there) become the report's "Candidates" section,
+  // with the tab's figure embedded in an HTML report.
+  if (const CandidatesPanel* cp = platforms_->candidates(); !cp->selection().isEmpty()) {
+    std::string figure;
+    if (request.pdf_path.isEmpty()) {
+      QByteArray png;
+      QBuffer buffer(&png);
+      buffer.open(QIODevice::WriteOnly);
+      cp->plot()->toPixmap(900, 560).save(&buffer, "PNG");
+      figure = "data:image/png;base64," + png.toBase64().toStdString();
+    }
+    request.candidates_html = candidates_section_html({cp->classes(), cp->peaks(), cp->selection().toStdString(),
+                                                       describe_constraints(request.constraints), figure});
+  }
   QStringList files;
   const bool ok = with_progress(this, tr("Report"), [&](const CancelToken& cancel, const ProgressCallback& progress) {
     const auto templates = load_figure_templates(paper_template_path().toStdString());

@@ -3,36 +3,112 @@
 // the Frames tab's reprojection, so a user sees the paper's Figure 3 change as they move a slider.
 #include <QDirIterator>
 #include <QFileInfo>
+#include <QItemSelectionModel>
+#include <QMessageBox>
 #include <QStatusBar>
 
 #include "frames/frame_store.h"
+#include "main_window.h"
+#include "store/lens_store.h"
 #include "vision/frame_triptych.h"
+#include "vision/frames/frame_image.h"
+#include "vision/frames/workspace_lens.h"
 #include "vision/frames_view.h"
 #include "vision/lens_tab.h"
-#include "main_window.h"
 #include "vision/raw_geometry_dialog.h"
-#include "vision/reprojection_tuner.h"
-#include "vision/frames/frame_image.h"
 #include "vision/reproject/triptych.h"
+#include "vision/reprojection_tuner.h"
 
 namespace bs::ui {
 
 void MainWindow::connect_lens_and_frames() {
-  connect(lens_->tuner(), &ReprojectionTuner::lens_changed, frames_->triptych(), &FrameTriptych::set_lens);
+  // The Frames tab shows the tuner's lens only while both show the same frame; the banner names it.
+  connect(lens_->tuner(), &ReprojectionTuner::lens_changed, this,
+          [this](const vision::Lens& lens, const vision::View& view) {
+            if (lens_->frame_id() > 0 && lens_->frame_id() == frames_->current_frame_id())
+              frames_->triptych()->set_lens(lens, view, lens_->lens_source());
+          });
+  // A frame selected anywhere (Frames tab, workspace tree) is the one the Lens tab tunes.
+  connect(frames_, &FramesView::frame_selected, this, [this](std::int64_t id) { tune_frame(id); });
+  connect(tree_->selectionModel(), &QItemSelectionModel::currentChanged, this, [this](const QModelIndex& index) {
+    const TreeItemRef ref = tree_->ref_at(index);
+    if (ref.kind == TreeItemRef::Kind::Frame) frames_->select_frame_id(ref.id);
+  });
+  connect(lens_, &LensTab::save_requested, this, &MainWindow::save_tuned_lens);
 }
 
 void MainWindow::feed_lens_tab() {
-  if (!workspace_) return;
-  const auto frames = workspace_->frames();
-  if (frames.empty()) return;  // the tab keeps its synthetic fisheye of the paper's lens
-  try {
-    const Frame frame = load_frame(*workspace_, frames.front());
-    const cv::Mat raw = vision::frame_to_mat(frame);
-    const cv::Mat rgb = vision::demosaic_frame(raw, frame, vision::DemosaicMethod::Bilinear);
-    lens_->set_fisheye(vision::window_to_8bit(rgb, 0, vision::full_scale(frame)), QString::fromStdString(frame.label));
-  } catch (const std::exception& e) {
-    statusBar()->showMessage(tr("Lens tab: cannot read the frame: %1").arg(QString::fromUtf8(e.what())), 10000);
+  // The Frames tab's frame (it told tune_frame already when it showed it; this covers a Frames tab that kept its
+  // frame). Without frames the tab keeps its synthetic fisheye of the paper's lens.
+  if (!workspace_ || frames_->frame_count() == 0) return;
+  tune_frame(frames_->current_frame_id());
+}
+
+void MainWindow::tune_frame(std::int64_t frame_id) {
+  if (!workspace_ || frame_id <= 0) return;
+  // A lens being tuned on this frame and not saved yet is not thrown away by a reload.
+  if (lens_->frame_id() == frame_id && lens_->has_unsaved_lens()) return;
+  for (const StoredFrame& stored : workspace_->frames()) {
+    if (stored.id != frame_id) continue;
+    const vision::ResolvedLens lens = vision::resolve_frame_lens(workspace_.get(), stored);
+    if (lens_->tunes(frame_id, lens)) return;  // a reload that changed nothing here keeps the tuner's history
+    try {
+      const Frame frame = load_frame(*workspace_, stored);
+      const cv::Mat raw = vision::frame_to_mat(frame);
+      const cv::Mat rgb = vision::demosaic_frame(raw, frame, vision::DemosaicMethod::Bilinear);
+      lens_->set_frame(stored.id, QString::fromStdString(frame.label),
+                       vision::window_to_8bit(rgb, 0, vision::full_scale(frame)), lens);
+    } catch (const std::exception& e) {
+      statusBar()->showMessage(tr("Lens tab: cannot read the frame: %1").arg(QString::fromUtf8(e.what())), 10000);
+    }
+    return;
   }
+}
+
+void MainWindow::save_tuned_lens(bool for_camera) {
+  if (!workspace_ || lens_->frame_id() <= 0) return;
+  Workspace* ws = workspace_.get();
+  const vision::TunerParams& p = lens_->tuner()->params();
+  SavedLens lens;
+  lens.frame_id = for_camera ? 0 : lens_->frame_id();
+  lens.camera = for_camera ? lens_->camera() : std::string();
+  lens.lens_json = vision::lens_to_json(p.lens, p.view).dump();
+  lens.obtained = vision::describe(p.lens.calibration);
+  const std::optional<SavedLens> before = find_lens(*ws, lens.frame_id, lens.camera);
+  std::function<void()> redo = [ws, lens] { save_lens(*ws, lens); };
+  std::function<void()> undo = [ws, lens, before] {
+    if (before)
+      save_lens(*ws, *before);
+    else
+      remove_lens(*ws, lens.frame_id, lens.camera);
+  };
+  try {
+    redo();
+  } catch (const std::exception& e) {
+    report_edit_error(QString::fromUtf8(e.what()));
+    return;
+  }
+  lens_->mark_saved(for_camera ? vision::ResolvedLens::Source::SavedForCamera
+                               : vision::ResolvedLens::Source::SavedForFrame);
+  const QString what = for_camera ? tr("save lens for camera %1").arg(QString::fromStdString(lens.camera))
+                                  : tr("save lens for frame “%1”").arg(lens_->frame_label());
+  push_edit(what, std::move(redo), std::move(undo));
+}
+
+bool MainWindow::has_unsaved_changes() const { return lens_ && lens_->has_unsaved_lens(); }
+
+bool MainWindow::settle_unsaved_changes() {
+  if (!has_unsaved_changes()) return true;
+  const QString text = tr("The lens tuned for frame “%1” is not saved in the workspace. Save it for this frame?")
+                           .arg(lens_->frame_label());
+  const int answer =
+      unsaved_prompt_
+          ? unsaved_prompt_(text)
+          : QMessageBox::question(this, tr("Unsaved lens"), text,
+                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Cancel) return false;
+  if (answer == QMessageBox::Save) save_tuned_lens(false);
+  return true;
 }
 
 std::optional<RawFrameOptions> MainWindow::ask_raw_geometry(const QStringList& paths) {

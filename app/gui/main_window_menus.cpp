@@ -8,11 +8,11 @@
 #include <QTabWidget>
 #include <QUndoStack>
 
-#include "platform/compare_dialog.h"
+#include "main_window.h"
 #include "peaks/flops_plot.h"
+#include "platform/compare_dialog.h"
 #include "vision/frames_view.h"
 #include "workspace/import_controller.h"
-#include "main_window.h"
 #include "workspace/recent_files.h"
 
 namespace bs::ui {

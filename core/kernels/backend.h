@@ -3,9 +3,11 @@
 // A place the rotation kernel can run: its identity (stored in every run's provenance), its theoretical peak, and
 // how to time one sweep point. Backends are plain values so a sweep, the CLI and the GUI treat them alike.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "kernels/ceilings.h"
 #include "kernels/cpu_info.h"
 #include "model/flops_run.h"
 #include "util/cancel.h"
@@ -34,6 +36,9 @@ struct Backend {
   // Empty for backends without one (CUDA for now). Throws Cancelled between passes, std::invalid_argument on a
   // size the device cannot hold.
   std::function<double(std::size_t elements, const CancelToken& cancel)> run_triad;
+  // The device's empirical-ceiling micro-kernels (ceilings.h), sized by the spec; empty for the CPU backends,
+  // whose ceilings measure_ceilings(CpuInfo) measures. Throws std::runtime_error when the device cannot run them.
+  std::function<std::unique_ptr<DeviceCeilingKernels>(const CeilingSpec&)> ceiling_kernels;
 
   // The label stored in FlopsRun::variant: "paper" or throughput_label.
   std::string variant_label(Variant v) const { return v == Variant::Paper ? "paper" : throughput_label; }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #define CL_TARGET_OPENCL_VERSION 120
 #include "kernels/backend_opencl.h"
+#include "kernels/ceilings_opencl.h"
 #include "kernels/step_chunker.h"
 
 #include <CL/cl.h>
@@ -28,16 +29,19 @@ __kernel void rotate_paper(__global VEC* xs, __global VEC* ys, const int steps, 
   ys[w] = y;
 }
 
-// Four independent float16 chains per work-item: 64 points, enough independent work to hide FMA latency.
+// Four independent float16 chains per work-item: 64 points, enough independent work to hide FMA latency. y is
+// updated before x (t keeps s * y): the new x then reuses the old x's register, so the loop is 2 mul + 2 mad per
+// point-step with no copies. The paper kernel's "nx = c x - s y; y = ...; x = nx" kept nx and the old x alive
+// together, which cost NVIDIA's compiler a MOV per component and step in the CUDA twin (docs/gpu-check.md).
 __kernel void rotate_throughput(__global float16* xs, __global float16* ys, const int steps, const float c,
                                 const float s) {
   const size_t i = get_global_id(0) * 4;
   float16 x0 = xs[i], x1 = xs[i + 1], x2 = xs[i + 2], x3 = xs[i + 3];
   float16 y0 = ys[i], y1 = ys[i + 1], y2 = ys[i + 2], y3 = ys[i + 3];
-  for (int n = 0; n < steps; ++n) {
-    const float16 n0 = c * x0 - s * y0, n1 = c * x1 - s * y1, n2 = c * x2 - s * y2, n3 = c * x3 - s * y3;
-    y0 = s * x0 + c * y0; y1 = s * x1 + c * y1; y2 = s * x2 + c * y2; y3 = s * x3 + c * y3;
-    x0 = n0; x1 = n1; x2 = n2; x3 = n3;
+  for (int n = 0; n < steps; ++n) {  // 256 FP32 instructions per step: the loop's own 3 need no unrolling
+    const float16 t0 = s * y0, t1 = s * y1, t2 = s * y2, t3 = s * y3;
+    y0 = mad(s, x0, c * y0); y1 = mad(s, x1, c * y1); y2 = mad(s, x2, c * y2); y3 = mad(s, x3, c * y3);
+    x0 = mad(c, x0, -t0); x1 = mad(c, x1, -t1); x2 = mad(c, x2, -t2); x3 = mad(c, x3, -t3);
   }
   xs[i] = x0; xs[i + 1] = x1; xs[i + 2] = x2; xs[i + 3] = x3;
   ys[i] = y0; ys[i + 1] = y1; ys[i + 2] = y2; ys[i + 3] = y3;
@@ -322,6 +326,7 @@ std::vector<Backend> opencl_backends(const CpuInfo& cpu) {
       b.run_point = [device](const RotationParams& p, std::int64_t w, Variant v, std::vector<float>& outputs,
                              const CancelToken& cancel) { return device->run(p, w, v, outputs, cancel); };
       b.run_triad = [device](std::size_t n, const CancelToken& cancel) { return device->triad(n, cancel); };
+      b.ceiling_kernels = [id](const CeilingSpec& spec) { return make_opencl_ceiling_kernels(id, spec); };
       out.push_back(std::move(b));
     }
   }

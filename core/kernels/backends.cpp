@@ -4,10 +4,33 @@
 #include "kernels/backend.h"
 #include "kernels/backend_opencl.h"
 #if BENCHSCOPE_WITH_CUDA
+#include "kernels/cuda/ceilings_cuda.h"
 #include "kernels/cuda/rotation_cuda.h"
 #endif
 
 namespace bs::kernels {
+
+#if BENCHSCOPE_WITH_CUDA
+namespace {
+
+// cuda::CeilingKernels (ceilings_cuda.cu) behind the DeviceCeilingKernels interface.
+class CudaCeilings final : public DeviceCeilingKernels {
+ public:
+  CudaCeilings(int device, const CeilingSpec& spec) : k_(device, spec.device_target_seconds, spec.device_copy_mib) {}
+  CeilingSample fma() override { return sample(k_.fma()); }
+  CeilingSample rotation_mix() override { return sample(k_.rotation_mix()); }
+  CeilingSample bandwidth() override { return sample(k_.copy()); }
+  std::string fma_how() const override { return k_.fma_how(); }
+  std::string mix_how() const override { return k_.mix_how(); }
+  std::string bandwidth_how() const override { return k_.copy_how(); }
+
+ private:
+  static CeilingSample sample(const cuda::CeilingRun& r) { return {r.work, r.seconds, 0}; }
+  cuda::CeilingKernels k_;
+};
+
+}  // namespace
+#endif
 
 std::vector<Backend> available_backends(const CpuInfo& cpu) {
   std::vector<Backend> all = cpu_backends(cpu);
@@ -33,6 +56,9 @@ std::vector<Backend> available_backends(const CpuInfo& cpu) {
                           const CancelToken& cancel) {
       check_problem_size(p, w);
       return cuda::run_point(index, p.dims, p.iterations, w, v == Variant::Paper, out, cancel);
+    };
+    b.ceiling_kernels = [index](const CeilingSpec& spec) -> std::unique_ptr<DeviceCeilingKernels> {
+      return std::make_unique<CudaCeilings>(index, spec);
     };
     all.push_back(std::move(b));
   }

@@ -72,8 +72,13 @@ std::vector<CeilingSet> load_ceiling_cache(const std::string& path) {
       s.rotation_mix = ceiling_from(e.at("rotation_mix"));
       s.fma = ceiling_from(e.at("fma"));
       s.bandwidth = ceiling_from(e.at("bandwidth"));
+      // "kind" came with the device ceilings; entries written before it are the CPU's.
+      const std::string kind = e.value("kind", std::string("cpu"));
+      if (kind != "cpu" && kind != "gpu" && kind != "other")
+        throw std::runtime_error("field \"kind\" is \"" + kind + "\", not cpu, gpu or other");
+      s.kind = device_kind_from_string(kind);
       out.push_back(std::move(s));
-    } catch (const json::exception& e) {
+    } catch (const std::exception& e) {
       throw std::runtime_error(path + ": entries[" + std::to_string(i) + "]: " + e.what());
     }
   }
@@ -91,6 +96,22 @@ std::optional<CeilingSet> cached_ceilings(const CpuInfo& cpu, const std::string&
       if (same_key(s, key)) return std::move(s);
   } catch (const std::runtime_error&) {
     // A damaged cache is as good as none: the next measurement rewrites it.
+  }
+  return std::nullopt;
+}
+
+std::optional<CeilingSet> cached_device_ceilings(const Backend& backend, const std::string& path) {
+  if (!backend.ceiling_kernels) return std::nullopt;
+  CeilingSet key;
+  key.host = host_name();
+  key.cpu_model = backend.device_name;
+  key.isa = device_ceiling_family(backend);
+  key.threads = 0;
+  try {
+    for (CeilingSet& s : load_ceiling_cache(path))
+      if (same_key(s, key)) return std::move(s);
+  } catch (const std::runtime_error&) {
+    // as cached_ceilings: a damaged cache is as good as none
   }
   return std::nullopt;
 }
@@ -113,6 +134,7 @@ void store_ceilings(const CeilingSet& set, const std::string& path) {
                        {"threads", s.threads},
                        {"clock_hz", s.clock_hz},
                        {"computed_peak_flops", s.computed_peak_flops},
+                       {"kind", std::string(to_string(s.kind))},
                        {"date", s.date},
                        {"rotation_mix", ceiling_json(s.rotation_mix)},
                        {"fma", ceiling_json(s.fma)},

@@ -289,23 +289,73 @@ CeilingSet measure_ceilings(const CpuInfo& cpu, const CeilingSpec& spec, const C
   return set;
 }
 
+std::string device_ceiling_family(const Backend& backend) { return backend.id.substr(0, backend.id.find(':')); }
+
+CeilingSet measure_device_ceilings(const Backend& backend, const CeilingSpec& spec, const CancelToken& cancel,
+                                   const ProgressFn& progress) {
+  if (!backend.ceiling_kernels)
+    throw std::invalid_argument(backend.id + ": no empirical-ceiling micro-kernels for this backend");
+  if (spec.repeats < 1 || spec.repeats > 1000) throw std::invalid_argument("ceiling repeats must be 1 to 1000");
+  CeilingSet set;
+  set.host = host_name();
+  set.cpu_model = backend.device_name;
+  set.backend = backend.label;
+  set.isa = device_ceiling_family(backend);
+  set.threads = 0;
+  set.kind = backend.kind;
+  set.computed_peak_flops = backend.theoretical_peak_flops;
+  set.date = utc_timestamp();
+  if (progress) progress(0.0, "sizing the device micro-kernels");
+  cancel.throw_if_cancelled();
+  const std::unique_ptr<DeviceCeilingKernels> kernels = backend.ceiling_kernels(spec);
+  set.rotation_mix.unit = set.fma.unit = "FLOP/s";
+  set.bandwidth.unit = "B/s";
+  // Device time only: per_cpu_second stays empty (the host's CPU time says nothing about the device's work).
+  const auto add = [](Ceiling& c, const CeilingSample& s) {
+    if (s.work > 0 && s.wall_s > 0) c.values.push_back(s.rate());
+  };
+  for (int r = 0; r < spec.repeats; ++r) {
+    if (progress) progress(static_cast<double>(r) / spec.repeats, "repetition " + std::to_string(r + 1));
+    cancel.throw_if_cancelled();
+    add(set.rotation_mix, kernels->rotation_mix());
+    cancel.throw_if_cancelled();
+    add(set.fma, kernels->fma());
+    if (spec.bandwidth) {
+      cancel.throw_if_cancelled();
+      add(set.bandwidth, kernels->bandwidth());
+    }
+  }
+  set.rotation_mix.how = kernels->mix_how();
+  set.fma.how = kernels->fma_how();
+  if (spec.bandwidth) set.bandwidth.how = kernels->bandwidth_how();
+  if (progress) progress(1.0, "done");
+  return set;
+}
+
 ResultSet ceiling_result_set(const CeilingSet& c) {
   ResultSet set;
   set.platform = c.host;
   set.device = c.cpu_model;
-  set.device_kind = DeviceKind::Cpu;
+  set.device_kind = c.kind;
   set.backend = c.backend;
   set.source_format = kCeilingSource;
   set.provenance.origin = DataOrigin::Measured;
   set.provenance.host = c.host;
-  set.provenance.cpu_model = c.cpu_model;
+  if (c.kind == DeviceKind::Gpu)
+    set.provenance.gpu_model = c.cpu_model;
+  else
+    set.provenance.cpu_model = c.cpu_model;
   set.provenance.os = os_name();
   set.provenance.compiler = BENCHSCOPE_COMPILER;
   set.provenance.tool = std::string("benchscope ") + BENCHSCOPE_VERSION;
   set.provenance.date = c.date;
-  char note[160];
-  std::snprintf(note, sizeof note, "empirical ceilings, %d threads, %.3f GHz measured, computed peak %.4g FLOP/s; ",
-                c.threads, c.clock_hz / 1e9, c.computed_peak_flops);
+  char note[200];
+  if (c.threads > 0)
+    std::snprintf(note, sizeof note, "empirical ceilings, %d threads, %.3f GHz measured, computed peak %.4g FLOP/s; ",
+                  c.threads, c.clock_hz / 1e9, c.computed_peak_flops);
+  else
+    std::snprintf(note, sizeof note, "empirical ceilings of the %s device, computed peak %.4g FLOP/s; ",
+                  c.backend.c_str(), c.computed_peak_flops);
   set.provenance.note =
       note + c.rotation_mix.how + "; " + c.fma.how + (c.bandwidth.measured() ? "; " + c.bandwidth.how : "");
   const auto add = [&](const Ceiling& ceil, std::string name, std::string metric) {
@@ -319,7 +369,7 @@ ResultSet ceiling_result_set(const CeilingSet& c) {
   };
   add(c.rotation_mix, "rotation-mix/" + c.isa, kRotationMixMetric);
   add(c.fma, "fma/" + c.isa, kFmaMetric);
-  add(c.bandwidth, "stream-triad/ceiling", "bandwidth");
+  add(c.bandwidth, c.threads > 0 ? "stream-triad/ceiling" : "device-copy/" + c.isa, "bandwidth");
   return set;
 }
 

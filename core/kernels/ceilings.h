@@ -41,9 +41,10 @@ struct Ceiling {
 };
 
 struct CeilingSet {
-  std::string host, cpu_model, backend;  // backend: the CPU SIMD label, e.g. "CPU SIMD (AVX2+FMA)"
-  std::string isa;                       // isa_id(): "avx512", "avx2", ...
-  int threads = 0;
+  std::string host, cpu_model, backend;  // backend: the CPU SIMD label, e.g. "CPU SIMD (AVX2+FMA)"; a device's: "CUDA"
+  std::string isa;                       // isa_id(): "avx512", "avx2", ...; a device's: "cuda" or "opencl"
+  int threads = 0;                       // 0 for a device (OpenCL, CUDA): cpu_model then holds the device's name
+  DeviceKind kind = DeviceKind::Cpu;     // Gpu for a GPU's ceilings (an OpenCL CPU device: Cpu)
   double clock_hz = 0;                   // measured before the ceilings (dependent imul chain)
   double computed_peak_flops = 0;        // the model's peak for this ISA (cpu_info.h), for the comparison
   std::string date;                      // UTC, ISO 8601
@@ -81,7 +82,42 @@ struct CeilingSpec {
   int repeats = 5;
   bool bandwidth = true;
   std::size_t bandwidth_mib_per_array = 64;  // 192 MiB in all: beyond any L3 of a robot computer
+  // Devices (OpenCL, CUDA): seconds of device time per micro-kernel and repetition, and the copy buffers' size
+  // (0: 256 MiB each on a GPU, 64 MiB on an OpenCL CPU device, at most an eighth of the device's memory).
+  double device_target_seconds = 0.1;
+  std::size_t device_copy_mib = 0;
 };
+
+// The micro-kernels of a device backend (OpenCL, CUDA): each call is one repetition, timed on the device
+// (work in flops or bytes, wall_s the device time, cpu_s 0: the host's CPU time says nothing about a GPU) and its
+// result checked (std::runtime_error naming what is wrong):
+//  - FMA: acc = acc * 1 + 2^-10 on independent accumulators, every value exact, so each must equal its start plus
+//    steps * 2^-10;
+//  - rotation mix: the rotation kernel's 2 mul + 2 FMA per point-step on independent points per work-item (6
+//    counted flops), every point's final angle and norm those of the counted steps;
+//  - bandwidth: a device-memory copy between two buffers (2 x size bytes per pass), the target cleared before and
+//    compared with the source after.
+class DeviceCeilingKernels {
+ public:
+  virtual ~DeviceCeilingKernels() = default;
+  virtual CeilingSample fma() = 0;
+  virtual CeilingSample rotation_mix() = 0;
+  virtual CeilingSample bandwidth() = 0;
+  virtual std::string fma_how() const = 0;
+  virtual std::string mix_how() const = 0;
+  virtual std::string bandwidth_how() const = 0;
+};
+
+struct Backend;
+
+// The ceilings of a device backend (Backend::ceiling_kernels set), repetitions alternating between the kernels:
+// host, cpu_model = the device's name, backend = its label, isa = "cuda" / "opencl", threads 0, computed peak =
+// the backend's theoretical peak. std::invalid_argument for a backend without ceiling kernels; throws Cancelled.
+CeilingSet measure_device_ceilings(const Backend& backend, const CeilingSpec& spec, const CancelToken& cancel,
+                                   const ProgressFn& progress = {});
+
+// "cuda" for "cuda:0", "opencl" for "opencl:1": the ISA field of a device's ceilings.
+std::string device_ceiling_family(const Backend& backend);
 
 // All ceilings of this CPU with cpu.simd, repetitions alternating between the micro-kernels. Throws Cancelled.
 CeilingSet measure_ceilings(const CpuInfo& cpu, const CeilingSpec& spec, const CancelToken& cancel,

@@ -3,15 +3,21 @@
 #include "util/host_clock.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
 namespace bs::kernels {
+namespace {
+constexpr int kMaxTimingsPerPoint = 100000;
+}  // namespace
 
 SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpec& spec, const CancelToken& cancel,
                       const ProgressFn& progress, const std::function<void(const FlopsRun&)>& on_point) {
   if (spec.workers.empty() || spec.dims.empty() || spec.repeats < 1 || spec.iterations < 1)
     throw std::invalid_argument("a sweep needs workers, D values, N >= 1 and repeats >= 1");
+  if (!(spec.min_point_s >= 0 && spec.min_point_s < 3600))
+    throw std::invalid_argument("a sweep point's minimum duration must be in [0, 3600) s");
   // A run's samples are ascending and unique by worker count (run JSON v1).
   std::vector<std::int64_t> workers = spec.workers;
   std::sort(workers.begin(), workers.end());
@@ -49,7 +55,13 @@ SweepResult run_sweep(const Backend& backend, const CpuInfo& cpu, const SweepSpe
         if (progress)
           progress(static_cast<double>(done) / total, "W=" + std::to_string(w) + ", D=" + std::to_string(d));
         WorkerSample sample{w, {}};
-        for (int r = 0; r < spec.repeats; ++r) {
+        const auto point_start = std::chrono::steady_clock::now();
+        const auto lasted_s = [&] {
+          return std::chrono::duration<double>(std::chrono::steady_clock::now() - point_start).count();
+        };
+        // At least `repeats` timings, more while the point is shorter than min_point_s (bounded: a point never
+        // takes more than 100,000 timings, whatever the clock does).
+        for (int r = 0; r < spec.repeats || (lasted_s() < spec.min_point_s && r < kMaxTimingsPerPoint); ++r) {
           const double seconds = backend.run_point(params, w, spec.variant, outputs, cancel);
           const std::int64_t bad = first_wrong_output(outputs, params);
           if (bad >= 0)

@@ -14,6 +14,10 @@ struct SweepSpec {
   int repeats = 1;     // timings per point; views show mean ± SD
   bool warmup = true;  // one untimed run of the first point per D (thread start-up, page faults)
   Variant variant = Variant::Throughput;
+  // With power recorded: each point repeats its timed run (beyond `repeats`) until the point has lasted this long,
+  // so the sensor samples it often enough (issue #32.4). Every timing is the same work, so the FLOPS figure (the
+  // mean of the timings) is unchanged; only n grows. 0: exactly `repeats`.
+  double min_point_s = 0;
 };
 
 struct SweepResult {

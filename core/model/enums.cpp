@@ -10,6 +10,8 @@ std::string_view to_string(DataOrigin origin) {
       return "measured";
     case DataOrigin::Reconstructed:
       return "reconstructed";
+    case DataOrigin::Published:
+      return "published";
     case DataOrigin::Unknown:
       break;
   }
@@ -19,6 +21,7 @@ std::string_view to_string(DataOrigin origin) {
 DataOrigin data_origin_from_string(std::string_view text) {
   if (text == "measured") return DataOrigin::Measured;
   if (text == "reconstructed") return DataOrigin::Reconstructed;
+  if (text == "published") return DataOrigin::Published;
   return DataOrigin::Unknown;
 }
 

@@ -7,9 +7,10 @@
 
 namespace bs {
 
-// Whether numbers were measured on a real machine or rebuilt from published figures. Every view and export
-// shows this, so reconstructed data can never pass for a measurement.
-enum class DataOrigin { Unknown, Measured, Reconstructed };
+// Whether numbers were measured on a real machine, rebuilt from published figures (the paper's), or taken as
+// published by others from their own files (MLPerf submissions, clpeak logs: the library, resources/library/).
+// Every view and export shows this, so neither reconstructed nor published data can pass for a lab's measurement.
+enum class DataOrigin { Unknown, Measured, Reconstructed, Published };
 
 std::string_view to_string(DataOrigin origin);
 DataOrigin data_origin_from_string(std::string_view text);  // unknown text -> DataOrigin::Unknown

@@ -148,6 +148,7 @@ std::string report_html(const ReportInput& in) {
   }
 
   for (std::size_t i = 0; i < in.rows.size(); ++i) platform_page(h, table, i, in.rows[i]);
+  h << in.candidates_html;
 
   if (!in.figures.empty()) {
     h << "<div class=\"platform\">\n<h2>Figures</h2>\n";

@@ -28,6 +28,7 @@ struct ReportInput {
   std::string constraints;                // human-readable constraints the verdicts used, e.g. "power budget 10 W"
   std::vector<ReportFigure> figures;
   std::vector<DnnRun> inference_runs;  // bench dnn runs: a table after the comparison when there are any
+  std::string candidates_html;         // the "Candidates" section (report/candidates_section.h), after the pages
 };
 
 std::string report_html(const ReportInput& in);

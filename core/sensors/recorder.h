@@ -33,6 +33,7 @@ class PowerRecorder {
   void end_phase();
   void add_phase(const std::string& name, double start_s, double end_s);
   std::size_t samples() const;
+  double interval_s() const { return std::chrono::duration<double>(interval_).count(); }
   // CPU time the sampling thread used (reads, bookkeeping, wake-ups), known after finish(): the direct measure of
   // what recording costs a benchmark, immune to the noise of a shared machine that a with/without ratio suffers.
   // NaN where the platform has no per-thread CPU clock.

@@ -567,6 +567,8 @@ void Workspace::add_trace_phase(std::int64_t trace_id, const TracePhase& phase) 
   st.bind(1, trace_id).bind(2, std::string_view(phase.name)).bind(3, phase.start_s).bind(4, phase.end_s).run();
 }
 
+const sqlite::Db& Workspace::database() const { return impl_->db; }
+
 std::vector<StoredRun> Workspace::runs() const {
   std::vector<StoredRun> out;
   std::map<std::int64_t, std::size_t> index;

@@ -13,6 +13,10 @@
 
 namespace bs {
 
+namespace sqlite {
+class Db;
+}
+
 class WorkspaceError : public std::runtime_error {
  public:
   enum class Kind { Io, NotAWorkspace, Corrupt, NewerVersion, Constraint };
@@ -94,8 +98,8 @@ struct StoredDnnRun {
 class Workspace {
  public:
   // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary,
-  // 7: dnn inference runs
-  static constexpr int kSchemaVersion = 7;
+  // 7: dnn inference runs, 8: saved lenses, a log's borrowed voltage channel, phase origins (store/schema_v8.h)
+  static constexpr int kSchemaVersion = 8;
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -174,6 +178,10 @@ class Workspace {
   void save_as(const std::string& new_path) const;
   // "ok" when PRAGMA integrity_check finds nothing, else its messages joined by newlines.
   std::string integrity_check() const;
+
+  // The open database, for the store's own extension files (store/lens_store.h, store/log_settings_store.h),
+  // which keep their tables' SQL beside their API instead of growing this class.
+  const sqlite::Db& database() const;
 
  private:
   struct Impl;

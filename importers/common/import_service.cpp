@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/import_service.h"
 
+#include "common/log_platform.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -49,8 +51,11 @@ std::string describe_batch(const ImportBatch& b) {
   std::string s = b.runs.empty() && !b.frames.empty()
                       ? std::string()
                       : std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
-  if (!b.result_sets.empty()) s += ", " + std::to_string(b.result_sets.size()) + " result sets";
-  if (!b.power_traces.empty()) s += ", " + std::to_string(b.power_traces.size()) + " power traces";
+  const auto count = [](std::size_t n, const char* one, const char* many) {
+    return ", " + std::to_string(n) + (n == 1 ? one : many);
+  };
+  if (!b.result_sets.empty()) s += count(b.result_sets.size(), " result set", " result sets");
+  if (!b.power_traces.empty()) s += count(b.power_traces.size(), " power trace", " power traces");
   for (const Frame& f : b.frames)
     s += std::string(s.empty() ? "" : ", ") + "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) +
          " " + (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " +
@@ -130,6 +135,39 @@ std::optional<ImportBatch> parse_one(const ImportCandidate& file, const ImportOp
   return std::nullopt;
 }
 
+// The platforms a workspace knows: its devices', power logs' and pipeline runs'.
+std::vector<std::string> workspace_platforms(const Workspace& ws) {
+  std::vector<std::string> out;
+  const auto add = [&out](const std::string& p) {
+    if (!blank_platform(p) && std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
+  };
+  for (const DeviceRecord& d : ws.devices()) add(d.platform);
+  for (const StoredPowerTrace& t : ws.power_trace_summaries()) add(t.trace.platform);
+  for (const StoredPipelineRun& p : ws.pipeline_runs()) add(p.run.platform);
+  return out;
+}
+
+// Gives every power log of `batch` whose file names no platform one (never blank), and says which in the summary.
+void attach_log_platforms(ImportBatch& batch, const std::string& path, const std::vector<std::string>& known,
+                          const ImportOptions& options, FileOutcome& o) {
+  for (PowerTrace& t : batch.power_traces) {
+    if (!blank_platform(t.platform)) continue;
+    const LogPlatformGuess guess = infer_log_platform(t, known);
+    std::string chosen = options.log_platform;
+    std::string how = "given with --platform";
+    if (blank_platform(chosen) && options.choose_log_platform) {
+      chosen = options.choose_log_platform(t, path, guess.platform, known);
+      how = "chosen at import";
+    }
+    if (blank_platform(chosen)) {
+      chosen = guess.platform;
+      how = guess.how;
+    }
+    t.platform = chosen;
+    o.summary += ", platform '" + chosen + "' (" + how + ")";
+  }
+}
+
 }  // namespace
 
 ImportResult import_paths(const std::string& workspace_path, const std::vector<std::string>& paths,
@@ -161,6 +199,13 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
       if (const auto twin = seen.find(o.content_hash); twin != seen.end() && !each_file) {
         mark_duplicate(o, twin->second, {});
         continue;
+      }
+      if (!batch->power_traces.empty() && !target.earlier(o.content_hash)) {
+        std::vector<std::string> known = workspace_platforms(target.ws());
+        for (const auto& [k, b] : pending)  // logs earlier in this import, not stored yet
+          for (const PowerTrace& t : b.power_traces)
+            if (std::find(known.begin(), known.end(), t.platform) == known.end()) known.push_back(t.platform);
+        attach_log_platforms(*batch, o.path, known, options, o);
       }
       if (!each_file) {
         seen.emplace(o.content_hash, o.path);

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "frames/frame_raw.h"
 #include "common/importer.h"
+#include "frames/frame_raw.h"
 #include "model/frame.h"
 
 namespace bs {
@@ -45,6 +45,13 @@ struct ImportOptions {
   // ("--raw-geometry", "the geometry dialog").
   std::optional<RawFrameOptions> raw_geometry;
   std::string raw_geometry_source;
+  // The platform of power logs whose file names none (issue #32.3). `log_platform` (the CLI's --platform) wins;
+  // else `choose_log_platform` is asked with the guess (common/log_platform.h) and the workspace's platforms (the
+  // GUI's dialog; called on the importing thread); else the guess is taken. An empty answer takes the guess.
+  std::string log_platform;
+  std::function<std::string(const PowerTrace& log, const std::string& path, const std::string& guess,
+                            const std::vector<std::string>& platforms)>
+      choose_log_platform;
   // Called before each file with (files done, files in all, the file's path), and once at the end with
   // (total, total, ""). Called on the importing thread.
   std::function<void(int done, int total, const std::string& path)> progress;

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "common/import_error.h"
-#include "model/import_batch.h"
 #include "common/parse_options.h"
+#include "model/import_batch.h"
 #include "util/cancel.h"
 
 namespace bs {

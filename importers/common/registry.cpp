@@ -5,21 +5,22 @@
 #include <filesystem>
 #include <fstream>
 
-#include "runs/clpeak_text.h"
+#include "common/importer.h"
 #include "frames/frame_codec.h"
 #include "frames/frame_pnm.h"
 #include "frames/frame_raw.h"
-#include "runs/google_benchmark_json.h"
-#include "common/importer.h"
+#include "mlperf/mlperf_submission.h"
 #include "power/jtop_csv.h"
 #include "power/nvidia_smi.h"
 #include "power/perf_stat.h"
-#include "runs/pipeline_json.h"
 #include "power/power_csv.h"
 #include "power/power_recording.h"
 #include "power/ptd_log.h"
-#include "runs/run_json.h"
 #include "power/tegrastats.h"
+#include "runs/clpeak_text.h"
+#include "runs/google_benchmark_json.h"
+#include "runs/pipeline_json.h"
+#include "runs/run_json.h"
 
 namespace bs {
 namespace {
@@ -37,6 +38,7 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   list.push_back(std::make_unique<NvidiaSmiImporter>());
   list.push_back(std::make_unique<PerfStatImporter>());
   list.push_back(std::make_unique<PtdLogImporter>());
+  list.push_back(std::make_unique<MlperfLoadgenImporter>());
   list.push_back(std::make_unique<RawBayerImporter>());
   list.push_back(std::make_unique<PnmImporter>());
   list.push_back(std::make_unique<PngImporter>());

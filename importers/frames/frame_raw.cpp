@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "frames/frame_common.h"
 #include "common/json_access.h"
+#include "frames/frame_common.h"
 #include "model/provenance_json.h"
 
 namespace bs {

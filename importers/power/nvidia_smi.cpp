@@ -299,7 +299,12 @@ ImportBatch NvidiaSmiParser::finish() {
   for (Gpu& g : gpus_) {
     PowerTrace& t = g.trace;
     t.platform = options_.platform;
-    t.label = gpus_.size() > 1 ? label + " GPU " + g.key : label;
+    // A GPU is named by its name when the log has it ("NVIDIA RTX A2000 12GB"), with its bus id only when two
+    // GPUs share the name (issue #32.8).
+    const bool shared_name = std::count_if(gpus_.begin(), gpus_.end(),
+                                           [&](const Gpu& o) { return !g.name.empty() && o.name == g.name; }) > 1;
+    const std::string gpu = g.name.empty() ? "GPU " + g.key : shared_name ? g.name + " (" + g.key + ")" : g.name;
+    t.label = gpus_.size() > 1 ? label + " " + gpu : label;
     for (const char* pick : {"power.draw", "power.draw.instant", "power.draw.average"})
       if (t.total_channel.empty())
         for (const auto& c : t.channels)

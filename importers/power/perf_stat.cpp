@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/power/power_time.h"
+#include "model/reading_samples.h"
 #include "power/meter_log_text.h"
 #include "power/power_line_reader.h"
 
@@ -358,6 +359,7 @@ ImportBatch PerfStatParser::finish() {
     p.measurement = MeasurementKind::OnBoardSensor;
     p.sensor = "RAPL (perf stat)";
     if (!runs_.empty()) p.settings.emplace_back("runs", runs_);
+    p.settings.emplace_back(kSamplesPerReadingSetting, "2");  // each reading is an interval's start and end
     p.note = interval_mode_ && *interval_mode_ ? "mean power of each perf stat -I interval (energy / interval length)"
                                                : "mean power over the run (energy / elapsed time)";
   }

@@ -333,6 +333,17 @@ class PowerCsvParser {
     row(raw, line_no);
   }
   bool has_header() const { return !columns_.empty(); }
+  // The last line, cut off mid-line (no line ending: a logger killed while writing, the commonest real
+  // corruption), did not parse: it is left out, with a warning naming it, when complete rows came before it.
+  // Returns false (the caller rethrows) when there are none. Cells the cut row had already stored are taken back.
+  bool drop_cut_last_line(std::size_t line_no, const std::string& why) {
+    if (columns_.empty() || trace_.time_s.empty()) return false;
+    for (auto& c : trace_.channels) c.values.resize(trace_.time_s.size());
+    batch_.warnings.push_back(
+        file_ + ":" + std::to_string(line_no) + ": the last line is cut off (no line ending) and does not parse (" +
+        why + "); left out, the " + std::to_string(trace_.time_s.size()) + " complete rows before it are imported");
+    return true;
+  }
   // Reserves the columns for about `rows` rows (an estimate from the file system's size, capped by the limit).
   void reserve(std::size_t rows) {
     rows = std::min(rows, limits_.max_power_rows);
@@ -954,7 +965,11 @@ ImportBatch parse_lines(PowerLineReader&& lines, const std::string& file, const 
   PowerCsvParser parser(file, options, limits);
   bool reserved = false;
   while (const auto line = lines.next()) {
-    parser.line(*line, lines.line_number());
+    try {
+      parser.line(*line, lines.line_number());
+    } catch (const ImportError& e) {
+      if (!lines.last_line_unterminated() || !parser.drop_cut_last_line(lines.line_number(), e.reason())) throw;
+    }
     if ((lines.line_number() & 0x3ff) == 0) {
       cancel.throw_if_cancelled();
       // Reading is most of a long import: report it by bytes (every 1024 lines, a few dozen KB).

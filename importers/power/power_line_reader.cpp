@@ -77,6 +77,7 @@ std::optional<std::string_view> PowerLineReader::next() {
       text_.remove_prefix(used);
       consumed_ += used;
       if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+      unterminated_ = nl == std::string_view::npos;
       ++line_;
       return line;
     }

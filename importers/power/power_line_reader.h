@@ -30,6 +30,8 @@ class PowerLineReader {
   // Throws ImportError TooLarge for a line longer than kMaxPowerLogLineBytes, Io on a read error.
   std::optional<std::string_view> next();
   std::size_t line_number() const { return line_; }  // 1-based number of the line last returned
+  // The line last returned ended the file without a line ending: a logger killed mid-write leaves such a line.
+  bool last_line_unterminated() const { return unterminated_; }
   std::size_t bytes_consumed() const { return consumed_; }
   std::size_t file_size() const { return file_size_; }  // total bytes (file system size for files)
 
@@ -41,6 +43,7 @@ class PowerLineReader {
   std::string_view text_;  // the unread part of the current block (or of the in-memory text)
   bool eof_ = true;
   bool first_block_ = true;
+  bool unterminated_ = false;
   std::size_t line_ = 0, consumed_ = 0, file_size_ = 0;
 };
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "common/json_access.h"
-#include "model/provenance_json.h"
 #include "common/text_file.h"
+#include "model/provenance_json.h"
 
 namespace bs {
 namespace {
@@ -30,9 +30,9 @@ Provenance read_provenance(const Reader& r, const json& value, const std::string
   r.require_object(value, at);
   Provenance p;
   const std::string origin = r.optional_string(value, at, "origin", "unknown");
-  if (origin != "measured" && origin != "reconstructed" && origin != "unknown")
+  if (origin != "measured" && origin != "reconstructed" && origin != "published" && origin != "unknown")
     r.fail(ImportErrorCategory::InvalidValue, child(at, "origin"),
-           "'" + origin + "' is not one of measured, reconstructed, unknown");
+           "'" + origin + "' is not one of measured, reconstructed, published, unknown");
   p.origin = data_origin_from_string(origin);
   p.host = r.optional_string(value, at, "host");
   p.cpu_model = r.optional_string(value, at, "cpu_model");

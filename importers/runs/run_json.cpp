@@ -17,8 +17,8 @@
 
 #include "analysis/peaks/flops.h"
 #include "common/json_access.h"
-#include "model/provenance_json.h"
 #include "common/text_file.h"
+#include "model/provenance_json.h"
 
 namespace bs {
 namespace {
@@ -35,9 +35,9 @@ constexpr int kMaxDims = 64;
 Provenance read_provenance(const Reader& r, const json& value, const std::string& at, Provenance p) {
   r.require_object(value, at);
   const std::string origin = r.optional_string(value, at, "origin", std::string(to_string(p.origin)));
-  if (origin != "measured" && origin != "reconstructed" && origin != "unknown")
+  if (origin != "measured" && origin != "reconstructed" && origin != "published" && origin != "unknown")
     r.fail(ImportErrorCategory::InvalidValue, child(at, "origin"),
-           "'" + origin + "' is not one of measured, reconstructed, unknown");
+           "'" + origin + "' is not one of measured, reconstructed, published, unknown");
   p.origin = data_origin_from_string(origin);
   p.host = r.optional_string(value, at, "host", p.host);
   p.cpu_model = r.optional_string(value, at, "cpu_model", p.cpu_model);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/kernel_runner.h"
 
+#include <QColor>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QFutureWatcher>
@@ -10,6 +11,7 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QtConcurrent>
@@ -29,6 +31,9 @@
 #include "sensors/recorder.h"
 
 namespace bs::ui {
+namespace {
+constexpr int kEnergyColumns = 8;  // D, W, GFLOPS, mean W, J (point), J per run, GFLOPS/W, n samples
+}  // namespace
 
 KernelRunner::KernelRunner(QWidget* parent)
     : QWidget(parent),
@@ -79,8 +84,9 @@ KernelRunner::KernelRunner(QWidget* parent)
   progress_->setRange(0, 1000);
   progress_->setValue(0);
 
-  energy_->setColumnCount(6);
-  energy_->setHorizontalHeaderLabels({tr("D"), tr("W"), tr("GFLOPS"), tr("Mean W"), tr("J per run"), tr("GFLOPS/W")});
+  energy_->setColumnCount(kEnergyColumns);
+  energy_->setHorizontalHeaderLabels({tr("D"), tr("W"), tr("GFLOPS"), tr("Mean W"), tr("J (point)"), tr("J per run"),
+                                      tr("GFLOPS/W"), tr("n samples")});
   energy_->verticalHeader()->hide();
   energy_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   energy_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -126,6 +132,32 @@ KernelRunner::KernelRunner(QWidget* parent)
   }
   connect(backend_, &QComboBox::currentIndexChanged, this, &KernelRunner::show_backend_details);
   populate();
+  restore_parameters();
+}
+
+// The sweep's parameters are remembered from the last sweep started (QSettings), so a restart does not reset them.
+void KernelRunner::restore_parameters() {
+  QSettings s;
+  s.beginGroup(QStringLiteral("kernel-runner"));
+  if (const QString w = s.value("workers").toString(); !w.isEmpty()) workers_->setText(w);
+  if (const QString d = s.value("dims").toString(); !d.isEmpty()) dims_->setText(d);
+  if (const int n = s.value("iterations", 0).toInt(); n >= iterations_->minimum() && n <= iterations_->maximum())
+    iterations_->setValue(n);
+  if (const int r = s.value("repeats", 0).toInt(); r >= repeats_->minimum() && r <= repeats_->maximum())
+    repeats_->setValue(r);
+  if (const int v = variant_->findData(s.value("variant").toString()); v >= 0) variant_->setCurrentIndex(v);
+  if (const int b = backend_->findText(s.value("backend").toString()); b >= 0) backend_->setCurrentIndex(b);
+}
+
+void KernelRunner::save_parameters() const {
+  QSettings s;
+  s.beginGroup(QStringLiteral("kernel-runner"));
+  s.setValue("workers", workers_->text());
+  s.setValue("dims", dims_->text());
+  s.setValue("iterations", iterations_->value());
+  s.setValue("repeats", repeats_->value());
+  s.setValue("variant", variant_->currentData().toString());
+  s.setValue("backend", backend_->currentText());
 }
 
 KernelRunner::~KernelRunner() {
@@ -138,6 +170,9 @@ void KernelRunner::populate() {
   cpu_ = kernels::detect_cpu();  // ~0.1 s clock calibration, once
   backends_ = kernels::available_backends(cpu_);
   ceiling_set_ = kernels::cached_ceilings(cpu_);  // measured earlier on this host: no re-measuring on every start
+  device_ceilings_.clear();
+  for (const auto& b : backends_)
+    if (auto set = kernels::cached_device_ceilings(b)) device_ceilings_[b.id] = std::move(*set);
   backend_->clear();
   for (const auto& b : backends_)
     backend_->addItem(
@@ -155,25 +190,52 @@ void KernelRunner::show_backend_details() {
   show_ceilings();
 }
 
-void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
+void KernelRunner::select_backend(const QString& id) {
+  for (std::size_t i = 0; i < backends_.size(); ++i)
+    if (QString::fromStdString(backends_[i].id) == id) backend_->setCurrentIndex(static_cast<int>(i));
+}
+
+const kernels::Backend* KernelRunner::current_backend() const {
   const int i = backend_->currentIndex();
-  const bool simd = i >= 0 && backends_[static_cast<std::size_t>(i)].id == "cpu-simd";
-  measure_ceilings_->setVisible(simd);
+  return i >= 0 && static_cast<std::size_t>(i) < backends_.size() ? &backends_[static_cast<std::size_t>(i)] : nullptr;
+}
+
+const kernels::CeilingSet* KernelRunner::device_ceilings(const std::string& backend_id) const {
+  const auto it = device_ceilings_.find(backend_id);
+  return it == device_ceilings_.end() ? nullptr : &it->second;
+}
+
+void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
+  const kernels::Backend* b = current_backend();
+  const bool simd = b && b->id == "cpu-simd", device = b && b->ceiling_kernels;
+  measure_ceilings_->setVisible(simd || device);
   measure_ceilings_->setEnabled(!measuring_ceilings());
-  if (!simd) {
-    ceilings_->setText(tr("<small>Empirical ceilings are measured for the CPU SIMD backend only.</small>"));
+  measure_ceilings_->setToolTip(
+      device ? tr("Measure this device's empirical ceilings now (a few seconds): FMA, the rotation kernel's "
+                  "instruction mix and a device-memory copy, timed on the device, each result checked. Stored per "
+                  "host and in the workspace (peak table, roofline)")
+             : tr("Measure this CPU's empirical ceilings now (~5 s): the rotation kernel's instruction "
+                  "mix and plain FMA with enough independent chains, and the memory bandwidth. Stored "
+                  "per host and in the workspace (peak table, roofline)"));
+  if (!simd && !device) {
+    ceilings_->setText(tr("<small>Empirical ceilings are measured for the CPU SIMD backend and for OpenCL and "
+                          "CUDA devices, not for %1.</small>")
+                           .arg(QString::fromStdString(b ? b->label : std::string()).toHtmlEscaped()));
     ceilings_->setToolTip({});
     return;
   }
-  if (!ceiling_set_ || !ceiling_set_->rotation_mix.measured()) {
-    ceilings_->setText(tr("<small>No empirical ceiling measured for %1 with %2 threads yet: "
-                          "“% of peak” rests on the computed model alone.</small>")
-                           .arg(QString::fromStdString(cpu_.simd.name))
-                           .arg(cpu_.threads));
+  const kernels::CeilingSet* set = simd ? (ceiling_set_ ? &*ceiling_set_ : nullptr) : device_ceilings(b->id);
+  if (!set || !set->rotation_mix.measured()) {
+    ceilings_->setText(simd ? tr("<small>No empirical ceiling measured for %1 with %2 threads yet: "
+                                 "“% of peak” rests on the computed model alone.</small>")
+                                  .arg(QString::fromStdString(cpu_.simd.name))
+                                  .arg(cpu_.threads)
+                            : tr("<small>No empirical ceiling measured for this device yet: "
+                                 "“% of peak” rests on the computed model alone.</small>"));
     ceilings_->setToolTip({});
     return;
   }
-  const kernels::CeilingSet& c = *ceiling_set_;
+  const kernels::CeilingSet& c = *set;
   const Summary mix = summarize(c.rotation_mix.values);
   const auto own = compare_to_ceilings(mix.mean, c.computed_peak_flops, std::nullopt, "The rotation-mix ceiling");
   QString text =
@@ -184,16 +246,18 @@ void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
   if (c.fma.measured())
     text += tr("; FMA %1").arg(QString::fromStdString(format_si(summarize(c.fma.values).mean, "FLOPS")));
   if (c.bandwidth.measured())
-    text += tr("; memory %1").arg(QString::fromStdString(format_si(summarize(c.bandwidth.values).mean, "B/s")));
-  text += tr("<br>measured %1").arg(QString::fromStdString(c.date));
+    text += (device ? tr("; device memory %1") : tr("; memory %1"))
+                .arg(QString::fromStdString(format_si(summarize(c.bandwidth.values).mean, "B/s")));
+  text += device ? tr("<br>measured %1, timed on the device").arg(QString::fromStdString(c.date))
+                 : tr("<br>measured %1").arg(QString::fromStdString(c.date));
   std::vector<PlausibilityFlag> flags = own.flags;
   // The last sweep's peak against both: the Kernel Runner's own "% of peak" and "% of empirical ceiling".
   double best = 0;
   for (const FlopsRun& r : last_runs)
     if (const auto p = find_peak(r)) best = std::max(best, p->flops);
   if (best > 0) {
-    const auto cmp = compare_to_ceilings(best, cpu_.peak_flops, mix.mean, "The last sweep's peak",
-                                         "rotation mix, measured " + c.date);
+    const auto cmp = compare_to_ceilings(best, simd ? cpu_.peak_flops : b->theoretical_peak_flops, mix.mean,
+                                         "The last sweep's peak", "rotation mix, measured " + c.date);
     text += tr("<br>last sweep: peak %1 = %2 of the computed peak, %3 of the empirical ceiling")
                 .arg(QString::fromStdString(format_si(best, "FLOPS")),
                      QString::fromStdString(fraction_text(cmp.fraction_of_peak, !cmp.flags.empty())),
@@ -208,29 +272,40 @@ void KernelRunner::show_ceilings(const std::vector<FlopsRun>& last_runs) {
 
 void KernelRunner::measure_ceilings() {
   if (measuring_ceilings()) return;
+  const kernels::Backend* current = current_backend();
+  if (!current || (current->id != "cpu-simd" && !current->ceiling_kernels)) return;
   ceiling_cancel_ = std::make_shared<CancelToken>();
   measure_ceilings_->setEnabled(false);
   ceilings_->setText(tr("<small>Measuring the empirical ceilings…</small>"));
   auto cancel = ceiling_cancel_;
   const kernels::CpuInfo cpu = cpu_;
+  const bool device = current->id != "cpu-simd";
+  const kernels::Backend backend = *current;  // the closures share the device; the copy outlives a repopulate
   auto* watcher = new QFutureWatcher<kernels::CeilingSet>(this);
-  connect(watcher, &QFutureWatcher<kernels::CeilingSet>::finished, this, [this, watcher] {
+  connect(watcher, &QFutureWatcher<kernels::CeilingSet>::finished, this, [this, watcher, device, id = backend.id] {
     watcher->deleteLater();
     ceiling_cancel_.reset();
     try {
-      ceiling_set_ = watcher->result();
+      const kernels::CeilingSet set = watcher->result();
+      if (device)
+        device_ceilings_[id] = set;
+      else
+        ceiling_set_ = set;
       try {
-        kernels::store_ceilings(*ceiling_set_);
+        kernels::store_ceilings(set);
       } catch (const std::runtime_error& e) {
         emit failed(tr("Ceilings measured but not cached: %1").arg(QString::fromUtf8(e.what())));
       }
-      emit ceilings_measured(kernels::ceiling_result_set(*ceiling_set_));
+      emit ceilings_measured(kernels::ceiling_result_set(set));
     } catch (const std::exception& e) {
       emit failed(tr("Measuring the ceilings: %1").arg(QString::fromUtf8(e.what())));
     }
     show_ceilings();
   });
-  watcher->setFuture(QtConcurrent::run([cpu, cancel] { return kernels::measure_ceilings(cpu, {}, *cancel); }));
+  watcher->setFuture(QtConcurrent::run([cpu, cancel, device, backend] {
+    return device ? kernels::measure_device_ceilings(backend, {}, *cancel)
+                  : kernels::measure_ceilings(cpu, {}, *cancel);
+  }));
 }
 
 std::optional<PowerTrace> KernelRunner::take_power_trace() {
@@ -245,16 +320,25 @@ void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
   energy_->setRowCount(static_cast<int>(points.size()));
   for (std::size_t r = 0; r < points.size(); ++r) {
     const PointEnergy& p = points[r];
+    // The numbers as `run flops --power` prints them and the Power tab's Phases table shows the point's phase.
     const QString texts[] = {QString::number(p.dims),
                              QString::number(p.workers),
-                             QString::number(p.gflops, 'f', 2),
-                             QString::number(p.mean_power_w, 'f', 2),
+                             QString::number(p.gflops, 'f', 3),
+                             QString::number(p.mean_power_w, 'f', 4),
+                             QString::number(p.energy_j, 'f', 4),
                              QString::number(p.joules_per_run, 'f', 4),
-                             QString::number(p.gflops_per_watt, 'f', 3)};
-    for (int c = 0; c < 6; ++c) {
+                             QString::number(p.gflops_per_watt, 'f', 3),
+                             QString::number(p.samples) + QString::fromStdString(short_point_mark(p.samples))};
+    for (int c = 0; c < kEnergyColumns; ++c) {
       auto* item = new QTableWidgetItem(texts[c]);
       item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-      if (p.samples < 2) item->setToolTip(tr("Shorter than the sample interval: interpolated between samples"));
+      item->setToolTip(
+          p.too_short() ? tr("The sensor sampled this point %n time(s), fewer than %1: its energy leans "
+                             "on interpolation between samples outside it",
+                             nullptr, static_cast<int>(p.samples))
+                              .arg(kMinSamplesPerPoint)
+                        : tr("%n timed run(s) over %1 s", nullptr, static_cast<int>(p.runs)).arg(p.seconds, 0, 'f', 3));
+      if (p.too_short()) item->setBackground(QColor(0xff, 0xe0, 0xb2));
       energy_->setItem(static_cast<int>(r), c, item);
     }
   }
@@ -265,6 +349,7 @@ void KernelRunner::show_energies(const std::vector<FlopsRun>& runs) {
 }
 
 void KernelRunner::set_workers_spec(const QString& spec) { workers_->setText(spec); }
+QString KernelRunner::workers_spec() const { return workers_->text(); }
 
 namespace {
 // The parser's reason for `text`, or empty when it parses.
@@ -328,11 +413,15 @@ void KernelRunner::start() {
     emit failed(tr("Record power: %1").arg(QString::fromUtf8(e.what())));
     return;
   }
+  // Each point lasts long enough for the sensor to sample it kMinSamplesPerPoint times (issue #32.4).
+  if (recorder_) spec.min_point_s = min_point_seconds(recorder_->interval_s());
+  save_parameters();
   cancel_ = std::make_shared<CancelToken>();
   emit started();
   run_->setEnabled(false);
   stop_->setEnabled(true);
   progress_->setValue(0);
+  progress_->setFormat(QStringLiteral("%p %"));
   auto cancel = cancel_;
   const kernels::CpuInfo cpu = cpu_;
   auto* watcher = new QFutureWatcher<kernels::SweepResult>(this);
@@ -343,7 +432,11 @@ void KernelRunner::start() {
     stop_->setEnabled(false);
     try {
       const kernels::SweepResult result = watcher->result();
-      progress_->setValue(1000);
+      // A cancelled sweep keeps the bar where it stopped (issue #32.8), saying so; a finished one fills it.
+      if (result.cancelled)
+        progress_->setFormat(tr("cancelled at %p %"));
+      else
+        progress_->setValue(1000);
       if (recorder_) {
         const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
         trace_ = recorder_->finish("Kernel Runner " +
@@ -366,6 +459,7 @@ void KernelRunner::start() {
     return kernels::run_sweep(
         backend, cpu, spec, *cancel,
         [self, rec, &last_end, &current_d, warmup = spec.warmup](double f, std::string_view step) {
+          if (step == "cancelled") return;  // the sweep's last report: the bar stays where the sweep stopped
           QMetaObject::invokeMethod(
               self.data(),
               [self, f] {

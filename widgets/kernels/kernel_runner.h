@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <QWidget>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -38,10 +39,12 @@ class KernelRunner : public QWidget {
   ~KernelRunner() override;
   bool running() const { return cancel_ != nullptr; }
   void set_workers_spec(const QString& spec);
+  QString workers_spec() const;  // as typed (remembered from the last sweep started, issue #32.8)
   void set_dims(const QString& dims);
   void set_iterations(int n);
   void set_repeats(int r);
   PowerSensorBox* power_box() const { return power_; }
+  QProgressBar* progress_bar() const { return progress_; }
   // Why the typed workers/D fields cannot run, naming the field ("Workers: ..."); empty when they can.
   QString input_error() const;
   QTableWidget* energy_table() const { return energy_; }
@@ -49,13 +52,18 @@ class KernelRunner : public QWidget {
   std::optional<PowerTrace> take_power_trace();
   void start();
   void cancel();
-  // Measures the CPU's empirical ceilings (kernels/ceilings.h) off the GUI thread, stores them in the per-host
-  // cache and emits ceilings_measured; the details then show them.
+  // Measures the empirical ceilings (kernels/ceilings.h) of the selected backend's device (the CPU for CPU SIMD, the
+  // OpenCL or CUDA device for theirs) off the GUI thread, stores them in the per-host cache and emits
+  // ceilings_measured; the details then show them. Nothing for a backend without ceilings (CPU scalar).
   void measure_ceilings();
   bool measuring_ceilings() const { return ceiling_cancel_ != nullptr; }
   QLabel* ceilings_label() const { return ceilings_; }
   // The cached (or just measured) ceilings of this CPU with its SIMD target, if any.
   const std::optional<kernels::CeilingSet>& ceilings() const { return ceiling_set_; }
+  // The cached (or just measured) ceilings of a device backend ("opencl:0", "cuda:0"), or nullptr.
+  const kernels::CeilingSet* device_ceilings(const std::string& backend_id) const;
+  QPushButton* measure_ceilings_button() const { return measure_ceilings_; }
+  void select_backend(const QString& id);  // by Backend::id; nothing when there is none
 
  signals:
   void started();
@@ -66,10 +74,13 @@ class KernelRunner : public QWidget {
 
  private:
   void populate();
+  void restore_parameters();  // the last sweep's workers, D, N, repeats, variant and backend (QSettings)
+  void save_parameters() const;
   void show_backend_details();
   void show_energies(const std::vector<FlopsRun>& runs);
   void validate_inputs();  // as the user types: a bad field turns red with the reason, Run is disabled
   void show_ceilings(const std::vector<FlopsRun>& last_runs = {});
+  const kernels::Backend* current_backend() const;
   kernels::CpuInfo cpu_;
   std::vector<kernels::Backend> backends_;
   std::shared_ptr<CancelToken> cancel_;
@@ -84,6 +95,7 @@ class KernelRunner : public QWidget {
   QLabel* ceilings_;
   QPushButton* measure_ceilings_;
   std::optional<kernels::CeilingSet> ceiling_set_;
+  std::map<std::string, kernels::CeilingSet> device_ceilings_;  // by backend id
   std::shared_ptr<CancelToken> ceiling_cancel_;
   QPushButton* run_;
   QPushButton* stop_;

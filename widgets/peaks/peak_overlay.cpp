@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "peaks/peak_overlay.h"
 
+#include "common/plot_legend.h"
+
 #include <algorithm>
 
 #include <qcustomplot.h>
@@ -62,8 +64,9 @@ std::vector<QCPItemText*> PeakOverlay::labels() const {
 }
 
 void PeakOverlay::on_after_layout() {
-  // A new plot size (the window was resized or first shown) changes where the data lies in pixels.
-  const QSize size = plot_->axisRect()->rect().size();
+  // A new plot size (the window was resized or first shown) changes where the data lies in pixels. The widget's
+  // size, not the axis rect's: moving the legend under the plot changes the latter, and must not trigger again.
+  const QSize size = plot_->size();
   if (size != laid_out_size_) legend_pending_ = true;
   laid_out_size_ = size;
   if (legend_pending_) place_legend();
@@ -103,6 +106,12 @@ void PeakOverlay::place_legend() {
   QCPAxisRect* rect = plot_->axisRect();
   const QRectF area = rect->rect();
   if (!plot_->legend->visible() || area.width() < 50 || area.height() < 50) return;  // not laid out yet
+  if (legend_is_below(plot_)) {
+    // Under the plot since an earlier size: try inside again, after a layout pass with the legend in place.
+    put_legend_inside(plot_);
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+    return;  // still pending
+  }
   legend_pending_ = false;
   const QSizeF size = plot_->legend->outerRect().size();
   // The inset layout keeps its own margin from the axes: the legend can only sit inside that.
@@ -158,7 +167,13 @@ void PeakOverlay::make_room_for_legend(Qt::Alignment corner) {
   const Option* best = nullptr;
   for (const Option& o : options)
     if (o.fraction > 0 && (!best || o.fraction < best->fraction)) best = &o;
-  if (!best) return;  // no affordable room: the legend stays where it hides least
+  if (!best) {
+    // No affordable room (a small window): the legend goes under the plot, where it hides nothing.
+    const int columns = std::max(1, static_cast<int>(plot_->width() / std::max(1.0, legend.width() + 12)));
+    put_legend_below(plot_, columns);
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+    return;
+  }
   best->axis->setRange(
       widened(best->axis->range(), best->axis->scaleType() == QCPAxis::stLogarithmic, best->upper, best->fraction));
   // The axes computed their ticks before this layout hook ran: draw once more with the new range.

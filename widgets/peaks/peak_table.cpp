@@ -192,6 +192,10 @@ PeakTableView::PeakTableView(QWidget* parent) : QTableView(parent), model_(new P
   verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
   horizontalHeader()->setStretchLastSection(true);
   horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // Long platform and device names ("Jetson CPU (ARM A57 + Denver2)") may not push the numbers ("% of spec") off
+  // a 1600 px window (issue #32.7): a column is at most 190 px, its text elided in the middle, whole in the tooltip.
+  horizontalHeader()->setMaximumSectionSize(190);
+  setTextElideMode(Qt::ElideMiddle);
   setWordWrap(false);
 }
 

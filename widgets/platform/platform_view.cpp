@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/platform_view.h"
 
+#include "power/left_out_logs.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -25,8 +27,9 @@
 #include "analysis/platform/platform_table.h"
 #include "analysis/power/battery.h"
 #include "common/frozen_column.h"
-#include "platform/inference_table.h"
 #include "common/numeric_item.h"
+#include "platform/candidates_panel.h"
+#include "platform/inference_table.h"
 
 namespace bs::ui {
 namespace {
@@ -167,6 +170,8 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   layout->addWidget(table_, 2);
   inference_ = new InferenceTable(this);
   layout->addWidget(inference_, 1);
+  candidates_ = new CandidatesPanel(this);
+  layout->addWidget(candidates_, 2);
 
   for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_})
     connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
@@ -198,7 +203,9 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   });
 }
 
-PlatformView::~PlatformView() { delete frozen_; }  // before the table and its model go
+PlatformView::~PlatformView() { delete frozen_; }
+
+QString PlatformView::summary_text() const { return summary_->text(); }  // before the table and its model go
 
 void PlatformView::set_data(std::vector<FlopsRun> runs, std::vector<PowerTrace> traces,
                             std::vector<PipelineRun> pipelines) {
@@ -209,10 +216,20 @@ void PlatformView::set_data(std::vector<FlopsRun> runs, SharedTraces traces, std
   runs_ = std::move(runs);
   traces_ = std::move(traces);
   pipelines_ = pipeline_timings(pipelines);
+  pipeline_runs_ = std::move(pipelines);
   recompute();
 }
 
-void PlatformView::set_inference_runs(std::vector<DnnRun> runs) { inference_->set_runs(std::move(runs)); }
+void PlatformView::set_inference_runs(std::vector<DnnRun> runs) {
+  dnn_runs_ = runs;
+  inference_->set_runs(std::move(runs));
+  recompute();
+}
+
+void PlatformView::set_result_sets(std::vector<ResultSet> sets) {
+  result_sets_ = std::move(sets);
+  recompute();
+}
 
 void PlatformView::fill_battery_choices() {
   const QSignalBlocker b1(battery_), b2(mission_);
@@ -344,6 +361,7 @@ void PlatformView::recompute() {
   }
   verdicts_ = recommend(rows_, constraints());
   fill_table();
+  candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o);
   const Constraints c = constraints();
   const bool constrained = c.power_budget_w || c.min_fps || c.min_runtime_h;
   const QString hidden =
@@ -365,7 +383,14 @@ void PlatformView::recompute() {
             : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
                   .arg(recommendation()));
   }
-  if (rows_.empty()) return;
+  // Logs that give no power are not in the power columns: say which and why (issue #32.2).
+  QString left_out = left_out_logs_text(traces_->traces).toHtmlEscaped();
+  if (!left_out.isEmpty())
+    left_out = QStringLiteral("<br><span style='color:#8a5a00'>%1</span>").arg(left_out.replace('\n', "<br>"));
+  if (rows_.empty()) {
+    summary_->setText(summary_->text() + left_out);
+    return;
+  }
   // A flagged peak is shown but never decides: say whose compute was ranked by what.
   QStringList ranking;
   for (const auto& v : verdicts_)
@@ -389,7 +414,7 @@ void PlatformView::recompute() {
   } else if (o.extra_load_w > 0) {
     battery += tr(", computer + %1 W parallel load").arg(o.extra_load_w, 0, 'f', 1);
   }
-  summary_->setText(summary_->text() + battery + "." + hidden);
+  summary_->setText(summary_->text() + battery + "." + hidden + left_out);
 }
 
 void PlatformView::fill_table() {
@@ -433,6 +458,15 @@ void PlatformView::fill_table() {
   std::vector<std::size_t> order{0};
   if (constrained && t.header.size() >= 2)
     for (std::size_t c = t.header.size() - 2; c < t.header.size(); ++c) order.push_back(c);
+  // Then the columns a choice rests on (peaks, mean power, GFLOPS/W, battery runtime), so they show without
+  // scrolling on a 1280x800 window (issue #32.7); the pipeline and energy details follow.
+  for (const char* key :
+       {column::kGpuPeak, column::kCpuPeak, column::kPower, "gflops_w_mean", "gflops_w_paper", column::kBattery})
+    for (std::size_t c = 1; c < ids.size() && c < t.header.size(); ++c)
+      if (ids[c] == key && std::find(order.begin(), order.end(), c) == order.end()) {
+        order.push_back(c);
+        break;
+      }
   for (std::size_t c = 1; c < t.header.size(); ++c)
     if (std::find(order.begin(), order.end(), c) == order.end()) order.push_back(c);
   QStringList ordered_header;

@@ -21,6 +21,7 @@ class Workspace;
 
 namespace bs::ui {
 
+class CandidatesPanel;
 class FrozenFirstColumn;
 class InferenceTable;
 
@@ -40,7 +41,12 @@ class PlatformView : public QWidget {
   // bench dnn runs: the inference table under the comparison (hidden while there are none).
   void set_inference_runs(std::vector<DnnRun> runs);
   InferenceTable* inference_table() const { return inference_; }
+  // Imported MLPerf LoadGen results (and other result sets): own inference results among the candidates.
+  void set_result_sets(std::vector<ResultSet> sets);
+  // Candidates from the library of published results, ranked beside the own platforms.
+  CandidatesPanel* candidates() const { return candidates_; }
   QTableWidget* table() const { return table_; }
+  QString summary_text() const;    // the line above the table (recommendation, battery, logs left out), rich text
   QString recommendation() const;  // the recommended platform, empty when none
   // The battery presets (built-in and the workspace's, with their missions) offered in the Battery and Mission
   // choices; `ws` may be null (built-ins only).
@@ -80,6 +86,10 @@ class PlatformView : public QWidget {
   QLabel* summary_;
   QTableWidget* table_;
   InferenceTable* inference_ = nullptr;
+  CandidatesPanel* candidates_ = nullptr;
+  std::vector<PipelineRun> pipeline_runs_;  // as given: the detection stage is an own candidate
+  std::vector<DnnRun> dnn_runs_;
+  std::vector<ResultSet> result_sets_;
   FrozenFirstColumn* frozen_ = nullptr;  // keeps the platform's name in view while the numbers scroll
   std::vector<FlopsRun> runs_;
   SharedTraces traces_ = share_traces(std::vector<PowerTrace>{});

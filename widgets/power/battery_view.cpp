@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power/battery_view.h"
 
+#include "common/plot_legend.h"
+#include "power/left_out_logs.h"
+
 #include <qcustomplot.h>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -99,7 +102,8 @@ BatteryView::BatteryView(QWidget* parent)
   box->setMaximumWidth(470);
 
   table_->setColumnCount(6);
-  table_->setHorizontalHeaderLabels({tr("Platform"), tr("Computer mean power (W)"), tr("Total mean load (W)"),
+  // Two-line headers: the runtime columns stay in view beside the settings on a 1280 px window (issue #32.7).
+  table_->setHorizontalHeaderLabels({tr("Platform"), tr("Computer\nmean power (W)"), tr("Total\nmean load (W)"),
                                      tr("Runtime (min)"), tr("Runtime (h)"), tr("Ends by")});
   table_->verticalHeader()->hide();
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -112,10 +116,21 @@ BatteryView::BatteryView(QWidget* parent)
   plot_->yAxis2->setVisible(true);
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 8));
-  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+  // Under the plot: the state-of-charge and voltage curves run corner to corner, any inset legend hides some (and
+  // at 1280x800 it hid most, issue #32.7). One entry per line: the entries are long and stay whole.
+  put_legend_below(plot_, 1);
 
+  left_out_ = new QLabel(this);
+  left_out_->setWordWrap(true);
+  left_out_->setStyleSheet(QStringLiteral("color: #8a5a00"));
+  left_out_->hide();
+  auto* table_box = new QWidget(this);
+  auto* table_layout = new QVBoxLayout(table_box);
+  table_layout->setContentsMargins(0, 0, 0, 0);
+  table_layout->addWidget(table_, 1);
+  table_layout->addWidget(left_out_);
   auto* split = new QSplitter(Qt::Vertical, this);
-  split->addWidget(table_);
+  split->addWidget(table_box);
   split->addWidget(plot_);
   split->setStretchFactor(0, 1);
   split->setStretchFactor(1, 3);
@@ -291,6 +306,7 @@ bool BatteryView::select_preset(const QString& name) {
 }
 
 QString BatteryView::error_text() const { return error_->text(); }
+QString BatteryView::left_out_text() const { return left_out_->text(); }
 
 void BatteryView::recompute() {
   const BatterySetup s = setup();
@@ -313,6 +329,9 @@ void BatteryView::recompute() {
   }
   fill_table();
   fill_plot();
+  const QString left_out = left_out_logs_text(traces_->traces);
+  left_out_->setText(left_out);
+  left_out_->setVisible(!left_out.isEmpty());
   mark_modified();
   remember_setup();
   emit setup_changed();

@@ -57,6 +57,7 @@ class BatteryView : public QWidget {
   QComboBox* model_box() const { return model_; }
   QLineEdit* mission_edit() const { return mission_; }
   QString error_text() const;
+  QString left_out_text() const;  // the logs that give no power, and why (hidden when none)
   // Whether the fields differ from the selected preset (shown as "modified" in the preset box).
   bool modified() const;
 
@@ -96,6 +97,7 @@ class BatteryView : public QWidget {
   QLineEdit* mission_;
   QLabel* pack_label_;
   QLabel* error_;
+  QLabel* left_out_ = nullptr;
   QPushButton* save_;
   QPushButton* delete_;
   QTableWidget* table_;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power/power_trace_loader.h"
 
+#include "store/log_settings_store.h"
+
 #include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -59,6 +61,7 @@ std::size_t PowerTraceLoader::sample_count(const std::vector<StoredPowerTrace>& 
 
 void PowerTraceLoader::load_now(const Workspace& ws, std::vector<StoredPowerTrace>& traces, const CancelToken* cancel) {
   for (StoredPowerTrace& t : traces) ws.load_power_samples(t, cancel);
+  apply_voltage_sources(ws, traces);  // a current-only log's voltage borrowed from another log (issue #32.2)
 }
 
 void PowerTraceLoader::cancel() {
@@ -123,6 +126,7 @@ void PowerTraceLoader::start(const std::string& path, std::vector<StoredPowerTra
             ws.load_power_samples(traces[i], token.get());
             *done_before += weights[i];
           }
+          apply_voltage_sources(ws, traces);
           r.traces = std::move(traces);
         } catch (const Cancelled&) {
           r.cancelled = true;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power/power_view.h"
 
+#include "store/log_settings_store.h"
+
 #include <qcustomplot.h>
 #include <QCheckBox>
 #include <QComboBox>
@@ -216,6 +218,7 @@ void PowerView::set_data(SharedTraces traces, std::vector<PeakRow> peaks,
   peaks_ = std::move(peaks);
   flags_.clear();
   trace_phases_.clear();
+  phase_origins_.clear();
   index_.clear();
   detected_.clear();
   start_epoch_.clear();
@@ -225,6 +228,17 @@ void PowerView::set_data(SharedTraces traces, std::vector<PeakRow> peaks,
     const PowerTrace& t = trace(i);
     flags_.push_back(check_power_trace_bundled(t));
     trace_phases_.push_back(t.phases);
+    // Which phases the user saved ("user") and which came with the log ("log"), as the workspace records them.
+    std::vector<std::string> origins;
+    if (workspace_ && i < traces_->ids.size() && traces_->ids[i] > 0) {
+      try {
+        origins = phase_origins(*workspace_, traces_->ids[i]);
+      } catch (const std::exception&) {
+        origins.clear();  // a workspace without the column (cannot happen after migration): every phase the log's
+      }
+    }
+    if (origins.size() != t.phases.size()) origins.assign(t.phases.size(), "log");
+    phase_origins_.push_back(std::move(origins));
     index_.emplace_back(trace_of(traces_, i));  // once per trace, in place: every selection, phase and range asks it
     detected_.emplace_back();
     QCPGraph* g = plot_->addGraph();
@@ -493,7 +507,7 @@ void PowerView::update_phase_table() {
   for (std::size_t i = 0; i < count(); ++i) {
     if (!overlay_->visible(i)) continue;
     std::map<std::string, int> seen;
-    for (const PhaseStatsRow& p : phase_stats_rows(index_[i], trace_phases_[i], detected_[i])) {
+    for (const PhaseStatsRow& p : phase_stats_rows(index_[i], trace_phases_[i], detected_[i], phase_origins_[i])) {
       const std::pair<std::string, int> key{p.name, seen[p.name]++};
       auto it = std::find(groups.begin(), groups.end(), key);
       if (it == groups.end()) it = groups.insert(groups.end(), key);
@@ -501,7 +515,8 @@ void PowerView::update_phase_table() {
       std::snprintf(from, sizeof from, "%.3f", p.start_s);
       std::snprintf(to, sizeof to, "%.3f", p.end_s);
       std::vector<std::string> cells = {p.name, platform_name(trace(i)).toStdString(), p.origin, from, to};
-      for (std::string& c : range_cells(p.stats, signal)) cells.push_back(std::move(c));
+      // A phase the sensor sampled fewer than 10 times is marked (issue #32.4), as in the Kernel Runner and the CLI.
+      for (std::string& c : range_cells(p.stats, signal, true)) cells.push_back(std::move(c));
       rows.push_back({static_cast<std::size_t>(it - groups.begin()), std::move(cells)});
     }
   }
@@ -531,7 +546,7 @@ int PowerView::save_selection_as_phase(const QString& name) {
     const std::int64_t id = traces_->ids[i];
     if (workspace_ && id > 0) {
       try {
-        workspace_->add_trace_phase(id, phase);
+        add_user_phase(*workspace_, id, phase);  // origin "user": a range the user saved
       } catch (const std::exception& e) {
         QMessageBox::warning(this, tr("Save as phase"),
                              tr("The phase could not be saved in the workspace: %1").arg(QString::fromUtf8(e.what())));
@@ -539,9 +554,10 @@ int PowerView::save_selection_as_phase(const QString& name) {
       }
     }
     auto& phases = trace_phases_[i];
-    phases.insert(std::upper_bound(phases.begin(), phases.end(), phase,
-                                   [](const TracePhase& a, const TracePhase& b) { return a.start_s < b.start_s; }),
-                  phase);
+    const auto at = std::upper_bound(phases.begin(), phases.end(), phase,
+                                     [](const TracePhase& a, const TracePhase& b) { return a.start_s < b.start_s; });
+    phase_origins_[i].insert(phase_origins_[i].begin() + (at - phases.begin()), "user");
+    phases.insert(at, phase);
     ++saved;
   }
   if (saved > 0) set_detected_phases(detect_box_->isChecked());  // re-shades, refills the overlay and the table

@@ -111,9 +111,10 @@ class PowerView : public QWidget {
   std::optional<double> drag_base_s_;  // the dragged trace's overlay offset when the drag began
   Workspace* workspace_ = nullptr;
   SharedTraces traces_ = share_traces(std::vector<PowerTrace>{});
-  std::vector<std::vector<TracePhase>> trace_phases_;  // per trace: the log's phases and the selections saved since
-  std::vector<PowerIndex> index_;                      // per trace: the range statistics, built once, reading in place
-  std::vector<std::vector<TracePhase>> detected_;      // per trace: level-change phases (filled when shown)
+  std::vector<std::vector<std::string>> phase_origins_;  // per trace: "log" or "user" per phase of trace_phases_
+  std::vector<std::vector<TracePhase>> trace_phases_;    // per trace: the log's phases and the selections saved since
+  std::vector<PowerIndex> index_;                  // per trace: the range statistics, built once, reading in place
+  std::vector<std::vector<TracePhase>> detected_;  // per trace: level-change phases (filled when shown)
   std::vector<std::pair<std::size_t, PowerStats>> selection_stats_;
   Quantity quantity_ = Quantity::Current;
   std::vector<PeakRow> peaks_;

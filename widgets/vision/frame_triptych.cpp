@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/frame_triptych.h"
 
+#include <QTextDocument>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
@@ -13,8 +15,8 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
-#include "vision/image_pane.h"
 #include "vision/frames/frame_image.h"
+#include "vision/image_pane.h"
 #include "vision/lens/view_geometry.h"
 
 namespace bs::ui {
@@ -168,7 +170,9 @@ void FrameTriptych::clear(const QString& message) {
     w->setEnabled(false);
 }
 
-void FrameTriptych::set_frame(const Frame& frame) {
+void FrameTriptych::set_frame(const Frame& frame) { set_frame(frame, vision::resolve_frame_lens(frame)); }
+
+void FrameTriptych::set_frame(const Frame& frame, const vision::ResolvedLens& resolved) {
   try {
     raw_ = vision::frame_to_mat(frame);
   } catch (const std::exception& e) {
@@ -177,9 +181,9 @@ void FrameTriptych::set_frame(const Frame& frame) {
   }
   frame_ = frame;
   frame_.pixels.clear();  // kept once, in raw_
-  const vision::FrameLens fl = vision::lens_for_frame(frame_);
-  lens_ = fl.lens;
-  view_ = fl.view;
+  lens_ = resolved.lens;
+  view_ = resolved.view;
+  lens_source_ = QString::fromStdString(vision::describe_lens_source(resolved));
   images_ = {};
   const int top = static_cast<int>(vision::full_scale(frame_));
   for (QSpinBox* b : {low_box_, high_box_}) {
@@ -196,16 +200,7 @@ void FrameTriptych::set_frame(const Frame& frame) {
   for (QWidget* w : std::initializer_list<QWidget*>{low_box_, high_box_, full_range_, overlay_box_})
     w->setEnabled(true);
   method_box_->setEnabled(frame_.is_mosaic());
-  QString banner;
-  if (frame_.synthetic)
-    banner = tr("<b>Synthetic capture</b>: a test chart rendered through a lens model, not a camera image. ");
-  banner += fl.from_frame ? tr("Lens: recorded with the frame (%1, %2°, r<sub>pp</sub> = %3 mrad/px).")
-                                    .arg(QString::fromUtf8(vision::to_string(lens_.type).data()))
-                                    .arg(lens_.fov_deg, 0, 'g', 4)
-                                    .arg(lens_.r_pp * 1000, 0, 'f', 4) +
-                                tr(" Obtained by: %1.").arg(QString::fromStdString(vision::describe(lens_.calibration)))
-                          : tr("Lens: none recorded with the frame; showing the paper's 195° equidistant lens.");
-  banner_->setText(banner);
+  update_banner();
   banner_->show();
   for (ImagePane* p : panes_) {
     p->set_message(tr("Rendering…"));
@@ -215,9 +210,32 @@ void FrameTriptych::set_frame(const Frame& frame) {
   request_render(true);
 }
 
+void FrameTriptych::update_banner() {
+  QString banner;
+  if (frame_.synthetic)
+    banner = tr("<b>Synthetic capture</b>: a test chart rendered through a lens model, not a camera image. ");
+  // Which lens reprojects panel (c), always: saved, recorded, tuned or the paper's default.
+  banner +=
+      tr("Lens: <b>%1</b> (%2).")
+          .arg(lens_source_.toHtmlEscaped(), QString::fromStdString(vision::describe_lens(lens_)).toHtmlEscaped());
+  banner_->setText(banner);
+}
+
+QString FrameTriptych::banner_text() const {
+  QTextDocument doc;
+  doc.setHtml(banner_->text());
+  return doc.toPlainText();
+}
+
 void FrameTriptych::set_lens(const vision::Lens& lens, const vision::View& view) {
+  set_lens(lens, view, tr("tuned in the Lens tab"));
+}
+
+void FrameTriptych::set_lens(const vision::Lens& lens, const vision::View& view, const QString& source) {
   lens_ = lens;
   view_ = view;
+  lens_source_ = source;
+  if (has_frame()) update_banner();
   update_titles();
   if (has_frame()) request_render(false);
 }

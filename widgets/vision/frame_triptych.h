@@ -17,6 +17,7 @@
 #include "model/frame.h"
 #include "util/cancel.h"
 #include "vision/demosaic/bayer.h"
+#include "vision/frames/workspace_lens.h"
 #include "vision/lens/lens.h"
 #include "vision/reproject/triptych.h"
 
@@ -49,9 +50,14 @@ class FrameTriptych : public QWidget {
 
   // Shows `frame` (pixels included) with the lens recorded with it (sidecar), else the paper's lens.
   void set_frame(const Frame& frame);
+  // Shows `frame` with a lens resolved elsewhere (a lens saved in the workspace); the banner names its source.
+  void set_frame(const Frame& frame, const vision::ResolvedLens& lens);
   void clear(const QString& message);
   // Drives the reprojection from outside (the reprojection tuner): the lens must have the frame's size.
   void set_lens(const vision::Lens& lens, const vision::View& view);
+  // The same, naming where the lens comes from in the banner ("tuned in the Lens tab, not saved").
+  void set_lens(const vision::Lens& lens, const vision::View& view, const QString& source);
+  QString banner_text() const;  // what the banner says (plain text), for tests
   void set_demosaic_method(vision::DemosaicMethod method);
   void set_window(int low, int high);  // display window in counts (16-bit captures: e.g. 0..4095)
   void set_overlays_visible(bool on);
@@ -93,6 +99,7 @@ class FrameTriptych : public QWidget {
   void update_display();
   void update_overlays();
   void update_titles();
+  void update_banner();
   void show_inspection(int pane, QPointF image_point);
   void sync_from(int pane, double zoom, QPointF centre);
 
@@ -100,6 +107,7 @@ class FrameTriptych : public QWidget {
   cv::Mat raw_;
   vision::Lens lens_;
   vision::View view_;
+  QString lens_source_;  // where lens_ comes from, for the banner
   vision::DemosaicMethod method_ = vision::DemosaicMethod::Bilinear;
   vision::TriptychImages images_;
   int window_low_ = 0, window_high_ = 255;

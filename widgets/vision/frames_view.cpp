@@ -8,8 +8,8 @@
 #include <QSplitter>
 
 #include "frames/frame_store.h"
-#include "vision/frame_triptych.h"
 #include "triptych_panels.h"
+#include "vision/frame_triptych.h"
 
 namespace bs::ui {
 
@@ -30,6 +30,7 @@ FramesView::FramesView(QWidget* parent)
 }
 
 void FramesView::set_workspace(const Workspace* ws) {
+  const std::int64_t keep = ws == ws_ ? current_frame_id() : 0;  // a reload keeps the frame in view
   ws_ = ws;
   frames_ = ws ? ws->frames() : std::vector<StoredFrame>{};
   const QSignalBlocker block(list_);
@@ -56,21 +57,46 @@ void FramesView::set_workspace(const Workspace* ws) {
            "PNG or TIFF (File > Import files, or benchscope-cli import WS FILE.raw)."));
     return;
   }
-  list_->setCurrentRow(0);
-  show_frame(0);
+  int row = 0;
+  for (std::size_t i = 0; i < frames_.size(); ++i)
+    if (frames_[i].id == keep) row = static_cast<int>(i);
+  list_->setCurrentRow(row);
+  show_frame(row);
 }
 
 void FramesView::select(int index) { list_->setCurrentRow(index); }
+
+const StoredFrame* FramesView::current_frame() const {
+  const int row = list_->currentRow();
+  if (row < 0 || row >= static_cast<int>(frames_.size())) return nullptr;
+  return &frames_[static_cast<std::size_t>(row)];
+}
+
+std::int64_t FramesView::current_frame_id() const {
+  const StoredFrame* f = current_frame();
+  return f ? f->id : 0;
+}
+
+bool FramesView::select_frame_id(std::int64_t id) {
+  for (std::size_t i = 0; i < frames_.size(); ++i)
+    if (frames_[i].id == id) {
+      list_->setCurrentRow(static_cast<int>(i));
+      return true;
+    }
+  return false;
+}
 
 void FramesView::show_frame(int index) {
   if (!ws_ || index < 0 || index >= static_cast<int>(frames_.size())) return;
   const StoredFrame& s = frames_[static_cast<std::size_t>(index)];
   try {
     // A copy comes from the workspace, a reference is read again and checked against its content hash.
-    triptych_->set_frame(load_frame(*ws_, s));
+    // With the lens the workspace gives it (saved for the frame or its camera, recorded, or the paper's).
+    triptych_->set_frame(load_frame(*ws_, s), vision::resolve_frame_lens(ws_, s));
   } catch (const std::exception& e) {
     triptych_->clear(tr("Cannot show %1:\n%2").arg(QString::fromStdString(s.frame.label), QString::fromUtf8(e.what())));
   }
+  emit frame_selected(s.id);
 }
 
 bool FramesView::export_figure(const QString& path, QString* error) {

@@ -24,7 +24,15 @@ class FramesView : public QWidget {
   QListWidget* list() const { return list_; }
   int frame_count() const { return static_cast<int>(frames_.size()); }
   void select(int index);
+  // The frame shown (its workspace id), 0 when none; selecting by id returns false for an unknown id.
+  std::int64_t current_frame_id() const;
+  bool select_frame_id(std::int64_t id);
+  const StoredFrame* current_frame() const;
 
+ signals:
+  void frame_selected(std::int64_t frame_id);
+
+ public:
   // File > Export Figure 3: asks for a PNG or PDF path and writes the triptych as the paper's figure.
   void export_figure_dialog();
   bool export_figure(const QString& path, QString* error);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/image_pane.h"
 
+#include <QFontMetrics>
+
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -40,7 +42,13 @@ void ImagePane::set_view(double zoom, QPointF centre) {
 }
 
 QRectF ImagePane::image_area() const {
-  const int title_h = fontMetrics().height() + 8;
+  // The title wraps onto a second line when the pane is narrow (three panes side by side on a 1280 px window),
+  // instead of being cut (issue #32.7).
+  QFont bold = font();
+  bold.setBold(true);
+  const QFontMetrics fm(bold);
+  const int lines = fm.horizontalAdvance(title_) > width() - 8 ? 2 : 1;
+  const int title_h = lines * fm.height() + 8;
   return QRectF(0, title_h, width(), std::max(1, height() - title_h));
 }
 
@@ -92,8 +100,7 @@ void ImagePane::paintEvent(QPaintEvent*) {
   bold.setBold(true);
   p.setFont(bold);
   p.setPen(palette().windowText().color());
-  p.drawText(QRectF(4, 0, width() - 8, area.top()), Qt::AlignLeft | Qt::AlignVCenter,
-             fontMetrics().elidedText(title_, Qt::ElideRight, width() - 8));
+  p.drawText(QRectF(4, 0, width() - 8, area.top()), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, title_);
   p.setFont(font());
   p.setClipRect(area);
   if (image_.isNull()) {

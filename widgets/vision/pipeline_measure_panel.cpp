@@ -21,8 +21,8 @@
 #include "analysis/power/phase_energy.h"
 #include "power/power_sensor_box.h"
 #include "sensors/recorder.h"
-#include "vision/reproject/cuda_preprocess.h"
 #include "vision/pipeline/pipeline_measure.h"
+#include "vision/reproject/cuda_preprocess.h"
 
 namespace bs::ui {
 namespace {

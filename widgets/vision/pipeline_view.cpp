@@ -14,8 +14,8 @@
 #include <limits>
 
 #include "analysis/platform/pipeline_table.h"
-#include "platform/inference_table.h"
 #include "common/numeric_item.h"
+#include "platform/inference_table.h"
 #include "vision/pipeline_measure_panel.h"
 
 namespace bs::ui {
@@ -60,14 +60,16 @@ PipelineView::PipelineView(QWidget* parent)
   table_->setAlternatingRowColors(true);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   // Numbers and names keep their full width; the long device names get a fixed 170 px (the user can widen it),
-  // elided in the middle, whole in the tooltip, so the table fits a 1100 px window without scrolling.
+  // wrapped onto more lines rather than cut (issue #32.7: "Jetson GPU (…ores)" named no device), so the table fits
+  // a 1100 px window without scrolling.
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(Device, QHeaderView::Interactive);
   table_->setColumnWidth(Device, 170);
   table_->horizontalHeader()->setSectionResizeMode(LensColumn, QHeaderView::Interactive);
   table_->setColumnWidth(LensColumn, 190);
-  table_->setWordWrap(false);
-  table_->setTextElideMode(Qt::ElideMiddle);
+  table_->setWordWrap(true);
+  table_->setTextElideMode(Qt::ElideNone);
+  table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   summary_->setWordWrap(true);
   summary_->setTextFormat(Qt::RichText);
 

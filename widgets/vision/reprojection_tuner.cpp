@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/reprojection_tuner.h"
 
+#include "common/wrapping_tool_bar.h"
+
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QCheckBox>
@@ -29,13 +31,15 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "vision/preview_pane.h"
 #include "vision/lens/edge_proposals.h"
-#include "vision/reproject/fast_map.h"
 #include "vision/lens/straight_line.h"
+#include "vision/preview_pane.h"
+#include "vision/reproject/fast_map.h"
 
 namespace bs::ui {
 namespace {
+
+constexpr double kCircleTolerance = 0.02;  // Detect circle vs the recorded lens: beyond 2 % apart, warn
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kCoarseStep = 8;  // fast_map.h: under 0.01 px from the exact map for the paper's lens
@@ -214,7 +218,8 @@ void ReprojectionTuner::build_ui() {
   status_->setWordWrap(true);
   auto* lay = new QVBoxLayout(this);
   lay->setContentsMargins(0, 0, 0, 0);
-  lay->addWidget(bar);
+  // The actions wrap onto a second row on a narrow window instead of hiding behind "»" (issue #32.7).
+  lay->addWidget(new WrappingToolBar(bar, this));
   lay->addWidget(split, 1);
   lay->addWidget(status_);
 }
@@ -682,7 +687,10 @@ void ReprojectionTuner::job_finished() {
                                   .arg(state_.params().view.fov_deg, 0, 'f', 1)
                                   .arg(kCoarseStep)
                                   .arg(r.ms, 0, 'f', 1));
-    status_->setText({});
+    // A Detect circle warning stays until the next detection: the preview it caused must not wipe it.
+    status_->setText(circle_warning_.isEmpty()
+                         ? QString()
+                         : "<span style='color:#b00020'>" + circle_warning_.toHtmlEscaped() + "</span>");
   } else {
     status_->setText(tr("Invalid parameters: %1").arg(r.error));
   }
@@ -707,14 +715,41 @@ std::optional<vision::ImageCircle> ReprojectionTuner::auto_calibrate() {
   change("auto-calibrate", [this](auto& p) { p.lens = vision::propose_lens(p.lens, *circle_, circle_fov_->value()); });
   state_.end_merge();
   update_overlays();
-  status_->setText(tr("Image circle: centre (%1, %2) px, radius %3 px, fit RMS %4 px over %5 edge points")
-                       .arg(circle_->centre.x, 0, 'f', 1)
-                       .arg(circle_->centre.y, 0, 'f', 1)
-                       .arg(circle_->radius, 0, 'f', 1)
-                       .arg(circle_->rms_px, 0, 'f', 2)
-                       .arg(circle_->edge_points));
+  QString text = tr("Image circle: centre (%1, %2) px, radius %3 px, fit RMS %4 px over %5 edge points")
+                     .arg(circle_->centre.x, 0, 'f', 1)
+                     .arg(circle_->centre.y, 0, 'f', 1)
+                     .arg(circle_->radius, 0, 'f', 1)
+                     .arg(circle_->rms_px, 0, 'f', 2)
+                     .arg(circle_->edge_points);
+  // Issue #32.6: a recorded lens is evidence too; a proposal far from it says so, with both values.
+  circle_warning_.clear();
+  if (reference_ && reference_->r_pp > 0) {
+    const double proposed = state_.params().lens.r_pp, recorded = reference_->r_pp;
+    const double off = std::abs(proposed - recorded) / recorded;
+    if (off > kCircleTolerance)
+      circle_warning_ =
+          tr("⚠ Detect circle proposes r_pp = %1 rad/px, the lens %2 has %3 rad/px (%4 % apart). The visible disc "
+             "may span less than the lens FOV (%5°): enter the angle it spans under “Circle spans” and detect again, "
+             "or Ctrl+Z to keep the recorded lens.")
+              .arg(proposed, 0, 'f', 7)
+              .arg(reference_source_)
+              .arg(recorded, 0, 'f', 7)
+              .arg(off * 100, 0, 'f', 1)
+              .arg(state_.params().lens.fov_deg, 0, 'g', 4);
+  }
+  status_->setText(circle_warning_.isEmpty()
+                       ? text
+                       : text + "<br><span style='color:#b00020'>" + circle_warning_.toHtmlEscaped() + "</span>");
   return circle_;
 }
+
+void ReprojectionTuner::set_reference_lens(const std::optional<vision::Lens>& lens, const QString& source) {
+  reference_ = lens;
+  reference_source_ = source;
+  circle_warning_.clear();
+}
+
+QString ReprojectionTuner::status_text() const { return status_->text(); }
 
 bool ReprojectionTuner::add_line_point(QPointF p) {
   const auto& s = state_.params();

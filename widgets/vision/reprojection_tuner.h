@@ -61,8 +61,14 @@ class ReprojectionTuner : public QWidget {
   // Replace the lens (e.g. a checkerboard calibration's) as one undo step named `what`.
   void apply_lens(const vision::Lens& lens, const std::string& what);
   QToolBar* tool_bar() const { return bar_; }  // for the Lens tab's own actions
-  // Detect the image circle and apply the proposed principal point and r_pp as one undo step.
+  // Detect the image circle and apply the proposed principal point and r_pp as one undo step. With a reference
+  // lens (the frame's recorded or saved one), a proposal more than 2 % off its r_pp is applied with a warning that
+  // gives both values (circle_warning()): the visible disc may span less than the lens FOV ("Circle spans").
   std::optional<vision::ImageCircle> auto_calibrate();
+  void set_reference_lens(const std::optional<vision::Lens>& lens, const QString& source);
+  QString circle_warning() const { return circle_warning_; }  // empty when none
+  QDoubleSpinBox* circle_fov_box() const { return circle_fov_; }
+  QString status_text() const;
   // Straight-line tool: points clicked on the output preview (output pixels), kept as source pixels, so they stay
   // on the same scene points when the lens changes; the current line's residual is shown under the preview.
   // Clicks where the view has no source are ignored (returns false). The lines are part of the undo history
@@ -134,6 +140,8 @@ class ReprojectionTuner : public QWidget {
   vision::TunerState state_;
   cv::Mat fisheye_;
   std::optional<vision::ImageCircle> circle_;
+  std::optional<vision::Lens> reference_;  // the frame's lens in the workspace, for Detect circle's comparison
+  QString reference_source_, circle_warning_;
   bool new_line_pending_ = false;  // the next click starts a line (else it goes to the last one)
   int selected_ = -1;
   std::vector<vision::PickedLine> left_out_;  // lines the last fit rejected, drawn red while they are picked

@@ -79,8 +79,19 @@ ImportController::ImportController(QWidget* parent_window) : QObject(parent_wind
 ImportReport ImportController::import_now(const QString& workspace_path, const QStringList& paths,
                                           const CancelToken& cancel,
                                           const std::function<void(int, int, const QString&)>& progress,
-                                          FrameStorage frames, const std::optional<RawFrameOptions>& raw_geometry) {
+                                          FrameStorage frames, const std::optional<RawFrameOptions>& raw_geometry,
+                                          const LogPlatformChooser& choose_platform) {
   ImportOptions options;
+  if (choose_platform)
+    options.choose_log_platform = [&choose_platform](const PowerTrace& log, const std::string& path,
+                                                     const std::string& guess, const std::vector<std::string>& known) {
+      QStringList platforms;
+      for (const std::string& k : known) platforms << QString::fromStdString(k);
+      return choose_platform(QString::fromStdString(log.label), QString::fromStdString(path),
+                             QString::fromStdString(guess), platforms)
+          .trimmed()
+          .toStdString();
+    };
   options.atomicity = ImportAtomicity::EachFile;
   options.frames = frames;
   options.raw_geometry = raw_geometry;
@@ -155,10 +166,18 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
     running_ = false;
     emit finished(report);
   });
+  // The question about a log's platform is asked on the GUI thread; the importing thread waits for the answer.
+  LogPlatformChooser ask;
+  if (choose_platform_)
+    ask = [this](const QString& log, const QString& path, const QString& guess, const QStringList& known) {
+      QString answer;
+      QMetaObject::invokeMethod(
+          this, [&] { answer = choose_platform_(log, path, guess, known); }, Qt::BlockingQueuedConnection);
+      return answer;
+    };
   watcher->setFuture(
-      QtConcurrent::run([workspace_path, paths, cancel, progress, frames = frame_storage_, geometry = raw_geometry_] {
-        return import_now(workspace_path, paths, *cancel, progress, frames, geometry);
-      }));
+      QtConcurrent::run([workspace_path, paths, cancel, progress, frames = frame_storage_, geometry = raw_geometry_,
+                         ask] { return import_now(workspace_path, paths, *cancel, progress, frames, geometry, ask); }));
 }
 
 }  // namespace bs::ui

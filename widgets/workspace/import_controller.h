@@ -2,6 +2,7 @@
 #pragma once
 #include <QObject>
 #include <QStringList>
+#include <functional>
 #include <memory>
 
 #include <optional>
@@ -31,6 +32,11 @@ struct ImportMessage {
 };
 ImportMessage import_message(const ImportReport& report);
 
+// Asked, for each power log whose file names no platform, which platform it belongs to (issue #32.3): the log's
+// label, its file, the guess (never blank) and the workspace's platforms. An empty answer takes the guess.
+using LogPlatformChooser =
+    std::function<QString(const QString& log, const QString& path, const QString& guess, const QStringList& platforms)>;
+
 // Imports files and folders into a workspace file off the GUI thread, with a progress dialog and Cancel. The
 // worker opens its own connection to the workspace (SQLite in WAL mode allows a reader beside the writer), so the
 // GUI's connection is never used from two threads. What is imported, skipped and how is the import service's
@@ -47,7 +53,10 @@ class ImportController : public QObject {
   static ImportReport import_now(const QString& workspace_path, const QStringList& paths, const CancelToken& cancel,
                                  const std::function<void(int, int, const QString&)>& progress = {},
                                  FrameStorage frames = FrameStorage::Reference,
-                                 const std::optional<RawFrameOptions>& raw_geometry = std::nullopt);
+                                 const std::optional<RawFrameOptions>& raw_geometry = std::nullopt,
+                                 const LogPlatformChooser& choose_platform = {});
+  // What start() asks about a log without a platform; called on the GUI thread (the import waits for the answer).
+  void set_log_platform_chooser(LogPlatformChooser chooser) { choose_platform_ = std::move(chooser); }
   // How start() stores the frames it imports (File > Copy imported frames into the workspace).
   void set_frame_storage(FrameStorage storage) { frame_storage_ = storage; }
   FrameStorage frame_storage() const { return frame_storage_; }
@@ -62,6 +71,7 @@ class ImportController : public QObject {
   bool running_ = false;
   FrameStorage frame_storage_ = FrameStorage::Reference;
   std::optional<RawFrameOptions> raw_geometry_;
+  LogPlatformChooser choose_platform_;
 };
 
 }  // namespace bs::ui

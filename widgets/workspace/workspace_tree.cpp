@@ -181,6 +181,11 @@ void WorkspaceTree::show_menu(const QPoint& pos) {
   }
   if (!ref.renamable() && !ref.removable()) return;
   if (ref.renamable()) menu.addAction(tr("Rename…\tF2"), this, [this, ref] { emit rename_requested(ref); });
+  if (ref.kind == TreeItemRef::Kind::PowerLog) {
+    menu.addAction(tr("Supply voltage…"), this, [this, ref] { emit supply_voltage_requested(ref); })
+        ->setToolTip(tr("Voltage that turns this log's current into power: typed, or another log's channel"));
+    menu.addAction(tr("Platform…"), this, [this, ref] { emit platform_requested(ref); });
+  }
   if (ref.removable())
     menu.addAction(
         ref.kind == TreeItemRef::Kind::BatteryPreset ? tr("Remove preset\tDel") : tr("Remove its import\tDel"), this,

@@ -50,6 +50,9 @@ class WorkspaceTree : public QTreeView {
   void rename_requested(const bs::ui::TreeItemRef& item);
   void remove_requested(const bs::ui::TreeItemRef& item);
   void color_requested(const bs::ui::TreeItemRef& device, int color_index);
+  // A power log's "Supply voltage…" and "Platform…" (issue #32.2, #32.3).
+  void supply_voltage_requested(const bs::ui::TreeItemRef& log);
+  void platform_requested(const bs::ui::TreeItemRef& log);
 
  protected:
   void keyPressEvent(QKeyEvent* event) override;

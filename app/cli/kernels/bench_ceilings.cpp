@@ -29,6 +29,10 @@ std::string spread(const std::vector<double>& v, double scale, const char* unit)
   return buf;
 }
 
+std::string per_cpu_text(const std::vector<double>& per_cpu_second) {
+  return per_cpu_second.empty() ? std::string() : ", " + spread(per_cpu_second, 1e9, "GFLOP per CPU-s");
+}
+
 void print_flags(const std::vector<PlausibilityFlag>& flags, std::ostream& out, const char* indent) {
   for (const PlausibilityFlag& f : flags) out << indent << "  \xE2\x9A\xA0 " << f.code << ": " << f.reason << '\n';
 }
@@ -40,9 +44,10 @@ void print_ceilings(const kernels::CeilingSet& set, std::ostream& out, const cha
   if (set.rotation_mix.measured()) {
     const double mean = summarize(set.rotation_mix.values).mean;
     auto cmp = compare_to_ceilings(mean, set.computed_peak_flops, std::nullopt, "the rotation-mix ceiling");
-    std::snprintf(line, sizeof line, "%srotation-mix ceiling: %s, %s; %s of the computed peak %.2f GFLOPS\n", indent,
+    // A device's ceilings (threads 0) are timed on the device: no per-CPU-second figure.
+    std::snprintf(line, sizeof line, "%srotation-mix ceiling: %s%s; %s of the computed peak %.2f GFLOPS\n", indent,
                   spread(set.rotation_mix.values, 1e9, "GFLOPS").c_str(),
-                  spread(set.rotation_mix.per_cpu_second, 1e9, "GFLOP per CPU-s").c_str(),
+                  per_cpu_text(set.rotation_mix.per_cpu_second).c_str(),
                   fraction_text(cmp.fraction_of_peak, !cmp.flags.empty()).c_str(), set.computed_peak_flops / 1e9);
     out << line;
     // Per CPU-second against one core's computed peak: the figure that other processes on the cores do not lower.
@@ -60,15 +65,15 @@ void print_ceilings(const kernels::CeilingSet& set, std::ostream& out, const cha
     print_flags(cmp.flags, out, indent);
   }
   if (set.fma.measured()) {
-    std::snprintf(line, sizeof line, "%sFMA ceiling: %s, %s\n", indent, spread(set.fma.values, 1e9, "GFLOPS").c_str(),
-                  spread(set.fma.per_cpu_second, 1e9, "GFLOP per CPU-s").c_str());
+    std::snprintf(line, sizeof line, "%sFMA ceiling: %s%s\n", indent, spread(set.fma.values, 1e9, "GFLOPS").c_str(),
+                  per_cpu_text(set.fma.per_cpu_second).c_str());
     out << line << indent << "  how: " << set.fma.how << '\n';
   } else {
     out << indent << "FMA ceiling: not measured (" << set.fma.how << ")\n";
   }
   if (set.bandwidth.measured()) {
-    std::snprintf(line, sizeof line, "%smemory bandwidth ceiling: %s\n", indent,
-                  spread(set.bandwidth.values, 1e9, "GB/s").c_str());
+    std::snprintf(line, sizeof line, "%s%s bandwidth ceiling: %s\n", indent,
+                  set.threads > 0 ? "memory" : "device memory", spread(set.bandwidth.values, 1e9, "GB/s").c_str());
     out << line << indent << "  how: " << set.bandwidth.how << '\n';
   }
 }

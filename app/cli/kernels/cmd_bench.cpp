@@ -7,6 +7,7 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <random>
 #include <sstream>
 #include <thread>
@@ -17,18 +18,18 @@
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
 #include "common/args.h"
-#include "kernels/bench_ceilings.h"
-#include "vision/bench_dnn.h"
-#include "vision/bench_pipeline.h"
-#include "kernels/bench_range_stats.h"
-#include "vision/bench_tuner.h"
-#include "vision/bench_vision.h"
 #include "common/command.h"
-#include "kernels/cpu_args.h"
+#include "common/signals.h"
+#include "kernels/bench_ceilings.h"
+#include "kernels/bench_range_stats.h"
 #include "kernels/ceiling_cache.h"
+#include "kernels/cpu_args.h"
 #include "kernels/sweep.h"
 #include "power/power_args.h"
-#include "common/signals.h"
+#include "vision/bench_dnn.h"
+#include "vision/bench_pipeline.h"
+#include "vision/bench_tuner.h"
+#include "vision/bench_vision.h"
 
 namespace bs::cli {
 
@@ -116,6 +117,30 @@ void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, con
   }
 }
 
+// The empirical ceilings of every device backend (OpenCL, CUDA), `runs` repetitions each, printed and cached; a
+// device whose micro-kernel gives a wrong result fails the command (std::runtime_error).
+std::map<std::string, kernels::CeilingSet> measure_device_ceilings(const std::vector<kernels::Backend>& backends,
+                                                                   int runs, std::ostream& out) {
+  std::map<std::string, kernels::CeilingSet> sets;
+  kernels::CeilingSpec spec;
+  spec.repeats = runs;
+  for (const kernels::Backend& b : backends) {
+    if (!b.ceiling_kernels) continue;
+    kernels::CeilingSet set = kernels::measure_device_ceilings(b, spec, interrupt_token());
+    out << "empirical ceilings of " << b.id << " " << b.device_name << " (" << b.label << "), measured now, " << runs
+        << " repetitions, timed on the device:\n";
+    print_ceilings(set, out);
+    try {
+      kernels::store_ceilings(set);
+    } catch (const std::runtime_error& e) {
+      out << "  ceilings not cached: " << e.what() << '\n';
+    }
+    sets.emplace(b.id, std::move(set));
+  }
+  if (!sets.empty()) out << "  (stored in " << kernels::ceiling_cache_path() << ")\n\n";
+  return sets;
+}
+
 // The ceiling section (bench_ceilings.h), then the per-host cache and the load average.
 void bench_and_cache_ceilings(const kernels::CpuInfo& cpu, const kernels::Backend& simd, int runs, std::int64_t workers,
                               std::ostream& out) {
@@ -155,15 +180,22 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
                 cpu.fma_ports, cpu.flops_per_cycle, load_before.c_str());
   out << line;
   if (args.has("--ceilings-only")) {
+    measure_device_ceilings(backends, runs, out);
     bench_and_cache_ceilings(cpu, backends.front(), runs, w_override ? static_cast<std::int64_t>(w_given) : 16384, out);
     return 0;
   }
+  // Every OpenCL and CUDA device's empirical ceilings first (timed on the device, each result checked), so the
+  // table can give each of its rows "% of ceiling" beside "% of the computed peak".
+  std::map<std::string, kernels::CeilingSet> device_ceilings;
+  if (!args.has("--no-ceilings")) device_ceilings = measure_device_ceilings(backends, runs, out);
   out << "D = 4, N = 40,000; GFLOPS of each of " << runs
       << " runs after one warm-up (wall clock, steady_clock); % of the theoretical peak computed here.\n"
+         "'% ceiling': against the device's rotation-mix ceiling measured above (OpenCL, CUDA; the CPU SIMD\n"
+         "backend's is paired round by round in its own section below).\n"
          "'% peak/CPU s': the same flops per CPU-second the process got, against one core's peak: the code's\n"
          "efficiency when other processes share the cores (CPU devices only).\n\n";
-  std::snprintf(line, sizeof line, "%-34s %-10s %7s %9s %20s %9s %8s %13s\n", "backend", "variant", "W", "median",
-                "mean \xC2\xB1 SD (n)", "peak", "% peak", "% peak/CPU s");
+  std::snprintf(line, sizeof line, "%-34s %-10s %7s %9s %20s %9s %8s %9s %13s\n", "backend", "variant", "W", "median",
+                "mean \xC2\xB1 SD (n)", "peak", "% peak", "% ceiling", "% peak/CPU s");
   out << line;
   double simd_best = 0, opencl_best = 0, simd_best_cpu = 0, opencl_best_cpu = 0;
   for (const auto& b : backends) {
@@ -205,9 +237,13 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
         std::snprintf(eff_text, sizeof eff_text, "%.1f%%", 100.0 * eff);
       else
         std::snprintf(eff_text, sizeof eff_text, "n/a");
-      std::snprintf(line, sizeof line, "%-34s %-10s %7lld %9.2f %21s %9.2f %7.1f%% %13s\n", name.c_str(),
+      char ceiling_text[32] = "n/a";
+      if (const auto it = device_ceilings.find(b.id); it != device_ceilings.end() && it->second.rotation_mix.measured())
+        std::snprintf(ceiling_text, sizeof ceiling_text, "%.1f%%",
+                      100.0 * g * 1e9 / summarize(it->second.rotation_mix.values).mean);
+      std::snprintf(line, sizeof line, "%-34s %-10s %7lld %9.2f %21s %9.2f %7.1f%% %9s %13s\n", name.c_str(),
                     b.variant_label(v).c_str(), static_cast<long long>(workers), g, spread,
-                    b.theoretical_peak_flops / 1e9, 100.0 * g * 1e9 / b.theoretical_peak_flops, eff_text);
+                    b.theoretical_peak_flops / 1e9, 100.0 * g * 1e9 / b.theoretical_peak_flops, ceiling_text, eff_text);
       out << line;
     }
   }
@@ -302,6 +338,8 @@ const CommandRegistrar registrar({
     "range-stats | dnn)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--isa avx512|avx2|sse4|generic]\n"
     "         [--no-ceilings | --ceilings-only]\n"
+    "         (every OpenCL and CUDA device's empirical ceilings are measured first and give the table's\n"
+    "          '% ceiling'; the CPU SIMD backend's follow in their own section; all are cached for devices)\n"
     "         [--power SENSOR|auto] [--power-interval-ms M] [--sysfs-root DIR]\n"
     "         (--power: also the sampler's cost, with / without, and the energy per run)\n"
     "       benchscope-cli bench vision [--frames F] [--threads T] [--power SENSOR|auto]\n"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli devices: every backend/device the kernels can run on, with its theoretical peak.
 #include <iostream>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -11,13 +12,13 @@
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
 #include "common/args.h"
-#include "kernels/bench_ceilings.h"
 #include "common/command.h"
-#include "kernels/cpu_args.h"
 #include "common/flag_output.h"
-#include "kernels/backend.h"
-#include "kernels/ceiling_cache.h"
 #include "common/signals.h"
+#include "kernels/backend.h"
+#include "kernels/bench_ceilings.h"
+#include "kernels/ceiling_cache.h"
+#include "kernels/cpu_args.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -26,13 +27,20 @@ namespace {
 nlohmann::json ceiling_json(const kernels::Ceiling& c) {
   if (!c.measured()) return {{"how", c.how}, {"mean", nullptr}};
   const Summary w = summarize(c.values), p = summarize(c.per_cpu_second);
-  return {{"unit", c.unit},     {"mean", w.mean}, {"sd", w.sd}, {"n", w.n}, {"per_cpu_second_mean", p.mean},
-          {"values", c.values}, {"how", c.how}};
+  // A device's ceilings are timed on the device: no per-CPU-second figure (null).
+  return {{"unit", c.unit},
+          {"mean", w.mean},
+          {"sd", w.sd},
+          {"n", w.n},
+          {"per_cpu_second_mean", c.per_cpu_second.empty() ? nlohmann::json() : nlohmann::json(p.mean)},
+          {"values", c.values},
+          {"how", c.how}};
 }
 
 nlohmann::json ceilings_json(const kernels::CeilingSet& s) {
   nlohmann::json j{{"date", s.date},
                    {"isa", s.isa},
+                   {"kind", std::string(to_string(s.kind))},
                    {"threads", s.threads},
                    {"clock_hz", s.clock_hz},
                    {"computed_peak_flops", s.computed_peak_flops},
@@ -114,25 +122,44 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
   };
   kernels::CpuInfo cpu = cpu_from_args(args);
   const auto backends = kernels::available_backends(cpu);
-  // Empirical ceilings of the CPU with its SIMD target: measured now when asked, else from the per-host cache.
+  // Empirical ceilings of the CPU with its SIMD target and of every device backend (OpenCL, CUDA): measured now
+  // when asked, else from the per-host cache.
   std::optional<kernels::CeilingSet> ceilings;
-  if (args.has("--measure-ceilings")) {
+  std::map<std::string, kernels::CeilingSet> device_ceilings;  // by backend id
+  std::map<std::string, std::string> device_errors;            // a device whose micro-kernels failed, and why
+  const bool measure = args.has("--measure-ceilings");
+  if (measure) {
     ceilings = kernels::measure_ceilings(cpu, {}, interrupt_token());
     kernels::store_ceilings(*ceilings);
+    for (const auto& b : backends) {
+      if (!b.ceiling_kernels) continue;
+      try {
+        device_ceilings[b.id] = kernels::measure_device_ceilings(b, {}, interrupt_token());
+        kernels::store_ceilings(device_ceilings[b.id]);
+      } catch (const Cancelled&) {
+        throw;
+      } catch (const std::exception& e) {
+        device_errors[b.id] = e.what();  // a wrong result or a failing device is reported, the others still shown
+      }
+    }
     // In a workspace the peak table, peaks and the roofline show each run's % of this device's ceiling.
     if (const auto ws_path = args.value("--workspace")) {
       ImportBatch batch;
       batch.source_path = "benchscope-cli devices --measure-ceilings";
       batch.format = kernels::kCeilingSource;
-      const ResultSet set = kernels::ceiling_result_set(*ceilings);
-      batch.result_sets = {set};
+      batch.result_sets = {kernels::ceiling_result_set(*ceilings)};
+      for (const auto& [id, set] : device_ceilings) batch.result_sets.push_back(kernels::ceiling_result_set(set));
+      std::string key;
+      for (const ResultSet& set : batch.result_sets) key += set.provenance.date + set.provenance.note;
       Workspace ws(*ws_path);
-      ws.add_import(batch, content_hash(set.provenance.date + set.provenance.note));
+      ws.add_import(batch, content_hash(key));
     }
   } else if (args.value("--workspace")) {
     throw UsageError("--workspace stores measured ceilings: use it with --measure-ceilings");
   } else {
     ceilings = kernels::cached_ceilings(cpu);
+    for (const auto& b : backends)
+      if (auto set = kernels::cached_device_ceilings(b)) device_ceilings[b.id] = std::move(*set);
   }
   if (args.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
@@ -149,6 +176,9 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
                            {"spec", spec_json(spec_of(b))},
                            {"empirical_ceilings", nullptr}};
       if (b.id == "cpu-simd" && ceilings) entry["empirical_ceilings"] = ceilings_json(*ceilings);
+      if (const auto it = device_ceilings.find(b.id); it != device_ceilings.end())
+        entry["empirical_ceilings"] = ceilings_json(it->second);
+      if (const auto it = device_errors.find(b.id); it != device_errors.end()) entry["ceiling_error"] = it->second;
       list.push_back(std::move(entry));
     }
     out << nlohmann::json{{"format", "benchscope-devices"},
@@ -157,7 +187,7 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
                           {"unavailable", kernels::unavailable_backends()}}
                .dump(2)
         << '\n';
-    return 0;
+    return device_errors.empty() ? 0 : 1;
   }
   for (const auto& b : backends) {
     out << b.id << ": " << b.label << " on " << b.device_name << "\n    " << b.details << "\n    variants:";
@@ -176,13 +206,22 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
             << " threads; devices --measure-ceilings or bench kernels measures them (" << kernels::ceiling_cache_path()
             << ")\n";
       }
-    } else if (b.kind != DeviceKind::Cpu || b.id != "cpu-scalar") {
-      out << "    empirical ceilings: not measured for this backend (BenchScope's ceiling micro-kernels run on the CPU "
-             "SIMD backend only)\n";
+    } else if (b.ceiling_kernels) {
+      if (const auto it = device_errors.find(b.id); it != device_errors.end()) {
+        out << "    empirical ceilings: FAILED: " << it->second << '\n';
+      } else if (const auto found = device_ceilings.find(b.id); found != device_ceilings.end()) {
+        out << "    empirical ceilings (" << (measure ? "measured now" : "cached") << ", " << found->second.date
+            << ", timed on the device):\n";
+        print_ceilings(found->second, out, "      ");
+      } else {
+        out << "    empirical ceilings: none cached for this device; devices --measure-ceilings or bench kernels "
+               "measures them ("
+            << kernels::ceiling_cache_path() << ")\n";
+      }
     }
   }
   for (const std::string& why : kernels::unavailable_backends()) out << "not available: " << why << '\n';
-  return 0;
+  return device_errors.empty() ? 0 : 1;  // a device micro-kernel whose result was wrong fails the command
 }
 
 const CommandRegistrar registrar({
@@ -194,9 +233,10 @@ const CommandRegistrar registrar({
     "  rotation kernel's theoretical peak and the vendor FP32 peak from the device table, then the backends this\n"
     "  build knows but cannot run here and why. --table: the device table (resources/devices/devices.json) with\n"
     "  every entry's FP32 peak, derivation and sources; a value no source confirmed ends in '?'. The CPU SIMD\n"
-    "  backend also shows its empirical ceilings (rotation mix, FMA, memory bandwidth; docs/ceilings.md) with when\n"
-    "  and how they were measured, from the per-host cache; --measure-ceilings measures them now (~5 s) and\n"
-    "  updates the cache (--workspace: also stores them there, for peaks, the peak table and the roofline).\n"
+    "  backend and every OpenCL and CUDA device also show their empirical ceilings (rotation mix, FMA, memory\n"
+    "  bandwidth; docs/ceilings.md, docs/gpu-check.md) with when and how they were measured, from the per-host\n"
+    "  cache; --measure-ceilings measures them all now (~5 s for the CPU, ~2 s per device) and updates the cache\n"
+    "  (--workspace: also stores them there, for peaks, the peak table and the roofline).\n"
     "  --isa: another instruction set this CPU has.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_devices(args, out);

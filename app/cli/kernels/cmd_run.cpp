@@ -12,14 +12,14 @@
 #include "analysis/stats/units.h"
 #include "common/args.h"
 #include "common/command.h"
-#include "kernels/cpu_args.h"
+#include "common/signals.h"
 #include "kernels/ceiling_cache.h"
+#include "kernels/cpu_args.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power/power_args.h"
 #include "runs/run_json.h"
 #include "sensors/recording_csv.h"
-#include "common/signals.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -34,28 +34,35 @@ void print_point_energies(std::ostream& out, const PowerTrace& trace, const std:
   print_phase_energies(out, trace);
   out << "energy per sweep point (" << to_string(trace.provenance.measurement) << ": " << trace.provenance.sensor
       << "):\n";
-  char line[200];
-  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %10s\n", "D", "W", "GFLOPS", "mean W", "J per run",
-                "GFLOPS/W");
+  char line[256];
+  // The columns and digits of the Kernel Runner's energy table.
+  std::snprintf(line, sizeof line, "  %6s %10s %12s %12s %12s %12s %10s %s\n", "D", "W", "GFLOPS", "mean W",
+                "J (point)", "J per run", "GFLOPS/W", "n samples");
   out << line;
   for (const PointEnergy& p : sweep_point_energies(trace, runs)) {
-    std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.3f %12.4f %10.3f%s\n", p.dims,
-                  static_cast<long long>(p.workers), p.gflops, p.mean_power_w, p.joules_per_run, p.gflops_per_watt,
-                  p.samples < 2 ? "  (shorter than the sample interval)" : "");
+    std::snprintf(line, sizeof line, "  %6d %10lld %12.3f %12.4f %12.4f %12.4f %10.3f %zu%s\n", p.dims,
+                  static_cast<long long>(p.workers), p.gflops, p.mean_power_w, p.energy_j, p.joules_per_run,
+                  p.gflops_per_watt, p.samples, short_point_mark(p.samples).c_str());
     out << line;
   }
 }
 
-// "  = X % of the empirical ceiling ..." for a CPU SIMD figure, with flags spelled out; a hint when none is cached.
-void print_ceiling_comparison(double flops, const kernels::CpuInfo& cpu, std::ostream& out) {
-  const auto cached = kernels::cached_ceilings(cpu);
+// "  = X % of the empirical ceiling ..." for a CPU SIMD or OpenCL/CUDA device figure, with flags spelled out; a hint
+// when none is cached.
+void print_ceiling_comparison(double flops, const kernels::Backend& backend, const kernels::CpuInfo& cpu,
+                              std::ostream& out) {
+  const bool device = backend.id != "cpu-simd";
+  const auto cached = device ? kernels::cached_device_ceilings(backend) : kernels::cached_ceilings(cpu);
   std::optional<double> ceiling;
-  std::string how = "no empirical ceiling cached for this CPU and ISA (bench kernels or devices --measure-ceilings)";
+  std::string how = device ? "no empirical ceiling cached for this device (bench kernels or devices --measure-ceilings)"
+                           : "no empirical ceiling cached for this CPU and ISA (bench kernels or devices "
+                             "--measure-ceilings)";
   if (cached && cached->rotation_mix.measured()) {
     ceiling = summarize(cached->rotation_mix.values).mean;
     how = "rotation mix, cached, measured " + cached->date;
   }
-  const auto cmp = compare_to_ceilings(flops, cpu.peak_flops, ceiling, "the peak", how);
+  const auto cmp =
+      compare_to_ceilings(flops, device ? backend.theoretical_peak_flops : cpu.peak_flops, ceiling, "the peak", how);
   out << "  " << fraction_text(cmp.fraction_of_peak, !cmp.flags.empty()) << " of the computed peak, "
       << fraction_text(cmp.fraction_of_ceiling, !cmp.flags.empty()) << " of the empirical ceiling ("
       << (ceiling ? format_si(*ceiling, "FLOPS") + ", " : "") << how << ")\n";
@@ -109,6 +116,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   // The sampler runs on its own thread; the sweep marks its phases: the warm-up of each D (the time from the
   // previous point's end to this D's first point) and each point.
   const auto power = start_power(args, err, quiet);
+  // Each point lasts long enough for kMinSamplesPerPoint sensor samples (the Kernel Runner does the same).
+  if (power) spec.min_point_s = min_point_seconds(power->interval_s());
   double last_end = power ? power->now_s() : 0;
   int current_d = -1;
   kernels::SweepResult result;
@@ -181,8 +190,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
         out << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
             << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
       out << " [variant " << row.variant << "]\n";
-      // The empirical ceiling of this CPU and ISA from the per-host cache (bench kernels / devices --measure-ceilings).
-      if (found->id == "cpu-simd") print_ceiling_comparison(row.peak.flops, cpu, out);
+      // The empirical ceiling of this CPU and ISA, or of the OpenCL/CUDA device, from the per-host cache.
+      if (found->id == "cpu-simd" || found->ceiling_kernels) print_ceiling_comparison(row.peak.flops, *found, cpu, out);
     }
     if (trace) print_point_energies(out, *trace, result.runs);
   }

@@ -8,8 +8,8 @@
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
 #include "common/args.h"
-#include "kernels/bandwidth.h"
 #include "common/signals.h"
+#include "kernels/bandwidth.h"
 #include "store/workspace.h"
 
 namespace bs::cli {

@@ -13,9 +13,9 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/flag_output.h"
-#include "workspace/inputs.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {

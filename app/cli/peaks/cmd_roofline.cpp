@@ -12,9 +12,9 @@
 #include "analysis/stats/units.h"
 #include "common/args.h"
 #include "common/command.h"
-#include "workspace/inputs.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {

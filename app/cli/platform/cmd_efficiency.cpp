@@ -10,8 +10,8 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/flag_output.h"
-#include "workspace/inputs.h"
 #include "common/signals.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {

@@ -6,9 +6,9 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "workspace/inputs.h"
-#include "report/figure_template.h"
 #include "common/signals.h"
+#include "report/figure_template.h"
+#include "workspace/inputs.h"
 
 #include "platform/figure_cli.h"
 

@@ -8,15 +8,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/library/candidates.h"
 #include "analysis/platform/inference_table.h"
 #include "analysis/platform/platform_table.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/flag_output.h"
-#include "workspace/inputs.h"
-#include "platform/platform_args.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "platform/candidates_cli.h"
+#include "platform/platform_args.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {
@@ -33,6 +35,13 @@ std::string fmt_w(double w) {
   return buf;
 }
 
+// The origins of the numbers in a platform's column (measured, reconstructed, published), each once.
+nlohmann::json origins_json(const PlatformRow& r) {
+  std::set<std::string> o;
+  for (const auto& [col, src] : r.sources) o.insert(std::string(to_string(src.origin)));
+  return nlohmann::json(std::vector<std::string>(o.begin(), o.end()));
+}
+
 nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 // A stage's per-frame time: mean, SD (ms) and n; null when the platform has no pipeline run.
 nlohmann::json stage_json(const std::optional<Summary>& s) {
@@ -42,7 +51,7 @@ nlohmann::json stage_json(const std::optional<Summary>& s) {
 
 int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   std::set<std::string> values = platform_value_options();
-  values.insert({"--latex", "--csv"});
+  values.insert({"--latex", "--csv", "--library", "--candidates-csv", "--candidates-latex"});
   const ParsedArgs args = parse_args(raw, {"--json"}, values);
   if (args.positional.empty()) throw UsageError("platforms needs a workspace or files");
   const PlatformArgs platform_args = parse_platform_args(args);
@@ -60,6 +69,30 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
       rows, constrained ? std::span<const PlatformVerdict>(verdicts) : std::span<const PlatformVerdict>());
   if (const auto p = args.value("--latex")) write_file(*p, to_latex(table));
   if (const auto p = args.value("--csv")) write_file(*p, to_csv(table));
+  // Candidates: the own platforms beside the library's published results named by --library.
+  std::vector<CandidateClass> classes;
+  std::vector<PeakClass> peaks;
+  const bool with_library = args.value("--library").has_value();
+  if (with_library) {
+    const BundledLibrary& lib = bundled_library();
+    if (!lib.error.empty()) throw std::runtime_error("library: " + lib.error);
+    CandidateInputs in;
+    in.platforms = rows;
+    in.pipelines = data.pipeline_runs;
+    in.dnn_runs = data.dnn_runs;
+    in.result_sets = data.result_sets;
+    in.lib = &lib.library;
+    try {
+      in.library = select_library(lib.library, *args.value("--library"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--library: ") + e.what());
+    }
+    classes = rank_candidates(in, c, options);
+    peaks = peak_candidates(in);
+    if (const auto p = args.value("--candidates-latex"))
+      write_file(*p, to_latex(candidates_table(classes, constrained)));
+    if (const auto p = args.value("--candidates-csv")) write_file(*p, to_csv(candidates_table(classes, constrained)));
+  }
 
   if (args.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
@@ -79,6 +112,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
       nlohmann::json column_flags = nlohmann::json::object();
       for (const auto& [col, f] : r.flags) column_flags[col] = flags_json(f);
       list.push_back({{"platform", r.platform},
+                      {"origins", origins_json(r)},
                       {"gpu_peak_flops", r.gpu ? nlohmann::json(r.gpu->peak.flops) : nlohmann::json(nullptr)},
                       {"cpu_peak_flops", r.cpu ? nlohmann::json(r.cpu->peak.flops) : nlohmann::json(nullptr)},
                       {"mean_power_w", opt(r.mean_power_w)},
@@ -109,7 +143,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                           {"battery", pack->name},
                           {"extra_load_w", options.extra_load_w},
                           {"mission", options.mission},
-                          {"platforms", list}}
+                          {"platforms", list},
+                          {"candidates", with_library ? candidates_json(classes, peaks) : nlohmann::json(nullptr)}}
                .dump(2)
         << '\n';
     return 0;
@@ -149,6 +184,10 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     t.print(out);
     for (const std::string& n : inf.notes) out << n << '\n';
   }
+  if (with_library) {
+    out << '\n';
+    print_candidates(out, classes, peaks, constrained);
+  }
   if (constrained) {
     std::string chosen;
     for (const auto& v : verdicts)
@@ -166,6 +205,7 @@ const CommandRegistrar registrar({
     "usage: benchscope-cli platforms (WORKSPACE | PATH...) [--budget W] [--min-fps FPS] [--min-runtime MIN]\n"
     "                                [--battery PRESET] [--extra-load W] [--mission SPEC] [--supply-volts V]\n"
     "                                [--latex FILE] [--csv FILE] [--json]\n"
+    "                                [--library COMPUTERS [--candidates-csv FILE] [--candidates-latex FILE]]\n"
     "  One column per platform: best GPU and CPU peak, % of theoretical peak, pipeline timings, mean and max power,\n"
     "  GFLOPS/W (the paper's peak / max power, and peak / mean power), energy per frame, battery runtime\n"
     "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh (frames\n"
@@ -177,7 +217,12 @@ const CommandRegistrar registrar({
     "  margin, and the platform with the most compute among those that meet all of them is recommended. Only\n"
     "  platforms with a power log can be recommended. --latex/--csv write the table (booktabs / RFC 4180).\n"
     "  Detection networks timed with `bench dnn --workspace` follow in a table of their own: time per image,\n"
-    "  inferences per second, achieved GFLOPS, energy per inference and inferences per Wh per network and target.",
+    "  inferences per second, achieved GFLOPS, energy per inference and inferences per Wh per network and target.\n"
+    "  --library orin,pi5 (computer ids or aliases from `library list`, or result ids) adds published results as\n"
+    "  candidates: inference results ranked with the own detection and bench dnn results under the same\n"
+    "  constraints, within one network, scenario and precision only (what still differs is said in the row), and\n"
+    "  compute peaks within one precision. Every row names its origin (measured, reconstructed, published) and\n"
+    "  its source; --candidates-csv/--candidates-latex write the inference table.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
       return run_platforms(args, out);
     },

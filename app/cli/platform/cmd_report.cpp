@@ -7,12 +7,17 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "platform/figure_cli.h"
-#include "workspace/inputs.h"
-#include "platform/platform_args.h"
 #include "common/signals.h"
+#include "platform/figure_cli.h"
+#include "platform/platform_args.h"
+#include "workspace/inputs.h"
 
 #ifdef BENCHSCOPE_WITH_FIGURES
+#include <QBuffer>
+#include "analysis/library/candidates.h"
+
+#include "candidates_figure.h"
+#include "report/candidates_section.h"
 #include "report_writer.h"
 #endif
 
@@ -25,7 +30,7 @@ bool ends_with(const std::string& s, const std::string& tail) {
 
 int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   std::set<std::string> values = platform_value_options();
-  values.insert({"--out", "--pdf", "--preset", "--width-mm", "--height-mm", "--font-pt", "--template"});
+  values.insert({"--out", "--pdf", "--preset", "--width-mm", "--height-mm", "--font-pt", "--template", "--library"});
   const ParsedArgs args = parse_args(raw, {"--quiet"}, values);
   if (args.positional.empty()) throw UsageError("report needs a workspace or files");
   std::string html = args.value("--out").value_or("");
@@ -43,16 +48,53 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
 #else
   const ui::FigureOptions o = parse_figure_options(args);
   const auto templates = figure_templates(args);
-  const ui::FigureData fd =
-      figure_data(args.positional, load_inputs(args.positional, interrupt_token()), interrupt_token());
+  const LoadedData data = load_inputs(args.positional, interrupt_token());
+  const ui::FigureData fd = figure_data(args.positional, data, interrupt_token());
   if (fd.runs.empty() && fd.traces.empty()) throw std::runtime_error("no FLOPS runs or power logs to report on");
+  // The "Candidates" section: the library's results named by --library beside the own platforms.
+  std::vector<CandidateClass> classes;
+  std::vector<PeakClass> peaks;
+  const auto spec = args.value("--library");
+  if (spec) {
+    const BundledLibrary& lib = bundled_library();
+    if (!lib.error.empty()) throw std::runtime_error("library: " + lib.error);
+    const auto rows = compare_platforms(fd.runs, fd.traces, fd.pipelines, platform.options);
+    CandidateInputs in;
+    in.platforms = rows;
+    in.pipelines = data.pipeline_runs;
+    in.dnn_runs = data.dnn_runs;
+    in.result_sets = data.result_sets;
+    in.lib = &lib.library;
+    try {
+      in.library = select_library(lib.library, *spec);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--library: ") + e.what());
+    }
+    classes = rank_candidates(in, platform.constraints, platform.options);
+    peaks = peak_candidates(in);
+  }
   const auto app = offscreen_application();
+  std::string candidates_html;
+  if (spec) {
+    // The candidates figure is embedded in the HTML (a PDF gets the tables only).
+    std::string figure;
+    if (pdf.empty()) {
+      QByteArray png;
+      QBuffer buffer(&png);
+      buffer.open(QIODevice::WriteOnly);
+      ui::render_candidates(classes, 900, 560).save(&buffer, "PNG");
+      figure = "data:image/png;base64," + png.toBase64().toStdString();
+    }
+    candidates_html =
+        candidates_section_html({classes, peaks, *spec, ui::describe_constraints(platform.constraints), figure});
+  }
   ui::ReportRequest request;
   request.workspace_name = QString::fromStdString(std::filesystem::path(args.positional.front()).filename().string());
   request.html_path = QString::fromStdString(html);
   request.pdf_path = QString::fromStdString(pdf);
   request.constraints = platform.constraints;
   request.comparison = platform.options;
+  request.candidates_html = candidates_html;
   const bool quiet = args.has("--quiet");
   const QStringList files =
       ui::write_report(request, templates, fd, o, interrupt_token(), [&](int done, int total, const QString& what) {
@@ -71,14 +113,16 @@ const CommandRegistrar registrar({
     "                             [--budget W] [--min-fps FPS] [--min-runtime MIN] [--battery PRESET]\n"
     "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt "
     "8]\n"
-    "                             [--quiet]\n"
+    "                             [--library COMPUTERS] [--quiet]\n"
     "  The platform comparison, then one page per platform: best GPU and CPU peak with device, backend and % of\n"
     "  theoretical peak, pipeline timings (ms, mean ± SD (n)), mean and max power, GFLOPS/W (the paper's and at\n"
     "  mean power), energy per frame, battery runtime (constant-power model, --battery preset, over --mission when\n"
     "  given, as in `platforms`), and where each\n"
     "  number came from; then the template's figures. The HTML embeds the figures (one self-contained file); the\n"
     "  PDF is A4, printed by Qt. With constraints, the recommended platform is named. --out report.pdf alone\n"
-    "  writes only the PDF. Needs a build with Qt.",
+    "  writes only the PDF. --library orin,pi5 adds a \"Candidates\" section: published results from the library\n"
+    "  beside the own platforms, ranked like with like under the same constraints (as `platforms --library`).\n"
+    "  Needs a build with Qt.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       return run_report(args, out, err);
     },

@@ -10,8 +10,8 @@
 #include <QApplication>
 
 #include "common/args.h"
-#include "workspace/inputs.h"
 #include "paper_figures.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 

@@ -14,11 +14,11 @@
 #include "analysis/power/power_stats.h"
 #include "common/args.h"
 #include "common/command.h"
-#include "workspace/inputs.h"
-#include "power/power_import.h"
 #include "common/signals.h"
+#include "power/power_import.h"
 #include "store/battery_preset_store.h"
 #include "store/workspace.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {

@@ -22,11 +22,13 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/flag_output.h"
-#include "workspace/inputs.h"
-#include "power/power_csv.h"
-#include "power/power_import.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "power/power_csv.h"
+#include "power/power_import.h"
+#include "store/log_settings_store.h"
+#include "store/workspace.h"
+#include "workspace/inputs.h"
 
 namespace bs::cli {
 
@@ -61,13 +63,19 @@ std::string signal_line(const SignalStats& s, std::string_view unit) {
 struct LoadedTrace {
   PowerTrace trace;
   std::vector<std::string> warnings;
+  std::vector<std::string> phase_origins;  // from a workspace: "log" or "user" per phase (empty: all "log")
 };
 
 // Files through the power importers with the options; a single workspace argument through the workspace.
 std::vector<LoadedTrace> load_traces(const std::vector<std::string>& paths, const ParseOptions& options) {
   std::vector<LoadedTrace> out;
   if (paths.size() == 1 && looks_like_workspace(paths[0])) {
-    for (PowerTrace& t : load_inputs(paths, interrupt_token()).power_traces) out.push_back({std::move(t), {}});
+    for (PowerTrace& t : load_inputs(paths, interrupt_token()).power_traces) out.push_back({std::move(t), {}, {}});
+    // Which phases the user saved (the GUI's "Save as phase…"), as the Power tab shows them.
+    const Workspace ws(paths[0]);
+    const std::vector<StoredPowerTrace> stored = ws.power_trace_summaries();
+    for (std::size_t i = 0; i < out.size() && i < stored.size(); ++i)
+      if (stored[i].trace.label == out[i].trace.label) out[i].phase_origins = phase_origins(ws, stored[i].id);
     return out;
   }
   for (const InputFile& in : expand_inputs(paths)) {
@@ -78,7 +86,7 @@ std::vector<LoadedTrace> load_traces(const std::vector<std::string>& paths, cons
       if (in.from_folder && (e.category() == ImportErrorCategory::UnknownFormat || skippable_in_folder(e))) continue;
       throw;
     }
-    for (PowerTrace& t : batch.power_traces) out.push_back({std::move(t), batch.warnings});
+    for (PowerTrace& t : batch.power_traces) out.push_back({std::move(t), batch.warnings, {}});
   }
   return out;
 }
@@ -120,7 +128,7 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     const std::vector<PlausibilityFlag> flags = check_power_trace_bundled(t);  // of the whole log, not the range
     std::vector<PhaseStatsRow> phases;
     if (args.has("--phases"))  // the log's own phases (PTDaemon marks, runs, saved selections), then level changes
-      phases = phase_stats_rows(index, t.phases, detect_level_phases(index, phase_options));
+      phases = phase_stats_rows(index, t.phases, detect_level_phases(index, phase_options), lt.phase_origins);
     if (json) {
       nlohmann::json channels = nlohmann::json::array();
       for (const ChannelStats& c : s.channels)
@@ -156,6 +164,7 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
                       {"sensor", t.provenance.sensor},
                       {"start_time", t.start_time},
                       {"n", s.n},
+                      {"rows", s.rows},
                       {"from_s", s.from_s},
                       {"to_s", s.to_s},
                       {"duration_s", s.duration_s},
@@ -207,7 +216,7 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
       TextTable table(std::move(header));
       for (const PhaseStatsRow& p : phases) {
         std::vector<std::string> row = {p.name, p.origin, fmt("%.3f", p.start_s), fmt("%.3f", p.end_s)};
-        for (std::string& c : range_cells(p.stats, signal)) row.push_back(std::move(c));
+        for (std::string& c : range_cells(p.stats, signal, true)) row.push_back(std::move(c));
         table.add(std::move(row));
       }
       if (table.empty())

@@ -12,9 +12,9 @@
 #include "analysis/power/phase_energy.h"
 #include "common/args.h"
 #include "common/command.h"
+#include "common/signals.h"
 #include "power/power_args.h"
 #include "sensors/recording_csv.h"
-#include "common/signals.h"
 
 extern char** environ;
 

@@ -5,9 +5,9 @@
 
 #include "common/args.h"
 #include "common/command.h"
+#include "common/text_table.h"
 #include "sensors/discovery.h"
 #include "sensors/sysfs_file.h"
-#include "common/text_table.h"
 
 namespace bs::cli {
 namespace {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "power/power_args.h"
 
+#include "analysis/power/sweep_energy.h"
+
 #include <cstdio>
 #include <ostream>
 
@@ -45,9 +47,8 @@ void print_phase_energies(std::ostream& out, const PowerTrace& trace) {
       << trace.time_s.size() << " samples\n";
   char line[256];
   for (const PhaseEnergy& e : phase_energies(trace)) {
-    std::snprintf(line, sizeof line, "  %-28s %10.3f J over %8.3f s, mean %8.3f W (%zu samples%s)\n", e.name.c_str(),
-                  e.energy_j, e.end_s - e.start_s, e.mean_power_w, e.samples,
-                  e.samples < 2 ? "; shorter than the sample interval: interpolated" : "");
+    std::snprintf(line, sizeof line, "  %-28s %10.4f J over %8.3f s, mean %8.4f W (%zu samples)%s\n", e.name.c_str(),
+                  e.energy_j, e.end_s - e.start_s, e.mean_power_w, e.samples, short_point_mark(e.samples).c_str());
     out << line;
   }
 }

@@ -14,14 +14,14 @@
 
 #include "analysis/stats/stats.h"
 #include "common/args.h"
-#include "vision/pipeline_args.h"
-#include "power/power_args.h"
 #include "common/signals.h"
+#include "power/power_args.h"
 #include "vision/pipeline/detector.h"
 #include "vision/pipeline/pipeline.h"
 #include "vision/pipeline/pipeline_measure.h"
-#include "vision/reproject/preprocess.h"
 #include "vision/pipeline/threads.h"
+#include "vision/pipeline_args.h"
+#include "vision/reproject/preprocess.h"
 
 namespace bs::cli {
 namespace {

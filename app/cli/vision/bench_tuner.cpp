@@ -17,9 +17,9 @@
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
 #include "common/args.h"
-#include "vision/reproject/fast_map.h"
 #include "vision/lens/lens.h"
 #include "vision/pipeline/threads.h"
+#include "vision/reproject/fast_map.h"
 
 namespace bs::cli {
 namespace {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <ostream>
 
 #include <opencv2/imgproc.hpp>
@@ -13,12 +14,12 @@
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
 #include "common/args.h"
-#include "vision/bench_demosaic.h"
 #include "power/power_args.h"
-#include "vision/reproject/cuda_preprocess.h"
-#include "vision/reproject/fused.h"
+#include "vision/bench_demosaic.h"
 #include "vision/lens/lens.h"
 #include "vision/pipeline/threads.h"
+#include "vision/reproject/cuda_preprocess.h"
+#include "vision/reproject/fused.h"
 
 namespace bs::cli {
 namespace {
@@ -69,14 +70,20 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
   const std::string fused_name = "BenchScope fused demosaic+reprojection (" + std::string(fused.kernel_name()) + ")";
   methods.push_back({fused_name.c_str(), [&] { fused.run(raw, view_img); }});
   const std::size_t fused_index = methods.size() - 1;
-  // The CUDA kernel, timed as the pipeline uses it: mosaic upload, kernel, BGR download (blocking).
+  // The CUDA kernel, timed as the pipeline uses it (`pipeline --backend cuda`: mosaic upload, kernel, BGR download,
+  // blocking), and the kernel alone on a mosaic uploaded once (launch and synchronisation included).
   std::string cuda_device;
   const std::string cuda_missing = cuda_preprocessing_unavailable(&cuda_device);
   Preprocessor cuda_fused;
-  const std::string cuda_name = "BenchScope fused on CUDA (" + cuda_device + ", with copies)";
+  std::unique_ptr<CudaFusedSteps> cuda_steps;
+  const std::string cuda_name = "CUDA fused, pipeline preprocessor (with copies)";
+  const std::string cuda_kernel_name = "CUDA fused, kernel only (no copies)";
   if (cuda_missing.empty()) {
     cuda_fused = make_cuda_preprocessor(lens, view, BayerPattern::BGGR);
     methods.push_back({cuda_name.c_str(), [&] { view_img = cuda_fused(raw); }});
+    cuda_steps = std::make_unique<CudaFusedSteps>(lens, view, BayerPattern::BGGR);
+    cuda_steps->upload(raw);
+    methods.push_back({cuda_kernel_name.c_str(), [&] { cuda_steps->compute(); }});
   }
 
   // Blocks of consecutive frames per method, not frame-by-frame interleaving: OpenCV's TBB pool and our OpenMP
@@ -104,7 +111,7 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
       }
     }
 
-  char line[320];
+  char line[512];
   double load = -1;
   std::ifstream("/proc/loadavg") >> load;
   std::snprintf(line, sizeof line,
@@ -124,7 +131,31 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
                   reference / med);
     out << line;
   }
-  if (!cuda_missing.empty()) out << "(CUDA fused path not measured: " << cuda_missing << ")\n";
+  if (!cuda_missing.empty()) {
+    out << "(CUDA fused path not measured: " << cuda_missing << ")\n";
+  } else {
+    // The transfers apart, and the kernel's device time (CUDA events), with the bytes it moves at the least.
+    std::vector<double> up, down, kernel;
+    cv::Mat bgr;
+    for (int i = 0; i < std::max(frames, 20); ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      cuda_steps->upload(raw);
+      const auto t1 = std::chrono::steady_clock::now();
+      cuda_steps->download(bgr);
+      const auto t2 = std::chrono::steady_clock::now();
+      up.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+      down.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
+      kernel.push_back(cuda_steps->kernel_seconds(10) * 1e3);
+    }
+    const double k = median(kernel);
+    std::snprintf(line, sizeof line,
+                  "CUDA on %s: upload %.3f ms, download %.3f ms, kernel %.3f ms by CUDA events (medians of %zu); "
+                  "the kernel moves >= %.1f MB per frame: >= %.1f GB/s of device memory (`devices` shows the "
+                  "device's copy ceiling)\n",
+                  cuda_device.c_str(), median(up), median(down), k, kernel.size(), cuda_steps->kernel_bytes() / 1e6,
+                  cuda_steps->kernel_bytes() / (k * 1e-3) / 1e9);
+    out << line;
+  }
   const double fused_ms = median(methods[fused_index].ms);
   const double speedup = reference / fused_ms;
   std::snprintf(line, sizeof line,

@@ -12,10 +12,11 @@
 
 #include "common/args.h"
 #include "common/command.h"
+#include "common/text_table.h"
 #include "frames/frame_store.h"
 #include "store/workspace.h"
-#include "common/text_table.h"
 #include "vision/frames/frame_image.h"
+#include "vision/frames/workspace_lens.h"
 #include "vision/reproject/triptych.h"
 
 namespace bs::cli {
@@ -54,8 +55,11 @@ int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--method: ") + e.what());
   }
-  const Frame frame = load_frame(ws, frames[static_cast<std::size_t>(index) - 1]);
-  vision::FrameLens fl = vision::lens_for_frame(frame);
+  const StoredFrame& stored = frames[static_cast<std::size_t>(index) - 1];
+  const Frame frame = load_frame(ws, stored);
+  // The lens the GUI would use (saved for the frame or its camera, recorded, the paper's), or --lens FILE.
+  vision::ResolvedLens fl = vision::resolve_frame_lens(&ws, stored);
+  std::string lens_source = vision::describe_lens_source(fl);
   if (const auto lens_path = args.value("--lens")) {
     std::ifstream f(*lens_path);
     if (!f) throw std::runtime_error(*lens_path + ": cannot open lens file");
@@ -64,6 +68,7 @@ int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
     } catch (const std::exception& e) {
       throw std::runtime_error(*lens_path + ": " + e.what());
     }
+    lens_source = "from " + *lens_path;
   }
   double low = 0, high = vision::full_scale(frame);
   if (const auto w = args.value("--window")) {
@@ -83,8 +88,8 @@ int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
   }
   out << "frame " << frame.label << (frame.synthetic ? " (synthetic)" : "") << ", demosaic "
       << vision::to_string(method) << ", lens " << vision::to_string(fl.lens.type) << " " << fl.lens.fov_deg << " deg"
-      << (fl.from_frame ? " (recorded with the frame)" : " (paper default)") << ", view " << fl.view.fov_deg << " deg "
-      << fl.view.width << "x" << fl.view.height << " px\n";
+      << " (" << lens_source << ")"
+      << ", view " << fl.view.fov_deg << " deg " << fl.view.width << "x" << fl.view.height << " px\n";
   return 0;
 }
 

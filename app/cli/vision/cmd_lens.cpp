@@ -2,9 +2,11 @@
 // benchscope-cli lens: the reprojection tuner's headless side. Detect the image circle of a fisheye frame and
 // propose principal point + r_pp, export a lookup table, measure a straight line's residual, propose long edges
 // that are candidates for world-straight lines and fit the lens to them.
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -12,12 +14,16 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "vision/lens_calibrate.h"
+#include "common/import_error.h"
+#include "common/importer.h"
+#include "vision/frames/frame_image.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/edge_proposals.h"
 #include "vision/lens/line_fit.h"
 #include "vision/lens/straight_line.h"
 #include "vision/lens/tuner_state.h"
+#include "vision/lens_calibrate.h"
+#include "vision/reproject/triptych.h"
 
 namespace bs::cli {
 namespace {
@@ -27,13 +33,38 @@ vision::TunerParams load_params(const std::optional<std::string>& path) {
   return vision::load_tuner_json(*path);
 }
 
+// A fisheye image as 8-bit BGR: an image file OpenCV reads, or a capture BenchScope imports (a .raw with its
+// sidecar, PGM/PPM...), demosaiced. `recorded` gets the lens recorded with a capture, when it has one.
+cv::Mat read_fisheye(const std::string& path, std::optional<vision::Lens>* recorded = nullptr) {
+  cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
+  if (!image.empty()) return image;
+  ImportBatch batch;
+  try {
+    batch = import_file(path, CancelToken{});
+  } catch (const ImportError& e) {
+    throw std::runtime_error(
+        path + ": cannot read the image (not an image file OpenCV reads, and as a capture: " + e.reason() + ")");
+  }
+  if (batch.frames.empty()) throw std::runtime_error(path + ": holds no frame (" + batch.format + ")");
+  const Frame& frame = batch.frames.front();
+  const cv::Mat raw = vision::frame_to_mat(frame);
+  const cv::Mat rgb = vision::demosaic_frame(raw, frame, vision::DemosaicMethod::Bilinear);
+  if (recorded) {
+    const vision::FrameLens fl = vision::lens_for_frame(frame);
+    if (fl.from_frame) *recorded = fl.lens;
+  }
+  return vision::window_to_8bit(rgb, 0, vision::full_scale(frame));
+}
+
 int lens_circle(const std::vector<std::string>& raw, std::ostream& out) {
   const ParsedArgs args = parse_args(raw, {}, {"--lens", "--min-level", "--out", "--circle-fov"});
-  if (args.positional.size() != 1) throw UsageError("lens circle needs one IMAGE (PNG, JPEG, TIFF...)");
+  if (args.positional.size() != 1)
+    throw UsageError("lens circle needs one IMAGE (PNG, JPEG, TIFF..., or a .raw capture with its sidecar)");
   const std::string image_path = args.positional[0];
-  const cv::Mat image = cv::imread(image_path, cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
-  if (image.empty()) throw std::runtime_error(image_path + ": cannot read the image");
+  std::optional<vision::Lens> recorded;
+  const cv::Mat image = read_fisheye(image_path, &recorded);
   vision::TunerParams p = load_params(args.value("--lens"));
+  if (!args.value("--lens") && recorded) p.lens = *recorded;  // the capture's own lens is the starting point
   p.lens.width = image.cols;
   p.lens.height = image.rows;
   const auto circle = vision::detect_image_circle(image, args.number("--min-level", 20));
@@ -50,6 +81,17 @@ int lens_circle(const std::vector<std::string>& raw, std::ostream& out) {
       std::string(vision::to_string(p.lens.type)).c_str(), p.lens.cx, p.lens.cy, p.lens.r_pp, 1 / p.lens.r_pp,
       p.lens.fov_deg);
   out << line << "calibration: " << vision::describe(p.lens.calibration) << '\n';
+  // As the Lens tab's Detect circle: a proposal more than 2 % off the capture's recorded lens says so.
+  if (recorded && recorded->r_pp > 0) {
+    const double off = std::abs(p.lens.r_pp - recorded->r_pp) / recorded->r_pp;
+    if (off > 0.02) {
+      std::snprintf(line, sizeof line,
+                    "warning: the proposed r_pp %.7f rad/px is %.1f %% off the lens recorded with the capture (%.7f "
+                    "rad/px): the visible disc may span less than the lens FOV; give it with --circle-fov DEG\n",
+                    p.lens.r_pp, off * 100, recorded->r_pp);
+      out << line;
+    }
+  }
   if (const auto o = args.value("--out")) {
     vision::save_tuner_json(p, *o);
     out << "wrote " << *o << '\n';
@@ -90,11 +132,7 @@ int lens_line(const std::vector<std::string>& raw, std::ostream& out) {
   return 0;
 }
 
-cv::Mat read_image(const std::string& path) {
-  const cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
-  if (image.empty()) throw std::runtime_error(path + ": cannot read the image");
-  return image;
-}
+cv::Mat read_image(const std::string& path) { return read_fisheye(path); }
 
 // Proposals in `image` under `lens` (its size must match the image's: the lens was calibrated on that sensor).
 vision::LineProposals propose_in(const cv::Mat& image, const vision::Lens& lens, const std::string& image_path,

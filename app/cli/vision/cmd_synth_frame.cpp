@@ -14,10 +14,10 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "model/raw_sidecar.h"
-#include "vision/synth_checkerboard.h"
-#include "vision/lens/line_fit.h"
 #include "vision/frames/synthetic.h"
 #include "vision/frames/synthetic_room.h"
+#include "vision/lens/line_fit.h"
+#include "vision/synth_checkerboard.h"
 
 namespace bs::cli {
 namespace {

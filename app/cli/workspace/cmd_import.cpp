@@ -6,16 +6,17 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "frames/frame_raw.h"
 #include "common/import_service.h"
 #include "common/signals.h"
+#include "frames/frame_raw.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
 namespace {
 
 int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  const ParsedArgs args = parse_args(raw, {"--keep-going", "--quiet", "--copy-frames"}, {"--raw-geometry"});
+  const ParsedArgs args =
+      parse_args(raw, {"--keep-going", "--quiet", "--copy-frames"}, {"--raw-geometry", "--platform"});
   if (args.positional.size() < 2) throw UsageError("import needs a workspace and at least one file or folder");
   const bool keep_going = args.has("--keep-going");
   const bool quiet = args.has("--quiet");
@@ -32,6 +33,8 @@ int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostr
     }
     options.raw_geometry_source = "--raw-geometry";
   }
+  // A power log whose file names no platform gets this one, else a guess from its metadata and the workspace.
+  options.log_platform = args.value("--platform").value_or("");
   const std::vector<std::string> paths(args.positional.begin() + 1, args.positional.end());
   const ImportResult result = import_paths(args.positional[0], paths, options, interrupt_token());
 
@@ -72,14 +75,16 @@ const CommandRegistrar registrar({
     "import",
     "import benchmark, power and frame files or folders into a workspace",
     "usage: benchscope-cli import WORKSPACE PATH... [--keep-going] [--quiet] [--copy-frames]\n"
-    "         [--raw-geometry WxH[:PATTERN[:BITS[:le|be]]]]\n"
+    "         [--raw-geometry WxH[:PATTERN[:BITS[:le|be]]]] [--platform NAME]\n"
     "  Imports files (formats recognised by content) and folders (walked recursively) into WORKSPACE (an SQLite\n"
     "  .bsw file, created when missing). Every file is parsed before anything is written; if one fails, nothing is\n"
     "  imported unless --keep-going is given; all files go in one transaction (with --keep-going, one per file). A\n  "
     "file whose content was imported before is skipped.\n"
     "  Frames (.raw + JSON sidecar, PGM/PPM, PNG, TIFF) are kept by reference (path + content hash, the file is read\n"
     "  again when opened) unless --copy-frames stores their pixels in the workspace. --raw-geometry gives the size,\n"
-    "  Bayer pattern (BGGR, RGGB, GRBG, GBRG or grey), bit depth and byte order of .raw files that have no sidecar.",
+    "  Bayer pattern (BGGR, RGGB, GRBG, GBRG or grey), bit depth and byte order of .raw files that have no sidecar.\n"
+    "  A power log whose file names no platform gets --platform NAME, else one guessed from its metadata (host name)\n"
+    "  or the workspace (its only platform), else \"unassigned: LOG\"; never none. The summary line says which.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       return run_import(args, out, err);
     },

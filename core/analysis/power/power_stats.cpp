@@ -128,8 +128,16 @@ void PowerIndex::build(const PowerTrace& trace, std::optional<double> supply_v, 
   note_missing_rows(trace);
 }
 
+std::size_t samples_per_reading(const PowerTrace& trace) {
+  for (const auto& [key, value] : trace.provenance.settings)
+    if (key == kSamplesPerReadingSetting && (value == "2" || value == "3" || value == "4"))
+      return static_cast<std::size_t>(value[0] - '0');
+  return 1;
+}
+
 void PowerIndex::note_missing_rows(const PowerTrace& trace) {
-  // The rows where the main signal has no value still count as rows of the range (PowerStats::n).
+  samples_per_reading_ = samples_per_reading(trace);
+  // The rows where the main signal has no value still count as rows of the range (PowerStats::rows).
   const PowerChannel* main_power = first_channel(trace, PowerQuantity::Power);
   const PowerChannel* main_current = first_channel(trace, PowerQuantity::Current);
   const PowerChannel* voltage = first_channel(trace, PowerQuantity::Voltage);
@@ -179,8 +187,11 @@ PowerStats PowerIndex::stats(std::optional<double> from, std::optional<double> t
   s.from_s = m.from_s;
   s.to_s = m.to_s;
   s.duration_s = m.duration_s;
-  s.n = m.samples.n + static_cast<std::size_t>(std::upper_bound(missing_t_.begin(), missing_t_.end(), s.to_s) -
-                                               std::lower_bound(missing_t_.begin(), missing_t_.end(), s.from_s));
+  // A reading held over several samples (perf stat's interval start and end) counts once; a range that cuts one
+  // counts the part inside as a reading.
+  s.n = (m.samples.n + samples_per_reading_ - 1) / samples_per_reading_;
+  s.rows = m.samples.n + static_cast<std::size_t>(std::upper_bound(missing_t_.begin(), missing_t_.end(), s.to_s) -
+                                                  std::lower_bound(missing_t_.begin(), missing_t_.end(), s.from_s));
   for (const Channel& c : channels_) {
     const RangeSummary r = c.index.summary(s.from_s, s.to_s);
     s.channels.push_back({c.name, c.quantity, signal_of(c.index, r, s.from_s, s.to_s, with_percentiles)});

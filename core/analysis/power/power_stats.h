@@ -16,6 +16,7 @@
 #include "analysis/power/trace_index.h"
 #include "analysis/stats/stats.h"
 #include "model/power_trace.h"
+#include "model/reading_samples.h"
 
 namespace bs {
 
@@ -26,6 +27,9 @@ struct SignalStats {
   Percentiles pct;
   bool has_percentiles = true;  // false: left out on request (PowerIndex::stats with_percentiles = false)
 };
+// How many samples hold one reading (kSamplesPerReadingSetting in the trace's provenance; 1 when not said).
+std::size_t samples_per_reading(const PowerTrace& trace);
+
 // Of a plain span of values (no time): n, mean, SD, min, max and percentiles of the present values.
 SignalStats signal_stats(std::span<const double> values);
 
@@ -49,7 +53,11 @@ struct PowerStatsOptions {
 };
 
 struct PowerStats {
-  std::size_t n = 0;            // rows (timestamps) inside the range, present or missing
+  // Readings of the main signal (power, else current) present inside the range: what the mean is over (issue
+  // #32.5: an nvidia-smi "[N/A]" cell or a perf stat row of another event is no reading). `rows` counts every
+  // timestamp inside the range, present or missing.
+  std::size_t n = 0;
+  std::size_t rows = 0;
   double from_s = 0, to_s = 0;  // the range actually covered (clamped to the main signal's present samples)
   double duration_s = 0;        // to_s - from_s (interpolated ends: not the span of the samples inside)
   std::optional<SignalStats> current_a;
@@ -98,7 +106,8 @@ class PowerIndex {
   std::vector<Channel> channels_;  // the channels whose length matches the time axis
   int current_ = -1, power_ = -1;  // main current / power channel in channels_, -1: none
   TraceIndex derived_power_;       // current x voltage or x supply when there is no power channel
-  std::vector<double> missing_t_;  // timestamps of the rows where the main signal is missing, for PowerStats::n
+  std::vector<double> missing_t_;  // timestamps of the rows where the main signal is missing, for PowerStats::rows
+  std::size_t samples_per_reading_ = 1;
   PowerSource source_ = PowerSource::Unknown;
   std::optional<double> supply_v_;
 };

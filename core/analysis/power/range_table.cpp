@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/power/range_table.h"
 
+#include "analysis/power/sweep_energy.h"
+
 #include <cstdio>
 
 #include "analysis/power/power_phases.h"
@@ -25,10 +27,10 @@ std::vector<std::string> range_headers(RangeSignal signal) {
           "charge (C)", "charge (mAh)", "energy (J)", "energy (Wh)", "mean power (W)"};
 }
 
-std::vector<std::string> range_cells(const PowerStats& s, RangeSignal signal) {
+std::vector<std::string> range_cells(const PowerStats& s, RangeSignal signal, bool mark_short) {
   const std::optional<SignalStats>& shown = signal == RangeSignal::Power ? s.power_w : s.current_a;
   std::vector<std::string> c;
-  c.push_back(std::to_string(s.n));
+  c.push_back(std::to_string(s.n) + (mark_short ? short_point_mark(s.n) : std::string()));
   c.push_back(num("%.4f", s.duration_s));
   if (shown) {
     const Summary& m = shown->summary;
@@ -60,16 +62,20 @@ std::string to_tsv(const std::vector<std::string>& headers, const std::vector<st
 }
 
 std::vector<PhaseStatsRow> phase_stats_rows(const PowerIndex& index, const std::vector<TracePhase>& stored,
-                                            const std::vector<TracePhase>& detected) {
+                                            const std::vector<TracePhase>& detected,
+                                            const std::vector<std::string>& stored_origins) {
   std::vector<PhaseStatsRow> rows;
-  const auto add = [&](const std::vector<TracePhase>& phases, const char* origin) {
-    for (const TracePhase& p : phases) {
+  const auto add = [&](const std::vector<TracePhase>& phases, const std::vector<std::string>* origins,
+                       const char* origin) {
+    for (std::size_t k = 0; k < phases.size(); ++k) {
+      const TracePhase& p = phases[k];
       if (p.end_s < p.start_s) continue;  // a malformed mark: no range to summarise
-      rows.push_back({p.name, origin, p.start_s, p.end_s, index.stats(p.start_s, p.end_s)});
+      const std::string o = origins && k < origins->size() ? (*origins)[k] : std::string(origin);
+      rows.push_back({p.name, o, p.start_s, p.end_s, index.stats(p.start_s, p.end_s)});
     }
   };
-  add(stored, "log");
-  add(detected, "detected");
+  add(stored, &stored_origins, "log");
+  add(detected, nullptr, "detected");
   return rows;
 }
 

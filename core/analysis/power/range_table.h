@@ -23,7 +23,9 @@ RangeSignal default_signal(const PowerStats& s);
 std::vector<std::string> range_headers(RangeSignal signal);
 // The cells under those headers; "-" where a value is unknown (no current: no charge; no power: no energy), "…"
 // for percentiles left out (PowerIndex::stats with_percentiles = false).
-std::vector<std::string> range_cells(const PowerStats& s, RangeSignal signal);
+// `mark_short`: the n cell of a range sampled fewer than kMinSamplesPerPoint times carries short_point_mark()
+// (analysis/power/sweep_energy.h), as phases' rows do in the Power tab and `power --phases`.
+std::vector<std::string> range_cells(const PowerStats& s, RangeSignal signal, bool mark_short = false);
 
 // Rows as tab-separated text, one header line first; cells must not contain tabs or newlines (they do not).
 std::string to_tsv(const std::vector<std::string>& headers, const std::vector<std::vector<std::string>>& rows);
@@ -31,14 +33,16 @@ std::string to_tsv(const std::vector<std::string>& headers, const std::vector<st
 // A phase of a trace and its statistics: the per-phase table's row.
 struct PhaseStatsRow {
   std::string name;
-  std::string origin;  // "log" (stored with the trace: PTDaemon marks, BenchScope's runs, saved selections) or
-                       // "detected" (level changes, analysis/power_phases.h)
+  std::string origin;  // "log" (stored with the trace: PTDaemon marks, BenchScope's runs), "user" (a selection
+                       // the user saved) or "detected" (level changes, analysis/power_phases.h)
   double start_s = 0, end_s = 0;
   PowerStats stats;
 };
 // The stored phases of `trace` first, then `detected`, each over its own [start, end].
+// `stored_origins`: "log" or "user" per stored phase (store/log_settings_store.h); missing ones are "log".
 std::vector<PhaseStatsRow> phase_stats_rows(const PowerIndex& index, const std::vector<TracePhase>& stored,
-                                            const std::vector<TracePhase>& detected);
+                                            const std::vector<TracePhase>& detected,
+                                            const std::vector<std::string>& stored_origins = {});
 
 // Level changes of the trace's main signal (power, else current) as phases; empty when it has neither.
 std::vector<TracePhase> detect_level_phases(const PowerIndex& index, const PhaseOptions& options);

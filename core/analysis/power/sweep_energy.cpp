@@ -14,6 +14,15 @@ std::string sweep_point_phase(std::int64_t workers, int dims) {
 
 std::string sweep_warmup_phase(int dims) { return "warm-up D=" + std::to_string(dims); }
 
+double min_point_seconds(double sample_interval_s) {
+  return sample_interval_s > 0 ? (static_cast<double>(kMinSamplesPerPoint) + 0.5) * sample_interval_s : 0;
+}
+
+std::string short_point_mark(std::size_t samples) {
+  return samples < kMinSamplesPerPoint ? " \xE2\x9A\xA0 n < " + std::to_string(kMinSamplesPerPoint) + " samples"
+                                       : std::string();
+}
+
 std::vector<PointEnergy> sweep_point_energies(const PowerTrace& trace, const std::vector<FlopsRun>& runs) {
   std::vector<PointEnergy> out;
   const auto energies = phase_energies(trace);
@@ -34,6 +43,9 @@ std::vector<PointEnergy> sweep_point_energies(const PowerTrace& trace, const std
       p.joules_per_run = e->energy_j / static_cast<double>(s.seconds.size());
       p.gflops_per_watt = e->mean_power_w > 0 ? p.gflops / e->mean_power_w : 0;
       p.samples = e->samples;
+      p.energy_j = e->energy_j;
+      p.seconds = e->end_s - e->start_s;
+      p.runs = s.seconds.size();
       out.push_back(p);
     }
   return out;

@@ -15,6 +15,13 @@ namespace bs {
 std::string sweep_point_phase(std::int64_t workers, int dims);  // "point W=64 D=4"
 std::string sweep_warmup_phase(int dims);                       // "warm-up D=4"
 
+// A point's energy is trusted when the sensor sampled it at least this often (issue #32.4): fewer samples and the
+// figure leans on interpolation between readings taken outside the point.
+inline constexpr std::size_t kMinSamplesPerPoint = 10;
+// How long a sweep point must last to span kMinSamplesPerPoint samples at `sample_interval_s` (half an interval
+// to spare: the first sample may fall just after the point starts).
+double min_point_seconds(double sample_interval_s);
+
 struct PointEnergy {
   int dims = 0;
   std::int64_t workers = 0;
@@ -22,8 +29,16 @@ struct PointEnergy {
   double mean_power_w = 0;     // over the point's phase
   double joules_per_run = 0;   // the phase's energy / repeats
   double gflops_per_watt = 0;  // gflops / mean power
+  double energy_j = 0;         // the whole point (all its timed runs)
+  double seconds = 0;          // the point's phase duration
+  std::size_t runs = 0;        // timed runs in the point
   std::size_t samples = 0;     // trace samples inside the phase: under 2, interpolated
+  bool too_short() const { return samples < kMinSamplesPerPoint; }
 };
+
+// " ⚠ n < 10 samples" (UTF-8) for a point or phase the sensor sampled fewer than kMinSamplesPerPoint times; empty
+// otherwise. One wording for the Kernel Runner, the Power tab's Phases table and the CLI.
+std::string short_point_mark(std::size_t samples);
 
 // One entry per point of `runs` that has a phase in `trace`, in run and worker order.
 std::vector<PointEnergy> sweep_point_energies(const PowerTrace& trace, const std::vector<FlopsRun>& runs);

@@ -7,8 +7,8 @@
 namespace bs {
 namespace {
 
-// Derivation of the per-site counts in PixelOps (core/vision/demosaic/bayer_pixel.h, demosaic_pixel, the scalar definition
-// that the SIMD path equals; the counts are of that definition, not of the vector code):
+// Derivation of the per-site counts in PixelOps (core/vision/demosaic/bayer_pixel.h, demosaic_pixel, the scalar
+// definition that the SIMD path equals; the counts are of that definition, not of the vector code):
 //  bilinear, green site:   (w + e + 1) >> 1 and (n + s + 1) >> 1: 2 adds + 1 shift each            = 6
 //  bilinear, red/blue:     (n + s + w + e + 2) >> 2 and the 4 diagonals + 2 >> 2: 4 adds + 1 shift = 10
 //  MHC, both sites:        n2 = N2 + S2, w2 = W2 + E2 (2 adds), d = the 4 diagonals (3 adds)        = 5, then

@@ -25,14 +25,15 @@ namespace bs {
 
 // Ops of one pixel of each kernel, as implemented (see stage_roofline.cpp for the derivation, line by line).
 struct PixelOps {
-  // core/vision/demosaic/bayer_pixel.h demosaic_pixel, 8-bit mosaic; mean over a 2x2 Bayer cell (2 green, 1 red, 1 blue site).
+  // core/vision/demosaic/bayer_pixel.h demosaic_pixel, 8-bit mosaic; mean over a 2x2 Bayer cell (2 green, 1 red, 1 blue
+  // site).
   static constexpr double kBilinearGreenSite = 6, kBilinearRedBlueSite = 10;
   static constexpr double kMhcGreenSite = 27, kMhcRedBlueSite = 23;
   // OpenCV remap, INTER_LINEAR with the fixed-point map (ReprojectionLut::apply): per channel 4 multiplies, 3
   // adds, the rounding add and the shift; 3 channels. The weights come from a table indexed by the fraction.
   static constexpr double kRemapBilinearPerChannel = 9;
-  // core/vision/reproject/fused.cpp quad<L>: the two complementary weights (2), the four taps' demosaic times 4 (a green
-  // tap 5, a red/blue tap 7; a 2x2 quad has two of each: 24), the blend per channel (2 x (2 mul + 1 add) for the
+  // core/vision/reproject/fused.cpp quad<L>: the two complementary weights (2), the four taps' demosaic times 4 (a
+  // green tap 5, a red/blue tap 7; a 2x2 quad has two of each: 24), the blend per channel (2 x (2 mul + 1 add) for the
   // rows, 2 mul + 2 add + 1 shift for the columns: 11; 3 channels: 33).
   static constexpr double kFusedWeights = 2, kFusedGreenTap = 5, kFusedRedBlueTap = 7, kFusedBlendPerChannel = 11;
 };

@@ -40,32 +40,38 @@ __global__ void rotate_paper(V* xs, V* ys, long long workers, int steps, float c
   ys[w] = y;
 }
 
-// Throughput ("float4x4"): four independent float4 chains = 16 points per thread, so every thread has
-// instruction-level parallelism beside the warps the scheduler switches between.
+// Throughput ("float4x4"): 16 points per thread, loaded as four float4 chains, so every thread has
+// instruction-level parallelism beside the warps the scheduler switches between. Written point by point with
+// explicit fmaf, and y updated before x: the new x then takes the old x's register (nothing reads the old x after
+// it), so the loop is exactly 2 FMUL + 2 FFMA per point-step with no MOV. The float4 form of the paper kernel
+// (nx = c * x - s * y; y = ...; x = nx) made nvcc keep nx and the old x alive together and copy nx back at the end
+// of every step: 16 MOVs beside 64 FP32 instructions, 19 % of the issue slots lost, and no unrolling of the step
+// loop to amortise them (docs/gpu-check.md). Chain k of thread i is float4 k * items + i, so the loads and stores
+// of a warp are coalesced.
 __global__ void rotate_throughput(float4* xs, float4* ys, long long items, int steps, float c, float s) {
   const long long i = blockIdx.x * static_cast<long long>(blockDim.x) + threadIdx.x;
   if (i >= items) return;
-  float4 x0 = xs[4 * i], x1 = xs[4 * i + 1], x2 = xs[4 * i + 2], x3 = xs[4 * i + 3];
-  float4 y0 = ys[4 * i], y1 = ys[4 * i + 1], y2 = ys[4 * i + 2], y3 = ys[4 * i + 3];
-  for (int n = 0; n < steps; ++n) {
-    const float4 n0 = c * x0 - s * y0, n1 = c * x1 - s * y1, n2 = c * x2 - s * y2, n3 = c * x3 - s * y3;
-    y0 = s * x0 + c * y0;
-    y1 = s * x1 + c * y1;
-    y2 = s * x2 + c * y2;
-    y3 = s * x3 + c * y3;
-    x0 = n0;
-    x1 = n1;
-    x2 = n2;
-    x3 = n3;
+  float x[16], y[16];
+#pragma unroll
+  for (int k = 0; k < 4; ++k) {
+    const float4 a = xs[k * items + i], b = ys[k * items + i];
+    x[4 * k] = a.x, x[4 * k + 1] = a.y, x[4 * k + 2] = a.z, x[4 * k + 3] = a.w;
+    y[4 * k] = b.x, y[4 * k + 1] = b.y, y[4 * k + 2] = b.z, y[4 * k + 3] = b.w;
   }
-  xs[4 * i] = x0;
-  xs[4 * i + 1] = x1;
-  xs[4 * i + 2] = x2;
-  xs[4 * i + 3] = x3;
-  ys[4 * i] = y0;
-  ys[4 * i + 1] = y1;
-  ys[4 * i + 2] = y2;
-  ys[4 * i + 3] = y3;
+#pragma unroll 4
+  for (int n = 0; n < steps; ++n) {
+#pragma unroll
+    for (int p = 0; p < 16; ++p) {
+      const float t = s * y[p];
+      y[p] = fmaf(s, x[p], c * y[p]);
+      x[p] = fmaf(c, x[p], -t);
+    }
+  }
+#pragma unroll
+  for (int k = 0; k < 4; ++k) {
+    xs[k * items + i] = make_float4(x[4 * k], x[4 * k + 1], x[4 * k + 2], x[4 * k + 3]);
+    ys[k * items + i] = make_float4(y[4 * k], y[4 * k + 1], y[4 * k + 2], y[4 * k + 3]);
+  }
 }
 
 // FP32 lanes per SM: 64 on GP100, Volta, Turing and A100; 128 on Pascal consumer parts, GA10x, Ada, Hopper,

@@ -98,17 +98,67 @@ FusedCuda::~FusedCuda() = default;
 const std::string& FusedCuda::device_name() const { return impl_->name; }
 
 void FusedCuda::run(const std::uint8_t* mosaic, std::size_t stride, std::uint8_t* bgr) {
+  upload(mosaic, stride);
+  compute();
+  download(bgr);
+}
+
+void FusedCuda::upload(const std::uint8_t* mosaic, std::size_t stride) {
   Impl& d = *impl_;
   const std::size_t row = static_cast<std::size_t>(d.mosaic.width);
   check(
       cudaMemcpy2D(d.raw, row, mosaic, stride, row, static_cast<std::size_t>(d.mosaic.height), cudaMemcpyHostToDevice),
       "cudaMemcpy2D(mosaic)");
+}
+
+namespace {
+void launch(const fused_pixel::Mosaic& m, const float2* map, int w, int h, uchar3 fill, std::uint8_t* bgr) {
   const dim3 block(32, 8);
-  const dim3 grid((d.out_width + block.x - 1) / block.x, (d.out_height + block.y - 1) / block.y);
-  fused_kernel<<<grid, block>>>(d.mosaic, d.map, d.out_width, d.out_height, d.fill, d.bgr);
+  const dim3 grid((w + block.x - 1) / block.x, (h + block.y - 1) / block.y);
+  fused_kernel<<<grid, block>>>(m, map, w, h, fill, bgr);
   check(cudaGetLastError(), "fused_kernel launch");
+}
+}  // namespace
+
+void FusedCuda::compute() {
+  Impl& d = *impl_;
+  launch(d.mosaic, d.map, d.out_width, d.out_height, d.fill, d.bgr);
+  check(cudaDeviceSynchronize(), "fused_kernel");
+}
+
+void FusedCuda::download(std::uint8_t* bgr) {
+  Impl& d = *impl_;
   check(cudaMemcpy(bgr, d.bgr, 3 * static_cast<std::size_t>(d.out_width) * d.out_height, cudaMemcpyDeviceToHost),
         "cudaMemcpy(bgr)");
+}
+
+double FusedCuda::kernel_seconds(int launches) {
+  Impl& d = *impl_;
+  if (launches < 1) throw std::invalid_argument("kernel_seconds needs at least one launch");
+  cudaEvent_t start{}, stop{};
+  check(cudaEventCreate(&start), "cudaEventCreate");
+  check(cudaEventCreate(&stop), "cudaEventCreate");
+  struct Destroy {
+    cudaEvent_t a, b;
+    ~Destroy() {
+      cudaEventDestroy(a);
+      cudaEventDestroy(b);
+    }
+  } destroy{start, stop};
+  check(cudaDeviceSynchronize(), "cudaDeviceSynchronize");
+  check(cudaEventRecord(start), "cudaEventRecord");
+  for (int i = 0; i < launches; ++i) launch(d.mosaic, d.map, d.out_width, d.out_height, d.fill, d.bgr);
+  check(cudaEventRecord(stop), "cudaEventRecord");
+  check(cudaEventSynchronize(stop), "fused_kernel");
+  float ms = 0;
+  check(cudaEventElapsedTime(&ms, start, stop), "cudaEventElapsedTime");
+  return ms * 1e-3 / launches;
+}
+
+double FusedCuda::kernel_bytes() const {
+  const Impl& d = *impl_;
+  const double out_px = static_cast<double>(d.out_width) * d.out_height;
+  return out_px * (sizeof(float2) + 3) + static_cast<double>(d.mosaic.width) * d.mosaic.height;
 }
 
 }  // namespace bs::vision::cuda

@@ -29,8 +29,18 @@ class FusedCuda {
   FusedCuda(const FusedCuda&) = delete;
   FusedCuda& operator=(const FusedCuda&) = delete;
 
-  // mosaic: source_height rows of `stride` bytes; bgr: out_width * out_height * 3 bytes, contiguous. Blocking.
+  // mosaic: source_height rows of `stride` bytes; bgr: out_width * out_height * 3 bytes, contiguous. Blocking:
+  // upload(), compute(), download().
   void run(const std::uint8_t* mosaic, std::size_t stride, std::uint8_t* bgr);
+  // The three steps of run(), so a benchmark can time the kernel alone and the transfers apart.
+  void upload(const std::uint8_t* mosaic, std::size_t stride);
+  void compute();  // the kernel on the uploaded mosaic; blocking
+  void download(std::uint8_t* bgr);
+  // Device time (CUDA events) of `launches` back-to-back kernels on the uploaded mosaic, per launch, in seconds.
+  double kernel_seconds(int launches);
+  // Bytes one kernel reads and writes at the least: the map (8 per output pixel), the BGR output (3 per output
+  // pixel) and every mosaic byte once; over kernel_seconds() this is the device-memory bandwidth it reaches.
+  double kernel_bytes() const;
   const std::string& device_name() const;
 
  private:

@@ -9,8 +9,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "vision/lens/fisheye_opencv.h"
 #include "vision/frames/synthetic.h"
+#include "vision/lens/fisheye_opencv.h"
 
 namespace bs::vision {
 namespace {

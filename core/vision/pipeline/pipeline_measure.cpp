@@ -6,14 +6,14 @@
 #include <stdexcept>
 
 #include "util/host_clock.h"
-#include "vision/reproject/cuda_preprocess.h"
+#include "vision/frames/synthetic.h"
 #include "vision/pipeline/detector.h"
 #include "vision/pipeline/dnn_architectures.h"
-#include "vision/reproject/opencl_preprocess.h"
 #include "vision/pipeline/pipeline_record.h"
-#include "vision/reproject/preprocess.h"
-#include "vision/frames/synthetic.h"
 #include "vision/pipeline/threads.h"
+#include "vision/reproject/cuda_preprocess.h"
+#include "vision/reproject/opencl_preprocess.h"
+#include "vision/reproject/preprocess.h"
 
 namespace bs::vision {
 

@@ -192,6 +192,39 @@ class TestCli : public QObject {
     }
   }
 
+  // devices --measure-ceilings measures every OpenCL device's ceilings beside the CPU's (PoCL's CPU device here, a
+  // GPU where there is one), caches them under the device, stores them in a workspace, and plain `devices` then
+  // shows them from the cache.
+  void devices_measure_and_cache_device_ceilings() {
+    const QJsonArray listed = QJsonDocument::fromJson(cli({"devices", "--json"}).out).object()["devices"].toArray();
+    QString opencl;
+    for (const auto& v : listed)
+      if (v.toObject()["backend"].toString().startsWith("opencl")) opencl = v.toObject()["backend"].toString();
+    if (opencl.isEmpty()) QSKIP("no OpenCL device here");
+    QTemporaryDir dir;
+    qputenv("BENCHSCOPE_CACHE_DIR", dir.path().toUtf8());
+    const Result measured = cli({"devices", "--measure-ceilings", "--json", "--workspace", dir.filePath("w.bsw")});
+    QCOMPARE(measured.code, 0);
+    QJsonObject entry;
+    for (const auto& v : QJsonDocument::fromJson(measured.out).object()["devices"].toArray())
+      if (v.toObject()["backend"].toString() == opencl) entry = v.toObject();
+    const QJsonObject c = entry["empirical_ceilings"].toObject();
+    QCOMPARE(c["isa"].toString(), QString("opencl"));
+    QCOMPARE(c["threads"].toInt(), 0);
+    for (const char* k : {"rotation_mix", "fma", "bandwidth"}) {
+      QVERIFY2(c[k].toObject()["mean"].toDouble() > 0, k);
+      QVERIFY2(c[k].toObject()["per_cpu_second_mean"].isNull(), k);  // timed on the device
+    }
+    const Result cached = cli({"devices"});
+    QCOMPARE(cached.code, 0);
+    const QString text = QString::fromUtf8(cached.out);
+    const qsizetype at = text.indexOf(opencl + ":");
+    QVERIFY2(at >= 0 && text.indexOf("empirical ceilings (cached", at) > at, qPrintable(text));
+    QVERIFY(text.indexOf("device memory bandwidth ceiling", at) > at);
+    QVERIFY(QFile::exists(dir.filePath("ceilings.json")));
+    qunsetenv("BENCHSCOPE_CACHE_DIR");
+  }
+
   // devices --table marks a value no source confirmed with a trailing '?' and lists the fields.
   void device_table_marks_unverified_values() {
     const Result r = cli({"devices", "--table"});

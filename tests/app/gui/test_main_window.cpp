@@ -21,15 +21,15 @@
 #include <set>
 
 #include <QTableWidget>
-#include "export_figure_dialog.h"
-#include "peaks/flops_plot.h"
-#include "workspace/import_controller.h"
-#include "main_window.h"
 #include "common/overlay_geometry.h"
+#include "export_figure_dialog.h"
+#include "main_window.h"
+#include "peaks/flops_plot.h"
 #include "peaks/peak_overlay.h"
 #include "peaks/peak_table.h"
 #include "plot_export.h"
 #include "power/power_view.h"
+#include "workspace/import_controller.h"
 #include "workspace/workspace_tree.h"
 
 class TestMainWindow : public QObject {

@@ -137,6 +137,40 @@ class TestCliLens : public QObject {
     QVERIFY(r.code != 0);
     QVERIFY2(r.err.contains("at least 3 lines"), r.err.constData());
   }
+
+  void circle_on_a_raw_capture_with_its_sidecar() {
+    // Issue #32.8: a .raw capture with its sidecar is read (it was "cannot read the image"); issue #32.6: the
+    // proposal is compared with the lens recorded with it, and a 12 % difference is reported with both values.
+    const QString capture = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/frames/paper-capture.raw";
+    auto r = cli({"lens", "circle", capture});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.out.contains("image circle: centre"), r.out.constData());
+    QVERIFY2(r.out.contains("warning: the proposed r_pp") && r.out.contains("0.0026589"), r.out.constData());
+    // Told the angle the lit disc spans, it agrees with the recorded lens: no warning.
+    r = cli({"lens", "circle", capture, "--circle-fov", "174"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(!r.out.contains("warning"), r.out.constData());
+  }
+
+  void frames_names_the_lens_it_used() {
+    // Issue #32.8: `frames --lens FILE` said "(paper default)"; it names the file now, and without --lens the
+    // recorded lens.
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("f.bsw");
+    auto r = cli({"import", ws, BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/frames"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QFile lens(dir.filePath("lens.json"));
+    QVERIFY(lens.open(QIODevice::WriteOnly));
+    lens.write(QByteArray(kTruth));
+    lens.close();
+    r = cli({"frames", ws, "--triptych", "1", "--out", dir.filePath("t"), "--lens", lens.fileName()});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.out.contains("(from " + lens.fileName().toUtf8() + ")"), r.out.constData());
+    QVERIFY(!r.out.contains("paper default"));
+    r = cli({"frames", ws, "--triptych", "1", "--out", dir.filePath("u")});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.out.contains("(recorded with the capture)"), r.out.constData());
+  }
 };
 
 QTEST_GUILESS_MAIN(TestCliLens)

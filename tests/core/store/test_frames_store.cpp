@@ -8,8 +8,8 @@
 
 #include <fstream>
 
-#include "frames/frame_store.h"
 #include "common/importer.h"
+#include "frames/frame_store.h"
 #include "store/workspace.h"
 
 namespace {

@@ -5,9 +5,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "common/importer.h"
 #include "runs/clpeak_text.h"
 #include "runs/google_benchmark_json.h"
-#include "common/importer.h"
 #include "runs/run_json.h"
 
 namespace {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The import service (importers/common/import_service.h) that the CLI and the GUI share: folder order, skipped files and
-// their reasons, duplicates by content, all-or-nothing batches, cancel and progress.
+// The import service (importers/common/import_service.h) that the CLI and the GUI share: folder order, skipped files
+// and their reasons, duplicates by content, all-or-nothing batches, cancel and progress.
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>

@@ -11,8 +11,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "frames/frame_raw.h"
 #include "common/importer.h"
+#include "frames/frame_raw.h"
 
 namespace {
 

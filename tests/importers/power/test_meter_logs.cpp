@@ -2,11 +2,13 @@
 // Logs of measuring tools: nvidia-smi --query-gpu CSV, perf stat RAPL energy and SPEC PTDaemon (MLPerf spl.txt).
 // The real files (tests/data/power/real, see SOURCES there) are checked against hand arithmetic; small inline logs
 // pin the rules (units, missing samples, several GPUs, intervals, locales, marks, broken input).
+#include <QFile>
 #include <QTest>
 
 #include <cmath>
 
 #include "analysis/power/power.h"
+#include "analysis/power/power_stats.h"
 #include "common/importer.h"
 #include "power/nvidia_smi.h"
 #include "power/perf_stat.h"
@@ -83,7 +85,8 @@ class TestMeterLogs : public QObject {
         "smi.csv");
     QCOMPARE(b.power_traces.size(), std::size_t{2});
     const bs::PowerTrace& a = b.power_traces[0];
-    QCOMPARE(a.label, std::string("smi.csv GPU 00000000:07:00.0"));
+    // Named by the GPU's name (issue #32.8), with the bus id because both GPUs share it.
+    QCOMPARE(a.label, std::string("smi.csv NVIDIA A100-SXM4-40GB (00000000:07:00.0)"));
     QCOMPARE(a.channels[0].values, (std::vector<double>{285.43, 290.57}));
     QVERIFY(near(a.time_s[1], 1.001, 1e-6));
     QCOMPARE(a.provenance.settings.at(0), (std::pair<std::string, std::string>("power.limit", "400.00 W")));
@@ -92,6 +95,29 @@ class TestMeterLogs : public QObject {
     QVERIFY(std::isnan(c.channels[0].values[0]) && std::isnan(c.channels[0].values[1]));  // never 0 W
     QVERIFY(std::any_of(b.warnings.begin(), b.warnings.end(),
                         [](const std::string& w) { return w.find("2 power readings") != std::string::npos; }));
+    // Issue #32.5: n counts the readings present: 2 for the first GPU, none for the second (2 rows each).
+    QCOMPARE(bs::power_stats(a).n, std::size_t{2});
+    QCOMPARE(bs::power_stats(c).n, std::size_t{0});
+  }
+  void nvidia_smi_n_counts_readings_not_rows() {
+    // The real GTX 1650 log with two of its twelve power cells turned into "[N/A]": n = 10 of 12 rows, and the
+    // mean over the ten (the log's own readings: 8 x 19.46 W + 2 x 19.89 W = 195.46 W).
+    QFile f(QString::fromStdString(kReal + "nvidia-smi-fletcher-gtx1650.csv"));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QList<QByteArray> lines = f.readAll().split('\n');
+    // Rows 3 and 11 of the file (inside the log: the range of a log runs from its first reading to its last).
+    QVERIFY(lines.size() > 11);
+    QVERIFY(lines[2].endsWith("19.46 W") && lines[10].endsWith("19.89 W"));
+    lines[2].replace("19.46 W", "[N/A]");
+    lines[10].replace("19.89 W", "[N/A]");
+    const auto b = bs::parse_nvidia_smi(lines.join('\n').toStdString(), "smi-na.csv");
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.label, std::string("smi-na.csv"));  // one GPU: the file's name
+    const bs::PowerStats s = bs::power_stats(t);
+    QCOMPARE(s.rows, std::size_t{12});
+    QCOMPARE(s.n, std::size_t{10});
+    QCOMPARE(s.power_w->summary.n, std::size_t{10});
+    QVERIFY(near(s.power_w->summary.mean, (8 * 19.46 + 2 * 19.89) / 10, 1e-9));
   }
   void nvidia_smi_nounits_instant_and_average() {
     const auto b = bs::parse_nvidia_smi(
@@ -182,6 +208,9 @@ class TestMeterLogs : public QObject {
     QCOMPARE(t.total_channel, std::string("pkg"));
     QCOMPARE(t.channels[0].name, std::string("pkg"));  // the total first, for readers of the first channel
     QCOMPARE(t.time_s.size(), std::size_t{10});
+    // Issue #32.5: five readings of the package (pkg, cores, ram interleaved in the file), held over ten samples.
+    QCOMPARE(bs::power_stats(t).n, std::size_t{5});
+    QCOMPARE(bs::power_stats(t).rows, std::size_t{10});
     QCOMPARE(t.time_s[1], 0.100360379);
     QCOMPARE(t.time_s[2], 0.100360379);
     QCOMPARE(t.time_s[9], 0.501561575);

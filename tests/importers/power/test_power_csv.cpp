@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <QFile>
 #include <QTest>
 
 #include "power/power_csv.h"
@@ -230,6 +231,32 @@ class TestPowerCsv : public QObject {
     QVERIFY(imp.sniff("# a comment\n#time,current,voltage,power\n", "x") > 0);
     QCOMPARE(imp.sniff("name,value\na,1\n", "x.csv"), 0);
     QCOMPARE(imp.sniff("{\"format\": \"benchscope-run\"}", "x.csv"), 0);
+  }
+
+  void cut_off_last_line_imports_the_complete_rows() {
+    // Issue #32.8: a logger killed while writing leaves a last line without its line ending, cut mid-row. The
+    // complete rows are imported and a warning names the line left out; the same bad row WITH a line ending (or
+    // no complete row before it) is still an error.
+    QFile f(BENCHSCOPE_SOURCE_DIR "/tests/data/power/otii-export.csv");
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const std::string whole = f.readAll().toStdString();
+    const std::size_t cut_at = whole.find("0.005000,0.089") + std::string("0.005000,0.089").size();
+    const std::string cut = whole.substr(0, cut_at);  // "...\n0.005000,0.089": the voltage cell never written
+    const bs::ImportBatch b = bs::parse_power_csv(cut, "otii-cut.csv");
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.time_s.size(), std::size_t{7});  // rows 2..8 of the file
+    for (const bs::PowerChannel& c : t.channels) QCOMPARE(c.values.size(), std::size_t{7});
+    QCOMPARE(t.time_s.back(), 0.004);
+    bool named = false;
+    for (const std::string& w : b.warnings)
+      named = named || (w.find("otii-cut.csv:9:") == 0 && w.find("cut off") != std::string::npos &&
+                        w.find("7 complete rows") != std::string::npos);
+    QVERIFY(named);
+    // With its line ending the short row is a real error, not a cut.
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_power_csv(cut + "\n", "otii-short.csv"));
+    // Nothing complete before the cut: an error.
+    const std::string header_only = whole.substr(0, whole.find('\n') + 1) + "0.000000,0.08";
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_power_csv(header_only, "otii-empty.csv"));
   }
 };
 

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Kernel Runner as a user drives it: run a small sweep, watch it fill in, find it stored; cancel a long one.
 #include <QCoreApplication>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "peaks/flops_plot.h"
+#include "kernels/backend_opencl.h"
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
+#include "peaks/flops_plot.h"
 #include "workspace/workspace_tree.h"
 
 class TestKernelRunner : public QObject {
@@ -95,6 +97,45 @@ class TestKernelRunner : public QObject {
     QVERIFY(runs[0].run.samples.size() >= 3);
     QVERIFY(runs[0].run.samples.size() < 2000);
     for (const auto& s : runs[0].run.samples) QVERIFY(s.seconds.size() == 1 && s.seconds[0] > 0);
+  }
+
+  // An OpenCL device's ceilings (PoCL's CPU device here; a GPU's on a machine with one): measured from the Kernel
+  // Runner, shown with "timed on the device", cached for the next start; the scalar reference has none.
+  void device_ceilings_are_measured_shown_and_cached() {
+    if (const std::string why = bs::kernels::opencl_unavailable_reason(); !why.empty())
+      QSKIP(qPrintable(QString::fromStdString(why)));
+    QTemporaryDir cache;
+    qputenv("BENCHSCOPE_CACHE_DIR", cache.path().toUtf8());
+    bs::ui::KernelRunner runner;
+    runner.select_backend("opencl:0");
+    QVERIFY(runner.measure_ceilings_button()->isVisibleTo(&runner));
+    QVERIFY2(runner.ceilings_label()->text().contains("No empirical ceiling measured for this device"),
+             qPrintable(runner.ceilings_label()->text()));
+    QSignalSpy measured(&runner, &bs::ui::KernelRunner::ceilings_measured);
+    QSignalSpy failed(&runner, &bs::ui::KernelRunner::failed);
+    runner.measure_ceilings();
+    QVERIFY(runner.measuring_ceilings());
+    QVERIFY(measured.wait(180000));
+    QCOMPARE(failed.count(), 0);
+    const bs::ResultSet set = measured.first().at(0).value<bs::ResultSet>();
+    QCOMPARE(set.measurements.front().name, std::string("rotation-mix/opencl"));
+    const bs::kernels::CeilingSet* c = runner.device_ceilings("opencl:0");
+    QVERIFY(c && c->rotation_mix.measured() && c->bandwidth.measured());
+    QVERIFY2(runner.ceilings_label()->text().contains("timed on the device"),
+             qPrintable(runner.ceilings_label()->text()));
+    QVERIFY(runner.ceilings_label()->toolTip().contains("OpenCL event profiling"));
+    if (const QByteArray shots = qgetenv("BENCHSCOPE_SCREENSHOT_DIR"); !shots.isEmpty()) {
+      runner.resize(560, 620);
+      QVERIFY(runner.grab().save(QString::fromUtf8(shots) + "/kernel-runner-device-ceilings.png"));
+    }
+    bs::ui::KernelRunner again;  // a new start reads them from the cache, measuring nothing
+    again.select_backend("opencl:0");
+    QVERIFY(again.device_ceilings("opencl:0"));
+    QVERIFY(again.ceilings_label()->text().contains("rotation mix"));
+    runner.select_backend("cpu-scalar");
+    QVERIFY(!runner.measure_ceilings_button()->isVisibleTo(&runner));
+    QVERIFY(runner.ceilings_label()->text().contains("not for"));
+    qunsetenv("BENCHSCOPE_CACHE_DIR");
   }
 };
 

@@ -29,6 +29,7 @@
 #include "power/power_stats_panel.h"
 #include "power/power_view.h"
 #include "store/battery_preset_store.h"
+#include "store/log_settings_store.h"
 
 namespace {
 
@@ -250,6 +251,10 @@ class TestPowerSelection : public QObject {
     view.cursors()->set(2.25, 6.5);
     QCOMPARE(view.save_selection_as_phase("kick"), 1);
     QCOMPARE(view.phase_panel()->table()->rowCount(), 1);
+    // Issue #32.8: a phase the user saved is listed with origin "user" (it said "log"), and stays so.
+    QCOMPARE(view.phase_panel()->table()->item(0, 2)->text(), QString("user"));
+    QCOMPARE(bs::phase_origins(bs::Workspace(path), bs::Workspace(path).power_traces()[0].id),
+             (std::vector<std::string>{"user"}));
     const std::vector<bs::StoredPowerTrace> back = bs::Workspace(path).power_traces();
     QCOMPARE(back[0].trace.phases.size(), std::size_t{1});
     QCOMPARE(back[0].trace.phases[0].name, std::string("kick"));

@@ -15,9 +15,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "vision/checkerboard_dialog.h"
+#include "vision/frames/synthetic_checkerboard.h"
 #include "vision/lens_tab.h"
 #include "vision/reprojection_tuner.h"
-#include "vision/frames/synthetic_checkerboard.h"
 
 using namespace bs;
 

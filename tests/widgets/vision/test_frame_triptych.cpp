@@ -14,15 +14,15 @@
 
 #include <cstring>
 
-#include "vision/frame_triptych.h"
-#include "vision/frames_view.h"
-#include "vision/image_pane.h"
-#include "workspace/import_controller.h"
 #include "common/importer.h"
 #include "triptych_panels.h"
+#include "vision/frame_triptych.h"
 #include "vision/frames/frame_image.h"
 #include "vision/frames/synthetic.h"
+#include "vision/frames_view.h"
+#include "vision/image_pane.h"
 #include "vision/lens/view_geometry.h"
+#include "workspace/import_controller.h"
 
 using namespace bs;
 
@@ -104,11 +104,11 @@ class TestFrameTriptych : public QObject {
     f.lens_json = vision::lens_to_json(lens, view).dump();
     ui::FrameTriptych t;
     t.set_frame(f);
-    bool found = false;
-    for (const QLabel* l : t.findChildren<QLabel*>())
-      if (l->text().contains("Lens: recorded with the frame"))
-        found = l->text().contains("Obtained by: circle-fit, RMS 0.05 px");
-    QVERIFY(found);
+    QVERIFY2(t.banner_text().contains("Lens: recorded with the capture"), qPrintable(t.banner_text()));
+    QVERIFY2(t.banner_text().contains("obtained by circle-fit, RMS 0.05 px"), qPrintable(t.banner_text()));
+    // Issue #32.1: a lens from elsewhere (the Lens tab) is named as such, not as the frame's.
+    t.set_lens(lens, view, "tuned in the Lens tab, not saved");
+    QVERIFY2(t.banner_text().contains("Lens: tuned in the Lens tab, not saved"), qPrintable(t.banner_text()));
     QVERIFY(t.wait_until_rendered(30000));
   }
 

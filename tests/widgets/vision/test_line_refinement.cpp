@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "../../support/room_lens.h"
+#include "vision/frames/synthetic_room.h"
+#include "vision/lens/line_fit.h"
 #include "vision/preview_pane.h"
 #include "vision/reprojection_tuner.h"
-#include "vision/lens/line_fit.h"
-#include "vision/frames/synthetic_room.h"
 
 using namespace bs;
 using bs::ui::ReprojectionTuner;

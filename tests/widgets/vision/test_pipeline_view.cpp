@@ -16,10 +16,10 @@
 
 #include "analysis/platform/pipeline_table.h"
 #include "common/importer.h"
+#include "vision/pipeline/pipeline.h"
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "vision/reproject/cuda_preprocess.h"
-#include "vision/pipeline/pipeline.h"
 
 using bs::ui::PipelineMeasurePanel;
 using bs::ui::PipelineView;

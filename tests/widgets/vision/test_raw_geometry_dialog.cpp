@@ -9,9 +9,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "workspace/import_controller.h"
-#include "vision/raw_geometry_dialog.h"
 #include "store/workspace.h"
+#include "vision/raw_geometry_dialog.h"
+#include "workspace/import_controller.h"
 
 class TestRawGeometryDialog : public QObject {
   Q_OBJECT

@@ -6,9 +6,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "vision/frames/synthetic.h"
 #include "vision/preview_pane.h"
 #include "vision/reprojection_tuner.h"
-#include "vision/frames/synthetic.h"
 
 using namespace bs;
 using bs::ui::ReprojectionTuner;

@@ -6,8 +6,8 @@
 
 #include "analysis/peaks/result_peaks.h"
 #include "analysis/roofline/roofline.h"
-#include "runs/clpeak_text.h"
 #include "model/measure_class.h"
+#include "runs/clpeak_text.h"
 
 namespace {
 

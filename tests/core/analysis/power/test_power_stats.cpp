@@ -31,7 +31,8 @@ class TestPowerStats : public QObject {
     trace.channels.push_back({"P", bs::PowerQuantity::Power, {1, nan, 3, 5}});
     // Present samples 1, 3, 5: n = 3, mean 3 W, SD 2 W, median 3 W (as 0 it would be n 4, mean 2.25 W).
     const bs::PowerStats s = bs::power_stats(trace);
-    QCOMPARE(s.n, std::size_t{4});  // rows in the range
+    QCOMPARE(s.n, std::size_t{3});     // readings present (issue #32.5), not rows
+    QCOMPARE(s.rows, std::size_t{4});  // rows in the range
     QCOMPARE(s.power_w->summary.n, std::size_t{3});
     QCOMPARE(s.power_w->summary.mean, 3.0);
     QCOMPARE(s.power_w->summary.sd, 2.0);

@@ -4,8 +4,8 @@
 #include <QTest>
 #include <cmath>
 
-#include "vision/reproject/fused.h"
 #include "vision/frames/synthetic.h"
+#include "vision/reproject/fused.h"
 
 using namespace bs::vision;
 

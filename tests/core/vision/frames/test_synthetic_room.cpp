@@ -4,8 +4,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "vision/lens/fisheye_opencv.h"
 #include "vision/frames/synthetic_room.h"
+#include "vision/lens/fisheye_opencv.h"
 
 using namespace bs::vision;
 

@@ -9,9 +9,9 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "vision/frames/synthetic_checkerboard.h"
 #include "vision/lens/checkerboard_calibration.h"
 #include "vision/lens/fisheye_opencv.h"
-#include "vision/frames/synthetic_checkerboard.h"
 
 using namespace bs::vision;
 

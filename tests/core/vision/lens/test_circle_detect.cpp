@@ -4,10 +4,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "vision/lens/circle_detect.h"
-#include "vision/lens/straight_line.h"
 #include "vision/frames/synthetic.h"
 #include "vision/frames/synthetic_room.h"
+#include "vision/lens/circle_detect.h"
+#include "vision/lens/straight_line.h"
 
 using namespace bs::vision;
 

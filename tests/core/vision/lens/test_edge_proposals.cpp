@@ -11,10 +11,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "../../../support/room_lens.h"
+#include "vision/frames/synthetic_room.h"
 #include "vision/lens/edge_proposals.h"
 #include "vision/lens/fisheye_opencv.h"
 #include "vision/lens/line_fit.h"
-#include "vision/frames/synthetic_room.h"
 
 using namespace bs::vision;
 

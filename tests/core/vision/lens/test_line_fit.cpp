@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "../../../support/room_lens.h"
+#include "vision/frames/synthetic_room.h"
 #include "vision/lens/fisheye_opencv.h"
 #include "vision/lens/line_fit.h"
-#include "vision/frames/synthetic_room.h"
 
 using namespace bs::vision;
 

@@ -10,11 +10,11 @@
 
 #include <QTest>
 
+#include "vision/frames/synthetic.h"
 #include "vision/pipeline/bounded_queue.h"
 #include "vision/pipeline/detector.h"
 #include "vision/pipeline/pipeline.h"
 #include "vision/reproject/preprocess.h"
-#include "vision/frames/synthetic.h"
 
 using namespace bs::vision;
 

@@ -2,8 +2,8 @@
 #include <QTest>
 #include <cmath>
 
-#include "vision/reproject/fused.h"
 #include "vision/lens/lens.h"
+#include "vision/reproject/fused.h"
 
 using namespace bs::vision;
 

@@ -4,10 +4,10 @@
 // one the path must refuse with a reason instead of failing later.
 #include <QTest>
 
+#include "vision/lens/lens.h"
 #include "vision/reproject/cuda_preprocess.h"
 #include "vision/reproject/fused.h"
 #include "vision/reproject/fused_reference.h"
-#include "vision/lens/lens.h"
 
 using namespace bs::vision;
 
@@ -119,6 +119,39 @@ class TestFusedCuda : public QObject {
     FusedTable(build_reprojection_map(lens, view), raw.size(), BayerPattern::BGGR).run(raw, cpu);
     QCOMPARE(differing_pixels(gpu(raw), cpu), 0);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, gpu(cv::Mat(10, 10, CV_8UC1)));
+  }
+
+  // The steps `bench vision` times apart (upload, kernel alone, download) give the same image as the CPU, and the
+  // kernel's device time is positive; without a GPU they refuse at construction with the same reason.
+  void gpu_steps_equal_cpu_or_refuse_with_reason() {
+    const Lens lens = small_lens();
+    View view;
+    view.width = 200;
+    view.height = 160;
+    view.yaw_deg = 60;
+    const std::string why = cuda_preprocessing_unavailable();
+    if (!why.empty()) {
+      try {
+        CudaFusedSteps steps(lens, view, BayerPattern::RGGB);
+        QFAIL("CudaFusedSteps was built although the CUDA path says it cannot run");
+      } catch (const std::runtime_error& e) {
+        QVERIFY2(std::string(e.what()).find(why) != std::string::npos, e.what());
+      }
+      QSKIP(qPrintable(QString("kernel not run here: %1").arg(QString::fromStdString(why))));
+    }
+    CudaFusedSteps steps(lens, view, BayerPattern::RGGB);
+    QVERIFY(!steps.device().empty());
+    const cv::Mat raw = noisy_mosaic({320, 256}, 13);
+    steps.upload(raw);
+    steps.compute();
+    cv::Mat gpu;
+    steps.download(gpu);
+    cv::Mat cpu;
+    FusedTable(build_reprojection_map(lens, view), raw.size(), BayerPattern::RGGB).run(raw, cpu);
+    QCOMPARE(differing_pixels(gpu, cpu), 0);
+    QVERIFY(steps.kernel_seconds(3) > 0);
+    QCOMPARE(steps.kernel_bytes(), 200.0 * 160 * 11 + 320.0 * 256);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, steps.upload(cv::Mat(10, 10, CV_8UC1)));
   }
 };
 

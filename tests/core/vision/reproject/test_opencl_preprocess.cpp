@@ -4,9 +4,9 @@
 // device (PoCL provides one on CPU-only machines).
 #include <QTest>
 
+#include "vision/frames/synthetic.h"
 #include "vision/reproject/opencl_preprocess.h"
 #include "vision/reproject/preprocess.h"
-#include "vision/frames/synthetic.h"
 
 using namespace bs::vision;
 

@@ -7,8 +7,8 @@
 
 #include "vision/frames/frame_image.h"
 #include "vision/frames/synthetic.h"
-#include "vision/reproject/triptych.h"
 #include "vision/lens/view_geometry.h"
+#include "vision/reproject/triptych.h"
 
 namespace {
 

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The candidates tables (own and published platforms, core/analysis/library/candidates.h) for a terminal and as
+// JSON, shared by `platforms --library` and `library compare`.
+#include <iosfwd>
+#include <span>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/library/candidates.h"
+
+namespace bs::cli {
+
+// One block per class: the ranked rows with origin, latency, throughput, power, energy, battery, the verdict when
+// constrained and what still differs, then each row's source.
+void print_candidates(std::ostream& out, std::span<const CandidateClass> classes, std::span<const PeakClass> peaks,
+                      bool constrained);
+nlohmann::json candidates_json(std::span<const CandidateClass> classes, std::span<const PeakClass> peaks);
+
+}  // namespace bs::cli

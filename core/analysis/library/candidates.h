@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Candidates: a lab's own platforms beside published ones (the library), ranked under the same constraints and
+// compared like with like only. Inference results fall into classes of the same network, scenario and precision;
+// a platform is ranked only within its class (most inferences per second among those that meet every constraint),
+// and what still differs inside a class (latency statistic, how power was measured, power setting, software) is
+// said in the row. Compute peaks fall into classes of the same precision, with the kernel named in the row. Every
+// row carries its origin (measured, reconstructed, published) and its source.
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analysis/library/library.h"
+#include "analysis/platform/platform_comparison.h"
+#include "model/dnn_run.h"
+#include "model/flops_run.h"
+#include "model/pipeline_run.h"
+#include "util/table_export.h"
+
+namespace bs {
+
+struct Candidate {
+  std::string platform;
+  DataOrigin origin = DataOrigin::Unknown;
+  std::string network, scenario, precision;  // the class
+  std::optional<double> latency_s;
+  std::string latency_statistic;  // "p90", "mean of 20 frames", ...
+  std::optional<double> throughput_per_s;
+  std::string throughput_statistic;
+  std::optional<double> power_w;
+  std::string power_how;  // "external meter (SPEC PTDaemon), wall power", "mean of nuc-current.csv x 16 V", ...
+  std::optional<double> energy_per_inference_j;
+  std::optional<double> battery_runtime_h;
+  std::string conditions;  // power setting, clocks, cooling, round
+  std::string software;
+  std::string source;      // URL (published) or file (own)
+  std::string difference;  // what still differs from the class's first row; "" for that row
+  std::vector<PlausibilityFlag> flags;
+  std::vector<ConstraintCheck> checks;
+  bool meets_all = false;
+  bool recommended = false;  // the most inferences per second among the class's rows that meet every constraint
+};
+
+struct CandidateClass {
+  std::string network, scenario, precision;
+  std::vector<Candidate> rows;  // ranked: constraints met first, then by throughput
+  std::string title() const;    // "resnet50, SingleStream, int8"
+};
+
+struct PeakCandidate {
+  std::string platform;
+  DataOrigin origin = DataOrigin::Unknown;
+  std::string device, kernel, precision;  // kernel: "rotation2d (BenchScope)", "clpeak Single-precision compute"
+  double flops = 0;
+  std::optional<double> power_w;
+  std::optional<double> flops_per_watt;
+  std::string source, difference;
+  std::vector<PlausibilityFlag> flags;
+};
+
+struct PeakClass {
+  std::string precision;
+  std::vector<PeakCandidate> rows;  // by FLOPS, highest first
+};
+
+struct CandidateInputs {
+  std::span<const PlatformRow> platforms;     // own: peaks, power, pipeline (compare_platforms())
+  std::span<const PipelineRun> pipelines;     // own: the detection stage as an inference result
+  std::span<const DnnRun> dnn_runs;           // own: bench dnn
+  std::span<const ResultSet> result_sets;     // own: imported MLPerf LoadGen results (source_format mlperf-loadgen)
+  std::vector<const LibraryResult*> library;  // published
+  const Library* lib = nullptr;               // names of library computers
+};
+
+// The network names of all sources in one spelling: "resnet"/"ResNet-50" -> "resnet50"; "ssd-small"/
+// "mobilenet-ssd"/"ssd_mobilenet" -> "ssd-mobilenet"; anything else lowercased.
+std::string canonical_network(std::string_view name);
+
+std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Constraints& constraints,
+                                            const ComparisonOptions& options = {});
+std::vector<PeakClass> peak_candidates(const CandidateInputs& in);
+
+// One table each, shared by the CLI, the Platforms view's export and the report: a "Class" column first, then
+// Rank, Platform, Origin, Latency (ms), Throughput (1/s), Power (W), Energy per inference (mJ), Battery (h), Meets
+// constraints, Differences and conditions, Source; flags as footnotes.
+ExportTable candidates_table(std::span<const CandidateClass> classes, bool with_verdicts);
+ExportTable peak_candidates_table(std::span<const PeakClass> classes);
+
+// The origin as a row shows it: "measured", "reconstructed", "published" (never blank: "unknown").
+std::string origin_label(DataOrigin origin);
+
+}  // namespace bs

@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "analysis/library/library.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/peaks/device_table.h"
+#include "analysis/stats/units.h"
+#include "util/resources.h"
+
+namespace bs {
+namespace {
+
+using json = nlohmann::json;
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+class Fields {
+ public:
+  Fields(const json& j, std::string where) : j_(j), where_(std::move(where)) {}
+  [[noreturn]] void fail(const std::string& field, const std::string& why) const {
+    throw std::runtime_error(where_ + ": " + field + ": " + why);
+  }
+  std::string text(const char* key, bool required = false) const {
+    const auto it = j_.find(key);
+    if (it == j_.end() || it->is_null()) {
+      if (required) fail(key, "missing");
+      return {};
+    }
+    if (!it->is_string()) fail(key, "not a string");
+    return it->get<std::string>();
+  }
+  std::optional<double> number(const char* key) const {
+    const auto it = j_.find(key);
+    if (it == j_.end() || it->is_null()) return std::nullopt;
+    if (!it->is_number()) fail(key, "not a number");
+    const double v = it->get<double>();
+    if (!std::isfinite(v)) fail(key, "not finite");
+    return v;
+  }
+
+ private:
+  const json& j_;
+  std::string where_;
+};
+
+std::vector<std::pair<std::string, std::string>> string_pairs(const json& j, const Fields& f, const char* key) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const auto it = j.find(key);
+  if (it == j.end()) return out;
+  if (!it->is_object()) f.fail(key, "not an object");
+  for (const auto& [k, v] : it->items()) {
+    if (!v.is_string()) f.fail(std::string(key) + "/" + k, "not a string");
+    out.emplace_back(k, v.get<std::string>());
+  }
+  return out;
+}
+
+LibrarySource source_of(const json& j, const Fields& f) {
+  LibrarySource s;
+  const auto it = j.find("source");
+  if (it == j.end() || !it->is_object()) f.fail("source", "missing: every published result names its source");
+  const Fields sf(*it, "source");
+  s.url = sf.text("url");
+  if (s.url.empty()) f.fail("source/url", "missing");
+  s.repository = sf.text("repository");
+  s.commit = sf.text("commit");
+  s.path = sf.text("path");
+  s.kept = sf.text("kept");
+  s.licence = sf.text("licence");
+  if (const auto l = it->find("lines"); l != it->end() && l->is_object())
+    for (const auto& [k, v] : l->items())
+      if (v.is_number_integer()) s.lines.emplace_back(k, v.get<long long>());
+  return s;
+}
+
+std::string fmt(double v, int prec = 3) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+  return buf;
+}
+
+}  // namespace
+
+std::string LibraryResult::condition(std::string_view key) const {
+  for (const auto& [k, v] : conditions)
+    if (k == key) return v;
+  return {};
+}
+
+const LibraryComputer* Library::computer(std::string_view id_or_alias) const {
+  const std::string w = lower(id_or_alias);
+  for (const LibraryComputer& c : computers) {
+    if (lower(c.id) == w) return &c;
+    for (const std::string& a : c.aliases)
+      if (lower(a) == w) return &c;
+  }
+  return nullptr;
+}
+
+const LibraryResult* Library::result(std::string_view id) const {
+  for (const LibraryResult& r : results)
+    if (r.id == id) return &r;
+  return nullptr;
+}
+
+std::string Library::computer_name(std::string_view id) const {
+  const LibraryComputer* c = computer(id);
+  return c ? c->name : std::string(id);
+}
+
+Library parse_library(std::string_view json_text, const std::string& origin) {
+  const json doc = json::parse(json_text, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) throw std::runtime_error(origin + ": not a JSON object");
+  if (doc.value("format", "") != "benchscope-library")
+    throw std::runtime_error(origin + ": format is not \"benchscope-library\"");
+  if (doc.value("version", 0) != 1) throw std::runtime_error(origin + ": version is not 1");
+  Library lib;
+  lib.path = origin;
+  const auto comps = doc.find("computers");
+  if (comps == doc.end() || !comps->is_array()) throw std::runtime_error(origin + ": computers: missing");
+  for (std::size_t i = 0; i < comps->size(); ++i) {
+    const Fields f((*comps)[i], origin + ": computers[" + std::to_string(i) + "]");
+    LibraryComputer c{f.text("id", true), f.text("name", true), {}};
+    if (const auto a = (*comps)[i].find("aliases"); a != (*comps)[i].end() && a->is_array())
+      for (const auto& v : *a)
+        if (v.is_string()) c.aliases.push_back(v.get<std::string>());
+    lib.computers.push_back(std::move(c));
+  }
+  const auto results = doc.find("results");
+  if (results == doc.end() || !results->is_array()) throw std::runtime_error(origin + ": results: missing");
+  for (std::size_t i = 0; i < results->size(); ++i) {
+    const json& j = (*results)[i];
+    if (!j.is_object()) throw std::runtime_error(origin + ": results[" + std::to_string(i) + "]: not an object");
+    const Fields f(j, origin + ": results[" + std::to_string(i) + "] (" + j.value("id", std::string("?")) + ")");
+    LibraryResult r;
+    r.id = f.text("id", true);
+    r.kind = f.text("kind", true);
+    r.computer = f.text("computer", true);
+    if (!lib.computer(r.computer)) f.fail("computer", "'" + r.computer + "' is not in computers");
+    if (lib.result(r.id)) f.fail("id", "used twice");
+    if (f.text("origin") != "published") f.fail("origin", "a library result is \"published\"");
+    r.network = f.text("network");
+    r.scenario = f.text("scenario");
+    r.latency_s = f.number("latency_s");
+    r.throughput_per_s = f.number("throughput_per_s");
+    r.latency_statistic = f.text("latency_statistic");
+    r.throughput_statistic = f.text("throughput_statistic");
+    r.device = f.text("device");
+    r.measure = f.text("measure");
+    r.variant = f.text("variant");
+    r.unit = f.text("unit");
+    r.value = f.number("value");
+    r.precision = f.text("precision");
+    r.mean_power_w = f.number("mean_power_w");
+    r.energy_per_sample_j = f.number("energy_per_sample_j");
+    r.power_measurement = f.text("power_measurement");
+    r.round = f.text("round");
+    r.date = f.text("date");
+    r.division = f.text("division");
+    r.submitter = f.text("submitter");
+    r.system = f.text("system");
+    r.software = f.text("software");
+    r.validity = f.text("validity");
+    r.conditions = string_pairs(j, f, "conditions");
+    r.source = source_of(j, f);
+    if (r.is_inference() && (r.network.empty() || r.scenario.empty() || !r.throughput_per_s))
+      f.fail("network/scenario/throughput_per_s", "an inference result needs all three");
+    if (!r.is_inference() && (!r.value || r.unit.empty())) f.fail("value/unit", "a peak needs both");
+    lib.results.push_back(std::move(r));
+  }
+  for (LibraryResult& r : lib.results) r.flags = check_library_result(r, lib);
+  return lib;
+}
+
+Library load_library(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return parse_library(text, path.string());
+}
+
+const BundledLibrary& bundled_library() {
+  static const BundledLibrary lib = [] {
+    BundledLibrary b;
+    try {
+      b.library = load_library(find_resource("library/library.json"));
+    } catch (const std::exception& e) {
+      b.error = e.what();
+    }
+    return b;
+  }();
+  return lib;
+}
+
+std::vector<const LibraryResult*> select_library(const Library& lib, std::string_view spec) {
+  std::vector<const LibraryResult*> out;
+  const auto add = [&](const LibraryResult* r) {
+    if (std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
+  };
+  std::size_t at = 0;
+  while (at <= spec.size()) {
+    const std::size_t comma = spec.find(',', at);
+    std::string_view word = spec.substr(at, comma == std::string_view::npos ? std::string_view::npos : comma - at);
+    while (!word.empty() && word.front() == ' ') word.remove_prefix(1);
+    while (!word.empty() && word.back() == ' ') word.remove_suffix(1);
+    if (!word.empty()) {
+      if (const LibraryComputer* c = lib.computer(word)) {
+        for (const LibraryResult& r : lib.results)
+          if (r.computer == c->id) add(&r);
+      } else if (const LibraryResult* r = lib.result(word)) {
+        add(r);
+      } else {
+        std::string known;
+        for (const LibraryComputer& k : lib.computers)
+          known += (known.empty() ? "" : ", ") + k.id + (k.aliases.empty() ? "" : " (" + k.aliases.front() + ")");
+        throw std::invalid_argument("'" + std::string(word) + "' is neither a library computer nor a result id; " +
+                                    "computers: " + known);
+      }
+    }
+    if (comma == std::string_view::npos) break;
+    at = comma + 1;
+  }
+  return out;
+}
+
+std::vector<PlausibilityFlag> check_library_result(const LibraryResult& r, const Library& lib) {
+  std::vector<PlausibilityFlag> flags;
+  const BundledDeviceTable& table = bundled_device_table();
+  const std::string computer = lib.computer_name(r.computer);
+  // A peak against the device's vendor FP32 peak: an FP32 figure as imports are checked; an FP64 (HPL) figure can
+  // never exceed the FP32 peak on these devices; FP16 runs at most twice the FP32 rate (packed half2).
+  if (r.value && r.unit == "FLOP/s") {
+    const DeviceKind kind = lower(r.device).find("cpu") != std::string::npos   ? DeviceKind::Cpu
+                            : lower(r.device).find("gpu") != std::string::npos ? DeviceKind::Gpu
+                                                                               : DeviceKind::Other;
+    const DeviceSpec* spec = match_device(table.table, computer, kind, computer);
+    if (!spec) spec = match_device(table.table, r.device, kind, computer);
+    const double factor = r.precision == "fp16" ? 2.0 : 1.0;
+    if (r.precision == "fp32" || r.precision == "fp64" || r.precision == "fp16")
+      merge_flags(flags, check_flops(*r.value / factor, spec));
+  }
+  for (const auto& [what, v] : {std::pair{"latency", r.latency_s}, std::pair{"throughput", r.throughput_per_s},
+                                std::pair{"mean power", r.mean_power_w}, std::pair{"energy", r.energy_per_sample_j},
+                                std::pair{"value", r.value}})
+    if (v && *v <= 0)
+      merge_flags(flags, {{flag_code::kNegativeValue, std::string(what) + " " + fmt(*v) + " is not positive"}});
+  if (r.mean_power_w) {
+    if (*r.mean_power_w > kMaxPlausiblePowerW)
+      merge_flags(flags, {{flag_code::kImplausibleMagnitude,
+                           "mean power " + fmt(*r.mean_power_w) + " W is more than a robot computer draws"}});
+    if (const auto tdp = platform_tdp_w(table.table, computer); tdp && *r.mean_power_w > kPlatformTdpFactor * *tdp)
+      merge_flags(flags, {{flag_code::kAbovePlatformPower, "mean power " + fmt(*r.mean_power_w) + " W is above " +
+                                                               fmt(kPlatformTdpFactor) + "x the platform's TDP (" +
+                                                               fmt(*tdp) + " W)"}});
+  }
+  // Energy per sample x samples per second is the mean power: within a factor of 2 (the power window and the
+  // performance run are not the same seconds), else one of the three numbers is off.
+  if (r.mean_power_w && r.energy_per_sample_j && r.throughput_per_s && r.scenario != "MultiStream") {
+    const double implied = *r.energy_per_sample_j * *r.throughput_per_s;
+    if (implied > 2 * *r.mean_power_w || implied < 0.5 * *r.mean_power_w)
+      merge_flags(flags, {{"energy_power_mismatch", "energy per sample x throughput = " + fmt(implied) +
+                                                        " W, but the mean power is " + fmt(*r.mean_power_w) + " W"}});
+  }
+  return flags;
+}
+
+std::string library_result_summary(const LibraryResult& r) {
+  std::string s;
+  const auto add = [&](const std::string& part) { s += (s.empty() ? "" : "; ") + part; };
+  if (r.is_inference()) {
+    if (r.latency_s) add(r.latency_statistic + " latency " + format_si(*r.latency_s, "s", 2));
+    if (r.throughput_per_s) add(fmt(*r.throughput_per_s, 4) + " /s (" + r.throughput_statistic + ")");
+  } else if (r.value) {
+    add(format_si(*r.value, r.unit == "FLOP/s" ? "FLOPS" : r.unit, 2) + " " + r.precision + " (" + r.measure + ")");
+  }
+  if (r.mean_power_w)
+    add(fmt(*r.mean_power_w) + " W" + (r.power_measurement.empty() ? "" : " (" + r.power_measurement + ")"));
+  if (r.energy_per_sample_j) add(format_si(*r.energy_per_sample_j, "J", 2) + " per sample");
+  return s;
+}
+
+}  // namespace bs

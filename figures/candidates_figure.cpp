@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "candidates_figure.h"
+
+#include <qcustomplot.h>
+
+#include <cmath>
+
+namespace bs::ui {
+namespace {
+
+// Class colours: distinguishable in print (Okabe-Ito).
+const QColor kClassColors[] = {QColor(0, 114, 178), QColor(213, 94, 0),   QColor(0, 158, 115), QColor(204, 121, 167),
+                               QColor(230, 159, 0), QColor(86, 180, 233), QColor(0, 0, 0),     QColor(240, 228, 66)};
+
+QCPScatterStyle origin_marker(DataOrigin o, const QColor& c) {
+  switch (o) {
+    case DataOrigin::Measured:
+      return QCPScatterStyle(QCPScatterStyle::ssDisc, c, c, 9);
+    case DataOrigin::Reconstructed:
+      return QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(c, 2), Qt::white, 9);
+    case DataOrigin::Published:
+      return QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(c, 1.5), QColor(c.red(), c.green(), c.blue(), 90), 11);
+    case DataOrigin::Unknown:
+      break;
+  }
+  return QCPScatterStyle(QCPScatterStyle::ssCross, QPen(c, 2), Qt::NoBrush, 9);
+}
+
+QString origin_name(DataOrigin o) { return QString::fromStdString(origin_label(o)); }
+
+}  // namespace
+
+QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> classes) {
+  plot.clearGraphs();
+  plot.clearItems();
+  plot.legend->setVisible(true);
+  plot.legend->setFont(QFont(plot.font().family(), 8));
+  // The legend goes under the axes, never over the points (a box inside the axes hid the published ones in a
+  // small plot): taken out of the axis rect's inset layout once, in rows of three entries.
+  if (plot.axisRect()->insetLayout()->take(plot.legend)) {
+    plot.plotLayout()->addElement(1, 0, plot.legend);
+    plot.plotLayout()->setRowStretchFactor(1, 0.001);
+    plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    plot.legend->setWrap(2);
+  }
+  plot.xAxis->setLabel(QObject::tr("Power (W)"));
+  plot.yAxis->setLabel(QObject::tr("Inferences per second"));
+  plot.yAxis->setScaleType(QCPAxis::stLogarithmic);
+  plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+  QStringList left_out;
+  double xmax = 1, ymin = 1e9, ymax = 1e-9;
+  std::size_t class_no = 0;
+  for (const CandidateClass& k : classes) {
+    const QColor color = kClassColors[class_no++ % std::size(kClassColors)];
+    bool legend_for_class = false;
+    for (const Candidate& c : k.rows) {
+      if (!c.power_w || !c.throughput_per_s || *c.throughput_per_s <= 0) {
+        left_out << QString::fromStdString(c.platform + " (" + k.network + ", " + origin_label(c.origin) + ")");
+        continue;
+      }
+      QCPGraph* g = plot.addGraph();
+      g->setLineStyle(QCPGraph::lsNone);
+      g->setScatterStyle(origin_marker(c.origin, color));
+      g->addData(*c.power_w, *c.throughput_per_s);
+      // One legend entry per class (its colour), named; the origins get entries of their own below.
+      if (!legend_for_class) {
+        g->setName(QString::fromStdString(k.title()));
+        g->setScatterStyle(origin_marker(c.origin, color));
+        legend_for_class = true;
+      } else {
+        g->removeFromLegend();
+      }
+      auto* label = new QCPItemText(&plot);
+      label->position->setCoords(*c.power_w, *c.throughput_per_s);
+      label->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
+      label->setPadding(QMargins(6, 0, 0, 2));
+      label->setFont(QFont(plot.font().family(), 7));
+      label->setText(QString::fromStdString(c.platform));
+      xmax = std::max(xmax, *c.power_w);
+      ymin = std::min(ymin, *c.throughput_per_s);
+      ymax = std::max(ymax, *c.throughput_per_s);
+    }
+  }
+  // Legend entries for the origins, in grey, drawn nowhere (no data).
+  for (DataOrigin o : {DataOrigin::Measured, DataOrigin::Reconstructed, DataOrigin::Published}) {
+    QCPGraph* g = plot.addGraph();
+    g->setLineStyle(QCPGraph::lsNone);
+    g->setScatterStyle(origin_marker(o, QColor(90, 90, 90)));
+    g->setName(QObject::tr("origin: %1").arg(origin_name(o)));
+  }
+  if (ymin > ymax) ymin = 0.1, ymax = 10;
+  plot.xAxis->setRange(0, xmax * 1.35);
+  plot.yAxis->setRange(ymin / 2, ymax * 3);
+  plot.replot();
+  return left_out.isEmpty() ? QString()
+                            : QObject::tr("Not drawn (no power or rate): %1").arg(left_out.join(QStringLiteral("; ")));
+}
+
+QImage render_candidates(std::span<const CandidateClass> classes, int width, int height, QString* note) {
+  QCustomPlot plot;
+  plot.resize(width, height);
+  const QString n = draw_candidates(plot, classes);
+  if (note) *note = n;
+  return plot.toPixmap(width, height).toImage();
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// One MLPerf Inference result as a submission folder holds it: results/<system>/<network>/<scenario>/performance/
+// run_1/mlperf_log_summary.txt is the file imported; what sits around it is read when present:
+//   run_1/mlperf_log_detail.txt      LoadGen version, test date, query count, power window (loadgen_detail.h)
+//   run_1/spl.txt                    the PTDaemon log of a power submission: mean power over LoadGen's power window
+//                                    and the energy per query and per sample (power/ptd_log.h reads it)
+//   systems/<system>.json            accelerator, host processor, framework, OS, notes, division, submitter
+//   measurements/<system>/<network>/<scenario>/*.json   weight and input data types (the precision)
+// A lab's own LoadGen run (just the summary and detail, anywhere) imports too. The result becomes one ResultSet
+// (source_format "mlperf-loadgen") whose measurements are in SI units (latencies in s, rates in 1/s, energy in J,
+// power in W), named "<network> <scenario>", with every stated condition in the provenance settings.
+// Importing a folder walks it: accuracy runs, power ranging runs and compliance (audit) runs are not results and
+// are passed over (their summaries sniff as no format), and spl.txt files import on their own as power traces.
+#include <string>
+
+#include "common/importer.h"
+#include "mlperf/loadgen_summary.h"
+
+namespace bs {
+
+class MlperfLoadgenImporter final : public Importer {
+ public:
+  std::string_view id() const override { return "mlperf-loadgen"; }
+  std::string_view description() const override { return "MLPerf Inference LoadGen result (mlperf_log_summary.txt)"; }
+  int sniff(std::string_view head, std::string_view path) const override;
+  bool usual_extension(std::string_view path) const override;
+  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                    const CancelToken& cancel) const override;
+};
+
+// Measurement metric names, shared with the library and the views.
+namespace mlperf_metric {
+inline constexpr const char* kResult = "result";  // the scenario's headline metric, in its SI unit
+inline constexpr const char* kMeanLatency = "mean latency";
+inline constexpr const char* kMinLatency = "min latency";
+inline constexpr const char* kMaxLatency = "max latency";
+inline constexpr const char* kQps = "queries per second";  // without LoadGen overhead where stated
+inline constexpr const char* kSamplesPerSecond = "samples per second";
+inline constexpr const char* kMeanPower = "mean power";
+inline constexpr const char* kEnergyPerQuery = "energy per query";
+inline constexpr const char* kEnergyPerSample = "energy per sample";
+}  // namespace mlperf_metric
+
+// The summary's text (and, optionally, its companions' texts) to a batch; `file` names the summary in errors.
+// Used by the importer, the tests and the fuzz target.
+struct MlperfCompanions {
+  std::string detail_text, detail_file;
+  std::string spl_text, spl_file;
+  std::string system_json, system_file;
+  std::string measurements_json, measurements_file;
+  std::string network, system;  // from the folder layout; empty when the summary is not in one
+};
+ImportBatch parse_mlperf_summary(const std::string& text, const std::string& file, const MlperfCompanions& with = {},
+                                 const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+
+}  // namespace bs

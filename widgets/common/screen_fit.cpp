@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "common/screen_fit.h"
+
+#include <algorithm>
+
+namespace bs::ui {
+
+QRect fit_to_screen(const QRect& window, const QMargins& frame, const QRect& available, const QSize& minimum) {
+  if (available.contains(window.marginsAdded(frame))) return window;
+  const QSize room = available.marginsRemoved(frame).size();
+  const QSize size = window.size().boundedTo(room).expandedTo(minimum.boundedTo(room));
+  // The frame inside the available area; where it cannot fit, its top-left corner (the title bar) stays on screen.
+  QRect outer(window.topLeft() - QPoint(frame.left(), frame.top()), size.grownBy(frame));
+  outer.moveLeft(
+      std::clamp(outer.left(), available.left(), std::max(available.left(), available.right() + 1 - outer.width())));
+  outer.moveTop(
+      std::clamp(outer.top(), available.top(), std::max(available.top(), available.bottom() + 1 - outer.height())));
+  return outer.marginsRemoved(frame);
+}
+
+}  // namespace bs::ui

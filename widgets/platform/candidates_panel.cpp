@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "platform/candidates_panel.h"
+
+#include <qcustomplot.h>
+#include <QFile>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include "candidates_figure.h"
+
+namespace bs::ui {
+
+QString origin_marker_text(DataOrigin origin) {
+  switch (origin) {
+    case DataOrigin::Measured:
+      return QStringLiteral("● measured");
+    case DataOrigin::Reconstructed:
+      return QStringLiteral("■ reconstructed");
+    case DataOrigin::Published:
+      return QStringLiteral("◆ published");
+    case DataOrigin::Unknown:
+      break;
+  }
+  return QStringLiteral("? unknown");
+}
+
+CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
+  spec_ = new QLineEdit(this);
+  spec_->setObjectName(QStringLiteral("library_selection"));
+  spec_->setPlaceholderText(tr("library computers, e.g. orin,pi5"));
+  spec_->setToolTip(
+      tr("Computers from the library of published results (ids or aliases, comma separated), or "
+         "result ids: `benchscope-cli library list` lists them"));
+  computers_ = new QToolButton(this);
+  computers_->setText(tr("Add from library ▾"));
+  computers_->setPopupMode(QToolButton::InstantPopup);
+  auto* menu = new QMenu(computers_);
+  const BundledLibrary& lib = bundled_library();
+  for (const LibraryComputer& c : lib.library.computers) {
+    QAction* a = menu->addAction(QString::fromStdString(c.name));
+    a->setCheckable(true);
+    const QString id = QString::fromStdString(c.aliases.empty() ? c.id : c.aliases.front());
+    connect(a, &QAction::toggled, this, [this, id](bool on) {
+      QStringList words = spec_->text().split(',', Qt::SkipEmptyParts);
+      for (QString& w : words) w = w.trimmed();
+      words.removeAll(id);
+      if (on) words << id;
+      set_selection(words.join(','));
+    });
+  }
+  computers_->setMenu(menu);
+  auto* export_csv = new QPushButton(tr("Export CSV…"), this);
+  note_ = new QLabel(this);
+  note_->setWordWrap(true);
+  if (!lib.error.empty())
+    note_->setText(tr("The library could not be loaded: %1").arg(QString::fromStdString(lib.error)));
+
+  table_ = new QTableWidget(this);
+  table_->setObjectName(QStringLiteral("candidates"));
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->verticalHeader()->setVisible(false);
+  table_->setWordWrap(true);
+  table_->horizontalHeader()->setStretchLastSection(true);
+  plot_ = new QCustomPlot(this);
+  plot_->setMinimumWidth(320);
+
+  auto* top = new QHBoxLayout;
+  top->addWidget(new QLabel(tr("Candidates from the library:"), this));
+  top->addWidget(spec_, 1);
+  top->addWidget(computers_);
+  top->addWidget(export_csv);
+  auto* split = new QSplitter(Qt::Horizontal, this);
+  split->addWidget(table_);
+  split->addWidget(plot_);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addLayout(top);
+  layout->addWidget(note_);
+  layout->addWidget(split, 1);
+  connect(spec_, &QLineEdit::editingFinished, this, &CandidatesPanel::recompute);
+  connect(export_csv, &QPushButton::clicked, this, &CandidatesPanel::export_csv);
+}
+
+void CandidatesPanel::set_own(std::vector<PlatformRow> rows, std::vector<PipelineRun> pipelines,
+                              std::vector<DnnRun> dnn, std::vector<ResultSet> result_sets,
+                              const Constraints& constraints, const ComparisonOptions& options) {
+  rows_ = std::move(rows);
+  pipelines_ = std::move(pipelines);
+  dnn_ = std::move(dnn);
+  sets_ = std::move(result_sets);
+  constraints_ = constraints;
+  options_ = options;
+  recompute();
+}
+
+void CandidatesPanel::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  plot_->replot();
+}
+
+void CandidatesPanel::set_selection(const QString& spec) {
+  spec_->setText(spec);
+  recompute();
+}
+
+QString CandidatesPanel::selection() const { return spec_->text().trimmed(); }
+
+void CandidatesPanel::recompute() {
+  const BundledLibrary& lib = bundled_library();
+  CandidateInputs in;
+  in.platforms = rows_;
+  in.pipelines = pipelines_;
+  in.dnn_runs = dnn_;
+  in.result_sets = sets_;
+  in.lib = &lib.library;
+  QString note;
+  try {
+    in.library = select_library(lib.library, selection().toStdString());
+  } catch (const std::invalid_argument& e) {
+    note = QString::fromStdString(e.what());
+  }
+  classes_ = rank_candidates(in, constraints_, options_);
+  peaks_ = peak_candidates(in);
+  fill();
+  const QString plot_note = draw_candidates(*plot_, classes_);
+  if (lib.error.empty())
+    note_->setText((note.isEmpty()
+                        ? tr("%n published result(s) from the library beside the own platforms; ranked only within "
+                             "one network, scenario and precision.",
+                             "", static_cast<int>(in.library.size()))
+                        : note) +
+                   (plot_note.isEmpty() ? QString() : QStringLiteral(" ") + plot_note));
+}
+
+void CandidatesPanel::fill() {
+  const bool constrained = constraints_.power_budget_w || constraints_.min_fps || constraints_.min_runtime_h;
+  const ExportTable t = candidates_table(classes_, constrained);
+  QStringList header;
+  for (std::size_t c = 0; c + 1 < t.header.size(); ++c) header << QString::fromStdString(t.header[c]);
+  table_->clear();
+  table_->setColumnCount(header.size());
+  table_->setHorizontalHeaderLabels(header);
+  table_->setRowCount(static_cast<int>(t.rows.size()));
+  std::size_t row = 0;
+  const QColor published_tint(232, 240, 250);
+  for (const CandidateClass& k : classes_)
+    for (const Candidate& c : k.rows) {
+      const auto& cells = t.rows[row];
+      QString tip = tr("Source: %1").arg(QString::fromStdString(cells.back()));
+      if (!c.power_how.empty()) tip += tr("\nPower: %1").arg(QString::fromStdString(c.power_how));
+      if (!c.software.empty()) tip += tr("\nSoftware: %1").arg(QString::fromStdString(c.software));
+      if (!c.flags.empty()) tip = QString::fromStdString(flags_text(c.flags)) + "\n\n" + tip;
+      for (std::size_t col = 0; col + 1 < cells.size(); ++col) {
+        QString text = QString::fromStdString(cells[col]);
+        if (col == 3) text = origin_marker_text(c.origin);
+        auto* item = new QTableWidgetItem(text);
+        item->setToolTip(tip);
+        if (col >= 4 && col <= 8) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        if (c.origin == DataOrigin::Published) {
+          QFont f = item->font();
+          f.setItalic(true);
+          item->setFont(f);
+          item->setBackground(published_tint);
+        }
+        if (c.recommended) {
+          QFont f = item->font();
+          f.setBold(true);
+          item->setFont(f);
+        }
+        table_->setItem(static_cast<int>(row), static_cast<int>(col), item);
+      }
+      ++row;
+    }
+  table_->resizeColumnsToContents();
+  for (int c = 0; c < table_->columnCount(); ++c) table_->setColumnWidth(c, std::min(table_->columnWidth(c), 260));
+  table_->resizeRowsToContents();
+}
+
+void CandidatesPanel::export_csv() {
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Export candidates"), QStringLiteral("candidates.csv"), tr("CSV (*.csv)"));
+  if (path.isEmpty()) return;
+  const bool constrained = constraints_.power_budget_w || constraints_.min_fps || constraints_.min_runtime_h;
+  const std::string text = to_csv(candidates_table(classes_, constrained));
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) ||
+      f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
+    QMessageBox::warning(this, tr("Export candidates"), tr("Cannot write %1").arg(path));
+}
+
+}  // namespace bs::ui
