@@ -79,16 +79,20 @@ void print_demosaic_bench(std::ostream& out, int frames, int all_threads) {
   const cv::Mat raw8 = mosaic(scene8, BayerPattern::BGGR), raw16 = mosaic(scene16, BayerPattern::BGGR);
   cv::Mat dst_ocv, dst_ours;
 
+  // Which fast path this build has: Highway's best instruction set here, or the portable scalar one.
+  const std::string engine = demosaic_simd_uses_highway()
+                                 ? "Highway " + std::string(demosaic_simd_target()) + " (run-time choice;"
+                                 : std::string("portable C++ (built without Highway;");
   char line[1024];
   std::snprintf(
       line, sizeof line,
-      "\nDemosaic, 1280x1024 BGGR mosaic -> BGR. BenchScope: Highway %s (run-time choice; equal to the scalar "
+      "\nDemosaic, 1280x1024 BGGR mosaic -> BGR. BenchScope: %s equal to the scalar "
       "reference pixel for pixel, tests compare), row stripes on OpenCV's pool; OpenCV %s: cvtColor "
       "COLOR_BayerRG2BGR (bilinear), its pool = %s with %d threads here.\n"
       "ms per frame: mean +- SD (n frames), median and minimum, in blocks of 10 (after 2 uncounted) in alternating "
       "order. ratio = BenchScope / OpenCV of the same threads and depth, of the medians (the targets are "
       "judged on it: a shared machine's preemptions inflate means and SDs) and, in brackets, of the means.\n",
-      demosaic_simd_target(), CV_VERSION, opencv_parallel_framework().c_str(), all_threads);
+      engine.c_str(), CV_VERSION, opencv_parallel_framework().c_str(), all_threads);
   out << line << "load average before: " << load_average() << "\n\n";
   std::snprintf(line, sizeof line, "%-7s %-6s %-17s %-52s %-52s %-16s %s\n", "threads", "depth", "method",
                 "BenchScope, ms/frame", "OpenCV bilinear, ms/frame", "ratio", "target");

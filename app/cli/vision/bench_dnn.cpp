@@ -72,9 +72,12 @@ struct Network {
   std::string published_note;
 };
 
-Network built_in(DnnArchitecture a, std::optional<cv::Size> input) {
+// `input`: the --input size, empty for the network's own.
+Network built_in(DnnArchitecture a, cv::Size input) {
   constexpr unsigned kSeed = 1;
-  const cv::Size size = input.value_or(a == DnnArchitecture::MobileNetSsd ? cv::Size(300, 300) : cv::Size(640, 640));
+  const cv::Size size = !input.empty()                       ? input
+                        : a == DnnArchitecture::MobileNetSsd ? cv::Size(300, 300)
+                                                             : cv::Size(640, 640);
   BuiltNetwork b;
   try {
     b = build_architecture(a, size, kSeed);
@@ -96,7 +99,7 @@ Network built_in(DnnArchitecture a, std::optional<cv::Size> input) {
   return n;
 }
 
-Network from_files(const std::string& spec, std::optional<cv::Size> input) {
+Network from_files(const std::string& spec, cv::Size input) {
   const auto comma = spec.find(',');
   const std::string model = spec.substr(0, comma), config = comma == std::string::npos ? "" : spec.substr(comma + 1);
   for (const std::string& f : {model, config})
@@ -105,7 +108,7 @@ Network from_files(const std::string& spec, std::optional<cv::Size> input) {
   Network n;
   n.net = read_detector_network(model, config);
   DnnOptions o;
-  if (input) o.input_size = *input;
+  if (!input.empty()) o.input_size = input;
   const DnnDetectorInfo info = probe_detector_network(n.net, o, model);
   n.model = std::filesystem::path(model).filename().string();
   n.hash = file_content_hash(model) + (config.empty() ? "" : "+" + file_content_hash(config));
@@ -239,8 +242,10 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     throw UsageError("--batch must be a whole number from 1 to 256");
   const int runs = static_cast<int>(runs_arg), batch = static_cast<int>(batch_arg);
   constexpr int kWarmup = 2;
-  const std::optional<cv::Size> input =
-      args.value("--input") ? std::optional(parse_size(*args.value("--input"))) : std::nullopt;
+  // An empty size, not std::optional<cv::Size>, for "not given": GCC 11 (JetPack 6's compiler) reports copies of
+  // that optional as reads of an uninitialised payload at -O2 (-Wmaybe-uninitialized, a false positive), and -Werror
+  // stops the build. parse_size never returns an empty size.
+  const cv::Size input = args.value("--input") ? parse_size(*args.value("--input")) : cv::Size();
   const std::string backend_arg = args.value("--backend").value_or("all");
   std::vector<DnnTarget> targets;
   if (backend_arg == "all")

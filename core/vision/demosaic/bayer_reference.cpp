@@ -52,6 +52,13 @@ void check_demosaic_input(const cv::Mat& raw) {
     throw std::invalid_argument("demosaic needs a single-channel 8- or 16-bit mosaic");
   if (raw.rows < 4 || raw.cols < 4) throw std::invalid_argument("demosaic needs at least 4x4 pixels");
 }
+
+void demosaic_reference_into(const cv::Mat& raw, BayerPattern p, bool mhc, cv::Mat& out) {
+  if (raw.depth() == CV_8U)
+    demosaic_rows_reference<std::uint8_t>(raw, p, mhc, out);
+  else
+    demosaic_rows_reference<std::uint16_t>(raw, p, mhc, out);
+}
 }  // namespace detail
 
 cv::Mat demosaic_reference(const cv::Mat& raw, BayerPattern p, DemosaicMethod m) {
@@ -59,11 +66,7 @@ cv::Mat demosaic_reference(const cv::Mat& raw, BayerPattern p, DemosaicMethod m)
   if (m != DemosaicMethod::Bilinear && m != DemosaicMethod::MalvarHeCutler)
     throw std::invalid_argument("demosaic_reference defines only BenchScope's bilinear and Malvar-He-Cutler");
   cv::Mat out(raw.size(), raw.depth() == CV_8U ? CV_8UC3 : CV_16UC3);
-  const bool mhc = m == DemosaicMethod::MalvarHeCutler;
-  if (raw.depth() == CV_8U)
-    demosaic_rows_reference<std::uint8_t>(raw, p, mhc, out);
-  else
-    demosaic_rows_reference<std::uint16_t>(raw, p, mhc, out);
+  detail::demosaic_reference_into(raw, p, m == DemosaicMethod::MalvarHeCutler, out);
   return out;
 }
 

@@ -15,6 +15,9 @@ cv::Mat demosaic_reference(const cv::Mat& raw, BayerPattern p, DemosaicMethod m)
 namespace detail {
 // The checks demosaic() and demosaic_reference() share: type and minimum size, naming the reason.
 void check_demosaic_input(const cv::Mat& raw);
+// The reference itself into an allocated `out` (CV_8UC3 / CV_16UC3, raw's size; raw checked): what
+// demosaic_reference() returns, and the whole fast path of a build without Highway (bayer_portable.cpp).
+void demosaic_reference_into(const cv::Mat& raw, BayerPattern p, bool mhc, cv::Mat& out);
 }  // namespace detail
 
 }  // namespace bs::vision

@@ -4,7 +4,7 @@
 // the same source builds NEON on an ARM robot computer.
 //
 // Why the vector code is bit-exact with the scalar definition (bayer_pixel.h): it evaluates the same integer
-// expressions without overflow. Bilinear stays in the sample type: AverageRound is (a + b + 1) >> 1 exactly, the
+// expressions without overflow. Bilinear stays in the sample type: average_round is (a + b + 1) >> 1 exactly, the
 // mean of four is rebuilt exactly from two of them (mean4_rounded), and means need no clamp. Malvar-He-Cutler
 // works in signed lanes twice as wide as a sample (int16 for 8-bit mosaics: the largest magnitude is
 // 28 * 255 + 8 = 7148; int32 for 16-bit), shifts right arithmetically as C++20's >> does on negative ints, and
@@ -54,6 +54,19 @@ HWY_BEFORE_NAMESPACE();
 namespace bs::vision::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// (a + b + 1) >> 1 in the sample type. Highway's AverageRound is that on every target but SVE and SVE_256 (SVE
+// without SVE2, e.g. Graviton 3, A64FX), where Highway (1.0.3 and, checked in its sources, up to 1.2) computes
+// (a + b + 1) >> 1 in the lane type, which wraps when a + b + 1 exceeds the lane's maximum: the aarch64 test under
+// qemu found wrong pixels there. (a | b) - ((a ^ b) >> 1) is the same rounded mean and cannot overflow.
+template <class V>
+HWY_INLINE V average_round(V a, V b) {
+#if HWY_TARGET == HWY_SVE || HWY_TARGET == HWY_SVE_256
+  return hn::Sub(hn::Or(a, b), hn::ShiftRight<1>(hn::Xor(a, b)));
+#else
+  return hn::AverageRound(a, b);
+#endif
+}
+
 // (a + b + c + d + 2) >> 2 in the sample type, without widening: from the rounded pair means ab = (a + b + 1) >> 1
 // and cd, it is (ab + cd + 1) >> 1 when both pair sums are even, else (ab + cd) >> 1, i.e. one less when ab + cd
 // is odd. (With s1 = a + b, s2 = c + d: 2 ab + 2 cd = s1 + s2 + odd1 + odd2, so (s1 + s2 + 2) / 4 =
@@ -62,11 +75,11 @@ template <class D, class V>
 HWY_INLINE V mean4_rounded(D d, V ab, V cd, V a, V b, V c, V e) {
   const V odd_pair = hn::Or(hn::Xor(a, b), hn::Xor(c, e));
   const V correction = hn::And(hn::And(odd_pair, hn::Xor(ab, cd)), hn::Set(d, 1));
-  return hn::Sub(hn::AverageRound(ab, cd), correction);
+  return hn::Sub(average_round(ab, cd), correction);
 }
 
 // Bilinear: Lanes(d) pixels of one row from column c on (`green` marks the lanes on green sites), computed in
-// the sample type itself (AverageRound is (a + b + 1) >> 1 exactly), so a vector holds as many pixels as fit.
+// the sample type itself (average_round is (a + b + 1) >> 1 exactly), so a vector holds as many pixels as fit.
 // `x` is the colour (0 B or 2 R) of the row's other sites, `2 - x` the
 // one measured only in the rows above and below. Writes BGR to dst + 3 c.
 template <class D, class M, class T>
@@ -79,9 +92,9 @@ HWY_INLINE void bilinear_vector(D d, const T* const row[5], int c, M green, int 
   const V n = hn::LoadU(d, up), s = hn::LoadU(d, down);
   const V nw = hn::LoadU(d, up - 1), ne = hn::LoadU(d, up + 1), sw = hn::LoadU(d, down - 1),
           se = hn::LoadU(d, down + 1);
-  const V we = hn::AverageRound(w, e), ns = hn::AverageRound(n, s);  // at green sites: x and 2 - x
-  const V cross = mean4_rounded(d, we, ns, w, e, n, s);              // at x sites: green
-  const V top = hn::AverageRound(nw, ne), bottom = hn::AverageRound(sw, se);
+  const V we = average_round(w, e), ns = average_round(n, s);  // at green sites: x and 2 - x
+  const V cross = mean4_rounded(d, we, ns, w, e, n, s);        // at x sites: green
+  const V top = average_round(nw, ne), bottom = average_round(sw, se);
   const V diagonal = mean4_rounded(d, top, bottom, nw, ne, sw, se);  // at x sites: 2 - x
   const V ch_g = hn::IfThenElse(green, v, cross);
   const V ch_x = hn::IfThenElse(green, we, v);
@@ -100,46 +113,51 @@ static_assert(std::endian::native == std::endian::little, "split_load and merge 
 // even offset from the load, the high half the one after it (little-endian). So every vector below holds one
 // site kind only: the "first" lanes (columns c, c + 2, ...) and the "second" (c + 1, c + 3, ...), each computing
 // just the two formulas its sites need, and the results are merged back the same way (low | high << bits).
-template <class DW>
-struct SplitRow {
-  hn::Vec<DW> first, second;
-};
-
+// Vectors live in locals and arguments only, never in structs or lambda captures: SVE vectors (Highway's SVE and
+// SVE2 targets on aarch64) are sizeless types, which C++ allows nowhere else.
 template <class DW, class T>
-HWY_INLINE SplitRow<DW> split_load(DW dw, const T* p) {
+HWY_INLINE hn::Vec<hn::RebindToUnsigned<DW>> load_pairs(DW /*dw*/, const T* p) {
   const hn::RebindToUnsigned<DW> du;
   const hn::Repartition<T, decltype(du)> dt;
-  constexpr int kBits = 8 * sizeof(T);
-  const auto pairs = hn::BitCast(du, hn::LoadU(dt, p));
-  return {hn::BitCast(dw, hn::And(pairs, hn::Set(du, static_cast<hn::TFromD<decltype(du)>>((1u << kBits) - 1)))),
-          hn::BitCast(dw, hn::ShiftRight<kBits>(pairs))};
+  return hn::BitCast(du, hn::LoadU(dt, p));
 }
 
-// The five neighbourhood sums of one site kind, and its own sample.
-template <class V>
-struct Taps {
-  V v, we, ns, d, n2, w2;
-};
+// The sample at the even offset of each pair (p[0], p[2], ...), widened.
+template <class DW, class VU>
+HWY_INLINE hn::Vec<DW> first_of(DW dw, VU pairs) {
+  const hn::RebindToUnsigned<DW> du;
+  constexpr int kBits = 4 * sizeof(hn::TFromD<DW>);
+  return hn::BitCast(dw, hn::And(pairs, hn::Set(du, static_cast<hn::TFromD<decltype(du)>>((1u << kBits) - 1))));
+}
+
+// The sample at the odd offset of each pair (p[1], p[3], ...), widened.
+template <class DW, class VU>
+HWY_INLINE hn::Vec<DW> second_of(DW dw, VU pairs) {
+  constexpr int kBits = 4 * sizeof(hn::TFromD<DW>);
+  return hn::BitCast(dw, hn::ShiftRight<kBits>(pairs));
+}
 
 // Missing channels at green sites: x (the row's other colour) and y (the column's), times 16 before the shift.
+// The taps of one site kind: v its own sample, we / ns the sums of its west + east / north + south neighbours,
+// d of its four diagonal ones, n2 / w2 of the samples two rows / two columns away.
 template <class DW, class V>
-HWY_INLINE void mhc_green(DW dw, const Taps<V>& t, V& x, V& y) {
+HWY_INLINE void mhc_green(DW dw, V v, V we, V ns, V d, V n2, V w2, V& x, V& y) {
   // 10 v - 2 D + 8 shared; x: + 8 (W + E) - 2 (W2 + E2) + (N2 + S2); y: the same turned by 90 degrees.
   const V base =
-      hn::Sub(hn::Add(hn::Add(hn::ShiftLeft<3>(t.v), hn::ShiftLeft<1>(t.v)), hn::Set(dw, 8)), hn::ShiftLeft<1>(t.d));
-  x = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(t.we)), hn::ShiftLeft<1>(t.w2)), t.n2));
-  y = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(t.ns)), hn::ShiftLeft<1>(t.n2)), t.w2));
+      hn::Sub(hn::Add(hn::Add(hn::ShiftLeft<3>(v), hn::ShiftLeft<1>(v)), hn::Set(dw, 8)), hn::ShiftLeft<1>(d));
+  x = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(we)), hn::ShiftLeft<1>(w2)), n2));
+  y = hn::ShiftRight<4>(hn::Add(hn::Sub(hn::Add(base, hn::ShiftLeft<3>(ns)), hn::ShiftLeft<1>(n2)), w2));
 }
 
 // Missing channels at red/blue sites: green, and y (the colour measured diagonally).
 template <class DW, class V>
-HWY_INLINE void mhc_colour(DW dw, const Taps<V>& t, V& g, V& y) {
-  const V v4 = hn::ShiftLeft<2>(t.v), nw2 = hn::Add(t.n2, t.w2);
+HWY_INLINE void mhc_colour(DW dw, V v, V we, V ns, V d, V n2, V w2, V& g, V& y) {
+  const V v4 = hn::ShiftLeft<2>(v), nw2 = hn::Add(n2, w2);
   // (4 v + 2 (N + S + W + E) - (N2 + S2) - (W2 + E2) + 4) >> 3
-  g = hn::ShiftRight<3>(hn::Sub(hn::Add(hn::Add(v4, hn::ShiftLeft<1>(hn::Add(t.we, t.ns))), hn::Set(dw, 4)), nw2));
+  g = hn::ShiftRight<3>(hn::Sub(hn::Add(hn::Add(v4, hn::ShiftLeft<1>(hn::Add(we, ns))), hn::Set(dw, 4)), nw2));
   // (12 v + 4 D - 3 (N2 + S2 + W2 + E2) + 8) >> 4
   y = hn::ShiftRight<4>(
-      hn::Sub(hn::Add(hn::Add(hn::Add(hn::ShiftLeft<1>(v4), v4), hn::ShiftLeft<2>(t.d)), hn::Set(dw, 8)),
+      hn::Sub(hn::Add(hn::Add(hn::Add(hn::ShiftLeft<1>(v4), v4), hn::ShiftLeft<2>(d)), hn::Set(dw, 8)),
               hn::Add(nw2, hn::ShiftLeft<1>(nw2))));
 }
 
@@ -161,39 +179,46 @@ template <class DW, class T>
 HWY_INLINE void mhc_vector(DW dw, const T* const row[5], int c, bool first_green, int x, T* dst) {
   using V = hn::Vec<DW>;
   const hn::Repartition<T, hn::RebindToUnsigned<DW>> dt;
-  // Suffixes: 0 = the pair at columns (c + 2k, c + 2k + 1), m = the pair before it, p = the one after.
-  const SplitRow<DW> mid_m = split_load(dw, row[2] + c - 2), mid0 = split_load(dw, row[2] + c),
-                     mid_p = split_load(dw, row[2] + c + 2);
-  const SplitRow<DW> up0 = split_load(dw, row[1] + c), down0 = split_load(dw, row[3] + c);
-  const V up_m = split_load(dw, row[1] + c - 1).first,
-          down_m = split_load(dw, row[3] + c - 1).first;  // column c + 2k - 1
-  const V up_p = split_load(dw, row[1] + c + 1).second,
-          down_p = split_load(dw, row[3] + c + 1).second;  // column c + 2k + 2
-  const SplitRow<DW> up2 = split_load(dw, row[0] + c), down2 = split_load(dw, row[4] + c);
-  // Column c + 2k: west is the second lane of the pair before, east the second of this pair.
-  const Taps<V> first{mid0.first,
-                      hn::Add(mid_m.second, mid0.second),
-                      hn::Add(up0.first, down0.first),
-                      hn::Add(hn::Add(up_m, up0.second), hn::Add(down_m, down0.second)),
-                      hn::Add(up2.first, down2.first),
-                      hn::Add(mid_m.first, mid_p.first)};
-  // Column c + 2k + 1: west is the first lane of this pair, east the first of the pair after.
-  const Taps<V> second{mid0.second,
-                       hn::Add(mid0.first, mid_p.first),
-                       hn::Add(up0.second, down0.second),
-                       hn::Add(hn::Add(up0.first, up_p), hn::Add(down0.first, down_p)),
-                       hn::Add(up2.second, down2.second),
-                       hn::Add(mid_m.second, mid_p.second)};
-  const Taps<V>& green = first_green ? first : second;
-  const Taps<V>& colour = first_green ? second : first;
+  // Pairs of samples; suffixes: 0 = the pair at columns (c + 2k, c + 2k + 1), m = the pair before it, p = the one
+  // after; up / down are rows r -+ 1, up2 / down2 rows r -+ 2.
+  const auto mid_m = load_pairs(dw, row[2] + c - 2), mid0 = load_pairs(dw, row[2] + c),
+             mid_p = load_pairs(dw, row[2] + c + 2);
+  const auto up0 = load_pairs(dw, row[1] + c), down0 = load_pairs(dw, row[3] + c);
+  const V up_m = first_of(dw, load_pairs(dw, row[1] + c - 1)),
+          down_m = first_of(dw, load_pairs(dw, row[3] + c - 1));  // column c + 2k - 1
+  const V up_p = second_of(dw, load_pairs(dw, row[1] + c + 1)),
+          down_p = second_of(dw, load_pairs(dw, row[3] + c + 1));  // column c + 2k + 2
+  const auto up2 = load_pairs(dw, row[0] + c), down2 = load_pairs(dw, row[4] + c);
+  // Taps of column c + 2k (a): west is the second lane of the pair before, east the second of this pair.
+  const V a_v = first_of(dw, mid0);
+  const V a_we = hn::Add(second_of(dw, mid_m), second_of(dw, mid0));
+  const V a_ns = hn::Add(first_of(dw, up0), first_of(dw, down0));
+  const V a_d = hn::Add(hn::Add(up_m, second_of(dw, up0)), hn::Add(down_m, second_of(dw, down0)));
+  const V a_n2 = hn::Add(first_of(dw, up2), first_of(dw, down2));
+  const V a_w2 = hn::Add(first_of(dw, mid_m), first_of(dw, mid_p));
+  // Taps of column c + 2k + 1 (b): west is the first lane of this pair, east the first of the pair after.
+  const V b_v = second_of(dw, mid0);
+  const V b_we = hn::Add(first_of(dw, mid0), first_of(dw, mid_p));
+  const V b_ns = hn::Add(second_of(dw, up0), second_of(dw, down0));
+  const V b_d = hn::Add(hn::Add(first_of(dw, up0), up_p), hn::Add(first_of(dw, down0), down_p));
+  const V b_n2 = hn::Add(second_of(dw, up2), second_of(dw, down2));
+  const V b_w2 = hn::Add(second_of(dw, mid_m), second_of(dw, mid_p));
+  // References pick the green and the colour kind without copying (references to sizeless types are fine).
+  const V& g_v = first_green ? a_v : b_v;
+  const V& c_v = first_green ? b_v : a_v;
   V green_x, green_y, colour_g, colour_y;
-  mhc_green(dw, green, green_x, green_y);
-  mhc_colour(dw, colour, colour_g, colour_y);
-  const auto in_order = [&](V at_green, V at_colour) HWY_ATTR {
+  if (first_green) {
+    mhc_green(dw, a_v, a_we, a_ns, a_d, a_n2, a_w2, green_x, green_y);
+    mhc_colour(dw, b_v, b_we, b_ns, b_d, b_n2, b_w2, colour_g, colour_y);
+  } else {
+    mhc_green(dw, b_v, b_we, b_ns, b_d, b_n2, b_w2, green_x, green_y);
+    mhc_colour(dw, a_v, a_we, a_ns, a_d, a_n2, a_w2, colour_g, colour_y);
+  }
+  const auto in_order = [dw, dt, first_green](V at_green, V at_colour) HWY_ATTR {
     return first_green ? merge(dw, dt, at_green, at_colour) : merge(dw, dt, at_colour, at_green);
   };
-  const auto ch_g = in_order(green.v, colour_g);
-  const auto ch_x = in_order(green_x, colour.v);
+  const auto ch_g = in_order(g_v, colour_g);
+  const auto ch_x = in_order(green_x, c_v);
   const auto ch_y = in_order(green_y, colour_y);
   T* const out = dst + 3 * c;
   if (x == 0)
@@ -310,6 +335,8 @@ void demosaic_simd(const cv::Mat& raw, BayerPattern p, bool mhc, cv::Mat& out) {
       },
       stripes);
 }
+
+bool demosaic_simd_uses_highway() { return true; }
 
 const char* demosaic_simd_target() { return HWY_DYNAMIC_DISPATCH(detail::target_name)(); }
 

@@ -16,7 +16,12 @@ namespace bs::vision {
 // raw: CV_8UC1 or CV_16UC1, at least 4x4 (demosaic() checks); out: allocated, CV_8UC3 or CV_16UC3, same size.
 void demosaic_simd(const cv::Mat& raw, BayerPattern p, bool mhc, cv::Mat& out);
 
-// The instruction set demosaic_simd() runs on this CPU, as Highway names it ("AVX2", "AVX3", "NEON", ...).
+// Whether this build vectorises with Highway (bayer_simd.cpp); without it (no Highway >= 1.0 at configure time, or
+// -DBENCHSCOPE_HIGHWAY=OFF) the fast path is the scalar definition in row stripes (bayer_portable.cpp).
+bool demosaic_simd_uses_highway();
+
+// The instruction set demosaic_simd() runs on this CPU, as Highway names it ("AVX2", "AVX3", "NEON", "SVE2", ...),
+// or "portable" in a build without Highway.
 const char* demosaic_simd_target();
 
 // For tests, which compare every compiled copy with the reference: the instruction sets this binary has a copy

@@ -65,6 +65,18 @@ class TestCeilings : public QObject {
       for (int i = 0; i < n; ++i) QCOMPARE(acc[i], 2.0f + (static_cast<float>(i) - 2.0f) / 8.0f);
     }
   }
+  // On ARM64 NEON has FMA, so fma_runs_exactly_the_counted_steps verified the FMA kernel's work there (not only its
+  // refusal, as for SSE4.1 and the generic x86 code).
+  void arm64_has_an_fma_ceiling() {
+#if defined(__aarch64__)
+    QVERIFY(ceiling_fma_chains(Isa::Generic) > 0);
+    QCOMPARE(ceiling_lanes(Isa::Generic), 4);
+#elif defined(__FMA__)
+    QVERIFY(ceiling_fma_chains(Isa::Generic) > 0);  // built with -march=... that has FMA
+#else
+    QCOMPARE(ceiling_fma_chains(Isa::Generic), 0);  // x86's generic code has no FMA without -mfma
+#endif
+  }
   void meter_gives_finite_positive_rates_and_says_how() {
     const SimdTarget t = best_simd_target();
     CeilingMeter meter(t, 2, 0.005);  // short repetitions: this checks values, not speed

@@ -52,6 +52,22 @@ class TestRotation : public QObject {
             for (std::size_t i = 0; i < out.size(); ++i) QVERIFY2(std::abs(out[i] - ref[i]) < 1e-3, where.constData());
           }
   }
+  // The kernels the tests above compared are this CPU's own: on ARM64 the generic 128-bit code is NEON with FMA
+  // (fmla), the only target there; on x86 the generic one comes last, after the -m flag builds the CPU supports.
+  void the_targets_are_the_platforms_own() {
+    const std::vector<SimdTarget> targets = available_simd_targets();
+    QVERIFY(!targets.empty());
+#if defined(__aarch64__)
+    QCOMPARE(targets.size(), std::size_t{1});
+    QCOMPARE(targets.front().name, std::string("NEON"));
+    QCOMPARE(targets.front().isa, Isa::Generic);
+    QCOMPARE(targets.front().lanes, 4);
+    QVERIFY(targets.front().fma);
+#else
+    QCOMPARE(targets.back().isa, Isa::Generic);
+    QCOMPARE(targets.back().lanes, 4);
+#endif
+  }
   void cancellable_run_equals_advance() {
     for (const SimdTarget& t : available_simd_targets())
       for (Variant v : {Variant::Paper, Variant::Throughput}) {
