@@ -30,7 +30,9 @@ std::vector<std::string> distinct_names(const std::vector<RunIdentity>& runs) {
   for (const RunIdentity& r : runs) names.push_back(r.label.empty() ? r.base : r.base + " \xE2\x80\x94 " + r.label);
   std::map<std::string, std::vector<std::size_t>> groups;
   for (std::size_t i = 0; i < names.size(); ++i) groups[names[i]].push_back(i);
-  for (const auto& [name, members] : groups) {
+  for (const auto& group : groups) {
+    // A plain reference, not a structured binding: clang 14 (the sanitizer build) cannot capture bindings in lambdas.
+    const std::vector<std::size_t>& members = group.second;
     if (members.size() < 2) continue;
     bool same_day = true;
     for (std::size_t m : members)
