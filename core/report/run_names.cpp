@@ -69,7 +69,7 @@ std::vector<std::string> distinct_names(const std::vector<RunIdentity>& runs) {
     for (std::size_t k = 0; k < members.size(); ++k) {
       std::string a = added[k];
       if (!apart) a += (a.empty() ? "" : ", ") + std::string("run ") + std::to_string(k + 1);
-      names[members[k]] = name + (a.empty() ? "" : " (" + a + ")");
+      names[members[k]] = group.first + (a.empty() ? "" : " (" + a + ")");
     }
   }
   return names;
