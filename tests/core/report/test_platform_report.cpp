@@ -165,7 +165,7 @@ class TestPlatformReport : public QObject {
   // A section is one function in a list: a list with one more writes it where it stands.
   void sections_are_a_list() {
     auto sections = bs::report_sections();
-    QCOMPARE(sections.size(), std::size_t{5});
+    QCOMPARE(sections.size(), std::size_t{6});  // decision, details, inference, candidates, figures, sources
     sections.insert(sections.begin() + 1, [](const bs::ReportInput&, bs::ReportBuilder& b) {
       b.heading(2, "Candidates");
       b.paragraph("published results");
@@ -174,6 +174,19 @@ class TestPlatformReport : public QObject {
     const auto candidates = html.find("<h2>Candidates</h2>");
     QVERIFY(candidates != std::string::npos);
     QVERIFY(candidates > html.find("Platforms at a glance") && candidates < html.find("Platform details"));
+  }
+
+  // The library's candidates (report --library) are a section of their own: after the details, before the figures,
+  // and absent when none were asked for.
+  void candidates_section_after_details() {
+    bs::ReportInput in = two_robots();
+    QVERIFY(bs::report_html(in).find("library-candidates-marker") == std::string::npos);
+    in.candidates_html = "<div id=\"library-candidates-marker\"><h2>Candidates</h2></div>\n";
+    const std::string html = bs::report_html(in);
+    const auto at = html.find("library-candidates-marker");
+    QVERIFY(at != std::string::npos);
+    QVERIFY(at > html.find("Platform details"));
+    QVERIFY(at < html.rfind("Appendix A. Sources and provenance"));
   }
 };
 
