@@ -50,7 +50,8 @@ class CudaFusedSteps {
  private:
   std::shared_ptr<cuda::FusedCuda> kernel_;  // shared_ptr: its deleter is bound where FusedCuda is complete
   std::string device_;
-  int source_width_ = 0, source_height_ = 0, out_width_ = 0, out_height_ = 0;
+  // Read only where the build has CUDA (cuda_preprocess.cpp); clang's -Wunused-private-field sees the other build.
+  [[maybe_unused]] int source_width_ = 0, source_height_ = 0, out_width_ = 0, out_height_ = 0;
 };
 
 }  // namespace bs::vision
