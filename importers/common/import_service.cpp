@@ -73,6 +73,9 @@ namespace {
 class Target {
  public:
   explicit Target(std::string path) : path_(std::move(path)) {}
+  // Whether there is a workspace to ask yet: opening one creates the file, and an all-or-nothing import that fails
+  // must leave no workspace behind when there was none.
+  bool exists() const { return ws_ || std::filesystem::exists(path_); }
   Workspace& ws() {
     if (!ws_) {
       ws_ = std::make_unique<Workspace>(path_);
@@ -200,8 +203,9 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
         mark_duplicate(o, twin->second, {});
         continue;
       }
-      if (!batch->power_traces.empty() && !target.earlier(o.content_hash)) {
-        std::vector<std::string> known = workspace_platforms(target.ws());
+      if (!batch->power_traces.empty() && (!target.exists() || !target.earlier(o.content_hash))) {
+        std::vector<std::string> known;
+        if (target.exists()) known = workspace_platforms(target.ws());
         for (const auto& [k, b] : pending)  // logs earlier in this import, not stored yet
           for (const PowerTrace& t : b.power_traces)
             if (std::find(known.begin(), known.end(), t.platform) == known.end()) known.push_back(t.platform);

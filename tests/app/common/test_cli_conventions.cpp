@@ -92,7 +92,7 @@ class TestCliConventions : public QObject {
       if (name != "help")
         QVERIFY2(script.contains("    " + name + ") options=\"--help"), qPrintable(name + " has no options arm"));
     }
-    QVERIFY(script.contains("import) options=\"--help --copy-frames --keep-going --quiet --raw-geometry\""));
+    QVERIFY(script.contains("import) options=\"--help --copy-frames --keep-going --platform --quiet --raw-geometry\""));
     // The committed file is exactly this output, so an installed completion matches the build it came with.
     QFile committed(BENCHSCOPE_SOURCE_DIR "/resources/completion/benchscope-cli.bash");
     QVERIFY(committed.open(QIODevice::ReadOnly));
