@@ -68,8 +68,8 @@ CudaFusedSteps::CudaFusedSteps(const Lens& lens, const View& view, BayerPattern 
   int layout[4];
   for (int k = 0; k < 4; ++k) layout[k] = bayer_channel(pattern, k >> 1, k & 1);
   const std::uint8_t fill[3] = {0, 0, 0};
-  source_width_ = source.width, source_height_ = source.height;
-  out_width_ = map.cols, out_height_ = map.rows;
+  source_size_ = cv::Size(source.width, source.height);
+  out_size_ = cv::Size(map.cols, map.rows);
   kernel_ = std::make_shared<cuda::FusedCuda>(map.ptr<float>(), map.cols, map.rows, source.width, source.height, layout,
                                               fill);
   device_ = kernel_->device_name();
@@ -82,14 +82,14 @@ CudaFusedSteps::~CudaFusedSteps() = default;
 
 #if BENCHSCOPE_VISION_CUDA
 void CudaFusedSteps::upload(const cv::Mat& mosaic) {
-  if (mosaic.type() != CV_8UC1 || mosaic.cols != source_width_ || mosaic.rows != source_height_)
-    throw std::invalid_argument("CUDA preprocessing needs an 8-bit mosaic of " + std::to_string(source_width_) + "x" +
-                                std::to_string(source_height_));
+  if (mosaic.type() != CV_8UC1 || mosaic.size() != source_size_)
+    throw std::invalid_argument("CUDA preprocessing needs an 8-bit mosaic of " + std::to_string(source_size_.width) +
+                                "x" + std::to_string(source_size_.height));
   kernel_->upload(mosaic.data, mosaic.step[0]);
 }
 void CudaFusedSteps::compute() { kernel_->compute(); }
 void CudaFusedSteps::download(cv::Mat& bgr) {
-  bgr.create(out_height_, out_width_, CV_8UC3);  // continuous: download writes width * 3 bytes per row
+  bgr.create(out_size_, CV_8UC3);  // continuous: download writes width * 3 bytes per row
   kernel_->download(bgr.data);
 }
 double CudaFusedSteps::kernel_seconds(int launches) { return kernel_->kernel_seconds(launches); }

@@ -50,8 +50,9 @@ class CudaFusedSteps {
  private:
   std::shared_ptr<cuda::FusedCuda> kernel_;  // shared_ptr: its deleter is bound where FusedCuda is complete
   std::string device_;
-  // Read only where the build has CUDA (cuda_preprocess.cpp); clang's -Wunused-private-field sees the other build.
-  [[maybe_unused]] int source_width_ = 0, source_height_ = 0, out_width_ = 0, out_height_ = 0;
+  // Read only where the build has CUDA (cuda_preprocess.cpp). cv::Size, not ints: clang's -Wunused-private-field
+  // (the build without CUDA) passes over class types, and GCC ignores [[maybe_unused]] on members with a warning.
+  cv::Size source_size_, out_size_;
 };
 
 }  // namespace bs::vision
