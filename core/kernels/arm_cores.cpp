@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/resource_table.h"
 #include "util/resources.h"
 
 namespace bs::kernels {
@@ -17,7 +18,7 @@ namespace {
 using nlohmann::json;
 
 [[noreturn]] void fail(const std::string& origin, const std::string& where, const std::string& why) {
-  throw std::runtime_error(origin + ": " + where + ": " + why);
+  resource_table_fail(origin, where, why);
 }
 
 std::string trim(std::string_view s) {
@@ -110,21 +111,11 @@ bool unit_names_core(const std::string& unit, const std::string& core) {
 }  // namespace
 
 ArmCoreTable parse_arm_core_table(std::string_view json_text, const std::string& origin) {
-  json doc;
-  try {
-    doc = json::parse(json_text);
-  } catch (const json::parse_error& e) {
-    fail(origin, "JSON", e.what());
-  }
-  if (!doc.is_object() || doc.value("format", "") != "benchscope-cpu-cores")
-    fail(origin, "format", "not a benchscope-cpu-cores file");
-  if (doc.value("version", 0) != 1) fail(origin, "version", "unsupported (this BenchScope reads version 1)");
-  const auto cores = doc.find("cores");
-  if (cores == doc.end() || !cores->is_array()) fail(origin, "cores", "missing or not an array");
+  const json cores = resource_table_entries(json_text, origin, "benchscope-cpu-cores", "cores");
   ArmCoreTable table;
   table.path = origin;
-  for (std::size_t i = 0; i < cores->size(); ++i) {
-    const json& e = (*cores)[i];
+  for (std::size_t i = 0; i < cores.size(); ++i) {
+    const json& e = cores[i];
     const std::string where = "cores[" + std::to_string(i) + "]";
     if (!e.is_object()) fail(origin, where, "not an object");
     ArmCoreType c;
@@ -155,11 +146,7 @@ ArmCoreTable parse_arm_core_table(std::string_view json_text, const std::string&
 }
 
 ArmCoreTable load_arm_core_table(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_arm_core_table(text.str(), path.string());
+  return parse_arm_core_table(read_resource_file(path), path.string());
 }
 
 const ArmCoreTable& bundled_arm_core_table() {

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/resource_table.h"
 #include "util/resources.h"
 
 namespace bs {
@@ -18,7 +19,7 @@ namespace {
 using nlohmann::json;
 
 [[noreturn]] void fail(const std::string& origin, const std::string& where, const std::string& why) {
-  throw std::runtime_error(origin + ": " + where + ": " + why);
+  resource_table_fail(origin, where, why);
 }
 
 std::string required_string(const json& e, const char* key, const std::string& origin, const std::string& where) {
@@ -117,21 +118,11 @@ std::vector<const DeviceSpec*> best_matches(const DeviceTable& table, std::strin
 }  // namespace
 
 DeviceTable parse_device_table(std::string_view json_text, const std::string& origin) {
-  json doc;
-  try {
-    doc = json::parse(json_text);
-  } catch (const json::parse_error& e) {
-    fail(origin, "JSON", e.what());
-  }
-  if (!doc.is_object() || doc.value("format", "") != "benchscope-device-specs")
-    fail(origin, "format", "not a benchscope-device-specs file");
-  if (doc.value("version", 0) != 1) fail(origin, "version", "unsupported (this BenchScope reads version 1)");
-  const auto devices = doc.find("devices");
-  if (devices == doc.end() || !devices->is_array()) fail(origin, "devices", "missing or not an array");
+  const json devices = resource_table_entries(json_text, origin, "benchscope-device-specs", "devices");
   DeviceTable table;
   table.path = origin;
-  for (std::size_t i = 0; i < devices->size(); ++i) {
-    const json& e = (*devices)[i];
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    const json& e = devices[i];
     const std::string where = "devices[" + std::to_string(i) + "]";
     if (!e.is_object()) fail(origin, where, "not an object");
     DeviceSpec s;
@@ -190,11 +181,7 @@ double DeviceSpec::peak_from_terms() const {
 }
 
 DeviceTable load_device_table(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_device_table(text.str(), path.string());
+  return parse_device_table(read_resource_file(path), path.string());
 }
 
 const BundledDeviceTable& bundled_device_table() {

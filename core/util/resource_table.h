@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The bundled data tables (resources/devices/devices.json, cpu-cores.json) share one envelope:
+// {"format": "<name>", "version": 1, "<entries>": [...]}. One reader checks it, so every table refuses a wrong file
+// with the same words: "<origin>: <field>: <reason>" as std::runtime_error.
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace bs {
+
+[[noreturn]] void resource_table_fail(const std::string& origin, const std::string& where, const std::string& why);
+
+// The array under `entries_key` of a version-1 document of `format`; throws naming `origin` otherwise.
+nlohmann::json resource_table_entries(std::string_view json_text, const std::string& origin, std::string_view format,
+                                      const std::string& entries_key);
+
+// The whole file as text; throws "<path>: cannot open".
+std::string read_resource_file(const std::filesystem::path& path);
+
+}  // namespace bs
