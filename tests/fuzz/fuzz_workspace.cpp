@@ -99,8 +99,8 @@ const char* const kWords[] = {"",
                               "nan",
                               "inf",
                               "-1",
-                              "{\"n\": 2, \"mean\": 1, \"sd\": 0, \"min\": 1, \"max\": 1, \"p5\": 1, \"p50\": 1, "
-                              "\"p95\": 1, \"p99\": 1, \"integral\": 1}",
+                              ("{\"n\": 2, \"mean\": 1, \"sd\": 0, \"min\": 1, \"max\": 1, \"p5\": 1, \"p50\": 1, "
+                               "\"p95\": 1, \"p99\": 1, \"integral\": 1}"),
                               "preprocess",
                               "detect",
                               "end-to-end",
