@@ -3,7 +3,7 @@
 #include <functional>
 #include <vector>
 
-#include "kernels/backend.h"
+#include "kernels/backends/backend.h"
 
 namespace bs::kernels {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/worker_spec.h"
 
-#include "kernels/rotation.h"
+#include "kernels/rotation/rotation.h"
 
 #include <algorithm>
 #include <charconv>

@@ -16,7 +16,7 @@
 
 #include "kernels/cuda/ceilings_cuda.h"
 #include "kernels/cuda/rotation_cuda.h"
-#include "kernels/rotation.h"
+#include "kernels/rotation/rotation.h"
 #include "vision/cuda/fused_cuda.h"
 #include "vision/reproject/fused_pixel.h"
 

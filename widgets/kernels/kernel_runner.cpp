@@ -24,7 +24,7 @@
 #include "analysis/power/sweep_energy.h"
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
-#include "kernels/ceiling_cache.h"
+#include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power/power_sensor_box.h"

@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "kernels/backend.h"
-#include "kernels/ceilings.h"
+#include "kernels/backends/backend.h"
+#include "kernels/ceilings/ceilings.h"
 #include "model/power_trace.h"
 
 class QComboBox;

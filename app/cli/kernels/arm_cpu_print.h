@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "kernels/arm_cores.h"
+#include "kernels/cpu/arm_cores.h"
 
 namespace bs::cli {
 

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <ostream>
 
-#include "kernels/backend.h"
-#include "kernels/ceilings.h"
+#include "kernels/backends/backend.h"
+#include "kernels/ceilings/ceilings.h"
 
 namespace bs::cli {
 

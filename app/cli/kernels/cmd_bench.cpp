@@ -22,7 +22,7 @@
 #include "common/signals.h"
 #include "kernels/bench_ceilings.h"
 #include "kernels/bench_range_stats.h"
-#include "kernels/ceiling_cache.h"
+#include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/cpu_args.h"
 #include "kernels/sweep.h"
 #include "power/power_args.h"

@@ -16,9 +16,9 @@
 #include "common/flag_output.h"
 #include "common/signals.h"
 #include "kernels/arm_cpu_print.h"
-#include "kernels/backend.h"
+#include "kernels/backends/backend.h"
 #include "kernels/bench_ceilings.h"
-#include "kernels/ceiling_cache.h"
+#include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/cpu_args.h"
 #include "store/workspace.h"
 

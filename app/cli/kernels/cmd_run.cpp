@@ -13,7 +13,7 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/signals.h"
-#include "kernels/ceiling_cache.h"
+#include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/cpu_args.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"

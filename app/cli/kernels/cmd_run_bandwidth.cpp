@@ -9,7 +9,7 @@
 #include "analysis/stats/units.h"
 #include "common/args.h"
 #include "common/signals.h"
-#include "kernels/bandwidth.h"
+#include "kernels/ceilings/bandwidth.h"
 #include "store/workspace.h"
 
 namespace bs::cli {

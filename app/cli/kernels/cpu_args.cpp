@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "kernels/rotation_simd.h"
+#include "kernels/rotation/rotation_simd.h"
 
 namespace bs::cli {
 

@@ -3,7 +3,7 @@
 // The CPU as this machine reports it, with the SIMD instruction set `--isa avx512|avx2|sse4|generic` asks for: how
 // `bench kernels`, `run flops` and `devices` all start.
 #include "common/args.h"
-#include "kernels/cpu_info.h"
+#include "kernels/cpu/cpu_info.h"
 
 namespace bs::cli {
 

@@ -8,7 +8,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "kernels/backend_opencl.h"
+#include "kernels/backends/backend_opencl.h"
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
 #include "peaks/flops_plot.h"
