@@ -8,9 +8,10 @@
 # Install: sudo apt install ./build/packages/benchscope-cli_<version>_<arch>.deb
 # Dependencies come from dpkg-shlibdeps (the shared libraries the binaries really link), with the package names and
 # versions of the distribution the build ran on: build on the robot's own OS (or a sysroot of it) for the robot.
-# Cross builds (the arm64 hook): configure with a toolchain file that sets CMAKE_SYSTEM_PROCESSOR aarch64 and the
-# package architecture becomes arm64; dpkg-shlibdeps then needs the target's libraries installed as dpkg multiarch
-# packages (libopencv-dev:arm64, ...) and aarch64-linux-gnu-objdump (binutils-aarch64-linux-gnu) on PATH.
+# Cross builds (the arm64 package): with cmake/aarch64-linux-gnu.cmake the package architecture becomes arm64, and
+# dpkg-shlibdeps reads the sysroot's own dpkg database that scripts/cross-test writes (below), with
+# aarch64-linux-gnu-objdump (binutils-aarch64-linux-gnu, which the cross compiler brings). Build and test it:
+#   scripts/dev cross-test arm64   (then: ctest --test-dir build-arm64 -R test_deb_package_arm64)
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME benchscope)
 set(CPACK_PACKAGE_VENDOR "BenchScope")
@@ -44,6 +45,21 @@ if(CMAKE_CROSSCOMPILING)
     set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE arm64)
   elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
     set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE amd64)
+  endif()
+  # A sysroot with its own dpkg database (scripts/cross-test makes one): dpkg-shlibdeps reads the sysroot's libraries
+  # and packages through a wrapper, so the arm64 package depends on what the robot's Debian really names them.
+  if(BENCHSCOPE_SYSROOT AND EXISTS "${BENCHSCOPE_SYSROOT}/var/lib/dpkg/status")
+    configure_file(${CMAKE_CURRENT_LIST_DIR}/dpkg-shlibdeps-cross.sh.in ${PROJECT_BINARY_DIR}/dpkg-shlibdeps-cross.sh
+                   @ONLY FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ)
+    # A cache entry: CPackDeb's find_program(SHLIBDEPS_EXECUTABLE) searches PATH again past a plain variable.
+    file(WRITE ${PROJECT_BINARY_DIR}/CPackCross.cmake
+         "set(SHLIBDEPS_EXECUTABLE \"${PROJECT_BINARY_DIR}/dpkg-shlibdeps-cross.sh\" CACHE FILEPATH \"\")\n")
+    set(CPACK_PROJECT_CONFIG_FILE ${PROJECT_BINARY_DIR}/CPackCross.cmake)
+    set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS
+        "${BENCHSCOPE_SYSROOT}/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE};${BENCHSCOPE_SYSROOT}/usr/lib")
+  else()
+    # Without it dpkg-shlibdeps cannot tell which package holds a library: no Depends rather than wrong ones.
+    set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
   endif()
 endif()
 

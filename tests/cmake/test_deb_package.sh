@@ -21,6 +21,9 @@ debs=("$work"/out/"$package"_*.deb)
 deb=${debs[0]}
 echo "package: $(basename "$deb")"
 [ "$(dpkg-deb -f "$deb" Package)" = "$package" ] || fail "Package is not $package"
+arch=$(dpkg-deb -f "$deb" Architecture)
+echo "Architecture: $arch"
+if [[ "$runner" == *aarch64* ]] && [ "$arch" != arm64 ]; then fail "a package run under qemu-aarch64 is $arch, not arm64"; fi
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
 # dpkg-shlibdeps filled in the libraries the binaries link; the robot's package has no Qt.
