@@ -158,9 +158,7 @@ const CommandRegistrar registrar({
     "  arithmetic intensity (integer ops and compulsory DRAM bytes per pixel, counted in BenchScope's kernels)\n"
     "  and its measured throughput (ops per frame / mean stage time), under the ceiling of the device that ran it.\n"
     "  --json prints the same as one document (format benchscope-roofline).",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_roofline(args, out);
-    },
+    out_only<run_roofline>,
 });
 
 }  // namespace

@@ -125,9 +125,7 @@ const CommandRegistrar registrar({
     "  common worker count); Google Benchmark and clpeak measures on platform, device, backend, name and metric.\n"
     "  A regression is a change in the worse direction larger than the threshold with Mann-Whitney U p < alpha\n"
     "  over the repetitions. Exit codes: 0 no regression, 3 regression found, 1 error, 2 usage.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_compare(args, out);
-    },
+    out_only<run_compare>,
 });
 
 }  // namespace

@@ -223,9 +223,7 @@ const CommandRegistrar registrar({
     "  constraints, within one network, scenario and precision only (what still differs is said in the row), and\n"
     "  compute peaks within one precision. Every row names its origin (measured, reconstructed, published) and\n"
     "  its source; --candidates-csv/--candidates-latex write the inference table.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_platforms(args, out);
-    },
+    out_only<run_platforms>,
 });
 
 }  // namespace

@@ -123,9 +123,7 @@ const CommandRegistrar registrar({
     "  writes only the PDF. --library orin,pi5 adds a \"Candidates\" section: published results from the library\n"
     "  beside the own platforms, ranked like with like under the same constraints (as `platforms --library`).\n"
     "  Needs a build with Qt.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_report(args, out, err);
-    },
+    run_report,
 });
 
 }  // namespace

@@ -286,9 +286,7 @@ const CommandRegistrar registrar({
     "  the pack and options given here); their depth of discharge, extra load, model and mission are the defaults.\n"
     "  Without --watts/--power-log: runtime per platform, each computer at the mean power of its log, with the\n"
     "  extra load and the mission's phases on top.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_battery(args, out, err);
-    },
+    run_battery,
 });
 
 }  // namespace

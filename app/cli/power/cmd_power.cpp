@@ -384,9 +384,7 @@ const CommandRegistrar registrar({
     "  and load phases found from level changes (--min-phase S, default 2; --min-step X in the signal's unit).\n"
     "  Formats: power CSV (generic, Joulescope, Otii, INA219 loggers), NVIDIA tegrastats, nvidia-smi --query-gpu\n"
     "  CSV (one trace per GPU), perf stat RAPL energy and SPEC PTDaemon (MLPerf spl.txt; marks as phases).",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_power(args, out, err);
-    },
+    run_power,
 });
 
 }  // namespace
