@@ -324,7 +324,7 @@ int bench_power_csv_impl(const std::vector<std::string>& raw, std::ostream& out)
   ParseRun ours, ref;
   for (int r = 0; r < runs; ++r) {
     ours = measure([&] {
-      const ImportBatch b = PowerCsvImporter().parse(path, {}, {}, interrupt_token());
+      const ImportBatch b = kPowerCsvFileFormat.parse(path, {}, {}, interrupt_token());
       ParseRun p;
       const PowerTrace& t = b.power_traces.at(0);
       p.rows = t.time_s.size();
