@@ -29,6 +29,20 @@ nlohmann::json resource_table_entries(std::string_view json_text, const std::str
   return std::move(*entries);
 }
 
+std::vector<std::string> resource_table_strings(const nlohmann::json& entry, const char* key, const std::string& origin,
+                                                const std::string& where) {
+  std::vector<std::string> out;
+  const auto it = entry.find(key);
+  if (it == entry.end()) return out;
+  if (!it->is_array()) resource_table_fail(origin, where + "." + key, "not an array");
+  for (const nlohmann::json& v : *it) {
+    if (!v.is_string() || v.get<std::string>().empty())
+      resource_table_fail(origin, where + "." + key, "an element is not a non-empty string");
+    out.push_back(v.get<std::string>());
+  }
+  return out;
+}
+
 std::string read_resource_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,11 @@ namespace bs {
 // The array under `entries_key` of a version-1 document of `format`; throws naming `origin` otherwise.
 nlohmann::json resource_table_entries(std::string_view json_text, const std::string& origin, std::string_view format,
                                       const std::string& entries_key);
+
+// The non-empty strings of the array `entry[key]` (none when absent); throws naming `where.key` otherwise. The tables'
+// lists of more source URLs and of unverified fields.
+std::vector<std::string> resource_table_strings(const nlohmann::json& entry, const char* key, const std::string& origin,
+                                                const std::string& where);
 
 // The whole file as text; throws "<path>: cannot open".
 std::string read_resource_file(const std::filesystem::path& path);

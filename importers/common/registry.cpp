@@ -26,24 +26,11 @@ namespace bs {
 namespace {
 
 std::vector<std::unique_ptr<Importer>> make_importers() {
-  std::vector<std::unique_ptr<Importer>> list;
-  list.push_back(std::make_unique<RunJsonImporter>());
-  list.push_back(std::make_unique<PipelineJsonImporter>());
-  list.push_back(std::make_unique<GoogleBenchmarkJsonImporter>());
-  list.push_back(std::make_unique<ClpeakTextImporter>());
-  list.push_back(std::make_unique<PowerRecordingImporter>());
-  list.push_back(std::make_unique<PowerCsvImporter>());
-  list.push_back(std::make_unique<TegrastatsImporter>());
-  list.push_back(std::make_unique<JtopCsvImporter>());
-  list.push_back(std::make_unique<NvidiaSmiImporter>());
-  list.push_back(std::make_unique<PerfStatImporter>());
-  list.push_back(std::make_unique<PtdLogImporter>());
-  list.push_back(std::make_unique<MlperfLoadgenImporter>());
-  list.push_back(std::make_unique<RawBayerImporter>());
-  list.push_back(std::make_unique<PnmImporter>());
-  list.push_back(std::make_unique<PngImporter>());
-  list.push_back(std::make_unique<TiffImporter>());
-  return list;
+  return importers_of({&kRunJsonFileFormat, &kPipelineJsonFileFormat, &kGoogleBenchmarkJsonFileFormat,
+                       &kClpeakTextFileFormat, &kPowerRecordingFileFormat, &kPowerCsvFileFormat, &kTegrastatsFileFormat,
+                       &kJtopCsvFileFormat, &kNvidiaSmiFileFormat, &kPerfStatFileFormat, &kPtdLogFileFormat,
+                       &kMlperfLoadgenFileFormat, &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat,
+                       &kTiffFileFormat});
 }
 
 [[noreturn]] void io_error(const std::string& path, const std::string& what) {

@@ -20,4 +20,11 @@ using TextParser = ImportBatch (*)(const std::string& text, const std::string& f
 ImportBatch parse_text_file(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                             const CancelToken& cancel, TextParser parse);
 
+// parse_text_file() with the parser fixed: a whole-document format's FileFormat::parse.
+template <TextParser parse>
+ImportBatch parse_text_file_with(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                                 const CancelToken& cancel) {
+  return parse_text_file(path, options, limits, cancel, parse);
+}
+
 }  // namespace bs

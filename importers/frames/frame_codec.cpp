@@ -76,12 +76,12 @@ cv::Mat decode(const std::string& path, std::string_view what) {
 
 // ---- PNG ------------------------------------------------------------------------------------------------------
 
-int PngImporter::sniff(std::string_view head, std::string_view) const { return head.starts_with(kPngMagic) ? 100 : 0; }
+static int sniff_png(std::string_view head, std::string_view) { return head.starts_with(kPngMagic) ? 100 : 0; }
 
-bool PngImporter::usual_extension(std::string_view path) const { return frames::ends_with_ci(path, ".png"); }
+static bool png_extension(std::string_view path) { return frames::ends_with_ci(path, ".png"); }
 
-ImportBatch PngImporter::parse(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
-                               const CancelToken& cancel) const {
+static ImportBatch parse_png_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
+                                  const CancelToken& cancel) {
   const std::uint64_t size = frames::file_size(path);
   std::ifstream f(path, std::ios::binary);
   if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");
@@ -171,17 +171,17 @@ struct TiffEntry {
 
 }  // namespace
 
-int TiffImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_tiff(std::string_view head, std::string_view) {
   if (head.starts_with(std::string_view("II*\0", 4)) || head.starts_with(std::string_view("MM\0*", 4))) return 100;
   return 0;
 }
 
-bool TiffImporter::usual_extension(std::string_view path) const {
+static bool tiff_extension(std::string_view path) {
   return frames::ends_with_ci(path, ".tif") || frames::ends_with_ci(path, ".tiff");
 }
 
-ImportBatch TiffImporter::parse(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
-                                const CancelToken& cancel) const {
+static ImportBatch parse_tiff_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
+                                   const CancelToken& cancel) {
   const std::uint64_t size = frames::file_size(path);
   std::ifstream f(path, std::ios::binary);
   if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");
@@ -245,5 +245,9 @@ ImportBatch TiffImporter::parse(const std::string& path, const ParseOptions& /*o
   batch.frames.push_back(frame_from_mat(path, "tiff", std::move(img), 0));
   return batch;
 }
+
+const FileFormat kPngFileFormat{"png", "PNG image", sniff_png, parse_png_file, nullptr, png_extension, true};
+
+const FileFormat kTiffFileFormat{"tiff", "TIFF image", sniff_tiff, parse_tiff_file, nullptr, tiff_extension, true};
 
 }  // namespace bs

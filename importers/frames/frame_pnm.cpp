@@ -116,7 +116,7 @@ class HeaderParser {
 
 }  // namespace
 
-int PnmImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_pnm(std::string_view head, std::string_view) {
   if (head.size() < 3 || head[0] != 'P') return 0;
   const char k = head[1];
   const bool space = std::isspace(static_cast<unsigned char>(head[2])) || head[2] == '#';
@@ -126,12 +126,12 @@ int PnmImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-bool PnmImporter::usual_extension(std::string_view path) const {
+static bool pnm_extension(std::string_view path) {
   return frames::ends_with_ci(path, ".pgm") || frames::ends_with_ci(path, ".ppm") || frames::ends_with_ci(path, ".pnm");
 }
 
-ImportBatch PnmImporter::parse(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
-                               const CancelToken& cancel) const {
+static ImportBatch parse_pnm_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
+                                  const CancelToken& cancel) {
   const std::string head = read_head(path, kMaxHeaderBytes);
   if (head.size() < 3 || head[0] != 'P')
     throw ImportError(ImportErrorCategory::UnknownFormat, {path, 1, 1, {}}, "not a PGM/PPM file (no P5/P6 magic)");
@@ -197,5 +197,8 @@ ImportBatch PnmImporter::parse(const std::string& path, const ParseOptions& /*op
   batch.frames.push_back(std::move(frame));
   return batch;
 }
+
+const FileFormat kPnmFileFormat{
+    "pnm", "PGM/PPM image (binary P5/P6)", sniff_pnm, parse_pnm_file, nullptr, pnm_extension, true};
 
 }  // namespace bs

@@ -6,19 +6,10 @@
 // maxval needs (1023 -> 10). A PGM is taken as a Bayer mosaic, BGGR unless a comment says otherwise
 // ("# pattern: RGGB", or "# pattern: grey" for a plain grey image), because that is how raw captures are saved.
 // ASCII variants (P2, P3) and PAM (P7) are refused as unsupported.
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
-class PnmImporter final : public Importer {
- public:
-  std::string_view id() const override { return "pnm"; }
-  std::string_view description() const override { return "PGM/PPM image (binary P5/P6)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  bool binary() const override { return true; }
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
+extern const FileFormat kPnmFileFormat;
 
 }  // namespace bs

@@ -133,17 +133,17 @@ RawFrameOptions parse_raw_geometry(const std::string& text) {
   return o;
 }
 
-int RawBayerImporter::sniff(std::string_view, std::string_view path) const {
+static int sniff_raw_bayer(std::string_view, std::string_view path) {
   // Raw samples have no magic bytes: the extension and the sidecar beside the file decide. A .raw without a
   // sidecar is still claimed, so the user hears that the sidecar is missing rather than "binary file".
   if (!frames::ends_with_ci(path, ".raw")) return 0;
   return find_raw_sidecar(std::string(path)) ? 100 : 50;
 }
 
-bool RawBayerImporter::usual_extension(std::string_view path) const { return frames::ends_with_ci(path, ".raw"); }
+static bool raw_bayer_extension(std::string_view path) { return frames::ends_with_ci(path, ".raw"); }
 
-ImportBatch RawBayerImporter::parse(const std::string& path, const ParseOptions& /*options*/,
-                                    const ImportLimits& limits, const CancelToken& cancel) const {
+static ImportBatch parse_raw_bayer_file(const std::string& path, const ParseOptions& /*options*/,
+                                        const ImportLimits& limits, const CancelToken& cancel) {
   const std::optional<std::string> found = find_raw_sidecar(path);
   if (!found)
     throw ImportError(ImportErrorCategory::MissingField, {path, 0, 0, "sidecar"},
@@ -179,5 +179,13 @@ ImportBatch import_file_with_raw_geometry(const std::string& path, const std::op
   }
   return import_file(path, cancel);
 }
+
+const FileFormat kRawBayerFileFormat{"raw-bayer",
+                                     "raw Bayer frame (.raw + JSON sidecar)",
+                                     sniff_raw_bayer,
+                                     parse_raw_bayer_file,
+                                     nullptr,
+                                     raw_bayer_extension,
+                                     true};
 
 }  // namespace bs

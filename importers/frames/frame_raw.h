@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 #include "model/raw_sidecar.h"
 
 namespace bs {
@@ -43,15 +43,6 @@ ImportBatch import_file_with_raw_geometry(const std::string& path, const std::op
 // True for a .raw file with no sidecar next to it: it can only be read with a geometry from the user.
 bool raw_without_sidecar(const std::string& path);
 
-class RawBayerImporter final : public Importer {
- public:
-  std::string_view id() const override { return "raw-bayer"; }
-  std::string_view description() const override { return "raw Bayer frame (.raw + JSON sidecar)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  bool binary() const override { return true; }
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
+extern const FileFormat kRawBayerFileFormat;
 
 }  // namespace bs

@@ -104,7 +104,7 @@ std::optional<PowerResult> window_power(const MlperfCompanions& w, const Loadgen
                        ": no energy per query");
     return std::nullopt;
   }
-  const ImportBatch ptd = parse_ptd_log(w.spl_text, w.spl_file, {}, limits, cancel);
+  const ImportBatch ptd = kPtdLogFileFormat.parse_text(w.spl_text, w.spl_file, {}, limits, cancel);
   if (ptd.power_traces.empty()) return std::nullopt;
   const PowerTrace& t = ptd.power_traces.front();
   const auto start = parse_date_time(t.start_time);
@@ -253,7 +253,7 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
   return batch;
 }
 
-int MlperfLoadgenImporter::sniff(std::string_view head, std::string_view path) const {
+static int sniff_mlperf_submission(std::string_view head, std::string_view path) {
   if (head.substr(0, 512).find("MLPerf Results Summary") == std::string_view::npos) return 0;
   // Not results: accuracy runs, the power ranging pass, compliance (audit) tests. A folder walk passes them over.
   const std::string p(path);
@@ -263,14 +263,19 @@ int MlperfLoadgenImporter::sniff(std::string_view head, std::string_view path) c
   return 95;
 }
 
-bool MlperfLoadgenImporter::usual_extension(std::string_view path) const {
-  return path.ends_with("mlperf_log_summary.txt");
-}
+static bool mlperf_submission_extension(std::string_view path) { return path.ends_with("mlperf_log_summary.txt"); }
 
-ImportBatch MlperfLoadgenImporter::parse(const std::string& path, const ParseOptions& /*options*/,
-                                         const ImportLimits& limits, const CancelToken& cancel) const {
+static ImportBatch parse_mlperf_submission_file(const std::string& path, const ParseOptions& /*options*/,
+                                                const ImportLimits& limits, const CancelToken& cancel) {
   const std::string text(strip_utf8_bom(read_whole_file(path, limits.max_json_bytes)));
   return parse_mlperf_summary(text, path, companions_of(path, limits), limits, cancel);
 }
+
+const FileFormat kMlperfLoadgenFileFormat{"mlperf-loadgen",
+                                          "MLPerf Inference LoadGen result (mlperf_log_summary.txt)",
+                                          sniff_mlperf_submission,
+                                          parse_mlperf_submission_file,
+                                          nullptr,
+                                          mlperf_submission_extension};
 
 }  // namespace bs

@@ -14,20 +14,12 @@
 // are passed over (their summaries sniff as no format), and spl.txt files import on their own as power traces.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 #include "mlperf/loadgen_summary.h"
 
 namespace bs {
 
-class MlperfLoadgenImporter final : public Importer {
- public:
-  std::string_view id() const override { return "mlperf-loadgen"; }
-  std::string_view description() const override { return "MLPerf Inference LoadGen result (mlperf_log_summary.txt)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
+extern const FileFormat kMlperfLoadgenFileFormat;
 
 // Measurement metric names, shared with the library and the views.
 namespace mlperf_metric {

@@ -309,7 +309,7 @@ ImportBatch JtopParser::finish() {
 
 }  // namespace
 
-int JtopCsvImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_jtop_csv(std::string_view head, std::string_view) {
   PowerLineReader lines(head, {});
   std::vector<Cell> cells;
   while (const auto line = lines.next()) {
@@ -328,7 +328,7 @@ int JtopCsvImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-bool JtopCsvImporter::usual_extension(std::string_view path) const {
+static bool jtop_csv_extension(std::string_view path) {
   if (path.size() < 4) return false;
   std::string ext(path.substr(path.size() - 4));
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -336,14 +336,11 @@ bool JtopCsvImporter::usual_extension(std::string_view path) const {
   return ext == ".csv";
 }
 
-ImportBatch JtopCsvImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                   const CancelToken& cancel) const {
-  return meter::parse_log<JtopParser>(PowerLineReader(path), path, options, limits, cancel);
-}
-
-ImportBatch parse_jtop_csv(const std::string& text, const std::string& file, const ParseOptions& options,
-                           const ImportLimits& limits, const CancelToken& cancel) {
-  return meter::parse_log<JtopParser>(PowerLineReader(text, file), file, options, limits, cancel);
-}
+const FileFormat kJtopCsvFileFormat{"jtop-csv",
+                                    "jetson-stats (jtop) CSV log (Jetson power)",
+                                    sniff_jtop_csv,
+                                    meter::parse_log_file<JtopParser>,
+                                    meter::parse_log_text<JtopParser>,
+                                    jtop_csv_extension};
 
 }  // namespace bs

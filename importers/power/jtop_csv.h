@@ -20,23 +20,11 @@
 // counted in a warning); a cut-off last row is skipped with a warning.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
-class JtopCsvImporter final : public Importer {
- public:
-  std::string_view id() const override { return "jtop-csv"; }
-  std::string_view description() const override { return "jetson-stats (jtop) CSV log (Jetson power)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
-
-// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
-ImportBatch parse_jtop_csv(const std::string& text, const std::string& file, const ParseOptions& options = {},
-                           const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+// Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+extern const FileFormat kJtopCsvFileFormat;
 
 }  // namespace bs

@@ -119,4 +119,18 @@ ImportBatch parse_log(PowerLineReader&& lines, const std::string& file, const Pa
   return run_lines(lines, parser, cancel);
 }
 
+// A meter format's two entry points: its file streamed line by line (FileFormat::parse), and text in memory
+// (FileFormat::text_parser, which tests and the fuzzers call).
+template <class Parser>
+ImportBatch parse_log_file(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
+                           const CancelToken& cancel) {
+  return parse_log<Parser>(PowerLineReader(path), path, options, limits, cancel);
+}
+
+template <class Parser>
+ImportBatch parse_log_text(const std::string& text, const std::string& file, const ParseOptions& options,
+                           const ImportLimits& limits, const CancelToken& cancel) {
+  return parse_log<Parser>(PowerLineReader(text, file), file, options, limits, cancel);
+}
+
 }  // namespace bs::meter

@@ -328,7 +328,7 @@ ImportBatch NvidiaSmiParser::finish() {
 
 }  // namespace
 
-int NvidiaSmiImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_nvidia_smi(std::string_view head, std::string_view) {
   PowerLineReader lines(head, {});
   std::vector<std::string_view> cells;
   while (const auto line = lines.next()) {
@@ -354,14 +354,7 @@ int NvidiaSmiImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-ImportBatch NvidiaSmiImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                     const CancelToken& cancel) const {
-  return meter::parse_log<NvidiaSmiParser>(PowerLineReader(path), path, options, limits, cancel);
-}
-
-ImportBatch parse_nvidia_smi(const std::string& text, const std::string& file, const ParseOptions& options,
-                             const ImportLimits& limits, const CancelToken& cancel) {
-  return meter::parse_log<NvidiaSmiParser>(PowerLineReader(text, file), file, options, limits, cancel);
-}
+const FileFormat kNvidiaSmiFileFormat{"nvidia-smi", "nvidia-smi --query-gpu CSV log (GPU power)", sniff_nvidia_smi,
+                                      meter::parse_log_file<NvidiaSmiParser>, meter::parse_log_text<NvidiaSmiParser>};
 
 }  // namespace bs

@@ -372,7 +372,7 @@ ImportBatch PerfStatParser::finish() {
 
 }  // namespace
 
-int PerfStatImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_perf_stat(std::string_view head, std::string_view) {
   PowerLineReader lines(head, {});
   std::vector<std::string_view> scratch;
   int score = 0;
@@ -389,14 +389,7 @@ int PerfStatImporter::sniff(std::string_view head, std::string_view) const {
   return score;
 }
 
-ImportBatch PerfStatImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                    const CancelToken& cancel) const {
-  return meter::parse_log<PerfStatParser>(PowerLineReader(path), path, options, limits, cancel);
-}
-
-ImportBatch parse_perf_stat(const std::string& text, const std::string& file, const ParseOptions& options,
-                            const ImportLimits& limits, const CancelToken& cancel) {
-  return meter::parse_log<PerfStatParser>(PowerLineReader(text, file), file, options, limits, cancel);
-}
+const FileFormat kPerfStatFileFormat{"perf-stat-rapl", "perf stat RAPL energy (power/energy-pkg/ ...)", sniff_perf_stat,
+                                     meter::parse_log_file<PerfStatParser>, meter::parse_log_text<PerfStatParser>};
 
 }  // namespace bs

@@ -19,22 +19,11 @@
 // backwards, interval and summary records mixed.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
-class PerfStatImporter final : public Importer {
- public:
-  std::string_view id() const override { return "perf-stat-rapl"; }
-  std::string_view description() const override { return "perf stat RAPL energy (power/energy-pkg/ ...)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
-
-// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
-ImportBatch parse_perf_stat(const std::string& text, const std::string& file, const ParseOptions& options = {},
-                            const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+// Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+extern const FileFormat kPerfStatFileFormat;
 
 }  // namespace bs

@@ -927,7 +927,7 @@ bool usual(std::string_view path) {
 
 }  // namespace
 
-int PowerCsvImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_power_csv(std::string_view head, std::string_view) {
   PowerLineReader lines(head, {});
   for (int seen = 0; seen < 64; ++seen) {
     const auto line = lines.next();
@@ -953,7 +953,7 @@ int PowerCsvImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-bool PowerCsvImporter::usual_extension(std::string_view path) const { return usual(path); }
+static bool power_csv_extension(std::string_view path) { return usual(path); }
 
 namespace {
 
@@ -987,14 +987,18 @@ ImportBatch parse_lines(PowerLineReader&& lines, const std::string& file, const 
 
 }  // namespace
 
-ImportBatch PowerCsvImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                    const CancelToken& cancel) const {
+static ImportBatch parse_power_csv_file(const std::string& path, const ParseOptions& options,
+                                        const ImportLimits& limits, const CancelToken& cancel) {
   return parse_lines(PowerLineReader(path), path, options, limits, cancel);
 }
 
-ImportBatch parse_power_csv(const std::string& text, const std::string& file, const ParseOptions& options,
-                            const ImportLimits& limits, const CancelToken& cancel) {
+static ImportBatch parse_power_csv(const std::string& text, const std::string& file, const ParseOptions& options,
+                                   const ImportLimits& limits, const CancelToken& cancel) {
   return parse_lines(PowerLineReader(text, file), file, options, limits, cancel);
 }
+
+const FileFormat kPowerCsvFileFormat{"power-csv",     "current/power log (CSV: generic, Joulescope, Otii, INA219)",
+                                     sniff_power_csv, parse_power_csv_file,
+                                     parse_power_csv, power_csv_extension};
 
 }  // namespace bs

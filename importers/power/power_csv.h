@@ -31,23 +31,11 @@
 // channel statistics use, current without a supply.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
-class PowerCsvImporter final : public Importer {
- public:
-  std::string_view id() const override { return "power-csv"; }
-  std::string_view description() const override { return "current/power log (CSV: generic, Joulescope, Otii, INA219)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  // Streams the file (memory: the parsed columns plus one 1 MiB block).
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
-
-// The same parser over text already in memory; `file` names it in errors.
-ImportBatch parse_power_csv(const std::string& text, const std::string& file, const ParseOptions& options = {},
-                            const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+// Streams the file (memory: the parsed columns plus one 1 MiB block).
+extern const FileFormat kPowerCsvFileFormat;
 
 }  // namespace bs

@@ -15,15 +15,8 @@ namespace bs {
 // (they out-sniff the generic CSV on their files), tegrastats, then the generic CSV. BenchScope's own record-power CSV
 // reads its settings from its header comments, not from the options.
 std::vector<std::unique_ptr<Importer>> make_power_importers() {
-  std::vector<std::unique_ptr<Importer>> list;
-  list.push_back(std::make_unique<PowerRecordingImporter>());
-  list.push_back(std::make_unique<JtopCsvImporter>());
-  list.push_back(std::make_unique<NvidiaSmiImporter>());
-  list.push_back(std::make_unique<PerfStatImporter>());
-  list.push_back(std::make_unique<PtdLogImporter>());
-  list.push_back(std::make_unique<TegrastatsImporter>());
-  list.push_back(std::make_unique<PowerCsvImporter>());
-  return list;
+  return importers_of({&kPowerRecordingFileFormat, &kJtopCsvFileFormat, &kNvidiaSmiFileFormat, &kPerfStatFileFormat,
+                       &kPtdLogFileFormat, &kTegrastatsFileFormat, &kPowerCsvFileFormat});
 }
 
 ImportBatch import_power_log(const std::string& path, const ParseOptions& options, const CancelToken& cancel,

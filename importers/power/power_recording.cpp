@@ -124,25 +124,31 @@ ImportBatch finish(ImportBatch batch, const Header& h, const std::string& file) 
 
 }  // namespace
 
-int PowerRecordingImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_power_recording(std::string_view head, std::string_view) {
   return head.starts_with(sensors::kRecordingMagic) ? 95 : 0;
 }
 
-bool PowerRecordingImporter::usual_extension(std::string_view path) const { return path.ends_with(".csv"); }
+static bool power_recording_extension(std::string_view path) { return path.ends_with(".csv"); }
 
 // The settings come from the comment block, never from the options: the power-CSV parser gets the defaults.
-ImportBatch PowerRecordingImporter::parse(const std::string& path, const ParseOptions& /*options*/,
-                                          const ImportLimits& limits, const CancelToken& cancel) const {
+static ImportBatch parse_power_recording_file(const std::string& path, const ParseOptions& /*options*/,
+                                              const ImportLimits& limits, const CancelToken& cancel) {
   // The comment block is in the first 64 KiB (a few hundred phases at most); the rows stream through power-csv.
   const std::string head = read_head(path);
   const Header h = read_header(strip_utf8_bom(head), path);
-  return finish(PowerCsvImporter().parse(path, ParseOptions{}, limits, cancel), h, path);
+  return finish(kPowerCsvFileFormat.parse(path, ParseOptions{}, limits, cancel), h, path);
 }
 
-ImportBatch parse_power_recording(const std::string& text, const std::string& file, const ParseOptions& /*options*/,
-                                  const ImportLimits& limits, const CancelToken& cancel) {
+static ImportBatch parse_power_recording(const std::string& text, const std::string& file,
+                                         const ParseOptions& /*options*/, const ImportLimits& limits,
+                                         const CancelToken& cancel) {
   const Header h = read_header(std::string_view(text).substr(0, 64 * 1024), file);
-  return finish(parse_power_csv(text, file, ParseOptions{}, limits, cancel), h, file);
+  return finish(kPowerCsvFileFormat.parse_text(text, file, ParseOptions{}, limits, cancel), h, file);
 }
+
+const FileFormat kPowerRecordingFileFormat{
+    "benchscope-power-recording", "BenchScope on-board sensor power recording (CSV)",
+    sniff_power_recording,        parse_power_recording_file,
+    parse_power_recording,        power_recording_extension};
 
 }  // namespace bs

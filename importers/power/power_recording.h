@@ -8,23 +8,11 @@
 // it starts or is not "NAME = START .. END", a measurement other than an on-board sensor's.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
-class PowerRecordingImporter final : public Importer {
- public:
-  std::string_view id() const override { return "benchscope-power-recording"; }
-  std::string_view description() const override { return "BenchScope on-board sensor power recording (CSV)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
-
-// The same over text in memory (tests, fuzzing); `file` names it in errors. No options: the comment block says
-// what they would.
-ImportBatch parse_power_recording(const std::string& text, const std::string& file, const ParseOptions& options = {},
-                                  const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+// No options: the comment block says what they would.
+extern const FileFormat kPowerRecordingFileFormat;
 
 }  // namespace bs

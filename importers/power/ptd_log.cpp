@@ -225,7 +225,7 @@ ImportBatch PtdParser::finish() {
 
 }  // namespace
 
-int PtdLogImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_ptd_log(std::string_view head, std::string_view) {
   PowerLineReader lines(head, {});
   for (int seen = 0; seen < 16; ++seen) {
     const auto line = lines.next();
@@ -236,14 +236,7 @@ int PtdLogImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-ImportBatch PtdLogImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                  const CancelToken& cancel) const {
-  return meter::parse_log<PtdParser>(PowerLineReader(path), path, options, limits, cancel);
-}
-
-ImportBatch parse_ptd_log(const std::string& text, const std::string& file, const ParseOptions& options,
-                          const ImportLimits& limits, const CancelToken& cancel) {
-  return meter::parse_log<PtdParser>(PowerLineReader(text, file), file, options, limits, cancel);
-}
+const FileFormat kPtdLogFileFormat{"ptdaemon", "SPEC PTDaemon power log (MLPerf spl.txt)", sniff_ptd_log,
+                                   meter::parse_log_file<PtdParser>, meter::parse_log_text<PtdParser>};
 
 }  // namespace bs

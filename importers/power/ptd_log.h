@@ -12,22 +12,11 @@
 // mid-log, time going backwards.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
-class PtdLogImporter final : public Importer {
- public:
-  std::string_view id() const override { return "ptdaemon"; }
-  std::string_view description() const override { return "SPEC PTDaemon power log (MLPerf spl.txt)"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  // Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
-
-// The same parser over text in memory (tests, fuzzing); `file` names it in errors.
-ImportBatch parse_ptd_log(const std::string& text, const std::string& file, const ParseOptions& options = {},
-                          const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+// Streams the file line by line (memory: the parsed samples plus one 1 MiB block).
+extern const FileFormat kPtdLogFileFormat;
 
 }  // namespace bs

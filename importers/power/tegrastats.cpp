@@ -245,7 +245,7 @@ ImportBatch TegrastatsParser::finish() {
 
 }  // namespace
 
-int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_tegrastats(std::string_view head, std::string_view) {
   PowerLineReader lines(head, {});
   std::vector<std::string_view> tok;
   int score = 0;
@@ -265,14 +265,8 @@ int TegrastatsImporter::sniff(std::string_view head, std::string_view) const {
   return score;
 }
 
-ImportBatch TegrastatsImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                      const CancelToken& cancel) const {
-  return meter::parse_log<TegrastatsParser>(PowerLineReader(path), path, options, limits, cancel);
-}
-
-ImportBatch parse_tegrastats(const std::string& text, const std::string& file, const ParseOptions& options,
-                             const ImportLimits& limits, const CancelToken& cancel) {
-  return meter::parse_log<TegrastatsParser>(PowerLineReader(text, file), file, options, limits, cancel);
-}
+const FileFormat kTegrastatsFileFormat{"tegrastats", "NVIDIA tegrastats log (Jetson rails)", sniff_tegrastats,
+                                       meter::parse_log_file<TegrastatsParser>,
+                                       meter::parse_log_text<TegrastatsParser>};
 
 }  // namespace bs

@@ -373,7 +373,7 @@ class ClpeakParser {
 
 }  // namespace
 
-int ClpeakTextImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_clpeak_text(std::string_view head, std::string_view) {
   const auto has = [&](std::string_view w) { return head.find(w) != std::string_view::npos; };
   const bool platform = has("Platform: ") || has("Platform 0: ");
   const bool device = has("Device: ") || has("Device 0: ");
@@ -386,17 +386,11 @@ int ClpeakTextImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-bool ClpeakTextImporter::usual_extension(std::string_view path) const {
-  return path.ends_with(".txt") || path.ends_with(".log");
-}
+static bool clpeak_text_extension(std::string_view path) { return path.ends_with(".txt") || path.ends_with(".log"); }
 
-ImportBatch ClpeakTextImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                      const CancelToken& cancel) const {
-  return parse_text_file(path, options, limits, cancel, parse_clpeak_text);
-}
-
-ImportBatch parse_clpeak_text(const std::string& text_in, const std::string& file, const ParseOptions& /*options*/,
-                              const ImportLimits& /*limits*/, const CancelToken& cancel) {
+static ImportBatch parse_clpeak_text(const std::string& text_in, const std::string& file,
+                                     const ParseOptions& /*options*/, const ImportLimits& /*limits*/,
+                                     const CancelToken& cancel) {
   const std::string_view text = text_in;
   ClpeakParser parser(file);
   std::size_t line_no = 0;
@@ -409,5 +403,9 @@ ImportBatch parse_clpeak_text(const std::string& text_in, const std::string& fil
   }
   return parser.finish();
 }
+
+const FileFormat kClpeakTextFileFormat{"clpeak-text",     "clpeak text output",
+                                       sniff_clpeak_text, parse_text_file_with<parse_clpeak_text>,
+                                       parse_clpeak_text, clpeak_text_extension};
 
 }  // namespace bs

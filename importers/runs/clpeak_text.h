@@ -9,19 +9,9 @@
 // to SI: GFLOPS/TFLOPS -> FLOP/s, GBPS -> B/s, GIOPS/GOPS/TOPS -> 1/s (integer operations), us -> s.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
-
-class ClpeakTextImporter final : public Importer {
- public:
-  std::string_view id() const override { return "clpeak-text"; }
-  std::string_view description() const override { return "clpeak text output"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
 
 // Reads what people save and paste: CRLF, tabs, a shell prompt or banner before the output, a paste that starts at
 // "Device:" (no "Platform:" line), several platforms and devices, clpeak 2.0 ("=== Vulkan backend ===",
@@ -32,7 +22,6 @@ class ClpeakTextImporter final : public Importer {
 // file is kept. A device without any measurement is left out with a warning. Only a file without any measurement is
 // an error: the first unreadable value when there was one, else a missing-field error. No options or limits (the
 // file's size is bounded by ImportLimits::max_json_bytes when it is read).
-ImportBatch parse_clpeak_text(const std::string& text, const std::string& file, const ParseOptions& options = {},
-                              const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
+extern const FileFormat kClpeakTextFileFormat;
 
 }  // namespace bs

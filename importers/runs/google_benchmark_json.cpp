@@ -287,7 +287,7 @@ std::optional<std::int64_t> threads_in_name(const std::string& name) {
 
 }  // namespace
 
-int GoogleBenchmarkJsonImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_google_benchmark_json(std::string_view head, std::string_view) {
   const bool benchmarks = head.find("\"benchmarks\"") != std::string_view::npos;
   const bool context = head.find("\"context\"") != std::string_view::npos;
   const bool machine = head.find("\"num_cpus\"") != std::string_view::npos ||
@@ -301,12 +301,7 @@ int GoogleBenchmarkJsonImporter::sniff(std::string_view head, std::string_view) 
   return 0;
 }
 
-bool GoogleBenchmarkJsonImporter::usual_extension(std::string_view path) const { return path.ends_with(".json"); }
-
-ImportBatch GoogleBenchmarkJsonImporter::parse(const std::string& path, const ParseOptions& options,
-                                               const ImportLimits& limits, const CancelToken& cancel) const {
-  return parse_text_file(path, options, limits, cancel, parse_google_benchmark_json);
-}
+static bool google_benchmark_json_extension(std::string_view path) { return path.ends_with(".json"); }
 
 ImportBatch parse_google_benchmark_json(const std::string& original, const std::string& file,
                                         const ParseOptions& options, const ImportLimits& limits,
@@ -479,5 +474,10 @@ ImportBatch parse_google_benchmark_json(const std::string& original, const std::
   batch.result_sets.push_back(std::move(set));
   return batch;
 }
+
+const FileFormat kGoogleBenchmarkJsonFileFormat{
+    "google-benchmark-json",     "Google Benchmark JSON",
+    sniff_google_benchmark_json, parse_text_file_with<parse_google_benchmark_json>,
+    parse_google_benchmark_json, google_benchmark_json_extension};
 
 }  // namespace bs

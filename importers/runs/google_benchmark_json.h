@@ -7,19 +7,11 @@
 // aggregate rows kept as reported_aggregates. Rows with error_occurred or skipped become warnings.
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
-class GoogleBenchmarkJsonImporter final : public Importer {
- public:
-  std::string_view id() const override { return "google-benchmark-json"; }
-  std::string_view description() const override { return "Google Benchmark JSON"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
+extern const FileFormat kGoogleBenchmarkJsonFileFormat;
 
 // Also reads the bare NaN / Infinity that Google Benchmark prints for non-finite values (not JSON): such a time
 // drops its row and such a counter is left out (missing data, never 0), each with a warning. Refused with the

@@ -84,16 +84,11 @@ bool is_pipeline_stage(std::string_view s) {
   return false;
 }
 
-int PipelineJsonImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_pipeline_json(std::string_view head, std::string_view) {
   // Any version: a newer one is then refused as unsupported rather than as an unknown format.
   if (head.find("\"benchscope-pipeline-v") != std::string_view::npos) return 100;
   if (head.find("\"stages\"") != std::string_view::npos && head.find("\"mean_s\"") != std::string_view::npos) return 40;
   return 0;
-}
-
-ImportBatch PipelineJsonImporter::parse(const std::string& path, const ParseOptions& options,
-                                        const ImportLimits& limits, const CancelToken& cancel) const {
-  return parse_text_file(path, options, limits, cancel, parse_pipeline_json);
 }
 
 ImportBatch parse_pipeline_json(const std::string& text, const std::string& file, const ParseOptions& /*options*/,
@@ -145,5 +140,11 @@ ImportBatch parse_pipeline_json(const std::string& text, const std::string& file
   batch.pipeline_runs.push_back(std::move(run));
   return batch;
 }
+
+static bool pipeline_json_extension(std::string_view path) { return path.ends_with(".json"); }
+
+const FileFormat kPipelineJsonFileFormat{kPipelineJsonFormat, "BenchScope pipeline timing JSON v1",
+                                         sniff_pipeline_json, parse_text_file_with<parse_pipeline_json>,
+                                         parse_pipeline_json, pipeline_json_extension};
 
 }  // namespace bs

@@ -6,21 +6,13 @@
 #include <string>
 #include <string_view>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
 inline constexpr std::string_view kPipelineJsonFormat = "benchscope-pipeline-v1";
 
-class PipelineJsonImporter final : public Importer {
- public:
-  std::string_view id() const override { return kPipelineJsonFormat; }
-  std::string_view description() const override { return "BenchScope pipeline timing JSON v1"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override { return path.ends_with(".json"); }
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
+extern const FileFormat kPipelineJsonFileFormat;
 
 // Parses pipeline JSON text; `file` names the source in errors. Throws ImportError naming file, line:column and
 // the JSON pointer of the bad field. No options.

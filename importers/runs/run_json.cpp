@@ -130,7 +130,7 @@ FlopsRun read_run(ReadState& st, const json& run, const std::string& at) {
 
 }  // namespace
 
-int RunJsonImporter::sniff(std::string_view head, std::string_view) const {
+static int sniff_run_json(std::string_view head, std::string_view) {
   if (head.find("\"benchscope-run\"") != std::string_view::npos) return 100;
   // A run file whose "format" key sits after 64 KiB of other content is unlikely but still recognisable.
   if (head.find("\"samples\"") != std::string_view::npos && head.find("\"runs\"") != std::string_view::npos &&
@@ -139,12 +139,7 @@ int RunJsonImporter::sniff(std::string_view head, std::string_view) const {
   return 0;
 }
 
-bool RunJsonImporter::usual_extension(std::string_view path) const { return path.ends_with(".json"); }
-
-ImportBatch RunJsonImporter::parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                                   const CancelToken& cancel) const {
-  return parse_text_file(path, options, limits, cancel, parse_run_json);
-}
+static bool run_json_extension(std::string_view path) { return path.ends_with(".json"); }
 
 ImportBatch parse_run_json(const std::string& text, const std::string& file, const ParseOptions& /*options*/,
                            const ImportLimits& limits, const CancelToken& cancel) {
@@ -174,5 +169,9 @@ ImportBatch parse_run_json(const std::string& text, const std::string& file, con
   for (std::size_t i = 0; i < runs.size(); ++i) batch.runs.push_back(read_run(st, runs[i], child("/runs", i)));
   return batch;
 }
+
+const FileFormat kRunJsonFileFormat{"benchscope-run-v1", "BenchScope run JSON v1",
+                                    sniff_run_json,      parse_text_file_with<parse_run_json>,
+                                    parse_run_json,      run_json_extension};
 
 }  // namespace bs

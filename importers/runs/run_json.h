@@ -5,21 +5,13 @@
 #include <span>
 #include <string>
 
-#include "common/importer.h"
+#include "common/format_importer.h"
 
 namespace bs {
 
 inline constexpr int kRunJsonVersion = 1;
 
-class RunJsonImporter final : public Importer {
- public:
-  std::string_view id() const override { return "benchscope-run-v1"; }
-  std::string_view description() const override { return "BenchScope run JSON v1"; }
-  int sniff(std::string_view head, std::string_view path) const override;
-  bool usual_extension(std::string_view path) const override;
-  ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
-                    const CancelToken& cancel) const override;
-};
+extern const FileFormat kRunJsonFileFormat;
 
 // Parses run JSON text; `file` names the source in errors. Throws ImportError (or Cancelled). No options.
 ImportBatch parse_run_json(const std::string& text, const std::string& file, const ParseOptions& options = {},

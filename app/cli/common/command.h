@@ -18,6 +18,13 @@ struct Command {
   std::function<int(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)> run;
 };
 
+// Command::run for a body that writes only to `out` (it takes no `err`), so a registration names the function
+// itself instead of wrapping it in a lambda: `out_only<run_devices>`.
+template <int (*Run)(const std::vector<std::string>& args, std::ostream& out)>
+int out_only(const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+  return Run(args, out);
+}
+
 void register_command(Command command);
 const std::vector<Command>& commands();  // sorted by name
 const Command* find_command(std::string_view name);

@@ -2,6 +2,7 @@
 #include "common/text_table.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <ostream>
 
 namespace bs::cli {
@@ -32,6 +33,12 @@ void TextTable::print(std::ostream& out) const {
   for (std::size_t w : width) total += w + 2;
   out << std::string(total > 2 ? total - 2 : 0, '-') << '\n';
   for (const auto& row : rows_) line(row);
+}
+
+std::string format_number(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
 }
 
 }  // namespace bs::cli

@@ -19,4 +19,7 @@ class TextTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
+// `v` through one printf conversion ("%.3g", "%.1f %%"), for table cells and report lines.
+std::string format_number(const char* format, double v);
+
 }  // namespace bs::cli

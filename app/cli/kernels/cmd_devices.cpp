@@ -262,9 +262,7 @@ const CommandRegistrar registrar({
     "  peak per cluster (resources/devices/cpu-cores.json) and their sum. --proc-root DIR: describe the ARM CPU of\n"
     "  DIR/proc/cpuinfo and DIR/proc/device-tree/model (a copy of a robot's files) instead of this machine; clocks\n"
     "  from DIR/sys/devices/system/cpu/cpuN/cpufreq (or --sysfs-root), else from the board's device-table entry.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_devices(args, out);
-    },
+    out_only<run_devices>,
 });
 
 }  // namespace

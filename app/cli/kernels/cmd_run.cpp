@@ -220,9 +220,7 @@ const CommandRegistrar registrar({
     "         [--repeats 10] [--workspace W.bsw] [--json] [--quiet]\n"
     "  STREAM triad a = b + q c over three float arrays of --mib MiB (12 bytes per element), mean ± SD of the\n"
     "  repetitions in GB/s: the memory ceiling of the roofline. --workspace stores it as a result set.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_flops(args, out, err);
-    },
+    run_flops,
 });
 
 }  // namespace

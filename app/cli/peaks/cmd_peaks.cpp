@@ -177,7 +177,7 @@ const CommandRegistrar registrar({
     "  fp32 (single, the default, as the paper), fp64, fp16, bf16, tf32, mixed, fp8, fp4, int32, int24, int16,\n"
     "  int8, int4; 'all' gives one row per precision and kind. With --json: {\"format\":\"benchscope-peaks\",\n"
     "  \"version\":1,\"rows\":[...],\"throughput\":[...]} as documented in docs/cli.md.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) { return run_peaks(args, out); },
+    out_only<run_peaks>,
 });
 
 }  // namespace

@@ -19,12 +19,6 @@
 namespace bs::cli {
 namespace {
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
 nlohmann::json point_json(const RooflinePoint& p) {
   return {{"label", p.label},           {"intensity", p.intensity},       {"achieved", p.flops},
           {"attainable", p.attainable}, {"fraction_of_roof", p.fraction}, {"memory_bound", p.memory_bound}};
@@ -114,15 +108,15 @@ int run_roofline(const std::vector<std::string>& raw, std::ostream& out) {
     const auto ridge = c.ridge_intensity();
     ct.add({c.platform, c.device, format_si(c.peak_flops, "FLOPS") + " (" + c.peak_source + ")",
             c.bandwidth_bps ? format_si(*c.bandwidth_bps, "B/s") : "not measured",
-            ridge ? fmt("%.2f", *ridge) : "\xE2\x80\x93"});
+            ridge ? format_number("%.2f", *ridge) : "\xE2\x80\x93"});
   }
   out << "Ceilings\n";
   ct.print(out);
   out << "\nRotation kernel at its peak (6 D N flops per worker over 16 D + 4 bytes)\n";
   TextTable rt({"run", "intensity (FLOP/B)", "achieved", "of roof"});
   for (const auto& [row, p] : rotation)
-    rt.add({row.platform + ": " + p.label, fmt("%.4g", p.intensity), format_si(p.flops, "FLOPS"),
-            fmt("%.0f %%", 100 * p.fraction)});
+    rt.add({row.platform + ": " + p.label, format_number("%.4g", p.intensity), format_si(p.flops, "FLOPS"),
+            format_number("%.0f %%", 100 * p.fraction)});
   rt.print(out);
   out << "\nPreprocessing stages (demosaic + reprojection) from the pipeline runs\n";
   if (stages.placed.empty()) {
@@ -131,11 +125,11 @@ int run_roofline(const std::vector<std::string>& raw, std::ostream& out) {
     TextTable st({"platform / device", "kernels", "ops/px", "B/px", "intensity (op/B)", "time (ms)", "achieved",
                   "of roof", "bound"});
     for (const StagePlacement& s : stages.placed)
-      st.add({s.platform + " / " + s.device, s.cost.label, fmt("%.1f", s.cost.ops_per_output_pixel),
-              fmt("%.1f", s.cost.bytes_per_output_pixel), fmt("%.3f", s.point.intensity),
-              fmt("%.2f", s.time.mean_s * 1e3) + " \xC2\xB1 " + fmt("%.2f", s.time.sd_s * 1e3) +
+      st.add({s.platform + " / " + s.device, s.cost.label, format_number("%.1f", s.cost.ops_per_output_pixel),
+              format_number("%.1f", s.cost.bytes_per_output_pixel), format_number("%.3f", s.point.intensity),
+              format_number("%.2f", s.time.mean_s * 1e3) + " \xC2\xB1 " + format_number("%.2f", s.time.sd_s * 1e3) +
                   " (n = " + std::to_string(s.time.n) + ")",
-              format_si(s.point.flops, "op/s"), fmt("%.1f %%", 100 * s.point.fraction),
+              format_si(s.point.flops, "op/s"), format_number("%.1f %%", 100 * s.point.fraction),
               !s.memory_ceiling_known ? "? (no bandwidth)"
               : s.point.memory_bound  ? "memory"
                                       : "compute"});
@@ -158,9 +152,7 @@ const CommandRegistrar registrar({
     "  arithmetic intensity (integer ops and compulsory DRAM bytes per pixel, counted in BenchScope's kernels)\n"
     "  and its measured throughput (ops per frame / mean stage time), under the ceiling of the device that ran it.\n"
     "  --json prints the same as one document (format benchscope-roofline).",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_roofline(args, out);
-    },
+    out_only<run_roofline>,
 });
 
 }  // namespace

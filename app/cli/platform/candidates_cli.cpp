@@ -2,7 +2,9 @@
 #include "platform/candidates_cli.h"
 
 #include <ostream>
+#include <stdexcept>
 
+#include "common/args.h"
 #include "common/text_table.h"
 
 namespace bs::cli {
@@ -104,6 +106,24 @@ nlohmann::json candidates_json(std::span<const CandidateClass> classes, std::spa
                     {"source", c.source},
                     {"flags", flags_of(c.flags)}});
   return {{"inference", cls}, {"peaks", pk}};
+}
+
+CandidateInputs library_candidate_inputs(std::span<const PlatformRow> rows, const LoadedData& data,
+                                         const std::string& spec) {
+  const BundledLibrary& lib = bundled_library();
+  if (!lib.error.empty()) throw std::runtime_error("library: " + lib.error);
+  CandidateInputs in;
+  in.platforms = rows;
+  in.pipelines = data.pipeline_runs;
+  in.dnn_runs = data.dnn_runs;
+  in.result_sets = data.result_sets;
+  in.lib = &lib.library;
+  try {
+    in.library = select_library(lib.library, spec);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--library: ") + e.what());
+  }
+  return in;
 }
 
 }  // namespace bs::cli

@@ -36,12 +36,6 @@ double parse_fraction(const ParsedArgs& args, const std::string& option, double 
   }
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 std::string summary_text(const Summary& s, const std::string& unit) {
   if (s.n == 0) return "-";
   if (unit.empty()) return format_mean_sd(s.mean, s.sd, s.n, "", 3);
@@ -101,8 +95,8 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
       if (r.verdict == CompareVerdict::Unchanged && !args.has("--all")) continue;
       const bool both = r.a.n > 0 && r.b.n > 0;
       table.add({r.measure, r.key, summary_text(r.a, r.unit), summary_text(r.b, r.unit),
-                 both ? fmt("%+.1f %%", 100 * r.change) : "-", both ? fmt("%.3g", r.test.p_value) : "-",
-                 std::string(to_string(r.verdict))});
+                 both ? format_number("%+.1f %%", 100 * r.change) : "-",
+                 both ? format_number("%.3g", r.test.p_value) : "-", std::string(to_string(r.verdict))});
     }
     if (!table.empty()) table.print(out);
     char line[256];
@@ -125,9 +119,7 @@ const CommandRegistrar registrar({
     "  common worker count); Google Benchmark and clpeak measures on platform, device, backend, name and metric.\n"
     "  A regression is a change in the worse direction larger than the threshold with Mann-Whitney U p < alpha\n"
     "  over the repetitions. Exit codes: 0 no regression, 3 regression found, 1 error, 2 usage.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_compare(args, out);
-    },
+    out_only<run_compare>,
 });
 
 }  // namespace

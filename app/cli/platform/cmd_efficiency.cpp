@@ -65,9 +65,7 @@ const CommandRegistrar registrar({
     "usage: benchscope-cli efficiency (WORKSPACE | PATH...) [--supply-volts V] [--json]\n"
     "  Pairs each platform's highest FLOPS peak with its current log (same platform name): the paper's\n"
     "  peak / (supply V x maximum current), and the honest variants peak / mean power and joules per GFLOP.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_efficiency(args, out);
-    },
+    out_only<run_efficiency>,
 });
 
 }  // namespace

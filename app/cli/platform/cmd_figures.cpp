@@ -73,9 +73,7 @@ const CommandRegistrar registrar({
     "  their provenance. --data paper keeps only the data reconstructed from the paper (a run measured here never\n"
     "  slips into a paper figure); figures.json records the choice, and what each figure shows and leaves out (and\n"
     "  why) is printed. Needs a build with Qt.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_figures(args, out, err);
-    },
+    run_figures,
 });
 
 }  // namespace

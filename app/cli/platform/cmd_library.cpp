@@ -233,9 +233,7 @@ const CommandRegistrar registrar({
     "  compare ranks the named published results beside a workspace's own platforms (detection stage, bench dnn,\n"
     "  imported MLPerf runs) under the constraints, within one network, scenario and precision only. --figure\n"
     "  writes the candidates figure (inferences per second against power, a marker per origin) as PNG.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_library(args, out);
-    },
+    out_only<run_library>,
 });
 
 }  // namespace

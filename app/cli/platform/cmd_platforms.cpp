@@ -74,19 +74,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   std::vector<PeakClass> peaks;
   const bool with_library = args.value("--library").has_value();
   if (with_library) {
-    const BundledLibrary& lib = bundled_library();
-    if (!lib.error.empty()) throw std::runtime_error("library: " + lib.error);
-    CandidateInputs in;
-    in.platforms = rows;
-    in.pipelines = data.pipeline_runs;
-    in.dnn_runs = data.dnn_runs;
-    in.result_sets = data.result_sets;
-    in.lib = &lib.library;
-    try {
-      in.library = select_library(lib.library, *args.value("--library"));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--library: ") + e.what());
-    }
+    const CandidateInputs in = library_candidate_inputs(rows, data, *args.value("--library"));
     classes = rank_candidates(in, c, options);
     peaks = peak_candidates(in);
     if (const auto p = args.value("--candidates-latex"))
@@ -223,9 +211,7 @@ const CommandRegistrar registrar({
     "  constraints, within one network, scenario and precision only (what still differs is said in the row), and\n"
     "  compute peaks within one precision. Every row names its origin (measured, reconstructed, published) and\n"
     "  its source; --candidates-csv/--candidates-latex write the inference table.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_platforms(args, out);
-    },
+    out_only<run_platforms>,
 });
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "analysis/library/candidates.h"
 
 #include "candidates_figure.h"
+#include "platform/candidates_cli.h"
 #include "report/candidates_section.h"
 #include "report_writer.h"
 #endif
@@ -56,20 +57,8 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   std::vector<PeakClass> peaks;
   const auto spec = args.value("--library");
   if (spec) {
-    const BundledLibrary& lib = bundled_library();
-    if (!lib.error.empty()) throw std::runtime_error("library: " + lib.error);
     const auto rows = compare_platforms(fd.runs, fd.traces, fd.pipelines, platform.options);
-    CandidateInputs in;
-    in.platforms = rows;
-    in.pipelines = data.pipeline_runs;
-    in.dnn_runs = data.dnn_runs;
-    in.result_sets = data.result_sets;
-    in.lib = &lib.library;
-    try {
-      in.library = select_library(lib.library, *spec);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--library: ") + e.what());
-    }
+    const CandidateInputs in = library_candidate_inputs(rows, data, *spec);
     classes = rank_candidates(in, platform.constraints, platform.options);
     peaks = peak_candidates(in);
   }
@@ -123,9 +112,7 @@ const CommandRegistrar registrar({
     "  writes only the PDF. --library orin,pi5 adds a \"Candidates\" section: published results from the library\n"
     "  beside the own platforms, ranked like with like under the same constraints (as `platforms --library`).\n"
     "  Needs a build with Qt.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_report(args, out, err);
-    },
+    run_report,
 });
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/signals.h"
+#include "common/text_table.h"
 #include "power/power_import.h"
 #include "store/battery_preset_store.h"
 #include "store/workspace.h"
@@ -22,12 +23,6 @@
 
 namespace bs::cli {
 namespace {
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 // The preset (built-in, or saved in --workspace, which may replace a built-in of the same name), then the
 // command line's overrides.
@@ -250,8 +245,8 @@ int run_battery(const std::vector<std::string>& raw, std::ostream& out, std::ost
   std::snprintf(line, sizeof line, "battery %.1f V (%dS) x %.0f mAh = %.2f Wh, usable %.0f %%\n", pack.nominal_v(),
                 pack.cells_series, pack.capacity_ah * 1000, pack.nominal_wh(), options.depth_of_discharge * 100);
   out << line;
-  out << "load " << fmt("%.2f", mission.mean_load_w()) << " W mean (" << source << ")";
-  if (mission.extra_load_w > 0) out << ", incl. " << fmt("%g", mission.extra_load_w) << " W extra load";
+  out << "load " << format_number("%.2f", mission.mean_load_w()) << " W mean (" << source << ")";
+  if (mission.extra_load_w > 0) out << ", incl. " << format_number("%g", mission.extra_load_w) << " W extra load";
   out << '\n';
   std::snprintf(line, sizeof line, "runtime %.2f min (%.2f h): %s\n  model: %s\n", r.runtime_s / 60, r.runtime_s / 3600,
                 r.stop_reason.c_str(), r.model_label.c_str());
@@ -286,9 +281,7 @@ const CommandRegistrar registrar({
     "  the pack and options given here); their depth of discharge, extra load, model and mission are the defaults.\n"
     "  Without --watts/--power-log: runtime per platform, each computer at the mean power of its log, with the\n"
     "  extra load and the mission's phases on top.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_battery(args, out, err);
-    },
+    run_battery,
 });
 
 }  // namespace

@@ -36,12 +36,6 @@ int bench_power_csv(const std::vector<std::string>& raw, std::ostream& out);  //
 
 namespace {
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
 nlohmann::json signal_json(const std::optional<SignalStats>& s) {
   if (!s) return nullptr;
   return {{"n", s->summary.n},     {"mean", s->summary.mean}, {"sd", s->summary.sd},
@@ -190,17 +184,18 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     if (s.current_a) out << "  current  " << signal_line(*s.current_a, "A") << '\n';
     if (s.power_w) {
       out << "  power    " << signal_line(*s.power_w, "W") << "\n           from the " << to_string(s.power_source);
-      if (s.supply_v) out << " (" << fmt("%g", *s.supply_v) << " V)";
+      if (s.supply_v) out << " (" << format_number("%g", *s.supply_v) << " V)";
       out << '\n';
     } else {
       out << "  power    unknown: the log has current only; give --supply-volts\n";
     }
     if (s.energy_j)
-      out << "  energy   " << fmt("%.1f", *s.energy_j) << " J (" << fmt("%.4f", *s.energy_j / 3600)
-          << " Wh), trapezoidal; mean power " << fmt("%.3f", s.mean_power_w.value_or(0)) << " W over "
-          << fmt("%.3f", s.duration_s) << " s\n";
+      out << "  energy   " << format_number("%.1f", *s.energy_j) << " J (" << format_number("%.4f", *s.energy_j / 3600)
+          << " Wh), trapezoidal; mean power " << format_number("%.3f", s.mean_power_w.value_or(0)) << " W over "
+          << format_number("%.3f", s.duration_s) << " s\n";
     if (s.charge_c)
-      out << "  charge   " << fmt("%.2f", *s.charge_c) << " C (" << fmt("%.2f", *s.charge_c / 3.6) << " mAh)\n";
+      out << "  charge   " << format_number("%.2f", *s.charge_c) << " C (" << format_number("%.2f", *s.charge_c / 3.6)
+          << " mAh)\n";
     if (s.channels.size() > 1) {
       out << "  channels\n";
       for (const ChannelStats& c : s.channels)
@@ -208,14 +203,15 @@ int run_power(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     }
     if (args.has("--phases")) {
       // The Power tab's per-phase table (analysis/range_table.h): the same columns and numbers.
-      out << "  phases (the log's own, then level changes of at least " << fmt("%g", phase_options.min_phase_s)
-          << " s)\n";
+      out << "  phases (the log's own, then level changes of at least "
+          << format_number("%g", phase_options.min_phase_s) << " s)\n";
       const RangeSignal signal = default_signal(s);
       std::vector<std::string> header = {"phase", "origin", "from (s)", "to (s)"};
       for (std::string& h : range_headers(signal)) header.push_back(std::move(h));
       TextTable table(std::move(header));
       for (const PhaseStatsRow& p : phases) {
-        std::vector<std::string> row = {p.name, p.origin, fmt("%.3f", p.start_s), fmt("%.3f", p.end_s)};
+        std::vector<std::string> row = {p.name, p.origin, format_number("%.3f", p.start_s),
+                                        format_number("%.3f", p.end_s)};
         for (std::string& c : range_cells(p.stats, signal, true)) row.push_back(std::move(c));
         table.add(std::move(row));
       }
@@ -324,7 +320,7 @@ int bench_power_csv_impl(const std::vector<std::string>& raw, std::ostream& out)
   ParseRun ours, ref;
   for (int r = 0; r < runs; ++r) {
     ours = measure([&] {
-      const ImportBatch b = PowerCsvImporter().parse(path, {}, {}, interrupt_token());
+      const ImportBatch b = kPowerCsvFileFormat.parse(path, {}, {}, interrupt_token());
       ParseRun p;
       const PowerTrace& t = b.power_traces.at(0);
       p.rows = t.time_s.size();
@@ -384,9 +380,7 @@ const CommandRegistrar registrar({
     "  and load phases found from level changes (--min-phase S, default 2; --min-step X in the signal's unit).\n"
     "  Formats: power CSV (generic, Joulescope, Otii, INA219 loggers), NVIDIA tegrastats, nvidia-smi --query-gpu\n"
     "  CSV (one trace per GPU), perf stat RAPL energy and SPEC PTDaemon (MLPerf spl.txt; marks as phases).",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_power(args, out, err);
-    },
+    run_power,
 });
 
 }  // namespace

@@ -96,9 +96,7 @@ const CommandRegistrar registrar({
     "  (default 1e6) at the given rate (default 4000 S/s): a 60 s cycle of idle (0.6 A), load (2.4 A) and\n"
     "  cool-down (0.9 A) with 10 ms spikes and 20 mA Gaussian noise. The same seed (default 1) gives the same bytes.\n"
     "  The data is synthetic and says so in a '# meter' comment.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_synth_power(args, out);
-    },
+    out_only<run_synth_power>,
 });
 
 }  // namespace

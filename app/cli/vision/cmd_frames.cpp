@@ -106,9 +106,7 @@ const CommandRegistrar registrar({
     "  frame (or LENS.json, as the reprojection tuner saves it; else the paper's 195 degree lens and 150 degree "
     "view),\n"
     "  8-bit through the display window (default: the frame's full range).",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
-      return run_frames(args, out);
-    },
+    out_only<run_frames>,
 });
 
 }  // namespace

@@ -340,9 +340,7 @@ const CommandRegistrar registrar({
     "  --power records the on-board sensors during the run (phase \"pipeline\"): energy per frame through the\n"
     "  pipeline, per preprocessed frame and per inference (mean power x stage mean time); --workspace stores the\n"
     "  trace in the same import as the run.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_pipeline_cmd(args, out, err);
-    },
+    run_pipeline_cmd,
 });
 
 }  // namespace

@@ -157,7 +157,7 @@ const CommandRegistrar registrar({
     "  a poses file has one pose per line), ray-traced through the lens with NxN samples per pixel (default 4):\n"
     "  PREFIX-01.png... (grey), PREFIX.json (ground truth). --noise here: Gaussian noise in grey levels; --blur:\n"
     "  sigma, px.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) { return run_synth(args, out); },
+    out_only<run_synth>,
 });
 
 }  // namespace

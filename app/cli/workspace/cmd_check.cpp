@@ -55,9 +55,7 @@ const CommandRegistrar registrar({
     "                    frame, ...; a damaged device with its runs), then check again. Other BenchScope commands\n"
     "                    leave damaged items out with a warning and refuse to write to the workspace until then.\n"
     "  See docs/workspace-check.md.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_check(args, out, err);
-    },
+    run_check,
 });
 
 }  // namespace

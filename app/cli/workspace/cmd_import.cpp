@@ -85,9 +85,7 @@ const CommandRegistrar registrar({
     "  Bayer pattern (BGGR, RGGB, GRBG, GBRG or grey), bit depth and byte order of .raw files that have no sidecar.\n"
     "  A power log whose file names no platform gets --platform NAME, else one guessed from its metadata (host name)\n"
     "  or the workspace (its only platform), else \"unassigned: LOG\"; never none. The summary line says which.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      return run_import(args, out, err);
-    },
+    run_import,
 });
 
 }  // namespace

@@ -60,7 +60,7 @@ const CommandRegistrar registrar({
     "  --label TEXT the run gets a label (at most 80 characters), shown after the run's own name in the GUI's\n"
     "  legends and tree, `figures` and `report`; --clear removes it. Where two runs would read the same, legends\n"
     "  and tables add what differs (label, date and time, host, N) on their own.",
-    [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) { return run_runs(args, out, err); },
+    run_runs,
 });
 
 }  // namespace

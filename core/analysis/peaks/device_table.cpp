@@ -38,20 +38,6 @@ std::optional<double> optional_positive(const json& e, const char* key, const st
   return it->get<double>();
 }
 
-std::vector<std::string> string_list(const json& e, const char* key, const std::string& origin,
-                                     const std::string& where) {
-  std::vector<std::string> out;
-  const auto it = e.find(key);
-  if (it == e.end()) return out;
-  if (!it->is_array()) fail(origin, where + "." + key, "not an array");
-  for (const json& v : *it) {
-    if (!v.is_string() || v.get<std::string>().empty())
-      fail(origin, where + "." + key, "an element is not a non-empty string");
-    out.push_back(v.get<std::string>());
-  }
-  return out;
-}
-
 constexpr const char* kVerifiableFields[] = {"units",           "flop_per_unit_per_cycle",      "clock_ghz",
                                              "fp32_peak_flops", "memory_bandwidth_bytes_per_s", "tdp_w"};
 
@@ -149,11 +135,11 @@ DeviceTable parse_device_table(std::string_view json_text, const std::string& or
     if (src == e.end() || !src->is_object()) fail(origin, where + ".source", "missing: every entry names its source");
     s.source_title = required_string(*src, "title", origin, where + ".source");
     s.source_url = src->value("url", "");
-    s.source_more_urls = string_list(*src, "more", origin, where + ".source");
+    s.source_more_urls = resource_table_strings(*src, "more", origin, where + ".source");
     s.note = e.value("note", "");
     s.peak_terms = peak_terms(e, origin, where);
     s.peak_exempt = e.value("peak_exempt", "");
-    s.unverified = string_list(e, "unverified", origin, where);
+    s.unverified = resource_table_strings(e, "unverified", origin, where);
     for (const std::string& field : s.unverified)
       if (std::none_of(std::begin(kVerifiableFields), std::end(kVerifiableFields),
                        [&](const char* f) { return field == f; }))

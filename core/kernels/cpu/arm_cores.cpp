@@ -75,20 +75,6 @@ int table_count(const json& e, const char* key, const std::string& origin, const
   return it->get<int>();
 }
 
-std::vector<std::string> table_strings(const json& e, const char* key, const std::string& origin,
-                                       const std::string& where) {
-  std::vector<std::string> out;
-  const auto it = e.find(key);
-  if (it == e.end()) return out;
-  if (!it->is_array()) fail(origin, where + "." + key, "not an array");
-  for (const json& v : *it) {
-    if (!v.is_string() || v.get<std::string>().empty())
-      fail(origin, where + "." + key, "an element is not a non-empty string");
-    out.push_back(v.get<std::string>());
-  }
-  return out;
-}
-
 // cpufreq's highest frequency of `cpu` in GHz (the file holds kHz), 0 when absent or not a sane number.
 double cpufreq_max_ghz(const std::filesystem::path& sysfs_root, int cpu) {
   if (cpu < 0) return 0;
@@ -133,8 +119,8 @@ ArmCoreTable parse_arm_core_table(std::string_view json_text, const std::string&
       fail(origin, where + ".source", "missing: every core names its source (title, url)");
     c.source_title = (*src)["title"].get<std::string>();
     c.source_url = src->value("url", "");
-    c.source_more_urls = table_strings(*src, "more", origin, where + ".source");
-    c.unverified = table_strings(e, "unverified", origin, where);
+    c.source_more_urls = resource_table_strings(*src, "more", origin, where + ".source");
+    c.unverified = resource_table_strings(e, "unverified", origin, where);
     for (const std::string& f : c.unverified)
       if (f != "fp32_lanes" && f != "fma_units") fail(origin, where + ".unverified", "unknown field " + f);
     c.note = e.value("note", "");

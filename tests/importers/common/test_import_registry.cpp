@@ -80,9 +80,9 @@ class TestImportRegistry : public QObject {
   }
 
   void extension_only_breaks_ties() {
-    const bs::RunJsonImporter run;
-    const bs::GoogleBenchmarkJsonImporter gbench;
-    const bs::ClpeakTextImporter clpeak;
+    const bs::FormatImporter run(bs::kRunJsonFileFormat);
+    const bs::FormatImporter gbench(bs::kGoogleBenchmarkJsonFileFormat);
+    const bs::FormatImporter clpeak(bs::kClpeakTextFileFormat);
     QVERIFY(run.usual_extension("a/b.json") && gbench.usual_extension("x.json") && clpeak.usual_extension("c.txt"));
     QVERIFY(!clpeak.usual_extension("c.json"));
     // The extension alone never makes a format: JSON-named notes are still not run JSON.

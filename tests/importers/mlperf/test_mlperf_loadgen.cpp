@@ -107,7 +107,7 @@ class TestMlperfLoadgen : public QObject {
   }
 
   void a_folder_walk_imports_results_and_passes_over_the_rest() {
-    const bs::MlperfLoadgenImporter imp;
+    const bs::FormatImporter imp(bs::kMlperfLoadgenFileFormat);
     const std::string head = read(kOrin + "mlperf_log_summary.txt");
     QCOMPARE(imp.sniff(head, kOrin + "mlperf_log_summary.txt"), 95);
     QCOMPARE(imp.sniff(head, "/x/performance/ranging/mlperf_log_summary.txt"), 0);

@@ -23,7 +23,7 @@ std::string row(const std::string& time, const std::string& uptime, int in, int 
 
 bs::ImportError error_of(const std::string& text) {
   try {
-    bs::parse_jtop_csv(text, "j.csv");
+    bs::kJtopCsvFileFormat.parse_text(text, "j.csv");
   } catch (const bs::ImportError& e) {
     return e;
   }
@@ -40,7 +40,7 @@ class TestJtopCsv : public QObject {
                              row("2024-03-01 10:00:00.250000", "1 day, 2:03:04.500000", 5000, 1500, 1200, 5000) +
                              row("2024-03-01 10:00:01.250000", "1 day, 2:03:05.500000", 7000, 3000, 1300, 7000) +
                              row("2024-03-01 10:00:02", "1 day, 2:03:06.250000", 6500, 2500, 1250, 6500);
-    const auto b = bs::parse_jtop_csv(text, "j.csv");
+    const auto b = bs::kJtopCsvFileFormat.parse_text(text, "j.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QCOMPARE(t.total_channel, std::string("Power TOT"));
     QCOMPARE(t.channels.front().name, std::string("Power TOT"));  // the total first
@@ -62,7 +62,7 @@ class TestJtopCsv : public QObject {
     const auto e = error_of(text);
     QCOMPARE(e.location().line, std::size_t{4});
     QCOMPARE(e.location().field, std::string("uptime"));
-    const auto b = bs::parse_jtop_csv(
+    const auto b = bs::kJtopCsvFileFormat.parse_text(
         "uptime,Power TOT,nvp model\n\"3 days, 0:07:35.540000\",3852,15W\n"
         "\"3 days, 0:07:36.040000\",3900,15W\n",
         "j.csv");
@@ -72,7 +72,7 @@ class TestJtopCsv : public QObject {
   void settings_that_change_are_kept_and_warned() {
     const std::string text = kHeader + row("2024-03-01 10:00:00", "0:01:00", 5000, 1, 1, 5000, "OFF", "15W") +
                              row("2024-03-01 10:00:01", "0:01:01", 9000, 1, 1, 9000, "ON", "MAXN");
-    const auto b = bs::parse_jtop_csv(text, "j.csv");
+    const auto b = bs::kJtopCsvFileFormat.parse_text(text, "j.csv");
     const auto& s = b.power_traces.at(0).provenance.settings;
     QCOMPARE(s.at(0).second, std::string("OFF then ON"));
     QCOMPARE(s.at(1).second, std::string("15W then MAXN"));
@@ -82,7 +82,7 @@ class TestJtopCsv : public QObject {
   void empty_power_cell_is_a_missing_sample() {
     std::string text = kHeader + row("2024-03-01 10:00:00", "0:01:00", 5000, 1, 1, 5000);
     text += "2024-03-01 10:00:01,\"0:01:01\",5,OFF,0.25,26.7,44.6,-256,5000,,1,5000,OFF,MAXN\r\n";
-    const auto b = bs::parse_jtop_csv(text, "j.csv");
+    const auto b = bs::kJtopCsvFileFormat.parse_text(text, "j.csv");
     QVERIFY(std::isnan(b.power_traces.at(0).channels[2].values[1]));
     QCOMPARE(b.power_traces.at(0).channels[0].values[1], 5.0);
     QCOMPARE(b.warnings.size(), std::size_t{1});
@@ -108,7 +108,7 @@ class TestJtopCsv : public QObject {
                  row("2024-03-01 10:00:02", "0:01:02", 1, 1, 1, 1));
     QCOMPARE(e.category(), bs::ImportErrorCategory::Syntax);
     QCOMPARE(e.location().line, std::size_t{3});
-    const auto cut = bs::parse_jtop_csv(
+    const auto cut = bs::kJtopCsvFileFormat.parse_text(
         kHeader + row("2024-03-01 10:00:00", "0:01:00", 1, 1, 1, 1) + "2024-03-01 10:00:01,\"0:0", "j.csv");
     QCOMPARE(cut.power_traces.at(0).time_s.size(), std::size_t{1});
     QVERIFY(cut.warnings.at(0).find("j.csv:3: cut-off last row") != std::string::npos);
@@ -130,11 +130,11 @@ class TestJtopCsv : public QObject {
   }
   void sniffing_beats_power_csv_on_jtop_files() {
     const std::string head = kHeader + row("2024-03-01 10:00:00", "0:01:00", 1, 1, 1, 1);
-    const int jtop = bs::JtopCsvImporter().sniff(head, "log.csv");
+    const int jtop = bs::FormatImporter(bs::kJtopCsvFileFormat).sniff(head, "log.csv");
     QCOMPARE(jtop, 95);
-    QVERIFY(jtop > bs::PowerCsvImporter().sniff(head, "log.csv"));
-    QCOMPARE(bs::JtopCsvImporter().sniff("time_s,power_W\n0,1\n", "x.csv"), 0);
-    QCOMPARE(bs::JtopCsvImporter().sniff("RAM 1/2MB VDD_IN 1/1\n", "x.log"), 0);
+    QVERIFY(jtop > bs::FormatImporter(bs::kPowerCsvFileFormat).sniff(head, "log.csv"));
+    QCOMPARE(bs::FormatImporter(bs::kJtopCsvFileFormat).sniff("time_s,power_W\n0,1\n", "x.csv"), 0);
+    QCOMPARE(bs::FormatImporter(bs::kJtopCsvFileFormat).sniff("RAM 1/2MB VDD_IN 1/1\n", "x.log"), 0);
   }
 };
 

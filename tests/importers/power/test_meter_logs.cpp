@@ -76,7 +76,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(b.warnings[0].find("temperature.gpu") != std::string::npos);
   }
   void nvidia_smi_interleaved_gpus_and_missing_samples() {
-    const auto b = bs::parse_nvidia_smi(
+    const auto b = bs::kNvidiaSmiFileFormat.parse_text(
         "timestamp, name, pci.bus_id, power.draw [W], power.limit [W], utilization.gpu [%]\n"
         "2023/10/05 14:31:02.123, NVIDIA A100-SXM4-40GB, 00000000:07:00.0, 285.43 W, 400.00 W, 97 %\n"
         "2023/10/05 14:31:02.125, NVIDIA A100-SXM4-40GB, 00000000:0F:00.0, [N/A], 400.00 W, 0 %\n"
@@ -110,7 +110,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(lines[2].endsWith("19.46 W") && lines[10].endsWith("19.89 W"));
     lines[2].replace("19.46 W", "[N/A]");
     lines[10].replace("19.89 W", "[N/A]");
-    const auto b = bs::parse_nvidia_smi(lines.join('\n').toStdString(), "smi-na.csv");
+    const auto b = bs::kNvidiaSmiFileFormat.parse_text(lines.join('\n').toStdString(), "smi-na.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QCOMPARE(t.label, std::string("smi-na.csv"));  // one GPU: the file's name
     const bs::PowerStats s = bs::power_stats(t);
@@ -120,7 +120,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(s.power_w->summary.mean, (8 * 19.46 + 2 * 19.89) / 10, 1e-9));
   }
   void nvidia_smi_nounits_instant_and_average() {
-    const auto b = bs::parse_nvidia_smi(
+    const auto b = bs::kNvidiaSmiFileFormat.parse_text(
         "timestamp, index, power.draw.average [W], power.draw.instant [W]\n"
         "2024/01/01 00:00:00.000, 0, 70.00, 71.50\n"
         "2024/01/01 00:00:00.500, 0, 72.00, 80.25\n",
@@ -132,7 +132,7 @@ class TestMeterLogs : public QObject {
     QCOMPARE(channel(t, "power.draw.instant").values[1], 80.25);
   }
   void nvidia_smi_noheader_inferred_only_when_safe() {
-    const auto b = bs::parse_nvidia_smi(
+    const auto b = bs::kNvidiaSmiFileFormat.parse_text(
         "2024/10/13 03:33:31.779, NVIDIA GeForce GTX 1650, GPU-eced1bd8-b3e7-abfc-0555-6f654cee60a5, P0, 19.46 W\n"
         "2024/10/13 03:33:31.792, NVIDIA GeForce GTX 1650, GPU-eced1bd8-b3e7-abfc-0555-6f654cee60a5, P0, 19.89 W\n",
         "nh.csv");
@@ -140,18 +140,18 @@ class TestMeterLogs : public QObject {
     QCOMPARE(b.power_traces.at(0).provenance.gpu_model, std::string("NVIDIA GeForce GTX 1650"));
     // Two columns in W (power.draw and power.limit?) or none (nounits): the error says to keep the header.
     for (const char* text : {"2024/10/13 03:33:31.779, 19.46 W, 75.00 W\n", "2024/10/13 03:33:31.779, 0, 19.46\n"}) {
-      const auto e = error_of([&] { bs::parse_nvidia_smi(text, "nh.csv"); });
+      const auto e = error_of([&] { bs::kNvidiaSmiFileFormat.parse_text(text, "nh.csv"); });
       QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
       QVERIFY2(e.reason().find("keep the header") != std::string::npos, e.what());
     }
   }
   void nvidia_smi_broken_logs() {
     // No timestamp: the -l interval is not in the file.
-    auto e = error_of([] { bs::parse_nvidia_smi("power.draw [W]\n20.0 W\n", "x.csv"); });
+    auto e = error_of([] { bs::kNvidiaSmiFileFormat.parse_text("power.draw [W]\n20.0 W\n", "x.csv"); });
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
     QVERIFY(e.reason().find("timestamp") != std::string::npos);
     e = error_of([] {
-      bs::parse_nvidia_smi(
+      bs::kNvidiaSmiFileFormat.parse_text(
           "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 20 W\n"
           "2024/01/01 00:00:00.000, 20 W\n2024/01/01 00:00:02.000, 20 W\n",
           "x.csv");
@@ -159,17 +159,19 @@ class TestMeterLogs : public QObject {
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{3});
     e = error_of([] {
-      bs::parse_nvidia_smi(
+      bs::kNvidiaSmiFileFormat.parse_text(
           "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, lots W\n"
           "2024/01/01 00:00:02.000, 20 W\n",
           "x.csv");
     });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().field, std::string("power.draw"));
-    e = error_of([] { bs::parse_nvidia_smi("timestamp, power.draw [kW]\n2024/01/01 00:00:01.000, 1\n", "x.csv"); });
+    e = error_of([] {
+      bs::kNvidiaSmiFileFormat.parse_text("timestamp, power.draw [kW]\n2024/01/01 00:00:01.000, 1\n", "x.csv");
+    });
     QCOMPARE(e.category(), bs::ImportErrorCategory::Unsupported);
     // A cut-off last line and a repeated header are skipped with warnings.
-    const auto b = bs::parse_nvidia_smi(
+    const auto b = bs::kNvidiaSmiFileFormat.parse_text(
         "timestamp, power.draw [W]\n2024/01/01 00:00:00.000, 20 W\n"
         "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 22 W\n2024/01/01 00:0",
         "x.csv");
@@ -230,7 +232,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(stats.power_w->mean, 6.506034, 1e-6));
   }
   void perf_interval_human_per_socket_and_not_counted() {
-    const auto b = bs::parse_perf_stat(
+    const auto b = bs::kPerfStatFileFormat.parse_text(
         "# started on Sun Aug 24 12:00:00 2026\n\n"
         "#           time socket cpus             counts unit events\n"
         "     1.001048308 S0        1              19.63 Joules power/energy-pkg/\n"
@@ -248,7 +250,7 @@ class TestMeterLogs : public QObject {
   }
   void perf_summary_locale_psys_and_runs() {
     // Decimal comma with '.' grouping (a German locale), psys present: psys is the total.
-    const auto b = bs::parse_perf_stat(
+    const auto b = bs::kPerfStatFileFormat.parse_text(
         " Performance counter stats for 'system wide' (5 runs):\n\n"
         "          1.373,00 Joules power/energy-pkg/                    ( +-  0,83% )\n"
         "          2.006,65 Joules power/energy-psys/\n\n"
@@ -261,7 +263,7 @@ class TestMeterLogs : public QObject {
     QCOMPARE(t.provenance.settings.at(0).second, std::string("5"));
     // A French locale groups thousands with a space: "5 005,68" is one number (the shape of a paste seen in a public
     // course repository; numbers as there).
-    const auto fr = bs::parse_perf_stat(
+    const auto fr = bs::kPerfStatFileFormat.parse_text(
         "         5 005,68 Joules power/energy-cores/\n"
         "          5 591,86 Joules power/energy-pkg/\n"
         "             34,22 Joules power/energy-gpu/\n"
@@ -270,7 +272,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(channel(fr.power_traces.at(0), "pkg").values[0], 5591.86 / 287.542923380));
     QVERIFY(near(channel(fr.power_traces.at(0), "gpu").values[0], 34.22 / 287.542923380));
     // Thousands grouping in the C locale, and two runs pasted one after the other: one trace each.
-    const auto two = bs::parse_perf_stat(
+    const auto two = bs::kPerfStatFileFormat.parse_text(
         " Performance counter stats for 'system wide':\n  2,306.32 Joules power/energy-pkg/\n"
         "  277.955355190 seconds time elapsed\n"
         " Performance counter stats for 'system wide':\n  <not supported> Joules power/energy-pkg/\n"
@@ -283,29 +285,31 @@ class TestMeterLogs : public QObject {
   }
   void perf_broken_outputs() {
     // -x without -I: energy but no elapsed time.
-    auto e = error_of([] { bs::parse_perf_stat("893.33,Joules,power/energy-pkg/,20005559241,100.00,,\n", "x.csv"); });
+    auto e = error_of(
+        [] { bs::kPerfStatFileFormat.parse_text("893.33,Joules,power/energy-pkg/,20005559241,100.00,,\n", "x.csv"); });
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
     QVERIFY(e.reason().find("-I") != std::string::npos);
     // ... unless duration_time was counted: 893.33 J over 20.0 s.
-    const auto d = bs::parse_perf_stat(
+    const auto d = bs::kPerfStatFileFormat.parse_text(
         "893.33,Joules,power/energy-pkg/,20005559241,100.00,,\n"
         "20000000000,ns,duration_time,20000000000,100.00,,\n",
         "d.csv");
     QVERIFY(near(d.power_traces.at(0).channels.at(0).values[0], 893.33 / 20.0));
     e = error_of([] {
-      bs::parse_perf_stat(
+      bs::kPerfStatFileFormat.parse_text(
           " Performance counter stats for 'sleep 1':\n 1,990,524 cycles\n"
           " 1.0 seconds time elapsed\n",
           "x.txt");
     });
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
     e = error_of([] {
-      bs::parse_perf_stat("1.0,abc,Joules,power/energy-pkg/,1,100\n2.0,1,Joules,power/energy-pkg/,1,100\n", "x.csv");
+      bs::kPerfStatFileFormat.parse_text(
+          "1.0,abc,Joules,power/energy-pkg/,1,100\n2.0,1,Joules,power/energy-pkg/,1,100\n", "x.csv");
     });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{1});
     e = error_of([] {
-      bs::parse_perf_stat(
+      bs::kPerfStatFileFormat.parse_text(
           "2.0,1,Joules,power/energy-pkg/,1,100\n1.0,1,Joules,power/energy-pkg/,1,100\n"
           "3.0,1,Joules,power/energy-pkg/,1,100\n",
           "x.csv");
@@ -345,7 +349,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(b.warnings.empty());
   }
   void ptd_marks_channels_and_missing_readings() {
-    const auto b = bs::parse_ptd_log(
+    const auto b = bs::kPtdLogFileFormat.parse_text(
         "Time,03-01-2021 "
         "09:00:00.000,Watts,-1.000000,Volts,230.0,Amps,0.1,PF,0.5,Mark,ranging,Ch1,Watts,10.0,Volts,230.0,Amps,0.05,PF,"
         "0.9\n"
@@ -371,13 +375,13 @@ class TestMeterLogs : public QObject {
   }
   void ptd_day_first_dates_and_errors() {
     // mlcommons/power-dev's README shows "28-12-2020": a first field above 12 can only be a day.
-    const auto b = bs::parse_ptd_log(
+    const auto b = bs::kPtdLogFileFormat.parse_text(
         "Time,28-12-2020 15:21:14.682,Watts,22.95,Volts,228.57,Amps,0.20643,PF,0.4864,Mark,x\n"
         "Time,28-12-2020 15:21:15.686,Watts,23.08,Volts,228.44,Amps,0.20732,PF,0.4874,Mark,x\n",
         "dm.txt");
     QCOMPARE(b.power_traces.at(0).start_time, std::string("2020-12-28T15:21:14.682"));
     auto e = error_of([] {
-      bs::parse_ptd_log(
+      bs::kPtdLogFileFormat.parse_text(
           "Time,12-23-2020 10:21:52.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
           "Time,12-23-2020 10:21:51.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
           "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n",
@@ -386,7 +390,7 @@ class TestMeterLogs : public QObject {
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{2});
     e = error_of([] {
-      bs::parse_ptd_log(
+      bs::kPtdLogFileFormat.parse_text(
           "Time,12-23-2020 10:21:52.000,Watts,x,Volts,1,Amps,1,PF,1,Mark,a\n"
           "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n",
           "x.txt");

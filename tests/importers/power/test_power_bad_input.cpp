@@ -13,7 +13,7 @@
 namespace {
 
 bs::ImportError parse_error(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::parse_power_csv(text, "log.csv"); });
+  return bs::test::import_error_of([&] { return bs::kPowerCsvFileFormat.parse_text(text, "log.csv"); });
 }
 
 }  // namespace
@@ -39,8 +39,8 @@ class TestPowerBadInput : public QObject {
         QVERIFY2(what.find(text) != std::string::npos, what.c_str());
       QVERIFY2(e.location().line > 0, what.c_str());
       try {
-        bs::PowerCsvImporter().parse(path, {}, {}, bs::CancelToken{});
-        QFAIL(qPrintable(QString::fromStdString(path) + " was accepted by PowerCsvImporter::parse"));
+        bs::kPowerCsvFileFormat.parse(path, {}, {}, bs::CancelToken{});
+        QFAIL(qPrintable(QString::fromStdString(path) + " was accepted by the power CSV importer"));
       } catch (const bs::ImportError&) {
       }
       ++checked;
@@ -84,7 +84,7 @@ class TestPowerBadInput : public QObject {
     bs::ImportLimits limits;
     limits.max_power_rows = 3;  // the meter CSV's own row limit (100M-row logs are allowed by default)
     try {
-      bs::parse_power_csv("time_s,current_A\n0,1\n1,1\n2,1\n3,1\n", "log.csv", {}, limits);
+      bs::kPowerCsvFileFormat.parse_text("time_s,current_A\n0,1\n1,1\n2,1\n3,1\n", "log.csv", {}, limits);
       QFAIL("accepted more rows than the limit");
     } catch (const bs::ImportError& e) {
       QCOMPARE(e.category(), bs::ImportErrorCategory::TooLarge);
@@ -92,7 +92,7 @@ class TestPowerBadInput : public QObject {
     }
     const std::string long_line = "time_s,current_A\n0," + std::string(std::size_t{1} << 21, '1') + "\n";
     try {
-      bs::parse_power_csv(long_line, "log.csv");
+      bs::kPowerCsvFileFormat.parse_text(long_line, "log.csv");
       QFAIL("accepted a 2 MiB line");
     } catch (const bs::ImportError& e) {
       QCOMPARE(e.category(), bs::ImportErrorCategory::TooLarge);
@@ -104,7 +104,7 @@ class TestPowerBadInput : public QObject {
     token.cancel();
     std::string text = "time_s,current_A\n";
     for (int k = 0; k < 5000; ++k) text += std::to_string(k) + ",1\n";
-    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::parse_power_csv(text, "log.csv", {}, {}, token));
+    QVERIFY_THROWS_EXCEPTION(bs::Cancelled, bs::kPowerCsvFileFormat.parse_text(text, "log.csv", {}, {}, token));
   }
 };
 

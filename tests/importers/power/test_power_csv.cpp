@@ -9,7 +9,7 @@
 namespace {
 
 bs::PowerTrace parse(const std::string& text) {
-  auto batch = bs::parse_power_csv(text, "log.csv");
+  auto batch = bs::kPowerCsvFileFormat.parse_text(text, "log.csv");
   return std::move(batch.power_traces.at(0));
 }
 
@@ -32,7 +32,7 @@ bool warned(const bs::ImportBatch& b, const std::string& text) {
 }
 
 bs::ImportError error_of(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::parse_power_csv(text, "log.csv"); });
+  return bs::test::import_error_of([&] { return bs::kPowerCsvFileFormat.parse_text(text, "log.csv"); });
 }
 
 }  // namespace
@@ -42,7 +42,7 @@ class TestPowerCsv : public QObject {
  private slots:
   void paper_sample_log() {
     const bs::CancelToken cancel;
-    const auto batch = bs::PowerCsvImporter().parse(
+    const auto batch = bs::kPowerCsvFileFormat.parse(
         BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/nuc-current.csv", {}, {}, cancel);
     const bs::PowerTrace& t = batch.power_traces.at(0);
     QCOMPARE(t.platform, std::string("NUC"));
@@ -129,7 +129,7 @@ class TestPowerCsv : public QObject {
     QCOMPARE(QString::fromStdString(t.start_time), QStringLiteral("2026-12-31T23:59:59.500"));
     QVERIFY(std::abs(t.time_s[1] - 0.75) < 1e-6);
     // Otii's wall clock: "(UTC)" is a zone, not a unit; the start time gets its "Z".
-    auto b = bs::parse_power_csv(
+    auto b = bs::kPowerCsvFileFormat.parse_text(
         "Wall-clock time (UTC),Main current (A),Main voltage (V)\n"
         "2026-11-22 10:00:01.000,0.1,3.3\n2026-11-22 10:00:01.500,0.2,3.3\n",
         "otii.csv");
@@ -160,7 +160,7 @@ class TestPowerCsv : public QObject {
   }
   void repeated_and_decreasing_times() {
     // Equal times: kept, and a warning says where (a sample of zero width adds nothing to the energy).
-    const auto b = bs::parse_power_csv("time_s,power_W\n0,1\n1,1\n1,2\n1,3\n2,1\n", "log.csv");
+    const auto b = bs::kPowerCsvFileFormat.parse_text("time_s,power_W\n0,1\n1,1\n1,2\n1,3\n2,1\n", "log.csv");
     QCOMPARE(b.power_traces[0].time_s.size(), std::size_t{5});
     QVERIFY(warned(b, "log.csv:4: 2 rows repeat the previous row's time"));
     // Decreasing date-times: an error naming the line.
@@ -178,13 +178,14 @@ class TestPowerCsv : public QObject {
     QCOMPARE(t.channels[0].quantity, bs::PowerQuantity::Power);
     QCOMPARE(t.channels[0].values[1], 1.7);
     // A total beside per-node columns: each is a channel, the total is named.
-    auto b = bs::parse_power_csv("time_s,node1_watts,node2_watts,total_watts\n0,10,20,30\n1,11,21,32\n", "nodes.csv");
+    auto b = bs::kPowerCsvFileFormat.parse_text("time_s,node1_watts,node2_watts,total_watts\n0,10,20,30\n1,11,21,32\n",
+                                                "nodes.csv");
     t = b.power_traces[0];
     QCOMPARE(t.channels.size(), std::size_t{3});
     QCOMPARE(t.total_channel, std::string("total_watts"));
     QVERIFY(warned(b, "statistics use 'total_watts' (named as the total)"));
     // Several power columns and no total: none named, and a warning says which one the statistics use.
-    b = bs::parse_power_csv("time_s,GPU0 Power (W),GPU1 Power (W)\n0,100,120\n1,110,130\n", "gpus.csv");
+    b = bs::kPowerCsvFileFormat.parse_text("time_s,GPU0 Power (W),GPU1 Power (W)\n0,100,120\n1,110,130\n", "gpus.csv");
     QVERIFY(b.power_traces[0].total_channel.empty());
     QVERIFY(warned(b,
                    "2 power columns ('GPU0 Power (W)', 'GPU1 Power (W)') and none named total/sum/package: "
@@ -192,8 +193,8 @@ class TestPowerCsv : public QObject {
     // jtop-style "Power TOT" as a whole word; "summary" is not a sum.
     QCOMPARE(parse("time_s,Power CPU,Power TOT\n0,1,5\n").total_channel, std::string("Power TOT"));
     // nvidia-smi-like columns: the power limit is a setting, not a sample; an empty cell is a missing sample.
-    b = bs::parse_power_csv("timestamp,power.draw [W],power.limit [W],current_A\n0,50,250,\n1,,250,4\n2,52,,4.1\n",
-                            "smi.csv");
+    b = bs::kPowerCsvFileFormat.parse_text(
+        "timestamp,power.draw [W],power.limit [W],current_A\n0,50,250,\n1,,250,4\n2,52,,4.1\n", "smi.csv");
     t = b.power_traces[0];
     QCOMPARE(t.channels.size(), std::size_t{2});
     QVERIFY(named(t, "power.draw [W]"));
@@ -203,7 +204,7 @@ class TestPowerCsv : public QObject {
     QVERIFY(warned(b, "smi.csv:3: 'power.draw [W]': 1 of 3 cells empty or N/A, kept as missing samples"));
     QVERIFY(warned(b, "'power.limit [W]' (3)"));
     // N/A as nvidia-smi writes it is missing too; a column that is empty throughout is dropped.
-    b = bs::parse_power_csv("time_s,CPU Power (W),GPU Power (W)\n0,,[N/A]\n1,,200\n", "perf.csv");
+    b = bs::kPowerCsvFileFormat.parse_text("time_s,CPU Power (W),GPU Power (W)\n0,,[N/A]\n1,,200\n", "perf.csv");
     QCOMPARE(b.power_traces[0].channels.size(), std::size_t{1});
     QCOMPARE(b.power_traces[0].channels[0].name, std::string("GPU Power (W)"));
     QVERIFY(warned(b, "columns with no value in any row, not kept: 'CPU Power (W)'"));
@@ -226,7 +227,7 @@ class TestPowerCsv : public QObject {
     QVERIFY(t.provenance.sensor.empty());
   }
   void sniffing() {
-    const bs::PowerCsvImporter imp;
+    const bs::FormatImporter imp(bs::kPowerCsvFileFormat);
     QVERIFY(imp.sniff("time_s,current_A\n0,1\n", "x.txt") > 0);
     QVERIFY(imp.sniff("# a comment\n#time,current,voltage,power\n", "x") > 0);
     QCOMPARE(imp.sniff("name,value\na,1\n", "x.csv"), 0);
@@ -242,7 +243,7 @@ class TestPowerCsv : public QObject {
     const std::string whole = f.readAll().toStdString();
     const std::size_t cut_at = whole.find("0.005000,0.089") + std::string("0.005000,0.089").size();
     const std::string cut = whole.substr(0, cut_at);  // "...\n0.005000,0.089": the voltage cell never written
-    const bs::ImportBatch b = bs::parse_power_csv(cut, "otii-cut.csv");
+    const bs::ImportBatch b = bs::kPowerCsvFileFormat.parse_text(cut, "otii-cut.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QCOMPARE(t.time_s.size(), std::size_t{7});  // rows 2..8 of the file
     for (const bs::PowerChannel& c : t.channels) QCOMPARE(c.values.size(), std::size_t{7});
@@ -253,10 +254,10 @@ class TestPowerCsv : public QObject {
                         w.find("7 complete rows") != std::string::npos);
     QVERIFY(named);
     // With its line ending the short row is a real error, not a cut.
-    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_power_csv(cut + "\n", "otii-short.csv"));
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::kPowerCsvFileFormat.parse_text(cut + "\n", "otii-short.csv"));
     // Nothing complete before the cut: an error.
     const std::string header_only = whole.substr(0, whole.find('\n') + 1) + "0.000000,0.08";
-    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_power_csv(header_only, "otii-empty.csv"));
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::kPowerCsvFileFormat.parse_text(header_only, "otii-empty.csv"));
   }
 };
 

@@ -120,7 +120,7 @@ class TestPowerFormats : public QObject {
     QVERIFY(std::abs(channel(t, bs::PowerQuantity::Current).values[30] - (0.612 + 0.003 * std::sin(30.0))) < 1e-6);
     QVERIFY(b.warnings.size() == 1 && b.warnings[0].find("'charge' (5), 'energy' (6)") != std::string::npos);
     // The older export's '#'-prefixed header line.
-    const auto hashed = bs::parse_power_csv(
+    const auto hashed = bs::kPowerCsvFileFormat.parse_text(
         "#time,current,voltage,power\n0.000000,0.512,5.01,2.565\n0.001000,0.514,5.01,2.575\n", "js.csv");
     QCOMPARE(channel(hashed.power_traces.at(0), bs::PowerQuantity::Power).values[1], 2.575);
   }
@@ -192,7 +192,7 @@ class TestPowerFormats : public QObject {
         {"millis,mW", 1e-3, 1e-3, bs::PowerQuantity::Power},
     };
     for (const Case& c : cases) {
-      const auto b = bs::parse_power_csv(std::string(c.header) + "\n0,0\n2,5\n", "aliases.csv");
+      const auto b = bs::kPowerCsvFileFormat.parse_text(std::string(c.header) + "\n0,0\n2,5\n", "aliases.csv");
       const bs::PowerTrace& t = b.power_traces.at(0);
       QVERIFY2(std::abs(t.time_s[1] - 2 * c.time_scale) < 1e-15, c.header);
       QVERIFY2(has_channel(t, c.quantity), c.header);
@@ -200,7 +200,8 @@ class TestPowerFormats : public QObject {
     }
   }
   void trailing_separator_and_comments_between_rows() {
-    const auto b = bs::parse_power_csv("time_s,current_A,\n0,1,\n# marker: load starts\n1,2,\n", "x.csv");
+    const auto b =
+        bs::kPowerCsvFileFormat.parse_text("time_s,current_A,\n0,1,\n# marker: load starts\n1,2,\n", "x.csv");
     QCOMPARE(b.power_traces.at(0).time_s.size(), std::size_t{2});
     QCOMPARE(b.power_traces.at(0).channels.at(0).values[1], 2.0);
   }
@@ -216,15 +217,15 @@ class TestPowerFormats : public QObject {
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(text.data(), static_cast<qint64>(text.size()));
     f.close();
-    const auto streamed = bs::PowerCsvImporter().parse(path, {}, {}, bs::CancelToken{}).power_traces.at(0);
-    const auto memory = bs::parse_power_csv(text, path).power_traces.at(0);
+    const auto streamed = bs::kPowerCsvFileFormat.parse(path, {}, {}, bs::CancelToken{}).power_traces.at(0);
+    const auto memory = bs::kPowerCsvFileFormat.parse_text(text, path).power_traces.at(0);
     QCOMPARE(streamed.time_s.size(), std::size_t{120000});
     QVERIFY(streamed.time_s == memory.time_s);
     QVERIFY(streamed.channels[0].values == memory.channels[0].values);
     QCOMPARE(streamed.channels[1].values[119999], 16.0);
   }
   void sniffing_picks_power_csv_only_for_power_logs() {
-    const bs::PowerCsvImporter imp;
+    const bs::FormatImporter imp(bs::kPowerCsvFileFormat);
     QCOMPARE(imp.sniff("time_s,current_A\n0,1\n", "x.txt"), 70);
     QCOMPARE(imp.sniff("# comment\n#time,current,voltage,power\n", "x"), 70);
     QCOMPARE(imp.sniff("name,iterations,real_time,cpu_time,time_unit\n", "x.csv"), 0);  // Google Benchmark CSV

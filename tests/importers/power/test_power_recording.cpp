@@ -62,7 +62,7 @@ class TestPowerRecording : public QObject {
     t.provenance.settings = {{"sensor kind", "rapl"}};
     std::ostringstream csv;
     sensors::write_recording_csv(csv, t);
-    const ImportBatch b = parse_power_recording(csv.str(), "mem.csv");
+    const ImportBatch b = kPowerRecordingFileFormat.parse_text(csv.str(), "mem.csv");
     const PowerTrace& r = b.power_traces.at(0);
     QCOMPARE(r.time_s.size(), std::size_t{2});  // the row with a failed read is left out, and said so
     QCOMPARE(b.warnings.size(), std::size_t{1});
@@ -77,15 +77,15 @@ class TestPowerRecording : public QObject {
   void errors_name_the_line() {
     const std::string head = std::string(sensors::kRecordingMagic) + "\n# measurement: on-board sensor\n";
     try {
-      parse_power_recording(head + "# phase: x = 1 .. oops\ntime_s,a power (W)\n0,1\n", "p.csv");
+      kPowerRecordingFileFormat.parse_text(head + "# phase: x = 1 .. oops\ntime_s,a power (W)\n0,1\n", "p.csv");
       QFAIL("accepted a bad phase");
     } catch (const ImportError& e) {
       QCOMPARE(e.location().line, std::size_t{3});
     }
-    QVERIFY_THROWS_EXCEPTION(ImportError,
-                             parse_power_recording(std::string(sensors::kRecordingMagic) +
-                                                       "\n# measurement: external meter\ntime_s,a power (W)\n0,1\n",
-                                                   "m.csv"));
+    QVERIFY_THROWS_EXCEPTION(ImportError, kPowerRecordingFileFormat.parse_text(
+                                              std::string(sensors::kRecordingMagic) +
+                                                  "\n# measurement: external meter\ntime_s,a power (W)\n0,1\n",
+                                              "m.csv"));
   }
 };
 

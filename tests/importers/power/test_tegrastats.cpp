@@ -41,14 +41,15 @@ class TestTegrastats : public QObject {
   }
   void inconsistent_rails_and_no_rails() {
     try {
-      bs::parse_tegrastats(
+      bs::kTegrastatsFileFormat.parse_text(
           "RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 100/100\nRAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\n",
           "t.log");
       QFAIL("accepted");
     } catch (const bs::ImportError& e) {
       QCOMPARE(e.location().line, std::size_t{2});
     }
-    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_tegrastats("RAM 1/2MB CPU [1%@100]\n", "t.log"));
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError,
+                             bs::kTegrastatsFileFormat.parse_text("RAM 1/2MB CPU [1%@100]\n", "t.log"));
   }
 };
 

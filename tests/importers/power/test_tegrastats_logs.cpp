@@ -13,7 +13,7 @@ namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/power/";
 
 bs::ImportError error_of(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::parse_tegrastats(text, "t.log"); });
+  return bs::test::import_error_of([&] { return bs::kTegrastatsFileFormat.parse_text(text, "t.log"); });
 }
 
 }  // namespace
@@ -66,7 +66,8 @@ class TestTegrastatsLogs : public QObject {
     QCOMPARE(b.format, std::string("tegrastats"));
     QCOMPARE(b.power_traces.at(0).time_s[3], 0.75);
     options.interval_s = 0.0;
-    QVERIFY_THROWS_EXCEPTION(bs::ImportError, bs::parse_tegrastats("RAM 1/2MB VDD_IN 1/1\n", "t.log", options));
+    QVERIFY_THROWS_EXCEPTION(bs::ImportError,
+                             bs::kTegrastatsFileFormat.parse_text("RAM 1/2MB VDD_IN 1/1\n", "t.log", options));
   }
   void broken_logs() {
     // Rails that change in the middle: an error at that line; at the very end: a cut-off line, skipped.
@@ -74,8 +75,8 @@ class TestTegrastatsLogs : public QObject {
         "RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 100/100\nRAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\n");
     QCOMPARE(e.location().line, std::size_t{2});
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
-    const auto cut =
-        bs::parse_tegrastats("RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 120/110\n\n", "t.log");
+    const auto cut = bs::kTegrastatsFileFormat.parse_text(
+        "RAM 1/2MB VDD_IN 100/100 VDD_CPU 50/50\nRAM 1/2MB VDD_IN 120/110\n\n", "t.log");
     QCOMPARE(cut.power_traces.at(0).time_s.size(), std::size_t{1});
     QVERIFY(cut.warnings.at(0).find("t.log:2: incomplete last line") != std::string::npos);
     // Timestamps going backwards, and on some lines only.
@@ -94,7 +95,7 @@ class TestTegrastatsLogs : public QObject {
     std::string text = "RAM 1/2MB VDD_IN 1/1\n";
     for (int k = 0; k < 25; ++k) text += "RAM 1/2MB CPU [1%@100]\n";
     text += "RAM 1/2MB VDD_IN 2/1\n";
-    const auto many = bs::parse_tegrastats(text, "t.log");
+    const auto many = bs::kTegrastatsFileFormat.parse_text(text, "t.log");
     QCOMPARE(many.warnings.size(), std::size_t{12});  // 10 listed, 1 count, 1 about the assumed interval
     QVERIFY(many.warnings[10].find("15 more lines skipped") != std::string::npos);
   }
@@ -111,14 +112,17 @@ class TestTegrastatsLogs : public QObject {
     // 1 kW is the bound, in the average as well; exactly 1 kW is accepted.
     QCOMPARE(error_of("RAM 1/2MB VDD_IN 1000001/5\nRAM 1/2MB VDD_IN 1/1\n").location().line, std::size_t{1});
     QCOMPARE(error_of("RAM 1/2MB VDD_IN 5/1000001\nRAM 1/2MB VDD_IN 1/1\n").location().line, std::size_t{1});
-    QCOMPARE(bs::parse_tegrastats("RAM 1/2MB VDD_IN 1000000/5\n", "t.log").power_traces.at(0).channels[0].values[0],
+    QCOMPARE(bs::kTegrastatsFileFormat.parse_text("RAM 1/2MB VDD_IN 1000000/5\n", "t.log")
+                 .power_traces.at(0)
+                 .channels[0]
+                 .values[0],
              1000.0);
     // A number too long even for a double.
     QCOMPARE(error_of("RAM 1/2MB VDD_IN " + std::string(400, '9') + "/1\nRAM 1/2MB VDD_IN 1/1\n").category(),
              bs::ImportErrorCategory::InvalidValue);
     // AGX Thor reads slightly negative on a power-gated rail ("VDD_GPU -392mW/-392mW", from a Thor script's
     // docstring): kept as printed. Far below zero is not a reading.
-    const auto thor = bs::parse_tegrastats(
+    const auto thor = bs::kTegrastatsFileFormat.parse_text(
         "05-14-2026 21:36:35 RAM 26063/125772MB (lfb 35x4MB) VDD_GPU -392mW/-392mW VDD_CPU_SOC_MSS 3924mW/3835mW "
         "VIN_SYS_5V0 5064mW/5055mW VIN 15004mW/15096mW\n",
         "t.log");
@@ -130,15 +134,15 @@ class TestTegrastatsLogs : public QObject {
              bs::ImportErrorCategory::InvalidValue);
   }
   void jetpack7_three_values_and_four() {
-    const auto b =
-        bs::parse_tegrastats("RAM 1/2MB VDD_GPU_SOC 4385mW/3787mW/4385mW VDD_CPU_CV 1196mW/897mW/1196mW\n", "t.log");
+    const auto b = bs::kTegrastatsFileFormat.parse_text(
+        "RAM 1/2MB VDD_GPU_SOC 4385mW/3787mW/4385mW VDD_CPU_CV 1196mW/897mW/1196mW\n", "t.log");
     QCOMPARE(b.power_traces.at(0).channels[0].values[0], 4.385 + 1.196);  // sum of rails: no input rail
     // Four values are no tegrastats format: an error, not a guess.
     const auto e = error_of("RAM 1/2MB VDD_IN 1mW/2mW/3mW/4mW\nRAM 1/2MB VDD_IN 1/1\n");
     QCOMPARE(e.location().field, std::string("VDD_IN"));
   }
   void sniffing() {
-    const bs::TegrastatsImporter imp;
+    const bs::FormatImporter imp(bs::kTegrastatsFileFormat);
     QCOMPARE(imp.sniff("RAM 2448/7854MB (lfb 1x4MB) VDD_IN 3981/3981\n", "x.log"), 90);
     QCOMPARE(imp.sniff("RAM 8179/62817MB (lfb 1x4MB) VDD_GPU_SOC 4385mW/3787mW/4385mW\n", "x.log"), 90);
     // No rails: still recognised (weakly), so that the import says why nothing can be read instead of

@@ -16,7 +16,7 @@ const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";
 
 bs::ImportBatch parse_file(const std::string& name) {
   const bs::CancelToken cancel;
-  return bs::ClpeakTextImporter().parse(kData + name, {}, {}, cancel);
+  return bs::kClpeakTextFileFormat.parse(kData + name, {}, {}, cancel);
 }
 
 const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, const std::string& metric) {
@@ -33,7 +33,7 @@ std::string read_fixture(const std::string& name) {
 bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
 
 bs::ImportError error_of(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::parse_clpeak_text(text, "c.txt"); });
+  return bs::test::import_error_of([&] { return bs::kClpeakTextFileFormat.parse_text(text, "c.txt"); });
 }
 }  // namespace
 
@@ -119,7 +119,7 @@ class TestClpeakText : public QObject {
   }
 
   void device_type_hint_marks_a_cpu() {
-    const auto batch = bs::parse_clpeak_text(
+    const auto batch = bs::kClpeakTextFileFormat.parse_text(
         "Platform: Vendor X\n  Device: Accelerator 9000\n    Device type : CPU\n"
         "    Single-precision compute (GFLOPS)\n      float : 2.5\n",
         "hint.txt");
@@ -127,7 +127,8 @@ class TestClpeakText : public QObject {
     // Device names from clpeak issue 155: an iGPU named after its CPU under Vulkan and rusticl is a GPU; PoCL's
     // "pthread-" device is the CPU even when the CPU's name mentions its graphics.
     const auto kind_of = [](const std::string& device_line) {
-      return bs::parse_clpeak_text(device_line + "\n  Single-precision compute (GFLOPS)\n    float : 1.0\n", "k.txt")
+      return bs::kClpeakTextFileFormat
+          .parse_text(device_line + "\n  Single-precision compute (GFLOPS)\n    float : 1.0\n", "k.txt")
           .result_sets[0]
           .device_kind;
     };
@@ -140,7 +141,7 @@ class TestClpeakText : public QObject {
   }
 
   void crlf_and_bad_number() {
-    const auto ok = bs::parse_clpeak_text(
+    const auto ok = bs::kClpeakTextFileFormat.parse_text(
         "Platform: P\r\n  Device: D\r\n    Single-precision compute (GFLOPS)\r\n      float : 1.5\r\n", "c.txt");
     QCOMPARE(ok.result_sets[0].measurements[0].values[0], 1.5e9);
     const bs::ImportError e =
@@ -171,7 +172,7 @@ class TestClpeakText : public QObject {
   }
 
   void sniffs_clpeak_only() {
-    const bs::ClpeakTextImporter imp;
+    const bs::FormatImporter imp(bs::kClpeakTextFileFormat);
     QVERIFY(imp.sniff("Platform: P\n  Device: D\n    Single-precision compute (GFLOPS)\n", "x.json") >= 90);
     QVERIFY(imp.sniff("Backend: OpenCL\n  Platform 0: P\n    Device 0: D\n", "x") > 0);
     QCOMPARE(imp.sniff("time_s,current_A\n0,1\n", "power.txt"), 0);
@@ -243,7 +244,7 @@ class TestClpeakText : public QObject {
   void paste_without_platform_line() {
     // AMD FX-8350 under AMD APP, saved from "Device:" on. Single precision 6.60 / 13.18 / 26.68 / 52.03 / 95.10
     // -> 95.10 GFLOPS (float16); double precision peaks at double8 50.76 (double16 drops to 6.81).
-    const bs::ClpeakTextImporter imp;
+    const bs::FormatImporter imp(bs::kClpeakTextFileFormat);
     const std::string text = read_fixture("fx8350-no-platform.log");
     QVERIFY(imp.sniff(text, "fx8350.log") >= 80);
     const auto batch = parse_file("fx8350-no-platform.log");
@@ -334,7 +335,8 @@ class TestClpeakText : public QObject {
     QCOMPARE(find(gpu, "int", "integer compute int32")->unit, std::string("1/s"));
     QCOMPARE(gpu.measurements.size(), std::size_t{3 * 5 + 4 + 1});
     QVERIFY(batch.warnings.empty());
-    QVERIFY(bs::ClpeakTextImporter().sniff(read_fixture("vulkan-rx9070xt-clpeak2.txt"), "x.txt") >= 80);
+    QVERIFY(bs::FormatImporter(bs::kClpeakTextFileFormat).sniff(read_fixture("vulkan-rx9070xt-clpeak2.txt"), "x.txt") >=
+            80);
   }
 
   void clpeak21_numbered_platforms_and_gops() {

@@ -61,7 +61,7 @@ std::string read_text(const std::string& path) {
 
 bs::ImportBatch parse_file(const std::string& name) {
   const bs::CancelToken cancel;
-  return bs::GoogleBenchmarkJsonImporter().parse(kData + name, {}, {}, cancel);
+  return bs::kGoogleBenchmarkJsonFileFormat.parse(kData + name, {}, {}, cancel);
 }
 
 // A one-row document with the given counters, for unit inference.

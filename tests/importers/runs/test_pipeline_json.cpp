@@ -159,7 +159,7 @@ class TestPipelineJson : public QObject {
   }
 
   void sniffing_picks_this_format_only_for_its_files() {
-    const bs::PipelineJsonImporter imp;
+    const bs::FormatImporter imp(bs::kPipelineJsonFileFormat);
     QCOMPARE(imp.sniff(R"({"format": "benchscope-pipeline-v1"})", "x.json"), 100);
     QCOMPARE(imp.sniff(R"({"format": "benchscope-run", "runs": []})", "x.json"), 0);
     QCOMPARE(imp.sniff(R"({"context": {}, "benchmarks": []})", "x.json"), 0);

@@ -54,7 +54,7 @@ std::string read_text(const std::string& path) {
 
 bs::ImportBatch load_fixture() {
   const bs::CancelToken cancel;
-  return bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, {}, cancel);
+  return bs::kRunJsonFileFormat.parse(kData + "run-json/two-runs.json", {}, {}, cancel);
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -335,7 +335,7 @@ class TestRunJson : public QObject {
     bs::save_run_json(path, batch.runs);                                         // replaces an existing file
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"out.json"});  // no temporary left behind
     const bs::CancelToken cancel;
-    expect_same_runs(batch.runs, bs::RunJsonImporter().parse(path, {}, {}, cancel).runs);
+    expect_same_runs(batch.runs, bs::kRunJsonFileFormat.parse(path, {}, {}, cancel).runs);
     QVERIFY_THROWS_EXCEPTION(std::runtime_error,
                              bs::save_run_json(dir.filePath("no-such-dir/out.json").toStdString(), batch.runs));
   }
@@ -380,7 +380,7 @@ class TestRunJson : public QObject {
     bs::CancelToken cancel;
     cancel.cancel();
     QVERIFY_THROWS_EXCEPTION(bs::Cancelled,
-                             bs::RunJsonImporter().parse(kData + "run-json/two-runs.json", {}, {}, cancel));
+                             bs::kRunJsonFileFormat.parse(kData + "run-json/two-runs.json", {}, {}, cancel));
   }
 
   void pointers_map_to_offsets() {

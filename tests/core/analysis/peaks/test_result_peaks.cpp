@@ -12,7 +12,7 @@
 namespace {
 
 std::vector<bs::ResultSet> sets_of(const std::string& fixture) {
-  return bs::ClpeakTextImporter()
+  return bs::FormatImporter(bs::kClpeakTextFileFormat)
       .parse(BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/" + fixture, {}, {}, bs::CancelToken{})
       .result_sets;
 }
