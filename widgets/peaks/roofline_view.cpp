@@ -10,6 +10,7 @@
 
 #include "analysis/peaks/flops.h"
 #include "analysis/stats/units.h"
+#include "chart_marks.h"
 #include "device_palette.h"
 
 namespace bs::ui {
@@ -175,6 +176,17 @@ void RooflineView::redraw() {
         device_color(it == colors_.end() ? 0 : it->second), 7));
     g->addData(p.intensity, p.flops);
     g->removeFromLegend();
+    // A flagged peak is drawn where it was measured, hollow and labelled with the warning sign (chart_marks.h).
+    if (!row.flags.empty()) {
+      mark_flagged_points(g, device_color(it == colors_.end() ? 0 : it->second));
+      auto* warn = new QCPItemText(plot_);
+      warn->position->setCoords(p.intensity, p.flops);
+      warn->setPositionAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+      warn->setPadding(QMargins(8, 0, 0, 0));
+      warn->setFont(QFont(font().family(), 7));
+      warn->setColor(kFlagColor);
+      warn->setText(flag_label(QString::fromStdString(format_si(row.peak.flops, "FLOPS"))));
+    }
     y_min = std::min(y_min, p.flops);
   }
   // The preprocessing stages: a star per pipeline run under its device's roof, a vertical bar for mean ± SD.
