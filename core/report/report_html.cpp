@@ -69,6 +69,9 @@ int ReportBuilder::table(const ReportTable& t) {
   // Caption above, as journals set tables.
   out_ << "<p class=\"caption\"><b>Table " << n << ".</b> " << html_escape(t.caption) << "</p>\n";
   out_ << "<table class=\"data\" width=\"100%\" cellspacing=\"0\" cellpadding=\"3\">\n";
+  // The header rows in <thead>: a table that runs over a page break repeats them there (Qt's importer makes them
+  // the table's header rows; browsers print them again too).
+  out_ << "<thead>\n";
   for (std::size_t r = 0; r < t.header.size(); ++r) {
     out_ << "<tr class=\"" << (r == 0 ? "head" : "units") << "\">";
     for (std::size_t c = 0; c < t.header[r].size(); ++c) {
@@ -78,6 +81,7 @@ int ReportBuilder::table(const ReportTable& t) {
     }
     out_ << "</tr>\n";
   }
+  out_ << "</thead>\n<tbody>\n";
   for (const auto& row : t.rows) {
     out_ << "<tr>";
     for (std::size_t c = 0; c < row.size(); ++c) {
@@ -88,7 +92,7 @@ int ReportBuilder::table(const ReportTable& t) {
     }
     out_ << "</tr>\n";
   }
-  out_ << "</table>\n";
+  out_ << "</tbody>\n</table>\n";
   // The notes run on in one paragraph, as a journal sets table footnotes: no half-empty line per note.
   if (!t.notes.empty()) {
     out_ << "<p class=\"note\">";
