@@ -3,7 +3,10 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "chart_marks.h"
 
 namespace bs::ui {
 namespace {
@@ -47,7 +50,7 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
   plot.yAxis->setLabel(QObject::tr("Inferences per second"));
   plot.yAxis->setScaleType(QCPAxis::stLogarithmic);
   plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-  QStringList left_out;
+  QStringList left_out, flagged;
   double xmax = 1, ymin = 1e9, ymax = 1e-9;
   std::size_t class_no = 0;
   for (const CandidateClass& k : classes) {
@@ -62,8 +65,20 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
       g->setLineStyle(QCPGraph::lsNone);
       g->setScatterStyle(origin_marker(c.origin, color));
       g->addData(*c.power_w, *c.throughput_per_s);
-      // One legend entry per class (its colour), named; the origins get entries of their own below.
-      if (!legend_for_class) {
+      // A flagged row is drawn where its numbers put it, hollow and labelled with the warning sign (chart_marks.h);
+      // the note names it and says why.
+      const bool is_flagged = !c.flags.empty();
+      if (is_flagged) {
+        mark_flagged_points(g, color);
+        QStringList why;
+        for (const PlausibilityFlag& f : c.flags) why << QString::fromStdString(f.reason);
+        flagged << QString::fromStdString(c.platform + " (" + k.network + "): ") + why.join(QStringLiteral("; "));
+      }
+      // One legend entry per class (its colour), named, from an unflagged row where the class has one; the origins
+      // get entries of their own below.
+      const bool unflagged_left = std::any_of(&c + 1, k.rows.data() + k.rows.size(),
+                                              [](const Candidate& x) { return x.flags.empty() && x.power_w; });
+      if (!legend_for_class && (!is_flagged || !unflagged_left)) {
         g->setName(QString::fromStdString(k.title()));
         g->setScatterStyle(origin_marker(c.origin, color));
         legend_for_class = true;
@@ -75,7 +90,7 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
       label->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
       label->setPadding(QMargins(6, 0, 0, 2));
       label->setFont(QFont(plot.font().family(), 7));
-      label->setText(QString::fromStdString(c.platform));
+      label->setText(is_flagged ? flag_label(QString::fromStdString(c.platform)) : QString::fromStdString(c.platform));
       xmax = std::max(xmax, *c.power_w);
       ymin = std::min(ymin, *c.throughput_per_s);
       ymax = std::max(ymax, *c.throughput_per_s);
@@ -92,8 +107,13 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
   plot.xAxis->setRange(0, xmax * 1.35);
   plot.yAxis->setRange(ymin / 2, ymax * 3);
   plot.replot();
-  return left_out.isEmpty() ? QString()
-                            : QObject::tr("Not drawn (no power or rate): %1").arg(left_out.join(QStringLiteral("; ")));
+  QStringList note;
+  if (!flagged.isEmpty())
+    note << QObject::tr("\u26A0 hollow: flagged as implausible, drawn at its value: %1")
+                .arg(flagged.join(QStringLiteral("; ")));
+  if (!left_out.isEmpty())
+    note << QObject::tr("Not drawn (no power or rate): %1").arg(left_out.join(QStringLiteral("; ")));
+  return note.join(QStringLiteral("\n"));
 }
 
 QImage render_candidates(std::span<const CandidateClass> classes, int width, int height, QString* note) {

@@ -7,6 +7,7 @@
 #include <QSvgGenerator>
 #include <QTemporaryDir>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -215,6 +216,30 @@ QStringList wrapped(const QString& text, const QFontMetricsF& metrics, double wi
   return lines;
 }
 
+// Entries still wider than the figure at the smallest font (wrap_legend) are shortened in the middle ("…"), never
+// cut at the figure's edge; the view gets its names back afterwards (export_plot).
+void elide_wide_entries(QCustomPlot& plot, double width_pt) {
+  // The legend's row is the figure less the layout's margins.
+  const QMargins margins = plot.plotLayout()->margins();
+  const double room = width_pt - margins.left() - margins.right() - 2;
+  for (int pass = 0; pass < 5; ++pass) {
+    const double excess = plot.legend->minimumOuterSizeHint().width() - room;
+    if (excess <= 0) return;
+    double widest = 0;
+    for (int i = 0; i < plot.legend->itemCount(); ++i)
+      widest = std::max(widest, static_cast<double>(plot.legend->item(i)->minimumOuterSizeHint().width()));
+    const double limit = widest - excess - 1;
+    for (int i = 0; i < plot.legend->itemCount(); ++i) {
+      auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i));
+      const double w = item ? static_cast<QCPLayoutElement*>(item)->minimumOuterSizeHint().width() : 0;
+      if (!item || w <= limit) continue;
+      const QFontMetricsF m(item->font());
+      const QString name = item->plottable()->name();
+      item->plottable()->setName(m.elidedText(name, Qt::ElideMiddle, m.horizontalAdvance(name) - (w - limit)));
+    }
+  }
+}
+
 // Entries beyond kMaxLegendRows rows leave the legend; returns the sentence that names them ("" when all fit).
 QString cap_legend(QCustomPlot& plot) {
   const int columns = std::max(1, plot.legend->wrap());
@@ -305,6 +330,7 @@ FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
     place_legend_below(plot, o.font_pt);
     merge_alike_entries(plot);
     wrap_legend(plot, o.font_pt, width_pt);
+    elide_wide_entries(plot, width_pt);
     also_drawn = cap_legend(plot);
     below_pt = plot.legend->minimumOuterSizeHint().height();
   } else {

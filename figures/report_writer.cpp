@@ -333,7 +333,7 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
   in.verdicts = recommend(in.rows, request.constraints);
   in.constraints = describe_constraints(request.constraints);
   in.inference_runs = data.inference_runs;
-  in.candidates_html = request.candidates_html;
+  in.candidates = request.candidates;
   in.data_selection = data.selection;
   const std::optional<RenderedFigure> chart = render_chart(in.rows, in.verdicts, data, figure_options);
 

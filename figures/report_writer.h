@@ -7,6 +7,7 @@
 #include <QStringList>
 
 #include "paper_figures.h"
+#include "report/candidates_section.h"
 
 namespace bs::ui {
 
@@ -16,7 +17,7 @@ struct ReportRequest {
   QString pdf_path;   // empty: no PDF
   Constraints constraints;
   ComparisonOptions comparison;
-  std::string candidates_html;  // the "Candidates" section, made by the caller (report/candidates_section.h)
+  std::optional<CandidatesSectionInput> candidates;  // the "Candidates" section (report/candidates_section.h)
 };
 
 // Returns the files written. Each file appears whole or not at all (QSaveFile); Cancelled or an error leaves none.

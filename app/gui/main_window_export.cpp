@@ -165,8 +165,8 @@ void MainWindow::export_report() {
       cp->plot()->toPixmap(900, 560).save(&buffer, "PNG");
       figure = "data:image/png;base64," + png.toBase64().toStdString();
     }
-    request.candidates_html = candidates_section_html(
-        {cp->classes(), cp->peaks(), cp->selection().toStdString(), describe_constraints(request.constraints), figure});
+    request.candidates = CandidatesSectionInput{cp->classes(), cp->peaks(), cp->selection().toStdString(),
+                                                describe_constraints(request.constraints), figure};
   }
   QStringList files;
   const bool ok = with_progress(this, tr("Report"), [&](const CancelToken& cancel, const ProgressCallback& progress) {

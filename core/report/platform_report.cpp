@@ -7,6 +7,7 @@
 #include "analysis/peaks/flag_notes.h"
 #include "analysis/platform/platform_table.h"
 #include "report/report_sections.h"
+#include "report/table_fit.h"
 
 namespace bs {
 namespace {
@@ -59,21 +60,6 @@ Measure split_header(const std::string& h) {
   return {h, ""};
 }
 
-// The longest word of `text` in characters (UTF-8 continuation bytes not counted): what a column must hold
-// without breaking a word.
-std::size_t longest_word(const std::string& text) {
-  std::size_t best = 0, run = 0;
-  for (const unsigned char c : text) {
-    if (c == ' ') {
-      best = std::max(best, run);
-      run = 0;
-    } else if ((c & 0xC0) != 0x80) {
-      ++run;
-    }
-  }
-  return std::max(best, run);
-}
-
 // "4.7 (Jetson CPU (ARM A57 + Denver2), CPU SIMD (NEON))" -> "4.7 (Jetson CPU, CPU SIMD)": a device's details
 // stay in the platform details, the table keeps the names.
 std::string without_nested_parentheses(const std::string& text) {
@@ -114,21 +100,21 @@ std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>&
     }
     if (any) body.push_back(std::move(row));
   }
-  // Column widths from the longest words at ~5 pt a character (DejaVu Serif at 8.5 pt averages 4.7 pt) plus
-  // padding: as many platforms per table as fit the text width after the measure and unit columns. The PDF writer
-  // then sizes the columns from the real font metrics.
-  constexpr double kCharPt = 5.0, kPadPt = 8, kMeasurePct = 22, kUnitPct = 9;
+  // As many platforms per table as fit the text width after the measure and unit columns, each as wide as the
+  // widest platform column (report/table_fit.h): one look for every part.
+  constexpr double kMeasurePct = 22, kUnitPct = 9;
   const double platform_pt = ReportBuilder::kTextWidthPt * (100 - kMeasurePct - kUnitPct) / 100;
-  std::size_t widest = 6;
+  double need = 6 * kTableCharPt + kTableCellPadPt;
   for (std::size_t p = 0; p < table.rows.size(); ++p) {
-    widest = std::max(widest, longest_word(table.rows[p][0]));
-    for (const auto& row : body) widest = std::max(widest, longest_word(row[p + 2]));
+    need = std::max(need, static_cast<double>(longest_word(table.rows[p][0])) * kTableCharPt + kTableCellPadPt);
+    for (const auto& row : body)
+      need = std::max(need, static_cast<double>(longest_word(row[p + 2])) * kTableCharPt + kTableCellPadPt);
   }
-  const std::size_t per_table = std::clamp<std::size_t>(
-      static_cast<std::size_t>(platform_pt / (static_cast<double>(widest) * kCharPt + kPadPt)), 1, 6);
+  const std::vector<double> needs(table.rows.size(), need);
+  const auto groups = fit_column_groups(needs, platform_pt, 6);
+  const std::size_t per_table = groups.empty() ? 1 : groups.front().second - groups.front().first;
   std::vector<ReportTable> out;
-  for (std::size_t first = 0; first < table.rows.size(); first += per_table) {
-    const std::size_t last = std::min(table.rows.size(), first + per_table);
+  for (const auto& [first, last] : groups) {
     ReportTable t;
     t.caption = "Platforms at a glance";
     if (table.rows.size() > per_table)

@@ -15,6 +15,7 @@
 
 #include "analysis/platform/platform_comparison.h"
 #include "model/dnn_run.h"
+#include "report/candidates_section.h"
 #include "report/report_html.h"
 
 namespace bs {
@@ -26,11 +27,11 @@ struct ReportInput {
   std::vector<PlatformRow> rows;
   std::vector<PlatformVerdict> verdicts;  // same order as rows, may be empty
   std::string constraints;                // human-readable constraints the verdicts used, e.g. "power budget 10 W"
-  std::optional<ReportFigure> comparison_chart;  // page one's chart (report_chart in figures/)
-  std::vector<ReportFigure> figures;             // the template's figures, in template order
-  std::vector<DnnRun> inference_runs;            // bench dnn runs: a table after the details when there are any
-  std::string data_selection;                    // which data the report covers ("all data given")
-  std::string candidates_html;  // the "Candidates" section (report/candidates_section.h), after the details
+  std::optional<ReportFigure> comparison_chart;      // page one's chart (report_chart in figures/)
+  std::vector<ReportFigure> figures;                 // the template's figures, in template order
+  std::vector<DnnRun> inference_runs;                // bench dnn runs: a table after the details when there are any
+  std::string data_selection;                        // which data the report covers ("all data given")
+  std::optional<CandidatesSectionInput> candidates;  // the "Candidates" section, after the details
 };
 
 using ReportSection = std::function<void(const ReportInput&, ReportBuilder&)>;

@@ -65,33 +65,34 @@ int ReportBuilder::figure(const ReportFigure& f) {
 
 int ReportBuilder::table(const ReportTable& t) {
   const int n = ++tables_;
+  const auto right = [&](std::size_t c) { return c < t.align.size() ? t.align[c] == 'r' : c > 0 && t.numeric_right; };
   // Caption above, as journals set tables.
   out_ << "<p class=\"caption\"><b>Table " << n << ".</b> " << html_escape(t.caption) << "</p>\n";
   out_ << "<table class=\"data\" width=\"100%\" cellspacing=\"0\" cellpadding=\"3\">\n";
+  // The header rows in <thead>: a table that runs over a page break repeats them there (Qt's importer makes them
+  // the table's header rows; browsers print them again too).
+  out_ << "<thead>\n";
   for (std::size_t r = 0; r < t.header.size(); ++r) {
     out_ << "<tr class=\"" << (r == 0 ? "head" : "units") << "\">";
     for (std::size_t c = 0; c < t.header[r].size(); ++c) {
       out_ << "<th";
       if (r == 0 && c < t.width_percent.size()) out_ << " width=\"" << t.width_percent[c] << "%\"";
-      out_ << " align=\""
-           << (c == 0            ? "left"
-               : t.numeric_right ? "right"
-                                 : "left")
-           << "\">" << html_escape(t.header[r][c]) << "</th>";
+      out_ << " align=\"" << (right(c) ? "right" : "left") << "\">" << html_escape(t.header[r][c]) << "</th>";
     }
     out_ << "</tr>\n";
   }
+  out_ << "</thead>\n<tbody>\n";
   for (const auto& row : t.rows) {
     out_ << "<tr>";
     for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c == 0)
+      if (c == 0 && t.align.empty())
         out_ << "<td class=\"rowhead\">" << html_escape(row[c]) << "</td>";
       else
-        out_ << "<td" << (t.numeric_right ? " align=\"right\"" : "") << ">" << html_escape(row[c]) << "</td>";
+        out_ << "<td" << (right(c) ? " align=\"right\"" : "") << ">" << html_escape(row[c]) << "</td>";
     }
     out_ << "</tr>\n";
   }
-  out_ << "</table>\n";
+  out_ << "</tbody>\n</table>\n";
   // The notes run on in one paragraph, as a journal sets table footnotes: no half-empty line per note.
   if (!t.notes.empty()) {
     out_ << "<p class=\"note\">";

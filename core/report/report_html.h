@@ -31,6 +31,7 @@ struct ReportTable {
   std::vector<int> width_percent;  // empty: the renderer decides
   std::vector<std::string> notes;  // under the table, small
   bool numeric_right = true;       // body cells after the first column aligned right
+  std::string align;               // per column 'l' or 'r' (as ExportTable's); overrides numeric_right when set
 };
 
 class ReportBuilder {

@@ -178,7 +178,7 @@ void sources_appendix(const ReportInput& in, ReportBuilder& b) {
 }
 
 void candidates_section(const ReportInput& in, ReportBuilder& b) {
-  if (!in.candidates_html.empty()) b.html(in.candidates_html);
+  if (in.candidates) write_candidates_section(*in.candidates, b);
 }
 
 std::vector<ReportSection> report_sections() {

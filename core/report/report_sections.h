@@ -21,8 +21,8 @@ void decision_section(const ReportInput& in, ReportBuilder& b);
 void platform_details_section(const ReportInput& in, ReportBuilder& b);
 // bench dnn runs: the inference table (only when there are any).
 void inference_section(const ReportInput& in, ReportBuilder& b);
-// Published results beside the own platforms (report --library, the GUI's candidates): the HTML that
-// candidates_section_html() made (report/candidates_section.h), after the details; nothing without a selection.
+// Published results beside the own platforms (report --library, the GUI's candidates):
+// write_candidates_section() (report/candidates_section.h), after the details; nothing without a selection.
 void candidates_section(const ReportInput& in, ReportBuilder& b);
 // The template's figures, numbered, each with its caption under it.
 void figures_section(const ReportInput& in, ReportBuilder& b);

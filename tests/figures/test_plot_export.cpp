@@ -7,9 +7,14 @@
 #include <QTest>
 
 #include "../support/figure_checks.h"
+#include "../support/paper_sample.h"
+#include "analysis/peaks/flops.h"
 #include "paper_figures.h"
+#include "peaks/roofline_view.h"
 #include "plot_export.h"
 #include "plot_labels.h"
+#include "power/battery_view.h"
+#include "power/power_view.h"
 
 class TestPlotExport : public QObject {
   Q_OBJECT
@@ -192,6 +197,48 @@ class TestPlotExport : public QObject {
     QStringList files;
     bs::ui::export_plot(view, dir.filePath("v"), o, "v", files);
     QCOMPARE(view.yAxis->range().upper, 4.0);
+  }
+
+  // Ctrl+E on the Power, Battery and Roofline tabs with the paper's sample data (two current logs, every FLOPS run),
+  // at LNCS and IEEE column widths: no label over another or cut by the axes, the legend below the axes, no curve
+  // clipped. With BENCHSCOPE_EXPORT_DIR set, the PDFs are also written there to be looked at
+  // (pdftoppm -r 100 power-122mm.pdf ...).
+  void power_battery_roofline_tabs_fit() {
+    const auto sample = bs::test::load_paper_sample();
+    std::vector<bs::StoredPowerTrace> stored;
+    for (const auto& t : sample.traces)
+      stored.push_back({static_cast<std::int64_t>(stored.size() + 1), 1, t, {}, true});
+    std::map<std::pair<std::string, std::string>, int> colors;
+    for (const auto& r : sample.runs) colors.try_emplace({r.platform, r.device}, static_cast<int>(colors.size()));
+    const QString look = qEnvironmentVariable("BENCHSCOPE_EXPORT_DIR");
+    for (const double width_mm : {122.0, 88.9}) {
+      bs::ui::PowerView power;
+      power.resize(1280, 800);
+      power.set_data(stored, bs::peak_table(sample.runs), {});
+      bs::ui::BatteryView battery;
+      battery.resize(1280, 800);
+      battery.set_data(sample.traces);
+      bs::ui::RooflineView roofline;
+      roofline.resize(1280, 800);
+      roofline.set_data(sample.runs, {}, colors);
+      QVERIFY(power.plot()->graphCount() >= 2 && battery.plot()->graphCount() >= 2 &&
+              roofline.plot()->graphCount() >= 2);
+      for (const auto& [name, plot] : {std::pair<QString, QCustomPlot*>{"power", power.plot()},
+                                       std::pair<QString, QCustomPlot*>{"battery", battery.plot()},
+                                       std::pair<QString, QCustomPlot*>{"roofline", roofline.plot()}}) {
+        bs::ui::FigureOptions o;
+        o.width_mm = width_mm;
+        o.formats = {"pdf"};
+        if (!look.isEmpty()) {
+          QStringList files;
+          bs::ui::export_plot(*plot, QStringLiteral("%1/%2-%3mm").arg(look, name).arg(width_mm), o, name, files);
+        }
+        const bs::ui::FigureOptions sized = bs::ui::layout_figure(*plot, o);
+        const QStringList problems = bs::test::figure_problems(*plot, sized);
+        QVERIFY2(problems.isEmpty(),
+                 qPrintable(name + " at " + QString::number(width_mm) + " mm: " + problems.join('\n')));
+      }
+    }
   }
 
   void unknown_format_is_refused() {

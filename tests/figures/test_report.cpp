@@ -12,6 +12,7 @@
 #include <QTest>
 
 #include "../support/paper_sample.h"
+#include "analysis/library/library.h"
 #include "report/platform_report.h"
 #include "report_writer.h"
 
@@ -145,6 +146,76 @@ class TestReport : public QObject {
       QCOMPARE(caption_page, images[n - 1]);
     }
     QVERIFY(page_text(pdf, pages).contains("Appendix A") || page_text(pdf, pages - 1).contains("Appendix A"));
+  }
+
+  // The candidates' tables (report --library) fit the page as the platforms table does: every header and value
+  // whole on the pages that hold them (a word broken across two lines, "budg et", would be two tokens that are not
+  // the word), however many columns the constraints add.
+  void pdf_candidates_tables_keep_whole_words() {
+    QTemporaryDir dir;
+    auto request = paper_request(dir);
+    request.html_path.clear();
+    const auto data = paper_data();
+    const bs::BundledLibrary& lib = bs::bundled_library();
+    QVERIFY2(lib.error.empty(), lib.error.c_str());
+    const auto rows = bs::compare_platforms(data.runs, data.traces, data.pipelines, request.comparison);
+    bs::CandidateInputs in;
+    in.platforms = rows;
+    in.lib = &lib.library;
+    in.library = bs::select_library(lib.library, "orin,xavier,pi5,nano,icl,uhd620");
+    const std::string constraints = bs::ui::describe_constraints(request.constraints);
+    request.candidates =
+        bs::CandidatesSectionInput{bs::rank_candidates(in, request.constraints, request.comparison),
+                                   bs::peak_candidates(in), "orin,xavier,pi5,nano,icl,uhd620", constraints, ""};
+    const auto& classes = request.candidates->classes;
+    const auto& peaks = request.candidates->peaks;
+    QVERIFY(!classes.empty() && !peaks.empty());
+    const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
+    bs::ui::write_report(request, templates, data, {}, bs::CancelToken{});
+    const QString pdf = request.pdf_path;
+    QString text;
+    // The candidates' pages: from the first table's to the figures, which start a page of their own.
+    for (int p = 1; p <= page_count(pdf); ++p) {
+      const QString t = page_text(pdf, p);
+      if (t.trimmed().startsWith("Figures")) break;
+      if (!text.isEmpty() || t.contains("Candidates for")) text += t;
+    }
+    QVERIFY(text.contains("compute peaks"));
+    QSet<QString> tokens;
+    // Words split at spaces and at the no-break space that joins an origin's marker to its name ("◆ published").
+    for (const QString& t : text.split(QRegularExpression(QStringLiteral("[\\s\u00A0]+")), Qt::SkipEmptyParts))
+      tokens.insert(t);
+    int checked = 0;
+    const auto whole = [&](const std::string& cell) {
+      for (const QString& word : QString::fromStdString(cell).split(' ', Qt::SkipEmptyParts)) {
+        // A line may end at a word's own hyphen ("U-" / "series"), which pdftotext joins as "Useries": a break a
+        // typesetter makes. Any other split leaves two tokens that are not the word.
+        if (!tokens.contains(word) && !(word.contains('-') && tokens.contains(QString(word).remove('-'))))
+          return QString("the candidates' pages lack the whole word '" + word + "' of '" +
+                         QString::fromStdString(cell) + "'");
+        ++checked;
+      }
+      return QString();
+    };
+    for (const char* h : {"Platform", "Origin", "Latency", "Rate", "Power", "Energy", "Battery", "Meets", "constraints",
+                          "ms", "1/s", "mJ", "Precision", "Device", "Peak", "Efficiency", "GFLOPS/W"}) {
+      const QString problem = whole(h);
+      QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    }
+    // Columns of candidates_table(): class, rank, platform, origin, latency, rate, power, energy, battery, meets.
+    const bs::ExportTable t = bs::candidates_table(classes, true);
+    for (const auto& r : t.rows)
+      for (const std::size_t c : {1, 2, 3, 5, 6, 7, 8, 9}) {
+        const QString problem = whole(r[c]);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+      }
+    // Columns of peak_candidates_table(): precision, platform, origin, device, peak, power, GFLOPS/W, kernel.
+    for (const auto& r : bs::peak_candidates_table(peaks).rows)
+      for (std::size_t c = 0; c < 8; ++c) {
+        const QString problem = whole(r[c]);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+      }
+    QVERIFY(checked > 200);
   }
 
   void cancelled_report_writes_nothing() {

@@ -37,6 +37,17 @@ inline QStringList figure_problems(QCustomPlot& plot, const bs::ui::FigureOption
     for (std::size_t b = a + 1; b < labels.size(); ++b)
       if (labels[a].second.intersects(labels[b].second))
         problems << QStringLiteral("labels '%1' and '%2' overlap").arg(labels[a].first, labels[b].first);
+  // An axis label is centred on its axis: one longer than the figure leaves room for is cut at the figure's edge
+  // ("ck voltage under load").
+  const QSizeF figure = bs::ui::figure_size_pt(sized);
+  for (QCPAxis* axis : plot.axisRect()->axes()) {
+    if (!axis->visible() || axis->label().isEmpty()) continue;
+    const bool vertical = axis->orientation() == Qt::Vertical;
+    const double centre = vertical ? axes.center().y() : axes.center().x();
+    const double room = 2 * std::min(centre, (vertical ? figure.height() : figure.width()) - centre);
+    if (QFontMetricsF(axis->labelFont()).horizontalAdvance(axis->label()) > room + 1)
+      problems << QStringLiteral("axis label '%1' is cut at the figure's edge").arg(axis->label());
+  }
   if (plot.legend->visible() && plot.legend->itemCount() > 0) {
     if (QRectF(plot.legend->outerRect()).intersects(axes.adjusted(1, 1, -1, -1)))
       problems << QStringLiteral("the legend covers the axes");
@@ -44,6 +55,11 @@ inline QStringList figure_problems(QCustomPlot& plot, const bs::ui::FigureOption
       problems << QStringLiteral("the legend has %1 rows").arg(plot.legend->rowCount());
     if (plot.legend->outerRect().width() > bs::ui::figure_size_pt(sized).width() + 1)
       problems << QStringLiteral("the legend is wider than the figure");
+    // An entry narrower than its text needs is cut ("4.69 GFLO").
+    for (int i = 0; i < plot.legend->itemCount(); ++i)
+      if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i));
+          item && item->outerRect().width() + 1 < static_cast<QCPLayoutElement*>(item)->minimumOuterSizeHint().width())
+        problems << QStringLiteral("the legend entry '%1' is cut").arg(item->plottable()->name());
   }
   // Every visible plottable's values within the shown key range lie inside the value range.
   for (int i = 0; i < plot.plottableCount(); ++i) {

@@ -6,11 +6,14 @@
 #include <QLabel>
 #include <QToolTip>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "analysis/peaks/flops.h"
 #include "analysis/stats/units.h"
+#include "chart_marks.h"
 #include "device_palette.h"
+#include "plot_labels.h"
 
 namespace bs::ui {
 namespace {
@@ -31,7 +34,9 @@ RooflineView::RooflineView(QWidget* parent) : QWidget(parent), plot_(new QCustom
     axis->setNumberPrecision(0);
   }
   plot_->xAxis->setLabel(tr("Arithmetic intensity (FLOP/byte)"));
-  plot_->yAxis->setLabel(tr("Performance (FLOP/s; stages: integer op/s)"));
+  // Short enough for a figure at an IEEE column's height (the stages' integer op/s are said in their legend entry).
+  plot_->yAxis->setLabel(tr("Performance (FLOP/s)"));
+  flag_labels_ = new AnchoredLabels(plot_);
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 8));
   // The legend sits right of the axes: roofs span the whole width, so inside it would always cover one.
@@ -110,12 +115,14 @@ void RooflineView::set_data(std::vector<FlopsRun> runs, std::vector<ResultSet> s
 }
 
 void RooflineView::redraw() {
+  flag_labels_->clear();  // before the items it placed are deleted
   plot_->clearGraphs();
   plot_->clearItems();
   ceilings_ = roofline_ceilings(runs_, sets_);
   points_.clear();
   double y_min = 1e30, y_max = 0;
   int without_bandwidth = 0;
+  const std::vector<PeakRow> peak_rows = peak_table(runs_);
   for (const RooflineCeiling& c : ceilings_) {
     const auto it = colors_.find({c.platform, c.device});
     const QColor color = device_color(it == colors_.end() ? 0 : it->second);
@@ -135,6 +142,13 @@ void RooflineView::redraw() {
     QString name = QString::fromStdString(c.platform + " — " + c.device) + ": " +
                    QString::fromStdString(format_si(c.peak_flops, "FLOPS"));
     if (c.bandwidth_bps) name += ", " + QString::fromStdString(format_si(*c.bandwidth_bps, "B/s"));
+    // A roof at a flagged measured peak (no spec or computed peak to take instead) is drawn there, and says so.
+    const bool flagged_roof = c.peak_source.rfind("measured", 0) == 0 &&
+                              std::any_of(peak_rows.begin(), peak_rows.end(), [&](const PeakRow& r) {
+                                return r.platform == c.platform && r.device == c.device && !r.flags.empty() &&
+                                       std::abs(r.peak.flops - c.peak_flops) <= 1e-9 * c.peak_flops;
+                              });
+    if (flagged_roof) name = flag_label(name);
     roof->setName(name);
     y_min = std::min(y_min, ys.front());
     y_max = std::max(y_max, c.peak_flops);
@@ -157,7 +171,13 @@ void RooflineView::redraw() {
     }
   }
   // Each run at its peak: the rotation kernel's intensity for its D and N.
-  for (const PeakRow& row : peak_table(runs_)) {
+  struct FlaggedLabel {
+    double intensity, flops;
+    QString text;
+    QColor color;
+  };
+  std::vector<FlaggedLabel> flagged;
+  for (const PeakRow& row : peak_rows) {
     const auto c = std::find_if(ceilings_.begin(), ceilings_.end(), [&](const RooflineCeiling& x) {
       return x.platform == row.platform && x.device == row.device;
     });
@@ -175,15 +195,26 @@ void RooflineView::redraw() {
         device_color(it == colors_.end() ? 0 : it->second), 7));
     g->addData(p.intensity, p.flops);
     g->removeFromLegend();
+    // A flagged peak is drawn where it was measured, hollow and labelled with the warning sign (chart_marks.h).
+    if (!row.flags.empty()) {
+      const QColor color = device_color(it == colors_.end() ? 0 : it->second);
+      mark_flagged_points(g, color);
+      flagged.push_back({p.intensity, p.flops, flag_label(QString::fromStdString(format_si(row.peak.flops, "FLOPS"))),
+                         color.darker(130)});
+    }
     y_min = std::min(y_min, p.flops);
   }
+  // Highest first: where two would collide, the higher keeps its label (the marker stays hollow either way).
+  std::stable_sort(flagged.begin(), flagged.end(),
+                   [](const FlaggedLabel& a, const FlaggedLabel& b) { return a.flops > b.flops; });
+  for (const FlaggedLabel& f : flagged) flag_labels_->add(f.intensity, f.flops, f.text, f.color);
   // The preprocessing stages: a star per pipeline run under its device's roof, a vertical bar for mean ± SD.
   stages_ = place_preprocessing(ceilings_, pipelines_);
   if (!stages_.placed.empty()) {
     QCPGraph* key = plot_->addGraph();  // legend entry only
     key->setLineStyle(QCPGraph::lsNone);
     key->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 1.5), Qt::NoBrush, 11));
-    key->setName(tr("Preprocessing stage of a pipeline run (hover: numbers, source); bar: ± SD"));
+    key->setName(tr("Preprocessing stage of a pipeline run, integer op/s (hover: numbers, source); bar: ± SD"));
   }
   QFont label_font(font().family(), 7);
   int stage_index = 0;

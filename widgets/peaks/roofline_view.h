@@ -12,6 +12,8 @@ class QLabel;
 
 namespace bs::ui {
 
+class AnchoredLabels;
+
 // Roofline per device on log-log axes: the compute ceiling from the stated (or measured) peak, the memory ceiling
 // from measured bandwidth (STREAM triad from "run bandwidth", or clpeak), and the rotation kernel's runs placed at
 // their intensity and peak FLOPS; the preprocessing stage of each pipeline run (stars) at its modelled arithmetic
@@ -38,6 +40,7 @@ class RooflineView : public QWidget {
   void redraw();
   QCustomPlot* plot_;
   QLabel* note_;
+  AnchoredLabels* flag_labels_;  // the "⚠" labels of flagged peaks: apart from each other, inside the axes
   std::vector<FlopsRun> runs_;
   std::vector<ResultSet> sets_;
   std::map<std::pair<std::string, std::string>, int> colors_;

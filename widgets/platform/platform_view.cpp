@@ -391,7 +391,7 @@ void PlatformView::recompute() {
     summary_->setText(summary_->text() + left_out);
     return;
   }
-  // A flagged peak is shown but never decides: say whose compute was ranked by what.
+  // A flagged peak is shown (marked in the table) but never decides: say whose compute was ranked by what.
   QStringList ranking;
   for (const auto& v : verdicts_)
     if (!v.ranking_note.empty())
@@ -399,7 +399,8 @@ void PlatformView::recompute() {
                      .arg(QString::fromStdString(v.platform), QString::fromStdString(v.ranking_note))
                      .toHtmlEscaped();
   if (!ranking.isEmpty())
-    summary_->setText(summary_->text() + tr("<br><span style='color:#8a4b00'>⚠ %1.</span>").arg(ranking.join("; ")));
+    summary_->setText(summary_->text() +
+                      tr("<br><span style='color:#8a4b00'>⚠ Ranking: %1.</span>").arg(ranking.join("; ")));
   // What the battery column assumes: the pack, and the mission with each platform's mean load on the pack.
   QString battery = tr("<br>Battery runtime: %1, constant-power model").arg(battery_->currentText().toHtmlEscaped());
   if (!mission_error_.isEmpty()) {

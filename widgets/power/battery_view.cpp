@@ -112,7 +112,8 @@ BatteryView::BatteryView(QWidget* parent)
 
   plot_->xAxis->setLabel(tr("Time (min)"));
   plot_->yAxis->setLabel(tr("State of charge (%)"));
-  plot_->yAxis2->setLabel(tr("Pack voltage under load, LiPo model (V)"));
+  // Short enough for a figure at an IEEE column's height; the legend says "pack voltage, LiPo model".
+  plot_->yAxis2->setLabel(tr("Pack voltage (V)"));
   plot_->yAxis2->setVisible(true);
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 8));

@@ -36,6 +36,13 @@ std::string fmt_w(double w) {
 }
 
 // The origins of the numbers in a platform's column (measured, reconstructed, published), each once.
+// "5.25 (NUC GPU, OpenCL) [2]" -> "5.25 (NUC GPU, OpenCL) ⚠[2]": the table's footnote marker with the sign.
+std::string with_warning_sign(const std::string& cell) {
+  const auto open = cell.rfind(" [");
+  if (open == std::string::npos || cell.back() != ']') return cell;
+  return cell.substr(0, open + 1) + "\xE2\x9A\xA0" + cell.substr(open + 1);
+}
+
 nlohmann::json origins_json(const PlatformRow& r) {
   std::set<std::string> o;
   for (const auto& [col, src] : r.sources) o.insert(std::string(to_string(src.origin)));
@@ -119,6 +126,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"meets_constraints", verdicts[i].meets_all},
                       {"recommended", verdicts[i].recommended},
                       {"note", verdicts[i].note},
+                      {"ranked_flops", verdicts[i].ranked_flops},
                       {"ranking_note", verdicts[i].ranking_note},
                       {"checks", checks},
                       {"sources", sources},
@@ -143,13 +151,14 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   TextTable text(header);
   for (std::size_t col = 1; col < table.header.size(); ++col) {
     std::vector<std::string> line{table.header[col]};
-    for (const auto& r : table.rows) line.push_back(r[col]);
+    // A flagged cell keeps its footnote number and shows the warning sign, as the GUI and the charts do.
+    for (const auto& r : table.rows) line.push_back(with_warning_sign(r[col]));
     text.add(line);
   }
   text.print(out);
   if (!table.notes.empty()) {
     out << "\nFlags (implausible numbers; docs/cli.md, \"Plausibility flags\"):\n";
-    for (const std::string& n : table.notes) out << "  " << n << '\n';
+    for (const std::string& n : table.notes) out << "  \xE2\x9A\xA0" << n << '\n';
   }
   char extra[64] = "";
   if (options.extra_load_w > 0) std::snprintf(extra, sizeof extra, ", plus %.1f W in parallel", options.extra_load_w);
@@ -162,7 +171,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   }
   out << "\nframes per Wh: frames preprocessed and detected per Wh of the computer = 3600 / energy per frame (J)\n";
   for (const auto& v : verdicts)
-    if (!v.ranking_note.empty()) out << "ranking: " << v.platform << ": " << v.ranking_note << '\n';
+    if (!v.ranking_note.empty()) out << "\xE2\x9A\xA0 ranking: " << v.platform << ": " << v.ranking_note << '\n';
   if (!data.dnn_runs.empty()) {
     // bench dnn runs, one row each: the table the Platforms and Pipeline views and the report show.
     const ExportTable inf = inference_table(data.dnn_runs);

@@ -63,7 +63,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
     peaks = peak_candidates(in);
   }
   const auto app = offscreen_application();
-  std::string candidates_html;
+  std::optional<CandidatesSectionInput> candidates;
   if (spec) {
     // The candidates figure is embedded in the HTML (a PDF gets the tables only).
     std::string figure;
@@ -74,8 +74,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
       ui::render_candidates(classes, 900, 560).save(&buffer, "PNG");
       figure = "data:image/png;base64," + png.toBase64().toStdString();
     }
-    candidates_html =
-        candidates_section_html({classes, peaks, *spec, ui::describe_constraints(platform.constraints), figure});
+    candidates = CandidatesSectionInput{classes, peaks, *spec, ui::describe_constraints(platform.constraints), figure};
   }
   ui::ReportRequest request;
   request.workspace_name = QString::fromStdString(std::filesystem::path(args.positional.front()).filename().string());
@@ -83,7 +82,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   request.pdf_path = QString::fromStdString(pdf);
   request.constraints = platform.constraints;
   request.comparison = platform.options;
-  request.candidates_html = candidates_html;
+  request.candidates = std::move(candidates);
   const bool quiet = args.has("--quiet");
   const QStringList files =
       ui::write_report(request, templates, fd, o, interrupt_token(), [&](int done, int total, const QString& what) {

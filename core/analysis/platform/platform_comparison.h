@@ -130,7 +130,10 @@ struct PlatformVerdict {
   std::vector<ConstraintCheck> checks;
   bool recommended = false;  // the platform with the highest peak FLOPS among those that meet all constraints
   std::string note;          // why a platform that meets the constraints cannot be recommended, if so
-  std::string ranking_note;  // how its compute was ranked when its best peak is flagged
+  std::string ranking_note;  // how its compute was ranked when its best peak is flagged ("" otherwise)
+  // The compute the ranking used (FLOP/s): the best peak, or where that is flagged as implausible the most its
+  // device can deliver (spec or computed peak; analysis/peaks/plausibility.h), never the flagged figure itself.
+  double ranked_flops = 0;
 };
 
 // Only platforms with a power log are candidates: a robot computer whose power draw is unknown cannot be judged

@@ -99,6 +99,33 @@ class TestCliPlatforms : public QObject {
     QVERIFY(out.contains("frames per Wh: frames preprocessed and detected per Wh"));
     QCOMPARE(run_cli({"platforms", kPaper, "--mission", "walk:fast:140"}), 2);  // a usage error, named
   }
+  // A flagged peak stays in the table, marked with ⚠ and its footnote; the ranking uses the most its device can
+  // deliver (the spec peak) and says so, in the text and in the JSON (issue #33).
+  void ranking_with_a_flagged_peak() {
+    QByteArray out;
+    QCOMPARE(run_cli({"platforms", kPaper}, &out), 0);
+    const QString text = QString::fromUtf8(out);
+    QVERIFY2(text.contains("5.25 (NUC GPU (Iris Plus 650), OpenCL) \u26A0[2]"), out.constData());
+    QVERIFY(text.contains("104.64 \u26A0[2]"));
+    QVERIFY(text.contains("\u26A0[2] above_spec_peak: 5.25 TFLOPS is 5.9x"));
+    QVERIFY(!text.contains("41.26 \u26A0"));  // the Jetson's numbers are plausible
+    QVERIFY2(text.contains("\u26A0 ranking: NUC: ranked at 883.20 GFLOPS, not at its flagged best peak of 5.25 TFLOPS "
+                           "(NUC GPU (Iris Plus 650))"),
+             out.constData());
+    QVERIFY(!text.contains("ranking: Jetson TX2"));
+    QCOMPARE(run_cli({"platforms", kPaper, "--json"}, &out), 0);
+    for (const auto v : QJsonDocument::fromJson(out).object()["platforms"].toArray()) {
+      const QJsonObject p = v.toObject();
+      if (p["platform"] == "NUC") {
+        QCOMPARE(std::round(p["ranked_flops"].toDouble() / 1e7) / 100, 883.2);  // GFLOPS: the spec, not 5250
+        QVERIFY(p["ranking_note"].toString().contains("flagged best peak of 5.25 TFLOPS"));
+        QCOMPARE(p["gpu_peak_flops"].toDouble(), 5.25e12);  // the figure itself is kept
+      } else if (p["platform"] == "Jetson TX2") {
+        QCOMPARE(p["ranked_flops"].toDouble(), p["gpu_peak_flops"].toDouble());  // nothing flagged: its own peak
+        QCOMPARE(p["ranking_note"].toString(), QString());
+      }
+    }
+  }
   void usage() { QCOMPARE(run_cli({"platforms", kPaper, "--battery", "nope"}), 2); }
 };
 

@@ -180,13 +180,22 @@ class TestPlatformReport : public QObject {
   // and absent when none were asked for.
   void candidates_section_after_details() {
     bs::ReportInput in = two_robots();
-    QVERIFY(bs::report_html(in).find("library-candidates-marker") == std::string::npos);
-    in.candidates_html = "<div id=\"library-candidates-marker\"><h2>Candidates</h2></div>\n";
+    QVERIFY(bs::report_html(in).find("<h2>Candidates</h2>") == std::string::npos);
+    bs::Candidate c;
+    c.platform = "Orin";
+    c.origin = bs::DataOrigin::Published;
+    c.throughput_per_s = 1586;
+    c.source = "https://github.com/mlcommons/inference_results_v3.0/blob/1948f9b/closed/NVIDIA/x.txt";
+    in.candidates = bs::CandidatesSectionInput{{{"resnet50", "SingleStream", "int8", {c}}}, {}, "orin", "", ""};
     const std::string html = bs::report_html(in);
-    const auto at = html.find("library-candidates-marker");
+    const auto at = html.find("<h2>Candidates</h2>");
     QVERIFY(at != std::string::npos);
     QVERIFY(at > html.find("Platform details"));
     QVERIFY(at < html.rfind("Appendix A. Sources and provenance"));
+    // A numbered table with the units in a header row, the source linked in the notes under it.
+    QVERIFY(html.find("Candidates for resnet50, SingleStream, int8", at) != std::string::npos);
+    QVERIFY(html.find("<tr class=\"units\"><th align=\"right\"></th>", at) != std::string::npos);
+    QVERIFY(html.find("<a href=\"https://github.com/mlcommons/", at) != std::string::npos);
   }
 };
 

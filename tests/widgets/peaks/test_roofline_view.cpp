@@ -69,7 +69,7 @@ class TestRooflineView : public QObject {
     // Roof, rotation marker, the legend's star, the stage's star.
     QCOMPARE(view.plot()->graphCount(), 4);
     QCOMPARE(view.plot()->graph(2)->name(),
-             QString("Preprocessing stage of a pipeline run (hover: numbers, source); bar: ± SD"));
+             QString("Preprocessing stage of a pipeline run, integer op/s (hover: numbers, source); bar: ± SD"));
     QCOMPARE(view.plot()->graph(3)->scatterStyle().shape(), QCPScatterStyle::ssStar);
     const QString tip = view.stage_tooltip(s);
     QVERIFY(tip.contains("6.21 ± 0.99 ms (n = 500)"));

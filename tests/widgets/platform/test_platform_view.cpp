@@ -76,6 +76,13 @@ class TestPlatformView : public QObject {
     QVERIFY(t->item(row_of(t, "NUC"), paper)->toolTip().startsWith("⚠"));
     QVERIFY(t->item(row_of(t, "NUC"), paper)->toolTip().contains("Iris Plus Graphics 650"));
     QVERIFY(t->item(row_of(t, "Jetson TX2"), paper)->font().bold());
+    // The ranking says which number decided: the NUC at its GPU's spec peak, not at the flagged 5.25 TFLOPS.
+    QString ranking;
+    for (const QLabel* l : view.findChildren<QLabel*>())
+      if (l->text().contains("Ranking:")) ranking = l->text();
+    QVERIFY2(ranking.contains("NUC: ranked at 883.20 GFLOPS, not at its flagged best peak of 5.25 TFLOPS"),
+             qPrintable(ranking));
+    QVERIFY(!ranking.contains("Jetson"));
     QVERIFY(t->item(row_of(t, "Jetson TX2"), power)->toolTip().contains("Measured by: "));
     QVERIFY(t->item(row_of(t, "NUC"), power)->toolTip().contains("nuc-current.csv"));
 

@@ -109,8 +109,14 @@ class TestPlatformComparison : public QObject {
     QVERIFY(nuc.trusted_peak_flops() >= 0.8e12 && nuc.trusted_peak_flops() <= 0.9e12);
     QCOMPARE(row(rows, "Jetson TX2").trusted_peak_flops(), row(rows, "Jetson TX2").best_peak_flops());
     for (const auto& v : bs::recommend(rows, {})) {
-      if (v.platform == "NUC") QVERIFY2(v.ranking_note.find("flagged") != std::string::npos, v.ranking_note.c_str());
-      if (v.platform == "Jetson TX2") QVERIFY2(v.ranking_note.empty(), v.ranking_note.c_str());  // nothing flagged
+      if (v.platform == "NUC") {
+        QVERIFY2(v.ranking_note.find("flagged") != std::string::npos, v.ranking_note.c_str());
+        QCOMPARE(v.ranked_flops, nuc.trusted_peak_flops());  // the ranking's number is the one said
+      }
+      if (v.platform == "Jetson TX2") {
+        QVERIFY2(v.ranking_note.empty(), v.ranking_note.c_str());  // nothing flagged
+        QCOMPARE(v.ranked_flops, row(rows, "Jetson TX2").best_peak_flops());
+      }
     }
     // Were the spec lower than the Jetson's peak, the flagged figure could not win.
     auto capped = rows;
