@@ -20,6 +20,7 @@
 #include <QTextTable>
 #include <QUrl>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -155,6 +156,19 @@ bool has_image(const QTextBlock& block) {
 
 int page_of(double y, double page_h) { return static_cast<int>(std::floor(y / page_h)); }
 
+// The bottom of a table's first body row (after its repeated header rows), in document coordinates.
+double first_body_row_bottom(QAbstractTextDocumentLayout& layout, const QTextTable& table) {
+  const int row = std::min(table.rows() - 1, std::max(0, table.format().headerRowCount()));
+  double bottom = 0;
+  for (int c = 0; c < table.columns(); ++c) {
+    const QTextTableCell cell = table.cellAt(row, c);
+    if (!cell.isValid()) continue;
+    for (auto it = cell.begin(); !it.atEnd(); ++it)
+      if (it.currentBlock().isValid()) bottom = std::max(bottom, layout.blockBoundingRect(it.currentBlock()).bottom());
+  }
+  return bottom;
+}
+
 // Keeps together what belongs together, as LaTeX does: a figure with its caption (one paragraph), a heading and a
 // table caption with what follows. A paragraph that would straddle a page break, or a heading left alone at a
 // page's foot, starts the next page. One fix per pass, since each moves everything after it.
@@ -171,10 +185,13 @@ void keep_together(QTextDocument& doc) {
       const bool before_table = next.isValid() && QTextCursor(next).currentTable() && !b.text().isEmpty();
       bool bad = has_image(b) && page_of(r.top(), page_h) != page_of(r.bottom() - 1, page_h);
       if ((heading || before_table) && next.isValid()) {
-        // The first line of what follows must be on this block's page.
+        // The first line of what follows must be on this block's page; for a table caption, the table's header rows
+        // and its first body row (a caption and header alone at a page's foot say nothing).
         const QTextLayout* nl = next.layout();
-        const double next_bottom =
+        double next_bottom =
             layout->blockBoundingRect(next).top() + (nl && nl->lineCount() > 0 ? nl->lineAt(0).height() : 0);
+        if (before_table)
+          next_bottom = std::max(next_bottom, first_body_row_bottom(*layout, *QTextCursor(next).currentTable()));
         bad = bad || page_of(r.top(), page_h) != page_of(next_bottom - 1, page_h);
       }
       if (bad && b.blockFormat().pageBreakPolicy() != QTextFormat::PageBreak_AlwaysBefore &&
