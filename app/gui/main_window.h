@@ -71,7 +71,8 @@ class MainWindow : public QMainWindow {
   LensTab* lens_tab() const { return lens_; }  // the lead feeds it a capture: lens_tab()->set_fisheye(bgr, name)
   const Workspace* workspace() const { return workspace_.get(); }
   QUndoStack* edits() const { return edits_; }  // Edit > Undo's steps (workspace edits)
-  // Something the user did that the workspace does not hold yet (a lens tuned and not saved).
+  // Something the user did that the workspace does not hold yet (a lens tuned and not saved), or an untitled
+  // workspace (deleted when it closes) holding the user's imports, runs or edits.
   bool has_unsaved_changes() const;
   // Asks about it (Save / Discard / Cancel) and saves on Save; false on Cancel. Quitting and opening another
   // workspace go through here. Tests answer in place of the message box.
@@ -143,6 +144,8 @@ class MainWindow : public QMainWindow {
   std::map<std::int64_t, std::string> run_labels_;  // the user's names of runs (store/run_label_store.h)
   std::vector<StoredRun> live_;                     // a sweep in progress, drawn before it is stored
   std::unique_ptr<QTemporaryDir> untitled_dir_;     // holds an untitled workspace until "Save As"
+  bool untitled_changed_ =
+      false;  // the untitled workspace holds the user's imports, runs or edits: ask before losing it
   WorkspaceTree* tree_;
   QSplitter* flops_split_ = nullptr;  // the FLOPS tab: plot over the peak table
   QByteArray default_state_, default_split_;

@@ -95,10 +95,32 @@ void MainWindow::save_tuned_lens(bool for_camera) {
   push_edit(what, std::move(redo), std::move(undo));
 }
 
-bool MainWindow::has_unsaved_changes() const { return lens_ && lens_->has_unsaved_lens(); }
+bool MainWindow::has_unsaved_changes() const {
+  return (lens_ && lens_->has_unsaved_lens()) || (untitled_dir_ && untitled_changed_);
+}
 
 bool MainWindow::settle_unsaved_changes() {
   if (!has_unsaved_changes()) return true;
+  if (untitled_dir_ && untitled_changed_) {
+    // An untitled workspace lives in a temporary folder that goes with it: what the user imported, measured or
+    // edited there is lost unless saved under a name now.
+    const QString text =
+        tr("The untitled workspace holds your imports, runs or edits and is deleted when it closes. "
+           "Save it as a workspace file?");
+    const int answer =
+        unsaved_prompt_
+            ? unsaved_prompt_(text)
+            : QMessageBox::question(this, tr("Unsaved workspace"), text,
+                                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel) return false;
+    if (answer == QMessageBox::Save) {
+      if (lens_ && lens_->has_unsaved_lens()) save_tuned_lens(false);  // into the workspace before it is copied
+      save_as();
+      return !untitled_dir_;  // the file dialog cancelled: nothing is lost, nothing closes
+    }
+    untitled_changed_ = false;  // discarded, the tuned lens with it: asked once
+    return true;
+  }
   const QString text = tr("The lens tuned for frame “%1” is not saved in the workspace. Save it for this frame?")
                            .arg(lens_->frame_label());
   const int answer =

@@ -263,6 +263,47 @@ class TestMainWindowKeeps : public QObject {
     QCOMPARE(w.battery_view()->rows()[0].computer_mean_w, 16.0);
   }
 
+  void untitled_workspace_asks_before_the_users_work_is_lost() {
+    // An untitled workspace lives in a temporary folder deleted with it. What the GUI's command line imported at
+    // start (the paper's sample) is not the user's work; an edit made there is, and quitting asks.
+    QStringList asked;
+    int answer = QMessageBox::Cancel;
+    MainWindow w;
+    w.set_unsaved_prompt([&asked, &answer](const QString& text) {
+      asked << text;
+      return answer;
+    });
+    w.new_untitled_workspace();
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    QVERIFY(!w.has_unsaved_changes());
+    const auto traces = w.workspace()->power_trace_summaries();
+    QVERIFY(!traces.empty());
+    w.set_log_platform(traces[0].id, "Robot A");
+    QVERIFY(w.has_unsaved_changes());
+    QVERIFY(!w.close());  // Cancel: the window and its workspace stay
+    QCOMPARE(asked.size(), 1);
+    QVERIFY2(asked[0].contains("untitled workspace"), qPrintable(asked[0]));
+    QVERIFY(w.workspace() != nullptr);
+    answer = QMessageBox::Discard;
+    QVERIFY(w.close());  // Discard: closes, asked once more
+    QCOMPARE(asked.size(), 2);
+
+    // The same edit in a workspace with a name is already in its file: nothing to ask.
+    QTemporaryDir dir;
+    MainWindow named;
+    asked.clear();
+    named.set_unsaved_prompt([&asked](const QString& text) {
+      asked << text;
+      return int(QMessageBox::Cancel);
+    });
+    QVERIFY(named.open_workspace(dir.filePath("named.bsw")));
+    named.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    named.set_log_platform(named.workspace()->power_trace_summaries()[0].id, "Robot A");
+    QVERIFY(!named.has_unsaved_changes());
+    QVERIFY(named.close());
+    QVERIFY(asked.isEmpty());
+  }
+
   void every_tab_fits_1280x800() {
     // Issue #32.7: with the Lens tab's header and wrapping tool bar, the Battery legend under its plot and the
     // lists of logs left out, no tab may widen the window beyond 1280 px.
