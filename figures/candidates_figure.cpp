@@ -105,7 +105,10 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
   }
   if (ymin > ymax) ymin = 0.1, ymax = 10;
   plot.xAxis->setRange(0, xmax * 1.35);
-  plot.yAxis->setRange(ymin / 2, ymax * 3);
+  // Whole decades: the log ticker then labels 1, 10, 100 ... (within less than a decade it falls back to linear
+  // ticks, which crowd the top of a log axis: 10, 12.5, 15, 17.5).
+  plot.yAxis->setRange(std::pow(10.0, std::floor(std::log10(ymin / 2))),
+                       std::pow(10.0, std::ceil(std::log10(ymax * 3))));
   plot.replot();
   QStringList note;
   if (!flagged.isEmpty())
