@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Platforms view on the paper's sample data: the recommendation follows the constraints, the best value of a
 // column is highlighted, numeric sorting, columns without data hidden, sources in tooltips.
-#include <filesystem>
-
+// Qt first: moc (Qt 6.4) reading GCC 11's headers fails on <filesystem> when that is the first header it meets.
 #include <QComboBox>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTableWidget>
 #include <QTest>
+
+#include <filesystem>
 
 #include "analysis/platform/inference_table.h"
 #include "common/importer.h"
