@@ -29,6 +29,14 @@ nlohmann::json resource_table_entries(std::string_view json_text, const std::str
   return std::move(*entries);
 }
 
+std::string resource_table_string(const nlohmann::json& entry, const char* key, const std::string& origin,
+                                  const std::string& where) {
+  const auto it = entry.find(key);
+  if (it == entry.end() || !it->is_string() || it->get<std::string>().empty())
+    resource_table_fail(origin, where + "." + key, "missing or not a non-empty string");
+  return it->get<std::string>();
+}
+
 std::vector<std::string> resource_table_strings(const nlohmann::json& entry, const char* key, const std::string& origin,
                                                 const std::string& where) {
   std::vector<std::string> out;

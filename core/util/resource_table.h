@@ -18,6 +18,10 @@ namespace bs {
 nlohmann::json resource_table_entries(std::string_view json_text, const std::string& origin, std::string_view format,
                                       const std::string& entries_key);
 
+// The non-empty string `entry[key]`; throws naming `where.key` when it is missing, not a string or empty.
+std::string resource_table_string(const nlohmann::json& entry, const char* key, const std::string& origin,
+                                  const std::string& where);
+
 // The non-empty strings of the array `entry[key]` (none when absent); throws naming `where.key` otherwise. The tables'
 // lists of more source URLs and of unverified fields.
 std::vector<std::string> resource_table_strings(const nlohmann::json& entry, const char* key, const std::string& origin,

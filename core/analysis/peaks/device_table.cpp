@@ -22,13 +22,6 @@ using nlohmann::json;
   resource_table_fail(origin, where, why);
 }
 
-std::string required_string(const json& e, const char* key, const std::string& origin, const std::string& where) {
-  const auto it = e.find(key);
-  if (it == e.end() || !it->is_string() || it->get<std::string>().empty())
-    fail(origin, where + "." + key, "missing or not a non-empty string");
-  return it->get<std::string>();
-}
-
 std::optional<double> optional_positive(const json& e, const char* key, const std::string& origin,
                                         const std::string& where) {
   const auto it = e.find(key);
@@ -57,7 +50,7 @@ std::vector<PeakTerm> peak_terms(const json& e, const std::string& origin, const
       return *v;
     };
     term.units = need("units");
-    term.unit = required_string(t, "unit", origin, at);
+    term.unit = resource_table_string(t, "unit", origin, at);
     term.flop_per_unit_per_cycle = need("flop_per_unit_per_cycle");
     term.clock_ghz = need("clock_ghz");
     terms.push_back(std::move(term));
@@ -112,9 +105,9 @@ DeviceTable parse_device_table(std::string_view json_text, const std::string& or
     const std::string where = "devices[" + std::to_string(i) + "]";
     if (!e.is_object()) fail(origin, where, "not an object");
     DeviceSpec s;
-    s.id = required_string(e, "id", origin, where);
-    s.name = required_string(e, "name", origin, where);
-    const std::string kind = required_string(e, "kind", origin, where);
+    s.id = resource_table_string(e, "id", origin, where);
+    s.name = resource_table_string(e, "name", origin, where);
+    const std::string kind = resource_table_string(e, "kind", origin, where);
     if (kind != "cpu" && kind != "gpu") fail(origin, where + ".kind", "must be \"cpu\" or \"gpu\"");
     s.kind = device_kind_from_string(kind);
     if (const auto a = e.find("aliases"); a != e.end()) {
@@ -128,12 +121,12 @@ DeviceTable parse_device_table(std::string_view json_text, const std::string& or
     const auto peak = optional_positive(e, "fp32_peak_flops", origin, where);
     if (!peak) fail(origin, where + ".fp32_peak_flops", "missing");
     s.fp32_peak_flops = *peak;
-    s.derivation = required_string(e, "derivation", origin, where);
+    s.derivation = resource_table_string(e, "derivation", origin, where);
     s.memory_bandwidth_bytes_per_s = optional_positive(e, "memory_bandwidth_bytes_per_s", origin, where);
     s.tdp_w = optional_positive(e, "tdp_w", origin, where);
     const auto src = e.find("source");
     if (src == e.end() || !src->is_object()) fail(origin, where + ".source", "missing: every entry names its source");
-    s.source_title = required_string(*src, "title", origin, where + ".source");
+    s.source_title = resource_table_string(*src, "title", origin, where + ".source");
     s.source_url = src->value("url", "");
     s.source_more_urls = resource_table_strings(*src, "more", origin, where + ".source");
     s.note = e.value("note", "");

@@ -107,10 +107,7 @@ ArmCoreTable parse_arm_core_table(std::string_view json_text, const std::string&
     ArmCoreType c;
     c.implementer = table_hex(e, "implementer", 0xff, origin, where);
     c.part = table_hex(e, "part", 0xfff, origin, where);
-    const auto name = e.find("name");
-    if (name == e.end() || !name->is_string() || name->get<std::string>().empty())
-      fail(origin, where + ".name", "missing or not a non-empty string");
-    c.name = name->get<std::string>();
+    c.name = resource_table_string(e, "name", origin, where);
     c.vendor = e.value("vendor", "");
     c.fp32_lanes = table_count(e, "fp32_lanes", origin, where);
     c.fma_units = table_count(e, "fma_units", origin, where);
