@@ -157,7 +157,7 @@ MainWindow::MainWindow(QWidget* parent)
   create_actions();
   connect(tree_, &WorkspaceTree::visibility_changed, this, &MainWindow::refresh_views);
   connect(importer_, &ImportController::finished, this, [this](const ImportReport& r) {
-    if (r.imported > 0) untitled_changed_ = untitled_dir_ != nullptr;
+    if (r.imported > 0) work_since_open_ = true;
     reload();
     show_import_report(r);
   });
@@ -171,7 +171,7 @@ MainWindow::MainWindow(QWidget* parent)
     batch.result_sets.push_back(set);
     try {
       workspace_->add_import(batch, content_hash(set.provenance.date + set.provenance.note));
-      untitled_changed_ = untitled_dir_ != nullptr;
+      work_since_open_ = true;
     } catch (const WorkspaceError& e) {
       QMessageBox::critical(this, tr("Cannot store the ceilings"), QString::fromUtf8(e.what()));
     }
@@ -253,7 +253,7 @@ bool MainWindow::open_workspace(const QString& path) {
     untitled_dir_.reset();
     recent_->add(path);
   }
-  untitled_changed_ = false;  // a workspace just opened (a named one, or a new untitled one) holds nothing to lose
+  work_since_open_ = false;
   reload();
   return true;
 }
@@ -460,7 +460,7 @@ void MainWindow::store_measured_runs(const std::vector<FlopsRun>& runs, bool can
   if (auto trace = runner_->take_power_trace()) batch.power_traces.push_back(std::move(*trace));  // same import
   try {
     workspace_->add_import(batch, content_hash(write_run_json(runs)));
-    untitled_changed_ = untitled_dir_ != nullptr;
+    work_since_open_ = true;
   } catch (const WorkspaceError& e) {
     QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
   }
@@ -484,7 +484,7 @@ void MainWindow::save_as() {
     QMessageBox::critical(this, tr("Cannot save workspace"), QString::fromUtf8(e.what()));
     return;
   }
-  untitled_changed_ = false;  // saved under its name: nothing of it is lost when it closes
+  work_since_open_ = false;  // saved under its name: nothing of it is lost when it closes
   open_workspace(path);
 }
 

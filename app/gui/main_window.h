@@ -144,8 +144,10 @@ class MainWindow : public QMainWindow {
   std::map<std::int64_t, std::string> run_labels_;  // the user's names of runs (store/run_label_store.h)
   std::vector<StoredRun> live_;                     // a sweep in progress, drawn before it is stored
   std::unique_ptr<QTemporaryDir> untitled_dir_;     // holds an untitled workspace until "Save As"
-  bool untitled_changed_ =
-      false;  // the untitled workspace holds the user's imports, runs or edits: ask before losing it
+  // The user imported, measured or edited something since this workspace was opened. It matters only for an
+  // untitled workspace, whose temporary folder is deleted with it.
+  bool work_since_open_ = false;
+  bool untitled_work_at_risk() const { return untitled_dir_ && work_since_open_; }
   WorkspaceTree* tree_;
   QSplitter* flops_split_ = nullptr;  // the FLOPS tab: plot over the peak table
   QByteArray default_state_, default_split_;

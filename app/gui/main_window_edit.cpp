@@ -251,7 +251,7 @@ void MainWindow::push_edit(const QString& text, std::function<void()> redo, std:
       reload();
     };
   };
-  if (untitled_dir_) untitled_changed_ = true;
+  work_since_open_ = true;
   edits_->push(new WorkspaceCommand(text, with_reload(std::move(redo)), with_reload(std::move(undo)),
                                     [this](const QString& m) { report_edit_error(m); }));
   reload();

@@ -95,13 +95,11 @@ void MainWindow::save_tuned_lens(bool for_camera) {
   push_edit(what, std::move(redo), std::move(undo));
 }
 
-bool MainWindow::has_unsaved_changes() const {
-  return (lens_ && lens_->has_unsaved_lens()) || (untitled_dir_ && untitled_changed_);
-}
+bool MainWindow::has_unsaved_changes() const { return (lens_ && lens_->has_unsaved_lens()) || untitled_work_at_risk(); }
 
 bool MainWindow::settle_unsaved_changes() {
   if (!has_unsaved_changes()) return true;
-  if (untitled_dir_ && untitled_changed_) {
+  if (untitled_work_at_risk()) {
     // An untitled workspace lives in a temporary folder that goes with it: what the user imported, measured or
     // edited there is lost unless saved under a name now.
     const QString text =
@@ -118,7 +116,7 @@ bool MainWindow::settle_unsaved_changes() {
       save_as();
       return !untitled_dir_;  // the file dialog cancelled: nothing is lost, nothing closes
     }
-    untitled_changed_ = false;  // discarded, the tuned lens with it: asked once
+    work_since_open_ = false;  // discarded, the tuned lens with it: asked once
     return true;
   }
   const QString text = tr("The lens tuned for frame “%1” is not saved in the workspace. Save it for this frame?")
