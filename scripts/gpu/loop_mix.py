@@ -115,6 +115,8 @@ def main():
         neg = f", {c['neg']} neg (operand modifiers)" if c["neg"] else ""
         print(f"{name}: loop of {total} instructions: {c['mul']} mul, {c['fma']} fma, {c['add']} f32 add/sub, "
               f"{c['mov']} mov, {c['other']} other{neg}; FP32 arithmetic share of issue slots {100 * share:.1f} %")
+    if not found:
+        print(f"loop_mix: no kernel named {' or '.join(wanted) or '(any)'} in {sys.argv[1]}", file=sys.stderr)
     return 0 if found else 1
 
 
