@@ -16,10 +16,6 @@
 #include "common/importer.h"
 #include "frames/frame_raw.h"
 
-#ifndef BENCHSCOPE_FUZZ_IMPORTER
-#error "define BENCHSCOPE_FUZZ_IMPORTER to an importer id or \"any\""
-#endif
-
 namespace bs::fuzz {
 namespace {
 
@@ -28,7 +24,7 @@ namespace {
 const std::string& scratch_path() {
   static const std::string path = [] {
     const char* dir = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
-    return std::string(dir) + "/benchscope-fuzz-" + BENCHSCOPE_FUZZ_IMPORTER + "-" + std::to_string(getpid());
+    return std::string(dir) + "/benchscope-fuzz-" + importer_id() + "-" + std::to_string(getpid());
   }();
   return path;
 }
@@ -44,13 +40,11 @@ ImportLimits fuzz_limits() {
 }
 
 [[noreturn]] void finding(const char* what) {
-  std::fprintf(stderr, "benchscope fuzz (%s): %s\n", BENCHSCOPE_FUZZ_IMPORTER, what);
+  std::fprintf(stderr, "benchscope fuzz (%s): %s\n", importer_id(), what);
   std::abort();
 }
 
 }  // namespace
-
-const char* importer_id() { return BENCHSCOPE_FUZZ_IMPORTER; }
 
 void run_one(const std::uint8_t* data, std::size_t size) {
   {
@@ -58,7 +52,7 @@ void run_one(const std::uint8_t* data, std::size_t size) {
     f.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     if (!f) finding("cannot write the scratch file");
   }
-  const std::string_view id = BENCHSCOPE_FUZZ_IMPORTER;
+  const std::string_view id = importer_id();
   const CancelToken cancel;
   try {
     // What every load does after an import: derive the FLOPS sweeps inside result sets (benchmark names parsed).
@@ -112,10 +106,3 @@ void run_one(const std::uint8_t* data, std::size_t size) {
 }
 
 }  // namespace bs::fuzz
-
-#ifdef BENCHSCOPE_LIBFUZZER
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  bs::fuzz::run_one(data, size);
-  return 0;
-}
-#endif

@@ -8,7 +8,8 @@
 
 namespace bs::fuzz {
 
-// The importer id this executable exercises; set at compile time (BENCHSCOPE_FUZZ_IMPORTER).
+// The importer id this executable exercises: defined by the one-line source tests/fuzz/CMakeLists.txt generates for
+// each target, so that this harness and the replay's main are compiled once for all targets.
 const char* importer_id();
 
 // Writes `data` to a private temporary file and parses it. An ImportError is the expected outcome for most inputs;

@@ -117,10 +117,13 @@ class TestLensView3D : public QObject {
   }
 };
 
-int main(int argc, char** argv) {
+namespace {
+int lens_view_3d_main(int argc, char** argv) {
   ui::set_vtk_default_surface_format();  // before QApplication, as app/gui/main.cpp does
   QApplication app(argc, argv);
   TestLensView3D test;
   return QTest::qExec(&test, argc, argv);
 }
+}  // namespace
+BENCHSCOPE_TEST_CUSTOM_MAIN(lens_view_3d_main)
 #include "test_lens_view_3d.moc"

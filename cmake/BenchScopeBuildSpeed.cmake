@@ -1,0 +1,33 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Less compile work for the same code (issue #42): a cold 2-core machine builds BenchScope twice in `scripts/dev test`
+# (GCC, then clang with sanitizers) and the cross test a third time, so every header parsed once instead of in each
+# source, and every group of sources compiled as one, counts three times over.
+#   BENCHSCOPE_PCH    precompiled headers per library (the heavy ones each library's sources include: the standard
+#                     library, nlohmann-json, OpenCV's core, Qt Widgets and QCustomPlot)
+#   BENCHSCOPE_UNITY  unity builds of the libraries (CMake's batches of sources compiled as one translation unit)
+# docs/guide.md ("Build time") has the measured effect of each.
+option(BENCHSCOPE_PCH "Precompile the heavy headers of each library" ON)
+option(BENCHSCOPE_UNITY "Compile each library's sources in batches (unity build; off: see below)" OFF)
+set(BENCHSCOPE_UNITY_BATCH 8 CACHE STRING "Sources per unity batch")
+
+# benchscope_speed_up(<target> [UNITY] [PCH <headers...>])
+#   A source with compile options of its own (the SIMD variants' -mavx2, -mavx512f, -march=...) keeps neither: a
+#   precompiled header made without those flags cannot serve it (clang refuses it outright), and CMake already
+#   leaves such sources out of unity batches.
+function(benchscope_speed_up target)
+  cmake_parse_arguments(S "UNITY" "" "PCH" ${ARGN})
+  if(BENCHSCOPE_UNITY AND S_UNITY)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${BENCHSCOPE_UNITY_BATCH})
+  endif()
+  if(BENCHSCOPE_PCH AND S_PCH)
+    target_precompile_headers(${target} PRIVATE ${S_PCH})
+    get_target_property(sources ${target} SOURCES)
+    foreach(src IN LISTS sources)
+      get_source_file_property(options ${src} COMPILE_OPTIONS)
+      get_source_file_property(flags ${src} COMPILE_FLAGS)
+      if(options OR flags)
+        set_source_files_properties(${src} PROPERTIES SKIP_PRECOMPILE_HEADERS ON)
+      endif()
+    endforeach()
+  endif()
+endfunction()
