@@ -23,18 +23,9 @@ const QString kKept =
 
 // benchscope-cli ARGS with BENCHSCOPE_PUBLIC_DATA_DIR set to `public_data`.
 bs::test::CliResult cli_with(const QString& public_data, const QStringList& args) {
-  QProcess p;
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
   env.insert("BENCHSCOPE_PUBLIC_DATA_DIR", public_data);
-  p.setProcessEnvironment(env);
-  p.start(bs::test::kCli, args);
-  if (!p.waitForFinished(120000)) {
-    p.kill();
-    p.waitForFinished();
-    return {-2, p.readAllStandardOutput(), p.readAllStandardError()};
-  }
-  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-          p.readAllStandardError()};
+  return bs::test::cli(args, env);
 }
 
 }  // namespace
