@@ -2,11 +2,15 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Builds resources/library/library.json, BenchScope's library of published results, from public files kept under
 resources/library/sources/ (never from numbers typed by hand: every value names the file and line it comes from).
+The kept files are third-party, so they are not in the project: they lie at that path in the shared folder of
+third-party files, BENCHSCOPE_PUBLIC_DATA_DIR (default ../shared/public-data beside the source tree, as in CMake;
+--public-data DIR names another). library.json's "kept" fields stay relative to resources/library/ of that folder.
 
   scripts/build-library.py --fetch MIRROR_ROOT   copy the listed files out of local git mirrors of the public
                                                  repositories (MIRROR_ROOT/<owner>+<name>/repo, as the project's
-                                                 fetch tool leaves them) into resources/library/sources/
-  scripts/build-library.py                       build library.json from resources/library/sources/
+                                                 fetch tool leaves them) into resources/library/sources/ of the
+                                                 shared folder
+  scripts/build-library.py                       build library.json from the kept sources
   scripts/build-library.py --check               fail when library.json differs from what the sources give
 
 Sources:
@@ -29,7 +33,14 @@ from datetime import datetime
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LIB = os.path.join(ROOT, "resources", "library")
-SRC = os.path.join(LIB, "sources")
+
+
+def kept_sources(public_data):
+    """resources/library/sources/ of a shared folder of third-party files."""
+    return os.path.join(public_data, "resources", "library", "sources")
+
+
+SRC = kept_sources(os.environ.get("BENCHSCOPE_PUBLIC_DATA_DIR") or os.path.join(ROOT, "..", "shared", "public-data"))
 
 # The computers, and how a user may name them (benchscope-cli platforms --library orin,pi5).
 COMPUTERS = [
@@ -291,7 +302,7 @@ def mlperf_result(entry):
     r["software"] = ", ".join(x for x in (str(sysj.get("framework", "")).strip(),
                                           str(sysj.get("operating_system", "")).strip()) if x)
     r["source"] = {"url": f"https://github.com/{repo}/blob/{commit}/{spath}", "repository": repo, "commit": commit,
-                   "path": spath, "lines": lines, "kept": os.path.relpath(kept(repo, spath), LIB),
+                   "path": spath, "lines": lines, "kept": os.path.relpath(kept(repo, spath), os.path.dirname(SRC)),
                    "system": system_json(sub, system), "licence": "Apache-2.0"}
     if ppath:
         r["source"]["precision_from"] = ppath
@@ -355,7 +366,7 @@ def clpeak_results(path, computer, device):
                     "software": "clpeak 1.x, " + header.get("Platform", ""),
                     "source": {"url": f"https://github.com/{repo}/blob/{commit}/{path}", "repository": repo,
                                "commit": commit, "path": path, "lines": {key: no},
-                               "kept": os.path.relpath(kept(repo, path), LIB), "licence": "Apache-2.0"},
+                               "kept": os.path.relpath(kept(repo, path), os.path.dirname(SRC)), "licence": "Apache-2.0"},
                     "id": "clpeak-" + computer + "-" + key.lower().replace(" ", "-")})
     return out
 
@@ -436,9 +447,18 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--fetch", metavar="MIRROR_ROOT")
     ap.add_argument("--check", action="store_true")
+    ap.add_argument("--public-data", metavar="DIR",
+                    help="the shared folder of third-party files (default: $BENCHSCOPE_PUBLIC_DATA_DIR, else "
+                         "../shared/public-data beside the source tree)")
     a = ap.parse_args()
+    global SRC
+    if a.public_data:
+        SRC = kept_sources(a.public_data)
     if a.fetch:
         fetch(a.fetch)
+    if not os.path.isdir(SRC):
+        sys.exit("scripts/build-library.py: no kept sources at " + SRC + ": they are third-party files of the shared "
+                 "folder (docs/third-party-data.md); set BENCHSCOPE_PUBLIC_DATA_DIR or pass --public-data DIR")
     lib = build()
     text = json.dumps(lib, indent=1, ensure_ascii=False, sort_keys=False) + "\n"
     out = os.path.join(LIB, "library.json")

@@ -13,6 +13,9 @@
 #ifndef BENCHSCOPE_INSTALL_RESOURCES
 #define BENCHSCOPE_INSTALL_RESOURCES "share/benchscope/resources"
 #endif
+#ifndef BENCHSCOPE_CONFIGURED_PUBLIC_DATA
+#define BENCHSCOPE_CONFIGURED_PUBLIC_DATA ""
+#endif
 
 namespace bs {
 namespace fs = std::filesystem;
@@ -60,6 +63,11 @@ fs::path find_resource(std::string_view relative) {
   throw std::runtime_error("resource " + std::string(relative) + " not found (searched: " +
                            (tried.empty() ? std::string("no resource directory exists") : tried) +
                            "; set BENCHSCOPE_RESOURCE_DIR to the resources/ folder)");
+}
+
+fs::path public_data_dir() {
+  if (const char* env = std::getenv("BENCHSCOPE_PUBLIC_DATA_DIR"); env && *env) return fs::path(env);
+  return fs::path(BENCHSCOPE_CONFIGURED_PUBLIC_DATA);
 }
 
 }  // namespace bs

@@ -17,4 +17,10 @@ std::vector<std::filesystem::path> resource_search_dirs();
 // Throws std::runtime_error naming the file and every directory tried when none has it.
 std::filesystem::path find_resource(std::string_view relative);
 
+// The shared folder of third-party files (real outputs other people published, e.g. the library's kept sources
+// under resources/library/sources/), which is never bundled with BenchScope (docs/third-party-data.md):
+// $BENCHSCOPE_PUBLIC_DATA_DIR when set, else the folder this build was configured with (the CMake cache variable of
+// that name). The folder may not exist: an installed copy has no third-party files unless a user points here.
+std::filesystem::path public_data_dir();
+
 }  // namespace bs

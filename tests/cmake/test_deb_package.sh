@@ -38,6 +38,9 @@ if [ "$package" = benchscope ]; then
 fi
 grep -q "\./usr/bin/benchscope-cli$" "$work/contents" || fail "no usr/bin/benchscope-cli in the package"
 grep -q "\./usr/share/benchscope/resources/devices/cpu-cores.json$" "$work/contents" || fail "resources not packaged"
+# The library's numbers are packaged; its kept sources, third-party files, never are (docs/third-party-data.md).
+grep -q "\./usr/share/benchscope/resources/library/library.json$" "$work/contents" || fail "library.json not packaged"
+if grep -q "/resources/library/sources/" "$work/contents"; then fail "third-party kept sources are packaged"; fi
 
 dpkg -x "$deb" "$work/root"
 cli="$work/root/usr/bin/benchscope-cli"
@@ -56,4 +59,9 @@ grep -q "^cpu-simd: " "$work/devices" || fail "devices lists no cpu-simd backend
 run run flops --backend cpu-simd --points 1,4 --iterations 200000 --workers 2 --repeats 1 --json >"$work/run.json" ||
   fail "run flops failed"
 grep -q '"benchscope-run"' "$work/run.json" || fail "run flops printed no benchscope-run JSON"
-echo "test_deb_package: installed CLI ran (--version, devices, run flops)"
+# The library from the package alone: its results with URL and lines, and where a kept copy would be.
+run library show mlperf-v3.0-orin_trt_maxq-resnet50-singlestream >"$work/library" || fail "library show failed"
+grep -q "source: *https://github.com/mlcommons/inference_results_v3.0/" "$work/library" ||
+  fail "library show gave no URL: $(cat "$work/library")"
+grep -q "line 7: *90th percentile latency" "$work/library" || fail "library show gave no line: $(cat "$work/library")"
+echo "test_deb_package: installed CLI ran (--version, devices, run flops, library show)"

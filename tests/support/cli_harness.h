@@ -17,9 +17,11 @@ struct CliResult {
   QByteArray out, err;
 };
 
-// Runs benchscope-cli ARGS and waits up to `timeout_ms` (the pipeline tests measure, so the default is generous).
-inline CliResult cli(const QStringList& args, int timeout_ms = 300000) {
+// Runs benchscope-cli ARGS in `env` and waits up to `timeout_ms` (the pipeline tests measure, so the default is
+// generous).
+inline CliResult cli(const QStringList& args, const QProcessEnvironment& env, int timeout_ms = 300000) {
   QProcess p;
+  p.setProcessEnvironment(env);
   p.start(kCli, args);
   if (!p.waitForFinished(timeout_ms)) {
     p.kill();
@@ -28,6 +30,11 @@ inline CliResult cli(const QStringList& args, int timeout_ms = 300000) {
   }
   return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
           p.readAllStandardError()};
+}
+
+// ... in this process's environment.
+inline CliResult cli(const QStringList& args, int timeout_ms = 300000) {
+  return cli(args, QProcessEnvironment::systemEnvironment(), timeout_ms);
 }
 
 // The exit code alone, with stdout and stderr where the caller wants them.

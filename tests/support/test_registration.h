@@ -8,6 +8,8 @@
 
 #include <QtTest/qtest.h>
 
+#include "public_data.h"  // the exit code of a run that skipped for want of third-party files
+
 namespace bs::test {
 using TestMain = int (*)(int argc, char** argv);
 // Registers `main` as the test named after the file (its base name without the extension). Returns true.
@@ -15,7 +17,8 @@ bool register_test(const char* file, TestMain main);
 }  // namespace bs::test
 
 // Qt's own definition (qtest.h) with `int main(...)` replaced by a function of the translation unit's anonymous
-// namespace and its registration; the application object, initMain() and the source path are Qt's.
+// namespace and its registration; the application object, initMain() and the source path are Qt's. The exit code
+// is 77 (skipped) when nothing failed but third-party files were absent (public_data.h).
 #undef QTEST_MAIN_WRAPPER
 #define QTEST_MAIN_WRAPPER(TestObject, ...)                                                                        \
   namespace {                                                                                                      \
@@ -25,7 +28,7 @@ bool register_test(const char* file, TestMain main);
     __VA_ARGS__                                                                                                    \
     TestObject tc;                                                                                                 \
     QTEST_SET_MAIN_SOURCE_PATH                                                                                     \
-    return QTest::qExec(&tc, argc, argv);                                                                          \
+    return bs::test::test_exit_code(QTest::qExec(&tc, argc, argv));                                                \
   }                                                                                                                \
   [[maybe_unused]] const bool benchscope_test_registered = bs::test::register_test(__FILE__, &benchscope_test_main); \
   }

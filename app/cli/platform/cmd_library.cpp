@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope-cli library list|show|compare: the library of published results (resources/library/library.json):
 // what it holds with sources, one result in full, and published results beside a workspace's own platforms.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <system_error>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +16,7 @@
 #include "common/text_table.h"
 #include "platform/candidates_cli.h"
 #include "platform/platform_args.h"
+#include "util/resources.h"
 #include "workspace/inputs.h"
 
 #ifdef BENCHSCOPE_WITH_FIGURES
@@ -28,6 +31,18 @@ const Library& library_or_throw() {
   const BundledLibrary& b = bundled_library();
   if (!b.error.empty()) throw std::runtime_error("library: " + b.error);
   return b.library;
+}
+
+// Where the kept copy of a result's source would be: the library's kept sources are third-party files, never
+// installed, in the shared folder of them (public_data_dir(), resources/library/ there). Empty when none is named.
+std::filesystem::path kept_copy(const LibraryResult& r) {
+  if (r.source.kept.empty()) return {};
+  return public_data_dir() / "resources" / "library" / r.source.kept;
+}
+
+bool is_file(const std::filesystem::path& p) {
+  std::error_code ec;
+  return !p.empty() && std::filesystem::is_regular_file(p, ec);
 }
 
 std::string flags_cell(const LibraryResult& r) {
@@ -71,6 +86,8 @@ nlohmann::json result_json(const LibraryResult& r, const Library& lib) {
            {{"url", r.source.url},
             {"commit", r.source.commit},
             {"kept", r.source.kept},
+            {"kept_copy", kept_copy(r).string()},
+            {"kept_copy_present", is_file(kept_copy(r))},
             {"lines", lines},
             {"licence", r.source.licence}}},
           {"flags", flags}};
@@ -135,7 +152,13 @@ int run_show(const std::vector<std::string>& raw, std::ostream& out) {
   out << "  software:    " << r->software << '\n';
   for (const auto& [k, v] : r->conditions) out << "  condition:   " << k << ": " << v << '\n';
   out << "  source:      " << r->source.url << '\n';
-  if (!r->source.kept.empty()) out << "  kept copy:   resources/library/" << r->source.kept << '\n';
+  if (const std::filesystem::path copy = kept_copy(*r); !copy.empty()) {
+    out << "  kept copy:   " << copy.string();
+    if (!is_file(copy))
+      out << "  (not here: kept sources are third-party files, not installed; set BENCHSCOPE_PUBLIC_DATA_DIR to the "
+             "folder that has resources/library/sources/)";
+    out << '\n';
+  }
   for (const auto& [k, v] : r->source.lines)
     out << "  line " << v << ":" << std::string(6 - std::min<std::size_t>(6, std::to_string(v).size()), ' ') << k
         << '\n';
@@ -225,11 +248,13 @@ const CommandRegistrar registrar({
     "                                      [--min-runtime MIN] [--battery PRESET] [--extra-load W]\n"
     "                                      [--csv FILE] [--latex FILE] [--figure FILE.png] [--json]\n"
     "  The library (resources/library/library.json) holds published results of candidate robot computers, built\n"
-    "  by scripts/build-library.py from public files kept with it: MLPerf Inference edge results (network,\n"
+    "  by scripts/build-library.py from public files it keeps: MLPerf Inference edge results (network,\n"
     "  scenario, precision, latency, throughput, power and energy where submitted), clpeak peaks and HPL results.\n"
     "  Every result is origin \"published\", names its URL, commit, kept file and lines, and is checked for\n"
-    "  plausibility as imports are. COMPUTERS: ids or aliases (orin, orin-nx, xavier, xavier-nx, tx2, nano, pi4,\n"
-    "  cm4, pi5, icl, uhd620) or result ids, comma-separated.\n"
+    "  plausibility as imports are. The kept files are third-party and not installed: show says where a copy\n"
+    "  would be ($BENCHSCOPE_PUBLIC_DATA_DIR/resources/library/...) and whether it is there. COMPUTERS: ids or\n"
+    "  aliases (orin, orin-nx, xavier, xavier-nx, tx2, nano, pi4, cm4, pi5, icl, uhd620) or result ids,\n"
+    "  comma-separated.\n"
     "  compare ranks the named published results beside a workspace's own platforms (detection stage, bench dnn,\n"
     "  imported MLPerf runs) under the constraints, within one network, scenario and precision only. --figure\n"
     "  writes the candidates figure (inferences per second against power, a marker per origin) as PNG.",

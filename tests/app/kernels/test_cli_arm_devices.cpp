@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// `benchscope-cli devices --proc-root DIR` on the real files of ARM boards (tests/data/platform/arm): core types by
-// name, a peak per cluster and their sum (issue #30.3), and what it says about bad or missing files.
+// `benchscope-cli devices --proc-root DIR` on the real files of ARM boards (third-party: the shared folder's
+// tests/data/platform/arm, SOURCES.md there; the board functions skip without it): core types by name, a peak per
+// cluster and their sum (issue #30.3), and what it says about bad or missing files.
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -9,11 +10,13 @@
 #include <QTest>
 
 #include "../../support/cli_harness.h"
+#include "../../support/public_data.h"
 
 namespace {
 
 using bs::test::cli;
-const QString kBoards = BENCHSCOPE_TEST_DATA_DIR "/platform/arm/";
+constexpr const char* kBoardsFolder = "tests/data/platform/arm";
+const QString kBoards = QString::fromStdString(bs::test::public_data(kBoardsFolder)) + "/";
 
 }  // namespace
 
@@ -21,6 +24,7 @@ class TestCliArmDevices : public QObject {
   Q_OBJECT
  private slots:
   void tx2_names_both_clusters_with_peaks() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     const auto r = cli({"devices", "--proc-root", kBoards + "tx2-hrw"});
     QCOMPARE(r.code, 0);
     const QString out = QString::fromUtf8(r.out);
@@ -49,6 +53,7 @@ class TestCliArmDevices : public QObject {
                                     << "ARM CPU: NVIDIA Jetson TX2 Developer Kit: 4x Cortex-A57";
   }
   void every_board_is_named() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     QFETCH(QString, dir);
     QFETCH(QString, first_line);
     const auto r = cli({"devices", "--proc-root", kBoards + dir});
@@ -57,6 +62,7 @@ class TestCliArmDevices : public QObject {
   }
 
   void json_has_clusters_and_the_sum() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     const auto r = cli({"devices", "--proc-root", kBoards + "pi5", "--json"});
     QCOMPARE(r.code, 0);
     const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
@@ -76,6 +82,7 @@ class TestCliArmDevices : public QObject {
   }
 
   void cpufreq_under_the_sysfs_root_sets_the_clock() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     QTemporaryDir sys;
     QVERIFY(QDir().mkpath(sys.filePath("sys/devices/system/cpu/cpu0/cpufreq")));
     QFile f(sys.filePath("sys/devices/system/cpu/cpu0/cpufreq/cpuinfo_max_freq"));

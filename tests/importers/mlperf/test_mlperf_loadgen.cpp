@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// MLPerf LoadGen results: real submission folders (tests/data/importers/mlperf/SOURCES) imported through the
+// MLPerf LoadGen results: real submission folders (third-party: the shared folder's tests/data/importers/mlperf/,
+// SOURCES there; the whole suite skips without it) imported through the
 // registry as `benchscope-cli import` does, their numbers checked by hand against the summary file's lines (cited
 // in the comments), the energy against the PTDaemon log, and broken logs and companions rejected with the place.
 #include <QTest>
@@ -12,9 +13,10 @@
 #include "mlperf/mlperf_submission.h"
 
 #include "../../support/import_errors.h"
+#include "../../support/public_data.h"
 
 namespace {
-const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/mlperf/";
+const std::string kData = bs::test::public_data("tests/data/importers/mlperf/");
 const std::string kOrin =
     kData + "v3.0-nvidia-orin-maxq/results/Orin_TRT_MaxQ/resnet50/SingleStream/performance/run_1/";
 const std::string kXavier = kData + "v0.5-nvidia-xavier/results/Xavier/ssd-small/MultiStream/performance/run_1/";
@@ -42,6 +44,8 @@ bool near(double a, double b, double rel = 1e-9) { return std::abs(a - b) <= rel
 class TestMlperfLoadgen : public QObject {
   Q_OBJECT
  private slots:
+  void initTestCase() { BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/importers/mlperf"); }
+
   void orin_maxq_resnet50_singlestream_with_power() {
     const bs::ImportBatch b = bs::import_file(kOrin + "mlperf_log_summary.txt", bs::CancelToken{});
     QCOMPARE(b.format, std::string("mlperf-loadgen"));

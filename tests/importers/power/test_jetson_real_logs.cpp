@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Real tegrastats logs and jtop records from nine Jetson boards and JetPack 3 to 7 (tests/data/power/real/SOURCES):
-// the board total each one must give, checked by hand from the file's own numbers (mW in the file, W here).
+// Real tegrastats logs and jtop records from nine Jetson boards and JetPack 3 to 7 (third-party files: the shared
+// folder's tests/data/power/real/, SOURCES there): the board total each one must give, checked by hand from the
+// file's own numbers (mW in the file, W here). Skipped without that folder.
 #include <QTest>
 
 #include <cmath>
@@ -9,9 +10,11 @@
 #include "common/importer.h"
 #include "power/power_import.h"
 
+#include "../../support/public_data.h"
+
 namespace {
 
-const std::string kReal = BENCHSCOPE_TEST_DATA_DIR "/power/real/";
+const std::string kReal = bs::test::public_data("tests/data/power/real/");
 
 bs::ImportBatch load(const std::string& name) {
   bs::ImportBatch b = bs::import_file(kReal + name, bs::CancelToken{});
@@ -42,6 +45,8 @@ bool has_warning(const bs::ImportBatch& b, const std::string& text) {
 class TestJetsonRealLogs : public QObject {
   Q_OBJECT
  private slots:
+  void initTestCase() { BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real"); }
+
   void nano_jetpack4_total_is_pom_5v_in() {
     const auto b = load("tegrastats-nano-jetpack4.log");
     QCOMPARE(b.format, std::string("tegrastats"));

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Logs of measuring tools: nvidia-smi --query-gpu CSV, perf stat RAPL energy and SPEC PTDaemon (MLPerf spl.txt).
-// The real files (tests/data/power/real, see SOURCES there) are checked against hand arithmetic; small inline logs
-// pin the rules (units, missing samples, several GPUs, intervals, locales, marks, broken input).
+// The real files (third-party: the shared folder's tests/data/power/real, SOURCES there; those functions skip
+// without it) are checked against hand arithmetic; small inline logs pin the rules (units, missing samples, several
+// GPUs, intervals, locales, marks, broken input).
 #include <QFile>
 #include <QTest>
 
@@ -15,9 +16,11 @@
 #include "power/power_import.h"
 #include "power/ptd_log.h"
 
+#include "../../support/public_data.h"
+
 namespace {
 
-const std::string kReal = BENCHSCOPE_TEST_DATA_DIR "/power/real/";
+const std::string kReal = bs::test::public_data("tests/data/power/real/");
 
 template <class Parse>
 bs::ImportError error_of(Parse parse) {
@@ -44,6 +47,7 @@ class TestMeterLogs : public QObject {
  private slots:
   // --- nvidia-smi -------------------------------------------------------------------------------------------
   void nvidia_smi_two_columns_real() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     const auto b = bs::import_file(kReal + "nvidia-smi-flame-2col.csv", bs::CancelToken{});
     QCOMPARE(b.format, std::string("nvidia-smi"));  // beats the generic power CSV on "timestamp, power.draw [W]"
     QCOMPARE(b.power_traces.size(), std::size_t{1});
@@ -63,6 +67,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(stats.energy_j, 11.47565, 1e-4));
   }
   void nvidia_smi_named_gpu_real() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     const auto b = bs::import_file(kReal + "nvidia-smi-fletcher-gtx1650.csv", bs::CancelToken{});
     QCOMPARE(b.format, std::string("nvidia-smi"));
     const bs::PowerTrace& t = b.power_traces.at(0);
@@ -100,6 +105,7 @@ class TestMeterLogs : public QObject {
     QCOMPARE(bs::power_stats(c).n, std::size_t{0});
   }
   void nvidia_smi_n_counts_readings_not_rows() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     // The real GTX 1650 log with two of its twelve power cells turned into "[N/A]": n = 10 of 12 rows, and the
     // mean over the ten (the log's own readings: 8 x 19.46 W + 2 x 19.89 W = 195.46 W).
     QFile f(QString::fromStdString(kReal + "nvidia-smi-fletcher-gtx1650.csv"));
@@ -181,6 +187,7 @@ class TestMeterLogs : public QObject {
 
   // --- perf stat RAPL ---------------------------------------------------------------------------------------
   void perf_summary_real_with_program_output() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     // Compiler warnings of the measured build come first; cycles, instructions and MiB events are not energy.
     const auto b = bs::import_file(kReal + "perf-rapl-validation-gcc-papi.txt", bs::CancelToken{});
     QCOMPARE(b.format, std::string("perf-stat-rapl"));
@@ -197,12 +204,14 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(bs::trace_stats(t).energy_j, 271.49, 1e-9));
   }
   void perf_summary_real_issue_thread() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     const auto b = bs::import_file(kReal + "perf-sandmark-378-human.txt", bs::CancelToken{});
     QCOMPARE(b.format, std::string("perf-stat-rapl"));
     // 43.26 J over 1.001041336 s = 43.215 W.
     QVERIFY(near(b.power_traces.at(0).channels.at(0).values[0], 43.215, 1e-3));
   }
   void perf_interval_csv_real() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     const auto b = bs::import_file(kReal + "perf-rapl-validation-sleep-interval.csv", bs::CancelToken{});
     QCOMPARE(b.format, std::string("perf-stat-rapl"));
     const bs::PowerTrace& t = b.power_traces.at(0);
@@ -320,6 +329,7 @@ class TestMeterLogs : public QObject {
 
   // --- PTDaemon ---------------------------------------------------------------------------------------------
   void ptd_power_dev_example_real() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     const auto b = bs::import_file(kReal + "ptd-power-dev-example-spl.txt", bs::CancelToken{});
     QCOMPARE(b.format, std::string("ptdaemon"));  // beats the generic CSV, which would also see Time and Watts
     const bs::PowerTrace& t = b.power_traces.at(0);
@@ -340,6 +350,7 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(t.phases[0].end_s, 19.011, 1e-6));
   }
   void ptd_jetson_xavier_real() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     const auto b = bs::import_file(kReal + "ptd-krai-xavier-run1-spl.txt", bs::CancelToken{});
     const bs::PowerTrace& t = b.power_traces.at(0);
     // 24 samples summing to 332.06 W: mean 13.8358 W; idle about 9.5-12 W, the load from 17:18:14 (26.57 W).
@@ -399,6 +410,7 @@ class TestMeterLogs : public QObject {
     QCOMPARE(e.location().field, std::string("Watts"));
   }
   void power_command_reads_meter_logs() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
     // benchscope-cli power goes through import_power_log: the meter formats are picked there too.
     QCOMPARE(bs::import_power_log(kReal + "ptd-power-dev-example-spl.txt").format, std::string("ptdaemon"));
     QCOMPARE(bs::import_power_log(kReal + "nvidia-smi-flame-2col.csv").format, std::string("nvidia-smi"));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Every delimited power-log flavour BenchScope reads, from realistic fixtures, through the same entry points the
-// app uses (import_file sniffing, import_power_log with options).
+// app uses (import_file sniffing, import_power_log with options). The real_* functions read third-party logs (the
+// shared folder's tests/data/power/real/, SOURCES there) and skip without them.
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
@@ -10,11 +11,18 @@
 #include "power/power_csv.h"
 #include "power/power_import.h"
 
+#include "../../support/public_data.h"
+
 namespace {
 
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/power/";
 
 bs::ImportBatch import(const std::string& name) { return bs::import_file(kData + name, bs::CancelToken{}); }
+
+// A third-party log of tests/data/power/real/ (the shared folder).
+bs::ImportBatch import_real(const std::string& name) {
+  return bs::import_file(bs::test::public_data("tests/data/power/real/" + name), bs::CancelToken{});
+}
 
 const bs::PowerChannel& channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
   for (const auto& c : t.channels)
@@ -34,8 +42,9 @@ class TestPowerFormats : public QObject {
   Q_OBJECT
  private slots:
   void real_intel_power_gadget_log() {
-    // tests/data/power/real/SOURCES: sunilkumar2000/Power-Monitoring-Tool PowerLog.csv, 10 rows, unquoted.
-    const auto b = import("real/intel-power-gadget-windows.csv");
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
+    // SOURCES of tests/data/power/real: sunilkumar2000/Power-Monitoring-Tool PowerLog.csv, 10 rows, unquoted.
+    const auto b = import_real("intel-power-gadget-windows.csv");
     QCOMPARE(b.format, std::string("power-csv"));
     const bs::PowerTrace& t = b.power_traces.at(0);
     // Time from "Elapsed Time (sec)" (0.108 .. 1.041 s), not the date-less "System Time".
@@ -67,8 +76,9 @@ class TestPowerFormats : public QObject {
     QVERIFY(std::abs(*s.energy_j - 5.9536925) < 1e-9);
   }
   void real_intel_power_gadget_log_quoted() {
-    // tests/data/power/real/SOURCES: platevoltage/machine-stats PowerLog.csv, every cell quoted, 6 rows.
-    const auto b = import("real/intel-power-gadget-quoted.csv");
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
+    // SOURCES of tests/data/power/real: platevoltage/machine-stats PowerLog.csv, every cell quoted, 6 rows.
+    const auto b = import_real("intel-power-gadget-quoted.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QCOMPARE(t.time_s.size(), std::size_t{6});
     QVERIFY(std::abs(t.time_s[2] - 0.831) < 1e-12);  // the 0.72 s gap between rows 2 and 3 is kept
@@ -88,8 +98,9 @@ class TestPowerFormats : public QObject {
     QVERIFY(std::abs(*s.energy_j - 81.6683675) < 1e-9);
   }
   void real_powerlog_samples() {
-    // tests/data/power/real/SOURCES: arsho/powerlog's documented samples CSV (Unix ns beside an elapsed clock).
-    const auto b = import("real/powerlog-samples-doc.csv");
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/power/real");
+    // SOURCES of tests/data/power/real: arsho/powerlog's documented samples CSV (Unix ns beside an elapsed clock).
+    const auto b = import_real("powerlog-samples-doc.csv");
     const bs::PowerTrace& t = b.power_traces.at(0);
     QVERIFY(std::abs(t.time_s[1] - 0.1035) < 1e-12);  // from "Elapsed (s)": 0.2086 - 0.1051
     QCOMPARE(QString::fromStdString(t.start_time),
@@ -105,7 +116,7 @@ class TestPowerFormats : public QObject {
     QVERIFY(std::abs(s.power_w->summary.mean - 77.76) < 1e-12);
     QVERIFY(std::abs(*s.energy_j - 8.04816) < 1e-9);
     // The README's one-sample "Timestamp (ns),Power Draw (W)": time from the integer nanoseconds, exactly.
-    const bs::PowerTrace one = import("real/powerlog-readme.csv").power_traces.at(0);
+    const bs::PowerTrace one = import_real("powerlog-readme.csv").power_traces.at(0);
     QCOMPARE(QString::fromStdString(one.start_time), QStringLiteral("2025-07-11T01:47:20.221Z"));
     QCOMPARE(one.channels.at(0).values, (std::vector<double>{12.84}));
   }

@@ -1,22 +1,32 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // clpeak text output: devices, sections and SI conversion, CRLF, skipped/failed tests, clpeak 2 spelling, errors;
-// and real outputs from the clpeak repository's result logs and issue threads (tests/data/importers/clpeak/SOURCES),
-// whose single-precision peaks are checked by hand in the comments.
+// and real outputs from the clpeak repository's result logs and issue threads, whose single-precision peaks are
+// checked by hand in the comments: third-party files in the shared folder's tests/data/importers/clpeak/ (SOURCES
+// there), whose functions skip without it.
 #include <QTest>
 
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
 #include "runs/clpeak_text.h"
 
 #include "../../support/import_errors.h"
+#include "../../support/public_data.h"
 
 namespace {
-const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";
+const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";  // the project's own fixtures
+constexpr const char* kRealFolder = "tests/data/importers/clpeak";        // real outputs (third-party)
+const std::string kReal = bs::test::public_data("tests/data/importers/clpeak/");
 
 bs::ImportBatch parse_file(const std::string& name) {
   const bs::CancelToken cancel;
   return bs::kClpeakTextFileFormat.parse(kData + name, {}, {}, cancel);
+}
+
+bs::ImportBatch parse_real(const std::string& name) {
+  const bs::CancelToken cancel;
+  return bs::kClpeakTextFileFormat.parse(kReal + name, {}, {}, cancel);
 }
 
 const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, const std::string& metric) {
@@ -25,10 +35,13 @@ const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, con
   return nullptr;
 }
 
-std::string read_fixture(const std::string& name) {
-  std::ifstream in(kData + name, std::ios::binary);
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
+
+std::string read_real(const std::string& name) { return read_text(kReal + name); }
 
 bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
 
@@ -181,10 +194,11 @@ class TestClpeakText : public QObject {
   // --- Real outputs ---------------------------------------------------------------------------------------------
 
   void every_precision_is_its_own_metric() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // Intel UHD 620 (NEO): half precision runs faster than single. Single-precision compute (GFLOPS): float 436.49,
     // float2 436.33, float4 435.70, float8 434.78, float16 428.94 -> single-precision peak 436.49 GFLOPS (float);
     // Half-precision compute: half 738.24 is the highest -> 738.24 GFLOPS, a different metric.
-    const auto batch = parse_file("uhd620-neo.log");
+    const auto batch = parse_real("uhd620-neo.log");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& gpu = batch.result_sets[0];
     QCOMPARE(gpu.device_kind, bs::DeviceKind::Gpu);
@@ -200,9 +214,10 @@ class TestClpeakText : public QObject {
   }
 
   void inf_in_transfer_bandwidth_keeps_the_rest() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // HD 4600 on Windows (CRLF): "enqueueMapBuffer(for read) : inf" (line 27) and "enqueueUnmap(after write) : inf"
     // (line 29). Single precision 211.73 / 345.66 / 343.99 / 375.94 / 373.48 -> peak 375.94 GFLOPS (float8).
-    const auto batch = parse_file("hd4600-crlf-inf.log");
+    const auto batch = parse_real("hd4600-crlf-inf.log");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& gpu = batch.result_sets[0];
     QCOMPARE(gpu.platform, std::string("Intel(R) OpenCL"));
@@ -211,17 +226,18 @@ class TestClpeakText : public QObject {
     QVERIFY(near(find(gpu, "memcpy from mapped ptr", "transfer bandwidth")->values[0], 2.87e9));
     QVERIFY(near(find(gpu, "kernel launch latency", "kernel launch latency")->values[0], 166.24e-6));
     QCOMPARE(batch.warnings.size(), std::size_t{2});
-    QVERIFY2(batch.warnings[0].starts_with(kData + "hd4600-crlf-inf.log:27: enqueueMapBuffer(for read): 'inf'"),
+    QVERIFY2(batch.warnings[0].starts_with(kReal + "hd4600-crlf-inf.log:27: enqueueMapBuffer(for read): 'inf'"),
              batch.warnings[0].c_str());
-    QVERIFY(batch.warnings[1].starts_with(kData + "hd4600-crlf-inf.log:29: "));
+    QVERIFY(batch.warnings[1].starts_with(kReal + "hd4600-crlf-inf.log:29: "));
     for (const auto& m : gpu.measurements) QVERIFY(m.name.find('\r') == std::string::npos);
   }
 
   void negative_latency_on_several_devices() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // PoCL on a POWER9 host with four V100s: each V100 reports a negative kernel launch latency (lines 108, 162, 216,
     // 270); every device keeps its compute results. Single-precision peaks by hand: POWER9 float16 910.81; V100s
     // 15600.19 (float2), 15653.73 (float2), 15619.53 (float), 15610.50 (float2) GFLOPS.
-    const auto batch = parse_file("pocl-power9-v100-negative-latency.log");
+    const auto batch = parse_real("pocl-power9-v100-negative-latency.log");
     QCOMPARE(batch.result_sets.size(), std::size_t{5});
     QCOMPARE(batch.result_sets[0].device_kind, bs::DeviceKind::Cpu);  // pthread-POWER9
     QVERIFY(near(find(batch.result_sets[0], "float16", "single-precision compute")->values[0], 910.81e9));
@@ -236,18 +252,19 @@ class TestClpeakText : public QObject {
       QVERIFY(!find(gpu, "kernel launch latency", "kernel launch latency"));
     }
     QCOMPARE(batch.warnings.size(), std::size_t{4});
-    QVERIFY(batch.warnings[0].starts_with(kData + "pocl-power9-v100-negative-latency.log:108: kernel launch latency"));
+    QVERIFY(batch.warnings[0].starts_with(kReal + "pocl-power9-v100-negative-latency.log:108: kernel launch latency"));
     QVERIFY(batch.warnings[3].find(":270: ") != std::string::npos);
     QVERIFY(batch.warnings[3].find("-10064.30") != std::string::npos);
   }
 
   void paste_without_platform_line() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // AMD FX-8350 under AMD APP, saved from "Device:" on. Single precision 6.60 / 13.18 / 26.68 / 52.03 / 95.10
     // -> 95.10 GFLOPS (float16); double precision peaks at double8 50.76 (double16 drops to 6.81).
     const bs::FormatImporter imp(bs::kClpeakTextFileFormat);
-    const std::string text = read_fixture("fx8350-no-platform.log");
+    const std::string text = read_real("fx8350-no-platform.log");
     QVERIFY(imp.sniff(text, "fx8350.log") >= 80);
-    const auto batch = parse_file("fx8350-no-platform.log");
+    const auto batch = parse_real("fx8350-no-platform.log");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& cpu = batch.result_sets[0];
     QCOMPARE(cpu.platform, std::string("OpenCL"));  // no platform line: the backend stands in
@@ -260,9 +277,10 @@ class TestClpeakText : public QObject {
   }
 
   void shell_prompt_and_crash_on_the_last_line() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // pocl issue 72: "$ ./clpeak", then the run dies at double8 with "Speicherzugriffsfehler" (line 27). Single
     // precision 2.06 / 2.87 / 8.44 / 3.18 / 1.39 -> 8.44 GFLOPS (float4); double 2.14 / 6.22 / 1.17 are kept.
-    const auto batch = parse_file("pocl-i7-2620m-segfault-prompt.txt");
+    const auto batch = parse_real("pocl-i7-2620m-segfault-prompt.txt");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& cpu = batch.result_sets[0];
     QCOMPARE(cpu.platform, std::string("Portable Computing Language"));
@@ -271,14 +289,15 @@ class TestClpeakText : public QObject {
     QVERIFY(near(find(cpu, "double2", "double-precision compute")->values[0], 6.22e9));
     QVERIFY(!find(cpu, "double8", "double-precision compute"));
     QCOMPARE(batch.warnings.size(), std::size_t{1});
-    QVERIFY2(batch.warnings[0].starts_with(kData + "pocl-i7-2620m-segfault-prompt.txt:27: double8: expected a number"),
+    QVERIFY2(batch.warnings[0].starts_with(kReal + "pocl-i7-2620m-segfault-prompt.txt:27: double8: expected a number"),
              batch.warnings[0].c_str());
   }
 
   void error_code_on_the_last_line() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // Beignet: "Kernel launch latency : clGetEventProfileInfo(-7)" then "Tests skipped". Single precision
     // 41.61 / 45.24 / 45.09 / 44.94 / 44.78 -> 45.24 GFLOPS (float2).
-    const auto batch = parse_file("beignet-ivybridge-latency-error.log");
+    const auto batch = parse_real("beignet-ivybridge-latency-error.log");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     QVERIFY(near(find(batch.result_sets[0], "float2", "single-precision compute")->values[0], 45.24e9));
     QVERIFY(!find(batch.result_sets[0], "kernel launch latency", "kernel launch latency"));
@@ -287,9 +306,10 @@ class TestClpeakText : public QObject {
   }
 
   void every_compute_test_failed_but_transfers_ran() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // clpeak issue 47: PoCL fails every compute test with an OpenCL error, two transfer rows are "inf" and the run
     // hangs after "Kernel launch latency : ". The four transfer rows that printed 0.00 are what was measured.
-    const auto batch = parse_file("pocl-fx8350-tests-skipped.txt");
+    const auto batch = parse_real("pocl-fx8350-tests-skipped.txt");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& cpu = batch.result_sets[0];
     QCOMPARE(cpu.measurements.size(), std::size_t{4});
@@ -300,24 +320,26 @@ class TestClpeakText : public QObject {
   }
 
   void notes_and_platforms_without_devices() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // Jetson Nano (Tegra X1) through PoCL 1.3, with a note after the output. Single precision
     // 214.09 / 229.80 / 230.95 / 229.31 / 228.80 -> 230.95 GFLOPS (float4).
-    const auto nano = parse_file("pocl-jetson-nano-note.txt");
+    const auto nano = parse_real("pocl-jetson-nano-note.txt");
     QCOMPARE(nano.result_sets.size(), std::size_t{1});
     QCOMPARE(nano.result_sets[0].device, std::string("NVIDIA Tegra X1"));
     QVERIFY(near(find(nano.result_sets[0], "float4", "single-precision compute")->values[0], 230.95e9));
     QVERIFY(nano.warnings.empty());
     // Xeon Phi 7120 under Intel OpenCL, then two platforms that list no device. Single precision
     // 2130.58 / 2262.12 / 2255.07 / 2247.39 / 2213.89 -> 2262.12 GFLOPS (float2).
-    const auto phi = parse_file("xeon-phi-empty-platforms.log");
+    const auto phi = parse_real("xeon-phi-empty-platforms.log");
     QCOMPARE(phi.result_sets.size(), std::size_t{1});
     QVERIFY(near(find(phi.result_sets[0], "float2", "single-precision compute")->values[0], 2262.12e9));
   }
 
   void clpeak2_vulkan_backend_banner_and_tflops() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // clpeak issue 151 (clpeak 2.0, "=== Vulkan backend ===", "Vulkan Device:"). Single precision
     // 27373.58 / 43973.95 / 35605.51 -> 43973.95 GFLOPS (float2); cooperative-matrix FP8 E4M3 386.00 TFLOPS.
-    const auto batch = parse_file("vulkan-rx9070xt-clpeak2.txt");
+    const auto batch = parse_real("vulkan-rx9070xt-clpeak2.txt");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& gpu = batch.result_sets[0];
     QCOMPARE(gpu.backend, std::string("Vulkan"));
@@ -335,14 +357,15 @@ class TestClpeakText : public QObject {
     QCOMPARE(find(gpu, "int", "integer compute int32")->unit, std::string("1/s"));
     QCOMPARE(gpu.measurements.size(), std::size_t{3 * 5 + 4 + 1});
     QVERIFY(batch.warnings.empty());
-    QVERIFY(bs::FormatImporter(bs::kClpeakTextFileFormat).sniff(read_fixture("vulkan-rx9070xt-clpeak2.txt"), "x.txt") >=
+    QVERIFY(bs::FormatImporter(bs::kClpeakTextFileFormat).sniff(read_real("vulkan-rx9070xt-clpeak2.txt"), "x.txt") >=
             80);
   }
 
   void clpeak21_numbered_platforms_and_gops() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // PR 157 (clpeak 2.1): single precision 13246.93 / 22060.01 / 25965.27 / 26244.43 / 26556.29 -> 26556.29
     // GFLOPS (float16); half 52259.02 (half4); integer 5508.20 GOPS (int4).
-    const auto batch = parse_file("opencl-gfx1201-clpeak2.txt");
+    const auto batch = parse_real("opencl-gfx1201-clpeak2.txt");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& gpu = batch.result_sets[0];
     QCOMPARE(gpu.platform, std::string("AMD Accelerated Parallel Processing"));
@@ -355,8 +378,9 @@ class TestClpeakText : public QObject {
   }
 
   void clpeak21_units_on_each_value_line() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // clpeak issue 210: "Divide and square-root throughput [SSE2]" has no unit; each row says "8.48 GFLOPS".
-    const auto batch = parse_file("cpu-divsqrt-units-per-line.txt");
+    const auto batch = parse_real("cpu-divsqrt-units-per-line.txt");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& cpu = batch.result_sets[0];
     QCOMPARE(cpu.backend, std::string("CPU"));
@@ -371,11 +395,17 @@ class TestClpeakText : public QObject {
     QVERIFY(batch.warnings.empty());
   }
 
-  void file_with_no_measurement_names_its_first_bad_value() {
-    // Raspberry Pi 5 (clpeak issue 142): the queue cannot be created, nothing is measured.
-    const bs::ImportError rpi = error_of(read_fixture("../../bad/clpeak-rpi5-queue-error.txt"));
+  void file_with_no_measurement_is_a_missing_field() {
+    // Raspberry Pi 5 (clpeak issue 142): the queue cannot be created, nothing is measured. A third-party bad input
+    // (the shared folder's tests/data/bad/, described in tests/data/importers/clpeak/SOURCES there).
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/bad");
+    const bs::ImportError rpi =
+        error_of(read_text(bs::test::public_data("tests/data/bad/clpeak-rpi5-queue-error.txt")));
     QCOMPARE(rpi.category(), bs::ImportErrorCategory::MissingField);
     QCOMPARE(rpi.location().line, std::size_t{3});
+  }
+
+  void file_with_no_measurement_names_its_first_bad_value() {
     // Only unreadable values: the first one is the error, with its line.
     const bs::ImportError inf = error_of("Platform: P\n  Device: D\n    Transfer bandwidth (GBPS)\n      a : inf\n");
     QCOMPARE(inf.category(), bs::ImportErrorCategory::InvalidValue);

@@ -12,8 +12,11 @@
 #include "analysis/peaks/foreign_sweeps.h"
 #include "runs/google_benchmark_json.h"
 
+#include "../../support/public_data.h"
+
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/google-benchmark/";
+const std::string kRealFolder = "tests/data/importers/google-benchmark";
 
 const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, const std::string& metric) {
   for (const auto& m : s.measurements)
@@ -62,6 +65,12 @@ std::string read_text(const std::string& path) {
 bs::ImportBatch parse_file(const std::string& name) {
   const bs::CancelToken cancel;
   return bs::kGoogleBenchmarkJsonFileFormat.parse(kData + name, {}, {}, cancel);
+}
+
+// A real output: a third-party file of tests/data/importers/google-benchmark/ in the shared folder (SOURCES there).
+bs::ImportBatch parse_real(const std::string& name) {
+  const bs::CancelToken cancel;
+  return bs::kGoogleBenchmarkJsonFileFormat.parse(bs::test::public_data(kRealFolder + ("/" + name)), {}, {}, cancel);
 }
 
 // A one-row document with the given counters, for unit inference.
@@ -207,7 +216,8 @@ class TestGoogleBenchmarkJson : public QObject {
   // of the 30 repetition rows: their real_time sum is 1903746.0999979884 us, / 30 = 63458.203333 us, as the file's
   // _mean row says; the sample SD of the 30 is 23701.5236 us, as its _stddev row says.
   void real_repetitions_v1_9_3() {
-    const auto batch = parse_file("spla-repetitions-v1.9.3.json");
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
+    const auto batch = parse_real("spla-repetitions-v1.9.3.json");
     const bs::ResultSet& s = batch.result_sets.at(0);
     QCOMPARE(s.platform, std::string("LEGION"));
     QCOMPARE(s.device, std::string("CPU (12 x 2994 MHz)"));
@@ -241,7 +251,8 @@ class TestGoogleBenchmarkJson : public QObject {
   // Real output of library v1.9.4 built as DEBUG (SOURCES): the importer repeats Google Benchmark's warning, and a
   // threads:1..32 sweep of items_per_second stays a throughput result (items are not FLOPs).
   void real_debug_build_threads_sweep_v1_9_4() {
-    const auto batch = parse_file("malloc-threads-debug-v1.9.4.json");
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
+    const auto batch = parse_real("malloc-threads-debug-v1.9.4.json");
     QCOMPARE(batch.warnings.size(), std::size_t{1});
     QVERIFY(batch.warnings[0].find("***WARNING*** Library was built as DEBUG") != std::string::npos);
     QVERIFY(batch.warnings[0].find("malloc-threads-debug-v1.9.4.json:") != std::string::npos);
@@ -260,7 +271,8 @@ class TestGoogleBenchmarkJson : public QObject {
 
   // Real output of library v1.9.1 (SOURCES): threads fields agree with the names; no FLOPS, no sweep.
   void real_threads_sweep_v1_9_1() {
-    const auto batch = parse_file("proto-threads-v1.9.1.json");
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
+    const auto batch = parse_real("proto-threads-v1.9.1.json");
     const bs::ResultSet& s = batch.result_sets.at(0);
     QCOMPARE(s.platform, std::string("liuly-PC-2024"));
     QCOMPARE(s.measurements.size(), std::size_t{36});  // 12 benchmarks x (real_time, cpu_time, bytes)
@@ -479,7 +491,8 @@ class TestGoogleBenchmarkJson : public QObject {
   // _stddev 940587 ns is the population SD of the three (sqrt(((894997)^2 + (404729)^2 + (1299726)^2) / 3)), as
   // the library computed it then; the sample SD would be 1151979 ns. BenchScope keeps the file's figure.
   void real_repetitions_2016_without_run_type() {
-    const auto batch = parse_file("blond-tc1-repetitions-2016.json");
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
+    const auto batch = parse_real("blond-tc1-repetitions-2016.json");
     const bs::ResultSet& s = batch.result_sets.at(0);
     QCOMPARE(s.platform, std::string("unknown host"));
     QCOMPARE(s.device, std::string("CPU (8 x 3600 MHz)"));

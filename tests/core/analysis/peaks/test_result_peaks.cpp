@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A device's peak from result sets is taken within one precision and kind: a GPU's half2 rate never stands for its
 // single-precision peak. Classification of clpeak 1.x / 2.x / Google Benchmark metrics, and the roofline's memory
-// ceiling from global memory bandwidth only. Numbers checked by hand against the fixtures (see SOURCES there).
+// ceiling from global memory bandwidth only. Numbers checked by hand against real clpeak outputs: third-party files
+// in the shared folder's tests/data/importers/clpeak/ (SOURCES there), whose functions skip without it.
 #include <QTest>
 
 #include "analysis/peaks/result_peaks.h"
@@ -9,11 +10,15 @@
 #include "model/measure_class.h"
 #include "runs/clpeak_text.h"
 
+#include "../../../support/public_data.h"
+
 namespace {
+
+constexpr const char* kRealFolder = "tests/data/importers/clpeak";
 
 std::vector<bs::ResultSet> sets_of(const std::string& fixture) {
   return bs::FormatImporter(bs::kClpeakTextFileFormat)
-      .parse(BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/" + fixture, {}, {}, bs::CancelToken{})
+      .parse(bs::test::public_data(std::string(kRealFolder) + "/" + fixture), {}, {}, bs::CancelToken{})
       .result_sets;
 }
 
@@ -78,6 +83,7 @@ class TestResultPeaks : public QObject {
   }
 
   void single_precision_peak_is_not_the_half_rate() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // UHD 620: half 738.24 GFLOPS > single 436.49 GFLOPS. The default (FP32 vector compute) peak is 436.49.
     const auto sets = sets_of("uhd620-neo.log");
     const auto fp32 = bs::result_peaks(sets);
@@ -92,6 +98,7 @@ class TestResultPeaks : public QObject {
   }
 
   void every_precision_one_row_each() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // RX 9070 XT (clpeak 2.0 Vulkan): vector FP32 43973.95 G, FP16 54536.66 G, FP64 863.23 G, mixed 51072.47 G,
     // BF16 45988.92 G, INT32 5306.11 G; matrix FP16 179.73 T, BF16 179.64 T, FP8 max(386.00, 383.99) = 386.00 T.
     const auto sets = sets_of("vulkan-rx9070xt-clpeak2.txt");
@@ -110,6 +117,7 @@ class TestResultPeaks : public QObject {
   }
 
   void divide_throughput_is_not_a_peak() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // clpeak 2.1 CPU divide/sqrt rows are FP32/FP64 but not FMA peaks: no FP32 vector peak for this device.
     const auto sets = sets_of("cpu-divsqrt-units-per-line.txt");
     QVERIFY(bs::result_peaks(sets).empty());
@@ -119,6 +127,7 @@ class TestResultPeaks : public QObject {
   }
 
   void roofline_ceiling_is_global_memory_bandwidth() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kRealFolder);
     // UHD 620: transfer "enqueueMapBuffer(for read) : 681739.50" GB/s must not become the memory ceiling; global
     // memory bandwidth peaks at float4 29.73 GB/s.
     const auto sets = sets_of("uhd620-neo.log");

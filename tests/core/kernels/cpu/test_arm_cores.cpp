@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // ARM CPUs by name (issue #30.3): real /proc/cpuinfo and device-tree model files of a Jetson TX2, AGX Xavier, AGX
-// Orin, Raspberry Pi 4 and 5 (tests/data/platform/arm, SOURCES.md), the core table and the per-cluster peaks.
+// Orin, Raspberry Pi 4 and 5 (third-party: the shared folder's tests/data/platform/arm, SOURCES.md there; the board
+// functions skip without it), the core table and the per-cluster peaks.
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -12,12 +13,15 @@
 #include "analysis/peaks/device_table.h"
 #include "kernels/cpu/arm_cores.h"
 
+#include "../../../support/public_data.h"
+
 namespace fs = std::filesystem;
 using namespace bs::kernels;
 
 namespace {
 
-const fs::path kBoards = fs::path(BENCHSCOPE_TEST_DATA_DIR) / "platform/arm";
+constexpr const char* kBoardsFolder = "tests/data/platform/arm";
+const fs::path kBoards = bs::test::public_data(kBoardsFolder);
 
 ArmCpu board(const char* name, const fs::path& sysfs_root = "/nonexistent") {
   const auto cpu = detect_arm_cpu(kBoards / name, sysfs_root);
@@ -67,6 +71,7 @@ class TestArmCores : public QObject {
   }
 
   void tx2_is_two_clusters_with_a_peak_each_and_the_sum() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     const ArmCpu cpu = board("tx2-hrw");
     QCOMPARE(QString::fromStdString(cpu.board), QString("NVIDIA Jetson TX2 Developer Kit"));
     QVERIFY(cpu.board_spec);
@@ -89,6 +94,7 @@ class TestArmCores : public QObject {
   }
 
   void tx2_with_denver_offline_lists_the_a57_cluster_only() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     const ArmCpu cpu = board("tx2-denver-off");
     QCOMPARE(QString::fromStdString(cpu.summary()), QString("4x Cortex-A57"));
     QVERIFY(near(cpu.fp32_peak_flops, 4 * 8 * 2.0e9));
@@ -115,6 +121,7 @@ class TestArmCores : public QObject {
                                       << "nvidia-jetson-agx-orin-cpu" << 16 * 2.2016e9;
   }
   void whole_boards_match_their_device_table_peak() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     QFETCH(QString, dir);
     QFETCH(QString, summary);
     QFETCH(QString, entry);
@@ -128,6 +135,7 @@ class TestArmCores : public QObject {
   }
 
   void pi_without_device_tree_model_is_named_by_the_cpuinfo_model_line() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     std::ifstream in(kBoards / "pi4/proc/cpuinfo");
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const ProcCpuInfo info = parse_proc_cpuinfo(text, "pi4");
@@ -140,6 +148,7 @@ class TestArmCores : public QObject {
   }
 
   void cpufreq_clock_wins_over_the_device_table() {
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
     QTemporaryDir sys;
     for (int c = 0; c < 4; ++c) {
       const fs::path d =
@@ -228,8 +237,9 @@ class TestArmCores : public QObject {
   }
 
   void device_tree_model_drops_its_nul() {
-    QCOMPARE(QString::fromStdString(read_device_tree_model(kBoards / "xavier-agx")), QString("Jetson-AGX"));
     QCOMPARE(QString::fromStdString(read_device_tree_model("/nonexistent")), QString());
+    BENCHSCOPE_REQUIRE_PUBLIC_DATA(kBoardsFolder);
+    QCOMPARE(QString::fromStdString(read_device_tree_model(kBoards / "xavier-agx")), QString("Jetson-AGX"));
   }
 };
 
