@@ -51,6 +51,14 @@ const PlatformRow* platform_row(std::span<const PlatformRow> rows, const std::st
   return nullptr;
 }
 
+// How a platform's mean power was measured, with how it was derived ("mean of nuc-current.csv x 16 V": a supply
+// current times the supply voltage), so power_kind_of() can tell a DC supply from a wall meter.
+std::string platform_power_how(const PlatformRow& p) {
+  const auto src = p.sources.find(column::kPower);
+  return "platform mean power (" + p.power_measurement +
+         (src != p.sources.end() && !src->second.how.empty() ? "; " + src->second.how : std::string()) + ")";
+}
+
 Candidate from_library(const LibraryResult& r, const Library* lib) {
   Candidate c;
   c.platform = lib ? lib->computer_name(r.computer) : r.computer;
@@ -144,7 +152,7 @@ Candidate from_dnn(const DnnRun& r, std::span<const PlatformRow> rows) {
   if (!c.power_w)
     if (const PlatformRow* p = platform_row(rows, r.platform); p && p->mean_power_w) {
       c.power_w = p->mean_power_w;
-      c.power_how = "platform mean power (" + p->power_measurement + ")";
+      c.power_how = platform_power_how(*p);
     }
   c.power_kind = power_kind_of(c.power_how);
   c.energy_per_inference_j = r.energy_per_inference_j;
@@ -173,7 +181,7 @@ std::optional<Candidate> from_pipeline(const PipelineRun& r, std::span<const Pla
   c.throughput_statistic = "1 / mean detection time";
   if (const PlatformRow* p = platform_row(rows, r.platform); p && p->mean_power_w) {
     c.power_w = p->mean_power_w;
-    c.power_how = "platform mean power (" + p->power_measurement + ")";
+    c.power_how = platform_power_how(*p);
     c.power_kind = power_kind_of(c.power_how);
     c.energy_per_inference_j = *c.power_w * d->mean_s;
   }
@@ -240,6 +248,13 @@ std::string budget_text(const ConstraintCheck& x) {
   else
     s += ", samples not known";
   return s + ", " + x.power_kind + " power";
+}
+
+// Hours on the battery; a load that is AC wall power of a whole system (MLPerf's meter) is not what the robot's
+// DC pack supplies, and the cell says so.
+std::string battery_cell(const Candidate& c) {
+  if (!c.battery_runtime_h) return "–";
+  return fmt(*c.battery_runtime_h, "%.3g") + (c.power_kind == "AC wall" ? " (AC wall power taken as the load)" : "");
 }
 
 std::string ms(std::optional<double> s) { return s ? fmt(*s * 1e3, "%.4g") : "–"; }
@@ -417,7 +432,7 @@ ExportTable candidates_table(std::span<const CandidateClass> classes, bool with_
                                    c.throughput_per_s ? fmt(*c.throughput_per_s, "%.4g") : "–",
                                    c.power_w ? fmt(*c.power_w, "%.3g") : "–",
                                    c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.4g") : "–",
-                                   c.battery_runtime_h ? fmt(*c.battery_runtime_h, "%.3g") : "–"};
+                                   battery_cell(c)};
       if (with_verdicts) {
         std::vector<std::string> failed, said;
         for (const ConstraintCheck& x : c.checks) {
