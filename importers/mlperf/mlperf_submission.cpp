@@ -143,6 +143,9 @@ std::string read_optional(const fs::path& p, const ImportLimits& limits) {
   return std::string(strip_utf8_bom(read_whole_file(p.string(), limits.max_json_bytes)));
 }
 
+void loose_system(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
+                  MlperfCompanions& w);
+
 }  // namespace
 
 std::vector<std::string> mlperf_companion_paths(const std::string& summary_path) {
@@ -156,6 +159,13 @@ std::vector<std::string> mlperf_companion_paths(const std::string& summary_path)
   const std::string prefix = name.substr(0, at), suffix = name.substr(at + std::string("mlperf_log_summary").size());
   for (const std::string& n : {prefix + "mlperf_log_detail" + suffix, prefix + "spl" + suffix})
     if (std::error_code ec; fs::is_regular_file(p.parent_path() / n, ec)) out.push_back((p.parent_path() / n).string());
+  // Loose files: the system description taken beside it (companions_of) is read with it too.
+  const fs::path perf = p.parent_path().parent_path();
+  if (perf.filename() != "performance") {
+    MlperfCompanions w;
+    loose_system(p.parent_path(), name, ImportLimits{}, w);
+    if (!w.system_file.empty()) out.push_back(w.system_file);
+  }
   return out;
 }
 
@@ -218,7 +228,8 @@ MlperfCompanions companions_of(const std::string& path, const ImportLimits& limi
     if (!text.empty()) file = p.string();
   };
   for (const std::string& c : mlperf_companion_paths(path))
-    read(c, c.find("mlperf_log_detail") != std::string::npos ? w.detail_text : w.spl_text,
+    if (!c.ends_with(".json"))
+      read(c, c.find("mlperf_log_detail") != std::string::npos ? w.detail_text : w.spl_text,
          c.find("mlperf_log_detail") != std::string::npos ? w.detail_file : w.spl_file);
   const fs::path perf = run.parent_path();
   if (perf.filename() != "performance" || perf.parent_path().parent_path().parent_path().parent_path().filename() !=
@@ -298,7 +309,7 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
   // statistics LoadGen lists (the plain percentiles among them).
   const LoadgenValue& r = *official_result(s);
   st.emplace_back("official metric", r.key + " (line " + std::to_string(r.line) + ")");
-  const bool latency = r.key.find("(ns)") != std::string::npos;
+  const bool latency = r.key.find("(ns)") != std::string::npos || r.key.starts_with("Early stopping");
   const bool per_query_count = r.key == "Samples per query";
   add(set, name, std::string(mlperf_metric::kResult) + ": " + r.key,
       latency           ? "s"

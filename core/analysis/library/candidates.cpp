@@ -103,8 +103,9 @@ std::optional<Candidate> from_loadgen(const ResultSet& s) {
     const double v = m.values.front();
     if (m.metric.starts_with("result: ") && m.unit == "s") {
       c.latency_s = v;
-      c.latency_statistic = m.metric.find("90th") != std::string::npos   ? "p90"
-                            : m.metric.find("99th") != std::string::npos ? "p99"
+      const std::string es = m.metric.find("Early stopping") != std::string::npos ? " early-stopping estimate" : "";
+      c.latency_statistic = m.metric.find("90th") != std::string::npos   ? "p90" + es
+                            : m.metric.find("99th") != std::string::npos ? "p99" + es
                                                                          : m.metric.substr(8);
     }
     // SingleStream is rated in queries per second (one sample each), as the library rates it; the other
