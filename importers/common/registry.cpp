@@ -20,6 +20,8 @@
 #include "runs/clpeak_text.h"
 #include "runs/google_benchmark_json.h"
 #include "runs/pipeline_json.h"
+#include "ros2/robotperf_yaml.h"
+#include "ros2/ros2_benchmark_json.h"
 #include "runs/run_json.h"
 
 namespace bs {
@@ -29,7 +31,8 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   return importers_of({&kRunJsonFileFormat, &kPipelineJsonFileFormat, &kGoogleBenchmarkJsonFileFormat,
                        &kClpeakTextFileFormat, &kPowerRecordingFileFormat, &kPowerCsvFileFormat, &kTegrastatsFileFormat,
                        &kJtopCsvFileFormat, &kNvidiaSmiFileFormat, &kPerfStatFileFormat, &kPtdLogFileFormat,
-                       &kMlperfLoadgenFileFormat, &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat,
+                       &kMlperfLoadgenFileFormat, &kRos2BenchmarkJsonFileFormat, &kRobotperfYamlFileFormat,
+                       &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat,
                        &kTiffFileFormat});
 }
 
