@@ -41,11 +41,16 @@ import subprocess
 import sys
 from datetime import datetime, timezone
 
+import yaml  # Debian's python3-yaml: the builder's reading; the importer reads RobotPerf with its own strict reader
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LIB = os.path.join(ROOT, "resources", "library")
 DEFAULT_SOURCES = os.path.normpath(os.path.join(ROOT, "..", "shared", "public-data", "resources", "library",
                                                 "sources"))
 SOURCES = [DEFAULT_SOURCES]  # set by main(); the first root that holds a file wins
+# ROS 2 graph benchmark results, kept beside the library's sources in the shared public data (new/ros2/).
+DEFAULT_ROS2 = os.path.normpath(os.path.join(ROOT, "..", "shared", "public-data", "new", "ros2"))
+ROS2 = [DEFAULT_ROS2]
 
 PAPER_NUC = "the paper's Intel NUC7i7BNH (Core i7-7567U, Iris Plus 650)"
 
@@ -665,6 +670,112 @@ def trt_results(kept_path, url, date, computer, why):
     return out
 
 
+# ROS 2 graph benchmarks: (file in new/ros2/, repository, commit, path there, computer the path or file names).
+ROS2_BENCHMARK = [
+    ("ros2bench_rectify_agx_orin_2023-05.json", "NVIDIA-ISAAC-ROS/ros2_benchmark",
+     "18690995911e4da57e6f601b985189b03979040d", "results/image_proc_rectify_node-agx_orin.json", "jetson-agx-orin"),
+]
+ROBOTPERF = [
+    ("robotperf_c1_rrbot_joint_trajectory_controller_benchmark.yaml", "robotperf/benchmarks",
+     "e603946568ac126c9b051865978ab58d05763e30",
+     "benchmarks/control/c1_rrbot_joint_trajectory_controller/benchmark.yaml",
+     {"NVIDIA AGX Orin Dev. Kit": "jetson-agx-orin"}),
+]
+# What each value is (ros2_benchmark basic_performance_calculator.py; RobotPerf's notes).
+ROS2_FIELDS = [
+    ("BasicPerformanceMetrics.MEAN_FRAME_RATE", "frame rate", "1/s", 1,
+     "received frames / received duration, mean of the kept runs"),
+    ("BasicPerformanceMetrics.FIRST_SENT_RECEIVED_LATENCY", "first-message latency", "s", 1e-3,
+     "the latency of the FIRST message only (mean of runs): not a latency distribution"),
+    ("BasicPerformanceMetrics.MEAN_JITTER", "jitter ('mean')", "s", 1e-3,
+     "the LARGEST of the runs' mean frame-to-frame jitters: a maximum, despite its name"),
+    ("CPUProfilingMetrics.MEAN_CPU_UTIL", "CPU use", "%", 1, "mean CPU use, % of all cores"),
+]
+
+
+def ros2_file(name):
+    for root in ROS2:
+        p = os.path.join(root, name)
+        if os.path.isfile(p) and os.path.getsize(p) > 0:
+            return p
+    raise SystemExit(f"{name}: not in {ROS2} (give --ros2 DIR)")
+
+
+def ros2_benchmark_results(name, repo, commit, path, computer):
+    f = ros2_file(name)
+    with open(f, encoding="utf-8") as fh:
+        doc = json.load(fh)
+    lines = lines_of(f)
+    meta = doc["metadata"]
+    bench = meta["BenchmarkMetadata.NAME"]
+    config = meta.get("BenchmarkMetadata.CONFIG", "")
+    m = re.search(r"default_config_version: (\S+)", config)
+    release = "ros2_benchmark config " + m.group(1) if m else "not stated"
+    inp = doc.get("custom", {}).get("data_resolution", "not stated")
+    out = []
+    runs = [("peak", doc, 0)] + [(k, v, None) for k, v in doc.items() if k.endswith("fps") and isinstance(v, dict)]
+    for run, obj, _ in runs:
+        # The line of each key: the first after the run's own key line ("10.0fps": {).
+        start = 0 if run == "peak" else next(i for i, l in enumerate(lines) if l.strip().startswith('"%s"' % run))
+        for key, measure, unit, scale, meaning in ROS2_FIELDS:
+            if key not in obj or (run != "peak" and measure != "CPU use"):
+                continue
+            no = next(i for i in range(start, len(lines)) if lines[i].strip().startswith('"%s"' % key)) + 1
+            rate = "at peak throughput" if run == "peak" else "at " + run
+            out.append({"kind": "ros2-benchmark", "computer": computer, "device": meta.get(
+                "BenchmarkMetadata.DEVICE_ARCH", ""), "measure": "%s, %s" % (measure, rate),
+                "benchmark": bench, "input": inp, "release": release, "statistic": meaning,
+                "precision": "not applicable", "value": obj[key] * scale, "unit": unit,
+                "round": "ros2_benchmark results", "date": meta.get("BenchmarkMetadata.TEST_DATETIME", "")[:10],
+                "conditions": {"kernel": meta.get("BenchmarkMetadata.DEVICE_OS", ""),
+                               "computer named by": "the repository path " + path},
+                "software": "NVIDIA ros2_benchmark (" + release + ")",
+                "source": {"url": f"https://github.com/{repo}/blob/{commit}/{path}", "repository": repo,
+                           "commit": commit, "path": path, "lines": {key: no},
+                           "kept": "../../new/ros2/" + name, "licence": "Apache-2.0"},
+                "id": "ros2bench-%s-%s-%s-%s" % (computer, bench.split("::")[-1].split()[0].lower(),
+                                                  measure.split()[0].strip("'(").lower(), run.replace(".0", ""))})
+    return out
+
+
+def robotperf_results(name, repo, commit, path, computers):
+    f = ros2_file(name)
+    with open(f, encoding="utf-8") as fh:
+        doc = yaml.safe_load(fh)
+    lines = lines_of(f)
+    out = []
+    meaning = {"latency": ("s", 1e-3, "the maximum of the run (RobotPerf's value; its note's max_benchmark)"),
+               "throughput": ("1/s", 1, "the mean of the run (RobotPerf's value; its note's mean_benchmark)"),
+               "power": ("W", 1, "as RobotPerf reports it (the statistic is not stated)")}
+    value_lines = [i + 1 for i, l in enumerate(lines) if l.strip().startswith("value:")]
+    for k, item in enumerate(doc["results"]):
+        r = item["result"]
+        computer = computers.get(r["hardware"])
+        if not computer:
+            continue
+        unit, scale, what = meaning[r["metric"]]
+        value = float(r["value"])
+        entry = {"kind": "robotperf", "computer": computer, "device": r["hardware"], "measure": r["metric"],
+                 "benchmark": "%s %s" % (doc["id"], doc["name"]), "input": r.get("datasource", "not stated"),
+                 "release": "not stated in the file", "statistic": what, "precision": "not applicable",
+                 "value": value * scale, "unit": unit, "round": "RobotPerf benchmarks",
+                 "date": str(r.get("timestampt", ""))[:10],
+                 "conditions": {"hardware as written": r["hardware"] + " (free text)",
+                                "category": r.get("category", "")},
+                 "software": "RobotPerf (ROS 2 release not stated in the file)",
+                 "source": {"url": f"https://github.com/{repo}/blob/{commit}/{path}", "repository": repo,
+                            "commit": commit, "path": path, "lines": {"value": value_lines[k]},
+                            "kept": "../../new/ros2/" + name, "licence": "Apache-2.0"},
+                 "id": "robotperf-%s-%s-%s" % (computer, doc["id"], r["metric"])}
+        if value <= 0:
+            entry["flags"] = [{"code": "impossible_value", "reason": "%s %s of %s is impossible" % (
+                r["value"], r["metric_unit"], r["metric"])}]
+        if r["metric"] == "power":
+            entry["power_kind"] = "not stated"
+        out.append(entry)
+    return out
+
+
 def kept_not_used():
     """Every file under the kept folders that no result reads, with the reason."""
     out = []
@@ -691,6 +802,10 @@ def build():
         results += hpl_results(*args)
     for args in TRT_REPORTS:
         results += trt_results(*args)
+    for args in ROS2_BENCHMARK:
+        results += ros2_benchmark_results(*args)
+    for args in ROBOTPERF:
+        results += robotperf_results(*args)
     ids = [r["id"] for r in results]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
@@ -717,9 +832,12 @@ def main():
     ap.add_argument("--fetch", metavar="MIRROR_ROOT")
     ap.add_argument("--sources", metavar="DIR", action="append",
                     help="a folder of kept files (repeatable; default %s)" % DEFAULT_SOURCES)
+    ap.add_argument("--ros2", metavar="DIR", action="append",
+                    help="a folder of ROS 2 benchmark results (default %s)" % DEFAULT_ROS2)
     ap.add_argument("--check", action="store_true")
     a = ap.parse_args()
     SOURCES[:] = [os.path.abspath(s) for s in a.sources] if a.sources else [DEFAULT_SOURCES]
+    ROS2[:] = [os.path.abspath(s) for s in a.ros2] if a.ros2 else [DEFAULT_ROS2]
     if not os.path.isdir(SOURCES[0]) and not a.fetch:
         sys.exit(SOURCES[0] + ": no kept sources here (give --sources DIR)")
     if a.fetch:

@@ -75,6 +75,10 @@ nlohmann::json result_json(const LibraryResult& r, const Library& lib) {
           {"power_kind", r.power_kind},
           {"power_samples", r.power_samples_w.size()},
           {"energy_statistic", r.energy_statistic},
+          {"benchmark", r.benchmark},
+          {"input", r.input},
+          {"release", r.release},
+          {"statistic", r.statistic},
           {"network", r.network},
           {"scenario", r.scenario},
           {"precision", r.precision},
@@ -260,6 +264,15 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
     return 0;
   }
   print_candidates(out, classes, peaks, pa.constrained());
+  // ROS 2 graph benchmarks: like with like only (tool, node, input, release, measure).
+  const auto graphs = graph_benchmark_classes(in.library);
+  if (!graphs.empty()) out << "\nROS 2 graph benchmarks: compared within one tool, node, input, release and measure\n";
+  for (const GraphBenchmarkClass& g : graphs) {
+    out << "== " << g.title << " ==\n";
+    for (const LibraryResult* r : g.rows)
+      out << "  " << lib.computer_name(r->computer) << ": " << library_result_summary(*r) << "\n    " << r->source.url
+          << '\n';
+  }
   out << "battery: " << pa.pack->name << ", constant-power model at each row's power\n";
   return 0;
 }

@@ -231,6 +231,10 @@ Library parse_library(std::string_view json_text, const std::string& origin) {
     r.plain_percentile = metric_of(j, f, "plain_percentile");
     r.power_metric = power_metric_of(j, f);
     r.not_ranked = f.text("not_ranked");
+    r.benchmark = f.text("benchmark");
+    r.input = f.text("input");
+    r.release = f.text("release");
+    r.statistic = f.text("statistic");
     r.note = f.text("note");
     r.round = f.text("round");
     r.date = f.text("date");
@@ -348,6 +352,25 @@ std::vector<PlausibilityFlag> check_library_result(const LibraryResult& r, const
   return flags;
 }
 
+std::vector<GraphBenchmarkClass> graph_benchmark_classes(const std::vector<const LibraryResult*>& results) {
+  std::vector<GraphBenchmarkClass> out;
+  for (const LibraryResult* r : results) {
+    if (!r || !r->is_graph_benchmark()) continue;
+    const bool unstated = r->release.empty() || r->release.find("not stated") != std::string::npos;
+    std::string title = r->kind + ": " + r->benchmark + ", input " + r->input + ", " + r->release + ", " + r->measure;
+    if (unstated) title += " (" + r->id + ": release not stated, compared with nothing)";
+    auto it = std::find_if(out.begin(), out.end(), [&](const GraphBenchmarkClass& c) { return c.title == title; });
+    if (it == out.end()) it = out.insert(out.end(), GraphBenchmarkClass{title, {}});
+    it->rows.push_back(r);
+  }
+  for (GraphBenchmarkClass& c : out)
+    std::stable_sort(c.rows.begin(), c.rows.end(), [](const LibraryResult* a, const LibraryResult* b) {
+      const bool lower_better = a->unit == "s" || a->unit == "%" || a->unit == "W";
+      return lower_better ? a->value.value_or(0) < b->value.value_or(0) : a->value.value_or(0) > b->value.value_or(0);
+    });
+  return out;
+}
+
 std::string official_text(const LibraryMetric& m) {
   if (m.unit == "s") return format_si(m.value, "s", 2);
   if (m.unit == "1/s") return fmt(m.value, 5) + " /s";
@@ -369,6 +392,9 @@ std::string library_result_summary(const LibraryResult& r) {
     if (r.latency_s && !(r.official && r.official->unit == "s"))
       add(r.latency_statistic + " latency " + format_si(*r.latency_s, "s", 2));
     if (r.throughput_per_s) add(fmt(*r.throughput_per_s, 4) + " /s (" + r.throughput_statistic + ")");
+  } else if (r.is_graph_benchmark() && r.value) {
+    add(r.measure + " " + (r.unit == "%" ? fmt(*r.value, 4) + " %" : format_si(*r.value, r.unit, 2)) + " (" +
+        r.statistic + "; " + r.benchmark + ", " + r.input + ", " + r.release + ")");
   } else if (r.value) {
     add(format_si(*r.value, r.unit == "FLOP/s" ? "FLOPS" : r.unit, 2) + " " + r.precision + " (" + r.measure + ")");
   }

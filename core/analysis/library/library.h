@@ -68,12 +68,16 @@ struct LibraryResult {
   // Why the result is never ranked ("one run of one image is not a benchmark result: ..."); "" when it may be.
   std::string not_ranked;
   std::string note;  // the source's own words where the result is kept as a note
+  // ROS 2 graph benchmarks (ros2-benchmark, robotperf): the node or benchmark, its input, the release it ran on
+  // and what the value is ("the maximum of the run", "the latency of the FIRST message only").
+  std::string benchmark, input, release, statistic;
   std::string round, date, division, submitter, system, software, validity;
   std::vector<std::pair<std::string, std::string>> conditions;  // power setting, clocks, cooling, ...
   LibrarySource source;
   std::vector<PlausibilityFlag> flags;  // set by check_library_result() on load
 
   bool is_inference() const { return kind == "mlperf-inference" || kind == "tensorrt-timing"; }
+  bool is_graph_benchmark() const { return kind == "ros2-benchmark" || kind == "robotperf"; }
   std::string condition(std::string_view key) const;  // "" when absent
 };
 
@@ -118,6 +122,15 @@ std::vector<const LibraryResult*> select_library(const Library& lib, std::string
 // above the device's vendor peak, a power outside what a robot computer draws or above 10x its platform's TDP, an
 // energy per sample that does not agree with the mean power and the throughput, a non-positive latency or rate.
 std::vector<PlausibilityFlag> check_library_result(const LibraryResult& r, const Library& lib);
+
+// ROS 2 graph benchmark results compared like with like only: one class per tool, benchmark (node), input, release
+// and measure; a result whose release is not stated is never in a class with another.
+struct GraphBenchmarkClass {
+  // "ros2-benchmark: image_proc::RectifyNode Benchmark, input HD (1280,720), ros2_benchmark config 0.30.0, ..."
+  std::string title;
+  std::vector<const LibraryResult*> rows;  // highest value first for rates, lowest first for latency and CPU use
+};
+std::vector<GraphBenchmarkClass> graph_benchmark_classes(const std::vector<const LibraryResult*>& results);
 
 // "p90 early-stopping estimate 1.638 ms (plain p90 1.638 ms, -0.01 %); 676.4 /s (...); 14.8 W AC wall; power
 // metric 22.19 mJ/query" / "230.95 GFLOPS fp32"; a result kept as a note starts "not ranked: ...".

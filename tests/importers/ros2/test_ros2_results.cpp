@@ -51,7 +51,7 @@ class TestRos2Results : public QObject {
     QCOMPARE(setting(s, "release"), std::string("ros2_benchmark config 0.30.0"));
     QVERIFY(s.platform.starts_with("computer not stated"));  // the hostname is a container's
     const std::string peak = "image_proc::RectifyNode Benchmark at peak throughput";
-    // Line 3: "MEAN_FRAME_RATE": 185.2487567630416 (frames per second).
+    // Line 4: "MEAN_FRAME_RATE": 185.2487567630416 (frames per second).
     QCOMPARE(find(s, peak, "frame rate")->values.at(0), 185.2487567630416);
     // Lines 7-8: the first and the last message's latency only, 5.9256 and 6.2355 ms.
     const bs::Measurement* first = find(s, peak, "latency of the FIRST message only");
@@ -62,7 +62,7 @@ class TestRos2Results : public QObject {
     const bs::Measurement* mj = find(s, peak, "frame-to-frame jitter, the LARGEST of the runs' means");
     QVERIFY(mj);
     QVERIFY(std::abs(mj->values.at(0) - 0.17703528109764355e-3) < 1e-15);
-    // Line 14: mean CPU use 49.08 % at peak; the 10 fps run (line 31): 3.98 %.
+    // Line 15: mean CPU use 49.08 % at peak; the 10 fps run (line 32): 3.98 %.
     QCOMPARE(find(s, peak, "CPU use, mean")->values.at(0), 49.080000000000005);
     QCOMPARE(find(s, "image_proc::RectifyNode Benchmark at 10.0fps", "CPU use, mean")->values.at(0), 3.9816666666666665);
     QVERIFY(find(s, "image_proc::RectifyNode Benchmark at 60.0fps", "frame rate"));

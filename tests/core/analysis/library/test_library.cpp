@@ -139,6 +139,7 @@ class TestLibrary : public QObject {
         if (r.kind == "clpeak" && r.value) v = *r.value / 1e9;
         if (r.kind == "hpl" && r.value) v = *r.value / 1e9;
         if (r.kind == "tensorrt-timing" && r.latency_s) v = *r.latency_s * 1e3;
+        if (r.is_graph_benchmark() && r.value) v = r.unit == "s" ? *r.value * 1e3 : *r.value;  // ms in the files
         if (!v) continue;
         bool found = false;
         std::istringstream words(line);
@@ -415,6 +416,38 @@ class TestLibrary : public QObject {
     QVERIFY(std::any_of(h->flags.begin(), h->flags.end(),
                         [](const bs::PlausibilityFlag& f) { return f.code == "fp16_at_fp32_rate"; }));
     QVERIFY(lib.result("clpeak-jetson-nano-single-precision-compute")->flags.empty());
+  }
+
+  // #46: ROS 2 graph benchmarks in the library with the release they ran on and what each value is, compared like
+  // with like only (tool, node, input, release, measure); a release not stated is compared with nothing.
+  void ros2_results_with_release_compared_like_with_like() {
+    const bs::Library& lib = bs::bundled_library().library;
+    const bs::LibraryResult* fr = lib.result("ros2bench-jetson-agx-orin-rectifynode-frame-peak");
+    QVERIFY(fr);
+    QCOMPARE(fr->release, std::string("ros2_benchmark config 0.30.0"));
+    QCOMPARE(fr->input, std::string("HD (1280,720)"));
+    QCOMPARE(*fr->value, 185.2487567630416);  // line 4 of the kept file
+    const bs::LibraryResult* lat = lib.result("ros2bench-jetson-agx-orin-rectifynode-first-message-peak");
+    QVERIFY(lat->statistic.find("FIRST message only") != std::string::npos);
+    QVERIFY(lib.result("ros2bench-jetson-agx-orin-rectifynode-jitter-peak")->statistic.find("a maximum") !=
+            std::string::npos);
+    const bs::LibraryResult* rp = lib.result("robotperf-jetson-agx-orin-c1-latency");
+    QVERIFY(rp);
+    QVERIFY(rp->statistic.starts_with("the maximum of the run"));
+    QCOMPARE(*rp->value, 1.472075e-3);
+    QVERIFY(lib.result("robotperf-jetson-agx-orin-c1-throughput")->statistic.starts_with("the mean of the run"));
+    std::vector<const bs::LibraryResult*> all;
+    for (const auto& r : lib.results) all.push_back(&r);
+    const auto classes = bs::graph_benchmark_classes(all);
+    QCOMPARE(classes.size(), std::size_t{10});  // 7 ros2_benchmark measures/rates, 3 RobotPerf rows each alone
+    for (const auto& c : classes) {
+      for (const auto* r : c.rows) {
+        QCOMPARE(r->benchmark, c.rows[0]->benchmark);
+        QCOMPARE(r->release, c.rows[0]->release);
+        QCOMPARE(r->measure, c.rows[0]->measure);
+      }
+      if (c.rows[0]->kind == "robotperf") QVERIFY(c.title.find("compared with nothing") != std::string::npos);
+    }
   }
 
   void plausibility_runs_on_entries() {
