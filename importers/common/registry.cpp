@@ -17,11 +17,11 @@
 #include "power/power_recording.h"
 #include "power/ptd_log.h"
 #include "power/tegrastats.h"
+#include "ros2/robotperf_yaml.h"
+#include "ros2/ros2_benchmark_json.h"
 #include "runs/clpeak_text.h"
 #include "runs/google_benchmark_json.h"
 #include "runs/pipeline_json.h"
-#include "ros2/robotperf_yaml.h"
-#include "ros2/ros2_benchmark_json.h"
 #include "runs/run_json.h"
 
 namespace bs {
@@ -32,8 +32,7 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
                        &kClpeakTextFileFormat, &kPowerRecordingFileFormat, &kPowerCsvFileFormat, &kTegrastatsFileFormat,
                        &kJtopCsvFileFormat, &kNvidiaSmiFileFormat, &kPerfStatFileFormat, &kPtdLogFileFormat,
                        &kMlperfLoadgenFileFormat, &kRos2BenchmarkJsonFileFormat, &kRobotperfYamlFileFormat,
-                       &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat,
-                       &kTiffFileFormat});
+                       &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat, &kTiffFileFormat});
 }
 
 [[noreturn]] void io_error(const std::string& path, const std::string& what) {

@@ -11,9 +11,9 @@ namespace bs {
 
 LoadgenDetail parse_loadgen_detail(std::string_view text, const std::string& file, const ImportLimits& limits) {
   constexpr std::string_view kPrefix = ":::MLLOG ";
-  constexpr std::array<std::string_view, 6> kKeys = {"loadgen_version", "test_datetime",      "result_query_count",
-                                                     "power_begin",     "power_end",
-                                                     "result_qps_with_loadgen_overhead"};
+  constexpr std::array<std::string_view, 6> kKeys = {"loadgen_version",    "test_datetime",
+                                                     "result_query_count", "power_begin",
+                                                     "power_end",          "result_qps_with_loadgen_overhead"};
   LoadgenDetail d;
   std::size_t line_no = 0;
   while (!text.empty()) {

@@ -35,7 +35,7 @@ struct LoadgenSummary {
   // LoadGen's early-stopping estimates (v2.0 on: " * Early stopping 90th percentile estimate: 1637696"), keyed
   // "Early stopping 90th percentile estimate": from v2.0 the official SingleStream / MultiStream result.
   std::vector<LoadgenValue> early_stopping;
-  std::vector<LoadgenValue> values;                  // every numeric line, in file order
+  std::vector<LoadgenValue> values;  // every numeric line, in file order
   std::optional<double> samples_per_query;
 
   // The first numeric line whose key is `key` (per-sample latencies come after v0.5's per-query block, so the

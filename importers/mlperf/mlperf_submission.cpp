@@ -171,12 +171,20 @@ std::vector<std::string> mlperf_companion_paths(const std::string& summary_path)
 
 std::string network_from_name(std::string_view path) {
   // MLPerf's benchmark names as results folders and file names spell them, most specific first.
-  static const std::vector<std::pair<std::string_view, std::string_view>> kNames = {
-      {"ssd-mobilenet", "ssd-mobilenet"}, {"ssd_mobilenet", "ssd-mobilenet"}, {"ssd-small", "ssd-mobilenet"},
-      {"ssd-resnet34", "ssd-resnet34"},   {"ssd-large", "ssd-resnet34"},       {"retinanet", "retinanet"},
-      {"resnet50", "resnet50"},           {"resnet", "resnet50"},              {"3d-unet", "3d-unet"},
-      {"bert", "bert"},                   {"rnnt", "rnnt"},                    {"dlrm", "dlrm"},
-      {"gptj", "gptj"},                   {"mobilenet", "mobilenet"}};
+  static const std::vector<std::pair<std::string_view, std::string_view>> kNames = {{"ssd-mobilenet", "ssd-mobilenet"},
+                                                                                    {"ssd_mobilenet", "ssd-mobilenet"},
+                                                                                    {"ssd-small", "ssd-mobilenet"},
+                                                                                    {"ssd-resnet34", "ssd-resnet34"},
+                                                                                    {"ssd-large", "ssd-resnet34"},
+                                                                                    {"retinanet", "retinanet"},
+                                                                                    {"resnet50", "resnet50"},
+                                                                                    {"resnet", "resnet50"},
+                                                                                    {"3d-unet", "3d-unet"},
+                                                                                    {"bert", "bert"},
+                                                                                    {"rnnt", "rnnt"},
+                                                                                    {"dlrm", "dlrm"},
+                                                                                    {"gptj", "gptj"},
+                                                                                    {"mobilenet", "mobilenet"}};
   std::string lower(path);
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const auto& [k, v] : kNames)
@@ -211,7 +219,8 @@ void loose_system(const fs::path& folder, const std::string& summary_name, const
         (!chosen || f.stem().string().size() > chosen->stem().string().size()))
       chosen = &f;
   if (!chosen) {
-    if (found.size() > 1) w.system_note = std::to_string(found.size()) + " system descriptions beside it, none named by it";
+    if (found.size() > 1)
+      w.system_note = std::to_string(found.size()) + " system descriptions beside it, none named by it";
     return;
   }
   w.system_json = read_optional(*chosen, limits);
@@ -230,10 +239,10 @@ MlperfCompanions companions_of(const std::string& path, const ImportLimits& limi
   for (const std::string& c : mlperf_companion_paths(path))
     if (!c.ends_with(".json"))
       read(c, c.find("mlperf_log_detail") != std::string::npos ? w.detail_text : w.spl_text,
-         c.find("mlperf_log_detail") != std::string::npos ? w.detail_file : w.spl_file);
+           c.find("mlperf_log_detail") != std::string::npos ? w.detail_file : w.spl_file);
   const fs::path perf = run.parent_path();
-  if (perf.filename() != "performance" || perf.parent_path().parent_path().parent_path().parent_path().filename() !=
-                                              "results") {
+  if (perf.filename() != "performance" ||
+      perf.parent_path().parent_path().parent_path().parent_path().filename() != "results") {
     w.network = network_from_name(fs::path(path).filename().string());
     if (w.network.empty()) w.network = network_from_name(run.filename().string());
     loose_system(run, fs::path(path).filename().string(), limits, w);
@@ -292,8 +301,9 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
                              ": the computer is not stated (LoadGen's SUT name '" + s.sut_name +
                              "' is the harness's, not the computer's); give it with --platform");
   if (with.network.empty())
-    batch.warnings.push_back(file + ": neither its folders nor its name say the network: \"network not stated\", "
-                                    "never ranked with another result");
+    batch.warnings.push_back(file +
+                             ": neither its folders nor its name say the network: \"network not stated\", "
+                             "never ranked with another result");
   const std::string name = network + " " + s.scenario;
   auto& st = set.provenance.settings;
   st.insert(st.begin(),
@@ -351,19 +361,22 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
       const double per_query = p->mean_w * p->window_s / *d.result_query_count;
       add(set, name, mlperf_metric::kEnergyPerQuery, "J", per_query);
       add(set, name, mlperf_metric::kEnergyPerSample, "J", per_query / spq);
-      st.emplace_back("power metric", fmt(per_query * 1000) + " mJ/query (mean power x window x 1000 / "
-                                                              "result_query_count, MLPerf v2.0 on)");
+      st.emplace_back("power metric", fmt(per_query * 1000) +
+                                          " mJ/query (mean power x window x 1000 / "
+                                          "result_query_count, MLPerf v2.0 on)");
     } else if (s.scenario == "SingleStream" && d.qps_with_loadgen_overhead) {
       const double per_query = p->mean_w / *d.qps_with_loadgen_overhead;
       add(set, name, mlperf_metric::kEnergyPerQuery, "J", per_query);
       add(set, name, mlperf_metric::kEnergyPerSample, "J", per_query);
-      st.emplace_back("power metric", fmt(per_query) + " J/query (mean power / QPS with LoadGen overhead, "
-                                                       "MLPerf before v2.0)");
+      st.emplace_back("power metric", fmt(per_query) +
+                                          " J/query (mean power / QPS with LoadGen overhead, "
+                                          "MLPerf before v2.0)");
     } else if (const LoadgenValue* sps = s.find("Samples per second"); sps && sps->value > 0) {
       add(set, name, mlperf_metric::kEnergyPerSample, "J", p->mean_w / sps->value);
       st.emplace_back("power metric", fmt(p->mean_w) + " W (mean power in LoadGen's window)");
     } else if (streams) {
-      batch.warnings.push_back(w_detail_name(with) + ": neither result_query_count nor "
+      batch.warnings.push_back(w_detail_name(with) +
+                               ": neither result_query_count nor "
                                "result_qps_with_loadgen_overhead: no energy per query as MLPerf defines it");
     }
   }

@@ -36,7 +36,8 @@ Meaning meaning(const std::string& metric, const std::string& unit, const std::s
   } else if (metric == "power") {
     if (unit == "W") return {"power (as RobotPerf reports it; the statistic is not stated)", "W", 1};
   } else {
-    fail(ImportErrorCategory::Unsupported, file, line, "metric", "'" + metric + "' is not latency, throughput or power");
+    fail(ImportErrorCategory::Unsupported, file, line, "metric",
+         "'" + metric + "' is not latency, throughput or power");
   }
   fail(ImportErrorCategory::Unsupported, file, line, "metric_unit", "'" + unit + "' is not a unit of " + metric);
 }
@@ -81,7 +82,8 @@ ImportBatch parse_robotperf(const std::string& text, const std::string& file, co
       batch.warnings.push_back(file + ":" + std::to_string(line) + ": value: " + value_text + " " + unit + " of " +
                                metric + " on " + hardware + " is impossible (flag: impossible value)");
     const std::string date = text_of(*r, "timestampt").empty() ? text_of(*r, "timestamp") : text_of(*r, "timestampt");
-    if (iso_date(date)) iso = true;
+    if (iso_date(date))
+      iso = true;
     else if (!date.empty()) {
       dashed = true;
       dashed_lines.push_back(r->find("timestampt") ? r->find("timestampt")->line : r->line);
@@ -137,11 +139,8 @@ bool yaml_extension(std::string_view path) { return path.ends_with(".yaml") || p
 
 }  // namespace
 
-const FileFormat kRobotperfYamlFileFormat{"robotperf-yaml",
-                                          "RobotPerf benchmark.yaml results",
-                                          sniff_robotperf,
-                                          parse_text_file_with<parse_robotperf>,
-                                          parse_robotperf,
-                                          yaml_extension};
+const FileFormat kRobotperfYamlFileFormat{"robotperf-yaml", "RobotPerf benchmark.yaml results",
+                                          sniff_robotperf,  parse_text_file_with<parse_robotperf>,
+                                          parse_robotperf,  yaml_extension};
 
 }  // namespace bs

@@ -18,8 +18,8 @@ struct Field {
 
 // What each value is (basic_performance_calculator.py, conclude_performance()).
 constexpr Field kFields[] = {
-    {"BasicPerformanceMetrics.MEAN_FRAME_RATE", "frame rate (received frames / received duration, mean of runs)",
-     "1/s", 1},
+    {"BasicPerformanceMetrics.MEAN_FRAME_RATE", "frame rate (received frames / received duration, mean of runs)", "1/s",
+     1},
     {"BasicPerformanceMetrics.MEAN_PLAYBACK_FRAME_RATE", "playback rate (sent frames / sent duration, mean of runs)",
      "1/s", 1},
     {"BasicPerformanceMetrics.NUM_FRAMES_SENT", "frames sent (mean of runs)", "", 1},
@@ -130,11 +130,8 @@ bool json_extension(std::string_view path) { return path.ends_with(".json"); }
 
 }  // namespace
 
-const FileFormat kRos2BenchmarkJsonFileFormat{"ros2-benchmark-json",
-                                              "NVIDIA ros2_benchmark result JSON",
-                                              sniff_ros2_benchmark,
-                                              parse_text_file_with<parse_ros2_benchmark>,
-                                              parse_ros2_benchmark,
-                                              json_extension};
+const FileFormat kRos2BenchmarkJsonFileFormat{"ros2-benchmark-json", "NVIDIA ros2_benchmark result JSON",
+                                              sniff_ros2_benchmark,  parse_text_file_with<parse_ros2_benchmark>,
+                                              parse_ros2_benchmark,  json_extension};
 
 }  // namespace bs

@@ -22,7 +22,8 @@ class Reader {
     const std::size_t indent = indent_of(cur());
     YamlNode root = block(indent, 0);
     skip_blank();
-    if (!at_end()) fail(ImportErrorCategory::Syntax, cur().no, "", "text outside the document's structure (indentation?)");
+    if (!at_end())
+      fail(ImportErrorCategory::Syntax, cur().no, "", "text outside the document's structure (indentation?)");
     return root;
   }
 
@@ -43,7 +44,8 @@ class Reader {
   std::size_t indent_of(const Line& l) {
     std::size_t i = 0;
     while (i < l.text.size() && l.text[i] == ' ') ++i;
-    if (i < l.text.size() && l.text[i] == '\t') fail(ImportErrorCategory::Unsupported, l.no, "", "a tab in indentation");
+    if (i < l.text.size() && l.text[i] == '\t')
+      fail(ImportErrorCategory::Unsupported, l.no, "", "a tab in indentation");
     return i;
   }
   static bool is_seq_item(std::string_view rest) { return rest == "-" || rest.starts_with("- "); }
@@ -69,7 +71,8 @@ class Reader {
       if (rest == "-") {  // the item on the next, more-indented lines
         ++pos_;
         skip_blank();
-        if (at_end() || indent_of(cur()) <= indent) fail(ImportErrorCategory::MissingField, lines_[pos_ - 1].no, "", "an empty sequence item");
+        if (at_end() || indent_of(cur()) <= indent)
+          fail(ImportErrorCategory::MissingField, lines_[pos_ - 1].no, "", "an empty sequence item");
         n.seq.push_back(block(indent_of(cur()), depth + 1));
         continue;
       }
@@ -114,7 +117,8 @@ class Reader {
         ++pos_;
         continue;
       }
-      if (t.starts_with("---") || t.starts_with("...")) fail(ImportErrorCategory::Unsupported, cur().no, "", "a second YAML document");
+      if (t.starts_with("---") || t.starts_with("..."))
+        fail(ImportErrorCategory::Unsupported, cur().no, "", "a second YAML document");
       if (!looks_like_key(t)) fail(ImportErrorCategory::Syntax, cur().no, "", "expected \"key: value\"");
       const std::size_t colon = t.find(':');
       const std::string key(t.substr(0, colon));
@@ -154,7 +158,8 @@ class Reader {
     s.line = line_no;
     const char q = cur().text[col];
     for (char c : {'&', '*', '!', '[', '{', '|', '>', '%', '@', '`'})
-      if (q == c) fail(ImportErrorCategory::Unsupported, line_no, "", std::string("YAML feature '") + c + "' not read here");
+      if (q == c)
+        fail(ImportErrorCategory::Unsupported, line_no, "", std::string("YAML feature '") + c + "' not read here");
     if (q == '\'' || q == '"') {
       s.quoted = true;
       s.scalar = quoted(col, q, parent_indent);
@@ -180,7 +185,8 @@ class Reader {
       const std::size_t ind = indent_of(cur());
       if (ind <= parent_indent) break;
       const std::string_view body = std::string_view(t).substr(ind);
-      if (looks_like_key(body)) fail(ImportErrorCategory::Syntax, cur().no, "", "a key inside a plain scalar (indentation?)");
+      if (looks_like_key(body))
+        fail(ImportErrorCategory::Syntax, cur().no, "", "a key inside a plain scalar (indentation?)");
       if (!text.empty() && text.back() != '\n') text += ' ';
       text += trim_comment(std::string(body));
       ++pos_;
@@ -249,22 +255,46 @@ class Reader {
           const char e = t[i + 1];
           i += 2;
           switch (e) {
-            case '"': out += '"'; break;
-            case '\\': out += '\\'; break;
-            case '/': out += '/'; break;
-            case 'n': out += '\n'; break;
-            case 't': out += '\t'; break;
-            case 'r': out += '\r'; break;
-            case '0': out += '\0'; break;
-            case ' ': out += ' '; break;
-            case 'x': case 'u': case 'U': {
+            case '"':
+              out += '"';
+              break;
+            case '\\':
+              out += '\\';
+              break;
+            case '/':
+              out += '/';
+              break;
+            case 'n':
+              out += '\n';
+              break;
+            case 't':
+              out += '\t';
+              break;
+            case 'r':
+              out += '\r';
+              break;
+            case '0':
+              out += '\0';
+              break;
+            case ' ':
+              out += ' ';
+              break;
+            case 'x':
+            case 'u':
+            case 'U': {
               const std::size_t len = e == 'x' ? 2 : e == 'u' ? 4 : 8;
-              if (i + len > t.size()) fail(ImportErrorCategory::Syntax, cur().no, "", "a cut \\" + std::string(1, e) + " escape");
+              if (i + len > t.size())
+                fail(ImportErrorCategory::Syntax, cur().no, "", "a cut \\" + std::string(1, e) + " escape");
               std::uint32_t cp = 0;
               for (std::size_t k = 0; k < len; ++k) {
                 const char h = t[i + k];
-                const int d = h >= '0' && h <= '9' ? h - '0' : h >= 'a' && h <= 'f' ? h - 'a' + 10 : h >= 'A' && h <= 'F' ? h - 'A' + 10 : -1;
-                if (d < 0) fail(ImportErrorCategory::Syntax, cur().no, "", "a bad hex digit in a \\" + std::string(1, e) + " escape");
+                const int d = h >= '0' && h <= '9'   ? h - '0'
+                              : h >= 'a' && h <= 'f' ? h - 'a' + 10
+                              : h >= 'A' && h <= 'F' ? h - 'A' + 10
+                                                     : -1;
+                if (d < 0)
+                  fail(ImportErrorCategory::Syntax, cur().no, "",
+                       "a bad hex digit in a \\" + std::string(1, e) + " escape");
                 cp = cp * 16 + static_cast<std::uint32_t>(d);
               }
               if (cp > 0x10FFFF) fail(ImportErrorCategory::InvalidValue, cur().no, "", "an escape beyond Unicode");

@@ -38,8 +38,11 @@ std::string flags_cell(const LibraryResult& r) {
 
 nlohmann::json metric_json(const std::optional<LibraryMetric>& m) {
   if (!m) return nullptr;
-  nlohmann::json j = {{"metric", m->metric},         {"value", m->value},           {"unit", m->unit},
-                      {"statistic", m->statistic}, {"text", official_text(*m)}};
+  nlohmann::json j = {{"metric", m->metric},
+                      {"value", m->value},
+                      {"unit", m->unit},
+                      {"statistic", m->statistic},
+                      {"text", official_text(*m)}};
   if (!m->definition.empty()) j["definition"] = m->definition;
   if (m->differs_by) j["official_differs_by"] = *m->differs_by;
   return j;

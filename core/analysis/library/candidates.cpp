@@ -304,8 +304,7 @@ std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Con
     check(c, constraints);
     // A network not stated is never ranked with another: each such row is a class of its own.
     const bool unstated = c.network.empty() || c.network.find("not stated") != std::string::npos;
-    const auto key = std::make_tuple(unstated ? c.network + " (" + c.source + ")" : c.network, c.scenario,
-                                     c.precision);
+    const auto key = std::make_tuple(unstated ? c.network + " (" + c.source + ")" : c.network, c.scenario, c.precision);
     auto [it, fresh] = classes.try_emplace(key);
     if (fresh) {
       it->second.network = c.network;
@@ -424,16 +423,16 @@ ExportTable candidates_table(std::span<const CandidateClass> classes, bool with_
         platform += " [" + std::to_string(++flag_no) + "]";
         t.notes.push_back("[" + std::to_string(flag_no) + "] " + f.code + ": " + f.reason);
       }
-      std::vector<std::string> row{k.title(),
-                                   !c.not_ranked.empty() ? "not ranked"
-                                                         : std::to_string(i + 1) + (c.recommended ? " (pick)" : ""),
-                                   platform,
-                                   origin_label(c.origin),
-                                   ms(c.latency_s) + (c.latency_s ? " " + c.latency_statistic : ""),
-                                   c.throughput_per_s ? fmt(*c.throughput_per_s, "%.4g") : "–",
-                                   c.power_w ? fmt(*c.power_w, "%.3g") : "–",
-                                   c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.4g") : "–",
-                                   battery_cell(c)};
+      std::vector<std::string> row{
+          k.title(),
+          !c.not_ranked.empty() ? "not ranked" : std::to_string(i + 1) + (c.recommended ? " (pick)" : ""),
+          platform,
+          origin_label(c.origin),
+          ms(c.latency_s) + (c.latency_s ? " " + c.latency_statistic : ""),
+          c.throughput_per_s ? fmt(*c.throughput_per_s, "%.4g") : "–",
+          c.power_w ? fmt(*c.power_w, "%.3g") : "–",
+          c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.4g") : "–",
+          battery_cell(c)};
       if (with_verdicts) {
         std::vector<std::string> failed, said;
         for (const ConstraintCheck& x : c.checks) {

@@ -29,7 +29,7 @@ struct Candidate {
   std::optional<double> throughput_per_s;
   std::string throughput_statistic;
   std::optional<double> power_w;
-  std::string power_how;  // "external meter (SPEC PTDaemon), wall power", "mean of nuc-current.csv x 16 V", ...
+  std::string power_how;   // "external meter (SPEC PTDaemon), wall power", "mean of nuc-current.csv x 16 V", ...
   std::string power_kind;  // power_kind_of(): "AC wall", "DC supply", "module rail", "not stated"
   std::vector<double> power_samples_w;  // the samples behind power_w, when known (share above a budget)
   std::optional<double> energy_per_inference_j;

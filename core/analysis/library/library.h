@@ -60,7 +60,7 @@ struct LibraryResult {
   std::string precision;  // "int8", "fp32", "fp64", "not stated", "not applicable"
   std::optional<double> mean_power_w, energy_per_sample_j;
   std::string power_measurement;
-  std::string power_kind;  // "AC wall", "DC supply", "module rail", "wall (not stated whether AC or DC)", ""
+  std::string power_kind;        // "AC wall", "DC supply", "module rail", "wall (not stated whether AC or DC)", ""
   std::string energy_statistic;  // "MLPerf's power metric / 8 samples per query", "derived: ..."
   std::vector<double> power_samples_w;  // the power log's samples the mean is over (a budget's share above it)
   std::optional<LibraryMetric> official, plain_percentile;  // MLPerf: the round's result, the plain percentile

@@ -141,8 +141,9 @@ class TestMlperfLoadgen : public QObject {
     text.replace(text.find("Result is : VALID"), 17, "Result is : INVALID");
     const bs::ImportBatch b = bs::parse_mlperf_summary(text, "s.txt");
     QCOMPARE(setting(b.result_sets.at(0), "result validity"), std::string("INVALID"));
-    QVERIFY(std::any_of(b.warnings.begin(), b.warnings.end(),
-                        [](const std::string& w) { return w.starts_with("s.txt:8: LoadGen marked this result INVALID"); }));
+    QVERIFY(std::any_of(b.warnings.begin(), b.warnings.end(), [](const std::string& w) {
+      return w.starts_with("s.txt:8: LoadGen marked this result INVALID");
+    }));
   }
 
   void broken_companions_are_rejected_with_their_place() {

@@ -64,12 +64,12 @@ class TestMlperfLooseFiles : public QObject {
       const char* library_id;
       const char* computer;
       const char* network;
-    } runs[] = {{"Xavier_NX_TRT_MaxQ-ssd-mobilenet-SingleStream-mlperf_log_summary.txt",
-                 "mlperf-v1.1-xavier_nx_trt_maxq-ssd-mobilenet-singlestream", "Auvidea JNX30 Xavier NX (MaxQ, TensorRT)",
-                 "ssd-mobilenet"},
-                {"Orin_TRT_MaxQ-retinanet-SingleStream-mlperf_log_summary.txt",
-                 "mlperf-v3.0-orin_trt_maxq-retinanet-singlestream", "NVIDIA Jetson AGX Orin (MaxQ, TensorRT)",
-                 "retinanet"}};
+    } runs[] = {
+        {"Xavier_NX_TRT_MaxQ-ssd-mobilenet-SingleStream-mlperf_log_summary.txt",
+         "mlperf-v1.1-xavier_nx_trt_maxq-ssd-mobilenet-singlestream", "Auvidea JNX30 Xavier NX (MaxQ, TensorRT)",
+         "ssd-mobilenet"},
+        {"Orin_TRT_MaxQ-retinanet-SingleStream-mlperf_log_summary.txt",
+         "mlperf-v3.0-orin_trt_maxq-retinanet-singlestream", "NVIDIA Jetson AGX Orin (MaxQ, TensorRT)", "retinanet"}};
     for (const auto& run : runs) {
       const bs::ImportBatch b = bs::import_file((d / run.file).string(), bs::CancelToken{});
       const bs::ResultSet& s = b.result_sets.at(0);
@@ -85,8 +85,8 @@ class TestMlperfLooseFiles : public QObject {
       QVERIFY(std::abs(official->values.at(0) - r->official->value) < 1e-12);
       QVERIFY(std::abs(metric(s, "mean power")->values.at(0) - *r->mean_power_w) < 1e-9);
       const double per_query = metric(s, "energy per query")->values.at(0);
-      const double lib_per_query = r->power_metric->unit == "mJ/query" ? r->power_metric->value / 1000
-                                                                       : r->power_metric->value;
+      const double lib_per_query =
+          r->power_metric->unit == "mJ/query" ? r->power_metric->value / 1000 : r->power_metric->value;
       QVERIFY2(std::abs(per_query - lib_per_query) < 1e-9 * lib_per_query, run.file);
       QCOMPARE(setting(s, "power kind"), std::string("AC wall"));
       QVERIFY2(b.warnings.empty(), b.warnings.empty() ? "" : b.warnings[0].c_str());
@@ -94,8 +94,7 @@ class TestMlperfLooseFiles : public QObject {
     // The folder: two results, their detail logs, power logs and system JSONs read with them (passed over on
     // their own), and a per-computer report.
     QTemporaryDir ws;
-    const bs::ImportResult res =
-        bs::import_paths((fs::path(ws.path().toStdString()) / "w.bsw").string(), {d.string()});
+    const bs::ImportResult res = bs::import_paths((fs::path(ws.path().toStdString()) / "w.bsw").string(), {d.string()});
     QCOMPARE(res.count(bs::FileOutcome::Kind::Imported), 2);
     QCOMPARE(res.count(bs::FileOutcome::Kind::NotData), 6);
     for (const auto& f : res.files)
@@ -104,8 +103,8 @@ class TestMlperfLooseFiles : public QObject {
     const auto report = bs::per_computer_report(res);
     QVERIFY(std::find(report.begin(), report.end(),
                       "Auvidea JNX30 Xavier NX (MaxQ, TensorRT): took 1, passed over 0") != report.end());
-    QVERIFY(std::find(report.begin(), report.end(),
-                      "NVIDIA Jetson AGX Orin (MaxQ, TensorRT): took 1, passed over 0") != report.end());
+    QVERIFY(std::find(report.begin(), report.end(), "NVIDIA Jetson AGX Orin (MaxQ, TensorRT): took 1, passed over 0") !=
+            report.end());
   }
 
   void without_a_system_json_the_computer_is_not_stated() {

@@ -64,7 +64,8 @@ class TestRos2Results : public QObject {
     QVERIFY(std::abs(mj->values.at(0) - 0.17703528109764355e-3) < 1e-15);
     // Line 15: mean CPU use 49.08 % at peak; the 10 fps run (line 32): 3.98 %.
     QCOMPARE(find(s, peak, "CPU use, mean")->values.at(0), 49.080000000000005);
-    QCOMPARE(find(s, "image_proc::RectifyNode Benchmark at 10.0fps", "CPU use, mean")->values.at(0), 3.9816666666666665);
+    QCOMPARE(find(s, "image_proc::RectifyNode Benchmark at 10.0fps", "CPU use, mean")->values.at(0),
+             3.9816666666666665);
     QVERIFY(find(s, "image_proc::RectifyNode Benchmark at 60.0fps", "frame rate"));
     QVERIFY(any_warning(b, "does not name the computer"));
   }
@@ -115,8 +116,10 @@ class TestRos2Results : public QObject {
     QCOMPARE(n.find("d")->seq[0].find("f")->scalar, std::string("2"));
     QCOMPARE(n.find("d")->seq[1].scalar, std::string("3"));
     // A duplicate key: refused, naming its line and the first one.
-    auto e = bs::test::import_error_of([] { return bs::kRobotperfYamlFileFormat.parse_text(
-        "id: c1\nname: x\nresults:\n- result:\n    value: 1\n    metric: latency\n    value: 2\n", "d.yaml"); });
+    auto e = bs::test::import_error_of([] {
+      return bs::kRobotperfYamlFileFormat.parse_text(
+          "id: c1\nname: x\nresults:\n- result:\n    value: 1\n    metric: latency\n    value: 2\n", "d.yaml");
+    });
     QCOMPARE(e.location().file, std::string("d.yaml"));
     QCOMPARE(e.location().line, std::size_t{7});
     QVERIFY(e.reason().find("duplicate key 'value' (first at line 5)") != std::string::npos);

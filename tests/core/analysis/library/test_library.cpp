@@ -156,8 +156,7 @@ class TestLibrary : public QObject {
         ++checked;
       }
       if (!r.source.precision_from.empty()) {
-        const auto kept = root / "sources" / (repo_folder(r.source.repository) + "/" +
-                                              r.source.precision_from);
+        const auto kept = root / "sources" / (repo_folder(r.source.repository) + "/" + r.source.precision_from);
         const std::string text = read(kept);
         if (text.empty()) {
           absent.push_back(kept.string());
@@ -189,8 +188,10 @@ class TestLibrary : public QObject {
       const double mean = sum / static_cast<double>(n), window = end - begin;
       QVERIFY2(std::abs(mean - *r.mean_power_w) < 1e-9 * mean, r.id.c_str());
       double metric = mean;
-      if (r.power_metric->unit == "mJ/query") metric = mean * window * 1000 / std::stod(mllog(detail, "result_query_count"));
-      if (r.power_metric->unit == "J/query") metric = mean / std::stod(mllog(detail, "result_qps_with_loadgen_overhead"));
+      if (r.power_metric->unit == "mJ/query")
+        metric = mean * window * 1000 / std::stod(mllog(detail, "result_query_count"));
+      if (r.power_metric->unit == "J/query")
+        metric = mean / std::stod(mllog(detail, "result_qps_with_loadgen_overhead"));
       QVERIFY2(std::abs(metric - r.power_metric->value) < 1e-6 * metric,
                (r.id + ": power metric " + std::to_string(r.power_metric->value) + " " + r.power_metric->unit +
                 ", recomputed " + std::to_string(metric))
@@ -280,7 +281,8 @@ class TestLibrary : public QObject {
     for (const char* id :
          {"mlperf-v3.0-orin_trt_maxq-retinanet-singlestream", "mlperf-v3.0-orin_trt_maxq-retinanet-multistream",
           "mlperf-v3.0-orin_trt_maxq-retinanet-offline", "mlperf-v1.1-agx_xavier_trt_maxq-resnet50-singlestream",
-          "mlperf-v1.1-agx_xavier_trt_maxq-resnet50-offline", "mlperf-v1.1-agx_xavier_trt_maxq-ssd-mobilenet-singlestream",
+          "mlperf-v1.1-agx_xavier_trt_maxq-resnet50-offline",
+          "mlperf-v1.1-agx_xavier_trt_maxq-ssd-mobilenet-singlestream",
           "mlperf-v1.1-agx_xavier_trt_maxq-ssd-mobilenet-offline"}) {
       const bs::LibraryResult* r = lib.result(id);
       QVERIFY2(r && r->mean_power_w && r->power_metric && !r->power_samples_w.empty(), id);
@@ -351,14 +353,13 @@ class TestLibrary : public QObject {
     QVERIFY(x.met);
     QVERIFY(std::abs(x.margin - (10 - *nx->mean_power_w)) < 1e-12);
     QCOMPARE(x.samples, std::size_t{601});
-    const auto above = std::count_if(nx->power_samples_w.begin(), nx->power_samples_w.end(),
-                                     [](double w) { return w > 10; });
+    const auto above =
+        std::count_if(nx->power_samples_w.begin(), nx->power_samples_w.end(), [](double w) { return w > 10; });
     QCOMPARE(*x.share_above, static_cast<double>(above) / 601);
     QVERIFY(*x.share_above > 0.2 && *x.share_above < 0.22);
     QCOMPARE(x.power_kind, std::string("AC wall"));
     const bs::ExportTable t = bs::candidates_table(classes, true);
-    QVERIFY2(t.rows[0][9].find("% of 601 samples above it, AC wall power") != std::string::npos,
-             t.rows[0][9].c_str());
+    QVERIFY2(t.rows[0][9].find("% of 601 samples above it, AC wall power") != std::string::npos, t.rows[0][9].c_str());
   }
 
   // #46: no pick between watts of different kinds, and a network not stated is never ranked with another.
@@ -390,7 +391,8 @@ class TestLibrary : public QObject {
     for (const auto& k : lib.kept_not_used)
       if (k.kept == empty) listed = k.why.find("empty") != std::string::npos;
     QVERIFY(listed);
-    for (const auto& r : lib.results) QVERIFY2(r.source.system.find("ICL-I3-1005G1_OpenVINO-Windows") == std::string::npos, r.id.c_str());
+    for (const auto& r : lib.results)
+      QVERIFY2(r.source.system.find("ICL-I3-1005G1_OpenVINO-Windows") == std::string::npos, r.id.c_str());
     if (!std::filesystem::is_directory(kKeptTree / "sources"))
       QSKIP("the kept library sources are not here: BENCHSCOPE_PUBLIC_DATA_DIR/resources/library/sources");
     std::set<std::string> cited;
