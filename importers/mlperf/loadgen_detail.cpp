@@ -42,20 +42,14 @@ LoadgenDetail parse_loadgen_detail(std::string_view text, const std::string& fil
       throw ImportError(ImportErrorCategory::MissingField, {file, line_no, 0, std::string(wanted)},
                         ":::MLLOG line without a value");
     const bool text_value = value->is_string();
-    if (wanted == "result_qps_with_loadgen_overhead") {
+    // The two counts the power metric needs: positive numbers.
+    if (wanted == "result_qps_with_loadgen_overhead" || wanted == "result_query_count") {
       if (!value->is_number() || value->get<double>() <= 0)
         throw ImportError(ImportErrorCategory::InvalidValue, {file, line_no, 0, std::string(wanted)},
-                          "result_qps_with_loadgen_overhead is not a positive number");
-      d.qps_with_loadgen_overhead = value->get<double>();
-      d.qps_with_line = line_no;
-      continue;
-    }
-    if (wanted == "result_query_count") {
-      if (!value->is_number() || value->get<double>() <= 0)
-        throw ImportError(ImportErrorCategory::InvalidValue, {file, line_no, 0, std::string(wanted)},
-                          "result_query_count is not a positive number");
-      d.result_query_count = value->get<double>();
-      d.query_count_line = line_no;
+                          std::string(wanted) + " is not a positive number");
+      const bool qps = wanted == "result_qps_with_loadgen_overhead";
+      (qps ? d.qps_with_loadgen_overhead : d.result_query_count) = value->get<double>();
+      (qps ? d.qps_with_line : d.query_count_line) = line_no;
       continue;
     }
     if (!text_value)

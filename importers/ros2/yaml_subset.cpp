@@ -58,14 +58,23 @@ class Reader {
     return is_seq_item(rest) ? sequence(indent, depth) : mapping(indent, depth);
   }
 
-  YamlNode sequence(std::size_t indent, std::size_t depth) {
+  YamlNode open_block(YamlNode::Kind kind) {
     YamlNode n;
-    n.kind = YamlNode::Kind::Seq;
+    n.kind = kind;
     n.line = cur().no;
+    return n;
+  }
+  // Whether the current line belongs to a block at `indent` (false: the block ended); deeper is an error.
+  bool at_block_line(std::size_t indent, const char* what) {
+    const std::size_t ind = indent_of(cur());
+    if (ind > indent) fail(ImportErrorCategory::Syntax, cur().no, "", std::string("unexpected indentation in ") + what);
+    return ind == indent;
+  }
+
+  YamlNode sequence(std::size_t indent, std::size_t depth) {
+    YamlNode n = open_block(YamlNode::Kind::Seq);
     for (skip_blank(); !at_end(); skip_blank()) {
-      const std::size_t ind = indent_of(cur());
-      if (ind < indent) break;
-      if (ind > indent) fail(ImportErrorCategory::Syntax, cur().no, "", "unexpected indentation in a sequence");
+      if (!at_block_line(indent, "a sequence")) break;
       std::string_view rest = std::string_view(cur().text).substr(indent);
       if (!is_seq_item(rest)) break;
       if (rest == "-") {  // the item on the next, more-indented lines
@@ -104,13 +113,9 @@ class Reader {
   }
 
   YamlNode mapping(std::size_t indent, std::size_t depth) {
-    YamlNode n;
-    n.kind = YamlNode::Kind::Map;
-    n.line = cur().no;
+    YamlNode n = open_block(YamlNode::Kind::Map);
     for (skip_blank(); !at_end(); skip_blank()) {
-      const std::size_t ind = indent_of(cur());
-      if (ind < indent) break;
-      if (ind > indent) fail(ImportErrorCategory::Syntax, cur().no, "", "unexpected indentation in a mapping");
+      if (!at_block_line(indent, "a mapping")) break;
       const std::string_view t = std::string_view(cur().text).substr(indent);
       if (is_seq_item(t)) break;  // a sequence at the same indentation belongs to the parent key
       if (t == "---" && pos_ == 0) {
