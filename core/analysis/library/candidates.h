@@ -29,9 +29,9 @@ struct Candidate {
   std::optional<double> throughput_per_s;
   std::string throughput_statistic;
   std::optional<double> power_w;
-  std::string power_how;   // "external meter (SPEC PTDaemon), wall power", "mean of nuc-current.csv x 16 V", ...
-  std::string power_kind;  // power_kind_of(): "AC wall", "DC supply", "module rail", "not stated"
-  std::vector<double> power_samples_w;  // the samples behind power_w, when known (share above a budget)
+  std::string power_how;     // "external meter (SPEC PTDaemon), wall power", "mean of nuc-current.csv x 16 V", ...
+  std::string power_kind{};  // power_kind_of(): "AC wall", "DC supply", "module rail", "not stated"
+  std::vector<double> power_samples_w{};  // the samples behind power_w, when known (share above a budget)
   std::optional<double> energy_per_inference_j;
   std::optional<double> battery_runtime_h;
   std::string conditions;  // power setting, clocks, cooling, round
@@ -42,13 +42,13 @@ struct Candidate {
   std::vector<ConstraintCheck> checks;
   bool meets_all = false;
   bool recommended = false;  // the most inferences per second among the class's rows that meet every constraint
-  std::string not_ranked;    // why this row is listed but never ranked (one run of one image); "" when ranked
+  std::string not_ranked{};  // why this row is listed but never ranked (one run of one image); "" when ranked
 };
 
 struct CandidateClass {
   std::string network, scenario, precision;
   std::vector<Candidate> rows;  // ranked: constraints met first, then by throughput; rows not ranked last
-  std::string note;             // why the class has no pick although rows meet the constraints, or ""
+  std::string note{};           // why the class has no pick although rows meet the constraints, or ""
   std::string title() const;    // "resnet50, SingleStream, int8"
 };
 
