@@ -63,8 +63,13 @@ std::vector<std::string> per_computer_report(const ImportResult& result) {
   for (const FileOutcome& f : result.files) {
     const bool took = f.kind == FileOutcome::Kind::Imported || f.kind == FileOutcome::Kind::Duplicate;
     const std::string what = f.path + (took ? "" : " (" + f.reason + ")");
-    if (f.computers.empty()) (took ? tally("").took : tally("").passed).push_back(what);
-    for (const std::string& c : f.computers) (took ? tally(c).took : tally(c).passed).push_back(what);
+    // A companion belongs to the computer of the summary it was read with.
+    std::vector<std::string> computers = f.computers;
+    if (!f.read_with.empty())
+      for (const FileOutcome& s : result.files)
+        if (s.path == f.read_with) computers = s.computers;
+    if (computers.empty()) (took ? tally("").took : tally("").passed).push_back(what);
+    for (const std::string& c : computers) (took ? tally(c).took : tally(c).passed).push_back(what);
   }
   std::vector<std::string> out;
   for (const auto& [computer, t] : by) {
@@ -276,8 +281,8 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
     }
     if (const auto c = companions.find(files[i].path); c != companions.end() && files[i].from_folder) {
       o.kind = FileOutcome::Kind::NotData;
-      o.reason = "read with its LoadGen summary " + c->second + " (power window, query count), not on its own";
-      o.computers = {tree_system(files[i].path)};
+      o.reason = "read with its LoadGen summary " + c->second + ", not on its own";
+      o.read_with = c->second;
       continue;
     }
     try {
