@@ -73,7 +73,7 @@ struct FileOutcome {
   // Imported: the computers its results and logs belong to (a tree's per-computer report); NotData: the computer
   // a results tree files it under (results/<system>/...), "" when nothing says.
   std::vector<std::string> computers;
-  std::string read_with;  // NotData: the file it was read with (an MLPerf summary's companion), else ""
+  std::string read_with;              // NotData: the file it was read with (an MLPerf summary's companion), else ""
   std::vector<std::string> warnings;  // the importer's warnings, each naming file:line
   std::string content_hash;
   std::int64_t import_id = 0;  // Imported and committed: the workspace's import id
