@@ -352,6 +352,9 @@ def precision_of(repo, entry):
                     fields = json.load(f)
                 t, field, text = data_type_of(fields)
                 return t, field, text, f"{folder}/{name}"
+    print("warning: no measurements JSON kept for %s (looked in %s): precision \"not stated\"; "
+          "--fetch MIRROR_ROOT --sources DIR copies it" % (run_folder(entry), ", ".join(measurement_folders(entry))),
+          file=sys.stderr)
     return None, None, None, None
 
 
