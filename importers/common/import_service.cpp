@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 
+#include "mlperf/mlperf_submission.h"
 #include "store/workspace.h"
 
 namespace bs {
@@ -45,6 +46,39 @@ bool skippable_in_folder(const ImportError& e) {
 int ImportResult::count(FileOutcome::Kind kind) const {
   return static_cast<int>(
       std::count_if(files.begin(), files.end(), [&](const FileOutcome& f) { return f.kind == kind; }));
+}
+
+std::vector<std::string> per_computer_report(const ImportResult& result) {
+  struct Tally {
+    std::vector<std::string> took, passed;
+  };
+  std::vector<std::pair<std::string, Tally>> by;
+  const auto tally = [&](const std::string& computer) -> Tally& {
+    const std::string key = computer.empty() ? "computer not stated" : computer;
+    for (auto& [k, t] : by)
+      if (k == key) return t;
+    by.emplace_back(key, Tally{});
+    return by.back().second;
+  };
+  for (const FileOutcome& f : result.files) {
+    const bool took = f.kind == FileOutcome::Kind::Imported || f.kind == FileOutcome::Kind::Duplicate;
+    const std::string what = f.path + (took ? "" : " (" + f.reason + ")");
+    // A companion belongs to the computer of the summary it was read with.
+    std::vector<std::string> computers = f.computers;
+    if (!f.read_with.empty())
+      for (const FileOutcome& s : result.files)
+        if (s.path == f.read_with) computers = s.computers;
+    if (computers.empty()) (took ? tally("").took : tally("").passed).push_back(what);
+    for (const std::string& c : computers) (took ? tally(c).took : tally(c).passed).push_back(what);
+  }
+  std::vector<std::string> out;
+  for (const auto& [computer, t] : by) {
+    std::string line = computer + ": took " + std::to_string(t.took.size());
+    line += ", passed over " + std::to_string(t.passed.size());
+    out.push_back(line);
+    for (const std::string& p : t.passed) out.push_back("  passed over " + p);
+  }
+  return out;
 }
 
 std::string describe_batch(const ImportBatch& b) {
@@ -151,6 +185,8 @@ std::vector<std::string> workspace_platforms(const Workspace& ws) {
 }
 
 // Gives every power log of `batch` whose file names no platform one (never blank), and says which in the summary.
+// A log is attached only by what its file says or what the user chooses: the workspace's only platform is a guess
+// the GUI offers, never taken silently (an MLPerf spl.txt is AC wall power of some other system).
 void attach_log_platforms(ImportBatch& batch, const std::string& path, const std::vector<std::string>& known,
                           const ImportOptions& options, FileOutcome& o) {
   for (PowerTrace& t : batch.power_traces) {
@@ -165,10 +201,59 @@ void attach_log_platforms(ImportBatch& batch, const std::string& path, const std
     if (blank_platform(chosen)) {
       chosen = guess.platform;
       how = guess.how;
+      if (guess.how == "the workspace's only platform") {
+        chosen = "unassigned: " + (t.label.empty() ? std::string("power log") : t.label);
+        how = "not attached: the file names no platform; the workspace's only platform '" + guess.platform +
+              "' is a guess (give --platform to attach it)";
+      }
     }
     t.platform = chosen;
     o.summary += ", platform '" + chosen + "' (" + how + ")";
   }
+  // An MLPerf result without a system description names no computer: --platform names it.
+  for (ResultSet& r : batch.result_sets)
+    if (r.platform.starts_with("computer not stated") && !blank_platform(options.log_platform)) {
+      r.platform = options.log_platform;
+      o.summary += ", computer '" + r.platform + "' (given with --platform)";
+    }
+}
+
+// The computers a parsed batch belongs to.
+std::vector<std::string> computers_of(const ImportBatch& b) {
+  std::vector<std::string> out;
+  const auto add = [&](const std::string& p) {
+    if (std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
+  };
+  for (const ResultSet& r : b.result_sets) add(r.platform);
+  for (const PowerTrace& t : b.power_traces) add(t.platform);
+  for (const FlopsRun& r : b.runs) add(r.platform);
+  return out;
+}
+
+// The system a results tree files a path under (".../results/<system>/..."), "" outside one.
+std::string tree_system(const std::string& path) {
+  const std::size_t at = path.find("/results/");
+  if (at == std::string::npos) return {};
+  const std::size_t from = at + 9, to = path.find('/', from);
+  return to == std::string::npos ? std::string() : path.substr(from, to - from);
+}
+
+// Companion files of the LoadGen summaries among `files` (detail logs, spl.txt): read with their summary, so a
+// folder import does not take them again on their own -> the summary's path.
+std::map<std::string, std::string> summary_companions(const std::vector<ImportCandidate>& files) {
+  std::map<std::string, std::string> out;
+  for (const ImportCandidate& f : files) {
+    if (fs::path(f.path).filename().string().find("mlperf_log_summary") == std::string::npos) continue;
+    std::string head;
+    try {
+      head = read_head(f.path, 4096);
+    } catch (const ImportError&) {
+      continue;
+    }
+    if (head.find("MLPerf Results Summary") == std::string::npos) continue;
+    for (const std::string& c : mlperf_companion_paths(f.path)) out.emplace(c, f.path);
+  }
+  return out;
 }
 
 }  // namespace
@@ -182,6 +267,7 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
   for (std::size_t i = 0; i < files.size(); ++i) result.files[i].path = files[i].path;
   const bool each_file = options.atomicity == ImportAtomicity::EachFile;
   Target target(workspace_path);
+  const std::map<std::string, std::string> companions = summary_companions(files);
   std::map<std::string, std::string> seen;                   // hash -> path, for twins within this import
   std::vector<std::pair<std::size_t, ImportBatch>> pending;  // AllOrNothing: parsed, not yet stored
   bool failed = false;
@@ -193,10 +279,17 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
       result.cancelled = true;
       break;
     }
+    if (const auto c = companions.find(files[i].path); c != companions.end() && files[i].from_folder) {
+      o.kind = FileOutcome::Kind::NotData;
+      o.reason = "read with its LoadGen summary " + c->second + ", not on its own";
+      o.read_with = c->second;
+      continue;
+    }
     try {
       std::optional<ImportBatch> batch = parse_one(files[i], options, cancel, o);
       if (!batch) {
         failed = failed || o.kind == FileOutcome::Kind::Failed;
+        o.computers = {tree_system(files[i].path)};
         continue;
       }
       if (const auto twin = seen.find(o.content_hash); twin != seen.end() && !each_file) {
@@ -210,7 +303,10 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
           for (const PowerTrace& t : b.power_traces)
             if (std::find(known.begin(), known.end(), t.platform) == known.end()) known.push_back(t.platform);
         attach_log_platforms(*batch, o.path, known, options, o);
+      } else if (!batch->result_sets.empty()) {
+        attach_log_platforms(*batch, o.path, {}, options, o);
       }
+      o.computers = computers_of(*batch);
       if (!each_file) {
         seen.emplace(o.content_hash, o.path);
         pending.emplace_back(i, std::move(*batch));

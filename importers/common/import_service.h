@@ -70,6 +70,10 @@ struct FileOutcome {
   Kind kind = Kind::NotReached;
   std::string reason;   // NotData: why; Duplicate: "already imported on DATE as PATH"; Failed: the error
   std::string summary;  // Imported: what the file held, e.g. "3 runs (benchscope-run-v1)" (describe_batch)
+  // Imported: the computers its results and logs belong to (a tree's per-computer report); NotData: the computer
+  // a results tree files it under (results/<system>/...), "" when nothing says.
+  std::vector<std::string> computers;
+  std::string read_with;              // NotData: the file it was read with (an MLPerf summary's companion), else ""
   std::vector<std::string> warnings;  // the importer's warnings, each naming file:line
   std::string content_hash;
   std::int64_t import_id = 0;  // Imported and committed: the workspace's import id
@@ -92,6 +96,10 @@ struct ImportResult {
 // opened or written, and ImportError(Io) when a folder cannot be listed.
 ImportResult import_paths(const std::string& workspace_path, const std::vector<std::string>& paths,
                           const ImportOptions& options = {}, const CancelToken& cancel = CancelToken{});
+
+// What an import took and passed over, per computer: "NVIDIA Jetson AGX Orin (MaxQ, TensorRT): took 3 (…);
+// passed over 2 (…)". Files of no computer are listed under "computer not stated".
+std::vector<std::string> per_computer_report(const ImportResult& result);
 
 // One line saying what a batch holds: "5 runs, 2 result sets (google-benchmark-json)", or for a frame
 // "frame 1280x1024 BGGR 8-bit synthetic (by reference) (raw-bayer)".

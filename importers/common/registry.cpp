@@ -17,6 +17,8 @@
 #include "power/power_recording.h"
 #include "power/ptd_log.h"
 #include "power/tegrastats.h"
+#include "ros2/robotperf_yaml.h"
+#include "ros2/ros2_benchmark_json.h"
 #include "runs/clpeak_text.h"
 #include "runs/google_benchmark_json.h"
 #include "runs/pipeline_json.h"
@@ -29,8 +31,8 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   return importers_of({&kRunJsonFileFormat, &kPipelineJsonFileFormat, &kGoogleBenchmarkJsonFileFormat,
                        &kClpeakTextFileFormat, &kPowerRecordingFileFormat, &kPowerCsvFileFormat, &kTegrastatsFileFormat,
                        &kJtopCsvFileFormat, &kNvidiaSmiFileFormat, &kPerfStatFileFormat, &kPtdLogFileFormat,
-                       &kMlperfLoadgenFileFormat, &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat,
-                       &kTiffFileFormat});
+                       &kMlperfLoadgenFileFormat, &kRos2BenchmarkJsonFileFormat, &kRobotperfYamlFileFormat,
+                       &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat, &kTiffFileFormat});
 }
 
 [[noreturn]] void io_error(const std::string& path, const std::string& what) {

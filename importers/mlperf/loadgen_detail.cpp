@@ -11,8 +11,9 @@ namespace bs {
 
 LoadgenDetail parse_loadgen_detail(std::string_view text, const std::string& file, const ImportLimits& limits) {
   constexpr std::string_view kPrefix = ":::MLLOG ";
-  constexpr std::array<std::string_view, 5> kKeys = {"loadgen_version", "test_datetime", "result_query_count",
-                                                     "power_begin", "power_end"};
+  constexpr std::array<std::string_view, 6> kKeys = {"loadgen_version",    "test_datetime",
+                                                     "result_query_count", "power_begin",
+                                                     "power_end",          "result_qps_with_loadgen_overhead"};
   LoadgenDetail d;
   std::size_t line_no = 0;
   while (!text.empty()) {
@@ -41,12 +42,14 @@ LoadgenDetail parse_loadgen_detail(std::string_view text, const std::string& fil
       throw ImportError(ImportErrorCategory::MissingField, {file, line_no, 0, std::string(wanted)},
                         ":::MLLOG line without a value");
     const bool text_value = value->is_string();
-    if (wanted == "result_query_count") {
+    // The two counts the power metric needs: positive numbers.
+    if (wanted == "result_qps_with_loadgen_overhead" || wanted == "result_query_count") {
       if (!value->is_number() || value->get<double>() <= 0)
         throw ImportError(ImportErrorCategory::InvalidValue, {file, line_no, 0, std::string(wanted)},
-                          "result_query_count is not a positive number");
-      d.result_query_count = value->get<double>();
-      d.query_count_line = line_no;
+                          std::string(wanted) + " is not a positive number");
+      const bool qps = wanted == "result_qps_with_loadgen_overhead";
+      (qps ? d.qps_with_loadgen_overhead : d.result_query_count) = value->get<double>();
+      (qps ? d.qps_with_line : d.query_count_line) = line_no;
       continue;
     }
     if (!text_value)

@@ -17,8 +17,9 @@ struct LoadgenDetail {
   std::string loadgen_version;  // "3.0 @ f536725011"
   std::string test_datetime;    // "2023-02-24T06:21:48Z"
   std::optional<double> result_query_count;
-  std::string power_begin, power_end;  // as written: "02-24-2023 06:22:00.638"
-  std::size_t power_begin_line = 0, power_end_line = 0, query_count_line = 0;
+  std::optional<double> qps_with_loadgen_overhead;  // result_qps_with_loadgen_overhead (v1.x power metric)
+  std::string power_begin, power_end;               // as written: "02-24-2023 06:22:00.638"
+  std::size_t power_begin_line = 0, power_end_line = 0, query_count_line = 0, qps_with_line = 0;
 };
 
 // Throws ImportError (Syntax naming the line) for an :::MLLOG line with one of the keys whose JSON is malformed.

@@ -50,6 +50,16 @@ std::string canonical_scenario(std::string_view text) {
   return {};
 }
 
+const LoadgenValue* official_result(const LoadgenSummary& s) {
+  const char* key = s.scenario == "SingleStream"  ? "Early stopping 90th percentile estimate"
+                    : s.scenario == "MultiStream" ? "Early stopping 99th percentile estimate"
+                                                  : nullptr;
+  if (key)
+    for (const LoadgenValue& v : s.early_stopping)
+      if (v.key == key) return &v;
+  return s.result ? &*s.result : nullptr;
+}
+
 const LoadgenValue* LoadgenSummary::find(std::string_view key, bool per_query) const {
   for (const LoadgenValue& v : values)
     if (v.key == key && v.per_query == per_query) return &v;
@@ -74,6 +84,16 @@ LoadgenSummary parse_loadgen_summary(std::string_view text, const std::string& f
     if (line.starts_with("Per-query latency")) per_query = true;
     if (line.starts_with("Per-sample latency")) per_query = false;
     const std::size_t colon = line.find(':');
+    if (banner && line.starts_with("*") && line.find("Early stopping") != std::string_view::npos &&
+        line.find("percentile estimate") != std::string_view::npos && colon != std::string_view::npos) {
+      const std::string_view key = trim(line.substr(1, colon - 1));
+      const auto v = number(line.substr(colon + 1));
+      if (!v || *v < 0)
+        fail(ImportErrorCategory::InvalidValue, file, line_no, std::string(key),
+             "'" + std::string(trim(line.substr(colon + 1))) + "' is not a latency in ns");
+      s.early_stopping.push_back({std::string(key), *v, line_no, false});
+      continue;
+    }
     if (colon == std::string_view::npos || line.starts_with("*")) continue;
     const std::string_view key = trim(line.substr(0, colon));
     const std::string_view value = trim(line.substr(colon + 1));

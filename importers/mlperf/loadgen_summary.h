@@ -31,14 +31,21 @@ struct LoadgenSummary {
   std::string validity;  // "VALID", "INVALID"
   std::size_t validity_line = 0;
   std::vector<std::pair<std::string, bool>> checks;  // "Min duration satisfied" -> true, ...
-  std::optional<LoadgenValue> result;                // the scenario's headline metric
-  std::vector<LoadgenValue> values;                  // every numeric line, in file order
+  std::optional<LoadgenValue> result;                // the scenario's headline metric (the percentile line)
+  // LoadGen's early-stopping estimates (v2.0 on: " * Early stopping 90th percentile estimate: 1637696"), keyed
+  // "Early stopping 90th percentile estimate": from v2.0 the official SingleStream / MultiStream result.
+  std::vector<LoadgenValue> early_stopping;
+  std::vector<LoadgenValue> values;  // every numeric line, in file order
   std::optional<double> samples_per_query;
 
   // The first numeric line whose key is `key` (per-sample latencies come after v0.5's per-query block, so the
   // per-query percentiles are looked up with per_query = true).
   const LoadgenValue* find(std::string_view key, bool per_query = false) const;
 };
+
+// The round's official result, as MLPerf's submission checker takes it: the early-stopping estimate of the scenario's
+// percentile where LoadGen printed one (SingleStream p90, MultiStream p99 per query: v2.0 on), else `result`.
+const LoadgenValue* official_result(const LoadgenSummary& s);
 
 // Throws ImportError: Syntax when the banner is missing or the text ends before "Result is" (a truncated log),
 // MissingField for a missing scenario/mode/result line, InvalidValue for a malformed or negative number (naming the

@@ -122,7 +122,8 @@ std::optional<PowerResult> window_power(const MlperfCompanions& w, const Loadgen
   double sum = 0;
   for (std::size_t i = 0; i < t.time_s.size(); ++i) {
     const double at = *start + t.time_s[i];
-    if (at < *begin || at > *end || std::isnan(power->values[i])) continue;
+    // Strictly inside, as the submission checker takes it: power_begin < t < power_end.
+    if (at <= *begin || at >= *end || std::isnan(power->values[i])) continue;
     sum += power->values[i];
     ++r.samples;
   }
@@ -142,8 +143,92 @@ std::string read_optional(const fs::path& p, const ImportLimits& limits) {
   return std::string(strip_utf8_bom(read_whole_file(p.string(), limits.max_json_bytes)));
 }
 
+void loose_system(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
+                  MlperfCompanions& w);
+
+}  // namespace
+
+std::vector<std::string> mlperf_companion_paths(const std::string& summary_path) {
+  // A summary named "<prefix>mlperf_log_summary<suffix>" has its detail log and power log beside it under the same
+  // prefix and suffix ("orin-ss-mlperf_log_detail.txt", "orin-ss-spl.txt"): a lab's loose download keeps them so.
+  const fs::path p(summary_path);
+  const std::string name = p.filename().string();
+  const std::size_t at = name.find("mlperf_log_summary");
+  std::vector<std::string> out;
+  if (at == std::string::npos) return out;
+  const std::string prefix = name.substr(0, at), suffix = name.substr(at + std::string("mlperf_log_summary").size());
+  for (const std::string& n : {prefix + "mlperf_log_detail" + suffix, prefix + "spl" + suffix})
+    if (std::error_code ec; fs::is_regular_file(p.parent_path() / n, ec)) out.push_back((p.parent_path() / n).string());
+  // Loose files: the system description taken beside it (companions_of) is read with it too.
+  const fs::path perf = p.parent_path().parent_path();
+  if (perf.filename() != "performance") {
+    MlperfCompanions w;
+    loose_system(p.parent_path(), name, ImportLimits{}, w);
+    if (!w.system_file.empty()) out.push_back(w.system_file);
+  }
+  return out;
+}
+
+std::string network_from_name(std::string_view path) {
+  // MLPerf's benchmark names as results folders and file names spell them, most specific first.
+  static const std::vector<std::pair<std::string_view, std::string_view>> kNames = {{"ssd-mobilenet", "ssd-mobilenet"},
+                                                                                    {"ssd_mobilenet", "ssd-mobilenet"},
+                                                                                    {"ssd-small", "ssd-mobilenet"},
+                                                                                    {"ssd-resnet34", "ssd-resnet34"},
+                                                                                    {"ssd-large", "ssd-resnet34"},
+                                                                                    {"retinanet", "retinanet"},
+                                                                                    {"resnet50", "resnet50"},
+                                                                                    {"resnet", "resnet50"},
+                                                                                    {"3d-unet", "3d-unet"},
+                                                                                    {"bert", "bert"},
+                                                                                    {"rnnt", "rnnt"},
+                                                                                    {"dlrm", "dlrm"},
+                                                                                    {"gptj", "gptj"},
+                                                                                    {"mobilenet", "mobilenet"}};
+  std::string lower(path);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const auto& [k, v] : kNames)
+    if (lower.find(k) != std::string::npos) return std::string(v);
+  return {};
+}
+
+namespace {
+
+// An MLPerf system description (systems/<system>.json): a JSON object with system_name and submitter.
+bool is_system_json(const std::string& text) {
+  return text.find("\"system_name\"") != std::string::npos && text.find("\"submitter\"") != std::string::npos &&
+         text.find("\"host_processor_model_name\"") != std::string::npos;
+}
+
+// The system description beside loose files: the one system JSON in the summary's folder (or its systems/
+// subfolder), or among several the one whose file stem the summary's file name contains. None when the files do
+// not say: the computer is then "not stated", never the harness's SUT name.
+void loose_system(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
+                  MlperfCompanions& w) {
+  std::vector<fs::path> found;
+  for (const fs::path& dir : {folder, folder / "systems"}) {
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+      if (it->path().extension() == ".json" && is_system_json(read_optional(it->path(), limits)))
+        found.push_back(it->path());
+  }
+  std::sort(found.begin(), found.end());
+  const fs::path* chosen = found.size() == 1 ? &found.front() : nullptr;
+  for (const fs::path& f : found)
+    if (found.size() > 1 && summary_name.find(f.stem().string()) != std::string::npos &&
+        (!chosen || f.stem().string().size() > chosen->stem().string().size()))
+      chosen = &f;
+  if (!chosen) {
+    if (found.size() > 1)
+      w.system_note = std::to_string(found.size()) + " system descriptions beside it, none named by it";
+    return;
+  }
+  w.system_json = read_optional(*chosen, limits);
+  w.system_file = chosen->string();
+}
+
 // The companions of a summary at `path` in a submission tree (results/<system>/<network>/<scenario>/performance/
-// run_N/): what exists is read, what does not stays empty.
+// run_N/), or loose beside it: what exists is read, what does not stays empty.
 MlperfCompanions companions_of(const std::string& path, const ImportLimits& limits) {
   MlperfCompanions w;
   const fs::path run = fs::path(path).parent_path();
@@ -151,26 +236,42 @@ MlperfCompanions companions_of(const std::string& path, const ImportLimits& limi
     text = read_optional(p, limits);
     if (!text.empty()) file = p.string();
   };
-  read(run / "mlperf_log_detail.txt", w.detail_text, w.detail_file);
-  read(run / "spl.txt", w.spl_text, w.spl_file);
+  for (const std::string& c : mlperf_companion_paths(path))
+    if (!c.ends_with(".json"))
+      read(c, c.find("mlperf_log_detail") != std::string::npos ? w.detail_text : w.spl_text,
+           c.find("mlperf_log_detail") != std::string::npos ? w.detail_file : w.spl_file);
   const fs::path perf = run.parent_path();
-  if (perf.filename() != "performance") return w;
+  if (perf.filename() != "performance" ||
+      perf.parent_path().parent_path().parent_path().parent_path().filename() != "results") {
+    w.network = network_from_name(fs::path(path).filename().string());
+    if (w.network.empty()) w.network = network_from_name(run.filename().string());
+    loose_system(run, fs::path(path).filename().string(), limits, w);
+    return w;
+  }
   const fs::path scenario = perf.parent_path(), network = scenario.parent_path(), system = network.parent_path();
   const fs::path results = system.parent_path();
-  if (results.filename() != "results") return w;
   w.network = network.filename().string();
   w.system = system.filename().string();
   const fs::path root = results.parent_path();
   read(root / "systems" / (w.system + ".json"), w.system_json, w.system_file);
   // The measurements folder holds one <system>_<...>.json per scenario beside READMEs and configs.
-  const fs::path m = root / "measurements" / w.system / w.network / scenario.filename();
-  std::error_code ec;
+  // v0.5 named one benchmark differently in results/ and measurements/ (resnet/ against resnet50/): the result's
+  // own benchmark is looked for under both names, so its precision comes from its own measurements.
   std::vector<fs::path> jsons;
-  for (auto it = fs::directory_iterator(m, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
-    if (it->path().extension() == ".json" && it->path().filename() != "config.json") jsons.push_back(it->path());
+  for (const std::string& net : {w.network, network_from_name(w.network)}) {
+    const fs::path m = root / "measurements" / w.system / net / scenario.filename();
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(m, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+      if (it->path().extension() == ".json" && it->path().filename() != "config.json") jsons.push_back(it->path());
+    if (!jsons.empty()) break;
+  }
   std::sort(jsons.begin(), jsons.end());
   if (!jsons.empty()) read(jsons.front(), w.measurements_json, w.measurements_file);
   return w;
+}
+
+std::string w_detail_name(const MlperfCompanions& w) {
+  return w.detail_file.empty() ? std::string("mlperf_log_detail.txt (absent)") : w.detail_file;
 }
 
 }  // namespace
@@ -184,7 +285,9 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
   cancel.throw_if_cancelled();
   ImportBatch batch;
   ResultSet set;
-  set.platform = !with.system.empty() ? with.system : s.sut_name.empty() ? "MLPerf SUT" : s.sut_name;
+  // The computer comes from the system description (read_system below), else the folder's system name; the SUT
+  // name is the harness's ("LWIS_Server", "SUT"), never the computer's.
+  set.platform = !with.system.empty() ? with.system : "computer not stated (" + file + ")";
   set.device = set.platform;
   set.backend = "MLPerf LoadGen";
   set.source_format = "mlperf-loadgen";
@@ -192,6 +295,15 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
   set.provenance.source_file = file;
   read_system(with, limits, set);
   const std::string network = with.network.empty() ? std::string("network not stated") : with.network;
+  if (with.system_json.empty())
+    batch.warnings.push_back(file + ": no system description beside it" +
+                             (with.system_note.empty() ? std::string() : " (" + with.system_note + ")") +
+                             ": the computer is not stated (LoadGen's SUT name '" + s.sut_name +
+                             "' is the harness's, not the computer's); give it with --platform");
+  if (with.network.empty())
+    batch.warnings.push_back(file +
+                             ": neither its folders nor its name say the network: \"network not stated\", "
+                             "never ranked with another result");
   const std::string name = network + " " + s.scenario;
   auto& st = set.provenance.settings;
   st.insert(st.begin(),
@@ -203,9 +315,11 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
     batch.warnings.push_back(file + ":" + std::to_string(s.validity_line) +
                              ": LoadGen marked this result INVALID; it is imported but is not a valid MLPerf result");
 
-  // The headline metric in SI units, then the statistics LoadGen lists.
-  const LoadgenValue& r = *s.result;
-  const bool latency = r.key.find("(ns)") != std::string::npos;
+  // The round's official result in SI units (the early-stopping estimate where LoadGen printed one), then the
+  // statistics LoadGen lists (the plain percentiles among them).
+  const LoadgenValue& r = *official_result(s);
+  st.emplace_back("official metric", r.key + " (line " + std::to_string(r.line) + ")");
+  const bool latency = r.key.find("(ns)") != std::string::npos || r.key.starts_with("Early stopping");
   const bool per_query_count = r.key == "Samples per query";
   add(set, name, std::string(mlperf_metric::kResult) + ": " + r.key,
       latency           ? "s"
@@ -237,16 +351,33 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
     set.provenance.measurement = MeasurementKind::ExternalMeter;
     set.provenance.sensor =
         "SPEC PTDaemon (spl.txt), " + std::to_string(p->samples) + " samples in LoadGen's power window";
+    st.emplace_back("power kind", "AC wall");  // PTDaemon meters the whole system at the mains plug
     const double spq = s.samples_per_query.value_or(1);
-    if (d.result_query_count) {
+    // MLPerf's power metric as the submission checker defines it: Offline/Server the mean power (W); the stream
+    // scenarios energy per query: from v2.0 mean x window / result_query_count (published in mJ), before v2.0
+    // (no query count logged) mean x window / (QPS with LoadGen overhead x window) (published in J).
+    const bool streams = s.scenario == "SingleStream" || s.scenario == "MultiStream";
+    if (streams && d.result_query_count) {
       const double per_query = p->mean_w * p->window_s / *d.result_query_count;
       add(set, name, mlperf_metric::kEnergyPerQuery, "J", per_query);
       add(set, name, mlperf_metric::kEnergyPerSample, "J", per_query / spq);
-    } else if (const LoadgenValue* sps = s.find("Samples per second")) {
-      if (sps->value > 0) add(set, name, mlperf_metric::kEnergyPerSample, "J", p->mean_w / sps->value);
-    } else if (qps && qps->value > 0) {  // no query count in the detail log (v1.1): mean power / query rate
-      add(set, name, mlperf_metric::kEnergyPerQuery, "J", p->mean_w / qps->value);
-      add(set, name, mlperf_metric::kEnergyPerSample, "J", p->mean_w / qps->value / spq);
+      st.emplace_back("power metric", fmt(per_query * 1000) +
+                                          " mJ/query (mean power x window x 1000 / "
+                                          "result_query_count, MLPerf v2.0 on)");
+    } else if (s.scenario == "SingleStream" && d.qps_with_loadgen_overhead) {
+      const double per_query = p->mean_w / *d.qps_with_loadgen_overhead;
+      add(set, name, mlperf_metric::kEnergyPerQuery, "J", per_query);
+      add(set, name, mlperf_metric::kEnergyPerSample, "J", per_query);
+      st.emplace_back("power metric", fmt(per_query) +
+                                          " J/query (mean power / QPS with LoadGen overhead, "
+                                          "MLPerf before v2.0)");
+    } else if (const LoadgenValue* sps = s.find("Samples per second"); sps && sps->value > 0) {
+      add(set, name, mlperf_metric::kEnergyPerSample, "J", p->mean_w / sps->value);
+      st.emplace_back("power metric", fmt(p->mean_w) + " W (mean power in LoadGen's window)");
+    } else if (streams) {
+      batch.warnings.push_back(w_detail_name(with) +
+                               ": neither result_query_count nor "
+                               "result_qps_with_loadgen_overhead: no energy per query as MLPerf defines it");
     }
   }
   batch.result_sets.push_back(std::move(set));

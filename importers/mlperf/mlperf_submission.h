@@ -41,8 +41,18 @@ struct MlperfCompanions {
   std::string spl_text, spl_file;
   std::string system_json, system_file;
   std::string measurements_json, measurements_file;
-  std::string network, system;  // from the folder layout; empty when the summary is not in one
+  std::string network, system;  // from the folder layout (or a loose file's name); empty when nothing says
+  std::string system_note;      // why no system description was taken, when several lay beside the summary
 };
+
+// The detail log and PTDaemon log that belong to a summary: "<prefix>mlperf_log_detail<suffix>" and
+// "<prefix>spl<suffix>" beside "<prefix>mlperf_log_summary<suffix>" (a submission's run_1/ is the empty prefix).
+// A folder import reads them with their summary, not on their own.
+std::vector<std::string> mlperf_companion_paths(const std::string& summary_path);
+
+// The MLPerf benchmark a folder or file name names ("resnet", "ssd-small", "Orin_retinanet_SS") in the
+// canonical spelling ("resnet50", "ssd-mobilenet", "retinanet"); "" when it names none.
+std::string network_from_name(std::string_view path);
 ImportBatch parse_mlperf_summary(const std::string& text, const std::string& file, const MlperfCompanions& with = {},
                                  const ImportLimits& limits = {}, const CancelToken& cancel = CancelToken{});
 

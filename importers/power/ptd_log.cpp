@@ -218,7 +218,12 @@ ImportBatch PtdParser::finish() {
   p.source_file = file_;
   p.date = trace_.start_time;
   p.measurement = MeasurementKind::ExternalMeter;
-  p.sensor = "SPEC PTDaemon power analyzer";
+  p.sensor = "SPEC PTDaemon power analyzer: AC wall power of the whole system at the mains plug";
+  // Alone, a PTDaemon log has no power window: MLPerf's mean is over LoadGen's power_begin..power_end only.
+  batch_.warnings.push_back(file_ +
+                            ": read on its own, without LoadGen's power window (mlperf_log_detail.txt's "
+                            "power_begin/power_end): the mean is over the whole log, not MLPerf's; it is AC "
+                            "wall power of a whole system, not a robot's DC supply");
   batch_.power_traces.push_back(std::move(trace_));
   return std::move(batch_);
 }

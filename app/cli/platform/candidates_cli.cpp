@@ -37,9 +37,11 @@ void print_candidates(std::ostream& out, std::span<const CandidateClass> classes
       sources.push_back("  " + std::to_string(i + 1) + ". " + k.rows[i].platform + ": " + cells.back());
     }
     text.print(out);
+    if (!k.note.empty()) out << k.note << '\n';
     out << "sources:\n";
     for (const std::string& s : sources) out << s << '\n';
   }
+  out << "\nNo class is ranked against another: a pick holds only within its class.\n";
   if (!t.notes.empty()) {
     out << "\nFlags (implausible numbers; docs/cli.md, \"Plausibility flags\"):\n";
     for (const std::string& n : t.notes) out << "  " << n << '\n';
@@ -68,8 +70,13 @@ nlohmann::json candidates_json(std::span<const CandidateClass> classes, std::spa
                           {"required", x.required},
                           {"actual", opt(x.actual)},
                           {"met", x.met},
-                          {"margin", x.margin}});
-      rows.push_back({{"rank", i + 1},
+                          {"margin", x.margin},
+                          {"share_above", opt(x.share_above)},
+                          {"samples", x.samples},
+                          {"power_kind", x.power_kind}});
+      rows.push_back({{"rank", c.not_ranked.empty() ? nlohmann::json(i + 1) : nlohmann::json(nullptr)},
+                      {"not_ranked", c.not_ranked},
+                      {"power_kind", c.power_kind},
                       {"platform", c.platform},
                       {"origin", origin_label(c.origin)},
                       {"latency_s", opt(c.latency_s)},
@@ -89,7 +96,11 @@ nlohmann::json candidates_json(std::span<const CandidateClass> classes, std::spa
                       {"source", c.source},
                       {"flags", flags_of(c.flags)}});
     }
-    cls.push_back({{"network", k.network}, {"scenario", k.scenario}, {"precision", k.precision}, {"rows", rows}});
+    cls.push_back({{"network", k.network},
+                   {"scenario", k.scenario},
+                   {"precision", k.precision},
+                   {"note", k.note},
+                   {"rows", rows}});
   }
   nlohmann::json pk = nlohmann::json::array();
   for (const PeakClass& k : peaks)

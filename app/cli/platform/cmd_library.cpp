@@ -51,6 +51,18 @@ std::string flags_cell(const LibraryResult& r) {
   return s;
 }
 
+nlohmann::json metric_json(const std::optional<LibraryMetric>& m) {
+  if (!m) return nullptr;
+  nlohmann::json j = {{"metric", m->metric},
+                      {"value", m->value},
+                      {"unit", m->unit},
+                      {"statistic", m->statistic},
+                      {"text", official_text(*m)}};
+  if (!m->definition.empty()) j["definition"] = m->definition;
+  if (m->differs_by) j["official_differs_by"] = *m->differs_by;
+  return j;
+}
+
 nlohmann::json result_json(const LibraryResult& r, const Library& lib) {
   nlohmann::json cond = nlohmann::json::object();
   for (const auto& [k, v] : r.conditions) cond[k] = v;
@@ -59,11 +71,32 @@ nlohmann::json result_json(const LibraryResult& r, const Library& lib) {
   nlohmann::json flags = nlohmann::json::array();
   for (const PlausibilityFlag& f : r.flags) flags.push_back({{"code", f.code}, {"reason", f.reason}});
   const auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  const LibraryComputer* computer = lib.computer(r.computer);
+  nlohmann::json power_metric = nullptr;
+  if (r.power_metric)
+    power_metric = {{"value", r.power_metric->value},
+                    {"unit", r.power_metric->unit},
+                    {"definition", r.power_metric->definition},
+                    {"checker", r.power_metric->checker}};
   return {{"id", r.id},
           {"origin", "published"},
           {"kind", r.kind},
           {"computer", r.computer},
           {"computer_name", lib.computer_name(r.computer)},
+          {"stand_in", computer ? computer->stand_in : std::string()},
+          {"ranked", r.not_ranked.empty()},
+          {"not_ranked", r.not_ranked},
+          {"note", r.note},
+          {"official", metric_json(r.official)},
+          {"plain_percentile", metric_json(r.plain_percentile)},
+          {"power_metric", power_metric},
+          {"power_kind", r.power_kind},
+          {"power_samples", r.power_samples_w.size()},
+          {"energy_statistic", r.energy_statistic},
+          {"benchmark", r.benchmark},
+          {"input", r.input},
+          {"release", r.release},
+          {"statistic", r.statistic},
           {"network", r.network},
           {"scenario", r.scenario},
           {"precision", r.precision},
@@ -89,6 +122,9 @@ nlohmann::json result_json(const LibraryResult& r, const Library& lib) {
             {"kept_copy", kept_copy(r).string()},
             {"kept_copy_present", is_file(kept_copy(r))},
             {"lines", lines},
+            {"system", r.source.system},
+            {"precision_from", r.source.precision_from},
+            {"power_from", r.source.power_from},
             {"licence", r.source.licence}}},
           {"flags", flags}};
 }
@@ -109,7 +145,14 @@ int run_list(const std::vector<std::string>& raw, std::ostream& out) {
   if (args.has("--json")) {
     nlohmann::json a = nlohmann::json::array();
     for (const LibraryResult* r : results) a.push_back(result_json(*r, lib));
-    out << nlohmann::json{{"format", "benchscope-library-list"}, {"library", lib.path}, {"results", a}}.dump(2) << '\n';
+    nlohmann::json unused = nlohmann::json::array();
+    for (const LibraryKeptNote& k : lib.kept_not_used) unused.push_back({{"kept", k.kept}, {"why", k.why}});
+    out << nlohmann::json{{"format", "benchscope-library-list"},
+                          {"library", lib.path},
+                          {"results", a},
+                          {"kept_not_used", unused}}
+               .dump(2)
+        << '\n';
     return 0;
   }
   TextTable t({"Id", "Computer", "Origin", "What", "Precision", "Result", "Round / date", "Flags"});
@@ -124,6 +167,9 @@ int run_list(const std::vector<std::string>& raw, std::ostream& out) {
   t.print(out);
   out << results.size() << " published results for " << computers.size() << " computers (" << lib.path
       << "); sources: `benchscope-cli library show ID`\n";
+  out << "MLPerf rows show the round's official metric first (from v2.0 SingleStream/MultiStream: LoadGen's "
+         "early-stopping estimate) and the plain percentile beside it where different; power is AC wall power of "
+         "the whole system unless said.\n";
   return 0;
 }
 
@@ -145,6 +191,21 @@ int run_show(const std::vector<std::string>& raw, std::ostream& out) {
   else
     out << "  measure:     " << r->measure << " (" << r->variant << "), " << r->device << ", precision " << r->precision
         << '\n';
+  if (const LibraryComputer* c = lib.computer(r->computer); c && !c->stand_in.empty())
+    out << "  stand-in:    " << c->stand_in << '\n';
+  if (!r->not_ranked.empty()) out << "  NOT RANKED:  " << r->not_ranked << '\n';
+  if (!r->note.empty()) out << "  note:        " << r->note << '\n';
+  if (r->official) {
+    out << "  official:    " << r->official->statistic << " " << official_text(*r->official) << " — "
+        << r->official->definition << '\n';
+    if (r->plain_percentile)
+      out << "  plain:       " << r->plain_percentile->statistic << " " << official_text(*r->plain_percentile)
+          << " (the summary's percentile line; not the official result)\n";
+  }
+  if (r->power_metric)
+    out << "  power:       " << r->power_metric->value << " " << r->power_metric->unit << " — "
+        << r->power_metric->definition << " (" << r->power_metric->checker << ")\n";
+  if (!r->power_measurement.empty()) out << "  measured:    " << r->power_measurement << '\n';
   out << "  result:      " << library_result_summary(*r) << '\n';
   out << "  round/date:  " << r->round << (r->date.empty() ? "" : " (" + r->date + ")")
       << (r->division.empty() ? "" : ", " + r->division) << (r->submitter.empty() ? "" : ", " + r->submitter)
@@ -159,6 +220,8 @@ int run_show(const std::vector<std::string>& raw, std::ostream& out) {
              "folder that has resources/library/sources/)";
     out << '\n';
   }
+  if (!r->source.precision_from.empty())
+    out << "  precision:   " << r->source.precision_from << " (" << r->source.precision_rule << ")\n";
   for (const auto& [k, v] : r->source.lines)
     out << "  line " << v << ":" << std::string(6 - std::min<std::size_t>(6, std::to_string(v).size()), ' ') << k
         << '\n';
@@ -226,6 +289,15 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
     return 0;
   }
   print_candidates(out, classes, peaks, pa.constrained());
+  // ROS 2 graph benchmarks: like with like only (tool, node, input, release, measure).
+  const auto graphs = graph_benchmark_classes(in.library);
+  if (!graphs.empty()) out << "\nROS 2 graph benchmarks: compared within one tool, node, input, release and measure\n";
+  for (const GraphBenchmarkClass& g : graphs) {
+    out << "== " << g.title << " ==\n";
+    for (const LibraryResult* r : g.rows)
+      out << "  " << lib.computer_name(r->computer) << ": " << library_result_summary(*r) << "\n    " << r->source.url
+          << '\n';
+  }
   out << "battery: " << pa.pack->name << ", constant-power model at each row's power\n";
   return 0;
 }

@@ -59,6 +59,11 @@ int run_import(const std::vector<std::string>& raw, std::ostream& out, std::ostr
     if (f.kind == Kind::Imported) out << "imported " << f.path << ": " << f.summary << '\n';
     if (f.kind == Kind::Duplicate) out << f.path << ": " << f.reason << " (skipped)\n";
   }
+  // A tree of results: what was taken and passed over, per computer.
+  if (!quiet && result.files.size() > 1) {
+    out << "per computer:\n";
+    for (const std::string& line : per_computer_report(result)) out << "  " << line << '\n';
+  }
   if (result.cancelled) {
     err << "benchscope-cli: error: cancelled by the user"
         << (keep_going ? "; the files listed as imported are stored\n" : "; nothing imported\n");
@@ -83,8 +88,11 @@ const CommandRegistrar registrar({
     "  Frames (.raw + JSON sidecar, PGM/PPM, PNG, TIFF) are kept by reference (path + content hash, the file is read\n"
     "  again when opened) unless --copy-frames stores their pixels in the workspace. --raw-geometry gives the size,\n"
     "  Bayer pattern (BGGR, RGGB, GRBG, GBRG or grey), bit depth and byte order of .raw files that have no sidecar.\n"
-    "  A power log whose file names no platform gets --platform NAME, else one guessed from its metadata (host name)\n"
-    "  or the workspace (its only platform), else \"unassigned: LOG\"; never none. The summary line says which.",
+    "  A power log whose file names no platform gets --platform NAME, else one its metadata names (host name), else\n"
+    "  \"unassigned: LOG\" (the workspace's only platform is never taken without --platform); the summary line says\n"
+    "  which. An MLPerf LoadGen summary takes its computer from the system JSON beside it (never the harness's SUT\n"
+    "  name) or from --platform; its detail log and spl.txt are read with it. A folder import ends with what was\n"
+    "  taken and passed over per computer.",
     run_import,
 });
 

@@ -51,6 +51,14 @@ const PlatformRow* platform_row(std::span<const PlatformRow> rows, const std::st
   return nullptr;
 }
 
+// How a platform's mean power was measured, with how it was derived ("mean of nuc-current.csv x 16 V": a supply
+// current times the supply voltage), so power_kind_of() can tell a DC supply from a wall meter.
+std::string platform_power_how(const PlatformRow& p) {
+  const auto src = p.sources.find(column::kPower);
+  return "platform mean power (" + p.power_measurement +
+         (src != p.sources.end() && !src->second.how.empty() ? "; " + src->second.how : std::string()) + ")";
+}
+
 Candidate from_library(const LibraryResult& r, const Library* lib) {
   Candidate c;
   c.platform = lib ? lib->computer_name(r.computer) : r.computer;
@@ -64,7 +72,10 @@ Candidate from_library(const LibraryResult& r, const Library* lib) {
   c.throughput_statistic = r.throughput_statistic;
   c.power_w = r.mean_power_w;
   c.power_how = r.power_measurement;
+  c.power_kind = r.power_kind.empty() ? power_kind_of(r.power_measurement) : r.power_kind;
+  c.power_samples_w = r.power_samples_w;
   c.energy_per_inference_j = r.energy_per_sample_j;
+  c.not_ranked = r.not_ranked;
   std::vector<std::string> cond;
   if (const std::string ps = r.condition("power setting"); !ps.empty()) cond.push_back(ps.substr(0, ps.find(' ')));
   cond.push_back((r.kind == "mlperf-inference" ? "MLPerf " : "") + r.round +
@@ -92,8 +103,9 @@ std::optional<Candidate> from_loadgen(const ResultSet& s) {
     const double v = m.values.front();
     if (m.metric.starts_with("result: ") && m.unit == "s") {
       c.latency_s = v;
-      c.latency_statistic = m.metric.find("90th") != std::string::npos   ? "p90"
-                            : m.metric.find("99th") != std::string::npos ? "p99"
+      const std::string es = m.metric.find("Early stopping") != std::string::npos ? " early-stopping estimate" : "";
+      c.latency_statistic = m.metric.find("90th") != std::string::npos   ? "p90" + es
+                            : m.metric.find("99th") != std::string::npos ? "p99" + es
                                                                          : m.metric.substr(8);
     }
     // SingleStream is rated in queries per second (one sample each), as the library rates it; the other
@@ -109,7 +121,11 @@ std::optional<Candidate> from_loadgen(const ResultSet& s) {
     if (m.metric == "mean power") c.power_w = v;
     if (m.metric == "energy per sample") c.energy_per_inference_j = v;
   }
-  if (c.power_w) c.power_how = std::string(to_string(s.provenance.measurement)) + ", " + s.provenance.sensor;
+  if (c.power_w) {
+    c.power_how = std::string(to_string(s.provenance.measurement)) + ", " + s.provenance.sensor;
+    const std::string kind = setting(s.provenance, "power kind");
+    c.power_kind = kind.empty() ? power_kind_of(c.power_how) : kind;
+  }
   c.conditions = "MLPerf LoadGen run" + (s.provenance.date.empty() ? "" : " (" + s.provenance.date + ")");
   c.software = s.backend;
   c.source = s.provenance.source_file;
@@ -137,8 +153,9 @@ Candidate from_dnn(const DnnRun& r, std::span<const PlatformRow> rows) {
   if (!c.power_w)
     if (const PlatformRow* p = platform_row(rows, r.platform); p && p->mean_power_w) {
       c.power_w = p->mean_power_w;
-      c.power_how = "platform mean power (" + p->power_measurement + ")";
+      c.power_how = platform_power_how(*p);
     }
+  c.power_kind = power_kind_of(c.power_how);
   c.energy_per_inference_j = r.energy_per_inference_j;
   if (!c.energy_per_inference_j && c.power_w && c.latency_s) c.energy_per_inference_j = *c.power_w * *c.latency_s;
   c.conditions =
@@ -165,7 +182,8 @@ std::optional<Candidate> from_pipeline(const PipelineRun& r, std::span<const Pla
   c.throughput_statistic = "1 / mean detection time";
   if (const PlatformRow* p = platform_row(rows, r.platform); p && p->mean_power_w) {
     c.power_w = p->mean_power_w;
-    c.power_how = "platform mean power (" + p->power_measurement + ")";
+    c.power_how = platform_power_how(*p);
+    c.power_kind = power_kind_of(c.power_how);
     c.energy_per_inference_j = *c.power_w * d->mean_s;
   }
   c.conditions = r.device;
@@ -197,6 +215,13 @@ void check(Candidate& c, const Constraints& k) {
     ConstraintCheck x{"power budget", "W", *k.power_budget_w, c.power_w};
     x.met = c.power_w && *c.power_w <= *k.power_budget_w;
     x.margin = c.power_w ? *k.power_budget_w - *c.power_w : 0;
+    x.power_kind = c.power_w ? c.power_kind : std::string();
+    if (!c.power_samples_w.empty()) {
+      x.samples = c.power_samples_w.size();
+      x.share_above = static_cast<double>(std::count_if(c.power_samples_w.begin(), c.power_samples_w.end(),
+                                                        [&](double w) { return w > *k.power_budget_w; })) /
+                      static_cast<double>(x.samples);
+    }
     c.checks.push_back(x);
   }
   if (k.min_fps) {
@@ -215,6 +240,24 @@ void check(Candidate& c, const Constraints& k) {
   c.meets_all = std::all_of(c.checks.begin(), c.checks.end(), [](const ConstraintCheck& x) { return x.met; });
 }
 
+// "0.05 W under the 10 W budget, 21 % of 601 samples above it, AC wall power".
+std::string budget_text(const ConstraintCheck& x) {
+  std::string s = fmt(std::abs(x.margin), "%.3g") + " W " + (x.margin >= 0 ? "under" : "over") + " the " +
+                  fmt(x.required, "%.3g") + " W budget";
+  if (x.share_above)
+    s += ", " + fmt(*x.share_above * 100, "%.3g") + " % of " + std::to_string(x.samples) + " samples above it";
+  else
+    s += ", samples not known";
+  return s + ", " + x.power_kind + " power";
+}
+
+// Hours on the battery; a load that is AC wall power of a whole system (MLPerf's meter) is not what the robot's
+// DC pack supplies, and the cell says so.
+std::string battery_cell(const Candidate& c) {
+  if (!c.battery_runtime_h) return "–";
+  return fmt(*c.battery_runtime_h, "%.3g") + (c.power_kind == "AC wall" ? " (AC wall power taken as the load)" : "");
+}
+
 std::string ms(std::optional<double> s) { return s ? fmt(*s * 1e3, "%.4g") : "–"; }
 
 }  // namespace
@@ -227,6 +270,17 @@ std::string canonical_network(std::string_view name) {
   if (n == "ssd-small") return "ssd-mobilenet";
   if (n == "ssd-large" || (has("ssd") && has("resnet34"))) return "ssd-resnet34";
   return n;
+}
+
+std::string power_kind_of(std::string_view how) {
+  const std::string h = lower(how);
+  const auto has = [&](std::string_view w) { return h.find(w) != std::string::npos; };
+  if (has("ac wall") || has("ptdaemon") || has("spl.txt")) return "AC wall";
+  if (has("rail") || has("tegrastats") || has("jtop") || has("on-board") || has("rapl") || has("nvidia-smi"))
+    return "module rail";
+  if (has("supply") || has("current") || has("dc ") || has(" x ")) return "DC supply";
+  if (has("wall")) return "wall (not stated whether AC or DC)";
+  return how.empty() ? std::string() : "not stated";
 }
 
 std::string origin_label(DataOrigin origin) { return std::string(to_string(origin)); }
@@ -248,7 +302,9 @@ std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Con
   for (Candidate& c : all) {
     c.battery_runtime_h = runtime_h(c.power_w, options);
     check(c, constraints);
-    const auto key = std::make_tuple(c.network, c.scenario, c.precision);
+    // A network not stated is never ranked with another: each such row is a class of its own.
+    const bool unstated = c.network.empty() || c.network.find("not stated") != std::string::npos;
+    const auto key = std::make_tuple(unstated ? c.network + " (" + c.source + ")" : c.network, c.scenario, c.precision);
     auto [it, fresh] = classes.try_emplace(key);
     if (fresh) {
       it->second.network = c.network;
@@ -261,12 +317,25 @@ std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Con
   std::vector<CandidateClass> out;
   for (const auto& key : order) {
     CandidateClass cls = std::move(classes[key]);
-    // Constraints met first, then the most inferences per second; rows without a rate last.
+    // Rows that may be ranked first: constraints met first, then the most inferences per second; rows without a
+    // rate after them; rows never ranked (one run of one image) last.
     std::stable_sort(cls.rows.begin(), cls.rows.end(), [](const Candidate& a, const Candidate& b) {
+      if (a.not_ranked.empty() != b.not_ranked.empty()) return a.not_ranked.empty();
       if (a.meets_all != b.meets_all) return a.meets_all;
       return a.throughput_per_s.value_or(-1) > b.throughput_per_s.value_or(-1);
     });
-    if (!cls.rows.empty() && cls.rows.front().meets_all && cls.rows.front().throughput_per_s)
+    // A pick under a power budget compares watts: only watts of one kind. Rows that meet the budget with power of
+    // different kinds (AC wall power of a whole system against a module rail) leave the class without a pick.
+    std::vector<std::string> kinds;
+    for (const Candidate& c : cls.rows)
+      if (c.not_ranked.empty() && c.meets_all && constraints.power_budget_w &&
+          std::find(kinds.begin(), kinds.end(), c.power_kind) == kinds.end())
+        kinds.push_back(c.power_kind);
+    if (kinds.size() > 1)
+      cls.note = "no pick: the rows within the power budget were measured as different kinds of power (" +
+                 join(kinds, " vs ") + "): their watts are not the same quantity";
+    if (!cls.rows.empty() && cls.rows.front().not_ranked.empty() && cls.rows.front().meets_all &&
+        cls.rows.front().throughput_per_s && cls.note.empty())
       cls.rows.front().recommended = true;
     for (std::size_t i = 1; i < cls.rows.size(); ++i) cls.rows[i].difference = difference(cls.rows[i], cls.rows[0]);
     out.push_back(std::move(cls));
@@ -354,23 +423,29 @@ ExportTable candidates_table(std::span<const CandidateClass> classes, bool with_
         platform += " [" + std::to_string(++flag_no) + "]";
         t.notes.push_back("[" + std::to_string(flag_no) + "] " + f.code + ": " + f.reason);
       }
-      std::vector<std::string> row{k.title(),
-                                   std::to_string(i + 1) + (c.recommended ? " (pick)" : ""),
-                                   platform,
-                                   origin_label(c.origin),
-                                   ms(c.latency_s) + (c.latency_s ? " " + c.latency_statistic : ""),
-                                   c.throughput_per_s ? fmt(*c.throughput_per_s, "%.4g") : "–",
-                                   c.power_w ? fmt(*c.power_w, "%.3g") : "–",
-                                   c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.4g") : "–",
-                                   c.battery_runtime_h ? fmt(*c.battery_runtime_h, "%.3g") : "–"};
+      std::vector<std::string> row{
+          k.title(),
+          !c.not_ranked.empty() ? "not ranked" : std::to_string(i + 1) + (c.recommended ? " (pick)" : ""),
+          platform,
+          origin_label(c.origin),
+          ms(c.latency_s) + (c.latency_s ? " " + c.latency_statistic : ""),
+          c.throughput_per_s ? fmt(*c.throughput_per_s, "%.4g") : "–",
+          c.power_w ? fmt(*c.power_w, "%.3g") : "–",
+          c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.4g") : "–",
+          battery_cell(c)};
       if (with_verdicts) {
-        std::vector<std::string> failed;
-        for (const ConstraintCheck& x : c.checks)
+        std::vector<std::string> failed, said;
+        for (const ConstraintCheck& x : c.checks) {
           if (!x.met)
             failed.push_back(x.name + (x.actual ? " (" + fmt(x.margin, "%+.3g") + " " + x.unit + ")" : " (no data)"));
-        row.push_back(c.meets_all ? "yes" : "no: " + join(failed, ", "));
+          if (x.actual && !x.power_kind.empty()) said.push_back(budget_text(x));
+        }
+        std::string verdict = c.meets_all ? "yes" : "no: " + join(failed, ", ");
+        if (!said.empty()) verdict += " [" + join(said) + "]";
+        if (!c.not_ranked.empty()) verdict = "not ranked: " + c.not_ranked;
+        row.push_back(verdict);
       }
-      row.push_back(join({c.difference, c.conditions}));
+      row.push_back(join({c.difference, c.conditions, k.note.empty() || i > 0 ? std::string() : k.note}));
       row.push_back(c.source);
       t.rows.push_back(std::move(row));
     }

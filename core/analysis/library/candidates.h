@@ -29,7 +29,9 @@ struct Candidate {
   std::optional<double> throughput_per_s;
   std::string throughput_statistic;
   std::optional<double> power_w;
-  std::string power_how;  // "external meter (SPEC PTDaemon), wall power", "mean of nuc-current.csv x 16 V", ...
+  std::string power_how;     // "external meter (SPEC PTDaemon), wall power", "mean of nuc-current.csv x 16 V", ...
+  std::string power_kind{};  // power_kind_of(): "AC wall", "DC supply", "module rail", "not stated"
+  std::vector<double> power_samples_w{};  // the samples behind power_w, when known (share above a budget)
   std::optional<double> energy_per_inference_j;
   std::optional<double> battery_runtime_h;
   std::string conditions;  // power setting, clocks, cooling, round
@@ -40,11 +42,13 @@ struct Candidate {
   std::vector<ConstraintCheck> checks;
   bool meets_all = false;
   bool recommended = false;  // the most inferences per second among the class's rows that meet every constraint
+  std::string not_ranked{};  // why this row is listed but never ranked (one run of one image); "" when ranked
 };
 
 struct CandidateClass {
   std::string network, scenario, precision;
-  std::vector<Candidate> rows;  // ranked: constraints met first, then by throughput
+  std::vector<Candidate> rows;  // ranked: constraints met first, then by throughput; rows not ranked last
+  std::string note{};           // why the class has no pick although rows meet the constraints, or ""
   std::string title() const;    // "resnet50, SingleStream, int8"
 };
 
@@ -86,6 +90,11 @@ std::vector<PeakClass> peak_candidates(const CandidateInputs& in);
 // constraints, Differences and conditions, Source; flags as footnotes.
 ExportTable candidates_table(std::span<const CandidateClass> classes, bool with_verdicts);
 ExportTable peak_candidates_table(std::span<const PeakClass> classes);
+
+// What kind of power a row's "how" describes, so that a budget never compares unlike watts silently: "AC wall"
+// (a PTDaemon meter at the plug, MLPerf's power), "module rail" (on-board sensors: tegrastats, jtop, RAPL,
+// nvidia-smi), "DC supply" (the computer's supply current x voltage), else "not stated".
+std::string power_kind_of(std::string_view how);
 
 // The origin as a row shows it: "measured", "reconstructed", "published" (never blank: "unknown").
 std::string origin_label(DataOrigin origin);

@@ -78,10 +78,63 @@ LibrarySource source_of(const json& j, const Fields& f) {
   s.path = sf.text("path");
   s.kept = sf.text("kept");
   s.licence = sf.text("licence");
-  if (const auto l = it->find("lines"); l != it->end() && l->is_object())
-    for (const auto& [k, v] : l->items())
-      if (v.is_number_integer()) s.lines.emplace_back(k, v.get<long long>());
+  for (const auto& [key, out] : {std::pair{"lines", &s.lines}, std::pair{"detail_lines", &s.detail_lines}})
+    if (const auto l = it->find(key); l != it->end() && l->is_object())
+      for (const auto& [k, v] : l->items())
+        if (v.is_number_integer()) out->emplace_back(k, v.get<long long>());
+  s.system = sf.text("system");
+  s.precision_from = sf.text("precision_from");
+  s.precision_rule = sf.text("precision_rule");
+  s.detail = sf.text("detail");
+  s.power_from = sf.text("power_from");
   return s;
+}
+
+std::optional<LibraryMetric> metric_of(const json& j, const Fields& f, const char* key) {
+  const auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return std::nullopt;
+  if (!it->is_object()) f.fail(key, "not an object");
+  const Fields mf(*it, key);
+  LibraryMetric m;
+  m.metric = mf.text("metric", true);
+  const auto v = mf.number("value");
+  if (!v) f.fail(std::string(key) + "/value", "missing");
+  m.value = *v;
+  m.unit = mf.text("unit", true);
+  m.statistic = mf.text("statistic");
+  m.definition = mf.text("definition");
+  m.differs_by = mf.number("differs_by");
+  return m;
+}
+
+std::optional<LibraryPowerMetric> power_metric_of(const json& j, const Fields& f) {
+  const auto it = j.find("power_metric");
+  if (it == j.end() || it->is_null()) return std::nullopt;
+  if (!it->is_object()) f.fail("power_metric", "not an object");
+  const Fields pf(*it, "power_metric");
+  LibraryPowerMetric p;
+  const auto v = pf.number("value");
+  if (!v) f.fail("power_metric/value", "missing");
+  p.value = *v;
+  p.unit = pf.text("unit", true);
+  p.definition = pf.text("definition");
+  p.checker = pf.text("checker");
+  return p;
+}
+
+// Flags the builder set by a rule (a PoCL FP16 peak at the FP32 rate), kept beside the load-time checks.
+std::vector<PlausibilityFlag> source_flags(const json& j, const Fields& f) {
+  std::vector<PlausibilityFlag> out;
+  const auto it = j.find("flags");
+  if (it == j.end()) return out;
+  if (!it->is_array()) f.fail("flags", "not an array");
+  for (const json& x : *it) {
+    if (!x.is_object() || !x.contains("code") || !x["code"].is_string() || !x.contains("reason") ||
+        !x["reason"].is_string())
+      f.fail("flags", "each flag needs a code and a reason");
+    out.push_back({x["code"].get<std::string>(), x["reason"].get<std::string>()});
+  }
+  return out;
 }
 
 std::string fmt(double v, int prec = 3) {
@@ -131,7 +184,7 @@ Library parse_library(std::string_view json_text, const std::string& origin) {
   if (comps == doc.end() || !comps->is_array()) throw std::runtime_error(origin + ": computers: missing");
   for (std::size_t i = 0; i < comps->size(); ++i) {
     const Fields f((*comps)[i], origin + ": computers[" + std::to_string(i) + "]");
-    LibraryComputer c{f.text("id", true), f.text("name", true), {}};
+    LibraryComputer c{f.text("id", true), f.text("name", true), {}, f.text("stand_in")};
     if (const auto a = (*comps)[i].find("aliases"); a != (*comps)[i].end() && a->is_array())
       for (const auto& v : *a)
         if (v.is_string()) c.aliases.push_back(v.get<std::string>());
@@ -165,6 +218,24 @@ Library parse_library(std::string_view json_text, const std::string& origin) {
     r.mean_power_w = f.number("mean_power_w");
     r.energy_per_sample_j = f.number("energy_per_sample_j");
     r.power_measurement = f.text("power_measurement");
+    r.power_kind = f.text("power_kind");
+    r.energy_statistic = f.text("energy_statistic");
+    if (const auto ps = j.find("power_samples_w"); ps != j.end()) {
+      if (!ps->is_array()) f.fail("power_samples_w", "not an array");
+      for (const json& w : *ps) {
+        if (!w.is_number() || !std::isfinite(w.get<double>())) f.fail("power_samples_w", "not all numbers");
+        r.power_samples_w.push_back(w.get<double>());
+      }
+    }
+    r.official = metric_of(j, f, "official");
+    r.plain_percentile = metric_of(j, f, "plain_percentile");
+    r.power_metric = power_metric_of(j, f);
+    r.not_ranked = f.text("not_ranked");
+    r.benchmark = f.text("benchmark");
+    r.input = f.text("input");
+    r.release = f.text("release");
+    r.statistic = f.text("statistic");
+    r.note = f.text("note");
     r.round = f.text("round");
     r.date = f.text("date");
     r.division = f.text("division");
@@ -177,9 +248,15 @@ Library parse_library(std::string_view json_text, const std::string& origin) {
     if (r.is_inference() && (r.network.empty() || r.scenario.empty() || !r.throughput_per_s))
       f.fail("network/scenario/throughput_per_s", "an inference result needs all three");
     if (!r.is_inference() && (!r.value || r.unit.empty())) f.fail("value/unit", "a peak needs both");
+    if (r.kind == "mlperf-inference" && !r.official)
+      f.fail("official", "an MLPerf result names its round's official metric");
+    r.flags = source_flags(j, f);
     lib.results.push_back(std::move(r));
   }
-  for (LibraryResult& r : lib.results) r.flags = check_library_result(r, lib);
+  if (const auto k = doc.find("kept_not_used"); k != doc.end() && k->is_array())
+    for (const json& x : *k)
+      if (x.is_object()) lib.kept_not_used.push_back({x.value("kept", std::string()), x.value("why", std::string())});
+  for (LibraryResult& r : lib.results) merge_flags(r.flags, check_library_result(r, lib));
   return lib;
 }
 
@@ -275,17 +352,56 @@ std::vector<PlausibilityFlag> check_library_result(const LibraryResult& r, const
   return flags;
 }
 
+std::vector<GraphBenchmarkClass> graph_benchmark_classes(const std::vector<const LibraryResult*>& results) {
+  std::vector<GraphBenchmarkClass> out;
+  for (const LibraryResult* r : results) {
+    if (!r || !r->is_graph_benchmark()) continue;
+    const bool unstated = r->release.empty() || r->release.find("not stated") != std::string::npos;
+    std::string title = r->kind + ": " + r->benchmark + ", input " + r->input + ", " + r->release + ", " + r->measure;
+    if (unstated) title += " (" + r->id + ": release not stated, compared with nothing)";
+    auto it = std::find_if(out.begin(), out.end(), [&](const GraphBenchmarkClass& c) { return c.title == title; });
+    if (it == out.end()) it = out.insert(out.end(), GraphBenchmarkClass{title, {}});
+    it->rows.push_back(r);
+  }
+  for (GraphBenchmarkClass& c : out)
+    std::stable_sort(c.rows.begin(), c.rows.end(), [](const LibraryResult* a, const LibraryResult* b) {
+      const bool lower_better = a->unit == "s" || a->unit == "%" || a->unit == "W";
+      return lower_better ? a->value.value_or(0) < b->value.value_or(0) : a->value.value_or(0) > b->value.value_or(0);
+    });
+  return out;
+}
+
+std::string official_text(const LibraryMetric& m) {
+  if (m.unit == "s") return format_si(m.value, "s", 2);
+  if (m.unit == "1/s") return fmt(m.value, 5) + " /s";
+  return fmt(m.value, 4) + " " + m.unit;
+}
+
 std::string library_result_summary(const LibraryResult& r) {
   std::string s;
   const auto add = [&](const std::string& part) { s += (s.empty() ? "" : "; ") + part; };
+  if (!r.not_ranked.empty()) add("not ranked: " + r.not_ranked);
+  if (r.official) {
+    std::string o = "official " + r.official->statistic + " " + official_text(*r.official);
+    if (r.plain_percentile)
+      o += " (plain " + r.plain_percentile->statistic + " " + official_text(*r.plain_percentile) + ", " +
+           fmt(*r.plain_percentile->differs_by * 100, 2) + " % below)";
+    add(o);
+  }
   if (r.is_inference()) {
-    if (r.latency_s) add(r.latency_statistic + " latency " + format_si(*r.latency_s, "s", 2));
+    if (r.latency_s && !(r.official && r.official->unit == "s"))
+      add(r.latency_statistic + " latency " + format_si(*r.latency_s, "s", 2));
     if (r.throughput_per_s) add(fmt(*r.throughput_per_s, 4) + " /s (" + r.throughput_statistic + ")");
+  } else if (r.is_graph_benchmark() && r.value) {
+    add(r.measure + " " + (r.unit == "%" ? fmt(*r.value, 4) + " %" : format_si(*r.value, r.unit, 2)) + " (" +
+        r.statistic + "; " + r.benchmark + ", " + r.input + ", " + r.release + ")");
   } else if (r.value) {
     add(format_si(*r.value, r.unit == "FLOP/s" ? "FLOPS" : r.unit, 2) + " " + r.precision + " (" + r.measure + ")");
   }
   if (r.mean_power_w)
-    add(fmt(*r.mean_power_w) + " W" + (r.power_measurement.empty() ? "" : " (" + r.power_measurement + ")"));
+    add(fmt(*r.mean_power_w) + " W mean" + (r.power_kind.empty() ? "" : ", " + r.power_kind) +
+        (r.power_samples_w.empty() ? "" : " (" + std::to_string(r.power_samples_w.size()) + " samples)"));
+  if (r.power_metric) add("power metric " + fmt(r.power_metric->value, 4) + " " + r.power_metric->unit);
   if (r.energy_per_sample_j) add(format_si(*r.energy_per_sample_j, "J", 2) + " per sample");
   return s;
 }

@@ -122,6 +122,12 @@ struct ConstraintCheck {
   std::optional<double> actual;  // nullopt: the platform has no data for it (fails)
   bool met = false;
   double margin = 0;  // how far inside (+) or outside (-) the limit, in `unit`
+  // A power budget against a mean: the share of the power log's samples above the budget (nullopt when the samples
+  // are not known) and what kind of power was measured ("AC wall", "DC supply", "module rail"), so a mean just
+  // under the budget is not read as a board that never exceeds it.
+  std::optional<double> share_above{};
+  std::size_t samples = 0;
+  std::string power_kind{};
 };
 
 struct PlatformVerdict {

@@ -357,7 +357,11 @@ class TestMeterLogs : public QObject {
     QVERIFY(near(bs::trace_stats(t).power_w->mean, 332.06 / 24, 1e-9));
     QCOMPARE(t.phases.at(0).name, std::string("2021-02-26_17-06-42_testing"));
     QVERIFY(near(t.phases[0].end_s, 22.999, 1e-6));
-    QVERIFY(b.warnings.empty());
+    // #46: alone, a PTDaemon log has no LoadGen power window, and it is AC wall power: said, once.
+    QCOMPARE(b.warnings.size(), std::size_t{1});
+    QVERIFY(b.warnings[0].find("without LoadGen's power window") != std::string::npos);
+    QVERIFY(b.warnings[0].find("AC wall power") != std::string::npos);
+    QVERIFY(t.provenance.sensor.find("AC wall power") != std::string::npos);
   }
   void ptd_marks_channels_and_missing_readings() {
     const auto b = bs::kPtdLogFileFormat.parse_text(
@@ -382,7 +386,7 @@ class TestMeterLogs : public QObject {
     QCOMPARE(t.phases[0].end_s, 1.0);
     QCOMPARE(t.phases[1].start_s, 5.0);
     QCOMPARE(t.phases[1].end_s, 6.5);
-    QCOMPARE(b.warnings.size(), std::size_t{2});  // the PTDaemon message line; the -1 reading
+    QCOMPARE(b.warnings.size(), std::size_t{3});  // the PTDaemon message line; the -1 reading; no power window
   }
   void ptd_day_first_dates_and_errors() {
     // mlcommons/power-dev's README shows "28-12-2020": a first field above 12 can only be a day.

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// ROS 2 graph benchmarks of robot computers (issue #46): NVIDIA ros2_benchmark result JSON and RobotPerf
+// benchmark.yaml, real files from BENCHSCOPE_PUBLIC_DATA_DIR/new/ros2 (SOURCES.md there; skipped without them),
+// their values checked by hand against the lines cited, each value's meaning said; the strict YAML subset reader
+// refuses a duplicate key naming both lines; impossible values (0 W), free-text hardware and mixed date formats are
+// flagged with their line.
+#include <QTest>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "common/importer.h"
+#include "ros2/robotperf_yaml.h"
+#include "ros2/ros2_benchmark_json.h"
+#include "ros2/yaml_subset.h"
+
+#include "../../support/import_errors.h"
+
+namespace {
+const std::string kRos2 = BENCHSCOPE_PUBLIC_DATA_DIR "/new/ros2/";
+
+const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, const std::string& metric_start) {
+  for (const auto& m : s.measurements)
+    if (m.name == name && m.metric.starts_with(metric_start)) return &m;
+  return nullptr;
+}
+
+std::string setting(const bs::ResultSet& s, const std::string& key) {
+  for (const auto& [k, v] : s.provenance.settings)
+    if (k == key) return v;
+  return "(absent)";
+}
+
+bool any_warning(const bs::ImportBatch& b, const std::string& part) {
+  return std::any_of(b.warnings.begin(), b.warnings.end(),
+                     [&](const std::string& w) { return w.find(part) != std::string::npos; });
+}
+}  // namespace
+
+class TestRos2Results : public QObject {
+  Q_OBJECT
+ private slots:
+  void ros2_benchmark_rectify_on_agx_orin() {
+    const std::string f = kRos2 + "ros2bench_rectify_agx_orin_2023-05.json";
+    if (!std::filesystem::exists(f)) QSKIP("needs BENCHSCOPE_PUBLIC_DATA_DIR/new/ros2 (the shared public data)");
+    const bs::ImportBatch b = bs::import_file(f, bs::CancelToken{});
+    QCOMPARE(b.format, std::string("ros2-benchmark-json"));
+    const bs::ResultSet& s = b.result_sets.at(0);
+    QCOMPARE(setting(s, "benchmark"), std::string("image_proc::RectifyNode Benchmark"));
+    QCOMPARE(setting(s, "input"), std::string("HD (1280,720)"));
+    QCOMPARE(setting(s, "release"), std::string("ros2_benchmark config 0.30.0"));
+    QVERIFY(s.platform.starts_with("computer not stated"));  // the hostname is a container's
+    const std::string peak = "image_proc::RectifyNode Benchmark at peak throughput";
+    // Line 4: "MEAN_FRAME_RATE": 185.2487567630416 (frames per second).
+    QCOMPARE(find(s, peak, "frame rate")->values.at(0), 185.2487567630416);
+    // Lines 7-8: the first and the last message's latency only, 5.9256 and 6.2355 ms.
+    const bs::Measurement* first = find(s, peak, "latency of the FIRST message only");
+    QVERIFY(first);
+    QVERIFY(std::abs(first->values.at(0) - 5.925618489583333e-3) < 1e-15);
+    QVERIFY(find(s, peak, "latency of the LAST message only"));
+    // Line 11: "MEAN_JITTER" 0.177 ms is the largest of the runs' means: its metric says so.
+    const bs::Measurement* mj = find(s, peak, "frame-to-frame jitter, the LARGEST of the runs' means");
+    QVERIFY(mj);
+    QVERIFY(std::abs(mj->values.at(0) - 0.17703528109764355e-3) < 1e-15);
+    // Line 15: mean CPU use 49.08 % at peak; the 10 fps run (line 32): 3.98 %.
+    QCOMPARE(find(s, peak, "CPU use, mean")->values.at(0), 49.080000000000005);
+    QCOMPARE(find(s, "image_proc::RectifyNode Benchmark at 10.0fps", "CPU use, mean")->values.at(0),
+             3.9816666666666665);
+    QVERIFY(find(s, "image_proc::RectifyNode Benchmark at 60.0fps", "frame rate"));
+    QVERIFY(any_warning(b, "does not name the computer"));
+  }
+
+  void robotperf_c1_joint_trajectory_controller() {
+    const std::string f = kRos2 + "robotperf_c1_rrbot_joint_trajectory_controller_benchmark.yaml";
+    if (!std::filesystem::exists(f)) QSKIP("needs BENCHSCOPE_PUBLIC_DATA_DIR/new/ros2 (the shared public data)");
+    const bs::ImportBatch b = bs::import_file(f, bs::CancelToken{});
+    QCOMPARE(b.format, std::string("robotperf-yaml"));
+    // 19 results of 5 hardware names, in file order.
+    QCOMPARE(b.result_sets.size(), std::size_t{5});
+    std::size_t n = 0;
+    for (const auto& s : b.result_sets) n += s.measurements.size();
+    QCOMPARE(n, std::size_t{19});
+    const bs::ResultSet& orin = b.result_sets.at(3);
+    QCOMPARE(orin.platform, std::string("NVIDIA AGX Orin Dev. Kit"));
+    QCOMPARE(setting(orin, "benchmark"), std::string("c1 c1_rrbot_joint_trajectory_controller"));
+    // Line 96: latency 1.472075 ms, the run's maximum (the note's max_benchmark 1.472075).
+    const auto& lat = orin.measurements.at(0);
+    QVERIFY(lat.metric.starts_with("latency: maximum of the run"));
+    QVERIFY(std::abs(lat.values.at(0) - 1.472075e-3) < 1e-15);
+    QCOMPARE(lat.unit, std::string("s"));
+    QVERIFY(orin.measurements.at(2).metric.starts_with("throughput: mean of the run"));
+    QCOMPARE(orin.measurements.at(2).values.at(0), 10.0);
+    // The double-quoted note with \u270B and a line joined by '\' was read whole (no error), and the free-text
+    // workstation names and the two date formats are flagged with their lines.
+    QVERIFY(any_warning(b, "hardware 'Intel i7-12700H' is free text"));
+    QVERIFY(any_warning(b, "dates in two formats"));
+    QCOMPARE(setting(orin, "release"), std::string("not stated in the file"));
+  }
+
+  void impossible_values_are_flagged_with_their_line() {
+    const std::string yaml =
+        "id: c1\nname: x\nresults:\n- result:\n    hardware: NVIDIA AGX Orin Dev. Kit\n    metric: power\n"
+        "    metric_unit: W\n    value: 0.0\n    timestampt: '2023-07-21 17:24:12'\n";
+    const bs::ImportBatch b = bs::kRobotperfYamlFileFormat.parse_text(yaml, "b.yaml");
+    QVERIFY(any_warning(b, "b.yaml:8: value: 0.0 W of power on NVIDIA AGX Orin Dev. Kit is impossible"));
+  }
+
+  void yaml_subset_reads_what_robotperf_writes_and_refuses_the_rest() {
+    const bs::YamlNode n = bs::parse_yaml_subset(
+        "a: 'it''s\n  folded\n\n  '\nb: \"x\\u270By\\\n  \\ z\"\nc: plain\n  continued\nd:\n- e: 1\n  f: 2\n- 3\n",
+        "t.yaml");
+    QCOMPARE(n.find("a")->scalar, std::string("it's folded\n"));
+    QCOMPARE(n.find("b")->scalar, std::string("x\xE2\x9C\x8By z"));
+    QCOMPARE(n.find("c")->scalar, std::string("plain continued"));
+    QCOMPARE(n.find("d")->seq.size(), std::size_t{2});
+    QCOMPARE(n.find("d")->seq[0].find("f")->scalar, std::string("2"));
+    QCOMPARE(n.find("d")->seq[1].scalar, std::string("3"));
+    // A duplicate key: refused, naming its line and the first one.
+    auto e = bs::test::import_error_of([] {
+      return bs::kRobotperfYamlFileFormat.parse_text(
+          "id: c1\nname: x\nresults:\n- result:\n    value: 1\n    metric: latency\n    value: 2\n", "d.yaml");
+    });
+    QCOMPARE(e.location().file, std::string("d.yaml"));
+    QCOMPARE(e.location().line, std::size_t{7});
+    QVERIFY(e.reason().find("duplicate key 'value' (first at line 5)") != std::string::npos);
+    for (const char* bad : {"a: &x 1\n", "a: [1, 2]\n", "a: |\n  x\n", "a:\n\t- 1\n", "a: 'open\n"}) {
+      const std::string text = bad;
+      e = bs::test::import_error_of([&] {
+        (void)bs::parse_yaml_subset(text, "u.yaml");
+        return bs::ImportBatch{};
+      });
+      QVERIFY2(e.location().line >= 1, bad);
+    }
+  }
+};
+
+QTEST_APPLESS_MAIN(TestRos2Results)
+#include "test_ros2_results.moc"
