@@ -368,7 +368,14 @@ void MainWindow::reload() {
   platforms_->set_result_sets(sets);  // imported MLPerf LoadGen results are own candidates
   roofline_->set_data(all, std::move(sets), std::move(device_colors), pipeline_runs());
   frames_->set_workspace(workspace_.get());
-  headroom_->set_measurements(workspace_ ? workspace_->headroom_measurements() : std::vector<StoredHeadroom>{});
+  {
+    std::vector<StoredHeadroom> stored =
+        workspace_ ? workspace_->headroom_measurements() : std::vector<StoredHeadroom>{};
+    std::vector<headroom::HeadroomMeasurement> measurements;
+    for (const StoredHeadroom& s : stored) measurements.push_back(s.measurement);
+    platforms_->set_headroom(std::move(measurements));  // the Platforms tab's control-loop requirement
+    headroom_->set_measurements(std::move(stored));
+  }
   feed_lens_tab();
   refresh_views();
   show_damage();
