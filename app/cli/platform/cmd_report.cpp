@@ -83,6 +83,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   request.constraints = platform.constraints;
   request.comparison = platform.options;
   request.candidates = std::move(candidates);
+  request.loop = platform.loop;
   const bool quiet = args.has("--quiet");
   const QStringList files =
       ui::write_report(request, templates, fd, o, interrupt_token(), [&](int done, int total, const QString& what) {
