@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "headroom/latency_recorder.h"
+#include "../support/headroom_samples.h"
 #include "headroom_figure.h"
 #include "paper_figures.h"
 
@@ -24,25 +24,10 @@ QByteArray read(const QString& path) {
 }
 
 HeadroomMeasurement measured(const std::string& date, int max_us) {
-  HeadroomMeasurement m;
-  m.platform = "robot";
-  m.tool = "benchscope probe";
-  m.provenance.date = date;
-  m.provenance.origin = bs::DataOrigin::Measured;
-  for (const char* name : {"idle", "pipeline@30fps"}) {
-    Phase p;
-    p.name = name;
-    LatencyRecorder r(10'000'000, 1000, 1'000'000);
-    for (int i = 0; i < 500; ++i) r.add(12'000);
-    r.add(max_us * 1000LL);
-    ThreadLatency t = r.result();
-    t.policy = "SCHED_FIFO";
-    t.period_ns = 1'000'000;
-    t.deadline_ns = 1'000'000;
-    p.threads.push_back(t);
-    m.phases.push_back(p);
-  }
-  return m;
+  return bs::test::loop_measurement("robot",
+                                    {{"idle", bs::test::loop_thread(500, 12, {max_us})},
+                                     {"pipeline@30fps", bs::test::loop_thread(500, 12, {max_us})}},
+                                    date);
 }
 
 }  // namespace
