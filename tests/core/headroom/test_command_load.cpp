@@ -51,7 +51,13 @@ class TestCommandLoad : public QObject {
     const LoadReport r = load.stop();
     QVERIFY(!r.achieved_rate);
     for (const std::string& n : r.notes) QVERIFY2(n.find("exited") == std::string::npos, n.c_str());
-    QVERIFY2(load.output().find("started") != std::string::npos, load.output().c_str());
+    // What a command printed is kept: read to its end once it is over.
+    CommandLoad talker({"sh", "-c", "echo said && echo to-stderr >&2"});
+    talker.start();
+    QTRY_VERIFY(talker.has_exited());
+    (void)talker.stop();
+    QVERIFY2(talker.output().find("said\n") != std::string::npos, talker.output().c_str());
+    QVERIFY2(talker.output().find("to-stderr") != std::string::npos, talker.output().c_str());
   }
 
   void early_exit_and_missing_program() {
