@@ -54,7 +54,7 @@ HeadroomView::HeadroomView(QWidget* parent)
       table_(new QTableWidget(this)) {
   chooser_->setToolTip(tr("The headroom measurement shown: platform, tool, what it measured, when"));
   chooser_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  chooser_->setMinimumContentsLength(40);
+  chooser_->setMinimumContentsLength(28);
   deadline_->setRange(1, 10'000'000);
   deadline_->setSuffix(tr(" µs"));
   deadline_->setToolTip(tr("The vertical line: cycles whose wake-up latency lies beyond it are counted per curve"));
