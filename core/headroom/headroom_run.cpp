@@ -138,6 +138,12 @@ RunOutput run_headroom(const RunConfig& config, const std::vector<Load*>& loads,
     m.provenance.measurement = out.power->provenance.measurement;
     m.provenance.sensor = out.power->provenance.sensor;
   }
+  // What was obtained, beside what was asked, in the provenance every export carries.
+  std::string obtained = "yes";
+  for (const Phase& ph : m.phases)
+    for (const ThreadLatency& t : ph.threads)
+      if (!t.realtime()) obtained = "no (" + t.policy + "): not comparable with real-time results";
+  m.provenance.settings.emplace_back("realtime obtained", obtained);
   if (const std::string e = m.bookkeeping_error(); !e.empty()) throw std::logic_error("probe bookkeeping: " + e);
   return out;
 }

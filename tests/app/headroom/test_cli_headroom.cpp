@@ -61,6 +61,11 @@ class TestCliHeadroom : public QObject {
       }
     }
     QVERIFY2(r.err.contains("not comparable with real-time"), r.err.constData());
+    bool said = false;  // the provenance says what was obtained, not only what was asked
+    for (const auto kv : doc["provenance"].toObject()["settings"].toArray())
+      said |= kv.toArray()[0].toString() == "realtime obtained" &&
+              kv.toArray()[1].toString().startsWith("no (SCHED_OTHER)");
+    QVERIFY(said);
     // The stored measurement reads back whole, its books holding.
     bs::Workspace w(ws.toStdString());
     const auto stored = w.headroom_measurements();
