@@ -24,6 +24,8 @@ using json_access::Reader;
 
 // cyclictest's own limit on histogram buckets (HIST_MAX).
 constexpr std::int64_t kMaxBuckets = 1000000;
+// Cycles of one thread: 10^15 is 31 years at 1 MHz; beyond it sums of counts could overflow.
+constexpr std::int64_t kMaxCount = 1'000'000'000'000'000;
 
 // Lines of `text` as (start offset, length without the line end).
 std::vector<std::pair<std::size_t, std::size_t>> line_spans(std::string_view text) {
@@ -181,7 +183,7 @@ ImportBatch parse_document(const json& doc, const Reader& r, const ImportLimits&
       r.fail(ImportErrorCategory::MissingField, at,
              "thread " + key + " is missing (threads are \"0\" to \"" + std::to_string(n - 1) + "\")");
     const json& t = r.require_object(threads.at(key), at);
-    const auto cycles = static_cast<std::uint64_t>(r.require_integer(t, at, "cycles", 0, INT64_MAX));
+    const auto cycles = static_cast<std::uint64_t>(r.require_integer(t, at, "cycles", 0, kMaxCount));
     const bool ran = cycles > 0;
     // cyclictest starts min at 1000000 and max at 0: only a thread that ran has extremes.
     const std::optional<std::int64_t> min_ns =
@@ -208,7 +210,7 @@ ImportBatch parse_document(const json& doc, const Reader& r, const ImportLimits&
         if (ec != std::errc() || ptr != bucket_text.data() + bucket_text.size() || bucket < 0 || bucket >= kMaxBuckets)
           r.fail(ImportErrorCategory::InvalidValue, bat,
                  "bucket \"" + bucket_text + "\" is not a bucket number from 0 to " + std::to_string(kMaxBuckets - 1));
-        counts.emplace_back(bucket, static_cast<std::uint64_t>(r.integer(count, bat, 0, INT64_MAX)));
+        counts.emplace_back(bucket, static_cast<std::uint64_t>(r.integer(count, bat, 0, kMaxCount)));
         highest = std::max(highest, bucket);
       }
       std::int64_t buckets = highest + 1;

@@ -69,7 +69,7 @@ class CyclictestTextParser {
       comment(text, raw.number);
       return;
     }
-    if (in_rows() && row(text, raw.number)) return;
+    if (in_rows() && row(text, raw.number, raw.has_line_end)) return;
     if (auto t = headroom_import::parse_status_line(text, raw.number)) {
       status_[t->index] = *t;
       return;
@@ -150,6 +150,8 @@ class CyclictestTextParser {
       if (!whole_number(w, &v))
         fail(ImportErrorCategory::Syntax, line,
              std::string(what) + ": '" + std::string(w) + "' is not a whole number (the line may be cut)");
+      if (v > kMaxValue || v < -kMaxValue)
+        fail(ImportErrorCategory::InvalidValue, line, std::string(what) + ": " + std::string(w) + " is out of range");
       out.values.push_back(v);
     }
     if (out.values.empty()) fail(ImportErrorCategory::MissingField, line, std::string(what) + " lists no thread");
@@ -188,7 +190,7 @@ class CyclictestTextParser {
 
   // "000004 013847\t003773": bucket, then one count per thread (and -H's sum). Whitespace is accepted for tabs (a
   // paste may have turned them into spaces). False when the line is not a row at all.
-  bool row(std::string_view text, std::size_t line) {
+  bool row(std::string_view text, std::size_t line, bool has_line_end) {
     const std::vector<std::string_view> words = words_of(text);
     if (words.size() < 2 || !all_digits(words[0])) return false;
     Row r;
@@ -199,7 +201,7 @@ class CyclictestTextParser {
                std::to_string(kMaxBuckets) + " buckets");
     for (std::size_t i = 1; i < words.size(); ++i) {
       std::uint64_t v = 0;
-      if (!whole_number(words[i], &v))
+      if (!whole_number(words[i], &v) || v > static_cast<std::uint64_t>(kMaxValue))
         fail(ImportErrorCategory::Syntax, line,
              "histogram row " + std::string(words[0]) + ", column " + std::to_string(i) + ": '" +
                  std::string(words[i]) + "' is not a count");
@@ -211,6 +213,8 @@ class CyclictestTextParser {
         fail(ImportErrorCategory::Syntax, line,
              "histogram bucket " + std::to_string(r.bucket) + " follows bucket " + std::to_string(prev.bucket) +
                  " (line " + std::to_string(prev.line) + "): rows must ascend");
+      // A last row cut while the file was written is dropped; the missing footer then says the file is cut.
+      if (r.counts.size() != prev.counts.size() && !has_line_end) return true;
       if (r.counts.size() != prev.counts.size())
         fail(ImportErrorCategory::Syntax, line,
              "histogram row " + std::to_string(r.bucket) + " has " + std::to_string(r.counts.size()) +
@@ -280,6 +284,8 @@ class CyclictestTextParser {
     for (std::size_t j = 0; j < n; ++j) {
       const int index = static_cast<int>(j);
       const std::int64_t overflows = overflows_->values[j];
+      if (total_ && total_->values[j] < 0)
+        fail(ImportErrorCategory::InvalidValue, total_->line, "thread " + std::to_string(j) + ": a negative total");
       if (overflows < 0)
         fail(ImportErrorCategory::InvalidValue, overflows_->line,
              "thread " + std::to_string(j) + ": a negative overflow count");
@@ -389,6 +395,9 @@ class CyclictestTextParser {
   }
 
   static constexpr std::int64_t kMaxBuckets = 1000000;  // cyclictest's HIST_MAX
+  // Counts and latencies beyond this are not a real run (a latency of 10^15 us is 31 years), and would overflow
+  // on the way to nanoseconds.
+  static constexpr std::int64_t kMaxValue = 1'000'000'000'000'000;
 
   const std::string& file_;
   const ImportLimits& limits_;

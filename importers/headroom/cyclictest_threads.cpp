@@ -36,7 +36,11 @@ std::optional<StatusLine> parse_status_line(std::string_view text, std::size_t l
       !labelled(&t, "Min:", &s.min) || !labelled(&t, "Act:", &s.act) || !labelled(&t, "Avg:", &s.avg) ||
       !labelled(&t, "Max:", &s.max))
     return std::nullopt;
-  if (s.index < 0) return std::nullopt;
+  // Beyond these the line is not a real run, and the values would overflow on the way to nanoseconds.
+  constexpr std::int64_t kMax = 1'000'000'000'000'000;
+  if (s.index < 0 || s.index > 1 << 20 || s.cycles > static_cast<std::uint64_t>(kMax)) return std::nullopt;
+  for (std::int64_t v : {s.interval_us, s.min, s.act, s.avg, s.max})
+    if (v > kMax || v < -kMax) return std::nullopt;
   // Field width of Act (between "Act:" and " Avg:"): %8ld with -N, %5ld without, when the number fits.
   const auto act = text.find("Act:");
   const auto avg = text.find(" Avg:", act);

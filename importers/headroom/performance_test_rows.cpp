@@ -68,6 +68,10 @@ void check_row(const PerfTestRow& r) {
     throw ImportError(ImportErrorCategory::InvalidValue, r.at,
                       "latency min, mean and max are not in order (" + number(r.min_s * 1e3) + ", " +
                           number(r.mean_s * 1e3) + ", " + number(r.max_s * 1e3) + " ms)");
+  if (r.max_s > 1e6 || r.variance_s2 > 1e12)
+    throw ImportError(ImportErrorCategory::InvalidValue, r.at, "a latency beyond 10^6 s is not a measurement");
+  if (r.received > 1e15 || r.sent > 1e15 || (r.latency_n && *r.latency_n > 1e15))
+    throw ImportError(ImportErrorCategory::InvalidValue, r.at, "a sample count beyond 10^15 is not a measurement");
   if (r.variance_s2 < 0) throw ImportError(ImportErrorCategory::InvalidValue, r.at, "a negative latency variance");
   if (r.received < 0 || r.sent < 0 || (r.latency_n && *r.latency_n < 0))
     throw ImportError(ImportErrorCategory::InvalidValue, r.at, "a negative sample count");
@@ -80,6 +84,7 @@ double n_of(const PerfTestRow& r) { return r.latency_n ? *r.latency_n : r.receiv
 CombinedLatency combine_rows(const std::vector<PerfTestRow>& rows, std::optional<double> rate_hz) {
   CombinedLatency c;
   if (rows.empty()) throw ImportError(ImportErrorCategory::MissingField, {}, "no statistics rows");
+  for (const PerfTestRow& r : rows) check_row(r);
   const std::vector<RowKind> kinds = classify(rows, rate_hz);
   // The first row of a log of running totals covers one interval and looks like one: the kind is read from the
   // second row on.
@@ -87,7 +92,6 @@ CombinedLatency combine_rows(const std::vector<PerfTestRow>& rows, std::optional
   const RowKind kind = kinds[from];
   for (std::size_t k = from + 1; k < rows.size(); ++k)
     if (kinds[k] != kind) mixed(rows[k], kinds[k], rows[from], from);
-  for (const PerfTestRow& r : rows) check_row(r);
   c.running_totals = kind == RowKind::RunningTotal;
   if (c.running_totals) {
     for (std::size_t k = 1; k < rows.size(); ++k)

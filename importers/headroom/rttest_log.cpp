@@ -15,7 +15,9 @@ namespace {
 
 using headroom_import::TextLine;
 
-constexpr std::int64_t kMaxLimitNs = 100'000'000;  // the histogram's range: 100 ms in 1 us bins (100,000 bins)
+constexpr std::int64_t kMaxLimitNs = 100'000'000;          // the histogram's range: 100 ms in 1 us bins (100,000 bins)
+constexpr std::int64_t kMaxPeriodNs = 100'000'000'000;     // 100 s: a slower "loop" is not a control loop
+constexpr std::int64_t kMaxLatencyNs = 1'000'000'000'000;  // 1000 s: a larger latency is not a measurement
 
 struct Iteration {
   std::int64_t iteration = 0, timestamp = 0, latency = 0;
@@ -98,6 +100,9 @@ static ImportBatch parse_rttest_log(const std::string& text, const std::string& 
                                                  " of the 5 fields 'iteration timestamp latency minor_pagefaults "
                                                  "major_pagefaults'");
     }
+    if (it.latency > kMaxLatencyNs || it.latency < -kMaxLatencyNs)
+      throw ImportError(ImportErrorCategory::InvalidValue, {file, line.number, 0, "latency"},
+                        "latency " + std::to_string(it.latency) + " ns is beyond 1000 s: not a measurement");
     const auto expected = static_cast<std::int64_t>(rows.size());
     if (it.iteration != expected)
       throw ImportError(ImportErrorCategory::Syntax, {file, line.number, 1, "iteration"},
@@ -121,9 +126,9 @@ static ImportBatch parse_rttest_log(const std::string& text, const std::string& 
 
   // The update period is the timestamps' step (rttest writes iteration x period).
   const std::int64_t period = rows.size() > 1 ? rows[1].timestamp - rows[0].timestamp : 0;
-  if (period < 0 || (rows.size() > 1 && rows[0].timestamp != 0))
+  if (period < 0 || period > kMaxPeriodNs || (rows.size() > 1 && rows[0].timestamp != 0))
     throw ImportError(ImportErrorCategory::InvalidValue, {file, rows[rows.size() > 1 ? 1 : 0].line, 0, "timestamp"},
-                      "timestamps must start at 0 and rise by the update period");
+                      "timestamps must start at 0 and rise by an update period of at most 100 s");
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (rows[i].timestamp != static_cast<std::int64_t>(i) * period)
       throw ImportError(ImportErrorCategory::InvalidValue, {file, rows[i].line, 0, "timestamp"},

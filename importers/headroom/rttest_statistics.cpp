@@ -31,7 +31,7 @@ std::optional<double> value_after(std::string_view text, std::string_view label,
   if (v.ends_with("ns")) v = trim(v.substr(0, v.size() - 2));
   double d = 0;
   const auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), d);
-  if (ec != std::errc() || ptr != v.data() + v.size() || !std::isfinite(d))
+  if (ec != std::errc() || ptr != v.data() + v.size() || !std::isfinite(d) || std::abs(d) > 1e15)
     throw ImportError(ImportErrorCategory::Syntax, {file, line, label.size() + 1, std::string(trim(label))},
                       "'" + std::string(v) + "' is not a number (the line may be cut)");
   return d;
