@@ -12,15 +12,24 @@ LatencyRecorder::LatencyRecorder(std::int64_t limit_ns, std::int64_t bin_ns, std
 void LatencyRecorder::add(std::int64_t latency_ns, std::int64_t computation_ns) noexcept {
   latency_ns = std::max<std::int64_t>(latency_ns, 0);
   computation_ns = std::max<std::int64_t>(computation_ns, 0);
-  // Bins are preallocated, so add() never allocates: safe inside a real-time loop after mlockall.
+  const std::int64_t response = latency_ns + computation_ns;
+  max_response_ns_ = std::max(max_response_ns_, response);
+  record(latency_ns, response > deadline_ns_);
+}
+
+void LatencyRecorder::add_skipped(std::int64_t latency_ns) noexcept {
+  ++skipped_;
+  record(std::max<std::int64_t>(latency_ns, 0), true);
+}
+
+void LatencyRecorder::record(std::int64_t latency_ns, bool missed) noexcept {
+  // Bins are preallocated, so recording never allocates: safe inside a real-time loop after mlockall.
   histogram_.add(latency_ns);
   const double x = static_cast<double>(latency_ns);
   const double delta = x - mean_;
   mean_ += delta / static_cast<double>(histogram_.cycles);
   m2_ += delta * (x - mean_);
-  const std::int64_t response = latency_ns + computation_ns;
-  max_response_ns_ = std::max(max_response_ns_, response);
-  if (response > deadline_ns_) {
+  if (missed) {
     ++misses_;
     longest_run_ = std::max(longest_run_, ++run_);
   } else {

@@ -23,9 +23,8 @@ struct ImportBatch {
   std::vector<Frame> frames;
   std::vector<PipelineRun> pipeline_runs;
   std::vector<DnnRun> dnn_runs;
-  // Control-loop latency results (cyclictest, rttest, performance_test): issue #45.
-  std::vector<headroom::HeadroomMeasurement> headroom;
-  std::vector<std::string> warnings;  // non-fatal, each naming file and place
+  std::vector<headroom::HeadroomMeasurement> headroom;  // control-loop latency (probe, cyclictest, rttest, ...)
+  std::vector<std::string> warnings;                    // non-fatal, each naming file and place
   bool empty() const {
     return runs.empty() && result_sets.empty() && power_traces.empty() && frames.empty() && pipeline_runs.empty() &&
            dnn_runs.empty() && headroom.empty();

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstring>
 
+#include "headroom/headroom_json.h"
 #include "model/provenance_json.h"
 
 namespace bs::store {
@@ -489,6 +490,40 @@ const Table<DnnRun>& dnn_runs_table() {
     s.rule = [](const T& d, const ImportLimits&) { return stage_rule(d.forward); };
     return s;
   }();
+  return t;
+}
+
+const Table<headroom::HeadroomMeasurement>& headroom_table() {
+  using T = headroom::HeadroomMeasurement;
+  using headroom::LatencyKind;
+  // The platform column is the measurement's platform (rename_platform updates it alone); everything else is the
+  // one JSON document, read through the same checks as any untrusted input (headroom/headroom_json.h).
+  static const Table<T> t{
+      "headroom_measurements",
+      "headroom measurement",
+      true,
+      {"import_id"},
+      {text<T>("platform", BS_FIELD(platform)),
+       enumeration<T>("kind", BS_FIELD(kind),
+                      std::vector<std::pair<LatencyKind, const char*>>{{LatencyKind::SystemWakeup, "wakeup"},
+                                                                       {LatencyKind::ApplicationLoop, "loop"},
+                                                                       {LatencyKind::MessageLatency, "message"}}),
+       text<T>("tool", BS_FIELD(tool)),
+       json<T>(
+           "data", BS_SELF, [](const T& m) { return headroom::to_json(m); },
+           [](const nlohmann::json& j, T& m, const ImportLimits&) -> Check {
+             try {
+               T read = headroom::measurement_from_json(j);
+               if (read.kind != m.kind || read.tool != m.tool)
+                 return flaw(C::InvalidValue, "kind/tool columns disagree with the document");
+               read.platform = m.platform;
+               m = std::move(read);
+               return std::nullopt;
+             } catch (const headroom::HeadroomJsonError& e) {
+               return flaw(C::InvalidValue, e.what());
+             }
+           })},
+      {}};
   return t;
 }
 

@@ -95,6 +95,12 @@ struct StoredDnnRun {
   DnnRun run;
 };
 
+struct StoredHeadroom {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  headroom::HeadroomMeasurement measurement;
+};
+
 // An item a workspace holds that breaks the import rules when read back (a value out of range, negative, not
 // finite, of the wrong type, an unknown enumeration, JSON beyond the limits, sample chunks that do not add up).
 // Every read leaves the item out; the workspace names it (CLI: a warning, GUI: a banner) and refuses writes until
@@ -115,8 +121,9 @@ std::string describe(const WorkspaceDamage& d);
 class Workspace {
  public:
   // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary,
-  // 7: dnn inference runs, 8: saved lenses, a log's borrowed voltage channel, phase origins (store/schema_v8.h)
-  static constexpr int kSchemaVersion = 8;
+  // 7: dnn inference runs, 8: saved lenses, a log's borrowed voltage channel, phase origins (store/schema_v8.h),
+  // 9: headroom measurements (control-loop latency histograms per phase and thread)
+  static constexpr int kSchemaVersion = 9;
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -194,8 +201,9 @@ class Workspace {
   // The pixels of a frame stored as a copy, in this host's byte order; empty for a frame kept by reference.
   // Throws WorkspaceError(Corrupt) when the BLOB's size does not match the recorded geometry.
   std::vector<std::uint8_t> frame_pixels(std::int64_t frame_id) const;
-  std::vector<StoredPipelineRun> pipeline_runs() const;  // ordered by platform, then id
-  std::vector<StoredDnnRun> dnn_runs() const;            // ordered by platform, model, input, backend, id
+  std::vector<StoredPipelineRun> pipeline_runs() const;       // ordered by platform, then id
+  std::vector<StoredDnnRun> dnn_runs() const;                 // ordered by platform, model, input, backend, id
+  std::vector<StoredHeadroom> headroom_measurements() const;  // ordered by platform, then id
 
   // Stores runs produced in-process (benchscope-cli pipeline) as one import named `label`, identified by
   // `content_hash` (of their serialised form) like a file; returns the import id.

@@ -57,6 +57,7 @@ void Workspace::Impl::scan(const Workspace& ws) {
   (void)ws.frames();
   (void)ws.pipeline_runs();
   (void)ws.dnn_runs();
+  (void)ws.headroom_measurements();
 }
 
 std::vector<ImportRecord> Workspace::imports() const {
@@ -427,6 +428,20 @@ std::vector<StoredDnnRun> Workspace::dnn_runs() const {
         r.value.forward.stage = "inference";
         out.push_back({r.id, r.keys[0], std::move(r.value)});
       });
+  return out;
+}
+
+std::vector<StoredHeadroom> Workspace::headroom_measurements() const {
+  const Impl& w = *impl_;
+  std::vector<StoredHeadroom> out;
+  store::read_rows(w.conn(), store::headroom_table(), w.limits, "ORDER BY platform, id",
+                   [&](Row<headroom::HeadroomMeasurement>&& r) {
+                     if (r.flaw)
+                       return w.record({"headroom measurement #" + std::to_string(r.id) + " (" + r.value.platform +
+                                            ", " + r.value.tool + ")",
+                                        "headroom_measurements", r.id, r.flaw->category, where(*r.flaw)});
+                     out.push_back({r.id, r.keys[0], std::move(r.value)});
+                   });
   return out;
 }
 

@@ -155,6 +155,14 @@ std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::st
     check();
     dnn_st.insert({import_id}, d);
   }
+  store::Inserter headroom_st(db, store::headroom_table());
+  for (const headroom::HeadroomMeasurement& m : batch.headroom) {
+    check();
+    // A result whose bookkeeping fails would be refused when read back: refuse it now, before anything is stored.
+    if (const std::string e = m.bookkeeping_error(); !e.empty())
+      throw WorkspaceError(WorkspaceError::Kind::Constraint, "headroom measurement (" + m.platform + "): " + e);
+    headroom_st.insert({import_id}, m);
+  }
   check();
   return import_id;
 }

@@ -20,6 +20,7 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/signals.h"
+#include "headroom/bench_headroom.h"
 #include "kernels/bench_ceilings.h"
 #include "kernels/bench_range_stats.h"
 #include "kernels/ceilings/ceiling_cache.h"
@@ -335,7 +336,7 @@ int bench_decimate(const std::vector<std::string>& raw, std::ostream& out) {
 const CommandRegistrar registrar({
     "bench",
     "benchmarks printing figures and ratios (bench kernels | vision | pipeline | tuner | power-csv | decimate | "
-    "range-stats | dnn)",
+    "range-stats | dnn | headroom)",
     "usage: benchscope-cli bench kernels [--runs R] [--workers W] [--isa avx512|avx2|sse4|generic]\n"
     "         [--no-ceilings | --ceilings-only]\n"
     "         (every OpenCL and CUDA device's empirical ceilings are measured first and give the table's\n"
@@ -351,7 +352,7 @@ const CommandRegistrar registrar({
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
     "       benchscope-cli bench range-stats [--samples N] [--updates U]   (the Power tab's selection statistics per\n"
     "         mouse move on an N-sample trace, default 10,000,000, vs a plain rescan of the range)\n" +
-        std::string(kBenchDnnUsage) +
+        std::string(kBenchDnnUsage) + kBenchHeadroomUsage +
         "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
         "  median and mean \xC2\xB1 SD of R\n"
         "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU "
@@ -377,7 +378,7 @@ const CommandRegistrar registrar({
         "  S (default 0.5); per-stage mean \xC2\xB1 SD (n), both throughputs, their ratio and the theoretical bound, "
         "with 1\n"
         "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.\n" +
-        std::string(kBenchDnnHelp),
+        std::string(kBenchDnnHelp) + kBenchHeadroomHelp,
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
       if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
@@ -388,9 +389,10 @@ const CommandRegistrar registrar({
       if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
       if (!args.empty() && args[0] == "range-stats") return bench_range_stats(rest, out);
       if (!args.empty() && args[0] == "dnn") return bench_dnn(rest, out, err);
+      if (!args.empty() && args[0] == "headroom") return bench_headroom(rest, out, err);
       throw UsageError(
           "expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv', "
-          "'bench decimate', 'bench range-stats' or 'bench dnn'");
+          "'bench decimate', 'bench range-stats', 'bench dnn' or 'bench headroom'");
     },
 });
 

@@ -16,6 +16,7 @@
 #include "common/flag_output.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "headroom/headroom_table.h"
 #include "platform/candidates_cli.h"
 #include "platform/platform_args.h"
 #include "workspace/inputs.h"
@@ -56,6 +57,52 @@ nlohmann::json stage_json(const std::optional<Summary>& s) {
   return {{"mean", s->mean}, {"sd", s->sd}, {"n", s->n}};
 }
 
+nlohmann::json loop_json(const headroom::LoopRequirement& r, const std::vector<headroom::LoopVerdict>& loop) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const headroom::LoopVerdict& v : loop) {
+    nlohmann::json checks = nlohmann::json::array();
+    for (const auto& k : v.checks)
+      checks.push_back({{"name", k.name},
+                        {"unit", k.unit},
+                        {"required", k.required},
+                        {"actual", opt(k.actual)},
+                        {"met", k.met},
+                        {"margin", k.margin}});
+    list.push_back({{"platform", v.platform},
+                    {"status", std::string(headroom::to_string(v.status))},
+                    {"reason", v.reason},
+                    {"measurement", v.measurement},
+                    {"realtime", v.realtime},
+                    {"checks", checks}});
+  }
+  return {{"requirement", r.text}, {"described", headroom::describe(r)}, {"platforms", list}};
+}
+
+// The loop requirement per platform, ranked: passing (widest margin first), failing (nearest first), unknown.
+void print_loop(std::ostream& out, const headroom::LoopRequirement& r, const std::vector<headroom::LoopVerdict>& loop) {
+  out << "\ncontrol loop: " << headroom::describe(r) << "\n";
+  std::vector<std::string> header{"platform", "verdict"};
+  for (const auto& k : loop.empty() ? std::vector<ConstraintCheck>{} : loop.front().checks) header.push_back(k.name);
+  header.push_back("measurement / reason");
+  TextTable t(header);
+  for (const headroom::LoopVerdict& v : loop) {
+    std::vector<std::string> row{v.platform, std::string(headroom::to_string(v.status))};
+    for (std::size_t i = 0; i + 3 < header.size(); ++i) {
+      const ConstraintCheck* k = i < v.checks.size() ? &v.checks[i] : nullptr;
+      row.push_back(!k || !k->actual ? "–"
+                                     : format_number("%g", *k->actual) + " " + k->unit + " (" +
+                                           format_number("%+g", -k->margin) + ")");
+    }
+    row.push_back(v.status == headroom::LoopStatus::Pass
+                      ? v.measurement
+                      : v.reason + (v.measurement.empty() ? "" : "; " + v.measurement));
+    t.add(row);
+  }
+  t.print(out);
+  out << "(a platform without a headroom measurement at this rate and load is unknown, never passing; numbers in\n"
+         " brackets are how far over (+) or under (-) each limit; non-real-time measurements are marked)\n";
+}
+
 int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   std::set<std::string> values = platform_value_options();
   values.insert({"--latex", "--csv", "--library", "--candidates-csv", "--candidates-latex"});
@@ -71,7 +118,15 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   const auto pipelines = pipeline_timings(data.pipeline_runs);
   const auto rows = compare_platforms(data.runs, data.power_traces, pipelines, options);
   if (rows.empty()) throw std::runtime_error("no FLOPS runs or power logs to compare");
-  const auto verdicts = recommend(rows, c);
+  auto verdicts = recommend(rows, c);
+  // A control-loop requirement adds its checks to each platform's verdict (no measurement: unknown, never passing).
+  std::vector<headroom::LoopVerdict> loop;
+  if (platform_args.loop) {
+    std::vector<std::string> names;
+    for (const PlatformRow& r : rows) names.push_back(r.platform);
+    loop = headroom::evaluate_loop(*platform_args.loop, data.headroom, names);
+    headroom::apply_loop(verdicts, loop);
+  }
   const ExportTable table = platform_table(
       rows, constrained ? std::span<const PlatformVerdict>(verdicts) : std::span<const PlatformVerdict>());
   if (const auto p = args.value("--latex")) write_file(*p, to_latex(table));
@@ -140,7 +195,9 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                           {"extra_load_w", options.extra_load_w},
                           {"mission", options.mission},
                           {"platforms", list},
-                          {"candidates", with_library ? candidates_json(classes, peaks) : nlohmann::json(nullptr)}}
+                          {"candidates", with_library ? candidates_json(classes, peaks) : nlohmann::json(nullptr)},
+                          {"control_loop",
+                           platform_args.loop ? loop_json(*platform_args.loop, loop) : nlohmann::json(nullptr)}}
                .dump(2)
         << '\n';
     return 0;
@@ -185,6 +242,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     out << '\n';
     print_candidates(out, classes, peaks, constrained);
   }
+  if (platform_args.loop) print_loop(out, *platform_args.loop, loop);
   if (constrained) {
     std::string chosen;
     for (const auto& v : verdicts)
@@ -203,6 +261,7 @@ const CommandRegistrar registrar({
     "                                [--battery PRESET] [--extra-load W] [--mission SPEC] [--supply-volts V]\n"
     "                                [--latex FILE] [--csv FILE] [--json]\n"
     "                                [--library COMPUTERS [--candidates-csv FILE] [--candidates-latex FILE]]\n"
+    "                                [--require-loop SPEC]\n"
     "  One column per platform: best GPU and CPU peak, % of theoretical peak, pipeline timings, mean and max power,\n"
     "  GFLOPS/W (the paper's peak / max power, and peak / mean power), energy per frame, battery runtime\n"
     "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh (frames\n"
@@ -219,7 +278,12 @@ const CommandRegistrar registrar({
     "  candidates: inference results ranked with the own detection and bench dnn results under the same\n"
     "  constraints, within one network, scenario and precision only (what still differs is said in the row), and\n"
     "  compute peaks within one precision. Every row names its origin (measured, reconstructed, published) and\n"
-    "  its source; --candidates-csv/--candidates-latex write the inference table.",
+    "  its source; --candidates-csv/--candidates-latex write the inference table.\n"
+    "  --require-loop \"1kHz,p99.9<=200us,max-consecutive-misses<=1,load=pipeline@30fps\" checks each platform's\n"
+    "  headroom measurement (benchscope-cli headroom): a loop RATE, limits p50|p99|p99.9|p99.99|max<=TIME (ns, us,\n"
+    "  ms), misses<=PERCENT%, max-consecutive-misses<=N, in the phase load=PHASE (absent: every phase, the worst\n"
+    "  decides). Platforms are ranked (passing, failing by how much, unknown); one without a measurement is unknown\n"
+    "  and never passes; the recommendation counts the requirement like the other constraints.",
     out_only<run_platforms>,
 });
 

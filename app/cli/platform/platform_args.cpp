@@ -7,7 +7,7 @@ namespace bs::cli {
 
 const std::set<std::string>& platform_value_options() {
   static const std::set<std::string> names{"--budget",     "--min-fps",      "--min-runtime", "--battery",
-                                           "--extra-load", "--supply-volts", "--mission"};
+                                           "--extra-load", "--supply-volts", "--mission",     "--require-loop"};
   return names;
 }
 
@@ -36,6 +36,13 @@ PlatformArgs parse_platform_args(const ParsedArgs& args) {
   if (args.value("--budget")) p.constraints.power_budget_w = args.number("--budget", 0);
   if (args.value("--min-fps")) p.constraints.min_fps = args.number("--min-fps", 0);
   if (args.value("--min-runtime")) p.constraints.min_runtime_h = args.number("--min-runtime", 0) / 60.0;  // minutes
+  if (const auto loop = args.value("--require-loop")) {
+    try {
+      p.loop = headroom::parse_loop_requirement(*loop);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--require-loop: ") + e.what());
+    }
+  }
   return p;
 }
 

@@ -49,6 +49,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
     for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
     for (auto& d : ws.dnn_runs()) data.dnn_runs.push_back(std::move(d.run));
+    for (auto& h : ws.headroom_measurements()) data.headroom.push_back(std::move(h.measurement));
     warn_damage(ws);  // after the reads: loading the samples may have found more
     add_foreign_sweeps(data);
     return data;
@@ -67,6 +68,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.power_traces.begin(), batch.power_traces.end(), std::back_inserter(data.power_traces));
     std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
     std::move(batch.dnn_runs.begin(), batch.dnn_runs.end(), std::back_inserter(data.dnn_runs));
+    std::move(batch.headroom.begin(), batch.headroom.end(), std::back_inserter(data.headroom));
     std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
   }
   add_foreign_sweeps(data);

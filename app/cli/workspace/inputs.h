@@ -37,6 +37,7 @@ struct LoadedData {
   std::vector<PowerTrace> power_traces;
   std::vector<PipelineRun> pipeline_runs;
   std::vector<DnnRun> dnn_runs;
+  std::vector<headroom::HeadroomMeasurement> headroom;
   std::vector<Frame> frames;  // imported files only: a workspace's frames are read on demand (frame_store.h)
 };
 // A single workspace argument is read from the workspace; otherwise every path is imported in memory.

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// benchscope-cli headroom: will the robot's control loop keep its deadlines while it sees? Runs BenchScope's probe
+// (a periodic thread, the balance loop's stand-in) idle and beside each chosen load, prints the latency
+// distribution and the deadline misses per phase, records power where a sensor exists and stores the measurement.
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/args.h"
+#include "common/command.h"
+#include "common/signals.h"
+#include "common/text_table.h"
+#include "headroom/command_load.h"
+#include "headroom/headroom_args.h"
+#include "headroom/headroom_json.h"
+#include "headroom/headroom_print.h"
+#include "headroom/headroom_run.h"
+#include "headroom/loads/load_spec.h"
+#include "power/power_args.h"
+#include "store/workspace.h"
+#include "vision/frames/frame_file.h"
+
+namespace bs::cli {
+namespace {
+
+using namespace bs::headroom;
+
+std::vector<std::unique_ptr<Load>> loads_from(const ParsedArgs& args) {
+  LoadOptions options;
+  options.pipeline_detector = args.value("--detector").value_or("hog");
+  for (const std::string& path : args.positional) {
+    const vision::FrameFile f = vision::read_frame_file(path);
+    options.frames.push_back(vision::to_8bit(f.mosaic, f.bit_depth));
+    options.frames_note += (options.frames_note.empty() ? "" : ", ") + path;
+  }
+  std::vector<std::unique_ptr<Load>> loads;
+  try {
+    loads = make_loads(args.value("--load").value_or(""), options);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--load: ") + e.what());
+  }
+  if (const auto command = args.value("--load-command")) {
+    try {
+      loads.push_back(std::make_unique<CommandLoad>(split_command(*command)));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--load-command: ") + e.what());
+    }
+  }
+  return loads;
+}
+
+std::string command_line(const std::vector<std::string>& raw) {
+  std::string s = "benchscope-cli headroom";
+  for (const std::string& a : raw) s += " " + a;
+  return s;
+}
+
+int run_headroom_cmd(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  std::set<std::string> valued = kProbeOptions;
+  valued.insert({"--seconds", "--settle", "--load", "--load-command", "--detector", "--platform", "--workspace"});
+  valued.insert(kPowerOptions.begin(), kPowerOptions.end());
+  const ParsedArgs args = parse_args(raw, {"--json", "--no-rt", "--no-idle"}, valued);
+  RunConfig config;
+  config.probe = probe_config(args);
+  config.phase_s = args.number("--seconds", 20);
+  if (!(config.phase_s >= 0.1 && config.phase_s <= 86400)) throw UsageError("--seconds must be from 0.1 to 86400");
+  config.settle_s = args.number("--settle", 1);
+  if (!(config.settle_s >= 0 && config.settle_s <= 600)) throw UsageError("--settle must be from 0 to 600 seconds");
+  config.idle_phase = !args.has("--no-idle");
+  config.platform = args.value("--platform").value_or("");
+  config.command = command_line(raw);
+  std::vector<std::unique_ptr<Load>> owned = loads_from(args);
+  if (!config.idle_phase && owned.empty()) throw UsageError("--no-idle needs at least one --load or --load-command");
+  std::vector<Load*> loads;
+  for (auto& l : owned) loads.push_back(l.get());
+
+  const bool json = args.has("--json");
+  std::ostream& info = json ? err : out;  // --json keeps stdout to the document alone
+  if (config.probe.realtime) {
+    const RealtimeRights rights = probe_realtime_rights();
+    if (!rights.fifo) info << "benchscope-cli: " << rights.explanation << "\n";
+  } else {
+    info << "benchscope-cli: --no-rt: the probe runs as a normal thread; its numbers are not comparable with "
+            "real-time ones\n";
+  }
+  std::unique_ptr<sensors::PowerRecorder> power;
+  if (args.value("--power") && *args.value("--power") != "none")
+    power = make_recorder(*args.value("--power"), args.value("--sysfs-root").value_or("/"),
+                          args.number("--power-interval-ms", 100), err, json);
+
+  // Ctrl+C stops the running phase; progress names each phase as it starts.
+  CancelToken token;
+  std::string last_step;
+  token.set_progress([&](double, std::string_view step) {
+    if (interrupt_token().cancelled()) token.cancel();
+    if (step != last_step) {
+      last_step = std::string(step);
+      err << "benchscope-cli: headroom phase '" << last_step << "'\n";
+    }
+  });
+  RunOutput result;
+  try {
+    result = run_headroom(config, loads, power.get(), &token);
+  } catch (const Cancelled&) {
+    err << "benchscope-cli: headroom cancelled; nothing stored\n";
+    return 1;
+  }
+  const HeadroomMeasurement& m = result.measurement;
+  const nlohmann::json doc = to_json(m, true);
+  if (json)
+    out << doc.dump(2) << "\n";
+  else
+    print_headroom(out, m, "this run");
+  if (const auto ws_path = args.value("--workspace")) {
+    Workspace ws(*ws_path);
+    ImportBatch batch;
+    batch.source_path = "benchscope-cli headroom (" + m.platform + ", " + m.provenance.date + ")";
+    batch.format = "benchscope-headroom-v1";
+    batch.headroom = {m};
+    if (result.power) batch.power_traces.push_back(*result.power);
+    const std::int64_t id = ws.add_import(batch, content_hash(doc.dump()));
+    info << "stored the measurement in " << *ws_path << " (import " << id << ")\n";
+  }
+  return 0;
+}
+
+const CommandRegistrar registrar({
+    "headroom",
+    "control-loop headroom: a periodic probe's wake-up latency and deadline misses, idle and beside loads",
+    "usage: benchscope-cli headroom [--rate HZ] [--seconds S] [--threads N] [--computation-us C] [--deadline-us D]\n"
+    "         [--cpu LIST] [--priority P] [--no-rt] [--limit-us L] [--load SPECS] [--load-command \"CMD ...\"]\n"
+    "         [--detector hog|none|mobilenet-ssd|yolo-n] [--settle S] [--no-idle] [FRAME...]\n"
+    "         [--platform NAME] [--workspace WS] [--json] [--power SENSOR|auto|none] [--power-interval-ms M]\n"
+    "         [--sysfs-root DIR]\n"
+    "  Measures whether a control loop keeps its deadlines while the robot's other work runs: the probe is measured\n"
+    "  for --seconds S (default 20) idle, then beside each load in turn (each started --settle S seconds, default 1,\n"
+    "  before its phase). --no-idle skips the idle phase.\n" +
+        std::string(kProbeUsage) +
+        "  Loads (--load, comma-separated; the same text names the phase):\n"
+        "    pipeline[@FPS]       BenchScope's vision pipeline paced at FPS (default 30) on the sample frame or the\n"
+        "                         FRAME files (1280x1024 mosaics), detection stage --detector (default hog)\n"
+        "    dnn[:NET][@RATE]     the detector alone: mobilenet-ssd (default), yolo-n (random weights: their cost),\n"
+        "                         or hog, back to back or paced at RATE inferences/s\n"
+        "    flops[:W]            the FLOPS kernel (rotation, CPU SIMD) with W workers (default threads x 32)\n"
+        "  --load-command runs an external command as the last load (no shell; e.g. \"stress-ng --cpu 2\n"
+        "  --metrics-brief\"), stopped with SIGINT; stress-ng's bogo ops/s is its achieved rate.\n"
+        "  Prints per phase and thread: rate, p50 / p99 / p99.9 / p99.99 / max latency (nearest rank over 1 us bins),\n"
+        "  misses (% and count), the longest run of consecutive misses, n cycles, the load's achieved rate, mean\n"
+        "  power, the policy obtained, and the kernel's real-time facts (release, PREEMPT_RT, isolcpus, nohz_full,\n"
+        "  governor). --json prints the measurement (benchscope-headroom JSON with each thread's summary).\n"
+        "  --workspace WS stores it (with the power trace) for the Headroom and Platforms views.\n" +
+        kPowerUsage,
+    run_headroom_cmd,
+});
+
+}  // namespace
+}  // namespace bs::cli

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The control-loop requirement: its syntax and errors, and the verdicts on synthetic measurements whose percentiles
+// and miss runs are known by construction (pass, fail by a known amount, unknown without a measurement, unknown
+// for a wake-up-only measurement), and how it changes the recommendation.
+#include <QTest>
+
+#include "headroom/latency_recorder.h"
+#include "headroom/loop_requirement.h"
+
+using namespace bs::headroom;
+
+namespace {
+
+// A 1 kHz application loop on `platform`: 1000 cycles at `base_us`, with `late` cycles at `late_us` in a row
+// (deadline 1000 us) in the phase `phase` and an idle phase of 1000 cycles at 5 us.
+HeadroomMeasurement loop(const std::string& platform, const std::string& phase, int base_us, int late, int late_us,
+                         const std::string& date = "2026-11-28T10:00:00Z") {
+  HeadroomMeasurement m;
+  m.platform = platform;
+  m.kind = LatencyKind::ApplicationLoop;
+  m.tool = "benchscope probe";
+  m.provenance.date = date;
+  for (const std::string& name : {std::string("idle"), phase}) {
+    LatencyRecorder r(10'000'000, 1000, 1'000'000);
+    for (int i = 0; i < 1000; ++i) r.add((name == "idle" ? 5 : base_us) * 1000LL);
+    if (name != "idle")
+      for (int i = 0; i < late; ++i) r.add(late_us * 1000LL);
+    ThreadLatency t = r.result();
+    t.policy = "SCHED_FIFO";
+    t.priority = 80;
+    t.period_ns = 1'000'000;
+    t.deadline_ns = 1'000'000;
+    Phase p;
+    p.name = name;
+    p.threads.push_back(t);
+    m.phases.push_back(p);
+  }
+  return m;
+}
+
+}  // namespace
+
+class TestLoopRequirement : public QObject {
+  Q_OBJECT
+ private slots:
+  void parses_the_syntax() {
+    const LoopRequirement r =
+        parse_loop_requirement("1kHz, p99.9<=200us,max-consecutive-misses<=1,load=pipeline@30fps");
+    QCOMPARE(r.rate_hz, 1000.0);
+    QCOMPARE(*r.p999_ns, 200'000LL);
+    QCOMPARE(*r.max_consecutive_misses, std::uint64_t{1});
+    QCOMPARE(QString::fromStdString(r.load), QString("pipeline@30fps"));
+    QVERIFY(!r.p99_ns);
+    QCOMPARE(QString::fromStdString(describe(r)),
+             QString("1 kHz, p99.9 <= 200 us, max consecutive misses <= 1, beside pipeline@30fps"));
+    const LoopRequirement s = parse_loop_requirement("500Hz,max<=0.5ms,misses<=0.1%");
+    QCOMPARE(s.rate_hz, 500.0);
+    QCOMPARE(*s.max_ns, 500'000LL);
+    QCOMPARE(*s.max_miss_percent, 0.1);
+  }
+
+  void rejects_what_it_cannot_read() {
+    const auto error = [](const std::string& text) {
+      try {
+        parse_loop_requirement(text);
+      } catch (const std::invalid_argument& e) {
+        return QString(e.what());
+      }
+      return QString();
+    };
+    QVERIFY(error("p99<=200us").contains("no loop rate"));
+    QVERIFY(error("1kHz").contains("no limit to check"));
+    QVERIFY(error("1kHz,p99<=200").contains("'200' needs a unit"));
+    QVERIFY(error("1kHz,p98<=2us").contains("unknown term 'p98'"));
+    QVERIFY(error("1kHz,2kHz,p99<=2us").contains("the rate is given twice"));
+    QVERIFY(error("1kHz,max-consecutive-misses<=x").contains("not a whole number"));
+  }
+
+  void verdicts_pass_fail_unknown() {
+    // robot: p99.9 at 20 us (1000 of 1001 cycles at 20 us), one late cycle at 900 us within the deadline: passes.
+    // nuc: 3 late cycles in a row at 1500 us: p99.9 of 1003 cycles = rank 1002 -> 1500 us; run of 3: fails.
+    // jetson: no measurement; pi: only a cyclictest (system wake-up) result: both unknown.
+    std::vector<HeadroomMeasurement> ms = {loop("robot", "pipeline@30fps", 20, 1, 900),
+                                           loop("nuc", "pipeline@30fps", 30, 3, 1500)};
+    HeadroomMeasurement wake = loop("pi", "pipeline@30fps", 10, 0, 0);
+    wake.kind = LatencyKind::SystemWakeup;
+    ms.push_back(wake);
+    const LoopRequirement r = parse_loop_requirement("1kHz,p99.9<=200us,max-consecutive-misses<=1,load=pipeline@30fps");
+    const std::vector<LoopVerdict> v = evaluate_loop(r, ms, {"jetson", "robot", "nuc"});
+    QCOMPARE(v.size(), std::size_t{4});
+    QCOMPARE(QString::fromStdString(v[0].platform), QString("robot"));
+    QCOMPARE(v[0].status, LoopStatus::Pass);
+    QCOMPARE(*v[0].checks[0].actual, 20.0);
+    QCOMPARE(v[0].checks[0].margin, 180.0);
+    QCOMPARE(QString::fromStdString(v[1].platform), QString("nuc"));
+    QCOMPARE(v[1].status, LoopStatus::Fail);
+    QCOMPARE(*v[1].checks[0].actual, 1500.0);
+    QCOMPARE(*v[1].checks[1].actual, 3.0);
+    // The worse term by factor: p99.9 is 7.5x its limit, the run 3x: the reason names p99.9.
+    QCOMPARE(QString::fromStdString(v[1].reason),
+             QString("p99.9 (pipeline@30fps) 1300 us over the limit of 200 us (7.50x)"));
+    QCOMPARE(v[2].status, LoopStatus::Unknown);
+    QCOMPARE(v[3].status, LoopStatus::Unknown);
+    const auto reason_of = [&](const char* platform) {
+      for (const LoopVerdict& x : v)
+        if (x.platform == platform) return QString::fromStdString(x.reason);
+      return QString();
+    };
+    QCOMPARE(reason_of("jetson"), QString("no headroom measurement"));
+    QVERIFY(reason_of("pi").startsWith("only system wake-up"));
+    // A phase that was not measured, and a rate that was not: unknown, saying which.
+    QCOMPARE(QString::fromStdString(evaluate_loop(parse_loop_requirement("1kHz,p99<=1ms,load=dnn"), ms, {})[0].reason),
+             QString("no headroom measurement beside dnn"));
+    QCOMPARE(QString::fromStdString(evaluate_loop(parse_loop_requirement("2kHz,p99<=1ms"), ms, {})[0].reason),
+             QString("no headroom measurement at this rate"));
+  }
+
+  void misses_without_runs_are_unknown() {
+    HeadroomMeasurement m = loop("imported", "pipeline@30fps", 20, 0, 0);
+    for (Phase& p : m.phases) p.threads[0].misses.reset();  // a histogram-only source
+    const std::vector<LoopVerdict> v =
+        evaluate_loop(parse_loop_requirement("1kHz,p99<=100us,max-consecutive-misses<=1"), std::vector{m}, {});
+    QCOMPARE(v[0].status, LoopStatus::Unknown);
+    QVERIFY(*v[0].checks[0].actual <= 100);  // the percentile is known and passes; the run term is not
+    QVERIFY(!v[0].checks[1].actual);
+  }
+
+  void recommendation_counts_the_loop() {
+    std::vector<bs::PlatformVerdict> verdicts(3);
+    verdicts[0].platform = "nuc";  // most compute, fails the loop
+    verdicts[0].ranked_flops = 5e12;
+    verdicts[1].platform = "robot";
+    verdicts[1].ranked_flops = 1e12;
+    verdicts[2].platform = "jetson";  // no measurement: unknown, never passing
+    verdicts[2].ranked_flops = 3e12;
+    for (auto& v : verdicts) v.meets_all = true;
+    verdicts[0].recommended = true;
+    const std::vector<HeadroomMeasurement> ms = {loop("robot", "pipeline@30fps", 20, 1, 900),
+                                                 loop("nuc", "pipeline@30fps", 30, 3, 1500)};
+    const auto loop_v =
+        evaluate_loop(parse_loop_requirement("1kHz,p99.9<=200us,load=pipeline@30fps"), ms, {"nuc", "robot", "jetson"});
+    apply_loop(verdicts, loop_v);
+    QVERIFY(!verdicts[0].meets_all);
+    QVERIFY(verdicts[1].meets_all);
+    QVERIFY(!verdicts[2].meets_all);
+    QVERIFY(verdicts[1].recommended);
+    QVERIFY(!verdicts[0].recommended && !verdicts[2].recommended);
+    QVERIFY(QString::fromStdString(verdicts[2].checks.back().name).contains("no headroom measurement"));
+  }
+};
+
+QTEST_APPLESS_MAIN(TestLoopRequirement)
+#include "test_loop_requirement.moc"
