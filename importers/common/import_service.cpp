@@ -48,7 +48,7 @@ int ImportResult::count(FileOutcome::Kind kind) const {
 }
 
 std::string describe_batch(const ImportBatch& b) {
-  std::string s = b.runs.empty() && !b.frames.empty()
+  std::string s = b.runs.empty() && (!b.frames.empty() || !b.headroom.empty())
                       ? std::string()
                       : std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
   const auto count = [](std::size_t n, const char* one, const char* many) {
@@ -64,6 +64,12 @@ std::string describe_batch(const ImportBatch& b) {
   if (!b.pipeline_runs.empty())
     s += ", " + std::to_string(b.pipeline_runs.size()) +
          (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
+  for (const headroom::HeadroomMeasurement& m : b.headroom) {
+    std::size_t threads = 0;
+    for (const headroom::Phase& p : m.phases) threads = std::max(threads, p.threads.size());
+    s += std::string(s.empty() ? "" : ", ") + "control-loop latency: " + std::string(headroom::to_string(m.kind)) +
+         ", " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+  }
   return s + " (" + b.format + ")";
 }
 
@@ -147,6 +153,7 @@ std::vector<std::string> workspace_platforms(const Workspace& ws) {
   for (const DeviceRecord& d : ws.devices()) add(d.platform);
   for (const StoredPowerTrace& t : ws.power_trace_summaries()) add(t.trace.platform);
   for (const StoredPipelineRun& p : ws.pipeline_runs()) add(p.run.platform);
+  for (const StoredHeadroom& h : ws.headroom_measurements()) add(h.measurement.platform);
   return out;
 }
 
@@ -167,6 +174,27 @@ void attach_log_platforms(ImportBatch& batch, const std::string& path, const std
       how = guess.how;
     }
     t.platform = chosen;
+    o.summary += ", platform '" + chosen + "' (" + how + ")";
+  }
+  // A latency file (cyclictest, rttest, performance_test) names its machine rarely: asked like a power log.
+  for (headroom::HeadroomMeasurement& m : batch.headroom) {
+    if (!blank_platform(m.platform)) continue;
+    const std::string label = m.tool + " result " + std::filesystem::path(path).filename().string();
+    const LogPlatformGuess guess = infer_platform(m.provenance, label, known);
+    std::string chosen = options.log_platform;
+    std::string how = "given with --platform";
+    if (blank_platform(chosen) && options.choose_log_platform) {
+      PowerTrace named;  // the chooser shows the log's label; a latency result is named the same way
+      named.label = label;
+      named.provenance = m.provenance;
+      chosen = options.choose_log_platform(named, path, guess.platform, known);
+      how = "chosen at import";
+    }
+    if (blank_platform(chosen)) {
+      chosen = guess.platform;
+      how = guess.how;
+    }
+    m.platform = chosen;
     o.summary += ", platform '" + chosen + "' (" + how + ")";
   }
 }
@@ -203,12 +231,16 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
         mark_duplicate(o, twin->second, {});
         continue;
       }
-      if (!batch->power_traces.empty() && (!target.exists() || !target.earlier(o.content_hash))) {
+      if ((!batch->power_traces.empty() || !batch->headroom.empty()) &&
+          (!target.exists() || !target.earlier(o.content_hash))) {
         std::vector<std::string> known;
         if (target.exists()) known = workspace_platforms(target.ws());
         for (const auto& [k, b] : pending)  // logs earlier in this import, not stored yet
           for (const PowerTrace& t : b.power_traces)
             if (std::find(known.begin(), known.end(), t.platform) == known.end()) known.push_back(t.platform);
+        for (const auto& [k, b] : pending)
+          for (const headroom::HeadroomMeasurement& m : b.headroom)
+            if (std::find(known.begin(), known.end(), m.platform) == known.end()) known.push_back(m.platform);
         attach_log_platforms(*batch, o.path, known, options, o);
       }
       if (!each_file) {

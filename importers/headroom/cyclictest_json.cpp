@@ -280,11 +280,13 @@ ImportBatch parse_document(const json& doc, const Reader& r, const ImportLimits&
   if (const json* sysinfo = r.optional(doc, "sysinfo")) {
     r.require_object(*sysinfo, "/sysinfo");
     m.kernel = kernel_of(r, *sysinfo, "/sysinfo");
-    m.provenance.host = r.optional_string(*sysinfo, "/sysinfo", "nodename");
+    // "[redacted]" and the like: a host name someone removed is no platform name.
+    if (std::string host = r.optional_string(*sysinfo, "/sysinfo", "nodename"); !host.starts_with("["))
+      m.provenance.host = std::move(host);
     const std::string sysname = r.optional_string(*sysinfo, "/sysinfo", "sysname");
     m.provenance.os = sysname + (m.kernel.release.empty() ? "" : " " + m.kernel.release);
     if (const std::string machine = r.optional_string(*sysinfo, "/sysinfo", "machine"); !machine.empty())
-      settings.emplace_back("machine", machine);
+      settings.emplace_back("architecture", machine);
   }
   ImportBatch batch = headroom_import::batch_of(std::move(m), r.file());
   batch.warnings = std::move(warnings);
