@@ -28,6 +28,9 @@
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/screen_fit.h"
 #include "device_palette.h"
+#include "headroom/headroom_json.h"
+#include "headroom/headroom_run_panel.h"
+#include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
 #include "peaks/flops_plot.h"
 #include "peaks/peak_table.h"
@@ -106,6 +109,27 @@ MainWindow::MainWindow(QWidget* parent)
       workspace_->add_import(batch, content_hash(json));
     } catch (const WorkspaceError& e) {
       QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
+    }
+    reload();
+  });
+  // Whether the control loop keeps its deadlines while the vision runs: the probe idle and beside each load.
+  headroom_ = new HeadroomView(this);
+  tab(headroom_, tr("Headroom"),
+      tr("Control-loop headroom: a periodic loop's wake-up latency and deadline misses, idle and beside the vision "
+         "pipeline, the detector, the kernels or a command"));
+  connect(headroom_->run_panel(), &HeadroomRunPanel::measured, this, [this](const headroom::RunOutput& out) {
+    if (!workspace_) new_untitled_workspace();
+    try {
+      const headroom::HeadroomMeasurement& m = out.measurement;
+      ImportBatch batch;
+      batch.source_path = "Headroom tab (" + m.platform + ", " + m.provenance.date + ")";
+      batch.format = "benchscope-headroom-v1";
+      batch.headroom = {m};
+      if (out.power) batch.power_traces.push_back(*out.power);  // stored and removed with the measurement
+      workspace_->add_import(batch, content_hash(headroom::to_json(m).dump()));
+      work_since_open_ = true;
+    } catch (const WorkspaceError& e) {
+      QMessageBox::critical(this, tr("Cannot store the measurement"), QString::fromUtf8(e.what()));
     }
     reload();
   });
@@ -344,6 +368,14 @@ void MainWindow::reload() {
   platforms_->set_result_sets(sets);  // imported MLPerf LoadGen results are own candidates
   roofline_->set_data(all, std::move(sets), std::move(device_colors), pipeline_runs());
   frames_->set_workspace(workspace_.get());
+  {
+    std::vector<StoredHeadroom> stored =
+        workspace_ ? workspace_->headroom_measurements() : std::vector<StoredHeadroom>{};
+    std::vector<headroom::HeadroomMeasurement> measurements;
+    for (const StoredHeadroom& s : stored) measurements.push_back(s.measurement);
+    platforms_->set_headroom(std::move(measurements));  // the Platforms tab's control-loop requirement
+    headroom_->set_measurements(std::move(stored));
+  }
   feed_lens_tab();
   refresh_views();
   show_damage();

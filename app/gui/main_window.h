@@ -38,6 +38,7 @@ class FramesView;
 class EfficiencyView;
 class BatteryView;
 class LensTab;
+class HeadroomView;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -68,6 +69,7 @@ class MainWindow : public QMainWindow {
   PipelineView* pipeline_view() const { return pipeline_; }
   EfficiencyView* efficiency_view() const { return efficiency_; }
   BatteryView* battery_view() const { return battery_; }
+  HeadroomView* headroom_view() const { return headroom_; }
   LensTab* lens_tab() const { return lens_; }  // the lead feeds it a capture: lens_tab()->set_fisheye(bgr, name)
   const Workspace* workspace() const { return workspace_.get(); }
   QUndoStack* edits() const { return edits_; }  // Edit > Undo's steps (workspace edits)
@@ -166,6 +168,7 @@ class MainWindow : public QMainWindow {
   DamageBanner* damage_banner_ = nullptr;
   QToolBar* damage_bar_ = nullptr;  // holds the banner above the views; hidden while nothing is damaged
   LensTab* lens_ = nullptr;
+  HeadroomView* headroom_ = nullptr;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
   QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens
   QAction* undo_edit_ = nullptr;

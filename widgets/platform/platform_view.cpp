@@ -130,6 +130,16 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   use_runtime_->setToolTip(tr("Constant-power battery runtime at the mean power plus the parallel load"));
   extra_load_->setToolTip(
       tr("Load in parallel with the computer, e.g. the robot's servos (the paper's robot: up to 225 W)"));
+  use_loop_ = new QCheckBox(tr("Control loop:"), this);
+  loop_ = new QLineEdit(QStringLiteral("1kHz,p99.9<=200us,max-consecutive-misses<=1,load=pipeline@30fps"), this);
+  loop_->setMinimumWidth(260);
+  use_loop_->setToolTip(
+      tr("A control-loop requirement checked against each platform's headroom measurement (the Headroom tab, "
+         "benchscope-cli headroom): a platform without one is unknown and never passes"));
+  loop_->setToolTip(
+      tr("RATE (1kHz, 500Hz), limits p50|p99|p99.9|p99.99|max<=TIME (ns, us, ms), misses<=PERCENT%, "
+         "max-consecutive-misses<=N, and load=PHASE (pipeline@30fps, dnn:mobilenet-ssd, flops, idle); "
+         "without load= every phase must pass"));
   auto* export_tex = new QPushButton(tr("Export LaTeX…"), this);
   auto* export_csv = new QPushButton(tr("Export CSV…"), this);
 
@@ -151,6 +161,8 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   mission_label->setToolTip(mission_->toolTip());
   battery_row->addWidget(mission_label);
   battery_row->addWidget(mission_, 1);
+  battery_row->addWidget(use_loop_);
+  battery_row->addWidget(loop_, 1);
 
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
@@ -191,6 +203,8 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
     recompute();
   });
   connect(mission_, &QComboBox::activated, this, &PlatformView::recompute);
+  connect(use_loop_, &QCheckBox::toggled, this, &PlatformView::recompute);
+  connect(loop_, &QLineEdit::editingFinished, this, &PlatformView::recompute);
   connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::recompute);
   connect(export_tex, &QPushButton::clicked, this, [this] { export_table(true); });
   connect(export_csv, &QPushButton::clicked, this, [this] { export_table(false); });
@@ -360,10 +374,36 @@ void PlatformView::recompute() {
     rows_ = compare_platforms(runs_, traces_->traces, pipelines_, o);
   }
   verdicts_ = recommend(rows_, constraints());
+  // The control loop's checks join each verdict: no headroom measurement is unknown, never passing.
+  loop_verdicts_.clear();
+  QString loop_text;
+  if (use_loop_->isChecked()) {
+    try {
+      const headroom::LoopRequirement r = headroom::parse_loop_requirement(loop_->text().toStdString());
+      std::vector<std::string> names;
+      for (const PlatformRow& row : rows_) names.push_back(row.platform);
+      loop_verdicts_ = headroom::evaluate_loop(r, headroom_, names);
+      headroom::apply_loop(verdicts_, loop_verdicts_);
+      QStringList parts;
+      for (const headroom::LoopVerdict& v : loop_verdicts_) {
+        QString part = QStringLiteral("%1 <b>%2</b>")
+                           .arg(QString::fromStdString(v.platform).toHtmlEscaped(),
+                                QString::fromStdString(std::string(headroom::to_string(v.status))));
+        if (!v.reason.empty()) part += QStringLiteral(" (%1)").arg(QString::fromStdString(v.reason).toHtmlEscaped());
+        if (!v.measurement.empty() && !v.realtime) part += tr(" ⚠ non-real-time measurement");
+        parts << part;
+      }
+      loop_text = tr("<br>Control loop %1: %2.")
+                      .arg(QString::fromStdString(headroom::describe(r)).toHtmlEscaped(), parts.join("; "));
+      loop_->setStyleSheet(QString());
+    } catch (const std::invalid_argument& e) {
+      loop_text = tr("<br><span style='color:#b00020'>Control loop ignored: %1</span>")
+                      .arg(QString::fromUtf8(e.what()).toHtmlEscaped());
+      loop_->setStyleSheet(QStringLiteral("color:#b00020"));
+    }
+  }
   fill_table();
   candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o);
-  const Constraints c = constraints();
-  const bool constrained = c.power_budget_w || c.min_fps || c.min_runtime_h;
   const QString hidden =
       empty_columns_.isEmpty()
           ? QString()
@@ -371,7 +411,7 @@ void PlatformView::recompute() {
   if (rows_.empty()) {
     summary_->setText(
         tr("No FLOPS runs or power logs in the workspace yet: import some (File ▸ Import) to compare platforms."));
-  } else if (!constrained) {
+  } else if (!constrained()) {
     summary_->setText(tr("Most compute among the platforms with a power log: <b>%1</b>. Set constraints above to see "
                          "which platforms meet them.")
                           .arg(recommendation().isEmpty() ? tr("none") : recommendation()));
@@ -415,14 +455,42 @@ void PlatformView::recompute() {
   } else if (o.extra_load_w > 0) {
     battery += tr(", computer + %1 W parallel load").arg(o.extra_load_w, 0, 'f', 1);
   }
-  summary_->setText(summary_->text() + battery + "." + hidden + left_out);
+  summary_->setText(summary_->text() + battery + "." + loop_text + hidden + left_out);
+}
+
+bool PlatformView::constrained() const {
+  const Constraints c = constraints();
+  return c.power_budget_w || c.min_fps || c.min_runtime_h || (use_loop_->isChecked() && !loop_->text().isEmpty());
+}
+
+std::optional<headroom::LoopRequirement> PlatformView::loop_requirement() const {
+  if (!use_loop_->isChecked()) return std::nullopt;
+  try {
+    return headroom::parse_loop_requirement(loop_->text().toStdString());
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+void PlatformView::set_headroom(std::vector<headroom::HeadroomMeasurement> measurements) {
+  headroom_ = std::move(measurements);
+  recompute();
+}
+
+void PlatformView::set_loop_requirement(const QString& text) {
+  {
+    const QSignalBlocker b1(loop_), b2(use_loop_);
+    loop_->setText(text);
+    use_loop_->setChecked(!text.isEmpty());
+  }
+  recompute();
 }
 
 void PlatformView::fill_table() {
-  const bool constrained = constraints().power_budget_w || constraints().min_fps || constraints().min_runtime_h;
+  const bool with_verdicts = constrained();
   const ExportTable t = platform_table(
-      rows_, constrained ? std::span<const PlatformVerdict>(verdicts_) : std::span<const PlatformVerdict>());
-  const auto ids = platform_table_columns(constrained);
+      rows_, with_verdicts ? std::span<const PlatformVerdict>(verdicts_) : std::span<const PlatformVerdict>());
+  const auto ids = platform_table_columns(with_verdicts);
   table_->setSortingEnabled(false);
   table_->clear();
   table_->setColumnCount(static_cast<int>(t.header.size()));
@@ -457,7 +525,7 @@ void PlatformView::fill_table() {
   // The verdict sits next to the platform's name (the table's own order puts it last, which is off-screen on a
   // small window): view column c shows table column order[c].
   std::vector<std::size_t> order{0};
-  if (constrained && t.header.size() >= 2)
+  if (with_verdicts && t.header.size() >= 2)
     for (std::size_t c = t.header.size() - 2; c < t.header.size(); ++c) order.push_back(c);
   // Then the columns a choice rests on (peaks, mean power, GFLOPS/W, battery runtime), so they show without
   // scrolling on a 1280x800 window (issue #32.7); the pipeline and energy details follow.
@@ -478,7 +546,7 @@ void PlatformView::fill_table() {
       h->setToolTip(header_tips[order[static_cast<std::size_t>(c)]]);
   for (int r = 0; r < static_cast<int>(t.rows.size()); ++r) {
     const PlatformVerdict* verdict =
-        constrained && r < static_cast<int>(verdicts_.size()) ? &verdicts_[static_cast<std::size_t>(r)] : nullptr;
+        with_verdicts && r < static_cast<int>(verdicts_.size()) ? &verdicts_[static_cast<std::size_t>(r)] : nullptr;
     // A platform that fails a constraint is dimmed, with the reason on every cell of its row.
     const bool fails = verdict && !verdict->meets_all;
     const QString fail_reason =
@@ -554,9 +622,9 @@ void PlatformView::export_table(bool latex) {
   const QString path = QFileDialog::getSaveFileName(this, latex ? tr("Export LaTeX table") : tr("Export CSV table"),
                                                     latex ? "platforms.tex" : "platforms.csv", filter);
   if (path.isEmpty()) return;
-  const bool constrained = constraints().power_budget_w || constraints().min_fps || constraints().min_runtime_h;
+  const bool with_verdicts = constrained();
   const ExportTable t = platform_table(
-      rows_, constrained ? std::span<const PlatformVerdict>(verdicts_) : std::span<const PlatformVerdict>());
+      rows_, with_verdicts ? std::span<const PlatformVerdict>(verdicts_) : std::span<const PlatformVerdict>());
   const std::string text = latex ? to_latex(t) : to_csv(t);
   QFile f(path);
   if (!f.open(QIODevice::WriteOnly) ||

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "analysis/platform/platform_comparison.h"
+#include "headroom/loop_requirement.h"
 #include "model/dnn_run.h"
 #include "power/shared_traces.h"
 #include "store/battery_preset_store.h"
@@ -13,6 +14,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLineEdit;
 class QTableWidget;
 
 namespace bs {
@@ -64,6 +66,13 @@ class PlatformView : public QWidget {
   // What the controls say now (battery, extra load; constraints), for the report.
   ComparisonOptions options() const;
   Constraints constraints() const;
+  // Headroom measurements (benchscope-cli headroom, the Headroom tab, imports) for the control-loop requirement.
+  void set_headroom(std::vector<headroom::HeadroomMeasurement> measurements);
+  // The control-loop requirement (headroom/loop_requirement.h syntax); empty: none. Unknown is never passing.
+  void set_loop_requirement(const QString& text);
+  QCheckBox* loop_check() const { return use_loop_; }
+  QLineEdit* loop_edit() const { return loop_; }
+  const std::vector<headroom::LoopVerdict>& loop_verdicts() const { return loop_verdicts_; }
 
  signals:
   // The user asked where a cell's number came from (double-click): the platform and the column id.
@@ -74,6 +83,8 @@ class PlatformView : public QWidget {
   void fill_table();
   void export_table(bool latex);
   void fill_battery_choices();
+  bool constrained() const;
+  std::optional<headroom::LoopRequirement> loop_requirement() const;  // null when off or mistyped
 
   QCheckBox *use_budget_, *use_fps_, *use_runtime_;
   QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;
@@ -97,6 +108,10 @@ class PlatformView : public QWidget {
   std::vector<PlatformRow> rows_;
   std::vector<PlatformVerdict> verdicts_;
   QStringList empty_columns_;  // header texts of the columns hidden for lack of data
+  QCheckBox* use_loop_ = nullptr;
+  QLineEdit* loop_ = nullptr;
+  std::vector<headroom::HeadroomMeasurement> headroom_;
+  std::vector<headroom::LoopVerdict> loop_verdicts_;
 };
 
 }  // namespace bs::ui

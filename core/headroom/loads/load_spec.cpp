@@ -114,4 +114,10 @@ std::string canonical_load_name(const std::string& token) {
   return p.arg.empty() ? "flops" : "flops:" + p.arg;
 }
 
+std::vector<std::string> canonical_load_names(const std::string& specs) {
+  std::vector<std::string> names;
+  for (const std::string& t : tokens(specs)) names.push_back(canonical_load_name(t));
+  return names;
+}
+
 }  // namespace bs::headroom

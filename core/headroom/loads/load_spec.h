@@ -28,5 +28,7 @@ std::vector<std::unique_ptr<Load>> make_loads(const std::string& specs, const Lo
 // Canonical phase name of one token without building the load ("pipeline" -> "pipeline@30fps"); throws like
 // make_loads.
 std::string canonical_load_name(const std::string& token);
+// The phase names of every token of `specs`, checked (throws like make_loads) without building anything.
+std::vector<std::string> canonical_load_names(const std::string& specs);
 
 }  // namespace bs::headroom

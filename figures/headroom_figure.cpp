@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "headroom_figure.h"
+
+#include <qcustomplot.h>
+
+#include <algorithm>
+
+#include "device_palette.h"
+
+namespace bs::ui {
+namespace {
+
+constexpr double kFloor = 0.5;  // an empty bin is drawn on the axis floor: a log axis has no 0
+
+Qt::PenStyle thread_style(int thread) {
+  static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
+  return styles[static_cast<std::size_t>(thread) % 4];
+}
+
+QString us(std::int64_t ns) {
+  const double v = static_cast<double>(ns) / 1000.0;
+  return ns % 1000 == 0 || v >= 100 ? QString::number(v, 'f', 0) : QString::number(v, 'f', 1);
+}
+
+}  // namespace
+
+std::vector<HeadroomCurve> headroom_curves(const headroom::HeadroomMeasurement& m, const QString& prefix) {
+  std::vector<HeadroomCurve> out;
+  int phase_index = 0;
+  for (const headroom::Phase& p : m.phases) {
+    for (const headroom::ThreadLatency& t : p.threads) {
+      QString label = prefix + QString::fromStdString(p.name);
+      if (p.threads.size() > 1 || t.cpu)
+        label += QStringLiteral(" · T%1").arg(t.index) + (t.cpu ? QStringLiteral(" (CPU %1)").arg(*t.cpu) : QString());
+      out.push_back({label, &t.histogram, phase_index, t.index});
+    }
+    ++phase_index;
+  }
+  return out;
+}
+
+std::vector<BeyondDeadline> headroom_histogram_figure(QCustomPlot& plot, const std::vector<HeadroomCurve>& curves,
+                                                      std::optional<std::int64_t> deadline_ns, const QString& title) {
+  plot.clearGraphs();
+  plot.clearItems();
+  plot.yAxis->setScaleType(QCPAxis::stLogarithmic);
+  plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+  plot.yAxis->setNumberFormat(QStringLiteral("eb"));
+  plot.yAxis->setNumberPrecision(0);
+  plot.xAxis->setLabel(QObject::tr("Latency (µs), 1 µs bins"));
+  plot.yAxis->setLabel(QObject::tr("Cycles (log scale)"));
+  plot.legend->setVisible(!curves.empty());
+  plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+
+  std::vector<BeyondDeadline> beyond;
+  double x_max = 10, y_max = 10;
+  for (const HeadroomCurve& c : curves) {
+    const headroom::LatencyHistogram& h = *c.histogram;
+    std::size_t last = 0;
+    for (std::size_t i = 0; i < h.bins.size(); ++i)
+      if (h.bins[i] != 0) last = i + 1;
+    QVector<double> keys, values;
+    const double bin_us = static_cast<double>(h.bin_ns) / 1000.0;
+    for (std::size_t i = 0; i <= last; ++i) {
+      const double count = i < h.bins.size() ? static_cast<double>(h.bins[i]) : 0.0;
+      keys.push_back(static_cast<double>(i) * bin_us);
+      values.push_back(std::max(count, kFloor));
+      y_max = std::max(y_max, count);
+    }
+    // The step ends at the upper edge of the last occupied bin, back on the floor.
+    keys.push_back(static_cast<double>(last) * bin_us);
+    values.push_back(kFloor);
+    x_max = std::max(x_max, static_cast<double>(last) * bin_us);
+    QCPGraph* g = plot.addGraph();
+    g->setLineStyle(QCPGraph::lsStepLeft);
+    QPen pen(device_color(c.color_index), 1.6);
+    pen.setStyle(thread_style(c.thread));
+    g->setPen(pen);
+    g->setData(keys, values, true);
+    QString name = c.label;
+    if (h.max_ns) name += QObject::tr(", max %1 µs").arg(us(*h.max_ns));
+    if (h.overflows > 0) name += QObject::tr(" (%1 beyond %2 µs)").arg(h.overflows).arg(us(h.limit_ns()));
+    g->setName(name);
+    if (deadline_ns) {
+      const headroom::LatencyHistogram::Beyond b = h.count_above(*deadline_ns);
+      beyond.push_back({c.label, b.count,
+                        h.cycles > 0 ? 100.0 * static_cast<double>(b.count) / static_cast<double>(h.cycles) : 0.0,
+                        b.exact});
+    }
+  }
+  if (deadline_ns) {
+    const double x = static_cast<double>(*deadline_ns) / 1000.0;
+    x_max = std::max(x_max, x);
+    auto* line = new QCPItemStraightLine(&plot);
+    line->point1->setCoords(x, 1);
+    line->point2->setCoords(x, 10);
+    line->setPen(QPen(QColor(200, 30, 30), 1.4, Qt::DashLine));
+    QString text = QObject::tr("deadline %1 µs").arg(us(*deadline_ns));
+    for (const BeyondDeadline& b : beyond)
+      text += QStringLiteral("\n") + b.label +
+              QObject::tr(": %1%2 beyond (%3%4 %)")
+                  .arg(b.exact ? QString() : QStringLiteral("≥ "))
+                  .arg(b.count)
+                  .arg(b.exact ? QString() : QStringLiteral("≥ "))
+                  .arg(b.percent, 0, 'g', 3);
+    auto* label = new QCPItemText(&plot);
+    label->setPositionAlignment(Qt::AlignTop | Qt::AlignRight);
+    label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+    label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    label->position->setCoords(x, 0.02);
+    label->setTextAlignment(Qt::AlignRight);
+    label->setText(text);
+    label->setColor(QColor(200, 30, 30));
+    label->setPadding(QMargins(4, 2, 6, 2));
+    label->setBrush(QBrush(QColor(255, 255, 255, 210)));
+  }
+  plot.xAxis->setRange(0, x_max * 1.08);
+  plot.yAxis->setRange(kFloor, y_max * 3);
+  if (!title.isEmpty()) {
+    if (plot.plotLayout()->rowCount() < 2 || !qobject_cast<QCPTextElement*>(plot.plotLayout()->element(0, 0))) {
+      plot.plotLayout()->insertRow(0);
+      plot.plotLayout()->addElement(0, 0, new QCPTextElement(&plot, title));
+    } else {
+      qobject_cast<QCPTextElement*>(plot.plotLayout()->element(0, 0))->setText(title);
+    }
+  }
+  return beyond;
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `benchscope-cli headroom` as a user runs it: short phases (idle and beside the FLOPS kernel) as a normal thread,
+// stored in a workspace whose bookkeeping holds for every thread (checked here from the stored sparse histogram,
+// independently of the code that wrote it), the non-real-time flag on every output, clear usage errors, an
+// external command that dies early said so, and `platforms --require-loop` reading the measurement (a platform
+// without one unknown). No latency or time is asserted.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "../../support/cli_harness.h"
+#include "store/workspace.h"
+
+namespace {
+
+using bs::test::cli;
+
+const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
+
+// cycles == sum of the sparse [bin, count] pairs + overflows, for one thread of the --json document.
+bool books_hold(const QJsonObject& thread) {
+  const QJsonObject h = thread["histogram"].toObject();
+  qint64 sum = 0;
+  for (const auto pair : h["counts"].toArray()) sum += pair.toArray()[1].toInteger();
+  return h["cycles"].toInteger() == sum + h["overflows"].toInteger() && h["cycles"].toInteger() > 0;
+}
+
+}  // namespace
+
+class TestCliHeadroom : public QObject {
+  Q_OBJECT
+ private slots:
+  void measures_stores_and_flags() {
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("w.bsw");
+    const auto r = cli({"headroom", "--rate", "500", "--seconds", "0.3", "--settle", "0", "--threads", "2", "--no-rt",
+                        "--load", "flops:8", "--platform", "NUC", "--workspace", ws, "--json"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QJsonObject doc = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(doc["realtime"].toBool(), false);
+    QVERIFY(doc["flags"].toArray().first().toString().startsWith("non-real-time"));
+    const QJsonArray phases = doc["phases"].toArray();
+    QCOMPARE(phases.size(), 2);
+    QCOMPARE(phases[0].toObject()["name"].toString(), QString("idle"));
+    QCOMPARE(phases[1].toObject()["name"].toString(), QString("flops:8"));
+    QCOMPARE(phases[1].toObject()["rate_unit"].toString(), QString("GFLOPS"));
+    for (const auto p : phases) {
+      QCOMPARE(p.toObject()["threads"].toArray().size(), 2);
+      for (const auto t : p.toObject()["threads"].toArray()) {
+        QVERIFY(books_hold(t.toObject()));
+        QCOMPARE(t.toObject()["policy"].toString(), QString("SCHED_OTHER"));
+        QCOMPARE(t.toObject()["period_ns"].toInteger(), 2'000'000);
+        QVERIFY(t.toObject()["summary"].toObject().contains("p99.9_ns"));
+      }
+    }
+    QVERIFY2(r.err.contains("not comparable with real-time"), r.err.constData());
+    // The stored measurement reads back whole, its books holding.
+    bs::Workspace w(ws.toStdString());
+    const auto stored = w.headroom_measurements();
+    QCOMPARE(stored.size(), std::size_t{1});
+    QCOMPARE(QString::fromStdString(stored[0].measurement.platform), QString("NUC"));
+    QCOMPARE(QString::fromStdString(stored[0].measurement.bookkeeping_error()), QString());
+  }
+
+  void prints_the_table() {
+    const auto r = cli({"headroom", "--seconds", "0.2", "--no-rt", "--rate", "200"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    for (const char* text : {"NON-REAL-TIME", "p99.9", "Longest miss run", "idle", "kernel ", "probe CPU time"})
+      QVERIFY2(r.out.contains(text), (std::string(text) + " missing in:\n" + r.out.toStdString()).c_str());
+  }
+
+  void usage_errors_name_the_option() {
+    auto r = cli({"headroom", "--rate", "20000"});
+    QCOMPARE(r.code, 2);
+    QVERIFY(r.err.contains("--rate must be from 50 to 10000 Hz"));
+    r = cli({"headroom", "--load", "pipeline,warp-drive"});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("load 'warp-drive': unknown load 'warp-drive'"), r.err.constData());
+    r = cli({"headroom", "--computation-us", "1000"});
+    QCOMPARE(r.code, 2);
+    QVERIFY(r.err.contains("below the period (1000 us)"));
+    r = cli({"headroom", "--load-command", "stress-ng 'unclosed"});
+    QCOMPARE(r.code, 2);
+    QVERIFY(r.err.contains("unclosed '"));
+  }
+
+  void a_command_that_dies_early_is_said() {
+    const auto r = cli(
+        {"headroom", "--seconds", "0.3", "--settle", "0", "--no-rt", "--no-idle", "--load-command", "true", "--json"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QJsonObject phase = QJsonDocument::fromJson(r.out).object()["phases"].toArray()[0].toObject();
+    QCOMPARE(phase["name"].toString(), QString("true"));
+    QCOMPARE(phase["load"].toString(), QString("command"));
+    bool said = false;
+    for (const auto n : phase["notes"].toArray())
+      said |= n.toString().contains("exited (status 0) before the phase ended");
+    QVERIFY2(said, r.out.constData());
+  }
+
+  void platforms_require_loop() {
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("w.bsw");
+    QCOMPARE(cli({"import", ws, kPaper}).code, 0);
+    QCOMPARE(
+        cli({"headroom", "--rate", "500", "--seconds", "0.3", "--no-rt", "--platform", "NUC", "--workspace", ws}).code,
+        0);
+    const auto r =
+        cli({"platforms", ws, "--require-loop", "500Hz,p99.9<=100ms,max-consecutive-misses<=1000", "--json"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QJsonObject loop = QJsonDocument::fromJson(r.out).object()["control_loop"].toObject();
+    QCOMPARE(loop["described"].toString(), QString("500 Hz, p99.9 <= 100000 us, max consecutive misses <= 1000, in "
+                                                   "every phase"));
+    QString nuc, jetson, jetson_reason;
+    for (const auto v : loop["platforms"].toArray()) {
+      const QJsonObject p = v.toObject();
+      if (p["platform"] == "NUC") nuc = p["status"].toString();
+      if (p["platform"] == "Jetson TX2") jetson = p["status"].toString(), jetson_reason = p["reason"].toString();
+    }
+    QVERIFY2(nuc == "passes" || nuc == "FAILS", qPrintable(nuc));  // measured: a verdict, whichever it is
+    QCOMPARE(jetson, QString("unknown"));
+    QCOMPARE(jetson_reason, QString("no headroom measurement"));
+    // Unknown is never passing: the Jetson no longer meets every constraint.
+    for (const auto v : QJsonDocument::fromJson(r.out).object()["platforms"].toArray())
+      if (v.toObject()["platform"] == "Jetson TX2") QCOMPARE(v.toObject()["meets_constraints"].toBool(), false);
+    const auto text = cli({"platforms", ws, "--require-loop", "500Hz,p99.9<=100ms"});
+    QVERIFY2(text.out.contains("control loop: 500 Hz, p99.9 <= 100000 us") && text.out.contains("unknown"),
+             text.out.constData());
+    const auto bad = cli({"platforms", ws, "--require-loop", "p99<=1us"});
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains("no loop rate"));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCliHeadroom)
+#include "test_cli_headroom.moc"

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Platforms tab's control-loop requirement on the paper's sample data: with no headroom measurement every
+// platform is unknown and none is recommended; a measurement that passes makes its platform the choice again, one
+// that fails is said with its margin; a mistyped requirement is shown in red and ignored.
+#include <QCheckBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QTest>
+
+#include <filesystem>
+
+#include "common/importer.h"
+#include "headroom/latency_recorder.h"
+#include "platform/platform_view.h"
+
+using namespace bs::headroom;
+
+namespace {
+
+HeadroomMeasurement loop_on(const std::string& platform, int late_us) {
+  HeadroomMeasurement m;
+  m.platform = platform;
+  m.kind = LatencyKind::ApplicationLoop;
+  m.tool = "benchscope probe";
+  Phase p;
+  p.name = "pipeline@30fps";
+  LatencyRecorder r(10'000'000, 1000, 1'000'000);
+  for (int i = 0; i < 999; ++i) r.add(15'000);
+  r.add(late_us * 1000LL);
+  r.add(late_us * 1000LL);
+  ThreadLatency t = r.result();
+  t.policy = "SCHED_FIFO";
+  t.period_ns = 1'000'000;
+  t.deadline_ns = 1'000'000;
+  p.threads.push_back(t);
+  m.phases.push_back(p);
+  return m;
+}
+
+}  // namespace
+
+class TestPlatformLoop : public QObject {
+  Q_OBJECT
+ private slots:
+  void loop_requirement_decides() {
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    for (const auto& e :
+         std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
+      const auto ext = e.path().extension();
+      if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
+      if (e.path().parent_path().filename() == "frames") continue;
+      auto b = bs::import_file(e.path().string(), bs::CancelToken{});
+      runs.insert(runs.end(), b.runs.begin(), b.runs.end());
+      traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());
+    }
+    bs::ui::PlatformView view;
+    view.set_data(runs, traces);
+    QCOMPARE(view.recommendation(), QString("NUC"));
+    view.set_loop_requirement("1kHz,p99.9<=200us,load=pipeline@30fps");
+    QCOMPARE(view.recommendation(), QString());  // nobody measured: unknown everywhere, nothing passes
+    QVERIFY(view.summary_text().contains("NUC <b>unknown</b> (no headroom measurement)"));
+    // p99.9 of 1001 cycles is the first late one: 150 us passes on the Jetson, 450 us fails on the NUC.
+    view.set_headroom({loop_on("Jetson TX2", 150), loop_on("NUC", 450)});
+    QCOMPARE(view.recommendation(), QString("Jetson TX2"));
+    const QString summary = view.summary_text();
+    QVERIFY2(summary.contains("Jetson TX2 <b>passes</b>"), qPrintable(summary));
+    QVERIFY2(summary.contains("NUC <b>FAILS</b> (p99.9 (pipeline@30fps) 250 us over the limit of 200 us (2.25x))"),
+             qPrintable(summary));
+    view.loop_edit()->setText("1kHz,p99.9<=200");
+    emit view.loop_edit()->editingFinished();
+    QVERIFY(view.summary_text().contains("Control loop ignored"));
+    QCOMPARE(view.recommendation(), QString("NUC"));  // ignored: the other constraints (none) decide
+    view.loop_check()->setChecked(false);
+    QVERIFY(!view.summary_text().contains("Control loop"));
+  }
+};
+
+QTEST_MAIN(TestPlatformLoop)
+#include "test_platform_loop.moc"

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "headroom/headroom_run_panel.h"
+
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFutureWatcher>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "headroom/command_load.h"
+#include "headroom/loads/load_spec.h"
+#include "power/power_sensor_box.h"
+#include "sensors/recorder.h"
+
+namespace bs::ui {
+namespace {
+
+constexpr auto kGroup = "headroom/";
+
+QString key(const char* name) { return QString::fromLatin1(kGroup) + QString::fromLatin1(name); }
+
+}  // namespace
+
+HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
+    : QWidget(parent),
+      rate_(new QDoubleSpinBox(this)),
+      seconds_(new QDoubleSpinBox(this)),
+      threads_(new QSpinBox(this)),
+      computation_(new QDoubleSpinBox(this)),
+      priority_(new QSpinBox(this)),
+      realtime_(new QCheckBox(tr("Real-time (SCHED_FIFO)"), this)),
+      loads_(new QLineEdit(this)),
+      command_(new QLineEdit(this)),
+      power_(new PowerSensorBox(this)),
+      run_(new QPushButton(tr("Run on this machine"), this)),
+      cancel_(new QPushButton(tr("Cancel"), this)),
+      progress_(new QProgressBar(this)),
+      status_(new QLabel(this)),
+      watcher_(new QFutureWatcher<Outcome>(this)),
+      progress_state_(std::make_shared<Progress>()) {
+  const QSettings s;
+  rate_->setRange(headroom::kMinRateHz, headroom::kMaxRateHz);
+  rate_->setDecimals(0);
+  rate_->setSuffix(tr(" Hz"));
+  rate_->setValue(s.value(key("rate"), 1000).toDouble());
+  rate_->setToolTip(tr("The control loop's rate: the probe wakes on absolute times of the monotonic clock"));
+  seconds_->setRange(0.5, 3600);
+  seconds_->setDecimals(1);
+  seconds_->setSuffix(tr(" s per phase"));
+  seconds_->setValue(s.value(key("seconds"), 20).toDouble());
+  seconds_->setToolTip(tr("How long the loop is measured idle and beside each load"));
+  threads_->setRange(1, 64);
+  threads_->setValue(s.value(key("threads"), 1).toInt());
+  threads_->setPrefix(tr("threads "));
+  threads_->setToolTip(tr("Periodic probe threads (one histogram each)"));
+  computation_->setRange(0, 1e6);
+  computation_->setDecimals(0);
+  computation_->setSuffix(tr(" µs work"));
+  computation_->setValue(s.value(key("computation_us"), 0).toDouble());
+  computation_->setToolTip(
+      tr("Busy \"control computation\" per cycle: a cycle misses its deadline when latency + "
+         "this work exceeds the period"));
+  priority_->setRange(1, 99);
+  priority_->setPrefix(tr("priority "));
+  priority_->setValue(s.value(key("priority"), 80).toInt());
+  priority_->setToolTip(tr("SCHED_FIFO priority asked for (granted only with the right to it)"));
+  realtime_->setChecked(s.value(key("realtime"), true).toBool());
+  realtime_->setToolTip(
+      tr("Ask for SCHED_FIFO and locked memory. Without the right, the probe runs as a normal "
+         "thread and the result is flagged non-real-time (not comparable with real-time results)."));
+  loads_->setText(s.value(key("loads"), QStringLiteral("pipeline@30fps")).toString());
+  loads_->setPlaceholderText(tr("idle only"));
+  loads_->setToolTip(
+      tr("Loads, one phase each after the idle phase, comma-separated: pipeline[@FPS] (the vision "
+         "pipeline at a camera rate), dnn[:mobilenet-ssd|yolo-n|hog][@RATE] (the detector), "
+         "flops[:W] (the FLOPS kernel with W workers)"));
+  command_->setText(s.value(key("command")).toString());
+  command_->setPlaceholderText(tr("external command, e.g. stress-ng --cpu 2 --metrics-brief"));
+  command_->setToolTip(
+      tr("An external program run as the last load (no shell), stopped with SIGINT at the end of "
+         "its phase; stress-ng's bogo ops/s is its achieved rate"));
+  cancel_->setEnabled(false);
+  progress_->setRange(0, 100);
+  progress_->setMaximumWidth(160);
+  progress_->hide();
+  status_->setTextFormat(Qt::PlainText);
+  status_->setWordWrap(true);
+
+  auto* layout = new QGridLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* first = new QHBoxLayout;
+  for (QWidget* w : std::initializer_list<QWidget*>{rate_, seconds_, threads_, computation_, realtime_, priority_})
+    first->addWidget(w);
+  first->addStretch(1);
+  layout->addLayout(first, 0, 0);
+  auto* second = new QHBoxLayout;
+  auto* loads_label = new QLabel(tr("Loads:"), this);
+  loads_label->setToolTip(loads_->toolTip());
+  second->addWidget(loads_label);
+  second->addWidget(loads_, 2);
+  second->addWidget(command_, 2);
+  second->addWidget(new QLabel(tr("Record power:"), this));
+  second->addWidget(power_);
+  layout->addLayout(second, 1, 0);
+  auto* third = new QHBoxLayout;
+  third->addWidget(run_);
+  third->addWidget(cancel_);
+  third->addWidget(progress_);
+  third->addWidget(status_, 1);
+  layout->addLayout(third, 2, 0);
+
+  connect(run_, &QPushButton::clicked, this, &HeadroomRunPanel::start);
+  connect(cancel_, &QPushButton::clicked, this, &HeadroomRunPanel::cancel);
+  connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &HeadroomRunPanel::finished);
+  for (QDoubleSpinBox* b : {rate_, seconds_, computation_})
+    connect(b, &QDoubleSpinBox::valueChanged, this, &HeadroomRunPanel::save_settings);
+  for (QSpinBox* b : {threads_, priority_}) connect(b, &QSpinBox::valueChanged, this, &HeadroomRunPanel::save_settings);
+  connect(realtime_, &QCheckBox::toggled, this, &HeadroomRunPanel::save_settings);
+  connect(realtime_, &QCheckBox::toggled, priority_, &QSpinBox::setEnabled);
+  priority_->setEnabled(realtime_->isChecked());
+  for (QLineEdit* e : {loads_, command_})
+    connect(e, &QLineEdit::editingFinished, this, &HeadroomRunPanel::save_settings);
+  auto* timer = new QTimer(this);
+  timer->setInterval(100);
+  connect(timer, &QTimer::timeout, this, [this] {
+    if (!running()) return;
+    progress_->setValue(progress_state_->percent.load());
+    std::lock_guard lock(progress_state_->mutex);
+    if (!progress_state_->step.empty())
+      status_->setText(tr("Measuring: phase '%1'…").arg(QString::fromStdString(progress_state_->step)));
+  });
+  timer->start();
+}
+
+HeadroomRunPanel::~HeadroomRunPanel() {
+  if (token_) token_->cancel();  // a run still going must not outlive the widget it reports to
+  watcher_->waitForFinished();
+}
+
+bool HeadroomRunPanel::running() const { return watcher_->isRunning(); }
+
+void HeadroomRunPanel::save_settings() const {
+  QSettings s;
+  s.setValue(key("rate"), rate_->value());
+  s.setValue(key("seconds"), seconds_->value());
+  s.setValue(key("threads"), threads_->value());
+  s.setValue(key("computation_us"), computation_->value());
+  s.setValue(key("priority"), priority_->value());
+  s.setValue(key("realtime"), realtime_->isChecked());
+  s.setValue(key("loads"), loads_->text());
+  s.setValue(key("command"), command_->text());
+}
+
+void HeadroomRunPanel::start() {
+  if (running()) return;
+  headroom::RunConfig config;
+  config.probe.rate_hz = rate_->value();
+  config.probe.threads = threads_->value();
+  config.probe.computation_ns = static_cast<std::int64_t>(computation_->value() * 1000);
+  config.probe.priority = priority_->value();
+  config.probe.realtime = realtime_->isChecked();
+  config.phase_s = seconds_->value();
+  config.command =
+      QStringLiteral("benchscope %1 (GUI, Headroom tab): %2 Hz, loads '%3'%4")
+          .arg(QCoreApplication::applicationVersion())
+          .arg(rate_->value())
+          .arg(loads_->text(), command_->text().isEmpty() ? QString() : ", command '" + command_->text() + "'")
+          .toStdString();
+  // Check what can be checked before anything starts: the probe's settings, the load specs, the command's words.
+  std::vector<std::string> command_words;
+  try {
+    if (const std::string e = headroom::validate(config.probe); !e.empty()) throw std::invalid_argument(e);
+    (void)headroom::canonical_load_names(loads_->text().toStdString());
+    if (!command_->text().trimmed().isEmpty()) command_words = headroom::split_command(command_->text().toStdString());
+    recorder_ = power_->start_recorder();  // null when "Record power" is off
+  } catch (const std::exception& e) {
+    status_->setText(QString::fromUtf8(e.what()));
+    emit failed(status_->text());
+    return;
+  }
+  token_ = std::make_shared<CancelToken>();
+  progress_state_->percent = 0;
+  {
+    std::lock_guard lock(progress_state_->mutex);
+    progress_state_->step.clear();
+  }
+  token_->set_progress([state = progress_state_](double f, std::string_view step) {
+    state->percent = static_cast<int>(f * 100);
+    std::lock_guard lock(state->mutex);
+    state->step = std::string(step);
+  });
+  run_->setEnabled(false);
+  cancel_->setEnabled(true);
+  progress_->setValue(0);
+  progress_->show();
+  status_->setText(tr("Starting…"));
+  const std::string specs = loads_->text().toStdString();
+  watcher_->setFuture(
+      QtConcurrent::run([config, specs, command_words, token = token_, recorder = recorder_]() -> Outcome {
+        try {
+          // Loads are built here, off the GUI thread: a detector network takes a moment to build.
+          std::vector<std::unique_ptr<headroom::Load>> owned = headroom::make_loads(specs);
+          if (!command_words.empty()) owned.push_back(std::make_unique<headroom::CommandLoad>(command_words));
+          std::vector<headroom::Load*> loads;
+          for (auto& l : owned) loads.push_back(l.get());
+          return {headroom::run_headroom(config, loads, recorder.get(), token.get()), {}, false};
+        } catch (const Cancelled&) {
+          return {std::nullopt, {}, true};
+        } catch (const std::exception& e) {
+          return {std::nullopt, QString::fromUtf8(e.what()), false};
+        }
+      }));
+}
+
+void HeadroomRunPanel::cancel() {
+  if (token_) token_->cancel();
+  status_->setText(tr("Cancelling: stopping the load and the probe…"));
+}
+
+void HeadroomRunPanel::finished() {
+  const Outcome outcome = watcher_->result();
+  recorder_.reset();
+  token_.reset();
+  run_->setEnabled(true);
+  cancel_->setEnabled(false);
+  progress_->hide();
+  if (outcome.cancelled) {
+    status_->setText(tr("Cancelled; nothing stored"));
+    return;
+  }
+  if (!outcome.output) {
+    status_->setText(tr("Failed: %1").arg(outcome.error));
+    emit failed(outcome.error);
+    return;
+  }
+  const headroom::HeadroomMeasurement& m = outcome.output->measurement;
+  status_->setText(tr("Measured %1 phase(s) on %2%3")
+                       .arg(m.phases.size())
+                       .arg(QString::fromStdString(m.platform))
+                       .arg(m.realtime() ? QString()
+                                         : tr(" — NON-REAL-TIME (normal thread): not comparable with "
+                                              "real-time results")));
+  emit measured(*outcome.output);
+}
+
+}  // namespace bs::ui
