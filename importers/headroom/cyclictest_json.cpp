@@ -49,12 +49,11 @@ std::string null_nan_averages(std::string text, const std::string& file, std::ve
     std::string line = text.substr(spans[i].first, spans[i].second);
     const std::string_view t = headroom_import::trim(line);
     if (t.starts_with("\"avg\":")) {
-      const std::string_view value = headroom_import::trim(t.substr(6));
+      const std::string value(headroom_import::trim(t.substr(6)));  // a copy: `line` changes below
       for (std::string_view bad : {"-nan,", "nan,", "-nan", "nan", "-inf,", "inf,", "-inf", "inf"}) {
         if (value == bad) {
           line.replace(line.find(bad, line.find("\"avg\":")), bad.size(), bad.ends_with(",") ? "null," : "null");
-          warnings->push_back(headroom_import::where(file, i + 1) +
-                              "\"avg\": " + std::string(value.substr(0, value.find(','))) +
+          warnings->push_back(headroom_import::where(file, i + 1) + "\"avg\": " + value.substr(0, value.find(',')) +
                               " (a thread that ran no cycle): read as no average");
           break;
         }
