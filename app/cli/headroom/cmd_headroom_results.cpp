@@ -63,6 +63,7 @@ int run_headroom_results(const std::vector<std::string>& raw, std::ostream& out,
       out << "== " << headroom::to_string(m->kind) << ": " << n << (n == 1 ? " result" : " results")
           << " (not comparable with the other kinds) ==\n\n";
     }
+    out << "from " << source_of(*m) << "\n";
     print_headroom(out, *m, source_of(*m));
     out << "\n";
   }
