@@ -157,45 +157,38 @@ std::vector<std::string> workspace_platforms(const Workspace& ws) {
   return out;
 }
 
-// Gives every power log of `batch` whose file names no platform one (never blank), and says which in the summary.
+// The platform of one log or result whose file names none: --platform, else the chooser's answer (the GUI's
+// question, shown `shown`'s label), else the guess; says which in the summary. Never blank.
+std::string settle_platform(const LogPlatformGuess& guess, const PowerTrace& shown, const std::string& path,
+                            const std::vector<std::string>& known, const ImportOptions& options, FileOutcome& o) {
+  std::string chosen = options.log_platform;
+  std::string how = "given with --platform";
+  if (blank_platform(chosen) && options.choose_log_platform) {
+    chosen = options.choose_log_platform(shown, path, guess.platform, known);
+    how = "chosen at import";
+  }
+  if (blank_platform(chosen)) {
+    chosen = guess.platform;
+    how = guess.how;
+  }
+  o.summary += ", platform '" + chosen + "' (" + how + ")";
+  return chosen;
+}
+
+// Gives every power log and latency result of `batch` whose file names no platform one (never blank).
 void attach_log_platforms(ImportBatch& batch, const std::string& path, const std::vector<std::string>& known,
                           const ImportOptions& options, FileOutcome& o) {
-  for (PowerTrace& t : batch.power_traces) {
-    if (!blank_platform(t.platform)) continue;
-    const LogPlatformGuess guess = infer_log_platform(t, known);
-    std::string chosen = options.log_platform;
-    std::string how = "given with --platform";
-    if (blank_platform(chosen) && options.choose_log_platform) {
-      chosen = options.choose_log_platform(t, path, guess.platform, known);
-      how = "chosen at import";
-    }
-    if (blank_platform(chosen)) {
-      chosen = guess.platform;
-      how = guess.how;
-    }
-    t.platform = chosen;
-    o.summary += ", platform '" + chosen + "' (" + how + ")";
-  }
-  // A latency file (cyclictest, rttest, performance_test) names its machine rarely: asked like a power log.
+  for (PowerTrace& t : batch.power_traces)
+    if (blank_platform(t.platform))
+      t.platform = settle_platform(infer_log_platform(t, known), t, path, known, options, o);
+  // A latency file (cyclictest, rttest, performance_test) rarely names its machine: asked like a power log, the
+  // question naming the result as it names a log.
   for (headroom::HeadroomMeasurement& m : batch.headroom) {
     if (!blank_platform(m.platform)) continue;
-    const std::string label = m.tool + " result " + std::filesystem::path(path).filename().string();
-    const LogPlatformGuess guess = infer_platform(m.provenance, label, known);
-    std::string chosen = options.log_platform;
-    std::string how = "given with --platform";
-    if (blank_platform(chosen) && options.choose_log_platform) {
-      PowerTrace named;  // the chooser shows the log's label; a latency result is named the same way
-      named.label = label;
-      named.provenance = m.provenance;
-      chosen = options.choose_log_platform(named, path, guess.platform, known);
-      how = "chosen at import";
-    }
-    if (blank_platform(chosen)) {
-      chosen = guess.platform;
-      how = guess.how;
-    }
-    m.platform = chosen;
-    o.summary += ", platform '" + chosen + "' (" + how + ")";
+    PowerTrace shown;
+    shown.label = m.tool + " result " + std::filesystem::path(path).filename().string();
+    shown.provenance = m.provenance;
+    m.platform = settle_platform(infer_platform(m.provenance, shown.label, known), shown, path, known, options, o);
   }
 }
 

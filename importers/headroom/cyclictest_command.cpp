@@ -3,6 +3,10 @@
 
 #include <cctype>
 #include <charconv>
+#include <stdexcept>
+
+#include "headroom/command_load.h"
+#include "headroom/text_lines.h"
 
 namespace bs::headroom_import {
 
@@ -17,39 +21,14 @@ int CyclictestCommand::priority_of(int index) const {
 }
 
 std::vector<std::string> shell_words(std::string_view line) {
-  std::vector<std::string> words;
-  std::string word;
-  bool in_word = false;
-  char quote = 0;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quote) {
-      if (c == quote) {
-        quote = 0;
-      } else if (c == '\\' && quote == '"' && i + 1 < line.size()) {
-        word.push_back(line[++i]);
-      } else {
-        word.push_back(c);
-      }
-      continue;
-    }
-    if (c == '\'' || c == '"') {
-      quote = c;
-      in_word = true;
-    } else if (c == '\\' && i + 1 < line.size()) {
-      word.push_back(line[++i]);
-      in_word = true;
-    } else if (c == ' ' || c == '\t') {
-      if (in_word) words.push_back(std::move(word));
-      word.clear();
-      in_word = false;
-    } else {
-      word.push_back(c);
-      in_word = true;
-    }
+  try {
+    return headroom::split_command(std::string(line));
+  } catch (const std::invalid_argument&) {
+    // An unclosed quote (a command line rt-tests wrote unescaped, a cut paste): blanks alone separate.
+    std::vector<std::string> words;
+    for (std::string_view w : headroom_import::words_of(line)) words.emplace_back(w);
+    return words;
   }
-  if (in_word) words.push_back(std::move(word));
-  return words;
 }
 
 namespace {

@@ -18,6 +18,8 @@ namespace {
 
 using headroom_import::TextLine;
 using headroom_import::trim;
+using headroom_import::whole_number;
+using headroom_import::words_of;
 
 // One numeric line of the footer ("# Max Latencies: 00020 00020 00340"), with where it was.
 struct FooterLine {
@@ -30,26 +32,6 @@ struct Row {
   std::vector<std::uint64_t> counts;
   std::size_t line = 0;
 };
-
-// The words of `s` split on spaces and tabs.
-std::vector<std::string_view> words_of(std::string_view s) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < s.size() && s[i] != ' ' && s[i] != '\t') ++i;
-    if (i > start) out.push_back(s.substr(start, i - start));
-  }
-  return out;
-}
-
-template <class T>
-bool whole_number(std::string_view word, T* value) {
-  if (word.empty()) return false;
-  const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), *value);
-  return ec == std::errc() && ptr == word.data() + word.size();
-}
 
 bool all_digits(std::string_view s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });

@@ -14,6 +14,8 @@ namespace bs {
 namespace {
 
 using headroom_import::TextLine;
+using headroom_import::whole_number;
+using headroom_import::words_of;
 
 constexpr std::int64_t kMaxLimitNs = 100'000'000;          // the histogram's range: 100 ms in 1 us bins (100,000 bins)
 constexpr std::int64_t kMaxPeriodNs = 100'000'000'000;     // 100 s: a slower "loop" is not a control loop
@@ -27,24 +29,6 @@ struct Iteration {
 
 constexpr std::string_view kFieldNames[5] = {"iteration", "timestamp", "latency", "minor_pagefaults",
                                              "major_pagefaults"};
-
-std::vector<std::string_view> words_of(std::string_view s) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size() && out.size() <= 5) {
-    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < s.size() && s[i] != ' ' && s[i] != '\t') ++i;
-    if (i > start) out.push_back(s.substr(start, i - start));
-  }
-  return out;
-}
-
-template <class T>
-bool whole_number(std::string_view word, T* value) {
-  const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), *value);
-  return ec == std::errc() && ptr == word.data() + word.size();
-}
 
 // The index of the first field of `words` that is not an integer of its kind, 5 when all are.
 std::size_t bad_field(const std::vector<std::string_view>& words, Iteration* it) {

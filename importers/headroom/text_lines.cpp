@@ -73,6 +73,18 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+std::vector<std::string_view> words_of(std::string_view s) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < s.size() && s[i] != ' ' && s[i] != '\t') ++i;
+    if (i > start) out.push_back(s.substr(start, i - start));
+  }
+  return out;
+}
+
 std::string where(const std::string& file, std::size_t line) { return file + ":" + std::to_string(line) + ": "; }
 
 }  // namespace bs::headroom_import

@@ -4,9 +4,11 @@
 // performance_test's CSV log): 1-based line numbers for errors, CRLF folded, whether the last line had its line end
 // (a file cut mid-line must be said), and terminal control codes removed from what a person captured with `script`
 // or pasted from a terminal (cyclictest redraws its status lines with cursor-up codes).
+#include <charconv>
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "util/cancel.h"
 
@@ -37,6 +39,17 @@ class LineCursor {
 std::string strip_terminal_codes(std::string_view line);
 
 std::string_view trim(std::string_view s);
+
+// The words of `s`, split on spaces and tabs.
+std::vector<std::string_view> words_of(std::string_view s);
+
+// `word` read whole as a number of type T (no sign for unsigned, no trailing text); false otherwise.
+template <class T>
+bool whole_number(std::string_view word, T* value) {
+  if (word.empty()) return false;
+  const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), *value);
+  return ec == std::errc() && ptr == word.data() + word.size();
+}
 
 // "file:line: " for warnings.
 std::string where(const std::string& file, std::size_t line);

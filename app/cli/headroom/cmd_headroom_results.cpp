@@ -74,7 +74,7 @@ const CommandRegistrar registrar({
     "headroom-results",
     "list control-loop latency results: measured (headroom) and imported (cyclictest, rttest, performance_test)",
     "usage: benchscope-cli headroom-results INPUT... [--kind wakeup|loop|message] [--platform NAME] [--json]\n"
-    "  Prints every control-loop latency result of a workspace (stored by `headroom --workspace` or `import`), or of\n"
+    "  Prints every control-loop latency result of a workspace (stored by the headroom command or `import`), or of\n"
     "  files read in memory (cyclictest -h/-H output or --json, rttest logs and statistics, performance_test CSV or\n"
     "  JSON logs), grouped by what they measured: system wake-up latency (cyclictest), an application loop (the\n"
     "  probe, rttest / pendulum_demo), message latency (performance_test). Per result: platform, tool, kernel facts,\n"

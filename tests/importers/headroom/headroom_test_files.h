@@ -5,6 +5,7 @@
 // a checkout may lack: a test of a real file skips, naming the folder, when it is absent.
 #include <QTest>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -23,6 +24,25 @@ inline ImportBatch parse_with(const FileFormat& format, const std::string& path)
 
 inline const headroom::ThreadLatency& only_thread(const ImportBatch& b, std::size_t index = 0) {
   return b.headroom.at(0).phases.at(0).threads.at(index);
+}
+
+inline bool has_warning(const ImportBatch& b, const std::string& text) {
+  return std::any_of(b.warnings.begin(), b.warnings.end(),
+                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+// A note of the first measurement's first phase containing `text`.
+inline bool has_note(const ImportBatch& b, const std::string& text) {
+  const auto& notes = b.headroom.at(0).phases.at(0).notes;
+  return std::any_of(notes.begin(), notes.end(),
+                     [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
+
+// The first measurement's provenance setting `key`, "" when absent.
+inline std::string setting(const ImportBatch& b, const std::string& key) {
+  for (const auto& [k, v] : b.headroom.at(0).provenance.settings)
+    if (k == key) return v;
+  return {};
 }
 
 }  // namespace bs::test

@@ -17,29 +17,15 @@
 #include "headroom_test_files.h"
 
 using bs::headroom::LatencyKind;
+using bs::test::has_note;
+using bs::test::has_warning;
 using bs::test::kHeadroomFixtures;
 using bs::test::kHeadroomReal;
 using bs::test::only_thread;
 using bs::test::parse_with;
+using bs::test::setting;
 
 namespace {
-
-bool has_note(const bs::ImportBatch& b, const std::string& text) {
-  const auto& notes = b.headroom.at(0).phases.at(0).notes;
-  return std::any_of(notes.begin(), notes.end(),
-                     [&](const std::string& n) { return n.find(text) != std::string::npos; });
-}
-
-bool has_warning(const bs::ImportBatch& b, const std::string& text) {
-  return std::any_of(b.warnings.begin(), b.warnings.end(),
-                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
-}
-
-std::string setting(const bs::ImportBatch& b, const std::string& key) {
-  for (const auto& [k, v] : b.headroom.at(0).provenance.settings)
-    if (k == key) return v;
-  return {};
-}
 
 bool near(double a, double b, double relative) { return std::abs(a - b) <= relative * std::abs(b); }
 
