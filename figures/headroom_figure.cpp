@@ -32,6 +32,7 @@ std::vector<HeadroomCurve> headroom_curves(const headroom::HeadroomMeasurement& 
   int phase_index = 0;
   for (const headroom::Phase& p : m.phases) {
     for (const headroom::ThreadLatency& t : p.threads) {
+      if (t.histogram.bins.empty()) continue;  // an imported summary has no distribution to draw (the table has it)
       QString label = prefix + QString::fromStdString(p.name);
       if (p.threads.size() > 1 || t.cpu)
         label += QStringLiteral(" · T%1").arg(t.index) + (t.cpu ? QStringLiteral(" (CPU %1)").arg(*t.cpu) : QString());
@@ -50,7 +51,10 @@ std::vector<BeyondDeadline> headroom_histogram_figure(QCustomPlot& plot, const s
   plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
   plot.yAxis->setNumberFormat(QStringLiteral("eb"));
   plot.yAxis->setNumberPrecision(0);
-  plot.xAxis->setLabel(QObject::tr("Latency (µs), 1 µs bins"));
+  // cyclictest -N keeps 1 ns bins; everything else 1 us.
+  const bool ns_bins = !curves.empty() && curves.front().histogram->bin_ns < 1000;
+  plot.xAxis->setLabel(ns_bins ? QObject::tr("Latency (µs), %1 ns bins").arg(curves.front().histogram->bin_ns)
+                               : QObject::tr("Latency (µs), 1 µs bins"));
   plot.yAxis->setLabel(QObject::tr("Cycles (log scale)"));
   plot.legend->setVisible(!curves.empty());
   plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);

@@ -192,11 +192,17 @@ json to_json(const KernelFacts& k) {
 }
 
 json to_json(const LatencySummary& s) {
-  json j = {{"cycles", s.cycles},
-            {"p50_ns", percentile_json(s.p50)},
-            {"p99_ns", percentile_json(s.p99)},
-            {"p99.9_ns", percentile_json(s.p999)},
-            {"p99.99_ns", percentile_json(s.p9999)}};
+  json j = {{"cycles", s.cycles}};
+  if (s.no_distribution) {
+    // An imported summary without a histogram: no percentile is known (null, never 0).
+    j["no_distribution"] = true;
+    for (const char* key : {"p50_ns", "p99_ns", "p99.9_ns", "p99.99_ns"}) j[key] = nullptr;
+  } else {
+    j["p50_ns"] = percentile_json(s.p50);
+    j["p99_ns"] = percentile_json(s.p99);
+    j["p99.9_ns"] = percentile_json(s.p999);
+    j["p99.99_ns"] = percentile_json(s.p9999);
+  }
   put(j, "min_ns", s.min_ns);
   put(j, "max_ns", s.max_ns);
   put(j, "mean_ns", s.mean_ns);

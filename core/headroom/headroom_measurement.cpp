@@ -87,7 +87,7 @@ std::string HeadroomMeasurement::bookkeeping_error() const {
 std::vector<std::string> flags(const HeadroomMeasurement& m) {
   std::vector<std::string> out;
   std::vector<std::string> policies;
-  bool unlocked = false, overflow = false, histogram_misses = false;
+  bool unlocked = false, overflow = false, histogram_misses = false, summary_only = false;
   std::int64_t limit_us = 0;
   for (const Phase& p : m.phases)
     for (const ThreadLatency& t : p.threads) {
@@ -96,7 +96,9 @@ std::vector<std::string> flags(const HeadroomMeasurement& m) {
         if (std::find(policies.begin(), policies.end(), policy) == policies.end()) policies.push_back(policy);
       }
       if (t.memory_locked == false) unlocked = true;
-      if (t.histogram.overflows > 0) {
+      if (t.histogram.bins.empty()) {
+        summary_only = true;
+      } else if (t.histogram.overflows > 0) {
         overflow = true;
         limit_us = t.histogram.limit_ns() / 1000;
       }
@@ -112,7 +114,8 @@ std::vector<std::string> flags(const HeadroomMeasurement& m) {
   if (!m.kernel.governor.empty() && m.kernel.governor != "performance")
     out.push_back("CPU governor " + m.kernel.governor);
   if (overflow) out.push_back("latencies beyond the " + std::to_string(limit_us) + " us histogram (max kept)");
-  if (histogram_misses) out.push_back("misses counted from the histogram: no run lengths");
+  if (histogram_misses && !summary_only) out.push_back("misses counted from the histogram: no run lengths");
+  if (summary_only) out.push_back("summary only (no histogram): percentiles and misses unknown");
   return out;
 }
 

@@ -47,10 +47,12 @@ ExportTable headroom_table(const HeadroomMeasurement& m, const std::string& sour
       if (p.achieved_rate) load = format("%.3g", *p.achieved_rate) + " " + p.rate_unit;
       std::string policy = th.policy.empty() ? "unknown" : th.policy;
       if (th.priority) policy += " " + std::to_string(*th.priority);
-      t.rows.push_back({p.name, thread, th.period_ns > 0 ? format("%.0f", th.rate_hz()) : "–", latency_text(s.p50),
-                        latency_text(s.p99), latency_text(s.p999), latency_text(s.p9999),
-                        s.max_ns ? latency_text(*s.max_ns) : "–", misses_text(s),
-                        s.longest_miss_run ? std::to_string(*s.longest_miss_run) : "–", std::to_string(s.cycles), load,
+      // A summary without a histogram has no percentiles: a dash, never ">= 0 us".
+      const auto pct = [&](const HistogramPercentile& q) { return s.no_distribution ? "–" : latency_text(q); };
+      t.rows.push_back({p.name, thread, th.period_ns > 0 ? format("%.0f", th.rate_hz()) : "–", pct(s.p50), pct(s.p99),
+                        pct(s.p999), pct(s.p9999), s.max_ns ? latency_text(*s.max_ns) : "–", misses_text(s),
+                        s.longest_miss_run ? std::to_string(*s.longest_miss_run) : "–",
+                        s.cycles > 0 || !s.no_distribution ? std::to_string(s.cycles) : "–", load,
                         p.mean_power_w ? format("%.2f", *p.mean_power_w) : "–", policy});
     }
   // The deadline each thread was judged against, and every flag, under the table.

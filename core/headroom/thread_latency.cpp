@@ -7,6 +7,16 @@ LatencySummary summarize(const ThreadLatency& thread) {
   const LatencyHistogram& h = thread.histogram;
   LatencySummary s;
   s.cycles = h.cycles;
+  if (h.bins.empty()) {
+    // An imported summary without a histogram (performance_test, rttest's statistics, cyclictest's status lines):
+    // its extremes and mean are known, its percentiles and misses are not (left at their defaults: no_distribution).
+    s.no_distribution = true;
+    s.min_ns = h.min_ns;
+    s.max_ns = h.max_ns;
+    s.mean_ns = thread.mean_ns;
+    s.sd_ns = thread.sd_ns;
+    return s;
+  }
   if (h.cycles == 0) return s;
   s.p50 = h.percentile(50);
   s.p99 = h.percentile(99);

@@ -46,6 +46,9 @@ struct LatencySummary {
   std::optional<std::uint64_t> misses;
   bool misses_exact = true;
   std::optional<std::uint64_t> longest_miss_run;
+  // No histogram at all (an imported summary): percentiles and misses are unknown, not 0; cycles may be 0 (n not
+  // given by the source) while min / max / mean are known.
+  bool no_distribution = false;
   double miss_percent() const {
     return misses && cycles > 0 ? 100.0 * static_cast<double>(*misses) / static_cast<double>(cycles) : 0.0;
   }

@@ -82,7 +82,7 @@ std::vector<std::string> per_computer_report(const ImportResult& result) {
 }
 
 std::string describe_batch(const ImportBatch& b) {
-  std::string s = b.runs.empty() && !b.frames.empty()
+  std::string s = b.runs.empty() && (!b.frames.empty() || !b.headroom.empty())
                       ? std::string()
                       : std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
   const auto count = [](std::size_t n, const char* one, const char* many) {
@@ -98,6 +98,12 @@ std::string describe_batch(const ImportBatch& b) {
   if (!b.pipeline_runs.empty())
     s += ", " + std::to_string(b.pipeline_runs.size()) +
          (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
+  for (const headroom::HeadroomMeasurement& m : b.headroom) {
+    std::size_t threads = 0;
+    for (const headroom::Phase& p : m.phases) threads = std::max(threads, p.threads.size());
+    s += std::string(s.empty() ? "" : ", ") + "control-loop latency: " + std::string(headroom::to_string(m.kind)) +
+         ", " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+  }
   return s + " (" + b.format + ")";
 }
 
@@ -181,34 +187,49 @@ std::vector<std::string> workspace_platforms(const Workspace& ws) {
   for (const DeviceRecord& d : ws.devices()) add(d.platform);
   for (const StoredPowerTrace& t : ws.power_trace_summaries()) add(t.trace.platform);
   for (const StoredPipelineRun& p : ws.pipeline_runs()) add(p.run.platform);
+  for (const StoredHeadroom& h : ws.headroom_measurements()) add(h.measurement.platform);
   return out;
 }
 
-// Gives every power log of `batch` whose file names no platform one (never blank), and says which in the summary.
-// A log is attached only by what its file says or what the user chooses: the workspace's only platform is a guess
-// the GUI offers, never taken silently (an MLPerf spl.txt is AC wall power of some other system).
+// The platform of one log or result whose file names none: --platform, else the chooser's answer (the GUI's
+// question, shown `shown`'s label), else the guess; says which in the summary. Never blank. A log is attached only
+// by what its file says or what the user chooses: the workspace's only platform is a guess the GUI offers, never
+// taken silently (an MLPerf spl.txt is AC wall power of some other system).
+std::string settle_platform(const LogPlatformGuess& guess, const PowerTrace& shown, const std::string& path,
+                            const std::vector<std::string>& known, const ImportOptions& options, FileOutcome& o) {
+  std::string chosen = options.log_platform;
+  std::string how = "given with --platform";
+  if (blank_platform(chosen) && options.choose_log_platform) {
+    chosen = options.choose_log_platform(shown, path, guess.platform, known);
+    how = "chosen at import";
+  }
+  if (blank_platform(chosen)) {
+    chosen = guess.platform;
+    how = guess.how;
+    if (guess.how == "the workspace's only platform") {
+      chosen = "unassigned: " + (shown.label.empty() ? std::string("power log") : shown.label);
+      how = "not attached: the file names no platform; the workspace's only platform '" + guess.platform +
+            "' is a guess (give --platform to attach it)";
+    }
+  }
+  o.summary += ", platform '" + chosen + "' (" + how + ")";
+  return chosen;
+}
+
+// Gives every power log and latency result of `batch` whose file names no platform one (never blank).
 void attach_log_platforms(ImportBatch& batch, const std::string& path, const std::vector<std::string>& known,
                           const ImportOptions& options, FileOutcome& o) {
-  for (PowerTrace& t : batch.power_traces) {
-    if (!blank_platform(t.platform)) continue;
-    const LogPlatformGuess guess = infer_log_platform(t, known);
-    std::string chosen = options.log_platform;
-    std::string how = "given with --platform";
-    if (blank_platform(chosen) && options.choose_log_platform) {
-      chosen = options.choose_log_platform(t, path, guess.platform, known);
-      how = "chosen at import";
-    }
-    if (blank_platform(chosen)) {
-      chosen = guess.platform;
-      how = guess.how;
-      if (guess.how == "the workspace's only platform") {
-        chosen = "unassigned: " + (t.label.empty() ? std::string("power log") : t.label);
-        how = "not attached: the file names no platform; the workspace's only platform '" + guess.platform +
-              "' is a guess (give --platform to attach it)";
-      }
-    }
-    t.platform = chosen;
-    o.summary += ", platform '" + chosen + "' (" + how + ")";
+  for (PowerTrace& t : batch.power_traces)
+    if (blank_platform(t.platform))
+      t.platform = settle_platform(infer_log_platform(t, known), t, path, known, options, o);
+  // A latency file (cyclictest, rttest, performance_test) rarely names its machine: asked like a power log, the
+  // question naming the result as it names a log.
+  for (headroom::HeadroomMeasurement& m : batch.headroom) {
+    if (!blank_platform(m.platform)) continue;
+    PowerTrace shown;
+    shown.label = m.tool + " result " + std::filesystem::path(path).filename().string();
+    shown.provenance = m.provenance;
+    m.platform = settle_platform(infer_platform(m.provenance, shown.label, known), shown, path, known, options, o);
   }
   // An MLPerf result without a system description names no computer: --platform names it.
   for (ResultSet& r : batch.result_sets)
@@ -296,12 +317,16 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
         mark_duplicate(o, twin->second, {});
         continue;
       }
-      if (!batch->power_traces.empty() && (!target.exists() || !target.earlier(o.content_hash))) {
+      if ((!batch->power_traces.empty() || !batch->headroom.empty()) &&
+          (!target.exists() || !target.earlier(o.content_hash))) {
         std::vector<std::string> known;
         if (target.exists()) known = workspace_platforms(target.ws());
         for (const auto& [k, b] : pending)  // logs earlier in this import, not stored yet
           for (const PowerTrace& t : b.power_traces)
             if (std::find(known.begin(), known.end(), t.platform) == known.end()) known.push_back(t.platform);
+        for (const auto& [k, b] : pending)
+          for (const headroom::HeadroomMeasurement& m : b.headroom)
+            if (std::find(known.begin(), known.end(), m.platform) == known.end()) known.push_back(m.platform);
         attach_log_platforms(*batch, o.path, known, options, o);
       } else if (!batch->result_sets.empty()) {
         attach_log_platforms(*batch, o.path, {}, options, o);

@@ -19,6 +19,10 @@ struct LogPlatformGuess {
 
 // `known`: the platforms the workspace has (a guess matching one of them, ignoring case, takes its spelling).
 LogPlatformGuess infer_log_platform(const PowerTrace& trace, const std::vector<std::string>& known);
+// The same for any imported result whose file names no platform (a cyclictest or rttest file): from what its
+// provenance says of the machine, else the workspace's only platform, else "unassigned: <label>".
+LogPlatformGuess infer_platform(const Provenance& provenance, const std::string& label,
+                                const std::vector<std::string>& known);
 
 bool blank_platform(const std::string& name);
 

@@ -9,6 +9,12 @@
 #include "frames/frame_codec.h"
 #include "frames/frame_pnm.h"
 #include "frames/frame_raw.h"
+#include "headroom/cyclictest_json.h"
+#include "headroom/cyclictest_text.h"
+#include "headroom/performance_test_csv.h"
+#include "headroom/performance_test_json.h"
+#include "headroom/rttest_log.h"
+#include "headroom/rttest_statistics.h"
 #include "mlperf/mlperf_submission.h"
 #include "power/jtop_csv.h"
 #include "power/nvidia_smi.h"
@@ -31,6 +37,8 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
   return importers_of({&kRunJsonFileFormat, &kPipelineJsonFileFormat, &kGoogleBenchmarkJsonFileFormat,
                        &kClpeakTextFileFormat, &kPowerRecordingFileFormat, &kPowerCsvFileFormat, &kTegrastatsFileFormat,
                        &kJtopCsvFileFormat, &kNvidiaSmiFileFormat, &kPerfStatFileFormat, &kPtdLogFileFormat,
+                       &kCyclictestTextFileFormat, &kCyclictestJsonFileFormat, &kRttestLogFileFormat,
+                       &kRttestStatisticsFileFormat, &kPerformanceTestCsvFileFormat, &kPerformanceTestJsonFileFormat,
                        &kMlperfLoadgenFileFormat, &kRos2BenchmarkJsonFileFormat, &kRobotperfYamlFileFormat,
                        &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat, &kTiffFileFormat});
 }

@@ -17,8 +17,17 @@ std::string kernel_line(const headroom::KernelFacts& k) {
 }
 
 void print_headroom(std::ostream& out, const headroom::HeadroomMeasurement& m, const std::string& source) {
-  if (!m.realtime())
-    out << "NON-REAL-TIME: the probe did not run under SCHED_FIFO/RR; not comparable with real-time results\n";
+  if (!m.realtime()) {
+    bool policy_known = false;
+    for (const headroom::Phase& p : m.phases)
+      for (const headroom::ThreadLatency& t : p.threads) policy_known |= !t.policy.empty();
+    if (policy_known)
+      out << "NON-REAL-TIME: " << (m.tool == "benchscope probe" ? "the probe" : "the measured loop")
+          << " did not run under SCHED_FIFO/RR; not comparable with real-time results\n";
+    else
+      out << "POLICY UNKNOWN: " << m.tool << "'s file does not say whether the loop ran under SCHED_FIFO/RR; not "
+          << "comparable with real-time results until it is known\n";
+  }
   out << m.platform << ": " << headroom::to_string(m.kind) << " (" << m.tool << "), " << kernel_line(m.kernel)
       << "\n\n";
   const ExportTable t = headroom::headroom_table(m, source);
