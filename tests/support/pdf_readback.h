@@ -32,9 +32,7 @@ inline QString pdf_text(const QString& pdf, int page = 0) {
 
 // The text with every run of white space (line ends of wrapped notes included) as one space: a name wrapped over
 // two lines still reads as one string.
-inline QString pdf_flat_text(const QString& pdf, int page = 0) {
-  return pdf_text(pdf, page).simplified();
-}
+inline QString pdf_flat_text(const QString& pdf, int page = 0) { return pdf_text(pdf, page).simplified(); }
 
 inline int pdf_page_count(const QString& pdf) {
   const auto m = QRegularExpression(R"(Pages:\s+(\d+))").match(run_tool("pdfinfo", {pdf}));
@@ -68,7 +66,11 @@ inline std::vector<PdfPage> pdf_words(const QString& pdf) {
       const QPointF top_left(w.captured(1).toDouble(), w.captured(2).toDouble());
       const QPointF bottom_right(w.captured(3).toDouble(), w.captured(4).toDouble());
       QString text = w.captured(5);
-      text.replace("&lt;", "<").replace("&gt;", ">").replace("&quot;", "\"").replace("&#39;", "'").replace("&amp;", "&");
+      text.replace("&lt;", "<")
+          .replace("&gt;", ">")
+          .replace("&quot;", "\"")
+          .replace("&#39;", "'")
+          .replace("&amp;", "&");
       page.words.push_back({text.normalized(QString::NormalizationForm_KC), QRectF(top_left, bottom_right)});
     }
     pages.push_back(std::move(page));
@@ -97,14 +99,15 @@ inline QStringList overprinted_words(const PdfPage& page) {
 inline QStringList words_past(const PdfPage& page, double right_pt) {
   QStringList out;
   for (const PdfWord& w : page.words)
-    if (w.box.right() > right_pt + 0.5) out << QStringLiteral("'%1' (to %2 pt)").arg(w.text).arg(w.box.right(), 0, 'f', 1);
+    if (w.box.right() > right_pt + 0.5)
+      out << QStringLiteral("'%1' (to %2 pt)").arg(w.text).arg(w.box.right(), 0, 'f', 1);
   return out;
 }
 
 // Page `page` (1-based) rendered at `dpi` as an image (pdftoppm), for pixel checks and for looking at it.
 inline QImage pdf_page_image(const QString& pdf, int page, int dpi, const QString& png_stem) {
-  run_tool("pdftoppm", {"-f", QString::number(page), "-l", QString::number(page), "-r", QString::number(dpi),
-                        "-png", "-singlefile", pdf, png_stem});
+  run_tool("pdftoppm", {"-f", QString::number(page), "-l", QString::number(page), "-r", QString::number(dpi), "-png",
+                        "-singlefile", pdf, png_stem});
   return QImage(png_stem + ".png");
 }
 

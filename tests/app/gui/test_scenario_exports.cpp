@@ -55,7 +55,8 @@ class TestScenarioExports : public QObject {
     QVERIFY(w.open_workspace(dir.filePath("paper.bsw")));
     // The paper's sample and sweeps measured on a development machine: 21 FLOPS series, two power logs, the
     // pipeline runs and the synthetic capture.
-    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev"});
+    w.import_paths_now(
+        {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev"});
     w.resize(1600, 1000);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -94,8 +95,7 @@ class TestScenarioExports : public QObject {
         if (!text.contains(name.simplified()))
           problems << QStringLiteral("%1: series '%2' is not named in the figure").arg(tab, name);
       for (const QString& peak : peaks)
-        if (!text.contains(peak))
-          problems << QStringLiteral("%1: the peak '%2' is not in the figure").arg(tab, peak);
+        if (!text.contains(peak)) problems << QStringLiteral("%1: the peak '%2' is not in the figure").arg(tab, peak);
       const auto pages = bs::test::pdf_words(stem + ".pdf");
       QCOMPARE(pages.size(), std::size_t{1});
       for (const QString& p : bs::test::overprinted_words(pages.front()))

@@ -39,7 +39,8 @@ class TestScenarioReport : public QObject {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
     QVERIFY(w.open_workspace(dir.filePath("paper.bsw")));
-    QStringList paths{BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev"};
+    QStringList paths{BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018",
+                      BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev"};
     const QString mlperf = BENCHSCOPE_PUBLIC_DATA_DIR "/tests/data/importers/mlperf";
     if (QDir(mlperf).exists()) paths << mlperf + "/v0.5-nvidia-xavier" << mlperf + "/v3.0-nvidia-orin-maxq";
     w.import_paths_now(paths);

@@ -24,6 +24,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBrowser>
+#include <algorithm>
 #include <cmath>
 
 #include "../../support/scenario_window.h"
@@ -70,11 +71,12 @@ QStringList cut_on_screen(QWidget* tab, const QRect& screen) {
                            parent->objectName() == "qt_scrollarea_viewport");
     if (parent && !scrolled && !parent->rect().contains(w->geometry()))
       out << describe(w) + " sticks out of its " + describe(parent);
-    if (auto* b = qobject_cast<QAbstractButton*>(w); b && !b->text().isEmpty() && b->width() < b->sizeHint().width() - 1)
+    if (auto* b = qobject_cast<QAbstractButton*>(w);
+        b && !b->text().isEmpty() && b->width() < b->sizeHint().width() - 1)
       out << describe(w) + QStringLiteral(" is cut (%1 of %2 px)").arg(b->width()).arg(b->sizeHint().width());
-    if (auto* l = qobject_cast<QLabel*>(w); l && !l->wordWrap() && l->textFormat() != Qt::RichText && !l->text().isEmpty() &&
-                                             l->pixmap().isNull() && !l->text().contains('<') &&
-                                             l->fontMetrics().horizontalAdvance(l->text()) > l->contentsRect().width() + 1)
+    if (auto* l = qobject_cast<QLabel*>(w);
+        l && !l->wordWrap() && l->textFormat() != Qt::RichText && !l->text().isEmpty() && l->pixmap().isNull() &&
+        !l->text().contains('<') && l->fontMetrics().horizontalAdvance(l->text()) > l->contentsRect().width() + 1)
       out << describe(w) + " is cut";
   }
   for (QCustomPlot* plot : tab->findChildren<QCustomPlot*>()) {
@@ -102,7 +104,9 @@ QStringList cut_on_screen(QWidget* tab, const QRect& screen) {
       }
       const double covered = bs::ui::covered_length(plot->legend->outerRect(), curves);
       if (covered >= 1)
-        out << QStringLiteral("a legend covers %1 px of curve (%2 entries)").arg(covered, 0, 'f', 0).arg(plot->legend->itemCount());
+        out << QStringLiteral("a legend covers %1 px of curve (%2 entries)")
+                   .arg(covered, 0, 'f', 0)
+                   .arg(plot->legend->itemCount());
     }
     std::vector<std::pair<QString, QRectF>> labels;
     for (int i = 0; i < plot->itemCount(); ++i)
@@ -117,11 +121,19 @@ QStringList cut_on_screen(QWidget* tab, const QRect& screen) {
   return out;
 }
 
-// Distance in pixels from `box` to the polyline `curve` (0 when it crosses the box).
+// Distance in pixels from `box` to the polyline `curve` (0 where it enters the box), worked out here on its own.
 double distance_to(const QRectF& box, const QPolygonF& curve) {
+  const auto point_to_segment = [](const QPointF& p, const QPointF& a, const QPointF& b) {
+    const QPointF d = b - a;
+    const double l2 = d.x() * d.x() + d.y() * d.y();
+    const double t = l2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / l2, 0.0, 1.0) : 0.0;
+    return std::hypot(p.x() - (a.x() + t * d.x()), p.y() - (a.y() + t * d.y()));
+  };
   double best = 1e9;
   for (qsizetype i = 1; i < curve.size(); ++i) {
-    if (bs::ui::covered_length(box, {QPolygonF{curve[i - 1], curve[i]}}) > 0) return 0;
+    if (bs::ui::covered_length(box, {QPolygonF{curve[i - 1], curve[i]}}) > 0 || box.contains(curve[i])) return 0;
+    for (const QPointF& corner : {box.topLeft(), box.topRight(), box.bottomLeft(), box.bottomRight()})
+      best = std::min(best, point_to_segment(corner, curve[i - 1], curve[i]));
     for (const QPointF& p : {curve[i - 1], curve[i]}) {
       const double dx = std::max({box.left() - p.x(), 0.0, p.x() - box.right()});
       const double dy = std::max({box.top() - p.y(), 0.0, p.y() - box.bottom()});
@@ -147,7 +159,8 @@ class TestScenarioSmallScreen : public QObject {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
     QVERIFY(w.open_workspace(dir.filePath("paper.bsw")));
-    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev"});
+    w.import_paths_now(
+        {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev"});
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     // As a window manager would on this screen: the window at most the screen, its frame on it.
@@ -179,7 +192,8 @@ class TestScenarioSmallScreen : public QObject {
     QTableView* battery = w.battery_view()->table();
     click_tab(w, tabs->indexOf(w.battery_view()));
     for (int c = 0; c < battery->model()->columnCount(); ++c)
-      if (battery->horizontalHeader()->sectionViewportPosition(c) + battery->columnWidth(c) > battery->viewport()->width() + 1)
+      if (battery->horizontalHeader()->sectionViewportPosition(c) + battery->columnWidth(c) >
+          battery->viewport()->width() + 1)
         problems << QStringLiteral("Battery: column '%1' is out of view")
                         .arg(battery->model()->headerData(c, Qt::Horizontal).toString().simplified());
     QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
@@ -201,8 +215,10 @@ class TestScenarioSmallScreen : public QObject {
     });
     bs::test::press(w, Qt::Key_F1);
     QVERIFY(*answered);
-    QVERIFY2(QGuiApplication::primaryScreen()->availableGeometry().contains(help),
-             qPrintable(QStringLiteral("help at %1,%2 %3x%4").arg(help.x()).arg(help.y()).arg(help.width()).arg(help.height())));
+    QVERIFY2(
+        QGuiApplication::primaryScreen()->availableGeometry().contains(help),
+        qPrintable(
+            QStringLiteral("help at %1,%2 %3x%4").arg(help.x()).arg(help.y()).arg(help.width()).arg(help.height())));
     QVERIFY(text.contains("Export figure"));
     QVERIFY(text.contains("Lens"));
   }
@@ -314,7 +330,8 @@ class TestScenarioSmallScreen : public QObject {
 // A 1280x800 screen for the offscreen platform, given before QApplication starts (Qt's offscreen plugin reads a
 // JSON configuration file).
 int main(int argc, char** argv) {
-  const QString config = QDir::temp().filePath(QStringLiteral("benchscope-1280x800-%1.json").arg(QCoreApplication::applicationPid()));
+  const QString config =
+      QDir::temp().filePath(QStringLiteral("benchscope-1280x800-%1.json").arg(QCoreApplication::applicationPid()));
   {
     QFile f(config);
     if (!f.open(QIODevice::WriteOnly)) return 2;
