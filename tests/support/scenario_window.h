@@ -8,6 +8,8 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QDialogButtonBox>
+#include <QDir>
+#include <QFile>
 #include <QFileDialog>
 #include <QPushButton>
 #include <QTabWidget>
@@ -20,6 +22,15 @@
 #include "main_window.h"
 
 namespace bs::test {
+
+// With BENCHSCOPE_LOOK_DIR set, a copy of `file` goes there under `name` (exports and reports to look at by eye).
+inline void keep_for_looking(const QString& file, const QString& name) {
+  const QString dir = qEnvironmentVariable("BENCHSCOPE_LOOK_DIR");
+  if (dir.isEmpty() || !QFile::exists(file)) return;
+  QDir().mkpath(dir);
+  QFile::remove(QDir(dir).filePath(name));
+  QFile::copy(file, QDir(dir).filePath(name));
+}
 
 // Calls `answer` with the first modal widget that opens from now on (polled every 20 ms, also inside a dialog's own
 // event loop), once. Returns a flag that says whether it was answered.
@@ -74,8 +85,13 @@ inline QStringList legend_names(QCustomPlot& plot) {
   return names;
 }
 
-// Presses `key` on the window (its shortcut map routes it to the menu action).
+// Presses `key` on the window (its shortcut map routes it to the menu action). The window is made active first, as
+// a window manager does when a dialog closes (the offscreen platform leaves no window active then).
 inline void press(ui::MainWindow& w, int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  if (QApplication::activeWindow() != &w) {
+    w.activateWindow();
+    if (!QTest::qWaitForWindowActive(&w)) qWarning("the main window did not become active");
+  }
   QWidget* target = QApplication::focusWidget() && QApplication::focusWidget()->window() == &w
                         ? QApplication::focusWidget()
                         : static_cast<QWidget*>(&w);

@@ -196,7 +196,9 @@ class TestScenarioSmallScreen : public QObject {
           battery->viewport()->width() + 1)
         problems << QStringLiteral("Battery: column '%1' is out of view")
                         .arg(battery->model()->headerData(c, Qt::Horizontal).toString().simplified());
-    QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
+    for (const QString& p : problems) qWarning("%s", qPrintable(p));  // every one, not only what QVERIFY2 shows
+    QVERIFY2(problems.isEmpty(),
+             qPrintable(QStringLiteral("%1 problem(s), the first: %2").arg(problems.size()).arg(problems.value(0))));
   }
 
   void help_fits_the_screen() {
@@ -288,7 +290,9 @@ class TestScenarioSmallScreen : public QObject {
                         .arg(other, 0, 'f', 1)
                         .arg(nearest);
     }
-    QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
+    for (const QString& p : problems) qWarning("%s", qPrintable(p));  // every one, not only what QVERIFY2 shows
+    QVERIFY2(problems.isEmpty(),
+             qPrintable(QStringLiteral("%1 problem(s), the first: %2").arg(problems.size()).arg(problems.value(0))));
   }
 
   // Ctrl+S on an untitled workspace asks where to keep it (its file dialog answered) and continues there; on a
