@@ -11,6 +11,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTest>
@@ -56,13 +57,54 @@ inline std::shared_ptr<bool> answer_next_modal(QObject* context, std::function<v
   return answered;
 }
 
-// Clicks the button of `box` with `role` (Ok, Save, Open, Close ...) as a person would.
+// Clicks the dialog's button `which` (Ok, Save, Open, Close ...) as a person would, once it is shown and enabled (a
+// file dialog enables Save only after it has taken in the typed name); false when it never is (5 s).
 inline bool click_dialog_button(QWidget* dialog, QDialogButtonBox::StandardButton which) {
-  for (QDialogButtonBox* box : dialog->findChildren<QDialogButtonBox*>())
-    if (QPushButton* b = box->button(which); b && b->isVisible() && b->isEnabled()) {
-      QTest::mouseClick(b, Qt::LeftButton);
+  QPushButton* button = nullptr;
+  const bool ready = QTest::qWaitFor(
+      [&] {
+        for (QDialogButtonBox* box : dialog->findChildren<QDialogButtonBox*>())
+          if (QPushButton* b = box->button(which); b && b->isVisible() && b->isEnabled()) button = b;
+        return button != nullptr;
+      },
+      5000);
+  if (!ready) {
+    qWarning("%s: its button %d never became clickable", dialog->metaObject()->className(), int(which));
+    return false;
+  }
+  QTest::mouseClick(button, Qt::LeftButton);
+  return true;
+}
+
+// Answers a file dialog as a person does: the path pasted into its file name field, then Save (or Open) clicked once
+// the dialog has taken the name in. The field is filled again while the button stays disabled (the dialog reads the
+// folder on a thread of its own and may not have it yet).
+inline bool answer_file_dialog(QWidget* modal, const QString& path, const QString& filter = {}) {
+  auto* files = qobject_cast<QFileDialog*>(modal);
+  if (!files) {
+    modal->close();
+    return false;
+  }
+  if (!filter.isEmpty()) files->selectNameFilter(filter);
+  auto* name = files->findChild<QLineEdit*>("fileNameEdit");
+  const auto which = files->acceptMode() == QFileDialog::AcceptSave ? QDialogButtonBox::Save : QDialogButtonBox::Open;
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    if (name) {
+      name->setText(path);  // pasted: typed keys would open the field's completer, which takes the next click
+      emit name->textEdited(path);
+    } else {
+      files->selectFile(path);
+    }
+    QPushButton* button = nullptr;
+    for (QDialogButtonBox* box : files->findChildren<QDialogButtonBox*>())
+      if (QPushButton* b = box->button(which)) button = b;
+    if (button && QTest::qWaitFor([button] { return button->isEnabled(); }, 500)) {
+      QTest::mouseClick(button, Qt::LeftButton);
       return true;
     }
+  }
+  qWarning("the file dialog never took '%s'", qPrintable(path));
+  files->reject();
   return false;
 }
 

@@ -7,6 +7,7 @@
 #include <qcustomplot.h>
 #include <QApplication>
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QFile>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -54,10 +55,22 @@ class TestScenarioExports : public QObject {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
     QVERIFY(w.open_workspace(dir.filePath("paper.bsw")));
-    // The paper's sample and sweeps measured on a development machine: 21 FLOPS series, two power logs, the
-    // pipeline runs and the synthetic capture.
-    w.import_paths_now(
-        {BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018", BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev"});
+    // The paper's sample and sweeps measured on a development machine: 21 FLOPS series, two current logs of 120 s,
+    // the pipeline runs and the synthetic capture; and a board's tegrastats log of 50 minutes (power only, no
+    // current: it draws nothing in the Power tab's current plot).
+    const QString tegrastats = dir.filePath("orin-50min-tegrastats.log");
+    {
+      QFile in(BENCHSCOPE_TEST_DATA_DIR "/power/tegrastats-orin-jetpack5.log");
+      QVERIFY(in.open(QIODevice::ReadOnly));
+      const QByteArray line = in.readLine().trimmed().mid(20);  // after "11-22-2026 10:00:01 "
+      QFile out(tegrastats);
+      QVERIFY(out.open(QIODevice::WriteOnly));
+      const QDateTime start(QDate(2026, 11, 22), QTime(10, 0, 0), Qt::UTC);
+      for (int s = 0; s < 3000; ++s)
+        out.write(start.addSecs(s).toString("MM-dd-yyyy HH:mm:ss ").toLatin1() + line + '\n');
+    }
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018",
+                        BENCHSCOPE_SOURCE_DIR "/sample_data/measured-dev", tegrastats});
     w.resize(1600, 1000);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -105,6 +118,8 @@ class TestScenarioExports : public QObject {
       for (const QString& p : bs::test::words_past(pages.front(), pages.front().size.width()))
         problems << QStringLiteral("%1: a word runs past the figure's edge: %2").arg(tab, p);
       if (tabs->currentWidget() == w.power_view()) {
+        if (const double upper = w.power_view()->plot()->xAxis->range().upper; upper > 130)
+          problems << QStringLiteral("Power: the view's time axis runs to %1 s for the 120 s current logs").arg(upper);
         // Time ticks: the logs are 120 s long; an axis to 3000 s leaves them a sliver of the figure.
         double widest_tick = 0;
         for (const auto& word : pages.front().words)

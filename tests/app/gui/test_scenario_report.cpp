@@ -51,16 +51,8 @@ class TestScenarioReport : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(&w));
 
     const QString pdf = dir.filePath("report.pdf");
-    const auto answered = bs::test::answer_next_modal(&w, [&](QWidget* modal) {
-      auto* files = qobject_cast<QFileDialog*>(modal);
-      if (!files) {
-        modal->close();
-        return;
-      }
-      files->selectNameFilter("PDF report (*.pdf)");
-      files->selectFile(pdf);
-      bs::test::click_dialog_button(files, QDialogButtonBox::Save);
-    });
+    const auto answered = bs::test::answer_next_modal(
+        &w, [&](QWidget* modal) { bs::test::answer_file_dialog(modal, pdf, "PDF report (*.pdf)"); });
     bs::test::press(w, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     QVERIFY(*answered);
     QVERIFY2(QFile::exists(pdf), "no report written");

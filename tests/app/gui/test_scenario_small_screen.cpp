@@ -63,12 +63,13 @@ QStringList cut_on_screen(QWidget* tab, const QRect& screen) {
   QStringList out;
   for (QWidget* w : tab->findChildren<QWidget*>()) {
     if (!w->isVisible() || w->isWindow()) continue;
+    // Inside a scroll area a widget may lie beyond the viewport: scrolling brings it into view.
+    bool scrolled = false;
+    for (QWidget* a = w->parentWidget(); a && !scrolled; a = a->parentWidget())
+      scrolled = a->objectName() == "qt_scrollarea_viewport";
     const QRect global(w->mapToGlobal(QPoint(0, 0)), w->size());
-    if (!screen.contains(global)) out << describe(w) + " lies outside the screen";
+    if (!scrolled && !screen.contains(global)) out << describe(w) + " lies outside the screen";
     QWidget* parent = w->parentWidget();
-    const bool scrolled = parent && parent->parentWidget() &&
-                          (qobject_cast<QAbstractScrollArea*>(parent->parentWidget()) ||
-                           parent->objectName() == "qt_scrollarea_viewport");
     if (parent && !scrolled && !parent->rect().contains(w->geometry()))
       out << describe(w) + " sticks out of its " + describe(parent);
     if (auto* b = qobject_cast<QAbstractButton*>(w);
@@ -116,7 +117,12 @@ QStringList cut_on_screen(QWidget* tab, const QRect& screen) {
       for (std::size_t b = a + 1; b < labels.size(); ++b)
         if (labels[a].second.intersected(labels[b].second).width() > 1 &&
             labels[a].second.intersected(labels[b].second).height() > 1)
-          out << QStringLiteral("labels '%1' and '%2' print over each other").arg(labels[a].first, labels[b].first);
+          out << QStringLiteral("labels '%1' and '%2' print over each other (at %3,%4 and %5,%6)")
+                     .arg(labels[a].first, labels[b].first)
+                     .arg(labels[a].second.x(), 0, 'f', 0)
+                     .arg(labels[a].second.y(), 0, 'f', 0)
+                     .arg(labels[b].second.x(), 0, 'f', 0)
+                     .arg(labels[b].second.y(), 0, 'f', 0);
   }
   return out;
 }
@@ -309,15 +315,8 @@ class TestScenarioSmallScreen : public QObject {
     QVERIFY2(saved_state, "no status saying how edits are kept");
     QVERIFY2(saved_state->text().contains("untitled", Qt::CaseInsensitive), qPrintable(saved_state->text()));
     const QString target = dir.filePath("kept.bsw");
-    const auto answered = bs::test::answer_next_modal(&w, [&](QWidget* modal) {
-      auto* files = qobject_cast<QFileDialog*>(modal);
-      if (!files) {
-        modal->close();
-        return;
-      }
-      files->selectFile(target);
-      bs::test::click_dialog_button(files, QDialogButtonBox::Save);
-    });
+    const auto answered =
+        bs::test::answer_next_modal(&w, [&](QWidget* modal) { bs::test::answer_file_dialog(modal, target); });
     bs::test::press(w, Qt::Key_S, Qt::ControlModifier);
     QVERIFY(*answered);
     QTRY_VERIFY(QFile::exists(target));
