@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "chart_marks.h"
+#include "plot_labels.h"
 
 namespace bs::ui {
 namespace {
@@ -34,8 +36,24 @@ QString origin_name(DataOrigin o) { return QString::fromStdString(origin_label(o
 }  // namespace
 
 QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> classes) {
+  // The points' names, placed after every layout pass around their points, apart from each other and from the
+  // markers (figures/plot_labels.h): fixed offsets printed names over each other where points crowd. One placer per
+  // plot, kept across redraws.
+  auto* names = plot.findChild<AnchoredLabels*>(QStringLiteral("bs-candidate-names"));
+  if (!names) {
+    names = new AnchoredLabels(&plot);
+    names->setObjectName(QStringLiteral("bs-candidate-names"));
+  }
+  names->clear();
   plot.clearGraphs();
   plot.clearItems();
+  struct Name {
+    double x, y;
+    QString text;
+    QColor color;
+    bool flagged;
+  };
+  std::vector<Name> to_name;
   plot.legend->setVisible(true);
   plot.legend->setFont(QFont(plot.font().family(), 8));
   // The legend goes under the axes, never over the points (a box inside the axes hid the published ones in a
@@ -85,12 +103,10 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
       } else {
         g->removeFromLegend();
       }
-      auto* label = new QCPItemText(&plot);
-      label->position->setCoords(*c.power_w, *c.throughput_per_s);
-      label->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
-      label->setPadding(QMargins(6, 0, 0, 2));
-      label->setFont(QFont(plot.font().family(), 7));
-      label->setText(is_flagged ? flag_label(QString::fromStdString(c.platform)) : QString::fromStdString(c.platform));
+      to_name.push_back(
+          {*c.power_w, *c.throughput_per_s,
+           is_flagged ? flag_label(QString::fromStdString(c.platform)) : QString::fromStdString(c.platform), color,
+           is_flagged});
       xmax = std::max(xmax, *c.power_w);
       ymin = std::min(ymin, *c.throughput_per_s);
       ymax = std::max(ymax, *c.throughput_per_s);
@@ -103,6 +119,9 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
     g->setScatterStyle(origin_marker(o, QColor(90, 90, 90)));
     g->setName(QObject::tr("origin: %1").arg(origin_name(o)));
   }
+  // Flagged points are named first: their "⚠" must not give way to a plain name where two crowd.
+  std::stable_sort(to_name.begin(), to_name.end(), [](const Name& a, const Name& b) { return a.flagged > b.flagged; });
+  for (const Name& n : to_name) names->add(n.x, n.y, n.text, n.color)->setFont(QFont(plot.font().family(), 7));
   if (ymin > ymax) ymin = 0.1, ymax = 10;
   plot.xAxis->setRange(0, xmax * 1.35);
   // Whole decades: the log ticker then labels 1, 10, 100 ... (within less than a decade it falls back to linear

@@ -3,7 +3,8 @@
 // The candidates figure: inferences per second (log axis) against power (W) for every candidate with both, one
 // colour per class (network, scenario, precision: the legend names each, so unlike classes are never mixed
 // silently) and one marker per origin (filled circle measured, open square reconstructed, diamond published: the
-// legend names each), every point labelled with its platform. Rows without a power figure are listed in the
+// legend names each), every point labelled with its platform where the name fits apart from the others (flagged
+// points first; the table beside the figure lists every row). Rows without a power figure are listed in the
 // returned note, not drawn. Needs a QApplication (offscreen works).
 #include <QImage>
 #include <QString>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "overlay_geometry.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -82,10 +83,46 @@ Qt::Alignment least_covered_corner(const QRectF& area, const QSizeF& size, const
   return best;
 }
 
+double distance_to(const QRectF& rect, const QPolygonF& curve) {
+  const auto point_to_rect = [&](const QPointF& p) {
+    const double dx = std::max({rect.left() - p.x(), 0.0, p.x() - rect.right()});
+    const double dy = std::max({rect.top() - p.y(), 0.0, p.y() - rect.bottom()});
+    return std::hypot(dx, dy);
+  };
+  const auto point_to_segment = [](const QPointF& p, const QPointF& a, const QPointF& b) {
+    const QPointF d = b - a;
+    const double length2 = d.x() * d.x() + d.y() * d.y();
+    const double t = length2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / length2, 0.0, 1.0) : 0.0;
+    const QPointF q = a + t * d;
+    return std::hypot(p.x() - q.x(), p.y() - q.y());
+  };
+  double best = std::numeric_limits<double>::infinity();
+  if (curve.size() == 1) return point_to_rect(curve.front());
+  for (qsizetype i = 1; i < curve.size(); ++i) {
+    const QPointF a = curve[i - 1], b = curve[i];
+    if (clipped_length(rect, a, b) > 0 || rect.contains(a)) return 0;
+    // Apart from the rectangle, the nearest pair is an end of the segment and the rectangle, or a corner and the
+    // segment.
+    best = std::min({best, point_to_rect(a), point_to_rect(b)});
+    for (const QPointF& corner : {rect.topLeft(), rect.topRight(), rect.bottomLeft(), rect.bottomRight()})
+      best = std::min(best, point_to_segment(corner, a, b));
+  }
+  return best;
+}
+
+bool nearer_another_curve(const QRectF& box, const std::vector<QPolygonF>& curves, int own) {
+  if (own < 0 || own >= static_cast<int>(curves.size())) return false;
+  const double mine = distance_to(box, curves[static_cast<std::size_t>(own)]);
+  for (std::size_t c = 0; c < curves.size(); ++c)
+    if (static_cast<int>(c) != own && distance_to(box, curves[c]) + 0.5 < mine) return true;
+  return false;
+}
+
 std::vector<std::optional<QRectF>> place_labels_greedy(const QRectF& area, const std::vector<QPointF>& anchors,
                                                        const std::vector<QSizeF>& sizes,
                                                        const std::vector<QRectF>& obstacles,
-                                                       const std::vector<QPolygonF>& curves, double gap) {
+                                                       const std::vector<QPolygonF>& curves, double gap,
+                                                       const std::vector<int>& owners) {
   std::vector<std::optional<QRectF>> placed(anchors.size());
   std::vector<QRectF> taken = obstacles;
   for (std::size_t i = 0; i < anchors.size() && i < sizes.size(); ++i) {
@@ -103,7 +140,7 @@ std::vector<std::optional<QRectF>> place_labels_greedy(const QRectF& area, const
       if (!area.contains(c)) continue;
       bool free = true;
       for (const QRectF& t : taken) free = free && !t.intersects(c);
-      if (!free) continue;
+      if (!free || (i < owners.size() && nearer_another_curve(c, curves, owners[i]))) continue;
       const double cost = covered_length(c, curves);
       if (cost < best_cost) {
         best_cost = cost;

@@ -26,13 +26,23 @@ double coverage_cost(const QRectF& rect, const std::vector<QPolygonF>& curves, c
 Qt::Alignment least_covered_corner(const QRectF& area, const QSizeF& size, const std::vector<QPolygonF>& curves,
                                    const std::vector<QRectF>& marks, double margin);
 
+// Distance in pixels from `rect` to the polyline `curve` (0 where the curve enters the rectangle).
+double distance_to(const QRectF& rect, const QPolygonF& curve);
+
+// A label box that lies nearer another curve than its own reads as that curve's value ("2.71" under the 5.25 curve):
+// true when some curve other than `curves[own]` is nearer `box` than `curves[own]` by more than half a pixel.
+// Always false without an owner (own < 0).
+bool nearer_another_curve(const QRectF& box, const std::vector<QPolygonF>& curves, int own);
+
 // Greedy label placement in priority order: each label tries the four positions diagonal to its anchor (`gap`
 // pixels away), then straight above, right, left and below it, and takes the free one that covers the least curve
-// length. Free = inside `area`, overlapping no obstacle and no label placed before. A label with no free position gets
+// length. Free = inside `area`, overlapping no obstacle and no label placed before, and (when `owners` gives the
+// label's curve, an index into `curves`) no nearer another curve than its own. A label with no free position gets
 // nullopt and is not drawn.
 std::vector<std::optional<QRectF>> place_labels_greedy(const QRectF& area, const std::vector<QPointF>& anchors,
                                                        const std::vector<QSizeF>& sizes,
                                                        const std::vector<QRectF>& obstacles,
-                                                       const std::vector<QPolygonF>& curves, double gap);
+                                                       const std::vector<QPolygonF>& curves, double gap,
+                                                       const std::vector<int>& owners = {});
 
 }  // namespace bs::ui

@@ -9,6 +9,7 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -190,7 +191,14 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
                           QJsonArray& left_out) {
   QJsonArray sources;
   double y_max = 0, x_max = 0;
-  std::set<int> used_colors;
+  std::map<std::string, int> platform_colors, logs_of_platform;
+  {
+    std::vector<std::pair<std::string, int>> devices;
+    for (const auto& [key, index] : d.colors) devices.emplace_back(key.first, index);
+    std::vector<std::string> platforms;
+    for (const PowerTrace& trace : d.traces) platforms.push_back(trace.platform);
+    for (const auto& [platform, index] : platform_color_indices(devices, platforms)) platform_colors[platform] = index;
+  }
   std::vector<QCPGraph*> trace_graphs;
   std::vector<RunIdentity> trace_ids;
   const auto leave_out = [&](const PowerTrace& trace, const std::string& reason) {
@@ -229,15 +237,13 @@ QJsonArray current_figure(QCustomPlot& plot, const FigureTemplate& t, const Figu
     x_max = std::max(x_max, trace.time_s.back() - trace.time_s.front());
     QCPGraph* g = plot.addGraph();
     g->setData(xs, ys, true);
-    // The platform's colour: its first device's (lowest index), as in the Power and Battery tabs; a second log of
-    // a platform takes the next colour no other log of this figure has, so two logs never share one.
-    int color = -1;
-    for (const auto& [key, c] : d.colors)
-      if (key.first == trace.platform && (color < 0 || c < color)) color = c;
-    color = std::max(color, 0);
-    while (used_colors.count(color)) ++color;
-    used_colors.insert(color);
-    g->setPen(QPen(device_color(color), o.line_width_pt * 0.6));
+    // The platform's colour, as the Power and Battery tabs and the report's chart give it (one mapping:
+    // platform_color_indices); a second log of a platform keeps that colour with another line style (a colour of its
+    // own would be another platform's), and the legend names what differs.
+    const int logs_before = logs_of_platform[trace.platform]++;
+    static const std::array<Qt::PenStyle, 4> kLogStyles = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
+    g->setPen(QPen(device_color(platform_colors.at(trace.platform)), o.line_width_pt * 0.6,
+                   kLogStyles[static_cast<std::size_t>(logs_before) % kLogStyles.size()]));
     g->setName(QString::fromStdString(trace.platform));
     trace_graphs.push_back(g);
     trace_ids.push_back({trace.platform, "", trace.provenance.date, trace.provenance.host, trace.label});

@@ -18,8 +18,9 @@
 namespace bs::ui {
 namespace {
 
-constexpr const char* kNoteName = "bs-legend-note";        // objectName of the note element under the legend
-constexpr const char* kNotesProperty = "bs_figure_notes";  // the figure's own note lines (QStringList)
+constexpr const char* kNoteName = "bs-legend-note";            // objectName of the note element under the legend
+constexpr const char* kNotesProperty = "bs_figure_notes";      // the figure's own note lines (QStringList)
+constexpr const char* kFigureNameProperty = "bs_figure_name";  // a plottable's name in figures (QString)
 
 // Everything layout_figure changes on a view's plot, saved so that export_plot can put the view back as it was.
 class ViewState {
@@ -47,7 +48,10 @@ class ViewState {
     column_spacing_ = plot.legend->columnSpacing();
     icon_size_ = plot.legend->iconSize();
     legend_visible_ = plot.legend->visible();
-    for (int i = 0; i < plot.legend->itemCount(); ++i) item_fonts_.push_back(plot.legend->item(i)->font());
+    // A legend's grid may hold empty cells (entries taken out and put back, as the Power tab's overlay does):
+    // item(i) is null there.
+    for (int i = 0; i < plot.legend->itemCount(); ++i)
+      if (const QCPAbstractLegendItem* item = plot.legend->item(i)) item_fonts_.push_back(item->font());
   }
 
   void restore() {
@@ -79,8 +83,9 @@ class ViewState {
     plot_.legend->setColumnSpacing(column_spacing_);
     plot_.legend->setIconSize(icon_size_);
     plot_.legend->setFont(legend_font_);
-    for (int i = 0; i < plot_.legend->itemCount() && i < static_cast<int>(item_fonts_.size()); ++i)
-      plot_.legend->item(i)->setFont(item_fonts_[static_cast<std::size_t>(i)]);
+    for (int i = 0, k = 0; i < plot_.legend->itemCount() && k < static_cast<int>(item_fonts_.size()); ++i)
+      if (QCPAbstractLegendItem* item = plot_.legend->item(i))
+        item->setFont(item_fonts_[static_cast<std::size_t>(k++)]);
     for (const Axis& a : axes_) {
       a.axis->setLabelFont(a.label);
       a.axis->setTickLabelFont(a.ticks);
@@ -189,7 +194,8 @@ void wrap_legend(QCustomPlot& plot, double font_pt, double width_pt) {
     QFont f = plot.legend->font();
     f.setPointSizeF(pt);
     plot.legend->setFont(f);
-    for (int i = 0; i < plot.legend->itemCount(); ++i) plot.legend->item(i)->setFont(f);
+    for (int i = 0; i < plot.legend->itemCount(); ++i)
+      if (QCPAbstractLegendItem* item = plot.legend->item(i)) item->setFont(f);
     plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, false);
     for (int columns = std::max(1, plot.legend->itemCount()); columns >= 1; --columns) {
       plot.legend->setWrap(columns);  // with foColumnsFirst: entries per row
@@ -227,7 +233,8 @@ void elide_wide_entries(QCustomPlot& plot, double width_pt) {
     if (excess <= 0) return;
     double widest = 0;
     for (int i = 0; i < plot.legend->itemCount(); ++i)
-      widest = std::max(widest, static_cast<double>(plot.legend->item(i)->minimumOuterSizeHint().width()));
+      if (QCPAbstractLegendItem* item = plot.legend->item(i))
+        widest = std::max(widest, static_cast<double>(item->minimumOuterSizeHint().width()));
     const double limit = widest - excess - 1;
     for (int i = 0; i < plot.legend->itemCount(); ++i) {
       auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i));
@@ -257,8 +264,8 @@ QString cap_legend(QCustomPlot& plot) {
   return QStringLiteral("Also drawn (%1 more): %2.").arg(rest.size()).arg(rest.join("; "));
 }
 
-// The note under the legend: the figure's own lines, then the entries the legend left out (at most three lines of
-// them, then how many more), each wrapped to the width.
+// The note under the legend: the figure's own lines, then every entry the legend left out, whole (a figure that
+// names only some of what it draws leaves the reader to guess the rest), each wrapped to the width.
 void add_note(QCustomPlot& plot, const QString& also_drawn, double font_pt, double width_pt) {
   QFont f("DejaVu Sans");
   f.setPointSizeF(std::max(5.0, font_pt * 0.8));
@@ -266,15 +273,7 @@ void add_note(QCustomPlot& plot, const QString& also_drawn, double font_pt, doub
   QStringList lines;
   for (const QString& note : plot.property(kNotesProperty).toStringList())
     lines << wrapped(note, metrics, width_pt * 0.97);
-  if (!also_drawn.isEmpty()) {
-    QStringList rest = wrapped(also_drawn, metrics, width_pt * 0.97);
-    if (rest.size() > 3) {
-      const int more = static_cast<int>(also_drawn.count(';') + 1 - rest.mid(0, 3).join(' ').count(';'));
-      rest = rest.mid(0, 3);
-      rest.back() += QStringLiteral(" … and %1 more.").arg(std::max(1, more));
-    }
-    lines << rest;
-  }
+  if (!also_drawn.isEmpty()) lines << wrapped(also_drawn, metrics, width_pt * 0.97);
   if (lines.isEmpty()) return;
   auto* note = new QCPTextElement(&plot, lines.join('\n'), f);
   note->setObjectName(kNoteName);
@@ -323,10 +322,14 @@ QSizeF figure_size_pt(const FigureOptions& o) {
 
 FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
   apply_figure_look(plot, o);
+  for (int i = 0; i < plot.plottableCount(); ++i)
+    if (const QString name = plot.plottable(i)->property(kFigureNameProperty).toString(); !name.isEmpty())
+      plot.plottable(i)->setName(name);
   const double width_pt = figure_size_pt(o).width();
   double below_pt = 0;
   QString also_drawn;
   if (plot.legend->visible() && plot.legend->itemCount() > 0) {
+    plot.legend->setFillOrder(plot.legend->fillOrder(), true);  // its entries packed, no empty cells between them
     place_legend_below(plot, o.font_pt);
     merge_alike_entries(plot);
     wrap_legend(plot, o.font_pt, width_pt);
@@ -346,6 +349,10 @@ FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
     sized.height_mm = (axes_pt + below_pt) * 25.4 / 72.0;
   }
   return sized;
+}
+
+void set_figure_name(QCPAbstractPlottable* plottable, const QString& name) {
+  plottable->setProperty(kFigureNameProperty, name);
 }
 
 void add_figure_note(QCustomPlot& plot, const QString& line) {

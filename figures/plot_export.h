@@ -11,6 +11,7 @@
 #include "util/cancel.h"
 
 class QCustomPlot;
+class QCPAbstractPlottable;
 
 namespace bs::ui {
 
@@ -29,6 +30,10 @@ inline constexpr int kMaxLegendRows = 8;
 // axes keep 0.62 x the width (0.8 below 80 mm, so the axis label fits) and the legend and note add theirs.
 // The plot is left in the figure's look: export_plot puts a view back afterwards.
 FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& options);
+
+// The name a plottable has in an exported figure when it differs from the view's legend (the FLOPS tab's series
+// carry their peak there: a figure's peak labels give way where they crowd, the legend names every peak).
+void set_figure_name(QCPAbstractPlottable* plottable, const QString& name);
 
 // A line for the figure's note under the legend (a flag's footnote, "⚠[1] above_spec_peak: …"): layout_figure
 // sets the note's lines at the figure's width. Kept with the plot; a view that adds none exports without a note.

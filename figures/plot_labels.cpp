@@ -68,7 +68,7 @@ void AnchoredLabels::clear() {
 
 void AnchoredLabels::add_curve(QCPGraph* graph) { curves_.emplace_back(graph); }
 
-QCPItemText* AnchoredLabels::add(double key, double value, const QString& text, const QColor& color) {
+QCPItemText* AnchoredLabels::add(double key, double value, const QString& text, const QColor& color, QCPGraph* owner) {
   auto* item = new QCPItemText(plot_);
   item->setText(text);
   QFont font = plot_->font();
@@ -82,7 +82,7 @@ QCPItemText* AnchoredLabels::add(double key, double value, const QString& text, 
   item->position->setType(QCPItemPosition::ptAbsolute);
   item->setClipToAxisRect(false);
   item->setVisible(false);  // until the first layout has placed it
-  labels_.push_back({item, key, value});
+  labels_.push_back({item, key, value, owner});
   return item;
 }
 
@@ -116,14 +116,23 @@ void AnchoredLabels::place() {
   const bool legend_inside = plot_->legend->visible() && plot_->legend->layout() == plot_->axisRect()->insetLayout();
   const QRectF legend = QRectF(plot_->legend->outerRect()).adjusted(-2, -2, 2, 2);
   if (legend_inside) obstacles.push_back(legend);
+  // The curves in pixels, and each label's own among them (graphs_in_pixels leaves hidden graphs out: index the
+  // visible ones).
+  std::vector<QPointer<QCPGraph>> shown_curves;
+  for (const auto& g : curves_)
+    if (g && g->visible()) shown_curves.push_back(g);
+  const std::vector<QPolygonF> curves = graphs_in_pixels(shown_curves);
+  std::vector<int> owners;
   for (const Label& l : labels_) {
     if (!l.item) continue;
     const QRectF marker = marker_box(plot_, l.key, l.value);
     anchors.push_back(marker.center());
     obstacles.push_back(marker);
     sizes.push_back(text_size(l.item));
+    const auto own = std::find(shown_curves.begin(), shown_curves.end(), l.owner);
+    owners.push_back(l.owner && own != shown_curves.end() ? static_cast<int>(own - shown_curves.begin()) : -1);
   }
-  const auto placed = place_labels_greedy(area, anchors, sizes, obstacles, graphs_in_pixels(curves_), kGap);
+  const auto placed = place_labels_greedy(area, anchors, sizes, obstacles, curves, kGap, owners);
   std::vector<QRectF> taken;
   for (const auto& spot : placed)
     if (spot) taken.push_back(*spot);
@@ -139,15 +148,15 @@ void AnchoredLabels::place() {
       continue;
     }
     // No spot free of curves (a crowded log axis): beside its marker, inside the axes, even if it touches a curve,
-    // unless it would cover a label placed before it (a higher peak's) or the legend: then this, the lesser, is
-    // dropped. Its value stays in the tables and the hover read-out.
+    // unless it would cover a label placed before it (a higher peak's) or the legend, or sit nearer another curve
+    // than its own: then this, the lesser, is dropped. Its value stays in the tables and the hover read-out.
     const QSizeF size = sizes[i - 1];
     QRectF box(anchors[i - 1] + QPointF(kMarkerHalf + kGap, -size.height() / 2), size);
     if (box.right() > area.right()) box.moveRight(anchors[i - 1].x() - kMarkerHalf - kGap);
     box.moveTop(std::clamp(box.top(), area.top(), std::max(area.top(), area.bottom() - box.height())));
     box.moveLeft(std::clamp(box.left(), area.left(), std::max(area.left(), area.right() - box.width())));
     const bool collides = std::any_of(taken.begin(), taken.end(), [&](const QRectF& t) { return t.intersects(box); }) ||
-                          (legend_inside && legend.intersects(box));
+                          (legend_inside && legend.intersects(box)) || nearer_another_curve(box, curves, owners[i - 1]);
     l.item->setVisible(in_view && !collides);
     l.item->position->setCoords(box.center());
     if (in_view && !collides) taken.push_back(box);

@@ -27,8 +27,10 @@ class AnchoredLabels : public QObject {
   void clear();
   // A data series the labels should avoid covering.
   void add_curve(QCPGraph* graph);
-  // A label for the point (key, value) in plot coordinates. Add in priority order, highest first.
-  QCPItemText* add(double key, double value, const QString& text, const QColor& color);
+  // A label for the point (key, value) in plot coordinates. Add in priority order, highest first. With `owner` (the
+  // curve the point lies on, added with add_curve) the label is never put nearer another curve than that one, where
+  // it would read as the other curve's value; with no such spot it is not drawn.
+  QCPItemText* add(double key, double value, const QString& text, const QColor& color, QCPGraph* owner = nullptr);
   // Re-places the labels for the plot's current layout (done after every layout pass).
   void place();
 
@@ -40,6 +42,7 @@ class AnchoredLabels : public QObject {
   struct Label {
     QPointer<QCPItemText> item;
     double key, value;
+    QPointer<QCPGraph> owner;
   };
   QCustomPlot* plot_;
   std::vector<QPointer<QCPGraph>> curves_;

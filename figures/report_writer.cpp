@@ -15,6 +15,7 @@
 #include <QSaveFile>
 #include <QTemporaryDir>
 #include <QTextBlock>
+#include <QTextBoundaryFinder>
 #include <QTextCursor>
 #include <QTextDocument>
 #include <QTextTable>
@@ -25,8 +26,10 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "device_palette.h"
 #include "plot_export.h"
 #include "report/platform_report.h"
+#include "report/table_fit.h"
 #include "report_chart.h"
 
 namespace bs::ui {
@@ -55,12 +58,29 @@ std::string shown_by(const QStringList& contents, const std::string& id) {
   return {};
 }
 
-std::string figure_caption(const FigureTemplate& t) {
+// What the triptych shows, said first: a synthetic capture (the paper's sample stands in for a capture that was never
+// published) must not pass for a camera image, and a reader should know where it comes from.
+std::string triptych_caption(const std::optional<Frame>& frame) {
+  const std::string panels = ": raw mosaic as grey, demosaiced, and reprojected.";
+  if (!frame)
+    return "Synthetic test chart, not a camera image (the workspace holds no capture), rendered by BenchScope through "
+           "the paper's 195\xC2\xB0 lens" +
+           panels;
+  const std::string& path = frame->provenance.source_file;
+  const std::string file = path.empty() ? frame->label : path.substr(path.find_last_of('/') + 1);
+  if (frame->synthetic)
+    return "Synthetic capture, not a camera image: " + file + ", a test chart rendered through a lens model by " +
+           (frame->provenance.tool.empty() ? std::string("benchscope-cli synth-frame") : frame->provenance.tool) +
+           panels;
+  return "Camera frame " + file + panels;
+}
+
+std::string figure_caption(const FigureTemplate& t, const FigureData& data) {
   if (t.kind == "flops")
     return t.title + ": " + (t.y_label.empty() ? "FLOPS" : t.y_label) + " against " +
            (t.x_label.empty() ? "workers" : t.x_label) + ", mean over repetitions.";
   if (t.kind == "current") return t.title + ": supply current over time (minimum and maximum per time bucket).";
-  if (t.kind == "triptych") return "Camera frame: raw mosaic as grey, demosaiced, and reprojected.";
+  if (t.kind == "triptych") return triptych_caption(data.frame);
   return t.title + ".";
 }
 
@@ -89,7 +109,7 @@ std::vector<RenderedFigure> render_pngs(const std::vector<FigureTemplate>& templ
     r.name = name;
     r.png = read_all(QDir(dir.path()).filePath(name));
     if (r.png.isEmpty() || !r.image.loadFromData(r.png, "PNG")) continue;  // optional and skipped: no file
-    r.meta.caption = figure_caption(t);
+    r.meta.caption = figure_caption(t, data);
     r.meta.id = t.id;
     r.meta.sources = shown_by(rendered.contents, t.id);
     r.meta.width_pt = o.width_mm * kPtPerMm;
@@ -103,11 +123,14 @@ std::vector<RenderedFigure> render_pngs(const std::vector<FigureTemplate>& templ
 std::optional<RenderedFigure> render_chart(const std::vector<PlatformRow>& rows,
                                            const std::vector<PlatformVerdict>& verdicts, const FigureData& data,
                                            const FigureOptions& base) {
+  // Each platform in its colour as everywhere else (device_palette.h): a platform with no device of its own (a
+  // power log only) takes the free colour the Power tab and fig4 give it, not another platform's.
+  std::vector<std::pair<std::string, int>> devices;
+  for (const auto& [key, index] : data.colors) devices.emplace_back(key.first, index);
+  std::vector<std::string> platforms;  // the same platforms the Power tab is given, so the free colours match
+  for (const PowerTrace& trace : data.traces) platforms.push_back(trace.platform);
   std::map<std::string, int> colors;
-  for (const auto& [key, index] : data.colors) {
-    const auto it = colors.find(key.first);
-    if (it == colors.end() || index < it->second) colors[key.first] = index;
-  }
+  for (const auto& [platform, index] : platform_color_indices(devices, platforms)) colors[platform] = index;
   FigureOptions o = base;
   o.width_mm = 180;
   o.height_mm = 40;
@@ -207,8 +230,56 @@ void keep_together(QTextDocument& doc) {
   }
 }
 
-// Column widths from the fonts as printed: each column at least as wide as its widest word (so no word is broken,
-// "Preproces sing"), the rest of the text width shared out in proportion to the columns' natural widths.
+// The widest piece of `text` a line cannot break inside, as the layout breaks lines (Unicode line breaking: at
+// spaces, after '/', after a '-' before a letter).
+double widest_unbreakable(const QString& text, const QFontMetricsF& m) {
+  QTextBoundaryFinder lines(QTextBoundaryFinder::Line, text);
+  double widest = 0;
+  for (qsizetype start = 0, end = lines.toNextBoundary(); end != -1; start = end, end = lines.toNextBoundary())
+    widest = std::max(widest, m.horizontalAdvance(text.mid(start, end - start).trimmed()));
+  return widest;
+}
+
+struct ColumnWidths {
+  std::vector<double> widest, natural;  // points: the widest unbreakable piece, the longest line
+};
+
+ColumnWidths measure_columns(const QTextTable& table, QPaintDevice* device) {
+  ColumnWidths w{std::vector<double>(static_cast<std::size_t>(table.columns()), 0),
+                 std::vector<double>(static_cast<std::size_t>(table.columns()), 0)};
+  for (int r = 0; r < table.rows(); ++r)
+    for (int c = 0; c < table.columns(); ++c) {
+      const QTextTableCell cell = table.cellAt(r, c);
+      if (cell.columnSpan() != 1) continue;
+      for (auto it = cell.begin(); !it.atEnd(); ++it) {
+        const QTextBlock block = it.currentBlock();
+        double line = 0;
+        for (auto f = block.begin(); !f.atEnd(); ++f) {
+          const QFontMetricsF m(f.fragment().charFormat().font(), device);
+          auto& widest = w.widest[static_cast<std::size_t>(c)];
+          widest = std::max(widest, widest_unbreakable(f.fragment().text(), m));
+          line += m.horizontalAdvance(f.fragment().text());
+        }
+        auto& natural = w.natural[static_cast<std::size_t>(c)];
+        natural = std::max(natural, line);
+      }
+    }
+  return w;
+}
+
+// Every character of the table at `pt` points (bold, italic and colours kept).
+void set_table_font_size(QTextTable& table, double pt) {
+  QTextCursor all = table.firstCursorPosition();
+  all.setPosition(table.lastCursorPosition().position(), QTextCursor::KeepAnchor);
+  QTextCharFormat size;
+  size.setFontPointSize(pt);
+  all.mergeCharFormat(size);
+}
+
+// Column widths from the fonts as printed: each column at least as wide as its widest unbreakable piece (so no
+// word is broken, "Preproces sing", and nothing runs past the page), the rest of the text width shared out in
+// proportion to the columns' natural widths. A table whose whole words do not fit at its font is set smaller, down
+// to kTableMinFontPt (report/table_fit.h, which split it beforehand where even that would not do).
 void fit_tables(QTextDocument& doc, QPaintDevice* device) {
   const double text_w = doc.pageSize().width();
   for (QTextFrame* frame : doc.rootFrame()->childFrames()) {
@@ -216,46 +287,40 @@ void fit_tables(QTextDocument& doc, QPaintDevice* device) {
     if (!table) continue;
     const QTextTableFormat format = table->format();
     const double pad = format.cellPadding() * 2 + format.cellSpacing() + 2;
-    std::vector<double> widest(static_cast<std::size_t>(table->columns()), 0), natural = widest;
-    for (int r = 0; r < table->rows(); ++r)
-      for (int c = 0; c < table->columns(); ++c) {
-        const QTextTableCell cell = table->cellAt(r, c);
-        if (cell.columnSpan() != 1) continue;
-        for (auto it = cell.begin(); !it.atEnd(); ++it) {
-          const QTextBlock block = it.currentBlock();
-          double line = 0;
-          for (auto f = block.begin(); !f.atEnd(); ++f) {
-            const QFontMetricsF m(f.fragment().charFormat().font(), device);
-            for (const QString& word : f.fragment().text().split(' ', Qt::SkipEmptyParts))
-              widest[static_cast<std::size_t>(c)] =
-                  std::max(widest[static_cast<std::size_t>(c)], m.horizontalAdvance(word));
-            line += m.horizontalAdvance(f.fragment().text());
-          }
-          natural[static_cast<std::size_t>(c)] = std::max(natural[static_cast<std::size_t>(c)], line);
-        }
-      }
+    ColumnWidths m;
     double need = 0, extra = 0;
-    // Row headings on one line where they are short ("Energy per frame"): a quarter of the width at most.
-    if (!widest.empty()) widest[0] = std::max(widest[0], std::min(natural[0], text_w * 0.22));
-    for (std::size_t c = 0; c < widest.size(); ++c) {
-      widest[c] += pad;
-      natural[c] += pad;
-      need += widest[c];
-      extra += std::max(0.0, natural[c] - widest[c]);
+    double font_pt = table->cellAt(0, 0).firstCursorPosition().charFormat().font().pointSizeF();
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      m = measure_columns(*table, device);
+      need = extra = 0;
+      // Row headings on one line where they are short ("Energy per frame"): a quarter of the width at most.
+      if (!m.widest.empty()) m.widest[0] = std::max(m.widest[0], std::min(m.natural[0], text_w * 0.22));
+      for (std::size_t c = 0; c < m.widest.size(); ++c) {
+        m.widest[c] += pad;
+        m.natural[c] += pad;
+        need += m.widest[c];
+        extra += std::max(0.0, m.natural[c] - m.widest[c]);
+      }
+      if (need <= text_w - 4 || font_pt <= kTableMinFontPt || font_pt <= 0) break;
+      // Text widths scale with the font; the padding does not.
+      const double cols_pad = pad * static_cast<double>(m.widest.size());
+      const double scale = (text_w - 4 - cols_pad) / std::max(1.0, need - cols_pad);
+      font_pt = std::max(kTableMinFontPt, std::floor(font_pt * scale * 4) / 4);
+      set_table_font_size(*table, font_pt);
     }
     const double spare = text_w - need - 4;
-    if (spare < 0) continue;  // too many columns for whole words: platform_summary_tables splits before this
-    // All on one line when that fits (the space left spread in proportion); else the widest words, plus the spare
+    if (spare < 0) continue;  // not even at the smallest font: table_fit.h splits such tables before this
+    // All on one line when that fits (the space left spread in proportion); else the widest pieces, plus the spare
     // width where the text is longest.
-    const double total = std::accumulate(natural.begin(), natural.end(), 0.0);
+    const double total = std::accumulate(m.natural.begin(), m.natural.end(), 0.0);
     QVector<QTextLength> widths;
-    for (std::size_t c = 0; c < widest.size(); ++c) {
-      const double w = total <= text_w - 4 ? natural[c] + (text_w - 4 - total) * natural[c] / total
-                                           : widest[c] + spare * std::max(0.0, natural[c] - widest[c]) / extra;
+    for (std::size_t c = 0; c < m.widest.size(); ++c) {
+      const double w = total <= text_w - 4 ? m.natural[c] + (text_w - 4 - total) * m.natural[c] / total
+                                           : m.widest[c] + spare * std::max(0.0, m.natural[c] - m.widest[c]) / extra;
       // QTextDocument scales fixed lengths by the device's dpi / 96, as if they were CSS pixels: give them so.
       widths << QTextLength(QTextLength::FixedLength, w * 96.0 / device->logicalDpiX());
     }
-    QTextTableFormat f = format;
+    QTextTableFormat f = table->format();
     f.setColumnWidthConstraints(widths);
     table->setFormat(f);
   }

@@ -209,6 +209,9 @@ MainWindow::MainWindow(QWidget* parent)
   });
   status_label_ = new QLabel(this);
   statusBar()->addWidget(status_label_, 1);  // hidden while a temporary message shows
+  save_state_ = new QLabel(this);
+  save_state_->setObjectName(QStringLiteral("save_state"));
+  statusBar()->addPermanentWidget(save_state_);
   trace_loader_ = new PowerTraceLoader(this);
   statusBar()->addPermanentWidget(trace_loader_);
   connect(trace_loader_, &PowerTraceLoader::loaded, this, &MainWindow::show_traces);
@@ -520,6 +523,18 @@ void MainWindow::save_as() {
   open_workspace(path);
 }
 
+void MainWindow::save() {
+  if (!workspace_) return;
+  if (lens_ && lens_->has_unsaved_lens()) save_tuned_lens(false);
+  if (untitled_dir_) {
+    save_as();
+    return;
+  }
+  statusBar()->showMessage(tr("Nothing waits to be saved: every import, run and edit is already written to %1")
+                               .arg(QString::fromStdString(workspace_->path())),
+                           10000);
+}
+
 void MainWindow::show_damage() {
   const bool damaged = workspace_ && !workspace_->damage().empty();
   damage_banner_->set_damage(damaged ? workspace_->damage() : std::vector<WorkspaceDamage>{});
@@ -553,6 +568,28 @@ void MainWindow::update_title() {
                                        : QFileInfo(QString::fromStdString(workspace_->path())).fileName();
   const bool read_only = workspace_ && workspace_->read_only();
   setWindowTitle(read_only ? tr("BenchScope — %1 (read-only)").arg(name) : tr("BenchScope — %1").arg(name));
+  // How edits are kept, in sight all the time: a person looking for File > Save learns there is nothing to press.
+  if (!workspace_) {
+    save_state_->clear();
+    save_state_->setToolTip({});
+  } else if (read_only) {
+    save_state_->setText(tr("Read-only: nothing is written"));
+    save_state_->setToolTip(
+        tr("The workspace has damaged items (see the banner); it is opened read-only until they "
+           "are removed"));
+  } else if (untitled_dir_) {
+    save_state_->setText(tr("Untitled: Ctrl+S keeps it under a name"));
+    save_state_->setToolTip(
+        tr("An untitled workspace lives in a temporary folder that is deleted when it closes. "
+           "Save (Ctrl+S) writes it to a file of your choice; from then on every edit is "
+           "written to that file at once."));
+  } else {
+    save_state_->setText(tr("Edits are written at once to %1").arg(name));
+    save_state_->setToolTip(tr("%1\nEvery import, measured run and edit is written into the workspace file the "
+                               "moment it is made (one transaction each): there is nothing to save, and Edit > "
+                               "Undo takes an edit back. Save as (Ctrl+Shift+S) continues in a copy.")
+                                .arg(QString::fromStdString(workspace_->path())));
+  }
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

@@ -135,7 +135,11 @@ class MainWindow : public QMainWindow {
   void refresh_views();
   void show_import_report(const ImportReport& report);
   void save_as();
-  void update_title();
+  // File > Save (Ctrl+S): the workspace file holds every edit the moment it is made (one SQLite transaction each), so
+  // Save keeps an untitled workspace under a name (Save as) and otherwise says that nothing is waiting; a lens tuned
+  // in the Lens tab and not yet saved is saved for its frame first, as the quit question's Save does.
+  void save();
+  void update_title();  // and the status bar's note on how edits are kept
   void show_live_run(const FlopsRun& run);
   void store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled);
   void show_damage();     // the read-only banner, after every (re)load
@@ -170,6 +174,7 @@ class MainWindow : public QMainWindow {
   LensTab* lens_ = nullptr;
   HeadroomView* headroom_ = nullptr;
   QLabel* status_label_ = nullptr;  // workspace path and run counts
+  QLabel* save_state_ = nullptr;    // "Edits are written at once to …" / "Untitled: …" (permanent, right)
   QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens
   QAction* undo_edit_ = nullptr;
   QAction* redo_edit_ = nullptr;

@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's menus and actions, apart from main_window.cpp so the window itself stays about wiring views.
 #include <qcustomplot.h>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QTabWidget>
+#include <QTextBrowser>
 #include <QUndoStack>
+#include <QVBoxLayout>
+#include <algorithm>
 
 #include "main_window.h"
 #include "peaks/flops_plot.h"
@@ -60,6 +66,9 @@ void MainWindow::create_actions() {
   });
   recent_ = new RecentFiles(file->addMenu(tr("Open &recent")), this);
   connect(recent_, &RecentFiles::open_requested, this, [this](const QString& p) { open_workspace(p); });
+  add(file, tr("&Save"), QKeySequence(Qt::CTRL | Qt::Key_S),
+      tr("Every edit is written to the workspace file at once; Save keeps an untitled workspace under a name"),
+      [this] { save(); });
   add(file, tr("Save workspace &as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
       tr("Write a copy of the workspace under a new name and continue there"), [this] { save_as(); });
   file->addSeparator();
@@ -169,9 +178,24 @@ void MainWindow::show_help() {
          "the import that brought the selected item (Ctrl+Z outside the Lens tab undoes)</td></tr>"
          "<tr><td><tt>Double-click</tt></td><td>Platforms and peak tables: show where a number came from</td></tr>"
          "</table><p>The README's <i>Views</i> section and <tt>docs/cli.md</tt> describe every view and command.</p>");
-  QMessageBox box(QMessageBox::NoIcon, tr("BenchScope: views and shortcuts"), html, QMessageBox::Close, this);
+  // A scrolling page in a dialog that fits the screen it opens on (a message box grew taller than a 1280x800 screen,
+  // its Close button out of reach).
+  QDialog box(this);
   box.setObjectName(QStringLiteral("help"));
-  box.setTextFormat(Qt::RichText);
+  box.setWindowTitle(tr("BenchScope: views and shortcuts"));
+  auto* page = new QTextBrowser(&box);
+  page->setHtml(html);
+  page->setOpenLinks(false);
+  auto* close = new QDialogButtonBox(QDialogButtonBox::Close, &box);
+  connect(close, &QDialogButtonBox::rejected, &box, &QDialog::reject);
+  auto* layout = new QVBoxLayout(&box);
+  layout->addWidget(page, 1);
+  layout->addWidget(close);
+  const QRect screen = (this->screen() ? this->screen() : QGuiApplication::primaryScreen())->availableGeometry();
+  const int width = std::min(900, screen.width() * 9 / 10);
+  page->document()->setTextWidth(width - 50);  // the page's height as wrapped at the dialog's width
+  const int height = static_cast<int>(page->document()->size().height()) + 90;
+  box.resize(width, std::min(height, screen.height() * 85 / 100));
   box.exec();
 }
 

@@ -2,6 +2,7 @@
 #include "report/platform_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "analysis/peaks/flag_notes.h"
@@ -100,18 +101,26 @@ std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>&
     }
     if (any) body.push_back(std::move(row));
   }
-  // As many platforms per table as fit the text width after the measure and unit columns, each as wide as the
-  // widest platform column (report/table_fit.h): one look for every part.
-  constexpr double kMeasurePct = 22, kUnitPct = 9;
-  const double platform_pt = ReportBuilder::kTextWidthPt * (100 - kMeasurePct - kUnitPct) / 100;
-  double need = 6 * kTableCharPt + kTableCellPadPt;
+  // One table whenever the platforms fit side by side at the smallest table font after the measure and unit
+  // columns, each platform as wide as the widest platform column (report/table_fit.h): one look for every column.
+  // Only more platforms than that (or than eight) go on in a further table of the same rows.
+  std::vector<std::vector<std::string>> kept_columns{{"Measure", "Unit"}};
+  for (const auto& row : body) kept_columns.push_back({row[0], row[1]});
+  const double kept_pt =
+      column_need_pt(kept_columns, 0, kTableMinCharPt) + column_need_pt(kept_columns, 1, kTableMinCharPt);
+  const double platform_pt = ReportBuilder::kTextWidthPt - kept_pt;
+  double need = 6 * kTableMinCharPt + kTableCellPadPt;
   for (std::size_t p = 0; p < table.rows.size(); ++p) {
-    need = std::max(need, static_cast<double>(longest_word(table.rows[p][0])) * kTableCharPt + kTableCellPadPt);
+    need = std::max(need, static_cast<double>(longest_word(table.rows[p][0])) * kTableMinCharPt + kTableCellPadPt);
     for (const auto& row : body)
-      need = std::max(need, static_cast<double>(longest_word(row[p + 2])) * kTableCharPt + kTableCellPadPt);
+      need = std::max(need, static_cast<double>(longest_word(row[p + 2])) * kTableMinCharPt + kTableCellPadPt);
   }
   const std::vector<double> needs(table.rows.size(), need);
-  const auto groups = fit_column_groups(needs, platform_pt, 6);
+  const auto groups = fit_column_groups(needs, platform_pt, 8);
+  const double measure_pct =
+      std::round(100 * column_need_pt(kept_columns, 0, kTableMinCharPt) / ReportBuilder::kTextWidthPt);
+  const double unit_pct =
+      std::round(100 * column_need_pt(kept_columns, 1, kTableMinCharPt) / ReportBuilder::kTextWidthPt);
   const std::size_t per_table = groups.empty() ? 1 : groups.front().second - groups.front().first;
   std::vector<ReportTable> out;
   for (const auto& [first, last] : groups) {
@@ -125,8 +134,8 @@ std::vector<ReportTable> platform_summary_tables(const std::vector<PlatformRow>&
         "power; " +
         std::string(kDash) + ": no data.";
     std::vector<std::string> head{"Measure", "Unit"};
-    t.width_percent = {static_cast<int>(kMeasurePct), static_cast<int>(kUnitPct)};
-    const int each = static_cast<int>((100 - kMeasurePct - kUnitPct) / static_cast<double>(last - first));
+    t.width_percent = {static_cast<int>(measure_pct), static_cast<int>(unit_pct)};
+    const int each = static_cast<int>((100 - measure_pct - unit_pct) / static_cast<double>(last - first));
     for (std::size_t p = first; p < last; ++p) {
       head.push_back(table.rows[p][0]);
       t.width_percent.push_back(each);

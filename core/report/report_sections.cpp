@@ -8,6 +8,7 @@
 #include "analysis/platform/inference_table.h"
 #include "analysis/stats/units.h"
 #include "headroom/headroom_table.h"
+#include "report/table_fit.h"
 
 namespace bs {
 namespace {
@@ -196,12 +197,14 @@ void sources_appendix(const ReportInput& in, ReportBuilder& b) {
   ReportTable t;
   t.caption = "Where each number of Table 1 comes from.";
   t.header = {{"Platform", "Measure", "Source file", "Origin", "How"}};
-  t.width_percent = {16, 14, 26, 12, 32};
   t.numeric_right = false;
+  // The columns fit the text width as the other tables' do (report/table_fit.h): a long file name ran past the
+  // page's edge and took the last column's words with it ("peak o").
   for (const PlatformRow& row : in.rows)
     for (const auto& [column, src] : row.sources)
       t.rows.push_back({row.platform, column, src.source_file, std::string(to_string(src.origin)), src.how});
-  if (!t.rows.empty()) b.table(t);
+  if (!t.rows.empty())
+    for (const ReportTable& part : split_to_width(t, 2)) b.table(part);
   // The figures' data, numbered as in the report: page one's chart is Figure 1 when there is one.
   int n = in.comparison_chart ? 1 : 0;
   if (in.comparison_chart && !in.comparison_chart->sources.empty())

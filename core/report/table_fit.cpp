@@ -9,22 +9,30 @@ namespace bs {
 
 std::size_t longest_word(std::string_view text) {
   std::size_t best = 0, run = 0;
-  for (const unsigned char c : text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
     if (c == ' ') {
       best = std::max(best, run);
       run = 0;
-    } else if ((c & 0xC0) != 0x80) {
-      ++run;
+      continue;
+    }
+    if ((c & 0xC0) != 0x80) ++run;
+    // A line may break after this character: the slash of a path, a hyphen before a letter ("jetpack-orin", not
+    // "Area-51").
+    const bool digit_next = i + 1 < text.size() && text[i + 1] >= '0' && text[i + 1] <= '9';
+    if (c == '/' || (c == '-' && !digit_next && run > 1)) {
+      best = std::max(best, run);
+      run = 0;
     }
   }
   return std::max(best, run);
 }
 
-double column_need_pt(std::span<const std::vector<std::string>> rows, std::size_t column) {
+double column_need_pt(std::span<const std::vector<std::string>> rows, std::size_t column, double char_pt) {
   std::size_t widest = 1;
   for (const auto& row : rows)
     if (column < row.size()) widest = std::max(widest, longest_word(row[column]));
-  return static_cast<double>(widest) * kTableCharPt + kTableCellPadPt;
+  return static_cast<double>(widest) * char_pt + kTableCellPadPt;
 }
 
 std::vector<std::pair<std::size_t, std::size_t>> fit_column_groups(std::span<const double> needs, double width_pt,
@@ -50,7 +58,7 @@ std::vector<ReportTable> split_to_width(const ReportTable& t, std::size_t keep) 
   const std::size_t columns = t.header.empty() ? 0 : t.header.front().size();
   keep = std::min(keep, columns);
   std::vector<double> needs;
-  for (std::size_t c = 0; c < columns; ++c) needs.push_back(column_need_pt(all, c));
+  for (std::size_t c = 0; c < columns; ++c) needs.push_back(column_need_pt(all, c, kTableMinCharPt));
   const double kept = std::accumulate(needs.begin(), needs.begin() + static_cast<std::ptrdiff_t>(keep), 0.0);
   auto groups = fit_column_groups(std::span<const double>(needs).subspan(keep),
                                   std::max(0.0, ReportBuilder::kTextWidthPt - kept), columns);

@@ -15,7 +15,11 @@
 #include <QTest>
 #include <QXmlStreamReader>
 
+#include <qcustomplot.h>
+#include <set>
+
 #include "../support/paper_sample.h"
+#include "device_palette.h"
 #include "paper_figures.h"
 
 namespace {
@@ -292,6 +296,41 @@ class TestPaperFigures : public QObject {
       QVERIFY2(steps_after_cancel == 0, qPrintable(at + QString(": %1 more steps ran").arg(steps_after_cancel)));
       QVERIFY2(QDir(dir.path()).entryList(QDir::Files).isEmpty(), qPrintable(at + ": files left behind"));
     }
+  }
+
+  // Issue #43.5: one platform, one colour in every figure. A second log of the NUC (a meter beside the paper's)
+  // keeps the NUC's colour, told apart by its line and its name, never taking another platform's colour; the colour
+  // is the one the Power tab and the report's chart give the NUC (device_palette.h, platform_color_indices).
+  void fig4_draws_each_platform_in_its_own_colour() {
+    bs::ui::FigureData d = paper_data();
+    const auto nuc = std::find_if(d.traces.begin(), d.traces.end(), [](const auto& t) { return t.platform == "NUC"; });
+    QVERIFY(nuc != d.traces.end());
+    bs::PowerTrace meter = *nuc;
+    meter.label = "nuc-meter";
+    meter.provenance.source_file = "nuc-meter.csv";
+    meter.provenance.date = "2026-11-20T10:00:00Z";
+    d.traces.push_back(meter);
+    std::vector<std::pair<std::string, int>> device_colors;
+    for (const auto& [key, index] : d.colors) device_colors.emplace_back(key.first, index);
+    std::map<std::string, int> platform_color;
+    for (const auto& [platform, index] : bs::ui::platform_color_indices(device_colors, {"NUC", "Jetson TX2"}))
+      platform_color[platform] = index;
+    const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
+    const auto fig4 = std::find_if(templates.begin(), templates.end(), [](const auto& t) { return t.id == "fig4"; });
+    QVERIFY(fig4 != templates.end());
+    QCustomPlot plot;
+    QJsonArray left_out;
+    bs::ui::figure_plot(plot, *fig4, d, options_, left_out);
+    QCOMPARE(plot.graphCount(), 3);
+    std::set<int> nuc_styles;
+    for (int g = 0; g < plot.graphCount(); ++g) {
+      const QString name = plot.graph(g)->name();
+      const std::string platform = name.startsWith("NUC") ? "NUC" : "Jetson TX2";
+      QVERIFY2(name.startsWith("NUC") || name.startsWith("Jetson TX2"), qPrintable(name));
+      QCOMPARE(plot.graph(g)->pen().color().name(), bs::ui::device_color(platform_color.at(platform)).name());
+      if (platform == "NUC") nuc_styles.insert(static_cast<int>(plot.graph(g)->pen().style()));
+    }
+    QCOMPARE(nuc_styles.size(), std::size_t{2});  // the NUC's two logs look apart
   }
 
   void template_without_matching_data_is_a_clear_error() {

@@ -16,6 +16,7 @@
 #include "common/count_tickers.h"
 #include "device_palette.h"
 #include "peaks/peak_overlay.h"
+#include "plot_export.h"
 #include "report/run_names.h"
 
 namespace bs::ui {
@@ -140,6 +141,7 @@ void FlopsPlot::rebuild() {
     double flops, workers;
     QColor color;
     bool flagged;  // implausible (analysis/plausibility.h): the label says "⚠", the peak table says why
+    QCPGraph* curve;
   };
   std::vector<PeakMark> peaks;
   const int exponent = si_exponent(max_flops);
@@ -211,17 +213,23 @@ void FlopsPlot::rebuild() {
       const bool flagged = !checked.empty() && !checked.front().flags.empty();
       // A flagged peak is drawn where it was measured, as a hollow marker; its label carries the warning sign.
       if (flagged) mark_flagged_points(marker, color);
-      peaks.push_back({peak->flops, static_cast<double>(peak->workers), color, flagged});
+      // In an exported figure the legend names the peak too: labels there give way where peaks crowd.
+      const QString value = QString::fromStdString(format_si(peak->flops, "FLOPS"));
+      set_figure_name(g, QStringLiteral("%1 (peak %2)").arg(g->name(), flagged ? flag_label(value) : value));
+      peaks.push_back({peak->flops, static_cast<double>(peak->workers), color, flagged, g});
     }
   }
   plot_->legend->setVisible(!series_.empty());
-  // Labels in order of peak height: where two collide, the higher peak keeps its label.
-  std::stable_sort(peaks.begin(), peaks.end(), [](const PeakMark& a, const PeakMark& b) { return a.flops > b.flops; });
+  // Labels in order of priority: flagged peaks first (their "⚠" is the warning, it must not give way to a plain
+  // label or to sweeps added later), then by peak height: where two collide, the higher peak keeps its label.
+  std::stable_sort(peaks.begin(), peaks.end(), [](const PeakMark& a, const PeakMark& b) {
+    return a.flagged != b.flagged ? a.flagged : a.flops > b.flops;
+  });
   for (const PeakMark& p : peaks)
     overlay_->add_peak_label(p.workers, p.flops / scale_,
                              p.flagged ? flag_label(QString::fromStdString(format_si(p.flops, "FLOPS")))
                                        : QString::fromStdString(format_si(p.flops, "FLOPS")),
-                             p.color);
+                             p.color, p.curve);
   reset_view();
 }
 

@@ -36,8 +36,8 @@ void PeakOverlay::add_curve(QCPGraph* graph) {
   labels_->add_curve(graph);
 }
 
-void PeakOverlay::add_peak_label(double key, double value, const QString& text, const QColor& color) {
-  labels_->add(key, value, text, color);
+void PeakOverlay::add_peak_label(double key, double value, const QString& text, const QColor& color, QCPGraph* curve) {
+  labels_->add(key, value, text, color, curve);
 }
 
 int PeakOverlay::shown_label_count() const { return labels_->shown_count(); }

@@ -27,9 +27,10 @@ class PeakOverlay : public QObject {
   void clear();
   // A data series the overlays should avoid covering.
   void add_curve(QCPGraph* graph);
-  // A label beside the peak marker at (key, value) in plot coordinates. Add in priority order (highest first):
-  // when labels collide, the later one is hidden.
-  void add_peak_label(double key, double value, const QString& text, const QColor& color);
+  // A label beside the peak marker at (key, value) in plot coordinates on `curve` (added with add_curve; never
+  // labelled nearer another curve). Add in priority order (highest first): when labels collide, the later one is
+  // hidden.
+  void add_peak_label(double key, double value, const QString& text, const QColor& color, QCPGraph* curve = nullptr);
   void request_legend_placement() { legend_pending_ = true; }
 
   int shown_label_count() const;

@@ -217,10 +217,7 @@ void RooflineView::redraw() {
     key->setName(tr("Preprocessing stage of a pipeline run, integer op/s (hover: numbers, source); bar: ± SD"));
   }
   QFont label_font(font().family(), 7);
-  int stage_index = 0;
   for (const StagePlacement& s : stages_.placed) {
-    // Stages of the same kernels share an intensity: their labels alternate above and below the stars.
-    const bool above = stage_index++ % 2 == 0;
     const auto it = colors_.find({s.platform, s.device});
     const QColor color = device_color(it == colors_.end() ? 0 : it->second);
     QCPGraph* g = plot_->addGraph();
@@ -235,16 +232,16 @@ void RooflineView::redraw() {
       bar->end->setCoords(s.point.intensity, s.ops_per_s_high ? *s.ops_per_s_high : s.point.flops * 10);
       y_min = std::min(y_min, *s.ops_per_s_low);
     }
-    auto* text = new QCPItemText(plot_);
-    text->position->setCoords(s.point.intensity, s.point.flops);
-    text->setPositionAlignment(Qt::AlignLeft | (above ? Qt::AlignBottom : Qt::AlignTop));
-    text->setPadding(QMargins(9, above ? 0 : 3, 0, above ? 3 : 0));
-    text->setFont(label_font);
-    text->setColor(color.darker(130));
+    // Stages of the same kernels share an intensity, their stars close together: the labels are placed around
+    // them like the peaks' (after the flagged ones), apart from each other; one without room is left to the hover.
     const bool fused = s.cost.kernels.size() == 1 && s.cost.kernels.front() == StageKernel::Fused;
-    text->setText(tr("%1 %2 %3 ms")
-                      .arg(QString::fromStdString(s.platform), fused ? tr("fused preprocessing") : tr("preprocessing"))
-                      .arg(s.time.mean_s * 1e3, 0, 'f', 2));
+    flag_labels_
+        ->add(s.point.intensity, s.point.flops,
+              tr("%1 %2 %3 ms")
+                  .arg(QString::fromStdString(s.platform), fused ? tr("fused preprocessing") : tr("preprocessing"))
+                  .arg(s.time.mean_s * 1e3, 0, 'f', 2),
+              color)
+        ->setFont(label_font);
     y_min = std::min(y_min, s.point.flops);
   }
   if (ceilings_.empty()) {

@@ -40,7 +40,8 @@ class RooflineView : public QWidget {
   void redraw();
   QCustomPlot* plot_;
   QLabel* note_;
-  AnchoredLabels* flag_labels_;  // the "⚠" labels of flagged peaks: apart from each other, inside the axes
+  // The "⚠" labels of flagged peaks, then the pipeline stages' labels: apart from each other, inside the axes.
+  AnchoredLabels* flag_labels_;
   std::vector<FlopsRun> runs_;
   std::vector<ResultSet> sets_;
   std::map<std::pair<std::string, std::string>, int> colors_;

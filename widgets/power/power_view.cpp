@@ -265,6 +265,17 @@ void PowerView::set_data(SharedTraces traces, std::vector<PeakRow> peaks,
   const QSignalBlocker block(cursors_);
   cursors_->clear();
   place_phase_markers();
+  // A quantity none of the logs has would open as an empty plot (tegrastats and RAPL logs give power, no current):
+  // then the one they have is shown.
+  const auto any_has = [this](Quantity q) {
+    for (std::size_t i = 0; i < count(); ++i) {
+      const TraceIndex* index = q == Quantity::Current ? index_[i].current() : index_[i].power();
+      if (index && !index->empty()) return true;
+    }
+    return false;
+  };
+  const Quantity other = quantity_ == Quantity::Current ? Quantity::Power : Quantity::Current;
+  if (!any_has(quantity_) && any_has(other)) quantity_ = other;
   set_quantity(quantity_);
   update_selection(true);
 }
@@ -364,14 +375,14 @@ void PowerView::set_quantity(Quantity q) {
 void PowerView::rescale() {
   // Every log on one time axis from its own start (t = 0 s), so the platforms line up as in the paper's figure 4.
   double min_t = wall_clock_on_ ? std::numeric_limits<double>::infinity() : 0, max_t = 0, max_v = 0;
+  // Only the logs that draw something: a power-only log (tegrastats) in the current plot draws nothing, and its
+  // fifty minutes left the 120 s logs beside it a sliver of the axis.
   for (std::size_t i = 0; i < count(); ++i) {
-    if (!overlay_->visible(i)) continue;
-    if (!trace(i).time_s.empty()) {
-      min_t = std::min(min_t, offset(i) + trace(i).time_s.front());
-      max_t = std::max(max_t, offset(i) + trace(i).time_s.back());
-    }
-    if (const TraceIndex* v = shown(i))  // O(log n) from the index: no pass over a long log
-      max_v = std::max(max_v, v->summary(v->first_s(), v->last_s()).samples.max);
+    const TraceIndex* v = shown(i);
+    if (!overlay_->visible(i) || !v) continue;
+    min_t = std::min(min_t, offset(i) + v->first_s());
+    max_t = std::max(max_t, offset(i) + v->last_s());
+    max_v = std::max(max_v, v->summary(v->first_s(), v->last_s()).samples.max);  // O(log n) from the index
   }
   if (!std::isfinite(min_t)) min_t = 0;
   if (!wall_clock_on_) min_t = std::min(min_t, 0.0);        // offsets may move a trace before 0 s

@@ -16,6 +16,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
 #include <QTimer>
 #include <map>
 #include <set>
@@ -336,8 +337,8 @@ class TestMainWindow : public QObject {
     QString text;
     QTimer::singleShot(0, &w, [&] {
       for (QWidget* top : QApplication::topLevelWidgets())
-        if (auto* box = qobject_cast<QMessageBox*>(top); box && box->objectName() == "help") {
-          text = box->text();
+        if (auto* box = qobject_cast<QDialog*>(top); box && box->objectName() == "help") {
+          if (auto* page = box->findChild<QTextBrowser*>()) text = page->toPlainText();
           box->accept();
         }
     });

@@ -93,7 +93,8 @@ class TestPlatformReport : public QObject {
     QVERIFY(!row("Max power"));
   }
 
-  // Twelve platforms do not fit across a page with whole words: the table splits, same rows in each part.
+  // Twelve platforms do not fit across a page with whole words: the table splits (at most eight platforms in one,
+  // set smaller where needed), same rows in each part.
   void many_platforms_split() {
     std::vector<bs::PlatformRow> rows;
     for (int i = 0; i < 12; ++i) {
@@ -107,7 +108,7 @@ class TestPlatformReport : public QObject {
     std::size_t platforms = 0;
     for (const auto& t : tables) {
       QCOMPARE(t.rows.size(), tables[0].rows.size());
-      QVERIFY(t.header[0].size() <= 8);
+      QVERIFY(t.header[0].size() <= 10);
       platforms += t.header[0].size() - 2;
     }
     QCOMPARE(platforms, std::size_t{12});

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Driving the real main window as a person does: keys pressed on the window, modal dialogs answered through the
+// running event loop (a timer looks for QApplication::activeModalWidget() while the dialog's exec() runs), never by
+// calling the slots behind them.
+#include <qcustomplot.h>
+#include <QAbstractButton>
+#include <QApplication>
+#include <QCheckBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTabWidget>
+#include <QTest>
+#include <QTimer>
+#include <functional>
+#include <memory>
+
+#include "export_figure_dialog.h"
+#include "main_window.h"
+
+namespace bs::test {
+
+// With BENCHSCOPE_LOOK_DIR set, a copy of `file` goes there under `name` (exports and reports to look at by eye).
+inline void keep_for_looking(const QString& file, const QString& name) {
+  const QString dir = qEnvironmentVariable("BENCHSCOPE_LOOK_DIR");
+  if (dir.isEmpty() || !QFile::exists(file)) return;
+  QDir().mkpath(dir);
+  QFile::remove(QDir(dir).filePath(name));
+  QFile::copy(file, QDir(dir).filePath(name));
+}
+
+// Calls `answer` with the first modal widget that opens from now on (polled every 20 ms, also inside a dialog's own
+// event loop), once. Returns a flag that says whether it was answered.
+inline std::shared_ptr<bool> answer_next_modal(QObject* context, std::function<void(QWidget*)> answer,
+                                               int timeout_ms = 30000) {
+  auto answered = std::make_shared<bool>(false);
+  auto* timer = new QTimer(context);
+  auto waited = std::make_shared<int>(0);
+  QObject::connect(timer, &QTimer::timeout, context, [timer, answer, answered, waited, timeout_ms] {
+    *waited += timer->interval();
+    QWidget* modal = QApplication::activeModalWidget();
+    if (modal && modal->isVisible()) {
+      timer->stop();
+      timer->deleteLater();
+      *answered = true;
+      answer(modal);
+    } else if (*waited > timeout_ms) {
+      timer->stop();
+      timer->deleteLater();
+    }
+  });
+  timer->start(20);
+  return answered;
+}
+
+// Clicks the dialog's button `which` (Ok, Save, Open, Close ...) as a person would, once it is shown and enabled (a
+// file dialog enables Save only after it has taken in the typed name); false when it never is (5 s).
+inline bool click_dialog_button(QWidget* dialog, QDialogButtonBox::StandardButton which) {
+  QPushButton* button = nullptr;
+  const bool ready = QTest::qWaitFor(
+      [&] {
+        for (QDialogButtonBox* box : dialog->findChildren<QDialogButtonBox*>())
+          if (QPushButton* b = box->button(which); b && b->isVisible() && b->isEnabled()) button = b;
+        return button != nullptr;
+      },
+      5000);
+  if (!ready) {
+    qWarning("%s: its button %d never became clickable", dialog->metaObject()->className(), int(which));
+    return false;
+  }
+  QTest::mouseClick(button, Qt::LeftButton);
+  return true;
+}
+
+// Answers a file dialog as a person does: the path pasted into its file name field, then Save (or Open) clicked once
+// the dialog has taken the name in. The field is filled again while the button stays disabled (the dialog reads the
+// folder on a thread of its own and may not have it yet).
+inline bool answer_file_dialog(QWidget* modal, const QString& path, const QString& filter = {}) {
+  auto* files = qobject_cast<QFileDialog*>(modal);
+  if (!files) {
+    modal->close();
+    return false;
+  }
+  if (!filter.isEmpty()) files->selectNameFilter(filter);
+  auto* name = files->findChild<QLineEdit*>("fileNameEdit");
+  const auto which = files->acceptMode() == QFileDialog::AcceptSave ? QDialogButtonBox::Save : QDialogButtonBox::Open;
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    if (name) {
+      name->setText(path);  // pasted: typed keys would open the field's completer, which takes the next click
+      emit name->textEdited(path);
+    } else {
+      files->selectFile(path);
+    }
+    QPushButton* button = nullptr;
+    for (QDialogButtonBox* box : files->findChildren<QDialogButtonBox*>())
+      if (QPushButton* b = box->button(which)) button = b;
+    if (button && QTest::qWaitFor([button] { return button->isEnabled(); }, 500)) {
+      QTest::mouseClick(button, Qt::LeftButton);
+      return true;
+    }
+  }
+  qWarning("the file dialog never took '%s'", qPrintable(path));
+  files->reject();
+  return false;
+}
+
+// The window's tab widget and the plot File > Export figure would take from the current tab (its first visible
+// one), or null.
+inline QTabWidget* window_tabs(ui::MainWindow& w) { return qobject_cast<QTabWidget*>(w.centralWidget()); }
+inline QCustomPlot* exported_plot(ui::MainWindow& w) {
+  for (QCustomPlot* p : window_tabs(w)->currentWidget()->findChildren<QCustomPlot*>())
+    if (p->isVisible()) return p;
+  return nullptr;
+}
+
+// The names of the series a plot draws: its legend's entries (helper graphs such as bands and peak markers stay
+// out of legends).
+inline QStringList legend_names(QCustomPlot& plot) {
+  QStringList names;
+  for (int i = 0; i < plot.legend->itemCount(); ++i)
+    if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i)); item && item->plottable()->visible())
+      names << item->plottable()->name();
+  return names;
+}
+
+// Presses `key` on the window (its shortcut map routes it to the menu action). The window is made active first, as
+// a window manager does when a dialog closes (the offscreen platform leaves no window active then).
+inline void press(ui::MainWindow& w, int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  if (QApplication::activeWindow() != &w) {
+    w.activateWindow();
+    if (!QTest::qWaitForWindowActive(&w)) qWarning("the main window did not become active");
+  }
+  QWidget* target = QApplication::focusWidget() && QApplication::focusWidget()->window() == &w
+                        ? QApplication::focusWidget()
+                        : static_cast<QWidget*>(&w);
+  QTest::keyClick(target, static_cast<Qt::Key>(key), modifiers);
+}
+
+// Ctrl+E on the current tab, the export dialog answered: `stem` as the file, PDF only, at `preset` ("lncs",
+// "ieee" ...), then Export clicked. Returns whether the dialog came and was answered.
+inline bool export_current_tab(ui::MainWindow& w, const QString& stem, const QString& preset = "lncs") {
+  const auto answered = answer_next_modal(&w, [stem, preset](QWidget* modal) {
+    auto* dialog = qobject_cast<ui::ExportFigureDialog*>(modal);
+    if (!dialog) {
+      modal->close();
+      return;
+    }
+    dialog->set_destination(stem);
+    dialog->set_preset(preset);
+    for (QCheckBox* box : dialog->findChildren<QCheckBox*>()) {
+      const bool want = box->text() == "PDF";
+      if (box->isChecked() != want) QTest::mouseClick(box, Qt::LeftButton);
+    }
+    click_dialog_button(dialog, QDialogButtonBox::Ok);
+  });
+  press(w, Qt::Key_E, Qt::ControlModifier);
+  return *answered;
+}
+
+}  // namespace bs::test
