@@ -163,6 +163,7 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(runner_, &KernelRunner::live_run, this, &MainWindow::show_live_run);
   connect(runner_, &KernelRunner::finished, this, &MainWindow::store_measured_runs);
+  connect(runner_, &KernelRunner::remote_finished, this, &MainWindow::store_remote_run);
   connect(runner_, &KernelRunner::ceilings_measured, this, [this](const ResultSet& set) {
     if (!workspace_) new_untitled_workspace();
     ImportBatch batch;

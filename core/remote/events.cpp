@@ -11,7 +11,8 @@ namespace bs::remote {
 EventWriter::EventWriter(std::ostream& out) : out_(out), t0_(std::chrono::steady_clock::now()) {}
 
 void EventWriter::write(std::string_view type, nlohmann::json fields) {
-  nlohmann::json line = nlohmann::json::object();
+  // Ordered: "v", "type" and "t" lead every line, for a person reading the stream.
+  nlohmann::ordered_json line = nlohmann::ordered_json::object();
   line["v"] = kEventsVersion;
   line["type"] = std::string(type);
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();

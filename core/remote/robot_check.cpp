@@ -70,11 +70,12 @@ std::string RobotInfo::devices_text() const {
   return text;
 }
 
-std::string probe_command(const std::string& cli) {
+std::string probe_command(const std::string& cli, const std::string& sysfs_root) {
   const std::string q = shell_quote(cli);
+  const std::string root = sysfs_root.empty() ? std::string() : " --sysfs-root " + shell_quote(sysfs_root);
   const std::string script = std::string("echo ") + kMarker + "; uname -m; uname -n; if command -v " + q +
                              " >/dev/null 2>&1; then " + q + " --version; echo \"benchscope-probe-status $?\"; " + q +
-                             " job probe 2>/dev/null; else echo benchscope-probe-missing; fi";
+                             " job probe" + root + " 2>/dev/null; else echo benchscope-probe-missing; fi";
   return "sh -c " + shell_quote(script);
 }
 
@@ -171,9 +172,9 @@ RobotCheck read_probe(const std::string& destination, const std::string& desk_ve
   return c;
 }
 
-RobotCheck check_robot(const SshTarget& target, const JobControl& control) {
+RobotCheck check_robot(const SshTarget& target, const JobControl& control, const std::string& sysfs_root) {
   check_destination(target.destination);
-  const RemoteOutput out = run_remote_command(target, probe_command(target.remote_cli), control);
+  const RemoteOutput out = run_remote_command(target, probe_command(target.remote_cli, sysfs_root), control);
   return read_probe(target.destination, BENCHSCOPE_VERSION, out, target.remote_cli);
 }
 

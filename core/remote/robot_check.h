@@ -57,14 +57,15 @@ std::string debian_architecture(const std::string& uname_machine);
 std::string install_command(const std::string& destination, const std::string& uname_machine,
                             const std::string& version);
 
-// What the probe runs on the robot (through `sh -c`, whatever the login shell).
-std::string probe_command(const std::string& remote_cli);
+// What the probe runs on the robot (through `sh -c`, whatever the login shell). `sysfs_root`: where the robot's
+// sensors are looked for (the measurement's --sysfs-root), empty for /.
+std::string probe_command(const std::string& remote_cli, const std::string& sysfs_root = {});
 // Reads the probe's output; `desk_version` is this BenchScope's. Never throws for the robot's output.
 RobotCheck read_probe(const std::string& destination, const std::string& desk_version, const RemoteOutput& output,
                       const std::string& remote_cli);
 // Connects and checks. Throws RemoteError only when ssh cannot be started; an unreachable robot is a RobotCheck
 // with its problem.
-RobotCheck check_robot(const SshTarget& target, const JobControl& control = {});
+RobotCheck check_robot(const SshTarget& target, const JobControl& control = {}, const std::string& sysfs_root = {});
 
 // The `robot` event `benchscope-cli job probe` prints, read into `info`. Throws EventError.
 void read_robot_event(const nlohmann::json& body, RobotInfo& info);

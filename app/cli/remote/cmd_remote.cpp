@@ -27,9 +27,13 @@ int list_robots(const remote::RobotList& robots, const DeskOptions& o, std::ostr
     if (r.added) from += std::string(from.empty() ? "" : ", ") + "added";
     const std::string contact =
         r.last_contact.empty() ? "never" : r.last_contact + (r.last_ok ? "" : " (FAILED: see check)");
-    const std::string last =
-        r.runs.empty() ? "" : r.runs.back().date + " " + r.runs.back().command + ": " + r.runs.back().outcome;
-    table.add({r.name, from, contact, r.hostname, r.arch, r.cli_version, last.substr(0, 100)});
+    std::string last;
+    if (!r.runs.empty()) {
+      const remote::RobotRun& run = r.runs.back();
+      const std::string command = run.command.size() > 40 ? run.command.substr(0, 37) + "..." : run.command;
+      last = run.date + " " + command + ": " + run.outcome;
+    }
+    table.add({r.name, from, contact, r.hostname, r.arch, r.cli_version, last});
   }
   table.print(out);
   out << "(" << robots.file() << ")\n";

@@ -41,6 +41,16 @@ class Staging {
   std::string path_;
 };
 
+// The value of `option` in a command's words (before a "--"), or empty.
+std::string option_value(const std::vector<std::string>& words, const std::string& option) {
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (words[i] == "--") break;
+    if (words[i] == option && i + 1 < words.size()) return words[i + 1];
+    if (words[i].starts_with(option + "=")) return words[i].substr(option.size() + 1);
+  }
+  return {};
+}
+
 std::string join(const std::vector<std::string>& words) {
   std::string s;
   for (const std::string& w : words) s += (s.empty() ? "" : " ") + w;
@@ -220,9 +230,9 @@ remote::SshTarget target_for(const remote::RobotList& robots, const std::string&
 }
 
 remote::RobotCheck check_and_print(remote::RobotList& robots, const remote::SshTarget& target, std::ostream& out,
-                                   std::ostream& err, bool describe) {
+                                   std::ostream& err, bool describe, const std::string& sysfs_root) {
   const remote::JobControl control{&interrupt_token(), nullptr};
-  remote::RobotCheck c = remote::check_robot(target, control);
+  remote::RobotCheck c = remote::check_robot(target, control, sysfs_root);
   try {
     robots.record_check(target.destination, c, target);
   } catch (const std::exception& e) {
@@ -278,7 +288,9 @@ int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--id: ") + e.what());
   }
-  const remote::RobotCheck check = check_and_print(robots, target, out, err, false);
+  // The robot's description names the sensors the measurement reads (its --sysfs-root), for the provenance.
+  const remote::RobotCheck check =
+      check_and_print(robots, target, out, err, false, option_value(command, "--sysfs-root"));
   if (!check.ok) return 1;
   Staging staging;
   Printer printer{target.destination, out, err, o.quiet};

@@ -22,8 +22,9 @@ DeskOptions take_desk_options(std::vector<std::string>& args);
 remote::SshTarget target_for(const remote::RobotList& robots, const std::string& name, const DeskOptions& o);
 
 // Checks the robot and prints what it is, or the problem and its fix (records the contact). Returns the check.
+// `sysfs_root`: where the robot's sensors are looked for (a measurement's --sysfs-root).
 remote::RobotCheck check_and_print(remote::RobotList& robots, const remote::SshTarget& target, std::ostream& out,
-                                   std::ostream& err, bool describe);
+                                   std::ostream& err, bool describe, const std::string& sysfs_root = {});
 
 // Runs `command` on the robot as a job, prints its progress, imports its results into --workspace. Exit status.
 int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const std::vector<std::string>& command,
