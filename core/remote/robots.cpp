@@ -216,9 +216,12 @@ void RobotList::record_check(const std::string& name, const RobotCheck& check, c
   r.last_contact = utc_timestamp();
   r.last_ok = check.ok;
   r.last_problem = check.problem;
-  if (!check.info.hostname.empty()) r.hostname = check.info.hostname;
+  // What a failed login could not see stays as last seen; a robot reached says what it has (no CLI: none).
+  if (!check.info.hostname.empty()) {
+    r.hostname = check.info.hostname;
+    r.cli_version = check.info.cli_version;
+  }
   if (!check.info.arch.empty()) r.arch = check.info.arch;
-  r.cli_version = check.info.cli_version;
   if (check.ok) r.devices = check.info.devices_text();
   r.config_file = target.config_file;
   r.remote_cli = target.remote_cli == "benchscope-cli" ? std::string() : target.remote_cli;

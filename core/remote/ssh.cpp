@@ -68,7 +68,8 @@ std::string last_ssh_line(std::string_view err) {
 
 std::string describe_ssh_failure(std::string_view host, std::string_view err) {
   const std::string h(host);
-  const std::string said = last_ssh_line(err);
+  std::string said = last_ssh_line(err);
+  while (!said.empty() && said.back() == '.') said.pop_back();  // the sentence around it has its own full stop
   const std::string quote = said.empty() ? std::string("ssh said nothing") : "ssh: " + said;
   if (contains(err, "REMOTE HOST IDENTIFICATION HAS CHANGED") || contains(err, "Host key for") ||
       contains(err, "host key has changed"))

@@ -2,6 +2,7 @@
 #include "remote/remote_cli.h"
 
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -63,6 +64,8 @@ struct Printer {
   std::ostream& out;
   std::ostream& err;
   bool quiet = false;
+  // A line redrawn in place is for a terminal; a log or a pipe gets the points only.
+  bool progress_in_place = isatty(2) != 0;
   bool progress_open = false;
   std::size_t power_readings = 0;
 
@@ -72,7 +75,7 @@ struct Printer {
   }
   void on_event(const remote::Event& e) {
     const nlohmann::json& b = e.body;
-    if (e.type == "progress" && !quiet) {
+    if (e.type == "progress" && !quiet && progress_in_place) {
       char line[160];
       std::snprintf(line, sizeof line, "\r%s: %5.1f %% %s          ", host.c_str(), b.value("fraction", 0.0) * 100,
                     b.value("step", "").c_str());
@@ -88,10 +91,6 @@ struct Printer {
     } else if (e.type == "message") {
       close_progress();
       err << host << ": " << b.value("text", "") << '\n';
-    } else if (e.type == "sweep" && !quiet) {
-      close_progress();
-      err << host << ": " << b.value("backend", "") << " on " << b.value("device", "") << ", theoretical peak "
-          << format_si(b.value("theoretical_peak_flops", 0.0), "FLOPS") << '\n';
     } else if (e.type == "result") {
       close_progress();
       if (const auto peaks = b.find("peaks"); peaks != b.end() && peaks->is_array())
