@@ -37,6 +37,7 @@
 #include "power/battery_view.h"
 #include "power/power_trace_loader.h"
 #include "power/power_view.h"
+#include "remote/remote_run.h"
 #include "runs/pipeline_json.h"
 #include "runs/run_json.h"
 #include "store/run_label_store.h"

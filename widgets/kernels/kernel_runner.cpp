@@ -57,7 +57,7 @@ KernelRunner::KernelRunner(QWidget* parent)
       power_(new PowerSensorBox(this)),
       energy_(new QTableWidget(this)),
       target_(new RobotTarget(this)),
-      robot_power_(new QCheckBox(tr("Record the robot's power sensors (auto: its board or package total)"), this)),
+      robot_power_(new QCheckBox(tr("On the robot (auto)"), this)),
       several_(new QPushButton(tr("Several robots…"), this)),
       remote_log_(new QLabel(this)) {
   qRegisterMetaType<bs::FlopsRun>();

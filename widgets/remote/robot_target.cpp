@@ -204,11 +204,18 @@ void RobotTarget::recheck() {
     check_ = c;
     if (c.ok) {
       const remote::RobotInfo& i = c.info;
-      status_->setText(tr("<small>%1 (%2), BenchScope %3<br>%4</small>")
-                           .arg(QString::fromStdString(i.hostname).toHtmlEscaped(),
-                                QString::fromStdString(i.arch).toHtmlEscaped(),
-                                QString::fromStdString(i.cli_version).toHtmlEscaped(),
-                                QString::fromStdString(i.devices_text()).toHtmlEscaped()));
+      QStringList backends, sensors;
+      for (const remote::RobotBackend& b : i.backends)
+        backends << QStringLiteral("%1 (%2)").arg(QString::fromStdString(b.label), QString::fromStdString(b.device));
+      for (const remote::RobotSensor& x : i.sensors)
+        if (x.readable) sensors << QString::fromStdString(x.id);
+      status_->setText(
+          tr("<small>%1 (%2%3), BenchScope %4<br>backends: %5<br>power sensors: %6</small>")
+              .arg(QString::fromStdString(i.hostname).toHtmlEscaped(), QString::fromStdString(i.arch).toHtmlEscaped(),
+                   i.os.empty() ? QString() : ", " + QString::fromStdString(i.os).toHtmlEscaped(),
+                   QString::fromStdString(i.cli_version).toHtmlEscaped(),
+                   backends.join(QStringLiteral("; ")).toHtmlEscaped(),
+                   sensors.isEmpty() ? tr("none readable") : sensors.join(QStringLiteral(", ")).toHtmlEscaped()));
       status_->setStyleSheet({});
       if (!platform_edited_) platform_->setText(QString::fromStdString(i.hostname));
     } else {

@@ -23,6 +23,7 @@
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
 #include "peaks/flops_plot.h"
+#include "remote/remote_run.h"
 #include "remote/robot_target.h"
 #include "remote/robots.h"
 #include "store/workspace.h"
@@ -43,6 +44,7 @@ void screenshots(bs::ui::MainWindow& w, const QString& name) {
   for (const QSize size : {QSize(1280, 800), QSize(1600, 1000)}) {
     w.resize(size);
     QTest::qWait(30);
+    QCOMPARE(w.size(), size);  // the robot's rows fit the window at its smallest size
     w.grab().save(
         QStringLiteral("%1/%2-%3x%4.png").arg(QString::fromUtf8(dir), name).arg(size.width()).arg(size.height()));
   }
@@ -94,6 +96,7 @@ class TestRemoteGui : public QObject {
     runner->set_repeats(1);
     target->platform_field()->clear();
     QTest::keyClicks(target->platform_field(), "Robot GUI");
+    qRegisterMetaType<bs::ui::RemoteRun*>();
     QSignalSpy live(runner, &bs::ui::KernelRunner::live_run);
     QSignalSpy done(runner, &bs::ui::KernelRunner::remote_finished);
     QPushButton* run = button(runner, "Run");
@@ -120,7 +123,8 @@ class TestRemoteGui : public QObject {
     QCOMPARE(w.flops_plot()->series_count(), 1);
     screenshots(w, "kernel-runner-robot-done");
     // The robot remembers the platform name and the run.
-    const bs::remote::Robot* stored = bs::remote::RobotList().find("robot");
+    const bs::remote::RobotList robots;
+    const bs::remote::Robot* stored = robots.find("robot");
     QVERIFY(stored && stored->platform == "Robot GUI");
     QVERIFY(!stored->runs.empty() && stored->runs.back().outcome.find("imported 1 run") != std::string::npos);
 
