@@ -70,7 +70,10 @@ std::string describe_ssh_failure(std::string_view host, std::string_view err) {
   const std::string h(host);
   std::string said = last_ssh_line(err);
   while (!said.empty() && said.back() == '.') said.pop_back();  // the sentence around it has its own full stop
-  const std::string quote = said.empty() ? std::string("ssh said nothing") : "ssh: " + said;
+  // ssh starts some of its own messages with "ssh: " already.
+  const std::string quote = said.empty()                ? std::string("ssh said nothing")
+                            : said.starts_with("ssh: ") ? said
+                                                        : "ssh: " + said;
   if (contains(err, "REMOTE HOST IDENTIFICATION HAS CHANGED") || contains(err, "Host key for") ||
       contains(err, "host key has changed"))
     return h + ": the robot's host key has CHANGED since it was last accepted (" + quote +

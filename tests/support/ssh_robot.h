@@ -144,9 +144,11 @@ class SshRobot {
     return QString::fromUtf8(p.readAllStandardOutput()).trimmed();
   }
 
+  // Two names for the one robot ("robot", "robot-b"), for a run on several robots one after another.
   QString config_text(const QString& identity, const QString& known) const {
     return QString(
-               "Host robot\n  HostName 127.0.0.1\n  Port %1\n  User %2\n  IdentityFile %3\n  IdentitiesOnly yes\n"
+               "Host robot robot-b\n  HostName 127.0.0.1\n  Port %1\n  User %2\n  IdentityFile %3\n  IdentitiesOnly "
+               "yes\n"
                "  IdentityAgent none\n  UserKnownHostsFile %4\n  GlobalKnownHostsFile /dev/null\n"
                "  StrictHostKeyChecking yes\n  LogLevel ERROR\n")
         .arg(port_)

@@ -210,9 +210,9 @@ void RobotTarget::recheck() {
       for (const remote::RobotSensor& x : i.sensors)
         if (x.readable) sensors << QString::fromStdString(x.id);
       status_->setText(
-          tr("<small>%1 (%2%3), BenchScope %4<br>backends: %5<br>power sensors: %6</small>")
+          tr("<small>%1 · %2%3 · BenchScope %4<br>backends: %5<br>power sensors: %6</small>")
               .arg(QString::fromStdString(i.hostname).toHtmlEscaped(), QString::fromStdString(i.arch).toHtmlEscaped(),
-                   i.os.empty() ? QString() : ", " + QString::fromStdString(i.os).toHtmlEscaped(),
+                   i.os.empty() ? QString() : " · " + QString::fromStdString(i.os).toHtmlEscaped(),
                    QString::fromStdString(i.cli_version).toHtmlEscaped(),
                    backends.join(QStringLiteral("; ")).toHtmlEscaped(),
                    sensors.isEmpty() ? tr("none readable") : sensors.join(QStringLiteral(", ")).toHtmlEscaped()));

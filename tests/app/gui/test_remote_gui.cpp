@@ -7,16 +7,21 @@
 // without sshd.
 #include <QApplication>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <iostream>
+#include <set>
 
 #include "../../support/cli_harness.h"
 #include "../../support/ssh_robot.h"
@@ -24,6 +29,7 @@
 #include "main_window.h"
 #include "peaks/flops_plot.h"
 #include "remote/remote_run.h"
+#include "remote/robot_queue_dialog.h"
 #include "remote/robot_target.h"
 #include "remote/robots.h"
 #include "store/workspace.h"
@@ -147,6 +153,75 @@ class TestRemoteGui : public QObject {
     QVERIFY(partial >= 5 && partial < 20000);
     QVERIFY(runner->progress_bar()->format().contains("cancelled"));
   }
+
+  // "Several robots…": the sweep runs on each checked robot in turn, each under the platform typed in the dialog,
+  // and each robot's run lands as it arrives.
+  void several_robots_one_after_another() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("queue.bsw")));
+    w.resize(1280, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    bs::ui::KernelRunner* runner = w.kernel_runner();
+    runner->target()->reload();
+    runner->set_workers_spec("1,2,4,8");
+    runner->set_dims("1");
+    runner->set_iterations(1000);
+    runner->set_repeats(2);
+    qRegisterMetaType<bs::ui::RemoteRun*>();
+    QSignalSpy done(runner, &bs::ui::KernelRunner::remote_finished);
+    bool answered = false;
+    // The dialog is answered through the running event loop, as a person would: both robots checked, each
+    // platform renamed, the backend left at cpu, OK.
+    std::function<void()> answer = [&] {
+      auto* d = qobject_cast<bs::ui::RobotQueueDialog*>(QApplication::activeModalWidget());
+      if (!d) {  // not shown yet: look again on the next turn of the event loop
+        QTimer::singleShot(10, this, answer);
+        return;
+      }
+      QTableWidget* t = d->table();
+      for (int r = 0; r < t->rowCount(); ++r) {
+        const QString name = t->item(r, 0)->text();
+        const bool wanted = name == "robot" || name == "robot-b";
+        t->item(r, 0)->setCheckState(wanted ? Qt::Checked : Qt::Unchecked);
+        if (wanted) t->item(r, 1)->setText(name == "robot" ? "Queue A" : "Queue B");
+      }
+      d->backend_box()->setCurrentIndex(d->backend_box()->findData("cpu-scalar"));
+      if (const QByteArray shots = qgetenv("BENCHSCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+        d->grab().save(QString::fromUtf8(shots) + "/robot-queue-dialog.png");
+      answered = true;
+      d->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+    };
+    QTimer::singleShot(0, this, answer);
+    QPushButton* several = runner->several_robots_button();
+    QVERIFY(several->isEnabled());
+    QTest::mouseClick(several, Qt::LeftButton);
+    QVERIFY(answered);
+    // A failure would show a message box: its text is the test's failure message.
+    QString box_text;
+    QTimer boxes;
+    connect(&boxes, &QTimer::timeout, this, [&] {
+      if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+        box_text = box->text();
+        box->close();
+      }
+    });
+    boxes.start(50);
+    for (int i = 0; i < 6000 && done.count() < 2 && box_text.isEmpty(); ++i) QTest::qWait(20);
+    QVERIFY2(box_text.isEmpty(), qPrintable(box_text));
+    QCOMPARE(done.count(), 2);
+    for (int i = 0; i < 200 && runner->running(); ++i) QTest::qWait(20);
+    QVERIFY(!runner->running());
+    std::set<std::string> platforms;
+    for (const auto& r : w.workspace()->runs()) {
+      platforms.insert(r.run.platform);
+      QCOMPARE(r.run.samples.size(), std::size_t{4});
+      QCOMPARE(r.run.backend.rfind("CPU scalar", 0), std::size_t{0});
+    }
+    QCOMPARE(platforms, (std::set<std::string>{"Queue A", "Queue B"}));
+    screenshots(w, "kernel-runner-robot-queue");
+  }
 };
 
 int main(int argc, char** argv) {
@@ -164,6 +239,8 @@ int main(int argc, char** argv) {
   r.added = true;
   r.config_file = robot.config().toStdString();
   r.remote_cli = bs::test::kCli.toStdString();
+  bs::remote::RobotList().put(r);
+  r.name = "robot-b";  // the same machine under its second Host name: a second robot for the queue
   bs::remote::RobotList().put(r);
   TestRemoteGui tc;
   return QTest::qExec(&tc, argc, argv);
