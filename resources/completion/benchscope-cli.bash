@@ -3,7 +3,7 @@
 # /usr/share/bash-completion/completions/benchscope-cli.
 _benchscope_cli() {
   local cur="${COMP_WORDS[COMP_CWORD]}"
-  local commands="battery bench check compare completion devices efficiency figures frames help import lens library peaks pipeline platforms power record-power report roofline run runs sensors synth-frame synth-power"
+  local commands="battery bench check compare completion devices efficiency figures frames help import job lens library peaks pipeline platforms power record-power remote report roofline run runs sensors synth-frame synth-power"
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -21,16 +21,18 @@ _benchscope_cli() {
     frames) options="--help --lens --method --out --triptych --window" ;;
     help) COMPREPLY=($(compgen -W "$commands" -- "$cur")); return ;;
     import) options="--help --copy-frames --keep-going --platform --quiet --raw-geometry" ;;
+    job) options="--help --id --isa --jobs-dir --sysfs-root" ;;
     lens) options="--help --board --circle-fov --circle-radius --fix --fov --json --lens --max-bend --max-lines --min-length --min-level --model --out --propose --reject-lines --square" ;;
     library) options="--help --battery --budget --computer --csv --extra-load --figure --json --latex --min-fps --min-runtime" ;;
     peaks) options="--help --json --kind --precision" ;;
     pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
     platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --supply-volts --workspace" ;;
     power) options="--help --from --interval --json --min-phase --min-step --phases --query-gpu --supply-volts --to" ;;
-    record-power) options="--help --interval-ms --out --quiet --seconds --sensor --sysfs-root" ;;
+    record-power) options="--help --events --interval-ms --out --quiet --seconds --sensor --sysfs-root --workspace" ;;
+    remote) options="--help --desk-quiet --id --platform --remote-cli --ssh-config --workspace" ;;
     report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --out --pdf --quiet --supply-volts --template" ;;
     roofline) options="--help --json" ;;
-    run) options="--help --backend --device --isa --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
+    run) options="--help --backend --device --events --isa --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     runs) options="--help --clear --label --run" ;;
     sensors) options="--help --json --power --sensor --sysfs-root" ;;
     synth-frame) options="--help --bits --blur --board --lens --noise --out --pattern --pose --poses --scene --seed --size --square --supersample --vignetting" ;;
