@@ -40,6 +40,7 @@
 #include "power/battery_view.h"
 #include "power/power_trace_loader.h"
 #include "power/power_view.h"
+#include "remote/remote_run.h"
 #include "runs/pipeline_json.h"
 #include "runs/run_json.h"
 #include "store/run_label_store.h"
@@ -187,6 +188,7 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(runner_, &KernelRunner::live_run, this, &MainWindow::show_live_run);
   connect(runner_, &KernelRunner::finished, this, &MainWindow::store_measured_runs);
+  connect(runner_, &KernelRunner::remote_finished, this, &MainWindow::store_remote_run);
   connect(runner_, &KernelRunner::ceilings_measured, this, [this](const ResultSet& set) {
     if (!workspace_) new_untitled_workspace();
     ImportBatch batch;

@@ -30,6 +30,7 @@ class PeakTableView;
 class ImportController;
 class RecentFiles;
 class KernelRunner;
+class RemoteRun;
 class PowerView;
 class PlatformView;
 class PipelineView;
@@ -142,6 +143,8 @@ class MainWindow : public QMainWindow {
   void update_title();  // and the status bar's note on how edits are kept
   void show_live_run(const FlopsRun& run);
   void store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled);
+  // A robot's job came home: its results imported with their provenance under `platform` (main_window_remote.cpp).
+  void store_remote_run(RemoteRun* run, const QString& platform);
   void show_damage();     // the read-only banner, after every (re)load
   void remove_damaged();  // the banner's button: asks, then removes every damaged item
 

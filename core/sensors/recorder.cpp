@@ -57,6 +57,27 @@ void PowerRecorder::sample() {
     const auto v = selection_.sensors[i]->read();
     raw_[i].push_back(v ? *v : std::numeric_limits<double>::quiet_NaN());
   }
+  if (!on_sample_) return;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t n = time_s_.size();
+  std::vector<double> watts(raw_.size(), nan);
+  for (std::size_t i = 0; i < raw_.size(); ++i) {
+    if (selection_.sensors[i]->info().quantity != SensorQuantity::Energy) {
+      watts[i] = raw_[i].back();
+    } else if (n >= 2 && time_s_[n - 1] > time_s_[n - 2]) {
+      watts[i] = (raw_[i][n - 1] - raw_[i][n - 2]) / (time_s_[n - 1] - time_s_[n - 2]);  // NaN from a failed read
+    }
+  }
+  on_sample_(time_s_.back(), watts);
+}
+
+std::vector<std::string> PowerRecorder::channel_names() const {
+  std::set<std::string> labels;
+  for (const auto& s : selection_.sensors) labels.insert(s->info().label);
+  const bool unique = labels.size() == selection_.sensors.size();
+  std::vector<std::string> names;
+  for (const auto& s : selection_.sensors) names.push_back(unique ? s->info().label : s->info().id);
+  return names;
 }
 
 namespace {
@@ -134,13 +155,11 @@ PowerTrace PowerRecorder::finish(const std::string& label) {
   trace.label = label;
   trace.start_time = start_iso_;
   trace.time_s = time_s_;
-  std::set<std::string> labels;
-  for (const auto& s : selection_.sensors) labels.insert(s->info().label);
-  const bool unique = labels.size() == selection_.sensors.size();
+  const std::vector<std::string> names = channel_names();
   for (std::size_t i = 0; i < selection_.sensors.size(); ++i) {
     const SensorInfo& info = selection_.sensors[i]->info();
     PowerChannel c;
-    c.name = unique ? info.label : info.id;
+    c.name = names[i];
     c.quantity = PowerQuantity::Power;
     c.values = info.quantity == SensorQuantity::Energy ? power_from_energy(time_s_, raw_[i]) : raw_[i];
     trace.channels.push_back(std::move(c));

@@ -8,6 +8,7 @@
 // costs the benchmark next to nothing: `bench kernels` measures how much.
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -26,6 +27,15 @@ class PowerRecorder {
   PowerRecorder(const PowerRecorder&) = delete;
   PowerRecorder& operator=(const PowerRecorder&) = delete;
 
+  // Called on the sampling thread after every sample, with its time and each sensor's power in W (an energy
+  // counter: the mean over the interval since the previous sample; NaN for its first sample or a failed read),
+  // in the order of channel_names(): a live view or an event stream follows the recording as it happens. Set it
+  // before start(); it must not call back into the recorder.
+  using SampleFn = std::function<void(double time_s, const std::vector<double>& watts)>;
+  void set_on_sample(SampleFn fn) { on_sample_ = std::move(fn); }
+  // The channels' names as finish() gives them, and the index of the total among them.
+  std::vector<std::string> channel_names() const;
+  std::size_t total_index() const { return selection_.total; }
   void start();          // first sample now, then one every interval
   double now_s() const;  // seconds since start()
   // Phases: begin_phase closes the open one (if any) at now and opens `name`; end_phase closes it.
@@ -64,6 +74,7 @@ class PowerRecorder {
   bool phase_open_ = false;
   double sampler_cpu_s_ = std::numeric_limits<double>::quiet_NaN();  // written by the thread as it ends
   double recorded_s_ = 0;
+  SampleFn on_sample_;
 };
 
 // Raw readings of one energy counter (cumulative J, NaN where a read failed) at `time_s` -> watts: the mean

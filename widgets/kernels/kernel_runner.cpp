@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kernels/kernel_runner.h"
 
+#include <QCheckBox>
 #include <QColor>
 #include <QComboBox>
 #include <QFormLayout>
@@ -28,6 +29,9 @@
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power/power_sensor_box.h"
+#include "remote/remote_run.h"
+#include "remote/robot_queue_dialog.h"
+#include "remote/robot_target.h"
 #include "sensors/recorder.h"
 
 namespace bs::ui {
@@ -51,7 +55,11 @@ KernelRunner::KernelRunner(QWidget* parent)
       stop_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
       power_(new PowerSensorBox(this)),
-      energy_(new QTableWidget(this)) {
+      energy_(new QTableWidget(this)),
+      target_(new RobotTarget(this)),
+      robot_power_(new QCheckBox(tr("On the robot (auto)"), this)),
+      several_(new QPushButton(tr("Several robots…"), this)),
+      remote_log_(new QLabel(this)) {
   qRegisterMetaType<bs::FlopsRun>();
   qRegisterMetaType<std::vector<bs::FlopsRun>>();
   iterations_->setRange(1, 100'000'000);
@@ -93,9 +101,12 @@ KernelRunner::KernelRunner(QWidget* parent)
   energy_->setVisible(false);
 
   auto* form = new QFormLayout;
+  form_ = form;
+  form->addRow(tr("Target"), target_);
   form->addRow(tr("Backend"), backend_);
   form->addRow(QString(), details_);
   auto* ceiling_row = new QHBoxLayout;
+  ceiling_row_ = ceiling_row;
   ceiling_row->addWidget(ceilings_, 1);
   ceiling_row->addWidget(measure_ceilings_, 0, Qt::AlignTop);
   form->addRow(tr("Ceilings"), ceiling_row);
@@ -109,13 +120,28 @@ KernelRunner::KernelRunner(QWidget* parent)
   input_error_->hide();
   form->addRow(QString(), input_error_);
   form->addRow(tr("Record power"), power_);
+  robot_power_->setObjectName("robotPower");
+  robot_power_->setToolTip(
+      tr("The robot records its own power sensors during the sweep (run flops --power auto): "
+         "readings stream to the desk, and the trace comes home with the runs"));
+  form->addRow(tr("Record power"), robot_power_);
+  several_->setObjectName("severalRobots");
+  several_->setToolTip(
+      tr("Run this sweep on several robots, one after another; each robot's results appear as "
+         "they arrive"));
+  remote_log_->setObjectName("remoteLog");
+  remote_log_->setWordWrap(true);
+  remote_log_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  remote_log_->hide();
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(run_);
   buttons->addWidget(stop_);
+  buttons->addWidget(several_);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form);
   layout->addLayout(buttons);
   layout->addWidget(progress_);
+  layout->addWidget(remote_log_);
   layout->addWidget(energy_, 1);
   layout->addStretch(0);
 
@@ -131,8 +157,11 @@ KernelRunner::KernelRunner(QWidget* parent)
     box->setMinimumContentsLength(16);
   }
   connect(backend_, &QComboBox::currentIndexChanged, this, &KernelRunner::show_backend_details);
+  connect(target_, &RobotTarget::changed, this, &KernelRunner::on_target_changed);
+  connect(several_, &QPushButton::clicked, this, &KernelRunner::choose_robots);
   populate();
   restore_parameters();
+  on_target_changed();
 }
 
 // The sweep's parameters are remembered from the last sweep started (QSettings), so a restart does not reset them.
@@ -173,16 +202,57 @@ void KernelRunner::populate() {
   device_ceilings_.clear();
   for (const auto& b : backends_)
     if (auto set = kernels::cached_device_ceilings(b)) device_ceilings_[b.id] = std::move(*set);
-  backend_->clear();
-  for (const auto& b : backends_)
-    backend_->addItem(
-        QStringLiteral("%1 — %2").arg(QString::fromStdString(b.label), QString::fromStdString(b.device_name)));
+  fill_backends();
+}
+
+void KernelRunner::fill_backends() {
+  const bool robot = target_->is_robot();
+  {
+    const QSignalBlocker block(backend_);
+    backend_->clear();
+    robot_backend_ids_.clear();
+    if (robot) {
+      if (const auto& check = target_->check(); check && check->ok)
+        for (const remote::RobotBackend& b : check->info.backends) {
+          backend_->addItem(
+              QStringLiteral("%1 — %2").arg(QString::fromStdString(b.label), QString::fromStdString(b.device)));
+          robot_backend_ids_.push_back(b.id);
+        }
+    } else {
+      for (const auto& b : backends_)
+        backend_->addItem(
+            QStringLiteral("%1 — %2").arg(QString::fromStdString(b.label), QString::fromStdString(b.device_name)));
+    }
+  }
   show_backend_details();
+}
+
+void KernelRunner::on_target_changed() {
+  const bool robot = target_->is_robot();
+  form_->setRowVisible(ceiling_row_, !robot);
+  form_->setRowVisible(power_, !robot);
+  form_->setRowVisible(robot_power_, robot);
+  fill_backends();
+  if (robot && backend_->count() == 0)
+    details_->setText(target_->checking()
+                          ? tr("<small>The robot's backends come with its check…</small>")
+                          : tr("<small>No backend: the robot's check did not succeed (above).</small>"));
+  validate_inputs();
 }
 
 void KernelRunner::show_backend_details() {
   const int i = backend_->currentIndex();
   if (i < 0) return;
+  if (target_->is_robot()) {
+    const auto& check = target_->check();
+    if (!check || static_cast<std::size_t>(i) >= check->info.backends.size()) return;
+    const remote::RobotBackend& b = check->info.backends[static_cast<std::size_t>(i)];
+    details_->setText(tr("<small>on %1: %2 (%3)<br>theoretical peak %4</small>")
+                          .arg(QString::fromStdString(check->info.hostname).toHtmlEscaped(),
+                               QString::fromStdString(b.id).toHtmlEscaped(), QString::fromStdString(b.kind),
+                               QString::fromStdString(format_si(b.theoretical_peak_flops, "FLOPS"))));
+    return;
+  }
   const auto& b = backends_[static_cast<std::size_t>(i)];
   details_->setText(QStringLiteral("<small>%1<br>theoretical peak %2</small>")
                         .arg(QString::fromStdString(b.details).toHtmlEscaped(),
@@ -196,6 +266,7 @@ void KernelRunner::select_backend(const QString& id) {
 }
 
 const kernels::Backend* KernelRunner::current_backend() const {
+  if (target_->is_robot()) return nullptr;  // the box lists the robot's backends
   const int i = backend_->currentIndex();
   return i >= 0 && static_cast<std::size_t>(i) < backends_.size() ? &backends_[static_cast<std::size_t>(i)] : nullptr;
 }
@@ -385,7 +456,9 @@ void KernelRunner::validate_inputs() {
   const QString why = input_error();
   input_error_->setText(why);
   input_error_->setVisible(!why.isEmpty());
-  run_->setEnabled(why.isEmpty() && !running());
+  const bool robot_ready = !target_->is_robot() || (target_->check() && target_->check()->ok && backend_->count() > 0);
+  run_->setEnabled(why.isEmpty() && !running() && robot_ready);
+  several_->setEnabled(why.isEmpty() && !running() && !target_->robots().empty());
 }
 void KernelRunner::set_dims(const QString& dims) { dims_->setText(dims); }
 void KernelRunner::set_iterations(int n) { iterations_->setValue(n); }
@@ -393,6 +466,14 @@ void KernelRunner::set_repeats(int r) { repeats_->setValue(r); }
 
 void KernelRunner::start() {
   if (running() || backend_->currentIndex() < 0) return;
+  if (target_->is_robot()) {
+    const auto i = static_cast<std::size_t>(backend_->currentIndex());
+    if (i >= robot_backend_ids_.size()) return;
+    remote_backend_ = QString::fromStdString(robot_backend_ids_[i]);
+    target_->remember_platform();
+    start_on_robots({{target_->robot_name(), target_->platform()}});
+    return;
+  }
   kernels::SweepSpec spec;
   try {
     spec.workers = kernels::parse_worker_spec(workers_->text().toStdString());
@@ -493,6 +574,107 @@ void KernelRunner::start() {
 
 void KernelRunner::cancel() {
   if (cancel_) cancel_->cancel();
+  remote_queue_.clear();  // the robots not started yet are not started
+  if (remote_) remote_->cancel();
+}
+
+void KernelRunner::choose_robots() {
+  if (running()) return;
+  QString backend = remote_backend_;
+  if (target_->is_robot() && backend_->currentIndex() >= 0 &&
+      static_cast<std::size_t>(backend_->currentIndex()) < robot_backend_ids_.size())
+    backend = QString::fromStdString(robot_backend_ids_[static_cast<std::size_t>(backend_->currentIndex())]);
+  RobotQueueDialog dialog(target_->robots(), backend, this);
+  if (dialog.exec() != QDialog::Accepted || dialog.chosen().empty()) return;
+  remote_backend_ = dialog.backend();
+  start_on_robots(dialog.chosen());
+}
+
+void KernelRunner::start_on_robots(const std::vector<std::pair<QString, QString>>& robots) {
+  if (running() || robots.empty()) return;
+  if (const QString why = input_error(); !why.isEmpty()) {
+    emit failed(why);
+    return;
+  }
+  remote_command_ = {
+      "run",          "flops",
+      "--backend",    (remote_backend_.isEmpty() ? QStringLiteral("cpu") : remote_backend_).toStdString(),
+      "--variant",    variant_->currentData().toString().toStdString(),
+      "--workers",    workers_->text().trimmed().toStdString(),
+      "--points",     dims_->text().trimmed().toStdString(),
+      "--iterations", std::to_string(iterations_->value()),
+      "--repeats",    std::to_string(repeats_->value())};
+  if (robot_power_->isChecked()) remote_command_.insert(remote_command_.end(), {"--power", "auto"});
+  save_parameters();
+  remote_queue_.assign(robots.begin(), robots.end());
+  remote_total_ = static_cast<int>(robots.size());
+  remote_failures_.clear();
+  trace_.reset();
+  energy_->setVisible(false);
+  emit started();
+  run_->setEnabled(false);
+  several_->setEnabled(false);
+  stop_->setEnabled(true);
+  remote_log_->clear();
+  remote_log_->show();
+  start_remote_next();
+}
+
+void KernelRunner::start_remote_next() {
+  if (remote_queue_.empty()) {
+    finish_remote(false);
+    return;
+  }
+  const auto [name, platform] = remote_queue_.front();
+  remote_queue_.pop_front();
+  const int index = remote_total_ - static_cast<int>(remote_queue_.size());
+  remote::SshTarget t;
+  t.destination = name.toStdString();
+  for (const remote::Robot& r : target_->robots())
+    if (r.name == t.destination) t = r.target();
+  remote_ = std::make_unique<RemoteRun>(t, remote_command_);
+  RemoteRun* run = remote_.get();
+  last_power_.clear();
+  const QString who = remote_total_ > 1 ? tr("%1 (%2 of %3)").arg(name).arg(index).arg(remote_total_) : name;
+  progress_->setValue(0);
+  progress_->setFormat(tr("%1: checking…").arg(who));
+  connect(run, &RemoteRun::progress, this, [this, who](double f, const QString& step) {
+    progress_->setValue(static_cast<int>(f * 1000));
+    progress_->setFormat(QStringLiteral("%1: %p % %2%3").arg(who, step, last_power_));
+  });
+  connect(run, &RemoteRun::power, this, [this](double watts, const QString& channel) {
+    last_power_ = QStringLiteral(" · %1 %2").arg(QString::fromStdString(format_si(watts, "W")), channel);
+  });
+  connect(run, &RemoteRun::live_run, this, [this, platform](const FlopsRun& r) {
+    FlopsRun shown = r;
+    shown.platform = platform.toStdString();  // drawn under the name it will be stored with
+    emit live_run(shown);
+  });
+  connect(run, &RemoteRun::remote_text, this,
+          [this, name](const QString& line) { remote_log_->setText(QStringLiteral("%1: %2").arg(name, line)); });
+  connect(run, &RemoteRun::finished, this, [this, run, platform, who] {
+    const bool cancelled = run->job().status == "cancelled";
+    progress_->setFormat(cancelled ? tr("%1: cancelled at %p %").arg(who) : tr("%1: done").arg(who));
+    if (!cancelled) progress_->setValue(1000);
+    emit remote_finished(run, platform);
+    remote_.release()->deleteLater();  // we are in its signal
+    start_remote_next();
+  });
+  connect(run, &RemoteRun::failed, this, [this, run, name](const QString& message) {
+    remote_failures_ << message;
+    remote_log_->setText(QStringLiteral("%1: %2").arg(name, message));
+    (void)run;
+    remote_.release()->deleteLater();
+    start_remote_next();
+  });
+  run->start();
+}
+
+void KernelRunner::finish_remote(bool) {
+  stop_->setEnabled(false);
+  validate_inputs();
+  if (!remote_failures_.isEmpty()) emit failed(remote_failures_.join(QStringLiteral("\n\n")));
+  remote_failures_.clear();
 }
 
 }  // namespace bs::ui

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <QWidget>
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -10,7 +11,10 @@
 #include "kernels/ceilings/ceilings.h"
 #include "model/power_trace.h"
 
+class QCheckBox;
 class QComboBox;
+class QFormLayout;
+class QLayout;
 class QLineEdit;
 class QSpinBox;
 class QPushButton;
@@ -23,7 +27,9 @@ class PowerRecorder;
 }
 namespace bs::ui {
 class PowerSensorBox;
-}
+class RemoteRun;
+class RobotTarget;
+}  // namespace bs::ui
 
 namespace bs::ui {
 
@@ -32,12 +38,23 @@ namespace bs::ui {
 // the finished (or cancelled, partial) runs are handed over to be stored (finished). "Record power" samples one
 // of the computer's own power sensors (or auto: the board or package total) during the sweep; the energy of
 // every point is shown in a table and the trace, with a phase per point, is stored with the runs.
+// The target is this computer or a robot over SSH (RobotTarget): on a robot the same sweep runs as a remote job,
+// its points plotted live as they arrive, Cancel asks the robot to stop (the completed points come home), and the
+// results are handed over to be imported with their provenance (remote_finished); "Several robots…" runs the
+// sweep on each chosen robot in turn.
 class KernelRunner : public QWidget {
   Q_OBJECT
  public:
   explicit KernelRunner(QWidget* parent = nullptr);
   ~KernelRunner() override;
-  bool running() const { return cancel_ != nullptr; }
+  bool running() const { return cancel_ != nullptr || remote_ != nullptr; }
+  RobotTarget* target() const { return target_; }
+  QCheckBox* robot_power_box() const { return robot_power_; }
+  QPushButton* several_robots_button() const { return several_; }
+  // Runs the sweep on each robot in turn, each under its platform name ({robot, platform} pairs).
+  void start_on_robots(const std::vector<std::pair<QString, QString>>& robots);
+  // The robot's text of the run under way (its CLI's messages), for a glance.
+  QLabel* remote_log() const { return remote_log_; }
   void set_workers_spec(const QString& spec);
   QString workers_spec() const;  // as typed (remembered from the last sweep started, issue #32.8)
   void set_dims(const QString& dims);
@@ -71,9 +88,17 @@ class KernelRunner : public QWidget {
   void finished(const std::vector<bs::FlopsRun>& runs, bool cancelled);
   void failed(const QString& message);
   void ceilings_measured(const bs::ResultSet& set);  // to be stored in the workspace beside the runs
+  // A robot's job came home (finished or cancelled): its staged results are to be imported now (the run object
+  // lives until the slot returns) under `platform`.
+  void remote_finished(bs::ui::RemoteRun* run, const QString& platform);
 
  private:
   void populate();
+  void on_target_changed();  // the backends of this computer or of the robot checked; rows shown for either
+  void fill_backends();
+  void start_remote_next();  // the next robot of the queue
+  void finish_remote(bool cancelled);
+  void choose_robots();       // "Several robots…"
   void restore_parameters();  // the last sweep's workers, D, N, repeats, variant and backend (QSettings)
   void save_parameters() const;
   void show_backend_details();
@@ -104,6 +129,20 @@ class KernelRunner : public QWidget {
   QTableWidget* energy_;
   std::shared_ptr<sensors::PowerRecorder> recorder_;
   std::optional<PowerTrace> trace_;
+  QFormLayout* form_ = nullptr;
+  QLayout* ceiling_row_ = nullptr;
+  RobotTarget* target_;
+  QCheckBox* robot_power_;
+  QPushButton* several_;
+  QLabel* remote_log_;
+  std::vector<std::string> robot_backend_ids_;  // the backend box's ids while a robot is the target
+  std::unique_ptr<RemoteRun> remote_;
+  std::deque<std::pair<QString, QString>> remote_queue_;  // robots still to run, with their platform names
+  std::vector<std::string> remote_command_;
+  QString remote_backend_;  // the backend id a run on several robots uses
+  QString last_power_;      // the robot's last power reading, shown in the progress bar
+  QStringList remote_failures_;
+  int remote_total_ = 0;
 };
 
 }  // namespace bs::ui

@@ -12,6 +12,7 @@
 #include "analysis/stats/units.h"
 #include "common/args.h"
 #include "common/command.h"
+#include "common/events_option.h"
 #include "common/signals.h"
 #include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/cpu_args.h"
@@ -69,12 +70,33 @@ void print_ceiling_comparison(double flops, const kernels::Backend& backend, con
   for (const PlausibilityFlag& f : cmp.flags) out << "  \xE2\x9A\xA0 " << f.code << ": " << f.reason << '\n';
 }
 
-int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  if (!raw.empty() && raw[0] == "bandwidth") return run_bandwidth(raw, out, err);
+// The result event of a sweep: each D's peak and where the runs were written.
+nlohmann::json result_fields(const std::vector<FlopsRun>& runs, const ParsedArgs& args) {
+  nlohmann::json peaks = nlohmann::json::array();
+  std::size_t points = 0;
+  for (const FlopsRun& r : runs) points += r.samples.size();
+  for (const PeakRow& row : peak_table(runs))
+    peaks.push_back({{"backend", row.backend},
+                     {"variant", row.variant},
+                     {"dims", row.dims},
+                     {"peak_flops", row.peak.flops},
+                     {"sd_flops", row.peak.at_peak.sd},
+                     {"n", row.peak.at_peak.n},
+                     {"workers_at_peak", row.peak.workers}});
+  return {
+      {"runs", runs.size()},
+      {"points", points},
+      {"peaks", peaks},
+      {"out", args.value("--out") ? nlohmann::json(*args.value("--out")) : nlohmann::json(nullptr)},
+      {"workspace", args.value("--workspace") ? nlohmann::json(*args.value("--workspace")) : nlohmann::json(nullptr)}};
+}
+
+int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err,
+                   remote::EventWriter* events) {
   const ParsedArgs args =
       parse_args(raw, {"--json", "--no-warmup", "--quiet"},
                  {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out", "--workspace",
-                  "--variant", "--device", "--power", "--power-interval-ms", "--sysfs-root", "--isa"});
+                  "--variant", "--device", "--power", "--power-interval-ms", "--sysfs-root", "--isa", "--events"});
   if (args.positional.size() != 1 || args.positional[0] != "flops") throw UsageError("expected 'run flops'");
   kernels::SweepSpec spec;
   try {
@@ -111,11 +133,22 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   if (!args.has("--quiet"))
     err << "benchscope-cli: " << backend.label << " on " << backend.device_name << " (" << backend.details
         << "), theoretical peak " << format_si(backend.theoretical_peak_flops, "FLOPS") << '\n';
+  // With --events the text goes to stderr; progress is an event, not a line redrawn in place.
   const bool quiet = args.has("--quiet");
+  std::ostream& text = events ? err : out;
+  if (events)
+    events->write("sweep", {{"backend", backend.label},
+                            {"backend_id", backend.id},
+                            {"device", backend.device_name},
+                            {"theoretical_peak_flops", backend.theoretical_peak_flops},
+                            {"workers", spec.workers},
+                            {"dims", spec.dims},
+                            {"iterations", spec.iterations},
+                            {"repeats", spec.repeats}});
   const CancelToken& cancel = interrupt_token();
   // The sampler runs on its own thread; the sweep marks its phases: the warm-up of each D (the time from the
   // previous point's end to this D's first point) and each point.
-  const auto power = start_power(args, err, quiet);
+  const auto power = start_power(args, err, quiet, events);
   // Each point lasts long enough for kMinSamplesPerPoint sensor samples (the Kernel Runner does the same).
   if (power) spec.min_point_s = min_point_seconds(power->interval_s());
   double last_end = power ? power->now_s() : 0;
@@ -125,7 +158,9 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     result = kernels::run_sweep(
         backend, cpu, spec, cancel,
         [&](double f, std::string_view step) {
-          if (!quiet)
+          if (events)
+            events->progress(f, step);
+          else if (!quiet)
             err << "\r" << std::setw(5) << std::fixed << std::setprecision(1) << f * 100 << " % " << step
                 << "          " << std::flush;
           if (!power || !step.starts_with("W=")) return;
@@ -138,7 +173,8 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
           }
           power->begin_phase(sweep_point_phase(std::stoll(w), current_d));
         },
-        [&](const FlopsRun&) {
+        [&](const FlopsRun& run) {
+          if (events) events->write("point", remote::point_fields(run));
           if (!power) return;
           power->end_phase();
           last_end = power->now_s();
@@ -146,7 +182,7 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   } catch (const std::invalid_argument& e) {  // sizes or D the backend refuses before running anything
     throw UsageError(e.what());
   }
-  if (!quiet) err << '\n';
+  if (!quiet && !events) err << '\n';
   if (result.cancelled) err << "benchscope-cli: cancelled; keeping the " << result.runs.size() << " partial run(s)\n";
 
   std::optional<PowerTrace> trace;
@@ -159,6 +195,7 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   }
   if (result.runs.empty()) {
     err << "benchscope-cli: error: no point completed; nothing written\n";
+    if (events) events->error("no point completed; nothing written");
     return 1;
   }
   if (const auto path = args.value("--out")) {
@@ -179,23 +216,31 @@ int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     ws.add_import(batch, content_hash(write_run_json(result.runs)));
     if (!quiet) err << "benchscope-cli: stored " << result.runs.size() << " run(s) in " << *ws_path << '\n';
   }
+  if (events) events->write("result", result_fields(result.runs, args));
   if (args.has("--json")) {
-    out << write_run_json(result.runs);
+    text << write_run_json(result.runs);
   } else {
     for (const PeakRow& row : peak_table(result.runs)) {
-      out << row.backend << ", D = " << row.dims << ": peak " << format_si(row.peak.flops, "FLOPS") << " \xC2\xB1 "
-          << format_si(row.peak.at_peak.sd, "FLOPS") << " (n = " << row.peak.at_peak.n
-          << ") at W = " << row.peak.workers;
+      text << row.backend << ", D = " << row.dims << ": peak " << format_si(row.peak.flops, "FLOPS") << " \xC2\xB1 "
+           << format_si(row.peak.at_peak.sd, "FLOPS") << " (n = " << row.peak.at_peak.n
+           << ") at W = " << row.peak.workers;
       if (row.fraction_of_theoretical)
-        out << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
-            << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
-      out << " [variant " << row.variant << "]\n";
+        text << ", " << std::setprecision(1) << std::fixed << *row.fraction_of_theoretical * 100 << " % of "
+             << format_si(*row.theoretical_flops, "FLOPS") << " theoretical";
+      text << " [variant " << row.variant << "]\n";
       // The empirical ceiling of this CPU and ISA, or of the OpenCL/CUDA device, from the per-host cache.
-      if (found->id == "cpu-simd" || found->ceiling_kernels) print_ceiling_comparison(row.peak.flops, *found, cpu, out);
+      if (found->id == "cpu-simd" || found->ceiling_kernels)
+        print_ceiling_comparison(row.peak.flops, *found, cpu, text);
     }
-    if (trace) print_point_energies(out, *trace, result.runs);
+    if (trace) print_point_energies(text, *trace, result.runs);
   }
   return result.cancelled ? 1 : 0;
+}
+
+int run_flops(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  if (!raw.empty() && raw[0] == "bandwidth") return run_bandwidth(raw, out, err);
+  return run_with_events("run flops", raw, out,
+                         [&](remote::EventWriter* events) { return run_flops_with(raw, out, err, events); });
 }
 
 const CommandRegistrar registrar({
@@ -216,6 +261,9 @@ const CommandRegistrar registrar({
     "  --power records the on-board sensors during the sweep (benchscope-cli sensors lists them): phases for the\n"
     "  warm-up and every point, energy per point (J per timed run) and GFLOPS/W at the point's mean power; the\n"
     "  trace is stored with the run (--workspace) and written beside it as RUN.power.csv (--out RUN.json).\n"
+    "         [--events jsonl]\n"
+    "  --events jsonl: the event stream on stdout (progress, each point, power readings, the result; one JSON\n"
+    "  object per line, docs/remote-events-v1.md) and the text on stderr.\n"
     "usage: benchscope-cli run bandwidth [--backend cpu|cpu-scalar|opencl [--device N]] [--mib 128]\n"
     "         [--repeats 10] [--workspace W.bsw] [--json] [--quiet]\n"
     "  STREAM triad a = b + q c over three float arrays of --mib MiB (12 bytes per element), mean ± SD of the\n"

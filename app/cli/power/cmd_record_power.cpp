@@ -12,26 +12,31 @@
 #include "analysis/power/phase_energy.h"
 #include "common/args.h"
 #include "common/command.h"
+#include "common/events_option.h"
 #include "common/signals.h"
 #include "power/power_args.h"
 #include "sensors/recording_csv.h"
+#include "store/workspace.h"
 
 extern char** environ;
 
 namespace bs::cli {
 namespace {
 
-int record_power(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+int record_power(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err,
+                 remote::EventWriter* events) {
   // Everything after "--" is the command to run, untouched by our option parsing.
   const auto dashes = std::find(raw.begin(), raw.end(), std::string("--"));
   const std::vector<std::string> own(raw.begin(), dashes);
   const std::vector<std::string> command(dashes == raw.end() ? dashes : dashes + 1, raw.end());
-  const ParsedArgs args =
-      parse_args(own, {"--quiet"}, {"--out", "--sensor", "--interval-ms", "--sysfs-root", "--seconds"});
+  const ParsedArgs args = parse_args(
+      own, {"--quiet"}, {"--out", "--workspace", "--sensor", "--interval-ms", "--sysfs-root", "--seconds", "--events"});
   if (!args.positional.empty())
     throw UsageError("unexpected argument '" + args.positional[0] + "' (a command goes after --)");
   const auto path = args.value("--out");
-  if (!path) throw UsageError("--out FILE.csv is required");
+  const auto ws_path = args.value("--workspace");
+  if (!path && !ws_path) throw UsageError("--out FILE.csv or --workspace W.bsw is required");
+  std::ostream& text = events ? err : out;
   const bool timed = args.value("--seconds").has_value();
   if (timed == !command.empty()) throw UsageError("give either --seconds S or -- COMMAND ARGS...");
   const double seconds = args.number("--seconds", 0);
@@ -39,13 +44,21 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
   const bool quiet = args.has("--quiet");
   const CancelToken& cancel = interrupt_token();  // installs the Ctrl+C handler before anything starts
   auto rec = make_recorder(args.value("--sensor").value_or("auto"), args.value("--sysfs-root").value_or("/"),
-                           args.number("--interval-ms", 100), err, quiet);
+                           args.number("--interval-ms", 100), err, quiet, events);
   int status = 0;
   std::string what;
   if (timed) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (!cancel.cancelled() && std::chrono::steady_clock::now() < end)
+    const auto start = std::chrono::steady_clock::now();
+    const auto end = start + std::chrono::duration<double>(seconds);
+    int reported = -1;
+    while (!cancel.cancelled() && std::chrono::steady_clock::now() < end) {
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      const double f = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / seconds;
+      if (events && static_cast<int>(f * 100) != reported) {  // at most a hundred progress events
+        reported = static_cast<int>(f * 100);
+        events->progress(std::min(f, 1.0), "recording");
+      }
+    }
     what = "recorded " + std::to_string(seconds) + " s";
   } else {
     std::vector<char*> argv;
@@ -53,7 +66,13 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
     argv.push_back(nullptr);
     pid_t pid = 0;
     const double t0 = rec->now_s();
-    if (const int e = posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ); e != 0) {
+    // With --events, stdout carries events only: the command's own output goes to stderr.
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    if (events) posix_spawn_file_actions_adddup2(&actions, 2, 1);
+    const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (const int e = spawned; e != 0) {
       rec->finish("");
       err << "benchscope-cli: error: cannot run '" << command[0] << "': " << std::strerror(e) << '\n';
       return 127;
@@ -69,20 +88,40 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
   std::string label = "record-power";
   for (const auto& a : command) label += " " + a;
   PowerTrace trace = rec->finish(label);
-  sensors::save_recording_csv(*path, trace);
+  if (path) sensors::save_recording_csv(*path, trace);
+  if (ws_path) {
+    ImportBatch batch;
+    batch.source_path = "benchscope-cli " + label;
+    batch.format = "benchscope-power-recording";
+    batch.power_traces.push_back(trace);
+    Workspace ws(*ws_path);
+    ws.add_import(batch, content_hash(trace.provenance.date + "\n" + label + "\n" + trace.provenance.sensor));
+  }
   if (cancel.cancelled())
     err << "benchscope-cli: interrupted; keeping the " << trace.time_s.size() << " samples recorded\n";
   if (!quiet) {
     const auto all = window_energy(trace, trace.time_s.empty() ? 0 : trace.time_s.front(),
                                    trace.time_s.empty() ? 0 : trace.time_s.back(), "whole recording");
-    err << "benchscope-cli: " << what << "; wrote " << trace.time_s.size() << " samples to " << *path << '\n';
+    err << "benchscope-cli: " << what << "; wrote " << trace.time_s.size() << " samples to "
+        << (path ? *path : *ws_path) << '\n';
     if (all) {
       char line[160];
       std::snprintf(line, sizeof line, "%.3f J over %.3f s, mean %.3f W (%s, %s)\n", all->energy_j,
                     all->end_s - all->start_s, all->mean_power_w,
                     std::string(to_string(trace.provenance.measurement)).c_str(), trace.provenance.sensor.c_str());
-      out << line;
+      text << line;
     }
+  }
+  if (events) {
+    const auto all = window_energy(trace, trace.time_s.empty() ? 0 : trace.time_s.front(),
+                                   trace.time_s.empty() ? 0 : trace.time_s.back(), "whole recording");
+    events->write("result", {{"samples", trace.time_s.size()},
+                             {"sensor", trace.provenance.sensor},
+                             {"energy_j", all ? nlohmann::json(all->energy_j) : nlohmann::json(nullptr)},
+                             {"mean_power_w", all ? nlohmann::json(all->mean_power_w) : nlohmann::json(nullptr)},
+                             {"seconds", all ? nlohmann::json(all->end_s - all->start_s) : nlohmann::json(nullptr)},
+                             {"out", path ? nlohmann::json(*path) : nlohmann::json(nullptr)},
+                             {"workspace", ws_path ? nlohmann::json(*ws_path) : nlohmann::json(nullptr)}});
   }
   return timed ? (cancel.cancelled() ? 130 : 0) : status;
 }
@@ -90,17 +129,20 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
 const CommandRegistrar registrar({
     "record-power",
     "record this computer's power sensors to a CSV, for S seconds or while a command runs",
-    "usage: benchscope-cli record-power --out FILE.csv [--sensor ID[,ID...]|auto] [--interval-ms 100]\n"
-    "         [--sysfs-root DIR] [--quiet] (--seconds S | -- COMMAND ARGS...)\n"
+    "usage: benchscope-cli record-power (--out FILE.csv | --workspace W.bsw) [--sensor ID[,ID...]|auto]\n"
+    "         [--interval-ms 100] [--sysfs-root DIR] [--quiet] [--events jsonl] (--seconds S | -- COMMAND ARGS...)\n"
     "  auto (default): the board's or package's total (Jetson input rail VDD_IN/POM_5V_IN with the other rails\n"
     "  beside it; RAPL psys or package(s) with their sub-zones; else an NVML GPU or a hwmon power file).\n"
     "  The CSV starts with comments naming sensor, kind, host and the absolute start time; `benchscope-cli import`\n"
     "  reads it back as an on-board-sensor power trace. With a COMMAND, its exit status is passed on; Ctrl+C\n"
     "  stops and keeps what was recorded. Energy counters (RAPL, hwmon energy) become power as dE/dt, with the\n"
-    "  counter's wraparound (max_energy_range_uj) added back.",
+    "  counter's wraparound (max_energy_range_uj) added back. --workspace stores the trace there (as well).\n"
+    "  --events jsonl: the event stream on stdout (progress, every reading, the result; docs/remote-events-v1.md)\n"
+    "  and the text, with the command's own output, on stderr.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       try {
-        return record_power(args, out, err);
+        return run_with_events("record-power", args, out,
+                               [&](remote::EventWriter* events) { return record_power(args, out, err, events); });
       } catch (const UsageError& e) {
         err << "benchscope-cli: error: " << e.what() << "\n(see benchscope-cli help record-power)\n";
         return 2;

@@ -7,11 +7,13 @@
 #include <ostream>
 
 #include "analysis/power/phase_energy.h"
+#include "common/events_option.h"
 
 namespace bs::cli {
 
 std::unique_ptr<sensors::PowerRecorder> make_recorder(const std::string& spec, const std::string& root,
-                                                      double interval_ms, std::ostream& err, bool quiet) {
+                                                      double interval_ms, std::ostream& err, bool quiet,
+                                                      remote::EventWriter* events) {
   if (!(interval_ms >= 1 && interval_ms <= 60000)) throw UsageError("the sample interval must be 1..60000 ms");
   sensors::SensorSet set = sensors::find_sensors({root, sensors::default_nvml_library()});
   sensors::Selection sel;
@@ -27,11 +29,13 @@ std::unique_ptr<sensors::PowerRecorder> make_recorder(const std::string& spec, c
   }
   auto rec = std::make_unique<sensors::PowerRecorder>(
       std::move(sel), std::chrono::microseconds(static_cast<long long>(interval_ms * 1000)));
+  if (events) stream_power(*rec, *events);
   rec->start();
   return rec;
 }
 
-std::unique_ptr<sensors::PowerRecorder> start_power(const ParsedArgs& args, std::ostream& err, bool quiet) {
+std::unique_ptr<sensors::PowerRecorder> start_power(const ParsedArgs& args, std::ostream& err, bool quiet,
+                                                    remote::EventWriter* events) {
   const std::string spec = args.value("--power").value_or("none");
   if (spec == "none") {
     if (args.value("--power-interval-ms") || args.value("--sysfs-root"))
@@ -39,7 +43,7 @@ std::unique_ptr<sensors::PowerRecorder> start_power(const ParsedArgs& args, std:
     return nullptr;
   }
   return make_recorder(spec, args.value("--sysfs-root").value_or("/"), args.number("--power-interval-ms", 100), err,
-                       quiet);
+                       quiet, events);
 }
 
 void print_phase_energies(std::ostream& out, const PowerTrace& trace) {

@@ -13,6 +13,10 @@
 #include "model/power_trace.h"
 #include "sensors/recorder.h"
 
+namespace bs::remote {
+class EventWriter;
+}
+
 namespace bs::cli {
 
 // The options to add to a command's `valued` set.
@@ -23,11 +27,14 @@ inline constexpr const char* kPowerUsage =
     "  them; auto: the board or package total), every --power-interval-ms (default 100), from --sysfs-root DIR\n"
     "  (default /). Prints the energy of each phase, stores the trace beside the run.";
 
-// A started recorder, or null for --power none / absent. Throws UsageError with the sensor problem.
-std::unique_ptr<sensors::PowerRecorder> start_power(const ParsedArgs& args, std::ostream& err, bool quiet = false);
+// A started recorder, or null for --power none / absent. Throws UsageError with the sensor problem. With
+// `events`, every sample is also a "power" event (--events jsonl).
+std::unique_ptr<sensors::PowerRecorder> start_power(const ParsedArgs& args, std::ostream& err, bool quiet = false,
+                                                    remote::EventWriter* events = nullptr);
 // The sensor options as record-power takes them: --sensor, --interval-ms, --sysfs-root.
 std::unique_ptr<sensors::PowerRecorder> make_recorder(const std::string& spec, const std::string& root,
-                                                      double interval_ms, std::ostream& err, bool quiet);
+                                                      double interval_ms, std::ostream& err, bool quiet,
+                                                      remote::EventWriter* events = nullptr);
 
 // Prints "phase: E J over T s, mean P W (n samples)" lines and the measurement kind.
 void print_phase_energies(std::ostream& out, const PowerTrace& trace);

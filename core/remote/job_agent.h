@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The robot's side of a remote measurement (`benchscope-cli job ...`, started by the desk over SSH). The agent
+// runs the measurement as a child process in a process group of its own, with its results written into a job
+// folder (`~/.cache/benchscope/remote/<id>/`), and forwards the child's events on stdout. It reads its stdin: a
+// line "cancel" stops the measurement as Ctrl+C would (the completed part is kept and sent home); the END of
+// stdin (the desk gone, the connection dropped) stops it too, and then nothing is left running: the group gets
+// SIGTERM, then SIGKILL. When the child has ended the agent sends the result files as "file" events and a
+// "job_end" event; the folder stays, so `remote HOST fetch ID` can send them again.
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace bs::remote {
+
+// $XDG_CACHE_HOME/benchscope/remote, else $HOME/.cache/benchscope/remote.
+std::string default_jobs_dir();
+// Throws std::invalid_argument unless `id` is 1..64 letters, digits, '-', '_' and '.' (not leading).
+void check_job_id(const std::string& id);
+// A fresh id from the desk's clock and randomness: "20261130-101502-3f9a1c".
+std::string new_job_id();
+
+// The file a job leaves its results in (a BenchScope workspace) and its record.
+inline constexpr const char* kJobResultFile = "result.bsw";
+inline constexpr const char* kJobRecordFile = "job.json";
+
+struct AgentJob {
+  std::string id;
+  std::string jobs_dir;
+  std::vector<std::string> command;  // what the desk asked for, e.g. {"run", "flops", "--workers", "1,2"}
+  // Runs the measurement in the forked child, with stdout going to the agent; returns the exit status. Gets the
+  // job's folder (where its results go).
+  std::function<int(const std::string& job_dir)> body;
+  int stdin_fd = 0;  // where "cancel" comes from
+};
+
+// Runs the job and writes its events to `out` (the agent's stdout); the child's stderr goes to `err`. Returns 0
+// when the job ran (whatever its outcome: job_end says), 1 when it could not start (an event says why).
+int run_job_agent(const AgentJob& job, std::ostream& out, std::ostream& err);
+// Sends a finished job's record and files again ("job", "file"..., "job_end"); `id` empty: the newest job.
+int fetch_job_agent(const std::string& jobs_dir, const std::string& id, std::ostream& out);
+// One "job" event per job in the folder, newest last, with its status.
+int list_jobs_agent(const std::string& jobs_dir, std::ostream& out);
+
+}  // namespace bs::remote

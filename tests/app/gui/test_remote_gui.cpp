@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Kernel Runner measuring on a robot over SSH (issue #44), driven in the real main window: the robot (this
+// machine behind a real sshd on a local port, tests/support/ssh_robot.h) is chosen as the target and checked, the
+// sweep's points are plotted live while it runs, and its results land in the workspace like a local run's, under
+// the platform name typed, with the robot's provenance; a second run on the same robot is cancelled and brings
+// its completed points. Screenshots at 1280x800 and 1600x1000 go to $BENCHSCOPE_SCREENSHOT_DIR. CTest skip (77)
+// without sshd.
+#include <QApplication>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include <iostream>
+#include <set>
+
+#include "../../support/cli_harness.h"
+#include "../../support/ssh_robot.h"
+#include "kernels/kernel_runner.h"
+#include "main_window.h"
+#include "peaks/flops_plot.h"
+#include "remote/remote_run.h"
+#include "remote/robot_queue_dialog.h"
+#include "remote/robot_target.h"
+#include "remote/robots.h"
+#include "store/workspace.h"
+
+namespace {
+
+bs::test::SshRobot* g_robot = nullptr;
+
+QPushButton* button(QWidget* parent, const QString& text) {
+  for (QPushButton* b : parent->findChildren<QPushButton*>())
+    if (b->text() == text) return b;
+  return nullptr;
+}
+
+void screenshots(bs::ui::MainWindow& w, const QString& name) {
+  const QByteArray dir = qgetenv("BENCHSCOPE_SCREENSHOT_DIR");
+  if (dir.isEmpty()) return;
+  for (const QSize size : {QSize(1280, 800), QSize(1600, 1000)}) {
+    w.resize(size);
+    QTest::qWait(30);
+    QCOMPARE(w.size(), size);  // the robot's rows fit the window at its smallest size
+    w.grab().save(
+        QStringLiteral("%1/%2-%3x%4.png").arg(QString::fromUtf8(dir), name).arg(size.width()).arg(size.height()));
+  }
+}
+
+std::string setting(const bs::Provenance& p, const std::string& key) {
+  for (const auto& [k, v] : p.settings)
+    if (k == key) return v;
+  return {};
+}
+
+}  // namespace
+
+class TestRemoteGui : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_remote_gui");
+  }
+
+  void sweep_on_a_robot_is_plotted_live_and_imported() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("robot.bsw")));
+    w.resize(1280, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    bs::ui::KernelRunner* runner = w.kernel_runner();
+    bs::ui::RobotTarget* target = runner->target();
+    // The robot is in the list (added with its SSH config and CLI path); choosing it checks it.
+    const int at = target->box()->findData(QStringLiteral("robot"));
+    QVERIFY(at > 0);
+    target->box()->setCurrentIndex(at);
+    for (int i = 0; i < 1500 && (target->checking() || !target->check()); ++i) QTest::qWait(20);
+    QVERIFY(target->check().has_value());
+    QVERIFY2(target->check()->ok, target->check()->problem.c_str());
+    QVERIFY(target->status_label()->text().contains("BenchScope " BENCHSCOPE_VERSION));
+    QCOMPARE(target->platform_field()->text(), QString::fromStdString(target->check()->info.hostname));
+    // Backends are the robot's: choose its scalar CPU backend; the platform is renamed before the run.
+    QComboBox* backend = nullptr;
+    for (QComboBox* box : runner->findChildren<QComboBox*>())
+      if (box != target->box() && box->findText("CPU scalar", Qt::MatchStartsWith) >= 0) backend = box;
+    QVERIFY(backend);
+    backend->setCurrentIndex(backend->findText("CPU scalar", Qt::MatchStartsWith));
+    runner->set_workers_spec("8:4000:8");
+    runner->set_dims("1");
+    runner->set_iterations(4000);
+    runner->set_repeats(1);
+    target->platform_field()->clear();
+    QTest::keyClicks(target->platform_field(), "Robot GUI");
+    qRegisterMetaType<bs::ui::RemoteRun*>();
+    QSignalSpy live(runner, &bs::ui::KernelRunner::live_run);
+    QSignalSpy done(runner, &bs::ui::KernelRunner::remote_finished);
+    QPushButton* run = button(runner, "Run");
+    QVERIFY(run && run->isEnabled());
+    QTest::mouseClick(run, Qt::LeftButton);
+    QVERIFY(runner->running());
+    // Live: the plot draws the robot's sweep while it runs (counting points, not time).
+    for (int i = 0; i < 3000 && live.count() < 20 && done.isEmpty(); ++i) QTest::qWait(10);
+    QVERIFY(live.count() >= 20);
+    QVERIFY(done.isEmpty());
+    QVERIFY(w.flops_plot()->series_count() >= 1);
+    QVERIFY(runner->progress_bar()->format().startsWith("robot:"));
+    screenshots(w, "kernel-runner-robot-live");
+    for (int i = 0; i < 6000 && done.isEmpty(); ++i) QTest::qWait(20);
+    QCOMPARE(done.count(), 1);
+    QVERIFY(!runner->running());
+    // In the workspace like a local run, under the platform typed, with the robot's provenance.
+    const auto runs = w.workspace()->runs();
+    QCOMPARE(runs.size(), std::size_t{1});
+    QCOMPARE(runs[0].run.platform, std::string("Robot GUI"));
+    QCOMPARE(runs[0].run.samples.size(), std::size_t{500});
+    QCOMPARE(setting(runs[0].run.provenance, "remote host"), std::string("robot"));
+    QVERIFY(setting(runs[0].run.provenance, "remote command").find("--workers 8:4000:8") != std::string::npos);
+    QCOMPARE(w.flops_plot()->series_count(), 1);
+    screenshots(w, "kernel-runner-robot-done");
+    // The robot remembers the platform name and the run.
+    const bs::remote::RobotList robots;
+    const bs::remote::Robot* stored = robots.find("robot");
+    QVERIFY(stored && stored->platform == "Robot GUI");
+    QVERIFY(!stored->runs.empty() && stored->runs.back().outcome.find("imported 1 run") != std::string::npos);
+
+    // A second sweep, cancelled from the GUI after a few points: the completed ones come home.
+    runner->set_workers_spec("1:20000:1");
+    live.clear();
+    QTest::mouseClick(run, Qt::LeftButton);
+    for (int i = 0; i < 3000 && live.count() < 5 && done.count() == 1; ++i) QTest::qWait(10);
+    QVERIFY(live.count() >= 5);
+    QPushButton* cancel = button(runner, "Cancel");
+    QVERIFY(cancel && cancel->isEnabled());
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    for (int i = 0; i < 6000 && done.count() == 1; ++i) QTest::qWait(20);
+    QCOMPARE(done.count(), 2);
+    const auto after = w.workspace()->runs();
+    QCOMPARE(after.size(), std::size_t{2});
+    std::size_t partial = 0;
+    for (const auto& r : after)
+      if (r.run.samples.size() != 500) partial = r.run.samples.size();
+    QVERIFY(partial >= 5 && partial < 20000);
+    QVERIFY(runner->progress_bar()->format().contains("cancelled"));
+  }
+
+  // "Several robots…": the sweep runs on each checked robot in turn, each under the platform typed in the dialog,
+  // and each robot's run lands as it arrives.
+  void several_robots_one_after_another() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("queue.bsw")));
+    w.resize(1280, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    bs::ui::KernelRunner* runner = w.kernel_runner();
+    runner->target()->reload();
+    runner->set_workers_spec("1,2,4,8");
+    runner->set_dims("1");
+    runner->set_iterations(1000);
+    runner->set_repeats(2);
+    qRegisterMetaType<bs::ui::RemoteRun*>();
+    QSignalSpy done(runner, &bs::ui::KernelRunner::remote_finished);
+    bool answered = false;
+    // The dialog is answered through the running event loop, as a person would: both robots checked, each
+    // platform renamed, the backend left at cpu, OK.
+    std::function<void()> answer = [&] {
+      auto* d = qobject_cast<bs::ui::RobotQueueDialog*>(QApplication::activeModalWidget());
+      if (!d) {  // not shown yet: look again on the next turn of the event loop
+        QTimer::singleShot(10, this, answer);
+        return;
+      }
+      QTableWidget* t = d->table();
+      for (int r = 0; r < t->rowCount(); ++r) {
+        const QString name = t->item(r, 0)->text();
+        const bool wanted = name == "robot" || name == "robot-b";
+        t->item(r, 0)->setCheckState(wanted ? Qt::Checked : Qt::Unchecked);
+        if (wanted) t->item(r, 1)->setText(name == "robot" ? "Queue A" : "Queue B");
+      }
+      d->backend_box()->setCurrentIndex(d->backend_box()->findData("cpu-scalar"));
+      if (const QByteArray shots = qgetenv("BENCHSCOPE_SCREENSHOT_DIR"); !shots.isEmpty())
+        d->grab().save(QString::fromUtf8(shots) + "/robot-queue-dialog.png");
+      answered = true;
+      d->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+    };
+    QTimer::singleShot(0, this, answer);
+    QPushButton* several = runner->several_robots_button();
+    QVERIFY(several->isEnabled());
+    QTest::mouseClick(several, Qt::LeftButton);
+    QVERIFY(answered);
+    // A failure would show a message box: its text is the test's failure message.
+    QString box_text;
+    QTimer boxes;
+    connect(&boxes, &QTimer::timeout, this, [&] {
+      if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+        box_text = box->text();
+        box->close();
+      }
+    });
+    boxes.start(50);
+    for (int i = 0; i < 6000 && done.count() < 2 && box_text.isEmpty(); ++i) QTest::qWait(20);
+    QVERIFY2(box_text.isEmpty(), qPrintable(box_text));
+    QCOMPARE(done.count(), 2);
+    for (int i = 0; i < 200 && runner->running(); ++i) QTest::qWait(20);
+    QVERIFY(!runner->running());
+    std::set<std::string> platforms;
+    for (const auto& r : w.workspace()->runs()) {
+      platforms.insert(r.run.platform);
+      QCOMPARE(r.run.samples.size(), std::size_t{4});
+      QCOMPARE(r.run.backend.rfind("CPU scalar", 0), std::size_t{0});
+    }
+    QCOMPARE(platforms, (std::set<std::string>{"Queue A", "Queue B"}));
+    screenshots(w, "kernel-runner-robot-queue");
+  }
+};
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  bs::test::SshRobot robot;
+  if (const QString why = robot.start(); !why.isEmpty()) {
+    std::cout << "SKIP: no SSH server to test against: " << why.toStdString() << '\n';
+    return bs::test::kSkipCode;
+  }
+  g_robot = &robot;
+  // The desk's robots list in the test's folder, holding the robot with its SSH config and the built CLI.
+  qputenv("XDG_CONFIG_HOME", robot.path("desk-config").toUtf8());
+  bs::remote::Robot r;
+  r.name = "robot";
+  r.added = true;
+  r.config_file = robot.config().toStdString();
+  r.remote_cli = bs::test::kCli.toStdString();
+  bs::remote::RobotList().put(r);
+  r.name = "robot-b";  // the same machine under its second Host name: a second robot for the queue
+  bs::remote::RobotList().put(r);
+  TestRemoteGui tc;
+  return QTest::qExec(&tc, argc, argv);
+}
+
+#include "test_remote_gui.moc"
