@@ -224,7 +224,8 @@ class TestRemoteGui : public QObject {
   }
 };
 
-int main(int argc, char** argv) {
+namespace {
+int remote_gui_main(int argc, char** argv) {
   QApplication app(argc, argv);
   bs::test::SshRobot robot;
   if (const QString why = robot.start(); !why.isEmpty()) {
@@ -245,5 +246,7 @@ int main(int argc, char** argv) {
   TestRemoteGui tc;
   return QTest::qExec(&tc, argc, argv);
 }
+}  // namespace
+BENCHSCOPE_TEST_CUSTOM_MAIN(remote_gui_main)
 
 #include "test_remote_gui.moc"

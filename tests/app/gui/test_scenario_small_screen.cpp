@@ -332,7 +332,8 @@ class TestScenarioSmallScreen : public QObject {
 
 // A 1280x800 screen for the offscreen platform, given before QApplication starts (Qt's offscreen plugin reads a
 // JSON configuration file).
-int main(int argc, char** argv) {
+namespace {
+int small_screen_main(int argc, char** argv) {
   const QString config =
       QDir::temp().filePath(QStringLiteral("benchscope-1280x800-%1.json").arg(QCoreApplication::applicationPid()));
   {
@@ -354,5 +355,7 @@ int main(int argc, char** argv) {
   QFile::remove(config);
   return rc;
 }
+}  // namespace
+BENCHSCOPE_TEST_CUSTOM_MAIN(small_screen_main)
 
 #include "test_scenario_small_screen.moc"

@@ -345,7 +345,8 @@ class TestCliRemote : public QObject {
   }
 };
 
-int main(int argc, char** argv) {
+namespace {
+int cli_remote_main(int argc, char** argv) {
   QCoreApplication app(argc, argv);
   bs::test::SshRobot robot;
   if (const QString why = robot.start(); !why.isEmpty()) {
@@ -356,5 +357,7 @@ int main(int argc, char** argv) {
   TestCliRemote tc;
   return QTest::qExec(&tc, argc, argv);
 }
+}  // namespace
+BENCHSCOPE_TEST_CUSTOM_MAIN(cli_remote_main)
 
 #include "test_cli_remote.moc"
