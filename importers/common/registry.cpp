@@ -34,13 +34,30 @@ namespace bs {
 namespace {
 
 std::vector<std::unique_ptr<Importer>> make_importers() {
-  return importers_of({&kRunJsonFileFormat, &kPipelineJsonFileFormat, &kGoogleBenchmarkJsonFileFormat,
-                       &kClpeakTextFileFormat, &kPowerRecordingFileFormat, &kPowerCsvFileFormat, &kTegrastatsFileFormat,
-                       &kJtopCsvFileFormat, &kNvidiaSmiFileFormat, &kPerfStatFileFormat, &kPtdLogFileFormat,
-                       &kCyclictestTextFileFormat, &kCyclictestJsonFileFormat, &kRttestLogFileFormat,
-                       &kRttestStatisticsFileFormat, &kPerformanceTestCsvFileFormat, &kPerformanceTestJsonFileFormat,
-                       &kMlperfLoadgenFileFormat, &kRos2BenchmarkJsonFileFormat, &kRobotperfYamlFileFormat,
-                       &kRawBayerFileFormat, &kPnmFileFormat, &kPngFileFormat, &kTiffFileFormat});
+  return importers_of({&kRunJsonFileFormat,
+                       &kPipelineJsonFileFormat,
+                       &kGoogleBenchmarkJsonFileFormat,
+                       &kClpeakTextFileFormat,
+                       &kPowerRecordingFileFormat,
+                       &kPowerCsvFileFormat,
+                       &kTegrastatsFileFormat,
+                       &kJtopCsvFileFormat,
+                       &kNvidiaSmiFileFormat,
+                       &kPerfStatFileFormat,
+                       &kPtdLogFileFormat,
+                       &kCyclictestTextFileFormat,
+                       &kCyclictestJsonFileFormat,
+                       &kRttestLogFileFormat,
+                       &kRttestStatisticsFileFormat,
+                       &kPerformanceTestCsvFileFormat,
+                       &kPerformanceTestJsonFileFormat,
+                       &kMlperfLoadgenFileFormat,
+                       &kRos2BenchmarkJsonFileFormat,
+                       &kRobotperfYamlFileFormat,
+                       &kRawBayerFileFormat,
+                       &kPnmFileFormat,
+                       &kPngFileFormat,
+                       &kTiffFileFormat});
 }
 
 [[noreturn]] void io_error(const std::string& path, const std::string& what) {

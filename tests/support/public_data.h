@@ -10,9 +10,9 @@
 //     const std::string f = bs::test::public_data("tests/data/power/real/tegrastats-nano-jetpack4.log");
 //     ...
 //
-// and ends with its QTEST_MAIN line as any test; tests/support/test_program_main.cpp makes a run that skipped for lack of such data
-// reported by CTest as skipped, never as passed. Only an absent FOLDER skips: a folder that is there but lacks the
-// file a test names fails the test, as any missing fixture does.
+// and ends with its QTEST_MAIN line as any test; tests/support/test_program_main.cpp makes a run that skipped for lack
+// of such data reported by CTest as skipped, never as passed. Only an absent FOLDER skips: a folder that is there but
+// lacks the file a test names fails the test, as any missing fixture does.
 #include <QDir>
 #include <QFileInfo>
 #include <QString>

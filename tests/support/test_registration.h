@@ -20,21 +20,21 @@ bool register_test(const char* file, TestMain main);
 // namespace and its registration; the application object, initMain() and the source path are Qt's. The exit code
 // is 77 (skipped) when nothing failed but third-party files were absent (public_data.h).
 #undef QTEST_MAIN_WRAPPER
-#define QTEST_MAIN_WRAPPER(TestObject, ...)                                                                        \
-  namespace {                                                                                                      \
-  int benchscope_test_main(int argc, char* argv[]) {                                                               \
-    TESTLIB_SELFCOVERAGE_START(#TestObject)                                                                        \
-    QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();                                             \
-    __VA_ARGS__                                                                                                    \
-    TestObject tc;                                                                                                 \
-    QTEST_SET_MAIN_SOURCE_PATH                                                                                     \
-    return bs::test::test_exit_code(QTest::qExec(&tc, argc, argv));                                                \
-  }                                                                                                                \
+#define QTEST_MAIN_WRAPPER(TestObject, ...)                                                                          \
+  namespace {                                                                                                        \
+  int benchscope_test_main(int argc, char* argv[]) {                                                                 \
+    TESTLIB_SELFCOVERAGE_START(#TestObject)                                                                          \
+    QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();                                               \
+    __VA_ARGS__                                                                                                      \
+    TestObject tc;                                                                                                   \
+    QTEST_SET_MAIN_SOURCE_PATH                                                                                       \
+    return bs::test::test_exit_code(QTest::qExec(&tc, argc, argv));                                                  \
+  }                                                                                                                  \
   [[maybe_unused]] const bool benchscope_test_registered = bs::test::register_test(__FILE__, &benchscope_test_main); \
   }
 
 // A test with a main of its own (e.g. one that must set up before the QApplication exists) names it here.
-#define BENCHSCOPE_TEST_CUSTOM_MAIN(function)                                                                      \
-  namespace {                                                                                                      \
-  [[maybe_unused]] const bool benchscope_test_registered = bs::test::register_test(__FILE__, &function);          \
+#define BENCHSCOPE_TEST_CUSTOM_MAIN(function)                                                            \
+  namespace {                                                                                            \
+  [[maybe_unused]] const bool benchscope_test_registered = bs::test::register_test(__FILE__, &function); \
   }
