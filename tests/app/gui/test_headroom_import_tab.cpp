@@ -71,6 +71,10 @@ class TestHeadroomImportTab : public QObject {
     mime->setUrls({QUrl::fromLocalFile(kFixtures + "cyclictest-2.6-H20-2thr-overflows.txt"),
                    QUrl::fromLocalFile(kFixtures + "rttest-log-1khz-misses.txt"),
                    QUrl::fromLocalFile(kFixtures + "perftest-2x-per-interval.csv")});
+    // As a drag does: the window is entered (and accepts), then the files are let go over it.
+    QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(&w, &enter);
+    QVERIFY(enter.isAccepted());
     QDropEvent drop(QPointF(200, 200), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
     QApplication::sendEvent(&w, &drop);
     QTRY_COMPARE_WITH_TIMEOUT(w.workspace()->headroom_measurements().size(), std::size_t{3}, 120000);
