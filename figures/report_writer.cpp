@@ -231,12 +231,18 @@ void keep_together(QTextDocument& doc) {
 }
 
 // The widest piece of `text` a line cannot break inside, as the layout breaks lines (Unicode line breaking: at
-// spaces, after '/', after a '-' before a letter).
+// spaces, after '/', after a '-' before a letter). A unit's short denominator stays with its numerator
+// ("GFLOPS/W", "op/s"): the column is made wide enough that the layout never needs that break, since "GFLOPS/" over
+// "W" reads as two words.
 double widest_unbreakable(const QString& text, const QFontMetricsF& m) {
   QTextBoundaryFinder lines(QTextBoundaryFinder::Line, text);
   double widest = 0;
-  for (qsizetype start = 0, end = lines.toNextBoundary(); end != -1; start = end, end = lines.toNextBoundary())
-    widest = std::max(widest, m.horizontalAdvance(text.mid(start, end - start).trimmed()));
+  QString piece;
+  for (qsizetype start = 0, end = lines.toNextBoundary(); end != -1; start = end, end = lines.toNextBoundary()) {
+    const QString next = text.mid(start, end - start).trimmed();
+    piece = piece.endsWith('/') && next.size() <= 2 ? piece + next : next;
+    widest = std::max(widest, m.horizontalAdvance(piece));
+  }
   return widest;
 }
 

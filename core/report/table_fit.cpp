@@ -7,6 +7,18 @@
 
 namespace bs {
 
+namespace {
+
+// A unit's denominator of one or two characters after a '/' ("GFLOPS/W", "op/s"): the writer keeps it with the
+// numerator (figures/report_writer.cpp, widest_unbreakable), so the word is counted whole.
+bool short_denominator(std::string_view text, std::size_t from) {
+  std::size_t n = 0;
+  while (from + n < text.size() && text[from + n] != ' ' && text[from + n] != '/') ++n;
+  return n >= 1 && n <= 2;
+}
+
+}  // namespace
+
 std::size_t longest_word(std::string_view text) {
   std::size_t best = 0, run = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -20,7 +32,7 @@ std::size_t longest_word(std::string_view text) {
     // A line may break after this character: the slash of a path, a hyphen before a letter ("jetpack-orin", not
     // "Area-51").
     const bool digit_next = i + 1 < text.size() && text[i + 1] >= '0' && text[i + 1] <= '9';
-    if (c == '/' || (c == '-' && !digit_next && run > 1)) {
+    if ((c == '/' && !short_denominator(text, i + 1)) || (c == '-' && !digit_next && run > 1)) {
       best = std::max(best, run);
       run = 0;
     }

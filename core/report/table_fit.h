@@ -26,7 +26,8 @@ inline constexpr double kTableMinFontPt = 7.0;  // the smallest a too-wide table
 inline constexpr double kTableMinCharPt = kTableCharPt * kTableMinFontPt / kTableFontPt;
 
 // The longest word of `text` in characters (UTF-8 continuation bytes not counted): words end at spaces, after '/'
-// and after a '-' not followed by a digit, where lines break.
+// (except before a unit's denominator of 1-2 characters: "GFLOPS/W" is one word) and after a '-' not followed by a
+// digit, where lines break.
 std::size_t longest_word(std::string_view text);
 // Points a column needs so that no word of it breaks: its longest word in any of `rows`, at `char_pt` a character.
 double column_need_pt(std::span<const std::vector<std::string>> rows, std::size_t column,

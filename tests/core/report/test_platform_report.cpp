@@ -6,6 +6,7 @@
 
 #include "report/platform_report.h"
 #include "report/report_sections.h"
+#include "report/table_fit.h"
 
 namespace {
 
@@ -58,6 +59,16 @@ class TestPlatformReport : public QObject {
 
   // Page one: the recommendation with the constraint it met and the margin, before the chart and the table; the
   // others and why they were not chosen.
+  // Words as a table column needs them whole: a path breaks after each '/', a unit keeps its short denominator
+  // (page 1 once printed "GFLOPS/" over "W" in a column sized for "GFLOPS/").
+  void words_of_units_and_paths() {
+    QCOMPARE(bs::longest_word("GFLOPS/W"), std::size_t{8});
+    QCOMPARE(bs::longest_word("op/s per W"), std::size_t{4});
+    QCOMPARE(bs::longest_word("results/closed/Intel"), std::size_t{8});
+    QCOMPARE(bs::longest_word("perf-rapl-validation.csv"), std::size_t{14});
+    QCOMPARE(bs::longest_word("Area-51"), std::size_t{7});
+  }
+
   void decision_first() {
     const std::string html = bs::report_html(two_robots());
     QVERIFY(html.find("lab &lt;1&gt;.bsw") != std::string::npos);
