@@ -58,7 +58,7 @@ QString draw_candidates(QCustomPlot& plot, std::span<const CandidateClass> class
   plot.legend->setFont(QFont(plot.font().family(), 8));
   // The legend goes under the axes, never over the points (a box inside the axes hid the published ones in a
   // small plot): taken out of the axis rect's inset layout once, in rows of three entries.
-  if (plot.axisRect()->insetLayout()->take(plot.legend)) {
+  if (plot.legend->layout() == plot.axisRect()->insetLayout() && plot.axisRect()->insetLayout()->take(plot.legend)) {
     plot.plotLayout()->addElement(1, 0, plot.legend);
     plot.plotLayout()->setRowStretchFactor(1, 0.001);
     plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);

@@ -21,6 +21,7 @@ namespace {
 constexpr const char* kNoteName = "bs-legend-note";            // objectName of the note element under the legend
 constexpr const char* kNotesProperty = "bs_figure_notes";      // the figure's own note lines (QStringList)
 constexpr const char* kFigureNameProperty = "bs_figure_name";  // a plottable's name in figures (QString)
+constexpr const char* kWholeNameProperty = "bs_whole_name";    // its name before elide_wide_entries shortened it
 
 // Everything layout_figure changes on a view's plot, saved so that export_plot can put the view back as it was.
 class ViewState {
@@ -40,6 +41,11 @@ class ViewState {
         legend_inside_ = true;
         alignment_ = inset->insetAlignment(i);
       }
+    // A legend beside the axes (the Platforms tab's candidates) goes under them on paper and comes back after.
+    QCPLayoutGrid* grid = plot.plotLayout();
+    for (int r = 0; r < grid->rowCount(); ++r)
+      for (int c = 0; c < grid->columnCount(); ++c)
+        if (grid->hasElement(r, c) && grid->element(r, c) == plot.legend && c > 0) legend_beside_ = true;
     border_ = plot.legend->borderPen();
     brush_ = plot.legend->brush();
     wrap_ = plot.legend->wrap();
@@ -65,9 +71,16 @@ class ViewState {
       plot_.plotLayout()->simplify();
       plot_.axisRect()->insetLayout()->addElement(plot_.legend, alignment_);
     }
+    if (legend_beside_ && !plot_.plotLayout()->hasElement(0, 1)) {
+      plot_.plotLayout()->take(plot_.legend);
+      plot_.plotLayout()->simplify();
+      plot_.plotLayout()->addElement(0, 1, plot_.legend);
+      plot_.plotLayout()->setColumnStretchFactor(1, 0.001);
+    }
     plot_.legend->clearItems();
     for (const Plottable& p : plottables_) {
       p.plottable->setName(p.name);
+      p.plottable->setProperty(kWholeNameProperty, QVariant());
       QPen pen = p.plottable->pen();
       pen.setWidthF(p.pen_width);
       p.plottable->setPen(pen);
@@ -119,7 +132,7 @@ class ViewState {
   std::vector<Plottable> plottables_;
   std::vector<Text> texts_;
   QFont legend_font_;
-  bool legend_inside_ = false, legend_visible_ = false;
+  bool legend_inside_ = false, legend_beside_ = false, legend_visible_ = false;
   Qt::Alignment alignment_;
   QPen border_;
   QBrush brush_;
@@ -159,6 +172,10 @@ void place_legend_below(QCustomPlot& plot, double font_pt) {
   plot.legend->setColumnSpacing(static_cast<int>(font_pt * 1.5));
   plot.legend->setIconSize(static_cast<int>(font_pt * 2.5), static_cast<int>(font_pt));
   if (plot.legend->layout() == plot.axisRect()->insetLayout()) plot.axisRect()->insetLayout()->take(plot.legend);
+  if (plot.legend->layout() == plot.plotLayout() && plot.plotLayout()->columnCount() > 1) {  // beside the axes
+    plot.plotLayout()->take(plot.legend);
+    plot.plotLayout()->simplify();
+  }
   if (plot.legend->layout() != plot.plotLayout()) {
     plot.plotLayout()->addElement(1, 0, plot.legend);
     plot.plotLayout()->setRowStretchFactor(1, 0.001);
@@ -242,6 +259,8 @@ void elide_wide_entries(QCustomPlot& plot, double width_pt) {
       if (!item || w <= limit) continue;
       const QFontMetricsF m(item->font());
       const QString name = item->plottable()->name();
+      if (!item->plottable()->property(kWholeNameProperty).isValid())
+        item->plottable()->setProperty(kWholeNameProperty, name);
       item->plottable()->setName(m.elidedText(name, Qt::ElideMiddle, m.horizontalAdvance(name) - (w - limit)));
     }
   }
@@ -257,7 +276,9 @@ QString cap_legend(QCustomPlot& plot) {
   for (int i = keep - 1; i < plot.legend->itemCount(); ++i)  // one slot less: the note says where they went
     if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i))) leaving.push_back(item->plottable());
   for (QCPAbstractPlottable* p : leaving) {
-    rest << p->name();
+    // The note wraps, so an entry shortened to fit the legend's row is named whole there.
+    const QVariant whole = p->property(kWholeNameProperty);
+    rest << (whole.isValid() ? whole.toString() : p->name());
     p->removeFromLegend(plot.legend);
   }
   plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);

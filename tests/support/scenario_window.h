@@ -123,7 +123,10 @@ inline QStringList legend_names(QCustomPlot& plot) {
   QStringList names;
   for (int i = 0; i < plot.legend->itemCount(); ++i)
     if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i)); item && item->plottable()->visible())
-      names << item->plottable()->name();
+      // A series may carry its own name for paper (set_figure_name: no "hover" hint where nothing can be hovered).
+      names << (item->plottable()->property("bs_figure_name").toString().isEmpty()
+                    ? item->plottable()->name()
+                    : item->plottable()->property("bs_figure_name").toString());
   return names;
 }
 

@@ -5,7 +5,10 @@
 
 namespace bs::ui {
 
-bool legend_is_below(const QCustomPlot* plot) { return plot->legend->layout() == plot->plotLayout(); }
+bool legend_is_below(QCustomPlot* plot) {
+  QCPLayoutGrid* grid = plot->plotLayout();  // QCustomPlot's grid has no const element()
+  return grid->rowCount() > 1 && grid->hasElement(1, 0) && grid->element(1, 0) == plot->legend;
+}
 
 void put_legend_below(QCustomPlot* plot, int columns) {
   QCPLegend* legend = plot->legend;
@@ -24,9 +27,24 @@ void put_legend_below(QCustomPlot* plot, int columns) {
   legend->setMinimumSize(QSize(50, 0));
 }
 
+void put_legend_beside(QCustomPlot* plot) {
+  QCPLegend* legend = plot->legend;
+  QCPLayoutGrid* grid = plot->plotLayout();
+  if (grid->columnCount() > 1 && grid->hasElement(0, 1) && grid->element(0, 1) == legend) return;
+  if (QCPLayout* from = legend->layout()) from->take(legend);
+  grid->simplify();
+  legend->setFillOrder(QCPLayoutGrid::foRowsFirst, false);
+  legend->setWrap(0);
+  legend->setFillOrder(QCPLayoutGrid::foRowsFirst, true);
+  legend->setMinimumSize(QSize(0, 0));
+  legend->setMargins(QMargins(3, 3, 3, 3));
+  grid->addElement(0, 1, legend);
+  grid->setColumnStretchFactor(1, 0.001);  // as wide as its entries, the axes keep the rest
+}
+
 void put_legend_inside(QCustomPlot* plot) {
   QCPLegend* legend = plot->legend;
-  if (!legend_is_below(plot)) return;
+  if (legend->layout() != plot->plotLayout()) return;  // inside already
   plot->plotLayout()->take(legend);
   plot->plotLayout()->simplify();  // the emptied row goes
   legend->setFillOrder(QCPLayoutGrid::foRowsFirst, false);

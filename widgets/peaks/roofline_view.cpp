@@ -13,6 +13,7 @@
 #include "analysis/stats/units.h"
 #include "chart_marks.h"
 #include "device_palette.h"
+#include "plot_export.h"
 #include "plot_labels.h"
 
 namespace bs::ui {
@@ -215,6 +216,8 @@ void RooflineView::redraw() {
     key->setLineStyle(QCPGraph::lsNone);
     key->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 1.5), Qt::NoBrush, 11));
     key->setName(tr("Preprocessing stage of a pipeline run, integer op/s (hover: numbers, source); bar: ± SD"));
+    // On paper there is nothing to hover: the figure's own name for the key.
+    set_figure_name(key, tr("Preprocessing stage of a pipeline run, integer op/s; bar: mean ± SD"));
   }
   QFont label_font(font().family(), 7);
   for (const StagePlacement& s : stages_.placed) {

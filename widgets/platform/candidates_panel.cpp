@@ -17,6 +17,7 @@
 #include <QVBoxLayout>
 
 #include "candidates_figure.h"
+#include "common/plot_legend.h"
 
 namespace bs::ui {
 
@@ -82,8 +83,8 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
   auto* split = new QSplitter(Qt::Horizontal, this);
   split->addWidget(table_);
   split->addWidget(plot_);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
+  split->setStretchFactor(0, 1);
+  split->setStretchFactor(1, 1);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addLayout(top);
@@ -135,6 +136,10 @@ void CandidatesPanel::recompute() {
   peaks_ = peak_candidates(in);
   fill();
   const QString plot_note = draw_candidates(*plot_, classes_);
+  // Beside the axes, not under them: the Platforms tab leaves this plot little height (at 1280x800 the legend's
+  // seven rows under it left the axes 50 px); paper exports put it under them again.
+  put_legend_beside(plot_);
+  plot_->replot();
   if (lib.error.empty())
     note_->setText((note.isEmpty()
                         ? tr("%n published result(s) from the library beside the own platforms; ranked only within "

@@ -99,7 +99,7 @@ BatteryView::BatteryView(QWidget* parent)
   box_layout->addLayout(buttons);
   box_layout->addWidget(error_);
   box_layout->addStretch(1);
-  box->setMaximumWidth(470);
+  box->setMaximumWidth(380);  // the table beside it keeps its runtimes and "Ends by" in view at 1280x800
 
   table_->setColumnCount(6);
   // Two-line headers: the runtime columns stay in view beside the settings on a 1280 px window (issue #32.7).
@@ -107,7 +107,11 @@ BatteryView::BatteryView(QWidget* parent)
                                      tr("Runtime (min)"), tr("Runtime (h)"), tr("Ends by")});
   table_->verticalHeader()->hide();
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setStretchLastSection(true);
+  // "Ends by" is a sentence: it takes the width left and wraps there, so the runtimes and it stay in view at
+  // 1280x800 beside the settings (a column as wide as its sentence ran off the table).
+  table_->horizontalHeader()->setSectionResizeMode(5, QHeaderView::Stretch);
+  table_->setWordWrap(true);
+  table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
 
   plot_->xAxis->setLabel(tr("Time (min)"));
@@ -353,7 +357,7 @@ void BatteryView::fill_table() {
     cell(2, QString::number(b.mission.mean_load_w(), 'f', 2));
     cell(3, minutes(b.result.runtime_s), QString::fromStdString(b.result.model_label));
     cell(4, QString::number(b.result.runtime_s / 3600, 'f', 2));
-    cell(5, QString::fromStdString(b.result.stop_reason));
+    cell(5, QString::fromStdString(b.result.stop_reason), QString::fromStdString(b.result.stop_reason));
   }
 }
 

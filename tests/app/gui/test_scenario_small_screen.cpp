@@ -193,6 +193,9 @@ class TestScenarioSmallScreen : public QObject {
       QTest::qWait(100);  // queued replots (legend placement)
       const QString tab = tabs->tabText(t).remove('&');
       for (const QString& p : cut_on_screen(tabs->currentWidget(), screen)) problems << tab + ": " + p;
+      // For a person to look at: each tab as this screen shows it (BENCHSCOPE_LOOK_DIR).
+      if (const QString look = qEnvironmentVariable("BENCHSCOPE_LOOK_DIR"); !look.isEmpty())
+        QVERIFY(w.grab().save(QStringLiteral("%1/small-screen-%2.png").arg(look, tab.toLower())));
     }
     // The Battery tab's runtimes in view without scrolling sideways.
     QTableView* battery = w.battery_view()->table();
