@@ -151,7 +151,7 @@ class Reader {
       }
       value.line = value.line ? value.line : key_line;
       if (value.kind == YamlNode::Kind::Scalar) value.line = key_line;
-      n.map.emplace_back(key, std::move(value));
+      n.map.push_back({key, std::move(value)});
     }
     return n;
   }

@@ -18,16 +18,25 @@
 
 namespace bs {
 
+struct YamlEntry;
+
 struct YamlNode {
   enum class Kind { Scalar, Map, Seq };
   Kind kind = Kind::Scalar;
   std::string scalar;
   bool quoted = false;  // a quoted scalar is a string even when it looks like a number
-  std::vector<std::pair<std::string, YamlNode>> map;
+  // A mapping's entries in file order. Not a std::pair: pair<string, YamlNode> would need YamlNode complete here
+  // (clang 14 with libstdc++ 12 refuses it); a vector of a type completed below is allowed.
+  std::vector<YamlEntry> map;
   std::vector<YamlNode> seq;
   std::size_t line = 0;  // 1-based line where the node starts
 
   const YamlNode* find(std::string_view key) const;  // a mapping's value, nullptr when absent or not a mapping
+};
+
+struct YamlEntry {
+  std::string key;
+  YamlNode value;
 };
 
 // Throws ImportError (Syntax, Unsupported, InvalidValue) naming `file` and the line.
