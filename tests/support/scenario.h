@@ -18,6 +18,7 @@
 #include <QPointer>
 #include <QProcess>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QTest>
 #include <QTimer>
 #include <QWidget>
@@ -45,8 +46,10 @@ inline void key(QWidget* w, Qt::Key k, Qt::KeyboardModifiers mods = {}) {
   QTest::keyClick(w->window()->windowHandle(), k, mods);
 }
 
-// Text typed into the window of `w` (its focus widget).
-inline void type(QWidget* w, const QString& text) { QTest::keyClicks(w->window()->windowHandle(), text); }
+// Text typed into the window of `w` (its focus widget), one key per character (ASCII: paths, names, numbers).
+inline void type(QWidget* w, const QString& text) {
+  for (const QChar c : text) QTest::keyClick(w->window()->windowHandle(), c.toLatin1());
+}
 
 // Clicks into a line edit (or an editable combo box), selects what it holds and types `text` over it.
 inline void retype(QWidget* field, const QString& text) {
@@ -128,6 +131,9 @@ class ModalAnswerer : public QObject {
   using Match = std::function<bool(QWidget*)>;
   using Answer = std::function<void(QWidget*)>;
   static constexpr int kPatience = 50;  // polls (about a second) before a blocked or stray dialog is given up
+  // A person reads a dialog before answering it (about 0.6 s): in that time whatever else opens (a progress
+  // dialog after 300 ms) opens, as it would for a person. Answering at once would hide what covers the dialog.
+  static constexpr int kReading = 30;
 
   explicit ModalAnswerer(QObject* parent = nullptr) : QObject(parent) {
     timer_.setInterval(20);
@@ -185,7 +191,12 @@ class ModalAnswerer : public QObject {
         return;
       }
       QWidget* target = answering_ ? answering_.data() : find_open(e.is_it);
+      if (target && !answering_ && ++reading_ <= kReading) {  // still reading it
+        busy_ = false;
+        return;
+      }
       if (target) {
+        reading_ = 0;
         const bool on_top = top == target;
         if (!on_top && tries_ == 0)
           blocked << QStringLiteral("%1 under %2").arg(e.what, top ? top->windowTitle() : "?");
@@ -219,7 +230,7 @@ class ModalAnswerer : public QObject {
   QTimer timer_;
   std::vector<Expected> pending_;
   QPointer<QWidget> answering_;
-  int tries_ = 0, stray_ = 0;
+  int tries_ = 0, stray_ = 0, reading_ = 0;
   bool busy_ = false, has_answered_ = false;
 };
 

@@ -23,6 +23,7 @@
 #include "../../../support/scenario_window.h"
 #include "kernels/kernel_runner.h"
 #include "peaks/flops_plot.h"
+#include "peaks/peak_table.h"
 #include "platform/platform_view.h"
 #include "workspace/workspace_tree.h"
 

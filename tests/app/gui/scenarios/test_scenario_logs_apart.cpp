@@ -62,7 +62,8 @@ QString write_sweep(const QString& path, const std::string& date, double seconds
   run.provenance.host = "labpc";
   QFile f(path);
   if (!f.open(QIODevice::WriteOnly)) return {};
-  f.write(QByteArray::fromStdString(bs::write_run_json({run})));
+  const std::vector<bs::FlopsRun> runs{run};
+  f.write(QByteArray::fromStdString(bs::write_run_json(runs)));
   return path;
 }
 
@@ -223,13 +224,11 @@ class TestScenarioLogsApart : public QObject {
       if (r.run.provenance.date == "2026-11-28T10:05:00Z") second = r.id;
     QVERIFY(tree->select_run(second));
     ModalAnswerer person;
-    person.expect(
-        "Rename (label the run)", [](QWidget* d) { return d->findChild<QLineEdit*>() != nullptr; },
-        [](QWidget* d) {
-          auto* field = d->findChild<QLineEdit*>();
-          bs::test::retype(field, "after BIOS update");
-          bs::test::key(field, Qt::Key_Return);
-        });
+    person.expect("Name this run (F2)", ModalAnswerer::titled("Name this run"), [](QWidget* d) {
+      auto* field = d->findChild<QLineEdit*>();
+      bs::test::retype(field, "after BIOS update");
+      bs::test::key(field, Qt::Key_Return);
+    });
     bs::test::key(&w, Qt::Key_F2);  // Edit > Rename selected item
     QVERIFY2(bs::test::wait_until([&] { return person.done(); }, 300), qPrintable(person.report()));
     bs::test::open_tab(w, "FLOPS");
