@@ -115,8 +115,9 @@ std::string describe(const WorkspaceDamage& d);
 class Workspace {
  public:
   // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary,
-  // 7: dnn inference runs, 8: saved lenses, a log's borrowed voltage channel, phase origins (store/schema_v8.h)
-  static constexpr int kSchemaVersion = 8;
+  // 7: dnn inference runs, 8: saved lenses, a log's borrowed voltage channel, phase origins (store/schema_v8.h),
+  // 9: the Platforms tab's decision and each platform's chosen power log (store/schema_v9.h)
+  static constexpr int kSchemaVersion = 9;
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.

@@ -41,9 +41,16 @@ inline void click(QWidget* w, Qt::MouseButton button = Qt::LeftButton, Qt::Keybo
   QTest::mouseClick(top->windowHandle(), button, mods, w->mapTo(top, at));
 }
 
-// A key on the window of `w`; the window's focus widget gets it (or a shortcut of the window).
+// A key on the window of `w`; the window's focus widget gets it (or a shortcut of the window). The window is made
+// the active one first, as a person's click into it would under a window manager (Xvfb has none, so a window stays
+// inactive after a dialog closes, and Qt gives window shortcuts only to the active window).
 inline void key(QWidget* w, Qt::Key k, Qt::KeyboardModifiers mods = {}) {
-  QTest::keyClick(w->window()->windowHandle(), k, mods);
+  QWidget* top = w->window();
+  if (QApplication::activeWindow() != top) {
+    top->activateWindow();
+    for (int i = 0; i < 50 && QApplication::activeWindow() != top; ++i) QTest::qWait(10);
+  }
+  QTest::keyClick(top->windowHandle(), k, mods);
 }
 
 // Text typed into the window of `w` (its focus widget), one key per character (ASCII: paths, names, numbers).

@@ -8,6 +8,7 @@
 #include "model/dnn_run.h"
 #include "power/shared_traces.h"
 #include "store/battery_preset_store.h"
+#include "store/decision_store.h"
 
 class QCheckBox;
 class QComboBox;
@@ -64,8 +65,17 @@ class PlatformView : public QWidget {
   // What the controls say now (battery, extra load; constraints), for the report.
   ComparisonOptions options() const;
   Constraints constraints() const;
+  // What the controls say, as the workspace keeps it (store/decision_store.h): constraints, battery choice ("" while
+  // it follows the Battery tab), parallel load, mission, library candidates.
+  StoredDecision decision() const;
+  // Sets every control from the workspace's decision (nullopt: the defaults: no constraint, the Battery tab's pack,
+  // no candidates) without emitting decision_edited.
+  void apply_decision(const std::optional<StoredDecision>& decision);
 
  signals:
+  // The user changed a control that changes the decision (a check box, a value entered, the battery, the mission,
+  // the candidates): the window stores it in the workspace, one undo step each (issue #43.2).
+  void decision_edited(const bs::StoredDecision& decision);
   // The user asked where a cell's number came from (double-click): the platform and the column id.
   void source_requested(const PlatformRow& row, const QString& column);
 
@@ -74,6 +84,7 @@ class PlatformView : public QWidget {
   void fill_table();
   void export_table(bool latex);
   void fill_battery_choices();
+  void user_changed();  // emits decision_edited when the decision differs from the one last applied or emitted
 
   QCheckBox *use_budget_, *use_fps_, *use_runtime_;
   QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;
@@ -97,6 +108,7 @@ class PlatformView : public QWidget {
   std::vector<PlatformRow> rows_;
   std::vector<PlatformVerdict> verdicts_;
   QStringList empty_columns_;  // header texts of the columns hidden for lack of data
+  StoredDecision last_decision_;  // as last applied from the workspace or emitted
 };
 
 }  // namespace bs::ui

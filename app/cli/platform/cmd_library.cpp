@@ -196,14 +196,14 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
   if (args.has("--json")) {
     out << nlohmann::json{{"format", "benchscope-candidates"},
                           {"version", 1},
-                          {"battery", pa.pack->name},
+                          {"battery", pa.pack.name},
                           {"candidates", candidates_json(classes, peaks)}}
                .dump(2)
         << '\n';
     return 0;
   }
   print_candidates(out, classes, peaks, pa.constrained());
-  out << "battery: " << pa.pack->name << ", constant-power model at each row's power\n";
+  out << "battery: " << pa.pack.name << ", constant-power model at each row's power\n";
   return 0;
 }
 

@@ -24,7 +24,7 @@ class TestScenarioCutLine : public QObject {
                   [](QWidget* d) { bs::test::choose_file(d, bs::test::kScenarioData + "/nuc-cut-last-line.csv"); });
     bs::test::key(&w, Qt::Key_I, Qt::ControlModifier);
     const QString message = bs::test::wait_for_import(w);
-    QVERIFY2(person.done(), qPrintable(person.report()));
+    QVERIFY2(bs::test::wait_until([&] { return person.done(); }, 100), qPrintable(person.report()));
     // The file names its platform: nothing to ask. What the person reads in the status bar names the line.
     QVERIFY2(message.startsWith("Imported 1 file(s)"), qPrintable(message));
     QVERIFY2(message.contains("nuc-cut-last-line.csv:816") && message.contains("cut off"), qPrintable(message));

@@ -71,7 +71,8 @@ class TestScenarioFirstSession : public QObject {
                   });
     drop_files(&w, {bs::test::kScenarioData + "/meter-no-platform.csv"});
     const QString imported = bs::test::wait_for_import(w);
-    QVERIFY2(person.done() && person.blocked.isEmpty(), qPrintable(person.report()));
+    QVERIFY2(bs::test::wait_until([&] { return person.done(); }, 100) && person.blocked.isEmpty(),
+             qPrintable(person.report()));
     QVERIFY2(imported.startsWith("Imported 1 file(s)") && !imported.contains("cancelled"), qPrintable(imported));
 
     // 3. The Kernel Runner (its dock's tab on the left): a short CPU sweep, typed in, Run.

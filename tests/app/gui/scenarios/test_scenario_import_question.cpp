@@ -57,7 +57,7 @@ class TestScenarioImportQuestion : public QObject {
                   platform_answer("Lab bench PC"));
     bs::test::key(&w, Qt::Key_I, Qt::ControlModifier);  // File > Import files…
     const QString message = bs::test::wait_for_import(w);
-    QVERIFY2(person.done(), qPrintable(person.report()));
+    QVERIFY2(bs::test::wait_until([&] { return person.done(); }, 100), qPrintable(person.report()));
     QVERIFY2(person.blocked.isEmpty() && person.gave_up.isEmpty(), qPrintable(person.report()));
     QVERIFY2(message.startsWith("Imported 3 file(s)") && !message.contains("cancelled"), qPrintable(message));
     const auto platforms = log_platforms(w);
@@ -91,7 +91,7 @@ class TestScenarioImportQuestion : public QObject {
                   platform_answer("Jetson AGX Xavier"));
     bs::test::key(&w, Qt::Key_I, Qt::ControlModifier | Qt::ShiftModifier);  // File > Import folder…
     const QString message = bs::test::wait_for_import(w);
-    QVERIFY2(person.done(), qPrintable(person.report()));
+    QVERIFY2(bs::test::wait_until([&] { return person.done(); }, 100), qPrintable(person.report()));
     QVERIFY2(person.blocked.isEmpty() && person.gave_up.isEmpty(), qPrintable(person.report()));
     QVERIFY2(message.startsWith("Imported 2 file(s)") && !message.contains("cancelled"), qPrintable(message));
     const auto platforms = log_platforms(w);

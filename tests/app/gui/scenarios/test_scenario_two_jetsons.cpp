@@ -46,7 +46,7 @@ class TestScenarioTwoJetsons : public QObject {
     bs::test::key(&w, Qt::Key_I, Qt::ControlModifier);
     const QString message = bs::test::wait_for_import(w);
     QVERIFY2(message.startsWith("Imported 2 file(s)"), qPrintable(message));
-    QVERIFY2(person.done(), qPrintable(person.report()));
+    QVERIFY2(bs::test::wait_until([&] { return person.done(); }, 100), qPrintable(person.report()));
 
     std::set<QString> platforms;
     for (const bs::StoredPowerTrace& t : w.workspace()->power_trace_summaries())
