@@ -14,6 +14,7 @@
 
 #include "common/args.h"
 #include "common/command.h"
+#include "vision/lens/lens_limits.h"
 #include "common/import_error.h"
 #include "common/importer.h"
 #include "vision/frames/frame_image.h"
@@ -277,6 +278,8 @@ int lens_show(const std::vector<std::string>& raw, std::ostream& out) {
                 1 / l.r_pp, l.k[0], l.k[1], l.k[2], l.k[3], p.view.width, p.view.height, p.view.fov_deg, p.view.yaw_deg,
                 p.view.pitch_deg, p.view.roll_deg, p.masks.size());
   out << text << "calibration: " << vision::describe(l.calibration) << '\n';
+  // Issue #43.8: the view against the angle a checkerboard's corners covered.
+  if (const std::string note = vision::extrapolation_note(l, p.view); !note.empty()) out << "warning: " << note << '\n';
   return 0;
 }
 
