@@ -23,8 +23,8 @@
 #include <algorithm>
 
 #include <QTabWidget>
-#include <QVBoxLayout>
 #include <QUndoStack>
+#include <QVBoxLayout>
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/screen_fit.h"
@@ -43,8 +43,8 @@
 #include "power/power_trace_loader.h"
 #include "power/power_view.h"
 #include "remote/remote_run.h"
-#include "runs/pipeline_json.h"
 #include "report/run_names.h"
+#include "runs/pipeline_json.h"
 #include "runs/run_json.h"
 #include "store/run_label_store.h"
 #include "vision/frames_view.h"

@@ -186,9 +186,9 @@ class MainWindow : public QMainWindow {
   LensTab* lens_ = nullptr;
   HeadroomView* headroom_ = nullptr;
   std::vector<LogChoiceBar*> log_choices_;  // above Efficiency, Battery and Platforms: each platform's power log
-  QLabel* status_label_ = nullptr;  // workspace path and run counts
-  QLabel* save_state_ = nullptr;    // "Edits are written at once to …" / "Untitled: …" (permanent, right)
-  QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens
+  QLabel* status_label_ = nullptr;          // workspace path and run counts
+  QLabel* save_state_ = nullptr;            // "Edits are written at once to …" / "Untitled: …" (permanent, right)
+  QUndoStack* edits_ = nullptr;             // renames and removals in the workspace tree; cleared when another opens
   QAction* undo_edit_ = nullptr;
   QAction* redo_edit_ = nullptr;
   PowerTraceLoader* trace_loader_ = nullptr;           // samples of long power logs, loaded after the window shows

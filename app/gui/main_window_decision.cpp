@@ -41,8 +41,9 @@ void MainWindow::store_decision(const StoredDecision& after) {
   const auto refresh = [this] {
     if (workspace_) platforms_->apply_decision(stored_decision(*workspace_));
   };
-  push_edit(tr("Platforms: %1").arg(decision_words(after)), [ws, after] { set_stored_decision(*ws, after); },
-            [ws, before] { set_stored_decision(*ws, before); }, refresh);
+  push_edit(
+      tr("Platforms: %1").arg(decision_words(after)), [ws, after] { set_stored_decision(*ws, after); },
+      [ws, before] { set_stored_decision(*ws, before); }, refresh);
 }
 
 void MainWindow::choose_power_log(const QString& platform, qint64 trace_id) {
@@ -62,9 +63,10 @@ void MainWindow::choose_power_log(const QString& platform, qint64 trace_id) {
     report_edit_error(QString::fromUtf8(e.what()));
     return;
   }
-  push_edit(tr("power log of %1: %2").arg(platform, QString::fromStdString(label)),
-            [ws, name, trace_id] { set_chosen_log(*ws, name, trace_id); },
-            [ws, name, before] { set_chosen_log(*ws, name, before); });
+  push_edit(
+      tr("power log of %1: %2").arg(platform, QString::fromStdString(label)),
+      [ws, name, trace_id] { set_chosen_log(*ws, name, trace_id); },
+      [ws, name, before] { set_chosen_log(*ws, name, before); });
 }
 
 void MainWindow::show_log_choices(const SharedTraces& traces) {

@@ -19,8 +19,8 @@
 #include "platform/candidates_panel.h"
 #include "platform/platform_view.h"
 #include "plot_export.h"
-#include "report/candidates_section.h"
 #include "power/log_choice_bar.h"
+#include "report/candidates_section.h"
 #include "report_dialog.h"
 #include "report_writer.h"
 #include "workspace/workspace_tree.h"
@@ -160,8 +160,8 @@ QStringList MainWindow::report_decision_lines() const {
                 : tr("<b>Recommended%1:</b> %2")
                       .arg(c.empty() ? QString() : tr(" under these constraints"), recommended.toHtmlEscaped()));
   const ComparisonOptions o = platforms_->options();
-  QString battery = tr("<b>Battery:</b> %1 V, %2 Ah").arg(o.battery_nominal_v, 0, 'f', 1).arg(o.battery_capacity_ah, 0,
-                                                                                             'f', 2);
+  QString battery =
+      tr("<b>Battery:</b> %1 V, %2 Ah").arg(o.battery_nominal_v, 0, 'f', 1).arg(o.battery_capacity_ah, 0, 'f', 2);
   if (o.extra_load_w > 0) battery += tr(", parallel load %1 W").arg(o.extra_load_w, 0, 'f', 1);
   if (!o.mission.empty()) battery += tr(", mission %1").arg(QString::fromStdString(o.mission).toHtmlEscaped());
   lines << battery;
@@ -175,7 +175,8 @@ QStringList MainWindow::report_decision_lines() const {
 void MainWindow::export_report() {
   ReportDialog dialog(QDir(export_folder()).filePath("report.pdf"), report_decision_lines(), this);
   if (dialog.exec() != QDialog::Accepted) {
-    if (dialog.change_requested()) static_cast<QTabWidget*>(centralWidget())->setCurrentWidget(platforms_->parentWidget());
+    if (dialog.change_requested())
+      static_cast<QTabWidget*>(centralWidget())->setCurrentWidget(platforms_->parentWidget());
     return;
   }
   const QString path = dialog.path();

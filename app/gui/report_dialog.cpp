@@ -21,8 +21,8 @@ ReportDialog::ReportDialog(const QString& default_path, const QStringList& decis
   path_->setToolTip(tr("A .pdf file (A4, printed) or a .html file (one self-contained page with the figures)"));
   auto* browse = new QPushButton(tr("Browse…"), this);
   connect(browse, &QPushButton::clicked, this, [this] {
-    const QString p = QFileDialog::getSaveFileName(this, tr("Report file"), path(),
-                                                   tr("PDF report (*.pdf);;HTML report (*.html)"));
+    const QString p =
+        QFileDialog::getSaveFileName(this, tr("Report file"), path(), tr("PDF report (*.pdf);;HTML report (*.html)"));
     if (!p.isEmpty()) path_->setText(p);
   });
   auto* file_row = new QHBoxLayout;

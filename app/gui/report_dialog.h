@@ -17,8 +17,8 @@ class ReportDialog : public QDialog {
  public:
   // `decision`: the lines to show (rich text allowed), e.g. "<b>Constraints:</b> a power budget of 10 W".
   ReportDialog(const QString& default_path, const QStringList& decision, QWidget* parent = nullptr);
-  QString path() const;          // as typed; ".html" added when it has neither ending
-  bool pdf() const;              // the path ends in .pdf
+  QString path() const;                              // as typed; ".html" added when it has neither ending
+  bool pdf() const;                                  // the path ends in .pdf
   bool change_requested() const { return change_; }  // left to change the decision in the Platforms tab
 
  private:

@@ -354,13 +354,17 @@ class PowerCsvParser {
     const std::string shown(raw.substr(0, std::min<std::size_t>(raw.size(), 60)));
     const std::string where = file_ + ":" + std::to_string(line_no) + ": ";
     if (!trace_.time_s.empty()) {
-      batch_.warnings.push_back(where + "the last line has no line ending, so it may be cut off (a logger stopped "
-                                        "while writing it: \"" + shown + "\"); left out, the " +
-                                std::to_string(trace_.time_s.size()) + " complete rows before it are imported");
+      batch_.warnings.push_back(where +
+                                "the last line has no line ending, so it may be cut off (a logger stopped "
+                                "while writing it: \"" +
+                                shown + "\"); left out, the " + std::to_string(trace_.time_s.size()) +
+                                " complete rows before it are imported");
       return true;
     }
-    batch_.warnings.push_back(where + "the only data row has no line ending, so it may be cut off (a logger stopped "
-                                      "while writing it: \"" + shown + "\"); read as it is: check its last value");
+    batch_.warnings.push_back(where +
+                              "the only data row has no line ending, so it may be cut off (a logger stopped "
+                              "while writing it: \"" +
+                              shown + "\"); read as it is: check its last value");
     return false;
   }
   // Reserves the columns for about `rows` rows (an estimate from the file system's size, capped by the limit).

@@ -30,7 +30,9 @@ class PowerLineReader {
   // Throws ImportError TooLarge for a line longer than kMaxPowerLogLineBytes, Io on a read error.
   std::optional<std::string_view> next();
   std::size_t line_number() const { return line_; }
-  const std::string& name() const { return path_; }  // the file named in errors and warnings  // 1-based number of the line last returned
+  const std::string& name() const {
+    return path_;
+  }  // the file named in errors and warnings  // 1-based number of the line last returned
   // The line last returned ended the file without a line ending: a logger killed mid-write leaves such a line.
   bool last_line_unterminated() const { return unterminated_; }
   std::size_t bytes_consumed() const { return consumed_; }

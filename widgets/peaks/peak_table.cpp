@@ -171,9 +171,9 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return {};
-  static const char* names[] = {
-      "Platform", "Device", "Backend",          "D",            "Run",       "Peak (mean ± SD)", "Workers at peak",
-      "Reported", "Ratio",  "% of theoretical", "% of ceiling", "% of spec", "Origin"};
+  static const char* names[] = {"Platform",         "Device",          "Backend",  "D",     "Run",
+                                "Peak (mean ± SD)", "Workers at peak", "Reported", "Ratio", "% of theoretical",
+                                "% of ceiling",     "% of spec",       "Origin"};
   static const char* tips[] = {
       "The computer; its rows are grouped under it",
       "Compute device (colour as in every plot)",

@@ -30,7 +30,8 @@ void LogChoiceBar::set_logs(const std::vector<PowerTrace>& traces, const std::ve
   // Platforms in first-seen order, each with its logs in the order given (the one in use first).
   std::vector<std::pair<std::string, std::vector<std::size_t>>> platforms;
   for (std::size_t i = 0; i < traces.size(); ++i) {
-    auto it = std::find_if(platforms.begin(), platforms.end(), [&](const auto& p) { return p.first == traces[i].platform; });
+    auto it =
+        std::find_if(platforms.begin(), platforms.end(), [&](const auto& p) { return p.first == traces[i].platform; });
     if (it == platforms.end()) it = platforms.insert(platforms.end(), {traces[i].platform, {}});
     it->second.push_back(i);
   }
@@ -56,10 +57,11 @@ void LogChoiceBar::set_logs(const std::vector<PowerTrace>& traces, const std::ve
     for (std::size_t i : logs) {
       const std::int64_t id = i < ids.size() ? ids[i] : 0;
       box->addItem(QString::fromStdString(traces[i].label), QVariant::fromValue<qint64>(id));
-      box->setItemData(box->count() - 1,
-                       tr("%1, from %2").arg(QString::fromStdString(traces[i].label),
-                                             QString::fromStdString(traces[i].provenance.source_file)),
-                       Qt::ToolTipRole);
+      box->setItemData(
+          box->count() - 1,
+          tr("%1, from %2")
+              .arg(QString::fromStdString(traces[i].label), QString::fromStdString(traces[i].provenance.source_file)),
+          Qt::ToolTipRole);
     }
     box->setToolTip(tr("%1 has %2 power logs; its numbers come from the one shown").arg(name).arg(logs.size()));
     connect(box, &QComboBox::activated, this, [this, box, name](int index) {

@@ -22,7 +22,8 @@ class LogChoiceBar : public QWidget {
   explicit LogChoiceBar(QWidget* parent = nullptr);
   // `ids[i]` is the workspace id of `traces[i]` (0: not stored: offered, but not choosable).
   void set_logs(const std::vector<PowerTrace>& traces, const std::vector<std::int64_t>& ids);
-  QString text() const;  // what it says after "Power logs:", in one line ("NUC: a.csv (1 of 2 logs); Jetson TX2: b.csv")
+  QString text()
+      const;  // what it says after "Power logs:", in one line ("NUC: a.csv (1 of 2 logs); Jetson TX2: b.csv")
 
  signals:
   void log_chosen(const QString& platform, qint64 trace_id);

@@ -15,8 +15,7 @@ SavePhaseDialog::SavePhaseDialog(const std::vector<QString>& logs, std::size_t p
   setWindowTitle(tr("Save selection as phase"));
   name_->selectAll();
   for (std::size_t i = 0; i < logs.size(); ++i) log_->addItem(logs[i], static_cast<int>(i));
-  if (logs.size() > 1)
-    log_->addItem(tr("every log it covers (%1)").arg(logs.size()), -1);
+  if (logs.size() > 1) log_->addItem(tr("every log it covers (%1)").arg(logs.size()), -1);
   log_->setCurrentIndex(preferred < logs.size() ? static_cast<int>(preferred) : 0);
   log_->setToolTip(tr("The log the phase belongs to: the one the selection was drawn on is offered first"));
   auto* form = new QFormLayout;
@@ -29,9 +28,8 @@ SavePhaseDialog::SavePhaseDialog(const std::vector<QString>& logs, std::size_t p
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-  connect(name_, &QLineEdit::textChanged, this, [buttons](const QString& t) {
-    buttons->button(QDialogButtonBox::Ok)->setEnabled(!t.trimmed().isEmpty());
-  });
+  connect(name_, &QLineEdit::textChanged, this,
+          [buttons](const QString& t) { buttons->button(QDialogButtonBox::Ok)->setEnabled(!t.trimmed().isEmpty()); });
   form->addRow(buttons);
   setLayout(form);
   name_->setFocus();

@@ -194,8 +194,8 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
           this,
           [&] {
             if (guard) {
-              guard->setLabelText(tr("Waiting for your answer: which platform %1 belongs to")
-                                      .arg(QFileInfo(path).fileName()));
+              guard->setLabelText(
+                  tr("Waiting for your answer: which platform %1 belongs to").arg(QFileInfo(path).fileName()));
               guard->show();
               guard->raise();
             }

@@ -56,7 +56,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   std::vector<CandidateClass> classes;
   std::vector<PeakClass> peaks;
   // The library computers given, else those the workspace's Platforms tab stored.
-  const auto spec = args.value("--library") ? args.value("--library")
+  const auto spec = args.value("--library")    ? args.value("--library")
                     : platform.library.empty() ? std::nullopt
                                                : std::optional<std::string>(platform.library);
   if (spec) {

@@ -79,8 +79,8 @@ PlatformArgs parse_platform_args(const ParsedArgs& args) {
   }
   if (args.value("--supply-volts")) p.options.supply_v = args.number("--supply-volts", 0);
   // Constraints: the command line's replace the stored ones as a whole (one set of constraints, never a mix).
-  const bool given = args.value("--budget") || args.value("--min-fps") || args.value("--min-runtime") ||
-                     args.value("--require-loop");
+  const bool given =
+      args.value("--budget") || args.value("--min-fps") || args.value("--min-runtime") || args.value("--require-loop");
   if (args.value("--budget")) p.constraints.power_budget_w = args.number("--budget", 0);
   if (args.value("--min-fps")) p.constraints.min_fps = args.number("--min-fps", 0);
   if (args.value("--min-runtime")) p.constraints.min_runtime_h = args.number("--min-runtime", 0) / 60.0;  // minutes

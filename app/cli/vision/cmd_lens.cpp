@@ -14,12 +14,12 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "vision/lens/lens_limits.h"
 #include "common/import_error.h"
 #include "common/importer.h"
 #include "vision/frames/frame_image.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/edge_proposals.h"
+#include "vision/lens/lens_limits.h"
 #include "vision/lens/line_fit.h"
 #include "vision/lens/straight_line.h"
 #include "vision/lens/tuner_state.h"

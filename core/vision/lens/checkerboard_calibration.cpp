@@ -346,8 +346,8 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
   // fitted field-of-view circle.
   std::vector<ImageCircle> seen;
   for (int i = 0; i < n; ++i)
-    if (const auto& rim = rims[static_cast<std::size_t>(i)]; rim && sizes[static_cast<std::size_t>(i)] == size &&
-                                                             rim->edge_points >= kMinRimPoints)
+    if (const auto& rim = rims[static_cast<std::size_t>(i)];
+        rim && sizes[static_cast<std::size_t>(i)] == size && rim->edge_points >= kMinRimPoints)
       seen.push_back(*rim);
   if (!seen.empty()) {
     std::sort(seen.begin(), seen.end(), [](const ImageCircle& a, const ImageCircle& b) { return a.radius < b.radius; });
@@ -473,8 +473,8 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
       if (cancel) cancel->throw_if_cancelled();
       std::vector<int> rest = views;
       rest.erase(rest.begin() + static_cast<long>(i));
-      const auto fit = calibrator.try_run(rest, (flags & ~cv::fisheye::CALIB_CHECK_COND) | cv::fisheye::CALIB_USE_INTRINSIC_GUESS,
-                                          free.K, free.D);
+      const auto fit = calibrator.try_run(
+          rest, (flags & ~cv::fisheye::CALIB_CHECK_COND) | cv::fisheye::CALIB_USE_INTRINSIC_GUESS, free.K, free.D);
       if (!fit) continue;
       const double fi = std::sqrt(fit->K(0, 0) * fit->K(1, 1));
       const Lens li = lens_from_opencv_fisheye(

@@ -52,8 +52,8 @@ class TestScenarioReport : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(&w));
 
     const QString pdf = dir.filePath("report.pdf");
-    const auto answered = bs::test::answer_next_modal(
-        &w, [&](QWidget* modal) { bs::test::answer_report_dialog(modal, pdf); });
+    const auto answered =
+        bs::test::answer_next_modal(&w, [&](QWidget* modal) { bs::test::answer_report_dialog(modal, pdf); });
     bs::test::press(w, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     QVERIFY(*answered);
     QVERIFY2(QFile::exists(pdf), "no report written");

@@ -2,12 +2,12 @@
 // `benchscope-cli platforms` on the paper's sample data reaches the paper's conclusion: with no budget the NUC,
 // under 10 W the Jetson; the LaTeX and CSV exports hold the paper's numbers.
 #include <QFile>
-#include <cmath>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 
 #include "../../support/cli_harness.h"
 
@@ -62,9 +62,9 @@ class TestCliPlatforms : public QObject {
     QByteArray out, err;
     QCOMPARE(run_cli({"platforms", ws, "--json"}, &out), 0);
     QCOMPARE(recommended(out), QString("NUC"));
-    QCOMPARE(run_cli({"platforms", ws, "--budget", "10", "--use-log", "NUC=nuc-second-session.csv", "--store"}, &out,
-                     &err),
-             0);
+    QCOMPARE(
+        run_cli({"platforms", ws, "--budget", "10", "--use-log", "NUC=nuc-second-session.csv", "--store"}, &out, &err),
+        0);
     QVERIFY2(err.contains("stored in") && err.contains("a power budget of 10 W"), err.constData());
     QCOMPARE(run_cli({"platforms", ws}, &out), 0);
     QVERIFY2(out.contains("recommendation: Jetson TX2"), out.constData());

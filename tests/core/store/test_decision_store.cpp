@@ -139,8 +139,7 @@ class TestDecisionStore : public QObject {
     const std::vector<std::string> platforms{"A", "B", "A", "C", "B"};
     const std::vector<std::int64_t> ids{1, 2, 3, 4, 5};
     QCOMPARE(bs::chosen_logs_first(platforms, ids, {}), (std::vector<std::size_t>{0, 1, 2, 3, 4}));
-    QCOMPARE(bs::chosen_logs_first(platforms, ids, {{"B", 5}, {"A", 1}}),
-             (std::vector<std::size_t>{0, 4, 1, 2, 3}));
+    QCOMPARE(bs::chosen_logs_first(platforms, ids, {{"B", 5}, {"A", 1}}), (std::vector<std::size_t>{0, 4, 1, 2, 3}));
   }
 
   void control_loop_requirement_is_kept_and_checked() {
@@ -163,7 +162,8 @@ class TestDecisionStore : public QObject {
     QVERIFY2(words.startsWith("control loop 1 kHz"), qPrintable(words));
     bs::StoredDecision with_budget = *back;
     with_budget.power_budget_w = 10;
-    QVERIFY2(QString::fromStdString(bs::describe_constraints(with_budget)).startsWith("a power budget of 10 W, control loop"),
+    QVERIFY2(QString::fromStdString(bs::describe_constraints(with_budget))
+                 .startsWith("a power budget of 10 W, control loop"),
              qPrintable(QString::fromStdString(bs::describe_constraints(with_budget))));
     // A requirement that does not parse is refused with what is wrong with it; the stored one stays.
     bs::StoredDecision bad = *back;

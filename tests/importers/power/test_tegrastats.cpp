@@ -13,7 +13,8 @@ class TestTegrastats : public QObject {
     // cut where the number still parses ("3642/36" of "3642/3633"): the warning names the file and the line.
     const std::string line1 =
         "RAM 2633/7850MB (lfb 3x4MB) CPU [0%@2035,0%@2035] VDD_IN 3624/3624 VDD_CPU 696/696 VDD_GPU 371/371\n";
-    const std::string line2 = "RAM 2631/7850MB (lfb 3x4MB) CPU [18%@2035,0%@2035] VDD_IN 3642/3633 VDD_CPU 695/695 VDD_GPU 370/36";
+    const std::string line2 =
+        "RAM 2631/7850MB (lfb 3x4MB) CPU [18%@2035,0%@2035] VDD_IN 3642/3633 VDD_CPU 695/695 VDD_GPU 370/36";
     const bs::ImportBatch cut = bs::kTegrastatsFileFormat.parse_text(line1 + line2, "board.log");
     QVERIFY(cut.power_traces.at(0).platform.empty());
     bool named = false;

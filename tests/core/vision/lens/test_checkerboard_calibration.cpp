@@ -2,8 +2,8 @@
 // Checkerboard calibration against ground truth: views of a board at known poses rendered through a known
 // Kannala-Brandt lens (vision/synthetic_checkerboard.h) must give that lens back; the conversion between
 // BenchScope's lens and OpenCV's fisheye camera must agree with cv::fisheye's own projection both ways.
-#include <QTemporaryDir>
 #include <QString>
+#include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
 
@@ -336,8 +336,9 @@ class TestCheckerboardCalibration : public QObject {
     View view;  // the paper's 150-degree output: its corners look 75 degrees off the axis
     QVERIFY(std::abs(view_reach_deg(lens, view) - 75) < 0.5);
     const std::string note = extrapolation_note(lens, view);
-    QVERIFY2(note.find("reaches 75 degrees") != std::string::npos && note.find("covered 57 degrees") != std::string::npos,
-             note.c_str());
+    QVERIFY2(
+        note.find("reaches 75 degrees") != std::string::npos && note.find("covered 57 degrees") != std::string::npos,
+        note.c_str());
     view.fov_deg = 90;  // within the corners
     QVERIFY(extrapolation_note(lens, view).empty());
     view.yaw_deg = 40;  // turned towards the edge: beyond them again
