@@ -29,7 +29,13 @@ void MainWindow::store_decision(const StoredDecision& after) {
   Workspace* ws = workspace_.get();
   std::optional<StoredDecision> before;
   try {
-    before = stored_decision(*ws);
+    try {
+      before = stored_decision(*ws);
+    } catch (const WorkspaceError& e) {
+      // The stored one is damaged (the Platforms tab says why): this change replaces it; Undo removes the change.
+      if (e.kind() != WorkspaceError::Kind::Corrupt) throw;
+      before.reset();
+    }
     if (before == after) return;
     set_stored_decision(*ws, after);
   } catch (const std::exception& e) {

@@ -21,16 +21,29 @@ namespace {
 
 bool positive(const std::optional<double>& v) { return !v || (std::isfinite(*v) && *v > 0); }
 
-// A stored value as it is read back: a value the CHECKs would refuse (a hand-edited file) counts as not set.
-std::optional<double> read_positive(const Statement& st, int column) {
-  const std::optional<double> v = st.optional_real(column);
-  return v && std::isfinite(*v) && *v > 0 ? v : std::nullopt;
-}
-
 std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
+}
+
+// A stored value the CHECKs would refuse (a file edited by hand) is refused when read, naming its column and value:
+// never taken as another number, never dropped as if it had not been set (the recommendation would change silently).
+[[noreturn]] void damaged(const Workspace& ws, const std::string& column, const std::string& why) {
+  throw WorkspaceError(WorkspaceError::Kind::Corrupt,
+                       ws.path() + ": the Platforms tab's stored decision: decision." + column + ": " + why);
+}
+
+// NULL: not set. `zero_ok`: 0 is allowed (the parallel load), else the value must be > 0.
+std::optional<double> read_number(const Workspace& ws, const Statement& st, int column, const char* name,
+                                  bool zero_ok) {
+  const int type = st.type(column);
+  if (type == SQLITE_NULL) return std::nullopt;
+  if (type != SQLITE_INTEGER && type != SQLITE_FLOAT) damaged(ws, name, "'" + st.text(column) + "' is not a number");
+  const double v = st.real(column);
+  if (!std::isfinite(v) || v < 0 || (v == 0 && !zero_ok))
+    damaged(ws, name, number(v) + (zero_ok ? " is not a number >= 0" : " is not a number > 0"));
+  return v;
 }
 
 }  // namespace
@@ -72,15 +85,21 @@ std::optional<StoredDecision> stored_decision(const Workspace& ws) {
                "FROM decision WHERE id = 1");
   if (!st.step()) return std::nullopt;
   StoredDecision d;
-  d.power_budget_w = read_positive(st, 0);
-  d.min_fps = read_positive(st, 1);
-  d.min_runtime_min = read_positive(st, 2);
+  d.power_budget_w = read_number(ws, st, 0, "power_budget_w", false);
+  d.min_fps = read_number(ws, st, 1, "min_fps", false);
+  d.min_runtime_min = read_number(ws, st, 2, "min_runtime_min", false);
   d.battery = st.text(3);
-  const std::optional<double> load = st.optional_real(4);
-  d.extra_load_w = load && std::isfinite(*load) && *load >= 0 ? *load : 0.0;
+  d.extra_load_w = read_number(ws, st, 4, "extra_load_w", true).value_or(0.0);
   d.mission = st.text(5);
   d.candidates = st.text(6);
   d.loop = st.text(7);
+  if (!d.loop.empty()) {
+    try {
+      headroom::parse_loop_requirement(d.loop);
+    } catch (const std::invalid_argument& e) {
+      damaged(ws, "loop", "'" + d.loop + "': " + e.what());
+    }
+  }
   return d;
 }
 

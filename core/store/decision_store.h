@@ -6,8 +6,8 @@
 //  - the Platforms tab's decision: constraints (the control-loop requirement of #45 among them), battery choice,
 //    parallel load, mission, library candidates;
 //  - per platform, the power log the comparisons use when the platform has several (otherwise its first log).
-// Writes are the caller's one undo step each (the GUI's Edit > Undo); reads never throw for odd stored values: a
-// value out of range (a hand-edited file) is left out, as if it had not been set.
+// Writes are the caller's one undo step each (the GUI's Edit > Undo); a read refuses a stored value out of range (a
+// hand-edited file) with WorkspaceError(Corrupt) naming the column and the value, never guessing what was meant.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -42,7 +42,9 @@ std::string describe_constraints(const Constraints& c);
 // 200 us ...").
 std::string describe_constraints(const StoredDecision& d);
 
-// nullopt: never set in this workspace (the defaults apply: no constraint, the Battery tab's pack).
+// nullopt: never set in this workspace (the defaults apply: no constraint, the Battery tab's pack). Throws
+// WorkspaceError(Corrupt) for a stored value the schema's checks refuse (a budget <= 0, text for a number, a
+// control-loop requirement that does not parse).
 std::optional<StoredDecision> stored_decision(const Workspace& ws);
 // nullopt removes it. Throws WorkspaceError(Constraint) for a value out of range (a budget <= 0, a negative load) or a
 // control-loop requirement that does not parse (naming what is wrong with it).

@@ -309,14 +309,17 @@ void PlatformView::set_workspace(const Workspace* ws) {
   fill_battery_choices();
   // The decision as the workspace keeps it (issue #43.2): what was set before closing is set again on opening.
   std::optional<StoredDecision> stored;
+  QString problem;
   if (ws) {
     try {
       stored = stored_decision(*ws);
-    } catch (const std::exception&) {
-      stored.reset();  // unreadable (a damaged workspace opened read-only): the defaults, as for a new workspace
+    } catch (const std::exception& e) {
+      // A stored value out of range (a hand-edited file): the defaults, and the reason said where the decision shows.
+      stored.reset();
+      problem = QString::fromUtf8(e.what());
     }
   }
-  apply_decision(stored);
+  apply_decision(stored, problem);
 }
 
 void PlatformView::set_battery_tab_setup(const BatterySetup& setup, bool modified) {
@@ -375,7 +378,8 @@ StoredDecision PlatformView::decision() const {
   return d;
 }
 
-void PlatformView::apply_decision(const std::optional<StoredDecision>& stored) {
+void PlatformView::apply_decision(const std::optional<StoredDecision>& stored, const QString& problem) {
+  decision_problem_ = problem;
   const StoredDecision d = stored.value_or(StoredDecision{});
   {
     const QSignalBlocker b1(use_budget_), b2(use_fps_), b3(use_runtime_), b4(budget_), b5(fps_), b6(runtime_),
@@ -503,6 +507,11 @@ void PlatformView::recompute() {
             : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
                   .arg(recommendation()));
   }
+  if (!decision_problem_.isEmpty())
+    summary_->setText(tr("<span style='color:#b00020'>The decision stored in the workspace could not be read (%1); "
+                         "the defaults are shown, and a change here replaces it.</span><br>")
+                          .arg(decision_problem_.toHtmlEscaped()) +
+                      summary_->text());
   // Logs that give no power are not in the power columns: say which and why (issue #32.2).
   QString left_out = left_out_logs_text(traces_->traces).toHtmlEscaped();
   if (!left_out.isEmpty())

@@ -80,7 +80,9 @@ class PlatformView : public QWidget {
   StoredDecision decision() const;
   // Sets every control from the workspace's decision (nullopt: the defaults: no constraint, the Battery tab's pack,
   // no candidates) without emitting decision_edited.
-  void apply_decision(const std::optional<StoredDecision>& decision);
+  // `problem`: why the workspace's stored decision could not be read (said above the table, in red, until a decision
+  // is applied again); the defaults are shown then, and the next change replaces the damaged one.
+  void apply_decision(const std::optional<StoredDecision>& decision, const QString& problem = {});
 
  signals:
   // The user changed a control that changes the decision (a check box, a value entered, the battery, the mission,
@@ -124,6 +126,7 @@ class PlatformView : public QWidget {
   std::vector<headroom::HeadroomMeasurement> headroom_;
   std::vector<headroom::LoopVerdict> loop_verdicts_;
   StoredDecision last_decision_;  // as last applied from the workspace or emitted
+  QString decision_problem_;      // the stored decision could not be read: why (empty when it could)
 };
 
 }  // namespace bs::ui

@@ -25,7 +25,13 @@ std::optional<Stored> read_stored(const ParsedArgs& args) {
   const Workspace ws(args.positional[0], Workspace::OpenMode::ReadOnly);
   Stored s;
   for (const auto& [platform, id] : chosen_logs(ws)) s.chosen_log_platforms.push_back(platform);
-  const std::optional<StoredDecision> d = stored_decision(ws);
+  std::optional<StoredDecision> d;
+  try {
+    d = stored_decision(ws);
+  } catch (const WorkspaceError& e) {
+    if (e.kind() != WorkspaceError::Kind::Corrupt) throw;
+    throw WorkspaceError(e.kind(), std::string(e.what()) + " (--no-stored ignores it)");
+  }
   if (!d) return s.chosen_log_platforms.empty() ? std::nullopt : std::optional<Stored>(std::move(s));
   s.decision = *d;
   s.battery = d->battery.empty() ? battery_tab_setup(ws) : find_battery_setup(&ws, d->battery);

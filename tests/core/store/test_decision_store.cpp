@@ -88,7 +88,7 @@ class TestDecisionStore : public QObject {
     QVERIFY(!bs::stored_decision(ws));
   }
 
-  void a_hand_edited_value_out_of_range_reads_as_not_set() {
+  void a_hand_edited_value_out_of_range_is_refused_with_its_column() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("d.bsw").toStdString();
     {
@@ -97,14 +97,35 @@ class TestDecisionStore : public QObject {
       d.power_budget_w = 10;
       bs::set_stored_decision(ws, d);
     }
+    // Past the CHECKs (a file written by hand): the reader must neither take the value nor drop it silently.
+    const auto refused = [&path](const std::string& sql, const QString& expected) {
+      {
+        RawDb raw(path, false);
+        if (!raw.exec("PRAGMA ignore_check_constraints = 1; " + sql)) return QStringLiteral("cannot edit the file");
+      }
+      bs::Workspace ws(path);
+      try {
+        bs::stored_decision(ws);
+      } catch (const bs::WorkspaceError& e) {
+        if (e.kind() != bs::WorkspaceError::Kind::Corrupt) return QStringLiteral("not Corrupt: ") + e.what();
+        return QString(e.what()).contains(expected) ? QString() : QStringLiteral("message: ") + e.what();
+      }
+      return QStringLiteral("read without complaint");
+    };
+    QCOMPARE(refused("UPDATE decision SET power_budget_w = -5;", "decision.power_budget_w: -5 is not a number > 0"),
+             QString());
+    QCOMPARE(refused("UPDATE decision SET power_budget_w = 10, min_fps = 'fast';",
+                     "decision.min_fps: 'fast' is not a number"),
+             QString());
+    QCOMPARE(refused("UPDATE decision SET min_fps = NULL, extra_load_w = -1;", "decision.extra_load_w: -1"), QString());
+    QCOMPARE(refused("UPDATE decision SET extra_load_w = 0, loop = 'p99<=1us';", "decision.loop: 'p99<=1us'"),
+             QString());
     {
       RawDb raw(path, false);
-      // Past the CHECK (a file written by hand): the reader must not take -5 W as a budget.
-      QVERIFY(raw.exec("PRAGMA ignore_check_constraints = 1; UPDATE decision SET power_budget_w = -5;"));
+      QVERIFY(raw.exec("UPDATE decision SET loop = '';"));
     }
     bs::Workspace ws(path);
-    QVERIFY(bs::stored_decision(ws));
-    QVERIFY(!bs::stored_decision(ws)->power_budget_w);
+    QCOMPARE(*bs::stored_decision(ws)->power_budget_w, 10.0);  // whole again: read as stored
   }
 
   void chosen_log_goes_first_and_leaves_with_its_log() {
