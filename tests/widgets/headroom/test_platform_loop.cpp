@@ -79,7 +79,7 @@ class TestPlatformLoop : public QObject {
     QCOMPARE(edited.size(), 2);
     QVERIFY(edited.at(1).at(0).value<bs::StoredDecision>().loop.empty());
     // The workspace's stored requirement comes back ticked, without a decision edited.
-    bs::StoredDecision stored;
+    bs::StoredDecision stored = view.decision();  // the battery and load as the view has them, the loop stored
     stored.loop = "500Hz,p99<=1ms";
     view.apply_decision(stored);
     QCOMPARE(edited.size(), 2);
