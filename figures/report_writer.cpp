@@ -390,21 +390,7 @@ void print_pdf(const QString& path, const std::string& html, const std::vector<R
     throw std::runtime_error(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
 }
 
-std::string number(double v) {
-  QString s = QString::number(v, 'g', 4);
-  return s.toStdString();
-}
-
 }  // namespace
-
-std::string describe_constraints(const Constraints& c) {
-  std::string out;
-  const auto add = [&](const std::string& s) { out += (out.empty() ? "" : ", ") + s; };
-  if (c.power_budget_w) add("a power budget of " + number(*c.power_budget_w) + " W");
-  if (c.min_fps) add("at least " + number(*c.min_fps) + " fps");
-  if (c.min_runtime_h) add("at least " + number(*c.min_runtime_h * 60) + " min on the battery");
-  return out;
-}
 
 QStringList write_report(const ReportRequest& request, const std::vector<FigureTemplate>& templates,
                          const FigureData& data, const FigureOptions& figure_options, const CancelToken& cancel,
@@ -432,6 +418,7 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
         (in.constraints.empty() ? "" : ", ") + std::string("control loop ") + headroom::describe(*request.loop);
   }
   in.candidates = request.candidates;
+  in.chosen_log_platforms = request.chosen_log_platforms;
   in.data_selection = data.selection;
   const std::optional<RenderedFigure> chart = render_chart(in.rows, in.verdicts, data, figure_options);
 

@@ -9,6 +9,7 @@
 #include "headroom/loop_requirement.h"
 #include "paper_figures.h"
 #include "report/candidates_section.h"
+#include "store/decision_store.h"
 
 namespace bs::ui {
 
@@ -20,6 +21,7 @@ struct ReportRequest {
   ComparisonOptions comparison;
   std::optional<CandidatesSectionInput> candidates;  // the "Candidates" section (report/candidates_section.h)
   std::optional<headroom::LoopRequirement> loop;     // a control-loop requirement (headroom/loop_requirement.h)
+  std::vector<std::string> chosen_log_platforms;     // platforms whose power log the user chose among several
 };
 
 // Returns the files written. Each file appears whole or not at all (QSaveFile); Cancelled or an error leaves none.
@@ -27,7 +29,8 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
                          const FigureData& data, const FigureOptions& figure_options, const CancelToken& cancel,
                          const std::function<void(int done, int total, const QString& what)>& progress = {});
 
-// "power budget 10 W, at least 5 fps" for the report's heading; empty when no constraint is set.
-std::string describe_constraints(const Constraints& c);
+// "a power budget of 10 W, at least 5 fps" for the report's heading: bs::describe_constraints (store/decision_store.h),
+// the same words the CLI prints for the constraints stored in a workspace.
+using bs::describe_constraints;
 
 }  // namespace bs::ui

@@ -24,6 +24,7 @@
 
 #include <QTabWidget>
 #include <QUndoStack>
+#include <QVBoxLayout>
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/screen_fit.h"
@@ -38,9 +39,11 @@
 #include "platform/efficiency_view.h"
 #include "platform/platform_view.h"
 #include "power/battery_view.h"
+#include "power/log_choice_bar.h"
 #include "power/power_trace_loader.h"
 #include "power/power_view.h"
 #include "remote/remote_run.h"
+#include "report/run_names.h"
 #include "runs/pipeline_json.h"
 #include "runs/run_json.h"
 #include "store/run_label_store.h"
@@ -88,9 +91,26 @@ MainWindow::MainWindow(QWidget* parent)
   tab(flops_split_, tr("FLOPS"),
       tr("FLOPS against workers for the runs ticked in the workspace tree, with their peaks"));
   tab(power_, tr("Power"), tr("Current/power logs: traces, statistics over a selected range (the paper's Figure 4)"));
-  tab(efficiency_, tr("Efficiency"), tr("GFLOPS/W per platform: the paper's and at mean power"));
-  tab(battery_, tr("Battery"), tr("Battery life per platform, presets saved in the workspace"));
-  tab(platforms_, tr("Platforms"), tr("One row per platform, and which one to pick under your constraints"));
+  // Efficiency, Battery and Platforms use one power log per platform: a bar above each says which, and offers the
+  // others where a platform has several (issue #43.4).
+  const auto with_log_choice = [this](QWidget* view) {
+    auto* page = new QWidget(this);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    auto* bar = new LogChoiceBar(page);
+    bar->setContentsMargins(6, 4, 6, 0);
+    connect(bar, &LogChoiceBar::log_chosen, this, &MainWindow::choose_power_log);
+    log_choices_.push_back(bar);
+    layout->addWidget(bar);
+    layout->addWidget(view, 1);
+    return page;
+  };
+  tab(with_log_choice(efficiency_), tr("Efficiency"), tr("GFLOPS/W per platform: the paper's and at mean power"));
+  tab(with_log_choice(battery_), tr("Battery"), tr("Battery life per platform, presets saved in the workspace"));
+  tab(with_log_choice(platforms_), tr("Platforms"),
+      tr("One row per platform, and which one to pick under your constraints (kept in the workspace)"));
+  connect(platforms_, &PlatformView::decision_edited, this, &MainWindow::store_decision);
   connect(platforms_, &PlatformView::source_requested, this, &MainWindow::show_source);
   // One battery for both tabs: the Platforms tab offers (and by default uses) what the Battery tab shows.
   connect(battery_, &BatteryView::setup_changed, this,
@@ -314,8 +334,10 @@ void MainWindow::import_paths_now(const QStringList& paths) {
 void MainWindow::show_import_report(const ImportReport& r) {
   // Few skips or failures: their reasons are in the message itself; many: counted, and listed under Details.
   const ImportMessage m = import_message(r);
+  // Warnings (a last line that may be cut, a board total that is a lower bound) stay longer than a plain count.
   statusBar()->showMessage(
-      r.failures.isEmpty() && !m.lines.isEmpty() ? m.headline + " — " + m.lines.join("; ") : m.headline, 10000);
+      r.failures.isEmpty() && !m.lines.isEmpty() ? m.headline + " — " + m.lines.join("; ") : m.headline,
+      r.warnings.isEmpty() ? 10000 : 60000);
   if (r.failures.isEmpty()) return;
   const QString text =
       tr("%n file(s) could not be imported; nothing of them was stored.", nullptr, static_cast<int>(r.failures.size()));
@@ -349,6 +371,8 @@ void MainWindow::reload() {
   // while the window already answers; the trace views are filled when they arrive (show_traces).
   std::vector<StoredPowerTrace> traces =
       workspace_ ? workspace_->power_trace_summaries() : std::vector<StoredPowerTrace>{};
+  // Each platform's chosen log first: the comparisons use a platform's first log (store/decision_store.h).
+  if (workspace_) order_chosen_logs_first(*workspace_, traces);
   if (workspace_ && PowerTraceLoader::sample_count(traces) > PowerTraceLoader::kBackgroundSamples) {
     trace_loader_->start(workspace_->path(), std::move(traces));
     show_traces(share_traces(std::vector<PowerTrace>{}));
@@ -411,6 +435,7 @@ void MainWindow::show_traces(const SharedTraces& traces) {
   std::vector<PipelineRun> pipelines = pipeline_runs();
   pipeline_->set_data(pipelines);
   platforms_->set_data(std::move(all), traces, std::move(pipelines));
+  show_log_choices(traces);
 }
 
 void MainWindow::show_source(const PlatformRow& row, const QString& column) {
@@ -460,7 +485,18 @@ void MainWindow::refresh_views() {
   if (workspace_)
     for (const StoredResultSet& s : workspace_->result_sets()) sets.push_back(s.set);
   apply_empirical_ceilings(peak_rows, sets);
-  peaks_->peak_model()->set_rows(std::move(peak_rows), colors);
+  // The Run column: what tells a run from others of the same device, backend and D (its F2 label first).
+  std::vector<RunIdentity> identities;
+  for (const StoredRun* r : shown) {
+    const auto label = run_labels_.find(r->id);
+    identities.push_back(run_identity(r->run,
+                                      r->run.platform + '\x1f' + r->run.device + '\x1f' + r->run.backend + '\x1f' +
+                                          r->run.variant + '\x1f' + std::to_string(r->run.dims),
+                                      label == run_labels_.end() ? std::string() : label->second));
+  }
+  std::vector<int> row_colors;  // per row (runs without a peak have no row)
+  for (const PeakRow& row : peak_rows) row_colors.push_back(colors[row.run_index]);
+  peaks_->peak_model()->set_rows(std::move(peak_rows), std::move(row_colors), distinguishing_parts(identities));
   // A permanent label: import summaries and action tips are temporary messages and must not erase it.
   status_label_->setText(tr("%1 — %2 of %3 runs shown%4")
                              .arg(workspace_ ? QString::fromStdString(workspace_->path()) : tr("no workspace"))

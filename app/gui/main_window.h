@@ -15,6 +15,7 @@ class QUndoStack;
 #include "paper_figures.h"
 #include "power/log_voltage_dialog.h"
 #include "power/shared_traces.h"
+#include "store/decision_store.h"
 #include "store/workspace.h"
 #include "workspace/damage_banner.h"
 #include "workspace/import_controller.h"
@@ -40,6 +41,7 @@ class EfficiencyView;
 class BatteryView;
 class LensTab;
 class HeadroomView;
+class LogChoiceBar;
 struct ImportReport;
 
 // The window: workspace tree (left dock), FLOPS plot (centre), peak table (bottom dock). It owns the open
@@ -107,6 +109,7 @@ class MainWindow : public QMainWindow {
   void export_current_figure();
   void reproduce_paper_figures();
   void export_report();
+  QStringList report_decision_lines() const;
   FigureData figure_data() const;
   // main_window_frames.cpp
   void connect_lens_and_frames();
@@ -128,7 +131,13 @@ class MainWindow : public QMainWindow {
   void rename_item(const TreeItemRef& item);
   void remove_item(const TreeItemRef& item);
   void set_device_color(const TreeItemRef& device, int color_index);
-  void push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo);
+  // One step of Edit > Undo; `refresh` brings the views up to date after it (default: reload()).
+  void push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo,
+                 std::function<void()> refresh = {});
+  // main_window_decision.cpp: what the user sets that changes the decision, kept in the workspace (issue #43.2, .4)
+  void store_decision(const StoredDecision& decision);
+  void choose_power_log(const QString& platform, qint64 trace_id);
+  void show_log_choices(const SharedTraces& traces);
   void report_edit_error(const QString& message);
   void update_edit_actions();
   void show_traces(const SharedTraces& traces);  // the views that draw or use power logs
@@ -176,9 +185,10 @@ class MainWindow : public QMainWindow {
   QToolBar* damage_bar_ = nullptr;  // holds the banner above the views; hidden while nothing is damaged
   LensTab* lens_ = nullptr;
   HeadroomView* headroom_ = nullptr;
-  QLabel* status_label_ = nullptr;  // workspace path and run counts
-  QLabel* save_state_ = nullptr;    // "Edits are written at once to …" / "Untitled: …" (permanent, right)
-  QUndoStack* edits_ = nullptr;     // renames and removals in the workspace tree; cleared when another opens
+  std::vector<LogChoiceBar*> log_choices_;  // above Efficiency, Battery and Platforms: each platform's power log
+  QLabel* status_label_ = nullptr;          // workspace path and run counts
+  QLabel* save_state_ = nullptr;            // "Edits are written at once to …" / "Untitled: …" (permanent, right)
+  QUndoStack* edits_ = nullptr;             // renames and removals in the workspace tree; cleared when another opens
   QAction* undo_edit_ = nullptr;
   QAction* redo_edit_ = nullptr;
   PowerTraceLoader* trace_loader_ = nullptr;           // samples of long power logs, loaded after the window shows

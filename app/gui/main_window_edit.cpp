@@ -243,18 +243,21 @@ void MainWindow::remove_item(const TreeItemRef& item) {
             std::move(redo), std::move(undo));
 }
 
-void MainWindow::push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo) {
-  // Each step reloads the views after it ran, whichever way.
-  auto with_reload = [this](std::function<void()> f) {
-    return [this, f = std::move(f)] {
+void MainWindow::push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo,
+                           std::function<void()> refresh) {
+  // Each step brings the views up to date after it ran, whichever way: all of them (reload) unless the step says
+  // which (a constraint changes the Platforms tab alone).
+  if (!refresh) refresh = [this] { reload(); };
+  auto then_refresh = [refresh](std::function<void()> f) {
+    return [refresh, f = std::move(f)] {
       f();
-      reload();
+      refresh();
     };
   };
   work_since_open_ = true;
-  edits_->push(new WorkspaceCommand(text, with_reload(std::move(redo)), with_reload(std::move(undo)),
+  edits_->push(new WorkspaceCommand(text, then_refresh(std::move(redo)), then_refresh(std::move(undo)),
                                     [this](const QString& m) { report_edit_error(m); }));
-  reload();
+  refresh();
   statusBar()->showMessage(tr("Done: %1 — Ctrl+Z undoes").arg(text), 10000);
 }
 

@@ -19,7 +19,9 @@
 #include "platform/candidates_panel.h"
 #include "platform/platform_view.h"
 #include "plot_export.h"
+#include "power/log_choice_bar.h"
 #include "report/candidates_section.h"
+#include "report_dialog.h"
 #include "report_writer.h"
 #include "workspace/workspace_tree.h"
 
@@ -71,7 +73,9 @@ FigureData MainWindow::figure_data() const {
   d.selection = "runs ticked in the workspace (" + std::to_string(d.runs.size()) + " of " +
                 std::to_string(runs_.size()) + "), all power logs and pipeline runs";
   if (workspace_) {
-    for (const StoredPowerTrace& t : workspace_->power_traces()) d.traces.push_back(t.trace);
+    std::vector<StoredPowerTrace> traces = workspace_->power_traces();
+    order_chosen_logs_first(*workspace_, traces);  // as in the views: each platform's chosen log first
+    for (StoredPowerTrace& t : traces) d.traces.push_back(std::move(t.trace));
     std::vector<PipelineRun> pipelines;
     for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
     d.pipelines = pipeline_timings(pipelines);
@@ -144,18 +148,47 @@ void MainWindow::reproduce_paper_figures() {
   if (box.clickedButton() == open) QDesktopServices::openUrl(QUrl::fromLocalFile(folder));
 }
 
+// The decision the report will state, in the words of its first page: shown in the report dialog before writing.
+QStringList MainWindow::report_decision_lines() const {
+  const StoredDecision d = platforms_->decision();
+  const std::string c = describe_constraints(d);  // the control loop too
+  const QString recommended = platforms_->recommendation();
+  QStringList lines;
+  lines << tr("<b>Constraints:</b> %1").arg(c.empty() ? tr("none set") : QString::fromStdString(c).toHtmlEscaped());
+  lines << (recommended.isEmpty()
+                ? tr("<b>Recommendation:</b> none (no platform with a power log meets every constraint)")
+                : tr("<b>Recommended%1:</b> %2")
+                      .arg(c.empty() ? QString() : tr(" under these constraints"), recommended.toHtmlEscaped()));
+  const ComparisonOptions o = platforms_->options();
+  QString battery =
+      tr("<b>Battery:</b> %1 V, %2 Ah").arg(o.battery_nominal_v, 0, 'f', 1).arg(o.battery_capacity_ah, 0, 'f', 2);
+  if (o.extra_load_w > 0) battery += tr(", parallel load %1 W").arg(o.extra_load_w, 0, 'f', 1);
+  if (!o.mission.empty()) battery += tr(", mission %1").arg(QString::fromStdString(o.mission).toHtmlEscaped());
+  lines << battery;
+  lines << tr("<b>Library candidates:</b> %1")
+               .arg(d.candidates.empty() ? tr("none") : QString::fromStdString(d.candidates).toHtmlEscaped());
+  if (!log_choices_.empty() && !log_choices_.front()->text().isEmpty())
+    lines << tr("<b>Power logs:</b> %1").arg(log_choices_.front()->text().toHtmlEscaped());
+  return lines;
+}
+
 void MainWindow::export_report() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, tr("Export report"), QDir(export_folder()).filePath("report.html"),
-                                   tr("HTML report (*.html);;PDF report (*.pdf)"));
-  if (path.isEmpty()) return;
+  ReportDialog dialog(QDir(export_folder()).filePath("report.pdf"), report_decision_lines(), this);
+  if (dialog.exec() != QDialog::Accepted) {
+    if (dialog.change_requested())
+      static_cast<QTabWidget*>(centralWidget())->setCurrentWidget(platforms_->parentWidget());
+    return;
+  }
+  const QString path = dialog.path();
   ReportRequest request;
   request.workspace_name =
       workspace_ ? QFileInfo(QString::fromStdString(workspace_->path())).fileName() : tr("untitled");
-  (path.endsWith(".pdf", Qt::CaseInsensitive) ? request.pdf_path : request.html_path) = path;
+  (dialog.pdf() ? request.pdf_path : request.html_path) = path;
   request.constraints = platforms_->constraints();
   request.comparison = platforms_->options();
   request.loop = platforms_->loop_requirement();  // the Platforms tab's control loop, when set and readable
+  if (workspace_)
+    for (const auto& [platform, id] : chosen_logs(*workspace_)) request.chosen_log_platforms.push_back(platform);
   // The Platforms tab's candidates (library computers chosen there) become the report's "Candidates" section,
   // with the tab's figure embedded in an HTML report.
   if (const CandidatesPanel* cp = platforms_->candidates(); !cp->selection().isEmpty()) {

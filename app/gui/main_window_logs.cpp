@@ -41,8 +41,9 @@ QString MainWindow::choose_log_platform(const QString& log, const QString& path,
   for (const QString& p : platforms)
     if (p != guess) items << p;
   bool ok = false;
+  // Over the import's progress dialog while one runs (ImportController::question_parent()): never under it.
   const QString answer = QInputDialog::getItem(
-      this, tr("Platform of %1").arg(log),
+      importer_->question_parent(), tr("Platform of %1").arg(log),
       tr("%1 does not say which platform it measured.\nWhich platform does the log “%2” belong to? (Pick one or "
          "type a new name; it can be changed later: right-click the log > Platform…)")
           .arg(path.section('/', -1), log),

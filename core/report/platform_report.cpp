@@ -163,6 +163,24 @@ std::string recommendation_text(const ReportInput& in) {
   return {};
 }
 
+std::string decision_basis_text(const ReportInput& in) {
+  std::string logs;
+  for (const PlatformRow& r : in.rows) {
+    if (r.power_log.empty()) continue;
+    logs += (logs.empty() ? "" : "; ") + r.platform + ": " + r.power_log;
+    if (r.power_logs > 1) {
+      const bool chosen = std::find(in.chosen_log_platforms.begin(), in.chosen_log_platforms.end(), r.platform) !=
+                          in.chosen_log_platforms.end();
+      logs += " (" + std::string(chosen ? "chosen of " : "the first of ") + std::to_string(r.power_logs) + " logs)";
+    }
+  }
+  std::string out;
+  if (!logs.empty()) out = "Power logs used: " + logs + ".";
+  if (in.candidates && !in.candidates->selection.empty())
+    out += (out.empty() ? "" : " ") + std::string("Library candidates: ") + in.candidates->selection + ".";
+  return out;
+}
+
 std::string report_html(const ReportInput& in) { return report_html(in, report_sections()); }
 
 std::string report_html(const ReportInput& in, const std::vector<ReportSection>& sections) {

@@ -38,7 +38,12 @@ struct ReportInput {
   std::vector<headroom::HeadroomMeasurement> headroom;
   std::optional<headroom::LoopRequirement> loop;
   std::vector<headroom::LoopVerdict> loop_verdicts;
+  std::vector<std::string> chosen_log_platforms;  // platforms whose power log the user chose among several
 };
+
+// Page one's account of what the decision rests on besides the data: each platform's power log where it has several
+// (and whether the user chose it), and the library candidates; "" when there is nothing to say.
+std::string decision_basis_text(const ReportInput& in);
 
 using ReportSection = std::function<void(const ReportInput&, ReportBuilder&)>;
 

@@ -74,6 +74,8 @@ void decision_section(const ReportInput& in, ReportBuilder& b) {
                     ": none meets every constraint with a power log and a FLOPS run.",
                 "decision");
   }
+  // What else the decision rests on: which power log each platform's numbers come from, the library candidates.
+  if (const std::string basis = decision_basis_text(in); !basis.empty()) b.paragraph(basis, "note");
   // Why the others were not chosen, in a line: platforms with the same reason share it.
   std::vector<std::pair<std::string, std::string>> reasons;  // reason -> platforms
   for (std::size_t i = 0; i < in.verdicts.size(); ++i) {

@@ -75,6 +75,20 @@ std::vector<std::string> distinct_names(const std::vector<RunIdentity>& runs) {
   return names;
 }
 
+std::vector<std::string> distinguishing_parts(const std::vector<RunIdentity>& runs) {
+  const std::vector<std::string> names = distinct_names(runs);
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    std::string rest = names[i].substr(std::min(runs[i].base.size(), names[i].size()));
+    const std::string dash = " \xE2\x80\x94 ";
+    if (rest.rfind(dash, 0) == 0) rest.erase(0, dash.size());  // " — label (added)" -> "label (added)"
+    if (rest.size() >= 3 && rest.rfind(" (", 0) == 0 && rest.back() == ')')
+      rest = rest.substr(2, rest.size() - 3);  // " (added)" alone -> "added"
+    out.push_back(std::move(rest));
+  }
+  return out;
+}
+
 RunIdentity run_identity(const FlopsRun& run, std::string base, std::string label) {
   return {std::move(base), std::move(label), run.provenance.date, run.provenance.host,
           "N = " + std::to_string(run.iterations)};

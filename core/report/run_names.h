@@ -22,6 +22,11 @@ struct RunIdentity {
 
 std::vector<std::string> distinct_names(const std::vector<RunIdentity>& runs);
 
+// What distinct_names() adds to each run's base: its label, then what else tells it from runs of the same base
+// ("fan at 100 % (14:03)", "14:05"); "" where the run needs nothing added. For a table whose other columns already
+// say the base (the peak table's platform, device, backend, D).
+std::vector<std::string> distinguishing_parts(const std::vector<RunIdentity>& runs);
+
 // The identity of a FLOPS run under `base` (date and host from its provenance, detail "N = <iterations>").
 RunIdentity run_identity(const FlopsRun& run, std::string base, std::string label = {});
 

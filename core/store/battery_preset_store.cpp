@@ -144,4 +144,17 @@ std::optional<BatterySetup> find_battery_setup(const Workspace* ws, std::string_
   return std::nullopt;
 }
 
+std::optional<BatterySetup> battery_tab_setup(const Workspace& ws) {
+  constexpr const char* kKey = "battery-tab/current";  // widgets/power/battery_view.cpp writes it
+  for (const auto& [key, json] : ws.settings(kKey)) {
+    if (key != kKey) continue;
+    try {
+      return battery_setup_from_json(json);
+    } catch (const std::exception&) {
+      return std::nullopt;  // the Battery tab says why when it opens the workspace
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace bs

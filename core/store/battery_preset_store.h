@@ -39,5 +39,8 @@ std::vector<BatterySetup> workspace_battery_setups(const Workspace& ws, std::vec
 // Built-ins then the workspace's (which replace built-ins of the same name); `ws` may be null.
 std::vector<BatterySetup> all_battery_setups(const Workspace* ws, std::vector<std::string>* errors = nullptr);
 std::optional<BatterySetup> find_battery_setup(const Workspace* ws, std::string_view name);
+// The setup the Battery tab shows (saved as it is edited, setting "battery-tab/current"); nullopt when none was saved
+// or it no longer parses.
+std::optional<BatterySetup> battery_tab_setup(const Workspace& ws);
 
 }  // namespace bs

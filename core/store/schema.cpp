@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "store/power_samples.h"
+#include "store/schema_v10.h"
 #include "store/schema_v8.h"
 
 namespace bs::store {
@@ -282,10 +283,11 @@ void migrate_add_headroom(const sqlite::Db& db) {
 }
 
 using Migration = void (*)(const sqlite::Db&);
-constexpr Migration kMigrations[] = {
-    migrate_0_to_1,      migrate_1_to_2, migrate_2_to_3,       migrate_3_to_4,
-    migrate_4_to_5,      migrate_5_to_6, migrate_add_dnn_runs, migrate_lenses_and_log_settings,
-    migrate_add_headroom};
+constexpr Migration kMigrations[] = {migrate_0_to_1,       migrate_1_to_2,
+                                     migrate_2_to_3,       migrate_3_to_4,
+                                     migrate_4_to_5,       migrate_5_to_6,
+                                     migrate_add_dnn_runs, migrate_lenses_and_log_settings,
+                                     migrate_add_headroom, migrate_decision_and_chosen_logs};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

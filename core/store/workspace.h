@@ -122,8 +122,9 @@ class Workspace {
  public:
   // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary,
   // 7: dnn inference runs, 8: saved lenses, a log's borrowed voltage channel, phase origins (store/schema_v8.h),
-  // 9: headroom measurements (control-loop latency histograms per phase and thread)
-  static constexpr int kSchemaVersion = 9;
+  // 9: headroom measurements (control-loop latency histograms per phase and thread), 10: the Platforms tab's decision
+  // and each platform's chosen power log (store/schema_v10.h)
+  static constexpr int kSchemaVersion = 10;
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.

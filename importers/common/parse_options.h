@@ -16,7 +16,9 @@ struct ParseOptions {
   std::optional<double> supply_voltage_v;
   // Seconds between tegrastats lines that carry no timestamp (tegrastats --interval, default 1000 ms).
   double interval_s = 1.0;
-  // Platform name when the file does not name one ("# platform: NUC"); tegrastats logs default to "Jetson".
+  // Platform name when the file does not name one ("# platform: NUC"). Left empty, the log has none: a board family
+  // is not a platform (a TX2's and an Orin's tegrastats both say "Jetson"), so the import asks or guesses
+  // (common/log_platform.h), never "Jetson" for every board (issue #43.3).
   std::string platform;
 
   // Google Benchmark JSON: which argument of the benchmark name is the worker count of a FLOPS sweep. Left

@@ -289,7 +289,9 @@ ImportBatch JtopParser::finish() {
     batch_.warnings.push_back(file_ + ": " + std::to_string(setting_changes_ - kListedWarnings) +
                               " more setting changes");
   trace_.total_channel = trace_.channels.front().name;
-  trace_.platform = options_.platform.empty() ? "Jetson" : options_.platform;
+  // The log names no board model (only the family, by its format): the platform is what the user gives, else the
+  // import asks or guesses (issue #43.3: a TX2's and an Orin's logs must not become one platform "Jetson").
+  trace_.platform = options_.platform;
   trace_.label = file_.substr(file_.find_last_of('/') == std::string::npos ? 0 : file_.find_last_of('/') + 1);
   Provenance& p = trace_.provenance;
   p.origin = DataOrigin::Measured;

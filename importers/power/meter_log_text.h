@@ -93,21 +93,36 @@ class LineParserBase {
   ImportBatch batch_;
 };
 
+// A last line without its line ending may be cut off: a logger stopped while writing it leaves "VDD_IN 3624/36"
+// where it was writing "3624/3624", and the cut number can still parse. Unless the parser already skipped that
+// line (a warning naming file:line), the batch says so, naming the file and the line, so the user checks the value.
+inline void warn_possibly_cut(ImportBatch& batch, const std::string& file, std::size_t line_no) {
+  const std::string where = file + ":" + std::to_string(line_no) + ":";
+  for (const std::string& w : batch.warnings)
+    if (w.rfind(where, 0) == 0) return;
+  batch.warnings.push_back(where +
+                           " the last line has no line ending, so it may be cut off (a logger stopped while writing "
+                           "it); its values are imported: check the last sample");
+}
+
 template <class Lines, class Parser>
 auto run_lines(Lines& lines, Parser& parser, const CancelToken& cancel) {
   std::string pending;
   std::size_t pending_no = 0;
-  bool have = false;
+  bool have = false, pending_cut = false;
   while (const auto line = lines.next()) {
     if (trim(*line).empty()) continue;
     if (have) parser.line(pending, pending_no, false);
     pending.assign(*line);
     pending_no = lines.line_number();
+    pending_cut = lines.last_line_unterminated();
     have = true;
     if ((pending_no & 0x3ff) == 0) cancel.throw_if_cancelled();
   }
   if (have) parser.line(pending, pending_no, true);
-  return parser.finish();
+  auto batch = parser.finish();
+  if (have && pending_cut) warn_possibly_cut(batch, lines.name(), pending_no);
+  return batch;
 }
 
 // The whole of a line-based power format's Importer::parse (the file's lines, streamed) and of its parse_X (lines

@@ -344,6 +344,29 @@ class PowerCsvParser {
         why + "); left out, the " + std::to_string(trace_.time_s.size()) + " complete rows before it are imported");
     return true;
   }
+  // The last line has no line ending, so a logger may have been stopped while writing it: "162.4,3." parses (as 3 A)
+  // although the logger was writing 3.0611. With complete rows before it, it is left out unread (a possibly wrong
+  // number never reaches the statistics) and the warning names it; as the only row it is read, and the warning says
+  // to check it. Returns whether the line is to be left out.
+  bool possibly_cut_last_line(std::string_view raw, std::size_t line_no) {
+    const std::string_view text = trim_spaces(raw);
+    if (columns_.empty() || text.empty() || text.front() == '#') return false;  // a comment carries no number
+    const std::string shown(raw.substr(0, std::min<std::size_t>(raw.size(), 60)));
+    const std::string where = file_ + ":" + std::to_string(line_no) + ": ";
+    if (!trace_.time_s.empty()) {
+      batch_.warnings.push_back(where +
+                                "the last line has no line ending, so it may be cut off (a logger stopped "
+                                "while writing it: \"" +
+                                shown + "\"); left out, the " + std::to_string(trace_.time_s.size()) +
+                                " complete rows before it are imported");
+      return true;
+    }
+    batch_.warnings.push_back(where +
+                              "the only data row has no line ending, so it may be cut off (a logger stopped "
+                              "while writing it: \"" +
+                              shown + "\"); read as it is: check its last value");
+    return false;
+  }
   // Reserves the columns for about `rows` rows (an estimate from the file system's size, capped by the limit).
   void reserve(std::size_t rows) {
     rows = std::min(rows, limits_.max_power_rows);
@@ -965,6 +988,7 @@ ImportBatch parse_lines(PowerLineReader&& lines, const std::string& file, const 
   PowerCsvParser parser(file, options, limits);
   bool reserved = false;
   while (const auto line = lines.next()) {
+    if (lines.last_line_unterminated() && parser.possibly_cut_last_line(*line, lines.line_number())) break;
     try {
       parser.line(*line, lines.line_number());
     } catch (const ImportError& e) {

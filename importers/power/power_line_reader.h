@@ -29,7 +29,10 @@ class PowerLineReader {
   // The next line without its line ending, valid until the next call; empty optional at the end.
   // Throws ImportError TooLarge for a line longer than kMaxPowerLogLineBytes, Io on a read error.
   std::optional<std::string_view> next();
-  std::size_t line_number() const { return line_; }  // 1-based number of the line last returned
+  std::size_t line_number() const { return line_; }
+  const std::string& name() const {
+    return path_;
+  }  // the file named in errors and warnings  // 1-based number of the line last returned
   // The line last returned ended the file without a line ending: a logger killed mid-write leaves such a line.
   bool last_line_unterminated() const { return unterminated_; }
   std::size_t bytes_consumed() const { return consumed_; }

@@ -219,7 +219,9 @@ ImportBatch TegrastatsParser::finish() {
     how = "board total = " + rails_[order_.front()] + " (the input rail; the other rails are parts of it)";
   }
   trace_.total_channel = trace_.channels.front().name;
-  trace_.platform = options_.platform.empty() ? "Jetson" : options_.platform;
+  // The log names no board model (only the family, by its format): the platform is what the user gives, else the
+  // import asks or guesses (issue #43.3: a TX2's and an Orin's logs must not become one platform "Jetson").
+  trace_.platform = options_.platform;
   trace_.label = file_.substr(file_.find_last_of('/') == std::string::npos ? 0 : file_.find_last_of('/') + 1);
   trace_.provenance.origin = DataOrigin::Measured;
   trace_.provenance.tool = "tegrastats";

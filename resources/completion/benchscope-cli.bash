@@ -28,11 +28,11 @@ _benchscope_cli() {
     library) options="--help --battery --budget --computer --csv --extra-load --figure --json --latex --min-fps --min-runtime" ;;
     peaks) options="--help --json --kind --precision" ;;
     pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
-    platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --require-loop --supply-volts --workspace" ;;
+    platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --no-stored --require-loop --store --supply-volts --use-log --workspace" ;;
     power) options="--help --from --interval --json --min-phase --min-step --phases --query-gpu --supply-volts --to" ;;
     record-power) options="--help --events --interval-ms --out --quiet --seconds --sensor --sysfs-root --workspace" ;;
     remote) options="--help --desk-quiet --id --platform --remote-cli --ssh-config --workspace" ;;
-    report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --out --pdf --quiet --require-loop --supply-volts --template" ;;
+    report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --no-stored --out --pdf --quiet --require-loop --supply-volts --template" ;;
     roofline) options="--help --json" ;;
     run) options="--help --backend --device --events --isa --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     runs) options="--help --clear --label --run" ;;

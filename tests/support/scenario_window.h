@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Driving the real main window as a person does: keys pressed on the window, modal dialogs answered through the
-// running event loop (a timer looks for QApplication::activeModalWidget() while the dialog's exec() runs), never by
-// calling the slots behind them.
+// The main window as a scenario test meets it (issue #43): started like `benchscope WORKSPACE` or
+// `benchscope sample_data/paper-2018` starts it, shown at a person's screen size, its tabs and menus used with
+// clicks and keys (tests/support/scenario.h), the status bar read as a person reads it; keys pressed on the window,
+// modal dialogs answered through the running event loop (a timer looks for QApplication::activeModalWidget() while
+// the dialog's exec() runs), never by calling the slots behind them.
 #include <qcustomplot.h>
 #include <QAbstractButton>
 #include <QApplication>
@@ -13,7 +15,10 @@
 #include <QFileDialog>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <functional>
@@ -21,6 +26,9 @@
 
 #include "export_figure_dialog.h"
 #include "main_window.h"
+#include "scenario.h"
+#include "test_registration.h"
+#include "vision/lens_view_3d.h"
 
 namespace bs::test {
 
@@ -108,6 +116,28 @@ inline bool answer_file_dialog(QWidget* modal, const QString& path, const QStrin
   return false;
 }
 
+// Answers File > Export report's dialog (app/gui/report_dialog.h) as a person does: the path pasted into its File
+// field, then Export clicked. False when `modal` is not that dialog (it is closed then).
+inline bool answer_report_dialog(QWidget* modal, const QString& path) {
+  auto* file = modal->findChild<QLineEdit*>("reportPath");
+  if (modal->windowTitle() != "Export report" || qobject_cast<QFileDialog*>(modal) || !file) {
+    modal->close();
+    return false;
+  }
+  file->setText(path);
+  emit file->textEdited(path);
+  QPushButton* ok = nullptr;
+  for (QDialogButtonBox* box : modal->findChildren<QDialogButtonBox*>())
+    for (QAbstractButton* b : box->buttons())
+      if (box->buttonRole(b) == QDialogButtonBox::AcceptRole) ok = qobject_cast<QPushButton*>(b);
+  if (!ok || !QTest::qWaitFor([ok] { return ok->isEnabled(); }, 5000)) {
+    qWarning("the report dialog's Export button never became clickable");
+    return false;
+  }
+  QTest::mouseClick(ok, Qt::LeftButton);
+  return true;
+}
+
 // The window's tab widget and the plot File > Export figure would take from the current tab (its first visible
 // one), or null.
 inline QTabWidget* window_tabs(ui::MainWindow& w) { return qobject_cast<QTabWidget*>(w.centralWidget()); }
@@ -164,4 +194,66 @@ inline bool export_current_tab(ui::MainWindow& w, const QString& stem, const QSt
   return *answered;
 }
 
+inline const QString kPaperData = QStringLiteral(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018");
+inline const QString kScenarioData = QStringLiteral(BENCHSCOPE_TEST_DATA_DIR "/scenarios");
+inline const QString kPublicPower = QStringLiteral(BENCHSCOPE_PUBLIC_DATA_DIR "/tests/data/power/real");
+
+// The central tab widget and one of its tabs brought to the front by a click on its tab, as a person does.
+inline QTabWidget* tabs(bs::ui::MainWindow& w) { return static_cast<QTabWidget*>(w.centralWidget()); }
+inline QWidget* open_tab(bs::ui::MainWindow& w, const QString& name) {
+  QTabWidget* t = tabs(w);
+  for (int i = 0; i < t->count(); ++i)
+    if (plain(t->tabText(i)) == name) {
+      click(t->tabBar(), Qt::LeftButton, {}, t->tabBar()->tabRect(i).center());
+      wait_until([&] { return t->currentIndex() == i; }, 50);
+      return t->widget(i);
+    }
+  return nullptr;
+}
+
+inline QString status(bs::ui::MainWindow& w) { return w.statusBar()->currentMessage(); }
+
+// Waits for the message a finished import leaves in the status bar ("Imported 2 file(s) ..."), and returns it.
+inline QString wait_for_import(bs::ui::MainWindow& w, int polls = 3000) {
+  wait_until([&] { return status(w).startsWith(QStringLiteral("Imported")); }, polls);
+  return status(w);
+}
+
+// A workspace file holding the paper's sample data, written the way `benchscope-cli import` would (the GUI's own
+// command-line import, without questions: every paper file names its platform).
+inline QString paper_workspace(QTemporaryDir& dir, const QString& name = QStringLiteral("paper.bsw")) {
+  const QString path = dir.filePath(name);
+  bs::ui::MainWindow w;
+  if (!w.open_workspace(path)) return {};
+  w.import_paths_now({kPaperData});
+  return path;
+}
+
+// The window as a person sees it: shown at `width` x `height`, exposed, the event loop run once.
+inline bool show_at(bs::ui::MainWindow& w, int width = 1600, int height = 1000) {
+  w.resize(width, height);
+  w.show();
+  if (!QTest::qWaitForWindowExposed(&w)) return false;
+  w.activateWindow();
+  QTest::qWait(50);
+  return true;
+}
+
 }  // namespace bs::test
+
+// main() of a scenario test: VTK's views need their OpenGL format before the QApplication exists, as in
+// app/gui/main.cpp; settings go to a test organisation so a developer's own window layout is never touched. The
+// function is registered under the test's file name (test_registration.h): the tests of tests/app/gui share one
+// program, each run in its own process.
+#define BENCHSCOPE_SCENARIO_MAIN(TestClass)                           \
+  namespace {                                                         \
+  int benchscope_scenario_main(int argc, char** argv) {               \
+    bs::ui::set_vtk_default_surface_format();                         \
+    QApplication app(argc, argv);                                     \
+    QCoreApplication::setOrganizationName("BenchScopeScenarioTest");  \
+    QCoreApplication::setApplicationName(#TestClass);                 \
+    TestClass test;                                                   \
+    return bs::test::test_exit_code(QTest::qExec(&test, argc, argv)); \
+  }                                                                   \
+  }                                                                   \
+  BENCHSCOPE_TEST_CUSTOM_MAIN(benchscope_scenario_main)

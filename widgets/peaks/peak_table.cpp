@@ -7,7 +7,9 @@
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QSortFilterProxyModel>
+#include <QStyledItemDelegate>
 #include <algorithm>
+#include <cmath>
 
 #include "analysis/peaks/plausibility.h"
 #include "analysis/stats/units.h"
@@ -15,7 +17,18 @@
 
 namespace bs::ui {
 
-void PeakTableModel::set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices) {
+QString peak_mean_sd_text(const PeakRow& r) {
+  if (r.peak.at_peak.n <= 1) return QString::fromStdString(format_si(r.peak.flops, "FLOPS"));
+  const int e = si_exponent(r.peak.flops);
+  const double scale = std::pow(10.0, e);
+  return QStringLiteral("%1 ± %2 %3FLOPS")
+      .arg(r.peak.flops / scale, 0, 'f', 2)
+      .arg(r.peak.at_peak.sd / scale, 0, 'f', 2)
+      .arg(QString::fromUtf8(si_prefix(e).data(), static_cast<qsizetype>(si_prefix(e).size())));
+}
+
+void PeakTableModel::set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices,
+                              std::vector<std::string> run_names) {
   color_indices.resize(rows.size(), 0);
   // Rows grouped by platform, platforms in the order they first appear, each platform's rows in their given order.
   std::vector<std::string> platforms;
@@ -30,7 +43,10 @@ void PeakTableModel::set_rows(std::vector<PeakRow> rows, std::vector<int> color_
   beginResetModel();
   rows_.clear();
   colors_.clear();
+  runs_.clear();
   for (std::size_t i : order) {
+    const std::size_t run = rows[i].run_index;
+    runs_.push_back(run < run_names.size() ? QString::fromStdString(run_names[run]) : QString());
     rows_.push_back(std::move(rows[i]));
     colors_.push_back(color_indices[i]);
   }
@@ -57,9 +73,10 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
         return r.variant == "paper" ? qs(r.backend) : qs(r.backend + " (" + r.variant + ")");
       case Dims:
         return r.dims > 0 ? QVariant(r.dims) : QVariant(QStringLiteral("–"));  // "–": another tool's sweep
+      case Run:
+        return runs_[static_cast<std::size_t>(index.row())];
       case Peak: {
-        QString s = qs(format_si(r.peak.flops, "FLOPS"));
-        if (r.peak.at_peak.n > 1) s += QStringLiteral(" ± ") + qs(format_si(r.peak.at_peak.sd, "FLOPS"));
+        const QString s = peak_mean_sd_text(r);
         return r.flags.empty() ? s : QStringLiteral("⚠ ") + s;
       }
       case Workers:
@@ -110,7 +127,7 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
   }
   if (role == Qt::DecorationRole && index.column() == Device)
     return device_color(colors_[static_cast<std::size_t>(index.row())]);
-  if (role == Qt::TextAlignmentRole && index.column() >= Dims && index.column() <= OfSpec)
+  if (role == Qt::TextAlignmentRole && index.column() >= Dims && index.column() <= OfSpec && index.column() != Run)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   if (role == Qt::ToolTipRole) {
     QString tip = QStringLiteral("%1 on %2\nPeak %3 at %L4 workers (n = %5)\nSource: %6")
@@ -154,15 +171,17 @@ QVariant PeakTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return {};
-  static const char* names[] = {
-      "Platform", "Device",           "Backend",      "D",         "Peak",  "Workers at peak", "Reported",
-      "Ratio",    "% of theoretical", "% of ceiling", "% of spec", "Origin"};
+  static const char* names[] = {"Platform",         "Device",          "Backend",  "D",     "Run",
+                                "Peak (mean ± SD)", "Workers at peak", "Reported", "Ratio", "% of theoretical",
+                                "% of ceiling",     "% of spec",       "Origin"};
   static const char* tips[] = {
       "The computer; its rows are grouped under it",
       "Compute device (colour as in every plot)",
       "API the kernel ran through",
       "2D points rotated per worker",
-      "Highest mean FLOPS = 6·D·N·W / t",
+      "What tells this run from others of the same device, backend and D: its name (F2 in the workspace tree), "
+      "else its date or host",
+      "Highest mean FLOPS = 6·D·N·W / t, ± the SD of the repeats at that worker count (n in the tooltip)",
       "Worker count where the peak occurred",
       "Vendor or literature peak figure",
       "Measured peak ÷ the vendor or literature figure in Reported (hover a cell for both numbers)",
@@ -176,6 +195,20 @@ QVariant PeakTableModel::headerData(int section, Qt::Orientation orientation, in
   if (role == Qt::ToolTipRole) return tr(tips[section]);
   return {};
 }
+
+namespace {
+// Elides at the end, whatever the view's mode: the peak's mean and its "±" stay in view.
+class RightElidingDelegate : public QStyledItemDelegate {
+ public:
+  using QStyledItemDelegate::QStyledItemDelegate;
+
+ protected:
+  void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override {
+    QStyledItemDelegate::initStyleOption(option, index);
+    option->textElideMode = Qt::ElideRight;
+  }
+};
+}  // namespace
 
 PeakTableView::PeakTableView(QWidget* parent) : QTableView(parent), model_(new PeakTableModel(this)) {
   auto* proxy = new QSortFilterProxyModel(this);
@@ -196,6 +229,8 @@ PeakTableView::PeakTableView(QWidget* parent) : QTableView(parent), model_(new P
   // a 1600 px window (issue #32.7): a column is at most 190 px, its text elided in the middle, whole in the tooltip.
   horizontalHeader()->setMaximumSectionSize(190);
   setTextElideMode(Qt::ElideMiddle);
+  // Numbers are never elided in the middle: "43.16 ± 13.81 GFLOPS" cut to "43.16…GFLOPS" would hide the SD's sign.
+  setItemDelegateForColumn(PeakTableModel::Peak, new RightElidingDelegate(this));
   setWordWrap(false);
 }
 

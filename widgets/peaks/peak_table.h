@@ -16,6 +16,7 @@ class PeakTableModel : public QAbstractTableModel {
     Device,
     Backend,
     Dims,
+    Run,
     Peak,
     Workers,
     Reported,
@@ -32,8 +33,10 @@ class PeakTableModel : public QAbstractTableModel {
   static constexpr int kFlaggedRole = Qt::UserRole + 2;
 
   using QAbstractTableModel::QAbstractTableModel;
-  // `color_indices` parallels `rows`: the device colour of each row.
-  void set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices);
+  // `color_indices` parallels `rows`: the device colour of each row. `run_names[PeakRow::run_index]` is what tells
+  // the row's run from others of the same device, backend and D (its label from F2, else a date or host; issue
+  // #43.4: two sweeps of one machine were two identical rows), shown in the Run column.
+  void set_rows(std::vector<PeakRow> rows, std::vector<int> color_indices, std::vector<std::string> run_names = {});
   const PeakRow& row_at(int row) const { return rows_[static_cast<std::size_t>(row)]; }
   const std::vector<PeakRow>& rows() const { return rows_; }  // grouped by platform
 
@@ -45,7 +48,12 @@ class PeakTableModel : public QAbstractTableModel {
  private:
   std::vector<PeakRow> rows_;
   std::vector<int> colors_;
+  std::vector<QString> runs_;  // per row: the Run column
 };
+
+// "43.16 ± 13.81 GFLOPS": the peak's mean and SD under one prefix, so the cell is short enough never to be elided
+// (on main "43.16 GFLOPS ± 13.81 GFLOPS" was elided to "43.16 GFLOPS…13.81 GFLOPS", which reads as a range).
+QString peak_mean_sd_text(const PeakRow& row);
 
 // Sortable view of the peak table; Ctrl+C copies the selection as tab-separated text.
 class PeakTableView : public QTableView {

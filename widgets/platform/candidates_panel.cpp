@@ -57,6 +57,7 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
       words.removeAll(id);
       if (on) words << id;
       set_selection(words.join(','));
+      emit selection_edited();
     });
   }
   computers_->setMenu(menu);
@@ -91,6 +92,7 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(note_);
   layout->addWidget(split, 1);
   connect(spec_, &QLineEdit::editingFinished, this, &CandidatesPanel::recompute);
+  connect(spec_, &QLineEdit::editingFinished, this, &CandidatesPanel::selection_edited);
   connect(export_csv, &QPushButton::clicked, this, &CandidatesPanel::export_csv);
 }
 

@@ -34,6 +34,10 @@ class CandidatesPanel : public QWidget {
   const std::vector<CandidateClass>& classes() const { return classes_; }
   const std::vector<PeakClass>& peaks() const { return peaks_; }
 
+ signals:
+  // The user typed a selection (and left the field) or ticked a computer in the menu; set_selection() emits nothing.
+  void selection_edited();
+
  protected:
   // A replot while the tab was hidden leaves the plot's buffer stale: draw it again when shown.
   void showEvent(QShowEvent* event) override;

@@ -187,10 +187,17 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   candidates_ = new CandidatesPanel(this);
   layout->addWidget(candidates_, 2);
 
-  for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_})
+  // A value counts when it is entered (Enter, leaving the field, an arrow step), not at every key typed: each is one
+  // step of Edit > Undo, and the workspace keeps it.
+  for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_}) {
     connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
-  for (QDoubleSpinBox* s : {budget_, fps_, runtime_, extra_load_})
+    connect(c, &QCheckBox::clicked, this, &PlatformView::user_changed);
+  }
+  for (QDoubleSpinBox* s : {budget_, fps_, runtime_, extra_load_}) {
+    s->setKeyboardTracking(false);
     connect(s, &QDoubleSpinBox::valueChanged, this, &PlatformView::recompute);
+    connect(s, &QDoubleSpinBox::valueChanged, this, &PlatformView::user_changed);
+  }
   connect(battery_, &QComboBox::currentIndexChanged, this, [this](int i) {
     if (i == 0 && has_tab_setup_) {  // the Battery tab's setup brings its parallel load and mission along
       const QSignalBlocker b1(extra_load_), b2(mission_);
@@ -203,11 +210,17 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
       mission_->setEditText(QString::fromStdString(setups_[static_cast<std::size_t>(i)].mission));
     }
     recompute();
+    user_changed();
   });
   connect(mission_, &QComboBox::activated, this, &PlatformView::recompute);
+  connect(mission_, &QComboBox::activated, this, &PlatformView::user_changed);
   connect(use_loop_, &QCheckBox::toggled, this, &PlatformView::recompute);
+  connect(use_loop_, &QCheckBox::clicked, this, &PlatformView::user_changed);
   connect(loop_, &QLineEdit::editingFinished, this, &PlatformView::recompute);
+  connect(loop_, &QLineEdit::editingFinished, this, &PlatformView::user_changed);
   connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::recompute);
+  connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::user_changed);
+  connect(candidates_, &CandidatesPanel::selection_edited, this, &PlatformView::user_changed);
   connect(export_tex, &QPushButton::clicked, this, [this] { export_table(true); });
   connect(export_csv, &QPushButton::clicked, this, [this] { export_table(false); });
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int col) {
@@ -294,7 +307,19 @@ void PlatformView::set_workspace(const Workspace* ws) {
   if (has_tab_setup_) setups.insert(setups.begin(), setups_.front());
   setups_ = std::move(setups);
   fill_battery_choices();
-  recompute();
+  // The decision as the workspace keeps it (issue #43.2): what was set before closing is set again on opening.
+  std::optional<StoredDecision> stored;
+  QString problem;
+  if (ws) {
+    try {
+      stored = stored_decision(*ws);
+    } catch (const std::exception& e) {
+      // A stored value out of range (a hand-edited file): the defaults, and the reason said where the decision shows.
+      stored.reset();
+      problem = QString::fromUtf8(e.what());
+    }
+  }
+  apply_decision(stored, problem);
 }
 
 void PlatformView::set_battery_tab_setup(const BatterySetup& setup, bool modified) {
@@ -335,6 +360,63 @@ ComparisonOptions PlatformView::options() const {
   o.extra_load_w = extra_load_->value();
   o.mission = mission().toStdString();
   return o;
+}
+
+StoredDecision PlatformView::decision() const {
+  StoredDecision d;
+  if (use_budget_->isChecked()) d.power_budget_w = budget_->value();
+  if (use_fps_->isChecked()) d.min_fps = fps_->value();
+  if (use_runtime_->isChecked()) d.min_runtime_min = runtime_->value();
+  const QString battery = battery_->currentData().toString();
+  d.battery = battery.startsWith(QChar(0x01)) ? std::string() : battery.toStdString();
+  d.extra_load_w = extra_load_->value();
+  d.mission = mission().toStdString();
+  d.candidates = candidates_->selection().toStdString();
+  // The control loop as it counts: a requirement that does not parse is ignored by the verdicts (the summary says
+  // why), so it is not part of the decision either.
+  if (const auto loop = loop_requirement()) d.loop = loop->text;
+  return d;
+}
+
+void PlatformView::apply_decision(const std::optional<StoredDecision>& stored, const QString& problem) {
+  decision_problem_ = problem;
+  const StoredDecision d = stored.value_or(StoredDecision{});
+  {
+    const QSignalBlocker b1(use_budget_), b2(use_fps_), b3(use_runtime_), b4(budget_), b5(fps_), b6(runtime_),
+        b7(battery_), b8(extra_load_), b9(mission_), b10(use_loop_), b11(loop_);
+    use_budget_->setChecked(d.power_budget_w.has_value());
+    if (d.power_budget_w) budget_->setValue(*d.power_budget_w);
+    use_fps_->setChecked(d.min_fps.has_value());
+    if (d.min_fps) fps_->setValue(*d.min_fps);
+    use_runtime_->setChecked(d.min_runtime_min.has_value());
+    if (d.min_runtime_min) runtime_->setValue(*d.min_runtime_min);
+    // No stored requirement leaves the text as it is (the example, or what was typed) with the check box off.
+    use_loop_->setChecked(!d.loop.empty());
+    if (!d.loop.empty()) loop_->setText(QString::fromStdString(d.loop));
+    // "" follows the Battery tab (the first choice while it is known); a preset that is gone falls back to it too.
+    const int preset = d.battery.empty() ? -1 : battery_->findData(QString::fromStdString(d.battery));
+    battery_->setCurrentIndex(preset >= 0 ? preset : 0);
+    if (stored) {
+      extra_load_->setValue(d.extra_load_w);
+      mission_->setEditText(QString::fromStdString(d.mission));
+    } else if (has_tab_setup_) {  // nothing stored: the Battery tab's setup, as on a first start
+      extra_load_->setValue(setups_.front().extra_load_w);
+      mission_->setEditText(QString::fromStdString(setups_.front().mission));
+    } else {
+      extra_load_->setValue(0);
+      mission_->setEditText(QString());
+    }
+  }
+  candidates_->set_selection(QString::fromStdString(d.candidates));
+  recompute();
+  last_decision_ = decision();
+}
+
+void PlatformView::user_changed() {
+  const StoredDecision d = decision();
+  if (d == last_decision_) return;
+  last_decision_ = d;
+  emit decision_edited(d);
 }
 
 Constraints PlatformView::constraints() const {
@@ -425,6 +507,11 @@ void PlatformView::recompute() {
             : tr("Recommended: <b>%1</b> (the most compute among the platforms that meet every constraint).")
                   .arg(recommendation()));
   }
+  if (!decision_problem_.isEmpty())
+    summary_->setText(tr("<span style='color:#b00020'>The decision stored in the workspace could not be read (%1); "
+                         "the defaults are shown, and a change here replaces it.</span><br>")
+                          .arg(decision_problem_.toHtmlEscaped()) +
+                      summary_->text());
   // Logs that give no power are not in the power columns: say which and why (issue #32.2).
   QString left_out = left_out_logs_text(traces_->traces).toHtmlEscaped();
   if (!left_out.isEmpty())

@@ -9,6 +9,7 @@
 #include "model/dnn_run.h"
 #include "power/shared_traces.h"
 #include "store/battery_preset_store.h"
+#include "store/decision_store.h"
 
 class QCheckBox;
 class QComboBox;
@@ -74,8 +75,19 @@ class PlatformView : public QWidget {
   QLineEdit* loop_edit() const { return loop_; }
   const std::vector<headroom::LoopVerdict>& loop_verdicts() const { return loop_verdicts_; }
   std::optional<headroom::LoopRequirement> loop_requirement() const;  // null when off or mistyped
+  // What the controls say, as the workspace keeps it (store/decision_store.h): constraints, battery choice ("" while
+  // it follows the Battery tab), parallel load, mission, library candidates.
+  StoredDecision decision() const;
+  // Sets every control from the workspace's decision (nullopt: the defaults: no constraint, the Battery tab's pack,
+  // no candidates) without emitting decision_edited.
+  // `problem`: why the workspace's stored decision could not be read (said above the table, in red, until a decision
+  // is applied again); the defaults are shown then, and the next change replaces the damaged one.
+  void apply_decision(const std::optional<StoredDecision>& decision, const QString& problem = {});
 
  signals:
+  // The user changed a control that changes the decision (a check box, a value entered, the battery, the mission,
+  // the candidates): the window stores it in the workspace, one undo step each (issue #43.2).
+  void decision_edited(const bs::StoredDecision& decision);
   // The user asked where a cell's number came from (double-click): the platform and the column id.
   void source_requested(const PlatformRow& row, const QString& column);
 
@@ -85,6 +97,7 @@ class PlatformView : public QWidget {
   void export_table(bool latex);
   void fill_battery_choices();
   bool constrained() const;
+  void user_changed();  // emits decision_edited when the decision differs from the one last applied or emitted
 
   QCheckBox *use_budget_, *use_fps_, *use_runtime_;
   QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;
@@ -112,6 +125,8 @@ class PlatformView : public QWidget {
   QLineEdit* loop_ = nullptr;
   std::vector<headroom::HeadroomMeasurement> headroom_;
   std::vector<headroom::LoopVerdict> loop_verdicts_;
+  StoredDecision last_decision_;  // as last applied from the workspace or emitted
+  QString decision_problem_;      // the stored decision could not be read: why (empty when it could)
 };
 
 }  // namespace bs::ui

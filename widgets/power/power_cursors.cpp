@@ -77,6 +77,7 @@ void PowerCursors::place() {
 void PowerCursors::set(std::optional<double> a, std::optional<double> b) {
   a_ = a;
   b_ = b;
+  drawn_at_.reset();
   place();
   emit changed(true);
 }
@@ -139,6 +140,7 @@ void PowerCursors::press(QMouseEvent* e) {
   if (e->modifiers() & Qt::ShiftModifier) {  // a new selection from here
     a_ = x;
     b_ = x;
+    drawn_at_ = plot_->yAxis->pixelToCoord(e->position().y());
     drag_ = Drag::B;
   } else if (b_ && std::abs(plot_->xAxis->coordToPixel(*b_) - px) <= kGrabPx) {
     drag_ = Drag::B;

@@ -26,6 +26,9 @@ class PowerCursors : public QObject {
   std::optional<double> a() const { return a_; }
   std::optional<double> b() const { return b_; }
   bool has_selection() const { return a_ && b_ && *a_ != *b_; }
+  // The value-axis position where the last selection was drawn (Shift + press): the trace nearest to it is the one
+  // the user drew the selection on (a phase saved from it belongs to that log). nullopt: set by keys or set().
+  std::optional<double> drawn_at() const { return drawn_at_; }
   double from() const { return std::min(a_.value_or(0), b_.value_or(0)); }
   double to() const { return std::max(a_.value_or(0), b_.value_or(0)); }
   void set(std::optional<double> a, std::optional<double> b);  // emits changed(true)
@@ -52,6 +55,7 @@ class PowerCursors : public QObject {
   QPointer<QCPItemRect> band_;
   QPointer<QCPItemText> label_a_, label_b_;
   std::optional<double> a_, b_;
+  std::optional<double> drawn_at_;
   Drag drag_ = Drag::None;
   double mouse_x_ = 0;  // last mouse position on the time axis, for the A / B keys
 };

@@ -5,9 +5,7 @@
 #include <QClipboard>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLabel>
-#include <QLineEdit>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -37,16 +35,10 @@ PowerStatsPanel::PowerStatsPanel(const QString& placeholder, bool can_save_phase
   if (can_save_phase) {
     save_ = new QPushButton(tr("Save as phase…"), this);
     save_->setToolTip(
-        tr("Store the selection A–B as a named phase of every trace it covers, in the workspace: it "
-           "is then shaded, listed under Phases and printed by benchscope-cli power --phases"));
+        tr("Store the selection A–B as a named phase of the log it was drawn on (or another log it covers), in "
+           "the workspace: it is then shaded, listed under Phases and printed by benchscope-cli power --phases"));
     save_->setEnabled(false);
-    connect(save_, &QPushButton::clicked, this, [this] {
-      bool ok = false;
-      const QString name = QInputDialog::getText(this, tr("Save selection as phase"), tr("Phase name:"),
-                                                 QLineEdit::Normal, tr("selection"), &ok)
-                               .trimmed();
-      if (ok && !name.isEmpty()) emit save_phase(name);
-    });
+    connect(save_, &QPushButton::clicked, this, &PowerStatsPanel::save_phase_requested);
     top->addWidget(save_);
   }
   top->addWidget(copy_);

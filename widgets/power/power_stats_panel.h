@@ -3,7 +3,7 @@
 // A statistics table of time ranges (the Power tab's selection, or its phases): rows given as text by
 // analysis/range_table.h, so they are the same cells `benchscope-cli power --phases` prints, and a "Copy as table"
 // button that puts them on the clipboard tab-separated with units in the headers. Optionally a "Save as phase…"
-// button (the selection panel) that asks for a name and emits save_phase(name).
+// button (the selection panel) that emits save_phase_requested(); the Power tab asks the name and the log.
 #include <QWidget>
 #include <string>
 #include <vector>
@@ -28,7 +28,7 @@ class PowerStatsPanel : public QWidget {
   QPushButton* save_button() const { return save_; }
 
  signals:
-  void save_phase(const QString& name);
+  void save_phase_requested();
 
  private:
   QLabel* caption_;

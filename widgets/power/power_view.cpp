@@ -32,6 +32,7 @@
 #include "power/power_overlay.h"
 #include "power/power_stats_panel.h"
 #include "power/power_trace_drag.h"
+#include "power/save_phase_dialog.h"
 #include "store/battery_preset_store.h"
 
 namespace bs::ui {
@@ -53,8 +54,11 @@ double start_epoch_s(const PowerTrace& t) {
   return static_cast<double>(when.toMSecsSinceEpoch()) / 1000.0;
 }
 
-QString platform_name(const PowerTrace& t) {
-  return t.platform.empty() ? QString::fromStdString(t.label) : QString::fromStdString(t.platform);
+// A log as the tables name it: its platform and its own name ("NUC — nuc-current.csv"), since a platform may have
+// several logs (issue #43.4: "NUC, NUC, Jetson TX2, Jetson TX2" told nothing apart).
+QString log_name(const PowerTrace& t) {
+  if (t.platform.empty()) return QString::fromStdString(t.label);
+  return QStringLiteral("%1 — %2").arg(QString::fromStdString(t.platform), QString::fromStdString(t.label));
 }
 
 }  // namespace
@@ -115,10 +119,7 @@ PowerView::PowerView(QWidget* parent)
   });
   connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { rescale(); });
   connect(cursors_, &PowerCursors::changed, this, [this](bool final) { update_selection(final); });
-  connect(selection_, &PowerStatsPanel::save_phase, this, [this](const QString& name) {
-    if (save_selection_as_phase(name) == 0)
-      QMessageBox::information(this, tr("Save as phase"), tr("The selection does not overlap any visible trace."));
-  });
+  connect(selection_, &PowerStatsPanel::save_phase_requested, this, [this] { ask_save_phase(); });
   connect(overlay_, &PowerOverlayPanel::changed, this, [this] { overlay_changed(); });
   connect(trace_drag_, &PowerTraceDrag::dragged, this, [this](std::size_t trace, double by_s, bool final) {
     if (!drag_base_s_) drag_base_s_ = overlay_->offset(trace);  // the offset at the press
@@ -203,6 +204,14 @@ void PowerView::read_battery() {
           .arg(battery_name_));
 }
 
+QString PowerView::legend_name(std::size_t i) const {
+  // The platform alone while it has one log here; with several, each log's own name too.
+  const PowerTrace& t = trace(i);
+  std::size_t same = 0;
+  for (std::size_t k = 0; k < count(); ++k) same += trace(k).platform == t.platform ? 1 : 0;
+  return same > 1 || t.platform.empty() ? log_name(t) : QString::fromStdString(t.platform);
+}
+
 double PowerView::offset(std::size_t trace) const {
   return (wall_clock_on_ ? start_epoch_[trace] : 0.0) + overlay_->offset(trace);
 }
@@ -257,7 +266,7 @@ void PowerView::set_data(SharedTraces traces, std::vector<PeakRow> peaks,
     const QSignalBlocker block(overlay_);
     std::vector<QString> names;
     std::vector<std::vector<TracePhase>> phases;
-    for (std::size_t i = 0; i < count(); ++i) names.push_back(platform_name(trace(i)));
+    for (std::size_t i = 0; i < count(); ++i) names.push_back(log_name(trace(i)));
     overlay_->set_traces(names, trace_phases_);
   }
   const bool detect = detect_box_->isChecked();
@@ -365,7 +374,7 @@ void PowerView::set_quantity(Quantity q) {
   plot_->yAxis->setLabel(current ? tr("Current (A)") : tr("Power (W)"));
   for (std::size_t i = 0; i < count() && i < static_cast<std::size_t>(plot_->graphCount()); ++i) {
     const QString missing = current ? tr(" (no current channel)") : tr(" (power unknown: no supply voltage)");
-    plot_->graph(static_cast<int>(i))->setName(platform_name(trace(i)) + (shown(i) ? QString() : missing));
+    plot_->graph(static_cast<int>(i))->setName(legend_name(i) + (shown(i) ? QString() : missing));
   }
   rescale();
   update_selection(true);
@@ -438,7 +447,7 @@ void PowerView::update_table() {
     const auto mean_sd = [](const std::optional<Summary>& v) {
       return v ? QStringLiteral("%1 ± %2").arg(v->mean, 0, 'f', 2).arg(v->sd, 0, 'f', 2) : QStringLiteral("–");
     };
-    cell(0, platform_name(t) + QStringLiteral(" (%1)").arg(QString::fromUtf8(to_string(t.provenance.origin).data())));
+    cell(0, log_name(t) + QStringLiteral(" (%1)").arg(QString::fromUtf8(to_string(t.provenance.origin).data())));
     cell(1, QLocale().toString(static_cast<qulonglong>(ps.n)));
     cell(2, mean_sd(current_a));
     cell(3, mean_sd(power_w));
@@ -484,11 +493,11 @@ void PowerView::update_selection(bool final) {
     const bool with_pct = final || last - first <= kLivePercentileSamples;
     const PowerStats s = index_[i].stats(from, to, with_pct);
     selection_stats_.emplace_back(i, s);
-    std::vector<std::string> row = {platform_name(trace(i)).toStdString()};
+    std::vector<std::string> row = {log_name(trace(i)).toStdString()};
     for (std::string& c : range_cells(s, signal)) row.push_back(std::move(c));
     rows.push_back(std::move(row));
     tips.push_back(tr("%1: %2 .. %3 s of its own time; %4")
-                       .arg(platform_name(trace(i)))
+                       .arg(log_name(trace(i)))
                        .arg(s.from_s, 0, 'f', 3)
                        .arg(s.to_s, 0, 'f', 3)
                        .arg(QString::fromUtf8(to_string(s.power_source).data())));
@@ -525,7 +534,7 @@ void PowerView::update_phase_table() {
       char from[32], to[32];
       std::snprintf(from, sizeof from, "%.3f", p.start_s);
       std::snprintf(to, sizeof to, "%.3f", p.end_s);
-      std::vector<std::string> cells = {p.name, platform_name(trace(i)).toStdString(), p.origin, from, to};
+      std::vector<std::string> cells = {p.name, log_name(trace(i)).toStdString(), p.origin, from, to};
       // A phase the sensor sampled fewer than 10 times is marked (issue #32.4), as in the Kernel Runner and the CLI.
       for (std::string& c : range_cells(p.stats, signal, true)) cells.push_back(std::move(c));
       rows.push_back({static_cast<std::size_t>(it - groups.begin()), std::move(cells)});
@@ -544,11 +553,63 @@ void PowerView::update_phase_table() {
                      headers, cells);
 }
 
-int PowerView::save_selection_as_phase(const QString& name) {
-  if (!cursors_->has_selection() || name.trimmed().isEmpty()) return 0;
-  int saved = 0;
+std::vector<std::size_t> PowerView::selection_logs() const {
+  std::vector<std::size_t> out;
+  if (!cursors_->has_selection()) return out;
   for (std::size_t i = 0; i < count(); ++i) {
     if (!overlay_->visible(i) || !index_[i].main()) continue;
+    const TraceIndex& main = *index_[i].main();
+    if (std::min(cursors_->to() - offset(i), main.last_s()) > std::max(cursors_->from() - offset(i), main.first_s()))
+      out.push_back(i);
+  }
+  return out;
+}
+
+std::size_t PowerView::drawn_on(const std::vector<std::size_t>& logs) const {
+  // The log whose plotted value where the selection began lies nearest to where the mouse pressed: the one the user
+  // drew on. Without a press (keys, set()), the first.
+  const std::optional<double> y = cursors_->drawn_at();
+  const std::optional<double> x = cursors_->a();
+  std::size_t best = 0;
+  double best_gap = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; y && x && k < logs.size(); ++k) {
+    const TraceIndex* v = shown(logs[k]);
+    if (!v || v->empty()) continue;
+    const double gap = std::abs(v->value_at(*x - offset(logs[k])) - *y);
+    if (gap < best_gap) {
+      best_gap = gap;
+      best = k;
+    }
+  }
+  return best;
+}
+
+void PowerView::ask_save_phase() {
+  const std::vector<std::size_t> logs = selection_logs();
+  if (logs.empty()) {
+    QMessageBox::information(this, tr("Save as phase"), tr("The selection does not overlap any visible log."));
+    return;
+  }
+  std::vector<QString> names;
+  for (std::size_t i : logs) names.push_back(log_name(trace(i)));
+  SavePhaseDialog dialog(names, drawn_on(logs), this);
+  if (dialog.exec() != QDialog::Accepted || dialog.name().isEmpty()) return;
+  std::vector<std::size_t> chosen;
+  for (std::size_t k : dialog.chosen()) chosen.push_back(logs[k]);
+  save_selection_as_phase(dialog.name(), chosen);
+}
+
+int PowerView::save_selection_as_phase(const QString& name) {
+  const std::vector<std::size_t> logs = selection_logs();
+  if (logs.empty()) return 0;
+  return save_selection_as_phase(name, {logs[drawn_on(logs)]});
+}
+
+int PowerView::save_selection_as_phase(const QString& name, const std::vector<std::size_t>& logs) {
+  if (!cursors_->has_selection() || name.trimmed().isEmpty()) return 0;
+  int saved = 0;
+  for (std::size_t i : logs) {
+    if (i >= count() || !index_[i].main()) continue;
     const TraceIndex& main = *index_[i].main();
     const double from = std::max(cursors_->from() - offset(i), main.first_s());
     const double to = std::min(cursors_->to() - offset(i), main.last_s());

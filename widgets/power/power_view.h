@@ -68,9 +68,14 @@ class PowerView : public QWidget {
   void set_detected_phases(bool on);
   // The selection's statistics per trace (index into the traces given to set_data), as last shown.
   const std::vector<std::pair<std::size_t, PowerStats>>& selection_stats() const { return selection_stats_; }
-  // Saves the selection A–B as phase `name` of every visible trace it overlaps (in the workspace when there is
-  // one); returns how many traces got it.
+  // Saves the selection A–B as phase `name` of the log it was drawn on (issue #43.4: a phase belongs to one log,
+  // not to every log it overlaps), in the workspace when there is one; returns how many logs got it (0 or 1).
   int save_selection_as_phase(const QString& name);
+  // The same on the given logs (indexes into the traces given to set_data); the dialog's answer.
+  int save_selection_as_phase(const QString& name, const std::vector<std::size_t>& logs);
+  // The visible logs the selection covers, and which of them (an index into that list) it was drawn on.
+  std::vector<std::size_t> selection_logs() const;
+  std::size_t drawn_on(const std::vector<std::size_t>& logs) const;
   double battery_volts() const { return battery_volts_; }
   double battery_ah() const { return battery_ah_; }
 
@@ -86,8 +91,10 @@ class PowerView : public QWidget {
   void rescale();
   void place_phase_markers();
   void read_battery();
+  void ask_save_phase();  // "Save as phase…": the name and the log, then save_selection_as_phase
   void overlay_changed();
   double offset(std::size_t trace) const;
+  QString legend_name(std::size_t trace) const;  // the platform, and the log's name where the platform has several
   std::size_t count() const { return traces_->traces.size(); }
   const PowerTrace& trace(std::size_t i) const { return traces_->traces[i]; }
   // The quantity shown (current or power) of trace i as its range index; nullptr when the trace has none.

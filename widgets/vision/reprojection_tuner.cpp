@@ -2,6 +2,7 @@
 #include "vision/reprojection_tuner.h"
 
 #include "common/wrapping_tool_bar.h"
+#include "vision/lens/lens_limits.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -216,12 +217,28 @@ void ReprojectionTuner::build_ui() {
 
   status_ = new QLabel;
   status_->setWordWrap(true);
+  // Issue #43.8: a checkerboard lens used beyond the angle its corners covered says so, whatever else is shown.
+  extrapolation_ = new QLabel;
+  extrapolation_->setObjectName(QStringLiteral("extrapolationNote"));
+  extrapolation_->setWordWrap(true);
+  extrapolation_->setStyleSheet(QStringLiteral("color: #8a4b00"));
+  extrapolation_->hide();
   auto* lay = new QVBoxLayout(this);
   lay->setContentsMargins(0, 0, 0, 0);
   // The actions wrap onto a second row on a narrow window instead of hiding behind "»" (issue #32.7).
   lay->addWidget(new WrappingToolBar(bar, this));
   lay->addWidget(split, 1);
+  lay->addWidget(extrapolation_);
   lay->addWidget(status_);
+}
+
+QString ReprojectionTuner::extrapolation_note() const { return extrapolation_->text(); }
+
+void ReprojectionTuner::update_extrapolation_note() {
+  const auto& p = state_.params();
+  const std::string note = vision::extrapolation_note(p.lens, p.view);
+  extrapolation_->setText(note.empty() ? QString() : tr("⚠ The calibration: %1.").arg(QString::fromStdString(note)));
+  extrapolation_->setVisible(!note.empty());
 }
 
 QWidget* ReprojectionTuner::build_controls() {
@@ -534,6 +551,7 @@ void ReprojectionTuner::change(const std::string& field, const std::function<voi
 void ReprojectionTuner::state_changed() {
   sync_controls();
   update_overlays();
+  update_extrapolation_note();
   undo_->setEnabled(state_.can_undo());
   redo_->setEnabled(state_.can_redo());
   line_label_->setText(line_residual_text());  // the picked points move with the lens
@@ -737,6 +755,11 @@ std::optional<vision::ImageCircle> ReprojectionTuner::auto_calibrate() {
               .arg(off * 100, 0, 'f', 1)
               .arg(state_.params().lens.fov_deg, 0, 'g', 4);
   }
+  // Issue #43.8: a checkerboard lens's own field-of-view circle against the rim this frame shows, with both numbers.
+  if (reference_ && reference_->calibration.method == vision::LensCalibration::Method::Checkerboard)
+    if (const auto rim = vision::compare_with_rim(*reference_, *circle_); rim && rim->disagrees)
+      circle_warning_ += (circle_warning_.isEmpty() ? QString() : QStringLiteral(" ")) +
+                         tr("⚠ The calibrated lens %1: %2.").arg(reference_source_, QString::fromStdString(rim->text));
   status_->setText(circle_warning_.isEmpty()
                        ? text
                        : text + "<br><span style='color:#b00020'>" + circle_warning_.toHtmlEscaped() + "</span>");

@@ -67,6 +67,8 @@ class ReprojectionTuner : public QWidget {
   std::optional<vision::ImageCircle> auto_calibrate();
   void set_reference_lens(const std::optional<vision::Lens>& lens, const QString& source);
   QString circle_warning() const { return circle_warning_; }  // empty when none
+  // Shown while the view reaches beyond the angle a checkerboard lens's corners covered (issue #43.8); empty else.
+  QString extrapolation_note() const;
   QDoubleSpinBox* circle_fov_box() const { return circle_fov_; }
   QString status_text() const;
   // Straight-line tool: points clicked on the output preview (output pixels), kept as source pixels, so they stay
@@ -142,6 +144,8 @@ class ReprojectionTuner : public QWidget {
   std::optional<vision::ImageCircle> circle_;
   std::optional<vision::Lens> reference_;  // the frame's lens in the workspace, for Detect circle's comparison
   QString reference_source_, circle_warning_;
+  QLabel* extrapolation_ = nullptr;
+  void update_extrapolation_note();
   bool new_line_pending_ = false;  // the next click starts a line (else it goes to the last one)
   int selected_ = -1;
   std::vector<vision::PickedLine> left_out_;  // lines the last fit rejected, drawn red while they are picked

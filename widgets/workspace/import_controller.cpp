@@ -29,6 +29,12 @@ QString duplicate_reason(const FileOutcome& f) {
       .arg(QString::fromStdString(f.earlier_imported_at.substr(0, 10)), as);
 }
 
+// "/long/path/cut.csv:5: ..." -> "cut.csv:5: ...": the message names the file as the user knows it.
+QString short_warning(const std::string& warning, const std::string& path) {
+  const QString w = QString::fromStdString(warning);
+  return warning.rfind(path, 0) == 0 ? file_name(path) + w.mid(static_cast<qsizetype>(path.size())) : w;
+}
+
 ImportReport report_of(const ImportResult& result) {
   ImportReport report;
   report.cancelled = result.cancelled;
@@ -36,6 +42,7 @@ ImportReport report_of(const ImportResult& result) {
     switch (f.kind) {
       case FileOutcome::Kind::Imported:
         ++report.imported;
+        for (const std::string& w : f.warnings) report.warnings << short_warning(w, f.path);
         break;
       case FileOutcome::Kind::Duplicate:
         report.skipped << file_name(f.path) + ": " + duplicate_reason(f);
@@ -61,10 +68,13 @@ ImportMessage import_message(const ImportReport& r) {
       QObject::tr("Imported %n file(s)", nullptr, r.imported) +
       (r.skipped.isEmpty() ? QString() : QObject::tr(", skipped %n", nullptr, static_cast<int>(r.skipped.size()))) +
       (r.failures.isEmpty() ? QString() : QObject::tr(", %n failed", nullptr, static_cast<int>(r.failures.size()))) +
+      (r.warnings.isEmpty() ? QString()
+                            : QObject::tr(", %n warning(s)", nullptr, static_cast<int>(r.warnings.size()))) +
       (r.cancelled ? QObject::tr(" (cancelled)") : QString());
   QStringList all;
   for (const QString& f : r.failures) all << QObject::tr("failed: %1").arg(f);
   for (const QString& s : r.skipped) all << QObject::tr("skipped %1").arg(s);
+  for (const QString& w : r.warnings) all << QObject::tr("warning: %1").arg(w);
   if (all.size() <= kFewProblems)
     m.lines = all;
   else
@@ -111,6 +121,8 @@ ImportReport ImportController::import_now(const QString& workspace_path, const Q
   }
 }
 
+QWidget* ImportController::question_parent() const { return progress_ ? progress_.data() : window_; }
+
 void ImportController::start(const QString& workspace_path, const QStringList& paths) {
   if (running_) return;
   running_ = true;
@@ -122,6 +134,7 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
   dialog->setMinimumWidth(480);
   connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->cancel(); });
   QPointer<QProgressDialog> guard(dialog);
+  progress_ = dialog;
   // The bar counts thousandths of files: a single 100-million-row log moves it too (the reader and the store
   // report through the cancel token, CancelToken::report), not only the step to the next file.
   struct Where {
@@ -161,18 +174,34 @@ void ImportController::start(const QString& workspace_path, const QStringList& p
   auto* watcher = new QFutureWatcher<ImportReport>(this);
   connect(watcher, &QFutureWatcher<ImportReport>::finished, this, [this, watcher, dialog] {
     const ImportReport report = watcher->result();
+    // Hidden now, not only deleted later: a message box about the import must not open under a modal dialog
+    // that a deferred delete (which waits for the outer event loop) has not removed yet.
+    dialog->hide();
     dialog->deleteLater();
+    progress_ = nullptr;
     watcher->deleteLater();
     running_ = false;
     emit finished(report);
   });
   // The question about a log's platform is asked on the GUI thread; the importing thread waits for the answer.
+  // The progress dialog is shown first and says what it waits for; the question opens over it, as its child, so
+  // it is the last modal dialog shown and takes the input (a window-modal dialog shown after it would block it).
   LogPlatformChooser ask;
   if (choose_platform_)
-    ask = [this](const QString& log, const QString& path, const QString& guess, const QStringList& known) {
+    ask = [this, guard](const QString& log, const QString& path, const QString& guess, const QStringList& known) {
       QString answer;
       QMetaObject::invokeMethod(
-          this, [&] { answer = choose_platform_(log, path, guess, known); }, Qt::BlockingQueuedConnection);
+          this,
+          [&] {
+            if (guard) {
+              guard->setLabelText(
+                  tr("Waiting for your answer: which platform %1 belongs to").arg(QFileInfo(path).fileName()));
+              guard->show();
+              guard->raise();
+            }
+            answer = choose_platform_(log, path, guess, known);
+          },
+          Qt::BlockingQueuedConnection);
       return answer;
     };
   watcher->setFuture(

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <QObject>
+#include <QPointer>
 #include <QStringList>
 #include <functional>
 #include <memory>
@@ -20,14 +21,16 @@ struct ImportReport {
   int imported = 0;
   QStringList skipped;   // "file name: reason" (already imported, not a data file)
   QStringList failures;  // one line per failed file: the importer's "file:line: field: reason"
+  QStringList warnings;  // of the imported files, each naming file:line ("cut.csv:5: the last line ... cut off")
   bool cancelled = false;
 };
 
 // The words shown after an import. With few skipped or failed files each one's reason is in `lines` (shown in
 // the message itself); with many, `lines` is empty and `details` lists them all.
 struct ImportMessage {
-  QString headline;   // "Imported 3 files, skipped 1"
-  QStringList lines;  // "skipped nuc.csv: already imported on 2026-11-20 (same content)", "failed: bad.json:3: ..."
+  QString headline;   // "Imported 3 files, skipped 1, 1 warning"
+  QStringList lines;  // "skipped nuc.csv: already imported on 2026-11-20 (same content)", "failed: bad.json:3: ...",
+                      // "warning: cut.csv:5: the last line has no line ending ..."
   QString details;    // every skip and failure, one per line; empty when `lines` says it all
 };
 ImportMessage import_message(const ImportReport& report);
@@ -56,7 +59,12 @@ class ImportController : public QObject {
                                  const std::optional<RawFrameOptions>& raw_geometry = std::nullopt,
                                  const LogPlatformChooser& choose_platform = {});
   // What start() asks about a log without a platform; called on the GUI thread (the import waits for the answer).
+  // While it asks, the progress dialog is shown and says it waits for the answer, and the question's parent is the
+  // progress dialog (question_parent()): a question never opens under the progress dialog, where a window-modal
+  // progress dialog shown after it would take every click and key (issue #43.1).
   void set_log_platform_chooser(LogPlatformChooser chooser) { choose_platform_ = std::move(chooser); }
+  // The window a question asked during start() belongs to: the progress dialog while one runs, else the window.
+  QWidget* question_parent() const;
   // How start() stores the frames it imports (File > Copy imported frames into the workspace).
   void set_frame_storage(FrameStorage storage) { frame_storage_ = storage; }
   FrameStorage frame_storage() const { return frame_storage_; }
@@ -72,6 +80,7 @@ class ImportController : public QObject {
   FrameStorage frame_storage_ = FrameStorage::Reference;
   std::optional<RawFrameOptions> raw_geometry_;
   LogPlatformChooser choose_platform_;
+  QPointer<QWidget> progress_;  // the running import's progress dialog
 };
 
 }  // namespace bs::ui

@@ -282,7 +282,7 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
   if (args.has("--json")) {
     out << nlohmann::json{{"format", "benchscope-candidates"},
                           {"version", 1},
-                          {"battery", pa.pack->name},
+                          {"battery", pa.pack.name},
                           {"candidates", candidates_json(classes, peaks)}}
                .dump(2)
         << '\n';
@@ -298,7 +298,7 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
       out << "  " << lib.computer_name(r->computer) << ": " << library_result_summary(*r) << "\n    " << r->source.url
           << '\n';
   }
-  out << "battery: " << pa.pack->name << ", constant-power model at each row's power\n";
+  out << "battery: " << pa.pack.name << ", constant-power model at each row's power\n";
   return 0;
 }
 

@@ -2,6 +2,7 @@
 // benchscope-cli platforms: one column per platform (peaks, power, GFLOPS/W, pipeline, energy per frame, battery),
 // and with constraints the recommendation: which platforms meet them, which constraint each one fails and by how
 // much, and the one to pick.
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -19,6 +20,7 @@
 #include "headroom/headroom_table.h"
 #include "platform/candidates_cli.h"
 #include "platform/platform_args.h"
+#include "store/decision_store.h"
 #include "workspace/inputs.h"
 
 namespace bs::cli {
@@ -110,16 +112,40 @@ void print_loop(std::ostream& out, const headroom::LoopRequirement& r, const std
 
 int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   std::set<std::string> values = platform_value_options();
-  values.insert({"--latex", "--csv", "--library", "--candidates-csv", "--candidates-latex"});
-  const ParsedArgs args = parse_args(raw, {"--json"}, values);
+  values.insert({"--latex", "--csv", "--library", "--candidates-csv", "--candidates-latex", "--use-log"});
+  const ParsedArgs args = parse_args(raw, {"--json", "--no-stored", "--store"}, values);
   if (args.positional.empty()) throw UsageError("platforms needs a workspace or files");
-  const PlatformArgs platform_args = parse_platform_args(args);
-  const BatteryPack* pack = platform_args.pack;
+  const bool one_workspace = args.positional.size() == 1 && looks_like_workspace(args.positional[0]);
+  if (args.has("--store") && !one_workspace) throw UsageError("--store needs one workspace (WORKSPACE.bsw)");
+  PlatformArgs platform_args = parse_platform_args(args);
+  const BatteryPack* pack = &platform_args.pack;
   const ComparisonOptions& options = platform_args.options;
   const Constraints& c = platform_args.constraints;
   const bool constrained = platform_args.constrained();
 
-  const LoadedData data = load_inputs(args.positional, interrupt_token());
+  LoadedData data = load_inputs(args.positional, interrupt_token());
+  // --use-log NUC=nuc-second-session.csv: that log for the NUC's numbers (with --store, from now on).
+  if (const auto spec = args.value("--use-log")) {
+    const std::size_t at = use_log(data.power_traces, *spec);
+    platform_args.chosen_log_platforms.push_back(data.power_traces[at].platform);
+  }
+  // --store: the options in effect become the workspace's decision, as the GUI's Platforms tab keeps it.
+  if (args.has("--store")) {
+    Workspace ws(args.positional[0]);
+    const StoredDecision d = decision_to_store(platform_args);
+    set_stored_decision(ws, d);
+    if (const auto spec = args.value("--use-log")) {
+      const std::string platform = spec->substr(0, spec->find('=')), label = spec->substr(spec->find('=') + 1);
+      for (const StoredPowerTrace& t : ws.power_trace_summaries())
+        if (t.trace.platform == platform && t.trace.label == label) {
+          set_chosen_log(ws, platform, t.id);
+          break;
+        }
+    }
+    const std::string words = describe_constraints(d);
+    std::cerr << "platforms: stored in " << args.positional[0] << ": " << (words.empty() ? "no constraints" : words)
+              << (args.value("--use-log") ? "; power log " + *args.value("--use-log") : std::string()) << '\n';
+  }
   const auto pipelines = pipeline_timings(data.pipeline_runs);
   const auto rows = compare_platforms(data.runs, data.power_traces, pipelines, options);
   if (rows.empty()) throw std::runtime_error("no FLOPS runs or power logs to compare");
@@ -139,9 +165,11 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   // Candidates: the own platforms beside the library's published results named by --library.
   std::vector<CandidateClass> classes;
   std::vector<PeakClass> peaks;
-  const bool with_library = args.value("--library").has_value();
+  // The library computers given, else those the workspace's Platforms tab stored.
+  const std::string library = args.value("--library").value_or(platform_args.library);
+  const bool with_library = !library.empty();
   if (with_library) {
-    const CandidateInputs in = library_candidate_inputs(rows, data, *args.value("--library"));
+    const CandidateInputs in = library_candidate_inputs(rows, data, library);
     classes = rank_candidates(in, c, options);
     peaks = peak_candidates(in);
     if (const auto p = args.value("--candidates-latex"))
@@ -181,6 +209,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"ranked_flops", verdicts[i].ranked_flops},
                       {"ranking_note", verdicts[i].ranking_note},
                       {"checks", checks_json(verdicts[i].checks)},
+                      {"power_log", r.power_log},
+                      {"power_logs", r.power_logs},
                       {"sources", sources},
                       {"power_measurement", r.power_measurement},
                       {"flags", flags_json(r.all_flags())},
@@ -191,6 +221,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                           {"battery", pack->name},
                           {"extra_load_w", options.extra_load_w},
                           {"mission", options.mission},
+                          {"stored_in_workspace", platform_args.stored},
+                          {"library", library},
                           {"platforms", list},
                           {"candidates", with_library ? candidates_json(classes, peaks) : nlohmann::json(nullptr)},
                           {"control_loop",
@@ -210,6 +242,14 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     text.add(line);
   }
   text.print(out);
+  // Which log each platform's power comes from, where it has several (the one chosen in the GUI, else its first).
+  for (const PlatformRow& r : rows)
+    if (r.power_logs > 1) {
+      const auto& chosen = platform_args.chosen_log_platforms;
+      out << "power log of " << r.platform << ": " << r.power_log << " ("
+          << (std::find(chosen.begin(), chosen.end(), r.platform) != chosen.end() ? "chosen" : "the first") << " of "
+          << r.power_logs << " logs)\n";
+    }
   if (!table.notes.empty()) {
     out << "\nFlags (implausible numbers; docs/cli.md, \"Plausibility flags\"):\n";
     for (const std::string& n : table.notes) out << "  \xE2\x9A\xA0" << n << '\n';
@@ -240,6 +280,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     print_candidates(out, classes, peaks, constrained);
   }
   if (platform_args.loop) print_loop(out, *platform_args.loop, loop);
+  if (!platform_args.stored.empty())
+    out << "stored in the workspace (Platforms tab; --no-stored ignores it): " << platform_args.stored << '\n';
   if (constrained) {
     std::string chosen;
     for (const auto& v : verdicts)
@@ -258,7 +300,7 @@ const CommandRegistrar registrar({
     "                                [--battery PRESET] [--extra-load W] [--mission SPEC] [--supply-volts V]\n"
     "                                [--latex FILE] [--csv FILE] [--json]\n"
     "                                [--library COMPUTERS [--candidates-csv FILE] [--candidates-latex FILE]]\n"
-    "                                [--require-loop SPEC]\n"
+    "                                [--require-loop SPEC] [--no-stored] [--use-log PLATFORM=LOG] [--store]\n"
     "  One column per platform: best GPU and CPU peak, % of theoretical peak, pipeline timings, mean and max power,\n"
     "  GFLOPS/W (the paper's peak / max power, and peak / mean power), energy per frame, battery runtime\n"
     "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh (frames\n"
@@ -280,7 +322,14 @@ const CommandRegistrar registrar({
     "  headroom measurement (benchscope-cli headroom): a loop RATE, limits p50|p99|p99.9|p99.99|max<=TIME (ns, us,\n"
     "  ms), misses<=PERCENT%, max-consecutive-misses<=N, in the phase load=PHASE (absent: every phase, the worst\n"
     "  decides). Platforms are ranked (passing, failing by how much, unknown); one without a measurement is unknown\n"
-    "  and never passes; the recommendation counts the requirement like the other constraints.",
+    "  and never passes; the recommendation counts the requirement like the other constraints.\n"
+    "  A workspace keeps what its Platforms tab set (constraints, the control loop among them, battery, parallel\n"
+    "  load, mission, library candidates, the power log chosen per platform): options not given here take those\n"
+    "  values, and the output says which; constraints given here (--require-loop too) replace the stored ones as a\n"
+    "  whole. --no-stored ignores them (the chosen logs still count).\n"
+    "  --use-log NUC=nuc-second-session.csv takes that log for the platform's power (a platform has one power column:\n"
+    "  its chosen log, else its first). --store keeps the options in effect (and --use-log) in the workspace, as the\n"
+    "  Platforms tab does: the GUI, `report` and later runs then use them.",
     out_only<run_platforms>,
 });
 

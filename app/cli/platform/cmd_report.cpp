@@ -32,7 +32,7 @@ bool ends_with(const std::string& s, const std::string& tail) {
 int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
   std::set<std::string> values = platform_value_options();
   values.insert({"--out", "--pdf", "--preset", "--width-mm", "--height-mm", "--font-pt", "--template", "--library"});
-  const ParsedArgs args = parse_args(raw, {"--quiet"}, values);
+  const ParsedArgs args = parse_args(raw, {"--quiet", "--no-stored"}, values);
   if (args.positional.empty()) throw UsageError("report needs a workspace or files");
   std::string html = args.value("--out").value_or("");
   std::string pdf = args.value("--pdf").value_or("");
@@ -55,7 +55,10 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   // The "Candidates" section: the library's results named by --library beside the own platforms.
   std::vector<CandidateClass> classes;
   std::vector<PeakClass> peaks;
-  const auto spec = args.value("--library");
+  // The library computers given, else those the workspace's Platforms tab stored.
+  const auto spec = args.value("--library")    ? args.value("--library")
+                    : platform.library.empty() ? std::nullopt
+                                               : std::optional<std::string>(platform.library);
   if (spec) {
     const auto rows = compare_platforms(fd.runs, fd.traces, fd.pipelines, platform.options);
     const CandidateInputs in = library_candidate_inputs(rows, data, *spec);
@@ -84,7 +87,10 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   request.comparison = platform.options;
   request.candidates = std::move(candidates);
   request.loop = platform.loop;
+  request.chosen_log_platforms = platform.chosen_log_platforms;
   const bool quiet = args.has("--quiet");
+  if (!quiet && !platform.stored.empty())
+    err << "report: stored in the workspace (Platforms tab; --no-stored ignores it): " << platform.stored << '\n';
   const QStringList files =
       ui::write_report(request, templates, fd, o, interrupt_token(), [&](int done, int total, const QString& what) {
         if (!quiet) err << "\r[" << done << "/" << total << "] " << what.toStdString() << "        " << std::flush;
@@ -102,7 +108,7 @@ const CommandRegistrar registrar({
     "                             [--budget W] [--min-fps FPS] [--min-runtime MIN] [--battery PRESET]\n"
     "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt "
     "8]\n"
-    "                             [--library COMPUTERS] [--require-loop SPEC] [--quiet]\n"
+    "                             [--library COMPUTERS] [--require-loop SPEC] [--no-stored] [--quiet]\n"
     "  --require-loop: a control-loop requirement as in `platforms` (a section \"Control-loop headroom\" with each\n"
     "  headroom measurement and the verdict per platform; unknown never passes).\n"
     "  The platform comparison, then one page per platform: best GPU and CPU peak with device, backend and % of\n"
@@ -113,6 +119,7 @@ const CommandRegistrar registrar({
     "  PDF is A4, printed by Qt. With constraints, the recommended platform is named. --out report.pdf alone\n"
     "  writes only the PDF. --library orin,pi5 adds a \"Candidates\" section: published results from the library\n"
     "  beside the own platforms, ranked like with like under the same constraints (as `platforms --library`).\n"
+    "  A workspace's stored Platforms-tab settings and chosen power logs apply as in `platforms` (--no-stored).\n"
     "  Needs a build with Qt.",
     run_report,
 });

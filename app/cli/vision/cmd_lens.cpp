@@ -19,6 +19,7 @@
 #include "vision/frames/frame_image.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/edge_proposals.h"
+#include "vision/lens/lens_limits.h"
 #include "vision/lens/line_fit.h"
 #include "vision/lens/straight_line.h"
 #include "vision/lens/tuner_state.h"
@@ -277,6 +278,8 @@ int lens_show(const std::vector<std::string>& raw, std::ostream& out) {
                 1 / l.r_pp, l.k[0], l.k[1], l.k[2], l.k[3], p.view.width, p.view.height, p.view.fov_deg, p.view.yaw_deg,
                 p.view.pitch_deg, p.view.roll_deg, p.masks.size());
   out << text << "calibration: " << vision::describe(l.calibration) << '\n';
+  // Issue #43.8: the view against the angle a checkerboard's corners covered.
+  if (const std::string note = vision::extrapolation_note(l, p.view); !note.empty()) out << "warning: " << note << '\n';
   return 0;
 }
 

@@ -66,6 +66,24 @@ int lens_calibrate(const std::vector<std::string>& raw, std::ostream& out, std::
                 l.cx, l.cy, l.k[0], l.k[1], l.k[2], l.k[3], result.fx, result.fy, result.fy / result.fx,
                 result.free_rms_px, l.fov_deg);
   out << line;
+  // Issue #43.8: where the fit holds (the corners' angle) and how it compares with the images' own rim.
+  std::snprintf(line, sizeof line, "  corners up to %.1f deg off the axis (beyond it the model is extrapolated)",
+                l.calibration.covered_deg.value_or(result.max_theta_deg));
+  out << line;
+  if (l.calibration.rim_radius_se_px) {
+    std::snprintf(line, sizeof line, "; FOV circle radius SE %.2f px (leave-one-image-out)",
+                  *l.calibration.rim_radius_se_px);
+    out << line;
+  }
+  out << '\n';
+  if (result.rim) {
+    std::snprintf(line, sizeof line,
+                  "  FOV circle: radius %.1f px at (%.1f, %.1f); images' rim: radius %.1f px at (%.1f, %.1f)%s\n",
+                  result.rim->fitted_radius_px, result.rim->fitted_centre.x, result.rim->fitted_centre.y,
+                  result.rim->rim_radius_px, result.rim->rim_centre.x, result.rim->rim_centre.y,
+                  result.rim->disagrees ? " (they disagree: see the warning)" : " (they agree)");
+    out << line;
+  }
   for (const auto& warning : result.warnings) out << "warning: " << warning << '\n';
   p.lens = l;
   vision::save_tuner_json(p, *out_path);

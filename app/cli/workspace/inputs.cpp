@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "workspace/inputs.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -9,6 +10,8 @@
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/import_error.h"
 #include "common/importer.h"
+#include "common/log_platform.h"
+#include "store/decision_store.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -46,7 +49,10 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     const Workspace ws(paths[0]);
     for (auto& r : ws.runs()) data.runs.push_back(std::move(r.run));
     for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
-    for (auto& t : ws.power_traces()) data.power_traces.push_back(std::move(t.trace));
+    // Each platform's chosen power log first: the comparisons use a platform's first log, as in the GUI.
+    std::vector<StoredPowerTrace> traces = ws.power_traces();
+    order_chosen_logs_first(ws, traces);
+    for (auto& t : traces) data.power_traces.push_back(std::move(t.trace));
     for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
     for (auto& d : ws.dnn_runs()) data.dnn_runs.push_back(std::move(d.run));
     for (auto& h : ws.headroom_measurements()) data.headroom.push_back(std::move(h.measurement));
@@ -71,6 +77,13 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.headroom.begin(), batch.headroom.end(), std::back_inserter(data.headroom));
     std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
   }
+  // A log whose file names no platform (a meter CSV, tegrastats: a board family is no platform) gets the guess an
+  // import would store (common/log_platform.h): never a blank column, and two boards' logs never one column.
+  std::vector<std::string> known;
+  for (const FlopsRun& r : data.runs)
+    if (std::find(known.begin(), known.end(), r.platform) == known.end()) known.push_back(r.platform);
+  for (PowerTrace& t : data.power_traces)
+    if (blank_platform(t.platform)) t.platform = infer_log_platform(t, known).platform;
   add_foreign_sweeps(data);
   return data;
 }

@@ -48,10 +48,12 @@ std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs) {
 
 std::vector<PeakRow> peak_table(std::span<const FlopsRun> runs, const DeviceTable& table) {
   std::vector<PeakRow> rows;
-  for (const FlopsRun& run : runs) {
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const FlopsRun& run = runs[i];
     const auto peak = find_peak(run);
     if (!peak) continue;
     PeakRow row;
+    row.run_index = i;
     row.platform = run.platform;
     row.device = run.device;
     row.backend = run.backend;

@@ -58,6 +58,7 @@ struct PeakRow {
   std::optional<double> empirical_ceiling_flops;
   std::optional<double> fraction_of_ceiling;
   std::string ceiling_how;
+  std::size_t run_index = 0;  // which of the runs given to peak_table() this row is (runs without a peak are skipped)
 };
 // Rows in input order; runs without samples are skipped. Each row is checked against the bundled device table
 // (bundled_device_table()); when that cannot be loaded every row carries a spec_check_unavailable flag.

@@ -43,6 +43,7 @@ void add_power(PlatformRow& row, const PowerTrace& trace, const ComparisonOption
     how += buf;
   }
   row.sources[column::kPower] = {trace.provenance.source_file, trace.provenance.origin, how};
+  row.power_log = trace.label;
   row.power_measurement = measurement_text(trace.provenance);
   if (auto f = check_power_trace_bundled(trace); !f.empty()) row.flags[column::kPower] = std::move(f);
   const double peak = row.best_peak_flops();
@@ -166,6 +167,7 @@ std::vector<PlatformRow> compare_platforms(std::span<const FlopsRun> runs, std::
   }
   for (const PowerTrace& t : traces) {
     PlatformRow& row = row_for(rows, t.platform);
+    ++row.power_logs;
     if (!row.mean_power_w) add_power(row, t, o);  // the first trace of a platform
   }
   for (const PipelineTimings& p : pipelines) {

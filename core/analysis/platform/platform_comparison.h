@@ -65,6 +65,11 @@ struct PlatformRow {
   // every power-derived column, and both on GFLOPS/W. A column without an entry is not flagged.
   std::map<std::string, std::vector<PlausibilityFlag>> flags;
   std::string power_measurement;  // how the power log was measured (measurement_text())
+  // The power log the power columns come from (its label) and how many logs the platform has: with several, every
+  // view says which one it uses (the platform's first log that gives power; the user's choice is put first,
+  // store/decision_store.h).
+  std::string power_log;
+  int power_logs = 0;
   double best_peak_flops() const;
   // What the recommendation ranks by: the highest peak, where a peak that carries a plausibility flag counts at
   // most its device's vendor spec or computed peak (0 when neither is known), so an impossible figure (the paper's

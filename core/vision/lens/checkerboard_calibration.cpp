@@ -14,12 +14,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "vision/lens/circle_detect.h"
 #include "vision/lens/fisheye_opencv.h"
 
 namespace bs::vision {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// A rim found along fewer rays is too little of the circle to judge the fit by (a board filling the view hides it).
+constexpr int kMinRimPoints = 180;
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -283,6 +286,7 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
   CheckerboardResult result;
   result.images.resize(images.size());
   std::vector<cv::Size> sizes(images.size());
+  std::vector<std::optional<ImageCircle>> rims(images.size());  // each image's lit disc, where it shows one
   std::atomic<int> done{0};
   std::atomic<bool> cancelled{false};
   std::mutex progress_mutex;
@@ -306,6 +310,7 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
       r.rejected = missing ? "no such file" : "cannot read the image";
     } else {
       sizes[static_cast<std::size_t>(i)] = image.size();
+      rims[static_cast<std::size_t>(i)] = detect_image_circle(image);
       std::string reason;
       if (auto corners = find_board_corners(image, board, &reason)) {
         r.corners = std::move(*corners);
@@ -336,7 +341,20 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
                    std::to_string(size.width) + "x" + std::to_string(size.height) + " px";
     }
   }
-  return calibrate_from_corners(std::move(result.images), size, board, model, base, cancel, progress);
+  CheckerboardResult out = calibrate_from_corners(std::move(result.images), size, board, model, base, cancel, progress);
+  // The images' own rim (the median one, among images of the calibration's size that show enough of it) against the
+  // fitted field-of-view circle.
+  std::vector<ImageCircle> seen;
+  for (int i = 0; i < n; ++i)
+    if (const auto& rim = rims[static_cast<std::size_t>(i)];
+        rim && sizes[static_cast<std::size_t>(i)] == size && rim->edge_points >= kMinRimPoints)
+      seen.push_back(*rim);
+  if (!seen.empty()) {
+    std::sort(seen.begin(), seen.end(), [](const ImageCircle& a, const ImageCircle& b) { return a.radius < b.radius; });
+    out.rim = compare_with_rim(out.lens, seen[seen.size() / 2]);
+    if (out.rim && out.rim->disagrees) out.warnings.push_back(out.rim->text);
+  }
+  return out;
 }
 
 CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> images, cv::Size size,
@@ -447,6 +465,31 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
                               "axis; beyond that, up to the lens's " +
                               fmt("%.1f", lens.fov_deg / 2) + " degrees, the model is extrapolated");
 
+  // The uncertainty of the field of view's circle: its radius over leave-one-image-out refits (jackknife standard
+  // error). A rim detected farther away than a few of these contradicts the fit (lens_limits.h).
+  if (views.size() >= 4) {
+    std::vector<double> radii;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      if (cancel) cancel->throw_if_cancelled();
+      std::vector<int> rest = views;
+      rest.erase(rest.begin() + static_cast<long>(i));
+      const auto fit = calibrator.try_run(
+          rest, (flags & ~cv::fisheye::CALIB_CHECK_COND) | cv::fisheye::CALIB_USE_INTRINSIC_GUESS, free.K, free.D);
+      if (!fit) continue;
+      const double fi = std::sqrt(fit->K(0, 0) * fit->K(1, 1));
+      const Lens li = lens_from_opencv_fisheye(
+          OpenCvFisheye::from(cv::Matx33d(fi, 0, fit->K(0, 2), 0, fi, fit->K(1, 2), 0, 0, 1), fit->D), lens);
+      if (const auto r = li.radius(lens.fov_deg / 2 * kPi / 180)) radii.push_back(*r);
+    }
+    if (radii.size() >= 3) {
+      double mean = 0, ss = 0;
+      for (double r : radii) mean += r / static_cast<double>(radii.size());
+      for (double r : radii) ss += (r - mean) * (r - mean);
+      const double n = static_cast<double>(radii.size());
+      lens.calibration.rim_radius_se_px = std::sqrt((n - 1) / n * ss);
+    }
+  }
+  lens.calibration.covered_deg = result.max_theta_deg;
   lens.calibration.method = LensCalibration::Method::Checkerboard;
   lens.calibration.rms_px = result.rms_px;
   lens.calibration.images_used = result.used();

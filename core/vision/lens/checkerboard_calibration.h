@@ -22,6 +22,7 @@
 #include "util/cancel.h"
 #include "vision/lens/checkerboard.h"
 #include "vision/lens/lens.h"
+#include "vision/lens/lens_limits.h"
 
 namespace bs::vision {
 
@@ -53,6 +54,9 @@ struct CheckerboardResult {
   double free_rms_px = 0;                      // cv::fisheye's own RMS of the free (fx, fy) fit
   double fx = 0, fy = 0;                       // the free fit's focal lengths, pixels
   double max_theta_deg = 0;                    // the widest angle covered by used corners
+  // The field of view's circle (the lens's FOV/2 ray) against the rim detected in the images (issue #43.8): nullopt
+  // when no image shows a rim. A disagreement beyond the uncertainties is also among the warnings, with both numbers.
+  std::optional<RimComparison> rim;
   std::vector<std::string> warnings;
   int used() const;
   int rejected() const;

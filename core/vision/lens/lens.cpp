@@ -133,6 +133,8 @@ static nlohmann::json calibration_to_json(const LensCalibration& c) {
   if (c.images_used > 0) j["images_used"] = c.images_used;
   if (c.images_rejected > 0) j["images_rejected"] = c.images_rejected;
   if (!c.detail.empty()) j["detail"] = c.detail;
+  if (c.covered_deg) j["covered_deg"] = *c.covered_deg;
+  if (c.rim_radius_se_px) j["rim_radius_se_px"] = *c.rim_radius_se_px;
   return j;
 }
 
@@ -161,6 +163,17 @@ static LensCalibration calibration_from_json(const nlohmann::json& j) {
   if (j.contains("detail")) {
     if (!j["detail"].is_string()) throw std::invalid_argument("/lens/calibration/detail: expected a string");
     c.detail = j["detail"].get<std::string>();
+  }
+  if (j.contains("covered_deg")) {
+    if (!j["covered_deg"].is_number() || !(j["covered_deg"].get<double>() > 0) || j["covered_deg"].get<double>() > 180)
+      throw std::invalid_argument("/lens/calibration/covered_deg: expected degrees in (0, 180]");
+    c.covered_deg = j["covered_deg"].get<double>();
+  }
+  if (j.contains("rim_radius_se_px")) {
+    if (!j["rim_radius_se_px"].is_number() || !(j["rim_radius_se_px"].get<double>() >= 0) ||
+        !std::isfinite(j["rim_radius_se_px"].get<double>()))
+      throw std::invalid_argument("/lens/calibration/rim_radius_se_px: expected a number >= 0");
+    c.rim_radius_se_px = j["rim_radius_se_px"].get<double>();
   }
   return c;
 }

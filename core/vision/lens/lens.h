@@ -27,6 +27,12 @@ struct LensCalibration {
   int images_used = 0;           // checkerboard: images whose corners were found and used
   int images_rejected = 0;
   std::string detail;  // free text: board, model, line count, fit residual before/after...
+  // Checkerboard (issue #43.8): the widest angle off the axis at which corners were seen, in degrees; beyond it the
+  // model is extrapolated, and a view reaching further says so (lens/lens_limits.h).
+  std::optional<double> covered_deg;
+  // Checkerboard: the standard error of the field of view's circle radius (pixels, leave-one-image-out refits): how
+  // far a detected image rim may lie from the fitted circle before the two disagree.
+  std::optional<double> rim_radius_se_px;
 };
 std::string_view to_string(LensCalibration::Method m);
 LensCalibration::Method calibration_method_from_string(std::string_view s);  // throws std::invalid_argument

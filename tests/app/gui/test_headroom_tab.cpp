@@ -88,7 +88,7 @@ class TestHeadroomTab : public QObject {
                                   .arg(size.width())
                                   .arg(size.height())));
       }
-      tabs->setCurrentWidget(w.platform_view());
+      tabs->setCurrentWidget(w.platform_view()->parentWidget());  // the tab page: the log choice above the view
       w.resize(1280, 800);
       QTest::qWait(50);
       QVERIFY(w.grab().save(QString::fromLocal8Bit(shots) + "/platforms-tab-loop-1280x800.png"));

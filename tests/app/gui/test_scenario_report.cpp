@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue #43.5, the report as a person gets it: the paper's workspace with this machine's sweeps (and, where the
-// shared public files are here, two MLPerf submissions: seven platforms), File > Export report (Ctrl+Shift+R), the
-// file dialog answered, the PDF read back page by page with pdftotext. No word runs past the text area (Appendix A's
-// table was cut at the page's edge), no words print over each other, every table is whole (the platforms were seven
-// one-column tables over four pages), and the synthetic capture is captioned as synthetic, with its origin.
+// Issue #43.5, the report as a person gets it: the paper's workspace with this machine's sweeps (and, where the shared
+// public files are here, two MLPerf submissions: seven platforms), File > Export report (Ctrl+Shift+R), the report
+// dialog answered (#43.2: it names the file and shows the decision page 1 states), the PDF read back page by page with
+// pdftotext. No word runs past the text area (Appendix A's table was cut at the page's edge), no words print over each
+// other, every table is whole (the platforms were seven one-column tables over four pages), and the synthetic capture
+// is captioned as synthetic, with its origin.
 #include <QApplication>
 #include <QCoreApplication>
 #include <QDir>
@@ -51,8 +52,8 @@ class TestScenarioReport : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(&w));
 
     const QString pdf = dir.filePath("report.pdf");
-    const auto answered = bs::test::answer_next_modal(
-        &w, [&](QWidget* modal) { bs::test::answer_file_dialog(modal, pdf, "PDF report (*.pdf)"); });
+    const auto answered =
+        bs::test::answer_next_modal(&w, [&](QWidget* modal) { bs::test::answer_report_dialog(modal, pdf); });
     bs::test::press(w, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     QVERIFY(*answered);
     QVERIFY2(QFile::exists(pdf), "no report written");

@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 
 #include "../../support/cli_harness.h"
 
@@ -50,6 +51,63 @@ class TestCliPlatforms : public QObject {
     // 225 W of servos in parallel: neither lasts an hour.
     QCOMPARE(run_cli({"platforms", kPaper, "--extra-load", "225", "--min-runtime", "60", "--json"}, &out), 0);
     QCOMPARE(recommended(out), QString());
+  }
+  void the_decision_kept_in_a_workspace() {
+    // Issue #43.2/.4: what the Platforms tab (or `platforms --store`) keeps in the workspace is what `platforms` on
+    // the workspace uses, and says so; options given override it; --no-stored ignores it.
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("paper.bsw");
+    QCOMPARE(run_cli({"import", ws, kPaper, "--quiet"}), 0);
+    QCOMPARE(run_cli({"import", ws, BENCHSCOPE_TEST_DATA_DIR "/scenarios/nuc-second-session.csv", "--quiet"}), 0);
+    QByteArray out, err;
+    QCOMPARE(run_cli({"platforms", ws, "--json"}, &out), 0);
+    QCOMPARE(recommended(out), QString("NUC"));
+    QCOMPARE(
+        run_cli({"platforms", ws, "--budget", "10", "--use-log", "NUC=nuc-second-session.csv", "--store"}, &out, &err),
+        0);
+    QVERIFY2(err.contains("stored in") && err.contains("a power budget of 10 W"), err.constData());
+    QCOMPARE(run_cli({"platforms", ws}, &out), 0);
+    QVERIFY2(out.contains("recommendation: Jetson TX2"), out.constData());
+    QVERIFY2(out.contains("stored in the workspace") && out.contains("a power budget of 10 W"), out.constData());
+    QVERIFY2(out.contains("power log of NUC: nuc-second-session.csv (chosen of 2 logs)"), out.constData());
+    QCOMPARE(run_cli({"platforms", ws, "--json"}, &out), 0);
+    for (const auto v : QJsonDocument::fromJson(out).object()["platforms"].toArray())
+      if (v.toObject()["platform"] == "NUC") {
+        QCOMPARE(v.toObject()["power_log"].toString(), QString("nuc-second-session.csv"));
+        QCOMPARE(std::round(v.toObject()["mean_power_w"].toDouble()), 30.0);  // 1.9 A x 16 V, not the paper's 40.5 W
+      }
+    QCOMPARE(run_cli({"platforms", ws, "--no-stored", "--json"}, &out), 0);
+    QCOMPARE(recommended(out), QString("NUC"));
+    QCOMPARE(run_cli({"platforms", ws, "--budget", "50", "--json"}, &out), 0);  // given: replaces the stored budget
+    QCOMPARE(recommended(out), QString("NUC"));
+    // A log the platform does not have, and --store without a workspace: usage errors that say why.
+    QCOMPARE(run_cli({"platforms", ws, "--use-log", "NUC=nope.csv"}, &out, &err), 2);
+    QVERIFY2(err.contains("nuc-current.csv") && err.contains("nuc-second-session.csv"), err.constData());
+    QCOMPARE(run_cli({"platforms", kPaper, "--store"}, &out, &err), 2);
+  }
+  void the_stored_decision_keeps_the_control_loop() {
+    // #45's control-loop requirement is a constraint like the budget: --store keeps it, later runs use it (and say
+    // so), constraints given replace it as a whole, --no-stored ignores it.
+    QTemporaryDir dir;
+    const QString ws = dir.filePath("paper.bsw");
+    QCOMPARE(run_cli({"import", ws, kPaper, "--quiet"}), 0);
+    QByteArray out, err;
+    QCOMPARE(run_cli({"platforms", ws, "--require-loop", "500Hz,p99<=1ms", "--store"}, &out, &err), 0);
+    QVERIFY2(err.contains("stored in") && err.contains("control loop 500 Hz"), err.constData());
+    QCOMPARE(run_cli({"platforms", ws, "--json"}, &out), 0);
+    const QJsonObject stored = QJsonDocument::fromJson(out).object();
+    QCOMPARE(stored["control_loop"].toObject()["requirement"].toString(), QString("500Hz,p99<=1ms"));
+    QVERIFY2(stored["stored_in_workspace"].toString().contains("control loop 500 Hz"), out.constData());
+    // No platform of the paper has a headroom measurement: unknown, never passing, so none is recommended.
+    QCOMPARE(recommended(out), QString());
+    QCOMPARE(run_cli({"platforms", ws}, &out), 0);
+    QVERIFY2(out.contains("control loop: 500 Hz") && out.contains("stored in the workspace"), out.constData());
+    QCOMPARE(run_cli({"platforms", ws, "--budget", "10", "--json"}, &out), 0);
+    QVERIFY(QJsonDocument::fromJson(out).object()["control_loop"].isNull());
+    QCOMPARE(recommended(out), QString("Jetson TX2"));
+    QCOMPARE(run_cli({"platforms", ws, "--no-stored", "--json"}, &out), 0);
+    QVERIFY(QJsonDocument::fromJson(out).object()["control_loop"].isNull());
+    QCOMPARE(recommended(out), QString("NUC"));
   }
   void exports() {
     QTemporaryDir dir;

@@ -89,6 +89,19 @@ class TestRunNames : public QObject {
              (Names{"EPYC" + kDash + "hot (2026-11-25)", "EPYC" + kDash + "hot (2026-11-26)"}));
   }
 
+  void what_tells_a_run_apart_for_a_table_column() {
+    // Issue #43.4: the peak table says the base in its own columns; its Run column shows only what is added.
+    QCOMPARE(bs::distinguishing_parts({id("EPYC", "2026-11-26T14:03:12Z"), id("EPYC", "2026-11-26T15:40:01Z"),
+                                       id("GTX", "2026-11-26T15:40:01Z")}),
+             (Names{"14:03", "15:40", ""}));
+    QCOMPARE(bs::distinguishing_parts({id("EPYC", "2026-11-26T14:03:12Z", "nuc", "N = 40000", "fan at 100 %"),
+                                       id("EPYC", "2026-11-26T14:03:12Z")}),
+             (Names{"fan at 100 %", ""}));
+    QCOMPARE(bs::distinguishing_parts({id("EPYC", "2026-11-26T14:03:12Z", "nuc", "N = 40000", "after BIOS update"),
+                                       id("EPYC", "2026-11-26T14:05:12Z", "nuc", "N = 40000", "after BIOS update")}),
+             (Names{"after BIOS update (14:03)", "after BIOS update (14:05)"}));
+  }
+
   void identity_of_a_flops_run() {
     bs::FlopsRun run;
     run.iterations = 12345;

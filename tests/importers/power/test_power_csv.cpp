@@ -234,6 +234,38 @@ class TestPowerCsv : public QObject {
     QCOMPARE(imp.sniff("{\"format\": \"benchscope-run\"}", "x.csv"), 0);
   }
 
+  void a_last_line_cut_inside_its_number_is_left_out() {
+    // Issue #43.7: cut after "162.4,3." the last row parses (3 A) although the logger was writing 3.0611. A last
+    // line without its line ending may be cut wherever: it is left out, and the warning names file, line and text.
+    // (These current-only logs also get the warning that their power stays unknown: only the cut line's is looked at.)
+    const auto cut_warnings = [](const bs::ImportBatch& b) {
+      std::vector<std::string> out;
+      for (const std::string& w : b.warnings)
+        if (w.find("no line ending") != std::string::npos) out.push_back(w);
+      return out;
+    };
+    const std::string head = "time_s,current_A\n0.0,2.9000\n0.2,3.0100\n";
+    const bs::ImportBatch b = bs::kPowerCsvFileFormat.parse_text(head + "0.4,3.", "meter.csv");
+    const bs::PowerTrace& t = b.power_traces.at(0);
+    QCOMPARE(t.time_s.size(), std::size_t{2});
+    QCOMPARE(t.channels.at(0).values.back(), 3.01);
+    const auto cut = cut_warnings(b);
+    QCOMPARE(cut.size(), std::size_t{1});
+    QVERIFY2(cut[0].rfind("meter.csv:4: ", 0) == 0 && cut[0].find("\"0.4,3.\"") != std::string::npos, cut[0].c_str());
+    // Ended properly, the same row is a row.
+    const bs::ImportBatch ended = bs::kPowerCsvFileFormat.parse_text(head + "0.4,3.\n", "meter.csv");
+    QCOMPARE(ended.power_traces.at(0).time_s.size(), std::size_t{3});
+    QVERIFY(cut_warnings(ended).empty());
+    // The only data row without its line ending is read, and the warning says to check it.
+    const bs::ImportBatch one = bs::kPowerCsvFileFormat.parse_text("time_s,current_A\n0.0,2.9", "one.csv");
+    QCOMPARE(one.power_traces.at(0).time_s.size(), std::size_t{1});
+    const auto only = cut_warnings(one);
+    QCOMPARE(only.size(), std::size_t{1});
+    QVERIFY2(only[0].find("check its last value") != std::string::npos, only[0].c_str());
+    // A comment last, without a line ending, carries no number: nothing to say about it.
+    QVERIFY(cut_warnings(bs::kPowerCsvFileFormat.parse_text(head + "# end", "meter.csv")).empty());
+  }
+
   void cut_off_last_line_imports_the_complete_rows() {
     // Issue #32.8: a logger killed while writing leaves a last line without its line ending, cut mid-row. The
     // complete rows are imported and a warning names the line left out; the same bad row WITH a line ending (or

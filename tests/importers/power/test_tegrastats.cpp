@@ -7,6 +7,29 @@
 class TestTegrastats : public QObject {
   Q_OBJECT
  private slots:
+  void a_board_family_is_no_platform_and_a_cut_line_is_named() {
+    // Issue #43.3: tegrastats names no board model, so the log has no platform (the import asks or guesses; a TX2's
+    // and an Orin's logs must not both become "Jetson"). Issue #43.7: a last line without its line ending may be
+    // cut where the number still parses ("3642/36" of "3642/3633"): the warning names the file and the line.
+    const std::string line1 =
+        "RAM 2633/7850MB (lfb 3x4MB) CPU [0%@2035,0%@2035] VDD_IN 3624/3624 VDD_CPU 696/696 VDD_GPU 371/371\n";
+    const std::string line2 =
+        "RAM 2631/7850MB (lfb 3x4MB) CPU [18%@2035,0%@2035] VDD_IN 3642/3633 VDD_CPU 695/695 VDD_GPU 370/36";
+    const bs::ImportBatch cut = bs::kTegrastatsFileFormat.parse_text(line1 + line2, "board.log");
+    QVERIFY(cut.power_traces.at(0).platform.empty());
+    bool named = false;
+    for (const std::string& w : cut.warnings)
+      named = named || (w.rfind("board.log:2:", 0) == 0 && w.find("no line ending") != std::string::npos);
+    QVERIFY2(named, cut.warnings.empty() ? "no warnings" : cut.warnings.front().c_str());
+    // With its line ending nothing is said about it.
+    const bs::ImportBatch whole = bs::kTegrastatsFileFormat.parse_text(line1 + line2 + "\n", "board.log");
+    for (const std::string& w : whole.warnings) QVERIFY2(w.find("no line ending") == std::string::npos, w.c_str());
+    // A platform given with the import (--platform) is taken.
+    bs::ParseOptions given;
+    given.platform = "Jetson TX2";
+    QCOMPARE(bs::kTegrastatsFileFormat.parse_text(line1, "board.log", given).power_traces.at(0).platform,
+             std::string("Jetson TX2"));
+  }
   void jetpack4_tx2() {
     const auto batch =
         bs::import_file(BENCHSCOPE_TEST_DATA_DIR "/power/tegrastats-tx2-jetpack4.log", bs::CancelToken{});

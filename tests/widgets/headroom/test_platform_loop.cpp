@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Platforms tab's control-loop requirement on the paper's sample data: with no headroom measurement every
 // platform is unknown and none is recommended; a measurement that passes makes its platform the choice again, one
-// that fails is said with its margin; a mistyped requirement is shown in red and ignored.
+// that fails is said with its margin; a mistyped requirement is shown in red and ignored. The requirement is part of
+// the decision the workspace keeps (issue #43.2, store/decision_store.h): set by a person it is emitted, a mistyped
+// one is not, and a stored one comes back.
 #include <QCheckBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QSignalSpy>
 #include <QTest>
 
 #include <filesystem>
@@ -58,6 +61,35 @@ class TestPlatformLoop : public QObject {
     QCOMPARE(view.recommendation(), QString("NUC"));  // ignored: the other constraints (none) decide
     view.loop_check()->setChecked(false);
     QVERIFY(!view.summary_text().contains("Control loop"));
+  }
+
+  void loop_requirement_is_part_of_the_kept_decision() {
+    bs::ui::PlatformView view;
+    QSignalSpy edited(&view, &bs::ui::PlatformView::decision_edited);
+    QVERIFY(view.decision().loop.empty());
+    // A person ticks "Control loop:" (the example requirement in the field): one decision edited, with the loop.
+    view.loop_check()->click();
+    QCOMPARE(edited.size(), 1);
+    const auto ticked = edited.at(0).at(0).value<bs::StoredDecision>();
+    QCOMPARE(ticked.loop, view.loop_edit()->text().toStdString());
+    QVERIFY(ticked.constrained());
+    // Mistyped: ignored by the verdicts, so not part of the decision either.
+    view.loop_edit()->setText("1kHz,p99.9<=200");
+    emit view.loop_edit()->editingFinished();
+    QCOMPARE(edited.size(), 2);
+    QVERIFY(edited.at(1).at(0).value<bs::StoredDecision>().loop.empty());
+    // The workspace's stored requirement comes back ticked, without a decision edited.
+    bs::StoredDecision stored = view.decision();  // the battery and load as the view has them, the loop stored
+    stored.loop = "500Hz,p99<=1ms";
+    view.apply_decision(stored);
+    QCOMPARE(edited.size(), 2);
+    QVERIFY(view.loop_check()->isChecked());
+    QCOMPARE(view.loop_edit()->text(), QString("500Hz,p99<=1ms"));
+    QVERIFY(view.loop_requirement());
+    QCOMPARE(view.decision(), stored);
+    view.apply_decision(std::nullopt);  // nothing stored: no requirement
+    QVERIFY(!view.loop_check()->isChecked());
+    QVERIFY(!view.loop_requirement());
   }
 };
 

@@ -2,6 +2,7 @@
 // Checkerboard calibration against ground truth: views of a board at known poses rendered through a known
 // Kannala-Brandt lens (vision/synthetic_checkerboard.h) must give that lens back; the conversion between
 // BenchScope's lens and OpenCV's fisheye camera must agree with cv::fisheye's own projection both ways.
+#include <QString>
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
@@ -294,6 +295,62 @@ class TestCheckerboardCalibration : public QObject {
     QVERIFY(std::abs(result.lens.r_pp / lens.r_pp - 1) < 0.005);
     QVERIFY(std::hypot(result.lens.cx - lens.cx, result.lens.cy - lens.cy) < 1.0);
     QVERIFY(result.rms_px < 0.3);
+    // Issue #43.8: the images' rim lies where the fitted 195-degree circle does (no warning about it), and the lens
+    // records how far off the axis its corners went and how sure its circle is.
+    QVERIFY(result.rim);
+    QVERIFY2(!result.rim->disagrees, result.rim->text.c_str());
+    QVERIFY(result.lens.calibration.covered_deg);
+    QCOMPARE(*result.lens.calibration.covered_deg, result.max_theta_deg);
+    QVERIFY(result.lens.calibration.rim_radius_se_px && *result.lens.calibration.rim_radius_se_px < 5);
+  }
+
+  void a_fit_that_contradicts_the_images_rim_says_so_with_both_numbers() {
+    // Issue #43.8: the lit disc ends at 174 degrees while the lens is taken to see 195 (the file says so): the fit's
+    // 195-degree circle lies far outside the rim the images show, and the result says so with both radii.
+    Lens optics = Lens::paper();
+    optics.fov_deg = 174;
+    CheckerboardRender how = render_settings();
+    std::vector<CalibrationImage> images;
+    int n = 0;
+    for (const char* p : {"0,0,0,300,0,0", "0,0,45,300,300,0", "0,0,-45,300,-300,0", "0,-45,0,300,0,300",
+                          "0,45,0,300,0,-300", "20,-30,35,300,200,170", "-20,30,-35,300,-200,-170"})
+      images.push_back({"view " + std::to_string(++n), "", render_checkerboard(optics, parse_pose(p), how)});
+    const auto result = calibrate_checkerboard(images, board(), CalibrationModel::Equidistant, Lens::paper());
+    QVERIFY(result.rim);
+    QVERIFY(result.rim->disagrees);
+    const double rim_truth = 87 * kPi / 180 / optics.r_pp, fit_truth = 97.5 * kPi / 180 / optics.r_pp;
+    QVERIFY2(std::abs(result.rim->rim_radius_px - rim_truth) < 2, std::to_string(result.rim->rim_radius_px).c_str());
+    QVERIFY(std::abs(result.rim->fitted_radius_px - fit_truth) < 5);
+    bool said = false;
+    for (const std::string& w : result.warnings)
+      said = said || (w.find("disagrees with the image's detected rim") != std::string::npos &&
+                      w.find(QString::number(result.rim->rim_radius_px, 'f', 1).toStdString()) != std::string::npos &&
+                      w.find(QString::number(result.rim->fitted_radius_px, 'f', 1).toStdString()) != std::string::npos);
+    QVERIFY(said);
+  }
+
+  void a_view_beyond_the_corners_says_so() {
+    Lens lens = Lens::paper();
+    lens.calibration.method = LensCalibration::Method::Checkerboard;
+    lens.calibration.covered_deg = 57;
+    View view;  // the paper's 150-degree output: its corners look 75 degrees off the axis
+    QVERIFY(std::abs(view_reach_deg(lens, view) - 75) < 0.5);
+    const std::string note = extrapolation_note(lens, view);
+    QVERIFY2(
+        note.find("reaches 75 degrees") != std::string::npos && note.find("covered 57 degrees") != std::string::npos,
+        note.c_str());
+    view.fov_deg = 90;  // within the corners
+    QVERIFY(extrapolation_note(lens, view).empty());
+    view.yaw_deg = 40;  // turned towards the edge: beyond them again
+    QVERIFY(!extrapolation_note(lens, view).empty());
+    lens.calibration.covered_deg.reset();  // not a checkerboard lens: nothing known, nothing said
+    QVERIFY(extrapolation_note(lens, view).empty());
+    // The covered angle and the circle's uncertainty travel in the lens file.
+    lens.calibration.covered_deg = 57;
+    lens.calibration.rim_radius_se_px = 1.5;
+    const auto back = lens_from_json(lens_to_json(lens, view)).first;
+    QCOMPARE(*back.calibration.covered_deg, 57.0);
+    QCOMPARE(*back.calibration.rim_radius_se_px, 1.5);
   }
 
   void too_few_views_name_every_image() {
