@@ -141,6 +141,13 @@ inline bool answer_report_dialog(QWidget* modal, const QString& path) {
 // The window's tab widget and the plot File > Export figure would take from the current tab (its first visible
 // one), or null.
 inline QTabWidget* window_tabs(ui::MainWindow& w) { return qobject_cast<QTabWidget*>(w.centralWidget()); }
+// The tab that shows `view`: its page is the view or holds it (a tab may wrap its view, e.g. with a bar choosing logs).
+inline int tab_of(ui::MainWindow& w, const QWidget* view) {
+  QTabWidget* tabs = window_tabs(w);
+  for (int t = 0; t < tabs->count(); ++t)
+    if (tabs->widget(t) == view || tabs->widget(t)->isAncestorOf(view)) return t;
+  return -1;
+}
 inline QCustomPlot* exported_plot(ui::MainWindow& w) {
   for (QCustomPlot* p : window_tabs(w)->currentWidget()->findChildren<QCustomPlot*>())
     if (p->isVisible()) return p;

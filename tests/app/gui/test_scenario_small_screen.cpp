@@ -179,7 +179,7 @@ class TestScenarioSmallScreen : public QObject {
              qPrintable(QStringLiteral("%1x%2").arg(w.minimumSizeHint().width()).arg(w.minimumSizeHint().height())));
 
     // Candidates typed into the Platforms tab: their figure has labels to keep apart.
-    click_tab(w, bs::test::window_tabs(w)->indexOf(w.platform_view()));
+    click_tab(w, bs::test::tab_of(w, w.platform_view()));
     auto* spec = w.platform_view()->candidates()->findChild<QLineEdit*>("library_selection");
     QVERIFY(spec);
     spec->setFocus();
@@ -199,7 +199,7 @@ class TestScenarioSmallScreen : public QObject {
     }
     // The Battery tab's runtimes in view without scrolling sideways.
     QTableView* battery = w.battery_view()->table();
-    click_tab(w, tabs->indexOf(w.battery_view()));
+    click_tab(w, bs::test::tab_of(w, w.battery_view()));
     for (int c = 0; c < battery->model()->columnCount(); ++c)
       if (battery->horizontalHeader()->sectionViewportPosition(c) + battery->columnWidth(c) >
           battery->viewport()->width() + 1)
