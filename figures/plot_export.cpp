@@ -239,8 +239,9 @@ QStringList wrapped(const QString& text, const QFontMetricsF& metrics, double wi
   return lines;
 }
 
-// Entries still wider than the figure at the smallest font (wrap_legend) are shortened in the middle ("…"), never
-// cut at the figure's edge; the view gets its names back afterwards (export_plot).
+// Entries still wider than the figure at the smallest font (wrap_legend) go on two or more lines, broken between
+// words, so that the figure still names them whole; only a single word wider than the row is shortened in the
+// middle ("…"). Never cut at the figure's edge; the view gets its names back afterwards (export_plot).
 void elide_wide_entries(QCustomPlot& plot, double width_pt) {
   // The legend's row is the figure less the layout's margins.
   const QMargins margins = plot.plotLayout()->margins();
@@ -259,9 +260,14 @@ void elide_wide_entries(QCustomPlot& plot, double width_pt) {
       if (!item || w <= limit) continue;
       const QFontMetricsF m(item->font());
       const QString name = item->plottable()->name();
+      const double room_pt = m.horizontalAdvance(name) - (w - limit);
+      const QStringList lines = wrapped(name, m, room_pt);
+      const bool whole =
+          std::all_of(lines.begin(), lines.end(), [&](const QString& l) { return m.horizontalAdvance(l) <= room_pt; });
       if (!item->plottable()->property(kWholeNameProperty).isValid())
         item->plottable()->setProperty(kWholeNameProperty, name);
-      item->plottable()->setName(m.elidedText(name, Qt::ElideMiddle, m.horizontalAdvance(name) - (w - limit)));
+      item->plottable()->setName(whole && lines.size() > 1 ? lines.join('\n')
+                                                           : m.elidedText(name, Qt::ElideMiddle, room_pt));
     }
   }
 }

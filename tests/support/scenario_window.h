@@ -15,6 +15,7 @@
 #include <QFileDialog>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
@@ -252,15 +253,16 @@ inline bool show_at(bs::ui::MainWindow& w, int width = 1600, int height = 1000) 
 // app/gui/main.cpp; settings go to a test organisation so a developer's own window layout is never touched. The
 // function is registered under the test's file name (test_registration.h): the tests of tests/app/gui share one
 // program, each run in its own process.
-#define BENCHSCOPE_SCENARIO_MAIN(TestClass)                           \
-  namespace {                                                         \
-  int benchscope_scenario_main(int argc, char** argv) {               \
-    bs::ui::set_vtk_default_surface_format();                         \
-    QApplication app(argc, argv);                                     \
-    QCoreApplication::setOrganizationName("BenchScopeScenarioTest");  \
-    QCoreApplication::setApplicationName(#TestClass);                 \
-    TestClass test;                                                   \
-    return bs::test::test_exit_code(QTest::qExec(&test, argc, argv)); \
-  }                                                                   \
-  }                                                                   \
+#define BENCHSCOPE_SCENARIO_MAIN(TestClass)                            \
+  namespace {                                                          \
+  int benchscope_scenario_main(int argc, char** argv) {                \
+    bs::ui::set_vtk_default_surface_format();                          \
+    QApplication app(argc, argv);                                      \
+    QCoreApplication::setOrganizationName("BenchScopeScenarioTest");   \
+    QCoreApplication::setApplicationName(#TestClass);                  \
+    QSettings().clear(); /* each run starts as a fresh machine does */ \
+    TestClass test;                                                    \
+    return bs::test::test_exit_code(QTest::qExec(&test, argc, argv));  \
+  }                                                                    \
+  }                                                                    \
   BENCHSCOPE_TEST_CUSTOM_MAIN(benchscope_scenario_main)
