@@ -23,6 +23,11 @@ constexpr const char* kNotesProperty = "bs_figure_notes";      // the figure's o
 constexpr const char* kFigureNameProperty = "bs_figure_name";  // a plottable's name in figures (QString)
 constexpr const char* kWholeNameProperty = "bs_whole_name";    // its name before elide_wide_entries shortened it
 
+// Whether the legend stands in a column beside the axes (put_legend_beside: the Platforms tab's candidates).
+bool legend_beside_axes(QCustomPlot& plot) {
+  return plot.legend->layout() == plot.plotLayout() && plot.plotLayout()->columnCount() > 1;
+}
+
 // Everything layout_figure changes on a view's plot, saved so that export_plot can put the view back as it was.
 class ViewState {
  public:
@@ -41,11 +46,8 @@ class ViewState {
         legend_inside_ = true;
         alignment_ = inset->insetAlignment(i);
       }
-    // A legend beside the axes (the Platforms tab's candidates) goes under them on paper and comes back after.
-    QCPLayoutGrid* grid = plot.plotLayout();
-    for (int r = 0; r < grid->rowCount(); ++r)
-      for (int c = 0; c < grid->columnCount(); ++c)
-        if (grid->hasElement(r, c) && grid->element(r, c) == plot.legend && c > 0) legend_beside_ = true;
+    // A legend beside the axes goes under them on paper and comes back after.
+    legend_beside_ = legend_beside_axes(plot);
     border_ = plot.legend->borderPen();
     brush_ = plot.legend->brush();
     wrap_ = plot.legend->wrap();
@@ -172,7 +174,7 @@ void place_legend_below(QCustomPlot& plot, double font_pt) {
   plot.legend->setColumnSpacing(static_cast<int>(font_pt * 1.5));
   plot.legend->setIconSize(static_cast<int>(font_pt * 2.5), static_cast<int>(font_pt));
   if (plot.legend->layout() == plot.axisRect()->insetLayout()) plot.axisRect()->insetLayout()->take(plot.legend);
-  if (plot.legend->layout() == plot.plotLayout() && plot.plotLayout()->columnCount() > 1) {  // beside the axes
+  if (legend_beside_axes(plot)) {
     plot.plotLayout()->take(plot.legend);
     plot.plotLayout()->simplify();
   }
@@ -380,6 +382,11 @@ FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
 
 void set_figure_name(QCPAbstractPlottable* plottable, const QString& name) {
   plottable->setProperty(kFigureNameProperty, name);
+}
+
+QString figure_name(const QCPAbstractPlottable* plottable) {
+  const QString name = plottable->property(kFigureNameProperty).toString();
+  return name.isEmpty() ? plottable->name() : name;
 }
 
 void add_figure_note(QCustomPlot& plot, const QString& line) {

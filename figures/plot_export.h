@@ -34,6 +34,8 @@ FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& options);
 // The name a plottable has in an exported figure when it differs from the view's legend (the FLOPS tab's series
 // carry their peak there: a figure's peak labels give way where they crowd, the legend names every peak).
 void set_figure_name(QCPAbstractPlottable* plottable, const QString& name);
+// The name `plottable` has in an exported figure: its figure name where set_figure_name gave one, else its name.
+QString figure_name(const QCPAbstractPlottable* plottable);
 
 // A line for the figure's note under the legend (a flag's footnote, "⚠[1] above_spec_peak: …"): layout_figure
 // sets the note's lines at the figure's width. Kept with the plot; a view that adds none exports without a note.

@@ -27,6 +27,9 @@
 
 #include "export_figure_dialog.h"
 #include "main_window.h"
+#include "platform/candidates_panel.h"
+#include "platform/platform_view.h"
+#include "plot_export.h"
 #include "scenario.h"
 #include "test_registration.h"
 #include "vision/lens_view_3d.h"
@@ -142,12 +145,28 @@ inline bool answer_report_dialog(QWidget* modal, const QString& path) {
 // The window's tab widget and the plot File > Export figure would take from the current tab (its first visible
 // one), or null.
 inline QTabWidget* window_tabs(ui::MainWindow& w) { return qobject_cast<QTabWidget*>(w.centralWidget()); }
+// Clicks tab `index` of the window's views, as a person does.
+inline void click_tab(ui::MainWindow& w, int index) {
+  QTabBar* bar = window_tabs(w)->tabBar();
+  QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(index).center());
+  for (int k = 0; k < 5; ++k) QCoreApplication::processEvents();
+}
 // The tab that shows `view`: its page is the view or holds it (a tab may wrap its view, e.g. with a bar choosing logs).
 inline int tab_of(ui::MainWindow& w, const QWidget* view) {
   QTabWidget* tabs = window_tabs(w);
   for (int t = 0; t < tabs->count(); ++t)
     if (tabs->widget(t) == view || tabs->widget(t)->isAncestorOf(view)) return t;
   return -1;
+}
+// Library candidates typed into the Platforms tab's field and entered, as a person does; false without the field.
+inline bool type_library_candidates(ui::MainWindow& w, const QString& text) {
+  click_tab(w, tab_of(w, w.platform_view()));
+  auto* spec = w.platform_view()->candidates()->findChild<QLineEdit*>("library_selection");
+  if (!spec) return false;
+  spec->setFocus();
+  QTest::keyClicks(spec, text);
+  QTest::keyClick(spec, Qt::Key_Return);
+  return true;
 }
 inline QCustomPlot* exported_plot(ui::MainWindow& w) {
   for (QCustomPlot* p : window_tabs(w)->currentWidget()->findChildren<QCustomPlot*>())
@@ -162,9 +181,7 @@ inline QStringList legend_names(QCustomPlot& plot) {
   for (int i = 0; i < plot.legend->itemCount(); ++i)
     if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot.legend->item(i)); item && item->plottable()->visible())
       // A series may carry its own name for paper (set_figure_name: no "hover" hint where nothing can be hovered).
-      names << (item->plottable()->property("bs_figure_name").toString().isEmpty()
-                    ? item->plottable()->name()
-                    : item->plottable()->property("bs_figure_name").toString());
+      names << ui::figure_name(item->plottable());
   return names;
 }
 
@@ -206,10 +223,9 @@ inline const QString kPaperData = QStringLiteral(BENCHSCOPE_SOURCE_DIR "/sample_
 inline const QString kScenarioData = QStringLiteral(BENCHSCOPE_TEST_DATA_DIR "/scenarios");
 inline const QString kPublicPower = QStringLiteral(BENCHSCOPE_PUBLIC_DATA_DIR "/tests/data/power/real");
 
-// The central tab widget and one of its tabs brought to the front by a click on its tab, as a person does.
-inline QTabWidget* tabs(bs::ui::MainWindow& w) { return static_cast<QTabWidget*>(w.centralWidget()); }
+// One of the central tabs brought to the front by a click on its tab, as a person does.
 inline QWidget* open_tab(bs::ui::MainWindow& w, const QString& name) {
-  QTabWidget* t = tabs(w);
+  QTabWidget* t = window_tabs(w);
   for (int i = 0; i < t->count(); ++i)
     if (plain(t->tabText(i)) == name) {
       click(t->tabBar(), Qt::LeftButton, {}, t->tabBar()->tabRect(i).center());

@@ -28,13 +28,6 @@
 
 namespace {
 
-// Clicks tab `index` of the window's views, as a person does.
-void click_tab(bs::ui::MainWindow& w, int index) {
-  QTabBar* bar = bs::test::window_tabs(w)->tabBar();
-  QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(index).center());
-  for (int k = 0; k < 5; ++k) QCoreApplication::processEvents();
-}
-
 // The value of a peak label without its flag mark ("5.25 TFLOPS ⚠[1]" -> "5.25 TFLOPS").
 QString label_value(const QString& text) { return text.section(QStringLiteral(" \u26A0"), 0, 0).trimmed(); }
 
@@ -79,17 +72,12 @@ class TestScenarioExports : public QObject {
     QCOMPARE(w.flops_plot()->series_count(), 21);
 
     // Library candidates on the Platforms tab, typed as a person does: its figure is the tab's plot.
-    click_tab(w, bs::test::tab_of(w, w.platform_view()));
-    auto* spec = w.platform_view()->candidates()->findChild<QLineEdit*>("library_selection");
-    QVERIFY(spec);
-    spec->setFocus();
-    QTest::keyClicks(spec, "orin,pi5,xavier-nx");
-    QTest::keyClick(spec, Qt::Key_Return);
+    QVERIFY(bs::test::type_library_candidates(w, "orin,pi5,xavier-nx"));
 
     QStringList problems;
     QTabWidget* tabs = bs::test::window_tabs(w);
     for (int t = 0; t < tabs->count(); ++t) {
-      click_tab(w, t);
+      bs::test::click_tab(w, t);
       const QString tab = tabs->tabText(t).remove('&');
       QCustomPlot* plot = bs::test::exported_plot(w);
       const QStringList names = plot ? bs::test::legend_names(*plot) : QStringList();
@@ -142,7 +130,7 @@ class TestScenarioExports : public QObject {
     w.import_paths_now({BENCHSCOPE_TEST_DATA_DIR "/power/tegrastats-orin-jetpack5.log"});
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    click_tab(w, bs::test::tab_of(w, w.power_view()));
+    bs::test::click_tab(w, bs::test::tab_of(w, w.power_view()));
     bs::ui::PowerView* power = w.power_view();
     QCOMPARE(power->trace_count(), 1);
     QCOMPARE(power->quantity(), bs::ui::PowerView::Quantity::Power);

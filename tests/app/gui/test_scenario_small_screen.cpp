@@ -42,12 +42,6 @@ namespace {
 
 constexpr int kScreenW = 1280, kScreenH = 800;
 
-void click_tab(bs::ui::MainWindow& w, int index) {
-  QTabBar* bar = bs::test::window_tabs(w)->tabBar();
-  QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(index).center());
-  for (int k = 0; k < 5; ++k) QCoreApplication::processEvents();
-}
-
 QString describe(const QWidget* w) {
   QString name = w->metaObject()->className();
   if (!w->objectName().isEmpty()) name += " '" + w->objectName() + "'";
@@ -179,17 +173,12 @@ class TestScenarioSmallScreen : public QObject {
              qPrintable(QStringLiteral("%1x%2").arg(w.minimumSizeHint().width()).arg(w.minimumSizeHint().height())));
 
     // Candidates typed into the Platforms tab: their figure has labels to keep apart.
-    click_tab(w, bs::test::tab_of(w, w.platform_view()));
-    auto* spec = w.platform_view()->candidates()->findChild<QLineEdit*>("library_selection");
-    QVERIFY(spec);
-    spec->setFocus();
-    QTest::keyClicks(spec, "orin,pi5,xavier-nx");
-    QTest::keyClick(spec, Qt::Key_Return);
+    QVERIFY(bs::test::type_library_candidates(w, "orin,pi5,xavier-nx"));
 
     QStringList problems;
     QTabWidget* tabs = bs::test::window_tabs(w);
     for (int t = 0; t < tabs->count(); ++t) {
-      click_tab(w, t);
+      bs::test::click_tab(w, t);
       QTest::qWait(100);  // queued replots (legend placement)
       const QString tab = tabs->tabText(t).remove('&');
       for (const QString& p : cut_on_screen(tabs->currentWidget(), screen)) problems << tab + ": " + p;
@@ -199,7 +188,7 @@ class TestScenarioSmallScreen : public QObject {
     }
     // The Battery tab's runtimes in view without scrolling sideways.
     QTableView* battery = w.battery_view()->table();
-    click_tab(w, bs::test::tab_of(w, w.battery_view()));
+    bs::test::click_tab(w, bs::test::tab_of(w, w.battery_view()));
     for (int c = 0; c < battery->model()->columnCount(); ++c)
       if (battery->horizontalHeader()->sectionViewportPosition(c) + battery->columnWidth(c) >
           battery->viewport()->width() + 1)

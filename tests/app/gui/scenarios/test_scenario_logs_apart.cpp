@@ -164,7 +164,7 @@ class TestScenarioLogsApart : public QObject {
     QTest::keyClick(list->windowHandle(), Qt::Key_Return);
     QVERIFY(bs::test::wait_until(
         [&] {
-          auto* c = bs::test::field<QComboBox>(bs::test::tabs(w)->currentWidget(), "Power log of NUC:");
+          auto* c = bs::test::field<QComboBox>(bs::test::window_tabs(w)->currentWidget(), "Power log of NUC:");
           return c && c->currentText() == "nuc-second-session.csv";
         },
         200));
