@@ -5,7 +5,10 @@
 
 #include <algorithm>
 
+#include <QJsonObject>
+
 #include "device_palette.h"
+#include "paper_figures.h"
 
 namespace bs::ui {
 namespace {
@@ -129,6 +132,47 @@ std::vector<BeyondDeadline> headroom_histogram_figure(QCustomPlot& plot, const s
     }
   }
   return beyond;
+}
+
+QJsonArray headroom_template_figure(QCustomPlot& plot, const FigureTemplate& t,
+                                    const std::vector<headroom::HeadroomMeasurement>& measurements,
+                                    QJsonArray& left_out) {
+  const auto wanted = [&](const headroom::HeadroomMeasurement& m) {
+    return t.platforms.empty() || std::find(t.platforms.begin(), t.platforms.end(), m.platform) != t.platforms.end();
+  };
+  const headroom::HeadroomMeasurement* chosen = nullptr;
+  for (const headroom::HeadroomMeasurement& m : measurements)
+    if (wanted(m) && (!chosen || m.provenance.date > chosen->provenance.date)) chosen = &m;
+  if (!chosen)
+    throw NoFigureData(t.id + ": no headroom measurement" +
+                       (t.platforms.empty() ? "" : " of the template's platforms") +
+                       " (benchscope-cli headroom, the Headroom tab, or an imported cyclictest / rttest file)");
+  for (const headroom::HeadroomMeasurement& m : measurements)
+    if (&m != chosen)
+      left_out.append(
+          QJsonObject{{"platform", QString::fromStdString(m.platform)},
+                      {"what", QString::fromStdString(m.tool + " " + m.provenance.date)},
+                      {"reason", wanted(m) ? QStringLiteral("an older measurement: the figure shows the newest one")
+                                           : QStringLiteral("not among the template's platforms")}});
+  std::optional<std::int64_t> deadline;
+  for (const headroom::Phase& p : chosen->phases)
+    if (!p.threads.empty() && p.threads.front().deadline_ns > 0) {
+      deadline = p.threads.front().deadline_ns;
+      break;
+    }
+  headroom_histogram_figure(plot, headroom_curves(*chosen), deadline, QString());
+  if (!t.x_label.empty()) plot.xAxis->setLabel(QString::fromStdString(t.x_label));
+  if (!t.y_label.empty()) plot.yAxis->setLabel(QString::fromStdString(t.y_label));
+  QJsonArray sources;
+  sources.append(QJsonObject{
+      {"platform", QString::fromStdString(chosen->platform)},
+      {"what", QString::fromStdString(std::string(headroom::to_string(chosen->kind)) + ", " + chosen->tool + ", " +
+                                      (chosen->realtime() ? "real-time" : "NON-REAL-TIME"))},
+      {"file", QString::fromStdString(chosen->provenance.source_file.empty() ? chosen->command
+                                                                             : chosen->provenance.source_file)},
+      {"origin", QString::fromStdString(std::string(to_string(chosen->provenance.origin)))},
+      {"date", QString::fromStdString(chosen->provenance.date)}});
+  return sources;
 }
 
 }  // namespace bs::ui

@@ -5,12 +5,14 @@
 // maximum of each in the legend ("idle · T0, max 37 us"), and a vertical deadline line with the count and
 // percentage of cycles beyond it per curve. The Headroom tab draws it, Ctrl+E exports it like every figure.
 // Needs a QApplication (QT_QPA_PLATFORM=offscreen works).
+#include <QJsonArray>
 #include <QString>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "headroom/headroom_measurement.h"
+#include "report/figure_template.h"
 
 class QCustomPlot;
 
@@ -39,5 +41,14 @@ struct BeyondDeadline {
 // from. Returns the per-curve counts beyond the deadline (empty without one).
 std::vector<BeyondDeadline> headroom_histogram_figure(QCustomPlot& plot, const std::vector<HeadroomCurve>& curves,
                                                       std::optional<std::int64_t> deadline_ns, const QString& title);
+
+// The figure template kind "headroom" (`benchscope-cli figures`, the report's figures): the newest measurement of
+// the template's platforms (every platform when it names none), all its phases overlaid, the deadline line at its
+// first thread's deadline; the template's x label replaces the default. Every other measurement goes into
+// `left_out` ({"platform", "what", "reason"}). Returns the measurement drawn as figures.json sources. Throws
+// NoFigureData when there is none.
+QJsonArray headroom_template_figure(QCustomPlot& plot, const FigureTemplate& t,
+                                    const std::vector<headroom::HeadroomMeasurement>& measurements,
+                                    QJsonArray& left_out);
 
 }  // namespace bs::ui

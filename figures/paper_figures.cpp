@@ -22,6 +22,7 @@
 #include "analysis/power/power.h"
 #include "chart_marks.h"
 #include "device_palette.h"
+#include "headroom_figure.h"
 #include "inference_figure.h"
 #include "plot_export.h"
 #include "plot_labels.h"
@@ -303,6 +304,7 @@ FigureData select_figure_data(FigureData d, FigureDataChoice choice) {
   std::erase_if(d.traces, [&](const PowerTrace& t) { return measured(t.provenance); });
   std::erase_if(d.pipelines, [](const PipelineTimings& p) { return p.source.origin != DataOrigin::Reconstructed; });
   std::erase_if(d.inference_runs, [](const DnnRun& r) { return r.provenance.origin != DataOrigin::Reconstructed; });
+  d.headroom.clear();  // the paper measured no control loop
   d.selection = "paper data only (reconstructed from the paper's reported figures)";
   return d;
 }
@@ -325,6 +327,7 @@ PlotFigure figure_plot(QCustomPlot& plot, const FigureTemplate& t, const FigureD
   PlotFigure out;
   out.sources = t.kind == "flops"       ? flops_figure(plot, t, data, o)
                 : t.kind == "inference" ? inference_figure(plot, t, data.inference_runs, o, left_out)
+                : t.kind == "headroom"  ? headroom_template_figure(plot, t, data.headroom, left_out)
                                         : current_figure(plot, t, data, o, left_out);
   // The one figure layout (plot_export.h): legend below, sized to content, nothing clipped.
   out.sized = layout_figure(plot, o);

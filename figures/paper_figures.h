@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "analysis/platform/platform_comparison.h"
+#include "headroom/headroom_measurement.h"
 #include "model/dnn_run.h"
 #include "model/flops_run.h"
 #include "model/frame.h"
@@ -39,8 +40,9 @@ struct FigureData {
   std::vector<std::string> run_labels;  // the user's names of `runs`, same order (may be shorter; "": none)
   std::vector<PowerTrace> traces;
   std::vector<PipelineTimings> pipelines;
-  std::vector<DnnRun> inference_runs;  // bench dnn runs: the report's inference table
-  std::optional<Frame> frame;          // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
+  std::vector<DnnRun> inference_runs;                   // bench dnn runs: the report's inference table
+  std::vector<headroom::HeadroomMeasurement> headroom;  // the report's control-loop headroom section
+  std::optional<Frame> frame;  // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
   std::map<std::pair<std::string, std::string>, int> colors;  // (platform, device) -> colour index
   // Which data this is, said to the user and recorded in figures.json ("data"): e.g. "paper data only".
   std::string selection = "all data given";

@@ -350,6 +350,16 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
   in.verdicts = recommend(in.rows, request.constraints);
   in.constraints = describe_constraints(request.constraints);
   in.inference_runs = data.inference_runs;
+  in.headroom = data.headroom;
+  if (request.loop) {
+    std::vector<std::string> names;
+    for (const PlatformRow& r : in.rows) names.push_back(r.platform);
+    in.loop = request.loop;
+    in.loop_verdicts = headroom::evaluate_loop(*request.loop, data.headroom, names);
+    headroom::apply_loop(in.verdicts, in.loop_verdicts);
+    in.constraints +=
+        (in.constraints.empty() ? "" : ", ") + std::string("control loop ") + headroom::describe(*request.loop);
+  }
   in.candidates = request.candidates;
   in.data_selection = data.selection;
   const std::optional<RenderedFigure> chart = render_chart(in.rows, in.verdicts, data, figure_options);

@@ -6,6 +6,7 @@
 #include <QString>
 #include <QStringList>
 
+#include "headroom/loop_requirement.h"
 #include "paper_figures.h"
 #include "report/candidates_section.h"
 
@@ -18,6 +19,7 @@ struct ReportRequest {
   Constraints constraints;
   ComparisonOptions comparison;
   std::optional<CandidatesSectionInput> candidates;  // the "Candidates" section (report/candidates_section.h)
+  std::optional<headroom::LoopRequirement> loop;     // a control-loop requirement (headroom/loop_requirement.h)
 };
 
 // Returns the files written. Each file appears whole or not at all (QSaveFile); Cancelled or an error leaves none.

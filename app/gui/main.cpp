@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // benchscope [WORKSPACE.bsw | FILE/FOLDER...] [--screenshot DIR [--window-size WxH]] [--startup-time]
 #include <QApplication>
+#include <QComboBox>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
@@ -8,6 +9,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
 #include "peaks/flops_plot.h"
@@ -155,6 +157,10 @@ int main(int argc, char** argv) {
       save_png(window.efficiency_view(), dir + "/efficiency-view.png");
       window.battery_view()->resize(window.flops_plot()->size());
       save_png(window.battery_view(), dir + "/battery-view.png");
+      if (window.headroom_view()->chooser()->count() > 0) {  // a headroom measurement in the workspace
+        window.headroom_view()->resize(1400, 860);
+        save_png(window.headroom_view(), dir + "/headroom-tab.png");
+      }
       window.kernel_runner()->cancel();
       QApplication::quit();
     });

@@ -76,6 +76,7 @@ FigureData MainWindow::figure_data() const {
     for (auto& p : workspace_->pipeline_runs()) pipelines.push_back(std::move(p.run));
     d.pipelines = pipeline_timings(pipelines);
     for (auto& r : workspace_->dnn_runs()) d.inference_runs.push_back(std::move(r.run));
+    for (auto& h : workspace_->headroom_measurements()) d.headroom.push_back(std::move(h.measurement));
     // fig3 shows the workspace's first capture; a referenced file that moved or changed is an error naming it.
     if (const auto frames = workspace_->frames(); !frames.empty()) d.frame = load_frame(*workspace_, frames.front());
   }
@@ -154,6 +155,7 @@ void MainWindow::export_report() {
   (path.endsWith(".pdf", Qt::CaseInsensitive) ? request.pdf_path : request.html_path) = path;
   request.constraints = platforms_->constraints();
   request.comparison = platforms_->options();
+  request.loop = platforms_->loop_requirement();  // the Platforms tab's control loop, when set and readable
   // The Platforms tab's candidates (library computers chosen there) become the report's "Candidates" section,
   // with the tab's figure embedded in an HTML report.
   if (const CandidatesPanel* cp = platforms_->candidates(); !cp->selection().isEmpty()) {

@@ -115,14 +115,24 @@ void CommandLoad::start() {
   });
 }
 
+bool CommandLoad::has_exited() {
+  if (exit_status_) return true;
+  if (pid_ <= 0) return false;
+  int status = 0;
+  if (waitpid(pid_, &status, WNOHANG) != pid_) return false;
+  exit_status_ = status;
+  return true;
+}
+
 LoadReport CommandLoad::stop() {
   LoadReport report;
   if (pid_ <= 0) return report;
   int status = 0;
-  const pid_t early = waitpid(pid_, &status, WNOHANG);
-  if (early == pid_) {
+  if (has_exited()) {
+    status = *exit_status_;
     report.notes.push_back(argv_.front() + " exited (" + status_text(status) + ") before the phase ended, after " +
                            std::to_string(static_cast<int>(monotonic_s() - started_s_)) + " s");
+    kill(-pid_, SIGKILL);  // what it left running in its group
   } else {
     // SIGINT first (stress-ng prints its metrics on it), then SIGTERM, then SIGKILL, 2 s apart.
     bool done = false;
@@ -141,6 +151,7 @@ LoadReport CommandLoad::stop() {
     kill(-pid_, SIGKILL);  // any process of its group still alive
   }
   pid_ = -1;
+  exit_status_.reset();
   // The reader ends at end of file; a process that left the group and keeps the pipe open must not hold us.
   for (int i = 0; i < 100 && out_fd_ >= 0; ++i) {
     pollfd p{out_fd_, POLLIN | POLLHUP, 0};

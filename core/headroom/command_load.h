@@ -7,6 +7,7 @@
 #include <sys/types.h>
 
 #include <atomic>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -26,7 +27,10 @@ class CommandLoad : public Load {
   std::string rate_unit() const override { return "bogo ops/s"; }
   void start() override;
   LoadReport stop() override;
-  const std::string& output() const { return output_; }  // what it printed (stdout and stderr, last 64 KiB)
+  // What it printed (stdout and stderr, last 64 KiB); read it after stop().
+  const std::string& output() const { return output_; }
+  // True once the process has ended by itself (its status is kept for stop()'s note).
+  bool has_exited();
 
  private:
   std::vector<std::string> argv_;
@@ -36,6 +40,7 @@ class CommandLoad : public Load {
   std::atomic<bool> stop_reading_{false};
   std::string output_;
   double started_s_ = 0;
+  std::optional<int> exit_status_;  // reaped before stop()
 };
 
 // stress-ng's metrics table in `output`: "bogo ops/s (real time)" per stressor ("cpu: 1302.85 bogo ops/s"), and as

@@ -77,8 +77,13 @@ Phase measure(const RunConfig& config, Load* load, std::size_t index, std::size_
   phase.duration_s = probe.wall_s;
   phase.probe_cpu_s_per_s = probe.cpu_s_per_s;
   phase.threads = std::move(probe.threads);
+  // What the probe says about this phase (activations skipped) stays with it; what holds for every phase (the
+  // policy refused, memory not locked) is said once, on the first phase that met it.
   for (std::string& n : probe.notes)
-    if (std::find(run_notes.begin(), run_notes.end(), n) == run_notes.end()) run_notes.push_back(n);
+    if (std::find(run_notes.begin(), run_notes.end(), n) == run_notes.end()) {
+      run_notes.push_back(n);
+      phase.notes.push_back(std::move(n));
+    }
   return phase;
 }
 
@@ -133,9 +138,12 @@ RunOutput run_headroom(const RunConfig& config, const std::vector<Load*>& loads,
     m.provenance.measurement = out.power->provenance.measurement;
     m.provenance.sensor = out.power->provenance.sensor;
   }
-  // What held for every phase (the policy obtained, memory locking) is said once, on the first phase.
-  if (!m.phases.empty())
-    m.phases.front().notes.insert(m.phases.front().notes.begin(), run_notes.begin(), run_notes.end());
+  // What was obtained, beside what was asked, in the provenance every export carries.
+  std::string obtained = "yes";
+  for (const Phase& ph : m.phases)
+    for (const ThreadLatency& t : ph.threads)
+      if (!t.realtime()) obtained = "no (" + t.policy + "): not comparable with real-time results";
+  m.provenance.settings.emplace_back("realtime obtained", obtained);
   if (const std::string e = m.bookkeeping_error(); !e.empty()) throw std::logic_error("probe bookkeeping: " + e);
   return out;
 }

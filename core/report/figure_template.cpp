@@ -34,8 +34,9 @@ std::vector<FigureTemplate> parse_figure_templates(const std::string& text, cons
       FigureTemplate t;
       t.id = f.at("id").get<std::string>();
       t.kind = f.at("kind").get<std::string>();
-      if (t.kind != "flops" && t.kind != "current" && t.kind != "triptych" && t.kind != "inference")
-        throw std::runtime_error("/kind must be flops, current, triptych or inference");
+      if (t.kind != "flops" && t.kind != "current" && t.kind != "triptych" && t.kind != "inference" &&
+          t.kind != "headroom")
+        throw std::runtime_error("/kind must be flops, current, triptych, inference or headroom");
       if (t.id.empty() || t.id.find_first_of("/\\.") != std::string::npos)
         throw std::runtime_error("/id must be a plain file stem");
       t.title = f.value("title", "");

@@ -11,8 +11,10 @@
 namespace bs {
 
 struct FigureTemplate {
-  std::string id;    // file stem: "fig1a"
-  std::string kind;  // "flops", "current", "triptych", "inference" (bench dnn: time per image per run, bars)
+  std::string id;  // file stem: "fig1a"
+  // "flops", "current", "triptych", "inference" (bench dnn: time per image per run, bars), "headroom" (the newest
+  // control-loop latency histogram)
+  std::string kind;
   std::string title;
   std::optional<DeviceKind> device_kind;  // flops: only GPUs or CPUs
   std::vector<std::string> platforms;     // empty: every platform

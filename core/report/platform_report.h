@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "analysis/platform/platform_comparison.h"
+#include "headroom/loop_requirement.h"
 #include "model/dnn_run.h"
 #include "report/candidates_section.h"
 #include "report/report_html.h"
@@ -32,6 +33,11 @@ struct ReportInput {
   std::vector<DnnRun> inference_runs;                // bench dnn runs: a table after the details when there are any
   std::string data_selection;                        // which data the report covers ("all data given")
   std::optional<CandidatesSectionInput> candidates;  // the "Candidates" section, after the details
+  // Control-loop headroom (benchscope-cli headroom, the Headroom tab, imports): a section after the inference table;
+  // with a loop requirement, its verdict per platform (already applied to `verdicts`).
+  std::vector<headroom::HeadroomMeasurement> headroom;
+  std::optional<headroom::LoopRequirement> loop;
+  std::vector<headroom::LoopVerdict> loop_verdicts;
 };
 
 using ReportSection = std::function<void(const ReportInput&, ReportBuilder&)>;

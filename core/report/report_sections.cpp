@@ -7,6 +7,7 @@
 
 #include "analysis/platform/inference_table.h"
 #include "analysis/stats/units.h"
+#include "headroom/headroom_table.h"
 
 namespace bs {
 namespace {
@@ -146,6 +147,41 @@ void inference_section(const ReportInput& in, ReportBuilder& b) {
   b.table(t);
 }
 
+void headroom_section(const ReportInput& in, ReportBuilder& b) {
+  if (in.headroom.empty() && !in.loop) return;
+  b.heading(2, "Control-loop headroom");
+  if (in.loop) {
+    ReportTable t;
+    t.caption = "Control-loop requirement: " + headroom::describe(*in.loop) +
+                ". A platform without a headroom measurement is unknown and never passes.";
+    t.header = {{"Platform", "Verdict", "Why / measurement"}};
+    t.numeric_right = false;
+    for (const headroom::LoopVerdict& v : in.loop_verdicts)
+      t.rows.push_back({v.platform, std::string(headroom::to_string(v.status)),
+                        v.reason + (v.reason.empty() || v.measurement.empty() ? "" : "; ") + v.measurement});
+    b.table(t);
+  }
+  for (const headroom::HeadroomMeasurement& m : in.headroom) {
+    const ExportTable h =
+        headroom::headroom_table(m, m.provenance.source_file.empty() ? m.command : m.provenance.source_file);
+    const headroom::KernelFacts& k = m.kernel;
+    b.paragraph(m.platform + ", " + std::string(headroom::to_string(m.kind)) + " (" + m.tool + ", " +
+                (m.provenance.date.empty() ? "undated" : m.provenance.date) + "): kernel " +
+                (k.release.empty() ? "unknown" : k.release) + ", " +
+                (k.preemption.empty() ? "preemption unknown" : k.preemption) + ", governor " +
+                (k.governor.empty() ? "unknown" : k.governor) + ", isolcpus " +
+                (k.isolcpus.empty() ? "none" : k.isolcpus) + ", nohz_full " +
+                (k.nohz_full.empty() ? "none" : k.nohz_full) +
+                (m.realtime() ? "." : ". NON-REAL-TIME: not comparable with real-time results."));
+    ReportTable t;
+    t.caption = h.caption;
+    t.header = {h.header};
+    t.rows = h.rows;
+    t.notes = h.notes;
+    b.table(t);
+  }
+}
+
 void figures_section(const ReportInput& in, ReportBuilder& b) {
   if (in.figures.empty()) return;
   b.heading(2, "Figures", true);
@@ -182,7 +218,7 @@ void candidates_section(const ReportInput& in, ReportBuilder& b) {
 }
 
 std::vector<ReportSection> report_sections() {
-  return {decision_section,   platform_details_section, inference_section,
+  return {decision_section,   platform_details_section, inference_section, headroom_section,
           candidates_section, figures_section,          sources_appendix};
 }
 

@@ -3,7 +3,7 @@
 # /usr/share/bash-completion/completions/benchscope-cli.
 _benchscope_cli() {
   local cur="${COMP_WORDS[COMP_CWORD]}"
-  local commands="battery bench check compare completion devices efficiency figures frames help import lens library peaks pipeline platforms power record-power report roofline run runs sensors synth-frame synth-power"
+  local commands="battery bench check compare completion devices efficiency figures frames headroom help import lens library peaks pipeline platforms power record-power report roofline run runs sensors synth-frame synth-power"
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -11,7 +11,7 @@ _benchscope_cli() {
   local options=""
   case "${COMP_WORDS[1]}" in
     battery) options="--help --capacity-mah --cutoff-cell-volts --dod --extra-load --internal-mohm --json --mission --model --power-log --preset --save-preset --series --step --supply-volts --volts --watts --workspace" ;;
-    bench) options="--help --arch --backend --batch --ceilings-only --columns --detect-scale --detect-workers --frames --input --isa --json --model --no-ceilings --platform --power --power-interval-ms --rounds --rows --runs --samples --step --sysfs-root --threads --updates --workers --workspace" ;;
+    bench) options="--help --arch --backend --batch --ceilings-only --columns --cpu --detect-scale --detect-workers --frames --input --isa --json --limit-us --load --model --no-ceilings --no-rt --platform --power --power-interval-ms --priority --rate --rounds --rows --runs --samples --seconds --step --sysfs-root --threads --updates --workers --workspace" ;;
     check) options="--help --remove-damaged" ;;
     compare) options="--help --all --alpha --every-point --json --threshold" ;;
     completion) options="--help" ;;
@@ -19,16 +19,17 @@ _benchscope_cli() {
     efficiency) options="--help --json --supply-volts" ;;
     figures) options="--help --data --dpi --font-pt --format --height-mm --out --preset --quiet --template --width-mm" ;;
     frames) options="--help --lens --method --out --triptych --window" ;;
+    headroom) options="--help --computation-us --cpu --deadline-us --detector --json --limit-us --load --load-command --no-idle --no-rt --platform --power --power-interval-ms --priority --rate --seconds --settle --sysfs-root --threads --workspace" ;;
     help) COMPREPLY=($(compgen -W "$commands" -- "$cur")); return ;;
     import) options="--help --copy-frames --keep-going --platform --quiet --raw-geometry" ;;
     lens) options="--help --board --circle-fov --circle-radius --fix --fov --json --lens --max-bend --max-lines --min-length --min-level --model --out --propose --reject-lines --square" ;;
     library) options="--help --battery --budget --computer --csv --extra-load --figure --json --latex --min-fps --min-runtime" ;;
     peaks) options="--help --json --kind --precision" ;;
     pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
-    platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --supply-volts --workspace" ;;
+    platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --require-loop --supply-volts --workspace" ;;
     power) options="--help --from --interval --json --min-phase --min-step --phases --query-gpu --supply-volts --to" ;;
     record-power) options="--help --interval-ms --out --quiet --seconds --sensor --sysfs-root" ;;
-    report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --out --pdf --quiet --supply-volts --template" ;;
+    report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --out --pdf --quiet --require-loop --supply-volts --template" ;;
     roofline) options="--help --json" ;;
     run) options="--help --backend --device --isa --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     runs) options="--help --clear --label --run" ;;

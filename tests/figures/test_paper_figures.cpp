@@ -91,7 +91,7 @@ class TestPaperFigures : public QObject {
     QVERIFY(dir_.isValid());
     options_.formats = {"pdf", "svg", "png"};
     const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
-    QCOMPARE(templates.size(), std::size_t{7});  // fig1a ... fig4 and the optional inference figure
+    QCOMPARE(templates.size(), std::size_t{8});  // fig1a ... fig4, the optional inference and headroom figures
     int calls = 0;
     files_ = bs::ui::render_figures(templates, paper_data(), dir_.path(), options_, bs::CancelToken{},
                                     [&](int, int, const QString&) { ++calls; })
@@ -211,9 +211,11 @@ class TestPaperFigures : public QObject {
     QCOMPARE(doc["format"].toString(), QString("benchscope-figure-list"));
     const QJsonArray files = doc["files"].toArray();
     QCOMPARE(files.size(), 6 * 3 + 6);
-    // The optional inference-time figure is skipped for data without bench dnn runs, and said so.
-    QCOMPARE(doc["skipped"].toArray().size(), 1);
+    // The optional inference-time and headroom figures are skipped for data without bench dnn runs or headroom
+    // measurements, and said so.
+    QCOMPARE(doc["skipped"].toArray().size(), 2);
     QCOMPARE(doc["skipped"].toArray()[0].toObject()["figure"].toString(), QString("inference"));
+    QCOMPARE(doc["skipped"].toArray()[1].toObject()["figure"].toString(), QString("headroom"));
     bool fig4_reconstructed = false;
     for (const auto& v : files) {
       const QJsonObject f = v.toObject();

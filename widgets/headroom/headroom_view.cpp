@@ -54,7 +54,7 @@ HeadroomView::HeadroomView(QWidget* parent)
       table_(new QTableWidget(this)) {
   chooser_->setToolTip(tr("The headroom measurement shown: platform, tool, what it measured, when"));
   chooser_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  chooser_->setMinimumContentsLength(40);
+  chooser_->setMinimumContentsLength(28);
   deadline_->setRange(1, 10'000'000);
   deadline_->setSuffix(tr(" µs"));
   deadline_->setToolTip(tr("The vertical line: cycles whose wake-up latency lies beyond it are counted per curve"));
@@ -122,11 +122,12 @@ void HeadroomView::set_measurements(std::vector<StoredHeadroom> measurements) {
     chooser_->clear();
     for (const StoredHeadroom& s : measurements_) chooser_->addItem(describe(s), QVariant::fromValue<qint64>(s.id));
     const int again = chooser_->findData(QVariant::fromValue<qint64>(shown));
-    // A new measurement (the highest id) comes to the front; otherwise the one shown stays.
+    // A new measurement (an id above every one shown before) comes to the front; otherwise the one shown stays.
     std::int64_t newest = -1;
     for (const StoredHeadroom& s : measurements_) newest = std::max(newest, s.id);
-    chooser_->setCurrentIndex(again >= 0 && shown >= newest ? again
-                                                            : chooser_->findData(QVariant::fromValue<qint64>(newest)));
+    const bool arrived = newest > newest_seen_;
+    newest_seen_ = std::max(newest_seen_, newest);
+    chooser_->setCurrentIndex(again >= 0 && !arrived ? again : chooser_->findData(QVariant::fromValue<qint64>(newest)));
   }
   show_current();
 }

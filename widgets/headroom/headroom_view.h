@@ -57,6 +57,7 @@ class HeadroomView : public QWidget {
   QCustomPlot* plot_;
   QTableWidget* table_;
   std::vector<StoredHeadroom> measurements_;
+  std::int64_t newest_seen_ = -1;  // the highest id shown so far: a higher one is new and comes to the front
 };
 
 }  // namespace bs::ui

@@ -132,7 +132,6 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
       tr("Load in parallel with the computer, e.g. the robot's servos (the paper's robot: up to 225 W)"));
   use_loop_ = new QCheckBox(tr("Control loop:"), this);
   loop_ = new QLineEdit(QStringLiteral("1kHz,p99.9<=200us,max-consecutive-misses<=1,load=pipeline@30fps"), this);
-  loop_->setMinimumWidth(260);
   use_loop_->setToolTip(
       tr("A control-loop requirement checked against each platform's headroom measurement (the Headroom tab, "
          "benchscope-cli headroom): a platform without one is unknown and never passes"));
@@ -161,8 +160,10 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   mission_label->setToolTip(mission_->toolTip());
   battery_row->addWidget(mission_label);
   battery_row->addWidget(mission_, 1);
-  battery_row->addWidget(use_loop_);
-  battery_row->addWidget(loop_, 1);
+  // A row of its own: the battery row already fills a 1280 px window beside the workspace dock.
+  auto* loop_row = new QHBoxLayout;
+  loop_row->addWidget(use_loop_);
+  loop_row->addWidget(loop_, 1);
 
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
@@ -178,6 +179,7 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(controls);
   layout->addLayout(battery_row);
+  layout->addLayout(loop_row);
   layout->addWidget(summary_);
   layout->addWidget(table_, 2);
   inference_ = new InferenceTable(this);

@@ -73,6 +73,7 @@ class PlatformView : public QWidget {
   QCheckBox* loop_check() const { return use_loop_; }
   QLineEdit* loop_edit() const { return loop_; }
   const std::vector<headroom::LoopVerdict>& loop_verdicts() const { return loop_verdicts_; }
+  std::optional<headroom::LoopRequirement> loop_requirement() const;  // null when off or mistyped
 
  signals:
   // The user asked where a cell's number came from (double-click): the platform and the column id.
@@ -84,7 +85,6 @@ class PlatformView : public QWidget {
   void export_table(bool latex);
   void fill_battery_choices();
   bool constrained() const;
-  std::optional<headroom::LoopRequirement> loop_requirement() const;  // null when off or mistyped
 
   QCheckBox *use_budget_, *use_fps_, *use_runtime_;
   QDoubleSpinBox *budget_, *fps_, *runtime_, *extra_load_;

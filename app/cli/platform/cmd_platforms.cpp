@@ -57,23 +57,28 @@ nlohmann::json stage_json(const std::optional<Summary>& s) {
   return {{"mean", s->mean}, {"sd", s->sd}, {"n", s->n}};
 }
 
+// Each constraint check with its requirement, value (null: no data), verdict and margin.
+nlohmann::json checks_json(const std::vector<ConstraintCheck>& checks) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ConstraintCheck& k : checks)
+    out.push_back({{"name", k.name},
+                   {"unit", k.unit},
+                   {"required", k.required},
+                   {"actual", opt(k.actual)},
+                   {"met", k.met},
+                   {"margin", k.margin}});
+  return out;
+}
+
 nlohmann::json loop_json(const headroom::LoopRequirement& r, const std::vector<headroom::LoopVerdict>& loop) {
   nlohmann::json list = nlohmann::json::array();
   for (const headroom::LoopVerdict& v : loop) {
-    nlohmann::json checks = nlohmann::json::array();
-    for (const auto& k : v.checks)
-      checks.push_back({{"name", k.name},
-                        {"unit", k.unit},
-                        {"required", k.required},
-                        {"actual", opt(k.actual)},
-                        {"met", k.met},
-                        {"margin", k.margin}});
     list.push_back({{"platform", v.platform},
                     {"status", std::string(headroom::to_string(v.status))},
                     {"reason", v.reason},
                     {"measurement", v.measurement},
                     {"realtime", v.realtime},
-                    {"checks", checks}});
+                    {"checks", checks_json(v.checks)}});
   }
   return {{"requirement", r.text}, {"described", headroom::describe(r)}, {"platforms", list}};
 }
@@ -148,14 +153,6 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const PlatformRow& r = rows[i];
-      nlohmann::json checks = nlohmann::json::array();
-      for (const auto& k : verdicts[i].checks)
-        checks.push_back({{"name", k.name},
-                          {"unit", k.unit},
-                          {"required", k.required},
-                          {"actual", opt(k.actual)},
-                          {"met", k.met},
-                          {"margin", k.margin}});
       nlohmann::json sources = nlohmann::json::object();
       for (const auto& [col, s] : r.sources)
         sources[col] = {{"file", s.source_file}, {"origin", std::string(to_string(s.origin))}, {"how", s.how}};
@@ -183,7 +180,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                       {"note", verdicts[i].note},
                       {"ranked_flops", verdicts[i].ranked_flops},
                       {"ranking_note", verdicts[i].ranking_note},
-                      {"checks", checks},
+                      {"checks", checks_json(verdicts[i].checks)},
                       {"sources", sources},
                       {"power_measurement", r.power_measurement},
                       {"flags", flags_json(r.all_flags())},

@@ -83,6 +83,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   request.constraints = platform.constraints;
   request.comparison = platform.options;
   request.candidates = std::move(candidates);
+  request.loop = platform.loop;
   const bool quiet = args.has("--quiet");
   const QStringList files =
       ui::write_report(request, templates, fd, o, interrupt_token(), [&](int done, int total, const QString& what) {
@@ -101,7 +102,9 @@ const CommandRegistrar registrar({
     "                             [--budget W] [--min-fps FPS] [--min-runtime MIN] [--battery PRESET]\n"
     "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt "
     "8]\n"
-    "                             [--library COMPUTERS] [--quiet]\n"
+    "                             [--library COMPUTERS] [--require-loop SPEC] [--quiet]\n"
+    "  --require-loop: a control-loop requirement as in `platforms` (a section \"Control-loop headroom\" with each\n"
+    "  headroom measurement and the verdict per platform; unknown never passes).\n"
     "  The platform comparison, then one page per platform: best GPU and CPU peak with device, backend and % of\n"
     "  theoretical peak, pipeline timings (ms, mean ± SD (n)), mean and max power, GFLOPS/W (the paper's and at\n"
     "  mean power), energy per frame, battery runtime (constant-power model, --battery preset, over --mission when\n"

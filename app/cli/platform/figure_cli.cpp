@@ -48,6 +48,7 @@ ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedDa
   fd.traces = data.power_traces;
   fd.pipelines = pipeline_timings(data.pipeline_runs);
   fd.inference_runs = data.dnn_runs;
+  fd.headroom = data.headroom;
   if (!data.frames.empty()) {
     fd.frame = data.frames.front();
   } else if (paths.size() == 1 && looks_like_workspace(paths[0])) {

@@ -10,7 +10,12 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <QProcess>
+#include <cmath>
+#include <filesystem>
+
 #include "../../support/cli_harness.h"
+#include "../../support/sysfs_fixture.h"
 #include "store/workspace.h"
 
 namespace {
@@ -56,12 +61,46 @@ class TestCliHeadroom : public QObject {
       }
     }
     QVERIFY2(r.err.contains("not comparable with real-time"), r.err.constData());
+    bool said = false;  // the provenance says what was obtained, not only what was asked
+    for (const auto kv : doc["provenance"].toObject()["settings"].toArray())
+      said |= kv.toArray()[0].toString() == "realtime obtained" &&
+              kv.toArray()[1].toString().startsWith("no (SCHED_OTHER)");
+    QVERIFY(said);
     // The stored measurement reads back whole, its books holding.
     bs::Workspace w(ws.toStdString());
     const auto stored = w.headroom_measurements();
     QCOMPARE(stored.size(), std::size_t{1});
     QCOMPARE(QString::fromStdString(stored[0].measurement.platform), QString("NUC"));
     QCOMPARE(QString::fromStdString(stored[0].measurement.bookkeeping_error()), QString());
+  }
+
+  // With a fixture power sensor (a constant 3.96 W on the board's input rail) every phase gets its mean power, and
+  // the trace is stored in the same import as the measurement.
+  void power_per_phase() {
+    QTemporaryDir sys, dir;
+    const std::filesystem::path root = sys.path().toStdString();
+    bs::test::ina3221x_channel(root, "6-0040", 0, "POM_5V_IN", 3960, 792, 5000);
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("BENCHSCOPE_NVML_LIBRARY", "none");  // the fixture's sensor only, whatever GPU is here
+    p.setProcessEnvironment(env);
+    const QString ws = dir.filePath("p.bsw");
+    p.start(bs::test::kCli,
+            {"headroom", "--seconds", "0.4", "--settle", "0", "--no-rt", "--rate", "200", "--load", "flops:4",
+             "--power", "auto", "--sysfs-root", sys.path(), "--power-interval-ms", "5", "--workspace", ws, "--json"});
+    QVERIFY(p.waitForFinished(300000));
+    const QByteArray out = p.readAllStandardOutput();
+    QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+    const QJsonArray phases = QJsonDocument::fromJson(out).object()["phases"].toArray();
+    QCOMPARE(phases.size(), 2);
+    for (const auto ph : phases) {
+      QVERIFY2(std::fabs(ph.toObject()["mean_power_w"].toDouble() - 3.96) < 1e-6, out.constData());
+      QVERIFY(ph.toObject()["power_sensor"].toString().contains("POM_5V_IN"));
+    }
+    bs::Workspace w(ws.toStdString());
+    QCOMPARE(w.headroom_measurements().size(), std::size_t{1});
+    QCOMPARE(w.power_trace_summaries().size(), std::size_t{1});
+    QCOMPARE(w.power_trace_summaries()[0].import_id, w.headroom_measurements()[0].import_id);
   }
 
   void prints_the_table() {

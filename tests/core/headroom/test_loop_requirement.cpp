@@ -4,38 +4,19 @@
 // for a wake-up-only measurement), and how it changes the recommendation.
 #include <QTest>
 
-#include "headroom/latency_recorder.h"
+#include "../../support/headroom_samples.h"
 #include "headroom/loop_requirement.h"
 
 using namespace bs::headroom;
 
 namespace {
 
-// A 1 kHz application loop on `platform`: 1000 cycles at `base_us`, with `late` cycles at `late_us` in a row
-// (deadline 1000 us) in the phase `phase` and an idle phase of 1000 cycles at 5 us.
-HeadroomMeasurement loop(const std::string& platform, const std::string& phase, int base_us, int late, int late_us,
-                         const std::string& date = "2026-11-28T10:00:00Z") {
-  HeadroomMeasurement m;
-  m.platform = platform;
-  m.kind = LatencyKind::ApplicationLoop;
-  m.tool = "benchscope probe";
-  m.provenance.date = date;
-  for (const std::string& name : {std::string("idle"), phase}) {
-    LatencyRecorder r(10'000'000, 1000, 1'000'000);
-    for (int i = 0; i < 1000; ++i) r.add((name == "idle" ? 5 : base_us) * 1000LL);
-    if (name != "idle")
-      for (int i = 0; i < late; ++i) r.add(late_us * 1000LL);
-    ThreadLatency t = r.result();
-    t.policy = "SCHED_FIFO";
-    t.priority = 80;
-    t.period_ns = 1'000'000;
-    t.deadline_ns = 1'000'000;
-    Phase p;
-    p.name = name;
-    p.threads.push_back(t);
-    m.phases.push_back(p);
-  }
-  return m;
+// A 1 kHz loop on `platform`: an idle phase of 1000 cycles at 5 us, and the phase `phase` with 1000 cycles at
+// `base_us` and `late` cycles at `late_us` in a row (deadline 1000 us).
+HeadroomMeasurement loop(const std::string& platform, const std::string& phase, int base_us, int late, int late_us) {
+  return bs::test::loop_measurement(platform,
+                                    {{"idle", bs::test::loop_thread(1000, 5)},
+                                     {phase, bs::test::loop_thread(1000, base_us, std::vector<int>(late, late_us))}});
 }
 
 }  // namespace

@@ -9,32 +9,17 @@
 
 #include <filesystem>
 
+#include "../../support/headroom_samples.h"
 #include "common/importer.h"
-#include "headroom/latency_recorder.h"
 #include "platform/platform_view.h"
 
 using namespace bs::headroom;
 
 namespace {
 
+// p99.9 of its 1001 cycles is the first of the two late ones.
 HeadroomMeasurement loop_on(const std::string& platform, int late_us) {
-  HeadroomMeasurement m;
-  m.platform = platform;
-  m.kind = LatencyKind::ApplicationLoop;
-  m.tool = "benchscope probe";
-  Phase p;
-  p.name = "pipeline@30fps";
-  LatencyRecorder r(10'000'000, 1000, 1'000'000);
-  for (int i = 0; i < 999; ++i) r.add(15'000);
-  r.add(late_us * 1000LL);
-  r.add(late_us * 1000LL);
-  ThreadLatency t = r.result();
-  t.policy = "SCHED_FIFO";
-  t.period_ns = 1'000'000;
-  t.deadline_ns = 1'000'000;
-  p.threads.push_back(t);
-  m.phases.push_back(p);
-  return m;
+  return bs::test::loop_measurement(platform, {{"pipeline@30fps", bs::test::loop_thread(999, 15, {late_us, late_us})}});
 }
 
 }  // namespace
