@@ -58,12 +58,18 @@ class TestHeadroomImportTab : public QObject {
     // Every platform question is answered like a person would: the dialog's text set to "rpi4", then OK.
     int asked = 0;
     QTimer answer;
+    // The import's progress dialog may stand above the question, so the question is found among the windows.
     connect(&answer, &QTimer::timeout, this, [&] {
-      if (auto* d = qobject_cast<QInputDialog*>(QApplication::activeModalWidget())) {
-        ++asked;
-        d->setTextValue("rpi4");
-        d->accept();
-      }
+      static int ticks = 0;
+      if (++ticks % 100 == 0)
+        for (QWidget* top : QApplication::topLevelWidgets())
+          if (top->isVisible()) qDebug() << "DBG" << top->metaObject()->className() << top->windowTitle();
+      for (QWidget* top : QApplication::topLevelWidgets())
+        if (auto* d = qobject_cast<QInputDialog*>(top); d && d->isVisible()) {
+          ++asked;
+          d->setTextValue("rpi4");
+          d->accept();
+        }
     });
     answer.start(20);
 
