@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/frozen_column.h"
 
+#include <algorithm>
+
 #include <QEvent>
 #include <QHeaderView>
 #include <QScrollBar>
@@ -51,12 +53,15 @@ FrozenFirstColumn::FrozenFirstColumn(QTableView* table)
   connect(table->model(), &QAbstractItemModel::rowsInserted, this, &FrozenFirstColumn::sync_columns);
   table->viewport()->stackUnder(frozen_);
   table->installEventFilter(this);
+  // The viewport shrinks without the table resizing when a scroll bar appears: follow it too.
+  table->viewport()->installEventFilter(this);
   sync_columns();
   frozen_->show();
 }
 
 FrozenFirstColumn::~FrozenFirstColumn() {
   table_->removeEventFilter(this);
+  table_->viewport()->removeEventFilter(this);
   if (table_->model()) table_->model()->disconnect(this);
   delete frozen_;
 }
@@ -75,13 +80,20 @@ bool FrozenFirstColumn::eventFilter(QObject* watched, QEvent* event) {
   if (watched == table_ &&
       (event->type() == QEvent::Resize || event->type() == QEvent::LayoutRequest || event->type() == QEvent::Show))
     sync_columns();
+  else if (watched == table_->viewport() && event->type() == QEvent::Resize)
+    update_geometry();
   return QObject::eventFilter(watched, event);
 }
 
 void FrozenFirstColumn::update_geometry() {
   const int left = table_->verticalHeader()->isVisible() ? table_->verticalHeader()->width() : 0;
-  frozen_->setGeometry(left + table_->frameWidth(), table_->frameWidth(), table_->columnWidth(0),
-                       table_->viewport()->height() + table_->horizontalHeader()->height());
+  // Never beyond the table's frame: a table squeezed to less than its header and one row would otherwise have the
+  // overlay drawn over whatever lies under it.
+  const int frame = table_->frameWidth();
+  const int width = std::min(table_->columnWidth(0), table_->width() - left - 2 * frame);
+  const int height =
+      std::min(table_->viewport()->height() + table_->horizontalHeader()->height(), table_->height() - 2 * frame);
+  frozen_->setGeometry(left + frame, frame, std::max(width, 0), std::max(height, 0));
 }
 
 }  // namespace bs::ui

@@ -12,10 +12,12 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "analysis/library/graph_benchmarks_table.h"
 #include "candidates_figure.h"
 #include "common/plot_legend.h"
 
@@ -76,6 +78,28 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
   plot_ = new QCustomPlot(this);
   plot_->setMinimumWidth(320);
 
+  graphs_ = new QWidget(this);
+  graph_table_ = new QTableWidget(graphs_);
+  graph_table_->setObjectName(QStringLiteral("graph_benchmarks"));
+  graph_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  graph_table_->verticalHeader()->setVisible(false);
+  graph_table_->setWordWrap(true);
+  graph_table_->horizontalHeader()->setStretchLastSection(true);
+  auto* graphs_title = new QLabel(
+      tr("<b>ROS 2 graph benchmarks</b> (ros2_benchmark, RobotPerf): compared only within one tool, node, input, "
+         "release and measure"),
+      graphs_);
+  graphs_title->setWordWrap(true);
+  auto* export_graphs = new QPushButton(tr("Export CSV…"), graphs_);
+  export_graphs->setToolTip(tr("Save the ROS 2 graph benchmark rows as CSV"));
+  auto* graphs_top = new QHBoxLayout;
+  graphs_top->addWidget(graphs_title, 1);
+  graphs_top->addWidget(export_graphs);
+  auto* graphs_layout = new QVBoxLayout(graphs_);
+  graphs_layout->setContentsMargins(0, 0, 0, 0);
+  graphs_layout->addLayout(graphs_top);
+  graphs_layout->addWidget(graph_table_, 1);
+
   auto* top = new QHBoxLayout;
   top->addWidget(new QLabel(tr("Candidates from the library:"), this));
   top->addWidget(spec_, 1);
@@ -90,10 +114,19 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addLayout(top);
   layout->addWidget(note_);
-  layout->addWidget(split, 1);
+  // The graph benchmarks on a page of their own beside the inference candidates: under them, at 1280x800 neither
+  // table kept more than a row in view.
+  views_ = new QTabWidget(this);
+  views_->setObjectName(QStringLiteral("candidate_views"));
+  views_->setDocumentMode(true);
+  views_->addTab(split, tr("Inference results and peaks"));
+  views_->addTab(graphs_, tr("ROS 2 graph benchmarks"));
+  views_->setTabVisible(1, false);
+  layout->addWidget(views_, 1);
   connect(spec_, &QLineEdit::editingFinished, this, &CandidatesPanel::recompute);
   connect(spec_, &QLineEdit::editingFinished, this, &CandidatesPanel::selection_edited);
   connect(export_csv, &QPushButton::clicked, this, &CandidatesPanel::export_csv);
+  connect(export_graphs, &QPushButton::clicked, this, &CandidatesPanel::export_graphs_csv);
 }
 
 void CandidatesPanel::set_own(std::vector<PlatformRow> rows, std::vector<PipelineRun> pipelines,
@@ -137,6 +170,7 @@ void CandidatesPanel::recompute() {
   classes_ = rank_candidates(in, constraints_, options_);
   peaks_ = peak_candidates(in);
   fill();
+  fill_graphs(in.library);
   const QString plot_note = draw_candidates(*plot_, classes_);
   // Beside the axes, not under them: the Platforms tab leaves this plot little height (at 1280x800 the legend's
   // seven rows under it left the axes 50 px); paper exports put it under them again.
@@ -195,16 +229,72 @@ void CandidatesPanel::fill() {
   table_->resizeRowsToContents();
 }
 
-void CandidatesPanel::export_csv() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, tr("Export candidates"), QStringLiteral("candidates.csv"), tr("CSV (*.csv)"));
+void CandidatesPanel::fill_graphs(const std::vector<const LibraryResult*>& chosen) {
+  graph_classes_ = graph_benchmark_classes(chosen);
+  std::size_t n = 0;
+  for (const GraphBenchmarkClass& k : graph_classes_) n += k.rows.size();
+  views_->setTabVisible(1, n > 0);
+  views_->setTabText(1, tr("ROS 2 graph benchmarks (%1)").arg(n));
+  views_->setTabToolTip(1, tr("ros2_benchmark and RobotPerf results of the chosen library computers"));
+  const ExportTable t = graph_benchmarks_table(graph_classes_, bundled_library().library);
+  graph_table_->clear();
+  // The source is each row's tooltip (and the CSV's last column), as in the candidates table.
+  graph_table_->setColumnCount(static_cast<int>(t.header.size()) - 1);
+  QStringList header;
+  for (std::size_t c = 0; c + 1 < t.header.size(); ++c) header << QString::fromStdString(t.header[c]);
+  graph_table_->setHorizontalHeaderLabels(header);
+  graph_table_->setRowCount(static_cast<int>(t.rows.size()));
+  const QColor published_tint(232, 240, 250);
+  const std::size_t value_column = 2;
+  std::size_t row = 0;
+  for (const GraphBenchmarkClass& k : graph_classes_)
+    for (const LibraryResult* r : k.rows) {
+      QString tip = tr("Source: %1").arg(QString::fromStdString(t.rows[row].back()));
+      if (!r->software.empty()) tip += tr("\nSoftware: %1").arg(QString::fromStdString(r->software));
+      if (!r->date.empty()) tip += tr("\nDate: %1").arg(QString::fromStdString(r->date));
+      if (!r->flags.empty()) tip = QString::fromStdString(flags_text(r->flags)) + "\n\n" + tip;
+      for (std::size_t col = 0; col + 1 < t.rows[row].size(); ++col) {
+        auto* item = new QTableWidgetItem(QString::fromStdString(t.rows[row][col]));
+        item->setToolTip(tip);
+        if (col == value_column) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        QFont f = item->font();
+        f.setItalic(true);  // published, as in the candidates table
+        item->setFont(f);
+        item->setBackground(published_tint);
+        graph_table_->setItem(static_cast<int>(row), static_cast<int>(col), item);
+      }
+      ++row;
+    }
+  graph_table_->resizeColumnsToContents();
+  for (int c = 0; c < graph_table_->columnCount(); ++c)
+    graph_table_->setColumnWidth(c, std::min(graph_table_->columnWidth(c), 240));
+  graph_table_->resizeRowsToContents();
+}
+
+namespace {
+
+// Asks where, then writes the table as CSV there; a failed write says so.
+void save_table_csv(QWidget* parent, const QString& title, const QString& file_name, const ExportTable& table) {
+  const QString path = QFileDialog::getSaveFileName(parent, title, file_name, QObject::tr("CSV (*.csv)"));
   if (path.isEmpty()) return;
-  const bool constrained = constraints_.power_budget_w || constraints_.min_fps || constraints_.min_runtime_h;
-  const std::string text = to_csv(candidates_table(classes_, constrained));
+  const std::string text = to_csv(table);
   QFile f(path);
   if (!f.open(QIODevice::WriteOnly) ||
       f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()))
-    QMessageBox::warning(this, tr("Export candidates"), tr("Cannot write %1").arg(path));
+    QMessageBox::warning(parent, title, QObject::tr("Cannot write %1").arg(path));
+}
+
+}  // namespace
+
+void CandidatesPanel::export_csv() {
+  const bool constrained = constraints_.power_budget_w || constraints_.min_fps || constraints_.min_runtime_h;
+  save_table_csv(this, tr("Export candidates"), QStringLiteral("candidates.csv"),
+                 candidates_table(classes_, constrained));
+}
+
+void CandidatesPanel::export_graphs_csv() {
+  save_table_csv(this, tr("Export ROS 2 graph benchmarks"), QStringLiteral("ros2-graph-benchmarks.csv"),
+                 graph_benchmarks_table(graph_classes_, bundled_library().library));
 }
 
 }  // namespace bs::ui

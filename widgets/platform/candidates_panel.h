@@ -5,7 +5,9 @@
 // one network, scenario and precision only (core: analysis/library/candidates.h). The table shows every row's
 // origin with its own marker (● measured, ■ reconstructed, ◆ published; published rows in italics on a tint),
 // the differences that remain and, in the tooltip, the source and any plausibility flag; the figure beside it
-// plots inferences per second against power with one marker per origin and one colour per class.
+// plots inferences per second against power with one marker per origin and one colour per class. The chosen
+// computers' ROS 2 graph benchmark results (ros2_benchmark, RobotPerf) are a table on a page of their own beside it,
+// each row in its class and saying what its value is (core: analysis/library/graph_benchmarks_table.h).
 #include <QWidget>
 #include <vector>
 
@@ -14,6 +16,7 @@
 class QCustomPlot;
 class QLabel;
 class QLineEdit;
+class QTabWidget;
 class QTableWidget;
 class QToolButton;
 
@@ -30,6 +33,8 @@ class CandidatesPanel : public QWidget {
   void set_selection(const QString& spec);
   QString selection() const;
   QTableWidget* table() const { return table_; }
+  QTableWidget* graph_table() const { return graph_table_; }
+  QTabWidget* views() const { return views_; }  // page 0: inference candidates; page 1: graph benchmarks
   QCustomPlot* plot() const { return plot_; }
   const std::vector<CandidateClass>& classes() const { return classes_; }
   const std::vector<PeakClass>& peaks() const { return peaks_; }
@@ -45,13 +50,19 @@ class CandidatesPanel : public QWidget {
  private:
   void recompute();
   void fill();
+  void fill_graphs(const std::vector<const LibraryResult*>& chosen);
   void export_csv();
+  void export_graphs_csv();
 
   QLineEdit* spec_;
   QToolButton* computers_;
   QLabel* note_;
   QTableWidget* table_;
   QCustomPlot* plot_;
+  QTabWidget* views_;  // the inference candidates' table and figure; the graph benchmarks (shown when there are any)
+  QWidget* graphs_;    // the graph benchmarks' title, export button and table
+  QTableWidget* graph_table_;
+  std::vector<GraphBenchmarkClass> graph_classes_;
   std::vector<PlatformRow> rows_;
   std::vector<PipelineRun> pipelines_;
   std::vector<DnnRun> dnn_;

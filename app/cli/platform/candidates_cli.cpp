@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/args.h"
+#include "common/flag_output.h"
 #include "common/text_table.h"
 
 namespace bs::cli {
@@ -135,6 +136,37 @@ CandidateInputs library_candidate_inputs(std::span<const PlatformRow> rows, cons
     throw UsageError(std::string("--library: ") + e.what());
   }
   return in;
+}
+
+void print_graph_benchmarks(std::ostream& out, const std::vector<const LibraryResult*>& chosen, const Library& lib) {
+  const auto graphs = graph_benchmark_classes(chosen);
+  if (graphs.empty()) return;
+  out << "\nROS 2 graph benchmarks: compared within one tool, node, input, release and measure\n";
+  for (const GraphBenchmarkClass& g : graphs) {
+    out << "== " << g.title << " ==\n";
+    for (const LibraryResult* r : g.rows)
+      out << "  " << lib.computer_name(r->computer) << ": " << library_result_summary(*r) << "\n    " << r->source.url
+          << '\n';
+  }
+}
+
+nlohmann::json graph_benchmarks_json(const std::vector<const LibraryResult*>& chosen, const Library& lib) {
+  nlohmann::json classes = nlohmann::json::array();
+  for (const GraphBenchmarkClass& g : graph_benchmark_classes(chosen)) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const LibraryResult* r : g.rows) {
+      rows.push_back({{"id", r->id},
+                      {"computer", lib.computer_name(r->computer)},
+                      {"value", r->value ? nlohmann::json(*r->value) : nlohmann::json(nullptr)},
+                      {"unit", r->unit},
+                      {"what_the_value_is", r->statistic},
+                      {"release", r->release},
+                      {"source", r->source.url},
+                      {"flags", flags_json(r->flags)}});
+    }
+    classes.push_back({{"class", g.title}, {"rows", rows}});
+  }
+  return classes;
 }
 
 }  // namespace bs::cli

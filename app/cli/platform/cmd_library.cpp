@@ -283,21 +283,14 @@ int run_compare(const std::vector<std::string>& raw, std::ostream& out) {
     out << nlohmann::json{{"format", "benchscope-candidates"},
                           {"version", 1},
                           {"battery", pa.pack.name},
-                          {"candidates", candidates_json(classes, peaks)}}
+                          {"candidates", candidates_json(classes, peaks)},
+                          {"graph_benchmarks", graph_benchmarks_json(in.library, lib)}}
                .dump(2)
         << '\n';
     return 0;
   }
   print_candidates(out, classes, peaks, pa.constrained());
-  // ROS 2 graph benchmarks: like with like only (tool, node, input, release, measure).
-  const auto graphs = graph_benchmark_classes(in.library);
-  if (!graphs.empty()) out << "\nROS 2 graph benchmarks: compared within one tool, node, input, release and measure\n";
-  for (const GraphBenchmarkClass& g : graphs) {
-    out << "== " << g.title << " ==\n";
-    for (const LibraryResult* r : g.rows)
-      out << "  " << lib.computer_name(r->computer) << ": " << library_result_summary(*r) << "\n    " << r->source.url
-          << '\n';
-  }
+  print_graph_benchmarks(out, in.library, lib);
   out << "battery: " << pa.pack.name << ", constant-power model at each row's power\n";
   return 0;
 }

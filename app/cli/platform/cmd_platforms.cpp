@@ -165,6 +165,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   // Candidates: the own platforms beside the library's published results named by --library.
   std::vector<CandidateClass> classes;
   std::vector<PeakClass> peaks;
+  std::vector<const LibraryResult*> library_results;  // the library results the selection names
   // The library computers given, else those the workspace's Platforms tab stored.
   const std::string library = args.value("--library").value_or(platform_args.library);
   const bool with_library = !library.empty();
@@ -172,6 +173,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     const CandidateInputs in = library_candidate_inputs(rows, data, library);
     classes = rank_candidates(in, c, options);
     peaks = peak_candidates(in);
+    library_results = in.library;
     if (const auto p = args.value("--candidates-latex"))
       write_file(*p, to_latex(candidates_table(classes, constrained)));
     if (const auto p = args.value("--candidates-csv")) write_file(*p, to_csv(candidates_table(classes, constrained)));
@@ -225,6 +227,9 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                           {"library", library},
                           {"platforms", list},
                           {"candidates", with_library ? candidates_json(classes, peaks) : nlohmann::json(nullptr)},
+                          {"graph_benchmarks", with_library
+                                                   ? graph_benchmarks_json(library_results, bundled_library().library)
+                                                   : nlohmann::json(nullptr)},
                           {"control_loop",
                            platform_args.loop ? loop_json(*platform_args.loop, loop) : nlohmann::json(nullptr)}}
                .dump(2)
@@ -278,6 +283,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   if (with_library) {
     out << '\n';
     print_candidates(out, classes, peaks, constrained);
+    print_graph_benchmarks(out, library_results, bundled_library().library);
   }
   if (platform_args.loop) print_loop(out, *platform_args.loop, loop);
   if (!platform_args.stored.empty())

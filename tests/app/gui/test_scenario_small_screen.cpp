@@ -21,6 +21,7 @@
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTableView>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBrowser>
@@ -186,6 +187,20 @@ class TestScenarioSmallScreen : public QObject {
       if (const QString look = qEnvironmentVariable("BENCHSCOPE_LOOK_DIR"); !look.isEmpty())
         QVERIFY(w.grab().save(QStringLiteral("%1/small-screen-%2.png").arg(look, tab.toLower())));
     }
+    // The chosen computers' ROS 2 graph benchmarks (#46), on their page beside the candidates: clicked as a person
+    // does, the table in view with its rows readable.
+    bs::test::click_tab(w, bs::test::tab_of(w, w.platform_view()));
+    QTabWidget* views = w.platform_view()->candidates()->views();
+    QVERIFY(views->isTabVisible(1));
+    QTest::mouseClick(views->tabBar(), Qt::LeftButton, {}, views->tabBar()->tabRect(1).center());
+    QTRY_COMPARE(views->currentIndex(), 1);
+    for (const QString& p : cut_on_screen(views->currentWidget(), screen))
+      problems << "Platforms, graph benchmarks: " + p;
+    QTableWidget* graphs = w.platform_view()->candidates()->graph_table();
+    if (graphs->rowCount() < 1 || graphs->viewport()->height() < 4 * graphs->rowHeight(0))
+      problems << QStringLiteral("Platforms, graph benchmarks: fewer than four rows in view");
+    if (const QString look = qEnvironmentVariable("BENCHSCOPE_LOOK_DIR"); !look.isEmpty())
+      QVERIFY(w.grab().save(QStringLiteral("%1/small-screen-platforms-graphs.png").arg(look)));
     // The Battery tab's runtimes in view without scrolling sideways.
     QTableView* battery = w.battery_view()->table();
     bs::test::click_tab(w, bs::test::tab_of(w, w.battery_view()));

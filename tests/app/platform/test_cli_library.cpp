@@ -3,6 +3,7 @@
 // list and show work from library.json alone, show gives the URL and each value's line, and says where a kept copy
 // would be ($BENCHSCOPE_PUBLIC_DATA_DIR/resources/library/...) and whether it is there. With the shared folder of
 // third-party files present (the configured BENCHSCOPE_PUBLIC_DATA_DIR), show finds the copy.
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -52,6 +53,34 @@ class TestCliLibrary : public QObject {
     const QJsonObject source = QJsonDocument::fromJson(json.out).object()["source"].toObject();
     QCOMPARE(source["kept_copy"].toString(), empty.path() + "/" + kKept);
     QCOMPARE(source["kept_copy_present"].toBool(), false);
+  }
+
+  // #46: the chosen computers' ROS 2 graph benchmarks, in the terminal and as JSON, each saying what its value is.
+  void compare_gives_graph_benchmarks_with_what_each_value_is() {
+    QTemporaryDir empty;
+    const auto text = cli_with(empty.path(), {"library", "compare", "orin"});
+    QCOMPARE(text.code, 0);
+    QVERIFY2(text.out.contains("ROS 2 graph benchmarks: compared within one tool, node, input, release and measure"),
+             text.out);
+    QVERIFY2(text.out.contains("the latency of the FIRST message only"), text.out);
+    const auto json = cli_with(empty.path(), {"library", "compare", "orin", "--json"});
+    QCOMPARE(json.code, 0);
+    const QJsonArray classes = QJsonDocument::fromJson(json.out).object()["graph_benchmarks"].toArray();
+    QVERIFY(classes.size() >= 10);
+    bool jitter_is_a_maximum = false;
+    for (const auto& c : classes)
+      for (const auto& row : c.toObject()["rows"].toArray()) {
+        const QJsonObject r = row.toObject();
+        QVERIFY(r["source"].toString().startsWith("https://github.com/"));
+        QVERIFY(!r["what_the_value_is"].toString().isEmpty());
+        if (r["id"].toString() == "ros2bench-jetson-agx-orin-rectifynode-jitter-peak")
+          jitter_is_a_maximum = r["what_the_value_is"].toString().contains("a maximum") && r["unit"] == "s";
+      }
+    QVERIFY(jitter_is_a_maximum);
+    // A computer with no graph benchmarks gives none, not an empty heading.
+    const auto pi5 = cli_with(empty.path(), {"library", "compare", "pi5"});
+    QCOMPARE(pi5.code, 0);
+    QVERIFY(!pi5.out.contains("ROS 2 graph benchmarks"));
   }
 
   void show_finds_the_kept_copy_in_the_shared_folder() {

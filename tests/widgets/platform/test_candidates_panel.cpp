@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Platforms tab's candidates: the paper's sample data beside library computers chosen by alias; every row shows
 // its origin with its marker, published rows are set apart, like is compared with like (class column), the figure
-// has a legend entry per origin, and an unknown computer is said in the note.
+// has a legend entry per origin, an unknown computer is said in the note, and the
+// chosen computers' ROS 2 graph benchmarks are a table of their own (#46).
 #include <filesystem>
 
 #include <qcustomplot.h>
@@ -68,6 +69,19 @@ class TestCandidatesPanel : public QObject {
     QCOMPARE(reconstructed, 2);
     QVERIFY(published >= 9);  // Orin: MLPerf resnet50 and retinanet (Pi 5's HPL results are peaks, not inference)
     QVERIFY(!panel->peaks().empty());
+    // #46: the Orin's ROS 2 graph benchmarks in their own table, each row saying what its value is.
+    QTableWidget* graphs = panel->graph_table();
+    QVERIFY(panel->views()->isTabVisible(1));
+    QVERIFY(panel->views()->tabText(1).startsWith("ROS 2 graph benchmarks ("));
+    QVERIFY(graphs->rowCount() >= 10);  // 7 ros2_benchmark rows, 3 RobotPerf rows
+    const int what = column(graphs, "What the value is");
+    QVERIFY(what >= 0);
+    bool first_message = false;
+    for (int r = 0; r < graphs->rowCount(); ++r) {
+      first_message = first_message || graphs->item(r, what)->text().contains("FIRST message only");
+      QVERIFY(graphs->item(r, 0)->toolTip().contains("https://github.com/"));
+    }
+    QVERIFY(first_message);
     // The figure names each origin in its legend.
     QCustomPlot* plot = panel->plot();
     QStringList names;
@@ -101,6 +115,8 @@ class TestCandidatesPanel : public QObject {
       panel->plot()->replot(QCustomPlot::rpImmediateRefresh);
       QVERIFY(view.grab().save(QString::fromUtf8(dir) + "/platform-candidates.png"));
     }
+    panel->set_selection("pi5");  // HPL peaks only: no graph benchmarks, no empty table
+    QVERIFY(!panel->views()->isTabVisible(1));
     panel->set_selection("orin,pi6");
     QVERIFY(panel->findChild<QLabel*>() != nullptr);
     bool said = false;
