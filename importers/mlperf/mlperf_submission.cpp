@@ -145,6 +145,8 @@ std::string read_optional(const fs::path& p, const ImportLimits& limits) {
 
 void loose_system(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
                   MlperfCompanions& w);
+void loose_measurements(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
+                        MlperfCompanions& w);
 
 }  // namespace
 
@@ -165,6 +167,8 @@ std::vector<std::string> mlperf_companion_paths(const std::string& summary_path)
     MlperfCompanions w;
     loose_system(p.parent_path(), name, ImportLimits{}, w);
     if (!w.system_file.empty()) out.push_back(w.system_file);
+    loose_measurements(p.parent_path(), name, ImportLimits{}, w);
+    if (!w.measurements_file.empty()) out.push_back(w.measurements_file);
   }
   return out;
 }
@@ -227,6 +231,52 @@ void loose_system(const fs::path& folder, const std::string& summary_name, const
   w.system_file = chosen->string();
 }
 
+// An MLPerf measurements description (measurements/<system>/<network>/<scenario>/<system>_<scenario>.json): the
+// weight and input data types the result ran with.
+bool is_measurements_json(const std::string& text) {
+  return text.find("\"weight_data_types\"") != std::string::npos &&
+         text.find("\"input_data_types\"") != std::string::npos;
+}
+
+// The measurements description beside loose files, in the summary's folder or its measurements/ subfolder. Its
+// own name says no network ("Orin_TRT_MaxQ_SingleStream.json" for every network), so it belongs to a summary only
+// when it carries the summary's prefix ("orin-retinanet-ss-" for "orin-retinanet-ss-mlperf_log_summary.txt"), or
+// when it and the summary are the only ones in the folder. Otherwise the precision stays "not stated", and why.
+void loose_measurements(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
+                        MlperfCompanions& w) {
+  const std::string prefix = summary_name.substr(0, summary_name.find("mlperf_log_summary"));
+  std::vector<fs::path> found;
+  std::size_t summaries = 0;
+  for (const fs::path& dir : {folder, folder / "measurements"}) {
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (dir == folder && name.find("mlperf_log_summary") != std::string::npos) ++summaries;
+      if (it->path().extension() == ".json" && is_measurements_json(read_optional(it->path(), limits)))
+        found.push_back(it->path());
+    }
+  }
+  std::sort(found.begin(), found.end());
+  const fs::path* chosen = nullptr;
+  for (const fs::path& f : found)
+    if (!prefix.empty() && f.filename().string().starts_with(prefix)) {
+      if (chosen) {  // two with its prefix: neither is known to be its own
+        chosen = nullptr;
+        break;
+      }
+      chosen = &f;
+    }
+  if (!chosen && found.size() == 1 && summaries == 1) chosen = &found.front();
+  if (!chosen) {
+    if (!found.empty())
+      w.measurements_note = std::to_string(found.size()) + " measurements description(s) beside it, none named " +
+                            (prefix.empty() ? std::string("for it") : "with its prefix '" + prefix + "'");
+    return;
+  }
+  w.measurements_json = read_optional(*chosen, limits);
+  w.measurements_file = chosen->string();
+}
+
 // The companions of a summary at `path` in a submission tree (results/<system>/<network>/<scenario>/performance/
 // run_N/), or loose beside it: what exists is read, what does not stays empty.
 MlperfCompanions companions_of(const std::string& path, const ImportLimits& limits) {
@@ -246,6 +296,8 @@ MlperfCompanions companions_of(const std::string& path, const ImportLimits& limi
     w.network = network_from_name(fs::path(path).filename().string());
     if (w.network.empty()) w.network = network_from_name(run.filename().string());
     loose_system(run, fs::path(path).filename().string(), limits, w);
+    loose_measurements(run, fs::path(path).filename().string(), limits, w);
+    w.loose = true;
     return w;
   }
   const fs::path scenario = perf.parent_path(), network = scenario.parent_path(), system = network.parent_path();
@@ -311,6 +363,10 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
   for (const auto& [check, ok] : s.checks) st.emplace_back(check, ok ? "Yes" : "No");
   if (s.samples_per_query) st.emplace_back("samples per query", fmt(*s.samples_per_query));
   read_precision(with, limits, set);
+  if (with.loose && with.measurements_json.empty())
+    batch.warnings.push_back(file + ": no measurements JSON (<system>_<scenario>.json) beside it" +
+                             (with.measurements_note.empty() ? std::string() : " (" + with.measurements_note + ")") +
+                             ": its precision is \"not stated\", ranked only beside results of unstated precision");
   if (!s.valid)
     batch.warnings.push_back(file + ":" + std::to_string(s.validity_line) +
                              ": LoadGen marked this result INVALID; it is imported but is not a valid MLPerf result");

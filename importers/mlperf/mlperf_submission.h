@@ -41,8 +41,10 @@ struct MlperfCompanions {
   std::string spl_text, spl_file;
   std::string system_json, system_file;
   std::string measurements_json, measurements_file;
-  std::string network, system;  // from the folder layout (or a loose file's name); empty when nothing says
-  std::string system_note;      // why no system description was taken, when several lay beside the summary
+  std::string network, system;    // from the folder layout (or a loose file's name); empty when nothing says
+  std::string system_note;        // why no system description was taken, when several lay beside the summary
+  std::string measurements_note;  // why no measurements description was taken, when some lay beside it
+  bool loose = false;             // the summary lies outside a submission tree (a lab's download)
 };
 
 // The detail log and PTDaemon log that belong to a summary: "<prefix>mlperf_log_detail<suffix>" and
