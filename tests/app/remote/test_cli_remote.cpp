@@ -27,6 +27,11 @@ namespace {
 
 bs::test::SshRobot* g_robot = nullptr;
 
+// The robot's CLI: this build's, or one named by BENCHSCOPE_TEST_ROBOT_CLI: scripts/cross-test gives a wrapper that
+// runs the aarch64 build under qemu-user, and BENCHSCOPE_TEST_ROBOT_ARCH ("aarch64") for the robot to report.
+const QString kRobotCli = qEnvironmentVariable("BENCHSCOPE_TEST_ROBOT_CLI", kCli);
+const QString kRobotArch = qEnvironmentVariable("BENCHSCOPE_TEST_ROBOT_ARCH");
+
 QProcessEnvironment desk_env() {
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
   env.insert("XDG_CONFIG_HOME", g_robot->path("desk-config"));
@@ -37,7 +42,7 @@ QProcessEnvironment desk_env() {
 // benchscope-cli remote robot ARGS... with the test's ssh config and the built CLI as the robot's.
 QStringList remote_args(const QStringList& args, const QString& config = {}) {
   return QStringList{"remote", "robot"} + args +
-         QStringList{"--ssh-config", config.isEmpty() ? g_robot->config() : config, "--remote-cli", kCli};
+         QStringList{"--ssh-config", config.isEmpty() ? g_robot->config() : config, "--remote-cli", kRobotCli};
 }
 
 bs::test::CliResult desk(const QStringList& args) {
@@ -128,6 +133,7 @@ class TestCliRemote : public QObject {
     QVERIFY(r.out.contains("robot: reachable; host name"));
     QVERIFY(r.out.contains("BenchScope " BENCHSCOPE_VERSION));
     QVERIFY(r.out.contains("backend cpu-scalar"));
+    if (!kRobotArch.isEmpty()) QVERIFY2(r.out.contains(kRobotArch.toUtf8()), r.out.constData());
     // The contact is remembered in the robots list, with what was found.
     const auto list = desk({"remote", "list", "--ssh-config", g_robot->config()});
     QCOMPARE(list.code, 0);
@@ -167,6 +173,7 @@ class TestCliRemote : public QObject {
     QCOMPARE(setting("remote BenchScope"), std::string(BENCHSCOPE_VERSION));
     QCOMPARE(setting("remote job"), std::string("sweep-1"));
     QVERIFY(!setting("remote architecture").empty());
+    if (!kRobotArch.isEmpty()) QCOMPARE(setting("remote architecture"), kRobotArch.toStdString());
     QVERIFY(setting("remote command").find("run flops --backend cpu-scalar") != std::string::npos);
     QVERIFY(setting("remote devices").find("CPU scalar") != std::string::npos);
     QVERIFY(setting("remote devices").find("VDD_IN") != std::string::npos);
@@ -301,7 +308,7 @@ class TestCliRemote : public QObject {
     const QString old = script("old-cli",
                                "if [ \"$1\" = --version ]; then echo 'benchscope-cli 0.0.1'; exit 0; fi\n"
                                "exec '" +
-                                   kCli + "' \"$@\"\n");
+                                   kRobotCli + "' \"$@\"\n");
     r = desk(QStringList{"remote", "robot", "run", "flops", "--workspace", ws, "--ssh-config", g_robot->config(),
                          "--remote-cli", old});
     QCOMPARE(r.code, 1);
@@ -318,10 +325,10 @@ class TestCliRemote : public QObject {
     const QString noisy = script("noisy-cli",
                                  "if [ \"$1\" = job ] && [ \"$2\" = run ]; then\n"
                                  "  '" +
-                                     kCli +
+                                     kRobotCli +
                                      "' \"$@\" | awk 'NR == 6 { print \"hello from the robot\" }"
                                      " { print; fflush() }'\n  exit $?\nfi\nexec '" +
-                                     kCli + "' \"$@\"\n");
+                                     kRobotCli + "' \"$@\"\n");
     QProcess p;
     p.setProcessEnvironment(desk_env());
     p.start(kCli, QStringList{"remote", "robot"} + kLongSweep +
