@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Results measured on a robot (issue #44): the Kernel Runner's remote job came home; its result workspace is
-// imported in one transaction, every item stamped with the robot's identity and the command run there, under the
-// platform name the user confirmed or renamed.
+// Results measured on a robot (issue #44): a remote job of the Kernel Runner or the Headroom tab came home; its
+// result workspace is imported in one transaction, every item stamped with the robot's identity and the command run
+// there, under the platform name the user confirmed or renamed.
 #include <QMessageBox>
 #include <QStatusBar>
 
@@ -27,7 +27,11 @@ void MainWindow::store_remote_run(RemoteRun* run, const QString& platform) {
     return;
   }
   if (!workspace_) new_untitled_workspace();
-  remote::RobotRun record{utc_timestamp(), job.id, "run flops", {}};
+  // What ran, as the robots list names it: "run flops", "headroom".
+  const std::vector<std::string>& words = run->command();
+  std::string what = words.empty() ? std::string() : words[0];
+  if (words.size() > 1 && !words[1].starts_with("--")) what += " " + words[1];
+  remote::RobotRun record{utc_timestamp(), job.id, what, {}};
   try {
     const remote::RemoteOrigin origin = remote::origin_of(run->target(), job, run->robot(), run->command());
     const remote::JobImport imported = remote::store_job(*workspace_, job.files, origin, platform.toStdString());

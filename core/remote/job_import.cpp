@@ -92,6 +92,11 @@ std::vector<ImportBatch> job_batches(const std::string& result_file, const Remot
     rename_platform(s.run, platform);
     by_import[s.import_id].dnn_runs.push_back(std::move(s.run));
   }
+  for (StoredHeadroom s : ws.headroom_measurements()) {
+    stamp(s.measurement.provenance, o);
+    rename_platform(s.measurement, platform);
+    by_import[s.import_id].headroom.push_back(std::move(s.measurement));
+  }
   for (const StoredFrame& f : ws.frames())
     by_import[f.import_id].warnings.push_back(result_file + ": frame '" + f.frame.label +
                                               "' left out: frames stay on the robot (" + f.path + ")");
@@ -111,6 +116,7 @@ std::string JobImport::summary() const {
   add(result_sets, "result set", "result sets");
   add(pipeline_runs, "pipeline run", "pipeline runs");
   add(dnn_runs, "inference run", "inference runs");
+  add(headroom, "headroom measurement", "headroom measurements");
   return s.empty() ? "nothing" : s;
 }
 
@@ -147,6 +153,7 @@ JobImport store_prepared(Workspace& ws, const PreparedJob& p) {
     out.result_sets += b.result_sets.size();
     out.pipeline_runs += b.pipeline_runs.size();
     out.dnn_runs += b.dnn_runs.size();
+    out.headroom += b.headroom.size();
     out.warnings.insert(out.warnings.end(), b.warnings.begin(), b.warnings.end());
   }
   out.import_ids = ws.add_imports(hashed);

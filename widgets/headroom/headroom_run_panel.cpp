@@ -17,8 +17,11 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "headroom/command_load.h"
+#include "headroom/headroom_command.h"
 #include "headroom/loads/load_spec.h"
 #include "power/power_sensor_box.h"
+#include "remote/remote_run.h"
+#include "remote/robot_target.h"
 #include "sensors/recorder.h"
 
 namespace bs::ui {
@@ -41,7 +44,8 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
       loads_(new QLineEdit(this)),
       command_(new QLineEdit(this)),
       power_(new PowerSensorBox(this)),
-      run_(new QPushButton(tr("Run on this machine"), this)),
+      target_(new RobotTarget(this)),
+      run_(new QPushButton(tr("Run"), this)),
       cancel_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
       status_(new QLabel(this)),
@@ -88,6 +92,10 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
   command_->setToolTip(
       tr("An external program run as the last load (no shell), stopped with SIGINT at the end of "
          "its phase; stress-ng's bogo ops/s is its achieved rate"));
+  target_->setToolTip(
+      tr("Where the loop is measured: this computer, or a robot over SSH (its own CLI runs the probe and the "
+         "loads there; the result comes home with the robot's name, architecture and the command run)"));
+  run_->setToolTip(tr("Measure the loop idle, then beside each load, on the computer chosen under \"Run on\""));
   cancel_->setEnabled(false);
   progress_->setRange(0, 100);
   progress_->setMaximumWidth(160);
@@ -97,11 +105,15 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
 
   auto* layout = new QGridLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
+  auto* where = new QHBoxLayout;
+  where->addWidget(new QLabel(tr("Run on:"), this));
+  where->addWidget(target_, 1);
+  layout->addLayout(where, 0, 0);
   auto* first = new QHBoxLayout;
   for (QWidget* w : std::initializer_list<QWidget*>{rate_, seconds_, threads_, computation_, realtime_, priority_})
     first->addWidget(w);
   first->addStretch(1);
-  layout->addLayout(first, 0, 0);
+  layout->addLayout(first, 1, 0);
   auto* second = new QHBoxLayout;
   auto* loads_label = new QLabel(tr("Loads:"), this);
   loads_label->setToolTip(loads_->toolTip());
@@ -110,13 +122,13 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
   second->addWidget(command_, 2);
   second->addWidget(new QLabel(tr("Record power:"), this));
   second->addWidget(power_);
-  layout->addLayout(second, 1, 0);
+  layout->addLayout(second, 2, 0);
   auto* third = new QHBoxLayout;
   third->addWidget(run_);
   third->addWidget(cancel_);
   third->addWidget(progress_);
   third->addWidget(status_, 1);
-  layout->addLayout(third, 2, 0);
+  layout->addLayout(third, 3, 0);
 
   connect(run_, &QPushButton::clicked, this, &HeadroomRunPanel::start);
   connect(cancel_, &QPushButton::clicked, this, &HeadroomRunPanel::cancel);
@@ -132,7 +144,7 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
   auto* timer = new QTimer(this);
   timer->setInterval(100);
   connect(timer, &QTimer::timeout, this, [this] {
-    if (!running()) return;
+    if (!watcher_->isRunning()) return;  // a local run's progress; a robot's comes as its text
     progress_->setValue(progress_state_->percent.load());
     std::lock_guard lock(progress_state_->mutex);
     if (!progress_state_->step.empty())
@@ -142,11 +154,12 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
 }
 
 HeadroomRunPanel::~HeadroomRunPanel() {
+  remote_.reset();               // dropping the connection stops everything on the robot
   if (token_) token_->cancel();  // a run still going must not outlive the widget it reports to
   watcher_->waitForFinished();
 }
 
-bool HeadroomRunPanel::running() const { return watcher_->isRunning(); }
+bool HeadroomRunPanel::running() const { return watcher_->isRunning() || (remote_ && remote_->running()); }
 
 void HeadroomRunPanel::save_settings() const {
   QSettings s;
@@ -160,8 +173,7 @@ void HeadroomRunPanel::save_settings() const {
   s.setValue(key("command"), command_->text());
 }
 
-void HeadroomRunPanel::start() {
-  if (running()) return;
+headroom::RunConfig HeadroomRunPanel::config_from_fields(std::vector<std::string>& command_words) const {
   headroom::RunConfig config;
   config.probe.rate_hz = rate_->value();
   config.probe.threads = threads_->value();
@@ -176,11 +188,22 @@ void HeadroomRunPanel::start() {
           .arg(loads_->text(), command_->text().isEmpty() ? QString() : ", command '" + command_->text() + "'")
           .toStdString();
   // Check what can be checked before anything starts: the probe's settings, the load specs, the command's words.
+  if (const std::string e = headroom::validate(config.probe); !e.empty()) throw std::invalid_argument(e);
+  (void)headroom::canonical_load_names(loads_->text().toStdString());
+  if (!command_->text().trimmed().isEmpty()) command_words = headroom::split_command(command_->text().toStdString());
+  return config;
+}
+
+void HeadroomRunPanel::start() {
+  if (running()) return;
+  headroom::RunConfig config;
   std::vector<std::string> command_words;
   try {
-    if (const std::string e = headroom::validate(config.probe); !e.empty()) throw std::invalid_argument(e);
-    (void)headroom::canonical_load_names(loads_->text().toStdString());
-    if (!command_->text().trimmed().isEmpty()) command_words = headroom::split_command(command_->text().toStdString());
+    config = config_from_fields(command_words);
+    if (target_->is_robot()) {
+      start_remote(std::move(config));
+      return;
+    }
     recorder_ = power_->start_recorder();  // null when "Record power" is off
   } catch (const std::exception& e) {
     status_->setText(QString::fromUtf8(e.what()));
@@ -221,7 +244,64 @@ void HeadroomRunPanel::start() {
       }));
 }
 
+void HeadroomRunPanel::start_remote(headroom::RunConfig config) {
+  const QString robot = target_->robot_name();
+  if (target_->checking() || !target_->check() || !target_->check()->ok) {
+    status_->setText(target_->checking() ? tr("%1 is being checked; Run again when it is ready").arg(robot)
+                                         : tr("%1 is not ready: see the message under \"Run on\"").arg(robot));
+    emit failed(status_->text());
+    return;
+  }
+  target_->remember_platform();
+  config.platform = target_->platform().toStdString();
+  const QString platform = target_->platform();
+  const std::vector<std::string> args = headroom::headroom_cli_args(
+      config, loads_->text().trimmed().toStdString(), command_->text().trimmed().toStdString(), !power_->off());
+  remote_ = std::make_unique<RemoteRun>(target_->target(), args);
+  RemoteRun* run = remote_.get();
+  // The robot reports its phases as lines of text; until one comes the bar only says that it is busy.
+  connect(run, &RemoteRun::remote_text, this,
+          [this, robot](const QString& line) { status_->setText(QStringLiteral("%1: %2").arg(robot, line)); });
+  connect(run, &RemoteRun::progress, this, [this](double f, const QString&) {
+    progress_->setRange(0, 100);
+    progress_->setValue(static_cast<int>(f * 100));
+  });
+  connect(run, &RemoteRun::finished, this, [this, run, platform, robot] {
+    const remote::RemoteJob& job = run->job();
+    status_->setText(
+        job.status == "cancelled"
+            ? tr("%1: cancelled (job %2); what it finished is imported").arg(robot, QString::fromStdString(job.id))
+            : tr("Measured on %1 (job %2)").arg(robot, QString::fromStdString(job.id)));
+    emit remote_finished(run, platform);
+    remote_done();
+  });
+  connect(run, &RemoteRun::failed, this, [this, robot](const QString& message) {
+    status_->setText(QStringLiteral("%1: %2").arg(robot, message));
+    emit failed(status_->text());
+    remote_done();
+  });
+  run_->setEnabled(false);
+  cancel_->setEnabled(true);
+  progress_->setRange(0, 0);
+  progress_->show();
+  status_->setText(tr("%1: checking the robot and starting…").arg(robot));
+  run->start();
+}
+
+void HeadroomRunPanel::remote_done() {
+  remote_.release()->deleteLater();  // we are in its signal
+  run_->setEnabled(true);
+  cancel_->setEnabled(false);
+  progress_->setRange(0, 100);
+  progress_->hide();
+}
+
 void HeadroomRunPanel::cancel() {
+  if (remote_) {
+    remote_->cancel();
+    status_->setText(tr("Cancelling: the robot stops the load and the probe…"));
+    return;
+  }
   if (token_) token_->cancel();
   status_->setText(tr("Cancelling: stopping the load and the probe…"));
 }

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// "Run on this machine" for the Headroom tab: the probe's rate, seconds per phase, threads, per-cycle computation,
-// priority and real-time request, the loads (the CLI's syntax: pipeline@30fps, dnn, flops:64) and an external
-// command, "Record power"; Run starts core's run_headroom off the GUI thread with progress and cancel, and hands
-// the finished measurement (with its power trace) over to be stored. Every setting is remembered (QSettings).
+// "Run" for the Headroom tab: the probe's rate, seconds per phase, threads, per-cycle computation, priority and
+// real-time request, the loads (the CLI's syntax: pipeline@30fps, dnn, flops:64) and an external command, "Record
+// power", and where: this machine, or a robot over SSH (issue #44: the loop must be measured on the computer that
+// will run it). On this machine, Run starts core's run_headroom off the GUI thread with progress and cancel, and
+// hands the finished measurement (with its power trace) over to be stored. On a robot, the same settings go as
+// `benchscope-cli headroom` arguments (core: headroom/headroom_command.h) to the robot's CLI through RemoteRun; the
+// robot's phases show as they start, Cancel stops everything there, and the job is handed over to be imported
+// with the robot's provenance (remote_finished). Every setting is remembered (QSettings).
 #include <QWidget>
 #include <atomic>
 #include <memory>
@@ -30,6 +34,8 @@ class PowerRecorder;
 namespace bs::ui {
 
 class PowerSensorBox;
+class RemoteRun;
+class RobotTarget;
 
 class HeadroomRunPanel : public QWidget {
   Q_OBJECT
@@ -45,6 +51,7 @@ class HeadroomRunPanel : public QWidget {
   QLineEdit* loads() const { return loads_; }
   QLineEdit* command() const { return command_; }
   PowerSensorBox* power_box() const { return power_; }
+  RobotTarget* target() const { return target_; }
   QPushButton* run_button() const { return run_; }
   QPushButton* cancel_button() const { return cancel_; }
   QLabel* status() const { return status_; }
@@ -56,6 +63,8 @@ class HeadroomRunPanel : public QWidget {
 
  signals:
   void measured(const bs::headroom::RunOutput& output);
+  // A robot's job came home (cancelled jobs too: the robot keeps nothing half-done); `platform` as confirmed.
+  void remote_finished(bs::ui::RemoteRun* run, const QString& platform);
   void failed(const QString& message);
 
  private:
@@ -66,6 +75,10 @@ class HeadroomRunPanel : public QWidget {
   };
   void finished();
   void save_settings() const;
+  // The settings as a run configuration; throws std::invalid_argument saying what is wrong.
+  headroom::RunConfig config_from_fields(std::vector<std::string>& command_words) const;
+  void start_remote(headroom::RunConfig config);
+  void remote_done();
 
   QDoubleSpinBox* rate_;
   QDoubleSpinBox* seconds_;
@@ -76,6 +89,8 @@ class HeadroomRunPanel : public QWidget {
   QLineEdit* loads_;
   QLineEdit* command_;
   PowerSensorBox* power_;
+  RobotTarget* target_;
+  std::unique_ptr<RemoteRun> remote_;
   QPushButton* run_;
   QPushButton* cancel_;
   QProgressBar* progress_;

@@ -190,9 +190,12 @@ void HeadroomView::redraw_plot() {
   const headroom::HeadroomMeasurement* m = current();
   if (!m) return;
   const StoredHeadroom& s = measurements_[static_cast<std::size_t>(chooser_->currentIndex())];
-  const QString title = QStringLiteral("%1: %2 (%3)")
+  // The title names the measurement; its whole source (a robot's command line runs to 300 characters) is the
+  // wrapped label under the plot: a plot title does not wrap, and one that long held the window 2,267 px wide.
+  const QString title = QStringLiteral("%1: %2 (measurement #%3)")
                             .arg(QString::fromStdString(m->platform),
-                                 QString::fromStdString(std::string(headroom::to_string(m->kind))), source_of(s));
+                                 QString::fromStdString(std::string(headroom::to_string(m->kind))))
+                            .arg(s.id);
   headroom_histogram_figure(
       *plot_, headroom_curves(*m),
       show_deadline_->isChecked() ? std::optional<std::int64_t>(deadline_->value() * 1000LL) : std::nullopt, title);

@@ -7,7 +7,7 @@ const std::vector<RemoteCommand>& remote_commands() {
   static const std::vector<RemoteCommand> list = {
       {"run flops", 2, true, true},  {"record-power", 1, true, true},   {"run bandwidth", 2, false, true},
       {"bench dnn", 2, false, true}, {"bench vision", 2, false, false}, {"bench kernels", 2, false, false},
-      {"devices", 1, false, false},  {"sensors", 1, false, false},
+      {"devices", 1, false, false},  {"sensors", 1, false, false},      {"headroom", 1, false, true},
   };
   return list;
 }

@@ -3,10 +3,12 @@
 // machine behind a real sshd on a local port, tests/support/ssh_robot.h) is chosen as the target and checked, the
 // sweep's points are plotted live while it runs, and its results land in the workspace like a local run's, under
 // the platform name typed, with the robot's provenance; a second run on the same robot is cancelled and brings
-// its completed points. Screenshots at 1280x800 and 1600x1000 go to $BENCHSCOPE_SCREENSHOT_DIR. CTest skip (77)
-// without sshd.
+// its completed points. The Headroom tab measures the control loop on the robot the same way. Screenshots at 1280x800
+// and 1600x1000 go to $BENCHSCOPE_SCREENSHOT_DIR. CTest skip (77) without sshd.
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QDialogButtonBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -25,6 +27,8 @@
 
 #include "../../support/cli_harness.h"
 #include "../../support/ssh_robot.h"
+#include "headroom/headroom_run_panel.h"
+#include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
 #include "peaks/flops_plot.h"
@@ -50,7 +54,13 @@ void screenshots(bs::ui::MainWindow& w, const QString& name) {
   for (const QSize size : {QSize(1280, 800), QSize(1600, 1000)}) {
     w.resize(size);
     QTest::qWait(30);
-    QCOMPARE(w.size(), size);  // the robot's rows fit the window at its smallest size
+    // The robot's rows fit the window at its smallest size.
+    QVERIFY2(w.size() == size, qPrintable(QStringLiteral("%1 is %2x%3, its minimum %4x%5")
+                                              .arg(name)
+                                              .arg(w.width())
+                                              .arg(w.height())
+                                              .arg(w.minimumSizeHint().width())
+                                              .arg(w.minimumSizeHint().height())));
     w.grab().save(
         QStringLiteral("%1/%2-%3x%4.png").arg(QString::fromUtf8(dir), name).arg(size.width()).arg(size.height()));
   }
@@ -152,6 +162,70 @@ class TestRemoteGui : public QObject {
       if (r.run.samples.size() != 500) partial = r.run.samples.size();
     QVERIFY(partial >= 5 && partial < 20000);
     QVERIFY(runner->progress_bar()->format().contains("cancelled"));
+  }
+
+  // The Headroom tab measuring the control loop on the robot (issues #44, #45): the robot chosen under "Run on" and
+  // checked, Run pressed, the robot's phases shown as they start, and the measurement imported under the platform
+  // typed with the robot's provenance; the robots list records a "headroom" run.
+  void headroom_on_a_robot_is_imported() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("headroom.bsw")));
+    w.resize(1280, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    auto* tabs = w.findChild<QTabWidget*>();
+    QVERIFY(tabs);
+    for (int t = 0; t < tabs->count(); ++t)
+      if (tabs->tabText(t).remove('&') == "Headroom") tabs->setCurrentIndex(t);
+    bs::ui::HeadroomRunPanel* panel = w.headroom_view()->run_panel();
+    bs::ui::RobotTarget* target = panel->target();
+    target->reload();
+    const int at = target->box()->findData(QStringLiteral("robot"));
+    QVERIFY(at > 0);
+    target->box()->setCurrentIndex(at);
+    for (int i = 0; i < 1500 && (target->checking() || !target->check()); ++i) QTest::qWait(20);
+    QVERIFY2(target->check() && target->check()->ok, target->check() ? target->check()->problem.c_str() : "");
+    // A short measurement: 500 Hz, 0.3 s per phase, idle then the FLOPS kernel with one worker, no real-time.
+    panel->rate()->setValue(500);
+    panel->seconds()->setValue(0.5);
+    panel->realtime()->setChecked(false);
+    panel->loads()->setText("flops:1");
+    panel->command()->clear();
+    target->platform_field()->clear();
+    QTest::keyClicks(target->platform_field(), "Robot loop");
+    qRegisterMetaType<bs::ui::RemoteRun*>();
+    QSignalSpy done(panel, &bs::ui::HeadroomRunPanel::remote_finished);
+    QSignalSpy failed(panel, &bs::ui::HeadroomRunPanel::failed);
+    QVERIFY(panel->run_button()->isEnabled());
+    QTest::mouseClick(panel->run_button(), Qt::LeftButton);
+    QVERIFY(panel->running());
+    QVERIFY(panel->cancel_button()->isEnabled());
+    bool phase_shown = false;
+    for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) {
+      phase_shown = phase_shown || panel->status()->text().contains("headroom phase");
+      if (i == 20) screenshots(w, "headroom-robot-running");
+      QTest::qWait(20);
+    }
+    QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
+    QCOMPARE(done.count(), 1);
+    QVERIFY(phase_shown);
+    QVERIFY(!panel->running());
+    const auto stored = w.workspace()->headroom_measurements();
+    QCOMPARE(stored.size(), std::size_t{1});
+    const auto& m = stored[0].measurement;
+    QCOMPARE(m.platform, std::string("Robot loop"));
+    QCOMPARE(m.phases.size(), std::size_t{2});  // idle, then beside the kernel
+    QCOMPARE(setting(m.provenance, "remote host"), std::string("robot"));
+    QVERIFY(setting(m.provenance, "remote command").find("headroom --rate 500") != std::string::npos);
+    QVERIFY(panel->status()->text().startsWith("Measured on robot"));
+    // The robot's long command line is shown whole, wrapped, and does not hold the window wider than the screen.
+    QVERIFY(w.minimumSizeHint().width() <= 1280);
+    screenshots(w, "headroom-robot-done");
+    const bs::remote::RobotList robots;
+    const bs::remote::Robot* r = robots.find("robot");
+    QVERIFY(r && !r->runs.empty() && r->runs.back().command == "headroom");
+    QVERIFY(r->runs.back().outcome.find("imported 1 headroom measurement") != std::string::npos);
   }
 
   // "Several robots…": the sweep runs on each checked robot in turn, each under the platform typed in the dialog,

@@ -345,6 +345,36 @@ class TestCliRemote : public QObject {
     verify_nothing_running("garbage-1");
   }
 
+  // The control loop measured on the robot (issues #44, #45): idle, then beside the FLOPS kernel, run by the robot's
+  // CLI; the measurement comes home under the platform named, with the robot's provenance.
+  void headroom_comes_home_with_provenance() {
+    const QString ws = g_robot->path("headroom.bsw");
+    const auto r =
+        desk(remote_args({"headroom", "--rate", "500", "--seconds", "0.4", "--settle", "0", "--no-rt", "--load",
+                          "flops:1", "--workspace", ws, "--platform", "Robot loop", "--id", "headroom-1"}));
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.err.contains("headroom phase 'idle'"), r.err.constData());  // the robot's phases as they start
+    QVERIFY2(r.out.contains("imported 1 headroom measurement from robot"), r.out.constData());
+    const bs::Workspace w(ws.toStdString(), bs::Workspace::OpenMode::ReadOnly);
+    const auto stored = w.headroom_measurements();
+    QCOMPARE(stored.size(), std::size_t{1});
+    const auto& m = stored[0].measurement;
+    QCOMPARE(m.platform, std::string("Robot loop"));
+    QCOMPARE(m.phases.size(), std::size_t{2});
+    QVERIFY(!m.realtime());  // --no-rt: a normal thread, and the measurement says so
+    std::string host, command, arch;
+    for (const auto& [k, v] : m.provenance.settings) {
+      if (k == "remote host") host = v;
+      if (k == "remote command") command = v;
+      if (k == "remote architecture") arch = v;
+    }
+    QCOMPARE(host, std::string("robot"));
+    QVERIFY2(command.find("headroom --rate 500") != std::string::npos, command.c_str());
+    QVERIFY(!arch.empty());
+    if (!kRobotArch.isEmpty()) QCOMPARE(arch, kRobotArch.toStdString());
+    verify_nothing_running("headroom-1");
+  }
+
   void jobs_lists_what_the_robot_keeps() {
     const auto r = desk(remote_args({"jobs"}));
     QCOMPARE(r.code, 0);
