@@ -6,4 +6,9 @@ add_library(benchscope_warnings INTERFACE)
 target_compile_options(benchscope_warnings INTERFACE
   $<$<COMPILE_LANGUAGE:CXX>:-Wall -Wextra -Wpedantic -Wnon-virtual-dtor>
   $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<CXX_COMPILER_ID:GNU>>:-Wshadow=local>  # clang spells it differently
-  $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<BOOL:${BENCHSCOPE_WERROR}>>:-Werror>)
+  $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<BOOL:${BENCHSCOPE_WERROR}>>:-Werror>
+  # GCC 11 (JetPack 6's compiler: the aarch64 cross build, `scripts/dev gcc11`) at -O2 reports memchr inside
+  # libstdc++'s char_traits::find with a bound of SIZE_MAX as -Wstringop-overread for string_view::find on views
+  # cut by substr(0, npos), a false positive of its middle end that GCC 12 no longer gives. Seen in two headroom
+  # importers; GCC 12's build and clang's (with AddressSanitizer at run time) keep the warning.
+  $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<CXX_COMPILER_ID:GNU>,$<VERSION_LESS:$<CXX_COMPILER_VERSION>,12>>:-Wno-stringop-overread>)
