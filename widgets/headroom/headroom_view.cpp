@@ -65,7 +65,7 @@ HeadroomView::HeadroomView(QWidget* parent)
   source_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   empty_->setWordWrap(true);
   empty_->setText(
-      tr("No headroom measurement yet. Run one on this machine above (the probe idle and beside the "
+      tr("No headroom measurement yet. Run one above, on this machine or a robot (the probe idle and beside the "
          "vision pipeline), run `benchscope-cli headroom --workspace WS`, or import cyclictest, rttest or "
          "performance_test results."));
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -192,10 +192,10 @@ void HeadroomView::redraw_plot() {
   const StoredHeadroom& s = measurements_[static_cast<std::size_t>(chooser_->currentIndex())];
   // The title names the measurement; its whole source (a robot's command line runs to 300 characters) is the
   // wrapped label under the plot: a plot title does not wrap, and one that long held the window 2,267 px wide.
-  const QString title = QStringLiteral("%1: %2 (measurement #%3)")
-                            .arg(QString::fromStdString(m->platform),
-                                 QString::fromStdString(std::string(headroom::to_string(m->kind))))
-                            .arg(s.id);
+  const QString title =
+      QStringLiteral("%1: %2 (measurement #%3)")
+          .arg(QString::fromStdString(m->platform), QString::fromStdString(std::string(headroom::to_string(m->kind))))
+          .arg(s.id);
   headroom_histogram_figure(
       *plot_, headroom_curves(*m),
       show_deadline_->isChecked() ? std::optional<std::int64_t>(deadline_->value() * 1000LL) : std::nullopt, title);

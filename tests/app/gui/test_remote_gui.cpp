@@ -8,8 +8,8 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -203,8 +203,10 @@ class TestRemoteGui : public QObject {
     QVERIFY(panel->cancel_button()->isEnabled());
     bool phase_shown = false;
     for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) {
-      phase_shown = phase_shown || panel->status()->text().contains("headroom phase");
-      if (i == 20) screenshots(w, "headroom-robot-running");
+      if (!phase_shown && panel->status()->text().contains("headroom phase")) {
+        phase_shown = true;
+        screenshots(w, "headroom-robot-running");
+      }
       QTest::qWait(20);
     }
     QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
