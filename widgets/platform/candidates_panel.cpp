@@ -37,6 +37,21 @@ QString origin_marker_text(DataOrigin origin) {
   return QStringLiteral("? unknown");
 }
 
+namespace {
+
+// A table of rows to read, not edit: no row numbers, long cells wrapped, the last column taking the width left.
+QTableWidget* read_only_table(QWidget* parent, const QString& name) {
+  auto* t = new QTableWidget(parent);
+  t->setObjectName(name);
+  t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  t->verticalHeader()->setVisible(false);
+  t->setWordWrap(true);
+  t->horizontalHeader()->setStretchLastSection(true);
+  return t;
+}
+
+}  // namespace
+
 CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
   spec_ = new QLineEdit(this);
   spec_->setObjectName(QStringLiteral("library_selection"));
@@ -69,22 +84,12 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
   if (!lib.error.empty())
     note_->setText(tr("The library could not be loaded: %1").arg(QString::fromStdString(lib.error)));
 
-  table_ = new QTableWidget(this);
-  table_->setObjectName(QStringLiteral("candidates"));
-  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  table_->verticalHeader()->setVisible(false);
-  table_->setWordWrap(true);
-  table_->horizontalHeader()->setStretchLastSection(true);
+  table_ = read_only_table(this, QStringLiteral("candidates"));
   plot_ = new QCustomPlot(this);
   plot_->setMinimumWidth(320);
 
   graphs_ = new QWidget(this);
-  graph_table_ = new QTableWidget(graphs_);
-  graph_table_->setObjectName(QStringLiteral("graph_benchmarks"));
-  graph_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  graph_table_->verticalHeader()->setVisible(false);
-  graph_table_->setWordWrap(true);
-  graph_table_->horizontalHeader()->setStretchLastSection(true);
+  graph_table_ = read_only_table(graphs_, QStringLiteral("graph_benchmarks"));
   auto* graphs_title = new QLabel(
       tr("<b>ROS 2 graph benchmarks</b> (ros2_benchmark, RobotPerf): compared only within one tool, node, input, "
          "release and measure"),

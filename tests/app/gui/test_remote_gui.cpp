@@ -26,6 +26,7 @@
 #include <set>
 
 #include "../../support/cli_harness.h"
+#include "../../support/scenario_window.h"
 #include "../../support/ssh_robot.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
@@ -66,6 +67,16 @@ void screenshots(bs::ui::MainWindow& w, const QString& name) {
   }
 }
 
+// Chooses the robot in `target` as a person does (the box), and waits for its check to finish.
+void choose_robot(bs::ui::RobotTarget* target) {
+  const int at = target->box()->findData(QStringLiteral("robot"));
+  QVERIFY(at > 0);
+  target->box()->setCurrentIndex(at);
+  for (int i = 0; i < 1500 && (target->checking() || !target->check()); ++i) QTest::qWait(20);
+  QVERIFY(target->check().has_value());
+  QVERIFY2(target->check()->ok, target->check()->problem.c_str());
+}
+
 std::string setting(const bs::Provenance& p, const std::string& key) {
   for (const auto& [k, v] : p.settings)
     if (k == key) return v;
@@ -92,12 +103,8 @@ class TestRemoteGui : public QObject {
     bs::ui::KernelRunner* runner = w.kernel_runner();
     bs::ui::RobotTarget* target = runner->target();
     // The robot is in the list (added with its SSH config and CLI path); choosing it checks it.
-    const int at = target->box()->findData(QStringLiteral("robot"));
-    QVERIFY(at > 0);
-    target->box()->setCurrentIndex(at);
-    for (int i = 0; i < 1500 && (target->checking() || !target->check()); ++i) QTest::qWait(20);
-    QVERIFY(target->check().has_value());
-    QVERIFY2(target->check()->ok, target->check()->problem.c_str());
+    choose_robot(target);
+    if (QTest::currentTestFailed()) return;
     QVERIFY(target->status_label()->text().contains("BenchScope " BENCHSCOPE_VERSION));
     QCOMPARE(target->platform_field()->text(), QString::fromStdString(target->check()->info.hostname));
     // Backends are the robot's: choose its scalar CPU backend; the platform is renamed before the run.
@@ -174,18 +181,12 @@ class TestRemoteGui : public QObject {
     w.resize(1280, 800);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    auto* tabs = w.findChild<QTabWidget*>();
-    QVERIFY(tabs);
-    for (int t = 0; t < tabs->count(); ++t)
-      if (tabs->tabText(t).remove('&') == "Headroom") tabs->setCurrentIndex(t);
+    bs::test::click_tab(w, bs::test::tab_of(w, w.headroom_view()));
     bs::ui::HeadroomRunPanel* panel = w.headroom_view()->run_panel();
     bs::ui::RobotTarget* target = panel->target();
     target->reload();
-    const int at = target->box()->findData(QStringLiteral("robot"));
-    QVERIFY(at > 0);
-    target->box()->setCurrentIndex(at);
-    for (int i = 0; i < 1500 && (target->checking() || !target->check()); ++i) QTest::qWait(20);
-    QVERIFY2(target->check() && target->check()->ok, target->check() ? target->check()->problem.c_str() : "");
+    choose_robot(target);
+    if (QTest::currentTestFailed()) return;
     // A short measurement: 500 Hz, 0.3 s per phase, idle then the FLOPS kernel with one worker, no real-time.
     panel->rate()->setValue(500);
     panel->seconds()->setValue(0.5);
