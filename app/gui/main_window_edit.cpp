@@ -60,6 +60,8 @@ QString count_text(const ImportBatch& b) {
   add(b.power_traces.size(), MainWindow::tr("1 power log"), MainWindow::tr("%1 power logs"));
   add(b.frames.size(), MainWindow::tr("1 frame"), MainWindow::tr("%1 frames"));
   add(b.pipeline_runs.size(), MainWindow::tr("1 pipeline run"), MainWindow::tr("%1 pipeline runs"));
+  add(b.dnn_runs.size(), MainWindow::tr("1 inference run"), MainWindow::tr("%1 inference runs"));
+  add(b.headroom.size(), MainWindow::tr("1 headroom measurement"), MainWindow::tr("%1 headroom measurements"));
   return parts.join(", ");
 }
 
@@ -143,6 +145,18 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
                        .arg(QString::fromStdString(r.device).toHtmlEscaped())
                        .arg(r.measurements.size())
                        .arg(provenance_line(r.provenance))});
+  }
+  for (const StoredHeadroom& h : workspace_->headroom_measurements()) {
+    const headroom::HeadroomMeasurement& m = h.measurement;
+    const QString kind = QString::fromStdString(std::string(headroom::to_string(m.kind)));
+    out.push_back({item_ref(K::Headroom, h.id, h.import_id, QString::fromStdString(m.platform)),
+                   tr("%1 — %2, %n phase(s)", nullptr, static_cast<int>(m.phases.size()))
+                       .arg(QString::fromStdString(m.platform), kind),
+                   tr("<b>%1</b>: %2 by %3%4<br>%5")
+                       .arg(QString::fromStdString(m.platform).toHtmlEscaped(), kind,
+                            QString::fromStdString(m.tool).toHtmlEscaped(),
+                            m.realtime() ? QString() : tr(" (non-real-time: not comparable with real-time results)"),
+                            provenance_line(m.provenance))});
   }
   for (const BatterySetup& b : workspace_battery_setups(*workspace_)) {
     out.push_back(

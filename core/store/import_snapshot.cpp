@@ -26,6 +26,11 @@ ImportSnapshot snapshot_import(const Workspace& ws, std::int64_t import_id) {
     if (s.import_id == import_id) b.power_traces.push_back(s.trace);
   for (const StoredPipelineRun& s : ws.pipeline_runs())
     if (s.import_id == import_id) b.pipeline_runs.push_back(s.run);
+  // Inference runs and headroom measurements too: without them, undoing a removal lost them.
+  for (const StoredDnnRun& s : ws.dnn_runs())
+    if (s.import_id == import_id) b.dnn_runs.push_back(s.run);
+  for (const StoredHeadroom& s : ws.headroom_measurements())
+    if (s.import_id == import_id) b.headroom.push_back(s.measurement);
   for (const StoredFrame& s : ws.frames()) {
     if (s.import_id != import_id) continue;
     Frame f = s.frame;

@@ -33,6 +33,8 @@ QString section_title(TreeItemRef::Kind kind) {
       return WorkspaceTree::tr("Pipeline runs");
     case TreeItemRef::Kind::ResultSet:
       return WorkspaceTree::tr("Throughput results");
+    case TreeItemRef::Kind::Headroom:
+      return WorkspaceTree::tr("Headroom measurements");
     case TreeItemRef::Kind::BatteryPreset:
       return WorkspaceTree::tr("Battery presets");
     default:

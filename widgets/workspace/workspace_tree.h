@@ -13,9 +13,9 @@ namespace bs::ui {
 
 // What a row of the tree stands for, as far as renaming and removing go.
 struct TreeItemRef {
-  enum class Kind { None, Platform, Device, Run, PowerLog, Frame, PipelineRun, ResultSet, BatteryPreset };
+  enum class Kind { None, Platform, Device, Run, PowerLog, Frame, PipelineRun, ResultSet, Headroom, BatteryPreset };
   Kind kind = Kind::None;
-  qint64 id = 0;         // run, trace, frame, pipeline run or result set id
+  qint64 id = 0;         // run, trace, frame, pipeline run, result set or headroom measurement id
   qint64 import_id = 0;  // the import that brought it (0: none, e.g. a preset or a platform)
   QString name;          // what is shown and renamed: platform name, log label, preset name, a run's label, ...
   QString platform;      // a device's platform (devices are named within their platform)

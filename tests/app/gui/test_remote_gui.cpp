@@ -16,6 +16,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStandardItemModel>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -38,6 +39,7 @@
 #include "remote/robot_target.h"
 #include "remote/robots.h"
 #include "store/workspace.h"
+#include "workspace/workspace_tree.h"
 
 namespace {
 
@@ -222,6 +224,27 @@ class TestRemoteGui : public QObject {
     QCOMPARE(setting(m.provenance, "remote host"), std::string("robot"));
     QVERIFY(setting(m.provenance, "remote command").find("headroom --rate 500") != std::string::npos);
     QVERIFY(panel->status()->text().startsWith("Measured on robot"));
+    // The workspace tree lists it, and removing it there is undone by Ctrl+Z with nothing lost.
+    bs::ui::WorkspaceTree* tree = w.tree();
+    QCOMPARE(tree->item_count(bs::ui::TreeItemRef::Kind::Headroom), 1);
+    const auto* model = qobject_cast<const QStandardItemModel*>(tree->model());
+    QModelIndex row;
+    for (int r = 0; r < model->rowCount() && !row.isValid(); ++r)
+      for (int c = 0; c < model->item(r)->rowCount(); ++c)
+        if (tree->ref_at(model->item(r)->child(c)->index()).kind == bs::ui::TreeItemRef::Kind::Headroom)
+          row = model->item(r)->child(c)->index();
+    QVERIFY(row.isValid());
+    const QString tip = row.data(Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains("Robot loop") && tip.contains("application loop") && tip.contains("non-real-time"),
+             qPrintable(tip));
+    tree->setFocus();
+    tree->setCurrentIndex(row);
+    bs::test::press(w, Qt::Key_Delete);
+    QVERIFY(w.workspace()->headroom_measurements().empty());
+    bs::test::press(w, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(w.workspace()->headroom_measurements().size(), std::size_t{1});
+    QCOMPARE(w.workspace()->headroom_measurements()[0].measurement.phases.size(), std::size_t{2});
+    QCOMPARE(tree->item_count(bs::ui::TreeItemRef::Kind::Headroom), 1);
     // The robot's long command line is shown whole, wrapped, and does not hold the window wider than the screen.
     QVERIFY(w.minimumSizeHint().width() <= 1280);
     screenshots(w, "headroom-robot-done");

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Removing an import can be undone: the snapshot taken before removal restores the same content (runs, result
-// sets, power logs with phases and missing samples, pipeline runs, frame pixels). Renames from the workspace tree.
+// sets, power logs with phases and missing samples, pipeline runs, frame pixels, inference runs, headroom
+// measurements). Renames from the workspace tree.
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
 #include <limits>
 
+#include "../../support/headroom_samples.h"
+#include "headroom/headroom_json.h"
 #include "store/import_snapshot.h"
 #include "workspace_test_support.h"
 
@@ -64,6 +67,44 @@ class TestImportSnapshot : public QObject {
     QCOMPARE(ws.imports().size(), std::size_t{1});
     QCOMPARE(ws.imports()[0].content_hash, std::string("hash-1"));
     QVERIFY_THROWS_EXCEPTION(WorkspaceError, snapshot_import(ws, 12345));
+  }
+
+  // Undoing the removal of an import gave back its runs and logs but dropped its inference runs and headroom
+  // measurements (the snapshot did not take them).
+  void inference_runs_and_headroom_come_back() {
+    QTemporaryDir dir;
+    Workspace ws(dir.filePath("w.bsw").toStdString());
+    ImportBatch batch;
+    batch.source_path = "robot job";
+    batch.format = "benchscope-headroom-v1";
+    DnnRun dnn;
+    dnn.platform = "robot";
+    dnn.device = "CPU";
+    dnn.backend = "cpu";
+    dnn.model = "mobilenet-ssd";
+    dnn.input_width = dnn.input_height = 300;
+    dnn.batch = 1;
+    dnn.forward = {"inference", 5, 0.02, 0.001, 0.019, 0.022, 0.02, 0.021};
+    dnn.provenance.origin = DataOrigin::Measured;
+    batch.dnn_runs.push_back(dnn);
+    batch.headroom.push_back(
+        loop_measurement("robot", {{"idle", loop_thread(500, 40)}, {"pipeline@30fps", loop_thread(500, 60, {1500})}}));
+    const std::int64_t id = ws.add_import(batch, "hash-h");
+    const auto headroom_before = ws.headroom_measurements();
+    QCOMPARE(headroom_before.size(), std::size_t{1});
+    const ImportSnapshot snap = snapshot_import(ws, id);
+    QCOMPARE(snap.batch.dnn_runs.size(), std::size_t{1});
+    QCOMPARE(snap.batch.headroom.size(), std::size_t{1});
+    ws.remove_import(id);
+    QVERIFY(ws.dnn_runs().empty() && ws.headroom_measurements().empty());
+    QVERIFY(restore_import(ws, snap) > 0);
+    QCOMPARE(ws.dnn_runs().size(), std::size_t{1});
+    QCOMPARE(ws.dnn_runs()[0].run.model, std::string("mobilenet-ssd"));
+    const auto headroom_after = ws.headroom_measurements();
+    QCOMPARE(headroom_after.size(), std::size_t{1});
+    QCOMPARE(headroom_after[0].measurement.phases.size(), std::size_t{2});
+    QCOMPARE(headroom::to_json(headroom_after[0].measurement).dump(),
+             headroom::to_json(headroom_before[0].measurement).dump());
   }
 
   void renames() {
