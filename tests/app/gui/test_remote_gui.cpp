@@ -69,6 +69,14 @@ void screenshots(bs::ui::MainWindow& w, const QString& name) {
   }
 }
 
+// The window on a new workspace, at the smallest screen size a lab uses, shown.
+void open_at_1280x800(bs::ui::MainWindow& w, const QString& workspace) {
+  QVERIFY(w.open_workspace(workspace));
+  w.resize(1280, 800);
+  w.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&w));
+}
+
 // Chooses the robot in `target` as a person does (the box), and waits for its check to finish.
 void choose_robot(bs::ui::RobotTarget* target) {
   const int at = target->box()->findData(QStringLiteral("robot"));
@@ -98,10 +106,8 @@ class TestRemoteGui : public QObject {
   void sweep_on_a_robot_is_plotted_live_and_imported() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(dir.filePath("robot.bsw")));
-    w.resize(1280, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    open_at_1280x800(w, dir.filePath("robot.bsw"));
+    if (QTest::currentTestFailed()) return;
     bs::ui::KernelRunner* runner = w.kernel_runner();
     bs::ui::RobotTarget* target = runner->target();
     // The robot is in the list (added with its SSH config and CLI path); choosing it checks it.
@@ -179,10 +185,8 @@ class TestRemoteGui : public QObject {
   void headroom_on_a_robot_is_imported() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(dir.filePath("headroom.bsw")));
-    w.resize(1280, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    open_at_1280x800(w, dir.filePath("headroom.bsw"));
+    if (QTest::currentTestFailed()) return;
     bs::test::click_tab(w, bs::test::tab_of(w, w.headroom_view()));
     bs::ui::HeadroomRunPanel* panel = w.headroom_view()->run_panel();
     bs::ui::RobotTarget* target = panel->target();
@@ -259,10 +263,8 @@ class TestRemoteGui : public QObject {
   void several_robots_one_after_another() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(dir.filePath("queue.bsw")));
-    w.resize(1280, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    open_at_1280x800(w, dir.filePath("queue.bsw"));
+    if (QTest::currentTestFailed()) return;
     bs::ui::KernelRunner* runner = w.kernel_runner();
     runner->target()->reload();
     runner->set_workers_spec("1,2,4,8");
