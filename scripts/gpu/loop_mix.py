@@ -23,13 +23,20 @@ def kernels_ptx(text):
 
 
 def kernels_sass(text):
+    # cuobjdump -sass gives each instruction its address ("/*0090*/ FFMA ...") and branches to addresses
+    # ("@P0 BRA 0x90"), with no labels (nvdisasm's "BRA `(.L_x_1)" has them): every address becomes a label line
+    # "A_90:" and every branch names it, so loops are found as in PTX. Without this every kernel read "no loop".
     parts = re.split(r"^\s*Function : (\S+)\s*$", text, flags=re.M)
     for i in range(1, len(parts), 2):
         name = parts[i]
         lines = []
         for l in parts[i + 1].splitlines():
+            at = re.match(r"^\s*/\*([0-9a-f]{4,})\*/", l)
             l = re.sub(r"/\*[0-9a-fx]*\*/", "", l)  # addresses and encodings
             l = re.sub(r"/\*.*?\*/", "", l).strip()
+            l = re.sub(r"\b(BRA(?:\.[A-Z]+)*)\s+0x([0-9a-f]+)", lambda m: f"{m.group(1)} A_{int(m.group(2), 16):x}", l)
+            if at and l:
+                lines.append(f"A_{int(at.group(1), 16):x}:")
             if l:
                 lines.append(l.rstrip(" ;"))
         yield name, lines
@@ -69,7 +76,7 @@ def loops(lines, sass):
             labels[m.group(1)] = i
     out = []
     for i, l in enumerate(lines):
-        m = re.search(r"\bbra(?:\.uni)?\s+(\$?[\w$.]+)" if not sass else r"\bBRA\s+`?\(?([\w$.]+)\)?", l)
+        m = re.search(r"\bbra(?:\.uni)?\s+(\$?[\w$.]+)" if not sass else r"\bBRA(?:\.[A-Z]+)*\s+`?\(?([\w$.]+)\)?", l)
         if m and m.group(1) in labels and labels[m.group(1)] < i:
             out.append((labels[m.group(1)], i))
     return out
