@@ -132,14 +132,14 @@ const CommandRegistrar registrar({
     "         [--ssh-config FILE] [--remote-cli PATH] [--desk-quiet]\n"
     "  HOST: user@host or a Host of ~/.ssh/config; the system's ssh is used in batch mode (your keys, agent,\n"
     "  ProxyJump; never a password). COMMAND: run flops, record-power, run bandwidth, bench dnn, bench vision,\n"
-    "  bench kernels, devices, sensors, with their own options. Each run first checks the robot (architecture,\n"
-    "  BenchScope there: missing or older than this one gives the command that installs it), then runs COMMAND\n"
-    "  there as a job, prints its progress, points and power readings as they come and imports its results into\n"
-    "  --workspace in one transaction, each with the robot's host name, architecture, devices, the command line\n"
-    "  and its BenchScope version, as platform NAME (default: the robot's host name). Ctrl+C asks the robot to\n"
-    "  stop; what it completed comes home. A dropped connection leaves the workspace as it was: the robot keeps\n"
-    "  the job (~/.cache/benchscope/remote/ID), and fetch brings it home later. check: what the robot is and can\n"
-    "  measure. jobs: the jobs kept there. list: the robots known here (the SSH config's Hosts and those added,\n"
+    "  bench kernels, devices, sensors, headroom, with their own options. Each run first checks the robot\n"
+    "  (architecture, BenchScope there: missing or older than this one gives the command that installs it), then\n"
+    "  runs COMMAND there as a job, prints its progress, points and power readings as they come and imports its\n"
+    "  results into --workspace in one transaction, each with the robot's host name, architecture, devices, the\n"
+    "  command line and its BenchScope version, as platform NAME (default: the robot's host name). Ctrl+C asks the\n"
+    "  robot to stop; what it completed comes home. A dropped connection leaves the workspace as it was: the robot\n"
+    "  keeps the job (~/.cache/benchscope/remote/ID), and fetch brings it home later. check: what the robot is and\n"
+    "  can measure. jobs: the jobs kept there. list: the robots known here (the SSH config's Hosts and those added,\n"
     "  with their last contact and what ran there); add keeps --ssh-config, --remote-cli and --platform for one.",
     remote_command,
 });
