@@ -263,6 +263,16 @@ inline bool show_at(bs::ui::MainWindow& w, int width = 1600, int height = 1000) 
   return true;
 }
 
+// The window on a new paper workspace in `dir` (paper_workspace), shown as a person sees it (show_at): what most
+// scenarios start from. "" when it worked, else which step failed.
+inline QString open_paper_window(bs::ui::MainWindow& w, QTemporaryDir& dir) {
+  const QString ws = paper_workspace(dir);
+  if (ws.isEmpty()) return QStringLiteral("the paper workspace could not be written");
+  if (!w.open_workspace(ws)) return QStringLiteral("the window could not open ") + ws;
+  if (!show_at(w)) return QStringLiteral("the window was not exposed");
+  return {};
+}
+
 }  // namespace bs::test
 
 // main() of a scenario test: VTK's views need their OpenGL format before the QApplication exists, as in

@@ -14,11 +14,9 @@ class TestScenarioCutLine : public QObject {
  private slots:
   void a_cut_last_line_is_named_and_left_out() {
     QTemporaryDir dir;
-    const QString ws = bs::test::paper_workspace(dir);
-    QVERIFY(!ws.isEmpty());
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(ws));
-    QVERIFY(bs::test::show_at(w));
+    const QString opened = bs::test::open_paper_window(w, dir);
+    QVERIFY2(opened.isEmpty(), qPrintable(opened));
     ModalAnswerer person;
     person.expect("Import files (file dialog)", ModalAnswerer::titled("Import files"),
                   [](QWidget* d) { bs::test::choose_file(d, bs::test::kScenarioData + "/nuc-cut-last-line.csv"); });

@@ -41,11 +41,9 @@ class TestScenarioImportQuestion : public QObject {
  private slots:
   void importing_logs_with_ctrl_i_asks_each_platform_over_the_progress() {
     QTemporaryDir dir;
-    const QString ws = bs::test::paper_workspace(dir);
-    QVERIFY(!ws.isEmpty());
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(ws));
-    QVERIFY(bs::test::show_at(w));
+    const QString opened = bs::test::open_paper_window(w, dir);
+    QVERIFY2(opened.isEmpty(), qPrintable(opened));
     // The person's own logs, in one folder: a meter CSV, a current-only CSV and one cut off mid-number.
     const QStringList names{"meter-no-platform.csv", "current-only.csv", "meter-cut-last-line.csv"};
     ModalAnswerer person;
@@ -72,11 +70,9 @@ class TestScenarioImportQuestion : public QObject {
   // cyclictest and rttest results go through the same question as a power log, over the progress, never under it.
   void importing_latency_files_asks_each_platform_over_the_progress() {
     QTemporaryDir dir;
-    const QString ws = bs::test::paper_workspace(dir);
-    QVERIFY(!ws.isEmpty());
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(ws));
-    QVERIFY(bs::test::show_at(w));
+    const QString opened = bs::test::open_paper_window(w, dir);
+    QVERIFY2(opened.isEmpty(), qPrintable(opened));
     const QString folder = QStringLiteral(BENCHSCOPE_TEST_DATA_DIR "/headroom");
     const QStringList names{"cyclictest-2.6-H20-2thr-overflows.txt", "rttest-log-1khz-misses.txt"};
     ModalAnswerer person;

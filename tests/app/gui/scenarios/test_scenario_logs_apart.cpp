@@ -74,11 +74,9 @@ class TestScenarioLogsApart : public QObject {
  private slots:
   void a_phase_drawn_on_one_log_stays_on_it() {
     QTemporaryDir dir;
-    const QString ws = bs::test::paper_workspace(dir);
-    QVERIFY(!ws.isEmpty());
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(ws));
-    QVERIFY(bs::test::show_at(w));
+    const QString opened = bs::test::open_paper_window(w, dir);
+    QVERIFY2(opened.isEmpty(), qPrintable(opened));
     bs::test::open_tab(w, "Power");
     bs::ui::PowerView* power = w.power_view();
     QCustomPlot* plot = power->plot();

@@ -23,11 +23,9 @@ class TestScenarioTwoJetsons : public QObject {
       if (!QFileInfo::exists(bs::test::kPublicPower + '/' + log))
         QSKIP(qPrintable("needs the public data folder " + bs::test::kPublicPower + " (BENCHSCOPE_PUBLIC_DATA_DIR)"));
     QTemporaryDir dir;
-    const QString ws = bs::test::paper_workspace(dir);
-    QVERIFY(!ws.isEmpty());
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(ws));
-    QVERIFY(bs::test::show_at(w));
+    const QString opened = bs::test::open_paper_window(w, dir);
+    QVERIFY2(opened.isEmpty(), qPrintable(opened));
     const auto answer = [](const QString& platform) {
       return [platform](QWidget* dialog) {
         auto* combo = dialog->findChild<QComboBox*>();
