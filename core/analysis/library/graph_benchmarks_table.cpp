@@ -1,23 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/library/graph_benchmarks_table.h"
 
-#include <cstdio>
 #include <string>
-
-#include "analysis/stats/units.h"
 
 namespace bs {
 namespace {
-
-std::string value_text(const LibraryResult& r) {
-  if (!r.value) return "–";
-  if (r.unit == "%") {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g %%", *r.value);
-    return buf;
-  }
-  return format_si(*r.value, r.unit, 2);
-}
 
 std::string source_text(const LibraryResult& r) {
   std::string s = r.source.url;
@@ -53,7 +40,7 @@ ExportTable graph_benchmarks_table(std::span<const GraphBenchmarkClass> classes,
         t.notes.push_back("[" + std::to_string(flag_no) + "] " + f.code + ": " + f.reason);
       }
       const std::string rank = k.rows.size() == 1 ? "only result" : std::to_string(i + 1);
-      t.rows.push_back({r.measure, computer, value_text(r), r.statistic, rank, r.benchmark, r.input, r.release,
+      t.rows.push_back({r.measure, computer, graph_value_text(r), r.statistic, rank, r.benchmark, r.input, r.release,
                         tool_name(r.kind), source_text(r)});
     }
   return t;

@@ -377,6 +377,11 @@ std::string official_text(const LibraryMetric& m) {
   return fmt(m.value, 4) + " " + m.unit;
 }
 
+std::string graph_value_text(const LibraryResult& r) {
+  if (!r.value) return "–";
+  return r.unit == "%" ? fmt(*r.value, 4) + " %" : format_si(*r.value, r.unit, 2);
+}
+
 std::string library_result_summary(const LibraryResult& r) {
   std::string s;
   const auto add = [&](const std::string& part) { s += (s.empty() ? "" : "; ") + part; };
@@ -393,8 +398,8 @@ std::string library_result_summary(const LibraryResult& r) {
       add(r.latency_statistic + " latency " + format_si(*r.latency_s, "s", 2));
     if (r.throughput_per_s) add(fmt(*r.throughput_per_s, 4) + " /s (" + r.throughput_statistic + ")");
   } else if (r.is_graph_benchmark() && r.value) {
-    add(r.measure + " " + (r.unit == "%" ? fmt(*r.value, 4) + " %" : format_si(*r.value, r.unit, 2)) + " (" +
-        r.statistic + "; " + r.benchmark + ", " + r.input + ", " + r.release + ")");
+    add(r.measure + " " + graph_value_text(r) + " (" + r.statistic + "; " + r.benchmark + ", " + r.input + ", " +
+        r.release + ")");
   } else if (r.value) {
     add(format_si(*r.value, r.unit == "FLOP/s" ? "FLOPS" : r.unit, 2) + " " + r.precision + " (" + r.measure + ")");
   }

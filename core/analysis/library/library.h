@@ -139,4 +139,8 @@ std::string library_result_summary(const LibraryResult& r);
 // The official metric in its unit as a text: "1.638 ms", "3463 /s", "102 streams".
 std::string official_text(const LibraryMetric& m);
 
+// A ROS 2 graph benchmark's value in its unit: "5.93 ms", "185.25 1/s", "9.2 %" (CPU use never gets an SI prefix);
+// "–" when the result has none.
+std::string graph_value_text(const LibraryResult& r);
+
 }  // namespace bs
