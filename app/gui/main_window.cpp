@@ -156,6 +156,7 @@ MainWindow::MainWindow(QWidget* parent)
   });
   // Measured on a robot (issue #44): imported with the robot's provenance as the Kernel Runner's remote jobs are.
   connect(headroom_->run_panel(), &HeadroomRunPanel::remote_finished, this, &MainWindow::store_remote_run);
+  connect(pipeline_->measure_panel(), &PipelineMeasurePanel::remote_finished, this, &MainWindow::store_remote_run);
   tab(frames_, tr("Frames"), tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
   lens_ = new LensTab(this);
   tab(lens_, tr("Lens"), tr("Reprojection tuner (lens model, view, masks, auto-calibration) beside the lens in 3D"));

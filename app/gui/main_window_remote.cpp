@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Results measured on a robot (issue #44): a remote job of the Kernel Runner or the Headroom tab came home; its
-// result workspace is imported in one transaction, every item stamped with the robot's identity and the command run
-// there, under the platform name the user confirmed or renamed.
+// Results measured on a robot (issue #44): a remote job of the Kernel Runner, the Headroom or the Pipeline tab came
+// home; its result workspace is imported in one transaction, every item stamped with the robot's identity and the
+// command run there, under the platform name the user confirmed or renamed.
 #include <QMessageBox>
 #include <QStatusBar>
 

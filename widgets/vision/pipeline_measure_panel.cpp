@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardItemModel>
@@ -20,7 +21,10 @@
 
 #include "analysis/power/phase_energy.h"
 #include "power/power_sensor_box.h"
+#include "remote/remote_run.h"
+#include "remote/robot_target.h"
 #include "sensors/recorder.h"
+#include "vision/pipeline/pipeline_command.h"
 #include "vision/pipeline/pipeline_measure.h"
 #include "vision/reproject/cuda_preprocess.h"
 
@@ -43,11 +47,12 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
       scale_(new QDoubleSpinBox(this)),
       backend_(new QComboBox(this)),
       detector_(new QComboBox(this)),
-      measure_(new QPushButton(tr("Measure on this machine"), this)),
+      measure_(new QPushButton(tr("Measure"), this)),
       cancel_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
       status_(new QLabel(this)),
       power_(new PowerSensorBox(this)),
+      target_(new RobotTarget(this)),
       watcher_(new QFutureWatcher<Outcome>(this)),
       percent_(std::make_shared<std::atomic<int>>(0)) {
   const QSettings settings;
@@ -77,13 +82,11 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   backend_->setToolTip(
       tr("Where demosaicing + reprojection run; detection (HOG) always runs on the CPU. OpenCL "
          "takes the first OpenCL device (GPU preferred; PoCL gives a CPU device)."));
-  // A CUDA entry that cannot run stays visible, disabled, saying why: nobody wonders where it went.
-  if (const std::string why = vision::cuda_preprocessing_unavailable(); !why.empty()) {
-    auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
-    QStandardItem* cuda = model->item(2);
-    cuda->setEnabled(false);
-    cuda->setToolTip(tr("Not available here: %1").arg(QString::fromStdString(why)));
-  }
+  target_->setToolTip(
+      tr("Where the pipeline is measured: this computer, or a robot over SSH (its own CLI renders the same "
+         "synthetic capture and runs the pipeline there; the run comes home with the robot's name, architecture "
+         "and the command run)"));
+  target_changed();  // disables what this computer cannot run (CUDA without a GPU), saying why
   const int saved = backend_->findData(settings.value(kBackendKey, QStringLiteral("cpu")).toString());
   const auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
   backend_->setCurrentIndex(saved >= 0 && model->item(saved)->isEnabled() ? saved : 0);
@@ -135,6 +138,9 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   // how to run it and what happened on the second.
   auto* layout = new QGridLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
+  auto* where = new QHBoxLayout;
+  where->addWidget(new QLabel(tr("Run on:"), this));
+  where->addWidget(target_, 1);
   auto* frames_label = new QLabel(tr("Synthetic frames:"), this);
   frames_label->setToolTip(tr("Frames of the synthetic paper capture to run through the pipeline"));
   auto* workers_label = new QLabel(tr("Detection workers:"), this);
@@ -146,8 +152,9 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   int column = 0;
   for (QWidget* w : std::initializer_list<QWidget*>{frames_label, frames_, workers_label, workers_, scale_label, scale_,
                                                     backend_label, backend_})
-    layout->addWidget(w, 0, column++);
+    layout->addWidget(w, 1, column++);
   layout->setColumnStretch(column, 1);
+  layout->addLayout(where, 0, 0, 1, column + 1);
   auto* second_row = new QHBoxLayout;
   auto* detector_label = new QLabel(tr("Detector:"), this);
   detector_label->setToolTip(detector_->toolTip());
@@ -159,11 +166,12 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   second_row->addWidget(cancel_);
   second_row->addWidget(progress_);
   second_row->addWidget(status_, 1);
-  layout->addLayout(second_row, 1, 0, 1, column + 1);
+  layout->addLayout(second_row, 2, 0, 1, column + 1);
 
   connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
   connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
   connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &PipelineMeasurePanel::finished);
+  connect(target_, &RobotTarget::changed, this, &PipelineMeasurePanel::target_changed);
   for (QSpinBox* box : {frames_, workers_})
     connect(box, &QSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
   connect(scale_, &QDoubleSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
@@ -172,7 +180,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   auto* timer = new QTimer(this);
   timer->setInterval(100);
   connect(timer, &QTimer::timeout, this, [this] {
-    if (running()) progress_->setValue(percent_->load());
+    if (watcher_->isRunning()) progress_->setValue(percent_->load());  // a robot's run moves the bar itself
   });
   timer->start();
 }
@@ -183,7 +191,37 @@ PipelineMeasurePanel::~PipelineMeasurePanel() {
   watcher_->waitForFinished();
 }
 
-bool PipelineMeasurePanel::running() const { return watcher_->isRunning(); }
+bool PipelineMeasurePanel::running() const { return watcher_->isRunning() || (remote_ && remote_->running()); }
+
+void PipelineMeasurePanel::target_changed() {
+  const bool robot = target_->is_robot();
+  measure_->setText(robot ? tr("Measure on %1").arg(target_->robot_name()) : tr("Measure on this machine"));
+  auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
+  // A backend the chosen computer cannot run stays visible, disabled, saying why: nobody wonders where it went.
+  const auto set = [model](int row, const QString& why) {
+    model->item(row)->setEnabled(why.isEmpty());
+    model->item(row)->setToolTip(why);
+  };
+  if (!robot) {
+    set(1, {});  // an OpenCL device is asked for at the run (PoCL gives one everywhere)
+    const std::string why = vision::cuda_preprocessing_unavailable();
+    set(2, why.empty() ? QString() : tr("Not available here: %1").arg(QString::fromStdString(why)));
+  } else if (const auto& check = target_->check(); check && check->ok) {
+    // The robot's own backends, from its check: "opencl:0", "cuda:0".
+    bool opencl = false, cuda = false;
+    for (const remote::RobotBackend& b : check->info.backends) {
+      opencl = opencl || b.id.starts_with("opencl");
+      cuda = cuda || b.id.starts_with("cuda");
+    }
+    const QString name = target_->robot_name();
+    set(1, opencl ? QString() : tr("%1 has no OpenCL device").arg(name));
+    set(2, cuda ? QString() : tr("%1 has no CUDA GPU (or its BenchScope was built without CUDA)").arg(name));
+  } else {
+    set(1, {});  // not checked yet: the robot says at the run whether it can
+    set(2, {});
+  }
+  if (!model->item(backend_->currentIndex())->isEnabled()) backend_->setCurrentIndex(0);
+}
 
 void PipelineMeasurePanel::save_settings() const {
   QSettings settings;
@@ -205,6 +243,10 @@ void PipelineMeasurePanel::start() {
   options.detector = detector_->currentData().toString().toStdString();
   options.tool =
       QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
+  if (target_->is_robot()) {
+    start_remote(options);
+    return;
+  }
   trace_.reset();
   try {
     recorder_ = power_->start_recorder();  // null when "Record power" is off
@@ -237,7 +279,71 @@ void PipelineMeasurePanel::start() {
   }));
 }
 
+void PipelineMeasurePanel::start_remote(const vision::SyntheticPipelineOptions& options) {
+  const QString robot = target_->robot_name();
+  if (target_->checking() || !target_->check() || !target_->check()->ok) {
+    status_->setText(target_->checking() ? tr("%1 is being checked; Measure again when it is ready").arg(robot)
+                                         : tr("%1 is not ready: see the message under \"Run on\"").arg(robot));
+    emit failed(status_->text());
+    return;
+  }
+  std::vector<std::string> args;
+  try {
+    args = vision::synthetic_pipeline_cli_args(options, target_->platform().toStdString(), !power_->off());
+  } catch (const std::invalid_argument& e) {
+    status_->setText(tr("%1: %2").arg(robot, QString::fromUtf8(e.what())));
+    emit failed(status_->text());
+    return;
+  }
+  target_->remember_platform();
+  const QString platform = target_->platform();
+  remote_ = std::make_unique<RemoteRun>(target_->target(), args);
+  RemoteRun* run = remote_.get();
+  // The robot reports "captured k of N frames" as it goes: the bar follows it; the line shows what it says.
+  connect(run, &RemoteRun::remote_text, this, [this, robot](const QString& line) {
+    static const QRegularExpression captured(QStringLiteral("^captured (\\d+) of (\\d+) frames$"));
+    if (const auto m = captured.match(line); m.hasMatch() && m.captured(2).toInt() > 0) {
+      progress_->setRange(0, 100);
+      progress_->setValue(m.captured(1).toInt() * 100 / m.captured(2).toInt());
+    }
+    status_->setText(QStringLiteral("%1: %2").arg(robot, line));
+  });
+  connect(run, &RemoteRun::finished, this, [this, run, platform, robot] {
+    const remote::RemoteJob& job = run->job();
+    status_->setText(
+        job.status == "cancelled"
+            ? tr("%1: cancelled (job %2); nothing half-measured is stored").arg(robot, QString::fromStdString(job.id))
+            : tr("Measured on %1 (job %2)").arg(robot, QString::fromStdString(job.id)));
+    emit remote_finished(run, platform);
+    remote_done();
+  });
+  connect(run, &RemoteRun::failed, this, [this, robot](const QString& message) {
+    status_->setText(QStringLiteral("%1: %2").arg(robot, message));
+    emit failed(status_->text());
+    remote_done();
+  });
+  measure_->setEnabled(false);
+  cancel_->setEnabled(true);
+  progress_->setRange(0, 0);  // busy until the robot's first "captured" line
+  progress_->show();
+  status_->setText(tr("%1: checking the robot and starting %2 frames…").arg(robot).arg(options.frames));
+  run->start();
+}
+
+void PipelineMeasurePanel::remote_done() {
+  remote_.release()->deleteLater();  // we are in its signal
+  measure_->setEnabled(true);
+  cancel_->setEnabled(false);
+  progress_->setRange(0, 100);
+  progress_->hide();
+}
+
 void PipelineMeasurePanel::cancel() {
+  if (remote_) {
+    remote_->cancel();
+    status_->setText(tr("Cancelling: the robot finishes the frames in flight and stops…"));
+    return;
+  }
   if (token_) token_->cancel();
   status_->setText(tr("Cancelling: the frames in flight finish first…"));
 }

@@ -8,6 +8,7 @@
 #include "model/pipeline_run.h"
 #include "model/power_trace.h"
 #include "util/cancel.h"
+#include "vision/pipeline/pipeline_measure.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -25,10 +26,15 @@ class PowerRecorder;
 namespace bs::ui {
 
 class PowerSensorBox;
+class RemoteRun;
+class RobotTarget;
 
-// "Measure on this machine": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
+// "Measure": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
 // (core: vision::measure_synthetic_pipeline) off the GUI thread, with progress and cancel, and hands the finished
-// run over (run_measured) to be stored. Frames, detection workers and detection scale are spin boxes remembered
+// run over (run_measured) to be stored. "Run on" chooses this machine or a robot over SSH (issue #44): a robot
+// renders the same capture itself (`benchscope-cli pipeline --synthetic`, core: vision/pipeline/pipeline_command.h),
+// its progress shows as it comes, Cancel stops it there, and its job is handed over to be imported with the
+// robot's provenance (remote_finished). Frames, detection workers and detection scale are spin boxes remembered
 // between sessions (QSettings), and so is where preprocessing runs (CPU, OpenCL, CUDA: a backend this machine
 // cannot run is listed but disabled, its tooltip saying why). "Record power" samples an on-board sensor during
 // the run; the status line gives the energy per frame and the trace (take_power_trace) is stored with the run.
@@ -46,6 +52,7 @@ class PipelineMeasurePanel : public QWidget {
   QPushButton* measure_button() const { return measure_; }
   PowerSensorBox* power_box() const { return power_; }
   QLabel* status() const { return status_; }
+  RobotTarget* target() const { return target_; }
   // The trace recorded during the last measured run (taken once).
   std::optional<PowerTrace> take_power_trace();
   bool running() const;
@@ -56,6 +63,8 @@ class PipelineMeasurePanel : public QWidget {
 
  signals:
   void run_measured(const bs::PipelineRun& run);
+  // A robot's job came home (a cancelled one too: it brings nothing half-done); `platform` as confirmed.
+  void remote_finished(bs::ui::RemoteRun* run, const QString& platform);
   void failed(const QString& message);
 
  private:
@@ -65,6 +74,10 @@ class PipelineMeasurePanel : public QWidget {
   };
   void finished();
   void save_settings() const;
+  void start_remote(const vision::SyntheticPipelineOptions& options);
+  void remote_done();
+  // The backends the chosen computer offers (a robot's from its check), the Measure button's words.
+  void target_changed();
 
   QSpinBox* frames_;
   QSpinBox* workers_;
@@ -76,6 +89,8 @@ class PipelineMeasurePanel : public QWidget {
   QProgressBar* progress_;
   QLabel* status_;
   PowerSensorBox* power_;
+  RobotTarget* target_;
+  std::unique_ptr<RemoteRun> remote_;
   std::shared_ptr<sensors::PowerRecorder> recorder_;
   std::optional<PowerTrace> trace_;
   QFutureWatcher<Outcome>* watcher_;

@@ -140,10 +140,11 @@ const CommandRegistrar registrar({
     "       benchscope-cli job probe [--sysfs-root DIR] [--isa avx512|avx2|sse4|generic]\n"
     "  What `benchscope-cli remote HOST ...` starts on the robot through ssh; its output is the event stream of\n"
     "  docs/remote-events-v1.md. run: runs COMMAND (run flops, record-power, run bandwidth, bench dnn, bench\n"
-    "  vision, bench kernels, devices, sensors) with its results in DIR/ID/result.bsw (DIR: --jobs-dir, default\n"
-    "  $XDG_CACHE_HOME/benchscope/remote or ~/.cache/benchscope/remote), then sends them as file events. A line\n"
-    "  'cancel' on stdin stops it as Ctrl+C does (the completed part is sent); the end of stdin (the connection\n"
-    "  dropped) stops it and everything it started. fetch: sends a finished job again (the newest without --id).\n"
+    "  vision, bench kernels, devices, sensors, headroom, pipeline) with its results in DIR/ID/result.bsw\n"
+    "  (DIR: --jobs-dir, default $XDG_CACHE_HOME/benchscope/remote or ~/.cache/benchscope/remote), then sends\n"
+    "  them as file events. A line 'cancel' on stdin stops it as Ctrl+C does (the completed part is sent); the end\n"
+    "  of stdin (the connection dropped) stops it and everything it started. fetch: sends a finished job again\n"
+    "  (the newest without --id).\n"
     "  list: one job event per job. probe: one robot event (host, architecture, version, backends, sensors).",
     job_command,
 });

@@ -8,6 +8,7 @@ const std::vector<RemoteCommand>& remote_commands() {
       {"run flops", 2, true, true},  {"record-power", 1, true, true},   {"run bandwidth", 2, false, true},
       {"bench dnn", 2, false, true}, {"bench vision", 2, false, false}, {"bench kernels", 2, false, false},
       {"devices", 1, false, false},  {"sensors", 1, false, false},      {"headroom", 1, false, true},
+      {"pipeline", 1, false, true},
   };
   return list;
 }

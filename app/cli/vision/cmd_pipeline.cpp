@@ -3,9 +3,11 @@
 // thread each for capture and preprocessing, --detect-workers threads for detection) on frame files, prints per-stage
 // timings, writes the figure-3 images and can store the run.
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 
@@ -26,6 +28,7 @@
 #include "vision/pipeline/detector.h"
 #include "vision/pipeline/dnn_architectures.h"
 #include "vision/pipeline/pipeline.h"
+#include "vision/pipeline/pipeline_measure.h"
 #include "vision/pipeline/pipeline_record.h"
 #include "vision/pipeline/threads.h"
 #include "vision/pipeline_args.h"
@@ -170,12 +173,100 @@ void write_figures(const std::string& dir, const FrameFile& frame, const cv::Mat
   save("fig3-reprojected.png", detector ? draw_detections(view, detector(view)) : view);
 }
 
+// The run's ending, shared by frame files and the synthetic capture: the power trace closed, the table or JSON
+// printed, figure 3 written (frame files only), the run and its trace stored as one import.
+int finish_run(const ParsedArgs& args, const PipelineRun& run, const PipelineResult& result,
+               sensors::PowerRecorder* power, const std::function<void(std::ostream&)>& figures, std::ostream& out,
+               std::ostream& err) {
+  const std::string json_text = write_pipeline_json(run);
+  std::optional<PowerTrace> trace;
+  if (power) {
+    power->end_phase();
+    trace = power->finish("pipeline " + run.platform + " " + run.backend + " " + run.provenance.date);
+    trace->platform = run.platform;  // the Platforms view pairs traces and runs by platform
+  }
+  // --json keeps stdout to the document alone; the rest goes where the command's messages go.
+  std::ostream& info = args.has("--json") ? err : out;
+  if (args.has("--json"))
+    out << json_text;
+  else
+    print_table(run, result, out);
+  if (trace) print_pipeline_energy(info, *trace, run, result.processed);
+  if (figures) figures(info);
+  if (const auto ws_path = args.value("--workspace")) {
+    Workspace ws(*ws_path);
+    // With --power the trace goes into the same import as the run (stored and removed together).
+    ImportBatch batch;
+    batch.source_path = "benchscope-cli pipeline (" + run.platform + ", " + run.provenance.date + ")";
+    batch.format = "benchscope-pipeline-v1";
+    batch.pipeline_runs = {run};
+    if (trace) batch.power_traces.push_back(*trace);
+    const std::int64_t id = ws.add_import(batch, content_hash(json_text));
+    info << "stored the run in " << *ws_path << " (import " << id << ")\n";
+  }
+  return 0;
+}
+
+// pipeline --synthetic: the Pipeline tab's measurement (the paper camera's synthetic capture through the fused
+// preprocessing and the detector), which a robot can run without any file from the desk.
+int run_synthetic(const ParsedArgs& args, std::ostream& out, std::ostream& err) {
+  if (!args.positional.empty())
+    throw UsageError("--synthetic measures the synthetic capture of the paper's camera: give no frame files (got '" +
+                     args.positional.front() + "')");
+  for (const char* option : {"--demosaic", "--policy", "--queue", "--pattern", "--out"})
+    if (args.value(option))
+      throw UsageError(std::string("--synthetic runs as the Pipeline tab does (fused demosaic, block policy, queues "
+                                   "of 2, BGGR, no figures): leave out ") +
+                       option);
+  if (const auto lens = args.value("--lens"); lens && *lens != "paper")
+    throw UsageError("--synthetic uses the paper's lens (--lens paper), not '" + *lens + "'");
+  const double frames = args.number("--frames", 20);
+  if (frames < 1 || frames > 1e6 || frames != static_cast<double>(static_cast<long>(frames)))
+    throw UsageError("--frames must be a whole number from 1 to 1,000,000");
+  vision::SyntheticPipelineOptions o;
+  o.frames = static_cast<std::size_t>(frames);
+  o.detection_workers = detect_workers_option(args);
+  o.detect_scale = detect_scale_option(args);
+  o.backend = args.value("--backend").value_or("cpu");
+  if (o.backend != "cpu" && o.backend != "opencl" && o.backend != "cuda")
+    throw UsageError("--backend must be cpu, opencl or cuda (got '" + o.backend + "')");
+  o.detector = args.value("--detector").value_or("hog");
+  if (const std::string model = o.detector.substr(0, o.detector.find(','));
+      o.detector != "hog" && o.detector != "none" && !architecture_from_string(o.detector) &&
+      !std::filesystem::is_regular_file(model))
+    throw std::runtime_error(model +
+                             ": no such model file (--detector takes hog, none, mobilenet-ssd, yolo-n or "
+                             "MODEL[,CONFIG])");
+  o.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
+  const auto power = start_power(args, err, args.has("--json"));
+  if (power) power->begin_phase("pipeline");
+  // Progress at every tenth of the frames (a robot's desk shows these lines as they come).
+  std::atomic<int> reported{0};
+  const ProgressFn progress = [&](double f, std::string_view) {
+    const int tenth = static_cast<int>(f * 10);
+    if (tenth > reported.exchange(tenth))
+      err << "captured " << static_cast<std::size_t>(f * static_cast<double>(o.frames) + 0.5) << " of " << o.frames
+          << " frames\n"
+          << std::flush;
+  };
+  PipelineResult result;
+  std::optional<PipelineRun> run = vision::measure_synthetic_pipeline(o, interrupt_token(), progress, &result);
+  if (!run) {
+    err << "benchscope-cli: pipeline cancelled after " << result.processed << " frames; nothing stored\n";
+    return 1;
+  }
+  run->platform = args.value("--platform").value_or(bs::host_name());
+  run->provenance.compiler = BENCHSCOPE_COMPILER;
+  return finish_run(args, *run, result, power.get(), {}, out, err);
+}
+
 int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  const ParsedArgs args = parse_args(raw, {"--json"},
+  const ParsedArgs args = parse_args(raw, {"--json", "--synthetic"},
                                      {"--lens", "--demosaic", "--backend", "--detector", "--frames", "--policy",
                                       "--out", "--workspace", "--pattern", "--platform", "--queue", "--detect-workers",
                                       "--detect-scale", "--power", "--power-interval-ms", "--sysfs-root"});
-  if (args.positional.empty()) throw UsageError("pipeline needs at least one frame file");
+  if (args.has("--synthetic")) return run_synthetic(args, out, err);
+  if (args.positional.empty()) throw UsageError("pipeline needs at least one frame file (or --synthetic)");
   const auto lens_arg = args.value("--lens");
   if (!lens_arg) throw UsageError("--lens LENS.json is required (or --lens paper for the paper's camera)");
   const std::string backend = args.value("--backend").value_or("cpu");
@@ -278,40 +369,19 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
       std::to_string(config.queue_capacity) +
       (detector ? ", " + std::to_string(detect_workers) + " detection workers, detect scale " + scale_text(detect_scale)
                 : std::string());
-  const std::string json_text = write_pipeline_json(run);
-  std::optional<PowerTrace> trace;
-  if (power) {
-    power->end_phase();
-    trace = power->finish("pipeline " + run.platform + " " + run.backend + " " + run.provenance.date);
-    trace->platform = run.platform;  // the Platforms view pairs traces and runs by platform
-  }
-
-  std::ostream& info = args.has("--json") ? err : out;  // --json keeps stdout to the document alone
-  if (args.has("--json"))
-    out << json_text;
-  else
-    print_table(run, result, out);
-  if (trace) print_pipeline_energy(info, *trace, run, result.processed);
-  if (const auto dir = args.value("--out"))
-    write_figures(*dir, files.front(), mosaics.front(), dm, preprocess, detector, info);
-  if (const auto ws_path = args.value("--workspace")) {
-    Workspace ws(*ws_path);
-    // With --power the trace goes into the same import as the run (stored and removed together).
-    ImportBatch batch;
-    batch.source_path = "benchscope-cli pipeline (" + run.platform + ", " + run.provenance.date + ")";
-    batch.format = "benchscope-pipeline-v1";
-    batch.pipeline_runs = {run};
-    if (trace) batch.power_traces.push_back(*trace);
-    const std::int64_t id = ws.add_import(batch, content_hash(json_text));
-    info << "stored the run in " << *ws_path << " (import " << id << ")\n";
-  }
-  return 0;
+  const auto figures = [&](std::ostream& info) {
+    if (const auto dir = args.value("--out"))
+      write_figures(*dir, files.front(), mosaics.front(), dm, preprocess, detector, info);
+  };
+  return finish_run(args, run, result, power.get(), figures, out, err);
 }
 
 const CommandRegistrar registrar({
     "pipeline",
     "run the vision pipeline (demosaic + reprojection, detection) on frames; timings, figure 3, store",
     "usage: benchscope-cli pipeline FRAME... --lens LENS.json|paper [--demosaic fused|bilinear|mhc|opencv]\n"
+    "       benchscope-cli pipeline --synthetic [--frames N] [--backend B] [--detector D] [--detect-workers W]\n"
+    "         [--detect-scale S] [--platform NAME] [--workspace WS] [--json] [--power SENSOR|auto|none]\n"
     "         [--backend cpu|opencl|cuda] [--detector hog|none|mobilenet-ssd|yolo-n|MODEL[,CONFIG]] [--frames N]\n"
     "         [--policy block|drop-oldest] [--queue N] [--detect-workers W] [--detect-scale S]\n"
     "         [--pattern BGGR|RGGB|GRBG|GBRG] [--platform NAME]\n"
@@ -339,7 +409,10 @@ const CommandRegistrar registrar({
     "  a GPU it stops at once saying why.\n"
     "  --power records the on-board sensors during the run (phase \"pipeline\"): energy per frame through the\n"
     "  pipeline, per preprocessed frame and per inference (mean power x stage mean time); --workspace stores the\n"
-    "  trace in the same import as the run.",
+    "  trace in the same import as the run.\n"
+    "  --synthetic measures as the GUI's Pipeline tab does, on the synthetic capture of the paper's camera (the\n"
+    "  test chart through the 195 degree lens, 1280x1024 BGGR; default 20 frames; fused demosaic, block policy,\n"
+    "  queues of 2): no frame file is needed, so a robot runs it as it is (`remote ROBOT pipeline --synthetic`).",
     run_pipeline_cmd,
 });
 

@@ -20,11 +20,13 @@ namespace bs::vision {
 cv::Mat synthetic_paper_capture() { return mosaic(render_fisheye(Lens::paper()), BayerPattern::BGGR); }
 
 std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOptions& o, const CancelToken& cancel,
-                                                      const ProgressFn& progress) {
+                                                      const ProgressFn& progress, PipelineResult* result_out) {
   if (o.frames < 1 || o.frames > 1000000) throw std::invalid_argument("frames must be between 1 and 1,000,000");
   std::string detector_name = o.detector;
   Detector detector;
-  if (o.detector == "hog") {
+  if (o.detector == "none") {
+    if (!(o.detect_scale > 0 && o.detect_scale <= 1)) throw std::invalid_argument("detect scale must be in (0, 1]");
+  } else if (o.detector == "hog") {
     detector = hog_people_detector(o.detect_scale);  // validates the scale
   } else if (const auto arch = architecture_from_string(o.detector)) {
     detector = scaled_detector(architecture_timing_detector(*arch), o.detect_scale);
@@ -64,12 +66,15 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   config.max_frames = o.frames;
   config.detection_workers = o.detection_workers;  // run_pipeline validates it
   const PipelineResult result = run_pipeline(source, preprocess, detector, config, cancel);
+  if (result_out) *result_out = result;
   if (result.cancelled) return std::nullopt;
 
   PipelineRun run = to_pipeline_run(result);
   run.platform = bs::host_name();
-  run.device = preprocess_device + ", " + std::to_string(o.detection_workers) + " detection worker" +
-               (o.detection_workers == 1 ? "" : "s");
+  run.device = preprocess_device;
+  if (detector)
+    run.device +=
+        ", " + std::to_string(o.detection_workers) + " detection worker" + (o.detection_workers == 1 ? "" : "s");
   run.backend = o.backend;
   // The OpenCL path demosaics the whole frame, then reprojects; the CPU and CUDA paths are fused.
   run.demosaic = o.backend == "opencl" ? "bilinear" : "fused";
@@ -83,10 +88,12 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   run.provenance.tool = o.tool;
   char scale[32];
   std::snprintf(scale, sizeof scale, "%g", o.detect_scale);
-  run.provenance.note = "synthetic paper capture (test chart, 195 deg lens), " + std::to_string(o.frames) +
-                        " frames, 1280x1024 150 deg view, policy block, queue 2, " +
-                        std::to_string(o.detection_workers) + " detection workers, detect scale " + scale +
-                        ", preprocessing on " + o.backend + ", detector " + detector_name;
+  run.provenance.note =
+      "synthetic paper capture (test chart, 195 deg lens), " + std::to_string(o.frames) +
+      " frames, 1280x1024 150 deg view, policy block, queue 2, " +
+      (detector ? std::to_string(o.detection_workers) + " detection workers, detect scale " + scale + ", "
+                : std::string()) +
+      "preprocessing on " + o.backend + ", detector " + detector_name;
   return run;
 }
 

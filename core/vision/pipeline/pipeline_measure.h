@@ -25,15 +25,18 @@ struct SyntheticPipelineOptions {
   double detect_scale = 0.5;    // 0 < scale <= 1
   std::string backend = "cpu";  // preprocessing on "cpu" (fused), "opencl" or "cuda"; detection stays on the CPU
   // "hog" (OpenCV's people detector), "mobilenet-ssd" or "yolo-n" (built-in architectures with random weights:
-  // the run is labelled architecture timing, no detections), or a model file cv::dnn reads (MODEL[,CONFIG]).
+  // the run is labelled architecture timing, no detections), a model file cv::dnn reads (MODEL[,CONFIG]), or
+  // "none" (preprocessing only).
   std::string detector = "hog";
   std::string tool;  // the producing tool for the provenance, e.g. "benchscope 0.4.0 (GUI)"
 };
 
 // Runs the pipeline (block policy, queues of 2) and returns the run, or nullopt when cancelled. `progress` (may be
-// empty) is called from the capture thread with the fraction of frames captured. Throws std::invalid_argument for
+// empty) is called from the capture thread with the fraction of frames captured. `result` (may be null) receives
+// the pipeline's own counts (captured, dropped, wall time), which the CLI prints. Throws std::invalid_argument for
 // options out of range, std::runtime_error when the backend cannot run here (no OpenCL device, no CUDA GPU).
 std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOptions& options,
-                                                      const CancelToken& cancel, const ProgressFn& progress = {});
+                                                      const CancelToken& cancel, const ProgressFn& progress = {},
+                                                      PipelineResult* result = nullptr);
 
 }  // namespace bs::vision

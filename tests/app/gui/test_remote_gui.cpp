@@ -3,7 +3,8 @@
 // machine behind a real sshd on a local port, tests/support/ssh_robot.h) is chosen as the target and checked, the
 // sweep's points are plotted live while it runs, and its results land in the workspace like a local run's, under
 // the platform name typed, with the robot's provenance; a second run on the same robot is cancelled and brings
-// its completed points. The Headroom tab measures the control loop on the robot the same way. Screenshots at 1280x800
+// its completed points. The Headroom and Pipeline tabs measure the control loop and the vision pipeline on the robot
+// the same way. Screenshots at 1280x800
 // and 1600x1000 go to $BENCHSCOPE_SCREENSHOT_DIR. CTest skip (77) without sshd.
 #include <QApplication>
 #include <QCheckBox>
@@ -39,6 +40,8 @@
 #include "remote/robot_target.h"
 #include "remote/robots.h"
 #include "store/workspace.h"
+#include "vision/pipeline_measure_panel.h"
+#include "vision/pipeline_view.h"
 #include "workspace/workspace_tree.h"
 
 namespace {
@@ -256,6 +259,72 @@ class TestRemoteGui : public QObject {
     const bs::remote::Robot* r = robots.find("robot");
     QVERIFY(r && !r->runs.empty() && r->runs.back().command == "headroom");
     QVERIFY(r->runs.back().outcome.find("imported 1 headroom measurement") != std::string::npos);
+  }
+
+  // The Pipeline tab measuring on the robot (issue #44): the robot chosen under "Run on", Measure pressed, the bar
+  // following the robot's "captured k of N frames", and the run shown in the table and stored under the platform
+  // typed, with the robot's provenance and the command it ran (the synthetic capture: no frame leaves the desk).
+  void pipeline_on_a_robot_is_imported() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    open_at_1280x800(w, dir.filePath("pipeline.bsw"));
+    if (QTest::currentTestFailed()) return;
+    bs::test::click_tab(w, bs::test::tab_of(w, w.pipeline_view()));
+    bs::ui::PipelineMeasurePanel* panel = w.pipeline_view()->measure_panel();
+    bs::ui::RobotTarget* target = panel->target();
+    target->reload();
+    choose_robot(target);
+    if (QTest::currentTestFailed()) return;
+    QVERIFY(panel->measure_button()->text() == "Measure on robot");
+    panel->frames()->setValue(6);
+    panel->workers()->setValue(1);
+    panel->detector()->setCurrentIndex(panel->detector()->findData(QStringLiteral("hog")));
+    target->platform_field()->clear();
+    QTest::keyClicks(target->platform_field(), "Robot eyes");
+    qRegisterMetaType<bs::ui::RemoteRun*>();
+    QSignalSpy done(panel, &bs::ui::PipelineMeasurePanel::remote_finished);
+    QSignalSpy failed(panel, &bs::ui::PipelineMeasurePanel::failed);
+    QTest::mouseClick(panel->measure_button(), Qt::LeftButton);
+    QVERIFY(panel->running());
+    auto* bar = panel->findChild<QProgressBar*>();
+    QVERIFY(bar);
+    int most = 0;
+    bool shot = false;
+    for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) {
+      if (bar->maximum() > 0) most = std::max(most, bar->value());
+      if (!shot && most > 0) {
+        shot = true;
+        screenshots(w, "pipeline-robot-running");
+      }
+      QTest::qWait(10);
+    }
+    QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
+    QCOMPARE(done.count(), 1);
+    QVERIFY2(most > 0, "the progress bar never followed the robot");
+    QVERIFY(!panel->running());
+    const auto stored = w.workspace()->pipeline_runs();
+    QCOMPARE(stored.size(), std::size_t{1});
+    const bs::PipelineRun& run = stored[0].run;
+    QCOMPARE(run.platform, std::string("Robot eyes"));
+    QCOMPARE(run.stage(bs::pipeline_stage::kPreprocess)->n, std::size_t{6});
+    QCOMPARE(setting(run.provenance, "remote host"), std::string("robot"));
+    QVERIFY2(setting(run.provenance, "remote command").find("pipeline --synthetic --frames 6") != std::string::npos,
+             setting(run.provenance, "remote command").c_str());
+    QVERIFY(panel->status()->text().startsWith("Measured on robot"));
+    // The table shows it under its platform.
+    bool listed = false;
+    QTableWidget* table = w.pipeline_view()->table();
+    for (int r = 0; r < table->rowCount(); ++r)
+      if (auto* item = table->item(r, bs::ui::PipelineView::Platform); item && item->text() == "Robot eyes")
+        listed = true;
+    QVERIFY(listed);
+    QVERIFY(w.minimumSizeHint().width() <= 1280);
+    screenshots(w, "pipeline-robot-done");
+    const bs::remote::RobotList robots;
+    const bs::remote::Robot* r = robots.find("robot");
+    QVERIFY(r && !r->runs.empty() && r->runs.back().command == "pipeline");
+    QVERIFY2(r->runs.back().outcome.find("imported 1 pipeline run") != std::string::npos,
+             r->runs.back().outcome.c_str());
   }
 
   // "Several robots…": the sweep runs on each checked robot in turn, each under the platform typed in the dialog,

@@ -375,6 +375,37 @@ class TestCliRemote : public QObject {
     verify_nothing_running("headroom-1");
   }
 
+  // The Pipeline tab's measurement on the robot (issue #44): the robot renders the synthetic capture itself (no
+  // frame travels), reports its progress, and the run comes home with the robot's provenance under the platform named.
+  void synthetic_pipeline_comes_home_with_provenance() {
+    const QString ws = g_robot->path("pipeline.bsw");
+    const auto r =
+        desk(remote_args({"pipeline", "--synthetic", "--frames", "3", "--detector", "none", "--detect-workers", "1",
+                          "--workspace", ws, "--platform", "Robot eyes", "--id", "pipeline-1"}));
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.err.contains("captured 3 of 3 frames"), r.err.constData());  // the robot's progress, as it came
+    QVERIFY2(r.out.contains("imported 1 pipeline run from robot"), r.out.constData());
+    const bs::Workspace w(ws.toStdString(), bs::Workspace::OpenMode::ReadOnly);
+    const auto stored = w.pipeline_runs();
+    QCOMPARE(stored.size(), std::size_t{1});
+    const bs::PipelineRun& run = stored[0].run;
+    QCOMPARE(run.platform, std::string("Robot eyes"));
+    QCOMPARE(run.detector, std::string("none"));
+    QVERIFY(run.stage(bs::pipeline_stage::kPreprocess));
+    QCOMPARE(run.stage(bs::pipeline_stage::kPreprocess)->n, std::size_t{3});
+    QVERIFY2(run.provenance.note.find("synthetic paper capture") != std::string::npos, run.provenance.note.c_str());
+    std::string host, command, arch;
+    for (const auto& [k, v] : run.provenance.settings) {
+      if (k == "remote host") host = v;
+      if (k == "remote command") command = v;
+      if (k == "remote architecture") arch = v;
+    }
+    QCOMPARE(host, std::string("robot"));
+    QVERIFY2(command.find("pipeline --synthetic --frames 3") != std::string::npos, command.c_str());
+    if (!kRobotArch.isEmpty()) QCOMPARE(arch, kRobotArch.toStdString());
+    verify_nothing_running("pipeline-1");
+  }
+
   void jobs_lists_what_the_robot_keeps() {
     const auto r = desk(remote_args({"jobs"}));
     QCOMPARE(r.code, 0);

@@ -162,6 +162,29 @@ class TestCliPipeline : public QObject {
     }
   }
 
+  // --synthetic: the Pipeline tab's measurement from the command line (what a robot runs for the tab, issue #44),
+  // stored with the settings that made it; no frame file involved.
+  void synthetic_capture_is_measured_and_stored() {
+    const QString ws = dir_.filePath("synthetic.bsw");
+    const Result r = cli({"pipeline", "--synthetic", "--frames", "4", "--detector", "none", "--detect-workers", "1",
+                          "--platform", "Bench", "--workspace", ws});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.out.contains("4 frames processed"), r.out.constData());
+    QVERIFY2(r.err.contains("captured 4 of 4 frames"), r.err.constData());
+    const bs::Workspace w(ws.toStdString(), bs::Workspace::OpenMode::ReadOnly);
+    const auto runs = w.pipeline_runs();
+    QCOMPARE(runs.size(), std::size_t{1});
+    const bs::PipelineRun& run = runs[0].run;
+    QCOMPARE(run.platform, std::string("Bench"));
+    QCOMPARE(run.demosaic, std::string("fused"));
+    QCOMPARE(run.detector, std::string("none"));
+    QCOMPARE(run.frame_width, 1280);
+    QVERIFY(!run.stage(bs::pipeline_stage::kDetect));  // no detector, no detection stage
+    QCOMPARE(run.stage(bs::pipeline_stage::kPreprocess)->n, std::size_t{4});
+    QVERIFY2(run.provenance.note.find("synthetic paper capture") != std::string::npos, run.provenance.note.c_str());
+    QVERIFY2(run.provenance.tool.find("benchscope-cli") != std::string::npos, run.provenance.tool.c_str());
+  }
+
   void errors() {
     struct Case {
       QStringList args;
@@ -203,6 +226,13 @@ class TestCliPipeline : public QObject {
         {{"pipeline", raw_, "--lens", sidecar_, "--detector", dir_.filePath("missing.onnx")},
          1,
          "missing.onnx: no such model file"},
+        {{"pipeline", "--synthetic", raw_}, 2, "give no frame files"},
+        {{"pipeline", "--synthetic", "--lens", sidecar_}, 2, "uses the paper's lens"},
+        {{"pipeline", "--synthetic", "--policy", "drop-oldest"}, 2, "leave out --policy"},
+        {{"pipeline", "--synthetic", "--out", dir_.filePath("x")}, 2, "leave out --out"},
+        {{"pipeline", "--synthetic", "--frames", "0"}, 2, "--frames must be"},
+        {{"pipeline", "--synthetic", "--backend", "tpu"}, 2, "--backend must be"},
+        {{"pipeline", "--synthetic", "--detector", dir_.filePath("missing.onnx")}, 1, "missing.onnx: no such model"},
     };
     for (const Case& c : cases) {
       const Result r = cli(c.args);
