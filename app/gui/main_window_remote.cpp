@@ -7,6 +7,8 @@
 
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
+#include "remote/job_agent.h"
+#include "remote/job_client.h"
 #include "remote/job_import.h"
 #include "remote/remote_run.h"
 #include "remote/robots.h"
@@ -19,7 +21,8 @@ void MainWindow::store_remote_run(RemoteRun* run, const QString& platform) {
   live_.clear();
   const remote::RemoteJob& job = run->job();
   const QString host = QString::fromStdString(run->target().destination);
-  if (job.files.empty()) {
+  // Only the result workspace is imported; the robot's printed output (kept with the job) was shown as it came.
+  if (remote::staged_file(job, remote::kJobResultFile).empty()) {
     refresh_views();
     statusBar()->showMessage(tr("%1: job %2 %3 with nothing to import")
                                  .arg(host, QString::fromStdString(job.id), QString::fromStdString(job.status)),

@@ -200,6 +200,18 @@ int run_job_agent(const AgentJob& job, std::ostream& out, std::ostream& err) {
   for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaction(s, &sa, nullptr);
 
   std::ofstream log(dir / "events.jsonl", std::ios::app);
+  std::ofstream output(dir / kJobOutputFile, std::ios::binary | std::ios::trunc);
+  std::size_t output_bytes = 0;
+  // The robot's disk is the robot's: a command that prints without end is kept up to the limit only.
+  const auto keep_output = [&](std::string_view bytes) {
+    if (output_bytes >= kJobOutputLimit) return;
+    const std::size_t room = kJobOutputLimit - output_bytes;
+    output.write(bytes.data(), static_cast<std::streamsize>(std::min(room, bytes.size())));
+    output_bytes += std::min(room, bytes.size());
+    if (output_bytes >= kJobOutputLimit)
+      output << "\n[the rest of the output was not kept: " << (kJobOutputLimit >> 20) << " MiB kept]\n";
+    output.flush();
+  };
   out.flush();  // nothing of ours left in the stream's buffer for the forked child to write again
   ChildProcess child([&] { return job.body(dir.string()); });
   record["child_pid"] = static_cast<long long>(child.pid());
@@ -261,6 +273,7 @@ int run_job_agent(const AgentJob& job, std::ostream& out, std::ostream& err) {
       kPollMs, [&](std::string_view bytes) { out_lines.feed(bytes, forward); },
       [&](std::string_view bytes) {
         err << bytes << std::flush;
+        keep_output(bytes);
         err_lines.feed(bytes, [&](std::string_view line, bool) {
           if (!line.empty()) last_error = std::string(line);
         });
@@ -285,6 +298,9 @@ int run_job_agent(const AgentJob& job, std::ostream& out, std::ostream& err) {
     ev.end(status, cancelled);
   }
   (void)child_status_in_event;
+  output.close();
+  std::error_code output_ec;
+  if (output_bytes == 0) fs::remove(dir / kJobOutputFile, output_ec);  // nothing printed, nothing to send
   const nlohmann::json files = file_list(dir);
   record["status"] = outcome;
   record["exit_status"] = status;

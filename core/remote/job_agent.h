@@ -7,6 +7,7 @@
 // stdin (the desk gone, the connection dropped) stops it too, and then nothing is left running: the group gets
 // SIGTERM, then SIGKILL. When the child has ended the agent sends the result files as "file" events and a
 // "job_end" event; the folder stays, so `remote HOST fetch ID` can send them again.
+#include <cstddef>
 #include <functional>
 #include <iosfwd>
 #include <string>
@@ -24,6 +25,11 @@ std::string new_job_id();
 // The file a job leaves its results in (a BenchScope workspace) and its record.
 inline constexpr const char* kJobResultFile = "result.bsw";
 inline constexpr const char* kJobRecordFile = "job.json";
+// What the measurement printed (its stderr: the tables of `bench vision`, `bench kernels`, `devices`), kept with the
+// job and sent home with its results, so that a command whose answer is text can be fetched again. Up to
+// kJobOutputLimit bytes; the rest is left out and a last line says so.
+inline constexpr const char* kJobOutputFile = "output.txt";
+inline constexpr std::size_t kJobOutputLimit = 16u << 20;
 
 struct AgentJob {
   std::string id;

@@ -256,6 +256,12 @@ class Session {
 
 }  // namespace
 
+std::string staged_file(const RemoteJob& job, const std::string& name) {
+  for (const std::string& f : job.files)
+    if (std::filesystem::path(f).filename() == name) return f;
+  return {};
+}
+
 std::vector<std::string> job_run_words(const SshTarget& t, const std::string& id,
                                        const std::vector<std::string>& command) {
   std::vector<std::string> words = {t.remote_cli, "job", "run", "--id", id, "--"};

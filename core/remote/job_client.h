@@ -49,6 +49,9 @@ struct RemoteJob {
   std::string remote_command_line;  // what ssh ran on the robot
 };
 
+// The staged file of that name (kJobResultFile, kJobOutputFile) among job.files, or empty.
+std::string staged_file(const RemoteJob& job, const std::string& name);
+
 // The words of the robot's command line for each action.
 std::vector<std::string> job_run_words(const SshTarget& t, const std::string& id,
                                        const std::vector<std::string>& command);

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <ostream>
 
 #include "analysis/stats/units.h"
@@ -136,18 +138,33 @@ int import_and_report(remote::RobotList& robots, const remote::SshTarget& target
   }
   const bool partial = job.status == "cancelled" || job.status == "interrupted";
   if (partial) err << host << ": job " << job.id << " was " << job.status << "; what it completed comes home\n";
-  if (!o.workspace) {
-    err << host << ": " << (job.files.empty() ? "nothing to import" : "results kept on the robot as job " + job.id)
-        << " (give --workspace W.bsw to import them"
-        << (job.files.empty() ? ""
-                              : "; `benchscope-cli remote " + host + " fetch " + job.id + " --workspace W.bsw` later")
-        << ")\n";
-    remember(std::string(partial ? job.status + ", " : "") + "not imported");
+  const std::string results = remote::staged_file(job, remote::kJobResultFile);
+  const std::string output = remote::staged_file(job, remote::kJobOutputFile);
+  // A fetch prints what the robot printed (a run showed it as it came): the answer of a text-only command.
+  if (verb == "fetched" && !output.empty()) {
+    std::ifstream in(output, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    out << "== " << host << ", job " << job.id << " (" << what << "): its output, as the robot printed it\n" << text
+        << (text.ends_with('\n') ? "" : "\n") << "== end of the output of job " << job.id << '\n';
+  }
+  const std::string fetch_again = "`benchscope-cli remote " + host + " fetch " + job.id + "`";
+  if (results.empty()) {
+    const auto rc = find_remote_command(command);
+    const std::string kept = output.empty() ? std::string()
+                                            : "; the robot keeps its output as job " + job.id + ": " + fetch_again +
+                                                  " prints it again";
+    if (rc && rc->workspace)
+      err << host << ": " << what << " completed nothing to import" << kept << '\n';
+    else
+      err << host << ": " << what << " leaves no results to import (it prints its figures only" << kept << ")\n";
+    remember(std::string(partial ? job.status + ", " : "") + "nothing to import");
     return partial ? 1 : 0;
   }
-  if (job.files.empty()) {
-    err << host << ": " << what << " leaves no results to import (it prints its figures only)\n";
-    remember("nothing to import");
+  if (!o.workspace) {
+    err << host << ": results kept on the robot as job " << job.id
+        << " (give --workspace W.bsw to import them; `benchscope-cli remote " << host << " fetch " << job.id
+        << " --workspace W.bsw` later)\n";
+    remember(std::string(partial ? job.status + ", " : "") + "not imported");
     return partial ? 1 : 0;
   }
   const remote::RemoteOrigin origin = remote::origin_of(target, job, info, command);

@@ -406,6 +406,25 @@ class TestCliRemote : public QObject {
     verify_nothing_running("pipeline-1");
   }
 
+  // A command whose answer is text (`devices`, `bench vision`) keeps it with the job: the run shows it as it comes,
+  // and a fetch prints it again, whole, without pretending there was anything to import.
+  void a_text_answer_is_kept_and_fetched_again() {
+    const auto r = desk(remote_args({"devices", "--id", "devices-1"}));
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.err.contains("robot: ") && r.err.contains("leaves no results to import"), r.err.constData());
+    QVERIFY2(r.err.contains("robot fetch devices-1` prints it again"), r.err.constData());
+    const auto f = desk(remote_args({"fetch", "devices-1"}));
+    QVERIFY2(f.code == 0, f.err.constData());
+    QVERIFY2(f.out.contains("== robot, job devices-1 (devices): its output, as the robot printed it"),
+             f.out.constData());
+    QVERIFY2(f.out.contains("== end of the output of job devices-1"), f.out.constData());
+    // The same text the live run showed, line for line (there each line carried the host's name).
+    const QList<QByteArray> lines = f.out.split('\n');
+    QVERIFY(lines.size() > 3);
+    for (const QByteArray& line : lines.mid(1, lines.size() - 3))
+      if (!line.isEmpty()) QVERIFY2(r.err.contains("robot: " + line), line.constData());
+  }
+
   void jobs_lists_what_the_robot_keeps() {
     const auto r = desk(remote_args({"jobs"}));
     QCOMPARE(r.code, 0);
