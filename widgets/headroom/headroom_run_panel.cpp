@@ -246,10 +246,9 @@ void HeadroomRunPanel::start() {
 
 void HeadroomRunPanel::start_remote(headroom::RunConfig config) {
   const QString robot = target_->robot_name();
-  if (target_->checking() || !target_->check() || !target_->check()->ok) {
-    status_->setText(target_->checking() ? tr("%1 is being checked; Run again when it is ready").arg(robot)
-                                         : tr("%1 is not ready: see the message under \"Run on\"").arg(robot));
-    emit failed(status_->text());
+  if (const QString why = target_->not_ready(tr("Run")); !why.isEmpty()) {
+    status_->setText(why);
+    emit failed(why);
     return;
   }
   target_->remember_platform();

@@ -76,6 +76,12 @@ remote::SshTarget RobotTarget::target() const {
   return t;
 }
 
+QString RobotTarget::not_ready(const QString& button) const {
+  if (checking()) return tr("%1 is being checked; %2 again when it is ready").arg(robot_name(), button);
+  if (!check_ || !check_->ok) return tr("%1 is not ready: see the message under \"Run on\"").arg(robot_name());
+  return {};
+}
+
 QString RobotTarget::platform() const {
   const QString p = platform_->text().trimmed();
   if (!p.isEmpty()) return p;

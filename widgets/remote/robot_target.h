@@ -32,6 +32,9 @@ class RobotTarget : public QWidget {
   const std::optional<remote::RobotCheck>& check() const { return check_; }
   bool checking() const { return watcher_ != nullptr; }
   QString platform() const;  // as the user confirmed or renamed it
+  // Why a measurement cannot start on the chosen robot now (being checked, or its check failed), naming the button
+  // to press again ("Run", "Measure"); empty when it can.
+  QString not_ready(const QString& button) const;
   // Stores the platform name with the robot (its next runs get it too).
   void remember_platform();
   // The robots list again (from the file and the SSH config), keeping the choice when it is still there.

@@ -281,10 +281,9 @@ void PipelineMeasurePanel::start() {
 
 void PipelineMeasurePanel::start_remote(const vision::SyntheticPipelineOptions& options) {
   const QString robot = target_->robot_name();
-  if (target_->checking() || !target_->check() || !target_->check()->ok) {
-    status_->setText(target_->checking() ? tr("%1 is being checked; Measure again when it is ready").arg(robot)
-                                         : tr("%1 is not ready: see the message under \"Run on\"").arg(robot));
-    emit failed(status_->text());
+  if (const QString why = target_->not_ready(tr("Measure")); !why.isEmpty()) {
+    status_->setText(why);
+    emit failed(why);
     return;
   }
   std::vector<std::string> args;

@@ -144,15 +144,15 @@ int import_and_report(remote::RobotList& robots, const remote::SshTarget& target
   if (verb == "fetched" && !output.empty()) {
     std::ifstream in(output, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    out << "== " << host << ", job " << job.id << " (" << what << "): its output, as the robot printed it\n" << text
-        << (text.ends_with('\n') ? "" : "\n") << "== end of the output of job " << job.id << '\n';
+    out << "== " << host << ", job " << job.id << " (" << what << "): its output, as the robot printed it\n"
+        << text << (text.ends_with('\n') ? "" : "\n") << "== end of the output of job " << job.id << '\n';
   }
   const std::string fetch_again = "`benchscope-cli remote " + host + " fetch " + job.id + "`";
   if (results.empty()) {
     const auto rc = find_remote_command(command);
-    const std::string kept = output.empty() ? std::string()
-                                            : "; the robot keeps its output as job " + job.id + ": " + fetch_again +
-                                                  " prints it again";
+    const std::string kept =
+        output.empty() ? std::string()
+                       : "; the robot keeps its output as job " + job.id + ": " + fetch_again + " prints it again";
     if (rc && rc->workspace)
       err << host << ": " << what << " completed nothing to import" << kept << '\n';
     else

@@ -4,22 +4,12 @@
 // and an external command as single arguments (no shell on the way), power asked of the robot's own sensors.
 #include <QTest>
 
-#include <algorithm>
-
 #include "headroom/headroom_command.h"
 
-namespace {
+#include "../../support/command_words.h"
 
-std::string after(const std::vector<std::string>& args, const std::string& option) {
-  const auto it = std::find(args.begin(), args.end(), option);
-  return it == args.end() || it + 1 == args.end() ? std::string("(absent)") : *(it + 1);
-}
-
-bool has(const std::vector<std::string>& args, const std::string& word) {
-  return std::find(args.begin(), args.end(), word) != args.end();
-}
-
-}  // namespace
+using bs::test::has_word;
+using bs::test::word_after;
 
 class TestHeadroomCommand : public QObject {
   Q_OBJECT
@@ -35,18 +25,19 @@ class TestHeadroomCommand : public QObject {
     c.platform = "Robot 7";
     const auto a = bs::headroom::headroom_cli_args(c, "pipeline@30fps,dnn", "stress-ng --cpu 2", true);
     QCOMPARE(a.front(), std::string("headroom"));
-    QCOMPARE(after(a, "--rate"), std::string("250"));
-    QCOMPARE(after(a, "--threads"), std::string("2"));
-    QCOMPARE(after(a, "--computation-us"), std::string("12.5"));
-    QCOMPARE(after(a, "--seconds"), std::string("0.5"));
-    QCOMPARE(after(a, "--settle"), std::string("0"));
-    QCOMPARE(after(a, "--priority"), std::string("90"));
-    QCOMPARE(after(a, "--limit-us"), std::string("10000"));
-    QCOMPARE(after(a, "--load"), std::string("pipeline@30fps,dnn"));
-    QCOMPARE(after(a, "--load-command"), std::string("stress-ng --cpu 2"));  // one argument: the robot splits it
-    QCOMPARE(after(a, "--platform"), std::string("Robot 7"));
-    QCOMPARE(after(a, "--power"), std::string("auto"));
-    QVERIFY(!has(a, "--no-rt") && !has(a, "--no-idle") && !has(a, "--deadline-us") && !has(a, "--cpu"));
+    QCOMPARE(word_after(a, "--rate"), std::string("250"));
+    QCOMPARE(word_after(a, "--threads"), std::string("2"));
+    QCOMPARE(word_after(a, "--computation-us"), std::string("12.5"));
+    QCOMPARE(word_after(a, "--seconds"), std::string("0.5"));
+    QCOMPARE(word_after(a, "--settle"), std::string("0"));
+    QCOMPARE(word_after(a, "--priority"), std::string("90"));
+    QCOMPARE(word_after(a, "--limit-us"), std::string("10000"));
+    QCOMPARE(word_after(a, "--load"), std::string("pipeline@30fps,dnn"));
+    QCOMPARE(word_after(a, "--load-command"), std::string("stress-ng --cpu 2"));  // one argument: the robot splits it
+    QCOMPARE(word_after(a, "--platform"), std::string("Robot 7"));
+    QCOMPARE(word_after(a, "--power"), std::string("auto"));
+    QVERIFY(!has_word(a, "--no-rt") && !has_word(a, "--no-idle") && !has_word(a, "--deadline-us") &&
+            !has_word(a, "--cpu"));
   }
 
   void normal_thread_deadline_pinning_and_nothing_optional() {
@@ -56,14 +47,17 @@ class TestHeadroomCommand : public QObject {
     c.probe.cpus = {2, 3};
     c.idle_phase = false;
     const auto a = bs::headroom::headroom_cli_args(c, "", "", false);
-    QVERIFY(has(a, "--no-rt"));
-    QVERIFY(!has(a, "--priority"));  // asked of SCHED_FIFO only
-    QCOMPARE(after(a, "--deadline-us"), std::string("800"));
-    QCOMPARE(after(a, "--cpu"), std::string("2,3"));
-    QVERIFY(has(a, "--no-idle"));
-    QVERIFY(!has(a, "--load") && !has(a, "--load-command") && !has(a, "--platform") && !has(a, "--power"));
+    QVERIFY(has_word(a, "--no-rt"));
+    QVERIFY(!has_word(a, "--priority"));  // asked of SCHED_FIFO only
+    QCOMPARE(word_after(a, "--deadline-us"), std::string("800"));
+    QCOMPARE(word_after(a, "--cpu"), std::string("2,3"));
+    QVERIFY(has_word(a, "--no-idle"));
+    QVERIFY(!has_word(a, "--load") && !has_word(a, "--load-command") && !has_word(a, "--platform") &&
+            !has_word(a, "--power"));
   }
 };
 
 QTEST_APPLESS_MAIN(TestHeadroomCommand)
 #include "test_headroom_command.moc"
+
+#include "../../support/command_words.h"

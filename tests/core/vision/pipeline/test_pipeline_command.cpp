@@ -4,23 +4,14 @@
 // of the robot's own sensors, and a model file on the desk refused (the robot does not have it).
 #include <QTest>
 
-#include <algorithm>
 #include <stdexcept>
 
 #include "vision/pipeline/pipeline_command.h"
 
-namespace {
+#include "../../../support/command_words.h"
 
-std::string after(const std::vector<std::string>& args, const std::string& option) {
-  const auto it = std::find(args.begin(), args.end(), option);
-  return it == args.end() || it + 1 == args.end() ? std::string("(absent)") : *(it + 1);
-}
-
-bool has(const std::vector<std::string>& args, const std::string& word) {
-  return std::find(args.begin(), args.end(), word) != args.end();
-}
-
-}  // namespace
+using bs::test::has_word;
+using bs::test::word_after;
 
 class TestPipelineCommand : public QObject {
   Q_OBJECT
@@ -35,21 +26,21 @@ class TestPipelineCommand : public QObject {
     const auto a = bs::vision::synthetic_pipeline_cli_args(o, "Robot 7", true);
     QCOMPARE(a.at(0), std::string("pipeline"));
     QCOMPARE(a.at(1), std::string("--synthetic"));
-    QCOMPARE(after(a, "--frames"), std::string("40"));
-    QCOMPARE(after(a, "--detect-workers"), std::string("3"));
-    QCOMPARE(after(a, "--detect-scale"), std::string("0.35"));
-    QCOMPARE(after(a, "--backend"), std::string("opencl"));
-    QCOMPARE(after(a, "--detector"), std::string("yolo-n"));
-    QCOMPARE(after(a, "--platform"), std::string("Robot 7"));
-    QCOMPARE(after(a, "--power"), std::string("auto"));
+    QCOMPARE(word_after(a, "--frames"), std::string("40"));
+    QCOMPARE(word_after(a, "--detect-workers"), std::string("3"));
+    QCOMPARE(word_after(a, "--detect-scale"), std::string("0.35"));
+    QCOMPARE(word_after(a, "--backend"), std::string("opencl"));
+    QCOMPARE(word_after(a, "--detector"), std::string("yolo-n"));
+    QCOMPARE(word_after(a, "--platform"), std::string("Robot 7"));
+    QCOMPARE(word_after(a, "--power"), std::string("auto"));
   }
 
   void defaults_and_nothing_optional() {
     const auto a = bs::vision::synthetic_pipeline_cli_args({}, "", false);
-    QCOMPARE(after(a, "--frames"), std::string("20"));
-    QCOMPARE(after(a, "--detect-scale"), std::string("0.5"));
-    QCOMPARE(after(a, "--detector"), std::string("hog"));
-    QVERIFY(!has(a, "--platform") && !has(a, "--power"));
+    QCOMPARE(word_after(a, "--frames"), std::string("20"));
+    QCOMPARE(word_after(a, "--detect-scale"), std::string("0.5"));
+    QCOMPARE(word_after(a, "--detector"), std::string("hog"));
+    QVERIFY(!has_word(a, "--platform") && !has_word(a, "--power"));
   }
 
   void a_model_file_on_the_desk_is_refused() {
@@ -66,3 +57,5 @@ class TestPipelineCommand : public QObject {
 
 QTEST_GUILESS_MAIN(TestPipelineCommand)
 #include "test_pipeline_command.moc"
+
+#include "../../../support/command_words.h"
