@@ -27,11 +27,11 @@ _benchscope_cli() {
     lens) options="--help --board --circle-fov --circle-radius --fix --fov --json --lens --max-bend --max-lines --min-length --min-level --model --out --propose --reject-lines --square" ;;
     library) options="--help --battery --budget --computer --csv --extra-load --figure --json --latex --min-fps --min-runtime" ;;
     peaks) options="--help --json --kind --precision" ;;
-    pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --sysfs-root --workspace" ;;
+    pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --synthetic --sysfs-root --workspace" ;;
     platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --no-stored --require-loop --store --supply-volts --use-log --workspace" ;;
     power) options="--help --from --interval --json --min-phase --min-step --phases --query-gpu --supply-volts --to" ;;
     record-power) options="--help --events --interval-ms --out --quiet --seconds --sensor --sysfs-root --workspace" ;;
-    remote) options="--help --desk-quiet --id --platform --remote-cli --ssh-config --workspace" ;;
+    remote) options="--help --desk-quiet --id --platform --remote-cli --ssh-config --synthetic --workspace" ;;
     report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --no-stored --out --pdf --quiet --require-loop --supply-volts --template" ;;
     roofline) options="--help --json" ;;
     run) options="--help --backend --device --events --isa --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
