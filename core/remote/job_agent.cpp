@@ -153,6 +153,76 @@ std::string new_job_id() {
   return std::string(stamp) + "-" + tail;
 }
 
+void check_input_name(const std::string& name) {
+  const bool ok =
+      !name.empty() && name.size() <= 128 && name.front() != '.' && std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
+               c == '.';
+      });
+  if (!ok)
+    throw std::invalid_argument("'" + name + "' is not an input file name (1 to 128 letters, digits, '-', '_' or '.')");
+}
+
+int put_job_input(const std::string& jobs_dir, const std::string& id, const std::string& name, std::uint64_t size,
+                  int fd, std::ostream& err) {
+  try {
+    check_job_id(id);
+    check_input_name(name);
+  } catch (const std::invalid_argument& e) {
+    err << "benchscope-cli: error: " << e.what() << '\n';
+    return 1;
+  }
+  if (size > kJobInputLimit) {
+    err << "benchscope-cli: error: " << name << ": " << size << " bytes is more than a job input may be ("
+        << (kJobInputLimit >> 30) << " GiB)\n";
+    return 1;
+  }
+  const fs::path dir = fs::path(jobs_dir) / id;
+  std::error_code ec;
+  if (fs::exists(dir / kJobRecordFile, ec)) {
+    err << "benchscope-cli: error: job " << id << " has run already: its inputs cannot change\n";
+    return 1;
+  }
+  fs::create_directories(dir / kJobInputsFolder, ec);
+  if (ec) {
+    err << "benchscope-cli: error: cannot make " << (dir / kJobInputsFolder).string() << ": " << ec.message() << '\n';
+    return 1;
+  }
+  const fs::path target = dir / kJobInputsFolder / name, tmp = target.string() + ".tmp";
+  std::uint64_t got = 0;
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    std::string chunk(64 * 1024, '\0');
+    while (f && got < size) {
+      const ssize_t n =
+          read(fd, chunk.data(), static_cast<std::size_t>(std::min<std::uint64_t>(chunk.size(), size - got)));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      f.write(chunk.data(), n);
+      got += static_cast<std::uint64_t>(n);
+    }
+    f.flush();
+    if (!f) {
+      err << "benchscope-cli: error: cannot write " << target.string() << ": " << std::strerror(errno) << '\n';
+      fs::remove(tmp, ec);
+      return 1;
+    }
+  }
+  if (got < size) {
+    err << "benchscope-cli: error: " << name << ": the desk sent " << got << " of " << size
+        << " bytes (the connection ended early); nothing kept\n";
+    fs::remove(tmp, ec);
+    return 1;
+  }
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    err << "benchscope-cli: error: cannot keep " << target.string() << ": " << ec.message() << '\n';
+    fs::remove(tmp, ec);
+    return 1;
+  }
+  return 0;
+}
+
 int run_job_agent(const AgentJob& job, std::ostream& out, std::ostream& err) {
   EventWriter ev(out);
   // The desk may vanish at any time: a write to its closed pipe must be an error, not the end of the agent
@@ -168,7 +238,9 @@ int run_job_agent(const AgentJob& job, std::ostream& out, std::ostream& err) {
   const fs::path dir = fs::path(job.jobs_dir) / job.id;
   std::error_code ec;
   fs::create_directories(job.jobs_dir, ec);
-  if (ec || !fs::create_directory(dir, ec) || ec) {
+  // A job whose inputs came first (`job put`) has its folder already, with no record in it.
+  if (!ec) fs::create_directory(dir, ec);
+  if (ec || fs::exists(dir / kJobRecordFile)) {
     ev.error("cannot make the job folder " + dir.string() + ": " +
              (ec ? ec.message() : std::string("it exists already (a job id is used once)")));
     ev.write("job_end", {{"id", job.id}, {"status", "failed"}, {"exit_status", 1}, {"files", nlohmann::json::array()}});

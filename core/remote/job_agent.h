@@ -8,6 +8,7 @@
 // SIGTERM, then SIGKILL. When the child has ended the agent sends the result files as "file" events and a
 // "job_end" event; the folder stays, so `remote HOST fetch ID` can send them again.
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <iosfwd>
 #include <string>
@@ -40,6 +41,19 @@ struct AgentJob {
   std::function<int(const std::string& job_dir)> body;
   int stdin_fd = 0;  // where "cancel" comes from
 };
+
+// A job's input files (issue #44: the frames, lens and model files a measurement on the desk names) are sent
+// before it runs, one `job put` each, into <jobs_dir>/<id>/inputs/. kJobInputLimit bounds each file.
+inline constexpr const char* kJobInputsFolder = "inputs";
+inline constexpr std::uint64_t kJobInputLimit = std::uint64_t{4} << 30;
+// Throws std::invalid_argument unless `name` is a plain file name (1 to 128 letters, digits, '-', '_', '.'; not
+// leading '.').
+void check_input_name(const std::string& name);
+// Receives input `name` of job `id`: exactly `size` bytes read from `fd` (the desk's, through ssh), written under a
+// temporary name and renamed when whole. Refused for a job that has run, a size over the limit, a stream that ends
+// early; nothing half-written stays. Returns 0, or 1 after a sentence on `err` naming the file and the reason.
+int put_job_input(const std::string& jobs_dir, const std::string& id, const std::string& name, std::uint64_t size,
+                  int fd, std::ostream& err);
 
 // Runs the job and writes its events to `out` (the agent's stdout); the child's stderr goes to `err`. Returns 0
 // when the job ran (whatever its outcome: job_end says), 1 when it could not start (an event says why).

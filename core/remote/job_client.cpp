@@ -294,6 +294,49 @@ std::vector<nlohmann::json> list_remote_jobs(const SshTarget& t, const JobContro
   return jobs;
 }
 
+void send_job_input(const SshTarget& t, const std::string& id, const std::string& name, const std::string& local_path,
+                    const JobControl& control) {
+  std::ifstream in(local_path, std::ios::binary);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(local_path, ec);
+  if (!in || ec) throw RemoteError(local_path + ": cannot read it to send to " + t.destination);
+  const std::string line = shell_command({t.remote_cli, "job", "put", "--id", id, "--name", name, "--size",
+                                          std::to_string(static_cast<unsigned long long>(size))});
+  std::optional<ChildProcess> ssh;
+  try {
+    ssh.emplace(ssh_argv(t, line));
+  } catch (const std::exception& e) {
+    throw RemoteError(t.destination + ": cannot start ssh: " + e.what() +
+                      " (BenchScope uses the system's OpenSSH client: apt install openssh-client)");
+  }
+  std::string err;
+  const auto keep_err = [&](std::string_view b) {
+    if (err.size() < kKeptStderr) err.append(b);
+  };
+  std::string chunk(64 * 1024, '\0');
+  bool sent = true;
+  while (in && sent) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    if (in.gcount() > 0) sent = ssh->write_stdin(std::string_view(chunk.data(), static_cast<std::size_t>(in.gcount())));
+    ssh->pump(
+        0, [](std::string_view) {}, keep_err);  // ssh's own words (a refused login) while the bytes go
+    if (control.aborted() || control.cancelled()) {
+      ssh->kill_group(SIGTERM);
+      sent = false;
+    }
+  }
+  ssh->close_stdin();
+  while (ssh->pump(
+      kPollMs, [](std::string_view) {}, keep_err)) {
+  }
+  const int status = ssh->wait();
+  if (status == 0 && sent) return;
+  if (control.aborted() || control.cancelled())
+    throw RemoteError(t.destination + ": stopped while sending " + local_path + "; nothing ran");
+  if (status == 255) throw RemoteError(describe_ssh_failure(t.destination, err));
+  throw RemoteError(t.destination + ": could not take " + local_path + " (" + last_ssh_line(err) + ")");
+}
+
 RemoteOutput run_remote_command(const SshTarget& t, const std::string& command_line, const JobControl& control) {
   std::optional<ChildProcess> ssh;
   try {

@@ -49,6 +49,11 @@ struct RemoteJob {
   std::string remote_command_line;  // what ssh ran on the robot
 };
 
+// Sends the desk's file `local_path` to the robot as input `name` of job `id` (`job put`, before the job runs;
+// core/remote/job_agent.h). Throws RemoteError naming the host, the file and what went wrong.
+void send_job_input(const SshTarget& t, const std::string& id, const std::string& name, const std::string& local_path,
+                    const JobControl& control);
+
 // The staged file of that name (kJobResultFile, kJobOutputFile) among job.files, or empty.
 std::string staged_file(const RemoteJob& job, const std::string& name);
 

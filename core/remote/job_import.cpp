@@ -44,9 +44,12 @@ RemoteOrigin origin_of(const SshTarget& target, const RemoteJob& job, const Robo
 }
 
 std::vector<std::pair<std::string, std::string>> origin_settings(const RemoteOrigin& o) {
-  return {{"remote host", o.destination}, {"remote host name", o.hostname},   {"remote architecture", o.arch},
-          {"remote devices", o.devices},  {"remote command", o.command_line}, {"remote BenchScope", o.cli_version},
-          {"remote job", o.job_id}};
+  std::vector<std::pair<std::string, std::string>> settings = {
+      {"remote host", o.destination}, {"remote host name", o.hostname},   {"remote architecture", o.arch},
+      {"remote devices", o.devices},  {"remote command", o.command_line}, {"remote BenchScope", o.cli_version},
+      {"remote job", o.job_id}};
+  if (!o.desk_files.empty()) settings.emplace_back("remote inputs from the desk", o.desk_files);
+  return settings;
 }
 
 std::string job_batch_hash(const RemoteOrigin& o, std::size_t index, const std::string& remote_hash) {

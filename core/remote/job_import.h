@@ -28,6 +28,8 @@ struct RemoteOrigin {
   std::string command_line;  // what ran there: "benchscope-cli run flops --workers 1,2,4 ..."
   std::string cli_version;   // the robot's BenchScope
   std::string job_id;
+  // The desk's files carried to the robot for the job, "desk path -> robot path; ..." (empty: none).
+  std::string desk_files;
 };
 
 // Where a job's results came from: the robot as named (`target`), what the job's record and the check say about

@@ -109,13 +109,22 @@ int job_command(const std::vector<std::string>& raw, std::ostream& out, std::ost
   const auto dashes = std::find(raw.begin(), raw.end(), std::string("--"));
   const std::vector<std::string> own(raw.begin(), dashes);
   std::vector<std::string> command(dashes == raw.end() ? dashes : dashes + 1, raw.end());
-  const ParsedArgs args = parse_args(own, {}, {"--id", "--jobs-dir", "--sysfs-root", "--isa"});
-  if (args.positional.size() != 1) throw UsageError("expected job run, job fetch, job list or job probe");
+  const ParsedArgs args = parse_args(own, {}, {"--id", "--jobs-dir", "--sysfs-root", "--isa", "--name", "--size"});
+  if (args.positional.size() != 1) throw UsageError("expected job run, job put, job fetch, job list or job probe");
   const std::string& what = args.positional[0];
   const std::string jobs_dir = args.value("--jobs-dir").value_or(remote::default_jobs_dir());
   if (what == "probe") return probe(args, out);
   if (what == "list") return remote::list_jobs_agent(jobs_dir, out);
   if (what == "fetch") return remote::fetch_job_agent(jobs_dir, args.value("--id").value_or(""), out);
+  if (what == "put") {
+    const auto id = args.value("--id");
+    const auto name = args.value("--name");
+    if (!id || !name || !args.value("--size")) throw UsageError("job put needs --id ID --name NAME --size BYTES");
+    const double size = args.number("--size", 0);
+    if (size < 0 || size != static_cast<double>(static_cast<std::uint64_t>(size)))
+      throw UsageError("--size must be a whole number of bytes");
+    return remote::put_job_input(jobs_dir, *id, *name, static_cast<std::uint64_t>(size), 0, err);
+  }
   if (what != "run") throw UsageError("unknown job action '" + what + "'");
   const auto id = args.value("--id");
   if (!id) throw UsageError("job run needs --id ID");
@@ -135,6 +144,7 @@ const CommandRegistrar registrar({
     "job",
     "the robot's side of `remote`: run a measurement as a job and stream its events (started over SSH)",
     "usage: benchscope-cli job run --id ID [--jobs-dir DIR] -- COMMAND ARGS...\n"
+    "       benchscope-cli job put --id ID --name NAME --size BYTES [--jobs-dir DIR] < FILE\n"
     "       benchscope-cli job fetch [--id ID] [--jobs-dir DIR]\n"
     "       benchscope-cli job list [--jobs-dir DIR]\n"
     "       benchscope-cli job probe [--sysfs-root DIR] [--isa avx512|avx2|sse4|generic]\n"
@@ -144,7 +154,8 @@ const CommandRegistrar registrar({
     "  (DIR: --jobs-dir, default $XDG_CACHE_HOME/benchscope/remote or ~/.cache/benchscope/remote), then sends\n"
     "  them as file events. A line 'cancel' on stdin stops it as Ctrl+C does (the completed part is sent); the end\n"
     "  of stdin (the connection dropped) stops it and everything it started. fetch: sends a finished job again\n"
-    "  (the newest without --id).\n"
+    "  (the newest without --id). put: receives one input file of job ID before it runs (the desk's frames,\n"
+    "  lens or model: BYTES bytes on stdin into DIR/ID/inputs/NAME; nothing half-written is kept).\n"
     "  list: one job event per job. probe: one robot event (host, architecture, version, backends, sensors).",
     job_command,
 });

@@ -17,6 +17,7 @@
 #include "remote/job_client.h"
 #include "remote/job_import.h"
 #include "remote/remote_commands.h"
+#include "remote/remote_inputs.h"
 #include "store/workspace.h"
 #include "util/host_clock.h"
 
@@ -118,7 +119,8 @@ struct Printer {
 
 int import_and_report(remote::RobotList& robots, const remote::SshTarget& target, const remote::RemoteJob& job,
                       const remote::RobotInfo& info, const std::vector<std::string>& command, const DeskOptions& o,
-                      const std::string& verb, std::ostream& out, std::ostream& err) {
+                      const std::string& verb, std::ostream& out, std::ostream& err,
+                      const std::string& desk_files = {}) {
   const std::string host = target.destination;
   const std::string what = join(command);
   remote::RobotRun record{utc_timestamp(), job.id, what, {}};
@@ -167,7 +169,8 @@ int import_and_report(remote::RobotList& robots, const remote::SshTarget& target
     remember(std::string(partial ? job.status + ", " : "") + "not imported");
     return partial ? 1 : 0;
   }
-  const remote::RemoteOrigin origin = remote::origin_of(target, job, info, command);
+  remote::RemoteOrigin origin = remote::origin_of(target, job, info, command);
+  origin.desk_files = desk_files;
   const remote::Robot* stored = robots.find(host);
   const std::string platform = o.platform ? *o.platform : stored && !stored->platform.empty() ? stored->platform : "";
   try {
@@ -308,6 +311,18 @@ int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const
   const remote::RobotCheck check =
       check_and_print(robots, target, out, err, false, option_value(command, "--sysfs-root"));
   if (!check.ok) return 1;
+  // The desk's frames, lens and model files the command names go first, into the job's inputs folder there.
+  const CarriedCommand carried =
+      carry_desk_files(command, check.info.jobs_dir + "/" + id + "/" + remote::kJobInputsFolder);
+  for (const CarriedFile& f : carried.files) {
+    if (!o.quiet) err << target.destination << ": sending " << f.local_path << '\n';
+    try {
+      remote::send_job_input(target, id, f.name, f.local_path, {&interrupt_token(), nullptr});
+    } catch (const remote::RemoteError& e) {
+      err << "benchscope-cli: error: " << e.what() << "; nothing ran\n";
+      return 1;
+    }
+  }
   Staging staging;
   Printer printer{target.destination, out, err, o.quiet};
   remote::JobHandlers handlers;
@@ -317,7 +332,7 @@ int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const
   if (!o.quiet) err << target.destination << ": job " << id << ": " << join(command) << '\n';
   remote::RemoteJob job;
   try {
-    job = remote::run_remote_job(target, id, command, staging.path(), handlers, control);
+    job = remote::run_remote_job(target, id, carried.command, staging.path(), handlers, control);
   } catch (const remote::RemoteError& e) {
     printer.close_progress();
     err << "benchscope-cli: error: " << e.what() << '\n';
@@ -330,7 +345,11 @@ int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const
   printer.close_progress();
   if (printer.power_readings > 0 && !o.quiet)
     err << target.destination << ": " << printer.power_readings << " power readings streamed\n";
-  return import_and_report(robots, target, job, check.info, command, o, "imported", out, err);
+  // What ran there names the robot's copies; the provenance also says which desk files they are.
+  std::string desk_files;
+  for (const CarriedFile& f : carried.files)
+    desk_files += (desk_files.empty() ? "" : "; ") + f.local_path + " -> " + f.name;
+  return import_and_report(robots, target, job, check.info, carried.command, o, "imported", out, err, desk_files);
 }
 
 int fetch_remote(remote::RobotList& robots, const remote::SshTarget& target, const std::string& id,

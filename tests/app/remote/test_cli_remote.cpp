@@ -6,6 +6,7 @@
 // it was; and after each, nothing of the job is left running on the robot. Skipped (CTest skip) without sshd.
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTest>
 
@@ -404,6 +405,61 @@ class TestCliRemote : public QObject {
     QVERIFY2(command.find("pipeline --synthetic --frames 3") != std::string::npos, command.c_str());
     if (!kRobotArch.isEmpty()) QCOMPARE(arch, kRobotArch.toStdString());
     verify_nothing_running("pipeline-1");
+  }
+
+  // Frame files at the desk (issue #44): `remote HOST pipeline FRAME --lens LENS` carries the frame, its sidecar and
+  // the lens into the job's inputs folder on the robot before the job runs; the robot's command names them there,
+  // and the run comes home. The robot being this machine, the test checks that the robot read its own copies.
+  void desk_frames_are_carried_to_the_robot() {
+    const QString frames = g_robot->path("desk-frames");
+    QVERIFY(QDir().mkpath(frames));
+    const auto made = bs::test::cli({"synth-frame", "--out", frames + "/capture", "--size", "320x256"});
+    QVERIFY2(made.code == 0, made.err.constData());
+    const QString ws = g_robot->path("carried.bsw");
+    const auto r = desk(remote_args({"pipeline", frames + "/capture.raw", "--lens", frames + "/capture.json",
+                                     "--frames", "3", "--detector", "none", "--workspace", ws, "--id", "carried-1"}));
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY2(r.err.contains("robot: sending " + (frames + "/capture.raw").toUtf8()), r.err.constData());
+    QVERIFY2(r.out.contains("imported 1 pipeline run from robot"), r.out.constData());
+    const QString inputs = g_robot->jobs_dir() + "/carried-1/inputs";
+    // The sidecar named again as --lens goes once.
+    QCOMPARE(QDir(inputs).entryList(QDir::Files), QStringList({"1-capture.json", "1-capture.raw"}));
+    QCOMPARE(QFileInfo(inputs + "/1-capture.raw").size(), QFileInfo(frames + "/capture.raw").size());
+    const bs::Workspace w(ws.toStdString(), bs::Workspace::OpenMode::ReadOnly);
+    const auto stored = w.pipeline_runs();
+    QCOMPARE(stored.size(), std::size_t{1});
+    QCOMPARE(stored[0].run.frame_width, 320);
+    std::string command, carried;
+    for (const auto& [k, v] : stored[0].run.provenance.settings) {
+      if (k == "remote command") command = v;
+      if (k == "remote inputs from the desk") carried = v;
+    }
+    QVERIFY2(command.find("/carried-1/inputs/1-capture.raw") != std::string::npos, command.c_str());
+    QVERIFY2(carried.find((frames + "/capture.raw -> 1-capture.raw").toStdString()) != std::string::npos,
+             carried.c_str());
+  }
+
+  // The robot's side of carrying a file refuses what it must and keeps nothing half-written.
+  void a_job_input_is_whole_or_absent() {
+    const QString jobs = g_robot->path("put-jobs");
+    const auto put = [&](const QStringList& args, const QByteArray& bytes) {
+      QProcess p;
+      p.start(kCli, QStringList{"job", "put", "--jobs-dir", jobs} + args);
+      p.write(bytes);
+      p.closeWriteChannel();
+      p.waitForFinished(60000);
+      return bs::test::CliResult{p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+    };
+    auto r = put({"--id", "put-1", "--name", "../evil", "--size", "3"}, "abc");
+    QVERIFY2(r.code == 1 && r.err.contains("is not an input file name"), r.err.constData());
+    r = put({"--id", "put-1", "--name", "frame.raw", "--size", "10"}, "abc");
+    QVERIFY2(r.code == 1 && r.err.contains("the desk sent 3 of 10 bytes"), r.err.constData());
+    QVERIFY(QDir(jobs + "/put-1/inputs").entryList(QDir::Files).isEmpty());
+    r = put({"--id", "put-1", "--name", "frame.raw", "--size", "3"}, "abc");
+    QVERIFY2(r.code == 0, r.err.constData());
+    QFile kept(jobs + "/put-1/inputs/frame.raw");
+    QVERIFY(kept.open(QIODevice::ReadOnly));
+    QCOMPARE(kept.readAll(), QByteArray("abc"));
   }
 
   // A command whose answer is text (`devices`, `bench vision`) keeps it with the job: the run shows it as it comes,
