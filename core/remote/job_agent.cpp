@@ -154,13 +154,23 @@ std::string new_job_id() {
 }
 
 void check_input_name(const std::string& name) {
-  const bool ok =
-      !name.empty() && name.size() <= 128 && name.front() != '.' && std::all_of(name.begin(), name.end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
-               c == '.';
-      });
+  // "3/capture.raw": a numbered folder keeps the desk file's own name (a frame and its sidecar side by side, a model
+  // under the name it is stored by).
+  const auto slash = name.find('/');
+  const std::string folder = slash == std::string::npos ? std::string() : name.substr(0, slash);
+  const std::string file = slash == std::string::npos ? name : name.substr(slash + 1);
+  const bool folder_ok = slash == std::string::npos ||
+                         (!folder.empty() && folder.size() <= 9 &&
+                          std::all_of(folder.begin(), folder.end(), [](char c) { return c >= '0' && c <= '9'; }));
+  const bool ok = folder_ok && !file.empty() && file.size() <= 128 && file.front() != '.' &&
+                  std::all_of(file.begin(), file.end(), [](char c) {
+                    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
+                           c == '_' || c == '.';
+                  });
   if (!ok)
-    throw std::invalid_argument("'" + name + "' is not an input file name (1 to 128 letters, digits, '-', '_' or '.')");
+    throw std::invalid_argument("'" + name +
+                                "' is not an input file name (1 to 128 letters, digits, '-', '_' or '.', after an "
+                                "optional numbered folder: 3/capture.raw)");
 }
 
 int put_job_input(const std::string& jobs_dir, const std::string& id, const std::string& name, std::uint64_t size,
@@ -183,12 +193,12 @@ int put_job_input(const std::string& jobs_dir, const std::string& id, const std:
     err << "benchscope-cli: error: job " << id << " has run already: its inputs cannot change\n";
     return 1;
   }
-  fs::create_directories(dir / kJobInputsFolder, ec);
+  const fs::path target = dir / kJobInputsFolder / name, tmp = target.string() + ".tmp";
+  fs::create_directories(target.parent_path(), ec);
   if (ec) {
-    err << "benchscope-cli: error: cannot make " << (dir / kJobInputsFolder).string() << ": " << ec.message() << '\n';
+    err << "benchscope-cli: error: cannot make " << target.parent_path().string() << ": " << ec.message() << '\n';
     return 1;
   }
-  const fs::path target = dir / kJobInputsFolder / name, tmp = target.string() + ".tmp";
   std::uint64_t got = 0;
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);

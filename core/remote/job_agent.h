@@ -47,7 +47,7 @@ struct AgentJob {
 inline constexpr const char* kJobInputsFolder = "inputs";
 inline constexpr std::uint64_t kJobInputLimit = std::uint64_t{4} << 30;
 // Throws std::invalid_argument unless `name` is a plain file name (1 to 128 letters, digits, '-', '_', '.'; not
-// leading '.').
+// leading '.'), optionally in one numbered folder ("3/capture.raw").
 void check_input_name(const std::string& name);
 // Receives input `name` of job `id`: exactly `size` bytes read from `fd` (the desk's, through ssh), written under a
 // temporary name and renamed when whole. Refused for a job that has run, a size over the limit, a stream that ends

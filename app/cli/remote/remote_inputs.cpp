@@ -51,8 +51,8 @@ class Carrier {
     numbers_[key] = number;
     return send(path, key, number);
   }
-  // A raw frame and its sidecar (capture.raw + capture.json) under one number, so that the robot finds the sidecar
-  // by the frame's stem, as here. A sidecar sent already under another number (as a --lens file) goes again.
+  // A raw frame and its sidecar (capture.raw + capture.json) in one numbered folder, so that the robot finds the
+  // sidecar by the frame's stem, as here. A sidecar sent already into another folder (as a --lens file) goes again.
   std::string carry_frame(const std::string& path) {
     const std::string there = carry(path);
     if (const auto side = find_raw_sidecar(path)) {
@@ -72,7 +72,7 @@ class Carrier {
 
  private:
   std::string send(const std::string& path, const std::string& key, int number) {
-    const std::string name = std::to_string(number) + "-" + plain_name(path);
+    const std::string name = std::to_string(number) + "/" + plain_name(path);
     names_[key] = name;
     files_.push_back({path, name});
     return robot_dir_ + "/" + name;
@@ -106,9 +106,19 @@ std::string carry_value(Carrier& carrier, const std::string& option, const std::
 
 CarriedCommand carry_desk_files(const std::vector<std::string>& command, const std::string& robot_inputs_dir) {
   CarriedCommand out{command, {}};
-  if (command.empty() || command[0] != "pipeline") return out;
   Carrier carrier(robot_inputs_dir);
   std::vector<std::string>& words = out.command;
+  // bench dnn --model MODEL[,CONFIG]: the network's files.
+  if (words.size() >= 2 && words[0] == "bench" && words[1] == "dnn") {
+    for (std::size_t i = 2; i < words.size(); ++i) {
+      if (words[i] == "--") break;
+      if (words[i] == "--model" && i + 1 < words.size()) words[i + 1] = carry_model(carrier, words[i + 1]);
+      if (words[i].starts_with("--model=")) words[i] = "--model=" + carry_model(carrier, words[i].substr(8));
+    }
+    out.files = carrier.files();
+    return out;
+  }
+  if (command.empty() || command[0] != "pipeline") return out;
   for (std::size_t i = 1; i < words.size(); ++i) {
     std::string& w = words[i];
     if (w == "--") break;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The desk's files that a measurement run on a robot names (issue #44): `pipeline`'s frame files (a raw frame with
-// its JSON sidecar), its --lens file and its --detector model files. Each one that exists at the desk is carried to
-// the robot before the job runs (`job put`, into the job's inputs folder there), and its word in the command is
-// replaced by where it lands. A path that exists only on the robot is left as it is: it is the robot's file.
+// its JSON sidecar), its --lens file and its --detector model files, and `bench dnn`'s --model files. Each one that
+// exists at the desk is carried to the robot before the job runs (`job put`, into the job's inputs folder there), and
+// its word in the command is replaced by where it lands. A path that exists only on the robot is left as it is: it is
+// the robot's file.
 #include <string>
 #include <vector>
 
@@ -11,7 +12,8 @@ namespace bs::cli {
 
 struct CarriedFile {
   std::string local_path;  // as the desk named it
-  std::string name;        // its plain file name on the robot ("2-capture.raw"), unique within the job
+  std::string name;        // where it goes in the job's inputs on the robot: "2/capture.raw" (its own name, in a
+                           // numbered folder), unique within the job
 };
 
 struct CarriedCommand {
@@ -19,8 +21,8 @@ struct CarriedCommand {
   std::vector<CarriedFile> files;    // in the order they are sent
 };
 
-// `robot_inputs_dir`: the job's inputs folder on the robot (its jobs folder / ID / inputs). Commands other than
-// `pipeline` come back unchanged.
+// `robot_inputs_dir`: the job's inputs folder on the robot (its jobs folder / ID / inputs). Other commands come back
+// unchanged.
 CarriedCommand carry_desk_files(const std::vector<std::string>& command, const std::string& robot_inputs_dir);
 
 }  // namespace bs::cli

@@ -423,8 +423,9 @@ class TestCliRemote : public QObject {
     QVERIFY2(r.out.contains("imported 1 pipeline run from robot"), r.out.constData());
     const QString inputs = g_robot->jobs_dir() + "/carried-1/inputs";
     // The sidecar named again as --lens goes once.
-    QCOMPARE(QDir(inputs).entryList(QDir::Files), QStringList({"1-capture.json", "1-capture.raw"}));
-    QCOMPARE(QFileInfo(inputs + "/1-capture.raw").size(), QFileInfo(frames + "/capture.raw").size());
+    QCOMPARE(QDir(inputs + "/1").entryList(QDir::Files), QStringList({"capture.json", "capture.raw"}));
+    QCOMPARE(QDir(inputs).entryList(QDir::Dirs | QDir::NoDotAndDotDot), QStringList({"1"}));
+    QCOMPARE(QFileInfo(inputs + "/1/capture.raw").size(), QFileInfo(frames + "/capture.raw").size());
     const bs::Workspace w(ws.toStdString(), bs::Workspace::OpenMode::ReadOnly);
     const auto stored = w.pipeline_runs();
     QCOMPARE(stored.size(), std::size_t{1});
@@ -434,9 +435,24 @@ class TestCliRemote : public QObject {
       if (k == "remote command") command = v;
       if (k == "remote inputs from the desk") carried = v;
     }
-    QVERIFY2(command.find("/carried-1/inputs/1-capture.raw") != std::string::npos, command.c_str());
-    QVERIFY2(carried.find((frames + "/capture.raw -> 1-capture.raw").toStdString()) != std::string::npos,
+    QVERIFY2(command.find("/carried-1/inputs/1/capture.raw") != std::string::npos, command.c_str());
+    QVERIFY2(carried.find((frames + "/capture.raw -> 1/capture.raw").toStdString()) != std::string::npos,
              carried.c_str());
+  }
+
+  // bench dnn --model with the desk's network file: carried, timed on the robot, the same file by its hash.
+  void a_desk_model_is_carried_for_bench_dnn() {
+    const QString model = BENCHSCOPE_TEST_DATA_DIR "/dnn/yolov8-known.onnx";
+    const QString ws = g_robot->path("model.bsw");
+    const auto r = desk(remote_args(
+        {"bench", "dnn", "--model", model, "--runs", "1", "--backend", "cpu", "--workspace", ws, "--id", "model-1"}));
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY(QFile::exists(g_robot->jobs_dir() + "/model-1/inputs/1/yolov8-known.onnx"));
+    const bs::Workspace w(ws.toStdString(), bs::Workspace::OpenMode::ReadOnly);
+    const auto runs = w.dnn_runs();
+    QCOMPARE(runs.size(), std::size_t{1});
+    QCOMPARE(runs[0].run.model_hash, bs::file_content_hash(model.toStdString()));
+    QCOMPARE(runs[0].run.model, std::string("yolov8-known.onnx"));  // stored under its own name
   }
 
   // The robot's side of carrying a file refuses what it must and keeps nothing half-written.
@@ -450,14 +466,16 @@ class TestCliRemote : public QObject {
       p.waitForFinished(60000);
       return bs::test::CliResult{p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
     };
-    auto r = put({"--id", "put-1", "--name", "../evil", "--size", "3"}, "abc");
-    QVERIFY2(r.code == 1 && r.err.contains("is not an input file name"), r.err.constData());
-    r = put({"--id", "put-1", "--name", "frame.raw", "--size", "10"}, "abc");
+    for (const char* bad : {"../evil", "1/../evil", "a/b.raw", ".hidden", "1/2/x"}) {
+      const auto refused = put({"--id", "put-1", "--name", bad, "--size", "3"}, "abc");
+      QVERIFY2(refused.code == 1 && refused.err.contains("is not an input file name"), bad);
+    }
+    auto r = put({"--id", "put-1", "--name", "frame.raw", "--size", "10"}, "abc");
     QVERIFY2(r.code == 1 && r.err.contains("the desk sent 3 of 10 bytes"), r.err.constData());
     QVERIFY(QDir(jobs + "/put-1/inputs").entryList(QDir::Files).isEmpty());
-    r = put({"--id", "put-1", "--name", "frame.raw", "--size", "3"}, "abc");
+    r = put({"--id", "put-1", "--name", "2/frame.raw", "--size", "3"}, "abc");
     QVERIFY2(r.code == 0, r.err.constData());
-    QFile kept(jobs + "/put-1/inputs/frame.raw");
+    QFile kept(jobs + "/put-1/inputs/2/frame.raw");
     QVERIFY(kept.open(QIODevice::ReadOnly));
     QCOMPARE(kept.readAll(), QByteArray("abc"));
   }
