@@ -250,7 +250,8 @@ int run_job_agent(const AgentJob& job, std::ostream& out, std::ostream& err) {
   fs::create_directories(job.jobs_dir, ec);
   // A job whose inputs came first (`job put`) has its folder already, with no record in it.
   if (!ec) fs::create_directory(dir, ec);
-  if (ec || fs::exists(dir / kJobRecordFile)) {
+  std::error_code exists_ec;
+  if (ec || fs::exists(dir / kJobRecordFile, exists_ec)) {
     ev.error("cannot make the job folder " + dir.string() + ": " +
              (ec ? ec.message() : std::string("it exists already (a job id is used once)")));
     ev.write("job_end", {{"id", job.id}, {"status", "failed"}, {"exit_status", 1}, {"files", nlohmann::json::array()}});
