@@ -23,7 +23,7 @@ _benchscope_cli() {
     headroom-results) options="--help --json --kind --platform" ;;
     help) COMPREPLY=($(compgen -W "$commands" -- "$cur")); return ;;
     import) options="--help --copy-frames --keep-going --platform --quiet --raw-geometry" ;;
-    job) options="--help --id --isa --jobs-dir --sysfs-root" ;;
+    job) options="--help --id --isa --jobs-dir --name --size --sysfs-root" ;;
     lens) options="--help --board --circle-fov --circle-radius --fix --fov --json --lens --max-bend --max-lines --min-length --min-level --model --out --propose --reject-lines --square" ;;
     library) options="--help --battery --budget --computer --csv --extra-load --figure --json --latex --min-fps --min-runtime" ;;
     peaks) options="--help --json --kind --precision" ;;
