@@ -37,18 +37,24 @@ bool safe_file_name(const std::string& name) {
 }
 
 // One ssh session carrying an event stream, from start to the end of ssh.
+// Starts `ssh` to run `command_line` on the robot; a missing or unstartable ssh is a RemoteError saying what to
+// install.
+void start_ssh(std::optional<ChildProcess>& ssh, const SshTarget& t, const std::string& command_line) {
+  try {
+    ssh.emplace(ssh_argv(t, command_line));
+  } catch (const std::exception& e) {
+    throw RemoteError(t.destination + ": cannot start ssh: " + e.what() +
+                      " (BenchScope uses the system's OpenSSH client: apt install openssh-client)");
+  }
+}
+
 class Session {
  public:
   Session(const SshTarget& t, const std::vector<std::string>& words, const std::string& staging,
           const JobHandlers& handlers, const JobControl& control)
       : target_(t), staging_(staging), handlers_(handlers), control_(control), lines_(kMaxEventLineBytes) {
     command_line_ = shell_command(words);
-    try {
-      ssh_.emplace(ssh_argv(t, command_line_));
-    } catch (const std::exception& e) {
-      throw RemoteError(t.destination + ": cannot start ssh: " + e.what() +
-                        " (BenchScope uses the system's OpenSSH client: apt install openssh-client)");
-    }
+    start_ssh(ssh_, t, command_line_);
   }
 
   RemoteJob run(bool expect_job_end) {
@@ -303,12 +309,7 @@ void send_job_input(const SshTarget& t, const std::string& id, const std::string
   const std::string line = shell_command({t.remote_cli, "job", "put", "--id", id, "--name", name, "--size",
                                           std::to_string(static_cast<unsigned long long>(size))});
   std::optional<ChildProcess> ssh;
-  try {
-    ssh.emplace(ssh_argv(t, line));
-  } catch (const std::exception& e) {
-    throw RemoteError(t.destination + ": cannot start ssh: " + e.what() +
-                      " (BenchScope uses the system's OpenSSH client: apt install openssh-client)");
-  }
+  start_ssh(ssh, t, line);
   std::string err;
   const auto keep_err = [&](std::string_view b) {
     if (err.size() < kKeptStderr) err.append(b);
@@ -339,12 +340,7 @@ void send_job_input(const SshTarget& t, const std::string& id, const std::string
 
 RemoteOutput run_remote_command(const SshTarget& t, const std::string& command_line, const JobControl& control) {
   std::optional<ChildProcess> ssh;
-  try {
-    ssh.emplace(ssh_argv(t, command_line));
-  } catch (const std::exception& e) {
-    throw RemoteError(t.destination + ": cannot start ssh: " + e.what() +
-                      " (BenchScope uses the system's OpenSSH client: apt install openssh-client)");
-  }
+  start_ssh(ssh, t, command_line);
   RemoteOutput r;
   ssh->close_stdin();
   while (ssh->pump(

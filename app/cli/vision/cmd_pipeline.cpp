@@ -98,12 +98,9 @@ Demosaic demosaic_option(const std::string& s) {
   throw UsageError("--demosaic must be fused, bilinear, mhc or opencv (got '" + s + "')");
 }
 
-Detector detector_option(const std::string& s, double scale) {
-  if (s == "none") return {};
-  if (s == "hog") return hog_people_detector(scale);
-  if (const auto arch = architecture_from_string(s)) return scaled_detector(architecture_timing_detector(*arch), scale);
-  // MODEL[,CONFIG]: a detection network cv::dnn reads (ONNX, Caffe .caffemodel + .prototxt, TensorFlow .pb +
-  // .pbtxt, Darknet .weights + .cfg) with SSD, YOLOv5 or YOLOv8 outputs.
+// --detector MODEL[,CONFIG]: a detection network cv::dnn reads (ONNX, Caffe .caffemodel + .prototxt, TensorFlow
+// .pb + .pbtxt, Darknet .weights + .cfg) with SSD, YOLOv5 or YOLOv8 outputs; its files named before any frame runs.
+DnnOptions model_files(const std::string& s) {
   DnnOptions o;
   const auto comma = s.find(',');
   o.model = s.substr(0, comma);
@@ -113,7 +110,14 @@ Detector detector_option(const std::string& s, double scale) {
       throw std::runtime_error(file +
                                ": no such model file (--detector takes hog, none, mobilenet-ssd, yolo-n or "
                                "MODEL[,CONFIG])");
-  return scaled_detector(dnn_detector(o), scale);
+  return o;
+}
+
+Detector detector_option(const std::string& s, double scale) {
+  if (s == "none") return {};
+  if (s == "hog") return hog_people_detector(scale);
+  if (const auto arch = architecture_from_string(s)) return scaled_detector(architecture_timing_detector(*arch), scale);
+  return scaled_detector(dnn_detector(model_files(s)), scale);
 }
 
 std::string scale_text(double s) {
@@ -231,12 +235,7 @@ int run_synthetic(const ParsedArgs& args, std::ostream& out, std::ostream& err) 
   if (o.backend != "cpu" && o.backend != "opencl" && o.backend != "cuda")
     throw UsageError("--backend must be cpu, opencl or cuda (got '" + o.backend + "')");
   o.detector = args.value("--detector").value_or("hog");
-  if (const std::string model = o.detector.substr(0, o.detector.find(','));
-      o.detector != "hog" && o.detector != "none" && !architecture_from_string(o.detector) &&
-      !std::filesystem::is_regular_file(model))
-    throw std::runtime_error(model +
-                             ": no such model file (--detector takes hog, none, mobilenet-ssd, yolo-n or "
-                             "MODEL[,CONFIG])");
+  if (vision::detector_is_model_file(o.detector)) model_files(o.detector);
   o.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
   const auto power = start_power(args, err, args.has("--json"));
   if (power) power->begin_phase("pipeline");

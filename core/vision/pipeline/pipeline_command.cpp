@@ -4,13 +4,11 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "vision/pipeline/dnn_architectures.h"
-
 namespace bs::vision {
 
 std::vector<std::string> synthetic_pipeline_cli_args(const SyntheticPipelineOptions& o, const std::string& platform,
                                                      bool record_power) {
-  if (o.detector != "hog" && o.detector != "none" && !architecture_from_string(o.detector))
+  if (detector_is_model_file(o.detector))
     throw std::invalid_argument("the detector '" + o.detector +
                                 "' is a model file on this computer; a robot runs hog, none or a built-in "
                                 "architecture (mobilenet-ssd, yolo-n): copy the model there and run "

@@ -17,6 +17,10 @@
 
 namespace bs::vision {
 
+bool detector_is_model_file(const std::string& detector) {
+  return detector != "hog" && detector != "none" && !architecture_from_string(detector);
+}
+
 cv::Mat synthetic_paper_capture() { return mosaic(render_fisheye(Lens::paper()), BayerPattern::BGGR); }
 
 std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOptions& o, const CancelToken& cancel,

@@ -31,6 +31,9 @@ struct SyntheticPipelineOptions {
   std::string tool;  // the producing tool for the provenance, e.g. "benchscope 0.4.0 (GUI)"
 };
 
+// Whether a detector setting names a model file (MODEL[,CONFIG]) rather than hog, none or a built-in architecture.
+bool detector_is_model_file(const std::string& detector);
+
 // Runs the pipeline (block policy, queues of 2) and returns the run, or nullopt when cancelled. `progress` (may be
 // empty) is called from the capture thread with the fraction of frames captured. `result` (may be null) receives
 // the pipeline's own counts (captured, dropped, wall time), which the CLI prints. Throws std::invalid_argument for
