@@ -8,6 +8,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <optional>
 
 #include "chart_marks.h"
 #include "plot_export.h"
@@ -26,10 +27,10 @@ QString mean_sd_n(const Summary& s, int decimals) {
 EfficiencyView::EfficiencyView(QWidget* parent)
     : QWidget(parent), table_(new QTableWidget(this)), plot_(new QCustomPlot(this)) {
   auto* note = new QLabel(
-      tr("Each platform's highest FLOPS peak (any device) with its supply-current log. <b>Paper</b>: peak / (supply V "
-         "× <i>maximum</i> current), a best-case numerator over a worst-case denominator taken at different times. "
-         "<b>At mean power</b>: peak / mean power of the log. <b>Energy</b>: joules per GFLOP at the peak rate and "
-         "the mean power."),
+      tr("Each platform's highest FLOPS peak (any device) with its power log. <b>Paper</b>: peak / (supply V "
+         "× <i>maximum</i> current), a best-case numerator over a worst-case denominator taken at different times; "
+         "a log of power only (tegrastats, jtop) has no current for it. <b>At mean power</b>: peak / mean power of "
+         "the log. <b>Energy</b>: joules per GFLOP at the peak rate and the mean power."),
       this);
   note->setWordWrap(true);
   table_->setColumnCount(ColumnCount);
@@ -45,7 +46,9 @@ EfficiencyView::EfficiencyView(QWidget* parent)
       tr("Joules per 10^9 floating-point operations at the peak rate, "
          "drawing the mean power"));
   table_->verticalHeader()->hide();
-  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // Sized to the platforms' figures (fill_table): a left-out platform's reason spans the columns and must not widen
+  // the first of them.
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
 
   plot_->yAxis->setLabel(tr("Efficiency (GFLOPS/W)"));
@@ -65,13 +68,17 @@ EfficiencyView::EfficiencyView(QWidget* parent)
 }
 
 void EfficiencyView::set_data(const std::vector<FlopsRun>& runs, const std::vector<PowerTrace>& traces) {
-  rows_ = platform_efficiency(runs, traces);
+  EfficiencyComparison table = compare_efficiency(runs, traces);
+  rows_ = std::move(table.rows);
+  left_out_ = std::move(table.left_out);
   fill_table();
   fill_plot();
 }
 
 void EfficiencyView::fill_table() {
-  table_->setRowCount(static_cast<int>(rows_.size()));
+  table_->clearSpans();
+  table_->clearContents();  // a left-out platform's reason left in a cell would size its column
+  table_->setRowCount(static_cast<int>(rows_.size() + left_out_.size()));
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     const PlatformEfficiency& e = rows_[r];
     const auto cell = [&](int col, const QString& text, const QString& tip = {}) {
@@ -81,22 +88,30 @@ void EfficiencyView::fill_table() {
       table_->setItem(static_cast<int>(r), col, item);
     };
     cell(Platform, QString::fromStdString(e.peak.platform),
-         tr("current log: %1\npower measured by: %2")
+         tr("power log: %1\npower measured by: %2")
              .arg(QString::fromStdString(e.trace_label), QString::fromStdString(e.measurement)));
     cell(Peak, QString::number(e.peak.peak.flops / 1e9, 'f', 2),
          tr("at %1 workers; %2").arg(e.peak.peak.workers).arg(QString::fromStdString(e.peak.source_file)));
     cell(Source, QStringLiteral("%1, %2, D = %3")
                      .arg(QString::fromStdString(e.peak.device), QString::fromStdString(e.peak.backend))
                      .arg(e.peak.dims));
-    cell(Supply, QString::number(e.supply_v, 'f', 1));
-    cell(MaxCurrent, QString::number(e.current_a.max, 'f', 3));
-    cell(MeanCurrent, mean_sd_n(e.current_a, 2));
+    // A log of power only has no supply voltage or current: a dash, and the paper's column says why in words.
+    const QString none = QStringLiteral("—");
+    cell(Supply, e.supply_v ? QString::number(*e.supply_v, 'f', 1) : none);
+    cell(MaxCurrent, e.current_a ? QString::number(e.current_a->max, 'f', 3) : none);
+    cell(MeanCurrent, e.current_a ? mean_sd_n(*e.current_a, 2) : none);
     cell(MeanPower, mean_sd_n(e.power_w, 2));
-    for (const auto& [col, i] : {std::pair{Paper, 0}, std::pair{AtMean, 1}, std::pair{Energy, 2}}) {
-      const EfficiencyFigure& f = e.figures.at(static_cast<std::size_t>(i));
-      cell(col, QString::number(f.value, 'f', col == Energy ? 4 : 2),
+    // The figures come in the order paper (when the log allows it), at mean power, J/GFLOP.
+    const std::vector<int> columns =
+        e.paper_gflops_per_w ? std::vector<int>{Paper, AtMean, Energy} : std::vector<int>{AtMean, Energy};
+    for (std::size_t i = 0; i < columns.size() && i < e.figures.size(); ++i) {
+      const EfficiencyFigure& f = e.figures[i];
+      cell(columns[i], QString::number(f.value, 'f', columns[i] == Energy ? 4 : 2),
            QString::fromStdString(f.label) + QStringLiteral(" (") + QString::fromStdString(f.unit) + ')');
     }
+    if (!e.paper_gflops_per_w)
+      cell(Paper, e.current_a ? tr("none: no supply voltage") : tr("none: no supply current"),
+           tr("No paper figure: %1").arg(QString::fromStdString(e.paper_missing)));
     // A flagged peak or power log: the numbers made from it are marked, tinted and explained.
     if (!e.flags.empty()) {
       const QString why = QString::fromStdString(flags_text(e.flags));
@@ -107,13 +122,28 @@ void EfficiencyView::fill_table() {
         const bool ratio = col == Paper || col == AtMean || col == Energy;
         if (!ratio && !(col == Peak ? peak_flagged : power_flagged)) continue;
         QTableWidgetItem* item = table_->item(static_cast<int>(r), col);
-        if (!item) continue;
+        if (!item || item->text().startsWith(none) || item->text().startsWith(tr("none"))) continue;
         item->setText(QStringLiteral("⚠ ") + item->text());
         item->setBackground(QColor(0xff, 0xe0, 0xb2));
         item->setToolTip(why + "\n\n" + item->toolTip());
       }
     }
   }
+  table_->resizeColumnsToContents();
+  // The platforms without a figure, each with why across the row: a platform never leaves the tab unexplained.
+  for (std::size_t i = 0; i < left_out_.size(); ++i) {
+    const int r = static_cast<int>(rows_.size() + i);
+    const QString platform = QString::fromStdString(left_out_[i].platform);
+    const QString why = tr("No efficiency figure: %1").arg(QString::fromStdString(left_out_[i].reason));
+    table_->setItem(r, Platform, new QTableWidgetItem(platform));
+    auto* reason = new QTableWidgetItem(why);
+    reason->setForeground(palette().color(QPalette::PlaceholderText));
+    reason->setToolTip(why);
+    table_->setItem(r, Peak, reason);
+    for (int col = Peak + 1; col < ColumnCount; ++col) table_->setItem(r, col, nullptr);
+    table_->setSpan(r, Peak, 1, ColumnCount - Peak);
+  }
+  table_->resizeColumnToContents(Platform);  // the left-out platforms' names too
 }
 
 void EfficiencyView::fill_plot() {
@@ -132,11 +162,13 @@ void EfficiencyView::fill_plot() {
   const struct {
     QString name;
     QColor color;
-    double PlatformEfficiency::*value;
+    std::optional<double> (*value)(const PlatformEfficiency&);
     double offset;
   } variants[] = {
-      {tr("Paper: peak / (V × max current)"), QColor(31, 119, 180), &PlatformEfficiency::paper_gflops_per_w, -0.19},
-      {tr("Peak / mean power"), QColor(255, 127, 14), &PlatformEfficiency::mean_power_gflops_per_w, 0.19},
+      {tr("Paper: peak / (V × max current)"), QColor(31, 119, 180),
+       [](const PlatformEfficiency& e) { return e.paper_gflops_per_w; }, -0.19},
+      {tr("Peak / mean power"), QColor(255, 127, 14),
+       [](const PlatformEfficiency& e) { return std::optional<double>(e.mean_power_gflops_per_w); }, 0.19},
   };
   double top = 0;
   bool any_flagged = false;
@@ -154,7 +186,17 @@ void EfficiencyView::fill_plot() {
     QVector<double> keys, values, flagged_keys, flagged_values;
     for (int i = 0; i < n; ++i) {
       const PlatformEfficiency& e = rows_[static_cast<std::size_t>(i)];
-      const double value = e.*v.value;
+      const std::optional<double> figure = v.value(e);
+      if (!figure) {  // no bar where the log allows no figure: its place says so
+        auto* none = new QCPItemText(plot_);
+        none->position->setCoords(i + 1 + v.offset, 0);
+        none->setPositionAlignment(Qt::AlignHCenter | Qt::AlignBottom);
+        none->setText(tr("n/a"));
+        none->setColor(QColor(90, 90, 90));
+        none->setPadding(QMargins(0, 0, 0, 2));
+        continue;
+      }
+      const double value = *figure;
       (e.flags.empty() ? keys : flagged_keys) << i + 1 + v.offset;
       (e.flags.empty() ? values : flagged_values) << value;
       top = std::max(top, value);
@@ -182,6 +224,15 @@ void EfficiencyView::fill_plot() {
                         QStringLiteral("⚠ %1: %2")
                             .arg(QString::fromStdString(e.peak.platform), QString::fromStdString(flags_text(e.flags))));
   }
+  // What the bars leave out, named in the figure's note (an export carries it; the table says it on screen).
+  for (const PlatformEfficiency& e : rows_)
+    if (!e.paper_gflops_per_w)
+      add_figure_note(*plot_,
+                      tr("n/a: %1 has no paper figure: %2")
+                          .arg(QString::fromStdString(e.peak.platform), QString::fromStdString(e.paper_missing)));
+  for (const EfficiencyLeftOut& l : left_out_)
+    add_figure_note(*plot_,
+                    tr("Not drawn: %1, %2").arg(QString::fromStdString(l.platform), QString::fromStdString(l.reason)));
   plot_->xAxis->setRange(0.4, n + 0.6);
   plot_->yAxis->setRange(0, top > 0 ? top * 1.3 : 1);  // room for the value labels and the legend
   plot_->replot();

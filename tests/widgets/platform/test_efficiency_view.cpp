@@ -37,9 +37,17 @@ class TestEfficiencyView : public QObject {
     view.resize(1400, 800);
     view.set_data(runs, traces);
     QTableWidget* t = view.table();
-    QCOMPARE(t->rowCount(), 2);  // the NUC and the Jetson have current logs
+    // The NUC and the Jetson have current logs; the desktop and the laptop none, which their rows say.
+    QCOMPARE(t->rowCount(), 4);
     const int nuc = row_of(t, "NUC"), jetson = row_of(t, "Jetson TX2");
     QVERIFY(nuc >= 0 && jetson >= 0);
+    for (const QString& platform :
+         {QStringLiteral("Desktop (Alienware Area-51)"), QStringLiteral("Laptop (MacBook Pro 14,3)")}) {
+      const int r = row_of(t, platform);
+      QVERIFY2(r >= 0, qPrintable(platform));
+      QCOMPARE(t->item(r, 1)->text(), QString("No efficiency figure: no power log of this platform"));
+      QCOMPARE(t->columnSpan(r, 1), t->columnCount() - 1);
+    }
     const int paper = column(t, "GFLOPS/W paper"), power = column(t, "Mean power (W)"),
               peak = column(t, "Peak (GFLOPS)"), from = column(t, "Peak from"), supply = column(t, "Supply (V)"),
               at_mean = column(t, "GFLOPS/W\npeak / mean"), energy = column(t, "Energy (J/GFLOP)");
@@ -97,13 +105,17 @@ class TestEfficiencyView : public QObject {
     QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
   }
 
-  void no_logs_no_rows() {
+  // Without logs no figure, and every platform says so in its row.
+  void no_logs_no_figures() {
     std::vector<bs::FlopsRun> runs;
     std::vector<bs::PowerTrace> traces;
     bs::test::load_paper_sample(runs, traces);
     bs::ui::EfficiencyView view;
     view.set_data(runs, {});
-    QCOMPARE(view.table()->rowCount(), 0);
+    QCOMPARE(view.rows().size(), std::size_t{0});
+    QCOMPARE(view.table()->rowCount(), 4);
+    for (int r = 0; r < view.table()->rowCount(); ++r)
+      QVERIFY(view.table()->item(r, 1)->text().endsWith("no power log of this platform"));
     QCOMPARE(qobject_cast<QCPBars*>(view.plot()->plottable(0))->dataCount(), 0);
   }
 };
