@@ -4,11 +4,17 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <cmath>
+
+#include <QFontMetricsF>
+#include <QPointer>
 
 #include <QJsonObject>
 
 #include "device_palette.h"
+#include "overlay_geometry.h"
 #include "paper_figures.h"
+#include "plot_labels.h"
 
 namespace bs::ui {
 namespace {
@@ -19,6 +25,96 @@ Qt::PenStyle thread_style(int thread) {
   static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
   return styles[static_cast<std::size_t>(thread) % 4];
 }
+
+// Keeps the deadline's label whole inside the axes at every size the figure is drawn at (the tab, an export at a
+// column's width), after each layout pass: beside its line, left (as it always was) or right, at the height where it
+// covers the least curve and never the legend; over the line where neither side has room; in a smaller font (down to
+// 5 pt) where it is wider than the axes. Right-aligned to the line always, a deadline near the axis' start cut the
+// label's lines at the axes' left edge (issue #50.5).
+class DeadlineLabelPlacer : public QObject {
+ public:
+  static constexpr const char* kName = "bs-deadline-label";
+
+  explicit DeadlineLabelPlacer(QCustomPlot* plot) : QObject(plot), plot_(plot) {
+    setObjectName(kName);
+    connect(plot, &QCustomPlot::afterLayout, this, &DeadlineLabelPlacer::place);
+  }
+  // The plot's placer, made on first use (only this class names a child of the plot so: a static_cast is safe).
+  static DeadlineLabelPlacer* find(QCustomPlot& plot) {
+    return static_cast<DeadlineLabelPlacer*>(plot.findChild<QObject*>(kName, Qt::FindDirectChildrenOnly));
+  }
+  static DeadlineLabelPlacer* of(QCustomPlot& plot) {
+    DeadlineLabelPlacer* placer = find(plot);
+    return placer ? placer : new DeadlineLabelPlacer(&plot);
+  }
+  void set(QCPItemText* label, double x) {
+    label_ = label;
+    x_ = x;
+    shrunk_ = false;
+  }
+
+ private:
+  // Every line of the text with its padding, as QCPItemText draws it (a single-line size runs the lines together).
+  QSizeF label_size() const {
+    const QMarginsF pad = label_->padding();
+    return QFontMetricsF(label_->font()).boundingRect(QRectF(), Qt::AlignRight, label_->text()).size() +
+           QSizeF(pad.left() + pad.right(), pad.top() + pad.bottom());
+  }
+
+  void place() {
+    if (!label_) return;
+    const QRectF axes = plot_->axisRect()->rect();
+    // Shrunk from the font it was given each time (its own, or an export's): a narrow first layout must not leave
+    // it small for good. A font still the one shrunk here was given as `given_`.
+    QFont f = shrunk_ && label_->font() == shrunk_to_ ? given_ : label_->font();
+    given_ = f;
+    label_->setFont(f);
+    QSizeF size = label_size();
+    for (; size.width() > axes.width() && f.pointSizeF() > 5.25; size = label_size()) {
+      f.setPointSizeF(f.pointSizeF() - 0.5);
+      label_->setFont(f);
+    }
+    shrunk_ = f != given_;
+    shrunk_to_ = f;
+    const double line = plot_->xAxis->coordToPixel(x_);
+    std::vector<double> lefts;
+    if (line - size.width() >= axes.left()) lefts.push_back(line - size.width());
+    if (line + size.width() <= axes.right()) lefts.push_back(line);
+    if (lefts.empty())  // wider than either side: over the line, inside the axes
+      lefts.push_back(
+          std::clamp(line - size.width() / 2, axes.left(), std::max(axes.left(), axes.right() - size.width())));
+    std::vector<QPointer<QCPGraph>> graphs;
+    for (int i = 0; i < plot_->graphCount(); ++i) graphs.emplace_back(plot_->graph(i));
+    const std::vector<QPolygonF> curves = graphs_in_pixels(graphs);
+    const bool legend_inside = plot_->legend->visible() && plot_->legend->layout() == plot_->axisRect()->insetLayout();
+    const auto cost = [&](const QRectF& spot) {
+      return covered_length(spot, curves) +
+             (legend_inside && spot.intersects(QRectF(plot_->legend->outerRect())) ? 1e6 : 0.0);
+    };
+    // From the top (where it always was) down to the floor in five steps; the first of equal costs wins.
+    const double margin = 0.02 * axes.height();
+    const double room = std::max(0.0, axes.height() - 2 * margin - size.height());
+    QRectF best;
+    double best_cost = 0;
+    for (int step = 0; step <= 4; ++step)
+      for (const double left : lefts) {
+        const QRectF spot(QPointF(left, axes.top() + margin + room * step / 4), size);
+        if (const double c = cost(spot); best.isNull() || c < best_cost) {
+          best = spot;
+          best_cost = c;
+        }
+      }
+    label_->setPositionAlignment(Qt::AlignTop | Qt::AlignLeft);
+    label_->setTextAlignment(best.right() <= line + 0.5 ? Qt::AlignRight : Qt::AlignLeft);  // towards the line
+    label_->position->setPixelPosition(best.topLeft());
+  }
+
+  QCustomPlot* plot_;
+  QPointer<QCPItemText> label_;
+  double x_ = 0;
+  QFont given_, shrunk_to_;  // the font the label was given, and the one it was shrunk to here
+  bool shrunk_ = false;
+};
 
 QString us(std::int64_t ns) {
   const double v = static_cast<double>(ns) / 1000.0;
@@ -120,9 +216,15 @@ std::vector<BeyondDeadline> headroom_histogram_figure(QCustomPlot& plot, const s
     label->setColor(QColor(200, 30, 30));
     label->setPadding(QMargins(4, 2, 6, 2));
     label->setBrush(QBrush(QColor(255, 255, 255, 210)));
+    DeadlineLabelPlacer::of(plot)->set(label, x);
+  } else if (DeadlineLabelPlacer* placer = DeadlineLabelPlacer::find(plot)) {
+    placer->set(nullptr, 0);
   }
   plot.xAxis->setRange(0, x_max * 1.08);
-  plot.yAxis->setRange(kFloor, y_max * 3);
+  // Room above the tallest bin for the deadline's label, a line of its text about 0.3 of a decade at the tab's and
+  // an export's sizes: the label sits over no bar where it always was, at the top.
+  const double label_lines = deadline_ns ? static_cast<double>(beyond.size() + 1) : 0.0;
+  plot.yAxis->setRange(kFloor, y_max * 3 * std::pow(10.0, 0.3 * label_lines));
   if (!title.isEmpty()) {
     if (plot.plotLayout()->rowCount() < 2 || !qobject_cast<QCPTextElement*>(plot.plotLayout()->element(0, 0))) {
       plot.plotLayout()->insertRow(0);

@@ -40,6 +40,9 @@ class ViewState {
     }
     for (int i = 0; i < plot.itemCount(); ++i)
       if (auto* t = qobject_cast<QCPItemText*>(plot.item(i))) texts_.push_back({t, t->font(), t->visible()});
+    for (int i = 0; i < plot.plotLayout()->elementCount(); ++i)
+      if (auto* t = qobject_cast<QCPTextElement*>(plot.plotLayout()->elementAt(i)))
+        titles_.push_back({t, t->text(), t->font()});
     QCPLayoutInset* inset = plot.axisRect()->insetLayout();
     for (int i = 0; i < inset->elementCount(); ++i)
       if (inset->elementAt(i) == plot.legend) {
@@ -110,6 +113,10 @@ class ViewState {
       t.item->setFont(t.font);
       t.item->setVisible(t.visible);
     }
+    for (const Title& t : titles_) {
+      t.element->setText(t.text);
+      t.element->setFont(t.font);
+    }
   }
 
  private:
@@ -129,10 +136,16 @@ class ViewState {
     QFont font;
     bool visible;
   };
+  struct Title {
+    QCPTextElement* element;
+    QString text;
+    QFont font;
+  };
   QCustomPlot& plot_;
   std::vector<Axis> axes_;
   std::vector<Plottable> plottables_;
   std::vector<Text> texts_;
+  std::vector<Title> titles_;  // text rows of the layout (a title), wrapped on paper
   QFont legend_font_;
   bool legend_inside_ = false, legend_beside_ = false, legend_visible_ = false;
   Qt::Alignment alignment_;
@@ -157,6 +170,8 @@ void apply_figure_look(QCustomPlot& plot, const FigureOptions& o) {
     a->setTickLabelFont(small);
   }
   plot.legend->setFont(small);
+  for (int i = 0; i < plot.plotLayout()->elementCount(); ++i)  // a title in the figure's font, not the screen's
+    if (auto* title = qobject_cast<QCPTextElement*>(plot.plotLayout()->elementAt(i))) title->setFont(f);
   for (int i = 0; i < plot.graphCount(); ++i) {
     QPen p = plot.graph(i)->pen();
     if (p.style() == Qt::NoPen) continue;
@@ -179,8 +194,15 @@ void place_legend_below(QCustomPlot& plot, double font_pt) {
     plot.plotLayout()->simplify();
   }
   if (plot.legend->layout() != plot.plotLayout()) {
-    plot.plotLayout()->addElement(1, 0, plot.legend);
-    plot.plotLayout()->setRowStretchFactor(1, 0.001);
+    // In the row under the axes, which is not row 1 where a title stands above them (the Headroom tab's): adding
+    // to a taken cell fails, and the figure lost its legend.
+    QCPLayoutGrid* grid = plot.plotLayout();
+    int axes_row = 0;
+    for (int r = 0; r < grid->rowCount(); ++r)
+      if (grid->element(r, 0) == plot.axisRect()) axes_row = r;
+    grid->insertRow(axes_row + 1);
+    grid->addElement(axes_row + 1, 0, plot.legend);
+    grid->setRowStretchFactor(axes_row + 1, 0.001);
   }
   plot.plotLayout()->setRowSpacing(0);
 }
@@ -313,6 +335,18 @@ void add_note(QCustomPlot& plot, const QString& also_drawn, double font_pt, doub
   plot.plotLayout()->setRowStretchFactor(plot.plotLayout()->rowCount() - 1, 0.001);
 }
 
+// A title row wider than the figure is broken between words: centred on the axes and cut at both edges, the Headroom
+// tab's title lost its platform and its measurement's number (issue #50.5).
+void wrap_titles(QCustomPlot& plot, double width_pt) {
+  for (int i = 0; i < plot.plotLayout()->elementCount(); ++i)
+    if (auto* title = qobject_cast<QCPTextElement*>(plot.plotLayout()->elementAt(i));
+        title && title->objectName() != QLatin1String(kNoteName)) {
+      const QFontMetricsF metrics(title->font());
+      if (metrics.horizontalAdvance(title->text()) > width_pt * 0.97)
+        title->setText(wrapped(title->text(), metrics, width_pt * 0.97).join('\n'));
+    }
+}
+
 // Widens each value axis so that every visible plottable's values in the shown key range fit: a curve is never cut
 // off at the top of a figure because the view on screen was zoomed or the legend made room.
 void fit_value_axes(QCustomPlot& plot) {
@@ -368,6 +402,10 @@ FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
   } else {
     plot.legend->setVisible(false);
   }
+  wrap_titles(plot, width_pt);                                 // before the note: the note is no title
+  for (int i = 0; i < plot.plotLayout()->elementCount(); ++i)  // a title's rows add theirs too, the axes keep theirs
+    if (auto* title = qobject_cast<QCPTextElement*>(plot.plotLayout()->elementAt(i)))
+      below_pt += static_cast<QCPLayoutElement*>(title)->minimumOuterSizeHint().height();
   add_note(plot, also_drawn, o.font_pt, width_pt);
   if (auto* note = plot.findChild<QCPTextElement*>(kNoteName))
     below_pt += static_cast<QCPLayoutElement*>(note)->minimumOuterSizeHint().height();
