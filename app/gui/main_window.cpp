@@ -16,8 +16,6 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
-#include <QScreen>
-#include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
 #include <algorithm>
@@ -27,7 +25,6 @@
 #include <QVBoxLayout>
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/foreign_sweeps.h"
-#include "common/screen_fit.h"
 #include "device_palette.h"
 #include "headroom/headroom_json.h"
 #include "headroom/headroom_run_panel.h"
@@ -187,7 +184,7 @@ MainWindow::MainWindow(QWidget* parent)
   addToolBar(Qt::TopToolBarArea, damage_bar_);
   damage_bar_->hide();
   connect(damage_banner_, &DamageBanner::remove_requested, this, &MainWindow::remove_damaged);
-  resize(1400, 900);
+  resize(first_start_size());
   default_state_ = saveState();        // View > Reset layout returns here
   flops_split_->setSizes({560, 300});  // the paper's 13 peak rows without scrolling at the default size
   default_split_ = flops_split_->saveState();
@@ -244,45 +241,6 @@ MainWindow::MainWindow(QWidget* parent)
           [this](const QString& message) { statusBar()->showMessage(message, 15000); });
   restore_layout();
   update_title();
-}
-
-// The window's size, docks and the FLOPS tab's split are remembered between sessions (QSettings).
-void MainWindow::restore_layout() {
-  QSettings s;
-  s.beginGroup(QStringLiteral("main-window"));
-  // A size saved on a larger screen is fitted to this one (restoreGeometry keeps a too-large size as it was).
-  if (const QByteArray g = s.value("geometry").toByteArray(); !g.isEmpty() && restoreGeometry(g)) clamp_to_screen();
-  if (const QByteArray st = s.value("state").toByteArray(); !st.isEmpty()) restoreState(st);
-  if (const QByteArray sp = s.value("flops-split").toByteArray(); !sp.isEmpty()) flops_split_->restoreState(sp);
-  show_damage();  // the banner follows the workspace, never a remembered layout
-}
-
-void MainWindow::clamp_to_screen() {
-  // A size saved on a larger screen (1600x1000) must not open off a smaller one (1280x800). Not under the offscreen
-  // platform, whose 800x600 "screen" is no user's (tests there size windows themselves).
-  if (QGuiApplication::platformName() == QLatin1String("offscreen")) return;
-  const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
-  if (!screen) return;
-  const QRect g = geometry(), f = frameGeometry();
-  const QMargins frame(g.left() - f.left(), g.top() - f.top(), f.right() - g.right(), f.bottom() - g.bottom());
-  const QRect fitted = fit_to_screen(g, frame, screen->availableGeometry(), minimumSizeHint());
-  if (fitted != geometry()) setGeometry(fitted);
-}
-
-void MainWindow::save_layout() const {
-  QSettings s;
-  s.beginGroup(QStringLiteral("main-window"));
-  s.setValue("geometry", saveGeometry());
-  s.setValue("state", saveState());
-  s.setValue("flops-split", flops_split_->saveState());
-}
-
-void MainWindow::reset_layout() {
-  restoreState(default_state_);
-  flops_split_->restoreState(default_split_);
-  for (QDockWidget* dock : findChildren<QDockWidget*>()) dock->show();
-  resize(1400, 900);
-  QSettings().remove(QStringLiteral("main-window"));
 }
 
 MainWindow::~MainWindow() {

@@ -59,7 +59,7 @@ class MainWindow : public QMainWindow {
   void import_paths(const QStringList& paths);
 
   WorkspaceTree* tree() const { return tree_; }
-  // View > Reset layout: docks, the FLOPS tab's split and the window size as on first start.
+  // View > Reset layout: docks, the FLOPS and Platforms tabs' splits and the window size as on first start.
   PowerTraceLoader* trace_loader() const { return trace_loader_; }  // long power logs load here
   void reset_layout();
   FlopsPlot* flops_plot() const { return plot_; }
@@ -102,6 +102,8 @@ class MainWindow : public QMainWindow {
   void create_actions();          // main_window_menus.cpp
   void compare_with_workspace();  // main_window_menus.cpp
   void show_help();               // main_window_menus.cpp (F1)
+  // main_window_layout.cpp
+  QSize first_start_size() const;  // 1400x900, or less where the screen is smaller
   void restore_layout();
   void clamp_to_screen();  // the window inside the available area of its screen
   void save_layout() const;

@@ -140,7 +140,8 @@ void MainWindow::create_actions() {
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
   add(view, tr("Reset &layout"), QKeySequence(),
-      tr("Docks, the FLOPS tab's split and the window size as on first start"), [this] { reset_layout(); });
+      tr("Docks, the FLOPS and Platforms tabs' splits and the window size as on first start"),
+      [this] { reset_layout(); });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   add(help, tr("&Views and shortcuts"), QKeySequence::HelpContents,

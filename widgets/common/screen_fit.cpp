@@ -18,4 +18,9 @@ QRect fit_to_screen(const QRect& window, const QMargins& frame, const QRect& ava
   return outer.marginsRemoved(frame);
 }
 
+QSize first_start_size(const QRect& available, const QSize& preferred) {
+  if (available.isEmpty()) return preferred;
+  return preferred.boundedTo(QSize(available.width() * 9 / 10, available.height() * 9 / 10));
+}
+
 }  // namespace bs::ui

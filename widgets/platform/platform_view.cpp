@@ -15,7 +15,9 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSignalBlocker>
+#include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -180,12 +182,30 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   layout->addLayout(controls);
   layout->addLayout(battery_row);
   layout->addLayout(loop_row);
-  layout->addWidget(summary_);
-  layout->addWidget(table_, 2);
+  // Under the controls, the summary (scrolling where it is long), the comparison, the inference table and the
+  // candidates share the height in a splitter the person moves and the window keeps: in one layout at 1280x800 the
+  // candidates' figure and note left the comparison its header and one row (issue #50.5).
+  summary_box_ = new QScrollArea(this);
+  summary_box_->setWidget(summary_);
+  summary_box_->setWidgetResizable(true);
+  summary_box_->setFrameShape(QFrame::NoFrame);
+  summary_box_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  summary_box_->setMinimumHeight(2 * fontMetrics().lineSpacing() + 4);  // two lines, then it scrolls
   inference_ = new InferenceTable(this);
-  layout->addWidget(inference_, 1);
   candidates_ = new CandidatesPanel(this);
-  layout->addWidget(candidates_, 2);
+  split_ = new QSplitter(Qt::Vertical, this);
+  split_->setObjectName(QStringLiteral("platformsSplit"));
+  for (QWidget* pane : {static_cast<QWidget*>(summary_box_), static_cast<QWidget*>(table_),
+                        static_cast<QWidget*>(inference_), static_cast<QWidget*>(candidates_)})
+    split_->addWidget(pane);
+  split_->setChildrenCollapsible(false);
+  // A larger window gives its height to the comparison and the candidates; the summary and the inference rows keep
+  // theirs.
+  for (int pane : {0, 2}) split_->setStretchFactor(pane, 0);
+  for (int pane : {1, 3}) split_->setStretchFactor(pane, 1);
+  layout->addWidget(split_, 1);
+  split_->installEventFilter(this);
+  connect(split_, &QSplitter::splitterMoved, this, [this] { auto_split_ = false; });
 
   // A value counts when it is entered (Enter, leaving the field, an arrow step), not at every key typed: each is one
   // step of Edit > Undo, and the workspace keeps it.
@@ -704,6 +724,7 @@ void PlatformView::fill_table() {
   table_->horizontalHeader()->setMinimumHeight(64);
   table_->resizeRowsToContents();
   frozen_->sync_columns();
+  fit_split();  // its rows may need more or less room now
 }
 
 void PlatformView::export_table(bool latex) {

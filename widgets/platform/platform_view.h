@@ -16,6 +16,8 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
+class QScrollArea;
+class QSplitter;
 class QTableWidget;
 
 namespace bs {
@@ -49,6 +51,13 @@ class PlatformView : public QWidget {
   // Candidates from the library of published results, ranked beside the own platforms.
   CandidatesPanel* candidates() const { return candidates_; }
   QTableWidget* table() const { return table_; }
+  // The summary, the comparison, the inference table and the candidates, one over the other
+  // (platform_view_split.cpp). Until the person moves it, it fits them to the height (fit_split); where the person
+  // left it is kept by the window across restarts.
+  QSplitter* splitter() const { return split_; }
+  QByteArray split_state() const;  // empty while the split is the fitted one (nothing of the person's to keep)
+  void restore_split(const QByteArray& state);
+  void reset_split();              // View > Reset layout: fitted again
   QString summary_text() const;    // the line above the table (recommendation, battery, logs left out), rich text
   QString recommendation() const;  // the recommended platform, empty when none
   // The battery presets (built-in and the workspace's, with their missions) offered in the Battery and Mission
@@ -91,7 +100,11 @@ class PlatformView : public QWidget {
   // The user asked where a cell's number came from (double-click): the platform and the column id.
   void source_requested(const PlatformRow& row, const QString& column);
 
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
  private:
+  void fit_split();
   void recompute();
   void fill_table();
   void export_table(bool latex);
@@ -109,6 +122,9 @@ class PlatformView : public QWidget {
   QString tab_setup_label_;
   QLabel* summary_;
   QTableWidget* table_;
+  QScrollArea* summary_box_ = nullptr;
+  QSplitter* split_ = nullptr;
+  bool auto_split_ = true;  // the split is fitted to the contents until the person moves it or a kept one is restored
   InferenceTable* inference_ = nullptr;
   CandidatesPanel* candidates_ = nullptr;
   std::vector<PipelineRun> pipeline_runs_;  // as given: the detection stage is an own candidate

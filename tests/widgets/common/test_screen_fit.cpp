@@ -28,6 +28,14 @@ class TestScreenFit : public QObject {
     QCOMPARE(fit_to_screen(QRect(0, 10, 400, 300), frame, screen, QSize(900, 600)).size(), QSize(900, 600));
     QCOMPARE(fit_to_screen(QRect(0, 0, 2000, 2000), frame, screen, QSize(1500, 900)).size(), QSize(1276, 768));
   }
+
+  // First start (issue #50.5): 1400x900 where it fits in 90 % of the screen, else 90 % of the screen.
+  void the_first_size_fits_the_screen() {
+    QCOMPARE(bs::ui::first_start_size(QRect(0, 0, 1600, 1000)), QSize(1400, 900));
+    QCOMPARE(bs::ui::first_start_size(QRect(0, 0, 1280, 800)), QSize(1152, 720));
+    QCOMPARE(bs::ui::first_start_size(QRect(0, 30, 1920, 850)), QSize(1400, 765));  // a panel takes 30 px
+    QCOMPARE(bs::ui::first_start_size(QRect()), QSize(1400, 900));                  // no screen known
+  }
 };
 
 QTEST_APPLESS_MAIN(TestScreenFit)
