@@ -7,7 +7,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
-#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -17,9 +16,11 @@
 #include <QSpinBox>
 #include <QStandardItemModel>
 #include <QTimer>
+#include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "analysis/power/phase_energy.h"
+#include "common/wrapping_tool_bar.h"
 #include "power/power_sensor_box.h"
 #include "remote/remote_run.h"
 #include "remote/robot_target.h"
@@ -134,39 +135,40 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   status_->setTextFormat(Qt::PlainText);
   status_->setWordWrap(true);  // a long message wraps instead of widening the window
 
-  // Two rows, so that the panel fits a 1280 px window beside the workspace dock: what to measure on the first,
-  // how to run it and what happened on the second.
-  auto* layout = new QGridLayout(this);
-  layout->setContentsMargins(0, 0, 0, 0);
+  // Where it runs on the first row; what to measure and the buttons in rows that wrap where the window is narrow,
+  // each label with its field; what happened on a row of its own. Two fixed rows held the panel 928 px wide, and a
+  // long word in the status (a robot's job id) wider still: with the Kernel Runner's dock beside it the window
+  // needed more than a 1280 px screen (issue #50.5).
   auto* where = new QHBoxLayout;
   where->addWidget(new QLabel(tr("Run on:"), this));
   where->addWidget(target_, 1);
-  auto* frames_label = new QLabel(tr("Synthetic frames:"), this);
-  frames_label->setToolTip(tr("Frames of the synthetic paper capture to run through the pipeline"));
-  auto* workers_label = new QLabel(tr("Detection workers:"), this);
-  workers_label->setToolTip(workers_->toolTip());
-  auto* scale_label = new QLabel(tr("Detection scale:"), this);
-  scale_label->setToolTip(scale_->toolTip());
-  auto* backend_label = new QLabel(tr("Preprocessing on:"), this);
-  backend_label->setToolTip(backend_->toolTip());
-  int column = 0;
-  for (QWidget* w : std::initializer_list<QWidget*>{frames_label, frames_, workers_label, workers_, scale_label, scale_,
-                                                    backend_label, backend_})
-    layout->addWidget(w, 1, column++);
-  layout->setColumnStretch(column, 1);
-  layout->addLayout(where, 0, 0, 1, column + 1);
-  auto* second_row = new QHBoxLayout;
-  auto* detector_label = new QLabel(tr("Detector:"), this);
-  detector_label->setToolTip(detector_->toolTip());
-  second_row->addWidget(detector_label);
-  second_row->addWidget(detector_);
-  second_row->addWidget(new QLabel(tr("Record power:"), this));
-  second_row->addWidget(power_);
-  second_row->addWidget(measure_);
-  second_row->addWidget(cancel_);
-  second_row->addWidget(progress_);
-  second_row->addWidget(status_, 1);
-  layout->addLayout(second_row, 2, 0, 1, column + 1);
+  const auto labelled = [this](const QString& text, QWidget* field) {
+    auto* pair = new QWidget(this);
+    auto* row = new QHBoxLayout(pair);
+    row->setContentsMargins(0, 0, 0, 0);
+    auto* label = new QLabel(text, pair);
+    label->setToolTip(field->toolTip());
+    label->setBuddy(field);
+    row->addWidget(label);
+    row->addWidget(field);
+    return pair;
+  };
+  auto* choices = new FlowLayout(nullptr, 10);
+  choices->addWidget(labelled(tr("Synthetic frames:"), frames_));
+  choices->addWidget(labelled(tr("Detection workers:"), workers_));
+  choices->addWidget(labelled(tr("Detection scale:"), scale_));
+  choices->addWidget(labelled(tr("Preprocessing on:"), backend_));
+  choices->addWidget(labelled(tr("Detector:"), detector_));
+  choices->addWidget(labelled(tr("Record power:"), power_));
+  choices->addWidget(measure_);
+  choices->addWidget(cancel_);
+  choices->addWidget(progress_);
+  status_->setMinimumWidth(200);  // a long word wraps within the row instead of widening the window
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addLayout(where);
+  layout->addLayout(choices);
+  layout->addWidget(status_);
 
   connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
   connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
