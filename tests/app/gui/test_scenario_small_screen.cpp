@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../../support/offscreen_screen.h"
 #include "../../support/scenario_window.h"
 #include "analysis/stats/units.h"
 #include "overlay_geometry.h"
@@ -337,32 +338,7 @@ class TestScenarioSmallScreen : public QObject {
   }
 };
 
-// A 1280x800 screen for the offscreen platform, given before QApplication starts (Qt's offscreen plugin reads a
-// JSON configuration file).
-namespace {
-int small_screen_main(int argc, char** argv) {
-  const QString config =
-      QDir::temp().filePath(QStringLiteral("benchscope-1280x800-%1.json").arg(QCoreApplication::applicationPid()));
-  {
-    QFile f(config);
-    if (!f.open(QIODevice::WriteOnly)) return 2;
-    f.write(QStringLiteral(R"({"screens": [{"name": "small", "x": 0, "y": 0, "width": %1, "height": %2,
-                                               "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})")
-                .arg(kScreenW)
-                .arg(kScreenH)
-                .toUtf8());
-  }
-  qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toUtf8());
-  int rc = 0;
-  {
-    QApplication app(argc, argv);
-    TestScenarioSmallScreen test;
-    rc = QTest::qExec(&test, argc, argv);
-  }
-  QFile::remove(config);
-  return rc;
-}
-}  // namespace
-BENCHSCOPE_TEST_CUSTOM_MAIN(small_screen_main)
+// A 1280x800 screen for the offscreen platform, given before QApplication starts.
+BENCHSCOPE_OFFSCREEN_SCREEN_MAIN(TestScenarioSmallScreen, kScreenW, kScreenH)
 
 #include "test_scenario_small_screen.moc"
