@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "mlperf/mlperf_submission.h"
+#include "store/open_workspaces.h"
 #include "store/workspace.h"
 
 namespace bs {
@@ -30,7 +31,9 @@ std::vector<ImportCandidate> expand_import_paths(const std::vector<std::string>&
         if (it->is_directory()) it.disable_recursion_pending();
         continue;
       }
-      if (it->is_regular_file()) found.push_back(it->path().string());
+      // A folder may hold the workspace being imported into (a lab's folder): it is no data, and reading it would
+      // drop this process's locks on it (store/open_workspaces.h).
+      if (it->is_regular_file() && !is_open_workspace(it->path().string())) found.push_back(it->path().string());
     }
     if (ec) throw ImportError(ImportErrorCategory::Io, {p, 0, 0, {}}, "cannot list folder: " + ec.message());
     std::sort(found.begin(), found.end());  // std::string's < compares bytes: no locale, no file-system order
