@@ -115,6 +115,7 @@ MainWindow::MainWindow(QWidget* parent)
   // One battery for both tabs: the Platforms tab offers (and by default uses) what the Battery tab shows.
   connect(battery_, &BatteryView::setup_changed, this,
           [this] { platforms_->set_battery_tab_setup(battery_->setup(), battery_->modified()); });
+  connect(battery_, &BatteryView::setup_edited, platforms_, &PlatformView::battery_tab_edited);
   tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
   tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   connect(pipeline_, &PipelineView::run_measured, this, [this](const PipelineRun& run) {
