@@ -44,7 +44,9 @@ ExportTable headroom_table(const HeadroomMeasurement& m, const std::string& sour
       std::string thread = std::to_string(th.index);
       if (th.cpu) thread += " (CPU " + std::to_string(*th.cpu) + ")";
       std::string load = "–";
-      if (p.achieved_rate) load = format("%.3g", *p.achieved_rate) + " " + p.rate_unit;
+      if (p.achieved_rate)
+        load = rate_text(*p.achieved_rate) + (p.target_rate ? " of " + rate_text(*p.target_rate) : "") + " " +
+               p.rate_unit + (load_not_applied(p) ? " (not applied)" : "");
       std::string policy = th.policy.empty() ? "unknown" : th.policy;
       if (th.priority) policy += " " + std::to_string(*th.priority);
       // A summary without a histogram has no percentiles: a dash, never ">= 0 us".

@@ -241,10 +241,21 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
              if (!c.thread->misses) return std::nullopt;
              return static_cast<double>(c.thread->misses->longest_run);
            });
+    // A phase whose load fell short of its target measured the loop beside less load than asked: neither a pass nor
+    // a fail speaks for the load the robot will run (the checks keep their values, to be seen).
+    std::string not_applied;
+    for (const Candidate& c : cands)
+      if (load_not_applied(*c.phase) && not_applied.find(c.phase->name) == std::string::npos)
+        not_applied += (not_applied.empty() ? "" : "; ") + load_not_applied_text(*c.phase);
     const bool failed =
         std::any_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.actual && !k.met; });
-    v.status = failed ? LoopStatus::Fail : unknown ? LoopStatus::Unknown : LoopStatus::Pass;
-    if (failed) {
+    v.status = !not_applied.empty() ? LoopStatus::Unknown
+               : failed             ? LoopStatus::Fail
+               : unknown            ? LoopStatus::Unknown
+                                    : LoopStatus::Pass;
+    if (!not_applied.empty()) {
+      v.reason = not_applied;
+    } else if (failed) {
       // The term failed by the largest factor names the failure.
       const ConstraintCheck* worst = nullptr;
       double worst_ratio = 0;
@@ -283,20 +294,22 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
   return out;
 }
 
+std::vector<ConstraintCheck> loop_checks(const std::string& platform, std::span<const LoopVerdict> loop) {
+  const auto it = std::find_if(loop.begin(), loop.end(), [&](const LoopVerdict& l) { return l.platform == platform; });
+  if (it != loop.end() && it->status != LoopStatus::Unknown) return it->checks;
+  // Unknown is never passing: one check with no value says why; the terms that have values follow, to be seen.
+  std::vector<ConstraintCheck> out;
+  out.push_back({"control loop: " + (it == loop.end() ? std::string("no headroom measurement") : it->reason), "", 0,
+                 std::nullopt, false, 0});
+  if (it != loop.end())
+    for (const ConstraintCheck& k : it->checks)
+      if (k.actual) out.push_back(k);
+  return out;
+}
+
 void apply_loop(std::vector<PlatformVerdict>& verdicts, std::span<const LoopVerdict> loop) {
   for (PlatformVerdict& v : verdicts) {
-    const auto it =
-        std::find_if(loop.begin(), loop.end(), [&](const LoopVerdict& l) { return l.platform == v.platform; });
-    if (it == loop.end() || it->status == LoopStatus::Unknown) {
-      // Unknown is never passing: one check with no value says so.
-      v.checks.push_back(
-          {"control loop" + std::string(it == loop.end() ? "" : ": " + it->reason), "", 0, std::nullopt, false, 0});
-      if (it != loop.end())
-        for (const ConstraintCheck& k : it->checks)
-          if (k.actual) v.checks.push_back(k);
-    } else {
-      for (const ConstraintCheck& k : it->checks) v.checks.push_back(k);
-    }
+    for (ConstraintCheck& k : loop_checks(v.platform, loop)) v.checks.push_back(std::move(k));
     v.meets_all = std::all_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.met; });
   }
   PlatformVerdict* best = nullptr;

@@ -209,8 +209,10 @@ std::string difference(const Candidate& c, const Candidate& ref) {
   return join(d);
 }
 
-void check(Candidate& c, const Constraints& k) {
+void check(Candidate& c, const Constraints& k, const std::vector<headroom::LoopVerdict>* loop) {
   c.checks.clear();
+  if (loop)
+    for (ConstraintCheck& x : headroom::loop_checks(c.platform, *loop)) c.checks.push_back(std::move(x));
   if (k.power_budget_w) {
     ConstraintCheck x{"power budget", "W", *k.power_budget_w, c.power_w};
     x.met = c.power_w && *c.power_w <= *k.power_budget_w;
@@ -301,7 +303,7 @@ std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Con
   std::vector<std::tuple<std::string, std::string, std::string>> order;
   for (Candidate& c : all) {
     c.battery_runtime_h = runtime_h(c.power_w, options);
-    check(c, constraints);
+    check(c, constraints, in.loop);
     // A network not stated is never ranked with another: each such row is a class of its own.
     const bool unstated = c.network.empty() || c.network.find("not stated") != std::string::npos;
     const auto key = std::make_tuple(unstated ? c.network + " (" + c.source + ")" : c.network, c.scenario, c.precision);

@@ -13,6 +13,7 @@
 
 #include "analysis/library/library.h"
 #include "analysis/platform/platform_comparison.h"
+#include "headroom/loop_requirement.h"
 #include "model/dnn_run.h"
 #include "model/flops_run.h"
 #include "model/pipeline_run.h"
@@ -75,6 +76,9 @@ struct CandidateInputs {
   std::span<const ResultSet> result_sets;     // own: imported MLPerf LoadGen results (source_format mlperf-loadgen)
   std::vector<const LibraryResult*> library;  // published
   const Library* lib = nullptr;               // names of library computers
+  // With a control-loop requirement: its verdicts, whose checks join every row's (a published row has none: its
+  // loop is unknown and it never passes), so that no class picks a row the Platforms verdict would reject.
+  const std::vector<headroom::LoopVerdict>* loop = nullptr;
 };
 
 // The network names of all sources in one spelling: "resnet"/"ResNet-50" -> "resnet50"; "ssd-small"/
