@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headroom/loop_requirement.h"
+#include "util/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,11 +30,6 @@ double number_with_unit(const std::string& term, const std::string& text,
   std::string names;
   for (const auto& u : units) names += (names.empty() ? "" : ", ") + u.first;
   bad(term, "'" + text + "' needs a unit (" + names + ")");
-}
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
 }
 
 std::string us_text(double us) {
