@@ -3,21 +3,13 @@
 
 #include <cstdio>
 
+#include "util/text.h"
+
 namespace bs::headroom {
-namespace {
-
-std::string format(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
-}  // namespace
-
 std::string latency_text(std::int64_t ns) {
   const double us = static_cast<double>(ns) / 1000.0;
-  if (ns % 1000 == 0 || us >= 100) return format("%.0f us", us);
-  return format("%.1f us", us);
+  if (ns % 1000 == 0 || us >= 100) return format_number("%.0f us", us);
+  return format_number("%.1f us", us);
 }
 
 std::string latency_text(const HistogramPercentile& p) { return (p.at_least ? ">= " : "") + latency_text(p.ns); }
@@ -26,7 +18,7 @@ std::string misses_text(const LatencySummary& s) {
   if (!s.misses) return "–";
   const std::string at_least = s.misses_exact ? "" : ">= ";
   const double pct = s.miss_percent();
-  const std::string p = pct == 0 ? "0 %" : pct < 0.01 ? format("%.4f %%", pct) : format("%.2f %%", pct);
+  const std::string p = pct == 0 ? "0 %" : pct < 0.01 ? format_number("%.4f %%", pct) : format_number("%.2f %%", pct);
   return at_least + p + " (" + at_least + std::to_string(*s.misses) + ")";
 }
 
@@ -51,11 +43,11 @@ ExportTable headroom_table(const HeadroomMeasurement& m, const std::string& sour
       if (th.priority) policy += " " + std::to_string(*th.priority);
       // A summary without a histogram has no percentiles: a dash, never ">= 0 us".
       const auto pct = [&](const HistogramPercentile& q) { return s.no_distribution ? "–" : latency_text(q); };
-      t.rows.push_back({p.name, thread, th.period_ns > 0 ? format("%.0f", th.rate_hz()) : "–", pct(s.p50), pct(s.p99),
-                        pct(s.p999), pct(s.p9999), s.max_ns ? latency_text(*s.max_ns) : "–", misses_text(s),
+      t.rows.push_back({p.name, thread, th.period_ns > 0 ? format_number("%.0f", th.rate_hz()) : "–", pct(s.p50),
+                        pct(s.p99), pct(s.p999), pct(s.p9999), s.max_ns ? latency_text(*s.max_ns) : "–", misses_text(s),
                         s.longest_miss_run ? std::to_string(*s.longest_miss_run) : "–",
                         s.cycles > 0 || !s.no_distribution ? std::to_string(s.cycles) : "–", load,
-                        p.mean_power_w ? format("%.2f", *p.mean_power_w) : "–", policy});
+                        p.mean_power_w ? format_number("%.2f", *p.mean_power_w) : "–", policy});
     }
   // The deadline each thread was judged against, and every flag, under the table.
   for (const Phase& p : m.phases)

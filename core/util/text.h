@@ -13,4 +13,10 @@ std::string_view trim(std::string_view s);
 // A..Z to a..z; every other byte as it is (UTF-8 stays intact).
 std::string lower(std::string_view s);
 
+// One double through a printf format ("%.2f", "%.3g", "%+.1f %%"): the one number formatter of the tables, the
+// report and the CLI (issue #52: six copies, each with its own buffer size). Any length fits.
+std::string format_number(const char* printf_format, double v);
+// `v` with exactly `digits` decimals (0..17), as printf's "%.*f" writes it; any finite double fits.
+std::string fixed(double v, int digits);
+
 }  // namespace bs

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The shared text helpers (util/text.h): ASCII white space off both ends, ASCII lower case, UTF-8 left intact
-// whatever the C library's locale says.
+// whatever the C library's locale says; numbers through a printf format, of any length, and with fixed decimals.
 #include <clocale>
 
 #include <QTest>
@@ -25,6 +25,17 @@ class TestText : public QObject {
     std::setlocale(LC_ALL, "C.UTF-8");
     QCOMPARE(bs::lower("\xc3\x84RM"), std::string("\xc3\x84rm"));
     std::setlocale(LC_ALL, "C");
+  }
+
+  void formats_numbers_of_any_length() {
+    QCOMPARE(bs::format_number("%.2f W", 9.4849), std::string("9.48 W"));
+    QCOMPARE(bs::format_number("%+.1f %%", 2.25), std::string("+2.2 %"));
+    // 1e300 in fixed notation is 301 digits before the point: more than any fixed buffer of the old copies held.
+    QCOMPARE(bs::format_number("%.0f", 1e300).size(), std::size_t{301});
+    QCOMPARE(bs::fixed(1.005, 2), bs::format_number("%.2f", 1.005));
+    QCOMPARE(bs::fixed(2.5, 0), std::string("2"));  // round half to even, as printf
+    QCOMPARE(bs::fixed(-0.125, 2), std::string("-0.12"));
+    QCOMPARE(bs::fixed(3, 3), std::string("3.000"));
   }
 };
 
