@@ -106,6 +106,9 @@ class TestMlperfLoadgen : public QObject {
     const auto& result = find(s, "result: Samples per query");
     QCOMPARE(result.values.at(0), 102.0);
     QCOMPARE(result.unit, std::string(""));
+    // Its rate as the library has it: streams / the 50 ms latency bound ("target_latency (ns): 50000000").
+    QVERIFY(near(find(s, "samples per second").values.at(0), 2040.0));
+    QCOMPARE(setting(s, "throughput"), std::string("streams / latency bound"));
     // The per-sample block (line 32 on), not the per-query one above it: "Mean latency (ns) : 43945734".
     QVERIFY(near(find(s, "mean latency").values.at(0), 43945734e-9));
     QVERIFY(near(find(s, "p99 latency").values.at(0), 45119072e-9));
