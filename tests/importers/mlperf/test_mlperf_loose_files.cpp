@@ -185,7 +185,11 @@ class TestMlperfLooseFiles : public QObject {
     QVERIFY(std::any_of(b.warnings.begin(), b.warnings.end(), [&](const std::string& w) {
       return w.find("without LoadGen's power_begin/power_end in " + detail.string()) != std::string::npos;
     }));
-    QVERIFY(!metric(b.result_sets.at(0), "mean power"));
+    // The power log is still the result's own (#51): its whole-log mean, flagged, and no MLPerf power metric.
+    QVERIFY(metric(b.result_sets.at(0), "mean power"));
+    QVERIFY(setting(b.result_sets.at(0), "power window").starts_with("whole log"));
+    QVERIFY(!metric(b.result_sets.at(0), "energy per sample"));
+    QCOMPARE(setting(b.result_sets.at(0), "power metric"), std::string("(absent)"));
   }
 
   // Issue #51's done-when: a folder of loose files as a lab names them imports with every computer named (from the
