@@ -26,7 +26,7 @@ class TestImportWarningsDialog : public QObject {
     QVERIFY(!d.isModal());
     QCOMPARE(d.list()->count(), 3);
     QCOMPARE(d.list()->item(1)->text(), QString("warning: a_spl.txt: its mean is over the whole log"));
-    QVERIFY(d.text().startsWith("Imported 2 files"));
+    QVERIFY2(d.text().startsWith("Imported 2 file(s), skipped 1, 2 warning(s)"), qPrintable(d.text()));
     // The next import replaces the list.
     r.warnings.clear();
     r.skipped.clear();
