@@ -51,6 +51,7 @@
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "workspace/import_controller.h"
+#include "workspace/import_warnings_dialog.h"
 #include "workspace/recent_files.h"
 #include "workspace/workspace_tree.h"
 
@@ -342,6 +343,13 @@ void MainWindow::show_import_report(const ImportReport& r) {
   statusBar()->showMessage(
       r.failures.isEmpty() && !m.lines.isEmpty() ? m.headline + " — " + m.lines.join("; ") : m.headline,
       r.warnings.isEmpty() ? 10000 : 60000);
+  // Warnings are listed, each whole, in a window that does not block the views they explain (issue #51).
+  if (!r.warnings.isEmpty()) {
+    if (!import_warnings_) import_warnings_ = new ImportWarningsDialog(this);
+    import_warnings_->set_report(r);
+    import_warnings_->show();
+    import_warnings_->raise();
+  }
   if (r.failures.isEmpty()) return;
   const QString text =
       tr("%n file(s) could not be imported; nothing of them was stored.", nullptr, static_cast<int>(r.failures.size()));

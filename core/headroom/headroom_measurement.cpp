@@ -139,7 +139,7 @@ std::vector<std::string> flags(const HeadroomMeasurement& m) {
     out.push_back("CPU governor " + m.kernel.governor);
   if (overflow) out.push_back("latencies beyond the " + std::to_string(limit_us) + " us histogram (max kept)");
   if (histogram_misses && !summary_only) out.push_back("misses counted from the histogram: no run lengths");
-  if (summary_only) out.push_back("summary only (no histogram): percentiles and misses unknown");
+  if (summary_only) out.push_back("summary only (no histogram): percentiles and misses not in the file");
   return out;
 }
 

@@ -41,8 +41,10 @@ ExportTable headroom_table(const HeadroomMeasurement& m, const std::string& sour
                p.rate_unit + (load_not_applied(p) ? " (not applied)" : "");
       std::string policy = th.policy.empty() ? "unknown" : th.policy;
       if (th.priority) policy += " " + std::to_string(*th.priority);
-      // A summary without a histogram has no percentiles: a dash, never ">= 0 us".
-      const auto pct = [&](const HistogramPercentile& q) { return s.no_distribution ? "–" : latency_text(q); };
+      // A summary without a histogram has no percentiles: the cell says they are not in the file, never ">= 0 us".
+      const auto pct = [&](const HistogramPercentile& q) {
+        return s.no_distribution ? std::string("not in the file") : latency_text(q);
+      };
       t.rows.push_back({p.name, thread, th.period_ns > 0 ? format_number("%.0f", th.rate_hz()) : "–", pct(s.p50),
                         pct(s.p99), pct(s.p999), pct(s.p9999), s.max_ns ? latency_text(*s.max_ns) : "–", misses_text(s),
                         s.longest_miss_run ? std::to_string(*s.longest_miss_run) : "–",
