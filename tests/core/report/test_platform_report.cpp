@@ -221,7 +221,7 @@ class TestPlatformReport : public QObject {
     c.origin = bs::DataOrigin::Published;
     c.throughput_per_s = 1586;
     c.source = "https://github.com/mlcommons/inference_results_v3.0/blob/1948f9b/closed/NVIDIA/x.txt";
-    in.candidates = bs::CandidatesSectionInput{{{"resnet50", "SingleStream", "int8", {c}}}, {}, "orin", "", ""};
+    in.candidates = bs::CandidatesSectionInput{{{"resnet50", "SingleStream", "int8", "", {c}}}, {}, "orin", "", ""};
     const std::string html = bs::report_html(in);
     const auto at = html.find("<h2>Candidates</h2>");
     QVERIFY(at != std::string::npos);
