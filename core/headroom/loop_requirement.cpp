@@ -239,10 +239,14 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
            });
     // A phase whose load fell short of its target measured the loop beside less load than asked: neither a pass nor
     // a fail speaks for the load the robot will run (the checks keep their values, to be seen).
+    // `cands` holds each phase's threads one after another: a phase is named once, at its first thread.
     std::string not_applied;
+    const Phase* named = nullptr;
     for (const Candidate& c : cands)
-      if (load_not_applied(*c.phase) && not_applied.find(c.phase->name) == std::string::npos)
+      if (c.phase != named && load_not_applied(*c.phase)) {
         not_applied += (not_applied.empty() ? "" : "; ") + load_not_applied_text(*c.phase);
+        named = c.phase;
+      }
     const bool failed =
         std::any_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.actual && !k.met; });
     v.status = !not_applied.empty() ? LoopStatus::Unknown
