@@ -66,6 +66,12 @@ COMPUTERS = [
     ("jetson-xavier-nx", "NVIDIA Jetson Xavier NX", ["xavier-nx"], ""),
     ("jetson-tx2", "NVIDIA Jetson TX2", ["tx2"], ""),
     ("jetson-nano", "NVIDIA Jetson Nano", ["nano"], ""),
+    ("jetson-orin-nano", "NVIDIA Jetson Orin Nano", ["orin-nano"], ""),
+    ("jetson-agx-thor", "NVIDIA Jetson AGX Thor", ["thor", "agx-thor"], ""),
+    ("jetson-thor-t4000", "NVIDIA Jetson Thor T4000", ["t4000", "thor-t4000"], ""),
+    ("nvidia-dgx-spark", "NVIDIA DGX Spark", ["dgx-spark", "spark"], ""),
+    ("x86-rtx4090", "x86_64 PC with NVIDIA GeForce RTX 4090 (CPU not named)", ["rtx4090", "x86-4090"], ""),
+    ("x86-rtx5090", "x86_64 PC with NVIDIA GeForce RTX 5090 (CPU not named)", ["rtx5090", "x86-5090"], ""),
     ("raspberry-pi-4", "Raspberry Pi 4 Model B", ["pi4", "rpi4"], ""),
     ("raspberry-pi-cm4", "Raspberry Pi Compute Module 4", ["cm4"], ""),
     ("raspberry-pi-5", "Raspberry Pi 5 Model B", ["pi5", "rpi5"], ""),
@@ -677,9 +683,45 @@ def trt_results(kept_path, url, date, computer, why):
 
 
 # ROS 2 graph benchmarks: (file in new/ros2/, repository, commit, path there, computer the path or file names).
+_R2B = "NVIDIA-ISAAC-ROS/ros2_benchmark"
+_IRB = "NVIDIA-ISAAC-ROS/isaac_ros_benchmark"
+_IRB_AT = "9741686b4c5390e2523e879c234f994077985547"
 ROS2_BENCHMARK = [
-    ("ros2bench_rectify_agx_orin_2023-05.json", "NVIDIA-ISAAC-ROS/ros2_benchmark",
+    ("ros2bench_rectify_agx_orin_2023-05.json", _R2B,
      "18690995911e4da57e6f601b985189b03979040d", "results/image_proc_rectify_node-agx_orin.json", "jetson-agx-orin"),
+    # Added for issue #51 (new/ros2/SOURCES.md): each file's own date and ROS 2 distribution say its release.
+    ("ros2bench_rectify_agx_xavier_2023-05.json", _R2B, "7f77426830559e6070a51c324ec6264fbe2efb9a",
+     "results/image_proc_rectify_node-agx_xavier.json", "jetson-agx-xavier"),
+    ("ros2bench_rectify_orin_nx_2023-05.json", _R2B, "54d3000dbf919555c9e097256f697c20b7ad55b6",
+     "results/image_proc_rectify_node-orin_nx.json", "jetson-orin-nx"),
+    ("ros2bench_rectify_x86_rtx4090_2023-05.json", _R2B, "54d3000dbf919555c9e097256f697c20b7ad55b6",
+     "results/image_proc_rectify_node-x86_4090.json", "x86-rtx4090"),
+    ("ros2bench_stereo_disparity_orin_nano_2023-05.json", _R2B, "54d3000dbf919555c9e097256f697c20b7ad55b6",
+     "results/stereo_image_proc_node-orin_nano.json", "jetson-orin-nano"),
+    ("ros2bench_stereo_disparity_agx_orin_2023-05.json", _R2B, "54d3000dbf919555c9e097256f697c20b7ad55b6",
+     "results/stereo_image_proc_node-agx_orin.json", "jetson-agx-orin"),
+    ("ros2bench_stereo_disparity_orin_nx_2023-05.json", _R2B, "54d3000dbf919555c9e097256f697c20b7ad55b6",
+     "results/stereo_image_proc_node-orin_nx.json", "jetson-orin-nx"),
+    ("ros2bench_rectify_agx_thor_2025-10.json", _R2B, "999ed5e8c7da3f4f550829396d58d589f490e681",
+     "results/image_proc_rectify_node-agx_thor.json", "jetson-agx-thor"),
+    ("ros2bench_rectify_x86_rtx5090_2025-10.json", _R2B, "999ed5e8c7da3f4f550829396d58d589f490e681",
+     "results/image_proc_rectify_node-x86-5090.json", "x86-rtx5090"),
+    ("isaacbench_rectify_agx_thor_2026-02.json", _IRB, _IRB_AT, "results/image_proc_rectify_node-agx_thor.json",
+     "jetson-agx-thor"),
+    ("isaacbench_gpu_rectify_agx_thor_2026-02.json", _IRB, _IRB_AT, "results/isaac_ros_rectify_node-agx_thor.json",
+     "jetson-agx-thor"),
+    ("isaacbench_rectify_dgx_spark_2026-02.json", _IRB, _IRB_AT, "results/image_proc_rectify_node-dgx_spark.json",
+     "nvidia-dgx-spark"),
+    ("isaacbench_gpu_rectify_dgx_spark_2026-02.json", _IRB, _IRB_AT, "results/isaac_ros_rectify_node-dgx_spark.json",
+     "nvidia-dgx-spark"),
+    ("isaacbench_rectify_thor_t4000_2026-02.json", _IRB, _IRB_AT, "results/image_proc_rectify_node-thor-t4000.json",
+     "jetson-thor-t4000"),
+    ("isaacbench_gpu_rectify_thor_t4000_2026-02.json", _IRB, _IRB_AT,
+     "results/isaac_ros_rectify_node-thor-t4000.json", "jetson-thor-t4000"),
+    ("isaacbench_rectify_x86_rtx5090_2026-02.json", _IRB, _IRB_AT, "results/image_proc_rectify_node-x86-5090.json",
+     "x86-rtx5090"),
+    ("isaacbench_gpu_rectify_x86_rtx5090_2026-02.json", _IRB, _IRB_AT,
+     "results/isaac_ros_rectify_node-x86-5090.json", "x86-rtx5090"),
 ]
 ROBOTPERF = [
     ("robotperf_c1_rrbot_joint_trajectory_controller_benchmark.yaml", "robotperf/benchmarks",
@@ -696,7 +738,23 @@ ROS2_FIELDS = [
     ("BasicPerformanceMetrics.MEAN_JITTER", "jitter ('mean')", "s", 1e-3,
      "the LARGEST of the runs' mean frame-to-frame jitters: a maximum, despite its name"),
     ("CPUProfilingMetrics.MEAN_CPU_UTIL", "CPU use", "%", 1, "mean CPU use, % of all cores"),
+    # The 2024+ schema names the same CPU use ResourceMetrics.MEAN_OVERALL_CPU_UTILIZATION.
+    ("ResourceMetrics.MEAN_OVERALL_CPU_UTILIZATION", "CPU use", "%", 1, "mean CPU use, % of all cores"),
 ]
+
+
+def ros2_release(meta):
+    """The release a ros2_benchmark result ran with, from the file's own facts: the month of TEST_DATETIME and the
+    ROS 2 distribution of TEST_FILE_PATH (/opt/ros/<distro>/...). default_config_version is 0.30.0 in every release
+    from 2023 to 2026, so it tells none apart (the same as importers/ros2/ros2_benchmark_json.cpp)."""
+    parts = []
+    date = meta.get("BenchmarkMetadata.TEST_DATETIME", "")
+    if len(date) >= 7:
+        parts.append("run " + date[:7])
+    m = re.search(r"/opt/ros/([^/]+)/", meta.get("BenchmarkMetadata.TEST_FILE_PATH", ""))
+    if m:
+        parts.append("ROS 2 " + m.group(1))
+    return ", ".join(parts)
 
 
 def ros2_file(name):
@@ -716,30 +774,34 @@ def ros2_benchmark_results(name, repo, commit, path, computer):
     bench = meta["BenchmarkMetadata.NAME"]
     config = meta.get("BenchmarkMetadata.CONFIG", "")
     m = re.search(r"default_config_version: (\S+)", config)
-    release = "ros2_benchmark config " + m.group(1) if m else "not stated"
+    tool = "isaac_ros_benchmark" if repo == _IRB else "ros2_benchmark"
+    facts = ros2_release(meta)
+    release = tool + " " + facts if facts else "not stated"
     inp = doc.get("custom", {}).get("data_resolution", "not stated")
     out = []
     runs = [("peak", doc, 0)] + [(k, v, None) for k, v in doc.items() if k.endswith("fps") and isinstance(v, dict)]
     for run, obj, _ in runs:
         # The line of each key: the first after the run's own key line ("10.0fps": {).
-        start = 0 if run == "peak" else next(i for i, l in enumerate(lines) if l.strip().startswith('"%s"' % run))
+        # Some results are one line of JSON (the 2023 files at 54d3000): the line then holds every key.
+        start = 0 if run == "peak" else next(i for i, l in enumerate(lines) if '"%s":' % run in l)
         for key, measure, unit, scale, meaning in ROS2_FIELDS:
             if key not in obj or (run != "peak" and measure != "CPU use"):
                 continue
-            no = next(i for i in range(start, len(lines)) if lines[i].strip().startswith('"%s"' % key)) + 1
-            rate = "at peak throughput" if run == "peak" else "at " + run
+            no = next(i for i in range(start, len(lines)) if '"%s"' % key in lines[i]) + 1
+            rate = "at peak throughput" if run == "peak" else "at " + run + " (one run at a fixed rate)"
             out.append({"kind": "ros2-benchmark", "computer": computer, "device": meta.get(
                 "BenchmarkMetadata.DEVICE_ARCH", ""), "measure": "%s, %s" % (measure, rate),
                 "benchmark": bench, "input": inp, "release": release, "statistic": meaning,
                 "precision": "not applicable", "value": obj[key] * scale, "unit": unit,
                 "round": "ros2_benchmark results", "date": meta.get("BenchmarkMetadata.TEST_DATETIME", "")[:10],
-                "conditions": {"kernel": meta.get("BenchmarkMetadata.DEVICE_OS", ""),
-                               "computer named by": "the repository path " + path},
-                "software": "NVIDIA ros2_benchmark (" + release + ")",
+                "conditions": dict({"kernel": meta.get("BenchmarkMetadata.DEVICE_OS", ""),
+                                    "computer named by": "the repository path " + path},
+                                   **({"config version": m.group(1)} if m else {})),
+                "software": "NVIDIA " + tool + " (" + release + ")",
                 "source": {"url": f"https://github.com/{repo}/blob/{commit}/{path}", "repository": repo,
                            "commit": commit, "path": path, "lines": {key: no},
                            "kept": "../../new/ros2/" + name, "licence": "Apache-2.0"},
-                "id": "ros2bench-%s-%s-%s-%s" % (computer, bench.split("::")[-1].split()[0].lower(),
+                "id": "%s-%s-%s-%s-%s" % ("isaacbench" if repo == _IRB else "ros2bench", computer, bench.split("::")[-1].split()[0].lower(),
                                                   measure.split()[0].strip("'(").lower(), run.replace(".0", ""))})
     return out
 

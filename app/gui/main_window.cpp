@@ -48,6 +48,7 @@
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "workspace/import_controller.h"
+#include "workspace/import_warnings_dialog.h"
 #include "workspace/recent_files.h"
 #include "workspace/workspace_tree.h"
 
@@ -112,6 +113,7 @@ MainWindow::MainWindow(QWidget* parent)
   // One battery for both tabs: the Platforms tab offers (and by default uses) what the Battery tab shows.
   connect(battery_, &BatteryView::setup_changed, this,
           [this] { platforms_->set_battery_tab_setup(battery_->setup(), battery_->modified()); });
+  connect(battery_, &BatteryView::setup_edited, platforms_, &PlatformView::battery_tab_edited);
   tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
   tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   connect(pipeline_, &PipelineView::run_measured, this, [this](const PipelineRun& run) {
@@ -299,6 +301,13 @@ void MainWindow::show_import_report(const ImportReport& r) {
   statusBar()->showMessage(
       r.failures.isEmpty() && !m.lines.isEmpty() ? m.headline + " — " + m.lines.join("; ") : m.headline,
       r.warnings.isEmpty() ? 10000 : 60000);
+  // Warnings are listed, each whole, in a window that does not block the views they explain (issue #51).
+  if (!r.warnings.isEmpty()) {
+    if (!import_warnings_) import_warnings_ = new ImportWarningsDialog(this);
+    import_warnings_->set_report(r);
+    import_warnings_->show();
+    import_warnings_->raise();
+  }
   if (r.failures.isEmpty()) return;
   const QString text =
       tr("%n file(s) could not be imported; nothing of them was stored.", nullptr, static_cast<int>(r.failures.size()));

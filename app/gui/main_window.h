@@ -26,6 +26,7 @@ class QSplitter;
 namespace bs::ui {
 
 class PowerTraceLoader;
+class ImportWarningsDialog;
 class FlopsPlot;
 class PeakTableView;
 class ImportController;
@@ -146,6 +147,12 @@ class MainWindow : public QMainWindow {
   std::vector<PipelineRun> pipeline_runs() const;
   void refresh_views();
   void show_import_report(const ImportReport& report);
+
+ public:
+  // The last import's warnings, listed (nullptr before an import with warnings).
+  ImportWarningsDialog* import_warnings() const { return import_warnings_; }
+
+ private:
   void save_as();
   // File > Save (Ctrl+S): the workspace file holds every edit the moment it is made (one SQLite transaction each), so
   // Save keeps an untitled workspace under a name (Save as) and otherwise says that nothing is waiting; a lens tuned
@@ -189,8 +196,9 @@ class MainWindow : public QMainWindow {
   HeadroomView* headroom_ = nullptr;
   std::vector<LogChoiceBar*> log_choices_;  // above Efficiency, Battery and Platforms: each platform's power log
   QLabel* status_label_ = nullptr;          // workspace path and run counts
-  QLabel* save_state_ = nullptr;            // "Edits are written at once to …" / "Untitled: …" (permanent, right)
-  QUndoStack* edits_ = nullptr;             // renames and removals in the workspace tree; cleared when another opens
+  ImportWarningsDialog* import_warnings_ = nullptr;  // not modal; created on the first import with warnings
+  QLabel* save_state_ = nullptr;  // "Edits are written at once to …" / "Untitled: …" (permanent, right)
+  QUndoStack* edits_ = nullptr;   // renames and removals in the workspace tree; cleared when another opens
   QAction* undo_edit_ = nullptr;
   QAction* redo_edit_ = nullptr;
   PowerTraceLoader* trace_loader_ = nullptr;           // samples of long power logs, loaded after the window shows

@@ -32,7 +32,7 @@ void MainWindow::compare_with_workspace() {
                                                      tr("BenchScope workspace (*.bsw);;All files (*)"));
   if (other.isEmpty()) return;
   try {
-    const Workspace b(other.toStdString());
+    const Workspace b(other.toStdString(), Workspace::OpenMode::ReadOnly);
     std::vector<FlopsRun> runs_a, runs_b;
     std::vector<ResultSet> sets_a, sets_b;
     for (const StoredRun& r : workspace_->runs()) runs_a.push_back(r.run);

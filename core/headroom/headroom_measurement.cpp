@@ -2,6 +2,8 @@
 #include "headroom/headroom_measurement.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 namespace bs::headroom {
 
@@ -84,8 +86,30 @@ std::string HeadroomMeasurement::bookkeeping_error() const {
   return {};
 }
 
+bool load_not_applied(const Phase& p) {
+  return p.target_rate && p.achieved_rate && *p.target_rate > 0 &&
+         *p.achieved_rate < (1 - kLoadShortfall) * *p.target_rate;
+}
+
+std::string rate_text(double rate) {
+  char text[32];
+  std::snprintf(text, sizeof text, std::abs(rate) >= 100 ? "%.0f" : "%.3g", rate);
+  return text;
+}
+
+std::string load_not_applied_text(const Phase& p) {
+  if (!load_not_applied(p)) return {};
+  char share[16];
+  std::snprintf(share, sizeof share, "%.0f %%", 100 * *p.achieved_rate / *p.target_rate);
+  return "load not applied: " + p.name + " ran at " + rate_text(*p.achieved_rate) + " of " + rate_text(*p.target_rate) +
+         " " + p.rate_unit + " (" + share + ")";
+}
+
 std::vector<std::string> flags(const HeadroomMeasurement& m) {
   std::vector<std::string> out;
+  // First: it decides what the loop result beside that load means.
+  for (const Phase& p : m.phases)
+    if (load_not_applied(p)) out.push_back(load_not_applied_text(p) + ": the loop result beside it is unknown");
   std::vector<std::string> policies;
   bool unlocked = false, overflow = false, histogram_misses = false, summary_only = false;
   std::int64_t limit_us = 0;
@@ -115,7 +139,7 @@ std::vector<std::string> flags(const HeadroomMeasurement& m) {
     out.push_back("CPU governor " + m.kernel.governor);
   if (overflow) out.push_back("latencies beyond the " + std::to_string(limit_us) + " us histogram (max kept)");
   if (histogram_misses && !summary_only) out.push_back("misses counted from the histogram: no run lengths");
-  if (summary_only) out.push_back("summary only (no histogram): percentiles and misses unknown");
+  if (summary_only) out.push_back("summary only (no histogram): percentiles and misses not in the file");
   return out;
 }
 

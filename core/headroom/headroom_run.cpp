@@ -65,12 +65,7 @@ Phase measure(const RunConfig& config, Load* load, std::size_t index, std::size_
     LoadReport report = load->stop();
     phase.achieved_rate = report.achieved_rate;
     phase.notes = std::move(report.notes);
-    if (phase.target_rate && phase.achieved_rate && *phase.achieved_rate < 0.95 * *phase.target_rate) {
-      char text[160];
-      std::snprintf(text, sizeof text, "load fell short of its target: %.3g of %.3g %s", *phase.achieved_rate,
-                    *phase.target_rate, phase.rate_unit.c_str());
-      phase.notes.insert(phase.notes.begin(), text);
-    }
+    // A shortfall is a flag of the measurement (headroom::flags), shown in every view; no note repeats it.
     if (!phase.achieved_rate && !phase.rate_unit.empty())
       phase.notes.push_back("achieved rate unknown (the load did not report one)");
   }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headroom/loop_requirement.h"
+#include "util/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,11 +30,6 @@ double number_with_unit(const std::string& term, const std::string& text,
   std::string names;
   for (const auto& u : units) names += (names.empty() ? "" : ", ") + u.first;
   bad(term, "'" + text + "' needs a unit (" + names + ")");
-}
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
 }
 
 std::string us_text(double us) {
@@ -241,10 +237,25 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
              if (!c.thread->misses) return std::nullopt;
              return static_cast<double>(c.thread->misses->longest_run);
            });
+    // A phase whose load fell short of its target measured the loop beside less load than asked: neither a pass nor
+    // a fail speaks for the load the robot will run (the checks keep their values, to be seen).
+    // `cands` holds each phase's threads one after another: a phase is named once, at its first thread.
+    std::string not_applied;
+    const Phase* named = nullptr;
+    for (const Candidate& c : cands)
+      if (c.phase != named && load_not_applied(*c.phase)) {
+        not_applied += (not_applied.empty() ? "" : "; ") + load_not_applied_text(*c.phase);
+        named = c.phase;
+      }
     const bool failed =
         std::any_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.actual && !k.met; });
-    v.status = failed ? LoopStatus::Fail : unknown ? LoopStatus::Unknown : LoopStatus::Pass;
-    if (failed) {
+    v.status = !not_applied.empty() ? LoopStatus::Unknown
+               : failed             ? LoopStatus::Fail
+               : unknown            ? LoopStatus::Unknown
+                                    : LoopStatus::Pass;
+    if (!not_applied.empty()) {
+      v.reason = not_applied;
+    } else if (failed) {
       // The term failed by the largest factor names the failure.
       const ConstraintCheck* worst = nullptr;
       double worst_ratio = 0;
@@ -283,20 +294,22 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
   return out;
 }
 
+std::vector<ConstraintCheck> loop_checks(const std::string& platform, std::span<const LoopVerdict> loop) {
+  const auto it = std::find_if(loop.begin(), loop.end(), [&](const LoopVerdict& l) { return l.platform == platform; });
+  if (it != loop.end() && it->status != LoopStatus::Unknown) return it->checks;
+  // Unknown is never passing: one check with no value says why; the terms that have values follow, to be seen.
+  std::vector<ConstraintCheck> out;
+  out.push_back({"control loop: " + (it == loop.end() ? std::string("no headroom measurement") : it->reason), "", 0,
+                 std::nullopt, false, 0});
+  if (it != loop.end())
+    for (const ConstraintCheck& k : it->checks)
+      if (k.actual) out.push_back(k);
+  return out;
+}
+
 void apply_loop(std::vector<PlatformVerdict>& verdicts, std::span<const LoopVerdict> loop) {
   for (PlatformVerdict& v : verdicts) {
-    const auto it =
-        std::find_if(loop.begin(), loop.end(), [&](const LoopVerdict& l) { return l.platform == v.platform; });
-    if (it == loop.end() || it->status == LoopStatus::Unknown) {
-      // Unknown is never passing: one check with no value says so.
-      v.checks.push_back(
-          {"control loop" + std::string(it == loop.end() ? "" : ": " + it->reason), "", 0, std::nullopt, false, 0});
-      if (it != loop.end())
-        for (const ConstraintCheck& k : it->checks)
-          if (k.actual) v.checks.push_back(k);
-    } else {
-      for (const ConstraintCheck& k : it->checks) v.checks.push_back(k);
-    }
+    for (ConstraintCheck& k : loop_checks(v.platform, loop)) v.checks.push_back(std::move(k));
     v.meets_all = std::all_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.met; });
   }
   PlatformVerdict* best = nullptr;

@@ -52,6 +52,11 @@ struct LoopVerdict {
 
 // One verdict per platform named in `platforms` and per platform that has a measurement, ranked: passing ones first
 // (widest relative margin first), then failing ones (nearest first), then unknown ones.
+// The checks a platform's loop verdict adds to its decision (the Platforms verdicts, the candidates): a passing or
+// failing verdict's terms; for an unknown one (or none), one check without a value that says why, then the terms
+// that have values.
+std::vector<ConstraintCheck> loop_checks(const std::string& platform, std::span<const LoopVerdict> loop);
+
 std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const HeadroomMeasurement> measurements,
                                        const std::vector<std::string>& platforms);
 

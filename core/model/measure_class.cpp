@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/measure_class.h"
+#include "util/text.h"
 
 #include <array>
 #include <cctype>
@@ -8,12 +9,6 @@
 
 namespace bs {
 namespace {
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 bool has(const std::string& text, std::string_view word) { return text.find(word) != std::string::npos; }
 

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/host_clock.h"
+#include "util/text.h"
 
 namespace fs = std::filesystem;
 
@@ -24,11 +25,6 @@ namespace {
 std::string home() {
   const char* h = std::getenv("HOME");
   return h ? h : "";
-}
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
 }
 
 // Words of a config line: "Host a b" -> {"Host", "a", "b"}; "Host=a" -> {"Host", "a"}; quotes kept together.

@@ -35,17 +35,10 @@ std::string peak_detail(const PeakRow& p) {
 // "power budget (mean power): 9.48 W against at most 10 W (0.52 W to spare)".
 std::string check_text(const ConstraintCheck& k) {
   if (!k.actual) return k.name + ": no data";
-  const bool at_most = k.unit == "W";  // the power budget is a ceiling, frame rate and runtime are floors
+  const bool at_most = is_ceiling(k);
   return k.name + ": " + fixed(*k.actual) + " " + k.unit + " against " + (at_most ? "at most " : "at least ") +
          fixed(k.required) + " " + k.unit + " (" + fixed(std::abs(k.margin)) + " " + k.unit +
          (k.met ? " to spare)" : " short)");
-}
-
-// "mean power 40.52 W, 30.52 W over the budget": a failed check in a few words.
-std::string short_check(const ConstraintCheck& k) {
-  const bool at_most = k.unit == "W";
-  return k.name.substr(0, k.name.find(" (")) + " " + fixed(*k.actual) + " " + k.unit + " (" +
-         fixed(std::abs(k.margin)) + " " + k.unit + (at_most ? " over)" : " short)");
 }
 
 }  // namespace
@@ -81,10 +74,12 @@ void decision_section(const ReportInput& in, ReportBuilder& b) {
   for (std::size_t i = 0; i < in.verdicts.size(); ++i) {
     const PlatformVerdict& v = in.verdicts[i];
     if (v.recommended) continue;
+    // Every check that decided it, those without a value too (an unknown control loop, a frame rate without a
+    // pipeline run): before #50 those were left out, and a platform that met nothing was said to meet everything.
     std::string why = v.note.starts_with("no power log") ? "no power log" : v.note;
     for (const ConstraintCheck& k : v.checks)
-      if (!k.met && k.actual) why += (why.empty() ? "" : "; ") + short_check(k);
-    if (why.empty()) why = "meets the constraints with less trusted peak compute";
+      if (!k.met) why += (why.empty() ? "" : "; ") + unmet_text(k);
+    if (why.empty()) why = chosen ? "meets the constraints with less trusted peak compute" : "not ranked";
     auto it = std::find_if(reasons.begin(), reasons.end(), [&](const auto& r) { return r.first == why; });
     if (it == reasons.end())
       reasons.push_back({why, v.platform});

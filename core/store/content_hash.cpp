@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "store/open_workspaces.h"
 #include "store/workspace.h"
 
 namespace bs {
@@ -34,6 +35,7 @@ std::string hex(std::uint64_t h) {
 std::string content_hash(std::string_view bytes) { return hex(fnv1a(kFnvOffset, bytes.data(), bytes.size())); }
 
 std::string file_content_hash(const std::string& path) {
+  refuse_open_workspace(path, "hashing");
   std::ifstream f(path, std::ios::binary);
   if (!f) throw std::runtime_error(path + ": cannot read file to hash it");
   std::uint64_t h = kFnvOffset;

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/text.h"
+
 namespace bs {
 namespace {
 
@@ -23,13 +25,6 @@ std::string fingerprint(const FlopsRun& r) {
   return content_hash(s);
 }
 
-std::string trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t");
-  return std::string(text.substr(first, last - first + 1));
-}
-
 std::size_t utf8_chars(const std::string& s) {
   return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
 }
@@ -37,7 +32,7 @@ std::size_t utf8_chars(const std::string& s) {
 }  // namespace
 
 void set_run_label(Workspace& ws, const StoredRun& run, std::string_view label) {
-  const std::string text = trimmed(label);
+  const std::string text(trim(label));
   if (utf8_chars(text) > kMaxRunLabelChars)
     throw std::invalid_argument("run label longer than " + std::to_string(kMaxRunLabelChars) + " characters");
   if (std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))

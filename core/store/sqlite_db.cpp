@@ -15,6 +15,10 @@ Db::Db(const std::string& path, int flags, const std::string& label) : path_(lab
   }
   sqlite3_extended_result_codes(db_, 1);
   sqlite3_busy_timeout(db_, 5000);
+  // A reader never checkpoints on close: were it the last connection SQLite knows of, closing would fold the WAL
+  // into the file and delete it, and a writer in another process that lost its locks would write on into a
+  // deleted file. Reading must not change the file at all.
+  if (flags & SQLITE_OPEN_READONLY) sqlite3_db_config(db_, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
 }
 
 Db::~Db() { sqlite3_close_v2(db_); }

@@ -4,8 +4,6 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-
 #include <stdexcept>
 #include <string_view>
 
@@ -22,26 +20,34 @@ using sqlite::Transaction;
 
 namespace {
 
-// Reject what is not an SQLite file before SQLite touches it, so opening never alters a foreign file.
-void check_sqlite_header(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw WorkspaceError(WorkspaceError::Kind::Io, path + ": cannot open workspace");
-  char magic[16] = {};
-  f.read(magic, sizeof magic);
-  if (f.gcount() == 0) return;  // an empty file becomes a new workspace
-  if (f.gcount() < 16 || std::string_view(magic, 16) != std::string_view("SQLite format 3\0", 16))
+// Rejects what is not an SQLite file before SQLite reads it, so opening never alters a foreign file. The bytes are
+// read through SQLite's own descriptor of the file (SQLITE_FCNTL_FILE_POINTER), never a second one: closing any
+// descriptor of a file drops every POSIX lock this process holds on it, those of its other open connections
+// included (sqlite.org/howtocorrupt.html 2.2; issue #50: a GUI import unlocked the GUI's workspace this way, and a
+// CLI command then deleted the WAL the GUI still wrote into).
+void check_sqlite_header(const Db& db, const std::string& path) {
+  sqlite3_file* file = nullptr;
+  if (sqlite3_file_control(db.get(), "main", SQLITE_FCNTL_FILE_POINTER, &file) != SQLITE_OK || !file || !file->pMethods)
+    throw WorkspaceError(WorkspaceError::Kind::Io, path + ": cannot open workspace");
+  sqlite3_int64 size = 0;
+  if (file->pMethods->xFileSize(file, &size) != SQLITE_OK)
+    throw WorkspaceError(WorkspaceError::Kind::Io, path + ": cannot read the workspace's size");
+  if (size == 0) return;  // an empty file becomes a new workspace
+  unsigned char hdr[100] = {};
+  // A short read is SQLITE_IOERR_SHORT_READ with the rest zero-filled: the size says how much is real.
+  const int rc = file->pMethods->xRead(file, hdr, sizeof hdr, 0);
+  if (rc != SQLITE_OK && rc != SQLITE_IOERR_SHORT_READ)
+    throw WorkspaceError(WorkspaceError::Kind::Io, path + ": cannot read the workspace's header");
+  if (size < 16 || std::memcmp(hdr, "SQLite format 3\0", 16) != 0)
     throw WorkspaceError(WorkspaceError::Kind::NotAWorkspace,
                          path + ": is not a BenchScope workspace (not an SQLite database)");
+  if (size < 100)
+    throw WorkspaceError(WorkspaceError::Kind::Corrupt, path + ": workspace file is truncated (header incomplete)");
   // A truncated file (a copy cut short, a full disk) can still open, and SQLite only notices when a query happens
   // to read a missing page. The header records the page size (offset 16, big-endian, 1 meaning 65536) and, when
   // the "valid-for" counter (offset 92) equals the change counter (offset 24), the page count (offset 28): a file
   // shorter than that is damaged, unless a WAL file is beside it. A longer file is fine (SQLite does not always
   // shrink it).
-  unsigned char hdr[100] = {};
-  std::memcpy(hdr, magic, sizeof magic);
-  f.read(reinterpret_cast<char*>(hdr) + 16, 84);
-  if (f.gcount() < 84)
-    throw WorkspaceError(WorkspaceError::Kind::Corrupt, path + ": workspace file is truncated (header incomplete)");
   const auto be32 = [&](int at) {
     return (std::uint32_t{hdr[at]} << 24) | (std::uint32_t{hdr[at + 1]} << 16) | (std::uint32_t{hdr[at + 2]} << 8) |
            std::uint32_t{hdr[at + 3]};
@@ -53,10 +59,9 @@ void check_sqlite_header(const std::string& path) {
   std::error_code ec;
   // A process killed during a WAL checkpoint can leave page 1 (with the new page count) written before the file
   // grew; the WAL beside it still holds every page and SQLite completes the checkpoint on open. Found by the
-  // SIGKILL test (tests/app/workspace/test_import_kill.cpp).
+  // SIGKILL test (tests/app/workspace/test_import_kill.cpp). (file_size is a stat(): no descriptor.)
   if (std::filesystem::file_size(path + "-wal", ec) > 0 && !ec) return;
-  const std::uint64_t size = std::filesystem::file_size(path, ec);
-  if (!ec && size < pages * page_size)
+  if (static_cast<std::uint64_t>(size) < pages * page_size)
     throw WorkspaceError(WorkspaceError::Kind::Corrupt, path + ": workspace file is truncated (" +
                                                             std::to_string(size) + " bytes, its header says " +
                                                             std::to_string(pages * page_size) + ")");
@@ -72,8 +77,9 @@ Workspace::Workspace(const std::string& path, OpenMode mode) : impl_(std::make_u
   const bool existed = std::filesystem::exists(path, ec) && std::filesystem::file_size(path, ec) > 0;
   if (read_only && !existed)
     throw WorkspaceError(WorkspaceError::Kind::Io, path + ": no such workspace (or an empty file)");
-  if (existed) check_sqlite_header(path);
   w.db = std::make_unique<Db>(path, read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+  w.mark = OpenWorkspaceMark(path);  // the file exists now (SQLite opened or created it)
+  if (existed) check_sqlite_header(*w.db, path);
   std::int64_t app_id = 0;
   std::int64_t version = 0;
   try {

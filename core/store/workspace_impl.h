@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/import_limits.h"
+#include "store/open_workspaces.h"
 #include "store/sqlite_db.h"
 #include "store/workspace.h"
 
@@ -16,6 +17,8 @@ namespace bs {
 
 struct Workspace::Impl {
   std::string path;
+  // Declared before `db`, so it is unmarked only after the connection has closed (store/open_workspaces.h).
+  OpenWorkspaceMark mark;
   std::unique_ptr<sqlite::Db> db;
   int version = 0;
   bool read_only = false;  // opened for reading only (OpenMode::ReadOnly), or damaged until the user says

@@ -8,7 +8,9 @@
 #include <map>
 #include <memory>
 
+#include "mlperf/loose_files.h"
 #include "mlperf/mlperf_submission.h"
+#include "store/open_workspaces.h"
 #include "store/workspace.h"
 
 namespace bs {
@@ -30,7 +32,9 @@ std::vector<ImportCandidate> expand_import_paths(const std::vector<std::string>&
         if (it->is_directory()) it.disable_recursion_pending();
         continue;
       }
-      if (it->is_regular_file()) found.push_back(it->path().string());
+      // A folder may hold the workspace being imported into (a lab's folder): it is no data, and reading it would
+      // drop this process's locks on it (store/open_workspaces.h).
+      if (it->is_regular_file() && !is_open_workspace(it->path().string())) found.push_back(it->path().string());
     }
     if (ec) throw ImportError(ImportErrorCategory::Io, {p, 0, 0, {}}, "cannot list folder: " + ec.message());
     std::sort(found.begin(), found.end());  // std::string's < compares bytes: no locale, no file-system order
@@ -259,12 +263,13 @@ std::string tree_system(const std::string& path) {
   return to == std::string::npos ? std::string() : path.substr(from, to - from);
 }
 
-// Companion files of the LoadGen summaries among `files` (detail logs, spl.txt): read with their summary, so a
-// folder import does not take them again on their own -> the summary's path.
+// Companion files of the LoadGen summaries among `files` (detail logs, spl.txt, system and measurements JSONs):
+// read with their summary, so an import does not take them again on their own (a spl.txt would become a platform of
+// its own) -> the summary's path. A lab names summaries as it likes ("..._summary.txt"): the banner says what it is.
 std::map<std::string, std::string> summary_companions(const std::vector<ImportCandidate>& files) {
   std::map<std::string, std::string> out;
   for (const ImportCandidate& f : files) {
-    if (fs::path(f.path).filename().string().find("mlperf_log_summary") == std::string::npos) continue;
+    if (!mlperf_loose::run_prefix(fs::path(f.path).filename().string())) continue;
     std::string head;
     try {
       head = read_head(f.path, 4096);
@@ -275,6 +280,16 @@ std::map<std::string, std::string> summary_companions(const std::vector<ImportCa
     for (const std::string& c : mlperf_companion_paths(f.path)) out.emplace(c, f.path);
   }
   return out;
+}
+
+// "system description" / "measurements description" for an MLPerf JSON that describes a result but holds none.
+std::string mlperf_description(const std::string& path) {
+  if (!path.ends_with(".json")) return {};
+  try {
+    return mlperf_loose::description_kind(read_head(path, 64 * 1024));
+  } catch (const ImportError&) {
+    return {};  // unreadable: the import of the file says why
+  }
 }
 
 }  // namespace
@@ -300,10 +315,19 @@ ImportResult import_paths(const std::string& workspace_path, const std::vector<s
       result.cancelled = true;
       break;
     }
-    if (const auto c = companions.find(files[i].path); c != companions.end() && files[i].from_folder) {
+    // Named on the command line or found in a folder alike: a companion of a summary in this import is read with it.
+    if (const auto c = companions.find(files[i].path); c != companions.end()) {
       o.kind = FileOutcome::Kind::NotData;
       o.reason = "read with its LoadGen summary " + c->second + ", not on its own";
       o.read_with = c->second;
+      continue;
+    }
+    if (const std::string kind = mlperf_description(files[i].path); !kind.empty()) {
+      o.kind = FileOutcome::Kind::NotData;
+      o.reason = "an MLPerf " + kind +
+                 ": it holds no result and is read with the LoadGen summary it belongs to, and no summary in this "
+                 "import pairs with it (name each run's files with one prefix, or import the folder)";
+      o.computers = {tree_system(files[i].path)};
       continue;
     }
     try {

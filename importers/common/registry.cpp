@@ -29,6 +29,7 @@
 #include "runs/google_benchmark_json.h"
 #include "runs/pipeline_json.h"
 #include "runs/run_json.h"
+#include "store/open_workspaces.h"
 
 namespace bs {
 namespace {
@@ -67,6 +68,9 @@ std::vector<std::unique_ptr<Importer>> make_importers() {
 std::ifstream open_or_throw(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) io_error(path, "is a folder, not a file");
+  // Reading the workspace this process has open, and closing that descriptor, would drop its SQLite locks.
+  if (is_open_workspace(path))
+    io_error(path, "is the workspace open here, not a file to import (reading it would drop its locks)");
   std::ifstream f(path, std::ios::binary);
   if (!f) io_error(path, std::string("cannot open: ") + std::strerror(errno));
   return f;

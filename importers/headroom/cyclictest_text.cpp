@@ -254,9 +254,12 @@ class CyclictestTextParser {
     if (overflows_->values.size() == n + 1) check_footer_sum(*overflows_, "# Histogram Overflows", false);
     if (max_->values.size() == n + 1) check_footer_sum(*max_, "# Max Latencies", true);
 
-    // Rows stripped (no "# Histogram" line, no rows): the footer alone. With "# Histogram" present and no rows,
-    // every cycle overflowed (rt-tests >= 2.7 prints no row whose counts are all 0).
-    const bool summary = !have_rows && !histogram_line_;
+    // Rows stripped: the footer alone. Without a "# Histogram" line that is plain. With one, it depends on the
+    // format: rt-tests before 2.7 prints every row and then "# Total:", so "# Histogram" followed by "# Total:" and
+    // no row is a footer whose rows were stripped (the ros-realtime benchmark results publish cyclictest's output
+    // so); from 2.7 on (no "# Total:") empty rows are left out, and no row means every cycle overflowed.
+    const bool rows_stripped = !have_rows && (!histogram_line_ || total_);
+    const bool summary = rows_stripped;
     const std::size_t buckets = summary ? 0 : bucket_count();
     if (!summary && n * buckets > limits_.max_samples)
       throw ImportError(ImportErrorCategory::TooLarge, {file_, histogram_line_, 0, {}},
@@ -312,11 +315,19 @@ class CyclictestTextParser {
                                              std::to_string(n) + " threads of the histogram");
     if (summary)
       phase->notes.push_back(std::string(headroom_import::kSummaryOnlyNote) +
-                             " (the histogram rows were stripped; only the footer is left)");
+                             (histogram_line_ ? " (the histogram rows were stripped: '# Histogram' at line " +
+                                                    std::to_string(histogram_line_) +
+                                                    " is followed by the footer alone, per thread the cycles of "
+                                                    "'# Total:' plus the overflows, min, mean and max)"
+                                              : std::string(" (the histogram rows were stripped; only the footer "
+                                                            "is left)")));
     if (limit_unknown_)
       phase->notes.push_back(
           "histogram size not recorded (no -h/-H command line): its range is taken as up to the "
           "highest printed bucket, so overflows lie at least that far out");
+    if (avg_ && summary)
+      phase->notes.push_back(
+          "cyclictest's '# Avg Latencies' are whole units (truncated): the mean shown is that, not an exact mean");
     if (avg_ && !summary)
       phase->notes.push_back(
           "cyclictest's '# Avg Latencies' are whole units (truncated); the mean shown is the "
@@ -366,7 +377,7 @@ class CyclictestTextParser {
       m->command = command_->text;
       settings.emplace_back("command", command_->text);
     }
-    if (!rows_.empty() || histogram_line_)
+    if (!rows_.empty() || (histogram_line_ && !total_))
       settings.emplace_back("histogram format", total_ ? "every row and '# Total:' (rt-tests before 2.7)"
                                                        : "non-empty rows only (rt-tests 2.7 and later)");
     settings.emplace_back("latency unit", ns ? "ns (-N)" : (command_ || !status_.empty()) ? "us" : "us (assumed)");

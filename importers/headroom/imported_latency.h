@@ -18,7 +18,7 @@ inline constexpr std::string_view kImportedPhase = "as recorded";
 
 // Said in the phase notes of every thread that has no distribution.
 inline constexpr std::string_view kSummaryOnlyNote =
-    "summary only: the file keeps no histogram, so percentiles and deadline misses are unknown";
+    "summary only: the file keeps no histogram, so percentiles and deadline misses are not in the file";
 
 // A thread of which only summary statistics are known. The histogram has no bins; when n is known every cycle
 // counts as beyond its (empty) range, so cycles == bins + overflows still holds and nothing claims a distribution;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "util/cancel.h"
+#include "util/text.h"
 
 namespace bs::headroom_import {
 
@@ -38,7 +39,7 @@ class LineCursor {
 // what a carriage return inside the line overwrote (only the text after the last '\r' was left on screen).
 std::string strip_terminal_codes(std::string_view line);
 
-std::string_view trim(std::string_view s);
+using bs::trim;  // util/text.h
 
 // The words of `s`, split on spaces and tabs.
 std::vector<std::string_view> words_of(std::string_view s);

@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "analysis/library/precision_words.h"
 #include "analysis/power/power_time.h"
 #include "common/json_access.h"
 #include "mlperf/loadgen_detail.h"
+#include "mlperf/loose_files.h"
 #include "power/ptd_log.h"
 
 namespace bs {
@@ -60,6 +62,8 @@ void read_system(const MlperfCompanions& w, const ImportLimits& limits, ResultSe
     r.fail(ImportErrorCategory::WrongType, std::string("/") + key, "not a string or number");
   };
   if (const std::string name = text("system_name"); !name.empty()) set.platform = name;
+  // A system description with a submitter is a submission's: someone published it, this lab did not measure it.
+  if (!text("submitter").empty()) set.provenance.origin = DataOrigin::Published;
   const std::string accel = text("accelerator_model_name");
   const std::string accels = text("accelerators_per_node");
   const bool has_accel = !accel.empty() && accel != "N/A" && accel != "-" && accels != "0";
@@ -76,37 +80,80 @@ void read_system(const MlperfCompanions& w, const ImportLimits& limits, ResultSe
     if (const std::string v = text(key); !v.empty()) set.provenance.settings.emplace_back(key, v);
 }
 
-// Weight and input data types from the measurements JSON: "int8", "fp16", ...
-void read_precision(const MlperfCompanions& w, const ImportLimits& limits, ResultSet& set) {
+// The precision from the measurements JSON by the library's words-to-type rule (precision_words.h): the type the
+// weights end up in ("int8"), never the raw sentence, which is kept beside it. Words that name no type leave the
+// precision not stated, with a warning quoting them.
+void read_precision(const MlperfCompanions& w, const ImportLimits& limits, ResultSet& set,
+                    std::vector<std::string>& warnings) {
   if (w.measurements_json.empty()) return;
   const json_access::json j = json_access::parse(w.measurements_json, w.measurements_file, limits);
   const json_access::Reader r(w.measurements_file, w.measurements_json);
   r.require_object(j, "");
   const std::string weights = r.optional_string(j, "/weight_data_types", "weight_data_types");
+  const std::string transformations = r.optional_string(j, "/weight_transformations", "weight_transformations");
   const std::string inputs = r.optional_string(j, "/input_data_types", "input_data_types");
-  if (!weights.empty()) set.provenance.settings.emplace_back("precision", weights);
-  if (!inputs.empty() && inputs != weights) set.provenance.settings.emplace_back("input precision", inputs);
+  auto& st = set.provenance.settings;
+  if (!weights.empty()) st.emplace_back("stated weight data types", weights);
+  const auto p = precision_from_words(weights, transformations);
+  if (p) {
+    st.emplace_back("precision", p->type);
+    st.emplace_back("precision from", w.measurements_file + " (" + p->field + ")");
+  } else {
+    warnings.push_back(
+        w.measurements_file + ": weight_data_types '" + weights + "'" +
+        (transformations.empty() ? std::string() : " and weight_transformations '" + transformations + "'") +
+        " name no data type: the precision is \"not stated\"");
+  }
+  const auto input_type = precision_from_words(inputs, {});
+  const std::string input = input_type ? input_type->type : inputs;
+  if (!input.empty() && (!p || input != p->type)) st.emplace_back("input precision", input);
 }
 
 struct PowerResult {
   double mean_w = 0;
   double window_s = 0;
   std::size_t samples = 0;
+  bool whole_log = false;  // no LoadGen window: the mean over every sample of the log, not MLPerf's power
 };
+
+// The whole log's mean, when no detail log gives LoadGen's window: the result's own power still, but not MLPerf's
+// (the log runs before and after the measured queries), so the caller flags it and derives no energy per query.
+std::optional<PowerResult> whole_log_power(const PowerTrace& t, const std::string& file,
+                                           std::vector<std::string>& warnings) {
+  const PowerChannel* power = nullptr;
+  for (const PowerChannel& c : t.channels)
+    if (c.name == "power") power = &c;
+  if (!power) return std::nullopt;
+  PowerResult r;
+  r.whole_log = true;
+  double sum = 0;
+  for (double v : power->values)
+    if (!std::isnan(v)) {
+      sum += v;
+      ++r.samples;
+    }
+  if (r.samples == 0) {
+    warnings.push_back(file + ": no power sample in the log");
+    return std::nullopt;
+  }
+  r.mean_w = sum / static_cast<double>(r.samples);
+  return r;
+}
 
 // Mean power over LoadGen's power window from the PTDaemon log, as MLPerf's power result takes it.
 std::optional<PowerResult> window_power(const MlperfCompanions& w, const LoadgenDetail& d, const ImportLimits& limits,
                                         const CancelToken& cancel, std::vector<std::string>& warnings) {
   if (w.spl_text.empty()) return std::nullopt;
-  if (d.power_begin.empty() || d.power_end.empty()) {
-    warnings.push_back(w.spl_file + ": a power log without LoadGen's power_begin/power_end in " +
-                       (w.detail_file.empty() ? std::string("mlperf_log_detail.txt (absent)") : w.detail_file) +
-                       ": no energy per query");
-    return std::nullopt;
-  }
   const ImportBatch ptd = kPtdLogFileFormat.parse_text(w.spl_text, w.spl_file, {}, limits, cancel);
   if (ptd.power_traces.empty()) return std::nullopt;
   const PowerTrace& t = ptd.power_traces.front();
+  if (d.power_begin.empty() || d.power_end.empty()) {
+    warnings.push_back(w.spl_file + ": a power log without LoadGen's power_begin/power_end in " +
+                       (w.detail_file.empty() ? std::string("mlperf_log_detail.txt (absent)") : w.detail_file) +
+                       ": its mean is over the whole log, not MLPerf's power window (flagged), and no energy per "
+                       "query is derived");
+    return whole_log_power(t, w.spl_file, warnings);
+  }
   const auto start = parse_date_time(t.start_time);
   const auto begin = ptd_time_to_epoch(d.power_begin), end = ptd_time_to_epoch(d.power_end);
   if (!start || !begin || !end || *end <= *begin) {
@@ -137,39 +184,57 @@ std::optional<PowerResult> window_power(const MlperfCompanions& w, const Loadgen
   return r;
 }
 
+// MultiStream's rate as the library computes it (scripts/build-library.py): from v1.0 on, samples per query /
+// the official latency per query (3,656.8 /s for 8 samples in 2.188 ms, not 1 / latency = 457.1 /s); v0.5, whose
+// result is a number of streams, streams / the latency bound. Its definition is kept as the "throughput" setting,
+// and the official statistic as "latency statistic", in the library's words, so rows of one class compare alike.
+void multistream_rate(const LoadgenSummary& s, const LoadgenValue& official, const std::string& name, ResultSet& set) {
+  auto& st = set.provenance.settings;
+  const bool latency = official.key.find("(ns)") != std::string::npos || official.key.starts_with("Early stopping");
+  if (latency && s.samples_per_query && *s.samples_per_query > 0 && official.value > 0) {
+    const std::string stat =
+        official.key.starts_with("Early stopping") ? "p99 per query early-stopping estimate" : "p99 per query";
+    add(set, name, mlperf_metric::kSamplesPerSecond, "1/s", *s.samples_per_query / (official.value * kNs));
+    st.emplace_back("latency statistic", stat + " of " + fmt(*s.samples_per_query) + " samples");
+    st.emplace_back("throughput", "samples per query / " + stat + " latency");
+    return;
+  }
+  const LoadgenValue* bound = s.find("target_latency (ns)");
+  if (!latency && bound && bound->value > 0 && official.value > 0) {
+    add(set, name, mlperf_metric::kSamplesPerSecond, "1/s", official.value / (bound->value * kNs));
+    st.emplace_back("throughput", "streams / latency bound");
+  }
+}
+
 std::string read_optional(const fs::path& p, const ImportLimits& limits) {
   std::error_code ec;
   if (!fs::is_regular_file(p, ec)) return {};
   return std::string(strip_utf8_bom(read_whole_file(p.string(), limits.max_json_bytes)));
 }
 
-void loose_system(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
-                  MlperfCompanions& w);
-void loose_measurements(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
-                        MlperfCompanions& w);
+// Whether the summary lies in a submission tree: results/<system>/<network>/<scenario>/performance/run_N/.
+bool in_submission_tree(const fs::path& summary) {
+  const fs::path perf = summary.parent_path().parent_path();
+  return perf.filename() == "performance" &&
+         perf.parent_path().parent_path().parent_path().parent_path().filename() == "results";
+}
 
 }  // namespace
 
 std::vector<std::string> mlperf_companion_paths(const std::string& summary_path) {
-  // A summary named "<prefix>mlperf_log_summary<suffix>" has its detail log and power log beside it under the same
-  // prefix and suffix ("orin-ss-mlperf_log_detail.txt", "orin-ss-spl.txt"): a lab's loose download keeps them so.
   const fs::path p(summary_path);
-  const std::string name = p.filename().string();
-  const std::size_t at = name.find("mlperf_log_summary");
   std::vector<std::string> out;
-  if (at == std::string::npos) return out;
-  const std::string prefix = name.substr(0, at), suffix = name.substr(at + std::string("mlperf_log_summary").size());
-  for (const std::string& n : {prefix + "mlperf_log_detail" + suffix, prefix + "spl" + suffix})
-    if (std::error_code ec; fs::is_regular_file(p.parent_path() / n, ec)) out.push_back((p.parent_path() / n).string());
-  // Loose files: the system description taken beside it (companions_of) is read with it too.
-  const fs::path perf = p.parent_path().parent_path();
-  if (perf.filename() != "performance") {
-    MlperfCompanions w;
-    loose_system(p.parent_path(), name, ImportLimits{}, w);
-    if (!w.system_file.empty()) out.push_back(w.system_file);
-    loose_measurements(p.parent_path(), name, ImportLimits{}, w);
-    if (!w.measurements_file.empty()) out.push_back(w.measurements_file);
+  if (in_submission_tree(p)) {
+    // run_N/ holds the run's detail log and power log under their plain names.
+    for (const char* n : {"mlperf_log_detail.txt", "spl.txt"})
+      if (std::error_code ec; fs::is_regular_file(p.parent_path() / n, ec))
+        out.push_back((p.parent_path() / n).string());
+    return out;
   }
+  // Loose files (loose_files.h): what pairs with it unambiguously, the system and measurements JSONs included.
+  const mlperf_loose::LooseFiles f = mlperf_loose::loose_files_of(p, ImportLimits{});
+  for (const std::string* c : {&f.detail, &f.spl, &f.system, &f.measurements})
+    if (!c->empty()) out.push_back(*c);
   return out;
 }
 
@@ -198,85 +263,6 @@ std::string network_from_name(std::string_view path) {
 
 namespace {
 
-// An MLPerf system description (systems/<system>.json): a JSON object with system_name and submitter.
-bool is_system_json(const std::string& text) {
-  return text.find("\"system_name\"") != std::string::npos && text.find("\"submitter\"") != std::string::npos &&
-         text.find("\"host_processor_model_name\"") != std::string::npos;
-}
-
-// The system description beside loose files: the one system JSON in the summary's folder (or its systems/
-// subfolder), or among several the one whose file stem the summary's file name contains. None when the files do
-// not say: the computer is then "not stated", never the harness's SUT name.
-void loose_system(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
-                  MlperfCompanions& w) {
-  std::vector<fs::path> found;
-  for (const fs::path& dir : {folder, folder / "systems"}) {
-    std::error_code ec;
-    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
-      if (it->path().extension() == ".json" && is_system_json(read_optional(it->path(), limits)))
-        found.push_back(it->path());
-  }
-  std::sort(found.begin(), found.end());
-  const fs::path* chosen = found.size() == 1 ? &found.front() : nullptr;
-  for (const fs::path& f : found)
-    if (found.size() > 1 && summary_name.find(f.stem().string()) != std::string::npos &&
-        (!chosen || f.stem().string().size() > chosen->stem().string().size()))
-      chosen = &f;
-  if (!chosen) {
-    if (found.size() > 1)
-      w.system_note = std::to_string(found.size()) + " system descriptions beside it, none named by it";
-    return;
-  }
-  w.system_json = read_optional(*chosen, limits);
-  w.system_file = chosen->string();
-}
-
-// An MLPerf measurements description (measurements/<system>/<network>/<scenario>/<system>_<scenario>.json): the
-// weight and input data types the result ran with.
-bool is_measurements_json(const std::string& text) {
-  return text.find("\"weight_data_types\"") != std::string::npos &&
-         text.find("\"input_data_types\"") != std::string::npos;
-}
-
-// The measurements description beside loose files, in the summary's folder or its measurements/ subfolder. Its
-// own name says no network ("Orin_TRT_MaxQ_SingleStream.json" for every network), so it belongs to a summary only
-// when it carries the summary's prefix ("orin-retinanet-ss-" for "orin-retinanet-ss-mlperf_log_summary.txt"), or
-// when it and the summary are the only ones in the folder. Otherwise the precision stays "not stated", and why.
-void loose_measurements(const fs::path& folder, const std::string& summary_name, const ImportLimits& limits,
-                        MlperfCompanions& w) {
-  const std::string prefix = summary_name.substr(0, summary_name.find("mlperf_log_summary"));
-  std::vector<fs::path> found;
-  std::size_t summaries = 0;
-  for (const fs::path& dir : {folder, folder / "measurements"}) {
-    std::error_code ec;
-    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
-      const std::string name = it->path().filename().string();
-      if (dir == folder && name.find("mlperf_log_summary") != std::string::npos) ++summaries;
-      if (it->path().extension() == ".json" && is_measurements_json(read_optional(it->path(), limits)))
-        found.push_back(it->path());
-    }
-  }
-  std::sort(found.begin(), found.end());
-  const fs::path* chosen = nullptr;
-  for (const fs::path& f : found)
-    if (!prefix.empty() && f.filename().string().starts_with(prefix)) {
-      if (chosen) {  // two with its prefix: neither is known to be its own
-        chosen = nullptr;
-        break;
-      }
-      chosen = &f;
-    }
-  if (!chosen && found.size() == 1 && summaries == 1) chosen = &found.front();
-  if (!chosen) {
-    if (!found.empty())
-      w.measurements_note = std::to_string(found.size()) + " measurements description(s) beside it, none named " +
-                            (prefix.empty() ? std::string("for it") : "with its prefix '" + prefix + "'");
-    return;
-  }
-  w.measurements_json = read_optional(*chosen, limits);
-  w.measurements_file = chosen->string();
-}
-
 // The companions of a summary at `path` in a submission tree (results/<system>/<network>/<scenario>/performance/
 // run_N/), or loose beside it: what exists is read, what does not stays empty.
 MlperfCompanions companions_of(const std::string& path, const ImportLimits& limits) {
@@ -286,20 +272,23 @@ MlperfCompanions companions_of(const std::string& path, const ImportLimits& limi
     text = read_optional(p, limits);
     if (!text.empty()) file = p.string();
   };
-  for (const std::string& c : mlperf_companion_paths(path))
-    if (!c.ends_with(".json"))
-      read(c, c.find("mlperf_log_detail") != std::string::npos ? w.detail_text : w.spl_text,
-           c.find("mlperf_log_detail") != std::string::npos ? w.detail_file : w.spl_file);
-  const fs::path perf = run.parent_path();
-  if (perf.filename() != "performance" ||
-      perf.parent_path().parent_path().parent_path().parent_path().filename() != "results") {
+  if (!in_submission_tree(path)) {
+    const mlperf_loose::LooseFiles f = mlperf_loose::loose_files_of(path, limits);
+    if (!f.detail.empty()) read(f.detail, w.detail_text, w.detail_file);
+    if (!f.spl.empty()) read(f.spl, w.spl_text, w.spl_file);
+    if (!f.system.empty()) read(f.system, w.system_json, w.system_file);
+    if (!f.measurements.empty()) read(f.measurements, w.measurements_json, w.measurements_file);
+    w.pairing_note = f.pairing_note;
+    w.system_note = f.system_note;
+    w.measurements_note = f.measurements_note;
     w.network = network_from_name(fs::path(path).filename().string());
     if (w.network.empty()) w.network = network_from_name(run.filename().string());
-    loose_system(run, fs::path(path).filename().string(), limits, w);
-    loose_measurements(run, fs::path(path).filename().string(), limits, w);
     w.loose = true;
     return w;
   }
+  read(run / "mlperf_log_detail.txt", w.detail_text, w.detail_file);
+  read(run / "spl.txt", w.spl_text, w.spl_file);
+  const fs::path perf = run.parent_path();
   const fs::path scenario = perf.parent_path(), network = scenario.parent_path(), system = network.parent_path();
   const fs::path results = system.parent_path();
   w.network = network.filename().string();
@@ -352,6 +341,8 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
                              (with.system_note.empty() ? std::string() : " (" + with.system_note + ")") +
                              ": the computer is not stated (LoadGen's SUT name '" + s.sut_name +
                              "' is the harness's, not the computer's); give it with --platform");
+  if (!with.pairing_note.empty())
+    batch.warnings.push_back(file + ": " + with.pairing_note + " (name each run's files with one prefix)");
   if (with.network.empty())
     batch.warnings.push_back(file +
                              ": neither its folders nor its name say the network: \"network not stated\", "
@@ -362,7 +353,7 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
             {{"network", network}, {"scenario", s.scenario}, {"mode", s.mode}, {"result validity", s.validity}});
   for (const auto& [check, ok] : s.checks) st.emplace_back(check, ok ? "Yes" : "No");
   if (s.samples_per_query) st.emplace_back("samples per query", fmt(*s.samples_per_query));
-  read_precision(with, limits, set);
+  read_precision(with, limits, set, batch.warnings);
   if (with.loose && with.measurements_json.empty())
     batch.warnings.push_back(file + ": no measurements JSON (<system>_<scenario>.json) beside it" +
                              (with.measurements_note.empty() ? std::string() : " (" + with.measurements_note + ")") +
@@ -395,19 +386,31 @@ ImportBatch parse_mlperf_summary(const std::string& text, const std::string& fil
   const LoadgenValue* qps = s.find("QPS w/o loadgen overhead");
   if (!qps) qps = s.find("QPS w/ loadgen overhead");
   if (qps) add(set, name, mlperf_metric::kQps, "1/s", qps->value);
-  if (qps && s.samples_per_query && s.scenario != "Offline" && !s.find("Samples per second"))
+  if (s.scenario == "MultiStream") {
+    multistream_rate(s, r, name, set);
+  } else if (qps && s.samples_per_query && s.scenario != "Offline" && !s.find("Samples per second")) {
     add(set, name, mlperf_metric::kSamplesPerSecond, "1/s", qps->value * *s.samples_per_query);
+  }
 
   LoadgenDetail d;
   if (!with.detail_text.empty()) d = parse_loadgen_detail(with.detail_text, with.detail_file, limits);
   if (!d.loadgen_version.empty()) set.provenance.tool = "MLPerf LoadGen " + d.loadgen_version;
   set.provenance.date = d.test_datetime;
-  if (const auto p = window_power(with, d, limits, cancel, batch.warnings)) {
+  const auto power = window_power(with, d, limits, cancel, batch.warnings);
+  if (const auto& p = power) {
     add(set, name, mlperf_metric::kMeanPower, "W", p->mean_w);
     set.provenance.measurement = MeasurementKind::ExternalMeter;
-    set.provenance.sensor =
-        "SPEC PTDaemon (spl.txt), " + std::to_string(p->samples) + " samples in LoadGen's power window";
+    set.provenance.sensor = "SPEC PTDaemon (spl.txt), " + std::to_string(p->samples) +
+                            (p->whole_log ? " samples over the whole log (no LoadGen power window: not MLPerf's power)"
+                                          : " samples in LoadGen's power window");
     st.emplace_back("power kind", "AC wall");  // PTDaemon meters the whole system at the mains plug
+    st.emplace_back("power log", with.spl_file);
+    if (p->whole_log) {
+      st.emplace_back("power window", "whole log: no LoadGen power_begin/power_end (" + w_detail_name(with) + ")");
+      st.emplace_back("flag", "mean power over the whole spl.txt, not MLPerf's power window");
+    }
+  }
+  if (const auto& p = power; p && !p->whole_log) {
     const double spq = s.samples_per_query.value_or(1);
     // MLPerf's power metric as the submission checker defines it: Offline/Server the mean power (W); the stream
     // scenarios energy per query: from v2.0 mean x window / result_query_count (published in mJ), before v2.0

@@ -44,12 +44,13 @@ struct MlperfCompanions {
   std::string network, system;    // from the folder layout (or a loose file's name); empty when nothing says
   std::string system_note;        // why no system description was taken, when several lay beside the summary
   std::string measurements_note;  // why no measurements description was taken, when some lay beside it
+  std::string pairing_note;       // why a detail log or power log beside it was not paired (two could be its)
   bool loose = false;             // the summary lies outside a submission tree (a lab's download)
 };
 
-// The detail log and PTDaemon log that belong to a summary: "<prefix>mlperf_log_detail<suffix>" and
-// "<prefix>spl<suffix>" beside "<prefix>mlperf_log_summary<suffix>" (a submission's run_1/ is the empty prefix).
-// A folder import reads them with their summary, not on their own.
+// The files read with a summary: in a submission tree run_N/'s mlperf_log_detail.txt and spl.txt; loose, the
+// detail log, power log, system and measurements JSONs that pair with it (mlperf/loose_files.h). An import reads them
+// with their summary, not on their own.
 std::vector<std::string> mlperf_companion_paths(const std::string& summary_path);
 
 // The MLPerf benchmark a folder or file name names ("resnet", "ssd-small", "Orin_retinanet_SS") in the

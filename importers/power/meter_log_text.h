@@ -14,14 +14,11 @@
 #include "common/importer.h"
 #include "power/power_line_reader.h"
 #include "util/cancel.h"
+#include "util/text.h"
 
 namespace bs::meter {
 
-inline std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
+using bs::trim;  // util/text.h
 
 // Fields between `sep`, each trimmed; an empty line gives one empty field.
 inline void split(std::string_view line, char sep, std::vector<std::string_view>& out) {

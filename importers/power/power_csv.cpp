@@ -16,6 +16,7 @@
 
 #include "analysis/power/power_time.h"
 #include "power/power_line_reader.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
@@ -29,23 +30,10 @@ struct Column {
   bool utc = false;  // a time column that says its date-times are UTC ("Wall-clock time (UTC)")
 };
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  return out;
-}
-
 bool space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 bool letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 
 // Spaces and stray quotes off both ends (header names).
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (space(s.front()) || s.front() == '"')) s.remove_prefix(1);
-  while (!s.empty() && (space(s.back()) || s.back() == '"')) s.remove_suffix(1);
-  return s;
-}
-
 std::string_view trim_spaces(std::string_view s) {
   while (!s.empty() && space(s.front())) s.remove_prefix(1);
   while (!s.empty() && space(s.back())) s.remove_suffix(1);

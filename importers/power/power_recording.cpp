@@ -7,15 +7,10 @@
 
 #include "power/power_csv.h"
 #include "sensors/recording_csv.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
 
 bool number(std::string_view s, double& v) {
   s = trim(s);

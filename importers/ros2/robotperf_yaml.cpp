@@ -2,8 +2,10 @@
 #include "ros2/robotperf_yaml.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <string_view>
 
 #include "ros2/yaml_subset.h"
 
@@ -44,11 +46,55 @@ Meaning meaning(const std::string& metric, const std::string& unit, const std::s
 
 bool iso_date(const std::string& d) { return d.size() >= 10 && d[4] == '-' && d[7] == '-'; }
 
+// One machine under two spellings ("NVIDIA AGX Orin Dev. Kit", "NVIDIA AGX Orin Developer Kit"; "Intel® Core™
+// i5-8250U CPU @ 1.60GHz × 8", "Intel Core i5-8250U"): the key that merges them. Marks, "Dev. Kit"/"Developer Kit",
+// the clock and core count and case do not tell machines apart; an added GPU ("+ NVIDIA GeForce RTX 3060") does.
+std::string machine_key(std::string_view hardware) {
+  std::string s;
+  for (std::size_t i = 0; i < hardware.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(hardware[i]);
+    if (c >= 0x80) continue;  // ®, ™, × and other marks (UTF-8 bytes)
+    s.push_back(static_cast<char>(std::tolower(c)));
+  }
+  for (const char* noise : {"(r)", "(tm)", " developer kit", " dev. kit", " dev kit", " cpu"})
+    for (std::size_t at; (at = s.find(noise)) != std::string::npos;) s.erase(at, std::string_view(noise).size());
+  if (const std::size_t at = s.find(" @ "); at != std::string::npos) s.erase(at);  // "@ 1.60GHz x 8"
+  std::string out;
+  for (char c : s)
+    if (c != ' ' || (!out.empty() && out.back() != ' ')) out.push_back(c);
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+// Below this no computer runs: a value such as 8.97e-44 W is a reading of nothing (a denormal from an unset
+// counter), flagged like 0 W.
+constexpr double kLeastPowerW = 0.01;
+
 // Hardware names BenchScope can tie to one computer; anything else is free text, said so.
 bool named_board(const std::string& h) {
   for (const char* k : {"Orin", "Xavier", "Jetson", "Raspberry", "Thor", "Kria", "TX2", "Nano"})
     if (h.find(k) != std::string::npos) return true;
   return false;
+}
+
+// A "throughput" that is the same whole number on every machine (c1's joint trajectory controller: 10/s on an
+// i7-8700K and on an AGX Orin) is the rate the loop was configured to run at, not what the machine can do: renamed
+// and flagged, so it is never ranked as a capacity.
+void configured_rates(ImportBatch& batch, const std::string& file) {
+  std::vector<Measurement*> rates;
+  for (ResultSet& s : batch.result_sets)
+    for (Measurement& m : s.measurements)
+      if (m.metric.starts_with("throughput") && !m.values.empty()) rates.push_back(&m);
+  if (rates.size() < 2 || batch.result_sets.size() < 2) return;
+  const double first = rates.front()->values.front();
+  for (const Measurement* m : rates)
+    if (m->values.front() != first) return;
+  if (first <= 0 || first != std::floor(first)) return;
+  for (Measurement* m : rates)
+    m->metric = "update rate as configured (the same " + std::to_string(static_cast<long long>(first)) +
+                "/s on every machine: not a throughput)";
+  batch.warnings.push_back(file + ": every machine's 'throughput' is " + std::to_string(static_cast<long long>(first)) +
+                           "/s: the rate the loop was configured to run at, not a throughput (flag: configured rate)");
 }
 
 ImportBatch parse_robotperf(const std::string& text, const std::string& file, const ParseOptions&,
@@ -78,9 +124,14 @@ ImportBatch parse_robotperf(const std::string& text, const std::string& file, co
     if (value_text.empty() || ec != std::errc() || end != value_text.data() + value_text.size() || !std::isfinite(v))
       fail(ImportErrorCategory::InvalidValue, file, line, "value", "'" + value_text + "' is not a number");
     const Meaning m = meaning(metric, unit, file, r->find("metric") ? r->find("metric")->line : r->line);
-    if (v <= 0)
+    if (v <= 0 || (metric == "power" && v * m.scale < kLeastPowerW))
       batch.warnings.push_back(file + ":" + std::to_string(line) + ": value: " + value_text + " " + unit + " of " +
-                               metric + " on " + hardware + " is impossible (flag: impossible value)");
+                               metric + " on " + hardware + " is impossible" +
+                               (v > 0 ? std::string(" (below 0.01 W, which no computer draws)") : std::string()) +
+                               " (flag: impossible value)");
+    // RobotPerf's grey-box (the graph instrumented with tracepoints) and black-box (measured from outside) results
+    // are different measurements of one graph: the type stays with each value.
+    const std::string type = text_of(*r, "type");
     const std::string date = text_of(*r, "timestampt").empty() ? text_of(*r, "timestamp") : text_of(*r, "timestampt");
     if (iso_date(date))
       iso = true;
@@ -89,7 +140,13 @@ ImportBatch parse_robotperf(const std::string& text, const std::string& file, co
       dashed_lines.push_back(r->find("timestampt") ? r->find("timestampt")->line : r->line);
     }
     auto set = std::find_if(batch.result_sets.begin(), batch.result_sets.end(),
-                            [&](const ResultSet& s) { return s.platform == hardware; });
+                            [&](const ResultSet& s) { return machine_key(s.platform) == machine_key(hardware); });
+    if (set != batch.result_sets.end() && set->platform != hardware) {
+      auto& st = set->provenance.settings;
+      const std::string alias = "also spelled '" + hardware + "'";
+      if (std::none_of(st.begin(), st.end(), [&](const auto& kv) { return kv.second == alias; }))
+        st.emplace_back("hardware alias", alias);
+    }
     if (set == batch.result_sets.end()) {
       ResultSet s;
       s.platform = hardware;
@@ -114,13 +171,15 @@ ImportBatch parse_robotperf(const std::string& text, const std::string& file, co
       set = batch.result_sets.end() - 1;
     }
     Measurement x;
-    x.name = id + " " + name + " (" + (date.empty() ? "no date" : date) + ", line " + std::to_string(line) + ")";
+    x.name = id + " " + name + (type.empty() ? std::string() : " [" + type + "-box]") + " (" +
+             (date.empty() ? "no date" : date) + ", line " + std::to_string(line) + ")";
     x.metric = m.metric;
     x.unit = m.unit;
     x.values = {v * m.scale};
     set->measurements.push_back(std::move(x));
   }
   if (batch.result_sets.empty()) fail(ImportErrorCategory::MissingField, file, results->line, "results", "empty");
+  configured_rates(batch, file);
   if (iso && dashed)
     batch.warnings.push_back(file + ":" + std::to_string(dashed_lines.front()) +
                              ": dates in two formats: ISO beside day-or-month-first (08-07-2023 is August 7 or July "

@@ -8,21 +8,10 @@
 #include <optional>
 
 #include "common/text_file.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // The number at the start of a value ("11437.44", "8.48 GFLOPS", "inf", "-5189.91 us"); false when there is none.
 bool leading_number(std::string_view s, std::string_view* rest, double* value) {

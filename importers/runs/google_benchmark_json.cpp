@@ -14,6 +14,7 @@
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/json_access.h"
 #include "common/text_file.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
@@ -50,11 +51,6 @@ constexpr std::array<std::string_view, 24> kReservedKeys = {"name",
 
 bool is_reserved(std::string_view key) {
   return std::find(kReservedKeys.begin(), kReservedKeys.end(), key) != kReservedKeys.end();
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
 }
 
 struct CounterUnit {

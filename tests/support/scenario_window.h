@@ -273,6 +273,22 @@ inline QString open_paper_window(bs::ui::MainWindow& w, QTemporaryDir& dir) {
   return {};
 }
 
+// File > Export report (Ctrl+Shift+R) as a person does it: the report dialog answered from the event loop, the PDF
+// path typed, Export. "" when `pdf` was written, else what the person saw (the dialogs met and missed).
+inline QString export_report(bs::ui::MainWindow& w, const QString& pdf) {
+  ModalAnswerer person;
+  person.expect(
+      "Export report (the report dialog)",
+      [](QWidget* d) { return d->windowTitle() == "Export report" && !qobject_cast<QFileDialog*>(d); },
+      [&pdf](QWidget* d) {
+        if (auto* path = d->findChild<QLineEdit*>("reportPath")) retype(path, pdf);
+        if (QAbstractButton* ok = button(d, "Export")) click(ok);
+      });
+  key(&w, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+  if (wait_until([&] { return person.done() && QFile::exists(pdf); }, 3000)) return {};
+  return person.report();
+}
+
 }  // namespace bs::test
 
 // main() of a scenario test: VTK's views need their OpenGL format before the QApplication exists, as in

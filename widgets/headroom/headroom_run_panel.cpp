@@ -16,8 +16,8 @@
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "commands/headroom_grammar.h"
 #include "headroom/command_load.h"
-#include "headroom/headroom_command.h"
 #include "headroom/loads/load_spec.h"
 #include "power/power_sensor_box.h"
 #include "remote/remote_run.h"
@@ -254,9 +254,12 @@ void HeadroomRunPanel::start_remote(headroom::RunConfig config) {
   target_->remember_platform();
   config.platform = target_->platform().toStdString();
   const QString platform = target_->platform();
-  const std::vector<std::string> args = headroom::headroom_cli_args(
-      config, loads_->text().trimmed().toStdString(), command_->text().trimmed().toStdString(), !power_->off());
-  remote_ = std::make_unique<RemoteRun>(target_->target(), args);
+  commands::HeadroomSettings settings;
+  settings.config = config;
+  settings.loads = loads_->text().trimmed().toStdString();
+  settings.load_command = command_->text().trimmed().toStdString();
+  if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
+  remote_ = std::make_unique<RemoteRun>(target_->target(), commands::to_words(settings));
   RemoteRun* run = remote_.get();
   // The robot reports its phases as lines of text; until one comes the bar only says that it is busy.
   connect(run, &RemoteRun::remote_text, this,

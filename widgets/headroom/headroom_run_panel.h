@@ -5,7 +5,7 @@
 // power", and where: this machine, or a robot over SSH (issue #44: the loop must be measured on the computer that
 // will run it). On this machine, Run starts core's run_headroom off the GUI thread with progress and cancel, and
 // hands the finished measurement (with its power trace) over to be stored. On a robot, the same settings go as
-// `benchscope-cli headroom` arguments (core: headroom/headroom_command.h) to the robot's CLI through RemoteRun; the
+// `benchscope-cli headroom` arguments (core: commands/headroom_grammar.h) to the robot's CLI through RemoteRun; the
 // robot's phases show as they start, Cancel stops everything there, and the job is handed over to be imported
 // with the robot's provenance (remote_finished). Every setting is remembered (QSettings).
 #include <QWidget>

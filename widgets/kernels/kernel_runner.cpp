@@ -25,6 +25,7 @@
 #include "analysis/power/sweep_energy.h"
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
+#include "commands/run_flops_grammar.h"
 #include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
@@ -596,15 +597,15 @@ void KernelRunner::start_on_robots(const std::vector<std::pair<QString, QString>
     emit failed(why);
     return;
   }
-  remote_command_ = {
-      "run",          "flops",
-      "--backend",    (remote_backend_.isEmpty() ? QStringLiteral("cpu") : remote_backend_).toStdString(),
-      "--variant",    variant_->currentData().toString().toStdString(),
-      "--workers",    workers_->text().trimmed().toStdString(),
-      "--points",     dims_->text().trimmed().toStdString(),
-      "--iterations", std::to_string(iterations_->value()),
-      "--repeats",    std::to_string(repeats_->value())};
-  if (robot_power_->isChecked()) remote_command_.insert(remote_command_.end(), {"--power", "auto"});
+  commands::RunFlopsSettings settings;
+  settings.backend = (remote_backend_.isEmpty() ? QStringLiteral("cpu") : remote_backend_).toStdString();
+  settings.variant = variant_->currentData().toString().toStdString();
+  settings.workers = workers_->text().trimmed().toStdString();
+  settings.points = dims_->text().trimmed().toStdString();
+  settings.iterations = iterations_->value();
+  settings.repeats = repeats_->value();
+  if (robot_power_->isChecked()) settings.power.sensor = "auto";  // the robot's own sensors
+  remote_command_ = commands::to_words(settings);
   save_parameters();
   remote_queue_.assign(robots.begin(), robots.end());
   remote_total_ = static_cast<int>(robots.size());

@@ -136,8 +136,10 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
 
 void CandidatesPanel::set_own(std::vector<PlatformRow> rows, std::vector<PipelineRun> pipelines,
                               std::vector<DnnRun> dnn, std::vector<ResultSet> result_sets,
-                              const Constraints& constraints, const ComparisonOptions& options) {
+                              const Constraints& constraints, const ComparisonOptions& options,
+                              std::optional<std::vector<headroom::LoopVerdict>> loop) {
   rows_ = std::move(rows);
+  loop_ = std::move(loop);
   pipelines_ = std::move(pipelines);
   dnn_ = std::move(dnn);
   sets_ = std::move(result_sets);
@@ -166,6 +168,7 @@ void CandidatesPanel::recompute() {
   in.dnn_runs = dnn_;
   in.result_sets = sets_;
   in.lib = &lib.library;
+  if (loop_) in.loop = &*loop_;
   QString note;
   try {
     in.library = select_library(lib.library, selection().toStdString());

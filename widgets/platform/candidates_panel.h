@@ -9,6 +9,7 @@
 // computers' ROS 2 graph benchmark results (ros2_benchmark, RobotPerf) are a table on a page of their own beside it,
 // each row in its class and saying what its value is (core: analysis/library/graph_benchmarks_table.h).
 #include <QWidget>
+#include <optional>
 #include <vector>
 
 #include "analysis/library/candidates.h"
@@ -28,7 +29,8 @@ class CandidatesPanel : public QWidget {
   explicit CandidatesPanel(QWidget* parent = nullptr);
   // The own platforms and results, with the constraints and battery of the tab; recomputes the ranking.
   void set_own(std::vector<PlatformRow> rows, std::vector<PipelineRun> pipelines, std::vector<DnnRun> dnn,
-               std::vector<ResultSet> result_sets, const Constraints& constraints, const ComparisonOptions& options);
+               std::vector<ResultSet> result_sets, const Constraints& constraints, const ComparisonOptions& options,
+               std::optional<std::vector<headroom::LoopVerdict>> loop = std::nullopt);
   // "orin,pi5": library computer ids or aliases, or result ids. An unknown word is said in the panel's note.
   void set_selection(const QString& spec);
   QString selection() const;
@@ -69,6 +71,7 @@ class CandidatesPanel : public QWidget {
   std::vector<ResultSet> sets_;
   Constraints constraints_;
   ComparisonOptions options_;
+  std::optional<std::vector<headroom::LoopVerdict>> loop_;  // the control loop's verdicts, when one is required
   std::vector<CandidateClass> classes_;
   std::vector<PeakClass> peaks_;
 };

@@ -361,6 +361,10 @@ void PlatformView::set_battery_tab_setup(const BatterySetup& setup, bool modifie
   recompute();
 }
 
+void PlatformView::battery_tab_edited() {
+  if (decision_stored_ && has_tab_setup_ && battery_->currentIndex() == 0) user_changed();
+}
+
 void PlatformView::set_mission(const QString& spec) {
   mission_->setEditText(spec);
   recompute();
@@ -400,6 +404,7 @@ StoredDecision PlatformView::decision() const {
 
 void PlatformView::apply_decision(const std::optional<StoredDecision>& stored, const QString& problem) {
   decision_problem_ = problem;
+  decision_stored_ = stored.has_value();
   const StoredDecision d = stored.value_or(StoredDecision{});
   {
     const QSignalBlocker b1(use_budget_), b2(use_fps_), b3(use_runtime_), b4(budget_), b5(fps_), b6(runtime_),
@@ -436,6 +441,7 @@ void PlatformView::user_changed() {
   const StoredDecision d = decision();
   if (d == last_decision_) return;
   last_decision_ = d;
+  decision_stored_ = true;
   emit decision_edited(d);
 }
 
@@ -480,6 +486,8 @@ void PlatformView::recompute() {
   verdicts_ = recommend(rows_, constraints());
   // The control loop's checks join each verdict: no headroom measurement is unknown, never passing.
   loop_verdicts_.clear();
+  // The loop's verdicts, when a requirement is in force, judge the candidates too: no pick the verdict rejects.
+  std::optional<std::vector<headroom::LoopVerdict>> candidate_loop;
   QString loop_text;
   if (use_loop_->isChecked()) {
     try {
@@ -488,6 +496,7 @@ void PlatformView::recompute() {
       for (const PlatformRow& row : rows_) names.push_back(row.platform);
       loop_verdicts_ = headroom::evaluate_loop(r, headroom_, names);
       headroom::apply_loop(verdicts_, loop_verdicts_);
+      candidate_loop = loop_verdicts_;
       QStringList parts;
       for (const headroom::LoopVerdict& v : loop_verdicts_) {
         QString part = QStringLiteral("%1 <b>%2</b>")
@@ -507,7 +516,7 @@ void PlatformView::recompute() {
     }
   }
   fill_table();
-  candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o);
+  candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o, std::move(candidate_loop));
   const QString hidden =
       empty_columns_.isEmpty()
           ? QString()

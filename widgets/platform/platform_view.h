@@ -67,6 +67,10 @@ class PlatformView : public QWidget {
   // default, so both tabs use the same pack unless the user picks another here. While it is selected, the parallel
   // load and mission follow the Battery tab too.
   void set_battery_tab_setup(const BatterySetup& setup, bool modified);
+  // The user edited the Battery tab (after set_battery_tab_setup): while this tab follows it and the workspace keeps
+  // a decision, the decision's parallel load and mission are stored anew, so that the CLI and the next opening read
+  // what this tab shows (store/decision_inputs.h).
+  void battery_tab_edited();
   // A mission profile (parse_mission() text) in parallel with every computer; empty: a constant load.
   void set_mission(const QString& spec);
   QString mission() const;
@@ -142,6 +146,7 @@ class PlatformView : public QWidget {
   std::vector<headroom::HeadroomMeasurement> headroom_;
   std::vector<headroom::LoopVerdict> loop_verdicts_;
   StoredDecision last_decision_;  // as last applied from the workspace or emitted
+  bool decision_stored_ = false;  // the workspace keeps a decision (applied from it, or emitted since)
   QString decision_problem_;      // the stored decision could not be read: why (empty when it could)
 };
 

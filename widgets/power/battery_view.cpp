@@ -196,15 +196,17 @@ void BatteryView::restore_saved_setup() {
   }
 }
 
-void BatteryView::remember_setup() {
-  if (!workspace_ || restoring_) return;
+bool BatteryView::remember_setup() {
+  if (!workspace_ || restoring_) return false;
   const std::string json = battery_setup_to_json(setup());
-  if (json == remembered_) return;
+  if (json == remembered_) return false;
   try {
     workspace_->set_setting(kCurrentSetupKey, json);
     remembered_ = json;
+    return true;
   } catch (const std::exception& e) {  // a read-only or vanished workspace file: the edit still applies here
     error_->setText(tr("The battery setup could not be saved in the workspace: %1").arg(QString::fromUtf8(e.what())));
+    return false;
   }
 }
 
@@ -338,8 +340,9 @@ void BatteryView::recompute() {
   left_out_->setText(left_out);
   left_out_->setVisible(!left_out.isEmpty());
   mark_modified();
-  remember_setup();
+  const bool edited = remember_setup();
   emit setup_changed();
+  if (edited) emit setup_edited();
 }
 
 void BatteryView::fill_table() {

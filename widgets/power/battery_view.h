@@ -64,13 +64,15 @@ class BatteryView : public QWidget {
  signals:
   // The setup changed: an edit, another preset, or a workspace that brought its own back.
   void setup_changed();
+  // The user edited the setup and it was saved in the workspace (after setup_changed): never on opening.
+  void setup_edited();
 
  private:
   void reload_presets(const QString& select, bool keep_fields = false);
   void show_setup(const BatterySetup& s);
   void show_fields(const BatterySetup& s);
   void restore_saved_setup();
-  void remember_setup();
+  bool remember_setup();  // true when it wrote an edit into the workspace
   void mark_modified();
   void recompute();
   void fill_table();

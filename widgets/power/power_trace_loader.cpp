@@ -120,7 +120,9 @@ void PowerTraceLoader::start(const std::string& path, std::vector<StoredPowerTra
       QtConcurrent::run([path, traces = std::move(traces), token, weights, done_before, current]() mutable {
         LoadResult r;
         try {
-          const Workspace ws(path);  // SQLite connections are per thread
+          // SQLite connections are per thread. Read-only: this second connection of the GUI's only reads, and never
+          // checkpoints on closing (store/sqlite_db.cpp).
+          const Workspace ws(path, Workspace::OpenMode::ReadOnly);
           for (std::size_t i = 0; i < traces.size(); ++i) {
             *current = weights[i];
             ws.load_power_samples(traces[i], token.get());

@@ -20,12 +20,12 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "analysis/power/phase_energy.h"
+#include "commands/pipeline_grammar.h"
 #include "common/wrapping_tool_bar.h"
 #include "power/power_sensor_box.h"
 #include "remote/remote_run.h"
 #include "remote/robot_target.h"
 #include "sensors/recorder.h"
-#include "vision/pipeline/pipeline_command.h"
 #include "vision/pipeline/pipeline_measure.h"
 #include "vision/reproject/cuda_preprocess.h"
 
@@ -290,7 +290,8 @@ void PipelineMeasurePanel::start_remote(const vision::SyntheticPipelineOptions& 
   }
   std::vector<std::string> args;
   try {
-    args = vision::synthetic_pipeline_cli_args(options, target_->platform().toStdString(), !power_->off());
+    args = commands::to_words(
+        commands::robot_pipeline_settings(options, target_->platform().toStdString(), !power_->off()));
   } catch (const std::invalid_argument& e) {
     status_->setText(tr("%1: %2").arg(robot, QString::fromUtf8(e.what())));
     emit failed(status_->text());

@@ -32,7 +32,7 @@ class RobotTarget;
 // "Measure": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
 // (core: vision::measure_synthetic_pipeline) off the GUI thread, with progress and cancel, and hands the finished
 // run over (run_measured) to be stored. "Run on" chooses this machine or a robot over SSH (issue #44): a robot
-// renders the same capture itself (`benchscope-cli pipeline --synthetic`, core: vision/pipeline/pipeline_command.h),
+// renders the same capture itself (`benchscope-cli pipeline --synthetic`, core: commands/pipeline_grammar.h),
 // its progress shows as it comes, Cancel stops it there, and its job is handed over to be imported with the
 // robot's provenance (remote_finished). Frames, detection workers and detection scale are spin boxes remembered
 // between sessions (QSettings), and so is where preprocessing runs (CPU, OpenCL, CUDA: a backend this machine

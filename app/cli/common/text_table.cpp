@@ -35,10 +35,4 @@ void TextTable::print(std::ostream& out) const {
   for (const auto& row : rows_) line(row);
 }
 
-std::string format_number(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
 }  // namespace bs::cli

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "util/text.h"
+
 namespace bs::cli {
 
 // A plain aligned text table for terminal output. Column widths count UTF-8 code points, not bytes.
@@ -19,7 +21,7 @@ class TextTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
-// `v` through one printf conversion ("%.3g", "%.1f %%"), for table cells and report lines.
-std::string format_number(const char* format, double v);
+// Table cells and report lines format numbers with util/text.h's format_number.
+using bs::format_number;
 
 }  // namespace bs::cli

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "commands/headroom_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/signals.h"
@@ -25,23 +26,23 @@ namespace {
 
 using namespace bs::headroom;
 
-std::vector<std::unique_ptr<Load>> loads_from(const ParsedArgs& args) {
+std::vector<std::unique_ptr<Load>> loads_from(const commands::HeadroomSettings& settings) {
   LoadOptions options;
-  options.pipeline_detector = args.value("--detector").value_or("hog");
-  for (const std::string& path : args.positional) {
+  options.pipeline_detector = settings.detector;
+  for (const std::string& path : settings.frames) {
     const vision::FrameFile f = vision::read_frame_file(path);
     options.frames.push_back(vision::to_8bit(f.mosaic, f.bit_depth));
     options.frames_note += (options.frames_note.empty() ? "" : ", ") + path;
   }
   std::vector<std::unique_ptr<Load>> loads;
   try {
-    loads = make_loads(args.value("--load").value_or(""), options);
+    loads = make_loads(settings.loads, options);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--load: ") + e.what());
   }
-  if (const auto command = args.value("--load-command")) {
+  if (!settings.load_command.empty()) {
     try {
-      loads.push_back(std::make_unique<CommandLoad>(split_command(*command)));
+      loads.push_back(std::make_unique<CommandLoad>(split_command(settings.load_command)));
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--load-command: ") + e.what());
     }
@@ -56,25 +57,15 @@ std::string command_line(const std::vector<std::string>& raw) {
 }
 
 int run_headroom_cmd(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  std::set<std::string> valued = kProbeOptions;
-  valued.insert({"--seconds", "--settle", "--load", "--load-command", "--detector", "--platform", "--workspace"});
-  valued.insert(kPowerOptions.begin(), kPowerOptions.end());
-  const ParsedArgs args = parse_args(raw, {"--json", "--no-rt", "--no-idle"}, valued);
-  RunConfig config;
-  config.probe = probe_config(args);
-  config.phase_s = args.number("--seconds", 20);
-  if (!(config.phase_s >= 0.1 && config.phase_s <= 86400)) throw UsageError("--seconds must be from 0.1 to 86400");
-  config.settle_s = args.number("--settle", 1);
-  if (!(config.settle_s >= 0 && config.settle_s <= 600)) throw UsageError("--settle must be from 0 to 600 seconds");
-  config.idle_phase = !args.has("--no-idle");
-  config.platform = args.value("--platform").value_or("");
+  const commands::HeadroomSettings settings = commands::headroom_from_words(raw);
+  RunConfig config = settings.config;
+  if (const std::string e = validate(config.probe); !e.empty()) throw UsageError(e);
   config.command = command_line(raw);
-  std::vector<std::unique_ptr<Load>> owned = loads_from(args);
-  if (!config.idle_phase && owned.empty()) throw UsageError("--no-idle needs at least one --load or --load-command");
+  std::vector<std::unique_ptr<Load>> owned = loads_from(settings);
   std::vector<Load*> loads;
   for (auto& l : owned) loads.push_back(l.get());
 
-  const bool json = args.has("--json");
+  const bool json = settings.json;
   std::ostream& info = json ? err : out;  // --json keeps stdout to the document alone
   if (config.probe.realtime) {
     const RealtimeRights rights = probe_realtime_rights();
@@ -84,9 +75,9 @@ int run_headroom_cmd(const std::vector<std::string>& raw, std::ostream& out, std
             "real-time ones\n";
   }
   std::unique_ptr<sensors::PowerRecorder> power;
-  if (args.value("--power") && *args.value("--power") != "none")
-    power = make_recorder(*args.value("--power"), args.value("--sysfs-root").value_or("/"),
-                          args.number("--power-interval-ms", 100), err, json);
+  if (settings.power.sensor != "none")
+    power = make_recorder(settings.power.sensor, settings.power.sysfs_root.value_or("/"),
+                          settings.power.interval_ms.value_or(100), err, json);
 
   // Ctrl+C stops the running phase; progress names each phase as it starts.
   CancelToken token;
@@ -111,7 +102,7 @@ int run_headroom_cmd(const std::vector<std::string>& raw, std::ostream& out, std
     out << doc.dump(2) << "\n";
   else
     print_headroom(out, m, "this run");
-  if (const auto ws_path = args.value("--workspace")) {
+  if (const auto& ws_path = settings.workspace) {
     Workspace ws(*ws_path);
     ImportBatch batch;
     batch.source_path = "benchscope-cli headroom (" + m.platform + ", " + m.provenance.date + ")";

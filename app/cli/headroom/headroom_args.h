@@ -2,16 +2,13 @@
 #pragma once
 // The probe's options, shared by `headroom` and `bench headroom`: --rate, --threads, --computation-us,
 // --deadline-us, --cpu, --priority, --no-rt, --limit-us. Bad values are UsageErrors naming the option and the range.
-#include <set>
-#include <string>
-
+// They are read by the headroom grammar (core/commands/headroom_grammar.h), the one a robot's words are written with.
+#include "commands/headroom_grammar.h"
 #include "common/args.h"
-#include "headroom/probe.h"
 
 namespace bs::cli {
 
-inline const std::set<std::string> kProbeOptions = {"--rate", "--threads",  "--computation-us", "--deadline-us",
-                                                    "--cpu",  "--priority", "--limit-us"};
+using commands::kProbeOptions;
 inline constexpr const char* kProbeUsage =
     "  Probe: --rate HZ (50 .. 10000, default 1000) periodic threads (--threads N, default 1) sleeping to absolute\n"
     "  times of CLOCK_MONOTONIC; --computation-us C of busy work per cycle (default 0); a cycle misses when\n"
@@ -21,6 +18,7 @@ inline constexpr const char* kProbeUsage =
     "  the true maximum kept beyond it.\n";
 
 // From the options above; `--no-rt` is a flag the caller adds to its flag set.
+// Throws UsageError for bad words or CPUs this computer does not have.
 headroom::ProbeConfig probe_config(const ParsedArgs& args);
 
 }  // namespace bs::cli

@@ -10,6 +10,7 @@
 #include "analysis/power/sweep_energy.h"
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
+#include "commands/run_flops_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/events_option.h"
@@ -71,7 +72,7 @@ void print_ceiling_comparison(double flops, const kernels::Backend& backend, con
 }
 
 // The result event of a sweep: each D's peak and where the runs were written.
-nlohmann::json result_fields(const std::vector<FlopsRun>& runs, const ParsedArgs& args) {
+nlohmann::json result_fields(const std::vector<FlopsRun>& runs, const commands::RunFlopsSettings& settings) {
   nlohmann::json peaks = nlohmann::json::array();
   std::size_t points = 0;
   for (const FlopsRun& r : runs) points += r.samples.size();
@@ -83,46 +84,29 @@ nlohmann::json result_fields(const std::vector<FlopsRun>& runs, const ParsedArgs
                      {"sd_flops", row.peak.at_peak.sd},
                      {"n", row.peak.at_peak.n},
                      {"workers_at_peak", row.peak.workers}});
-  return {
-      {"runs", runs.size()},
-      {"points", points},
-      {"peaks", peaks},
-      {"out", args.value("--out") ? nlohmann::json(*args.value("--out")) : nlohmann::json(nullptr)},
-      {"workspace", args.value("--workspace") ? nlohmann::json(*args.value("--workspace")) : nlohmann::json(nullptr)}};
+  return {{"runs", runs.size()},
+          {"points", points},
+          {"peaks", peaks},
+          {"out", settings.out ? nlohmann::json(*settings.out) : nlohmann::json(nullptr)},
+          {"workspace", settings.workspace ? nlohmann::json(*settings.workspace) : nlohmann::json(nullptr)}};
 }
 
 int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err,
                    remote::EventWriter* events) {
-  const ParsedArgs args =
-      parse_args(raw, {"--json", "--no-warmup", "--quiet"},
-                 {"--backend", "--points", "--iterations", "--workers", "--repeats", "--out", "--workspace",
-                  "--variant", "--device", "--power", "--power-interval-ms", "--sysfs-root", "--isa", "--events"});
-  if (args.positional.size() != 1 || args.positional[0] != "flops") throw UsageError("expected 'run flops'");
+  if (raw.empty() || raw[0] != "flops") throw UsageError("expected 'run flops'");
+  const commands::RunFlopsSettings settings = commands::run_flops_from_words({raw.begin() + 1, raw.end()});
   kernels::SweepSpec spec;
-  try {
-    spec.workers = kernels::parse_worker_spec(args.value("--workers").value_or("1,2,4,8,16,32,64,128,256"));
-    spec.dims = kernels::parse_dims_list(args.value("--points").value_or("4"));
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--workers/--points: ") + e.what());
-  }
-  const double n = args.number("--iterations", 40000);
-  const double repeats = args.number("--repeats", 3);
-  if (n < 1 || n > 1e12 || n != static_cast<double>(static_cast<std::int64_t>(n)))
-    throw UsageError("--iterations must be a whole number >= 1");
-  if (repeats < 1 || repeats > 1000) throw UsageError("--repeats must be between 1 and 1000");
-  spec.iterations = static_cast<std::int64_t>(n);
-  spec.repeats = static_cast<int>(repeats);
-  spec.warmup = !args.has("--no-warmup");
-  const std::string variant = args.value("--variant").value_or("throughput");
-  // The throughput variant's per-backend labels (float16x4, float4x4) are accepted as its names too.
-  if (variant != "paper" && variant != "throughput" && variant != "float16x4" && variant != "float4x4")
-    throw UsageError("--variant must be paper or throughput");
-  spec.variant = variant == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
+  spec.workers = kernels::parse_worker_spec(settings.workers);  // checked by the grammar
+  spec.dims = kernels::parse_dims_list(settings.points);
+  spec.iterations = settings.iterations;
+  spec.repeats = settings.repeats;
+  spec.warmup = settings.warmup;
+  spec.variant = settings.variant == "paper" ? kernels::Variant::Paper : kernels::Variant::Throughput;
 
-  kernels::CpuInfo cpu = cpu_from_args(args);
+  kernels::CpuInfo cpu = cpu_from_isa(settings.isa);
   const auto backends = kernels::available_backends(cpu);
-  std::string backend_id = args.value("--backend").value_or("cpu");
-  if (const auto device = args.value("--device")) backend_id += ":" + *device;  // --backend opencl --device 1
+  std::string backend_id = settings.backend;
+  if (const auto& device = settings.device) backend_id += ":" + *device;  // --backend opencl --device 1
   const kernels::Backend* found = nullptr;
   try {
     found = &kernels::find_backend(backends, backend_id);
@@ -130,11 +114,11 @@ int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::
     throw UsageError(e.what());
   }
   const kernels::Backend& backend = *found;
-  if (!args.has("--quiet"))
+  if (!settings.quiet)
     err << "benchscope-cli: " << backend.label << " on " << backend.device_name << " (" << backend.details
         << "), theoretical peak " << format_si(backend.theoretical_peak_flops, "FLOPS") << '\n';
   // With --events the text goes to stderr; progress is an event, not a line redrawn in place.
-  const bool quiet = args.has("--quiet");
+  const bool quiet = settings.quiet;
   std::ostream& text = events ? err : out;
   if (events)
     events->write("sweep", {{"backend", backend.label},
@@ -148,7 +132,7 @@ int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::
   const CancelToken& cancel = interrupt_token();
   // The sampler runs on its own thread; the sweep marks its phases: the warm-up of each D (the time from the
   // previous point's end to this D's first point) and each point.
-  const auto power = start_power(args, err, quiet, events);
+  const auto power = start_power(settings.power, err, quiet, events);
   // Each point lasts long enough for kMinSamplesPerPoint sensor samples (the Kernel Runner does the same).
   if (power) spec.min_point_s = min_point_seconds(power->interval_s());
   double last_end = power ? power->now_s() : 0;
@@ -198,7 +182,7 @@ int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::
     if (events) events->error("no point completed; nothing written");
     return 1;
   }
-  if (const auto path = args.value("--out")) {
+  if (const auto& path = settings.out) {
     save_run_json(*path, result.runs);
     if (!quiet) err << "benchscope-cli: wrote " << *path << '\n';
     if (trace) {
@@ -206,7 +190,7 @@ int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::
       if (!quiet) err << "benchscope-cli: wrote " << power_csv_beside(*path) << '\n';
     }
   }
-  if (const auto ws_path = args.value("--workspace")) {
+  if (const auto& ws_path = settings.workspace) {
     ImportBatch batch;
     batch.source_path = "benchscope-cli run flops";
     batch.format = "benchscope-run-v1";
@@ -216,8 +200,8 @@ int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::
     ws.add_import(batch, content_hash(write_run_json(result.runs)));
     if (!quiet) err << "benchscope-cli: stored " << result.runs.size() << " run(s) in " << *ws_path << '\n';
   }
-  if (events) events->write("result", result_fields(result.runs, args));
-  if (args.has("--json")) {
+  if (events) events->write("result", result_fields(result.runs, settings));
+  if (settings.json) {
     text << write_run_json(result.runs);
   } else {
     for (const PeakRow& row : peak_table(result.runs)) {

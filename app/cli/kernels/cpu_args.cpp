@@ -7,9 +7,11 @@
 
 namespace bs::cli {
 
-kernels::CpuInfo cpu_from_args(const ParsedArgs& args) {
+kernels::CpuInfo cpu_from_args(const ParsedArgs& args) { return cpu_from_isa(args.value("--isa")); }
+
+kernels::CpuInfo cpu_from_isa(const std::optional<std::string>& isa) {
   kernels::CpuInfo cpu = kernels::detect_cpu();
-  if (const auto isa = args.value("--isa")) {
+  if (isa) {
     try {
       kernels::use_simd_target(cpu, kernels::simd_target_by_id(*isa));
     } catch (const std::invalid_argument& e) {

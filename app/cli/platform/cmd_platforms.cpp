@@ -170,7 +170,8 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   const std::string library = args.value("--library").value_or(platform_args.library);
   const bool with_library = !library.empty();
   if (with_library) {
-    const CandidateInputs in = library_candidate_inputs(rows, data, library);
+    CandidateInputs in = library_candidate_inputs(rows, data, library);
+    if (platform_args.loop) in.loop = &loop;  // no class picks what the loop's verdict rejects
     classes = rank_candidates(in, c, options);
     peaks = peak_candidates(in);
     library_results = in.library;

@@ -61,7 +61,15 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
                                                : std::optional<std::string>(platform.library);
   if (spec) {
     const auto rows = compare_platforms(fd.runs, fd.traces, fd.pipelines, platform.options);
-    const CandidateInputs in = library_candidate_inputs(rows, data, *spec);
+    CandidateInputs in = library_candidate_inputs(rows, data, *spec);
+    // No class picks what the control loop's verdict rejects (the report's verdicts judge it the same way).
+    std::vector<headroom::LoopVerdict> loop;
+    if (platform.loop) {
+      std::vector<std::string> names;
+      for (const PlatformRow& r : rows) names.push_back(r.platform);
+      loop = headroom::evaluate_loop(*platform.loop, data.headroom, names);
+      in.loop = &loop;
+    }
     classes = rank_candidates(in, platform.constraints, platform.options);
     peaks = peak_candidates(in);
   }

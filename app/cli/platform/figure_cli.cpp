@@ -52,14 +52,14 @@ ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedDa
   if (!data.frames.empty()) {
     fd.frame = data.frames.front();
   } else if (paths.size() == 1 && looks_like_workspace(paths[0])) {
-    const Workspace ws(paths[0]);
+    const Workspace ws(paths[0], Workspace::OpenMode::ReadOnly);
     warn_damage(ws);
     if (const auto frames = ws.frames(); !frames.empty()) fd.frame = load_frame(ws, frames.front(), cancel);
   }
   // A workspace's devices keep their stored colours (the GUI's); loose files get colours in order. Its runs come
   // first in data.runs, in ws.runs() order (load_inputs), so their labels line up with them.
   if (paths.size() == 1 && looks_like_workspace(paths[0])) {
-    const Workspace ws(paths[0]);
+    const Workspace ws(paths[0], Workspace::OpenMode::ReadOnly);
     for (const DeviceRecord& d : ws.devices()) fd.colors[{d.platform, d.device}] = d.color_index;
     fd.run_labels = run_labels_in_order(ws);
     fd.run_labels.resize(std::min(fd.run_labels.size(), fd.runs.size()));

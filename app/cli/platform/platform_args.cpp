@@ -2,40 +2,40 @@
 #include "platform/platform_args.h"
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
 #include "store/battery_preset_store.h"
+#include "store/decision_inputs.h"
 #include "store/decision_store.h"
 #include "workspace/inputs.h"
 
 namespace bs::cli {
 namespace {
 
-// The workspace's stored decision, when the command reads exactly one workspace and is not told to ignore it.
-struct Stored {
-  StoredDecision decision;
-  std::optional<BatterySetup> battery;  // the pack the Platforms tab used (a preset, or the Battery tab's)
-  std::vector<std::string> chosen_log_platforms;
+// The decision inputs the workspace holds (store/decision_inputs.h: the same rule as the GUI's Platforms tab), when
+// the command reads exactly one workspace and is not told to ignore them; the defaults otherwise. The workspace
+// stays open for the --battery lookup (its own presets) and is closed on return.
+struct FromWorkspace {
+  std::unique_ptr<const Workspace> ws;
+  DecisionInputs in;
 };
 
-std::optional<Stored> read_stored(const ParsedArgs& args) {
-  if (args.has("--no-stored") || args.positional.size() != 1 || !looks_like_workspace(args.positional[0]))
-    return std::nullopt;
-  const Workspace ws(args.positional[0], Workspace::OpenMode::ReadOnly);
-  Stored s;
-  for (const auto& [platform, id] : chosen_logs(ws)) s.chosen_log_platforms.push_back(platform);
-  std::optional<StoredDecision> d;
+FromWorkspace read_inputs(const ParsedArgs& args) {
+  FromWorkspace f;
+  if (args.has("--no-stored") || args.positional.size() != 1 || !looks_like_workspace(args.positional[0])) {
+    f.in = decision_inputs(nullptr);
+    return f;
+  }
+  f.ws = std::make_unique<const Workspace>(args.positional[0], Workspace::OpenMode::ReadOnly);
   try {
-    d = stored_decision(ws);
+    f.in = decision_inputs(f.ws.get());
   } catch (const WorkspaceError& e) {
     if (e.kind() != WorkspaceError::Kind::Corrupt) throw;
     throw WorkspaceError(e.kind(), std::string(e.what()) + " (--no-stored ignores it)");
   }
-  if (!d) return s.chosen_log_platforms.empty() ? std::nullopt : std::optional<Stored>(std::move(s));
-  s.decision = *d;
-  s.battery = d->battery.empty() ? battery_tab_setup(ws) : find_battery_setup(&ws, d->battery);
-  return s;
+  return f;
 }
 
 }  // namespace
@@ -48,31 +48,37 @@ const std::set<std::string>& platform_value_options() {
 
 PlatformArgs parse_platform_args(const ParsedArgs& args) {
   PlatformArgs p;
-  const std::optional<Stored> stored = read_stored(args);
-  const StoredDecision* d = stored ? &stored->decision : nullptr;
+  const FromWorkspace from = read_inputs(args);
+  const DecisionInputs& in = from.in;
   std::vector<std::string> taken;  // what came from the workspace, in words
-  const std::string preset_name = args.value("--battery").value_or("paper-4s-3850");
-  const BatteryPack* preset = find_battery_preset(preset_name);
-  if (!preset) {
-    std::string names;
-    for (const BatteryPack& b : battery_presets()) names += (names.empty() ? "" : ", ") + b.name;
-    throw UsageError("unknown --battery '" + preset_name + "' (known: " + names + ")");
+  BatterySetup battery = in.battery;
+  if (const auto name = args.value("--battery")) {
+    // A built-in pack or one the workspace saved (the Battery tab's presets), with its depth of discharge.
+    const auto found = find_battery_setup(from.ws.get(), *name);
+    if (!found) {
+      std::string names;
+      for (const BatterySetup& b : all_battery_setups(from.ws.get()))
+        names += (names.empty() ? "" : ", ") + b.pack.name;
+      throw UsageError("unknown --battery '" + *name + "' (known: " + names + ")");
+    }
+    battery = *found;
+  } else if (in.battery_from_tab || !in.battery_choice.empty()) {
+    taken.push_back("battery " + battery.pack.name +
+                    (!in.battery_from_tab ? std::string()
+                     : in.battery_missing ? " (the Battery tab's pack; preset " + in.battery_choice + " is gone)"
+                                          : std::string(" (the Battery tab's pack)")));
   }
-  p.pack = *preset;
-  if (!args.value("--battery") && stored && stored->battery) {
-    p.pack = stored->battery->pack;
-    p.options.usable_fraction = stored->battery->depth_of_discharge;
-    taken.push_back("battery " + p.pack.name + (d->battery.empty() ? " (the Battery tab's pack)" : ""));
-  }
+  p.pack = battery.pack;
   p.options.battery_nominal_v = p.pack.nominal_v();
   p.options.battery_capacity_ah = p.pack.capacity_ah;
-  p.options.extra_load_w = args.number("--extra-load", d ? d->extra_load_w : 0);
+  p.options.usable_fraction = battery.depth_of_discharge;
+  p.options.extra_load_w = args.number("--extra-load", in.options.extra_load_w);
   if (!(p.options.extra_load_w >= 0)) throw UsageError("--extra-load must be >= 0 W");
-  if (d && !args.value("--extra-load") && d->extra_load_w > 0) taken.push_back("parallel load");
+  if (!args.value("--extra-load") && in.options.extra_load_w > 0) taken.push_back("parallel load");
   std::optional<std::string> mission = args.value("--mission");
-  if (!mission && d && !d->mission.empty()) {
-    mission = d->mission;
-    taken.push_back("mission " + d->mission);
+  if (!mission && !in.options.mission.empty()) {
+    mission = in.options.mission;
+    taken.push_back("mission " + in.options.mission);
   }
   if (mission) {
     try {
@@ -97,21 +103,14 @@ PlatformArgs parse_platform_args(const ParsedArgs& args) {
       throw UsageError(std::string("--require-loop: ") + e.what());
     }
   }
-  if (!given && d && d->constrained()) {
-    p.constraints = d->constraints();
-    if (!d->loop.empty()) {
-      try {
-        p.loop = headroom::parse_loop_requirement(d->loop);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("the workspace's stored control-loop requirement: ") + e.what() +
-                         " (--no-stored ignores it)");
-      }
-    }
-    taken.insert(taken.begin(), describe_constraints(*d));
+  if (!given && in.stored && in.stored->constrained()) {
+    p.constraints = in.constraints;
+    p.loop = in.loop;
+    taken.insert(taken.begin(), describe_constraints(*in.stored));
   }
-  if (d && !d->candidates.empty()) p.library = d->candidates;
-  if (stored) p.chosen_log_platforms = stored->chosen_log_platforms;
-  p.battery_choice = args.value("--battery").value_or(d ? d->battery : std::string());
+  p.library = in.candidates;
+  p.chosen_log_platforms = in.chosen_log_platforms;
+  p.battery_choice = args.value("--battery").value_or(in.battery_choice);
   for (const std::string& t : taken) p.stored += (p.stored.empty() ? "" : "; ") + t;
   return p;
 }

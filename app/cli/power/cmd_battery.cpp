@@ -24,11 +24,14 @@
 namespace bs::cli {
 namespace {
 
-// The preset (built-in, or saved in --workspace, which may replace a built-in of the same name), then the
-// command line's overrides.
+// The preset (built-in, or saved in --workspace, which may replace a built-in of the same name), or without
+// --preset the setup the workspace's Battery tab shows (as it was last edited there: the same numbers as the GUI),
+// then the command line's overrides.
 BatterySetup setup_from_args(const ParsedArgs& args, const Workspace* ws) {
   const std::string preset_name = args.value("--preset").value_or("paper-4s-3850");
-  const auto found = find_battery_setup(ws, preset_name);
+  std::optional<BatterySetup> found;
+  if (ws && !args.value("--preset")) found = battery_tab_setup(*ws);
+  if (!found) found = find_battery_setup(ws, preset_name);
   if (!found) {
     std::string names;
     for (const BatterySetup& p : all_battery_setups(ws)) names += (names.empty() ? "" : ", ") + p.pack.name;
@@ -138,7 +141,8 @@ int run_battery(const std::vector<std::string>& raw, std::ostream& out, std::ost
   if (const auto path = args.value("--workspace")) {
     // Only an existing workspace: opening a missing path would create an empty one.
     if (!looks_like_workspace(*path)) throw UsageError("--workspace: " + *path + " is not a BenchScope workspace");
-    ws = std::make_unique<Workspace>(*path);
+    ws = std::make_unique<Workspace>(
+        *path, args.value("--save-preset") ? Workspace::OpenMode::ReadWrite : Workspace::OpenMode::ReadOnly);
     warn_damage(*ws);
   }
   const BatterySetup setup = setup_from_args(args, ws.get());

@@ -66,7 +66,7 @@ std::vector<LoadedTrace> load_traces(const std::vector<std::string>& paths, cons
   if (paths.size() == 1 && looks_like_workspace(paths[0])) {
     for (PowerTrace& t : load_inputs(paths, interrupt_token()).power_traces) out.push_back({std::move(t), {}, {}});
     // Which phases the user saved (the GUI's "Save as phase…"), as the Power tab shows them.
-    const Workspace ws(paths[0]);
+    const Workspace ws(paths[0], Workspace::OpenMode::ReadOnly);
     const std::vector<StoredPowerTrace> stored = ws.power_trace_summaries();
     for (std::size_t i = 0; i < out.size() && i < stored.size(); ++i)
       if (stored[i].trace.label == out[i].trace.label) out[i].phase_origins = phase_origins(ws, stored[i].id);

@@ -36,14 +36,14 @@ std::unique_ptr<sensors::PowerRecorder> make_recorder(const std::string& spec, c
 
 std::unique_ptr<sensors::PowerRecorder> start_power(const ParsedArgs& args, std::ostream& err, bool quiet,
                                                     remote::EventWriter* events) {
-  const std::string spec = args.value("--power").value_or("none");
-  if (spec == "none") {
-    if (args.value("--power-interval-ms") || args.value("--sysfs-root"))
-      throw UsageError("--power-interval-ms and --sysfs-root need --power");
-    return nullptr;
-  }
-  return make_recorder(spec, args.value("--sysfs-root").value_or("/"), args.number("--power-interval-ms", 100), err,
-                       quiet, events);
+  return start_power(commands::read_power(args), err, quiet, events);
+}
+
+std::unique_ptr<sensors::PowerRecorder> start_power(const commands::PowerWords& power, std::ostream& err, bool quiet,
+                                                    remote::EventWriter* events) {
+  if (power.sensor == "none") return nullptr;
+  return make_recorder(power.sensor, power.sysfs_root.value_or("/"), power.interval_ms.value_or(100), err, quiet,
+                       events);
 }
 
 void print_phase_energies(std::ostream& out, const PowerTrace& trace) {

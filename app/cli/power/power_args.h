@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "commands/power_words.h"
 #include "common/args.h"
 #include "model/power_trace.h"
 #include "sensors/recorder.h"
@@ -31,6 +32,9 @@ inline constexpr const char* kPowerUsage =
 // `events`, every sample is also a "power" event (--events jsonl).
 std::unique_ptr<sensors::PowerRecorder> start_power(const ParsedArgs& args, std::ostream& err, bool quiet = false,
                                                     remote::EventWriter* events = nullptr);
+// The same from a grammar's power words (core/commands/power_words.h).
+std::unique_ptr<sensors::PowerRecorder> start_power(const commands::PowerWords& power, std::ostream& err,
+                                                    bool quiet = false, remote::EventWriter* events = nullptr);
 // The sensor options as record-power takes them: --sensor, --interval-ms, --sysfs-root.
 std::unique_ptr<sensors::PowerRecorder> make_recorder(const std::string& spec, const std::string& root,
                                                       double interval_ms, std::ostream& err, bool quiet,

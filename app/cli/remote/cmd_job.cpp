@@ -8,6 +8,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "commands/remote_commands.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/events_option.h"
@@ -15,11 +16,14 @@
 #include "kernels/sweep.h"
 #include "remote/events.h"
 #include "remote/job_agent.h"
-#include "remote/remote_commands.h"
 #include "sensors/discovery.h"
 #include "util/host_clock.h"
 
 namespace bs::cli {
+
+using commands::find_remote_command;
+using commands::remote_command_names;
+using commands::RemoteCommand;
 namespace {
 
 // The command as main() would run it, in the job's forked child: its text to stderr (stdout carries events).

@@ -2,13 +2,13 @@
 // benchscope-cli remote: run a measurement on a robot over SSH, watch it from the desk and bring the results home.
 #include <ostream>
 
+#include "commands/remote_commands.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/signals.h"
 #include "common/text_table.h"
 #include "remote/job_client.h"
 #include "remote/remote_cli.h"
-#include "remote/remote_commands.h"
 #include "remote/robots.h"
 
 namespace bs::cli {

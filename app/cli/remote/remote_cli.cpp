@@ -11,12 +11,12 @@
 #include <ostream>
 
 #include "analysis/stats/units.h"
+#include "commands/remote_commands.h"
 #include "common/args.h"
 #include "common/signals.h"
 #include "remote/job_agent.h"
 #include "remote/job_client.h"
 #include "remote/job_import.h"
-#include "remote/remote_commands.h"
 #include "remote/remote_inputs.h"
 #include "store/workspace.h"
 #include "util/host_clock.h"
@@ -24,6 +24,11 @@
 namespace fs = std::filesystem;
 
 namespace bs::cli {
+
+using commands::check_remote_words;
+using commands::find_remote_command;
+using commands::remote_command_names;
+using commands::RemoteCommand;
 namespace {
 
 // A private folder for the files coming home, removed with everything in it however the job ends.
@@ -301,6 +306,9 @@ int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const
                        " is the desk's to give: the robot streams its events and its results come home to the "
                        "desk's --workspace");
   }
+  // The words go through the command's grammar here, as the robot's CLI will read them: a mistake is refused before
+  // any file is sent or any job started.
+  check_remote_words(*rc, command);
   const std::string id = o.id.value_or(remote::new_job_id());
   try {
     remote::check_job_id(id);

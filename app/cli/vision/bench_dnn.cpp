@@ -29,6 +29,7 @@
 #include "power/power_args.h"
 #include "store/workspace.h"
 #include "util/host_clock.h"
+#include "util/text.h"
 #include "vision/pipeline/detector.h"
 #include "vision/pipeline/dnn_architectures.h"
 #include "vision/pipeline/dnn_bench.h"
@@ -117,12 +118,6 @@ Network from_files(const std::string& spec, cv::Size input) {
   n.scale = info.scale;
   n.mean = info.mean;
   return n;
-}
-
-std::string fixed(double v, int digits) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
 }
 
 // The device's FP32 ceiling from the FLOPS kernels' backends: the CPU's for the cpu target, the OpenCL or CUDA

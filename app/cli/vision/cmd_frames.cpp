@@ -26,7 +26,7 @@ namespace {
 int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
   const ParsedArgs args = parse_args(raw_args, {}, {"--triptych", "--out", "--method", "--lens", "--window"});
   if (args.positional.size() != 1) throw UsageError("frames needs exactly one workspace");
-  const Workspace ws(args.positional[0]);
+  const Workspace ws(args.positional[0], Workspace::OpenMode::ReadOnly);
   warn_damage(ws);
   const auto frames = ws.frames();
   if (!args.value("--triptych")) {

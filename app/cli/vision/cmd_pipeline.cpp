@@ -15,6 +15,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "analysis/power/phase_energy.h"
+#include "commands/pipeline_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/signals.h"
@@ -31,7 +32,6 @@
 #include "vision/pipeline/pipeline_measure.h"
 #include "vision/pipeline/pipeline_record.h"
 #include "vision/pipeline/threads.h"
-#include "vision/pipeline_args.h"
 #include "vision/reproject/cuda_preprocess.h"
 #include "vision/reproject/opencl_preprocess.h"
 #include "vision/reproject/preprocess.h"
@@ -179,7 +179,7 @@ void write_figures(const std::string& dir, const FrameFile& frame, const cv::Mat
 
 // The run's ending, shared by frame files and the synthetic capture: the power trace closed, the table or JSON
 // printed, figure 3 written (frame files only), the run and its trace stored as one import.
-int finish_run(const ParsedArgs& args, const PipelineRun& run, const PipelineResult& result,
+int finish_run(const commands::PipelineSettings& settings, const PipelineRun& run, const PipelineResult& result,
                sensors::PowerRecorder* power, const std::function<void(std::ostream&)>& figures, std::ostream& out,
                std::ostream& err) {
   const std::string json_text = write_pipeline_json(run);
@@ -190,14 +190,14 @@ int finish_run(const ParsedArgs& args, const PipelineRun& run, const PipelineRes
     trace->platform = run.platform;  // the Platforms view pairs traces and runs by platform
   }
   // --json keeps stdout to the document alone; the rest goes where the command's messages go.
-  std::ostream& info = args.has("--json") ? err : out;
-  if (args.has("--json"))
+  std::ostream& info = settings.json ? err : out;
+  if (settings.json)
     out << json_text;
   else
     print_table(run, result, out);
   if (trace) print_pipeline_energy(info, *trace, run, result.processed);
   if (figures) figures(info);
-  if (const auto ws_path = args.value("--workspace")) {
+  if (const auto& ws_path = settings.workspace) {
     Workspace ws(*ws_path);
     // With --power the trace goes into the same import as the run (stored and removed together).
     ImportBatch batch;
@@ -213,31 +213,16 @@ int finish_run(const ParsedArgs& args, const PipelineRun& run, const PipelineRes
 
 // pipeline --synthetic: the Pipeline tab's measurement (the paper camera's synthetic capture through the fused
 // preprocessing and the detector), which a robot can run without any file from the desk.
-int run_synthetic(const ParsedArgs& args, std::ostream& out, std::ostream& err) {
-  if (!args.positional.empty())
-    throw UsageError("--synthetic measures the synthetic capture of the paper's camera: give no frame files (got '" +
-                     args.positional.front() + "')");
-  for (const char* option : {"--demosaic", "--policy", "--queue", "--pattern", "--out"})
-    if (args.value(option))
-      throw UsageError(std::string("--synthetic runs as the Pipeline tab does (fused demosaic, block policy, queues "
-                                   "of 2, BGGR, no figures): leave out ") +
-                       option);
-  if (const auto lens = args.value("--lens"); lens && *lens != "paper")
-    throw UsageError("--synthetic uses the paper's lens (--lens paper), not '" + *lens + "'");
-  const double frames = args.number("--frames", 20);
-  if (frames < 1 || frames > 1e6 || frames != static_cast<double>(static_cast<long>(frames)))
-    throw UsageError("--frames must be a whole number from 1 to 1,000,000");
+int run_synthetic(const commands::PipelineSettings& settings, std::ostream& out, std::ostream& err) {
   vision::SyntheticPipelineOptions o;
-  o.frames = static_cast<std::size_t>(frames);
-  o.detection_workers = detect_workers_option(args);
-  o.detect_scale = detect_scale_option(args);
-  o.backend = args.value("--backend").value_or("cpu");
-  if (o.backend != "cpu" && o.backend != "opencl" && o.backend != "cuda")
-    throw UsageError("--backend must be cpu, opencl or cuda (got '" + o.backend + "')");
-  o.detector = args.value("--detector").value_or("hog");
+  o.frames = settings.frames.value_or(20);
+  o.detection_workers = settings.detect_workers.value_or(vision::default_detection_workers());
+  o.detect_scale = settings.detect_scale;
+  o.backend = settings.backend;
+  o.detector = settings.detector;
   if (vision::detector_is_model_file(o.detector)) model_files(o.detector);
   o.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
-  const auto power = start_power(args, err, args.has("--json"));
+  const auto power = start_power(settings.power, err, settings.json);
   if (power) power->begin_phase("pipeline");
   // Progress at every tenth of the frames (a robot's desk shows these lines as they come).
   std::atomic<int> reported{0};
@@ -254,50 +239,30 @@ int run_synthetic(const ParsedArgs& args, std::ostream& out, std::ostream& err) 
     err << "benchscope-cli: pipeline cancelled after " << result.processed << " frames; nothing stored\n";
     return 1;
   }
-  run->platform = args.value("--platform").value_or(bs::host_name());
+  run->platform = settings.platform.value_or(bs::host_name());
   run->provenance.compiler = BENCHSCOPE_COMPILER;
-  return finish_run(args, *run, result, power.get(), {}, out, err);
+  return finish_run(settings, *run, result, power.get(), {}, out, err);
 }
 
 int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  const ParsedArgs args = parse_args(raw, {"--json", "--synthetic"},
-                                     {"--lens", "--demosaic", "--backend", "--detector", "--frames", "--policy",
-                                      "--out", "--workspace", "--pattern", "--platform", "--queue", "--detect-workers",
-                                      "--detect-scale", "--power", "--power-interval-ms", "--sysfs-root"});
-  if (args.has("--synthetic")) return run_synthetic(args, out, err);
-  if (args.positional.empty()) throw UsageError("pipeline needs at least one frame file (or --synthetic)");
-  const auto lens_arg = args.value("--lens");
-  if (!lens_arg) throw UsageError("--lens LENS.json is required (or --lens paper for the paper's camera)");
-  const std::string backend = args.value("--backend").value_or("cpu");
-  if (backend != "cpu" && backend != "opencl" && backend != "cuda")
-    throw UsageError("--backend must be cpu, opencl or cuda (got '" + backend + "')");
-  const std::string demosaic_name = args.value("--demosaic").value_or(backend == "opencl" ? "bilinear" : "fused");
+  const commands::PipelineSettings settings = commands::pipeline_from_words(raw);
+  if (settings.synthetic) return run_synthetic(settings, out, err);
+  const std::string& lens_arg = *settings.lens;
+  const std::string& backend = settings.backend;
+  const std::string demosaic_name = settings.demosaic.value_or(backend == "opencl" ? "bilinear" : "fused");
   const Demosaic dm = demosaic_option(demosaic_name);
-  if (backend != "cpu" && dm.method != DemosaicMethod::Bilinear)
-    throw UsageError("--backend " + backend + " demosaics bilinearly: use --demosaic bilinear (got '" + demosaic_name +
-                     "')");
-  const double frames_arg = args.number("--frames", 50);
-  if (frames_arg < 1 || frames_arg > 1e7 || frames_arg != static_cast<double>(static_cast<long>(frames_arg)))
-    throw UsageError("--frames must be a whole number from 1 to 10,000,000");
-  const double queue = args.number("--queue", 2);
-  if (queue < 1 || queue > 1024) throw UsageError("--queue must be between 1 and 1024");
-  const std::string policy = args.value("--policy").value_or("block");
-  if (policy != "block" && policy != "drop-oldest") throw UsageError("--policy must be block or drop-oldest");
-  const std::size_t detect_workers = detect_workers_option(args);
-  const double detect_scale = detect_scale_option(args);
-  BayerPattern default_pattern = BayerPattern::BGGR;
-  if (const auto p = args.value("--pattern")) {
-    try {
-      default_pattern = bayer_pattern_from_string(*p);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--pattern: ") + e.what());
-    }
-  }
+  const std::size_t frames_arg = settings.frames.value_or(50);
+  const std::size_t queue = settings.queue.value_or(2);
+  const std::string policy = settings.policy.value_or("block");
+  const std::size_t detect_workers = settings.detect_workers.value_or(vision::default_detection_workers());
+  const double detect_scale = settings.detect_scale;
+  const BayerPattern default_pattern =
+      settings.pattern ? bayer_pattern_from_string(*settings.pattern) : BayerPattern::BGGR;
 
-  const auto [lens, view] = load_lens(*lens_arg);
+  const auto [lens, view] = load_lens(lens_arg);
   std::vector<FrameFile> files;
   std::vector<cv::Mat> mosaics;
-  for (const std::string& path : args.positional) {
+  for (const std::string& path : settings.frame_files) {
     files.push_back(read_frame_file(path, default_pattern));
     const FrameFile& f = files.back();
     if (f.mosaic.cols != lens.width || f.mosaic.rows != lens.height)
@@ -306,11 +271,12 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
                                "x" + std::to_string(lens.height));
     if (f.pattern != files.front().pattern)
       throw std::runtime_error(path + ": Bayer pattern " + std::string(to_string(f.pattern)) + " differs from " +
-                               args.positional.front() + " (" + std::string(to_string(files.front().pattern)) + ")");
+                               settings.frame_files.front() + " (" + std::string(to_string(files.front().pattern)) +
+                               ")");
     mosaics.push_back(to_8bit(f.mosaic, f.bit_depth));
   }
   const BayerPattern pattern = files.front().pattern;
-  const std::string detector_name = args.value("--detector").value_or("hog");
+  const std::string& detector_name = settings.detector;
   const Detector detector = detector_option(detector_name, detect_scale);
   Preprocessor preprocess;
   OpenClPreprocessorInfo cl_info;
@@ -321,18 +287,18 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
                  : backend == "cuda" ? make_cuda_preprocessor(lens, view, pattern, &cuda_info)
                                      : make_preprocessor(lens, view, pattern, dm.method, dm.path);
   } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(*lens_arg + ": " + e.what());
+    throw std::runtime_error(lens_arg + ": " + e.what());
   }
 
   PipelineConfig config;
-  config.max_frames = static_cast<std::size_t>(frames_arg);
-  config.queue_capacity = static_cast<std::size_t>(queue);
+  config.max_frames = frames_arg;
+  config.queue_capacity = queue;
   config.policy = policy == "block" ? QueuePolicy::Block : QueuePolicy::DropOldest;
   config.detection_workers = detect_workers;
   // The frame files play the camera, over and over until --frames frames were captured.
   const FrameSource source = [&](std::size_t i) -> std::optional<cv::Mat> { return mosaics[i % mosaics.size()]; };
   const CancelToken& cancel = interrupt_token();
-  const auto power = start_power(args, err, args.has("--json"));
+  const auto power = start_power(settings.power, err, settings.json);
   if (power) power->begin_phase("pipeline");
   const PipelineResult result = run_pipeline(source, preprocess, detector, config, cancel);
   if (result.cancelled) {
@@ -341,7 +307,7 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   }
 
   PipelineRun run = to_pipeline_run(result);
-  run.platform = args.value("--platform").value_or(bs::host_name());
+  run.platform = settings.platform.value_or(bs::host_name());
   run.device = backend == "opencl" ? cl_info.device + " (OpenCL) preprocessing, CPU detection"
                : backend == "cuda" ? cuda_info.device + " (CUDA) preprocessing, CPU detection"
                                    : "CPU (" + std::to_string(opencv_threads()) + " threads)";
@@ -363,16 +329,16 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   run.provenance.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
   run.provenance.compiler = BENCHSCOPE_COMPILER;
   run.provenance.note =
-      "benchscope-cli pipeline on " + std::to_string(args.positional.size()) + " frame file(s), " +
+      "benchscope-cli pipeline on " + std::to_string(settings.frame_files.size()) + " frame file(s), " +
       std::to_string(view.width) + "x" + std::to_string(view.height) + " view, policy " + policy + ", queue " +
       std::to_string(config.queue_capacity) +
       (detector ? ", " + std::to_string(detect_workers) + " detection workers, detect scale " + scale_text(detect_scale)
                 : std::string());
   const auto figures = [&](std::ostream& info) {
-    if (const auto dir = args.value("--out"))
+    if (const auto& dir = settings.out)
       write_figures(*dir, files.front(), mosaics.front(), dm, preprocess, detector, info);
   };
-  return finish_run(args, run, result, power.get(), figures, out, err);
+  return finish_run(settings, run, result, power.get(), figures, out, err);
 }
 
 const CommandRegistrar registrar({

@@ -18,7 +18,8 @@ int run_runs(const std::vector<std::string>& raw, std::ostream& out, std::ostrea
   if (args.positional.size() != 1) throw UsageError("runs needs one workspace");
   const std::string& path = args.positional.front();
   if (!looks_like_workspace(path)) throw UsageError(path + ": not a workspace (.bsw)");
-  Workspace ws(path);
+  // Listing only reads: read-only, so it never migrates or checkpoints a file the GUI has open.
+  Workspace ws(path, args.value("--run") ? Workspace::OpenMode::ReadWrite : Workspace::OpenMode::ReadOnly);
   const auto runs = ws.runs();
   if (const auto id_text = args.value("--run")) {
     if (!args.value("--label") && !args.has("--clear")) throw UsageError("--run ID needs --label TEXT or --clear");

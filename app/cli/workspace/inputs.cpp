@@ -12,6 +12,8 @@
 #include "common/importer.h"
 #include "common/log_platform.h"
 #include "store/decision_store.h"
+#include "store/log_settings_store.h"
+#include "store/open_workspaces.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -21,6 +23,8 @@ bool looks_like_workspace(const std::string& path) {
   std::error_code ec;
   if (path.size() > 4 && path.compare(path.size() - 4, 4, ".bsw") == 0 && std::filesystem::is_regular_file(path, ec))
     return true;
+  // A workspace this process holds open is one, and must not be opened a second time (store/open_workspaces.h).
+  if (is_open_workspace(path)) return true;
   std::ifstream f(path, std::ios::binary);
   char magic[16] = {};
   f.read(magic, sizeof magic);
@@ -46,12 +50,15 @@ void add_foreign_sweeps(LoadedData& data) {
 LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken& cancel) {
   LoadedData data;
   if (paths.size() == 1 && looks_like_workspace(paths[0])) {
-    const Workspace ws(paths[0]);
+    // Read-only: reading never migrates, journals or checkpoints the file another process (the GUI) may hold.
+    const Workspace ws(paths[0], Workspace::OpenMode::ReadOnly);
     for (auto& r : ws.runs()) data.runs.push_back(std::move(r.run));
     for (auto& s : ws.result_sets()) data.result_sets.push_back(std::move(s.set));
     // Each platform's chosen power log first: the comparisons use a platform's first log, as in the GUI.
     std::vector<StoredPowerTrace> traces = ws.power_traces();
     order_chosen_logs_first(ws, traces);
+    // A log's voltage borrowed from another log (the Power tab's "Voltage from"), as the GUI's loader applies it.
+    apply_voltage_sources(ws, traces);
     for (auto& t : traces) data.power_traces.push_back(std::move(t.trace));
     for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
     for (auto& d : ws.dnn_runs()) data.dnn_runs.push_back(std::move(d.run));

@@ -83,6 +83,7 @@ Candidate from_library(const LibraryResult& r, const Library* lib) {
   if (!r.division.empty()) cond.push_back(r.division + (r.submitter.empty() ? "" : ", " + r.submitter));
   c.conditions = join(cond);
   c.software = r.software;
+  c.framework = framework_of(r.software + " " + r.system);
   c.source = r.source.url;
   c.flags = r.flags;
   return c;
@@ -107,6 +108,9 @@ std::optional<Candidate> from_loadgen(const ResultSet& s) {
       c.latency_statistic = m.metric.find("90th") != std::string::npos   ? "p90" + es
                             : m.metric.find("99th") != std::string::npos ? "p99" + es
                                                                          : m.metric.substr(8);
+      // MultiStream's latency is per query of several samples: the importer says so in the library's words.
+      if (const std::string said = setting(s.provenance, "latency statistic"); !said.empty())
+        c.latency_statistic = said;
     }
     // SingleStream is rated in queries per second (one sample each), as the library rates it; the other
     // scenarios in samples per second.
@@ -116,7 +120,9 @@ std::optional<Candidate> from_loadgen(const ResultSet& s) {
     }
     if (m.metric == "samples per second" && c.scenario != "SingleStream") {
       c.throughput_per_s = v;
-      c.throughput_statistic = "samples per second";
+      // MultiStream: samples per query / the official latency, as the library rates it (the importer's words).
+      const std::string how = setting(s.provenance, "throughput");
+      c.throughput_statistic = how.empty() ? "samples per second" : how;
     }
     if (m.metric == "mean power") c.power_w = v;
     if (m.metric == "energy per sample") c.energy_per_inference_j = v;
@@ -125,9 +131,16 @@ std::optional<Candidate> from_loadgen(const ResultSet& s) {
     c.power_how = std::string(to_string(s.provenance.measurement)) + ", " + s.provenance.sensor;
     const std::string kind = setting(s.provenance, "power kind");
     c.power_kind = kind.empty() ? power_kind_of(c.power_how) : kind;
+    // spl.txt without its detail log: the whole log's mean, not MLPerf's power window.
+    if (const std::string window = setting(s.provenance, "power window"); window.starts_with("whole log"))
+      c.flags.push_back(
+          {"power_not_in_mlperf_window",
+           "mean power over the whole spl.txt (" + window +
+               "): it includes the time before and after LoadGen's queries, so it is not MLPerf's power"});
   }
   c.conditions = "MLPerf LoadGen run" + (s.provenance.date.empty() ? "" : " (" + s.provenance.date + ")");
   c.software = s.backend;
+  c.framework = framework_of(s.backend + " " + setting(s.provenance, "framework"));
   c.source = s.provenance.source_file;
   if (!c.throughput_per_s && c.latency_s && *c.latency_s > 0) {
     c.throughput_per_s = 1 / *c.latency_s;
@@ -161,6 +174,7 @@ Candidate from_dnn(const DnnRun& r, std::span<const PlatformRow> rows) {
   c.conditions =
       r.device + ", " + r.backend + (r.architecture_only ? ", " + std::string(kArchitectureTimingLabel) : "");
   c.software = r.provenance.tool;
+  c.framework = "OpenCV dnn";
   c.source = r.provenance.source_file;
   return c;
 }
@@ -188,6 +202,7 @@ std::optional<Candidate> from_pipeline(const PipelineRun& r, std::span<const Pla
   }
   c.conditions = r.device;
   c.software = r.provenance.tool;
+  c.framework = framework_of(r.detector + " " + r.device);  // the paper's "SSD MobileNet (TensorFlow, MS COCO)"
   c.source = r.provenance.source_file;
   return c;
 }
@@ -209,8 +224,10 @@ std::string difference(const Candidate& c, const Candidate& ref) {
   return join(d);
 }
 
-void check(Candidate& c, const Constraints& k) {
+void check(Candidate& c, const Constraints& k, const std::vector<headroom::LoopVerdict>* loop) {
   c.checks.clear();
+  if (loop)
+    for (ConstraintCheck& x : headroom::loop_checks(c.platform, *loop)) c.checks.push_back(std::move(x));
   if (k.power_budget_w) {
     ConstraintCheck x{"power budget", "W", *k.power_budget_w, c.power_w};
     x.met = c.power_w && *c.power_w <= *k.power_budget_w;
@@ -272,6 +289,28 @@ std::string canonical_network(std::string_view name) {
   return n;
 }
 
+std::string framework_of(std::string_view software) {
+  // Most specific first: "TensorFlow Lite" before "TensorFlow", "TensorRT" (in "TensorRT 8.5.2") before either.
+  static const std::pair<std::string_view, std::string_view> kNames[] = {{"tensorrt", "TensorRT"},
+                                                                         {"tflite", "TFLite"},
+                                                                         {"tensorflow lite", "TFLite"},
+                                                                         {"tensorflow", "TensorFlow"},
+                                                                         {"pytorch", "PyTorch"},
+                                                                         {"onnxruntime", "ONNX Runtime"},
+                                                                         {"onnx runtime", "ONNX Runtime"},
+                                                                         {"openvino", "OpenVINO"},
+                                                                         {"armnn", "ArmNN"},
+                                                                         {"arm nn", "ArmNN"},
+                                                                         {"cv::dnn", "OpenCV dnn"},
+                                                                         {"opencv", "OpenCV dnn"},
+                                                                         {"ncnn", "ncnn"},
+                                                                         {"tvm", "TVM"}};
+  const std::string s = lower(software);
+  for (const auto& [key, name] : kNames)
+    if (s.find(key) != std::string::npos) return std::string(name);
+  return {};
+}
+
 std::string power_kind_of(std::string_view how) {
   const std::string h = lower(how);
   const auto has = [&](std::string_view w) { return h.find(w) != std::string::npos; };
@@ -285,7 +324,9 @@ std::string power_kind_of(std::string_view how) {
 
 std::string origin_label(DataOrigin origin) { return std::string(to_string(origin)); }
 
-std::string CandidateClass::title() const { return network + ", " + scenario + ", " + precision; }
+std::string CandidateClass::title() const {
+  return network + ", " + scenario + ", " + precision + (framework.empty() ? "" : " (" + framework + ")");
+}
 
 std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Constraints& constraints,
                                             const ComparisonOptions& options) {
@@ -297,19 +338,26 @@ std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Con
     if (auto c = from_loadgen(s)) all.push_back(std::move(*c));
   for (const LibraryResult* r : in.library)
     if (r && r->is_inference()) all.push_back(from_library(*r, in.lib));
-  std::map<std::tuple<std::string, std::string, std::string>, CandidateClass> classes;
-  std::vector<std::tuple<std::string, std::string, std::string>> order;
+  using Key = std::tuple<std::string, std::string, std::string, std::string>;
+  std::map<Key, CandidateClass> classes;
+  std::vector<Key> order;
   for (Candidate& c : all) {
     c.battery_runtime_h = runtime_h(c.power_w, options);
-    check(c, constraints);
+    check(c, constraints, in.loop);
     // A network not stated is never ranked with another: each such row is a class of its own.
     const bool unstated = c.network.empty() || c.network.find("not stated") != std::string::npos;
-    const auto key = std::make_tuple(unstated ? c.network + " (" + c.source + ")" : c.network, c.scenario, c.precision);
+    // A precision not stated is ranked only with the same framework; without a framework either, alone.
+    const bool no_precision = c.precision == "not stated";
+    const std::string framework = !no_precision         ? std::string()
+                                  : c.framework.empty() ? "framework not stated: " + c.source
+                                                        : c.framework;
+    const Key key{unstated ? c.network + " (" + c.source + ")" : c.network, c.scenario, c.precision, framework};
     auto [it, fresh] = classes.try_emplace(key);
     if (fresh) {
       it->second.network = c.network;
       it->second.scenario = c.scenario;
       it->second.precision = c.precision;
+      if (no_precision) it->second.framework = c.framework.empty() ? "framework not stated" : c.framework;
       order.push_back(key);
     }
     it->second.rows.push_back(std::move(c));

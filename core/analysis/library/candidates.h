@@ -13,6 +13,7 @@
 
 #include "analysis/library/library.h"
 #include "analysis/platform/platform_comparison.h"
+#include "headroom/loop_requirement.h"
 #include "model/dnn_run.h"
 #include "model/flops_run.h"
 #include "model/pipeline_run.h"
@@ -43,13 +44,18 @@ struct Candidate {
   bool meets_all = false;
   bool recommended = false;  // the most inferences per second among the class's rows that meet every constraint
   std::string not_ranked{};  // why this row is listed but never ranked (one run of one image); "" when ranked
+  std::string framework{};   // framework_of() its software ("TensorRT", "TensorFlow"); "" when nothing says
 };
 
+// A precision "not stated" says nothing about the arithmetic: such rows are ranked only with rows of the same
+// framework (a TensorRT run of unknown precision is likely INT8, a TensorFlow one FP32), and a row whose framework is
+// not stated either forms a class of its own. A stated precision is never in a class with "not stated".
 struct CandidateClass {
   std::string network, scenario, precision;
+  std::string framework{};      // only for precision "not stated": the framework the class shares
   std::vector<Candidate> rows;  // ranked: constraints met first, then by throughput; rows not ranked last
   std::string note{};           // why the class has no pick although rows meet the constraints, or ""
-  std::string title() const;    // "resnet50, SingleStream, int8"
+  std::string title() const;  // "resnet50, SingleStream, int8"; "ssd-mobilenet, SingleStream, not stated (TensorFlow)"
 };
 
 struct PeakCandidate {
@@ -75,11 +81,18 @@ struct CandidateInputs {
   std::span<const ResultSet> result_sets;     // own: imported MLPerf LoadGen results (source_format mlperf-loadgen)
   std::vector<const LibraryResult*> library;  // published
   const Library* lib = nullptr;               // names of library computers
+  // With a control-loop requirement: its verdicts, whose checks join every row's (a published row has none: its
+  // loop is unknown and it never passes), so that no class picks a row the Platforms verdict would reject.
+  const std::vector<headroom::LoopVerdict>* loop = nullptr;
 };
 
 // The network names of all sources in one spelling: "resnet"/"ResNet-50" -> "resnet50"; "ssd-small"/
 // "mobilenet-ssd"/"ssd_mobilenet" -> "ssd-mobilenet"; anything else lowercased.
 std::string canonical_network(std::string_view name);
+
+// The inference framework a software description names ("TensorRT 8.5.2, CUDA 11.4" -> "TensorRT", "SSD MobileNet
+// (TensorFlow, MS COCO)" -> "TensorFlow", "tflite-v2.11.0-ruy" -> "TFLite"); "" when it names none BenchScope knows.
+std::string framework_of(std::string_view software);
 
 std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Constraints& constraints,
                                             const ComparisonOptions& options = {});

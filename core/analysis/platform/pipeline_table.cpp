@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "util/text.h"
+
 namespace bs {
 namespace {
 
@@ -15,12 +17,6 @@ std::string stage_label(const std::string& s) {
 }
 
 int decimals(double ms) { return ms >= 100 ? 0 : ms >= 10 ? 1 : 2; }
-
-std::string fixed(double v, int digits) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
-}
 
 std::string provenance_text(const PipelineRun& r) {
   const Provenance& p = r.provenance;

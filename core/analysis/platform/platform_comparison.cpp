@@ -4,6 +4,7 @@
 #include "analysis/stats/units.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
@@ -295,6 +296,15 @@ std::vector<PlatformVerdict> recommend(std::span<const PlatformRow> rows, const 
       best = &rows[i];
   for (std::size_t i = 0; i < rows.size(); ++i) out[i].recommended = best == &rows[i];
   return out;
+}
+
+std::string unmet_text(const ConstraintCheck& k) {
+  // A check without a value whose name already says why ("control loop: load not applied: ...") stands as it is.
+  if (!k.actual) return k.name.find(':') != std::string::npos ? k.name : k.name + ": no data";
+  char b[96];
+  std::snprintf(b, sizeof b, " %.2f %s (%.2f %s %s)", *k.actual, k.unit.c_str(), std::abs(k.margin), k.unit.c_str(),
+                is_ceiling(k) ? "over" : "short");
+  return k.name.substr(0, k.name.find(" (")) + b;
 }
 
 }  // namespace bs

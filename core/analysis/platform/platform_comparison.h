@@ -135,6 +135,16 @@ struct ConstraintCheck {
   std::string power_kind{};
 };
 
+// Whether the check's limit is a ceiling ("at most": a power budget in W, a control-loop latency in us, a miss
+// share in %, a run of misses in cycles) rather than a floor ("at least": frame rate, battery runtime).
+inline bool is_ceiling(const ConstraintCheck& k) {
+  return k.unit == "W" || k.unit == "us" || k.unit == "%" || k.unit == "cycles";
+}
+
+// A failed or unknown check in a few words, for the lists of why a platform was not chosen: "p99 (pipeline@30fps)
+// 812 us (612 us over)", "frame rate: no data", "control loop: load not applied: ...".
+std::string unmet_text(const ConstraintCheck& k);
+
 struct PlatformVerdict {
   std::string platform;
   bool meets_all = false;

@@ -6,17 +6,10 @@
 #include <cstdio>
 
 #include "analysis/power/power_phases.h"
+#include "util/text.h"
 
 namespace bs {
-namespace {
-
-std::string num(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 RangeSignal default_signal(const PowerStats& s) { return s.power_w ? RangeSignal::Power : RangeSignal::Current; }
 
@@ -31,22 +24,22 @@ std::vector<std::string> range_cells(const PowerStats& s, RangeSignal signal, bo
   const std::optional<SignalStats>& shown = signal == RangeSignal::Power ? s.power_w : s.current_a;
   std::vector<std::string> c;
   c.push_back(std::to_string(s.n) + (mark_short ? short_point_mark(s.n) : std::string()));
-  c.push_back(num("%.4f", s.duration_s));
+  c.push_back(format_number("%.4f", s.duration_s));
   if (shown) {
     const Summary& m = shown->summary;
-    for (double v : {m.mean, m.sd, m.min, m.max, m.max - m.min}) c.push_back(num("%.4f", v));
+    for (double v : {m.mean, m.sd, m.min, m.max, m.max - m.min}) c.push_back(format_number("%.4f", v));
     if (shown->has_percentiles)
-      for (double v : {shown->pct.p5, shown->pct.p50, shown->pct.p95}) c.push_back(num("%.4f", v));
+      for (double v : {shown->pct.p5, shown->pct.p50, shown->pct.p95}) c.push_back(format_number("%.4f", v));
     else
       c.insert(c.end(), 3, "\xE2\x80\xA6");
   } else {
     c.insert(c.end(), 8, "-");
   }
-  c.push_back(s.charge_c ? num("%.4f", *s.charge_c) : "-");
-  c.push_back(s.charge_c ? num("%.4f", *s.charge_c / 3.6) : "-");  // 1 mAh = 3.6 C
-  c.push_back(s.energy_j ? num("%.4f", *s.energy_j) : "-");
-  c.push_back(s.energy_j ? num("%.6f", *s.energy_j / 3600) : "-");
-  c.push_back(s.mean_power_w ? num("%.4f", *s.mean_power_w) : "-");
+  c.push_back(s.charge_c ? format_number("%.4f", *s.charge_c) : "-");
+  c.push_back(s.charge_c ? format_number("%.4f", *s.charge_c / 3.6) : "-");  // 1 mAh = 3.6 C
+  c.push_back(s.energy_j ? format_number("%.4f", *s.energy_j) : "-");
+  c.push_back(s.energy_j ? format_number("%.6f", *s.energy_j / 3600) : "-");
+  c.push_back(s.mean_power_w ? format_number("%.4f", *s.mean_power_w) : "-");
   return c;
 }
 

@@ -5,17 +5,13 @@
 #include <charconv>
 #include <cmath>
 
+#include "util/text.h"
+
 namespace bs {
 namespace {
 
 // std::to_chars, not printf: the GUI runs under the user's locale (Qt calls setlocale), and "5,25 TFLOPS" from a
 // German desktop would differ from the CLI and from exported tables.
-std::string fixed(double v, int decimals) {
-  char buf[400];  // any finite double in fixed notation with up to 17 decimals fits
-  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, std::clamp(decimals, 0, 17));
-  return std::string(buf, r.ptr);
-}
-
 }  // namespace
 
 int si_exponent(double value) noexcept {

@@ -11,6 +11,7 @@
 
 #include "util/resource_table.h"
 #include "util/resources.h"
+#include "util/text.h"
 
 namespace bs::kernels {
 namespace {
@@ -19,13 +20,6 @@ using nlohmann::json;
 
 [[noreturn]] void fail(const std::string& origin, const std::string& where, const std::string& why) {
   resource_table_fail(origin, where, why);
-}
-
-std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return std::string(s.substr(first, last - first + 1));
 }
 
 // "0x4e", "0xd07": MIDR fields are at most 12 bits (part) or 8 bits (implementer); anything else is not a
@@ -78,8 +72,8 @@ int table_count(const json& e, const char* key, const std::string& origin, const
 // cpufreq's highest frequency of `cpu` in GHz (the file holds kHz), 0 when absent or not a sane number.
 double cpufreq_max_ghz(const std::filesystem::path& sysfs_root, int cpu) {
   if (cpu < 0) return 0;
-  const std::string text = trim(
-      read_file(sysfs_root / "sys/devices/system/cpu" / ("cpu" + std::to_string(cpu)) / "cpufreq/cpuinfo_max_freq"));
+  const std::string text(bs::trim(
+      read_file(sysfs_root / "sys/devices/system/cpu" / ("cpu" + std::to_string(cpu)) / "cpufreq/cpuinfo_max_freq")));
   if (text.empty() || text.size() > 9 ||
       !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return 0;
@@ -155,12 +149,12 @@ ProcCpuInfo parse_proc_cpuinfo(std::string_view text, const std::string& origin)
     ++line_no;
     const auto colon = line.find(':');
     if (colon == std::string_view::npos) {
-      if (trim(line).empty()) in_block = false;  // blocks are separated by blank lines
+      if (bs::trim(line).empty()) in_block = false;  // blocks are separated by blank lines
       if (end == text.size()) break;
       continue;
     }
-    const std::string key = trim(line.substr(0, colon));
-    const std::string value = trim(line.substr(colon + 1));
+    const std::string key(bs::trim(line.substr(0, colon)));
+    const std::string value(bs::trim(line.substr(colon + 1)));
     const auto start_block = [&] {
       out.cpus.emplace_back();
       in_block = true;

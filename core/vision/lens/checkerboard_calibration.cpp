@@ -14,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "util/text.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/fisheye_opencv.h"
 
@@ -23,12 +24,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // A rim found along fewer rays is too little of the circle to judge the fit by (a board filling the view hides it).
 constexpr int kMinRimPoints = 180;
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // 8-bit grey for the corner finder: 16-bit images are stretched by their maximum (any bit depth in the low bits).
 cv::Mat grey8(const cv::Mat& image) {
@@ -116,8 +111,8 @@ class Calibrator {
             const double err = errors[static_cast<std::size_t>(idx)], med = median(errors);
             if (!outlier(err, med)) {
               note(results_[static_cast<std::size_t>(views[static_cast<std::size_t>(idx)])].name +
-                   ": CALIB_CHECK_COND flagged it, but without the check it reprojects at " + fmt("%.3f", err) +
-                   " px (median view " + fmt("%.3f", med) + " px): kept");
+                   ": CALIB_CHECK_COND flagged it, but without the check it reprojects at " +
+                   format_number("%.3f", err) + " px (median view " + format_number("%.3f", med) + " px): kept");
               return *unchecked;
             }
           }
@@ -390,10 +385,10 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
     const auto worst = static_cast<std::size_t>(std::max_element(errors.begin(), errors.end()) - errors.begin());
     if (views.size() <= 3) break;
     if (outlier(errors[worst], med)) {
-      calibrator.reject(views[worst], "reprojection error " + fmt("%.2f", errors[worst]) +
+      calibrator.reject(views[worst], "reprojection error " + format_number("%.2f", errors[worst]) +
                                           " px, more than 4x the "
                                           "median view's " +
-                                          fmt("%.2f", med) + " px (corners mis-detected?)");
+                                          format_number("%.2f", med) + " px (corners mis-detected?)");
       views.erase(views.begin() + static_cast<long>(worst));
       calibrator.notes_.clear();  // notes on the fit this view spoiled no longer hold
       free = calibrator.fit(views, flags, K0, D0);
@@ -414,8 +409,9 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
       }
     }
     if (!culprit || best > free.rms / 2) break;
-    calibrator.reject(views[*culprit], "without this view the fit's RMS drops from " + fmt("%.2f", free.rms) +
-                                           " px to " + fmt("%.2f", best) + " px (corners no board pose explains)");
+    calibrator.reject(views[*culprit], "without this view the fit's RMS drops from " + format_number("%.2f", free.rms) +
+                                           " px to " + format_number("%.2f", best) +
+                                           " px (corners no board pose explains)");
     views.erase(views.begin() + static_cast<long>(*culprit));
     calibrator.notes_.clear();  // notes on the fit this view spoiled no longer hold
     free = calibrator.fit(views, flags, K0, D0);
@@ -442,28 +438,28 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
   result.warnings = calibrator.notes_;
   const double aspect = result.fy / result.fx;
   if (std::abs(aspect - 1) > kAspectWarning)
-    result.warnings.push_back("the free fit's fy/fx is " + fmt("%.4f", aspect) + " (fx " + fmt("%.2f", result.fx) +
-                              " px, fy " + fmt("%.2f", result.fy) +
+    result.warnings.push_back("the free fit's fy/fx is " + format_number("%.4f", aspect) + " (fx " +
+                              format_number("%.2f", result.fx) + " px, fy " + format_number("%.2f", result.fy) +
                               " px): BenchScope's lens has one focal length, "
                               "refitted at " +
-                              fmt("%.2f", f) +
+                              format_number("%.2f", f) +
                               " px; non-square pixels or views that do not pin "
                               "the focal length down");
   for (double deg = 0.5; deg <= lens.fov_deg / 2; deg += 0.5) {
     const auto r0 = lens.radius((deg - 0.5) * kPi / 180), r1 = lens.radius(deg * kPi / 180);
     if (r0 && r1 && *r1 <= *r0) {
-      result.warnings.push_back("the fitted polynomial folds back at " + fmt("%.1f", deg) +
+      result.warnings.push_back("the fitted polynomial folds back at " + format_number("%.1f", deg) +
                                 " degrees off the axis, "
                                 "inside the lens's " +
-                                fmt("%.0f", lens.fov_deg) + " degree field of view");
+                                format_number("%.0f", lens.fov_deg) + " degree field of view");
       break;
     }
   }
   if (result.max_theta_deg < lens.fov_deg / 2 - 5)
-    result.warnings.push_back("corners were seen up to " + fmt("%.0f", result.max_theta_deg) +
+    result.warnings.push_back("corners were seen up to " + format_number("%.0f", result.max_theta_deg) +
                               " degrees off the "
                               "axis; beyond that, up to the lens's " +
-                              fmt("%.1f", lens.fov_deg / 2) + " degrees, the model is extrapolated");
+                              format_number("%.1f", lens.fov_deg / 2) + " degrees, the model is extrapolated");
 
   // The uncertainty of the field of view's circle: its radius over leave-one-image-out refits (jackknife standard
   // error). A rim detected farther away than a few of these contradicts the fit (lens_limits.h).
@@ -495,10 +491,10 @@ CheckerboardResult calibrate_from_corners(std::vector<CalibrationImageResult> im
   lens.calibration.images_used = result.used();
   lens.calibration.images_rejected = result.rejected();
   lens.calibration.detail = std::to_string(board.cols) + "x" + std::to_string(board.rows) + " squares of " +
-                            fmt("%g", board.square_mm) + " mm, " + std::string(to_string(model)) +
-                            " model; free fit fx " + fmt("%.2f", result.fx) + " px, fy " + fmt("%.2f", result.fy) +
-                            " px, refitted with f = " + fmt("%.2f", f) + " px; corners up to " +
-                            fmt("%.0f", result.max_theta_deg) + " deg off axis";
+                            format_number("%g", board.square_mm) + " mm, " + std::string(to_string(model)) +
+                            " model; free fit fx " + format_number("%.2f", result.fx) + " px, fy " +
+                            format_number("%.2f", result.fy) + " px, refitted with f = " + format_number("%.2f", f) +
+                            " px; corners up to " + format_number("%.0f", result.max_theta_deg) + " deg off axis";
   result.lens = lens;
   if (progress) progress(1.0, "done");
   return result;

@@ -5,16 +5,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "util/text.h"
+
 namespace bs::vision {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string fmt(const char* f, double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // Angle off the lens axis of output pixel (x, y), degrees (as source_of() computes it).
 double angle_of(const View& view, const cv::Matx33d& rotation, double x, double y) {
@@ -46,8 +42,9 @@ std::string extrapolation_note(const Lens& lens, const View& view) {
   if (!lens.calibration.covered_deg) return {};
   const double covered = *lens.calibration.covered_deg, reach = view_reach_deg(lens, view);
   if (reach <= covered + 0.5) return {};
-  return "this view reaches " + fmt("%.0f", reach) + " degrees off the axis, the calibration's corners covered " +
-         fmt("%.0f", covered) + " degrees: beyond " + fmt("%.0f", covered) +
+  return "this view reaches " + format_number("%.0f", reach) +
+         " degrees off the axis, the calibration's corners covered " + format_number("%.0f", covered) +
+         " degrees: beyond " + format_number("%.0f", covered) +
          " degrees the lens model is extrapolated (calibrate with corners nearer the rim, or narrow the view)";
 }
 
@@ -68,13 +65,15 @@ std::optional<RimComparison> compare_with_rim(const Lens& lens, const ImageCircl
   c.tolerance_px = std::max(1.0, 3 * std::hypot(lens_se, rim_se));
   c.disagrees = c.radius_gap_px > c.tolerance_px || c.centre_gap_px > c.tolerance_px;
   if (!c.disagrees) return c;
-  c.text = "the lens's " + fmt("%.0f", lens.fov_deg) + "-degree circle (radius " + fmt("%.1f", c.fitted_radius_px) +
-           " px" + (lens_se > 0 ? " \xC2\xB1 " + fmt("%.1f", lens_se) : std::string()) + ", centre (" +
-           fmt("%.1f", c.fitted_centre.x) + ", " + fmt("%.1f", c.fitted_centre.y) +
-           ")) disagrees with the image's detected rim (radius " + fmt("%.1f", c.rim_radius_px) + " px \xC2\xB1 " +
-           fmt("%.1f", rim_se) + ", centre (" + fmt("%.1f", c.rim_centre.x) + ", " + fmt("%.1f", c.rim_centre.y) +
-           ")): " + fmt("%.1f", c.radius_gap_px) + " px in radius, centres " + fmt("%.1f", c.centre_gap_px) +
-           " px apart, more than the " + fmt("%.1f", c.tolerance_px) +
+  c.text = "the lens's " + format_number("%.0f", lens.fov_deg) + "-degree circle (radius " +
+           format_number("%.1f", c.fitted_radius_px) + " px" +
+           (lens_se > 0 ? " \xC2\xB1 " + format_number("%.1f", lens_se) : std::string()) + ", centre (" +
+           format_number("%.1f", c.fitted_centre.x) + ", " + format_number("%.1f", c.fitted_centre.y) +
+           ")) disagrees with the image's detected rim (radius " + format_number("%.1f", c.rim_radius_px) +
+           " px \xC2\xB1 " + format_number("%.1f", rim_se) + ", centre (" + format_number("%.1f", c.rim_centre.x) +
+           ", " + format_number("%.1f", c.rim_centre.y) + ")): " + format_number("%.1f", c.radius_gap_px) +
+           " px in radius, centres " + format_number("%.1f", c.centre_gap_px) + " px apart, more than the " +
+           format_number("%.1f", c.tolerance_px) +
            " px their uncertainties allow; the lens's field of view or its model beyond the corners is off (a "
            "circle fit to the rim gives the field of view the image shows)";
   return c;

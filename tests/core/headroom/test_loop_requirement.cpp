@@ -106,6 +106,47 @@ class TestLoopRequirement : public QObject {
     QVERIFY(!v[0].checks[1].actual);
   }
 
+  // Issue #50.4: a phase "beside pipeline@30fps" that ran at 9.29 fps measured the loop beside a third of the load:
+  // its result is "unknown: load not applied", whether the loop's numbers pass or fail; within 5 % it is judged.
+  void a_load_short_of_its_target_is_unknown() {
+    const auto with_rate = [](HeadroomMeasurement m, double achieved) {
+      for (Phase& p : m.phases)
+        if (p.name == "pipeline@30fps") {
+          p.target_rate = 30;
+          p.achieved_rate = achieved;
+          p.rate_unit = "fps";
+        }
+      return m;
+    };
+    const LoopRequirement r = parse_loop_requirement("1kHz,p99.9<=200us,load=pipeline@30fps");
+    const std::vector<HeadroomMeasurement> short_pass = {with_rate(loop("robot", "pipeline@30fps", 20, 1, 900), 9.29)};
+    const std::vector<LoopVerdict> v = evaluate_loop(r, short_pass, {"robot"});
+    QCOMPARE(v[0].status, LoopStatus::Unknown);
+    QCOMPARE(QString::fromStdString(v[0].reason),
+             QString("load not applied: pipeline@30fps ran at 9.29 of 30 fps (31 %)"));
+    QCOMPARE(*v[0].checks[0].actual, 20.0);  // the numbers stay, to be seen
+    // A failing loop beside a short load is not a fail either: it was not measured beside the load asked for.
+    const std::vector<HeadroomMeasurement> short_fail = {with_rate(loop("nuc", "pipeline@30fps", 30, 3, 1500), 20)};
+    QCOMPARE(evaluate_loop(r, short_fail, {"nuc"})[0].status, LoopStatus::Unknown);
+    // 29 of 30 fps is within 5 %: judged.
+    const std::vector<HeadroomMeasurement> close = {with_rate(loop("robot", "pipeline@30fps", 20, 1, 900), 29)};
+    QCOMPARE(evaluate_loop(r, close, {"robot"})[0].status, LoopStatus::Pass);
+    // The measurement's flags say it first; the table's cell says it too.
+    const std::vector<std::string> f = flags(short_pass[0]);
+    QVERIFY(!f.empty());
+    QVERIFY2(QString::fromStdString(f.front()).startsWith("load not applied: pipeline@30fps ran at 9.29 of 30 fps"),
+             f.front().c_str());
+    QVERIFY(!load_not_applied(close[0].phases[1]));
+    // The Platforms verdict: never recommended, and the check says why.
+    std::vector<bs::PlatformVerdict> verdicts(1);
+    verdicts[0].platform = "robot";
+    verdicts[0].meets_all = verdicts[0].recommended = true;
+    apply_loop(verdicts, v);
+    QVERIFY(!verdicts[0].meets_all && !verdicts[0].recommended);
+    QVERIFY(QString::fromStdString(bs::unmet_text(verdicts[0].checks.front()))
+                .startsWith("control loop: load not applied"));
+  }
+
   void recommendation_counts_the_loop() {
     std::vector<bs::PlatformVerdict> verdicts(3);
     verdicts[0].platform = "nuc";  // most compute, fails the loop

@@ -82,6 +82,28 @@ class TestPlatformReport : public QObject {
     QVERIFY(rec < met && met < chart && chart < table && table < details);
   }
 
+  // Issue #50.3: nothing recommended because the control loop is unknown for one platform and fails for the other.
+  // Page one said "No platform can be recommended" and "Robot A: meets the constraints" (the unknown check has no
+  // value and was left out of the reasons); now it names every check that decided it.
+  void no_pick_never_says_a_platform_meets_everything() {
+    bs::ReportInput in = two_robots();
+    in.constraints = "a power budget of 15 W, a 1 kHz control loop";
+    bs::ConstraintCheck unknown{
+        "control loop: load not applied: pipeline@30fps ran at 9.29 of 30 fps (31 %)", "", 0, std::nullopt, false, 0};
+    bs::ConstraintCheck p999{"p99.9 (pipeline@30fps)", "us", 200, 1500, false, -1300};
+    in.verdicts[0].checks.push_back(unknown);
+    in.verdicts[0].meets_all = in.verdicts[0].recommended = false;
+    in.verdicts[1].checks.push_back(p999);
+    const std::string html = bs::report_html(in);
+    QVERIFY(html.find("No platform can be recommended") != std::string::npos);
+    QVERIFY2(html.find("meets the constraints") == std::string::npos, html.c_str());
+    QVERIFY2(
+        html.find("Robot A: control loop: load not applied: pipeline@30fps ran at 9.29 of 30 fps") != std::string::npos,
+        html.c_str());
+    // A latency is a ceiling: over, not short.
+    QVERIFY2(html.find("p99.9 1500.00 us (1300.00 us over)") != std::string::npos, html.c_str());
+  }
+
   // Units in a column of their own, numbers bare; a measure no platform has is not a row; the peak says its device.
   void table_transposed_without_empty_rows() {
     const auto tables = bs::platform_summary_tables(two_robots().rows, two_robots().verdicts);
@@ -199,7 +221,7 @@ class TestPlatformReport : public QObject {
     c.origin = bs::DataOrigin::Published;
     c.throughput_per_s = 1586;
     c.source = "https://github.com/mlcommons/inference_results_v3.0/blob/1948f9b/closed/NVIDIA/x.txt";
-    in.candidates = bs::CandidatesSectionInput{{{"resnet50", "SingleStream", "int8", {c}}}, {}, "orin", "", ""};
+    in.candidates = bs::CandidatesSectionInput{{{"resnet50", "SingleStream", "int8", "", {c}}}, {}, "orin", "", ""};
     const std::string html = bs::report_html(in);
     const auto at = html.find("<h2>Candidates</h2>");
     QVERIFY(at != std::string::npos);

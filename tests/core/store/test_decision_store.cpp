@@ -6,6 +6,8 @@
 #include <QTest>
 
 #include "../../support/headroom_samples.h"
+#include "store/battery_preset_store.h"
+#include "store/decision_inputs.h"
 #include "store/decision_store.h"
 #include "store/workspace.h"
 #include "workspace_test_support.h"
@@ -199,6 +201,49 @@ class TestDecisionStore : public QObject {
   }
 
   // Schema 9 is #45's headroom table: a version-9 file keeps its measurements and gains the decision's tables.
+  // Issue #50.2: the inputs the GUI's Platforms tab and the CLI both read (store/decision_inputs.h). The Battery
+  // tab's 5000 mAh edit (no decision stored) is the pack in effect; a decision naming a preset takes that preset but
+  // keeps its own parallel load and mission; a named preset that is gone falls back to the Battery tab's.
+  void decision_inputs_follow_the_gui_rule() {
+    QTemporaryDir dir;
+    bs::Workspace ws(dir.filePath("w.bsw").toStdString());
+    bs::DecisionInputs none = bs::decision_inputs(&ws);
+    QCOMPARE(QString::fromStdString(none.battery.pack.name), QString("paper-4s-3850"));
+    QVERIFY(!none.stored && !none.battery_from_tab);
+
+    bs::BatterySetup tab = bs::builtin_battery_setups().front();
+    tab.pack.capacity_ah = 5.0;
+    tab.depth_of_discharge = 0.8;
+    tab.extra_load_w = 12;
+    tab.mission = "walk:30:140";
+    ws.set_setting("battery-tab/current", bs::battery_setup_to_json(tab));
+    const bs::DecisionInputs from_tab = bs::decision_inputs(&ws);
+    QVERIFY(from_tab.battery_from_tab);
+    QCOMPARE(from_tab.options.battery_capacity_ah, 5.0);
+    QCOMPARE(from_tab.options.usable_fraction, 0.8);
+    QCOMPARE(from_tab.options.extra_load_w, 12.0);
+    QCOMPARE(QString::fromStdString(from_tab.options.mission), QString("walk:30:140"));
+
+    bs::StoredDecision d;
+    d.power_budget_w = 10;
+    d.battery = "paper-4s-3850";
+    d.extra_load_w = 3;
+    bs::set_stored_decision(ws, d);
+    const bs::DecisionInputs named = bs::decision_inputs(&ws);
+    QVERIFY(!named.battery_from_tab);
+    QCOMPARE(named.options.battery_capacity_ah, 3.85);
+    QCOMPARE(named.options.usable_fraction, 1.0);
+    QCOMPARE(named.options.extra_load_w, 3.0);  // the decision's own
+    QVERIFY(named.options.mission.empty());
+    QCOMPARE(*named.constraints.power_budget_w, 10.0);
+
+    d.battery = "a pack deleted since";
+    bs::set_stored_decision(ws, d);
+    const bs::DecisionInputs gone = bs::decision_inputs(&ws);
+    QVERIFY(gone.battery_missing && gone.battery_from_tab);
+    QCOMPARE(gone.options.battery_capacity_ah, 5.0);
+  }
+
   void a_version_9_file_gains_the_tables() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("v9.bsw").toStdString();

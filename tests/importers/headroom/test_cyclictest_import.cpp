@@ -205,6 +205,59 @@ class TestCyclictestImport : public QObject {
     QVERIFY(has_note(b, "rows were stripped"));
   }
 
+  // "# Histogram" and then at once the old format's footer ("# Total:" first): the rows were stripped, so the file
+  // is a summary, read per thread from the footer. Before, the totals were checked against no rows ("'# Total:'
+  // says 12000000 but its rows add up to 0"). By hand: n = total + overflows, max 24 / 31 / 87 us, mean 7 / 8 / 7.
+  void histogram_line_then_footer_is_summary_only() {
+    const auto b =
+        parse_with(bs::kCyclictestTextFileFormat, kHeadroomFixtures + "cyclictest-histogram-then-footer.txt");
+    QVERIFY(b.warnings.empty());
+    const auto& t = b.headroom.at(0).phases.at(0).threads;
+    QCOMPARE(t.size(), std::size_t{3});
+    for (const auto& th : t) QVERIFY(bs::headroom_import::summary_only(th));
+    QCOMPARE(t[0].histogram.cycles, std::uint64_t{12000000});
+    QCOMPARE(t[2].histogram.cycles, std::uint64_t{11999913});  // 11999911 binned + 2 overflows
+    QCOMPARE(t[0].histogram.max_ns, std::optional<std::int64_t>(24000));
+    QCOMPARE(t[1].histogram.max_ns, std::optional<std::int64_t>(31000));
+    QCOMPARE(t[2].histogram.max_ns, std::optional<std::int64_t>(87000));
+    QCOMPARE(t[2].histogram.min_ns, std::optional<std::int64_t>(6000));
+    QCOMPARE(*t[1].mean_ns, 8000.0);
+    const auto s = summarize(t[0]);
+    QVERIFY(s.no_distribution);  // percentiles are not in the file: never 0, never guessed
+    QVERIFY(has_note(b, "'# Histogram' at line 1 is followed by the footer alone"));
+    QVERIFY(has_note(b, "not in the file"));
+    const auto flags = bs::headroom::flags(b.headroom[0]);
+    QVERIFY(std::any_of(flags.begin(), flags.end(),
+                        [](const std::string& f) { return f.find("summary only") != std::string::npos; }));
+    // rt-tests 2.7 on (no "# Total:"): "# Histogram" and no row still means every cycle overflowed.
+    const auto all_over = bs::kCyclictestTextFileFormat.parse_text(
+        "# Histogram\n# Min Latencies: 00500\n# Avg Latencies: 00600\n# Max Latencies: 00700\n"
+        "# Histogram Overflows: 00010\n",
+        "c.hist");
+    QVERIFY(!bs::headroom_import::summary_only(only_thread(all_over)));
+    QCOMPARE(only_thread(all_over).histogram.overflows, std::uint64_t{10});
+  }
+
+  // The ros-realtime benchmark results (galactic, Raspberry Pi 4 with PREEMPT_RT, 4 threads, 18 000 000 cycles
+  // each): cyclictest's footer without rows. By hand from the files: idle maxima 19 / 16 / 17 / 33 us, minima 6,
+  // averages 8; under stress-cpu-60% maxima 107 / 124 / 140 / 114 us. The two files are asked for in issue #51:
+  // until they are in the shared folder (new/headroom/ros-realtime/) this test skips.
+  void real_ros_realtime_footer_only() {
+    REQUIRE_REAL_FILE("ros-realtime/cyclictest_galactic_rpi4rt_idle.txt");
+    REQUIRE_REAL_FILE("ros-realtime/cyclictest_galactic_rpi4rt_stress-cpu-60.txt");
+    const auto idle =
+        parse_with(bs::kCyclictestTextFileFormat, kHeadroomReal + "ros-realtime/cyclictest_galactic_rpi4rt_idle.txt");
+    const auto& t = idle.headroom.at(0).phases.at(0).threads;
+    QCOMPARE(t.size(), std::size_t{4});
+    QCOMPARE(t[0].histogram.cycles, std::uint64_t{18000000});
+    QCOMPARE(t[3].histogram.max_ns, std::optional<std::int64_t>(33000));
+    QCOMPARE(t[3].histogram.min_ns, std::optional<std::int64_t>(6000));
+    QCOMPARE(*t[3].mean_ns, 8000.0);
+    const auto stress = parse_with(bs::kCyclictestTextFileFormat,
+                                   kHeadroomReal + "ros-realtime/cyclictest_galactic_rpi4rt_stress-cpu-60.txt");
+    QCOMPARE(stress.headroom.at(0).phases.at(0).threads.at(2).histogram.max_ns, std::optional<std::int64_t>(140000));
+  }
+
   void terminal_capture_with_cursor_codes() {
     const auto b = parse_with(bs::kCyclictestTextFileFormat, kHeadroomFixtures + "cyclictest-terminal-script.txt");
     QVERIFY(b.warnings.empty());
@@ -362,6 +415,7 @@ class TestCyclictestImport : public QObject {
     const std::pair<std::string, std::string> files[] = {{"cyclictest-2.6-H20-2thr-overflows.txt", "cyclictest-text"},
                                                          {"cyclictest-2.8-H50-1thr.hist", "cyclictest-text"},
                                                          {"cyclictest-footer-only.txt", "cyclictest-text"},
+                                                         {"cyclictest-histogram-then-footer.txt", "cyclictest-text"},
                                                          {"cyclictest-terminal-script.txt", "cyclictest-text"},
                                                          {"cyclictest-nsecs-cat-v.txt", "cyclictest-text"},
                                                          {"cyclictest-status-and-histogram.txt", "cyclictest-text"},

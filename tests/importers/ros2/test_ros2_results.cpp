@@ -48,7 +48,10 @@ class TestRos2Results : public QObject {
     const bs::ResultSet& s = b.result_sets.at(0);
     QCOMPARE(setting(s, "benchmark"), std::string("image_proc::RectifyNode Benchmark"));
     QCOMPARE(setting(s, "input"), std::string("HD (1280,720)"));
-    QCOMPARE(setting(s, "release"), std::string("ros2_benchmark config 0.30.0"));
+    // The release from the file's facts (TEST_DATETIME 2023-05-25; the workspace path names no ROS 2 distribution),
+    // not default_config_version, which is 0.30.0 in every release.
+    QCOMPARE(setting(s, "release"), std::string("ros2_benchmark run 2023-05"));
+    QCOMPARE(setting(s, "config version"), std::string("0.30.0"));
     QVERIFY(s.platform.starts_with("computer not stated"));  // the hostname is a container's
     const std::string peak = "image_proc::RectifyNode Benchmark at peak throughput";
     // Line 4: "MEAN_FRAME_RATE": 185.2487567630416 (frames per second).
@@ -64,10 +67,67 @@ class TestRos2Results : public QObject {
     QVERIFY(std::abs(mj->values.at(0) - 0.17703528109764355e-3) < 1e-15);
     // Line 15: mean CPU use 49.08 % at peak; the 10 fps run (line 32): 3.98 %.
     QCOMPARE(find(s, peak, "CPU use, mean")->values.at(0), 49.080000000000005);
-    QCOMPARE(find(s, "image_proc::RectifyNode Benchmark at 10.0fps", "CPU use, mean")->values.at(0),
-             3.9816666666666665);
-    QVERIFY(find(s, "image_proc::RectifyNode Benchmark at 60.0fps", "frame rate"));
+    // A fixed-rate section is one run: its label says so, never "mean of runs".
+    const std::string at10 = "image_proc::RectifyNode Benchmark at 10.0fps (one run at a fixed rate)";
+    QCOMPARE(find(s, at10, "CPU use, mean")->values.at(0), 3.9816666666666665);
+    QVERIFY(find(s, at10, "frame rate (received frames / received duration, one run)"));
+    QVERIFY(find(s, "image_proc::RectifyNode Benchmark at 60.0fps (one run at a fixed rate)", "frame rate"));
+    QVERIFY(find(s, peak, "CPU use baseline, measured during the run"));
     QVERIFY(any_warning(b, "does not name the computer"));
+  }
+
+  // Issue #51: the same node on one board in two releases (2025-10 and 2026-02, both ROS 2 Jazzy) are two releases,
+  // and the 2024+ schema's ResourceMetrics keep CPU and GPU use. By hand (ros2bench_rectify_agx_thor_2025-10.json):
+  // MEAN_FRAME_RATE 425.98, TEST_DATETIME 2025-10-23, TEST_FILE_PATH /opt/ros/jazzy/...
+  void releases_told_apart_and_resource_metrics_kept() {
+    const std::string a = kRos2 + "ros2bench_rectify_agx_thor_2025-10.json";
+    const std::string b = kRos2 + "isaacbench_rectify_agx_thor_2026-02.json";
+    if (!std::filesystem::exists(a)) QSKIP("needs BENCHSCOPE_PUBLIC_DATA_DIR/new/ros2 (the shared public data)");
+    const bs::ImportBatch ba = bs::import_file(a, bs::CancelToken{});
+    const bs::ImportBatch bb = bs::import_file(b, bs::CancelToken{});
+    const bs::ResultSet& sa = ba.result_sets.at(0);
+    const bs::ResultSet& sb = bb.result_sets.at(0);
+    QCOMPARE(setting(sa, "release"), std::string("ros2_benchmark run 2025-10, ROS 2 jazzy"));
+    QCOMPARE(setting(sb, "release"), std::string("ros2_benchmark run 2026-02, ROS 2 jazzy"));
+    QCOMPARE(setting(sa, "config version"), setting(sb, "config version"));  // 0.30.0 both: it tells nothing apart
+    const std::string peak = "image_proc::RectifyNode Benchmark at peak throughput";
+    QVERIFY(find(sa, peak, "CPU use, mean"));
+    QVERIFY(find(sa, peak, "GPU use, mean"));
+    QVERIFY(find(sb, peak, "CPU use, mean"));
+    QVERIFY(!find(sb, peak, "GPU use, mean"));  // the CPU node's 2026 file keeps no device use
+    QVERIFY(!any_warning(ba, "ROS 2 distribution is not in the file"));
+  }
+
+  // DGX Spark's GPU RectifyNode reaches 2495.99 fps against the harness's publisher_upper_frequency 2500: the peak
+  // is the publisher's, flagged.
+  void a_peak_at_the_publisher_ceiling_is_flagged() {
+    const std::string f = kRos2 + "isaacbench_gpu_rectify_dgx_spark_2026-02.json";
+    if (!std::filesystem::exists(f)) QSKIP("needs BENCHSCOPE_PUBLIC_DATA_DIR/new/ros2 (the shared public data)");
+    const bs::ImportBatch b = bs::import_file(f, bs::CancelToken{});
+    QVERIFY(setting(b.result_sets.at(0), "flag").starts_with("peak at the publisher ceiling"));
+    QVERIFY(any_warning(b, "at the harness's publisher ceiling (publisher_upper_frequency 2500.0)"));
+    const bs::ImportBatch thor =
+        bs::import_file(kRos2 + "isaacbench_gpu_rectify_agx_thor_2026-02.json", bs::CancelToken{});  // 1549.97 fps
+    QCOMPARE(setting(thor.result_sets.at(0), "flag"), std::string("(absent)"));
+  }
+
+  // A power of 8.97e-44 W is a reading of nothing (flagged like 0 W); one machine under two spellings is one
+  // computer; grey-box and black-box values keep their type.
+  void robotperf_flags_tiny_power_and_merges_spellings() {
+    const std::string yaml =
+        "id: a9\nname: a9_test\nresults:\n"
+        "- result:\n    hardware: NVIDIA AGX Orin Dev. Kit\n    metric: power\n    metric_unit: W\n"
+        "    type: grey\n    value: 8.96831017167883e-44\n"
+        "- result:\n    hardware: NVIDIA AGX Orin Developer Kit\n    metric: latency\n    metric_unit: ms\n"
+        "    type: black\n    value: 12.5\n";
+    const bs::ImportBatch b = bs::kRobotperfYamlFileFormat.parse_text(yaml, "b.yaml", {}, {}, bs::CancelToken{});
+    QCOMPARE(b.result_sets.size(), std::size_t{1});
+    QCOMPARE(setting(b.result_sets[0], "hardware alias"), std::string("also spelled 'NVIDIA AGX Orin Developer Kit'"));
+    QVERIFY(any_warning(b,
+                        "b.yaml:9: value: 8.96831017167883e-44 W of power on NVIDIA AGX Orin Dev. Kit is "
+                        "impossible (below 0.01 W"));
+    QVERIFY(b.result_sets[0].measurements.at(0).name.find("[grey-box]") != std::string::npos);
+    QVERIFY(b.result_sets[0].measurements.at(1).name.find("[black-box]") != std::string::npos);
   }
 
   void robotperf_c1_joint_trajectory_controller() {
@@ -88,8 +148,11 @@ class TestRos2Results : public QObject {
     QVERIFY(lat.metric.starts_with("latency: maximum of the run"));
     QVERIFY(std::abs(lat.values.at(0) - 1.472075e-3) < 1e-15);
     QCOMPARE(lat.unit, std::string("s"));
-    QVERIFY(orin.measurements.at(2).metric.starts_with("throughput: mean of the run"));
+    // Lines 88, 120, 153, 186, 219: "throughput" 10.0 on every machine is the controller's configured update rate.
+    QVERIFY(orin.measurements.at(2).metric.starts_with("update rate as configured (the same 10/s on every machine"));
     QCOMPARE(orin.measurements.at(2).values.at(0), 10.0);
+    QVERIFY(any_warning(b, "the rate the loop was configured to run at, not a throughput"));
+    QVERIFY(lat.name.find("[grey-box]") != std::string::npos);  // the result's type is kept
     // The double-quoted note with \u270B and a line joined by '\' was read whole (no error), and the free-text
     // workstation names and the two date formats are flagged with their lines.
     QVERIFY(any_warning(b, "hardware 'Intel i7-12700H' is free text"));

@@ -189,7 +189,7 @@ class TestChartFlags : public QObject {
     published.throughput_per_s = 4000;
     published.power_w = 2;
     published.flags.push_back({"above_spec_peak", "4000 inferences per second at 2 W is above its spec"});
-    bs::CandidateClass k{"resnet50", "SingleStream", "fp32", {own, published}};
+    bs::CandidateClass k{"resnet50", "SingleStream", "fp32", "", {own, published}};
     QCustomPlot plot;
     plot.resize(800, 500);
     const QString note = bs::ui::draw_candidates(plot, std::span<const bs::CandidateClass>(&k, 1));

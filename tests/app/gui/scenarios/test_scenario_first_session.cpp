@@ -122,19 +122,8 @@ class TestScenarioFirstSession : public QObject {
     }
     QVERIFY2(QFileInfo::exists(figures + "/figures.json"), qPrintable(QDir(figures).entryList().join(", ")));
     const QString pdf = dir.filePath("report.pdf");
-    {
-      ModalAnswerer person5;
-      person5.expect(
-          "Export report (the report dialog)",
-          [](QWidget* d) { return d->windowTitle() == "Export report" && !qobject_cast<QFileDialog*>(d); },
-          [&pdf](QWidget* d) {
-            if (auto* path = d->findChild<QLineEdit*>("reportPath")) bs::test::retype(path, pdf);
-            if (QAbstractButton* ok = bs::test::button(d, "Export")) bs::test::click(ok);
-          });
-      bs::test::key(&w, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
-      QVERIFY2(bs::test::wait_until([&] { return person5.done() && QFileInfo::exists(pdf); }, 3000),
-               qPrintable(person5.report()));
-    }
+    const QString exported = bs::test::export_report(w, pdf);
+    QVERIFY2(exported.isEmpty(), qPrintable(exported));
     const QString page1 = bs::test::pdf_page_text(pdf, 1).simplified();
     QVERIFY2(page1.contains("Recommended under a power budget of 10 W: Jetson TX2"), qPrintable(page1));
     bs::test::screenshot(&w, "first-session-5-done");

@@ -41,13 +41,13 @@ class TestGraphBenchmarksTable : public QObject {
     QVERIFY2((*first)[kWhat].find("FIRST message only") != std::string::npos, (*first)[kWhat].c_str());
     QCOMPARE((*first)[kValue], std::string("5.93 ms"));
     QCOMPARE((*first)[kTool], std::string("ros2_benchmark"));
-    QCOMPARE((*first)[kRelease], std::string("ros2_benchmark config 0.30.0"));
+    QCOMPARE((*first)[kRelease], std::string("ros2_benchmark run 2023-05"));
     QCOMPARE((*first)[kInput], std::string("HD (1280,720)"));
     QVERIFY2(
         (*first)[kSource].starts_with("https://github.com/") && (*first)[kSource].find(" line ") != std::string::npos,
         (*first)[kSource].c_str());
     // CPU use is a percentage of all cores, never given an SI prefix.
-    const auto* cpu = row_of(t, "NVIDIA Jetson AGX Orin", "CPU use, at 30.0fps");
+    const auto* cpu = row_of(t, "NVIDIA Jetson AGX Orin", "CPU use, at 30.0fps (one run at a fixed rate)");
     QVERIFY(cpu);
     QCOMPARE((*cpu)[kValue], std::string("9.2 %"));
     // RobotPerf's latency is the run's maximum; its release is not stated, so it is compared with nothing.

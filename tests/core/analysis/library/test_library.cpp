@@ -431,7 +431,9 @@ class TestLibrary : public QObject {
     const bs::Library& lib = bs::bundled_library().library;
     const bs::LibraryResult* fr = lib.result("ros2bench-jetson-agx-orin-rectifynode-frame-peak");
     QVERIFY(fr);
-    QCOMPARE(fr->release, std::string("ros2_benchmark config 0.30.0"));
+    // The release from the file's facts (its date; the 2023 workspace path names no ROS 2 distribution), never
+    // default_config_version, which is 0.30.0 in every release from 2023 to 2026.
+    QCOMPARE(fr->release, std::string("ros2_benchmark run 2023-05"));
     QCOMPARE(fr->input, std::string("HD (1280,720)"));
     QCOMPARE(*fr->value, 185.2487567630416);  // line 4 of the kept file
     const bs::LibraryResult* lat = lib.result("ros2bench-jetson-agx-orin-rectifynode-first-message-peak");
@@ -446,7 +448,24 @@ class TestLibrary : public QObject {
     std::vector<const bs::LibraryResult*> all;
     for (const auto& r : lib.results) all.push_back(&r);
     const auto classes = bs::graph_benchmark_classes(all);
-    QCOMPARE(classes.size(), std::size_t{10});  // 7 ros2_benchmark measures/rates, 3 RobotPerf rows each alone
+    // Issue #51: 17 ros2_benchmark / isaac_ros_benchmark files of 10 computers (2023-2026) in 35 classes of tool,
+    // node, input, release and measure; 3 RobotPerf rows each alone.
+    QCOMPARE(classes.size(), std::size_t{38});
+    // The same RectifyNode on one AGX Thor in two releases (2025-10 ros2_benchmark, 2026-02 isaac_ros_benchmark) is
+    // two classes: 425.98 and 420.58 fps are never ranked against each other, and CPU use is kept from the 2024+
+    // schema (ResourceMetrics.MEAN_OVERALL_CPU_UTILIZATION).
+    const bs::LibraryResult* thor25 = lib.result("ros2bench-jetson-agx-thor-rectifynode-frame-peak");
+    const bs::LibraryResult* thor26 = lib.result("isaacbench-jetson-agx-thor-rectifynode-frame-peak");
+    QVERIFY(thor25 && thor26);
+    QCOMPARE(thor25->release, std::string("ros2_benchmark run 2025-10, ROS 2 jazzy"));
+    QCOMPARE(thor26->release, std::string("isaac_ros_benchmark run 2026-02, ROS 2 jazzy"));
+    QVERIFY(lib.result("ros2bench-jetson-agx-thor-rectifynode-cpu-peak"));
+    QVERIFY(lib.result("isaacbench-jetson-agx-thor-rectifynode-cpu-peak"));
+    for (const auto& c : classes) {
+      const bool has25 = std::find(c.rows.begin(), c.rows.end(), thor25) != c.rows.end();
+      const bool has26 = std::find(c.rows.begin(), c.rows.end(), thor26) != c.rows.end();
+      QVERIFY(!(has25 && has26));
+    }
     for (const auto& c : classes) {
       for (const auto* r : c.rows) {
         QCOMPARE(r->benchmark, c.rows[0]->benchmark);

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "commands/remote_commands.h"
+
+#include "commands/headroom_grammar.h"
+#include "commands/pipeline_grammar.h"
+#include "commands/run_flops_grammar.h"
+
+namespace bs::commands {
+namespace {
+
+// Each grammar's words read and written again: the name comes back first, as to_words writes it.
+template <typename Settings, Settings (*From)(const std::vector<std::string>&)>
+std::vector<std::string> canonical(const std::vector<std::string>& words) {
+  return to_words(From(words));
+}
+
+}  // namespace
+
+const std::vector<RemoteCommand>& remote_commands() {
+  static const std::vector<RemoteCommand> list = {
+      {"run flops", 2, true, true, canonical<RunFlopsSettings, run_flops_from_words>},
+      {"record-power", 1, true, true},
+      {"run bandwidth", 2, false, true},
+      {"bench dnn", 2, false, true},
+      {"bench vision", 2, false, false},
+      {"bench kernels", 2, false, false},
+      {"devices", 1, false, false},
+      {"sensors", 1, false, false},
+      {"headroom", 1, false, true, canonical<HeadroomSettings, headroom_from_words>},
+      {"pipeline", 1, false, true, canonical<PipelineSettings, pipeline_from_words>},
+  };
+  return list;
+}
+
+std::optional<RemoteCommand> find_remote_command(const std::vector<std::string>& args) {
+  for (const RemoteCommand& c : remote_commands()) {
+    const std::string first = args.empty() ? std::string() : args[0];
+    const std::string two = args.size() >= 2 ? args[0] + " " + args[1] : std::string();
+    if ((c.words == 1 && first == c.name) || (c.words == 2 && two == c.name)) return c;
+  }
+  return std::nullopt;
+}
+
+std::string remote_command_names() {
+  std::string names;
+  for (const RemoteCommand& c : remote_commands()) names += (names.empty() ? "" : ", ") + c.name;
+  return names;
+}
+
+void check_remote_words(const RemoteCommand& command, const std::vector<std::string>& args) {
+  if (!command.grammar) return;
+  const auto skip = static_cast<std::ptrdiff_t>(command.words);
+  if (args.size() < static_cast<std::size_t>(command.words)) throw UsageError("expected '" + command.name + "'");
+  command.grammar({args.begin() + skip, args.end()});
+}
+
+}  // namespace bs::commands

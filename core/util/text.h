@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Text helpers every floor needs, written once (issue #52: trim was written 7 times, lower 8). ASCII only and
+// locale-free on purpose: the GUI's QCoreApplication sets the C library's locale from the environment, and
+// std::tolower/std::isspace would then treat the bytes of UTF-8 text by that locale's rules.
+#include <string>
+#include <string_view>
+
+namespace bs {
+
+// Without ASCII white space (space, tab, CR, LF, FF, VT) at both ends.
+std::string_view trim(std::string_view s);
+// A..Z to a..z; every other byte as it is (UTF-8 stays intact).
+std::string lower(std::string_view s);
+
+// One double through a printf format ("%.2f", "%.3g", "%+.1f %%"): the one number formatter of the tables, the
+// report and the CLI (issue #52: six copies, each with its own buffer size). Any length fits.
+std::string format_number(const char* printf_format, double v);
+// `v` with exactly `digits` decimals (0..17), as printf's "%.*f" writes it; any finite double fits.
+std::string fixed(double v, int digits);
+
+}  // namespace bs

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `benchscope-cli run flops`'s grammar: what the Kernel Runner writes for a robot reads back as the same sweep, and
+// bad words are refused naming the option.
+#include <QTest>
+
+#include "commands/run_flops_grammar.h"
+
+#include "../../support/command_words.h"
+#include "../../support/refusal.h"
+
+using bs::commands::RunFlopsSettings;
+using bs::test::word_after;
+
+namespace {
+
+RunFlopsSettings round_trip(const RunFlopsSettings& s) {
+  const std::vector<std::string> words = bs::commands::to_words(s);
+  if (words.at(0) != "run" || words.at(1) != "flops") throw std::logic_error("the words do not name the command");
+  return bs::commands::run_flops_from_words({words.begin() + 2, words.end()});
+}
+
+QString refusal(const std::vector<std::string>& words) {
+  return bs::test::refusal([&] { bs::commands::run_flops_from_words(words); });
+}
+
+}  // namespace
+
+class TestRunFlopsGrammar : public QObject {
+  Q_OBJECT
+ private slots:
+  void defaults_come_back() { QVERIFY(round_trip(RunFlopsSettings{}) == RunFlopsSettings{}); }
+
+  void every_option_comes_back() {
+    RunFlopsSettings s;
+    s.workers = "1,2,4:64:4";
+    s.points = "1,2,4";
+    s.iterations = 1'000'000'000'000;
+    s.repeats = 1000;
+    s.warmup = false;
+    s.variant = "paper";
+    s.backend = "opencl";
+    s.device = "1";
+    s.isa = "avx2";
+    s.out = "run.json";
+    s.workspace = "w.bsw";
+    s.events = "jsonl";
+    s.json = true;
+    s.quiet = true;
+    s.power = {"auto", 10, "/fixture"};
+    QVERIFY(round_trip(s) == s);
+  }
+
+  void the_sweep_is_spelled_out() {
+    const auto a = bs::commands::to_words(RunFlopsSettings{});
+    QCOMPARE(word_after(a, "--backend"), std::string("cpu"));
+    QCOMPARE(word_after(a, "--workers"), std::string("1,2,4,8,16,32,64,128,256"));
+    QCOMPARE(word_after(a, "--iterations"), std::string("40000"));
+    QCOMPARE(word_after(a, "--repeats"), std::string("3"));
+  }
+
+  void bad_words_are_refused_naming_the_option() {
+    QVERIFY(refusal({"--workers", "4:1"}).startsWith(QStringLiteral("--workers/--points: ")));
+    QVERIFY(refusal({"--points", "0"}).startsWith(QStringLiteral("--workers/--points: ")));
+    QCOMPARE(refusal({"--iterations", "0.5"}), QStringLiteral("--iterations must be a whole number >= 1"));
+    QCOMPARE(refusal({"--repeats", "1001"}), QStringLiteral("--repeats must be between 1 and 1000"));
+    QCOMPARE(refusal({"--variant", "fast"}), QStringLiteral("--variant must be paper or throughput"));
+    QCOMPARE(refusal({"bandwidth"}), QStringLiteral("expected 'run flops'"));
+    QCOMPARE(refusal({"--mib", "3"}), QStringLiteral("unknown option '--mib'"));
+  }
+};
+
+QTEST_APPLESS_MAIN(TestRunFlopsGrammar)
+#include "test_run_flops_grammar.moc"
