@@ -14,7 +14,7 @@ namespace bs {
 
 // One clock, one value per interval (the interval's last reading). NaN: not read in that interval.
 struct ClockSeries {
-  std::string name;             // "cpu0", "gpu 17000000.gv11b", "GR3D", "SM"
+  std::string name;              // "cpu0", "gpu 17000000.gv11b", "GR3D", "SM"
   std::optional<double> max_hz;  // the clock's stated maximum (cpuinfo_max_freq, devfreq max_freq); absent: unknown
   std::vector<double> hz;
 };
