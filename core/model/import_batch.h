@@ -9,6 +9,7 @@
 #include "model/frame.h"
 #include "model/pipeline_run.h"
 #include "model/power_trace.h"
+#include "model/sustain_run.h"
 
 namespace bs {
 
@@ -24,10 +25,11 @@ struct ImportBatch {
   std::vector<PipelineRun> pipeline_runs;
   std::vector<DnnRun> dnn_runs;
   std::vector<headroom::HeadroomMeasurement> headroom;  // control-loop latency (probe, cyclictest, rttest, ...)
+  std::vector<SustainRun> sustain_runs;                 // clocks, temperatures (and a rate) over time (#53)
   std::vector<std::string> warnings;                    // non-fatal, each naming file and place
   bool empty() const {
     return runs.empty() && result_sets.empty() && power_traces.empty() && frames.empty() && pipeline_runs.empty() &&
-           dnn_runs.empty() && headroom.empty();
+           dnn_runs.empty() && headroom.empty() && sustain_runs.empty();
   }
 };
 

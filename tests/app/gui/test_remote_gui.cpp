@@ -229,7 +229,10 @@ class TestRemoteGui : public QObject {
     QCOMPARE(m.platform, std::string("Robot loop"));
     QCOMPARE(m.phases.size(), std::size_t{2});  // idle, then beside the kernel
     QCOMPARE(setting(m.provenance, "remote host"), std::string("robot"));
-    QVERIFY(setting(m.provenance, "remote command").find("headroom --rate 500") != std::string::npos);
+    // The robot ran the canonical words of the panel's settings (core/commands): the command, then its options.
+    const std::string command = setting(m.provenance, "remote command");
+    QVERIFY2(command.find("headroom ") != std::string::npos && command.find(" --rate 500") != std::string::npos,
+             command.c_str());
     QVERIFY(panel->status()->text().startsWith("Measured on robot"));
     // The workspace tree lists it, and removing it there is undone by Ctrl+Z with nothing lost.
     bs::ui::WorkspaceTree* tree = w.tree();
