@@ -157,6 +157,12 @@ class NvidiaSmiParser : meter::LineParserBase {
 };
 
 void NvidiaSmiParser::header(std::size_t line_no) {
+  // A column in another unit than nvidia-smi writes is refused: its numbers would be read in the wrong unit.
+  const auto require_unit = [&](const Column& c, const std::string& unit, const std::string& what) {
+    if (!c.unit.empty() && c.unit != unit)
+      fail(ImportErrorCategory::Unsupported, line_no, c.name,
+           "unit '" + c.unit + "' for " + what + " (nvidia-smi writes " + unit + ")");
+  };
   std::string ignored;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     Column c = classify(cells_[i]);
@@ -178,9 +184,7 @@ void NvidiaSmiParser::header(std::size_t line_no) {
         if (!key_col_) key_col_ = i;
         break;
       case Role::Power:
-        if (!c.unit.empty() && c.unit != "W")
-          fail(ImportErrorCategory::Unsupported, line_no, c.name,
-               "unit '" + c.unit + "' for power (nvidia-smi writes W)");
+        require_unit(c, "W", "power");
         power_cols_.push_back(i);
         break;
       case Role::Driver:
@@ -191,15 +195,11 @@ void NvidiaSmiParser::header(std::size_t line_no) {
         break;
       case Role::Clock:
       case Role::ClockMax:
-        if (!c.unit.empty() && c.unit != "MHz")
-          fail(ImportErrorCategory::Unsupported, line_no, c.name,
-               "unit '" + c.unit + "' for a clock (nvidia-smi writes MHz)");
+        require_unit(c, "MHz", "a clock");
         sensor_cols_.push_back(i);
         break;
       case Role::Temperature:
-        if (!c.unit.empty() && c.unit != "C")
-          fail(ImportErrorCategory::Unsupported, line_no, c.name,
-               "unit '" + c.unit + "' for a temperature (nvidia-smi writes degrees C)");
+        require_unit(c, "C", "a temperature");
         sensor_cols_.push_back(i);
         break;
       case Role::Reason:

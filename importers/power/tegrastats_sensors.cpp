@@ -161,7 +161,8 @@ void TegrastatsSensors::line(const std::vector<std::string_view>& tok, std::stri
     const std::size_t column = static_cast<std::size_t>(t.data() - raw.data()) + 1;
     const bool has_next = i + 1 < tok.size();
     if (t == "CPU" && has_next && tok[i + 1].starts_with('[')) {
-      cpu_list(tok[++i], column + 4);
+      ++i;
+      cpu_list(tok[i], static_cast<std::size_t>(tok[i].data() - raw.data()) + 1);
     } else if (const std::size_t at = t.find('@'); at != std::string_view::npos && sensor_name(t.substr(0, at))) {
       temperature(t.substr(0, at), t.substr(at + 1), column);
     } else if (engine_name(t) && has_next) {
@@ -204,8 +205,9 @@ std::optional<SustainRun> TegrastatsSensors::finish(const PowerTrace& trace, std
     warnings.push_back(file_ + ": " + std::to_string(bad_ - kListedWarnings) +
                        " more clock or temperature tokens that do not parse, kept as missing");
   if (too_many_)
-    warnings.push_back(file_ + ": more clock or temperature names than any Jetson has (or one first seen late in a "
-                               "long log); those beyond the limit are not imported");
+    warnings.push_back(file_ +
+                       ": more clock or temperature names than any Jetson has (or one first seen late in a "
+                       "long log); those beyond the limit are not imported");
   return meter::log_sustain_run(trace, std::move(s));
 }
 

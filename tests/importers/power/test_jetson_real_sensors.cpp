@@ -17,7 +17,8 @@ const std::string kReal = bs::test::public_data("tests/data/power/real/");
 
 bs::SustainRun sustain(const std::string& name) {
   bs::ImportBatch b = bs::import_file(kReal + name, bs::CancelToken{});
-  if (b.sustain_runs.size() != 1 || b.power_traces.size() != 1) throw std::runtime_error(name + ": expected one record");
+  if (b.sustain_runs.size() != 1 || b.power_traces.size() != 1)
+    throw std::runtime_error(name + ": expected one record");
   if (b.sustain_runs[0].t_s != b.power_traces[0].time_s) throw std::runtime_error(name + ": not the trace's time axis");
   return std::move(b.sustain_runs[0]);
 }

@@ -93,16 +93,18 @@ class TestLogSensors : public QObject {
   void tegrastats_jetpack3_shared_cpu_clock_and_garbage() {
     const auto b = bs::kTegrastatsFileFormat.parse_text(
         "RAM 1/2MB CPU [12%,off,3%]@1734 GR3D_FREQ 5%@x EMC_FREQ 1%@99999999 AO@1e9C VDD_IN 3981/3981\n"
-        "RAM 1/2MB CPU [12%@abc,off,3%@204 GR3D_FREQ 7%@76 AO@40C VDD_IN 3000/3500\n",
+        "RAM 1/2MB CPU [12%@abc,off,3%@204 GR3D_FREQ 7%@76 AO@40C VDD_IN 3000/3500\n"
+        "RAM 1/2MB CPU [1%@abc,off] AO@41C VDD_IN 3000/3500\n",
         "t.log");
     const bs::SustainRun& r = b.sustain_runs.at(0);
-    QVERIFY(same(clock(r, "cpu0").hz, {1734e6, kNaN}));
-    QVERIFY(same(clock(r, "cpu2").hz, {1734e6, kNaN}));
-    QVERIFY(same(clock(r, "GR3D").hz, {kNaN, 76e6}));
-    QVERIFY(same(temperature(r, "AO").celsius, {kNaN, 40.0}));
+    QVERIFY(same(clock(r, "cpu0").hz, {1734e6, kNaN, kNaN}));
+    QVERIFY(same(clock(r, "cpu2").hz, {1734e6, kNaN, kNaN}));
+    QVERIFY(same(clock(r, "GR3D").hz, {kNaN, 76e6, kNaN}));
+    QVERIFY(same(temperature(r, "AO").celsius, {kNaN, 40.0, 41.0}));
     QCOMPARE(warnings_with(b, "t.log:1:"), std::size_t{3});  // GR3D_FREQ 5%@x, EMC 99999999 MHz, AO@1e9C
-    QCOMPARE(warnings_with(b, "GR3D_FREQ"), std::size_t{1});
-    QCOMPARE(warnings_with(b, "t.log:2:"), std::size_t{0});  // the last line: a cut token there is expected
+    QCOMPARE(warnings_with(b, "t.log:1:43: GR3D_FREQ: '5%@x' is not a load and clock"), std::size_t{1});
+    QCOMPARE(warnings_with(b, "t.log:2:15: CPU: '[12%@abc,off,3%@204' has no closing ']'"), std::size_t{1});
+    QCOMPARE(warnings_with(b, "t.log:3:"), std::size_t{0});  // the last line: a cut token there is expected
   }
   void tegrastats_many_bad_tokens_are_counted_not_listed() {
     std::string text;
@@ -132,7 +134,8 @@ class TestLogSensors : public QObject {
     const auto b = bs::kNvidiaSmiFileFormat.parse_text(
         "timestamp, name, power.draw [W], clocks.sm [MHz], clocks.max.sm [MHz], clocks.mem [MHz], temperature.gpu, "
         "clocks_throttle_reasons.sw_thermal_slowdown, clocks_throttle_reasons.active\n"
-        "2024/01/01 00:00:00.000, NVIDIA A2, 50.00 W, 1770 MHz, 1770 MHz, 6251 MHz, 60, Not Active, 0x0000000000000001\n"
+        "2024/01/01 00:00:00.000, NVIDIA A2, 50.00 W, 1770 MHz, 1770 MHz, 6251 MHz, 60, Not Active, "
+        "0x0000000000000001\n"
         "2024/01/01 00:00:01.000, NVIDIA A2, 60.00 W, 1410 MHz, 1770 MHz, [N/A], 85, Active, 0x0000000000000020\n"
         "2024/01/01 00:00:02.000, NVIDIA A2, 60.00 W, fast, 1770 MHz, 6251 MHz, 86, Active, 0x0000000000000020\n",
         "smi.csv");
@@ -142,8 +145,7 @@ class TestLogSensors : public QObject {
     QVERIFY(same(clock(r, "memory").hz, {6251e6, kNaN, 6251e6}));
     QVERIFY(!clock(r, "memory").max_hz);
     QVERIFY(same(temperature(r, "GPU").celsius, {60.0, 85.0, 86.0}));
-    QVERIFY(r.provenance.note.find("sw_thermal_slowdown active in 2 of 3 samples, first at 1 s") !=
-            std::string::npos);
+    QVERIFY(r.provenance.note.find("sw_thermal_slowdown active in 2 of 3 samples, first at 1 s") != std::string::npos);
     QVERIFY(r.provenance.note.find("clocks_throttle_reasons.active active in 2 of 3") != std::string::npos);
     QCOMPARE(warnings_with(b, "smi.csv:4: clocks.sm: 'fast' is not a clock in MHz"), std::size_t{1});
     QCOMPARE(r.power_w, (std::vector<double>{50.0, 60.0, 60.0}));
