@@ -72,6 +72,8 @@ COMPUTERS = [
     ("nvidia-dgx-spark", "NVIDIA DGX Spark", ["dgx-spark", "spark"], ""),
     ("x86-rtx4090", "x86_64 PC with NVIDIA GeForce RTX 4090 (CPU not named)", ["rtx4090", "x86-4090"], ""),
     ("x86-rtx5090", "x86_64 PC with NVIDIA GeForce RTX 5090 (CPU not named)", ["rtx5090", "x86-5090"], ""),
+    ("amd-kria-kv260", "AMD Kria KV260 (named 'Kria KV260' in RobotPerf's results)", ["kv260", "kria-kv260"], ""),
+    ("amd-kria-kr260", "AMD Kria KR260 (named 'Kria KR260' in RobotPerf's results)", ["kr260", "kria-kr260"], ""),
     ("raspberry-pi-4", "Raspberry Pi 4 Model B", ["pi4", "rpi4"], ""),
     ("raspberry-pi-cm4", "Raspberry Pi Compute Module 4", ["cm4"], ""),
     ("raspberry-pi-5", "Raspberry Pi 5 Model B", ["pi5", "rpi5"], ""),
@@ -723,11 +725,19 @@ ROS2_BENCHMARK = [
     ("isaacbench_gpu_rectify_x86_rtx5090_2026-02.json", _IRB, _IRB_AT,
      "results/isaac_ros_rectify_node-x86-5090.json", "x86-rtx5090"),
 ]
+# RobotPerf: (file in new/ros2/, repository, commit, path there, the boards its free-text "hardware" names). Only
+# boards are taken; workstation CPUs ("Intel i7-8700K", "AMD Ryzen 5 PRO 4650G") name no one computer.
+_RP_BOARDS = {"NVIDIA AGX Orin Dev. Kit": "jetson-agx-orin", "NVIDIA Jetson Nano": "jetson-nano",
+              "Kria KV260": "amd-kria-kv260", "Kria KR260": "amd-kria-kr260"}
 ROBOTPERF = [
     ("robotperf_c1_rrbot_joint_trajectory_controller_benchmark.yaml", "robotperf/benchmarks",
      "e603946568ac126c9b051865978ab58d05763e30",
-     "benchmarks/control/c1_rrbot_joint_trajectory_controller/benchmark.yaml",
-     {"NVIDIA AGX Orin Dev. Kit": "jetson-agx-orin"}),
+     "benchmarks/control/c1_rrbot_joint_trajectory_controller/benchmark.yaml", _RP_BOARDS),
+    # Added for issue #51 (new/ros2/SOURCES.md).
+    ("robotperf_a2_rectify_benchmark.yaml", "robotperf/benchmarks", "6bcaa370f84afb7b3de20382a3e58ddc33b6df48",
+     "benchmarks/perception/a2_rectify/benchmark.yaml", _RP_BOARDS),
+    ("robotperf_a5_resize_benchmark.yaml", "robotperf/benchmarks", "6125a574a9e34cefc8fb3d4ba70f2512a1f07078",
+     "benchmarks/perception/a5_resize/benchmark.yaml", _RP_BOARDS),
 ]
 # What each value is (ros2_benchmark basic_performance_calculator.py; RobotPerf's notes).
 ROS2_FIELDS = [
@@ -806,38 +816,84 @@ def ros2_benchmark_results(name, repo, commit, path, computer):
     return out
 
 
+_RP_STAT = {"max": "the maximum of the run", "mean": "the mean of the run", "min": "the minimum of the run",
+            "rms": "the root mean square of the run"}
+
+
+def robotperf_statistic(value_text, note):
+    """Which statistic of the run RobotPerf's value is: the one of its note ("mean_benchmark 30.2, ... max_benchmark
+    36.46", "mean 5.41 ms, ... max 9.23 ms", "max_latency ...") whose number is the value to the digits both
+    print. a2's and a5's throughputs are the maximum, c1's the mean; a note without numbers leaves it not stated.
+    The same rule as importers/ros2/robotperf_yaml.cpp."""
+    def decimals(t):
+        return len(t.split(".", 1)[1]) if "." in t else 0
+    v = float(value_text)
+    for m in re.finditer(r"\b(mean|max|min|rms)(?:_benchmark|_latency)?\s+([0-9]+(?:\.[0-9]+)?)", note):
+        x = m.group(2)
+        if abs(float(x) - v) <= 0.5 * 10 ** -min(decimals(x), decimals(value_text)) + 1e-12:
+            return "%s (RobotPerf's value; its note's %s)" % (_RP_STAT[m.group(1)], m.group(0).split()[0])
+    return "not stated (RobotPerf's value; its note gives no statistic equal to it)"
+
+
 def robotperf_results(name, repo, commit, path, computers):
     f = ros2_file(name)
     with open(f, encoding="utf-8") as fh:
         doc = yaml.safe_load(fh)
     lines = lines_of(f)
     out = []
-    meaning = {"latency": ("s", 1e-3, "the maximum of the run (RobotPerf's value; its note's max_benchmark)"),
-               "throughput": ("1/s", 1, "the mean of the run (RobotPerf's value; its note's mean_benchmark)"),
-               "power": ("W", 1, "as RobotPerf reports it (the statistic is not stated)")}
+    units = {"latency": ("s", 1e-3), "throughput": ("1/s", 1), "power": ("W", 1)}
     value_lines = [i + 1 for i, l in enumerate(lines) if l.strip().startswith("value:")]
+    # The raw value text (the YAML reader drops "10.00"'s digits), for the statistic's comparison.
+    value_texts = [lines[n - 1].split("value:", 1)[1].strip() for n in value_lines]
+    # A "throughput" that is the same whole number on every machine of the file (c1's joint trajectory controller:
+    # 10/s everywhere) is the rate the loop was configured to run at, not a throughput (the importer's rule).
+    rates = {float(i["result"]["value"]) for i in doc["results"] if i["result"]["metric"] == "throughput"}
+    configured = len(rates) == 1 and next(iter(rates)) > 0 and next(iter(rates)).is_integer() and len(
+        {i["result"]["hardware"] for i in doc["results"]}) > 1
+    seen = {}
     for k, item in enumerate(doc["results"]):
         r = item["result"]
         computer = computers.get(r["hardware"])
         if not computer:
             continue
-        unit, scale, what = meaning[r["metric"]]
+        unit, scale = units[r["metric"]]
         value = float(r["value"])
-        entry = {"kind": "robotperf", "computer": computer, "device": r["hardware"], "measure": r["metric"],
+        note = str(r.get("note", "")).strip()
+        what = ("as RobotPerf reports it (the statistic is not stated)" if r["metric"] == "power"
+                else robotperf_statistic(value_texts[k], note))
+        box = {"grey": "grey-box", "black": "black-box"}.get(r.get("type", ""), "box type not stated")
+        measure = r["metric"]
+        if r["metric"] == "throughput" and configured:
+            measure = "update rate as configured (not a throughput)"
+        measure += ", " + box
+        key = "robotperf-%s-%s-%s" % (computer, doc["id"], r["metric"])
+        seen[key] = seen.get(key, 0) + 1
+        conditions = {"hardware as written": r["hardware"] + " (free text)", "category": r.get("category", ""),
+                      "box type": box + " (RobotPerf's type: %s)" % r.get("type", "not stated")}
+        if note:
+            conditions["RobotPerf's note"] = note
+        entry = {"kind": "robotperf", "computer": computer, "device": r["hardware"], "measure": measure,
                  "benchmark": "%s %s" % (doc["id"], doc["name"]), "input": r.get("datasource", "not stated"),
                  "release": "not stated in the file", "statistic": what, "precision": "not applicable",
                  "value": value * scale, "unit": unit, "round": "RobotPerf benchmarks",
                  "date": str(r.get("timestampt", ""))[:10],
-                 "conditions": {"hardware as written": r["hardware"] + " (free text)",
-                                "category": r.get("category", "")},
+                 "conditions": conditions,
                  "software": "RobotPerf (ROS 2 release not stated in the file)",
                  "source": {"url": f"https://github.com/{repo}/blob/{commit}/{path}", "repository": repo,
                             "commit": commit, "path": path, "lines": {"value": value_lines[k]},
                             "kept": "../../new/ros2/" + name, "licence": "Apache-2.0"},
-                 "id": "robotperf-%s-%s-%s" % (computer, doc["id"], r["metric"])}
-        if value <= 0:
-            entry["flags"] = [{"code": "impossible_value", "reason": "%s %s of %s is impossible" % (
-                r["value"], r["metric_unit"], r["metric"])}]
+                 # The first result of a computer and metric keeps the short id; later ones say their line.
+                 "id": key if seen[key] == 1 else "%s-line%d" % (key, value_lines[k])}
+        flags = []
+        if value <= 0 or (r["metric"] == "power" and value < 0.01):
+            flags.append({"code": "impossible_value", "reason": "%s %s of %s is impossible%s" % (
+                r["value"], r["metric_unit"], r["metric"],
+                " (below 0.01 W, which no computer draws)" if value > 0 else "")})
+        if measure.startswith("update rate as configured"):
+            flags.append({"code": "configured_rate", "reason": "%s %s on every machine of the file: the rate the "
+                          "loop was configured to run at, not a throughput" % (r["value"], r["metric_unit"])})
+        if flags:
+            entry["flags"] = flags
         if r["metric"] == "power":
             entry["power_kind"] = "not stated"
         out.append(entry)

@@ -226,6 +226,11 @@ void attach_log_platforms(ImportBatch& batch, const std::string& path, const std
   for (PowerTrace& t : batch.power_traces)
     if (blank_platform(t.platform))
       t.platform = settle_platform(infer_log_platform(t, known), t, path, known, options, o);
+  // A log's clocks and temperatures (#53) belong to the computer of its power, settled just above: never asked twice.
+  for (SustainRun& r : batch.sustain_runs)
+    if (blank_platform(r.platform))
+      for (const PowerTrace& t : batch.power_traces)
+        if (t.label == r.label && t.provenance.source_file == r.provenance.source_file) r.platform = t.platform;
   // A latency file (cyclictest, rttest, performance_test) rarely names its machine: asked like a power log, the
   // question naming the result as it names a log.
   for (headroom::HeadroomMeasurement& m : batch.headroom) {

@@ -12,6 +12,7 @@
 
 #include "analysis/power/power_time.h"
 #include "power/jetson_rail_limits.h"
+#include "power/log_sustain.h"
 #include "power/meter_log_text.h"
 #include "power/power_line_reader.h"
 
@@ -106,13 +107,28 @@ std::optional<double> parse_timedelta(std::string_view s) {
   return days * 86400.0 + *h * 3600.0 + *m * 60.0 + *sec;
 }
 
-enum class Role { Ignored, Time, Uptime, Total, Rail, Setting };
+enum class Role { Ignored, Time, Uptime, Total, Rail, Setting, Temperature, Clock };
 
 struct Column {
   std::string name;
   Role role = Role::Ignored;
-  std::size_t channel = 0;  // Total/Rail: index into trace.channels; Setting: index into settings
+  std::size_t channel = 0;  // Total/Rail: index into trace.channels; Setting: into settings; Temperature/Clock: series
 };
+
+// jetson-stats' value for a sensor it cannot read (jtop/core/temperature.py TEMPERATURE_OFFLINE).
+constexpr double kNoReadingC = -256;
+constexpr double kMinC = -100, kMaxC = 200;  // outside: not a reading of a working sensor
+constexpr double kMaxMhz = 100'000;
+
+// The engine columns jetson-stats writes, each its engine's clock ("OFF" when the engine is off): jtop.py's stats
+// puts engine['cur'] there. The CPU, GPU and EMC columns are loads, not clocks.
+bool engine_column(std::string_view n) {
+  for (std::string_view e : {"APE", "NVENC", "NVDEC", "NVJPG", "NVJPG1", "VIC", "OFA", "SE", "MSENC", "CVNAS"})
+    if (n == e) return true;
+  for (std::string_view prefix : {"DLA", "NVDLA", "PVA"})
+    if (n.starts_with(prefix)) return true;
+  return false;
+}
 
 bool is_total(std::string_view name) { return name == "Power TOT" || name == "power cur"; }
 
@@ -145,6 +161,10 @@ class JtopParser {
   double first_time_ = 0;
   std::size_t missing_ = 0, setting_changes_ = 0;
   std::vector<std::string> setting_last_;
+  // Clocks (MHz) and temperatures (C) of the rows (#53); one value per row.
+  std::vector<meter::SampleSeries::Series> clocks_, temps_;
+  std::size_t bad_sensor_ = 0, no_reading_ = 0;
+  void sensor_cell(const Column& c, const Cell& cell, std::size_t line_no);
   PowerTrace trace_;
   ImportBatch batch_;
 };
@@ -172,6 +192,11 @@ void JtopParser::header(std::size_t line_no) {
       c.role = Role::Rail;
     } else if (c.name == "nvp model" || c.name == "jetson_clocks") {
       c.role = Role::Setting;
+    } else if (c.name.starts_with("Temp ") && c.name.size() > 5 && c.name != "Temp PMIC") {
+      // PMIC is not a measurement (it reports only crossing 120 or 140 C); jetson-stats drops it, so do we.
+      c.role = Role::Temperature;
+    } else if (engine_column(c.name)) {
+      c.role = Role::Clock;
     }
     columns_.push_back(std::move(c));
   }
@@ -194,6 +219,12 @@ void JtopParser::header(std::size_t line_no) {
     if (c.role == Role::Rail) {
       c.channel = trace_.channels.size();
       trace_.channels.push_back({c.name, PowerQuantity::Power, {}});
+    } else if (c.role == Role::Temperature) {
+      c.channel = temps_.size();
+      temps_.push_back({c.name.substr(5), {}});
+    } else if (c.role == Role::Clock) {
+      c.channel = clocks_.size();
+      clocks_.push_back({c.name, {}});
     } else if (c.role == Role::Setting) {
       c.channel = trace_.provenance.settings.size();
       trace_.provenance.settings.emplace_back(c.name, std::string());
@@ -275,8 +306,39 @@ void JtopParser::line(std::string_view raw, std::size_t line_no, bool last) {
         stated += " then " + value;
       }
       last_value = value;
+    } else if (c.role == Role::Temperature || c.role == Role::Clock) {
+      sensor_cell(c, cells_[k], line_no);
     }
   }
+}
+
+// A temperature (C; -256: no sensor) or an engine clock ("OFF", else kHz since jetson-stats 4.2, which reads
+// clk_rate / 1000; MHz before, copied from tegrastats). Not power: one that does not parse is a warning and NaN, the
+// row's power stays.
+void JtopParser::sensor_cell(const Column& c, const Cell& cell, std::size_t line_no) {
+  const std::string_view text = trim(cell.text);
+  const std::optional<double> v = number(text);
+  double value = std::nan("");
+  std::string why;
+  if (c.role == Role::Temperature) {
+    if (v && *v == kNoReadingC)
+      ++no_reading_;
+    else if (v && *v >= kMinC && *v <= kMaxC)
+      value = *v;
+    else if (!text.empty())
+      why = "'" + cell.text + "' is not a temperature in C";
+    temps_[c.channel].values.push_back(value);
+  } else {
+    const double mhz = v ? (old_format_ ? *v : *v / 1000.0) : std::nan("");
+    if (v && mhz > 0 && mhz <= kMaxMhz)
+      value = mhz;
+    else if (text != "OFF" && !text.empty() && !(v && *v == 0))
+      why = "'" + cell.text + "' is not an engine clock (" + (old_format_ ? "MHz" : "kHz") + ", or OFF)";
+    clocks_[c.channel].values.push_back(value);
+  }
+  if (!why.empty() && ++bad_sensor_ <= kListedWarnings)
+    batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ":" + std::to_string(cell.column) + ": " +
+                              c.name + ": " + why + "; kept as missing");
 }
 
 ImportBatch JtopParser::finish() {
@@ -305,6 +367,20 @@ ImportBatch JtopParser::finish() {
            "the rails); the rails are its parts and are never added to it";
   if (old_format_) p.note += "; \"power avg\" (jtop's running average since it started) is not imported";
   if (time_role_ == Role::Uptime) p.note += "; times from the uptime column (no \"time\" column)";
+  if (bad_sensor_ > kListedWarnings)
+    batch_.warnings.push_back(file_ + ": " + std::to_string(bad_sensor_ - kListedWarnings) +
+                              " more temperature or clock cells that do not parse, kept as missing");
+  meter::LogSensors sensors;
+  sensors.clocks_mhz = std::move(clocks_);
+  sensors.celsius = std::move(temps_);
+  sensors.not_exposed.push_back(
+      "no CPU or GPU clock: jetson-stats' CSV holds their loads (CPU1..., GPU), not their clocks");
+  sensors.notes.push_back(std::string("engine clocks from the engine columns (") + (old_format_ ? "MHz" : "kHz") +
+                          "; OFF kept as missing)");
+  if (no_reading_)
+    sensors.notes.push_back(std::to_string(no_reading_) +
+                            " temperatures of -256 C (jetson-stats' 'no sensor') kept as missing");
+  if (auto run = meter::log_sustain_run(trace_, std::move(sensors))) batch_.sustain_runs.push_back(std::move(*run));
   batch_.power_traces.push_back(std::move(trace_));
   return std::move(batch_);
 }

@@ -12,8 +12,12 @@
 // the sum of the rails): it is never added to the rails or they to it. jetson-stats up to 4.1 wrote only the total,
 // as "power cur" (its running average "power avg" is not a sample and is not imported). "nvp model" and
 // "jetson_clocks" go into Provenance::settings (a change during the log is a warning and both values are kept).
-// Times from "time" (absolute; start_time is kept), else from "uptime". Loads, temperatures, fan and engine columns
-// are not power and are not imported.
+// Times from "time" (absolute; start_time is kept), else from "uptime". Loads and fan are not imported.
+// Temperatures and engine clocks (#53) make one SustainRun on the trace's time axis: every "Temp <sensor>" column
+// in C (-256 = no sensor: NaN; "Temp PMIC" is not a measurement and is left out) and the engine columns (APE, NVENC,
+// NVDEC, NVJPG, VIC, OFA, SE, DLA*, PVA*: "OFF" = NaN; kHz since jetson-stats 4.2, MHz in the older "power cur"
+// logs). The CPU, GPU and EMC columns are loads, not clocks: the record says it has no CPU or GPU clock. A
+// temperature or clock cell that does not parse is a warning naming file:line:column and the column, and NaN.
 // Errors (file:line:column and column name): no time/uptime or no total column, a row with more or fewer cells
 // than the header, an unterminated quote, a time or power cell that is not a number, a power reading outside what a
 // rail can read (jetson_rail_limits.h), time going backwards. An empty power cell is a missing sample (NaN,

@@ -2,13 +2,16 @@
 #include "power/nvidia_smi.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <unordered_map>
 #include <vector>
 
 #include "analysis/power/power_time.h"
+#include "power/log_sustain.h"
 #include "power/meter_log_text.h"
 #include "power/power_line_reader.h"
 
@@ -21,13 +24,33 @@ using meter::trim;
 // one trace per garbage row).
 constexpr std::size_t kMaxGpus = 1024;
 
-enum class Role { Time, Bus, Uuid, Index, Name, Power, Driver, Limit, Other };
+// Clock, ClockMax, Temperature and Reason columns make the GPU's sustained-performance record (#53).
+enum class Role { Time, Bus, Uuid, Index, Name, Power, Driver, Limit, Clock, ClockMax, Temperature, Reason, Other };
 
 struct Column {
   std::string name;  // the field name without its unit: "power.draw"
   std::string unit;  // from "[W]"; empty when the header has none (nounits keeps it, noheader has no header)
   Role role = Role::Other;
+  std::string series;  // Clock, ClockMax: the clock's name ("SM"); Temperature: the sensor's ("GPU")
 };
+
+// nvidia-smi's clock fields, current ("clocks.sm", "clocks.current.sm") or maximum ("clocks.max.sm"), as the series
+// name; the applications and default-applications clocks are settings, not readings, and are not matched.
+std::string clock_series(std::string_view field) {
+  if (field.starts_with("clocks.current."))
+    field.remove_prefix(15);
+  else if (field.starts_with("clocks.max."))
+    field.remove_prefix(11);
+  else if (field.starts_with("clocks."))
+    field.remove_prefix(7);
+  else
+    return {};
+  if (field == "sm") return "SM";
+  if (field == "gr" || field == "graphics") return "graphics";
+  if (field == "mem" || field == "memory") return "memory";
+  if (field == "video") return "video";
+  return {};
+}
 
 Column classify(std::string_view cell) {
   Column c;
@@ -53,6 +76,14 @@ Column classify(std::string_view cell) {
     c.role = Role::Driver;
   else if (name == "power.limit" || name == "enforced.power.limit")
     c.role = Role::Limit;
+  else if (!(c.series = clock_series(name)).empty())
+    c.role = name.starts_with("clocks.max.") ? Role::ClockMax : Role::Clock;
+  else if (name == "temperature.gpu" || name == "temperature.memory") {
+    c.role = Role::Temperature;
+    c.series = name == "temperature.gpu" ? "GPU" : "memory";
+  } else if ((name.starts_with("clocks_throttle_reasons.") || name.starts_with("clocks_event_reasons.")) &&
+             !name.ends_with(".supported"))
+    c.role = Role::Reason;
   return c;
 }
 
@@ -81,10 +112,20 @@ Cell watts(std::string_view c, double& v) {
   return meter::number(c, v) ? Cell::Ok : Cell::Bad;
 }
 
+// How often one throttle-reason column said the reason was active, and when first.
+struct ReasonSeen {
+  std::size_t samples = 0;
+  double first_s = 0;
+};
+
 struct Gpu {
   std::string key, name;
   double first_epoch = 0;
   PowerTrace trace;
+  // One entry per sensor column (NvidiaSmiParser::sensor_cols_), same order: values (MHz or C) or reason counts.
+  std::vector<meter::SampleSeries::Series> series;
+  std::vector<std::optional<double>> max_mhz;  // per sensor column: the highest clocks.max.* reading (ClockMax)
+  std::vector<ReasonSeen> reasons;
 };
 
 class NvidiaSmiParser : meter::LineParserBase {
@@ -106,12 +147,22 @@ class NvidiaSmiParser : meter::LineParserBase {
   std::size_t time_col_ = 0;
   std::optional<std::size_t> key_col_, name_col_, driver_col_, limit_col_;
   std::vector<std::size_t> power_cols_;
+  std::vector<std::size_t> sensor_cols_;  // Clock, ClockMax, Temperature and Reason columns, in file order
   std::vector<Gpu> gpus_;
+  void sensors(Gpu& g, std::size_t line_no);
+  std::optional<SustainRun> sustain_run(Gpu& g) const;
+  std::size_t bad_sensor_ = 0;
   std::unordered_map<std::string, std::size_t> gpu_index_;
   std::size_t samples_ = 0, missing_ = 0;
 };
 
 void NvidiaSmiParser::header(std::size_t line_no) {
+  // A column in another unit than nvidia-smi writes is refused: its numbers would be read in the wrong unit.
+  const auto require_unit = [&](const Column& c, const std::string& unit, const std::string& what) {
+    if (!c.unit.empty() && c.unit != unit)
+      fail(ImportErrorCategory::Unsupported, line_no, c.name,
+           "unit '" + c.unit + "' for " + what + " (nvidia-smi writes " + unit + ")");
+  };
   std::string ignored;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     Column c = classify(cells_[i]);
@@ -133,9 +184,7 @@ void NvidiaSmiParser::header(std::size_t line_no) {
         if (!key_col_) key_col_ = i;
         break;
       case Role::Power:
-        if (!c.unit.empty() && c.unit != "W")
-          fail(ImportErrorCategory::Unsupported, line_no, c.name,
-               "unit '" + c.unit + "' for power (nvidia-smi writes W)");
+        require_unit(c, "W", "power");
         power_cols_.push_back(i);
         break;
       case Role::Driver:
@@ -143,6 +192,18 @@ void NvidiaSmiParser::header(std::size_t line_no) {
         break;
       case Role::Limit:
         if (!limit_col_) limit_col_ = i;
+        break;
+      case Role::Clock:
+      case Role::ClockMax:
+        require_unit(c, "MHz", "a clock");
+        sensor_cols_.push_back(i);
+        break;
+      case Role::Temperature:
+        require_unit(c, "C", "a temperature");
+        sensor_cols_.push_back(i);
+        break;
+      case Role::Reason:
+        sensor_cols_.push_back(i);
         break;
       case Role::Other:
         ignored += (ignored.empty() ? "" : ", ") + c.name;
@@ -157,7 +218,8 @@ void NvidiaSmiParser::header(std::size_t line_no) {
   if (std::none_of(cols_.begin(), cols_.end(), [](const Column& c) { return c.role == Role::Time; }))
     fail(ImportErrorCategory::MissingField, line_no, "header",
          "no timestamp column: the times of the samples are not in the file (add timestamp to --query-gpu)");
-  if (!ignored.empty()) batch_.warnings.push_back(file_ + ": columns that are not power ignored: " + ignored);
+  if (!ignored.empty())
+    batch_.warnings.push_back(file_ + ": columns that are not power, a clock or a temperature ignored: " + ignored);
 }
 
 // noheader: safe only with one nvidia-smi timestamp cell and exactly one cell in W (the power); the GPU is told
@@ -215,6 +277,9 @@ Gpu& NvidiaSmiParser::gpu_for(std::size_t line_no) {
   g.key = std::move(key);
   if (name_col_ && !missing_cell(cells_[*name_col_])) g.name = std::string(cells_[*name_col_]);
   for (std::size_t col : power_cols_) g.trace.channels.push_back({cols_[col].name, PowerQuantity::Power, {}});
+  for (std::size_t col : sensor_cols_) g.series.push_back({cols_[col].series, {}});
+  g.max_mhz.resize(sensor_cols_.size());
+  g.reasons.resize(sensor_cols_.size());
   auto& settings = g.trace.provenance.settings;
   if (driver_col_) settings.emplace_back("driver_version", std::string(cells_[*driver_col_]));
   if (limit_col_) {
@@ -285,6 +350,76 @@ void NvidiaSmiParser::line(std::string_view raw, std::size_t line_no, bool last)
          "time goes backwards for GPU '" + g.key + "' (" + std::string(cells_[time_col_]) + ")");
   t.time_s.push_back(rel);
   for (std::size_t k = 0; k < values.size(); ++k) t.channels[k].values.push_back(values[k]);
+  sensors(g, line_no);
+}
+
+// The row's clocks ("1530 MHz", or 1530 with nounits), temperatures ("65", "65 C") and throttle reasons ("Active",
+// "Not Active"; the .active bit mask "0x0000000000000004"). Not power: a cell that does not parse is a warning and
+// NaN, the row's power stays; "[N/A]" is a missing reading.
+void NvidiaSmiParser::sensors(Gpu& g, std::size_t line_no) {
+  for (std::size_t k = 0; k < sensor_cols_.size(); ++k) {
+    const Column& c = cols_[sensor_cols_[k]];
+    std::string_view cell = cells_[sensor_cols_[k]];
+    double v = std::numeric_limits<double>::quiet_NaN();
+    bool ok = missing_cell(cell);
+    if (c.role == Role::Reason) {
+      unsigned long long mask = 0;
+      const bool hex =
+          cell.starts_with("0x") && cell.size() <= 18 &&
+          std::from_chars(cell.data() + 2, cell.data() + cell.size(), mask, 16).ptr == cell.data() + cell.size();
+      // Bit 0x1 of the mask is "GPU idle": the clock is low because there is no work, not throttling.
+      const bool active = cell == "Active" || (hex && (mask & ~1ULL) != 0);
+      ok = ok || active || cell == "Not Active" || hex;
+      if (active && g.reasons[k].samples++ == 0) g.reasons[k].first_s = g.trace.time_s.back();
+    } else if (!ok) {
+      const std::string_view unit = c.role == Role::Temperature ? " C" : " MHz";
+      if (cell.ends_with(unit)) cell.remove_suffix(unit.size());
+      const bool sane = c.role == Role::Temperature ? meter::number(cell, v) && v > -100 && v < 200
+                                                    : meter::number(cell, v) && v >= 0 && v < 100'000;
+      ok = sane;
+      if (!sane) v = std::numeric_limits<double>::quiet_NaN();
+      if (sane && c.role == Role::ClockMax) g.max_mhz[k] = std::max(g.max_mhz[k].value_or(0), v);
+    }
+    if (c.role != Role::Reason) g.series[k].values.push_back(v);
+    if (!ok && ++bad_sensor_ <= kListedWarnings)
+      batch_.warnings.push_back(file_ + ":" + std::to_string(line_no) + ": " + c.name + ": '" +
+                                std::string(cells_[sensor_cols_[k]]) + "' is not a " +
+                                (c.role == Role::Temperature ? "temperature in C"
+                                 : c.role == Role::Reason    ? "throttle reason (Active, Not Active or a 0x mask)"
+                                                             : "clock in MHz") +
+                                "; kept as missing");
+  }
+}
+
+// The GPU's sustained-performance record: its clocks with their maximum (clocks.max.* of the same clock), its
+// temperatures, and in the note how often each throttle reason was active.
+std::optional<SustainRun> NvidiaSmiParser::sustain_run(Gpu& g) const {
+  meter::LogSensors s;
+  std::vector<std::optional<double>> max_of;  // by clock name
+  for (std::size_t k = 0; k < sensor_cols_.size(); ++k) {
+    const Column& c = cols_[sensor_cols_[k]];
+    if (c.role == Role::Clock) {
+      s.clocks_mhz.push_back(std::move(g.series[k]));
+      s.max_mhz.emplace_back();
+      for (std::size_t m = 0; m < sensor_cols_.size(); ++m)
+        if (cols_[sensor_cols_[m]].role == Role::ClockMax && cols_[sensor_cols_[m]].series == c.series)
+          s.max_mhz.back() = g.max_mhz[m];
+    } else if (c.role == Role::Temperature) {
+      s.celsius.push_back(std::move(g.series[k]));
+    } else if (c.role == Role::Reason) {
+      char first[32];
+      std::snprintf(first, sizeof first, "%g", g.reasons[k].first_s);
+      s.notes.push_back(c.name + (g.reasons[k].samples == 0 ? std::string(" never active")
+                                                            : " active in " + std::to_string(g.reasons[k].samples) +
+                                                                  " of " + std::to_string(g.trace.time_s.size()) +
+                                                                  " samples, first at " + first + " s"));
+    }
+  }
+  if (std::none_of(s.clocks_mhz.begin(), s.clocks_mhz.end(), [](const auto& c) { return c.name == "SM"; }))
+    s.not_exposed.push_back(noheader_ ? "no header: no clock or temperature column can be told"
+                                      : "no SM clock (clocks.sm not queried): GPU clock throttling cannot be seen");
+  s.notes.push_back("nvidia-smi clocks in MHz, temperatures in C; [N/A] kept as missing");
+  return meter::log_sustain_run(g.trace, std::move(s));
 }
 
 ImportBatch NvidiaSmiParser::finish() {
@@ -292,6 +427,9 @@ ImportBatch NvidiaSmiParser::finish() {
     throw ImportError(ImportErrorCategory::MissingField, {file_, 0, 0, {}},
                       have_columns_ ? "a header but no rows" : "no nvidia-smi rows");
   more_skipped_warning();
+  if (bad_sensor_ > kListedWarnings)
+    batch_.warnings.push_back(file_ + ": " + std::to_string(bad_sensor_ - kListedWarnings) +
+                              " more clock, temperature or throttle-reason cells that do not parse, kept as missing");
   if (missing_ > 0)
     batch_.warnings.push_back(file_ + ": " + std::to_string(missing_) +
                               " power readings nvidia-smi could not take ([N/A], [Not Supported]) are missing samples");
@@ -321,6 +459,7 @@ ImportBatch NvidiaSmiParser::finish() {
     p.measurement = MeasurementKind::OnBoardSensor;
     p.sensor = "NVML (nvidia-smi)";
     if (!g.key.empty() && gpus_.size() > 1) p.note = "GPU " + g.key;
+    if (auto run = sustain_run(g)) batch_.sustain_runs.push_back(std::move(*run));
     batch_.power_traces.push_back(std::move(t));
   }
   return std::move(batch_);

@@ -4,9 +4,13 @@
 // [,nounits] -l 1 | -lms 100`, parsed in one streaming pass.
 //  - Header names are nvidia-smi's field names, the unit in brackets ("power.draw [W]"); cells carry the unit too
 //    ("285.43 W") unless nounits. power.draw, power.draw.instant and power.draw.average become Power channels in W;
-//    the total channel is power.draw, else .instant, else .average. Other columns (utilization, clocks,
-//    temperature, memory) are not power and are ignored, named once in a warning; driver_version and
-//    power.limit of the first row become settings.
+//    the total channel is power.draw, else .instant, else .average. driver_version and power.limit of the first
+//    row become settings. Other columns (utilization, memory, pstate) are ignored, named once in a warning.
+//  - Clocks and temperatures (#53) make one SustainRun per GPU on its trace's time axis: clocks.sm / .gr / .mem /
+//    .video (also clocks.current.*) in MHz, with the maximum from clocks.max.* of the same clock where queried;
+//    temperature.gpu and temperature.memory in C. clocks_throttle_reasons.* / clocks_event_reasons.* ("Active",
+//    or the .active bit mask, its "GPU idle" bit not counted) are summed up in the record's provenance note
+//    (active in N of M samples, first at t s). A cell of these that does not parse is a warning and NaN.
 //  - One PowerTrace per GPU: rows of several GPUs interleave and are told apart by pci.bus_id, else uuid, else
 //    index, else name. gpu_model = the name column; the label names the GPU when the log holds several.
 //  - timestamp "2023/10/05 14:31:02.123" (or ISO 8601) gives the times and the absolute start_time; a log without

@@ -12,6 +12,7 @@
 #include "power/jetson_rail_limits.h"
 #include "power/meter_log_text.h"
 #include "power/power_line_reader.h"
+#include "power/tegrastats_sensors.h"
 
 namespace bs {
 namespace {
@@ -91,7 +92,7 @@ constexpr std::string_view kSumChannel = "sum of rails";
 class TegrastatsParser : meter::LineParserBase {
  public:
   TegrastatsParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : LineParserBase(file, options, limits) {
+      : LineParserBase(file, options, limits), sensors_(file) {
     if (!(options.interval_s > 0) || !std::isfinite(options.interval_s))
       throw ImportError(ImportErrorCategory::InvalidValue, {file, 0, 0, "interval"}, "the interval must be > 0 s");
   }
@@ -109,6 +110,7 @@ class TegrastatsParser : meter::LineParserBase {
   double first_time_ = 0;
   std::size_t sample_ = 0;
   PowerTrace trace_;
+  TegrastatsSensors sensors_;  // clocks and temperatures of the accepted lines (#53)
 };
 
 void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last) {
@@ -193,6 +195,7 @@ void TegrastatsParser::line(std::string_view raw, std::size_t line_no, bool last
     sum += w;
   }
   if (summed_) trace_.channels[0].values.push_back(sum);
+  sensors_.line(tok_, raw, line_no, last);  // after every check that can refuse the line: one value per sample
   ++sample_;
 }
 
@@ -241,6 +244,7 @@ ImportBatch TegrastatsParser::finish() {
     batch_.warnings.push_back(file_ + ": " + interval);
     trace_.provenance.note += "; " + interval;
   }
+  if (auto run = sensors_.finish(trace_, batch_.warnings)) batch_.sustain_runs.push_back(std::move(*run));
   batch_.power_traces.push_back(std::move(trace_));
   return std::move(batch_);
 }

@@ -11,6 +11,9 @@
 // and a provenance note: module rails only, a lower bound of the power at the supply. Times come from a leading
 // "MM-DD-YYYY HH:MM:SS" (newer releases) or else from the interval (tegrastats' default 1 s; a warning says so).
 // Lines without rails are skipped with a warning; a cut-off last line too.
+// Beside the trace, the clocks and temperatures of every line become one SustainRun on the trace's time axis
+// (tegrastats_sensors.h: CPU [..%@MHz,off,..], GR3D_FREQ, EMC_FREQ, engines, NAME@45.5C; -256C and PMIC are not
+// temperatures).
 // Errors: no rails anywhere, rails that change mid-log, timestamps on some lines only, time going backwards, a
 // reading that does not parse, and one beyond what a rail can read (jetson_rail_limits.h: -2 W to 1 kW), which
 // names file:line:column and the rail.

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 #include "ros2/yaml_subset.h"
 
@@ -22,19 +23,63 @@ std::string text_of(const YamlNode& result, const char* key) {
   return n && n->kind == YamlNode::Kind::Scalar ? n->scalar : std::string();
 }
 
+// Which statistic of the run RobotPerf's value is: the one of its note ("mean_benchmark 30.2, ... max_benchmark
+// 36.46", "mean 5.41 ms, ... max 9.23 ms", "max_latency ...") whose number is the value to the digits both print.
+// a2's and a5's throughputs are the run's maximum, c1's its mean; a note without numbers leaves it not stated. The
+// same rule as scripts/build-library.py's robotperf_statistic.
+std::string statistic_of(std::string_view value_text, std::string_view note) {
+  static constexpr std::pair<std::string_view, std::string_view> kStats[] = {{"mean", "mean of the run"},
+                                                                             {"max", "maximum of the run"},
+                                                                             {"min", "minimum of the run"},
+                                                                             {"rms", "root mean square of the run"}};
+  const auto decimals = [](std::string_view t) {
+    const std::size_t dot = t.find('.');
+    return dot == std::string_view::npos ? std::size_t{0} : t.size() - dot - 1;
+  };
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; };
+  double v = 0;
+  if (std::from_chars(value_text.data(), value_text.data() + value_text.size(), v).ec != std::errc()) return {};
+  for (std::size_t i = 0; i < note.size(); ++i) {
+    if (i > 0 && word(note[i - 1])) continue;
+    for (const auto& [key, what] : kStats) {
+      if (!note.substr(i).starts_with(key)) continue;
+      std::size_t j = i + key.size();
+      for (std::string_view suffix : {"_benchmark", "_latency"})
+        if (note.substr(j).starts_with(suffix)) j += suffix.size();
+      const std::string_view name = note.substr(i, j - i);
+      if (j >= note.size() || !std::isspace(static_cast<unsigned char>(note[j]))) continue;
+      while (j < note.size() && std::isspace(static_cast<unsigned char>(note[j]))) ++j;
+      std::size_t k = j;
+      while (k < note.size() && std::isdigit(static_cast<unsigned char>(note[k]))) ++k;
+      if (k == j) continue;
+      if (k + 1 < note.size() && note[k] == '.' && std::isdigit(static_cast<unsigned char>(note[k + 1])))
+        for (++k; k < note.size() && std::isdigit(static_cast<unsigned char>(note[k]));) ++k;
+      const std::string_view number = note.substr(j, k - j);
+      double x = 0;
+      std::from_chars(number.data(), number.data() + number.size(), x);
+      const double tolerance =
+          0.5 * std::pow(10.0, -static_cast<double>(std::min(decimals(number), decimals(value_text)))) + 1e-12;
+      if (std::abs(x - v) <= tolerance)
+        return std::string(what) + " (RobotPerf's value; its note's " + std::string(name) + ")";
+    }
+  }
+  return "statistic not stated (RobotPerf's value; its note gives none equal to it)";
+}
+
 // What RobotPerf's value is, by metric, and its SI unit and scale.
 struct Meaning {
   std::string metric, unit;
   double scale = 1;
 };
 
-Meaning meaning(const std::string& metric, const std::string& unit, const std::string& file, std::size_t line) {
+Meaning meaning(const std::string& metric, const std::string& unit, const std::string& statistic,
+                const std::string& file, std::size_t line) {
   if (metric == "latency") {
-    if (unit == "ms") return {"latency: maximum of the run (RobotPerf's value)", "s", 1e-3};
-    if (unit == "us") return {"latency: maximum of the run (RobotPerf's value)", "s", 1e-6};
-    if (unit == "s") return {"latency: maximum of the run (RobotPerf's value)", "s", 1};
+    if (unit == "ms") return {"latency: " + statistic, "s", 1e-3};
+    if (unit == "us") return {"latency: " + statistic, "s", 1e-6};
+    if (unit == "s") return {"latency: " + statistic, "s", 1};
   } else if (metric == "throughput") {
-    if (unit == "fps" || unit == "Hz") return {"throughput: mean of the run (RobotPerf's value)", "1/s", 1};
+    if (unit == "fps" || unit == "Hz") return {"throughput: " + statistic, "1/s", 1};
   } else if (metric == "power") {
     if (unit == "W") return {"power (as RobotPerf reports it; the statistic is not stated)", "W", 1};
   } else {
@@ -123,7 +168,8 @@ ImportBatch parse_robotperf(const std::string& text, const std::string& file, co
     const auto [end, ec] = std::from_chars(value_text.data(), value_text.data() + value_text.size(), v);
     if (value_text.empty() || ec != std::errc() || end != value_text.data() + value_text.size() || !std::isfinite(v))
       fail(ImportErrorCategory::InvalidValue, file, line, "value", "'" + value_text + "' is not a number");
-    const Meaning m = meaning(metric, unit, file, r->find("metric") ? r->find("metric")->line : r->line);
+    const Meaning m = meaning(metric, unit, statistic_of(value_text, text_of(*r, "note")), file,
+                              r->find("metric") ? r->find("metric")->line : r->line);
     if (v <= 0 || (metric == "power" && v * m.scale < kLeastPowerW))
       batch.warnings.push_back(file + ":" + std::to_string(line) + ": value: " + value_text + " " + unit + " of " +
                                metric + " on " + hardware + " is impossible" +
@@ -160,8 +206,7 @@ ImportBatch parse_robotperf(const std::string& text, const std::string& file, co
                                {"category", text_of(*r, "category")},
                                {"datasource", text_of(*r, "datasource")},
                                {"release", "not stated in the file"},
-                               {"latency value", "maximum of the run"},
-                               {"throughput value", "mean of the run"}};
+                               {"latency and throughput values", "the statistic of the run each note gives"}};
       if (!named_board(hardware)) {
         s.provenance.settings.emplace_back("hardware", "free text: '" + hardware + "' (not tied to one computer)");
         batch.warnings.push_back(file + ":" + std::to_string(r->line) + ": hardware '" + hardware +

@@ -77,8 +77,12 @@ class TestMeterLogs : public QObject {
     // 9 x 19.46 W + 3 x 19.89 W = 175.14 + 59.67 = 234.81 W over 12 rows: 19.5675 W.
     QVERIFY(near(bs::trace_stats(t).power_w->mean, 19.5675, 1e-9));
     QVERIFY(near(t.time_s.back(), 0.129, 1e-6));  // 03:33:31.779 .. 03:33:31.908
-    QCOMPARE(b.warnings.size(), std::size_t{1});  // pstate, memory.*, temperature, utilization.*, power.management
-    QVERIFY(b.warnings[0].find("temperature.gpu") != std::string::npos);
+    QCOMPARE(b.warnings.size(), std::size_t{1});  // pstate, memory.*, utilization.*, power.management
+    QVERIFY(b.warnings[0].find("pstate") != std::string::npos);
+    // temperature.gpu is read since #53: the GPU's temperature beside its power (every row says 50).
+    QVERIFY(b.warnings[0].find("temperature.gpu") == std::string::npos);
+    QCOMPARE(b.sustain_runs.size(), std::size_t{1});
+    QCOMPARE(b.sustain_runs[0].temperatures.at(0).celsius, std::vector<double>(12, 50.0));
   }
   void nvidia_smi_interleaved_gpus_and_missing_samples() {
     const auto b = bs::kNvidiaSmiFileFormat.parse_text(

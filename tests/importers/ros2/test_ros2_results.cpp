@@ -160,6 +160,53 @@ class TestRos2Results : public QObject {
     QCOMPARE(setting(orin, "release"), std::string("not stated in the file"));
   }
 
+  // Issue #51: a2's throughput is the note's max_benchmark, not a mean: each value says the statistic its note gives
+  // (or that none is given), and a rate that differs between machines is a throughput, not a configured rate.
+  void robotperf_a2_statistic_from_each_note() {
+    const std::string f = kRos2 + "robotperf_a2_rectify_benchmark.yaml";
+    if (!std::filesystem::exists(f)) QSKIP(("needs " + f + " (the shared public data)").c_str());
+    const bs::ImportBatch b = bs::import_file(f, bs::CancelToken{});
+    QCOMPARE(b.format, std::string("robotperf-yaml"));
+    std::size_t n = 0;
+    for (const auto& s : b.result_sets) n += s.measurements.size();
+    QCOMPARE(n, std::size_t{121});
+    const auto orin = std::find_if(b.result_sets.begin(), b.result_sets.end(),
+                                   [](const bs::ResultSet& s) { return s.platform == "NVIDIA AGX Orin Dev. Kit"; });
+    QVERIFY(orin != b.result_sets.end());
+    // Line 72: 36.46251208914602 fps, black-box; the note's mean_benchmark is 30.20, its max_benchmark the value.
+    const bs::Measurement& tp = orin->measurements.at(0);
+    QCOMPARE(tp.values.at(0), 36.46251208914602);
+    QCOMPARE(tp.metric, std::string("throughput: maximum of the run (RobotPerf's value; its note's max_benchmark)"));
+    QVERIFY(tp.name.find("[black-box]") != std::string::npos);
+    // A black-box latency whose note writes max_latency: the maximum, named so.
+    bool max_latency = false, unstated = false;
+    for (const auto& s : b.result_sets)
+      for (const auto& m : s.measurements) {
+        QVERIFY2(!m.metric.starts_with("update rate as configured"), m.name.c_str());
+        max_latency = max_latency || m.metric.ends_with("its note's max_latency)");
+        unstated = unstated || m.metric.starts_with("throughput: statistic not stated");
+      }
+    QVERIFY(max_latency);
+    QVERIFY(unstated);  // "lost messages 0.00 %" alone gives no statistic
+    QVERIFY(!any_warning(b, "configured to run at"));
+  }
+
+  void robotperf_statistic_is_the_notes_number_equal_to_the_value() {
+    const std::string yaml =
+        "id: a9\nname: x\nresults:\n- result:\n    hardware: NVIDIA AGX Orin Dev. Kit\n    metric: throughput\n"
+        "    metric_unit: fps\n    note: mean 30.0, max 41.5, min 20\n    value: 30.00\n"
+        "- result:\n    hardware: NVIDIA AGX Orin Dev. Kit\n    metric: throughput\n    metric_unit: fps\n"
+        "    note: maximum 41.5 (not a statistic word RobotPerf writes)\n    value: 41.5\n"
+        "- result:\n    hardware: NVIDIA Jetson Nano\n    metric: latency\n    metric_unit: ms\n"
+        "    note: mean_latency 3.1, max_latency 7.25\n    value: 7.25\n";
+    const bs::ImportBatch b = bs::kRobotperfYamlFileFormat.parse_text(yaml, "s.yaml");
+    QCOMPARE(b.result_sets.at(0).measurements.at(0).metric,
+             std::string("throughput: mean of the run (RobotPerf's value; its note's mean)"));
+    QVERIFY(b.result_sets.at(0).measurements.at(1).metric.starts_with("throughput: statistic not stated"));
+    QCOMPARE(b.result_sets.at(1).measurements.at(0).metric,
+             std::string("latency: maximum of the run (RobotPerf's value; its note's max_latency)"));
+  }
+
   void impossible_values_are_flagged_with_their_line() {
     const std::string yaml =
         "id: c1\nname: x\nresults:\n- result:\n    hardware: NVIDIA AGX Orin Dev. Kit\n    metric: power\n"

@@ -444,13 +444,42 @@ class TestLibrary : public QObject {
     QVERIFY(rp);
     QVERIFY(rp->statistic.starts_with("the maximum of the run"));
     QCOMPARE(*rp->value, 1.472075e-3);
-    QVERIFY(lib.result("robotperf-jetson-agx-orin-c1-throughput")->statistic.starts_with("the mean of the run"));
+    // c1's "throughput" is 10/s on every machine of the file: the controller's configured update rate, labelled and
+    // flagged as such, never a throughput (its note's mean_benchmark 10.0 equals the value).
+    const bs::LibraryResult* c1 = lib.result("robotperf-jetson-agx-orin-c1-throughput");
+    QVERIFY(c1->statistic.starts_with("the mean of the run"));
+    QVERIFY(c1->measure.starts_with("update rate as configured (not a throughput)"));
+    QVERIFY(std::any_of(c1->flags.begin(), c1->flags.end(),
+                        [](const bs::PlausibilityFlag& f) { return f.code == "configured_rate"; }));
+    // Issue #51: RobotPerf a2 (rectify) and a5 (resize) on the boards they name, with the box type kept. Their
+    // throughput is the note's max_benchmark (a2 AGX Orin black-box: mean 30.20, max 36.46 = the value), not a mean.
+    const bs::LibraryResult* a2 = lib.result("robotperf-jetson-agx-orin-a2-throughput");
+    QVERIFY(a2);
+    QCOMPARE(*a2->value, 36.46251208914602);
+    QCOMPARE(a2->measure, std::string("throughput, black-box"));
+    QVERIFY(a2->statistic.starts_with("the maximum of the run"));
+    QVERIFY(a2->flags.empty());
+    QCOMPARE(lib.result("robotperf-jetson-agx-orin-a2-latency")->measure, std::string("latency, grey-box"));
+    // The Jetson Nano's 0.0 W is flagged impossible; a5 on a Kria KV260 is there.
+    const bs::LibraryResult* nano = lib.result("robotperf-jetson-nano-a5-power");
+    QVERIFY(nano && std::any_of(nano->flags.begin(), nano->flags.end(),
+                                [](const bs::PlausibilityFlag& f) { return f.code == "impossible_value"; }));
+    QVERIFY(lib.result("robotperf-amd-kria-kv260-a5-latency"));
+    std::size_t robotperf = 0;
+    for (const auto& r : lib.results) {
+      if (r.kind != "robotperf") continue;
+      ++robotperf;
+      QVERIFY2(r.measure.ends_with("-box"), r.id.c_str());
+      // No other RobotPerf value is a configured rate: only c1's throughput says so.
+      QCOMPARE(r.measure.starts_with("update rate as configured"), r.id == "robotperf-jetson-agx-orin-c1-throughput");
+    }
+    QCOMPARE(robotperf, std::size_t{3 + 17 + 34});
     std::vector<const bs::LibraryResult*> all;
     for (const auto& r : lib.results) all.push_back(&r);
     const auto classes = bs::graph_benchmark_classes(all);
     // Issue #51: 17 ros2_benchmark / isaac_ros_benchmark files of 10 computers (2023-2026) in 35 classes of tool,
-    // node, input, release and measure; 3 RobotPerf rows each alone.
-    QCOMPARE(classes.size(), std::size_t{38});
+    // node, input, release and measure; 54 RobotPerf rows (c1, a2, a5) each alone.
+    QCOMPARE(classes.size(), std::size_t{35 + 54});
     // The same RectifyNode on one AGX Thor in two releases (2025-10 ros2_benchmark, 2026-02 isaac_ros_benchmark) is
     // two classes: 425.98 and 420.58 fps are never ranked against each other, and CPU use is kept from the 2024+
     // schema (ResourceMetrics.MEAN_OVERALL_CPU_UTILIZATION).
