@@ -159,7 +159,7 @@ json interval_json(const SustainRun& r, std::size_t i) {
   json clocks = json::object(), temps = json::object();
   for (const ClockSeries& c : r.clocks) clocks[c.name] = at(c.hz);
   for (const TemperatureSeries& t : r.temperatures) temps[t.name] = at(t.celsius);
-  return {{"index", i},          {"t_s", at(r.t_s)},        {"rate", at(r.rate)},
+  return {{"index", i},          {"t_s", at(r.t_s)},        {"rate", at(r.rate)},      {"rate_unit", r.rate_unit},
           {"clocks_hz", clocks}, {"temperatures_c", temps}, {"power_w", at(r.power_w)}};
 }
 
