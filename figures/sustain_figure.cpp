@@ -72,7 +72,8 @@ void add_bands(QCustomPlot& plot, QCPAxisRect* rect, const std::vector<std::pair
 void add_mark(QCustomPlot& plot, QCPAxisRect* rect, double t, const QColor& color, const QString& text) {
   auto* line = new QCPItemStraightLine(&plot);
   line->setClipAxisRect(rect);
-  for (QCPItemPosition* p : {line->point1, line->point2}) p->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+  for (QCPItemPosition* p : {line->point1, line->point2})
+    p->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
   line->point1->setCoords(t, 0);
   line->point2->setCoords(t, 1);
   line->setPen(QPen(color, 1.2, Qt::DashLine));
@@ -128,8 +129,8 @@ void draw_rate(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& run, cons
             run.rate);
   if (a.sustained.n > 0)
     add_level(plot, rect, run, a.sustained.mean,
-              QObject::tr("sustained (last third) %1 %2").arg(a.sustained.mean, 0, 'f', 2).arg(unit),
-              device_color(1), Qt::DashLine);
+              QObject::tr("sustained (last third) %1 %2").arg(a.sustained.mean, 0, 'f', 2).arg(unit), device_color(1),
+              Qt::DashLine);
   if (a.peak_rate)
     add_level(plot, rect, run, *a.peak_rate * a.options.stable_percent / 100,
               QObject::tr("%1 % of the best interval").arg(a.options.stable_percent, 0, 'g', 3), QColor(120, 120, 120),
@@ -175,17 +176,16 @@ void draw_temperatures(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& r
     return finite_max(x->celsius) > finite_max(y->celsius);
   });
   if (shown.size() > kMostTemperatures) {
-    add_figure_note(plot, QObject::tr("temperatures: the %1 hottest of %2 sensors drawn")
-                              .arg(kMostTemperatures)
-                              .arg(shown.size()));
+    add_figure_note(
+        plot, QObject::tr("temperatures: the %1 hottest of %2 sensors drawn").arg(kMostTemperatures).arg(shown.size()));
     shown.resize(kMostTemperatures);
   }
   std::vector<double> trips;
   int color = 5;
   static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DashDotLine, Qt::DotLine};
   for (std::size_t i = 0; i < shown.size(); ++i) {
-    set_steps(add_series(plot, rect, QString::fromStdString(shown[i]->name), device_color(color++), styles[i % 4]),
-              run, shown[i]->celsius);
+    set_steps(add_series(plot, rect, QString::fromStdString(shown[i]->name), device_color(color++), styles[i % 4]), run,
+              shown[i]->celsius);
     if (shown[i]->trip_c && std::find(trips.begin(), trips.end(), *shown[i]->trip_c) == trips.end())
       trips.push_back(*shown[i]->trip_c);
   }
@@ -256,10 +256,18 @@ int sustain_figure(QCustomPlot& plot, const SustainRun& run, const sustain::Sust
   }
   for (std::size_t i = 0; i < panels.size(); ++i) {
     switch (panels[i]) {
-      case Panel::Rate: draw_rate(plot, rects[i], run, a); break;
-      case Panel::Clocks: draw_clocks(plot, rects[i], run, a); break;
-      case Panel::Temperatures: draw_temperatures(plot, rects[i], run); break;
-      case Panel::Power: draw_power(plot, rects[i], run); break;
+      case Panel::Rate:
+        draw_rate(plot, rects[i], run, a);
+        break;
+      case Panel::Clocks:
+        draw_clocks(plot, rects[i], run, a);
+        break;
+      case Panel::Temperatures:
+        draw_temperatures(plot, rects[i], run);
+        break;
+      case Panel::Power:
+        draw_power(plot, rects[i], run);
+        break;
     }
     add_bands(plot, rects[i], a.throttle.spans);
     if (a.throttle.onset_s)
@@ -277,7 +285,8 @@ int sustain_figure(QCustomPlot& plot, const SustainRun& run, const sustain::Sust
     rect->setRangeDrag(Qt::Horizontal);
     rect->setRangeZoom(Qt::Horizontal);
   }
-  for (int i = 0; i < plot.graphCount(); ++i) plot.graph(i)->rescaleValueAxis(i > 0 && plot.graph(i)->valueAxis() == plot.graph(i - 1)->valueAxis());
+  for (int i = 0; i < plot.graphCount(); ++i)
+    plot.graph(i)->rescaleValueAxis(i > 0 && plot.graph(i)->valueAxis() == plot.graph(i - 1)->valueAxis());
   for (QCPAxisRect* rect : rects) {
     QCPAxis* y = rect->axis(QCPAxis::atLeft);
     const QCPRange r = y->range();

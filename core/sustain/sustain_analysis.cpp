@@ -157,9 +157,17 @@ SustainAnalysis analyse(const SustainRun& run, const AnalysisOptions& options) {
     }
     if (from) a.steady_s = interval_start(run, *from);
   }
+  // The first slow interval comes after the load first reached the stable band: the intervals of its warm-up (a
+  // pool of threads starting, a network being built, caches filling) are slow without anything slowing it down.
+  const double slow_below = options.stable_percent / 100 * a.rate.max;
+  bool reached = false;
   for (std::size_t i = 0; i < n; ++i) {
     const double r = run.rate[i];
-    if (finite(r) && r < options.stable_percent / 100 * a.rate.max) {
+    if (!reached) {
+      reached = finite(r) && r >= slow_below;
+      continue;
+    }
+    if (finite(r) && r < slow_below) {
       a.first_slow = SlowInterval{i, interval_start(run, i), run.t_s[i], r};
       break;
     }

@@ -11,7 +11,8 @@
 //  - sustained rate: the mean of the last third of the intervals, against the peak (the best interval);
 //  - time to steady state: the start of the first interval after which every interval's rate stays within ±3 %
 //    (settable) of the sustained rate;
-//  - the first slow interval: the first whose rate is below the stable threshold of the best.
+//  - the first slow interval: the first whose rate is below the stable threshold of the best, after the load first
+//    reached that threshold (the intervals of its warm-up are not a slowdown).
 #include <optional>
 #include <string>
 #include <vector>

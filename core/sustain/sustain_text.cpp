@@ -9,7 +9,11 @@
 namespace bs::sustain {
 namespace {
 
-std::string celsius(double c) { return fixed(c, 1) + " \xC2\xB0" "C"; }
+std::string celsius(double c) {
+  return fixed(c, 1) +
+         " \xC2\xB0"
+         "C";
+}
 
 std::string rate_text(double v, const std::string& unit) {
   return std::isfinite(v) ? fixed(v, v >= 100 ? 1 : 2) + " " + unit : "no work counted";
@@ -61,9 +65,9 @@ void add_rate_rows(std::vector<SummaryRow>& rows, const SustainRun& r, const Sus
   rows.push_back({"all intervals", mean_sd(a.rate, r.rate_unit), false});
   if (a.stability_percent)
     rows.push_back({"stability",
-                    fixed(*a.stability_percent, 1) + " % (worst / best interval): " +
-                        (a.stable ? "stable" : "NOT stable") + " (threshold " + fixed(a.options.stable_percent, 1) +
-                        " %)",
+                    fixed(*a.stability_percent, 1) +
+                        " % (worst / best interval): " + (a.stable ? "stable" : "NOT stable") + " (threshold " +
+                        fixed(a.options.stable_percent, 1) + " %)",
                     !a.stable});
   if (a.first_slow)
     rows.push_back({"first slow",
@@ -94,7 +98,8 @@ void add_throttle_rows(std::vector<SummaryRow>& rows, const SustainAnalysis& a) 
                     true});
     for (const std::string& w : t.what) rows.push_back({"throttled", w, true});
     if (t.clock_at_onset)
-      rows.push_back({"clock at onset", t.clock_at_onset->name + " " + format_si(t.clock_at_onset->value, "Hz"), false});
+      rows.push_back(
+          {"clock at onset", t.clock_at_onset->name + " " + format_si(t.clock_at_onset->value, "Hz"), false});
     if (t.temperature_at_onset)
       rows.push_back(
           {"temperature at onset", t.temperature_at_onset->name + " " + celsius(t.temperature_at_onset->value), false});

@@ -15,8 +15,8 @@ namespace bs::sustain {
 std::string interval_line(const SustainRun& run, std::size_t index);
 
 struct SummaryRow {
-  std::string label;  // "stability"
-  std::string value;  // "91.2 % (worst / best interval): NOT stable (threshold 97.0 %)"
+  std::string label;   // "stability"
+  std::string value;   // "91.2 % (worst / best interval): NOT stable (threshold 97.0 %)"
   bool alarm = false;  // a verdict against the lab: not stable, throttling detected
 };
 

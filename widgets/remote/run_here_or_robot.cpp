@@ -93,9 +93,10 @@ bool RunHereOrRobot::start_on_robot(const std::vector<std::string>& words) {
   connect(run, &RemoteRun::progress, this, &RunHereOrRobot::progress);
   connect(run, &RemoteRun::finished, this, [this, run, platform, robot] {
     const remote::RemoteJob& job = run->job();
-    emit status(job.status == "cancelled" ? tr("%1: cancelled (job %2); what it finished is imported")
-                                                .arg(robot, QString::fromStdString(job.id))
-                                          : tr("Measured on %1 (job %2)").arg(robot, QString::fromStdString(job.id)));
+    emit status(
+        job.status == "cancelled"
+            ? tr("%1: cancelled (job %2); what it finished is imported").arg(robot, QString::fromStdString(job.id))
+            : tr("Measured on %1 (job %2)").arg(robot, QString::fromStdString(job.id)));
     emit robot_finished(run, platform);
     robot_done();
   });

@@ -46,9 +46,9 @@ class RunHereOrRobot : public QObject {
  signals:
   void busy_changed(bool busy);
   void progress(double fraction, const QString& step);  // here: the token's reports; a robot: its events
-  void status(const QString& text);                      // a line for the panel's status label
-  void robot_text(const QString& line);                  // the robot's own messages (live output)
-  void here_finished(bool cancelled);                    // the work returned or was cancelled
+  void status(const QString& text);                     // a line for the panel's status label
+  void robot_text(const QString& line);                 // the robot's own messages (live output)
+  void here_finished(bool cancelled);                   // the work returned or was cancelled
   // A robot's job came home (cancelled jobs too: the robot keeps nothing half-done); `platform` as confirmed. The
   // run is deleted later, after this signal.
   void robot_finished(bs::ui::RemoteRun* run, const QString& platform);

@@ -15,8 +15,8 @@
 #include "commands/sustain_grammar.h"
 #include "headroom/loads/load_spec.h"
 #include "power/power_sensor_box.h"
-#include "remote/run_here_or_robot.h"
 #include "remote/robot_target.h"
+#include "remote/run_here_or_robot.h"
 #include "sensors/recorder.h"
 #include "sustain/sustain_text.h"
 
@@ -164,14 +164,14 @@ void SustainRunPanel::start() {
           },
           Qt::QueuedConnection);
     };
-    controller_->start_here([config, spec = settings.load, recorder, output = output_,
-                             on_interval](const CancelToken& token) {
-      // The load is built here, off the GUI thread: a detector network takes a moment to build.
-      std::vector<std::unique_ptr<headroom::Load>> loads = headroom::make_loads(spec);
-      if (loads.size() != 1) throw std::invalid_argument("the Sustained tab runs one load at a time: " + spec);
-      const sustain::SysfsSampler sampler("/");
-      *output = sustain::run_sustain(config, *loads.front(), sampler, recorder.get(), &token, on_interval);
-    });
+    controller_->start_here(
+        [config, spec = settings.load, recorder, output = output_, on_interval](const CancelToken& token) {
+          // The load is built here, off the GUI thread: a detector network takes a moment to build.
+          std::vector<std::unique_ptr<headroom::Load>> loads = headroom::make_loads(spec);
+          if (loads.size() != 1) throw std::invalid_argument("the Sustained tab runs one load at a time: " + spec);
+          const sustain::SysfsSampler sampler("/");
+          *output = sustain::run_sustain(config, *loads.front(), sampler, recorder.get(), &token, on_interval);
+        });
     status_->setText(tr("Starting %1…").arg(load_->text()));
   } catch (const std::exception& e) {
     status_->setText(QString::fromUtf8(e.what()));

@@ -47,9 +47,9 @@ class SustainRunPanel : public QWidget {
   void cancel();
 
  signals:
-  void interval(const bs::SustainRun& so_far);  // a run here: after each interval, for the live plot
+  void interval(const bs::SustainRun& so_far);          // a run here: after each interval, for the live plot
   void measured(const bs::sustain::RunOutput& output);  // after stopped()
-  void stopped();  // a run here or on a robot ended, however it ended
+  void stopped();                                       // a run here or on a robot ended, however it ended
   void robot_finished(bs::ui::RemoteRun* run, const QString& platform);
   void failed(const QString& message);
 

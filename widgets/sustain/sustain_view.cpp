@@ -18,8 +18,9 @@ namespace {
 
 QString describe(const StoredSustainRun& s) {
   const SustainRun& r = s.run;
-  const QString what = r.load.empty() ? QObject::tr("clocks and temperatures of %1").arg(QString::fromStdString(r.label))
-                                      : QString::fromStdString(r.load);
+  const QString what = r.load.empty()
+                           ? QObject::tr("clocks and temperatures of %1").arg(QString::fromStdString(r.label))
+                           : QString::fromStdString(r.load);
   return QStringLiteral("%1 — %2, %3 (%4 intervals, import %5)")
       .arg(QString::fromStdString(r.platform), what,
            QString::fromStdString(r.provenance.date.empty() ? "undated" : r.provenance.date))
@@ -35,7 +36,8 @@ QString origin_of(const StoredSustainRun& s) {
       .arg(s.id)
       .arg(s.import_id)
       .arg(QString::fromStdString(from))
-      .arg(r.provenance.host.empty() ? QString() : QObject::tr(", measured on %1").arg(QString::fromStdString(r.provenance.host)));
+      .arg(r.provenance.host.empty() ? QString()
+                                     : QObject::tr(", measured on %1").arg(QString::fromStdString(r.provenance.host)));
 }
 
 }  // namespace
@@ -133,7 +135,8 @@ sustain::SustainAnalysis SustainView::current_analysis() const {
 
 void SustainView::set_records(std::vector<StoredSustainRun> records) {
   const int i = chooser_->currentIndex();
-  const std::int64_t shown = i >= 0 && i < static_cast<int>(records_.size()) ? records_[static_cast<std::size_t>(i)].id : -1;
+  const std::int64_t shown =
+      i >= 0 && i < static_cast<int>(records_.size()) ? records_[static_cast<std::size_t>(i)].id : -1;
   records_ = std::move(records);
   {
     const QSignalBlocker block(chooser_);
@@ -189,9 +192,9 @@ void SustainView::draw(const SustainRun& run, const QString& origin) {
   }
   summary_->setText(html + QStringLiteral("</table>"));
   source_->setText(tr("From %1").arg(origin));
-  const QString title = QStringLiteral("%1 — %2")
-                            .arg(QString::fromStdString(run.platform),
-                                 QString::fromStdString(run.load.empty() ? run.label : run.load + ", " + run.label));
+  const QString title =
+      QStringLiteral("%1 — %2").arg(QString::fromStdString(run.platform),
+                                    QString::fromStdString(run.load.empty() ? run.label : run.load + ", " + run.label));
   sustain_figure(*plot_, run, a, title);
 }
 

@@ -57,8 +57,8 @@ class SustainView : public QWidget {
   QLabel* empty_;
   QCustomPlot* plot_;
   std::vector<StoredSustainRun> records_;
-  std::optional<SustainRun> live_;   // the run going on here, drawn interval by interval
-  std::int64_t newest_seen_ = -1;    // the highest id shown so far
+  std::optional<SustainRun> live_;  // the run going on here, drawn interval by interval
+  std::int64_t newest_seen_ = -1;   // the highest id shown so far
 };
 
 }  // namespace bs::ui

@@ -14,9 +14,11 @@
 #include "headroom/loads/load_spec.h"
 #include "power/power_args.h"
 #include "store/workspace.h"
+#include "sustain/sustain_import.h"
 #include "sustain/sustain_json.h"
-#include "sustain/sustain_print.h"
 #include "sustain/sustain_runner.h"
+#include "sustain/sustain_text.h"
+#include "util/text.h"
 
 namespace bs::cli {
 namespace {
@@ -72,7 +74,7 @@ int run_sustain_cmd(const std::vector<std::string>& raw, std::ostream& out, std:
   const auto on_interval = [&](const SustainRun& so_far, std::size_t i, const std::vector<std::string>& warnings) {
     for (const std::string& w : warnings)
       if (warned.insert(w).second) err << "benchscope-cli: warning: " << w << "\n";
-    err << "benchscope-cli: sustain " << interval_line(so_far, i) << std::endl;
+    err << "benchscope-cli: sustain " << sustain::interval_line(so_far, i) << std::endl;
     if (s.json) json_line(out, "interval", so_far.t_s[i], sustain::interval_json(so_far, i));
   };
   sustain::RunOutput result;
@@ -99,17 +101,19 @@ int run_sustain_cmd(const std::vector<std::string>& raw, std::ostream& out, std:
     doc["cancelled"] = result.cancelled;
     json_line(out, "result", run.t_s.back(), std::move(doc));
   } else {
-    print_sustain(out, run, analysis);
+    out << "Sustained run: " << run.label << " on " << run.platform << " (" << run.t_s.size() << " intervals of "
+        << fixed(run.interval_s, 2) << " s)\n";
+    for (const sustain::SummaryRow& row : sustain::summary_rows(run, analysis)) {
+      std::string label = row.label + ":";
+      label.resize(std::max<std::size_t>(label.size() + 1, 22), ' ');
+      out << "  " << label << row.value << "\n";
+    }
     for (const std::string& n : result.load_notes) out << "  load: " << n << "\n";
   }
   if (const auto& ws_path = s.workspace) {
     Workspace ws(*ws_path);
-    ImportBatch batch;
-    batch.source_path = "benchscope-cli sustain (" + run.platform + ", " + run.provenance.date + ")";
-    batch.format = "benchscope-sustain-v1";
-    batch.sustain_runs = {run};
-    if (result.power) batch.power_traces.push_back(*result.power);
-    const std::int64_t id = ws.add_import(batch, content_hash(sustain::record_to_json(run).dump()));
+    const sustain::SustainImport home = sustain::sustain_import(run, result.power, "benchscope-cli sustain");
+    const std::int64_t id = ws.add_import(home.batch, home.content_hash);
     (s.json ? err : out) << "stored the sustained run in " << *ws_path << " (import " << id << ")\n";
   }
   return result.cancelled ? 1 : 0;

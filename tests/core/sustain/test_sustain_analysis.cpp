@@ -80,6 +80,18 @@ class TestSustainAnalysis : public QObject {
     QCOMPARE(*a.steady_s, 10.0);
   }
 
+  void a_warm_up_is_not_the_first_slow_interval() {
+    // Slow while starting (50, 70), at speed from 2 s, slowed by something else at 6 s.
+    const SustainAnalysis a = analyse(with_rates({50, 70, 100, 99, 100, 98, 60, 60}));
+    QVERIFY(a.first_slow);
+    QCOMPARE(a.first_slow->index, std::size_t{6});
+    QCOMPARE(a.first_slow->start_s, 6.0);
+    QCOMPARE(*a.stability_percent, 50.0);  // stability still counts the warm-up: worst / best of every interval
+    // At speed from the first interval: the next slow one is the first slow interval.
+    const SustainAnalysis b = analyse(with_rates({100, 50, 50}));
+    QCOMPARE(b.first_slow->index, std::size_t{1});
+  }
+
   void steady_state_waits_for_the_rate_to_settle() {
     // Warming up: 50, 70, 90, then within ±3 % of 100.
     const SustainAnalysis a = analyse(with_rates({50, 70, 90, 99, 101, 100, 100, 99.5, 100.5}));

@@ -186,7 +186,8 @@ class TestScenarioSustained : public QObject {
     QVERIFY(bs::test::open_tab(w, "Sustained"));
     bs::ui::SustainView* view = w.sustain_view();
     QCOMPARE(view->chooser()->count(), 1);
-    QVERIFY2(view->chooser()->currentText().contains("clocks and temperatures of"), qPrintable(view->chooser()->currentText()));
+    QVERIFY2(view->chooser()->currentText().contains("clocks and temperatures of"),
+             qPrintable(view->chooser()->currentText()));
     const QString summary = view->summary()->text();
     QVERIFY2(summary.contains("unknown"), qPrintable(summary));
     QVERIFY2(view->plot()->axisRectCount() >= 2, "clocks and temperatures are not drawn");
