@@ -24,6 +24,13 @@ constexpr const char* kFigureNameProperty = "bs_figure_name";  // a plottable's 
 constexpr const char* kWholeNameProperty = "bs_whole_name";    // its name before elide_wide_entries shortened it
 
 // Whether the legend stands in a column beside the axes (put_legend_beside: the Platforms tab's candidates).
+// Every axis of every panel: a figure of panels one over the other (the Sustained tab's) has several axis rects.
+QList<QCPAxis*> all_axes(QCustomPlot& plot) {
+  QList<QCPAxis*> axes;
+  for (QCPAxisRect* rect : plot.axisRects()) axes += rect->axes();
+  return axes;
+}
+
 bool legend_beside_axes(QCustomPlot& plot) {
   return plot.legend->layout() == plot.plotLayout() && plot.plotLayout()->columnCount() > 1;
 }
@@ -32,7 +39,7 @@ bool legend_beside_axes(QCustomPlot& plot) {
 class ViewState {
  public:
   explicit ViewState(QCustomPlot& plot) : plot_(plot) {
-    for (QCPAxis* a : plot.axisRect()->axes()) axes_.push_back({a, a->labelFont(), a->tickLabelFont(), a->range()});
+    for (QCPAxis* a : all_axes(plot)) axes_.push_back({a, a->labelFont(), a->tickLabelFont(), a->range()});
     legend_font_ = plot.legend->font();
     for (int i = 0; i < plot.plottableCount(); ++i) {
       QCPAbstractPlottable* p = plot.plottable(i);
@@ -165,7 +172,7 @@ void apply_figure_look(QCustomPlot& plot, const FigureOptions& o) {
   small.setPointSizeF(o.font_pt * 0.9);
   QFont label = f;
   label.setPointSizeF(o.font_pt * 0.85);
-  for (QCPAxis* a : plot.axisRect()->axes()) {
+  for (QCPAxis* a : all_axes(plot)) {
     a->setLabelFont(f);
     a->setTickLabelFont(small);
   }
@@ -412,7 +419,9 @@ FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
   fit_value_axes(plot);
   FigureOptions sized = o;
   if (o.height_mm <= 0) {
-    const double axes_pt = width_pt * (o.width_mm < 80 ? 0.8 : 0.62);
+    // Panels one over the other share the width: each gets at least 40 % of the height one plot would have.
+    const double panels = std::max(1.0, 0.4 * static_cast<double>(plot.axisRectCount()) + 0.2);
+    const double axes_pt = width_pt * (o.width_mm < 80 ? 0.8 : 0.62) * panels;
     sized.height_mm = (axes_pt + below_pt) * 25.4 / 72.0;
   }
   return sized;

@@ -44,6 +44,9 @@
 #include "runs/pipeline_json.h"
 #include "runs/run_json.h"
 #include "store/run_label_store.h"
+#include "sustain/sustain_import.h"
+#include "sustain/sustain_run_panel.h"
+#include "sustain/sustain_view.h"
 #include "vision/frames_view.h"
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
@@ -156,6 +159,23 @@ MainWindow::MainWindow(QWidget* parent)
   // Measured on a robot (issue #44): imported with the robot's provenance as the Kernel Runner's remote jobs are.
   connect(headroom_->run_panel(), &HeadroomRunPanel::remote_finished, this, &MainWindow::store_remote_run);
   connect(pipeline_->measure_panel(), &PipelineMeasurePanel::remote_finished, this, &MainWindow::store_remote_run);
+  // Whether the speed holds for a whole match: a load for minutes with its clocks and temperatures (#53).
+  sustain_ = new SustainView(this);
+  tab(sustain_, tr("Sustained"),
+      tr("Sustained performance: a load's rate, the clocks, temperatures and power on one time axis; stability and "
+         "throttling"));
+  connect(sustain_->run_panel(), &SustainRunPanel::measured, this, [this](const sustain::RunOutput& out) {
+    if (!workspace_) new_untitled_workspace();
+    try {
+      const sustain::SustainImport home = sustain::sustain_import(out.run, out.power, "Sustained tab");
+      workspace_->add_import(home.batch, home.content_hash);
+      work_since_open_ = true;
+    } catch (const WorkspaceError& e) {
+      QMessageBox::critical(this, tr("Cannot store the sustained run"), QString::fromUtf8(e.what()));
+    }
+    reload();
+  });
+  connect(sustain_->run_panel(), &SustainRunPanel::robot_finished, this, &MainWindow::store_remote_run);
   tab(frames_, tr("Frames"), tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
   lens_ = new LensTab(this);
   tab(lens_, tr("Lens"), tr("Reprojection tuner (lens model, view, masks, auto-calibration) beside the lens in 3D"));
@@ -375,6 +395,7 @@ void MainWindow::reload() {
     platforms_->set_headroom(std::move(measurements));  // the Platforms tab's control-loop requirement
     headroom_->set_measurements(std::move(stored));
   }
+  sustain_->set_records(workspace_ ? workspace_->sustain_runs() : std::vector<StoredSustainRun>{});
   feed_lens_tab();
   refresh_views();
   show_damage();

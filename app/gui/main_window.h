@@ -42,6 +42,7 @@ class EfficiencyView;
 class BatteryView;
 class LensTab;
 class HeadroomView;
+class SustainView;
 class LogChoiceBar;
 struct ImportReport;
 
@@ -74,6 +75,7 @@ class MainWindow : public QMainWindow {
   EfficiencyView* efficiency_view() const { return efficiency_; }
   BatteryView* battery_view() const { return battery_; }
   HeadroomView* headroom_view() const { return headroom_; }
+  SustainView* sustain_view() const { return sustain_; }
   LensTab* lens_tab() const { return lens_; }  // the lead feeds it a capture: lens_tab()->set_fisheye(bgr, name)
   const Workspace* workspace() const { return workspace_.get(); }
   QUndoStack* edits() const { return edits_; }  // Edit > Undo's steps (workspace edits)
@@ -194,6 +196,7 @@ class MainWindow : public QMainWindow {
   QToolBar* damage_bar_ = nullptr;  // holds the banner above the views; hidden while nothing is damaged
   LensTab* lens_ = nullptr;
   HeadroomView* headroom_ = nullptr;
+  SustainView* sustain_ = nullptr;
   std::vector<LogChoiceBar*> log_choices_;  // above Efficiency, Battery and Platforms: each platform's power log
   QLabel* status_label_ = nullptr;          // workspace path and run counts
   ImportWarningsDialog* import_warnings_ = nullptr;  // not modal; created on the first import with warnings

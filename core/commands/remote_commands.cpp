@@ -4,6 +4,7 @@
 #include "commands/headroom_grammar.h"
 #include "commands/pipeline_grammar.h"
 #include "commands/run_flops_grammar.h"
+#include "commands/sustain_grammar.h"
 
 namespace bs::commands {
 namespace {
@@ -28,6 +29,7 @@ const std::vector<RemoteCommand>& remote_commands() {
       {"sensors", 1, false, false},
       {"headroom", 1, false, true, canonical<HeadroomSettings, headroom_from_words>},
       {"pipeline", 1, false, true, canonical<PipelineSettings, pipeline_from_words>},
+      {"sustain", 1, false, true, canonical<SustainSettings, sustain_from_words>},
   };
   return list;
 }

@@ -30,6 +30,10 @@ class Load {
   virtual void start() = 0;
   // Stops it (promptly: within about a second), waits for it and reports. Called once after start().
   virtual LoadReport stop() = 0;
+  // The work completed since start(), in rate_unit() x seconds (GFLOP, frames, inferences), read from any thread
+  // while the load runs: a sustained run (#53) takes its differences per interval to see the rate change over
+  // minutes. Empty for a load that cannot count its work (an opaque command).
+  virtual std::optional<double> work_done() const { return std::nullopt; }
 };
 
 }  // namespace bs::headroom

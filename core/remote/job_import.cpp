@@ -100,6 +100,11 @@ std::vector<ImportBatch> job_batches(const std::string& result_file, const Remot
     rename_platform(s.measurement, platform);
     by_import[s.import_id].headroom.push_back(std::move(s.measurement));
   }
+  for (StoredSustainRun s : ws.sustain_runs()) {
+    stamp(s.run.provenance, o);
+    rename_platform(s.run, platform);
+    by_import[s.import_id].sustain_runs.push_back(std::move(s.run));
+  }
   for (const StoredFrame& f : ws.frames())
     by_import[f.import_id].warnings.push_back(result_file + ": frame '" + f.frame.label +
                                               "' left out: frames stay on the robot (" + f.path + ")");
@@ -120,6 +125,7 @@ std::string JobImport::summary() const {
   add(pipeline_runs, "pipeline run", "pipeline runs");
   add(dnn_runs, "inference run", "inference runs");
   add(headroom, "headroom measurement", "headroom measurements");
+  add(sustain_runs, "sustained run", "sustained runs");
   return s.empty() ? "nothing" : s;
 }
 
@@ -157,6 +163,7 @@ JobImport store_prepared(Workspace& ws, const PreparedJob& p) {
     out.pipeline_runs += b.pipeline_runs.size();
     out.dnn_runs += b.dnn_runs.size();
     out.headroom += b.headroom.size();
+    out.sustain_runs += b.sustain_runs.size();
     out.warnings.insert(out.warnings.end(), b.warnings.begin(), b.warnings.end());
   }
   out.import_ids = ws.add_imports(hashed);

@@ -2,10 +2,10 @@
 #pragma once
 // Bringing a robot's results home: the job's result workspace (received into a staging folder) becomes import
 // batches of the desk's workspace, one per import the robot made, every run, power log, result set, pipeline run,
-// inference run and control-loop headroom measurement stamped with where it came from (the robot as named at the
-// desk, its host name, architecture and devices, the command line run there, its BenchScope version, the job id)
-// and put under the platform name the user confirmed. They are stored in ONE transaction: a failure (a full disk,
-// a duplicate) stores nothing.
+// inference run, control-loop headroom measurement and sustained run stamped with where it came from (the robot as
+// named at the desk, its host name, architecture and devices, the command line run there, its BenchScope version, the
+// job id) and put under the platform name the user confirmed. They are stored in ONE transaction: a failure (a full
+// disk, a duplicate) stores nothing.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -50,7 +50,8 @@ std::string job_batch_hash(const RemoteOrigin& origin, std::size_t index, const 
 
 struct JobImport {
   std::vector<std::int64_t> import_ids;
-  std::size_t runs = 0, power_traces = 0, result_sets = 0, pipeline_runs = 0, dnn_runs = 0, headroom = 0;
+  std::size_t runs = 0, power_traces = 0, result_sets = 0, pipeline_runs = 0, dnn_runs = 0, headroom = 0,
+              sustain_runs = 0;
   std::vector<std::string> warnings;
   std::string summary() const;  // "3 runs, 1 power log"
 };

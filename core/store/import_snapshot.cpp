@@ -31,6 +31,8 @@ ImportSnapshot snapshot_import(const Workspace& ws, std::int64_t import_id) {
     if (s.import_id == import_id) b.dnn_runs.push_back(s.run);
   for (const StoredHeadroom& s : ws.headroom_measurements())
     if (s.import_id == import_id) b.headroom.push_back(s.measurement);
+  for (const StoredSustainRun& s : ws.sustain_runs())
+    if (s.import_id == import_id) b.sustain_runs.push_back(s.run);
   for (const StoredFrame& s : ws.frames()) {
     if (s.import_id != import_id) continue;
     Frame f = s.frame;

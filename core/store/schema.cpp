@@ -282,12 +282,28 @@ void migrate_add_headroom(const sqlite::Db& db) {
   )sql");
 }
 
+// Version 10 -> 11 (issue #53): sustained runs. One row per run; its intervals, clocks and temperatures are one JSON
+// document (read whole, never queried inside), the platform a column so that renaming moves it.
+void migrate_add_sustain_runs(const sqlite::Db& db) {
+  db.exec(R"sql(
+    CREATE TABLE IF NOT EXISTS sustain_runs(
+      id INTEGER PRIMARY KEY,
+      import_id INTEGER NOT NULL REFERENCES imports(id) ON DELETE CASCADE,
+      platform TEXT NOT NULL,
+      label TEXT NOT NULL,
+      load TEXT NOT NULL,
+      data TEXT NOT NULL);
+    CREATE INDEX IF NOT EXISTS sustain_runs_by_import ON sustain_runs(import_id);
+  )sql");
+}
+
 using Migration = void (*)(const sqlite::Db&);
-constexpr Migration kMigrations[] = {migrate_0_to_1,       migrate_1_to_2,
-                                     migrate_2_to_3,       migrate_3_to_4,
-                                     migrate_4_to_5,       migrate_5_to_6,
-                                     migrate_add_dnn_runs, migrate_lenses_and_log_settings,
-                                     migrate_add_headroom, migrate_decision_and_chosen_logs};
+constexpr Migration kMigrations[] = {migrate_0_to_1,          migrate_1_to_2,
+                                     migrate_2_to_3,          migrate_3_to_4,
+                                     migrate_4_to_5,          migrate_5_to_6,
+                                     migrate_add_dnn_runs,    migrate_lenses_and_log_settings,
+                                     migrate_add_headroom,    migrate_decision_and_chosen_logs,
+                                     migrate_add_sustain_runs};
 static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSchemaVersion),
               "one migration per schema version");
 

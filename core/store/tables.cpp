@@ -6,6 +6,7 @@
 
 #include "headroom/headroom_json.h"
 #include "model/provenance_json.h"
+#include "sustain/sustain_json.h"
 
 namespace bs::store {
 namespace {
@@ -520,6 +521,34 @@ const Table<headroom::HeadroomMeasurement>& headroom_table() {
                m = std::move(read);
                return std::nullopt;
              } catch (const headroom::HeadroomJsonError& e) {
+               return flaw(C::InvalidValue, e.what());
+             }
+           })},
+      {}};
+  return t;
+}
+
+const Table<SustainRun>& sustain_table() {
+  using T = SustainRun;
+  // Platform, label and load are columns (renaming a platform updates the column alone); the series are one JSON
+  // document, read through the same checks as any untrusted input (sustain/sustain_json.h).
+  static const Table<T> t{
+      "sustain_runs",
+      "sustained run",
+      true,
+      {"import_id"},
+      {text<T>("platform", BS_FIELD(platform)), text<T>("label", BS_FIELD(label)), text<T>("load", BS_FIELD(load)),
+       json<T>(
+           "data", BS_SELF, [](const T& r) { return sustain::record_to_json(r); },
+           [](const nlohmann::json& j, T& r, const ImportLimits&) -> Check {
+             try {
+               T read = sustain::record_from_json(j);
+               if (read.label != r.label || read.load != r.load)
+                 return flaw(C::InvalidValue, "label/load columns disagree with the document");
+               read.platform = r.platform;
+               r = std::move(read);
+               return std::nullopt;
+             } catch (const sustain::SustainJsonError& e) {
                return flaw(C::InvalidValue, e.what());
              }
            })},

@@ -39,6 +39,7 @@ const Table<PipelineRun>& pipeline_runs_table();      // key: import_id
 const Table<StageStats>& pipeline_stages_table();     // key: run_id
 const Table<DnnRun>& dnn_runs_table();                // key: import_id
 const Table<headroom::HeadroomMeasurement>& headroom_table();  // key: import_id; phases and threads as JSON
+const Table<SustainRun>& sustain_table();  // key: import_id; intervals, clocks and temperatures as JSON
 
 // A trace without its samples (what the power_traces row and its children describe).
 PowerTrace trace_metadata(const PowerTrace& t);

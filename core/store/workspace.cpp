@@ -265,7 +265,8 @@ void Workspace::rename_platform(const std::string& from, const std::string& to) 
   for (const char* sql :
        {"UPDATE devices SET platform = ? WHERE platform = ?", "UPDATE power_traces SET platform = ? WHERE platform = ?",
         "UPDATE pipeline_runs SET platform = ? WHERE platform = ?",
-        "UPDATE headroom_measurements SET platform = ? WHERE platform = ?"}) {
+        "UPDATE headroom_measurements SET platform = ? WHERE platform = ?",
+        "UPDATE sustain_runs SET platform = ? WHERE platform = ?"}) {
     Statement(impl_->conn(), sql).bind(1, std::string_view(to)).bind(2, std::string_view(from)).run();
     changed += sqlite3_changes(impl_->conn().get());
   }

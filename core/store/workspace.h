@@ -101,6 +101,12 @@ struct StoredHeadroom {
   headroom::HeadroomMeasurement measurement;
 };
 
+struct StoredSustainRun {
+  std::int64_t id = 0;
+  std::int64_t import_id = 0;
+  SustainRun run;
+};
+
 // An item a workspace holds that breaks the import rules when read back (a value out of range, negative, not
 // finite, of the wrong type, an unknown enumeration, JSON beyond the limits, sample chunks that do not add up).
 // Every read leaves the item out; the workspace names it (CLI: a warning, GUI: a banner) and refuses writes until
@@ -123,8 +129,9 @@ class Workspace {
   // 2: power traces, 3: frames, 4: pipeline runs, 5: trace phases, 6: trace samples in chunks + cached summary,
   // 7: dnn inference runs, 8: saved lenses, a log's borrowed voltage channel, phase origins (store/schema_v8.h),
   // 9: headroom measurements (control-loop latency histograms per phase and thread), 10: the Platforms tab's decision
-  // and each platform's chosen power log (store/schema_v10.h)
-  static constexpr int kSchemaVersion = 10;
+  // and each platform's chosen power log (store/schema_v10.h), 11: sustained runs (rate, clocks and temperatures
+  // per interval, #53)
+  static constexpr int kSchemaVersion = 11;
 
   // Opens `path`, creating an empty workspace if the file does not exist. Older schemas are migrated; a newer
   // schema, a file that is not a workspace or a corrupt one throws WorkspaceError with a clear message.
@@ -205,6 +212,7 @@ class Workspace {
   std::vector<StoredPipelineRun> pipeline_runs() const;       // ordered by platform, then id
   std::vector<StoredDnnRun> dnn_runs() const;                 // ordered by platform, model, input, backend, id
   std::vector<StoredHeadroom> headroom_measurements() const;  // ordered by platform, then id
+  std::vector<StoredSustainRun> sustain_runs() const;         // ordered by platform, then id
 
   // Stores runs produced in-process (benchscope-cli pipeline) as one import named `label`, identified by
   // `content_hash` (of their serialised form) like a file; returns the import id.

@@ -58,6 +58,7 @@ void Workspace::Impl::scan(const Workspace& ws) {
   (void)ws.pipeline_runs();
   (void)ws.dnn_runs();
   (void)ws.headroom_measurements();
+  (void)ws.sustain_runs();
 }
 
 std::vector<ImportRecord> Workspace::imports() const {
@@ -442,6 +443,18 @@ std::vector<StoredHeadroom> Workspace::headroom_measurements() const {
                                         "headroom_measurements", r.id, r.flaw->category, where(*r.flaw)});
                      out.push_back({r.id, r.keys[0], std::move(r.value)});
                    });
+  return out;
+}
+
+std::vector<StoredSustainRun> Workspace::sustain_runs() const {
+  const Impl& w = *impl_;
+  std::vector<StoredSustainRun> out;
+  store::read_rows(w.conn(), store::sustain_table(), w.limits, "ORDER BY platform, id", [&](Row<SustainRun>&& r) {
+    if (r.flaw)
+      return w.record({"sustained run #" + std::to_string(r.id) + " (" + r.value.platform + ", " + r.value.label + ")",
+                       "sustain_runs", r.id, r.flaw->category, where(*r.flaw)});
+    out.push_back({r.id, r.keys[0], std::move(r.value)});
+  });
   return out;
 }
 

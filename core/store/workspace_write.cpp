@@ -163,6 +163,11 @@ std::int64_t insert_import(const Db& db, const ImportBatch& batch, const std::st
       throw WorkspaceError(WorkspaceError::Kind::Constraint, "headroom measurement (" + m.platform + "): " + e);
     headroom_st.insert({import_id}, m);
   }
+  store::Inserter sustain_st(db, store::sustain_table());
+  for (const SustainRun& r : batch.sustain_runs) {
+    check();
+    sustain_st.insert({import_id}, r);
+  }
   check();
   return import_id;
 }

@@ -27,6 +27,7 @@
 #include "kernels/cpu_args.h"
 #include "kernels/sweep.h"
 #include "power/power_args.h"
+#include "sustain/bench_sustain_sampler.h"
 #include "vision/bench_dnn.h"
 #include "vision/bench_pipeline.h"
 #include "vision/bench_tuner.h"
@@ -352,7 +353,7 @@ const CommandRegistrar registrar({
     "       benchscope-cli bench decimate [--samples N] [--columns C] [--runs K]\n"
     "       benchscope-cli bench range-stats [--samples N] [--updates U]   (the Power tab's selection statistics per\n"
     "         mouse move on an N-sample trace, default 10,000,000, vs a plain rescan of the range)\n" +
-        std::string(kBenchDnnUsage) + kBenchHeadroomUsage +
+        std::string(kBenchDnnUsage) + kBenchHeadroomUsage + kBenchSustainSamplerUsage +
         "  GFLOPS per backend and variant (D = 4, N = 40,000, W workers (default 16384 throughput, 2048 paper),\n"
         "  median and mean \xC2\xB1 SD of R\n"
         "  runs, default 7), % of this machine's theoretical peak (wall clock and per CPU-second), the OpenCL / CPU "
@@ -378,7 +379,7 @@ const CommandRegistrar registrar({
         "  S (default 0.5); per-stage mean \xC2\xB1 SD (n), both throughputs, their ratio and the theoretical bound, "
         "with 1\n"
         "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.\n" +
-        std::string(kBenchDnnHelp) + kBenchHeadroomHelp,
+        std::string(kBenchDnnHelp) + kBenchHeadroomHelp + kBenchSustainSamplerHelp,
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
       const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
       if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
@@ -390,9 +391,10 @@ const CommandRegistrar registrar({
       if (!args.empty() && args[0] == "range-stats") return bench_range_stats(rest, out);
       if (!args.empty() && args[0] == "dnn") return bench_dnn(rest, out, err);
       if (!args.empty() && args[0] == "headroom") return bench_headroom(rest, out, err);
+      if (!args.empty() && args[0] == "sustain-sampler") return bench_sustain_sampler(rest, out);
       throw UsageError(
           "expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv', "
-          "'bench decimate', 'bench range-stats', 'bench dnn' or 'bench headroom'");
+          "'bench decimate', 'bench range-stats', 'bench dnn', 'bench headroom' or 'bench sustain-sampler'");
     },
 });
 

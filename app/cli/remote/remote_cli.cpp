@@ -94,6 +94,16 @@ struct Printer {
       err << host << ": D = " << b.value("dims", 0) << ", W = " << b.value("workers", 0LL) << ": "
           << format_si(b.value("flops", 0.0), "FLOPS") << " (n = " << b.value("seconds", nlohmann::json::array()).size()
           << ")\n";
+    } else if (e.type == "interval" && !quiet) {  // sustain --json: each interval as the robot completes it
+      close_progress();
+      const auto rate = b.find("rate");
+      char line[240];
+      if (rate != b.end() && rate->is_number())
+        std::snprintf(line, sizeof line, "%s: sustain %.1f s: %.4g %s\n", host.c_str(), b.value("t_s", 0.0),
+                      rate->get<double>(), b.value("rate_unit", "").c_str());
+      else
+        std::snprintf(line, sizeof line, "%s: sustain %.1f s: no work counted\n", host.c_str(), b.value("t_s", 0.0));
+      err << line;
     } else if (e.type == "power") {
       ++power_readings;
     } else if (e.type == "message") {

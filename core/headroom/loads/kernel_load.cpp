@@ -38,6 +38,7 @@ std::string KernelLoad::detail() const {
 
 void KernelLoad::start() {
   stop_ = false;
+  gflop_done_ = 0;
   // Without clock calibration: a load needs the kernel, not the peak (calibrating would take 0.2 s per phase).
   const kernels::CpuInfo cpu = kernels::detect_cpu(false);
   const std::vector<kernels::Backend> backends = kernels::cpu_backends(cpu);
@@ -52,6 +53,7 @@ void KernelLoad::start() {
         const double s = backend.run_point(params, config_.workers, kernels::Variant::Throughput, outputs, never);
         seconds_ += s;
         flops_ += rotation_flops(config_.dims, config_.iterations, config_.workers, s) * s;
+        gflop_done_.store(flops_ / 1e9);
         ++points_;
       }
     } catch (const std::exception& e) {

@@ -28,6 +28,7 @@ class KernelLoad : public Load {
   std::string rate_unit() const override { return "GFLOPS"; }
   void start() override;
   LoadReport stop() override;
+  std::optional<double> work_done() const override { return gflop_done_.load(); }  // GFLOP of completed points
 
  private:
   KernelLoadConfig config_;
@@ -36,6 +37,7 @@ class KernelLoad : public Load {
   std::thread thread_;
   double flops_ = 0, seconds_ = 0;
   std::int64_t points_ = 0;
+  std::atomic<double> gflop_done_{0};  // flops_ / 1e9, published point by point for work_done()
   std::string backend_label_, error_;
 };
 

@@ -75,6 +75,8 @@ void PipelineLoad::start() {
   pc.capture_fps = config_.fps;
   pc.policy = QueuePolicy::DropOldest;  // a live camera: a late stage sees the newest frame
   pc.detection_workers = config_.detect_workers;
+  processed_ = 0;
+  pc.processed_counter = &processed_;
   thread_ = std::thread([this, pc] {
     try {
       const FrameSource source = [this](std::size_t i) -> std::optional<cv::Mat> {
@@ -139,6 +141,7 @@ std::string DetectorLoad::detail() const {
 
 void DetectorLoad::start() {
   stop_ = false;
+  inferences_ = 0;
   thread_ = std::thread([this] {
     try {
       const auto t0 = std::chrono::steady_clock::now();
@@ -146,7 +149,7 @@ void DetectorLoad::start() {
         (void)detector_(config_.view);
         ++inferences_;
         if (config_.rate) {  // next inference at its slot on an absolute schedule
-          const auto slot = t0 + std::chrono::duration<double>(static_cast<double>(inferences_) / *config_.rate);
+          const auto slot = t0 + std::chrono::duration<double>(static_cast<double>(inferences_.load()) / *config_.rate);
           while (!stop_ && std::chrono::steady_clock::now() < slot) {
             const timespec ts{0, 2'000'000};
             nanosleep(&ts, nullptr);
@@ -168,8 +171,8 @@ LoadReport DetectorLoad::stop() {
     r.notes.push_back("detector failed: " + error_);
     return r;
   }
-  if (seconds_ > 0) r.achieved_rate = static_cast<double>(inferences_) / seconds_;
-  r.notes.push_back(std::to_string(inferences_) + " inferences");
+  if (seconds_ > 0) r.achieved_rate = static_cast<double>(inferences_.load()) / seconds_;
+  r.notes.push_back(std::to_string(inferences_.load()) + " inferences");
   return r;
 }
 

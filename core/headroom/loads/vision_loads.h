@@ -39,6 +39,7 @@ class PipelineLoad : public Load {
   std::string rate_unit() const override { return "fps"; }
   void start() override;
   LoadReport stop() override;
+  std::optional<double> work_done() const override { return static_cast<double>(processed_.load()); }
 
  private:
   PipelineLoadConfig config_;
@@ -47,6 +48,7 @@ class PipelineLoad : public Load {
   CancelToken cancel_;
   std::thread thread_;
   vision::PipelineResult result_;
+  std::atomic<std::size_t> processed_{0};  // frames through the whole pipeline so far (PipelineConfig's counter)
   std::string error_;
 };
 
@@ -67,13 +69,14 @@ class DetectorLoad : public Load {
   std::string rate_unit() const override { return "inferences/s"; }
   void start() override;
   LoadReport stop() override;
+  std::optional<double> work_done() const override { return static_cast<double>(inferences_.load()); }
 
  private:
   DetectorLoadConfig config_;
   vision::Detector detector_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
-  std::size_t inferences_ = 0;
+  std::atomic<std::size_t> inferences_{0};  // atomic: work_done() reads it while the load runs
   double seconds_ = 0;
   std::string error_;
 };

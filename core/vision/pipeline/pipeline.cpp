@@ -124,6 +124,7 @@ PipelineResult run_pipeline(const FrameSource& source, const Preprocessor& prepr
           dropped_pre += to_detect.push({item->index, std::move(bgr), item->t_capture});
         } else {
           e2e_ms.push_back(ms_between(item->t_capture, Clock::now()));
+          if (config.processed_counter) ++*config.processed_counter;
           keep_latest(item->index, bgr, nullptr);
         }
       }
@@ -149,6 +150,7 @@ PipelineResult run_pipeline(const FrameSource& source, const Preprocessor& prepr
           std::lock_guard lock(result_mutex);
           detect_ms.push_back(ms_between(t0, t1));
           e2e_ms.push_back(ms_between(item->t_capture, t1));
+          if (config.processed_counter) ++*config.processed_counter;
           keep_latest(item->index, item->bgr, &found);
         }
       } catch (...) {

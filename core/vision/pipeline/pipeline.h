@@ -5,6 +5,7 @@
 // frames in turn (detection is ~99% of the work, so it is the stage worth spreading over the cores), bounded
 // queues between the stages (block, or drop the oldest frame), and per-stage and end-to-end timings with n, mean,
 // SD, percentiles and throughput.
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -38,6 +39,9 @@ struct PipelineConfig {
   // detector is called concurrently: HOG's detectMultiScale is const and safe; the cv::dnn detector serialises
   // forward() with its own mutex.
   std::size_t detection_workers = default_detection_workers();
+  // Counted up as each frame leaves the pipeline, for a caller following the rate while it runs (a sustained run,
+  // #53, takes its differences per interval); null: not counted. Must outlive the run.
+  std::atomic<std::size_t>* processed_counter = nullptr;
 };
 
 struct StageTiming {

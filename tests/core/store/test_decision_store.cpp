@@ -256,7 +256,7 @@ class TestDecisionStore : public QObject {
       QVERIFY(old.exec("DROP TABLE chosen_logs; DROP TABLE decision; PRAGMA user_version = 9;"));
     }
     bs::Workspace ws(path);
-    QCOMPARE(ws.schema_version(), 10);
+    QVERIFY(ws.schema_version() >= 10);  // through 10 to the current version
     QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);
     QCOMPARE(ws.headroom_measurements().size(), std::size_t{1});
     QVERIFY(!bs::stored_decision(ws));

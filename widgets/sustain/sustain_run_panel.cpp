@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "sustain/sustain_run_panel.h"
+
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+
+#include "commands/sustain_grammar.h"
+#include "headroom/loads/load_spec.h"
+#include "power/power_sensor_box.h"
+#include "remote/robot_target.h"
+#include "remote/run_here_or_robot.h"
+#include "sensors/recorder.h"
+#include "sustain/sustain_text.h"
+
+namespace bs::ui {
+namespace {
+
+QString key(const char* name) { return QStringLiteral("sustain/") + QString::fromLatin1(name); }
+
+}  // namespace
+
+SustainRunPanel::SustainRunPanel(QWidget* parent)
+    : QWidget(parent),
+      load_(new QLineEdit(this)),
+      seconds_(new QDoubleSpinBox(this)),
+      interval_(new QDoubleSpinBox(this)),
+      power_(new PowerSensorBox(this)),
+      target_(new RobotTarget(this)),
+      run_(new QPushButton(tr("Run"), this)),
+      cancel_(new QPushButton(tr("Cancel"), this)),
+      progress_(new QProgressBar(this)),
+      status_(new QLabel(this)),
+      controller_(new RunHereOrRobot(target_, this)) {
+  const QSettings s;
+  const commands::SustainSettings defaults;
+  load_->setText(s.value(key("load"), QString::fromStdString(defaults.load)).toString());
+  load_->setToolTip(
+      tr("The load kept running the whole time, the CLI's syntax: flops[:W] (the FLOPS kernel, GFLOPS), "
+         "pipeline[@FPS] (the vision pipeline at a camera rate, fps), dnn[:mobilenet-ssd|yolo-n|hog][@RATE] (the "
+         "detector, inferences/s)"));
+  seconds_->setRange(1, sustain::kMaxRunS);
+  seconds_->setDecimals(0);
+  seconds_->setSuffix(tr(" s"));
+  seconds_->setValue(s.value(key("seconds"), defaults.seconds).toDouble());
+  seconds_->setToolTip(tr("How long the load runs without a break (600 s: a RoboCup half)"));
+  interval_->setRange(sustain::kMinIntervalS, sustain::kMaxIntervalS);
+  interval_->setDecimals(2);
+  interval_->setPrefix(tr("every "));
+  interval_->setSuffix(tr(" s"));
+  interval_->setValue(s.value(key("interval"), defaults.interval_s).toDouble());
+  interval_->setToolTip(tr("How often the rate, every clock and every temperature are taken"));
+  target_->setToolTip(
+      tr("Where the load runs: this computer, or a robot over SSH (its own CLI runs it there; the record comes "
+         "home with the robot's name, architecture and the command run)"));
+  run_->setToolTip(tr("Run the load for the time given and record its rate, clocks, temperatures and power"));
+  cancel_->setEnabled(false);
+  cancel_->setToolTip(tr("Stop: the intervals completed so far are kept"));
+  progress_->setRange(0, 100);
+  progress_->setMaximumWidth(160);
+  progress_->hide();
+  status_->setTextFormat(Qt::PlainText);
+  status_->setWordWrap(true);
+
+  auto* layout = new QGridLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* where = new QHBoxLayout;
+  where->addWidget(new QLabel(tr("Run on:"), this));
+  where->addWidget(target_, 1);
+  layout->addLayout(where, 0, 0);
+  auto* settings = new QHBoxLayout;
+  auto* load_label = new QLabel(tr("Load:"), this);
+  load_label->setToolTip(load_->toolTip());
+  settings->addWidget(load_label);
+  settings->addWidget(load_, 2);
+  settings->addWidget(seconds_);
+  settings->addWidget(interval_);
+  settings->addWidget(new QLabel(tr("Record power:"), this));
+  settings->addWidget(power_, 1);
+  layout->addLayout(settings, 1, 0);
+  auto* actions = new QHBoxLayout;
+  actions->addWidget(run_);
+  actions->addWidget(cancel_);
+  actions->addWidget(progress_);
+  actions->addWidget(status_, 1);
+  layout->addLayout(actions, 2, 0);
+
+  connect(run_, &QPushButton::clicked, this, &SustainRunPanel::start);
+  connect(cancel_, &QPushButton::clicked, this, &SustainRunPanel::cancel);
+  connect(load_, &QLineEdit::editingFinished, this, &SustainRunPanel::save_settings);
+  for (QDoubleSpinBox* b : {seconds_, interval_})
+    connect(b, &QDoubleSpinBox::valueChanged, this, &SustainRunPanel::save_settings);
+  connect(controller_, &RunHereOrRobot::busy_changed, this, &SustainRunPanel::busy);
+  connect(controller_, &RunHereOrRobot::status, status_, &QLabel::setText);
+  connect(controller_, &RunHereOrRobot::failed, this, &SustainRunPanel::failed);
+  connect(controller_, &RunHereOrRobot::here_finished, this, &SustainRunPanel::here_finished);
+  connect(controller_, &RunHereOrRobot::robot_finished, this, &SustainRunPanel::robot_finished);
+}
+
+SustainRunPanel::~SustainRunPanel() {
+  delete controller_;  // cancels and waits for a run here before this panel, which it reports to, is gone
+}
+
+bool SustainRunPanel::running() const { return controller_->running(); }
+
+void SustainRunPanel::save_settings() const {
+  QSettings s;
+  s.setValue(key("load"), load_->text());
+  s.setValue(key("seconds"), seconds_->value());
+  s.setValue(key("interval"), interval_->value());
+}
+
+void SustainRunPanel::busy(bool on) {
+  run_->setEnabled(!on);
+  cancel_->setEnabled(on);
+  progress_->setVisible(on);
+  // A robot says how far it is only in its text: the bar then only says that it is busy.
+  progress_->setRange(0, on && controller_->on_robot() ? 0 : 100);
+  if (on) progress_->setValue(0);
+  if (!on) emit stopped();
+}
+
+void SustainRunPanel::start() {
+  if (running()) return;
+  commands::SustainSettings settings;
+  settings.load = load_->text().trimmed().toStdString();
+  settings.seconds = seconds_->value();
+  settings.interval_s = interval_->value();
+  try {
+    (void)headroom::canonical_load_names(settings.load);  // a wrong load is said before anything starts
+    if (controller_->on_robot()) {
+      settings.platform = target_->platform().toStdString();
+      if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
+      controller_->start_on_robot(commands::to_words(settings));
+      return;
+    }
+    std::shared_ptr<sensors::PowerRecorder> recorder = power_->start_recorder();  // null when off
+    sustain::RunConfig config;
+    config.seconds = settings.seconds;
+    config.interval_s = settings.interval_s;
+    config.command = QStringLiteral("benchscope %1 (GUI, Sustained tab): load '%2' for %3 s, every %4 s")
+                         .arg(QCoreApplication::applicationVersion(), load_->text())
+                         .arg(settings.seconds)
+                         .arg(settings.interval_s)
+                         .toStdString();
+    output_ = std::make_shared<std::optional<sustain::RunOutput>>();
+    QPointer<SustainRunPanel> self(this);
+    const auto on_interval = [self, seconds = settings.seconds](const SustainRun& so_far, std::size_t i,
+                                                                const std::vector<std::string>&) {
+      QMetaObject::invokeMethod(
+          self.data(),
+          [self, so_far, i, seconds] {
+            if (!self) return;
+            self->progress_->setValue(static_cast<int>(100 * so_far.t_s[i] / seconds));
+            self->status_->setText(QString::fromStdString(sustain::interval_line(so_far, i)));
+            emit self->interval(so_far);
+          },
+          Qt::QueuedConnection);
+    };
+    controller_->start_here(
+        [config, spec = settings.load, recorder, output = output_, on_interval](const CancelToken& token) {
+          // The load is built here, off the GUI thread: a detector network takes a moment to build.
+          std::vector<std::unique_ptr<headroom::Load>> loads = headroom::make_loads(spec);
+          if (loads.size() != 1) throw std::invalid_argument("the Sustained tab runs one load at a time: " + spec);
+          const sustain::SysfsSampler sampler("/");
+          *output = sustain::run_sustain(config, *loads.front(), sampler, recorder.get(), &token, on_interval);
+        });
+    status_->setText(tr("Starting %1…").arg(load_->text()));
+  } catch (const std::exception& e) {
+    status_->setText(QString::fromUtf8(e.what()));
+    emit failed(status_->text());
+  }
+}
+
+void SustainRunPanel::cancel() { controller_->cancel(); }
+
+void SustainRunPanel::here_finished(bool cancelled) {
+  // run_sustain returns what it completed when cancelled: those intervals are kept, and said to be all there is.
+  if (!output_ || !*output_ || (*output_)->run.t_s.empty()) {
+    status_->setText(cancelled ? tr("Cancelled before the first interval; nothing stored")
+                               : tr("No interval completed; nothing stored"));
+    output_.reset();
+    return;
+  }
+  const sustain::RunOutput out = std::move(**output_);
+  output_.reset();
+  status_->setText(tr("%1 %2 interval(s) of %3 on %4")
+                       .arg(out.cancelled ? tr("Cancelled after") : tr("Measured"))
+                       .arg(out.run.t_s.size())
+                       .arg(QString::fromStdString(out.run.load), QString::fromStdString(out.run.platform)));
+  emit measured(out);
+}
+
+}  // namespace bs::ui

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// "Run" for the Sustained tab: the load (the CLI's syntax: flops[:W], pipeline[@FPS], dnn[:NET][@RATE]), how long
+// and how often to take its rate, clocks and temperatures, "Record power", and where: this computer or a robot over
+// SSH (RunHereOrRobot). Here, core's run_sustain runs off the GUI thread; each interval comes back at once for the
+// live plot (`interval`), and the finished run is handed over to be stored (`measured`). On a robot, the same
+// settings go as `benchscope-cli sustain` words (core: commands/sustain_grammar.h), its intervals show as its text,
+// Cancel stops it there and the job comes home with the robot's provenance (`robot_finished`). Every setting is
+// remembered (QSettings).
+#include <QWidget>
+#include <memory>
+#include <optional>
+
+#include "model/sustain_run.h"
+#include "sustain/sustain_runner.h"
+
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+
+namespace bs::ui {
+
+class PowerSensorBox;
+class RemoteRun;
+class RobotTarget;
+class RunHereOrRobot;
+
+class SustainRunPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SustainRunPanel(QWidget* parent = nullptr);
+  ~SustainRunPanel() override;
+  QLineEdit* load() const { return load_; }
+  QDoubleSpinBox* seconds() const { return seconds_; }
+  QDoubleSpinBox* interval() const { return interval_; }
+  PowerSensorBox* power_box() const { return power_; }
+  RobotTarget* target() const { return target_; }
+  QPushButton* run_button() const { return run_; }
+  QPushButton* cancel_button() const { return cancel_; }
+  QLabel* status() const { return status_; }
+  bool running() const;
+
+ public slots:
+  void start();
+  void cancel();
+
+ signals:
+  void interval(const bs::SustainRun& so_far);          // a run here: after each interval, for the live plot
+  void measured(const bs::sustain::RunOutput& output);  // after stopped()
+  void stopped();                                       // a run here or on a robot ended, however it ended
+  void robot_finished(bs::ui::RemoteRun* run, const QString& platform);
+  void failed(const QString& message);
+
+ private:
+  void save_settings() const;
+  void busy(bool on);
+  void here_finished(bool cancelled);
+
+  QLineEdit* load_;
+  QDoubleSpinBox* seconds_;
+  QDoubleSpinBox* interval_;
+  PowerSensorBox* power_;
+  RobotTarget* target_;
+  QPushButton* run_;
+  QPushButton* cancel_;
+  QProgressBar* progress_;
+  QLabel* status_;
+  RunHereOrRobot* controller_;
+  // What the run here produced, written on its worker thread before it returns and read after here_finished.
+  std::shared_ptr<std::optional<sustain::RunOutput>> output_;
+};
+
+}  // namespace bs::ui
