@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "remote/remote_run.h"
 
+#include "sustain/sustain_live.h"
+
 #include <QPointer>
 #include <QtConcurrent>
 
@@ -46,8 +48,9 @@ void RemoteRun::start() {
                                                                                check.fix));
       robot_ = check.info;
       std::vector<FlopsRun> live;
+      SustainRun sustained;  // a `sustain --json` run's intervals so far
       remote::JobHandlers handlers;
-      handlers.on_event = [this, &live](const remote::Event& e) {
+      handlers.on_event = [this, &live, &sustained](const remote::Event& e) {
         if (e.type == "progress") {
           const double f = e.body.value("fraction", 0.0);
           const QString step = QString::fromStdString(e.body.value("step", ""));
@@ -61,6 +64,14 @@ void RemoteRun::start() {
           if (w != e.body.end() && w->is_object() && w->contains(total) && (*w)[total].is_number()) {
             const double watts = (*w)[total].get<double>();
             post([this, watts, total] { emit power(watts, QString::fromStdString(total)); });
+          }
+        } else if (e.type == "interval") {
+          try {
+            sustain::append_interval(sustained, e.body);
+            post([this, run = sustained] { emit sustain_interval(run); });
+          } catch (const std::exception& bad) {
+            const QString text = tr("an interval the robot sent was left out: %1").arg(QString::fromUtf8(bad.what()));
+            post([this, text] { emit remote_text(text); });
           }
         } else if (e.type == "message" || e.type == "error") {
           const QString text = QString::fromStdString(e.body.value(e.type == "error" ? "message" : "text", ""));

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/flops_run.h"
+#include "model/sustain_run.h"
 #include "remote/job_client.h"
 #include "remote/robot_check.h"
 
@@ -35,11 +36,12 @@ class RemoteRun : public QObject {
 
  signals:
   void progress(double fraction, const QString& step);
-  void live_run(const bs::FlopsRun& run);            // the sweep of one D so far
-  void power(double watts, const QString& channel);  // each reading of the total
-  void remote_text(const QString& line);             // the robot's messages
-  void finished();                                   // job() and robot() are set; files staged
-  void failed(const QString& message);               // nothing came home
+  void live_run(const bs::FlopsRun& run);               // the sweep of one D so far
+  void sustain_interval(const bs::SustainRun& so_far);  // a sustained run's intervals so far
+  void power(double watts, const QString& channel);     // each reading of the total
+  void remote_text(const QString& line);                // the robot's messages
+  void finished();                                      // job() and robot() are set; files staged
+  void failed(const QString& message);                  // nothing came home
 
  private:
   void post(std::function<void()> fn);

@@ -106,6 +106,7 @@ bool RunHereOrRobot::start_on_robot(const std::vector<std::string>& words) {
     robot_done();
   });
   emit busy_changed(true);
+  emit robot_started(run);
   emit status(tr("%1: checking the robot and starting…").arg(robot));
   run->start();
   return true;

@@ -15,6 +15,7 @@
 #include "commands/sustain_grammar.h"
 #include "headroom/loads/load_spec.h"
 #include "power/power_sensor_box.h"
+#include "remote/remote_run.h"
 #include "remote/robot_target.h"
 #include "remote/run_here_or_robot.h"
 #include "sensors/recorder.h"
@@ -102,6 +103,15 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
   connect(controller_, &RunHereOrRobot::failed, this, &SustainRunPanel::failed);
   connect(controller_, &RunHereOrRobot::here_finished, this, &SustainRunPanel::here_finished);
   connect(controller_, &RunHereOrRobot::robot_finished, this, &SustainRunPanel::robot_finished);
+  // A robot's intervals, streamed as `sustain --json` lines, drawn as they come like a run here.
+  connect(controller_, &RunHereOrRobot::robot_started, this, [this](RemoteRun* run) {
+    connect(run, &RemoteRun::sustain_interval, this, [this](const SustainRun& so_far) {
+      if (so_far.t_s.empty()) return;
+      progress_->setRange(0, 100);
+      progress_->setValue(static_cast<int>(100 * so_far.t_s.back() / seconds_->value()));
+      emit interval(so_far);
+    });
+  });
 }
 
 SustainRunPanel::~SustainRunPanel() {
@@ -138,6 +148,7 @@ void SustainRunPanel::start() {
     if (controller_->on_robot()) {
       settings.platform = target_->platform().toStdString();
       if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
+      settings.json = true;                                // its intervals stream to the desk as they complete
       controller_->start_on_robot(commands::to_words(settings));
       return;
     }

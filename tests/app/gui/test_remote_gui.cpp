@@ -40,6 +40,8 @@
 #include "remote/robot_target.h"
 #include "remote/robots.h"
 #include "store/workspace.h"
+#include "sustain/sustain_run_panel.h"
+#include "sustain/sustain_view.h"
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "workspace/workspace_tree.h"
@@ -332,6 +334,49 @@ class TestRemoteGui : public QObject {
 
   // "Several robots…": the sweep runs on each checked robot in turn, each under the platform typed in the dialog,
   // and each robot's run lands as it arrives.
+  // The Sustained tab on a robot (issue #53): Run pressed with the robot chosen, its intervals drawn at the desk as
+  // the robot streams them, and the sustained record imported under the platform typed with the robot's provenance.
+  void sustained_on_a_robot_is_drawn_live_and_imported() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    open_at_1280x800(w, dir.filePath("sustain.bsw"));
+    if (QTest::currentTestFailed()) return;
+    bs::test::click_tab(w, bs::test::tab_of(w, w.sustain_view()));
+    bs::ui::SustainRunPanel* panel = w.sustain_view()->run_panel();
+    bs::ui::RobotTarget* target = panel->target();
+    target->reload();
+    choose_robot(target);
+    if (QTest::currentTestFailed()) return;
+    panel->load()->setText("flops:1");
+    panel->seconds()->setValue(3);
+    panel->interval()->setValue(0.5);
+    target->platform_field()->clear();
+    QTest::keyClicks(target->platform_field(), "Robot torso");
+    qRegisterMetaType<bs::ui::RemoteRun*>();
+    qRegisterMetaType<bs::SustainRun>();
+    QSignalSpy done(panel, &bs::ui::SustainRunPanel::robot_finished);
+    QSignalSpy failed(panel, &bs::ui::SustainRunPanel::failed);
+    QSignalSpy live(panel, &bs::ui::SustainRunPanel::interval);
+    QTest::mouseClick(panel->run_button(), Qt::LeftButton);
+    QVERIFY(panel->running());
+    for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) QTest::qWait(20);
+    QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
+    QCOMPARE(done.count(), 1);
+    QVERIFY2(live.count() >= 3, "the robot's intervals were not drawn as they came");
+    for (int i = 0; i < 100 && panel->running(); ++i) QTest::qWait(20);
+    const auto stored = w.workspace()->sustain_runs();
+    QCOMPARE(stored.size(), std::size_t{1});
+    const bs::SustainRun& r = stored[0].run;
+    QCOMPARE(r.platform, std::string("Robot torso"));
+    QCOMPARE(r.rate.size(), std::size_t{6});
+    QCOMPARE(setting(r.provenance, "remote host"), std::string("robot"));
+    const std::string command = setting(r.provenance, "remote command");
+    QVERIFY2(command.find("sustain ") != std::string::npos && command.find(" --load flops:1") != std::string::npos,
+             command.c_str());
+    QCOMPARE(w.sustain_view()->chooser()->count(), 1);
+    screenshots(w, "sustained-robot-done");
+  }
+
   void several_robots_one_after_another() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
