@@ -38,7 +38,7 @@ void add_readings(std::vector<Series>& all, std::vector<double> Series::*values,
       all.push_back(std::move(s));
       found = all.end() - 1;
     }
-    (found->*values).back() = reading(it.value(), std::string(field) + "." + it.key());
+    ((*found).*values).back() = reading(it.value(), std::string(field) + "." + it.key());
   }
 }
 

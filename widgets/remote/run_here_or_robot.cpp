@@ -9,6 +9,12 @@
 #include "remote/robot_target.h"
 
 namespace bs::ui {
+namespace {
+
+// What the worker returns when the work was cancelled: no error message starts with a control character.
+QString cancelled_mark() { return QString(QChar(1)) + QStringLiteral("cancelled"); }
+
+}  // namespace
 
 RunHereOrRobot::RunHereOrRobot(RobotTarget* target, QObject* parent)
     : QObject(parent), target_(target), watcher_(new QFutureWatcher<QString>(this)) {
@@ -48,7 +54,7 @@ bool RunHereOrRobot::start_here(HereWork work) {
       work(*token);
       return {};
     } catch (const Cancelled&) {
-      return QStringLiteral("\x01cancelled");  // no error message can start so
+      return cancelled_mark();
     } catch (const std::exception& e) {
       return QString::fromUtf8(e.what());
     }
@@ -60,7 +66,7 @@ void RunHereOrRobot::here_done() {
   const QString outcome = watcher_->result();
   token_.reset();
   emit busy_changed(false);
-  if (outcome == QLatin1String("\x01cancelled")) {
+  if (outcome == cancelled_mark()) {
     emit status(tr("Cancelled; nothing stored"));
     emit here_finished(true);
   } else if (!outcome.isEmpty()) {

@@ -48,6 +48,7 @@ class RunHereOrRobot : public QObject {
   void progress(double fraction, const QString& step);  // here: the token's reports; a robot: its events
   void status(const QString& text);                     // a line for the panel's status label
   void robot_text(const QString& line);                 // the robot's own messages (live output)
+  void robot_started(bs::ui::RemoteRun* run);           // for a panel's own live signals of its kind
   void here_finished(bool cancelled);                   // the work returned or was cancelled
   // A robot's job came home (cancelled jobs too: the robot keeps nothing half-done); `platform` as confirmed. The
   // run is deleted later, after this signal.

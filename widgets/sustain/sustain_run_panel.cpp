@@ -109,7 +109,7 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
       if (so_far.t_s.empty()) return;
       progress_->setRange(0, 100);
       progress_->setValue(static_cast<int>(100 * so_far.t_s.back() / seconds_->value()));
-      emit interval(so_far);
+      emit live_interval(so_far);
     });
   });
 }
@@ -171,7 +171,7 @@ void SustainRunPanel::start() {
             if (!self) return;
             self->progress_->setValue(static_cast<int>(100 * so_far.t_s[i] / seconds));
             self->status_->setText(QString::fromStdString(sustain::interval_line(so_far, i)));
-            emit self->interval(so_far);
+            emit self->live_interval(so_far);
           },
           Qt::QueuedConnection);
     };

@@ -3,10 +3,10 @@
 // "Run" for the Sustained tab: the load (the CLI's syntax: flops[:W], pipeline[@FPS], dnn[:NET][@RATE]), how long
 // and how often to take its rate, clocks and temperatures, "Record power", and where: this computer or a robot over
 // SSH (RunHereOrRobot). Here, core's run_sustain runs off the GUI thread; each interval comes back at once for the
-// live plot (`interval`), and the finished run is handed over to be stored (`measured`). On a robot, the same
-// settings go as `benchscope-cli sustain` words (core: commands/sustain_grammar.h), its intervals show as its text,
-// Cancel stops it there and the job comes home with the robot's provenance (`robot_finished`). Every setting is
-// remembered (QSettings).
+// live plot (`live_interval`), and the finished run is handed over to be stored (`measured`). On a robot, the same
+// settings go as `benchscope-cli sustain --json` words (core: commands/sustain_grammar.h), the intervals it streams
+// feed the same live plot, Cancel stops it there and the job comes home with the robot's provenance
+// (`robot_finished`). Every setting is remembered (QSettings).
 #include <QWidget>
 #include <memory>
 #include <optional>
@@ -47,7 +47,7 @@ class SustainRunPanel : public QWidget {
   void cancel();
 
  signals:
-  void interval(const bs::SustainRun& so_far);          // a run here: after each interval, for the live plot
+  void live_interval(const bs::SustainRun& so_far);     // after each interval, here or on a robot: the live plot
   void measured(const bs::sustain::RunOutput& output);  // after stopped()
   void stopped();                                       // a run here or on a robot ended, however it ended
   void robot_finished(bs::ui::RemoteRun* run, const QString& platform);

@@ -101,12 +101,12 @@ SustainView::SustainView(QWidget* parent)
   connect(chooser_, &QComboBox::currentIndexChanged, this, &SustainView::show_current);
   for (QDoubleSpinBox* b : {stable_, threshold_})
     connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
-      QSettings s;
-      s.setValue("sustain/stable-percent", stable_->value());
-      s.setValue("sustain/throttle-threshold", threshold_->value() / 100);
+      QSettings settings;
+      settings.setValue("sustain/stable-percent", stable_->value());
+      settings.setValue("sustain/throttle-threshold", threshold_->value() / 100);
       live_ ? draw(*live_, tr("the run going on here")) : show_current();
     });
-  connect(run_, &SustainRunPanel::interval, this, &SustainView::show_live);
+  connect(run_, &SustainRunPanel::live_interval, this, &SustainView::show_live);
   // When a run here ends (stored, failed or cancelled) the stored records show again, a new one in front.
   connect(run_, &SustainRunPanel::stopped, this, [this] {
     live_.reset();

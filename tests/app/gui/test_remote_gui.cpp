@@ -356,7 +356,7 @@ class TestRemoteGui : public QObject {
     qRegisterMetaType<bs::SustainRun>();
     QSignalSpy done(panel, &bs::ui::SustainRunPanel::robot_finished);
     QSignalSpy failed(panel, &bs::ui::SustainRunPanel::failed);
-    QSignalSpy live(panel, &bs::ui::SustainRunPanel::interval);
+    QSignalSpy live(panel, &bs::ui::SustainRunPanel::live_interval);
     QTest::mouseClick(panel->run_button(), Qt::LeftButton);
     QVERIFY(panel->running());
     for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) QTest::qWait(20);
