@@ -199,8 +199,8 @@ class TestSustainRequirement : public QObject {
     for (auto& v : verdicts) v.meets_all = true;
     verdicts[0].recommended = true;
     const std::vector<SustainRun> runs = {record("nuc", steady(25, 100, 3, 91.2)), record("robot", steady(25, 100))};
-    const auto s = evaluate_sustain(parse_sustain_requirement("stability>=97%,minutes>=20"), runs,
-                                    {"nuc", "robot", "jetson"});
+    const auto s =
+        evaluate_sustain(parse_sustain_requirement("stability>=97%,minutes>=20"), runs, {"nuc", "robot", "jetson"});
     apply_sustain(verdicts, s);
     QVERIFY(!verdicts[0].meets_all && !verdicts[0].recommended);
     QVERIFY(verdicts[1].meets_all && verdicts[1].recommended);
