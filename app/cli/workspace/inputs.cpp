@@ -82,6 +82,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
     std::move(batch.dnn_runs.begin(), batch.dnn_runs.end(), std::back_inserter(data.dnn_runs));
     std::move(batch.headroom.begin(), batch.headroom.end(), std::back_inserter(data.headroom));
+    std::move(batch.sustain_runs.begin(), batch.sustain_runs.end(), std::back_inserter(data.sustain_runs));
     std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
   }
   // A log whose file names no platform (a meter CSV, tegrastats: a board family is no platform) gets the guess an
