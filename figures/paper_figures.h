@@ -19,6 +19,7 @@
 #include "model/flops_run.h"
 #include "model/frame.h"
 #include "model/power_trace.h"
+#include "model/sustain_run.h"
 #include "report/figure_template.h"
 #include "util/cancel.h"
 
@@ -42,6 +43,7 @@ struct FigureData {
   std::vector<PipelineTimings> pipelines;
   std::vector<DnnRun> inference_runs;                   // bench dnn runs: the report's inference table
   std::vector<headroom::HeadroomMeasurement> headroom;  // the report's control-loop headroom section
+  std::vector<SustainRun> sustain_runs;                 // what the report's sustained requirement judges
   std::optional<Frame> frame;  // the capture for fig3 (pixels loaded); none: a synthetic chart stands in
   std::map<std::pair<std::string, std::string>, int> colors;  // (platform, device) -> colour index
   // Which data this is, said to the user and recorded in figures.json ("data"): e.g. "paper data only".

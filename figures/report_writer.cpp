@@ -417,6 +417,15 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
     in.constraints +=
         (in.constraints.empty() ? "" : ", ") + std::string("control loop ") + headroom::describe(*request.loop);
   }
+  if (request.sustained) {
+    std::vector<std::string> names;
+    for (const PlatformRow& r : in.rows) names.push_back(r.platform);
+    in.sustained = request.sustained;
+    in.sustained_verdicts = sustain::evaluate_sustain(*request.sustained, data.sustain_runs, names);
+    sustain::apply_sustain(in.verdicts, in.sustained_verdicts);
+    in.constraints +=
+        (in.constraints.empty() ? "" : ", ") + std::string("sustained ") + sustain::describe(*request.sustained);
+  }
   in.candidates = request.candidates;
   in.chosen_log_platforms = request.chosen_log_platforms;
   in.data_selection = data.selection;

@@ -10,6 +10,7 @@
 #include "paper_figures.h"
 #include "report/candidates_section.h"
 #include "store/decision_store.h"
+#include "sustain/sustain_requirement.h"
 
 namespace bs::ui {
 
@@ -19,9 +20,10 @@ struct ReportRequest {
   QString pdf_path;   // empty: no PDF
   Constraints constraints;
   ComparisonOptions comparison;
-  std::optional<CandidatesSectionInput> candidates;  // the "Candidates" section (report/candidates_section.h)
-  std::optional<headroom::LoopRequirement> loop;     // a control-loop requirement (headroom/loop_requirement.h)
-  std::vector<std::string> chosen_log_platforms;     // platforms whose power log the user chose among several
+  std::optional<CandidatesSectionInput> candidates;      // the "Candidates" section (report/candidates_section.h)
+  std::optional<headroom::LoopRequirement> loop;         // a control-loop requirement (headroom/loop_requirement.h)
+  std::optional<sustain::SustainRequirement> sustained;  // a sustained requirement (sustain/sustain_requirement.h)
+  std::vector<std::string> chosen_log_platforms;         // platforms whose power log the user chose among several
 };
 
 // Returns the files written. Each file appears whole or not at all (QSaveFile); Cancelled or an error leaves none.

@@ -23,6 +23,7 @@
 #include "report/candidates_section.h"
 #include "report_dialog.h"
 #include "report_writer.h"
+#include "store/sustained_runs.h"
 #include "workspace/workspace_tree.h"
 
 namespace bs::ui {
@@ -81,6 +82,7 @@ FigureData MainWindow::figure_data() const {
     d.pipelines = pipeline_timings(pipelines);
     for (auto& r : workspace_->dnn_runs()) d.inference_runs.push_back(std::move(r.run));
     for (auto& h : workspace_->headroom_measurements()) d.headroom.push_back(std::move(h.measurement));
+    d.sustain_runs = sustained_runs_of(*workspace_);
     // fig3 shows the workspace's first capture; a referenced file that moved or changed is an error naming it.
     if (const auto frames = workspace_->frames(); !frames.empty()) d.frame = load_frame(*workspace_, frames.front());
   }

@@ -280,12 +280,7 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
     out.push_back(std::move(v));
   }
   // Rank: passing by their tightest relative margin (widest first), failing by their worst (nearest first), unknown.
-  const auto tightest = [](const LoopVerdict& v) {
-    double m = INFINITY;
-    for (const ConstraintCheck& k : v.checks)
-      if (k.actual) m = std::min(m, k.required > 0 ? k.margin / k.required : (k.margin >= 0 ? 0.0 : -INFINITY));
-    return m;
-  };
+  const auto tightest = [](const LoopVerdict& v) { return tightest_relative_margin(v.checks); };
   std::stable_sort(out.begin(), out.end(), [&](const LoopVerdict& a, const LoopVerdict& b) {
     const auto rank = [](LoopStatus s) { return s == LoopStatus::Pass ? 0 : s == LoopStatus::Fail ? 1 : 2; };
     if (rank(a.status) != rank(b.status)) return rank(a.status) < rank(b.status);
@@ -308,14 +303,7 @@ std::vector<ConstraintCheck> loop_checks(const std::string& platform, std::span<
 }
 
 void apply_loop(std::vector<PlatformVerdict>& verdicts, std::span<const LoopVerdict> loop) {
-  for (PlatformVerdict& v : verdicts) {
-    for (ConstraintCheck& k : loop_checks(v.platform, loop)) v.checks.push_back(std::move(k));
-    v.meets_all = std::all_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.met; });
-  }
-  PlatformVerdict* best = nullptr;
-  for (PlatformVerdict& v : verdicts)
-    if (v.meets_all && v.note.empty() && (!best || v.ranked_flops > best->ranked_flops)) best = &v;
-  for (PlatformVerdict& v : verdicts) v.recommended = &v == best;
+  add_requirement_checks(verdicts, [&](const std::string& platform) { return loop_checks(platform, loop); });
 }
 
 }  // namespace bs::headroom

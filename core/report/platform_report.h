@@ -18,6 +18,7 @@
 #include "model/dnn_run.h"
 #include "report/candidates_section.h"
 #include "report/report_html.h"
+#include "sustain/sustain_requirement.h"
 
 namespace bs {
 
@@ -38,6 +39,10 @@ struct ReportInput {
   std::vector<headroom::HeadroomMeasurement> headroom;
   std::optional<headroom::LoopRequirement> loop;
   std::vector<headroom::LoopVerdict> loop_verdicts;
+  // With a sustained requirement (sustain/sustain_requirement.h): its verdict per platform (already applied to
+  // `verdicts`), in a section of its own after the control loop's.
+  std::optional<sustain::SustainRequirement> sustained;
+  std::vector<sustain::SustainVerdict> sustained_verdicts;
   std::vector<std::string> chosen_log_platforms;  // platforms whose power log the user chose among several
 };
 

@@ -180,6 +180,20 @@ void headroom_section(const ReportInput& in, ReportBuilder& b) {
   }
 }
 
+void sustained_section(const ReportInput& in, ReportBuilder& b) {
+  if (!in.sustained) return;
+  b.heading(2, "Sustained performance");
+  ReportTable t;
+  t.caption = "Sustained requirement: " + sustain::describe(*in.sustained) +
+              ". A platform without a sustained run that answers every term is unknown and never passes.";
+  t.header = {{"Platform", "Verdict", "Margin / why", "Run judged"}};
+  t.numeric_right = false;
+  for (const sustain::SustainVerdict& v : in.sustained_verdicts)
+    t.rows.push_back({v.platform, std::string(sustain::to_string(v.status)),
+                      v.status == sustain::SustainStatus::Pass ? v.margin : v.reason, v.record});
+  b.table(t);
+}
+
 void figures_section(const ReportInput& in, ReportBuilder& b) {
   if (in.figures.empty()) return;
   b.heading(2, "Figures", true);
@@ -218,8 +232,8 @@ void candidates_section(const ReportInput& in, ReportBuilder& b) {
 }
 
 std::vector<ReportSection> report_sections() {
-  return {decision_section,   platform_details_section, inference_section, headroom_section,
-          candidates_section, figures_section,          sources_appendix};
+  return {decision_section,  platform_details_section, inference_section, headroom_section,
+          sustained_section, candidates_section,       figures_section,   sources_appendix};
 }
 
 }  // namespace bs

@@ -24,6 +24,9 @@ void inference_section(const ReportInput& in, ReportBuilder& b);
 // Headroom measurements: per measurement its kernel facts, flags and table per phase and thread; the loop
 // requirement's verdicts first when one was set (only when there is something to show).
 void headroom_section(const ReportInput& in, ReportBuilder& b);
+// The sustained requirement's verdict per platform, with its margin or reason and the run that judged it (only when
+// a sustained requirement was set).
+void sustained_section(const ReportInput& in, ReportBuilder& b);
 // Published results beside the own platforms (report --library, the GUI's candidates):
 // write_candidates_section() (report/candidates_section.h), after the details; nothing without a selection.
 void candidates_section(const ReportInput& in, ReportBuilder& b);

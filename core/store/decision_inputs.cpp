@@ -34,6 +34,7 @@ DecisionInputs decision_inputs(const Workspace* ws) {
   in.constraints = d.constraints();
   // stored_decision() refuses a requirement that does not parse: what it returned parses.
   if (!d.loop.empty()) in.loop = headroom::parse_loop_requirement(d.loop);
+  if (!d.sustained.empty()) in.sustained = sustain::parse_sustain_requirement(d.sustained);
   in.candidates = d.candidates;
   return in;
 }

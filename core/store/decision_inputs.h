@@ -8,7 +8,7 @@
 //    the Battery tab's setup as saved ("battery-tab/current"), with its depth of discharge; otherwise the first
 //    built-in pack (the paper's 4S 3850 mAh);
 //  - parallel load and mission: the stored decision's when there is one; otherwise the Battery tab's setup's;
-//  - constraints, control-loop requirement, library candidates: the stored decision's;
+//  - constraints, control-loop and sustained requirements, library candidates: the stored decision's;
 //  - the power log each platform's numbers come from: the chosen ones (store/decision_store.h).
 // The command line's options then override single inputs (app/cli/platform/platform_args.cpp); the GUI shows them.
 #include <optional>
@@ -19,6 +19,7 @@
 #include "headroom/loop_requirement.h"
 #include "store/battery_preset_store.h"
 #include "store/decision_store.h"
+#include "sustain/sustain_requirement.h"
 
 namespace bs {
 
@@ -33,6 +34,7 @@ struct DecisionInputs {
   ComparisonOptions options;      // battery voltage, capacity, usable fraction, parallel load, mission
   Constraints constraints;
   std::optional<headroom::LoopRequirement> loop;
+  std::optional<sustain::SustainRequirement> sustained;
   std::string candidates;
   std::vector<std::string> chosen_log_platforms;
 };

@@ -7,6 +7,7 @@
 
 #include "headroom/loop_requirement.h"
 #include "store/sqlite_db.h"
+#include "sustain/sustain_requirement.h"
 #include "util/host_clock.h"
 
 namespace bs {
@@ -33,6 +34,9 @@ std::string number(double v) {
   throw WorkspaceError(WorkspaceError::Kind::Corrupt,
                        ws.path() + ": the Platforms tab's stored decision: decision." + column + ": " + why);
 }
+
+// The sustained requirement's workspace setting (store/decision_store.h: StoredDecision::sustained).
+constexpr const char* kSustainedKey = "decision/sustained";
 
 // NULL: not set. `zero_ok`: 0 is allowed (the parallel load), else the value must be > 0.
 std::optional<double> read_number(const Workspace& ws, const Statement& st, int column, const char* name,
@@ -67,16 +71,23 @@ std::string describe_constraints(const Constraints& c) {
 
 std::string describe_constraints(const StoredDecision& d) {
   std::string out = describe_constraints(d.constraints());
-  if (d.loop.empty()) return out;
   // In the words of the report's heading (figures/report_writer.cpp); a requirement that no longer parses (a
   // hand-edited file) is quoted as stored, never dropped from the account.
-  std::string loop;
-  try {
-    loop = "control loop " + headroom::describe(headroom::parse_loop_requirement(d.loop));
-  } catch (const std::invalid_argument&) {
-    loop = "control loop \"" + d.loop + "\" (unreadable)";
-  }
-  return out + (out.empty() ? "" : ", ") + loop;
+  const auto add = [&out](const char* what, const std::string& text, const auto& words_of) {
+    if (text.empty()) return;
+    std::string words;
+    try {
+      words = std::string(what) + " " + words_of(text);
+    } catch (const std::invalid_argument&) {
+      words = std::string(what) + " \"" + text + "\" (unreadable)";
+    }
+    out += (out.empty() ? "" : ", ") + words;
+  };
+  add("control loop", d.loop,
+      [](const std::string& t) { return headroom::describe(headroom::parse_loop_requirement(t)); });
+  add("sustained", d.sustained,
+      [](const std::string& t) { return sustain::describe(sustain::parse_sustain_requirement(t)); });
+  return out;
 }
 
 std::optional<StoredDecision> stored_decision(const Workspace& ws) {
@@ -100,12 +111,27 @@ std::optional<StoredDecision> stored_decision(const Workspace& ws) {
       damaged(ws, "loop", "'" + d.loop + "': " + e.what());
     }
   }
+  for (const auto& [key, value] : ws.settings(kSustainedKey))
+    if (key == kSustainedKey) d.sustained = value;
+  if (!d.sustained.empty()) {
+    try {
+      sustain::parse_sustain_requirement(d.sustained);
+    } catch (const std::invalid_argument& e) {
+      throw WorkspaceError(WorkspaceError::Kind::Corrupt, ws.path() +
+                                                              ": the Platforms tab's stored decision: the setting " +
+                                                              kSustainedKey + ": '" + d.sustained + "': " + e.what());
+    }
+  }
   return d;
 }
 
 void set_stored_decision(Workspace& ws, const std::optional<StoredDecision>& decision) {
+  // The row and the sustained requirement's setting change together or not at all.
+  sqlite::Transaction tx(ws.database());
   if (!decision) {
     Statement(ws.database(), "DELETE FROM decision").run();
+    ws.remove_setting(kSustainedKey);
+    tx.commit();
     return;
   }
   const StoredDecision& d = *decision;
@@ -117,6 +143,13 @@ void set_stored_decision(Workspace& ws, const std::optional<StoredDecision>& dec
       headroom::parse_loop_requirement(d.loop);
     } catch (const std::invalid_argument& e) {
       refuse(ws, std::string("the control-loop requirement: ") + e.what());
+    }
+  }
+  if (!d.sustained.empty()) {
+    try {
+      sustain::parse_sustain_requirement(d.sustained);
+    } catch (const std::invalid_argument& e) {
+      refuse(ws, std::string("the sustained requirement: ") + e.what());
     }
   }
   Statement(ws.database(),
@@ -132,6 +165,11 @@ void set_stored_decision(Workspace& ws, const std::optional<StoredDecision>& dec
       .bind(8, std::string_view(d.loop))
       .bind(9, std::string_view(utc_timestamp()))
       .run();
+  if (d.sustained.empty())
+    ws.remove_setting(kSustainedKey);
+  else
+    ws.set_setting(kSustainedKey, d.sustained);
+  tx.commit();
 }
 
 std::map<std::string, std::int64_t> chosen_logs(const Workspace& ws) {

@@ -30,24 +30,30 @@ struct StoredDecision {
   std::string candidates;                 // library computers or result ids, "orin,pi5"; "": none
   // A control-loop requirement (headroom/loop_requirement.h syntax) as the user wrote it; "": none.
   std::string loop;
+  // A sustained-performance requirement (sustain/sustain_requirement.h syntax) as the user wrote it; "": none.
+  // Kept beside the decision's row as the workspace setting "decision/sustained" (the meta table), so that it needs
+  // no schema change and an older BenchScope reads the rest of the decision as before.
+  std::string sustained;
   bool operator==(const StoredDecision&) const = default;
 
   Constraints constraints() const;
-  bool constrained() const { return power_budget_w || min_fps || min_runtime_min || !loop.empty(); }
+  bool constrained() const {
+    return power_budget_w || min_fps || min_runtime_min || !loop.empty() || !sustained.empty();
+  }
 };
 
 // "a power budget of 10 W, at least 5 fps" (empty when no constraint is set), as the report's first page says it.
 std::string describe_constraints(const Constraints& c);
-// The same with the decision's control-loop requirement, when it has one ("..., a 1 kHz control loop with p99.9 <=
-// 200 us ...").
+// The same with the decision's control-loop and sustained requirements, when it has them ("..., control loop 1 kHz,
+// p99.9 <= 200 us ..., sustained stability >= 97 %, at least 20 min").
 std::string describe_constraints(const StoredDecision& d);
 
 // nullopt: never set in this workspace (the defaults apply: no constraint, the Battery tab's pack). Throws
 // WorkspaceError(Corrupt) for a stored value the schema's checks refuse (a budget <= 0, text for a number, a
-// control-loop requirement that does not parse).
+// control-loop or sustained requirement that does not parse).
 std::optional<StoredDecision> stored_decision(const Workspace& ws);
 // nullopt removes it. Throws WorkspaceError(Constraint) for a value out of range (a budget <= 0, a negative load) or a
-// control-loop requirement that does not parse (naming what is wrong with it).
+// control-loop or sustained requirement that does not parse (naming what is wrong with it).
 void set_stored_decision(Workspace& ws, const std::optional<StoredDecision>& decision);
 
 // Platform -> the id of the power log chosen for it.

@@ -20,6 +20,7 @@
 #include "headroom/headroom_table.h"
 #include "platform/candidates_cli.h"
 #include "platform/platform_args.h"
+#include "platform/sustained_cli.h"
 #include "store/decision_store.h"
 #include "workspace/inputs.h"
 
@@ -158,6 +159,14 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     loop = headroom::evaluate_loop(*platform_args.loop, data.headroom, names);
     headroom::apply_loop(verdicts, loop);
   }
+  // A sustained requirement likewise (no sustained run that answers it: unknown, never passing).
+  std::vector<sustain::SustainVerdict> sustained;
+  if (platform_args.sustained) {
+    std::vector<std::string> names;
+    for (const PlatformRow& r : rows) names.push_back(r.platform);
+    sustained = sustain::evaluate_sustain(*platform_args.sustained, data.sustain_runs, names);
+    sustain::apply_sustain(verdicts, sustained);
+  }
   const ExportTable table = platform_table(
       rows, constrained ? std::span<const PlatformVerdict>(verdicts) : std::span<const PlatformVerdict>());
   if (const auto p = args.value("--latex")) write_file(*p, to_latex(table));
@@ -172,6 +181,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   if (with_library) {
     CandidateInputs in = library_candidate_inputs(rows, data, library);
     if (platform_args.loop) in.loop = &loop;  // no class picks what the loop's verdict rejects
+    if (platform_args.sustained) in.sustained = &sustained;
     classes = rank_candidates(in, c, options);
     peaks = peak_candidates(in);
     library_results = in.library;
@@ -232,7 +242,9 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
                                                    ? graph_benchmarks_json(library_results, bundled_library().library)
                                                    : nlohmann::json(nullptr)},
                           {"control_loop",
-                           platform_args.loop ? loop_json(*platform_args.loop, loop) : nlohmann::json(nullptr)}}
+                           platform_args.loop ? loop_json(*platform_args.loop, loop) : nlohmann::json(nullptr)},
+                          {"sustained", platform_args.sustained ? sustained_json(*platform_args.sustained, sustained)
+                                                                : nlohmann::json(nullptr)}}
                .dump(2)
         << '\n';
     return 0;
@@ -287,6 +299,7 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
     print_graph_benchmarks(out, library_results, bundled_library().library);
   }
   if (platform_args.loop) print_loop(out, *platform_args.loop, loop);
+  if (platform_args.sustained) print_sustained(out, *platform_args.sustained, sustained);
   if (!platform_args.stored.empty())
     out << "stored in the workspace (Platforms tab; --no-stored ignores it): " << platform_args.stored << '\n';
   if (constrained) {
@@ -307,7 +320,8 @@ const CommandRegistrar registrar({
     "                                [--battery PRESET] [--extra-load W] [--mission SPEC] [--supply-volts V]\n"
     "                                [--latex FILE] [--csv FILE] [--json]\n"
     "                                [--library COMPUTERS [--candidates-csv FILE] [--candidates-latex FILE]]\n"
-    "                                [--require-loop SPEC] [--no-stored] [--use-log PLATFORM=LOG] [--store]\n"
+    "                                [--require-loop SPEC] [--require-sustained SPEC] [--no-stored]\n"
+    "                                [--use-log PLATFORM=LOG] [--store]\n"
     "  One column per platform: best GPU and CPU peak, % of theoretical peak, pipeline timings, mean and max power,\n"
     "  GFLOPS/W (the paper's peak / max power, and peak / mean power), energy per frame, battery runtime\n"
     "  (constant-power model on the battery preset, default the paper's 4S 3850 mAh) and frames per Wh (frames\n"
@@ -330,10 +344,15 @@ const CommandRegistrar registrar({
     "  ms), misses<=PERCENT%, max-consecutive-misses<=N, in the phase load=PHASE (absent: every phase, the worst\n"
     "  decides). Platforms are ranked (passing, failing by how much, unknown); one without a measurement is unknown\n"
     "  and never passes; the recommendation counts the requirement like the other constraints.\n"
+    "  --require-sustained \"stability>=97%,minutes>=20\" checks each platform's sustained runs (benchscope-cli\n"
+    "  sustain, imported logs with clocks): stability>=PERCENT% (worst interval / best), minutes>=N (the run's\n"
+    "  length), throttle=none, sustained>=RATE (mean of the last third, in the run's unit). The longest run that\n"
+    "  answers every term judges, else the newest; passing, failing by how much, unknown (no run, too short, no\n"
+    "  clock or zone exposed, a log without a rate for a rate term) never passes.\n"
     "  A workspace keeps what its Platforms tab set (constraints, the control loop among them, battery, parallel\n"
     "  load, mission, library candidates, the power log chosen per platform): options not given here take those\n"
-    "  values, and the output says which; constraints given here (--require-loop too) replace the stored ones as a\n"
-    "  whole. --no-stored ignores them (the chosen logs still count).\n"
+    "  values, and the output says which; constraints given here (--require-loop, --require-sustained too) replace\n"
+    "  the stored ones as a whole. --no-stored ignores them (the chosen logs still count).\n"
     "  --use-log NUC=nuc-second-session.csv takes that log for the platform's power (a platform has one power column:\n"
     "  its chosen log, else its first). --store keeps the options in effect (and --use-log) in the workspace, as the\n"
     "  Platforms tab does: the GUI, `report` and later runs then use them.",

@@ -70,6 +70,13 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
       loop = headroom::evaluate_loop(*platform.loop, data.headroom, names);
       in.loop = &loop;
     }
+    std::vector<sustain::SustainVerdict> sustained;
+    if (platform.sustained) {
+      std::vector<std::string> names;
+      for (const PlatformRow& r : rows) names.push_back(r.platform);
+      sustained = sustain::evaluate_sustain(*platform.sustained, data.sustain_runs, names);
+      in.sustained = &sustained;
+    }
     classes = rank_candidates(in, platform.constraints, platform.options);
     peaks = peak_candidates(in);
   }
@@ -95,6 +102,7 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
   request.comparison = platform.options;
   request.candidates = std::move(candidates);
   request.loop = platform.loop;
+  request.sustained = platform.sustained;
   request.chosen_log_platforms = platform.chosen_log_platforms;
   const bool quiet = args.has("--quiet");
   if (!quiet && !platform.stored.empty())
@@ -116,9 +124,12 @@ const CommandRegistrar registrar({
     "                             [--budget W] [--min-fps FPS] [--min-runtime MIN] [--battery PRESET]\n"
     "                             [--extra-load W] [--mission SPEC] [--supply-volts V] [--template FILE] [--font-pt "
     "8]\n"
-    "                             [--library COMPUTERS] [--require-loop SPEC] [--no-stored] [--quiet]\n"
+    "                             [--library COMPUTERS] [--require-loop SPEC] [--require-sustained SPEC]\n"
+    "                             [--no-stored] [--quiet]\n"
     "  --require-loop: a control-loop requirement as in `platforms` (a section \"Control-loop headroom\" with each\n"
     "  headroom measurement and the verdict per platform; unknown never passes).\n"
+    "  --require-sustained: a sustained requirement as in `platforms` (a section \"Sustained performance\" with the\n"
+    "  verdict per platform, its margin and the run that judged it; unknown never passes).\n"
     "  The platform comparison, then one page per platform: best GPU and CPU peak with device, backend and % of\n"
     "  theoretical peak, pipeline timings (ms, mean ± SD (n)), mean and max power, GFLOPS/W (the paper's and at\n"
     "  mean power), energy per frame, battery runtime (constant-power model, --battery preset, over --mission when\n"

@@ -49,6 +49,7 @@ ui::FigureData figure_data(const std::vector<std::string>& paths, const LoadedDa
   fd.pipelines = pipeline_timings(data.pipeline_runs);
   fd.inference_runs = data.dnn_runs;
   fd.headroom = data.headroom;
+  fd.sustain_runs = data.sustain_runs;
   if (!data.frames.empty()) {
     fd.frame = data.frames.front();
   } else if (paths.size() == 1 && looks_like_workspace(paths[0])) {

@@ -41,8 +41,9 @@ FromWorkspace read_inputs(const ParsedArgs& args) {
 }  // namespace
 
 const std::set<std::string>& platform_value_options() {
-  static const std::set<std::string> names{"--budget",     "--min-fps",      "--min-runtime", "--battery",
-                                           "--extra-load", "--supply-volts", "--mission",     "--require-loop"};
+  static const std::set<std::string> names{"--budget",  "--min-fps",      "--min-runtime",
+                                           "--battery", "--extra-load",   "--supply-volts",
+                                           "--mission", "--require-loop", "--require-sustained"};
   return names;
 }
 
@@ -91,8 +92,8 @@ PlatformArgs parse_platform_args(const ParsedArgs& args) {
   }
   if (args.value("--supply-volts")) p.options.supply_v = args.number("--supply-volts", 0);
   // Constraints: the command line's replace the stored ones as a whole (one set of constraints, never a mix).
-  const bool given =
-      args.value("--budget") || args.value("--min-fps") || args.value("--min-runtime") || args.value("--require-loop");
+  const bool given = args.value("--budget") || args.value("--min-fps") || args.value("--min-runtime") ||
+                     args.value("--require-loop") || args.value("--require-sustained");
   if (args.value("--budget")) p.constraints.power_budget_w = args.number("--budget", 0);
   if (args.value("--min-fps")) p.constraints.min_fps = args.number("--min-fps", 0);
   if (args.value("--min-runtime")) p.constraints.min_runtime_h = args.number("--min-runtime", 0) / 60.0;  // minutes
@@ -103,9 +104,17 @@ PlatformArgs parse_platform_args(const ParsedArgs& args) {
       throw UsageError(std::string("--require-loop: ") + e.what());
     }
   }
+  if (const auto sustained = args.value("--require-sustained")) {
+    try {
+      p.sustained = sustain::parse_sustain_requirement(*sustained);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--require-sustained: ") + e.what());
+    }
+  }
   if (!given && in.stored && in.stored->constrained()) {
     p.constraints = in.constraints;
     p.loop = in.loop;
+    p.sustained = in.sustained;
     taken.insert(taken.begin(), describe_constraints(*in.stored));
   }
   p.library = in.candidates;
@@ -125,6 +134,7 @@ StoredDecision decision_to_store(const PlatformArgs& p) {
   d.mission = p.options.mission;
   d.candidates = p.library;
   if (p.loop) d.loop = p.loop->text;
+  if (p.sustained) d.sustained = p.sustained->text;
   return d;
 }
 

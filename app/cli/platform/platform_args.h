@@ -10,12 +10,14 @@
 #include "common/args.h"
 #include "headroom/loop_requirement.h"
 #include "store/decision_store.h"
+#include "sustain/sustain_requirement.h"
 
 namespace bs::cli {
 
 // --budget W, --min-fps FPS, --min-runtime MIN, --battery PRESET, --extra-load W, --supply-volts V,
 // --mission SPEC (name:seconds:watts,... in parallel with each computer, as `battery --mission`),
-// --require-loop SPEC (a control-loop requirement, headroom/loop_requirement.h)
+// --require-loop SPEC (a control-loop requirement, headroom/loop_requirement.h), --require-sustained SPEC (a
+// sustained-performance requirement, sustain/sustain_requirement.h)
 const std::set<std::string>& platform_value_options();
 
 struct PlatformArgs {
@@ -23,14 +25,15 @@ struct PlatformArgs {
   ComparisonOptions options;
   Constraints constraints;
   std::optional<headroom::LoopRequirement> loop;
+  std::optional<sustain::SustainRequirement> sustained;
   bool constrained() const {
-    return constraints.power_budget_w || constraints.min_fps || constraints.min_runtime_h || loop;
+    return constraints.power_budget_w || constraints.min_fps || constraints.min_runtime_h || loop || sustained;
   }
   // Given one workspace, what its Platforms tab stored (store/decision_store.h) fills every option the command line
-  // leaves out (issue #43.2; the constraints, the control loop among them, as a whole): the recommendation is the
-  // one set in the GUI. `stored` says what was taken, in words ("a power budget of 10 W; battery: the Battery tab's
-  // pack ..."), empty when nothing was; `library` is the stored candidates when --library is not given;
-  // `chosen_log_platforms` the platforms whose log was chosen.
+  // leaves out (issue #43.2; the constraints, the control loop and the sustained requirement among them, as a whole):
+  // the recommendation is the one set in the GUI. `stored` says what was taken, in words ("a power budget of 10 W;
+  // battery: the Battery tab's pack ..."), empty when nothing was; `library` is the stored candidates when --library is
+  // not given; `chosen_log_platforms` the platforms whose log was chosen.
   std::string stored;
   std::string library;
   std::vector<std::string> chosen_log_platforms;

@@ -14,6 +14,7 @@
 #include "store/decision_store.h"
 #include "store/log_settings_store.h"
 #include "store/open_workspaces.h"
+#include "store/sustained_runs.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -63,6 +64,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     for (auto& p : ws.pipeline_runs()) data.pipeline_runs.push_back(std::move(p.run));
     for (auto& d : ws.dnn_runs()) data.dnn_runs.push_back(std::move(d.run));
     for (auto& h : ws.headroom_measurements()) data.headroom.push_back(std::move(h.measurement));
+    data.sustain_runs = sustained_runs_of(ws);
     warn_damage(ws);  // after the reads: loading the samples may have found more
     add_foreign_sweeps(data);
     return data;
@@ -82,6 +84,7 @@ LoadedData load_inputs(const std::vector<std::string>& paths, const CancelToken&
     std::move(batch.pipeline_runs.begin(), batch.pipeline_runs.end(), std::back_inserter(data.pipeline_runs));
     std::move(batch.dnn_runs.begin(), batch.dnn_runs.end(), std::back_inserter(data.dnn_runs));
     std::move(batch.headroom.begin(), batch.headroom.end(), std::back_inserter(data.headroom));
+    std::move(batch.sustain_runs.begin(), batch.sustain_runs.end(), std::back_inserter(data.sustain_runs));
     std::move(batch.frames.begin(), batch.frames.end(), std::back_inserter(data.frames));
   }
   // A log whose file names no platform (a meter CSV, tegrastats: a board family is no platform) gets the guess an

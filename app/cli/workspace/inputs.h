@@ -38,7 +38,8 @@ struct LoadedData {
   std::vector<PipelineRun> pipeline_runs;
   std::vector<DnnRun> dnn_runs;
   std::vector<headroom::HeadroomMeasurement> headroom;
-  std::vector<Frame> frames;  // imported files only: a workspace's frames are read on demand (frame_store.h)
+  std::vector<SustainRun> sustain_runs;  // sustained-performance records and logs with clocks (#53)
+  std::vector<Frame> frames;             // imported files only: a workspace's frames are read on demand (frame_store.h)
 };
 // A single workspace argument is read from the workspace; otherwise every path is imported in memory.
 // Throws (ImportError, WorkspaceError) on the first bad file.

@@ -224,10 +224,12 @@ std::string difference(const Candidate& c, const Candidate& ref) {
   return join(d);
 }
 
-void check(Candidate& c, const Constraints& k, const std::vector<headroom::LoopVerdict>* loop) {
+void check(Candidate& c, const Constraints& k, const CandidateInputs& in) {
   c.checks.clear();
-  if (loop)
-    for (ConstraintCheck& x : headroom::loop_checks(c.platform, *loop)) c.checks.push_back(std::move(x));
+  if (in.loop)
+    for (ConstraintCheck& x : headroom::loop_checks(c.platform, *in.loop)) c.checks.push_back(std::move(x));
+  if (in.sustained)
+    for (ConstraintCheck& x : sustain::sustain_checks(c.platform, *in.sustained)) c.checks.push_back(std::move(x));
   if (k.power_budget_w) {
     ConstraintCheck x{"power budget", "W", *k.power_budget_w, c.power_w};
     x.met = c.power_w && *c.power_w <= *k.power_budget_w;
@@ -343,7 +345,7 @@ std::vector<CandidateClass> rank_candidates(const CandidateInputs& in, const Con
   std::vector<Key> order;
   for (Candidate& c : all) {
     c.battery_runtime_h = runtime_h(c.power_w, options);
-    check(c, constraints, in.loop);
+    check(c, constraints, in);
     // A network not stated is never ranked with another: each such row is a class of its own.
     const bool unstated = c.network.empty() || c.network.find("not stated") != std::string::npos;
     // A precision not stated is ranked only with the same framework; without a framework either, alone.

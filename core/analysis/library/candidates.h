@@ -17,6 +17,7 @@
 #include "model/dnn_run.h"
 #include "model/flops_run.h"
 #include "model/pipeline_run.h"
+#include "sustain/sustain_requirement.h"
 #include "util/table_export.h"
 
 namespace bs {
@@ -84,6 +85,8 @@ struct CandidateInputs {
   // With a control-loop requirement: its verdicts, whose checks join every row's (a published row has none: its
   // loop is unknown and it never passes), so that no class picks a row the Platforms verdict would reject.
   const std::vector<headroom::LoopVerdict>* loop = nullptr;
+  // With a sustained requirement: its verdicts, the same way (a published row has no sustained run: unknown).
+  const std::vector<sustain::SustainVerdict>* sustained = nullptr;
 };
 
 // The network names of all sources in one spelling: "resnet"/"ResNet-50" -> "resnet50"; "ssd-small"/

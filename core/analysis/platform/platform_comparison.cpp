@@ -307,4 +307,23 @@ std::string unmet_text(const ConstraintCheck& k) {
   return k.name.substr(0, k.name.find(" (")) + b;
 }
 
+void add_requirement_checks(std::vector<PlatformVerdict>& verdicts,
+                            const std::function<std::vector<ConstraintCheck>(const std::string&)>& checks_of) {
+  for (PlatformVerdict& v : verdicts) {
+    for (ConstraintCheck& k : checks_of(v.platform)) v.checks.push_back(std::move(k));
+    v.meets_all = std::all_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.met; });
+  }
+  PlatformVerdict* best = nullptr;
+  for (PlatformVerdict& v : verdicts)
+    if (v.meets_all && v.note.empty() && (!best || v.ranked_flops > best->ranked_flops)) best = &v;
+  for (PlatformVerdict& v : verdicts) v.recommended = &v == best;
+}
+
+double tightest_relative_margin(std::span<const ConstraintCheck> checks) {
+  double m = INFINITY;
+  for (const ConstraintCheck& k : checks)
+    if (k.actual) m = std::min(m, k.required > 0 ? k.margin / k.required : (k.margin >= 0 ? 0.0 : -INFINITY));
+  return m;
+}
+
 }  // namespace bs

@@ -4,6 +4,7 @@
 // GFLOPS/W, vision pipeline timings, energy per frame and battery runtime; and a recommendation under constraints
 // (the paper's conclusion: under a 10 W budget the Jetson, otherwise the NUC). Every number keeps a note of where
 // it came from, so a view can show its provenance.
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -136,9 +137,10 @@ struct ConstraintCheck {
 };
 
 // Whether the check's limit is a ceiling ("at most": a power budget in W, a control-loop latency in us, a miss
-// share in %, a run of misses in cycles) rather than a floor ("at least": frame rate, battery runtime).
+// share in %, a run of misses in cycles, time spent throttled in a sustained run) rather than a floor ("at least":
+// frame rate, battery runtime, a sustained run's stability in "% of best").
 inline bool is_ceiling(const ConstraintCheck& k) {
-  return k.unit == "W" || k.unit == "us" || k.unit == "%" || k.unit == "cycles";
+  return k.unit == "W" || k.unit == "us" || k.unit == "%" || k.unit == "cycles" || k.unit == "s throttled";
 }
 
 // A failed or unknown check in a few words, for the lists of why a platform was not chosen: "p99 (pipeline@30fps)
@@ -160,5 +162,15 @@ struct PlatformVerdict {
 // Only platforms with a power log are candidates: a robot computer whose power draw is unknown cannot be judged
 // against a battery (the paper's desktop reference machine is such a platform).
 std::vector<PlatformVerdict> recommend(std::span<const PlatformRow> rows, const Constraints& constraints);
+
+// A requirement judged per platform outside the comparison (the control loop, sustained performance) adds its
+// checks to each verdict (`checks_of(platform)`; a check not met, or without a value, is not met), then the
+// recommendation is made again: the most compute among the platforms that now meet everything.
+void add_requirement_checks(std::vector<PlatformVerdict>& verdicts,
+                            const std::function<std::vector<ConstraintCheck>(const std::string&)>& checks_of);
+
+// The tightest relative margin (margin / required) among the checks that have a value, for ranking a
+// requirement's verdicts; a limit of 0 counts 0 when met and -infinity when not; +infinity when none has a value.
+double tightest_relative_margin(std::span<const ConstraintCheck> checks);
 
 }  // namespace bs

@@ -200,6 +200,61 @@ class TestDecisionStore : public QObject {
     QCOMPARE(bs::stored_decision(ws)->loop, loop);
   }
 
+  // #53: the sustained requirement is kept beside the decision's row (a workspace setting, no schema change), read
+  // back with the rest, checked on the way in and out, and removed with the decision.
+  void sustained_requirement_is_kept_and_checked() {
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("d.bsw").toStdString();
+    {
+      bs::Workspace ws(path);
+      bs::StoredDecision d;
+      d.sustained = "stability>=97%,minutes>=20";
+      QVERIFY(d.constrained());  // a requirement alone is a constraint
+      bs::set_stored_decision(ws, d);
+    }
+    {
+      bs::Workspace ws(path);
+      const auto back = bs::stored_decision(ws);
+      QVERIFY(back);
+      QCOMPARE(back->sustained, std::string("stability>=97%,minutes>=20"));
+      QVERIFY(back->loop.empty() && !back->power_budget_w);
+      QCOMPARE(QString::fromStdString(bs::describe_constraints(*back)),
+               QString("sustained stability >= 97 %, at least 20 min"));
+      const bs::DecisionInputs in = bs::decision_inputs(&ws);
+      QVERIFY(in.sustained);
+      QCOMPARE(*in.sustained->min_minutes, 20.0);
+      // Refused with what is wrong; the stored one stays.
+      bs::StoredDecision bad = *back;
+      bad.sustained = "stability>=fast";
+      try {
+        bs::set_stored_decision(ws, bad);
+        QFAIL("a sustained requirement that does not parse was stored");
+      } catch (const bs::WorkspaceError& e) {
+        QVERIFY2(QString(e.what()).contains("the sustained requirement: sustained requirement term 'stability>=fast'"),
+                 e.what());
+      }
+      QCOMPARE(bs::stored_decision(ws)->sustained, std::string("stability>=97%,minutes>=20"));
+      // A decision without it clears it; removing the decision removes it too.
+      bs::StoredDecision plain;
+      plain.min_fps = 5;
+      bs::set_stored_decision(ws, plain);
+      QVERIFY(bs::stored_decision(ws)->sustained.empty());
+      bs::set_stored_decision(ws, *back);
+      bs::set_stored_decision(ws, std::nullopt);
+      QVERIFY(ws.settings("decision/").empty());
+      bs::set_stored_decision(ws, *back);
+      // A hand-edited setting that does not parse is refused when read, naming it.
+      ws.set_setting("decision/sustained", "minutes>=x");
+      try {
+        bs::stored_decision(ws);
+        QFAIL("a damaged sustained requirement was read");
+      } catch (const bs::WorkspaceError& e) {
+        QCOMPARE(e.kind(), bs::WorkspaceError::Kind::Corrupt);
+        QVERIFY2(QString(e.what()).contains("decision/sustained: 'minutes>=x'"), e.what());
+      }
+    }
+  }
+
   // Schema 9 is #45's headroom table: a version-9 file keeps its measurements and gains the decision's tables.
   // Issue #50.2: the inputs the GUI's Platforms tab and the CLI both read (store/decision_inputs.h). The Battery
   // tab's 5000 mAh edit (no decision stored) is the pack in effect; a decision naming a preset takes that preset but
