@@ -395,7 +395,13 @@ void MainWindow::reload() {
     platforms_->set_headroom(std::move(measurements));  // the Platforms tab's control-loop requirement
     headroom_->set_measurements(std::move(stored));
   }
-  sustain_->set_records(workspace_ ? workspace_->sustain_runs() : std::vector<StoredSustainRun>{});
+  {
+    std::vector<StoredSustainRun> stored = workspace_ ? workspace_->sustain_runs() : std::vector<StoredSustainRun>{};
+    std::vector<SustainRun> records;
+    for (const StoredSustainRun& s : stored) records.push_back(s.run);
+    platforms_->set_sustained(std::move(records));  // the Platforms tab's sustained requirement
+    sustain_->set_records(std::move(stored));
+  }
   feed_lens_tab();
   refresh_views();
   show_damage();

@@ -188,7 +188,8 @@ void MainWindow::export_report() {
   (dialog.pdf() ? request.pdf_path : request.html_path) = path;
   request.constraints = platforms_->constraints();
   request.comparison = platforms_->options();
-  request.loop = platforms_->loop_requirement();  // the Platforms tab's control loop, when set and readable
+  request.loop = platforms_->loop_requirement();            // the Platforms tab's control loop, when set and readable
+  request.sustained = platforms_->sustained_requirement();  // and its sustained requirement
   if (workspace_)
     for (const auto& [platform, id] : chosen_logs(*workspace_)) request.chosen_log_platforms.push_back(platform);
   // The Platforms tab's candidates (library computers chosen there) become the report's "Candidates" section,

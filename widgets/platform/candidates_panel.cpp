@@ -137,9 +137,11 @@ CandidatesPanel::CandidatesPanel(QWidget* parent) : QWidget(parent) {
 void CandidatesPanel::set_own(std::vector<PlatformRow> rows, std::vector<PipelineRun> pipelines,
                               std::vector<DnnRun> dnn, std::vector<ResultSet> result_sets,
                               const Constraints& constraints, const ComparisonOptions& options,
-                              std::optional<std::vector<headroom::LoopVerdict>> loop) {
+                              std::optional<std::vector<headroom::LoopVerdict>> loop,
+                              std::optional<std::vector<sustain::SustainVerdict>> sustained) {
   rows_ = std::move(rows);
   loop_ = std::move(loop);
+  sustained_ = std::move(sustained);
   pipelines_ = std::move(pipelines);
   dnn_ = std::move(dnn);
   sets_ = std::move(result_sets);
@@ -169,6 +171,7 @@ void CandidatesPanel::recompute() {
   in.result_sets = sets_;
   in.lib = &lib.library;
   if (loop_) in.loop = &*loop_;
+  if (sustained_) in.sustained = &*sustained_;
   QString note;
   try {
     in.library = select_library(lib.library, selection().toStdString());

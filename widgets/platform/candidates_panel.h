@@ -30,7 +30,8 @@ class CandidatesPanel : public QWidget {
   // The own platforms and results, with the constraints and battery of the tab; recomputes the ranking.
   void set_own(std::vector<PlatformRow> rows, std::vector<PipelineRun> pipelines, std::vector<DnnRun> dnn,
                std::vector<ResultSet> result_sets, const Constraints& constraints, const ComparisonOptions& options,
-               std::optional<std::vector<headroom::LoopVerdict>> loop = std::nullopt);
+               std::optional<std::vector<headroom::LoopVerdict>> loop = std::nullopt,
+               std::optional<std::vector<sustain::SustainVerdict>> sustained = std::nullopt);
   // "orin,pi5": library computer ids or aliases, or result ids. An unknown word is said in the panel's note.
   void set_selection(const QString& spec);
   QString selection() const;
@@ -71,7 +72,8 @@ class CandidatesPanel : public QWidget {
   std::vector<ResultSet> sets_;
   Constraints constraints_;
   ComparisonOptions options_;
-  std::optional<std::vector<headroom::LoopVerdict>> loop_;  // the control loop's verdicts, when one is required
+  std::optional<std::vector<headroom::LoopVerdict>> loop_;         // the control loop's verdicts, when one is required
+  std::optional<std::vector<sustain::SustainVerdict>> sustained_;  // the sustained verdicts, when one is required
   std::vector<CandidateClass> classes_;
   std::vector<PeakClass> peaks_;
 };

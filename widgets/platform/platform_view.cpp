@@ -141,6 +141,16 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
       tr("RATE (1kHz, 500Hz), limits p50|p99|p99.9|p99.99|max<=TIME (ns, us, ms), misses<=PERCENT%, "
          "max-consecutive-misses<=N, and load=PHASE (pipeline@30fps, dnn:mobilenet-ssd, flops, idle); "
          "without load= every phase must pass"));
+  use_sustained_ = new QCheckBox(tr("Sustained:"), this);
+  sustained_ = new QLineEdit(QStringLiteral("stability>=97%,minutes>=20"), this);
+  use_sustained_->setToolTip(
+      tr("A sustained-performance requirement checked against each platform's sustained records (the Sustained tab, "
+         "benchscope-cli sustain, imported tegrastats/jtop/nvidia-smi logs): a platform without one is unknown and "
+         "never passes"));
+  sustained_->setToolTip(
+      tr("Terms separated by commas: stability>=PERCENT% (worst / best interval; 3DMark: 97 % is stable), "
+         "minutes>=N (the run lasted at least this long), throttle=none (no clock below 80 % of its maximum, no zone "
+         "at its trip point), sustained>=RATE (mean of the last third, in the record's unit)"));
   auto* export_tex = new QPushButton(tr("Export LaTeX…"), this);
   auto* export_csv = new QPushButton(tr("Export CSV…"), this);
 
@@ -165,7 +175,9 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   // A row of its own: the battery row already fills a 1280 px window beside the workspace dock.
   auto* loop_row = new QHBoxLayout;
   loop_row->addWidget(use_loop_);
-  loop_row->addWidget(loop_, 1);
+  loop_row->addWidget(loop_, 2);
+  loop_row->addWidget(use_sustained_);
+  loop_row->addWidget(sustained_, 1);
 
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
@@ -238,6 +250,10 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   connect(use_loop_, &QCheckBox::clicked, this, &PlatformView::user_changed);
   connect(loop_, &QLineEdit::editingFinished, this, &PlatformView::recompute);
   connect(loop_, &QLineEdit::editingFinished, this, &PlatformView::user_changed);
+  connect(use_sustained_, &QCheckBox::toggled, this, &PlatformView::recompute);
+  connect(use_sustained_, &QCheckBox::clicked, this, &PlatformView::user_changed);
+  connect(sustained_, &QLineEdit::editingFinished, this, &PlatformView::recompute);
+  connect(sustained_, &QLineEdit::editingFinished, this, &PlatformView::user_changed);
   connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::recompute);
   connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::user_changed);
   connect(candidates_, &CandidatesPanel::selection_edited, this, &PlatformView::user_changed);
@@ -399,6 +415,7 @@ StoredDecision PlatformView::decision() const {
   // The control loop as it counts: a requirement that does not parse is ignored by the verdicts (the summary says
   // why), so it is not part of the decision either.
   if (const auto loop = loop_requirement()) d.loop = loop->text;
+  if (const auto sustained = sustained_requirement()) d.sustained = sustained->text;
   return d;
 }
 
@@ -408,7 +425,7 @@ void PlatformView::apply_decision(const std::optional<StoredDecision>& stored, c
   const StoredDecision d = stored.value_or(StoredDecision{});
   {
     const QSignalBlocker b1(use_budget_), b2(use_fps_), b3(use_runtime_), b4(budget_), b5(fps_), b6(runtime_),
-        b7(battery_), b8(extra_load_), b9(mission_), b10(use_loop_), b11(loop_);
+        b7(battery_), b8(extra_load_), b9(mission_), b10(use_loop_), b11(loop_), b12(use_sustained_), b13(sustained_);
     use_budget_->setChecked(d.power_budget_w.has_value());
     if (d.power_budget_w) budget_->setValue(*d.power_budget_w);
     use_fps_->setChecked(d.min_fps.has_value());
@@ -418,6 +435,8 @@ void PlatformView::apply_decision(const std::optional<StoredDecision>& stored, c
     // No stored requirement leaves the text as it is (the example, or what was typed) with the check box off.
     use_loop_->setChecked(!d.loop.empty());
     if (!d.loop.empty()) loop_->setText(QString::fromStdString(d.loop));
+    use_sustained_->setChecked(!d.sustained.empty());
+    if (!d.sustained.empty()) sustained_->setText(QString::fromStdString(d.sustained));
     // "" follows the Battery tab (the first choice while it is known); a preset that is gone falls back to it too.
     const int preset = d.battery.empty() ? -1 : battery_->findData(QString::fromStdString(d.battery));
     battery_->setCurrentIndex(preset >= 0 ? preset : 0);
@@ -515,8 +534,40 @@ void PlatformView::recompute() {
       loop_->setStyleSheet(QStringLiteral("color:#b00020"));
     }
   }
+  // The sustained requirement's checks join them the same way: no sustained record is unknown, never passing.
+  sustained_verdicts_.clear();
+  std::optional<std::vector<sustain::SustainVerdict>> candidate_sustained;
+  QString sustained_text;
+  if (use_sustained_->isChecked()) {
+    try {
+      const sustain::SustainRequirement r = sustain::parse_sustain_requirement(sustained_->text().toStdString());
+      std::vector<std::string> names;
+      for (const PlatformRow& row : rows_) names.push_back(row.platform);
+      sustained_verdicts_ = sustain::evaluate_sustain(r, sustained_runs_, names);
+      sustain::apply_sustain(verdicts_, sustained_verdicts_);
+      candidate_sustained = sustained_verdicts_;
+      QStringList parts;
+      for (const sustain::SustainVerdict& v : sustained_verdicts_) {
+        QString part = QStringLiteral("%1 <b>%2</b>")
+                           .arg(QString::fromStdString(v.platform).toHtmlEscaped(),
+                                QString::fromStdString(std::string(sustain::to_string(v.status))));
+        const std::string why = v.status == sustain::SustainStatus::Pass ? v.margin : v.reason;
+        if (!why.empty()) part += QStringLiteral(" (%1)").arg(QString::fromStdString(why).toHtmlEscaped());
+        parts << part;
+      }
+      sustained_text = tr("<br>Sustained %1: %2.")
+                           .arg(QString::fromStdString(sustain::describe(r)).toHtmlEscaped(), parts.join("; "));
+      sustained_->setStyleSheet(QString());
+    } catch (const std::invalid_argument& e) {
+      sustained_text = tr("<br><span style='color:#b00020'>Sustained requirement ignored: %1</span>")
+                           .arg(QString::fromUtf8(e.what()).toHtmlEscaped());
+      sustained_->setStyleSheet(QStringLiteral("color:#b00020"));
+    }
+  }
+  loop_text += sustained_text;
   fill_table();
-  candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o, std::move(candidate_loop));
+  candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o, std::move(candidate_loop),
+                       std::move(candidate_sustained));
   const QString hidden =
       empty_columns_.isEmpty()
           ? QString()
@@ -578,7 +629,31 @@ void PlatformView::recompute() {
 
 bool PlatformView::constrained() const {
   const Constraints c = constraints();
-  return c.power_budget_w || c.min_fps || c.min_runtime_h || (use_loop_->isChecked() && !loop_->text().isEmpty());
+  return c.power_budget_w || c.min_fps || c.min_runtime_h || (use_loop_->isChecked() && !loop_->text().isEmpty()) ||
+         (use_sustained_->isChecked() && !sustained_->text().isEmpty());
+}
+
+std::optional<sustain::SustainRequirement> PlatformView::sustained_requirement() const {
+  if (!use_sustained_->isChecked()) return std::nullopt;
+  try {
+    return sustain::parse_sustain_requirement(sustained_->text().toStdString());
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+void PlatformView::set_sustained(std::vector<SustainRun> runs) {
+  sustained_runs_ = std::move(runs);
+  recompute();
+}
+
+void PlatformView::set_sustained_requirement(const QString& text) {
+  {
+    const QSignalBlocker b1(sustained_), b2(use_sustained_);
+    sustained_->setText(text);
+    use_sustained_->setChecked(!text.isEmpty());
+  }
+  recompute();
 }
 
 std::optional<headroom::LoopRequirement> PlatformView::loop_requirement() const {

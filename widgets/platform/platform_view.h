@@ -10,6 +10,7 @@
 #include "power/shared_traces.h"
 #include "store/battery_preset_store.h"
 #include "store/decision_store.h"
+#include "sustain/sustain_requirement.h"
 
 class QCheckBox;
 class QComboBox;
@@ -88,6 +89,14 @@ class PlatformView : public QWidget {
   QLineEdit* loop_edit() const { return loop_; }
   const std::vector<headroom::LoopVerdict>& loop_verdicts() const { return loop_verdicts_; }
   std::optional<headroom::LoopRequirement> loop_requirement() const;  // null when off or mistyped
+  // Sustained records (the Sustained tab, benchscope-cli sustain, imported logs) for the sustained requirement.
+  void set_sustained(std::vector<SustainRun> runs);
+  // The sustained requirement (sustain/sustain_requirement.h syntax); empty: none. Unknown is never passing.
+  void set_sustained_requirement(const QString& text);
+  QCheckBox* sustained_check() const { return use_sustained_; }
+  QLineEdit* sustained_edit() const { return sustained_; }
+  const std::vector<sustain::SustainVerdict>& sustained_verdicts() const { return sustained_verdicts_; }
+  std::optional<sustain::SustainRequirement> sustained_requirement() const;  // null when off or mistyped
   // What the controls say, as the workspace keeps it (store/decision_store.h): constraints, battery choice ("" while
   // it follows the Battery tab), parallel load, mission, library candidates.
   StoredDecision decision() const;
@@ -145,6 +154,10 @@ class PlatformView : public QWidget {
   QLineEdit* loop_ = nullptr;
   std::vector<headroom::HeadroomMeasurement> headroom_;
   std::vector<headroom::LoopVerdict> loop_verdicts_;
+  QCheckBox* use_sustained_ = nullptr;
+  QLineEdit* sustained_ = nullptr;
+  std::vector<SustainRun> sustained_runs_;
+  std::vector<sustain::SustainVerdict> sustained_verdicts_;
   StoredDecision last_decision_;  // as last applied from the workspace or emitted
   bool decision_stored_ = false;  // the workspace keeps a decision (applied from it, or emitted since)
   QString decision_problem_;      // the stored decision could not be read: why (empty when it could)

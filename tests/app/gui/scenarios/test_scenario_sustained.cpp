@@ -4,22 +4,29 @@
 //    and whose package zone reaches its 95 °C trip point at 10 s, its rate falling with them. The tab names the
 //    onset (10 s), what throttled and the stability (60 %: not stable), draws rate, clocks and temperatures on one
 //    time axis with the throttled span shaded, re-judges at once when the stable threshold is lowered, and Ctrl+E
-//    exports a figure that names every series and every axis.
+//    exports a figure that names every series and every axis. The Platforms tab's "Sustained:" requirement
+//    (stability>=97%) fails the NUC by the same margin `benchscope-cli platforms --require-sustained` gives.
 //  - a_run_here_comes_home: Load "flops:1" for 3 s every 0.5 s, Run: the intervals are drawn as they come, the run is
 //    stored in the workspace and shown (this machine's clocks and temperatures, or what it does not expose).
 //  - a_jetson_log_shows_its_clocks: a real tegrastats log imported (File > Import files…): the tab lists its clocks
 //    and temperatures, and says throttling is unknown (tegrastats states no maximum clock and no trip point).
 #include <qcustomplot.h>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTest>
 
+#include "../../../support/cli_harness.h"
 #include "../../../support/pdf_readback.h"
 #include "../../../support/scenario_window.h"
+#include "platform/platform_view.h"
 #include "store/workspace.h"
 #include "sustain/sustain_import.h"
 #include "sustain/sustain_run_panel.h"
@@ -118,6 +125,28 @@ class TestScenarioSustained : public QObject {
     QTest::keyClicks(view->stable_percent(), "55");
     QTest::keyClick(view->stable_percent(), Qt::Key_Enter);
     QVERIFY2(view->summary()->text().contains("stable (threshold 55.0 %)"), qPrintable(view->summary()->text()));
+
+    // The Platforms tab's sustained requirement, as typed: the NUC fails it with its margin, and the CLI beside the
+    // window says the same of the same workspace.
+    QVERIFY(bs::test::open_tab(w, "Platforms"));
+    bs::ui::PlatformView* platforms = w.platform_view();
+    QTest::mouseClick(platforms->sustained_check(), Qt::LeftButton);
+    platforms->sustained_edit()->selectAll();
+    QTest::keyClicks(platforms->sustained_edit(), "stability>=97%");
+    QTest::keyClick(platforms->sustained_edit(), Qt::Key_Return);
+    QCOMPARE(platforms->sustained_verdicts().size(), std::size_t{1});
+    const bs::sustain::SustainVerdict& v = platforms->sustained_verdicts().front();
+    QCOMPARE(v.platform, std::string("Chest NUC"));
+    QCOMPARE(v.status, bs::sustain::SustainStatus::Fail);
+    QVERIFY2(v.margin.find("60.0 %") != std::string::npos, v.margin.c_str());
+    const bs::test::CliResult cli = bs::test::cli({"platforms", ws, "--require-sustained", "stability>=97%", "--json"});
+    QVERIFY2(cli.code == 0, cli.err.constData());
+    const QJsonObject doc = QJsonDocument::fromJson(cli.out).object();
+    const QJsonArray listed = doc.value("sustained").toObject().value("platforms").toArray();
+    QCOMPARE(listed.size(), 1);
+    QCOMPARE(listed[0].toObject().value("status").toString(), QStringLiteral("FAILS"));
+    QCOMPARE(listed[0].toObject().value("margin").toString(), QString::fromStdString(v.margin));
+    QVERIFY(bs::test::open_tab(w, "Sustained"));
 
     if (QStandardPaths::findExecutable("pdftotext").isEmpty()) QSKIP("pdftotext (poppler-utils) reads the export back");
     const QString stem = dir.filePath("sustained");
