@@ -419,8 +419,8 @@ FigureOptions layout_figure(QCustomPlot& plot, const FigureOptions& o) {
   fit_value_axes(plot);
   FigureOptions sized = o;
   if (o.height_mm <= 0) {
-    // Panels one over the other share the width: each gets at least 40 % of the height one plot would have.
-    const double panels = std::max(1.0, 0.4 * static_cast<double>(plot.axisRectCount()) + 0.2);
+    // Panels one over the other share the width: each gets half the height one plot would have.
+    const double panels = std::max(1.0, 0.5 * static_cast<double>(plot.axisRectCount()) + 0.1);
     const double axes_pt = width_pt * (o.width_mm < 80 ? 0.8 : 0.62) * panels;
     sized.height_mm = (axes_pt + below_pt) * 25.4 / 72.0;
   }

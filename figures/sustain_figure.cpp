@@ -69,7 +69,8 @@ void add_bands(QCustomPlot& plot, QCPAxisRect* rect, const std::vector<std::pair
 }
 
 // A vertical mark through a panel at `t`, with `text` at its top in the panel where `text` is given.
-void add_mark(QCustomPlot& plot, QCPAxisRect* rect, double t, const QColor& color, const QString& text) {
+void add_mark(QCustomPlot& plot, QCPAxisRect* rect, double t, const QColor& color, const QString& text,
+              double label_y = 0.04) {
   auto* line = new QCPItemStraightLine(&plot);
   line->setClipAxisRect(rect);
   for (QCPItemPosition* p : {line->point1, line->point2})
@@ -84,7 +85,7 @@ void add_mark(QCustomPlot& plot, QCPAxisRect* rect, double t, const QColor& colo
   label->position->setAxisRect(rect);
   label->position->setTypeX(QCPItemPosition::ptPlotCoords);
   label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-  label->position->setCoords(t, 0.04);
+  label->position->setCoords(t, label_y);  // from the top of the panel, as a share of its height
   label->setPositionAlignment(Qt::AlignTop | Qt::AlignLeft);
   label->setText(text);
   label->setColor(color);
@@ -124,7 +125,7 @@ int count_cpus(const SustainRun& run) {
 
 void draw_rate(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& run, const sustain::SustainAnalysis& a) {
   const QString unit = QString::fromStdString(run.rate_unit);
-  rect->axis(QCPAxis::atLeft)->setLabel(QObject::tr("rate (%1)").arg(unit));
+  rect->axis(QCPAxis::atLeft)->setLabel(QObject::tr("rate\n(%1)").arg(unit));
   set_steps(add_series(plot, rect, QObject::tr("rate per interval"), device_color(0), Qt::SolidLine, 1.8), run,
             run.rate);
   if (a.sustained.n > 0)
@@ -135,16 +136,17 @@ void draw_rate(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& run, cons
     add_level(plot, rect, run, *a.peak_rate * a.options.stable_percent / 100,
               QObject::tr("%1 % of the best interval").arg(a.options.stable_percent, 0, 'g', 3), QColor(120, 120, 120),
               Qt::DotLine);
-  if (a.first_slow)
+  // Named where it is not the onset of throttling too (that mark, at the same time, says it).
+  if (a.first_slow && !(a.throttle.onset_s && *a.throttle.onset_s == a.first_slow->start_s))
     add_mark(plot, rect, a.first_slow->start_s, QColor(90, 90, 90),
-             QObject::tr("first slow interval %1 s").arg(a.first_slow->start_s, 0, 'f', 1));
+             QObject::tr("first slow interval %1 s").arg(a.first_slow->start_s, 0, 'f', 1), 0.55);
 }
 
 void draw_clocks(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& run, const sustain::SustainAnalysis& a) {
   // As % of the maximum where every clock states one (then the throttle threshold is one line for all), else MHz.
   const bool percent =
       std::all_of(run.clocks.begin(), run.clocks.end(), [](const ClockSeries& c) { return c.max_hz && *c.max_hz > 0; });
-  rect->axis(QCPAxis::atLeft)->setLabel(percent ? QObject::tr("clock (% of max)") : QObject::tr("clock (MHz)"));
+  rect->axis(QCPAxis::atLeft)->setLabel(percent ? QObject::tr("clock\n(% of max)") : QObject::tr("clock\n(MHz)"));
   int color = 2;
   if (const int cpus = count_cpus(run); cpus > 0) {
     const auto [lowest, mean] = cpu_lowest_and_mean(run, percent);
@@ -168,7 +170,7 @@ void draw_clocks(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& run, co
 }
 
 void draw_temperatures(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& run) {
-  rect->axis(QCPAxis::atLeft)->setLabel(QObject::tr("temperature (°C)"));
+  rect->axis(QCPAxis::atLeft)->setLabel(QObject::tr("temperature\n(°C)"));
   std::vector<const TemperatureSeries*> shown;
   for (const TemperatureSeries& t : run.temperatures) shown.push_back(&t);
   // The hottest first, so a cap drops the coolest; equal peaks keep the record's order.
@@ -197,7 +199,7 @@ void draw_temperatures(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& r
 }
 
 void draw_power(QCustomPlot& plot, QCPAxisRect* rect, const SustainRun& run) {
-  rect->axis(QCPAxis::atLeft)->setLabel(QObject::tr("power (W)"));
+  rect->axis(QCPAxis::atLeft)->setLabel(QObject::tr("power\n(W)"));
   const QString sensor = run.power_sensor.empty() ? QObject::tr("power") : QString::fromStdString(run.power_sensor);
   set_steps(add_series(plot, rect, sensor, device_color(4)), run, run.power_w);
 }
@@ -282,6 +284,8 @@ int sustain_figure(QCustomPlot& plot, const SustainRun& run, const sustain::Sust
       if (other != rect)
         QObject::connect(rect->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
                          other->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::setRange));
+    // Few value ticks: the panels share the figure's height, and an export's panel is a few lines tall.
+    rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3);
     rect->setRangeDrag(Qt::Horizontal);
     rect->setRangeZoom(Qt::Horizontal);
   }
@@ -294,9 +298,11 @@ int sustain_figure(QCustomPlot& plot, const SustainRun& run, const sustain::Sust
     y->setRange(std::min(0.0, r.lower - pad), r.upper + pad);  // from 0: a drop reads as the share it is
   }
   // The legend under the panels, in rows, never over the data.
+  // Three entries a row: the legend's width is the plot's minimum width, and the tab must fit a 1280 px window
+  // beside the workspace dock.
   plot.legend->setVisible(true);
-  plot.legend->setFillOrder(QCPLegend::foColumnsFirst);
-  plot.legend->setWrap(4);
+  plot.legend->setWrap(3);
+  plot.legend->setFillOrder(QCPLegend::foColumnsFirst, true);  // rearranged: the entries were added before
   grid->addElement(static_cast<int>(rects.size()) + 1, 0, plot.legend);
   grid->setRowStretchFactor(static_cast<int>(rects.size()) + 1, 0.001);
   plot.replot();
