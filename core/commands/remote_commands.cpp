@@ -29,7 +29,7 @@ const std::vector<RemoteCommand>& remote_commands() {
       {"sensors", 1, false, false},
       {"headroom", 1, false, true, canonical<HeadroomSettings, headroom_from_words>},
       {"pipeline", 1, false, true, canonical<PipelineSettings, pipeline_from_words>},
-      {"sustain", 1, false, true, canonical<SustainSettings, sustain_from_words>},
+      {"sustain", 1, true, true, canonical<SustainSettings, sustain_from_words>},
   };
   return list;
 }

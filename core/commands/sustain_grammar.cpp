@@ -42,12 +42,14 @@ std::vector<std::string> to_words(const SustainSettings& s) {
   write_power(power, a);
   write_option(a, "--workspace", s.workspace);
   if (s.json) a.push_back("--json");
+  write_option(a, "--events", s.events);
   return a;
 }
 
 SustainSettings sustain_from_words(const std::vector<std::string>& words) {
   std::set<std::string> valued = {"--load",     "--seconds",        "--interval",           "--detector",
-                                  "--platform", "--stable-percent", "--throttle-threshold", "--workspace"};
+                                  "--platform", "--stable-percent", "--throttle-threshold", "--workspace",
+                                  "--events"};
   valued.insert(kPowerWordOptions.begin(), kPowerWordOptions.end());
   Words args = read_words(words, {"--json"}, valued);
   if (!args.positional.empty()) throw UsageError("sustain takes no positional argument ('" + args.positional[0] + "')");
@@ -69,6 +71,8 @@ SustainSettings sustain_from_words(const std::vector<std::string>& words) {
   s.power.sysfs_root = s.sysfs_root;
   s.workspace = args.value("--workspace");
   s.json = args.has("--json");
+  s.events = args.value("--events");
+  if (s.events && *s.events != "jsonl") throw UsageError("--events takes jsonl (got '" + *s.events + "')");
   return s;
 }
 

@@ -25,6 +25,7 @@ struct SustainSettings {
   PowerWords power;                       // --power, --power-interval-ms (its sysfs_root is the one above)
   std::optional<std::string> workspace;   // --workspace WS
   bool json = false;                      // --json
+  std::optional<std::string> events;      // --events jsonl: the run as events of stream v1 on stdout (a robot's job)
   bool operator==(const SustainSettings&) const = default;
 };
 

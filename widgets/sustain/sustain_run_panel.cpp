@@ -148,7 +148,6 @@ void SustainRunPanel::start() {
     if (controller_->on_robot()) {
       settings.platform = target_->platform().toStdString();
       if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
-      settings.json = true;                                // its intervals stream to the desk as they complete
       controller_->start_on_robot(commands::to_words(settings));
       return;
     }

@@ -4,7 +4,7 @@
 // and how often to take its rate, clocks and temperatures, "Record power", and where: this computer or a robot over
 // SSH (RunHereOrRobot). Here, core's run_sustain runs off the GUI thread; each interval comes back at once for the
 // live plot (`live_interval`), and the finished run is handed over to be stored (`measured`). On a robot, the same
-// settings go as `benchscope-cli sustain --json` words (core: commands/sustain_grammar.h), the intervals it streams
+// settings go as `benchscope-cli sustain` words (core: commands/sustain_grammar.h), the intervals its job streams
 // feed the same live plot, Cancel stops it there and the job comes home with the robot's provenance
 // (`robot_finished`). Every setting is remembered (QSettings).
 #include <QWidget>

@@ -10,6 +10,7 @@
 #include "commands/sustain_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
+#include "common/events_option.h"
 #include "common/signals.h"
 #include "headroom/loads/load_spec.h"
 #include "power/power_args.h"
@@ -37,7 +38,10 @@ void json_line(std::ostream& out, const char* type, double t, nlohmann::json fie
   out << line.dump() << std::endl;
 }
 
-int run_sustain_cmd(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+// `events` (--events jsonl, a robot's job): the intervals and the result go out as events of stream v1 on stdout,
+// between the stream's start and end, and the text goes to `out`, which is then stderr.
+int run_sustain_with(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err,
+                     remote::EventWriter* events) {
   const commands::SustainSettings s = commands::sustain_from_words(raw);
   headroom::LoadOptions options;
   options.pipeline_detector = s.detector;
@@ -75,7 +79,10 @@ int run_sustain_cmd(const std::vector<std::string>& raw, std::ostream& out, std:
     for (const std::string& w : warnings)
       if (warned.insert(w).second) err << "benchscope-cli: warning: " << w << "\n";
     err << "benchscope-cli: sustain " << sustain::interval_line(so_far, i) << std::endl;
-    if (s.json) json_line(out, "interval", so_far.t_s[i], sustain::interval_json(so_far, i));
+    if (events)
+      events->write("interval", sustain::interval_json(so_far, i));
+    else if (s.json)
+      json_line(out, "interval", so_far.t_s[i], sustain::interval_json(so_far, i));
   };
   sustain::RunOutput result;
   try {
@@ -94,18 +101,21 @@ int run_sustain_cmd(const std::vector<std::string>& raw, std::ostream& out, std:
   ao.stable_percent = s.stable_percent;
   ao.throttle_threshold = s.throttle_threshold;
   const sustain::SustainAnalysis analysis = sustain::analyse(run, ao);
-  if (s.json) {
+  if (s.json || events) {
     nlohmann::json doc = sustain::result_json(run, analysis);
     doc["load_notes"] = result.load_notes;
     doc["warnings"] = result.warnings;
     doc["cancelled"] = result.cancelled;
-    json_line(out, "result", run.t_s.back(), std::move(doc));
+    if (events)
+      events->write("result", std::move(doc));
+    else
+      json_line(out, "result", run.t_s.back(), std::move(doc));
   } else {
     out << "Sustained run: " << run.label << " on " << run.platform << " (" << run.t_s.size() << " intervals of "
         << fixed(run.interval_s, 2) << " s)\n";
     for (const sustain::SummaryRow& row : sustain::summary_rows(run, analysis)) {
       std::string label = row.label + ":";
-      label.resize(std::max<std::size_t>(label.size() + 1, 22), ' ');
+      label.resize(std::max<std::size_t>(label.size() + 1, 17), ' ');
       out << "  " << label << row.value << "\n";
     }
     for (const std::string& n : result.load_notes) out << "  load: " << n << "\n";
@@ -119,13 +129,19 @@ int run_sustain_cmd(const std::vector<std::string>& raw, std::ostream& out, std:
   return result.cancelled ? 1 : 0;
 }
 
+int run_sustain_cmd(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
+  return run_with_events("sustain", raw, out, [&](remote::EventWriter* events) {
+    return run_sustain_with(raw, events ? err : out, err, events);
+  });
+}
+
 const CommandRegistrar registrar({
     "sustain",
     "sustained performance: a load's rate, clocks, temperatures and power per interval; stability and throttling",
     "usage: benchscope-cli sustain [--load flops[:W]|pipeline[@FPS]|dnn[:NET][@RATE]] [--seconds S] [--interval I]\n"
     "         [--detector hog|none|mobilenet-ssd|yolo-n] [--stable-percent P] [--throttle-threshold F]\n"
     "         [--platform NAME] [--workspace WS] [--json] [--power SENSOR|auto|none] [--power-interval-ms M]\n"
-    "         [--sysfs-root DIR]\n"
+    "         [--sysfs-root DIR] [--events jsonl]\n"
     "  Runs one load without a break for --seconds S (default 600: a RoboCup half) and records, every --interval I\n"
     "  seconds (default 1), its achieved rate (GFLOPS, fps or inferences/s), every CPU clock (cpufreq) and devfreq\n"
     "  clock against its maximum, every thermal zone (with its lowest passive/hot/critical trip point) and hwmon\n"
@@ -138,7 +154,7 @@ const CommandRegistrar registrar({
     "  --json: one JSON line per interval on stdout ({\"v\":1,\"type\":\"interval\",...}) as it completes, then the\n"
     "  result as one line ({\"v\":1,\"type\":\"result\",...}: intervals, stability_percent, throttle, ...).\n"
     "  --workspace WS stores the run (with the power trace).\n" +
-        std::string(kPowerUsage),
+        std::string(kPowerUsage) + "\n" + kEventsUsage,
     run_sustain_cmd,
 });
 

@@ -362,7 +362,6 @@ class TestRemoteGui : public QObject {
     for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) QTest::qWait(20);
     QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
     QCOMPARE(done.count(), 1);
-    QVERIFY2(live.count() >= 3, "the robot's intervals were not drawn as they came");
     for (int i = 0; i < 100 && panel->running(); ++i) QTest::qWait(20);
     const auto stored = w.workspace()->sustain_runs();
     QCOMPARE(stored.size(), std::size_t{1});
@@ -373,6 +372,7 @@ class TestRemoteGui : public QObject {
     const std::string command = setting(r.provenance, "remote command");
     QVERIFY2(command.find("sustain ") != std::string::npos && command.find(" --load flops:1") != std::string::npos,
              command.c_str());
+    QVERIFY2(live.count() >= 3, ("the robot's intervals were not drawn as they came: " + command).c_str());
     QCOMPARE(w.sustain_view()->chooser()->count(), 1);
     screenshots(w, "sustained-robot-done");
   }
