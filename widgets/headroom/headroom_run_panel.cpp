@@ -4,7 +4,6 @@
 #include <QCheckBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
-#include <QFutureWatcher>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -13,15 +12,13 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
-#include <QTimer>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include "commands/headroom_grammar.h"
 #include "headroom/command_load.h"
 #include "headroom/loads/load_spec.h"
 #include "power/power_sensor_box.h"
-#include "remote/remote_run.h"
 #include "remote/robot_target.h"
+#include "remote/run_here_or_robot.h"
 #include "sensors/recorder.h"
 
 namespace bs::ui {
@@ -49,8 +46,7 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
       cancel_(new QPushButton(tr("Cancel"), this)),
       progress_(new QProgressBar(this)),
       status_(new QLabel(this)),
-      watcher_(new QFutureWatcher<Outcome>(this)),
-      progress_state_(std::make_shared<Progress>()) {
+      controller_(new RunHereOrRobot(target_, this)) {
   const QSettings s;
   rate_->setRange(headroom::kMinRateHz, headroom::kMaxRateHz);
   rate_->setDecimals(0);
@@ -132,7 +128,16 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
 
   connect(run_, &QPushButton::clicked, this, &HeadroomRunPanel::start);
   connect(cancel_, &QPushButton::clicked, this, &HeadroomRunPanel::cancel);
-  connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &HeadroomRunPanel::finished);
+  connect(controller_, &RunHereOrRobot::busy_changed, this, &HeadroomRunPanel::busy);
+  connect(controller_, &RunHereOrRobot::status, status_, &QLabel::setText);
+  connect(controller_, &RunHereOrRobot::failed, this, &HeadroomRunPanel::failed);
+  connect(controller_, &RunHereOrRobot::here_finished, this, &HeadroomRunPanel::here_finished);
+  connect(controller_, &RunHereOrRobot::robot_finished, this, &HeadroomRunPanel::remote_finished);
+  connect(controller_, &RunHereOrRobot::progress, this, [this](double fraction, const QString& step) {
+    progress_->setRange(0, 100);
+    progress_->setValue(static_cast<int>(fraction * 100));
+    if (!controller_->on_robot() && !step.isEmpty()) status_->setText(tr("Measuring: phase '%1'…").arg(step));
+  });
   for (QDoubleSpinBox* b : {rate_, seconds_, computation_})
     connect(b, &QDoubleSpinBox::valueChanged, this, &HeadroomRunPanel::save_settings);
   for (QSpinBox* b : {threads_, priority_}) connect(b, &QSpinBox::valueChanged, this, &HeadroomRunPanel::save_settings);
@@ -141,25 +146,13 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
   priority_->setEnabled(realtime_->isChecked());
   for (QLineEdit* e : {loads_, command_})
     connect(e, &QLineEdit::editingFinished, this, &HeadroomRunPanel::save_settings);
-  auto* timer = new QTimer(this);
-  timer->setInterval(100);
-  connect(timer, &QTimer::timeout, this, [this] {
-    if (!watcher_->isRunning()) return;  // a local run's progress; a robot's comes as its text
-    progress_->setValue(progress_state_->percent.load());
-    std::lock_guard lock(progress_state_->mutex);
-    if (!progress_state_->step.empty())
-      status_->setText(tr("Measuring: phase '%1'…").arg(QString::fromStdString(progress_state_->step)));
-  });
-  timer->start();
 }
 
 HeadroomRunPanel::~HeadroomRunPanel() {
-  remote_.reset();               // dropping the connection stops everything on the robot
-  if (token_) token_->cancel();  // a run still going must not outlive the widget it reports to
-  watcher_->waitForFinished();
+  delete controller_;  // cancels and waits for a run here, or drops the robot's connection, before the panel goes
 }
 
-bool HeadroomRunPanel::running() const { return watcher_->isRunning() || (remote_ && remote_->running()); }
+bool HeadroomRunPanel::running() const { return controller_->running(); }
 
 void HeadroomRunPanel::save_settings() const {
   QSettings s;
@@ -198,140 +191,64 @@ void HeadroomRunPanel::start() {
   if (running()) return;
   headroom::RunConfig config;
   std::vector<std::string> command_words;
+  std::shared_ptr<sensors::PowerRecorder> recorder;
   try {
     config = config_from_fields(command_words);
     if (target_->is_robot()) {
       start_remote(std::move(config));
       return;
     }
-    recorder_ = power_->start_recorder();  // null when "Record power" is off
+    recorder = power_->start_recorder();  // null when "Record power" is off
   } catch (const std::exception& e) {
     status_->setText(QString::fromUtf8(e.what()));
     emit failed(status_->text());
     return;
   }
-  token_ = std::make_shared<CancelToken>();
-  progress_state_->percent = 0;
-  {
-    std::lock_guard lock(progress_state_->mutex);
-    progress_state_->step.clear();
-  }
-  token_->set_progress([state = progress_state_](double f, std::string_view step) {
-    state->percent = static_cast<int>(f * 100);
-    std::lock_guard lock(state->mutex);
-    state->step = std::string(step);
+  output_ = std::make_shared<std::optional<headroom::RunOutput>>();
+  controller_->start_here([config, specs = loads_->text().toStdString(), command_words, recorder,
+                           output = output_](const CancelToken& token) {
+    // Loads are built here, off the GUI thread: a detector network takes a moment to build.
+    std::vector<std::unique_ptr<headroom::Load>> owned = headroom::make_loads(specs);
+    if (!command_words.empty()) owned.push_back(std::make_unique<headroom::CommandLoad>(command_words));
+    std::vector<headroom::Load*> loads;
+    for (auto& l : owned) loads.push_back(l.get());
+    *output = headroom::run_headroom(config, loads, recorder.get(), &token);
   });
-  run_->setEnabled(false);
-  cancel_->setEnabled(true);
-  progress_->setValue(0);
-  progress_->show();
   status_->setText(tr("Starting…"));
-  const std::string specs = loads_->text().toStdString();
-  watcher_->setFuture(
-      QtConcurrent::run([config, specs, command_words, token = token_, recorder = recorder_]() -> Outcome {
-        try {
-          // Loads are built here, off the GUI thread: a detector network takes a moment to build.
-          std::vector<std::unique_ptr<headroom::Load>> owned = headroom::make_loads(specs);
-          if (!command_words.empty()) owned.push_back(std::make_unique<headroom::CommandLoad>(command_words));
-          std::vector<headroom::Load*> loads;
-          for (auto& l : owned) loads.push_back(l.get());
-          return {headroom::run_headroom(config, loads, recorder.get(), token.get()), {}, false};
-        } catch (const Cancelled&) {
-          return {std::nullopt, {}, true};
-        } catch (const std::exception& e) {
-          return {std::nullopt, QString::fromUtf8(e.what()), false};
-        }
-      }));
 }
 
 void HeadroomRunPanel::start_remote(headroom::RunConfig config) {
-  const QString robot = target_->robot_name();
-  if (const QString why = target_->not_ready(tr("Run")); !why.isEmpty()) {
-    status_->setText(why);
-    emit failed(why);
-    return;
-  }
-  target_->remember_platform();
   config.platform = target_->platform().toStdString();
-  const QString platform = target_->platform();
   commands::HeadroomSettings settings;
   settings.config = config;
   settings.loads = loads_->text().trimmed().toStdString();
   settings.load_command = command_->text().trimmed().toStdString();
   if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
-  remote_ = std::make_unique<RemoteRun>(target_->target(), commands::to_words(settings));
-  RemoteRun* run = remote_.get();
-  // The robot reports its phases as lines of text; until one comes the bar only says that it is busy.
-  connect(run, &RemoteRun::remote_text, this,
-          [this, robot](const QString& line) { status_->setText(QStringLiteral("%1: %2").arg(robot, line)); });
-  connect(run, &RemoteRun::progress, this, [this](double f, const QString&) {
-    progress_->setRange(0, 100);
-    progress_->setValue(static_cast<int>(f * 100));
-  });
-  connect(run, &RemoteRun::finished, this, [this, run, platform, robot] {
-    const remote::RemoteJob& job = run->job();
-    status_->setText(
-        job.status == "cancelled"
-            ? tr("%1: cancelled (job %2); what it finished is imported").arg(robot, QString::fromStdString(job.id))
-            : tr("Measured on %1 (job %2)").arg(robot, QString::fromStdString(job.id)));
-    emit remote_finished(run, platform);
-    remote_done();
-  });
-  connect(run, &RemoteRun::failed, this, [this, robot](const QString& message) {
-    status_->setText(QStringLiteral("%1: %2").arg(robot, message));
-    emit failed(status_->text());
-    remote_done();
-  });
-  run_->setEnabled(false);
-  cancel_->setEnabled(true);
-  progress_->setRange(0, 0);
-  progress_->show();
-  status_->setText(tr("%1: checking the robot and starting…").arg(robot));
-  run->start();
+  controller_->start_on_robot(commands::to_words(settings));
 }
 
-void HeadroomRunPanel::remote_done() {
-  remote_.release()->deleteLater();  // we are in its signal
-  run_->setEnabled(true);
-  cancel_->setEnabled(false);
-  progress_->setRange(0, 100);
-  progress_->hide();
+void HeadroomRunPanel::busy(bool on) {
+  run_->setEnabled(!on);
+  cancel_->setEnabled(on);
+  progress_->setVisible(on);
+  // A robot says how far it is in its own time: until it does, the bar only says that it is busy.
+  progress_->setRange(0, on && controller_->on_robot() ? 0 : 100);
+  if (on) progress_->setValue(0);
 }
 
-void HeadroomRunPanel::cancel() {
-  if (remote_) {
-    remote_->cancel();
-    status_->setText(tr("Cancelling: the robot stops the load and the probe…"));
-    return;
-  }
-  if (token_) token_->cancel();
-  status_->setText(tr("Cancelling: stopping the load and the probe…"));
-}
+void HeadroomRunPanel::cancel() { controller_->cancel(); }
 
-void HeadroomRunPanel::finished() {
-  const Outcome outcome = watcher_->result();
-  recorder_.reset();
-  token_.reset();
-  run_->setEnabled(true);
-  cancel_->setEnabled(false);
-  progress_->hide();
-  if (outcome.cancelled) {
-    status_->setText(tr("Cancelled; nothing stored"));
-    return;
-  }
-  if (!outcome.output) {
-    status_->setText(tr("Failed: %1").arg(outcome.error));
-    emit failed(outcome.error);
-    return;
-  }
-  const headroom::HeadroomMeasurement& m = outcome.output->measurement;
+void HeadroomRunPanel::here_finished(bool cancelled) {
+  const std::shared_ptr<std::optional<headroom::RunOutput>> output = std::move(output_);
+  if (cancelled || !output || !*output) return;  // the controller said so in the status line
+  const headroom::HeadroomMeasurement& m = (*output)->measurement;
   status_->setText(tr("Measured %1 phase(s) on %2%3")
                        .arg(m.phases.size())
                        .arg(QString::fromStdString(m.platform))
                        .arg(m.realtime() ? QString()
                                          : tr(" — NON-REAL-TIME (normal thread): not comparable with "
                                               "real-time results")));
-  emit measured(*outcome.output);
+  emit measured(**output);
 }
 
 }  // namespace bs::ui

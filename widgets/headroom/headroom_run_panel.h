@@ -9,9 +9,7 @@
 // robot's phases show as they start, Cancel stops everything there, and the job is handed over to be imported
 // with the robot's provenance (remote_finished). Every setting is remembered (QSettings).
 #include <QWidget>
-#include <atomic>
 #include <memory>
-#include <mutex>
 #include <optional>
 
 #include "headroom/headroom_run.h"
@@ -24,18 +22,13 @@ class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
-template <class T>
-class QFutureWatcher;
-
-namespace bs::sensors {
-class PowerRecorder;
-}
 
 namespace bs::ui {
 
 class PowerSensorBox;
 class RemoteRun;
 class RobotTarget;
+class RunHereOrRobot;
 
 class HeadroomRunPanel : public QWidget {
   Q_OBJECT
@@ -68,17 +61,12 @@ class HeadroomRunPanel : public QWidget {
   void failed(const QString& message);
 
  private:
-  struct Outcome {
-    std::optional<headroom::RunOutput> output;
-    QString error;
-    bool cancelled = false;
-  };
-  void finished();
+  void here_finished(bool cancelled);
+  void busy(bool on);
   void save_settings() const;
   // The settings as a run configuration; throws std::invalid_argument saying what is wrong.
   headroom::RunConfig config_from_fields(std::vector<std::string>& command_words) const;
   void start_remote(headroom::RunConfig config);
-  void remote_done();
 
   QDoubleSpinBox* rate_;
   QDoubleSpinBox* seconds_;
@@ -90,21 +78,13 @@ class HeadroomRunPanel : public QWidget {
   QLineEdit* command_;
   PowerSensorBox* power_;
   RobotTarget* target_;
-  std::unique_ptr<RemoteRun> remote_;
   QPushButton* run_;
   QPushButton* cancel_;
   QProgressBar* progress_;
   QLabel* status_;
-  QFutureWatcher<Outcome>* watcher_;
-  std::shared_ptr<CancelToken> token_;
-  std::shared_ptr<sensors::PowerRecorder> recorder_;
-  // Written by the run's thread, read by a GUI timer.
-  struct Progress {
-    std::atomic<int> percent{0};
-    std::mutex mutex;
-    std::string step;
-  };
-  std::shared_ptr<Progress> progress_state_;
+  RunHereOrRobot* controller_;  // here or on the robot: starts, relays progress, cancels, says how it ended
+  // What the run here produced, written on its worker thread before it returns and read after here_finished.
+  std::shared_ptr<std::optional<headroom::RunOutput>> output_;
 };
 
 }  // namespace bs::ui

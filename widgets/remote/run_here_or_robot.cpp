@@ -4,6 +4,7 @@
 #include <QFutureWatcher>
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
+#include <mutex>
 
 #include "remote/remote_run.h"
 #include "remote/robot_target.h"
@@ -37,14 +38,35 @@ bool RunHereOrRobot::start_here(HereWork work) {
     return false;
   }
   token_ = std::make_shared<CancelToken>();
-  // Reported on the worker thread; delivered on this one. A report after this object is gone is dropped.
+  // Reported on the worker thread, as often as the work likes (a probe: every cycle); delivered on this one, the
+  // latest report only, with at most one delivery waiting: the event loop is never flooded. A report after this
+  // object is gone is dropped.
+  struct Latest {
+    std::mutex mutex;
+    double fraction = 0;
+    QString step;
+    bool waiting = false;
+  };
+  auto latest = std::make_shared<Latest>();
   QPointer<RunHereOrRobot> self(this);
-  token_->set_progress([self](double fraction, std::string_view step) {
-    const QString text = QString::fromUtf8(step.data(), static_cast<qsizetype>(step.size()));
+  token_->set_progress([self, latest](double fraction, std::string_view step) {
+    std::lock_guard lock(latest->mutex);
+    latest->fraction = fraction;
+    latest->step = QString::fromUtf8(step.data(), static_cast<qsizetype>(step.size()));
+    if (latest->waiting) return;
+    latest->waiting = true;
     QMetaObject::invokeMethod(
         self.data(),
-        [self, fraction, text] {
-          if (self) emit self->progress(fraction, text);
+        [self, latest] {
+          double f = 0;
+          QString text;
+          {
+            std::lock_guard inner(latest->mutex);
+            f = latest->fraction;
+            text = latest->step;
+            latest->waiting = false;
+          }
+          if (self) emit self->progress(f, text);
         },
         Qt::QueuedConnection);
   });
