@@ -3,7 +3,7 @@
 # /usr/share/bash-completion/completions/benchscope-cli.
 _benchscope_cli() {
   local cur="${COMP_WORDS[COMP_CWORD]}"
-  local commands="battery bench check compare completion devices efficiency figures frames headroom headroom-results help import job lens library peaks pipeline platforms power record-power remote report roofline run runs sensors synth-frame synth-power"
+  local commands="battery bench check compare completion devices efficiency figures frames headroom headroom-results help import job lens library peaks pipeline platforms power record-power remote report roofline run runs sensors sustain synth-frame synth-power"
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -28,15 +28,16 @@ _benchscope_cli() {
     library) options="--help --battery --budget --computer --csv --extra-load --figure --json --latex --min-fps --min-runtime" ;;
     peaks) options="--help --json --kind --precision" ;;
     pipeline) options="--help --backend --demosaic --detect-scale --detect-workers --detector --frames --json --lens --out --pattern --platform --policy --power --power-interval-ms --queue --synthetic --sysfs-root --workspace" ;;
-    platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --no-stored --require-loop --store --supply-volts --use-log --workspace" ;;
+    platforms) options="--help --battery --budget --candidates-csv --candidates-latex --csv --extra-load --json --latex --library --min-fps --min-runtime --mission --no-stored --require-loop --require-sustained --store --supply-volts --use-log --workspace" ;;
     power) options="--help --from --interval --json --min-phase --min-step --phases --query-gpu --supply-volts --to" ;;
     record-power) options="--help --events --interval-ms --out --quiet --seconds --sensor --sysfs-root --workspace" ;;
     remote) options="--help --desk-quiet --id --platform --remote-cli --ssh-config --synthetic --workspace" ;;
-    report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --no-stored --out --pdf --quiet --require-loop --supply-volts --template" ;;
+    report) options="--help --battery --budget --extra-load --font-pt --library --min-fps --min-runtime --mission --no-stored --out --pdf --quiet --require-loop --require-sustained --supply-volts --template" ;;
     roofline) options="--help --json" ;;
     run) options="--help --backend --device --events --isa --iterations --json --mib --no-warmup --out --points --power --power-interval-ms --quiet --repeats --sysfs-root --variant --workers --workspace" ;;
     runs) options="--help --clear --label --run" ;;
     sensors) options="--help --json --power --sensor --sysfs-root" ;;
+    sustain) options="--help --detector --events --interval --json --load --platform --power --power-interval-ms --seconds --stable-percent --sysfs-root --throttle-threshold --workspace" ;;
     synth-frame) options="--help --bits --blur --board --lens --noise --out --pattern --pose --poses --scene --seed --size --square --supersample --vignetting" ;;
     synth-power) options="--help --out --platform --rate --samples --seed" ;;
   esac
