@@ -17,6 +17,7 @@
 #include "headroom/command_load.h"
 #include "headroom/loads/load_spec.h"
 #include "power/power_sensor_box.h"
+#include "remote/remote_run.h"
 #include "remote/robot_target.h"
 #include "remote/run_here_or_robot.h"
 #include "sensors/recorder.h"
