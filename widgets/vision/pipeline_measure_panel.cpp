@@ -6,7 +6,6 @@
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -15,9 +14,7 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardItemModel>
-#include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include "analysis/power/phase_energy.h"
 #include "commands/pipeline_grammar.h"
@@ -25,6 +22,7 @@
 #include "power/power_sensor_box.h"
 #include "remote/remote_run.h"
 #include "remote/robot_target.h"
+#include "remote/run_here_or_robot.h"
 #include "sensors/recorder.h"
 #include "vision/pipeline/pipeline_measure.h"
 #include "vision/reproject/cuda_preprocess.h"
@@ -54,8 +52,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
       status_(new QLabel(this)),
       power_(new PowerSensorBox(this)),
       target_(new RobotTarget(this)),
-      watcher_(new QFutureWatcher<Outcome>(this)),
-      percent_(std::make_shared<std::atomic<int>>(0)) {
+      controller_(new RunHereOrRobot(target_, this)) {
   const QSettings settings;
   frames_->setRange(1, 100000);
   frames_->setValue(settings.value(kFramesKey, 20).toInt());
@@ -172,28 +169,43 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
 
   connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
   connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
-  connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &PipelineMeasurePanel::finished);
+  connect(controller_, &RunHereOrRobot::busy_changed, this, &PipelineMeasurePanel::busy);
+  connect(controller_, &RunHereOrRobot::status, status_, &QLabel::setText);
+  connect(controller_, &RunHereOrRobot::failed, this, [this](const QString& message) {
+    if (recorder_) {  // a run here that failed: its power recording ends with it, nothing of it kept
+      recorder_->end_phase();
+      (void)recorder_->finish("Pipeline tab (failed)");
+      recorder_.reset();
+    }
+    emit failed(message);
+  });
+  connect(controller_, &RunHereOrRobot::here_finished, this, &PipelineMeasurePanel::here_finished);
+  connect(controller_, &RunHereOrRobot::robot_finished, this, &PipelineMeasurePanel::remote_finished);
+  connect(controller_, &RunHereOrRobot::progress, this, [this](double fraction, const QString&) {
+    progress_->setRange(0, 100);
+    progress_->setValue(static_cast<int>(fraction * 100));
+  });
+  // The robot reports "captured k of N frames" as it goes: the bar follows it.
+  connect(controller_, &RunHereOrRobot::robot_text, this, [this](const QString& line) {
+    static const QRegularExpression captured(QStringLiteral("^captured (\\d+) of (\\d+) frames$"));
+    if (const auto m = captured.match(line); m.hasMatch() && m.captured(2).toInt() > 0) {
+      progress_->setRange(0, 100);
+      progress_->setValue(m.captured(1).toInt() * 100 / m.captured(2).toInt());
+    }
+  });
   connect(target_, &RobotTarget::changed, this, &PipelineMeasurePanel::target_changed);
   for (QSpinBox* box : {frames_, workers_})
     connect(box, &QSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
   connect(scale_, &QDoubleSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
   connect(backend_, &QComboBox::currentIndexChanged, this, &PipelineMeasurePanel::save_settings);
   connect(detector_, &QComboBox::currentIndexChanged, this, &PipelineMeasurePanel::save_settings);
-  auto* timer = new QTimer(this);
-  timer->setInterval(100);
-  connect(timer, &QTimer::timeout, this, [this] {
-    if (watcher_->isRunning()) progress_->setValue(percent_->load());  // a robot's run moves the bar itself
-  });
-  timer->start();
 }
 
 PipelineMeasurePanel::~PipelineMeasurePanel() {
-  // A run still going must not outlive the widget it reports to.
-  if (token_) token_->cancel();
-  watcher_->waitForFinished();
+  delete controller_;  // cancels and waits for a run here, or drops the robot's connection, before the panel goes
 }
 
-bool PipelineMeasurePanel::running() const { return watcher_->isRunning() || (remote_ && remote_->running()); }
+bool PipelineMeasurePanel::running() const { return controller_->running(); }
 
 void PipelineMeasurePanel::target_changed() {
   const bool robot = target_->is_robot();
@@ -258,97 +270,41 @@ void PipelineMeasurePanel::start() {
     return;
   }
   if (recorder_) recorder_->begin_phase("pipeline");
-  token_ = std::make_shared<CancelToken>();
-  percent_->store(0);
-  measure_->setEnabled(false);
-  cancel_->setEnabled(true);
-  progress_->setValue(0);
-  progress_->show();
+  output_ = std::make_shared<std::optional<PipelineRun>>();
+  controller_->start_here([options, output = output_](const CancelToken& token) {
+    *output = vision::measure_synthetic_pipeline(options, token,
+                                                 [&token](double f, std::string_view step) { token.report(f, step); });
+  });
   status_->setText(tr("Measuring %1 frames (preprocessing on %4) with %2 detection worker(s) at scale %3…")
                        .arg(options.frames)
                        .arg(options.detection_workers)
                        .arg(options.detect_scale)
                        .arg(backend_->currentText()));
-  watcher_->setFuture(QtConcurrent::run([options, token = token_, percent = percent_]() -> Outcome {
-    try {
-      return {
-          vision::measure_synthetic_pipeline(
-              options, *token, [percent](double f, std::string_view) { percent->store(static_cast<int>(f * 100)); }),
-          {}};
-    } catch (const std::exception& e) {
-      return {std::nullopt, QString::fromUtf8(e.what())};
-    }
-  }));
 }
 
 void PipelineMeasurePanel::start_remote(const vision::SyntheticPipelineOptions& options) {
-  const QString robot = target_->robot_name();
-  if (const QString why = target_->not_ready(tr("Measure")); !why.isEmpty()) {
-    status_->setText(why);
-    emit failed(why);
-    return;
-  }
   std::vector<std::string> args;
   try {
     args = commands::to_words(
         commands::robot_pipeline_settings(options, target_->platform().toStdString(), !power_->off()));
   } catch (const std::invalid_argument& e) {
-    status_->setText(tr("%1: %2").arg(robot, QString::fromUtf8(e.what())));
+    status_->setText(tr("%1: %2").arg(target_->robot_name(), QString::fromUtf8(e.what())));
     emit failed(status_->text());
     return;
   }
-  target_->remember_platform();
-  const QString platform = target_->platform();
-  remote_ = std::make_unique<RemoteRun>(target_->target(), args);
-  RemoteRun* run = remote_.get();
-  // The robot reports "captured k of N frames" as it goes: the bar follows it; the line shows what it says.
-  connect(run, &RemoteRun::remote_text, this, [this, robot](const QString& line) {
-    static const QRegularExpression captured(QStringLiteral("^captured (\\d+) of (\\d+) frames$"));
-    if (const auto m = captured.match(line); m.hasMatch() && m.captured(2).toInt() > 0) {
-      progress_->setRange(0, 100);
-      progress_->setValue(m.captured(1).toInt() * 100 / m.captured(2).toInt());
-    }
-    status_->setText(QStringLiteral("%1: %2").arg(robot, line));
-  });
-  connect(run, &RemoteRun::finished, this, [this, run, platform, robot] {
-    const remote::RemoteJob& job = run->job();
-    status_->setText(
-        job.status == "cancelled"
-            ? tr("%1: cancelled (job %2); nothing half-measured is stored").arg(robot, QString::fromStdString(job.id))
-            : tr("Measured on %1 (job %2)").arg(robot, QString::fromStdString(job.id)));
-    emit remote_finished(run, platform);
-    remote_done();
-  });
-  connect(run, &RemoteRun::failed, this, [this, robot](const QString& message) {
-    status_->setText(QStringLiteral("%1: %2").arg(robot, message));
-    emit failed(status_->text());
-    remote_done();
-  });
-  measure_->setEnabled(false);
-  cancel_->setEnabled(true);
-  progress_->setRange(0, 0);  // busy until the robot's first "captured" line
-  progress_->show();
-  status_->setText(tr("%1: checking the robot and starting %2 frames…").arg(robot).arg(options.frames));
-  run->start();
+  controller_->start_on_robot(args);
 }
 
-void PipelineMeasurePanel::remote_done() {
-  remote_.release()->deleteLater();  // we are in its signal
-  measure_->setEnabled(true);
-  cancel_->setEnabled(false);
-  progress_->setRange(0, 100);
-  progress_->hide();
+void PipelineMeasurePanel::busy(bool on) {
+  measure_->setEnabled(!on);
+  cancel_->setEnabled(on);
+  progress_->setVisible(on);
+  // A robot says how far it is in its own text ("captured k of N frames"): until then the bar only says it is busy.
+  progress_->setRange(0, on && controller_->on_robot() ? 0 : 100);
+  if (on) progress_->setValue(0);
 }
 
-void PipelineMeasurePanel::cancel() {
-  if (remote_) {
-    remote_->cancel();
-    status_->setText(tr("Cancelling: the robot finishes the frames in flight and stops…"));
-    return;
-  }
-  if (token_) token_->cancel();
-  status_->setText(tr("Cancelling: the frames in flight finish first…"));
-}
+void PipelineMeasurePanel::cancel() { controller_->cancel(); }
 
 std::optional<PowerTrace> PipelineMeasurePanel::take_power_trace() {
   auto t = std::move(trace_);
@@ -356,29 +312,22 @@ std::optional<PowerTrace> PipelineMeasurePanel::take_power_trace() {
   return t;
 }
 
-void PipelineMeasurePanel::finished() {
-  const Outcome outcome = watcher_->result();
+void PipelineMeasurePanel::here_finished(bool cancelled) {
+  const std::shared_ptr<std::optional<PipelineRun>> outcome = std::move(output_);
+  const bool measured = !cancelled && outcome && *outcome;
   std::optional<PowerTrace> trace;
   if (recorder_) {
     recorder_->end_phase();
-    trace = recorder_->finish("Pipeline tab" + (outcome.run
-                                                    ? " " + outcome.run->platform + " " + outcome.run->provenance.date
-                                                    : std::string()));
+    trace = recorder_->finish(
+        "Pipeline tab" + (measured ? " " + (*outcome)->platform + " " + (*outcome)->provenance.date : std::string()));
     recorder_.reset();
   }
-  measure_->setEnabled(true);
-  cancel_->setEnabled(false);
-  progress_->hide();
-  if (!outcome.error.isEmpty()) {
-    status_->setText(tr("Failed: %1").arg(outcome.error));
-    emit failed(outcome.error);
+  if (!measured) {
+    // Cancelled: the pipeline returns nothing rather than throwing (the controller says nothing then).
+    if (!cancelled) status_->setText(tr("Cancelled; nothing stored."));
     return;
   }
-  if (!outcome.run) {
-    status_->setText(tr("Cancelled; nothing stored."));
-    return;
-  }
-  const PipelineRun& run = *outcome.run;
+  const PipelineRun& run = **outcome;
   QString energy;
   if (trace) {
     trace->platform = run.platform;  // the Platforms view pairs runs and traces by platform

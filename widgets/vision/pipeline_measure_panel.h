@@ -27,6 +27,7 @@ namespace bs::ui {
 
 class PowerSensorBox;
 class RemoteRun;
+class RunHereOrRobot;
 class RobotTarget;
 
 // "Measure": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
@@ -68,14 +69,10 @@ class PipelineMeasurePanel : public QWidget {
   void failed(const QString& message);
 
  private:
-  struct Outcome {
-    std::optional<PipelineRun> run;
-    QString error;
-  };
-  void finished();
+  void here_finished(bool cancelled);
+  void busy(bool on);
   void save_settings() const;
   void start_remote(const vision::SyntheticPipelineOptions& options);
-  void remote_done();
   // The backends the chosen computer offers (a robot's from its check), the Measure button's words.
   void target_changed();
 
@@ -90,12 +87,11 @@ class PipelineMeasurePanel : public QWidget {
   QLabel* status_;
   PowerSensorBox* power_;
   RobotTarget* target_;
-  std::unique_ptr<RemoteRun> remote_;
+  RunHereOrRobot* controller_;  // here or on the robot: starts, relays progress, cancels, says how it ended
   std::shared_ptr<sensors::PowerRecorder> recorder_;
   std::optional<PowerTrace> trace_;
-  QFutureWatcher<Outcome>* watcher_;
-  std::shared_ptr<CancelToken> token_;
-  std::shared_ptr<std::atomic<int>> percent_;  // written by the capture thread, read by a GUI timer
+  // What the run here measured, written on its worker thread before it returns and read after here_finished.
+  std::shared_ptr<std::optional<PipelineRun>> output_;
 };
 
 }  // namespace bs::ui
