@@ -5,14 +5,10 @@
 #include <charconv>
 #include <cmath>
 
+#include "util/text.h"
+
 namespace bs {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
 
 [[noreturn]] void fail(ImportErrorCategory c, const std::string& file, std::size_t line, const std::string& field,
                        const std::string& why) {

@@ -5,18 +5,14 @@
 #include <cctype>
 #include <map>
 
+#include "util/text.h"
+
 namespace bs::mlperf_loose {
 namespace fs = std::filesystem;
 namespace {
 
 constexpr std::string_view kLogSummary = "mlperf_log_summary";
 constexpr std::size_t kHeadBytes = 64 * 1024;  // enough for a system or measurements JSON, a summary's banner
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 bool separator(char c) { return c == '_' || c == '-' || c == '.' || c == ' '; }
 

@@ -274,18 +274,21 @@ inline QString open_paper_window(bs::ui::MainWindow& w, QTemporaryDir& dir) {
 }
 
 // File > Export report (Ctrl+Shift+R) as a person does it: the report dialog answered from the event loop, the PDF
-// path typed, Export. "" when `pdf` was written, else what the person saw (the dialogs met and missed).
-inline QString export_report(bs::ui::MainWindow& w, const QString& pdf) {
+// path typed, Export. "" when `pdf` was written and no other dialog came, else what the person saw (the dialogs met
+// and missed). `shown_decision` (may be null) receives the decision the dialog showed before the export.
+inline QString export_report(bs::ui::MainWindow& w, const QString& pdf, QString* shown_decision = nullptr) {
   ModalAnswerer person;
   person.expect(
       "Export report (the report dialog)",
       [](QWidget* d) { return d->windowTitle() == "Export report" && !qobject_cast<QFileDialog*>(d); },
-      [&pdf](QWidget* d) {
+      [&pdf, shown_decision](QWidget* d) {
+        if (auto* decision = d->findChild<QLabel*>("reportDecision"); decision && shown_decision)
+          *shown_decision = decision->text();
         if (auto* path = d->findChild<QLineEdit*>("reportPath")) retype(path, pdf);
         if (QAbstractButton* ok = button(d, "Export")) click(ok);
       });
   key(&w, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
-  if (wait_until([&] { return person.done() && QFile::exists(pdf); }, 3000)) return {};
+  if (wait_until([&] { return person.done() && QFile::exists(pdf); }, 3000) && person.unexpected.isEmpty()) return {};
   return person.report();
 }
 

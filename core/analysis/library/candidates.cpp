@@ -9,15 +9,10 @@
 #include <tuple>
 
 #include "analysis/stats/units.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 std::string fmt(double v, const char* f = "%.3g") {
   char buf[48];

@@ -13,17 +13,12 @@
 #include "analysis/peaks/device_table.h"
 #include "analysis/stats/units.h"
 #include "util/resources.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
 
 using json = nlohmann::json;
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 class Fields {
  public:

@@ -106,21 +106,8 @@ class TestScenarioDecisionReopen : public QObject {
     // File > Export report: the dialog shows the decision page 1 will state, then writes the PDF.
     const QString pdf = dir.filePath("report.pdf");
     QString shown;
-    {
-      ModalAnswerer person;
-      person.expect(
-          "Export report (the report dialog)",
-          [](QWidget* d) { return d->windowTitle() == "Export report" && !qobject_cast<QFileDialog*>(d); },
-          [&pdf, &shown](QWidget* d) {
-            if (auto* decision = d->findChild<QLabel*>("reportDecision")) shown = decision->text();
-            if (auto* path = d->findChild<QLineEdit*>("reportPath")) bs::test::retype(path, pdf);
-            if (QAbstractButton* ok = bs::test::button(d, "Export")) bs::test::click(ok);
-          });
-      bs::test::key(&w, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
-      QVERIFY2(bs::test::wait_until([&] { return person.done() && QFileInfo::exists(pdf); }, 3000),
-               qPrintable(person.report()));
-      QVERIFY2(person.unexpected.isEmpty(), qPrintable(person.report()));
-    }
+    const QString exported = bs::test::export_report(w, pdf, &shown);
+    QVERIFY2(exported.isEmpty(), qPrintable(exported));
     QVERIFY2(shown.contains("a power budget of 10 W") && shown.contains("Jetson TX2"), qPrintable(shown));
     const QString page1 = bs::test::pdf_page_text(pdf, 1).simplified();
     QVERIFY2(page1.contains("Recommended under a power budget of 10 W: Jetson TX2"), qPrintable(page1));
