@@ -2,6 +2,7 @@
 #include "commands/remote_commands.h"
 
 #include "commands/headroom_grammar.h"
+#include "commands/inventory_grammar.h"
 #include "commands/pipeline_grammar.h"
 #include "commands/run_flops_grammar.h"
 #include "commands/sustain_grammar.h"
@@ -25,8 +26,8 @@ const std::vector<RemoteCommand>& remote_commands() {
       {"bench dnn", 2, false, true},
       {"bench vision", 2, false, false},
       {"bench kernels", 2, false, false},
-      {"devices", 1, false, false},
-      {"sensors", 1, false, false},
+      {"devices", 1, false, false, canonical<DevicesSettings, devices_from_words>},
+      {"sensors", 1, false, false, canonical<SensorsSettings, sensors_from_words>},
       {"headroom", 1, false, true, canonical<HeadroomSettings, headroom_from_words>},
       {"pipeline", 1, false, true, canonical<PipelineSettings, pipeline_from_words>},
       {"sustain", 1, true, true, canonical<SustainSettings, sustain_from_words>},

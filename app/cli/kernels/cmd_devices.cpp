@@ -11,6 +11,7 @@
 #include "analysis/peaks/device_table.h"
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
+#include "commands/inventory_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/flag_output.h"
@@ -111,19 +112,18 @@ int print_spec_table(const DeviceTable& table, bool json, std::ostream& out) {
 }
 
 int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args = parse_args(raw, {"--json", "--table", "--measure-ceilings"},
-                                     {"--isa", "--workspace", "--proc-root", "--sysfs-root"});
+  const commands::DevicesSettings args = commands::devices_from_words(raw);
   const BundledDeviceTable& specs = bundled_device_table();
-  if (args.has("--table")) {
+  if (args.table) {
     if (!specs.error.empty()) throw std::runtime_error(specs.error);
-    return print_spec_table(specs.table, args.has("--json"), out);
+    return print_spec_table(specs.table, args.json, out);
   }
-  if (const auto proc_root = args.value("--proc-root")) {
+  if (const auto proc_root = args.proc_root) {
     // Another machine's files (a copy of a robot's /proc, a test fixture): its CPU only, none of this host's backends.
-    const auto arm = kernels::detect_arm_cpu(*proc_root, args.value("--sysfs-root").value_or(*proc_root));
+    const auto arm = kernels::detect_arm_cpu(*proc_root, args.sysfs_root.value_or(*proc_root));
     if (!arm)
       throw std::runtime_error(*proc_root + "/proc/cpuinfo: no CPU with a 'CPU implementer' and 'CPU part' (not ARM)");
-    if (args.has("--json"))
+    if (args.json)
       out << nlohmann::json{{"format", "benchscope-arm-cpu"},
                             {"version", 1},
                             {"proc_root", *proc_root},
@@ -134,19 +134,19 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
       print_arm_cpu(*arm, out);
     return 0;
   }
-  if (args.value("--sysfs-root")) throw UsageError("--sysfs-root goes with --proc-root");
+  if (args.sysfs_root) throw UsageError("--sysfs-root goes with --proc-root");
   const auto spec_of = [&](const kernels::Backend& b) -> std::optional<DeviceSpec> {
     const DeviceSpec* s = match_device(specs.table, b.device_name, b.kind);
     return s ? std::optional<DeviceSpec>(*s) : std::nullopt;
   };
-  kernels::CpuInfo cpu = cpu_from_args(args);
+  kernels::CpuInfo cpu = cpu_from_isa(args.isa);
   const auto backends = kernels::available_backends(cpu);
   // Empirical ceilings of the CPU with its SIMD target and of every device backend (OpenCL, CUDA): measured now
   // when asked, else from the per-host cache.
   std::optional<kernels::CeilingSet> ceilings;
   std::map<std::string, kernels::CeilingSet> device_ceilings;  // by backend id
   std::map<std::string, std::string> device_errors;            // a device whose micro-kernels failed, and why
-  const bool measure = args.has("--measure-ceilings");
+  const bool measure = args.measure_ceilings;
   if (measure) {
     ceilings = kernels::measure_ceilings(cpu, {}, interrupt_token());
     kernels::store_ceilings(*ceilings);
@@ -162,7 +162,7 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
       }
     }
     // In a workspace the peak table, peaks and the roofline show each run's % of this device's ceiling.
-    if (const auto ws_path = args.value("--workspace")) {
+    if (const auto ws_path = args.workspace) {
       ImportBatch batch;
       batch.source_path = "benchscope-cli devices --measure-ceilings";
       batch.format = kernels::kCeilingSource;
@@ -173,14 +173,14 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
       Workspace ws(*ws_path);
       ws.add_import(batch, content_hash(key));
     }
-  } else if (args.value("--workspace")) {
+  } else if (args.workspace) {
     throw UsageError("--workspace stores measured ceilings: use it with --measure-ceilings");
   } else {
     ceilings = kernels::cached_ceilings(cpu);
     for (const auto& b : backends)
       if (auto set = kernels::cached_device_ceilings(b)) device_ceilings[b.id] = std::move(*set);
   }
-  if (args.has("--json")) {
+  if (args.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& b : backends) {
       nlohmann::json variants = nlohmann::json::array();
@@ -218,7 +218,7 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
           << s->derivation << ")\n";
     if (b.id == "cpu-simd") {
       if (ceilings) {
-        out << "    empirical ceilings (" << (args.has("--measure-ceilings") ? "measured now" : "cached") << ", "
+        out << "    empirical ceilings (" << (args.measure_ceilings ? "measured now" : "cached") << ", "
             << ceilings->date << ", " << ceilings->threads << " threads):\n";
         print_ceilings(*ceilings, out, "      ");
       } else {

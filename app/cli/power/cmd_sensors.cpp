@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "commands/inventory_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/text_table.h"
@@ -13,11 +14,10 @@ namespace bs::cli {
 namespace {
 
 int sensors_command(const std::vector<std::string>& raw, std::ostream& out, std::ostream&) {
-  const ParsedArgs args = parse_args(raw, {"--json"}, {"--sysfs-root"});
-  if (!args.positional.empty()) throw UsageError("unexpected argument '" + args.positional[0] + "'");
-  const std::string root = args.value("--sysfs-root").value_or("/");
+  const commands::SensorsSettings args = commands::sensors_from_words(raw);
+  const std::string root = args.sysfs_root.value_or("/");
   const sensors::SensorSet set = sensors::find_sensors({root, sensors::default_nvml_library()});
-  if (args.has("--json")) {
+  if (args.json) {
     nlohmann::json j = {{"sysfs_root", root}, {"sensors", nlohmann::json::array()}, {"notes", set.notes}};
     for (const auto& s : set.sensors) {
       const sensors::SensorInfo& i = s->info();

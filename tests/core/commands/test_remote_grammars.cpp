@@ -17,8 +17,8 @@ using bs::commands::find_remote_command;
 namespace {
 
 // Not yet given a grammar: their words reach the robot unchecked (issue #52 continues).
-const std::set<std::string> kWithoutGrammar = {"record-power",  "run bandwidth", "bench dnn", "bench vision",
-                                               "bench kernels", "devices",       "sensors"};
+const std::set<std::string> kWithoutGrammar = {"record-power", "run bandwidth", "bench dnn", "bench vision",
+                                               "bench kernels"};
 
 QString refusal(const std::vector<std::string>& words) {
   return bs::test::refusal([&] { check_remote_words(*find_remote_command(words), words); });
@@ -55,7 +55,9 @@ class TestRemoteGrammars : public QObject {
     QCOMPARE(refusal({"run", "flops", "--repeats", "0"}), QStringLiteral("--repeats must be between 1 and 1000"));
     QCOMPARE(refusal({"pipeline", "--synthetic", "--bogus"}), QStringLiteral("unknown option '--bogus'"));
     QCOMPARE(refusal({"pipeline", "--synthetic", "--frames", "5"}), QStringLiteral("(accepted)"));
-    QCOMPARE(refusal({"devices", "--anything"}), QStringLiteral("(accepted)"));  // no grammar yet: unchecked
+    QCOMPARE(refusal({"devices", "--anything"}), QStringLiteral("unknown option '--anything'"));
+    QCOMPARE(refusal({"sensors", "extra"}), QStringLiteral("sensors takes no positional argument ('extra')"));
+    QCOMPARE(refusal({"bench", "vision", "--anything"}), QStringLiteral("(accepted)"));  // no grammar yet: unchecked
   }
 };
 
