@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QSettings>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "sustain/sustain_run_panel.h"
 #include "sustain/sustain_text.h"
@@ -104,7 +105,7 @@ SustainView::SustainView(QWidget* parent)
       QSettings settings;
       settings.setValue("sustain/stable-percent", stable_->value());
       settings.setValue("sustain/throttle-threshold", threshold_->value() / 100);
-      live_ ? draw(*live_, tr("the run going on here")) : show_current();
+      live_ ? draw(*live_, tr("the run going on")) : show_current();
     });
   connect(run_, &SustainRunPanel::live_interval, this, &SustainView::show_live);
   // When a run here ends (stored, failed or cancelled) the stored records show again, a new one in front.
@@ -163,7 +164,12 @@ bool SustainView::select(std::int64_t id) {
 
 void SustainView::show_live(const SustainRun& so_far) {
   live_ = so_far;
-  draw(*live_, tr("the run going on here (%1 intervals so far)").arg(so_far.t_s.size()));
+  draw(*live_, tr("the run going on (%1 intervals so far)").arg(so_far.t_s.size()));
+  // The time axis spans the whole run asked for: the curves grow across it as the intervals come.
+  if (!so_far.t_s.empty() && plot_->axisRectCount() > 0) {
+    plot_->axisRect(0)->axis(QCPAxis::atBottom)->setRange(0, std::max(so_far.t_s.back(), run_->seconds()->value()));
+    plot_->replot();
+  }
 }
 
 void SustainView::show_current() {
