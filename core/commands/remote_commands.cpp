@@ -4,6 +4,7 @@
 #include "commands/headroom_grammar.h"
 #include "commands/inventory_grammar.h"
 #include "commands/pipeline_grammar.h"
+#include "commands/run_bandwidth_grammar.h"
 #include "commands/run_flops_grammar.h"
 #include "commands/sustain_grammar.h"
 
@@ -22,7 +23,7 @@ const std::vector<RemoteCommand>& remote_commands() {
   static const std::vector<RemoteCommand> list = {
       {"run flops", 2, true, true, canonical<RunFlopsSettings, run_flops_from_words>},
       {"record-power", 1, true, true},
-      {"run bandwidth", 2, false, true},
+      {"run bandwidth", 2, false, true, canonical<RunBandwidthSettings, run_bandwidth_from_words>},
       {"bench dnn", 2, false, true},
       {"bench vision", 2, false, false},
       {"bench kernels", 2, false, false},

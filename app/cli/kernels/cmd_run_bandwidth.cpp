@@ -7,6 +7,7 @@
 
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
+#include "commands/run_bandwidth_grammar.h"
 #include "common/args.h"
 #include "common/signals.h"
 #include "kernels/ceilings/bandwidth.h"
@@ -15,21 +16,16 @@
 namespace bs::cli {
 
 int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  const ParsedArgs args =
-      parse_args(raw, {"--json", "--quiet"}, {"--backend", "--device", "--mib", "--repeats", "--workspace"});
-  if (args.positional.size() != 1 || args.positional[0] != "bandwidth") throw UsageError("expected 'run bandwidth'");
+  if (raw.empty() || raw[0] != "bandwidth") throw UsageError("expected 'run bandwidth'");
+  const commands::RunBandwidthSettings args = commands::run_bandwidth_from_words({raw.begin() + 1, raw.end()});
   kernels::BandwidthSpec spec;
-  const double mib = args.number("--mib", 128), repeats = args.number("--repeats", 10);
-  if (mib < 1 || mib > 16384 || mib != static_cast<double>(static_cast<long>(mib)))
-    throw UsageError("--mib must be a whole number of MiB per array, 1 to 16384");
-  if (repeats < 1 || repeats > 1000) throw UsageError("--repeats must be between 1 and 1000");
-  spec.mib_per_array = static_cast<std::size_t>(mib);
-  spec.repeats = static_cast<int>(repeats);
+  spec.mib_per_array = args.mib_per_array;
+  spec.repeats = args.repeats;
 
   const kernels::CpuInfo cpu = kernels::detect_cpu();
   const auto backends = kernels::available_backends(cpu);
-  std::string backend_id = args.value("--backend").value_or("cpu");
-  if (const auto device = args.value("--device")) backend_id += ":" + *device;
+  std::string backend_id = args.backend;
+  if (const auto device = args.device) backend_id += ":" + *device;
   const kernels::Backend* backend = nullptr;
   try {
     backend = &kernels::find_backend(backends, backend_id);
@@ -37,7 +33,7 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
     throw UsageError(e.what());
   }
   if (!backend->run_triad) throw UsageError(backend->label + " has no bandwidth kernel (use cpu or opencl)");
-  const bool quiet = args.has("--quiet");
+  const bool quiet = args.quiet;
   if (!quiet)
     err << "benchscope-cli: STREAM triad on " << backend->label << " (" << backend->device_name << "), 3 x "
         << spec.mib_per_array << " MiB, " << spec.repeats << " repetitions\n";
@@ -49,7 +45,7 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
   }
   const Measurement& m = set.measurements.front();
   const Summary s = summarize(m.values);
-  if (const auto ws_path = args.value("--workspace")) {
+  if (const auto ws_path = args.workspace) {
     ImportBatch batch;
     batch.source_path = "benchscope-cli run bandwidth";
     batch.format = kernels::kBandwidthSource;
@@ -58,7 +54,7 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
     ws.add_import(batch, content_hash(set.provenance.date + set.backend + set.device + std::to_string(s.mean)));
     if (!quiet) err << "benchscope-cli: stored in " << *ws_path << '\n';
   }
-  if (args.has("--json")) {
+  if (args.json) {
     out << nlohmann::json{{"format", "benchscope-bandwidth"},
                           {"version", 1},
                           {"platform", set.platform},
