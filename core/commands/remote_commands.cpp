@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands/remote_commands.h"
 
+#include "commands/bench_vision_grammar.h"
 #include "commands/headroom_grammar.h"
 #include "commands/inventory_grammar.h"
 #include "commands/pipeline_grammar.h"
@@ -25,7 +26,7 @@ const std::vector<RemoteCommand>& remote_commands() {
       {"record-power", 1, true, true},
       {"run bandwidth", 2, false, true, canonical<RunBandwidthSettings, run_bandwidth_from_words>},
       {"bench dnn", 2, false, true},
-      {"bench vision", 2, false, false},
+      {"bench vision", 2, false, false, canonical<BenchVisionSettings, bench_vision_from_words>},
       {"bench kernels", 2, false, false},
       {"devices", 1, false, false, canonical<DevicesSettings, devices_from_words>},
       {"sensors", 1, false, false, canonical<SensorsSettings, sensors_from_words>},

@@ -13,6 +13,7 @@
 
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
+#include "commands/bench_vision_grammar.h"
 #include "common/args.h"
 #include "power/power_args.h"
 #include "vision/bench_demosaic.h"
@@ -33,15 +34,9 @@ struct Method {
 }  // namespace
 
 int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
-  const ParsedArgs args =
-      parse_args(arguments, {}, {"--frames", "--threads", "--power", "--power-interval-ms", "--sysfs-root"});
-  const int frames = static_cast<int>(args.number("--frames", 200));
-  if (frames < 1 || frames > 100000) throw UsageError("--frames must be between 1 and 100000");
-  if (args.value("--threads")) {
-    const double threads = args.number("--threads", 0);
-    if (threads < 1 || threads > 1024) throw UsageError("--threads must be between 1 and 1024");
-    vision::set_vision_threads(static_cast<int>(threads));
-  }
+  const commands::BenchVisionSettings args = commands::bench_vision_from_words(arguments);
+  const int frames = args.frames;
+  if (args.threads) vision::set_vision_threads(*args.threads);
   using namespace bs::vision;
   // The paper's setup: 1280x1024 BGGR from a 195 degree equidistant lens -> 1280x1024 rectilinear, 150 degrees.
   // The scene is smoothed noise: every kernel here does the same work whatever the pixel values are.
@@ -91,7 +86,7 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
   // Four passes, in alternating order, still spread a busy neighbour on a shared machine over all methods.
   constexpr int kPasses = 4, kWarmUp = 2;
   // --power: each method's blocks are phases named after it, for its energy per frame (warm-up frames included).
-  const auto power = start_power(args, out, false);
+  const auto power = start_power(args.power, out, false);
   for (int pass = 0; pass < kPasses; ++pass)
     for (std::size_t k = 0; k < methods.size(); ++k) {
       Method& m = methods[pass % 2 ? methods.size() - 1 - k : k];
