@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headroom/loop_requirement.h"
+
+#include "analysis/platform/requirement_verdicts.h"
 #include "util/text.h"
 
 #include <algorithm>
@@ -143,11 +145,8 @@ std::string_view to_string(LoopStatus s) {
 
 std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const HeadroomMeasurement> measurements,
                                        const std::vector<std::string>& platforms) {
-  std::vector<std::string> names = platforms;
-  for (const HeadroomMeasurement& m : measurements)
-    if (std::find(names.begin(), names.end(), m.platform) == names.end()) names.push_back(m.platform);
   std::vector<LoopVerdict> out;
-  for (const std::string& platform : names) {
+  for (const std::string& platform : platforms_to_judge(platforms, measurements)) {
     LoopVerdict v;
     v.platform = platform;
     // The latest application-loop measurement at the rate (within 1 %) that has the phase asked for.
@@ -279,27 +278,12 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
     }
     out.push_back(std::move(v));
   }
-  // Rank: passing by their tightest relative margin (widest first), failing by their worst (nearest first), unknown.
-  const auto tightest = [](const LoopVerdict& v) { return tightest_relative_margin(v.checks); };
-  std::stable_sort(out.begin(), out.end(), [&](const LoopVerdict& a, const LoopVerdict& b) {
-    const auto rank = [](LoopStatus s) { return s == LoopStatus::Pass ? 0 : s == LoopStatus::Fail ? 1 : 2; };
-    if (rank(a.status) != rank(b.status)) return rank(a.status) < rank(b.status);
-    return tightest(a) > tightest(b);
-  });
+  rank_requirement_verdicts(out);
   return out;
 }
 
 std::vector<ConstraintCheck> loop_checks(const std::string& platform, std::span<const LoopVerdict> loop) {
-  const auto it = std::find_if(loop.begin(), loop.end(), [&](const LoopVerdict& l) { return l.platform == platform; });
-  if (it != loop.end() && it->status != LoopStatus::Unknown) return it->checks;
-  // Unknown is never passing: one check with no value says why; the terms that have values follow, to be seen.
-  std::vector<ConstraintCheck> out;
-  out.push_back({"control loop: " + (it == loop.end() ? std::string("no headroom measurement") : it->reason), "", 0,
-                 std::nullopt, false, 0});
-  if (it != loop.end())
-    for (const ConstraintCheck& k : it->checks)
-      if (k.actual) out.push_back(k);
-  return out;
+  return requirement_checks(platform, loop, "control loop", "no headroom measurement");
 }
 
 void apply_loop(std::vector<PlatformVerdict>& verdicts, std::span<const LoopVerdict> loop) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sustain/sustain_requirement.h"
 
+#include "analysis/platform/requirement_verdicts.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -206,11 +208,8 @@ std::string_view to_string(SustainStatus s) {
 
 std::vector<SustainVerdict> evaluate_sustain(const SustainRequirement& r, std::span<const SustainRun> runs,
                                              const std::vector<std::string>& platforms) {
-  std::vector<std::string> names = platforms;
-  for (const SustainRun& run : runs)
-    if (std::find(names.begin(), names.end(), run.platform) == names.end()) names.push_back(run.platform);
   std::vector<SustainVerdict> out;
-  for (const std::string& platform : names) {
+  for (const std::string& platform : platforms_to_judge(platforms, runs)) {
     SustainVerdict v;
     v.platform = platform;
     // The longest record that answers every term, else the newest (the later one in the list on equal dates).
@@ -245,28 +244,12 @@ std::vector<SustainVerdict> evaluate_sustain(const SustainRequirement& r, std::s
     v.record = record_text(*chosen);
     out.push_back(std::move(v));
   }
-  // Rank: passing by their tightest relative margin (widest first), failing by their worst (nearest first), unknown.
-  const auto tightest = [](const SustainVerdict& v) { return tightest_relative_margin(v.checks); };
-  std::stable_sort(out.begin(), out.end(), [&](const SustainVerdict& a, const SustainVerdict& b) {
-    const auto rank = [](SustainStatus s) { return s == SustainStatus::Pass ? 0 : s == SustainStatus::Fail ? 1 : 2; };
-    if (rank(a.status) != rank(b.status)) return rank(a.status) < rank(b.status);
-    return tightest(a) > tightest(b);
-  });
+  rank_requirement_verdicts(out);
   return out;
 }
 
 std::vector<ConstraintCheck> sustain_checks(const std::string& platform, std::span<const SustainVerdict> verdicts) {
-  const auto it =
-      std::find_if(verdicts.begin(), verdicts.end(), [&](const SustainVerdict& s) { return s.platform == platform; });
-  if (it != verdicts.end() && it->status != SustainStatus::Unknown) return it->checks;
-  // Unknown is never passing: one check with no value says why; the terms that have values follow, to be seen.
-  std::vector<ConstraintCheck> out;
-  out.push_back({"sustained: " + (it == verdicts.end() ? std::string("no sustained run of this platform") : it->reason),
-                 "", 0, std::nullopt, false, 0});
-  if (it != verdicts.end())
-    for (const ConstraintCheck& k : it->checks)
-      if (k.actual) out.push_back(k);
-  return out;
+  return requirement_checks(platform, verdicts, "sustained", "no sustained run of this platform");
 }
 
 void apply_sustain(std::vector<PlatformVerdict>& verdicts, std::span<const SustainVerdict> sustain) {

@@ -129,8 +129,7 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
 
   connect(run_, &QPushButton::clicked, this, &HeadroomRunPanel::start);
   connect(cancel_, &QPushButton::clicked, this, &HeadroomRunPanel::cancel);
-  connect(controller_, &RunHereOrRobot::busy_changed, this, &HeadroomRunPanel::busy);
-  connect(controller_, &RunHereOrRobot::status, status_, &QLabel::setText);
+  controller_->drive(run_, cancel_, progress_, status_);
   connect(controller_, &RunHereOrRobot::failed, this, &HeadroomRunPanel::failed);
   connect(controller_, &RunHereOrRobot::here_finished, this, &HeadroomRunPanel::here_finished);
   connect(controller_, &RunHereOrRobot::robot_finished, this, &HeadroomRunPanel::remote_finished);
@@ -226,15 +225,6 @@ void HeadroomRunPanel::start_remote(headroom::RunConfig config) {
   settings.load_command = command_->text().trimmed().toStdString();
   if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
   controller_->start_on_robot(commands::to_words(settings));
-}
-
-void HeadroomRunPanel::busy(bool on) {
-  run_->setEnabled(!on);
-  cancel_->setEnabled(on);
-  progress_->setVisible(on);
-  // A robot says how far it is in its own time: until it does, the bar only says that it is busy.
-  progress_->setRange(0, on && controller_->on_robot() ? 0 : 100);
-  if (on) progress_->setValue(0);
 }
 
 void HeadroomRunPanel::cancel() { controller_->cancel(); }

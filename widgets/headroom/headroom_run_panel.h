@@ -62,7 +62,6 @@ class HeadroomRunPanel : public QWidget {
 
  private:
   void here_finished(bool cancelled);
-  void busy(bool on);
   void save_settings() const;
   // The settings as a run configuration; throws std::invalid_argument saying what is wrong.
   headroom::RunConfig config_from_fields(std::vector<std::string>& command_words) const;

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "remote/run_here_or_robot.h"
 
+#include <QAbstractButton>
 #include <QFutureWatcher>
+#include <QLabel>
 #include <QPointer>
+#include <QProgressBar>
 #include <QtConcurrent/QtConcurrentRun>
 #include <mutex>
 
@@ -143,6 +146,17 @@ bool RunHereOrRobot::start_on_robot(const std::vector<std::string>& words) {
 void RunHereOrRobot::robot_done() {
   remote_.release()->deleteLater();  // we are in its signal
   emit busy_changed(false);
+}
+
+void RunHereOrRobot::drive(QAbstractButton* run, QAbstractButton* cancel, QProgressBar* progress, QLabel* status) {
+  connect(this, &RunHereOrRobot::busy_changed, run, [this, run, cancel, progress](bool on) {
+    run->setEnabled(!on);
+    cancel->setEnabled(on);
+    progress->setVisible(on);
+    progress->setRange(0, on && on_robot() ? 0 : 100);
+    if (on) progress->setValue(0);
+  });
+  connect(this, &RunHereOrRobot::status, status, &QLabel::setText);
 }
 
 void RunHereOrRobot::cancel() {

@@ -14,6 +14,9 @@
 
 #include "util/cancel.h"
 
+class QAbstractButton;
+class QLabel;
+class QProgressBar;
 template <class T>
 class QFutureWatcher;
 
@@ -42,6 +45,10 @@ class RunHereOrRobot : public QObject {
   // user confirmed is remembered with the robot. False (and `failed` naming why) when it cannot start.
   bool start_on_robot(const std::vector<std::string>& words);
   void cancel();
+  // The panel's Run and Cancel buttons, progress bar and status line follow the controller: Run disabled and Cancel
+  // enabled while busy, the bar shown then (busy without a value on a robot until it says how far it is), the status
+  // line its words. The panel still feeds the bar from `progress` its own way.
+  void drive(QAbstractButton* run, QAbstractButton* cancel, QProgressBar* progress, QLabel* status);
 
  signals:
   void busy_changed(bool busy);

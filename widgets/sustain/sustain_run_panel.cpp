@@ -98,8 +98,10 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
   connect(load_, &QLineEdit::editingFinished, this, &SustainRunPanel::save_settings);
   for (QDoubleSpinBox* b : {seconds_, interval_})
     connect(b, &QDoubleSpinBox::valueChanged, this, &SustainRunPanel::save_settings);
-  connect(controller_, &RunHereOrRobot::busy_changed, this, &SustainRunPanel::busy);
-  connect(controller_, &RunHereOrRobot::status, status_, &QLabel::setText);
+  controller_->drive(run_, cancel_, progress_, status_);
+  connect(controller_, &RunHereOrRobot::busy_changed, this, [this](bool on) {
+    if (!on) emit stopped();
+  });
   connect(controller_, &RunHereOrRobot::failed, this, &SustainRunPanel::failed);
   connect(controller_, &RunHereOrRobot::here_finished, this, &SustainRunPanel::here_finished);
   connect(controller_, &RunHereOrRobot::robot_finished, this, &SustainRunPanel::robot_finished);
@@ -125,16 +127,6 @@ void SustainRunPanel::save_settings() const {
   s.setValue(key("load"), load_->text());
   s.setValue(key("seconds"), seconds_->value());
   s.setValue(key("interval"), interval_->value());
-}
-
-void SustainRunPanel::busy(bool on) {
-  run_->setEnabled(!on);
-  cancel_->setEnabled(on);
-  progress_->setVisible(on);
-  // A robot says how far it is only in its text: the bar then only says that it is busy.
-  progress_->setRange(0, on && controller_->on_robot() ? 0 : 100);
-  if (on) progress_->setValue(0);
-  if (!on) emit stopped();
 }
 
 void SustainRunPanel::start() {

@@ -55,7 +55,6 @@ class SustainRunPanel : public QWidget {
 
  private:
   void save_settings() const;
-  void busy(bool on);
   void here_finished(bool cancelled);
 
   QLineEdit* load_;

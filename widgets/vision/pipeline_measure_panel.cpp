@@ -169,8 +169,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
 
   connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
   connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
-  connect(controller_, &RunHereOrRobot::busy_changed, this, &PipelineMeasurePanel::busy);
-  connect(controller_, &RunHereOrRobot::status, status_, &QLabel::setText);
+  controller_->drive(measure_, cancel_, progress_, status_);
   connect(controller_, &RunHereOrRobot::failed, this, [this](const QString& message) {
     if (recorder_) {  // a run here that failed: its power recording ends with it, nothing of it kept
       recorder_->end_phase();
@@ -293,15 +292,6 @@ void PipelineMeasurePanel::start_remote(const vision::SyntheticPipelineOptions& 
     return;
   }
   controller_->start_on_robot(args);
-}
-
-void PipelineMeasurePanel::busy(bool on) {
-  measure_->setEnabled(!on);
-  cancel_->setEnabled(on);
-  progress_->setVisible(on);
-  // A robot says how far it is in its own text ("captured k of N frames"): until then the bar only says it is busy.
-  progress_->setRange(0, on && controller_->on_robot() ? 0 : 100);
-  if (on) progress_->setValue(0);
 }
 
 void PipelineMeasurePanel::cancel() { controller_->cancel(); }

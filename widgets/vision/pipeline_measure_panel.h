@@ -70,7 +70,6 @@ class PipelineMeasurePanel : public QWidget {
 
  private:
   void here_finished(bool cancelled);
-  void busy(bool on);
   void save_settings() const;
   void start_remote(const vision::SyntheticPipelineOptions& options);
   // The backends the chosen computer offers (a robot's from its check), the Measure button's words.
