@@ -63,4 +63,25 @@ if(CMAKE_CROSSCOMPILING)
   endif()
 endif()
 
+# The CLI loads OpenCV's imgcodecs on first use (core/image_files), so no binary of the package links it and
+# dpkg-shlibdeps cannot see it: the package that holds it is named here, as the dpkg database of the system the
+# build ran on (or of the cross sysroot) names it. Not found: no made-up name, and the build says so.
+if(TARGET opencv_imgcodecs AND CPACK_DEBIAN_PACKAGE_SHLIBDEPS)
+  get_target_property(_bs_imgcodecs opencv_imgcodecs LOCATION)
+  file(REAL_PATH "${_bs_imgcodecs}" _bs_imgcodecs)
+  set(_bs_dpkg_args -S "${_bs_imgcodecs}")
+  if(CMAKE_CROSSCOMPILING AND BENCHSCOPE_SYSROOT)
+    set(_bs_dpkg_args --admindir=${BENCHSCOPE_SYSROOT}/var/lib/dpkg -S "${_bs_imgcodecs}")
+  endif()
+  execute_process(COMMAND dpkg-query ${_bs_dpkg_args} OUTPUT_VARIABLE _bs_owner ERROR_QUIET
+                  OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE _bs_found)
+  # "libopencv-imgcodecs406:amd64: /usr/lib/x86_64-linux-gnu/libopencv_imgcodecs.so.4.6.0"
+  if(_bs_found EQUAL 0 AND _bs_owner MATCHES "^([a-z0-9][a-z0-9.+-]*)[:,]")
+    set(CPACK_DEBIAN_PACKAGE_DEPENDS "${CMAKE_MATCH_1}")
+  else()
+    message(WARNING "packaging: no package found holding ${_bs_imgcodecs}; the .deb will not name OpenCV's "
+                    "imgcodecs, which the CLI loads when it reads or writes an image file")
+  endif()
+endif()
+
 include(CPack)

@@ -7,10 +7,10 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "frames/frame_common.h"
+#include "image_files/image_files.h"
 
 namespace bs {
 namespace {
@@ -61,7 +61,7 @@ Frame frame_from_mat(const std::string& path, std::string_view format, cv::Mat i
 cv::Mat decode(const std::string& path, std::string_view what) {
   cv::Mat img;
   try {
-    img = cv::imread(path, cv::IMREAD_UNCHANGED);
+    img = bs::image_files::read(path, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception& e) {
     throw ImportError(ImportErrorCategory::Syntax, {path, 0, 0, "pixels"},
                       std::string(what) + " decoder failed: " + e.err);

@@ -29,6 +29,8 @@ echo "Depends: $depends"
 # dpkg-shlibdeps filled in the libraries the binaries link; the robot's package has no Qt.
 grep -q "libopencv" <<<"$depends" || fail "Depends lacks OpenCV: $depends"
 grep -q "libsqlite3" <<<"$depends" || fail "Depends lacks SQLite: $depends"
+# Loaded on first use (core/image_files), so named by cmake/BenchScopePackaging.cmake rather than dpkg-shlibdeps.
+grep -q "libopencv-imgcodecs" <<<"$depends" || fail "Depends lacks OpenCV's imgcodecs: $depends"
 if [ "$package" = benchscope-cli ] && grep -qi "qt" <<<"$depends"; then fail "benchscope-cli depends on Qt: $depends"; fi
 # The listing goes to a file: grep -q closing a pipe early would kill dpkg-deb (SIGPIPE) and fail under pipefail.
 dpkg-deb -c "$deb" >"$work/contents"
@@ -64,4 +66,9 @@ run library show mlperf-v3.0-orin_trt_maxq-resnet50-singlestream >"$work/library
 grep -q "source: *https://github.com/mlcommons/inference_results_v3.0/" "$work/library" ||
   fail "library show gave no URL: $(cat "$work/library")"
 grep -q "line 7: *90th percentile latency" "$work/library" || fail "library show gave no line: $(cat "$work/library")"
-echo "test_deb_package: installed CLI ran (--version, devices, run flops, library show)"
+# An image file written and read back by the installed CLI: OpenCV's imgcodecs is loaded on first use
+# (core/image_files), found by its soname where the package's Depends put it.
+run synth-frame --out "$work/frame" --size 64x48 >/dev/null || fail "synth-frame (writes a PNG) failed"
+[ -s "$work/frame-truth.png" ] || fail "synth-frame wrote no PNG"
+run import "$work/frames.bsw" "$work/frame-truth.png" --quiet || fail "importing the PNG it wrote failed"
+echo "test_deb_package: installed CLI ran (--version, devices, run flops, library show, a PNG written and read)"

@@ -8,12 +8,12 @@
 #include <iostream>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "common/args.h"
 #include "common/command.h"
 #include "common/text_table.h"
 #include "frames/frame_store.h"
+#include "image_files/image_files.h"
 #include "store/workspace.h"
 #include "vision/frames/frame_image.h"
 #include "vision/frames/workspace_lens.h"
@@ -84,7 +84,7 @@ int run_frames(const std::vector<std::string>& raw_args, std::ostream& out) {
       {"-a-mosaic.png", &t.mosaic}, {"-b-demosaiced.png", &t.demosaiced}, {"-c-reprojected.png", &t.reprojected}};
   for (const auto& [suffix, mat] : panels) {
     const std::string path = *prefix + suffix;
-    if (!cv::imwrite(path, vision::window_to_8bit(*mat, low, high)))
+    if (!bs::image_files::write(path, vision::window_to_8bit(*mat, low, high)))
       throw std::runtime_error(path + ": cannot write PNG");
     out << "wrote " << path << " (" << mat->cols << "x" << mat->rows << " px)\n";
   }

@@ -10,12 +10,12 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "common/args.h"
 #include "common/command.h"
 #include "common/import_error.h"
 #include "common/importer.h"
+#include "image_files/image_files.h"
 #include "vision/frames/frame_image.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/edge_proposals.h"
@@ -37,7 +37,7 @@ vision::TunerParams load_params(const std::optional<std::string>& path) {
 // A fisheye image as 8-bit BGR: an image file OpenCV reads, or a capture BenchScope imports (a .raw with its
 // sidecar, PGM/PPM...), demosaiced. `recorded` gets the lens recorded with a capture, when it has one.
 cv::Mat read_fisheye(const std::string& path, std::optional<vision::Lens>* recorded = nullptr) {
-  cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
+  cv::Mat image = bs::image_files::read(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
   if (!image.empty()) return image;
   ImportBatch batch;
   try {

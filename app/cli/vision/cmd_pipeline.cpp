@@ -12,7 +12,6 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "analysis/power/phase_energy.h"
 #include "commands/pipeline_grammar.h"
@@ -20,6 +19,7 @@
 #include "common/command.h"
 #include "common/signals.h"
 #include "common/text_table.h"
+#include "image_files/image_files.h"
 #include "power/power_args.h"
 #include "runs/pipeline_json.h"
 #include "sensors/recording_csv.h"
@@ -166,7 +166,7 @@ void write_figures(const std::string& dir, const FrameFile& frame, const cv::Mat
   std::filesystem::create_directories(dir);
   const auto save = [&](const std::string& name, const cv::Mat& img) {
     const std::string path = (std::filesystem::path(dir) / name).string();
-    if (!cv::imwrite(path, img)) throw std::runtime_error(path + ": cannot write image");
+    if (!bs::image_files::write(path, img)) throw std::runtime_error(path + ": cannot write image");
     out << "wrote " << path << '\n';
   };
   // Figure 3 of the paper: the raw mosaic shown as grey | demosaiced | reprojected (here with the detections).

@@ -9,10 +9,10 @@
 #include <iostream>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "common/args.h"
 #include "common/command.h"
+#include "image_files/image_files.h"
 #include "model/raw_sidecar.h"
 #include "vision/frames/synthetic.h"
 #include "vision/frames/synthetic_room.h"
@@ -123,7 +123,7 @@ int run_synth(const std::vector<std::string>& raw_args, std::ostream& out) {
   sidecar.truth = png_path;
   sidecar.lens_json = vision::lens_to_json(lens, view).dump();
   std::ofstream(json_path) << raw_sidecar_to_json(sidecar).dump(2) << '\n';
-  if (!cv::imwrite(png_path, truth)) throw std::runtime_error(png_path + ": cannot write PNG");
+  if (!bs::image_files::write(png_path, truth)) throw std::runtime_error(png_path + ": cannot write PNG");
   if (scene == "room") {
     // The room's grid lines as a user would pick them (true positions, every 1/48 of a wall), for refine-lines.
     const auto lines = room_lines_in_image(lens, vision::room_grid_lines(vision::room_yaw(room.seed)));

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
+#include "image_files/image_files.h"
 #include "vision/frames/synthetic_checkerboard.h"
 
 namespace bs::cli {
@@ -62,7 +62,7 @@ int synth_checkerboard(const ParsedArgs& args, const vision::Lens& lens, const v
     const std::string path = prefix + name;
     how.seed = static_cast<unsigned>(args.number("--seed", 1)) + static_cast<unsigned>(i);
     const cv::Mat image = vision::render_checkerboard(lens, poses[i], how);
-    if (!cv::imwrite(path, image)) throw std::runtime_error(path + ": cannot write PNG");
+    if (!bs::image_files::write(path, image)) throw std::runtime_error(path + ": cannot write PNG");
     const auto& p = poses[i];
     truth["images"].push_back({{"file", std::filesystem::path(path).filename().string()},
                                {"pose", {p.rx_deg, p.ry_deg, p.rz_deg, p.tx_mm, p.ty_mm, p.tz_mm}}});

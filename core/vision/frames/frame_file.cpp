@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
+#include "image_files/image_files.h"
 #include "model/raw_sidecar.h"
 
 namespace bs::vision {
@@ -80,7 +80,7 @@ FrameFile read_frame_file(const std::string& path, BayerPattern default_pattern)
   if (!std::filesystem::is_regular_file(path, ec)) fail(path, "no such file");
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".raw" || ext == ".bin") return read_raw(path);
-  const cv::Mat img = cv::imread(path, cv::IMREAD_UNCHANGED);
+  const cv::Mat img = bs::image_files::read(path, cv::IMREAD_UNCHANGED);
   if (img.empty()) fail(path, "not an image OpenCV can read (PNG, PGM, TIFF) and not raw Bayer (.raw + .json)");
   if (img.channels() != 1)
     fail(path, "has " + std::to_string(img.channels()) +

@@ -11,9 +11,9 @@
 #include <stdexcept>
 
 #include <opencv2/calib3d.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "image_files/image_files.h"
 #include "util/text.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/fisheye_opencv.h"
@@ -299,8 +299,9 @@ CheckerboardResult calibrate_checkerboard(const std::vector<CalibrationImage>& i
     r.name = in.name.empty() ? in.path : in.name;
     std::error_code ec;
     const bool missing = in.image.empty() && !std::filesystem::is_regular_file(in.path, ec);
-    const cv::Mat image =
-        in.image.empty() && !missing ? cv::imread(in.path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE) : in.image;
+    const cv::Mat image = in.image.empty() && !missing
+                              ? bs::image_files::read(in.path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE)
+                              : in.image;
     if (image.empty()) {
       r.rejected = missing ? "no such file" : "cannot read the image";
     } else {

@@ -12,8 +12,7 @@
 #include <QToolBar>
 #include <cmath>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "image_files/image_files.h"
 #include "vision/checkerboard_dialog.h"
 #include "vision/frames/synthetic_checkerboard.h"
 #include "vision/lens_tab.h"
@@ -50,11 +49,11 @@ QStringList write_views(const QTemporaryDir& dir) {
         "0,-40,0,230,0,200", "0,40,0,230,0,-200", "20,-30,35,230,150,130", "-20,30,-35,230,-150,-130"}) {
     const QString path = dir.filePath(QString("board-%1.png").arg(++n, 2, 10, QChar('0')));
     how.seed = static_cast<unsigned>(n);
-    cv::imwrite(path.toStdString(), vision::render_checkerboard(truth_lens(), vision::parse_pose(p), how));
+    bs::image_files::write(path.toStdString(), vision::render_checkerboard(truth_lens(), vision::parse_pose(p), how));
     paths << path;
   }
   const QString blank = dir.filePath("lens-cap-on.png");
-  cv::imwrite(blank.toStdString(), cv::Mat(512, 640, CV_8UC1, cv::Scalar(20)));
+  bs::image_files::write(blank.toStdString(), cv::Mat(512, 640, CV_8UC1, cv::Scalar(20)));
   paths.insert(3, blank);
   return paths;
 }
@@ -139,7 +138,7 @@ class TestCheckerboardDialog : public QObject {
     QStringList paths;
     // Many copies of a blank frame: the run is cancelled while it looks for corners.
     const QString blank = dir.filePath("blank.png");
-    cv::imwrite(blank.toStdString(), cv::Mat(512, 640, CV_8UC1, cv::Scalar(128)));
+    bs::image_files::write(blank.toStdString(), cv::Mat(512, 640, CV_8UC1, cv::Scalar(128)));
     for (int i = 0; i < 200; ++i) {
       const QString p = dir.filePath(QString("blank-%1.png").arg(i));
       QFile::copy(blank, p);

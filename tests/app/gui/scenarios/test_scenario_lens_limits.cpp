@@ -13,8 +13,7 @@
 #include <QToolButton>
 #include <cmath>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "image_files/image_files.h"
 #include "vision/checkerboard_dialog.h"
 #include "vision/frames/synthetic_checkerboard.h"
 #include "vision/lens/lens.h"
@@ -41,8 +40,8 @@ QStringList write_photos(const QString& folder) {
                            "0,45,0,300,0,-300", "20,-30,35,300,200,170", "-20,30,-35,300,-200,-170"}) {
     const QString name = QStringLiteral("board-%1.png").arg(++n);
     how.seed = static_cast<unsigned>(n);
-    cv::imwrite((folder + '/' + name).toStdString(),
-                bs::vision::render_checkerboard(optics, bs::vision::parse_pose(pose), how));
+    bs::image_files::write((folder + '/' + name).toStdString(),
+                           bs::vision::render_checkerboard(optics, bs::vision::parse_pose(pose), how));
     names << name;
   }
   return names;
