@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands/remote_commands.h"
 
+#include "commands/bench_dnn_grammar.h"
+#include "commands/bench_kernels_grammar.h"
 #include "commands/bench_vision_grammar.h"
 #include "commands/headroom_grammar.h"
 #include "commands/inventory_grammar.h"
 #include "commands/pipeline_grammar.h"
+#include "commands/record_power_grammar.h"
 #include "commands/run_bandwidth_grammar.h"
 #include "commands/run_flops_grammar.h"
 #include "commands/sustain_grammar.h"
+#include "remote/job_agent.h"
 
 namespace bs::commands {
 namespace {
@@ -23,11 +27,11 @@ std::vector<std::string> canonical(const std::vector<std::string>& words) {
 const std::vector<RemoteCommand>& remote_commands() {
   static const std::vector<RemoteCommand> list = {
       {"run flops", 2, true, true, canonical<RunFlopsSettings, run_flops_from_words>},
-      {"record-power", 1, true, true},
+      {"record-power", 1, true, true, canonical<RecordPowerSettings, record_power_from_words>},
       {"run bandwidth", 2, false, true, canonical<RunBandwidthSettings, run_bandwidth_from_words>},
-      {"bench dnn", 2, false, true},
+      {"bench dnn", 2, false, true, canonical<BenchDnnSettings, bench_dnn_from_words>},
       {"bench vision", 2, false, false, canonical<BenchVisionSettings, bench_vision_from_words>},
-      {"bench kernels", 2, false, false},
+      {"bench kernels", 2, false, false, canonical<BenchKernelsSettings, bench_kernels_from_words>},
       {"devices", 1, false, false, canonical<DevicesSettings, devices_from_words>},
       {"sensors", 1, false, false, canonical<SensorsSettings, sensors_from_words>},
       {"headroom", 1, false, true, canonical<HeadroomSettings, headroom_from_words>},
@@ -52,11 +56,20 @@ std::string remote_command_names() {
   return names;
 }
 
-void check_remote_words(const RemoteCommand& command, const std::vector<std::string>& args) {
-  if (!command.grammar) return;
-  const auto skip = static_cast<std::ptrdiff_t>(command.words);
+std::vector<std::string> job_words(const RemoteCommand& command, std::vector<std::string> args,
+                                   const std::string& result_workspace) {
   if (args.size() < static_cast<std::size_t>(command.words)) throw UsageError("expected '" + command.name + "'");
-  command.grammar({args.begin() + skip, args.end()});
+  std::vector<std::string> extra;
+  if (command.workspace) extra.insert(extra.end(), {"--workspace", result_workspace});
+  if (command.native_events) extra.insert(extra.end(), {"--events", "jsonl"});
+  args.insert(args.begin() + command.words, extra.begin(), extra.end());
+  return args;
+}
+
+void check_remote_words(const RemoteCommand& command, const std::vector<std::string>& args) {
+  // With the job's options, so that a rule that needs one (record-power's --out or --workspace) reads as there.
+  const std::vector<std::string> words = job_words(command, args, remote::kJobResultFile);
+  command.grammar({words.begin() + command.words, words.end()});
 }
 
 }  // namespace bs::commands

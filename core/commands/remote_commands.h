@@ -17,8 +17,8 @@ struct RemoteCommand {
   std::string name;  // "run flops", "record-power"
   int words = 1;     // how many words name it
   bool native_events = false;
-  bool workspace = false;            // takes --workspace, so its results come home
-  CanonicalWords grammar = nullptr;  // null: no grammar yet, the robot's CLI is the only check
+  bool workspace = false;  // takes --workspace, so its results come home
+  CanonicalWords grammar = nullptr;
 };
 
 const std::vector<RemoteCommand>& remote_commands();
@@ -26,8 +26,13 @@ const std::vector<RemoteCommand>& remote_commands();
 std::optional<RemoteCommand> find_remote_command(const std::vector<std::string>& args);
 // "run flops, record-power, ..." for messages.
 std::string remote_command_names();
-// Reads `args` (the command's name first) through its grammar, as the robot will: throws UsageError for words the
-// robot's CLI would refuse. Commands without a grammar pass unchecked.
+// The words the robot's job agent runs for `args` (the command's name first): the job's own options go right after
+// the name, before any "--" (record-power's command): --workspace `result_workspace` for a command whose results
+// come home, --events jsonl for one that streams its own events.
+std::vector<std::string> job_words(const RemoteCommand& command, std::vector<std::string> args,
+                                   const std::string& result_workspace);
+// Reads `args` (the command's name first) through its grammar with the job's own options added, as the robot will:
+// throws UsageError for words the robot's CLI would refuse.
 void check_remote_words(const RemoteCommand& command, const std::vector<std::string>& args);
 
 }  // namespace bs::commands

@@ -33,6 +33,7 @@
 #include "remote/remote_run.h"
 #include "remote/robot_queue_dialog.h"
 #include "remote/robot_target.h"
+#include "remote/run_here_or_robot.h"
 #include "sensors/recorder.h"
 
 namespace bs::ui {
@@ -60,7 +61,8 @@ KernelRunner::KernelRunner(QWidget* parent)
       target_(new RobotTarget(this)),
       robot_power_(new QCheckBox(tr("On the robot (auto)"), this)),
       several_(new QPushButton(tr("Several robots…"), this)),
-      remote_log_(new QLabel(this)) {
+      remote_log_(new QLabel(this)),
+      controller_(new RunHereOrRobot(target_, this)) {
   qRegisterMetaType<bs::FlopsRun>();
   qRegisterMetaType<std::vector<bs::FlopsRun>>();
   iterations_->setRange(1, 100'000'000);
@@ -160,6 +162,14 @@ KernelRunner::KernelRunner(QWidget* parent)
   connect(backend_, &QComboBox::currentIndexChanged, this, &KernelRunner::show_backend_details);
   connect(target_, &RobotTarget::changed, this, &KernelRunner::on_target_changed);
   connect(several_, &QPushButton::clicked, this, &KernelRunner::choose_robots);
+  connect(controller_, &RunHereOrRobot::busy_changed, this, &KernelRunner::busy_changed);
+  connect(controller_, &RunHereOrRobot::progress, this, &KernelRunner::relay_progress);
+  connect(controller_, &RunHereOrRobot::here_finished, this, &KernelRunner::here_finished);
+  connect(controller_, &RunHereOrRobot::robot_started, this, &KernelRunner::robot_started);
+  connect(controller_, &RunHereOrRobot::robot_finished, this, &KernelRunner::robot_finished);
+  connect(controller_, &RunHereOrRobot::robot_text, this,
+          [this](const QString& line) { remote_log_->setText(QStringLiteral("%1: %2").arg(robot_name_, line)); });
+  connect(controller_, &RunHereOrRobot::failed, this, &KernelRunner::run_failed);
   populate();
   restore_parameters();
   on_target_changed();
@@ -191,10 +201,12 @@ void KernelRunner::save_parameters() const {
 }
 
 KernelRunner::~KernelRunner() {
-  if (cancel_) cancel_->cancel();
+  delete controller_;  // cancels and waits for a sweep here, or drops the robot's connection, before the panel goes
   if (ceiling_cancel_) ceiling_cancel_->cancel();
-  QThreadPool::globalInstance()->waitForDone();  // the sweep thread refers to our backends
+  QThreadPool::globalInstance()->waitForDone();  // the ceilings' thread refers to our backends
 }
+
+bool KernelRunner::running() const { return on_robots_ || controller_->running(); }
 
 void KernelRunner::populate() {
   cpu_ = kernels::detect_cpu();  // ~0.1 s clock calibration, once
@@ -498,85 +510,54 @@ void KernelRunner::start() {
   // Each point lasts long enough for the sensor to sample it kMinSamplesPerPoint times (issue #32.4).
   if (recorder_) spec.min_point_s = min_point_seconds(recorder_->interval_s());
   save_parameters();
-  cancel_ = std::make_shared<CancelToken>();
-  emit started();
-  run_->setEnabled(false);
-  stop_->setEnabled(true);
-  progress_->setValue(0);
-  progress_->setFormat(QStringLiteral("%p %"));
-  auto cancel = cancel_;
+  sweep_ = std::make_shared<std::optional<kernels::SweepResult>>();
   const kernels::CpuInfo cpu = cpu_;
-  auto* watcher = new QFutureWatcher<kernels::SweepResult>(this);
-  connect(watcher, &QFutureWatcher<kernels::SweepResult>::finished, this, [this, watcher] {
-    watcher->deleteLater();
-    cancel_.reset();
-    validate_inputs();  // Run comes back only if the fields still parse
-    stop_->setEnabled(false);
-    try {
-      const kernels::SweepResult result = watcher->result();
-      // A cancelled sweep keeps the bar where it stopped (issue #32.8), saying so; a finished one fills it.
-      if (result.cancelled)
-        progress_->setFormat(tr("cancelled at %p %"));
-      else
-        progress_->setValue(1000);
-      if (recorder_) {
-        const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
-        trace_ = recorder_->finish("Kernel Runner " +
-                                   (first ? first->backend + " " + first->provenance.date : std::string()));
-        if (first) trace_->platform = first->platform;  // paired with the run's platform in every view
-        recorder_.reset();
-      }
-      show_energies(result.runs);
-      show_ceilings(result.runs);
-      emit finished(result.runs, result.cancelled);
-    } catch (const std::exception& e) {
-      emit failed(QString::fromUtf8(e.what()));
-    }
-  });
   QPointer<KernelRunner> self(this);
   // The recorder's phase calls are thread-safe: the sweep thread marks each D's warm-up and each point.
-  watcher->setFuture(QtConcurrent::run([backend, cpu, spec, cancel, self, rec = recorder_] {
-    double last_end = rec ? rec->now_s() : 0;
-    int current_d = -1;
-    return kernels::run_sweep(
-        backend, cpu, spec, *cancel,
-        [self, rec, &last_end, &current_d, warmup = spec.warmup](double f, std::string_view step) {
-          if (step == "cancelled") return;  // the sweep's last report: the bar stays where the sweep stopped
-          QMetaObject::invokeMethod(
-              self.data(),
-              [self, f] {
-                if (self) self->progress_->setValue(static_cast<int>(f * 1000));
-              },
-              Qt::QueuedConnection);
-          const auto comma = step.find(", D=");
-          if (!rec || !step.starts_with("W=") || comma == std::string_view::npos) return;
-          const long long w = std::stoll(std::string(step.substr(2, comma - 2)));
-          const int d = std::stoi(std::string(step.substr(comma + 4)));
-          if (d != current_d) {
-            current_d = d;
-            if (warmup) rec->add_phase(sweep_warmup_phase(d), last_end, rec->now_s());
-          }
-          rec->begin_phase(sweep_point_phase(w, d));
-        },
-        [self, rec, &last_end](const FlopsRun& run) {
-          if (rec) {
-            rec->end_phase();
-            last_end = rec->now_s();
-          }
-          QMetaObject::invokeMethod(
-              self.data(),
-              [self, run] {
-                if (self) emit self->live_run(run);
-              },
-              Qt::QueuedConnection);
-        });
-  }));
+  const bool started_here =
+      controller_->start_here([backend, cpu, spec, self, rec = recorder_, output = sweep_](const CancelToken& token) {
+        double last_end = rec ? rec->now_s() : 0;
+        int current_d = -1;
+        *output = kernels::run_sweep(
+            backend, cpu, spec, token,
+            [&token, rec, &last_end, &current_d, warmup = spec.warmup](double f, std::string_view step) {
+              if (step == "cancelled") return;  // the sweep's last report: the bar stays where the sweep stopped
+              token.report(f, step);
+              const auto comma = step.find(", D=");
+              if (!rec || !step.starts_with("W=") || comma == std::string_view::npos) return;
+              const long long w = std::stoll(std::string(step.substr(2, comma - 2)));
+              const int d = std::stoi(std::string(step.substr(comma + 4)));
+              if (d != current_d) {
+                current_d = d;
+                if (warmup) rec->add_phase(sweep_warmup_phase(d), last_end, rec->now_s());
+              }
+              rec->begin_phase(sweep_point_phase(w, d));
+            },
+            [self, rec, &last_end](const FlopsRun& run) {
+              if (rec) {
+                rec->end_phase();
+                last_end = rec->now_s();
+              }
+              QMetaObject::invokeMethod(
+                  self.data(),
+                  [self, run] {
+                    if (self) emit self->live_run(run);
+                  },
+                  Qt::QueuedConnection);
+            });
+      });
+  if (!started_here) {
+    recorder_.reset();  // said through `failed`
+    return;
+  }
+  progress_->setValue(0);
+  progress_->setFormat(QStringLiteral("%p %"));
+  emit started();
 }
 
 void KernelRunner::cancel() {
-  if (cancel_) cancel_->cancel();
   remote_queue_.clear();  // the robots not started yet are not started
-  if (remote_) remote_->cancel();
+  controller_->cancel();
 }
 
 void KernelRunner::choose_robots() {
@@ -612,10 +593,8 @@ void KernelRunner::start_on_robots(const std::vector<std::pair<QString, QString>
   remote_failures_.clear();
   trace_.reset();
   energy_->setVisible(false);
+  on_robots_ = true;
   emit started();
-  run_->setEnabled(false);
-  several_->setEnabled(false);
-  stop_->setEnabled(true);
   remote_log_->clear();
   remote_log_->show();
   start_remote_next();
@@ -623,7 +602,7 @@ void KernelRunner::start_on_robots(const std::vector<std::pair<QString, QString>
 
 void KernelRunner::start_remote_next() {
   if (remote_queue_.empty()) {
-    finish_remote(false);
+    finish_remote();
     return;
   }
   const auto [name, platform] = remote_queue_.front();
@@ -633,45 +612,88 @@ void KernelRunner::start_remote_next() {
   t.destination = name.toStdString();
   for (const remote::Robot& r : target_->robots())
     if (r.name == t.destination) t = r.target();
-  remote_ = std::make_unique<RemoteRun>(t, remote_command_);
-  RemoteRun* run = remote_.get();
+  robot_name_ = name;
+  robot_platform_ = platform;
+  robot_who_ = remote_total_ > 1 ? tr("%1 (%2 of %3)").arg(name).arg(index).arg(remote_total_) : name;
   last_power_.clear();
-  const QString who = remote_total_ > 1 ? tr("%1 (%2 of %3)").arg(name).arg(index).arg(remote_total_) : name;
   progress_->setValue(0);
-  progress_->setFormat(tr("%1: checking…").arg(who));
-  connect(run, &RemoteRun::progress, this, [this, who](double f, const QString& step) {
-    progress_->setValue(static_cast<int>(f * 1000));
-    progress_->setFormat(QStringLiteral("%1: %p % %2%3").arg(who, step, last_power_));
-  });
+  progress_->setFormat(tr("%1: checking…").arg(robot_who_));
+  if (!controller_->start_on(t, platform, remote_command_)) start_remote_next();  // said through `failed`
+}
+
+void KernelRunner::robot_started(RemoteRun* run) {
   connect(run, &RemoteRun::power, this, [this](double watts, const QString& channel) {
     last_power_ = QStringLiteral(" · %1 %2").arg(QString::fromStdString(format_si(watts, "W")), channel);
   });
-  connect(run, &RemoteRun::live_run, this, [this, platform](const FlopsRun& r) {
+  // Drawn under the platform name it will be stored with.
+  connect(run, &RemoteRun::live_run, this, [this, platform = robot_platform_.toStdString()](const FlopsRun& r) {
     FlopsRun shown = r;
-    shown.platform = platform.toStdString();  // drawn under the name it will be stored with
+    shown.platform = platform;
     emit live_run(shown);
   });
-  connect(run, &RemoteRun::remote_text, this,
-          [this, name](const QString& line) { remote_log_->setText(QStringLiteral("%1: %2").arg(name, line)); });
-  connect(run, &RemoteRun::finished, this, [this, run, platform, who] {
-    const bool cancelled = run->job().status == "cancelled";
-    progress_->setFormat(cancelled ? tr("%1: cancelled at %p %").arg(who) : tr("%1: done").arg(who));
-    if (!cancelled) progress_->setValue(1000);
-    emit remote_finished(run, platform);
-    remote_.release()->deleteLater();  // we are in its signal
-    start_remote_next();
-  });
-  connect(run, &RemoteRun::failed, this, [this, run, name](const QString& message) {
-    remote_failures_ << message;
-    remote_log_->setText(QStringLiteral("%1: %2").arg(name, message));
-    (void)run;
-    remote_.release()->deleteLater();
-    start_remote_next();
-  });
-  run->start();
 }
 
-void KernelRunner::finish_remote(bool) {
+void KernelRunner::robot_finished(RemoteRun* run, const QString& platform) {
+  const bool cancelled = run->job().status == "cancelled";
+  progress_->setFormat(cancelled ? tr("%1: cancelled at %p %").arg(robot_who_) : tr("%1: done").arg(robot_who_));
+  if (!cancelled) progress_->setValue(1000);
+  emit remote_finished(run, platform);
+}
+
+void KernelRunner::relay_progress(double fraction, const QString& step) {
+  progress_->setValue(static_cast<int>(fraction * 1000));
+  if (on_robots_) progress_->setFormat(QStringLiteral("%1: %p % %2%3").arg(robot_who_, step, last_power_));
+}
+
+void KernelRunner::run_failed(const QString& message) {
+  if (!on_robots_) {
+    if (recorder_) recorder_.reset();  // the sweep failed: its power recording stops with it, unused
+    emit failed(message);
+    return;
+  }
+  remote_failures_ << message;  // "robot: why" (the controller names the robot)
+  remote_log_->setText(message);
+}
+
+void KernelRunner::busy_changed(bool busy) {
+  if (busy) {
+    run_->setEnabled(false);
+    several_->setEnabled(false);
+    stop_->setEnabled(true);
+    return;
+  }
+  // Between the robots of a queue the controller is idle for a moment: the next one starts now.
+  if (on_robots_) {
+    start_remote_next();
+    return;
+  }
+  stop_->setEnabled(false);
+  validate_inputs();  // Run comes back only if the fields still parse
+}
+
+void KernelRunner::here_finished() {
+  // run_sweep keeps what it completed when cancelled; with nothing (cancelled before it began) there is nothing.
+  const kernels::SweepResult result = sweep_ && *sweep_ ? std::move(**sweep_) : kernels::SweepResult{{}, true};
+  sweep_.reset();
+  // A cancelled sweep keeps the bar where it stopped (issue #32.8), saying so; a finished one fills it.
+  if (result.cancelled)
+    progress_->setFormat(tr("cancelled at %p %"));
+  else
+    progress_->setValue(1000);
+  if (recorder_) {
+    const FlopsRun* first = result.runs.empty() ? nullptr : &result.runs.front();
+    trace_ =
+        recorder_->finish("Kernel Runner " + (first ? first->backend + " " + first->provenance.date : std::string()));
+    if (first) trace_->platform = first->platform;  // paired with the run's platform in every view
+    recorder_.reset();
+  }
+  show_energies(result.runs);
+  show_ceilings(result.runs);
+  emit finished(result.runs, result.cancelled);
+}
+
+void KernelRunner::finish_remote() {
+  on_robots_ = false;
   stop_->setEnabled(false);
   validate_inputs();
   if (!remote_failures_.isEmpty()) emit failed(remote_failures_.join(QStringLiteral("\n\n")));

@@ -9,6 +9,7 @@
 
 #include "kernels/backends/backend.h"
 #include "kernels/ceilings/ceilings.h"
+#include "kernels/sweep.h"
 #include "model/power_trace.h"
 
 class QCheckBox;
@@ -29,6 +30,7 @@ namespace bs::ui {
 class PowerSensorBox;
 class RemoteRun;
 class RobotTarget;
+class RunHereOrRobot;
 }  // namespace bs::ui
 
 namespace bs::ui {
@@ -41,13 +43,14 @@ namespace bs::ui {
 // The target is this computer or a robot over SSH (RobotTarget): on a robot the same sweep runs as a remote job,
 // its points plotted live as they arrive, Cancel asks the robot to stop (the completed points come home), and the
 // results are handed over to be imported with their provenance (remote_finished); "Several robots…" runs the
-// sweep on each chosen robot in turn.
+// sweep on each chosen robot in turn. Here or on a robot, the shared controller (RunHereOrRobot) starts, relays
+// and cancels; this panel keeps its own progress bar format (the robot's name, its power) and the robot queue.
 class KernelRunner : public QWidget {
   Q_OBJECT
  public:
   explicit KernelRunner(QWidget* parent = nullptr);
   ~KernelRunner() override;
-  bool running() const { return cancel_ != nullptr || remote_ != nullptr; }
+  bool running() const;
   RobotTarget* target() const { return target_; }
   QCheckBox* robot_power_box() const { return robot_power_; }
   QPushButton* several_robots_button() const { return several_; }
@@ -96,10 +99,16 @@ class KernelRunner : public QWidget {
   void populate();
   void on_target_changed();  // the backends of this computer or of the robot checked; rows shown for either
   void fill_backends();
-  void start_remote_next();  // the next robot of the queue
-  void finish_remote(bool cancelled);
-  void choose_robots();       // "Several robots…"
-  void restore_parameters();  // the last sweep's workers, D, N, repeats, variant and backend (QSettings)
+  void start_remote_next();  // the next robot of the queue, or the end of the queue
+  void finish_remote();
+  void here_finished();          // the sweep here returned (finished or cancelled)
+  void busy_changed(bool busy);  // the controller started or ended a run
+  void relay_progress(double fraction, const QString& step);
+  void robot_started(RemoteRun* run);  // the robot's live points and power readings
+  void robot_finished(RemoteRun* run, const QString& platform);
+  void run_failed(const QString& message);  // here, or one robot of the queue
+  void choose_robots();                     // "Several robots…"
+  void restore_parameters();                // the last sweep's workers, D, N, repeats, variant and backend (QSettings)
   void save_parameters() const;
   void show_backend_details();
   void show_energies(const std::vector<FlopsRun>& runs);
@@ -108,7 +117,6 @@ class KernelRunner : public QWidget {
   const kernels::Backend* current_backend() const;
   kernels::CpuInfo cpu_;
   std::vector<kernels::Backend> backends_;
-  std::shared_ptr<CancelToken> cancel_;
   QComboBox* backend_;
   QComboBox* variant_;
   QLineEdit* workers_;
@@ -136,7 +144,12 @@ class KernelRunner : public QWidget {
   QPushButton* several_;
   QLabel* remote_log_;
   std::vector<std::string> robot_backend_ids_;  // the backend box's ids while a robot is the target
-  std::unique_ptr<RemoteRun> remote_;
+  RunHereOrRobot* controller_;                  // here or on a robot: starts, relays progress, cancels
+  // The sweep here, written on its worker thread before it returns and read in here_finished.
+  std::shared_ptr<std::optional<kernels::SweepResult>> sweep_;
+  bool on_robots_ = false;                                // a queue of robots runs (from its start to its end)
+  QString robot_name_, robot_who_, robot_platform_;       // the robot running now: "robot", "robot (2 of 3)", its
+                                                          // platform name
   std::deque<std::pair<QString, QString>> remote_queue_;  // robots still to run, with their platform names
   std::vector<std::string> remote_command_;
   QString remote_backend_;  // the backend id a run on several robots uses

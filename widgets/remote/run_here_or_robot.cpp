@@ -107,15 +107,23 @@ bool RunHereOrRobot::start_on_robot(const std::vector<std::string>& words) {
     emit failed(tr("A measurement is running already"));
     return false;
   }
-  const QString robot = target_->robot_name();
   if (const QString why = target_->not_ready(tr("Run")); !why.isEmpty()) {
     emit status(why);
     emit failed(why);
     return false;
   }
   target_->remember_platform();
-  const QString platform = target_->platform();
-  remote_ = std::make_unique<RemoteRun>(target_->target(), words);
+  return start_on(target_->target(), target_->platform(), words);
+}
+
+bool RunHereOrRobot::start_on(const remote::SshTarget& robot_target, const QString& platform,
+                              const std::vector<std::string>& words) {
+  if (running()) {
+    emit failed(tr("A measurement is running already"));
+    return false;
+  }
+  const QString robot = QString::fromStdString(robot_target.destination);
+  remote_ = std::make_unique<RemoteRun>(robot_target, words);
   RemoteRun* run = remote_.get();
   connect(run, &RemoteRun::remote_text, this, [this, robot](const QString& line) {
     emit robot_text(line);

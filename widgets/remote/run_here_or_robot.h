@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "remote/ssh.h"
 #include "util/cancel.h"
 
 class QAbstractButton;
@@ -44,6 +45,10 @@ class RunHereOrRobot : public QObject {
   // Starts `words` (the robot's CLI arguments) on the chosen robot after checking that it is ready; the platform the
   // user confirmed is remembered with the robot. False (and `failed` naming why) when it cannot start.
   bool start_on_robot(const std::vector<std::string>& words);
+  // Starts `words` on `robot`, its results to go under `platform`: one robot of a queue the panel runs in turn
+  // ("Several robots…"), not necessarily the chosen one, so no check of the chosen one (the job checks its robot
+  // before it runs anyway). False (and `failed`) when something runs already.
+  bool start_on(const remote::SshTarget& robot, const QString& platform, const std::vector<std::string>& words);
   void cancel();
   // The panel's Run and Cancel buttons, progress bar and status line follow the controller: Run disabled and Cancel
   // enabled while busy, the bar shown then (busy without a value on a robot until it says how far it is), the status

@@ -17,6 +17,7 @@
 #include "analysis/power/phase_energy.h"
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
+#include "commands/bench_kernels_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/signals.h"
@@ -62,11 +63,10 @@ double per_core_peak(const kernels::Backend& b, const kernels::CpuInfo& cpu) {
 
 // What sampling the power sensors costs the kernel: the CPU SIMD throughput point R times without the sampler,
 // R times with it running (its phases give the energy per run), R times without again; medians and their ratio.
-void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, const kernels::CpuInfo& cpu, int runs,
-                          std::ostream& out) {
+void bench_power_overhead(const commands::BenchKernelsSettings& settings, const kernels::Backend& b,
+                          const kernels::CpuInfo& cpu, int runs, std::ostream& out) {
   const kernels::RotationParams params{4, 40000};
-  const std::int64_t workers =
-      args.value("--workers") ? static_cast<std::int64_t>(args.number("--workers", 16384)) : 16384;
+  const std::int64_t workers = settings.workers.value_or(16384);
   const double flops = rotation_flop_count(params.dims, params.iterations, workers);
   std::vector<float> outputs;
   std::vector<double> without, with;
@@ -77,7 +77,7 @@ void bench_power_overhead(const ParsedArgs& args, const kernels::Backend& b, con
   b.run_point(params, workers, kernels::Variant::Throughput, outputs, interrupt_token());  // warm-up
   for (int r = 0; r < runs; ++r) timed(without);
   std::ostringstream chosen;
-  auto rec = start_power(args, chosen, false);
+  auto rec = start_power(settings.power, chosen, false);
   for (int r = 0; r < runs; ++r) {
     rec->begin_phase("run " + std::to_string(r + 1));
     timed(with);
@@ -157,21 +157,14 @@ void bench_and_cache_ceilings(const kernels::CpuInfo& cpu, const kernels::Backen
 }
 
 int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
-  const ParsedArgs args =
-      parse_args(raw, {"--no-ceilings", "--ceilings-only"},
-                 {"--runs", "--workers", "--power", "--power-interval-ms", "--sysfs-root", "--isa"});
-  const int runs = static_cast<int>(args.number("--runs", 7));
-  if (runs < 1 || runs > 1000) throw UsageError("--runs must be between 1 and 1000");
-  if (args.has("--no-ceilings") && args.has("--ceilings-only"))
-    throw UsageError("--no-ceilings and --ceilings-only exclude each other");
+  const commands::BenchKernelsSettings settings = commands::bench_kernels_from_words(raw);
+  const int runs = settings.runs;
   // Large W, so one run is tens of milliseconds of work and thread start-up (milliseconds on a shared machine) is
   // a small part of it: 16384 workers x 4 points for the throughput variants (~50 ms at 300 GFLOPS), 2048 for the
   // latency-bound paper variants (one dependent chain per worker, ~0.2 s at 10 GFLOPS).
-  const auto w_override = args.value("--workers");
-  const double w_given = args.number("--workers", 0);
-  if (w_override && (w_given < 1 || w_given > 1e6)) throw UsageError("--workers must be between 1 and 1e6");
+  const std::optional<std::int64_t> w_override = settings.workers;
   const std::string load_before = load_average();
-  kernels::CpuInfo cpu = cpu_from_args(args);
+  kernels::CpuInfo cpu = cpu_from_isa(settings.isa);
   const auto backends = kernels::available_backends(cpu);
   const kernels::RotationParams params{4, 40000};
   char line[640];
@@ -181,15 +174,15 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
                 cpu.model.c_str(), cpu.vendor.c_str(), cpu.threads, cpu.clock_hz / 1e9, cpu.simd.name.c_str(),
                 cpu.fma_ports, cpu.flops_per_cycle, load_before.c_str());
   out << line;
-  if (args.has("--ceilings-only")) {
+  if (settings.ceilings_only) {
     measure_device_ceilings(backends, runs, out);
-    bench_and_cache_ceilings(cpu, backends.front(), runs, w_override ? static_cast<std::int64_t>(w_given) : 16384, out);
+    bench_and_cache_ceilings(cpu, backends.front(), runs, w_override.value_or(16384), out);
     return 0;
   }
   // Every OpenCL and CUDA device's empirical ceilings first (timed on the device, each result checked), so the
   // table can give each of its rows "% of ceiling" beside "% of the computed peak".
   std::map<std::string, kernels::CeilingSet> device_ceilings;
-  if (!args.has("--no-ceilings")) device_ceilings = measure_device_ceilings(backends, runs, out);
+  if (!settings.no_ceilings) device_ceilings = measure_device_ceilings(backends, runs, out);
   out << "D = 4, N = 40,000; GFLOPS of each of " << runs
       << " runs after one warm-up (wall clock, steady_clock); % of the theoretical peak computed here.\n"
          "'% ceiling': against the device's rotation-mix ceiling measured above (OpenCL, CUDA; the CPU SIMD\n"
@@ -204,7 +197,7 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
     for (const auto v : b.variants) {
       // The single-threaded scalar reference gets 8 workers so the benchmark stays short.
       const std::int64_t workers = b.id == "cpu-scalar"           ? 8
-                                   : w_override                   ? static_cast<std::int64_t>(w_given)
+                                   : w_override                   ? *w_override
                                    : v == kernels::Variant::Paper ? 2048
                                                                   : 16384;
       std::vector<double> gflops, cpu_efficiency;
@@ -279,9 +272,8 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   std::snprintf(line, sizeof line, "clock measured again at the end: %.3f GHz; load average after: %s\n",
                 clock_after / 1e9, load_average().c_str());
   out << line;
-  if (!args.has("--no-ceilings"))
-    bench_and_cache_ceilings(cpu, simd, runs, w_override ? static_cast<std::int64_t>(w_given) : 16384, out);
-  if (args.value("--power") && *args.value("--power") != "none") bench_power_overhead(args, simd, cpu, runs, out);
+  if (!settings.no_ceilings) bench_and_cache_ceilings(cpu, simd, runs, w_override.value_or(16384), out);
+  if (settings.power.sensor != "none") bench_power_overhead(settings, simd, cpu, runs, out);
   return 0;
 }
 

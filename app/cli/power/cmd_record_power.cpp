@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "analysis/power/phase_energy.h"
+#include "commands/record_power_grammar.h"
 #include "common/args.h"
 #include "common/command.h"
 #include "common/events_option.h"
@@ -25,26 +26,16 @@ namespace {
 
 int record_power(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err,
                  remote::EventWriter* events) {
-  // Everything after "--" is the command to run, untouched by our option parsing.
-  const auto dashes = std::find(raw.begin(), raw.end(), std::string("--"));
-  const std::vector<std::string> own(raw.begin(), dashes);
-  const std::vector<std::string> command(dashes == raw.end() ? dashes : dashes + 1, raw.end());
-  const ParsedArgs args = parse_args(
-      own, {"--quiet"}, {"--out", "--workspace", "--sensor", "--interval-ms", "--sysfs-root", "--seconds", "--events"});
-  if (!args.positional.empty())
-    throw UsageError("unexpected argument '" + args.positional[0] + "' (a command goes after --)");
-  const auto path = args.value("--out");
-  const auto ws_path = args.value("--workspace");
-  if (!path && !ws_path) throw UsageError("--out FILE.csv or --workspace W.bsw is required");
+  const commands::RecordPowerSettings s = commands::record_power_from_words(raw);
+  const std::vector<std::string>& command = s.command;
+  const auto& path = s.out;
+  const auto& ws_path = s.workspace;
   std::ostream& text = events ? err : out;
-  const bool timed = args.value("--seconds").has_value();
-  if (timed == !command.empty()) throw UsageError("give either --seconds S or -- COMMAND ARGS...");
-  const double seconds = args.number("--seconds", 0);
-  if (timed && !(seconds > 0 && seconds <= 7 * 24 * 3600)) throw UsageError("--seconds must be > 0");
-  const bool quiet = args.has("--quiet");
+  const bool timed = s.seconds.has_value();
+  const double seconds = s.seconds.value_or(0);
+  const bool quiet = s.quiet;
   const CancelToken& cancel = interrupt_token();  // installs the Ctrl+C handler before anything starts
-  auto rec = make_recorder(args.value("--sensor").value_or("auto"), args.value("--sysfs-root").value_or("/"),
-                           args.number("--interval-ms", 100), err, quiet, events);
+  auto rec = make_recorder(s.sensor, s.sysfs_root.value_or("/"), s.interval_ms, err, quiet, events);
   int status = 0;
   std::string what;
   if (timed) {

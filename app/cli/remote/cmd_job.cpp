@@ -28,11 +28,8 @@ namespace {
 
 // The command as main() would run it, in the job's forked child: its text to stderr (stdout carries events).
 int run_in_job(const RemoteCommand& rc, std::vector<std::string> args, const std::string& job_dir) {
-  // The job's own options go right after the command's name, before any "--" (record-power's command).
-  std::vector<std::string> extra;
-  if (rc.workspace) extra.insert(extra.end(), {"--workspace", job_dir + "/" + remote::kJobResultFile});
-  if (rc.native_events) extra.insert(extra.end(), {"--events", "jsonl"});
-  args.insert(args.begin() + rc.words, extra.begin(), extra.end());
+  // The words the desk checked (commands::check_remote_words adds the same options).
+  args = commands::job_words(rc, std::move(args), job_dir + "/" + remote::kJobResultFile);
   const Command* command = find_command(args[0]);
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   int status = 1;

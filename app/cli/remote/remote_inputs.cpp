@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "commands/bench_dnn_grammar.h"
 #include "model/raw_sidecar.h"
 
 namespace fs = std::filesystem;
@@ -108,13 +109,11 @@ CarriedCommand carry_desk_files(const std::vector<std::string>& command, const s
   CarriedCommand out{command, {}};
   Carrier carrier(robot_inputs_dir);
   std::vector<std::string>& words = out.command;
-  // bench dnn --model MODEL[,CONFIG]: the network's files.
+  // bench dnn --model MODEL[,CONFIG]: the network's files, found and written again by the command's grammar.
   if (words.size() >= 2 && words[0] == "bench" && words[1] == "dnn") {
-    for (std::size_t i = 2; i < words.size(); ++i) {
-      if (words[i] == "--") break;
-      if (words[i] == "--model" && i + 1 < words.size()) words[i + 1] = carry_model(carrier, words[i + 1]);
-      if (words[i].starts_with("--model=")) words[i] = "--model=" + carry_model(carrier, words[i].substr(8));
-    }
+    commands::BenchDnnSettings settings = commands::bench_dnn_from_words({words.begin() + 2, words.end()});
+    if (settings.model) settings.model = carry_model(carrier, *settings.model);
+    out.command = commands::to_words(settings);
     out.files = carrier.files();
     return out;
   }

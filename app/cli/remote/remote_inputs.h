@@ -21,8 +21,8 @@ struct CarriedCommand {
   std::vector<CarriedFile> files;    // in the order they are sent
 };
 
-// `robot_inputs_dir`: the job's inputs folder on the robot (its jobs folder / ID / inputs). Other commands come back
-// unchanged.
+// `robot_inputs_dir`: the job's inputs folder on the robot (its jobs folder / ID / inputs). `bench dnn` comes back
+// as its grammar writes it (throws UsageError as it does); other commands come back unchanged.
 CarriedCommand carry_desk_files(const std::vector<std::string>& command, const std::string& robot_inputs_dir);
 
 }  // namespace bs::cli

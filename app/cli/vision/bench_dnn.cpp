@@ -12,7 +12,6 @@
 #include <optional>
 #include <ostream>
 #include <random>
-#include <set>
 
 #include <unistd.h>
 #include <nlohmann/json.hpp>
@@ -21,6 +20,7 @@
 #include "analysis/power/phase_energy.h"
 #include "analysis/power/power_stats.h"
 #include "analysis/stats/stats.h"
+#include "commands/bench_dnn_grammar.h"
 #include "common/args.h"
 #include "common/signals.h"
 #include "common/text_table.h"
@@ -50,15 +50,6 @@ std::string load_average_text() {
   std::string one, five;
   f >> one >> five;
   return one.empty() ? "unknown" : one + " (1 min), " + five + " (5 min)";
-}
-
-cv::Size parse_size(const std::string& s) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 32 || h < 32 ||
-      w > 4096 || h > 4096)
-    throw UsageError("--input must be WxH with sides of 32 to 4096 px, e.g. 640x640 (got '" + s + "')");
-  return {w, h};
 }
 
 // The network to time: built in code or read from files, with what the output and the views need to know.
@@ -219,44 +210,25 @@ nlohmann::json run_json(const DnnRun& r, double cores_busy, double published_gfl
 }  // namespace
 
 int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostream& err) {
-  std::set<std::string> valued = {"--model", "--arch",    "--input",    "--batch",
-                                  "--runs",  "--backend", "--platform", "--workspace"};
-  valued.insert(kPowerOptions.begin(), kPowerOptions.end());
-  const ParsedArgs args = parse_args(raw, {"--json"}, valued);
-  const bool json = args.has("--json");
+  const commands::BenchDnnSettings settings = commands::bench_dnn_from_words(raw);
+  const bool json = settings.json;
   std::optional<StdoutToStderr> quiet_stdout;
   if (json) quiet_stdout.emplace();
   std::ostream& text = json ? err : out;  // --json keeps stdout to the document alone
-  if (!args.positional.empty())
-    throw UsageError("bench dnn takes no positional arguments (got '" + args.positional.front() + "')");
-  if (args.value("--model") && args.value("--arch")) throw UsageError("give --model or --arch, not both");
-  const double runs_arg = args.number("--runs", 20), batch_arg = args.number("--batch", 1);
-  if (!(runs_arg >= 1 && runs_arg <= 100000) || runs_arg != std::floor(runs_arg))
-    throw UsageError("--runs must be a whole number from 1 to 100,000");
-  if (!(batch_arg >= 1 && batch_arg <= 256) || batch_arg != std::floor(batch_arg))
-    throw UsageError("--batch must be a whole number from 1 to 256");
-  const int runs = static_cast<int>(runs_arg), batch = static_cast<int>(batch_arg);
+  const int runs = settings.runs, batch = settings.batch;
   constexpr int kWarmup = 2;
   // An empty size, not std::optional<cv::Size>, for "not given": GCC 11 (JetPack 6's compiler) reports copies of
   // that optional as reads of an uninitialised payload at -O2 (-Wmaybe-uninitialized, a false positive), and -Werror
-  // stops the build. parse_size never returns an empty size.
-  const cv::Size input = args.value("--input") ? parse_size(*args.value("--input")) : cv::Size();
-  const std::string backend_arg = args.value("--backend").value_or("all");
-  std::vector<DnnTarget> targets;
-  if (backend_arg == "all")
-    targets = dnn_targets();
-  else if (backend_arg == "cpu" || backend_arg == "opencl" || backend_arg == "cuda")
-    targets = {dnn_target(backend_arg)};
-  else
-    throw UsageError("--backend must be cpu, opencl, cuda or all (got '" + backend_arg + "')");
+  // stops the build. The grammar gives sides of at least 32 px or none.
+  const cv::Size input(settings.input_width, settings.input_height);
+  const std::vector<DnnTarget> targets =
+      settings.backend == "all" ? dnn_targets() : std::vector<DnnTarget>{dnn_target(settings.backend)};
 
   std::vector<Network> networks;
-  if (const auto m = args.value("--model")) {
-    networks.push_back(from_files(*m, input));
-  } else if (const auto a = args.value("--arch")) {
-    const auto arch = architecture_from_string(*a);
-    if (!arch) throw UsageError("--arch must be mobilenet-ssd or yolo-n (got '" + *a + "')");
-    networks.push_back(built_in(*arch, input));
+  if (settings.model) {
+    networks.push_back(from_files(*settings.model, input));
+  } else if (settings.arch) {
+    networks.push_back(built_in(*architecture_from_string(*settings.arch), input));  // checked by the grammar
   } else {
     networks.push_back(built_in(DnnArchitecture::MobileNetSsd, input));
     networks.push_back(built_in(DnnArchitecture::YoloN, input));
@@ -264,7 +236,7 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
 
   const kernels::CpuInfo cpu = kernels::detect_cpu();
   const std::vector<kernels::Backend> backends = kernels::available_backends(cpu);
-  const std::string platform = args.value("--platform").value_or(bs::host_name());
+  const std::string platform = settings.platform.value_or(bs::host_name());
   const std::string load_before = load_average_text();
   text << "CPU: " << cpu.model << ", " << cpu.threads << " threads, FP32 ceiling " << fixed(cpu.peak_flops / 1e9, 1)
        << " GFLOPS (" << cpu.simd.name << ", " << fixed(cpu.clock_hz / 1e9, 3) << " GHz measured); OpenCV " CV_VERSION
@@ -276,7 +248,7 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
     return 1;
   }
 
-  const auto power = start_power(args, err, false);
+  const auto power = start_power(settings.power, err, false);
   std::vector<DnnRun> stored;
   std::vector<double> cores_of;  // per stored run, for --json
   std::vector<const Network*> network_of;
@@ -384,7 +356,7 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   }
   const std::string load_after = load_average_text();
   text << "\nload average after: " << load_after << "\n";
-  if (const auto ws_path = args.value("--workspace")) {
+  if (const auto& ws_path = settings.workspace) {
     Workspace ws(*ws_path);
     ImportBatch b;
     b.source_path = "benchscope-cli bench dnn (" + platform + ", " + stored.front().provenance.date + ")";

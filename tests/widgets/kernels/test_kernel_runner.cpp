@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -97,6 +98,25 @@ class TestKernelRunner : public QObject {
     QVERIFY(runs[0].run.samples.size() >= 3);
     QVERIFY(runs[0].run.samples.size() < 2000);
     for (const auto& s : runs[0].run.samples) QVERIFY(s.seconds.size() == 1 && s.seconds[0] > 0);
+  }
+
+  // "Several robots…" with robots this desk cannot reach (their names do not resolve): each failure is said once at
+  // the end, naming its robot, the queue goes on past the first to the second, and the runner is idle again.
+  void a_robot_queue_goes_on_past_a_robot_that_fails() {
+    bs::ui::KernelRunner runner;
+    QSignalSpy failed(&runner, &bs::ui::KernelRunner::failed);
+    QSignalSpy started(&runner, &bs::ui::KernelRunner::started);
+    runner.start_on_robots({{"nosuch-a.invalid", "A"}, {"nosuch-b.invalid", "B"}});
+    QVERIFY(runner.running());
+    QVERIFY(failed.wait(60000));
+    QCOMPARE(failed.count(), 1);
+    const QString message = failed.first().first().toString();
+    QVERIFY2(message.startsWith("nosuch-a.invalid: ") && message.contains("\n\nnosuch-b.invalid: "),
+             qPrintable(message));
+    QVERIFY(!runner.running());
+    QCOMPARE(started.count(), 1);
+    QVERIFY2(runner.remote_log()->text().startsWith("nosuch-b.invalid: "), qPrintable(runner.remote_log()->text()));
+    QVERIFY(runner.progress_bar()->format().startsWith("nosuch-b.invalid (2 of 2)"));
   }
 
   // An OpenCL device's ceilings (PoCL's CPU device here; a GPU's on a machine with one): measured from the Kernel
