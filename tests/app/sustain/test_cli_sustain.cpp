@@ -3,8 +3,9 @@
 // stream and acts when an interval at or after a set time arrives, never on a timer of its own.
 //  - a fixture tree whose CPU clock drops from 3.0 to 1.8 GHz and whose zone climbs to 97 °C (trip 95 °C) once the
 //    run reaches 10 s: throttling detected with its onset between 8 and 14 s;
-//  - the "done when": stress-ng --cpu 2 started once the run reaches 20 s of 40: stability under 90 % and
-//    the first slow interval between 16 and 26 s (skipped without stress-ng);
+//  - the "done when": stress-ng --cpu 2 started once the run reaches 20 s of 40: stability under 90 %, the
+//    slowest interval after 20 s and, where the load alone held within 3 % (the stable threshold), the first slow
+//    interval between 16 and 26 s (skipped without stress-ng, or when the machine was not quiet alone);
 //  - a tree without clocks or zones says "unknown", never "no throttling"; the run is stored in a workspace.
 #include <QProcess>
 #include <QStandardPaths>
@@ -182,32 +183,35 @@ class TestCliSustain : public QObject {
     QVERIFY2(competed, "stress-ng did not start (or ended before the run did)");
     const json& r = result_of(s);
     QVERIFY2(r.is_object(), s.err.constData());
+    // Every interval's (end, rate) as streamed.
+    std::vector<std::pair<double, double>> rates;
+    for (const json& line : s.lines)
+      if (line.value("type", "") == "interval" && line.contains("rate") && line.at("rate").is_number())
+        rates.emplace_back(line.at("t_s").get<double>(), line.at("rate").get<double>());
     // The claim needs a quiet machine before the competitor: a CI machine whose neighbour took half of it for the
     // first 20 s and then left (63 GFLOPS, then 146) measures the neighbour. Past the first interval (the load
     // settling), every interval before 20 s must lie within 15 % of their median, or there is nothing to test.
     std::vector<double> before;
-    for (const json& line : s.lines)
-      if (line.value("type", "") == "interval" && line.contains("rate") && line.at("rate").is_number() &&
-          line.at("t_s").get<double>() > 2 && line.at("t_s").get<double>() < 20)
-        before.push_back(line.at("rate").get<double>());
+    for (const auto& [t, rate] : rates)
+      if (t > 2 && t < 20) before.push_back(rate);
     QVERIFY2(before.size() >= 5, s.err.constData());
     std::vector<double> sorted = before;
     std::sort(sorted.begin(), sorted.end());
     const double median = sorted[sorted.size() / 2];
+    const QString unit = QString::fromStdString(r.value("rate_unit", ""));
     for (const double v : before)
       if (std::abs(v - median) > 0.15 * median)
         QSKIP(qPrintable(QString("the machine was not quiet before stress-ng started (%1 beside a median of %2 %3); "
                                  "the competing load cannot be told from it")
                              .arg(v)
                              .arg(median)
-                             .arg(QString::fromStdString(r.value("rate_unit", "")))));
+                             .arg(unit)));
     // And stress-ng must have taken something: a rate that rose as it started means the machine's other load left.
     double after_sum = 0;
     int after_n = 0;
-    for (const json& line : s.lines)
-      if (line.value("type", "") == "interval" && line.contains("rate") && line.at("rate").is_number() &&
-          line.at("t_s").get<double>() >= 24) {
-        after_sum += line.at("rate").get<double>();
+    for (const auto& [t, rate] : rates)
+      if (t >= 24) {
+        after_sum += rate;
         ++after_n;
       }
     if (after_n > 0 && after_sum / after_n > median)
@@ -217,6 +221,19 @@ class TestCliSustain : public QObject {
                            .arg(median)));
     const double stability = r["stability_percent"].get<double>();
     QVERIFY2(stability < 90, std::to_string(stability).c_str());
+    // Where the competitor started shows: the slowest interval is one of those after it (it started once the 20 s
+    // interval arrived).
+    const auto slowest =
+        std::min_element(rates.begin(), rates.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    QVERIFY2(slowest->first > 20, (std::to_string(slowest->first) + "\n" + s.err.toStdString()).c_str());
+    // The first slow interval is the first below 97 % of the best (3DMark's stable threshold): it lands where the
+    // competitor started only where the machine alone kept every interval within those 3 % (not under ASan's
+    // noise here: 61.7 to 66.7 GFLOPS).
+    if (sorted.front() < 0.97 * sorted.back()) {
+      qInfo("first slow interval not checked: alone, the load ran from %.4g to %.4g %s (more than 3 %% apart)",
+            sorted.front(), sorted.back(), qPrintable(unit));
+      return;
+    }
     const json& slow = r["first_slow"];
     QVERIFY2(slow.is_object(), s.err.constData());
     const double at = slow["end_s"].get<double>();
