@@ -26,6 +26,7 @@
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/foreign_sweeps.h"
 #include "device_palette.h"
+#include "headroom/headroom_import.h"
 #include "headroom/headroom_json.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
@@ -143,13 +144,8 @@ MainWindow::MainWindow(QWidget* parent)
   connect(headroom_->run_panel(), &HeadroomRunPanel::measured, this, [this](const headroom::RunOutput& out) {
     if (!workspace_) new_untitled_workspace();
     try {
-      const headroom::HeadroomMeasurement& m = out.measurement;
-      ImportBatch batch;
-      batch.source_path = "Headroom tab (" + m.platform + ", " + m.provenance.date + ")";
-      batch.format = "benchscope-headroom-v1";
-      batch.headroom = {m};
-      if (out.power) batch.power_traces.push_back(*out.power);  // stored and removed with the measurement
-      workspace_->add_import(batch, content_hash(headroom::to_json(m).dump()));
+      const auto home = headroom::headroom_import(out.measurement, out.power, "Headroom tab");
+      workspace_->add_import(home.batch, home.content_hash);
       work_since_open_ = true;
     } catch (const WorkspaceError& e) {
       QMessageBox::critical(this, tr("Cannot store the measurement"), QString::fromUtf8(e.what()));

@@ -13,6 +13,7 @@
 #include "common/text_table.h"
 #include "headroom/command_load.h"
 #include "headroom/headroom_args.h"
+#include "headroom/headroom_import.h"
 #include "headroom/headroom_json.h"
 #include "headroom/headroom_print.h"
 #include "headroom/headroom_run.h"
@@ -104,12 +105,8 @@ int run_headroom_cmd(const std::vector<std::string>& raw, std::ostream& out, std
     print_headroom(out, m, "this run");
   if (const auto& ws_path = settings.workspace) {
     Workspace ws(*ws_path);
-    ImportBatch batch;
-    batch.source_path = "benchscope-cli headroom (" + m.platform + ", " + m.provenance.date + ")";
-    batch.format = "benchscope-headroom-v1";
-    batch.headroom = {m};
-    if (result.power) batch.power_traces.push_back(*result.power);
-    const std::int64_t id = ws.add_import(batch, content_hash(doc.dump()));
+    const auto home = headroom_import(m, result.power, "benchscope-cli headroom");
+    const std::int64_t id = ws.add_import(home.batch, home.content_hash);
     info << "stored the measurement in " << *ws_path << " (import " << id << ")\n";
   }
   return 0;
