@@ -10,6 +10,7 @@
 #include <QUndoStack>
 #include <algorithm>
 #include <functional>
+#include <nlohmann/json.hpp>
 
 #include "main_window.h"
 #include "store/battery_preset_store.h"

@@ -6,6 +6,7 @@
 #include <QItemSelectionModel>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <nlohmann/json.hpp>
 
 #include "frames/frame_store.h"
 #include "main_window.h"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "store/schema_v8.h"
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace bs::store {

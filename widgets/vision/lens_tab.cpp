@@ -9,6 +9,7 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <QtConcurrent>
+#include <nlohmann/json.hpp>
 
 #include "vision/checkerboard_dialog.h"
 #include "vision/frames/synthetic.h"

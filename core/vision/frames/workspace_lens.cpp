@@ -2,6 +2,7 @@
 #include "vision/frames/workspace_lens.h"
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "vision/frames/frame_image.h"
 

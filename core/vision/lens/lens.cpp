@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace bs::vision {

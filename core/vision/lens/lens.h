@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: the full header costs each includer ~2 s to compile
 #include <opencv2/core.hpp>
 
 namespace bs::vision {

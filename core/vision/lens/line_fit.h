@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: the full header costs each includer ~2 s to compile
 #include <opencv2/core.hpp>
 
 #include "vision/lens/lens.h"

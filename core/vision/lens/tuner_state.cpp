@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace bs::vision {
