@@ -27,7 +27,6 @@
 #include "analysis/peaks/foreign_sweeps.h"
 #include "device_palette.h"
 #include "headroom/headroom_import.h"
-#include "headroom/headroom_json.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
