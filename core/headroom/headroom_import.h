@@ -8,8 +8,8 @@
 #include <string>
 
 #include "headroom/headroom_measurement.h"
-#include "model/import_batch.h"
 #include "model/power_trace.h"
+#include "store/import_batch.h"
 
 namespace bs::headroom {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "model/import_batch.h"
 #include "remote/job_client.h"
 #include "remote/robot_check.h"
+#include "store/import_batch.h"
 
 namespace bs {
 class Workspace;

@@ -4,7 +4,7 @@
 // the same content under the same content hash (new ids; the items, their labels and their pixels are the same).
 #include <cstdint>
 
-#include "model/import_batch.h"
+#include "store/import_batch.h"
 #include "store/workspace.h"
 
 namespace bs {

@@ -9,8 +9,8 @@
 
 #include "analysis/power/trace_summary.h"
 #include "model/error_category.h"
-#include "model/import_batch.h"
 #include "model/import_limits.h"
+#include "store/import_batch.h"
 #include "util/cancel.h"
 
 namespace bs {

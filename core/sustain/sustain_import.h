@@ -6,9 +6,9 @@
 #include <optional>
 #include <string>
 
-#include "model/import_batch.h"
 #include "model/power_trace.h"
 #include "model/sustain_run.h"
+#include "store/import_batch.h"
 
 namespace bs::sustain {
 

@@ -8,8 +8,8 @@
 
 #include "common/import_error.h"
 #include "common/parse_options.h"
-#include "model/import_batch.h"
 #include "model/import_limits.h"
+#include "store/import_batch.h"
 #include "util/cancel.h"
 
 namespace bs {

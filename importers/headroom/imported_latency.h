@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "headroom/headroom_measurement.h"
-#include "model/import_batch.h"
+#include "store/import_batch.h"
 
 namespace bs::headroom_import {
 

@@ -6,7 +6,7 @@
 
 #include "common/import_error.h"
 #include "common/import_service.h"
-#include "model/import_batch.h"
+#include "store/import_batch.h"
 #include "util/cancel.h"
 
 namespace bs {
