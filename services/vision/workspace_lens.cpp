@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "vision/frames/workspace_lens.h"
+#include "vision/workspace_lens.h"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
