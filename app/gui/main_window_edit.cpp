@@ -159,6 +159,35 @@ std::vector<WorkspaceItem> MainWindow::workspace_items() const {
                             m.realtime() ? QString() : tr(" (non-real-time: not comparable with real-time results)"),
                             provenance_line(m.provenance))});
   }
+  // Inference and sustained runs had no rows: a user could not see or remove what such an import brought (#52).
+  for (const StoredDnnRun& d : workspace_->dnn_runs()) {
+    const DnnRun& r = d.run;
+    out.push_back(
+        {item_ref(K::InferenceRun, d.id, d.import_id, QString::fromStdString(r.platform)),
+         tr("%1 — %2 %3×%4 (%5)")
+             .arg(QString::fromStdString(r.platform), QString::fromStdString(r.model))
+             .arg(r.input_width)
+             .arg(r.input_height)
+             .arg(QString::fromStdString(r.backend)),
+         tr("<b>%1</b> on %2: %L3 ms per image, batch %4<br>%5")
+             .arg(QString::fromStdString(r.model).toHtmlEscaped(), QString::fromStdString(r.device).toHtmlEscaped())
+             .arg(r.inference_s() * 1e3, 0, 'f', 2)
+             .arg(r.batch)
+             .arg(provenance_line(r.provenance))});
+  }
+  for (const StoredSustainRun& s : workspace_->sustain_runs()) {
+    const SustainRun& r = s.run;
+    const double seconds = r.t_s.empty() ? 0.0 : r.t_s.back();
+    out.push_back({item_ref(K::SustainedRun, s.id, s.import_id, QString::fromStdString(r.label)),
+                   tr("%1 — %2").arg(QString::fromStdString(r.platform), QString::fromStdString(r.label)),
+                   tr("<b>%1</b>: %2 intervals over %L3 s%4<br>%5")
+                       .arg(QString::fromStdString(r.label).toHtmlEscaped())
+                       .arg(r.t_s.size())
+                       .arg(seconds, 0, 'f', 0)
+                       .arg(r.rate_unit.empty() ? tr(", no rate (an imported log)")
+                                                : tr(", rate in %1").arg(QString::fromStdString(r.rate_unit)))
+                       .arg(provenance_line(r.provenance))});
+  }
   for (const BatterySetup& b : workspace_battery_setups(*workspace_)) {
     out.push_back(
         {item_ref(K::BatteryPreset, 0, 0, QString::fromStdString(b.pack.name)), QString::fromStdString(b.pack.name),

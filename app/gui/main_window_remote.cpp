@@ -37,7 +37,7 @@ void MainWindow::store_remote_run(RemoteRun* run, const QString& platform) {
   remote::RobotRun record{utc_timestamp(), job.id, what, {}};
   try {
     const remote::RemoteOrigin origin = remote::origin_of(run->target(), job, run->robot(), run->command());
-    const remote::JobImport imported = remote::store_job(*workspace_, job.files, origin, platform.toStdString());
+    const remote::JobImport imported = remote::bring_job_home(*workspace_, job.files, origin, platform.toStdString());
     work_since_open_ = true;
     record.outcome = (job.status == "cancelled" ? "cancelled, imported " : "imported ") + imported.summary() +
                      " into " + workspace_->path();

@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "remote/job_agent.h"
+#include "store/home_batch.h"
+#include "store/record_kinds.h"
 #include "store/workspace.h"
 
 namespace fs = std::filesystem;
@@ -70,133 +72,68 @@ std::vector<ImportBatch> job_batches(const std::string& result_file, const Remot
     b.source_path = prefix + r.path;
     b.format = r.format;
   }
-  for (StoredRun s : ws.runs()) {
-    stamp(s.run.provenance, o);
-    rename_platform(s.run, platform);
-    by_import[s.import_id].runs.push_back(std::move(s.run));
-  }
-  for (StoredResultSet s : ws.result_sets()) {
-    stamp(s.set.provenance, o);
-    rename_platform(s.set, platform);
-    by_import[s.import_id].result_sets.push_back(std::move(s.set));
-  }
-  for (StoredPowerTrace s : ws.power_traces()) {
-    stamp(s.trace.provenance, o);
-    rename_platform(s.trace, platform);
-    by_import[s.import_id].power_traces.push_back(std::move(s.trace));
-  }
-  for (StoredPipelineRun s : ws.pipeline_runs()) {
-    stamp(s.run.provenance, o);
-    rename_platform(s.run, platform);
-    by_import[s.import_id].pipeline_runs.push_back(std::move(s.run));
-  }
-  for (StoredDnnRun s : ws.dnn_runs()) {
-    stamp(s.run.provenance, o);
-    rename_platform(s.run, platform);
-    by_import[s.import_id].dnn_runs.push_back(std::move(s.run));
-  }
-  for (StoredHeadroom s : ws.headroom_measurements()) {
-    stamp(s.measurement.provenance, o);
-    rename_platform(s.measurement, platform);
-    by_import[s.import_id].headroom.push_back(std::move(s.measurement));
-  }
-  for (StoredSustainRun s : ws.sustain_runs()) {
-    stamp(s.run.provenance, o);
-    rename_platform(s.run, platform);
-    by_import[s.import_id].sustain_runs.push_back(std::move(s.run));
-  }
-  for (const StoredFrame& f : ws.frames())
-    by_import[f.import_id].warnings.push_back(result_file + ": frame '" + f.frame.label +
-                                              "' left out: frames stay on the robot (" + f.path + ")");
+  // Every kind by its rule (store/record_kinds.h): stamped with the robot's provenance and renamed, or left on the
+  // robot with a warning.
+  for_each_record_kind([&](const auto& kind) {
+    for (auto& stored : (ws.*kind.read)()) {
+      auto& item = stored.*kind.item;
+      if constexpr (from_robot_v<decltype(kind)> == FromRobot::StaysOnRobot) {
+        by_import[stored.import_id].warnings.push_back(result_file + ": " + kind.words.one + " '" + item.label +
+                                                       "' left out: " + kind.words.many + " stay on the robot (" +
+                                                       stored.path + ")");
+      } else {
+        stamp(item.provenance, o);
+        rename_platform(item, platform);
+        (by_import[stored.import_id].*kind.in_batch).push_back(std::move(item));
+      }
+    }
+  });
   std::vector<ImportBatch> batches;
   for (auto& [id, b] : by_import)
     if (!b.empty()) batches.push_back(std::move(b));
   return batches;
 }
 
-std::string JobImport::summary() const {
-  std::string s;
-  const auto add = [&](std::size_t n, const char* one, const char* many) {
-    if (n) s += (s.empty() ? "" : ", ") + std::to_string(n) + " " + (n == 1 ? one : many);
-  };
-  add(runs, "run", "runs");
-  add(power_traces, "power log", "power logs");
-  add(result_sets, "result set", "result sets");
-  add(pipeline_runs, "pipeline run", "pipeline runs");
-  add(dnn_runs, "inference run", "inference runs");
-  add(headroom, "headroom measurement", "headroom measurements");
-  add(sustain_runs, "sustained run", "sustained runs");
-  return s.empty() ? "nothing" : s;
-}
-
-namespace {
-
-// The job's batches with their hashes, and the counts for the summary.
-struct PreparedJob {
-  std::vector<ImportBatch> batches;
-  std::vector<std::string> hashes;
-};
-
-PreparedJob prepare(const std::vector<std::string>& staged_files, const RemoteOrigin& origin,
-                    const std::string& platform) {
+std::vector<HomeBatch> job_homes(const std::vector<std::string>& staged_files, const RemoteOrigin& origin,
+                                 const std::string& platform) {
   std::string result;
   for (const std::string& f : staged_files)
     if (fs::path(f).filename() == kJobResultFile) result = f;
   if (result.empty()) throw std::runtime_error("the robot sent no results (no " + std::string(kJobResultFile) + ")");
   const std::string remote_hash = file_content_hash(result);
-  PreparedJob p;
-  p.batches = job_batches(result, origin, platform);
-  if (p.batches.empty()) throw std::runtime_error("the robot's job holds nothing to import");
-  for (std::size_t i = 0; i < p.batches.size(); ++i) p.hashes.push_back(job_batch_hash(origin, i, remote_hash));
-  return p;
+  std::vector<ImportBatch> batches = job_batches(result, origin, platform);
+  if (batches.empty()) throw std::runtime_error("the robot's job holds nothing to import");
+  std::vector<HomeBatch> homes;
+  for (std::size_t i = 0; i < batches.size(); ++i)
+    homes.push_back({std::move(batches[i]), job_batch_hash(origin, i, remote_hash)});
+  return homes;
 }
 
-JobImport store_prepared(Workspace& ws, const PreparedJob& p) {
+namespace {
+
+JobImport counted(const std::vector<HomeBatch>& homes, std::vector<std::int64_t> ids) {
   JobImport out;
-  std::vector<Workspace::HashedBatch> hashed;
-  for (std::size_t i = 0; i < p.batches.size(); ++i) {
-    const ImportBatch& b = p.batches[i];
-    hashed.push_back({&b, p.hashes[i]});
-    out.runs += b.runs.size();
-    out.power_traces += b.power_traces.size();
-    out.result_sets += b.result_sets.size();
-    out.pipeline_runs += b.pipeline_runs.size();
-    out.dnn_runs += b.dnn_runs.size();
-    out.headroom += b.headroom.size();
-    out.sustain_runs += b.sustain_runs.size();
-    out.warnings.insert(out.warnings.end(), b.warnings.begin(), b.warnings.end());
+  out.import_ids = std::move(ids);
+  for (const HomeBatch& h : homes) {
+    out.counts.add(h.batch);
+    out.warnings.insert(out.warnings.end(), h.batch.warnings.begin(), h.batch.warnings.end());
   }
-  out.import_ids = ws.add_imports(hashed);
   return out;
 }
 
 }  // namespace
 
-JobImport store_job(Workspace& ws, const std::vector<std::string>& staged_files, const RemoteOrigin& origin,
-                    const std::string& platform) {
-  return store_prepared(ws, prepare(staged_files, origin, platform));
+JobImport bring_job_home(Workspace& ws, const std::vector<std::string>& staged_files, const RemoteOrigin& origin,
+                         const std::string& platform) {
+  const std::vector<HomeBatch> homes = job_homes(staged_files, origin, platform);
+  return counted(homes, bring_home(ws, homes));
 }
 
-JobImport import_job(const std::string& workspace_path, const std::vector<std::string>& staged_files,
-                     const RemoteOrigin& origin, const std::string& platform) {
+JobImport bring_job_home(const std::string& workspace_path, const std::vector<std::string>& staged_files,
+                         const RemoteOrigin& origin, const std::string& platform) {
   // Everything is read and checked before the workspace is opened: a job that cannot be imported creates nothing.
-  const PreparedJob p = prepare(staged_files, origin, platform);
-  std::error_code ec;
-  const bool existed = fs::exists(workspace_path, ec);
-  JobImport out;
-  try {
-    Workspace ws(workspace_path);
-    out = store_prepared(ws, p);
-  } catch (...) {
-    // A workspace this import would have created is not left behind empty.
-    if (!existed) {
-      fs::remove(workspace_path, ec);
-      fs::remove(workspace_path + "-wal", ec);
-      fs::remove(workspace_path + "-shm", ec);
-    }
-    throw;
-  }
-  return out;
+  const std::vector<HomeBatch> homes = job_homes(staged_files, origin, platform);
+  return counted(homes, bring_home(workspace_path, homes));
 }
 
 }  // namespace bs::remote

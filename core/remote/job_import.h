@@ -12,7 +12,9 @@
 
 #include "remote/job_client.h"
 #include "remote/robot_check.h"
+#include "store/home_batch.h"
 #include "store/import_batch.h"
+#include "store/record_kinds.h"
 
 namespace bs {
 class Workspace;
@@ -50,20 +52,22 @@ std::string job_batch_hash(const RemoteOrigin& origin, std::size_t index, const 
 
 struct JobImport {
   std::vector<std::int64_t> import_ids;
-  std::size_t runs = 0, power_traces = 0, result_sets = 0, pipeline_runs = 0, dnn_runs = 0, headroom = 0,
-              sustain_runs = 0;
+  RecordCounts counts;  // what the job brought, per record kind
   std::vector<std::string> warnings;
-  std::string summary() const;  // "3 runs, 1 power log"
+  std::string summary() const { return counts.summary(); }  // "3 runs, 1 power log"
 };
 
-// Stores the batches of a job's staged files (the result workspace among them) in the open workspace `ws`, in one
-// transaction. Throws WorkspaceError (nothing stored) or std::runtime_error when the job brought nothing.
-JobImport store_job(Workspace& ws, const std::vector<std::string>& staged_files, const RemoteOrigin& origin,
-                    const std::string& platform);
-// Stores the batches of a job's staged files (the result workspace among them) in the workspace at
-// `workspace_path` (created when missing) in one transaction. Throws WorkspaceError (nothing stored; a workspace
-// that did not exist is not left behind) or std::runtime_error when the job brought nothing to import.
-JobImport import_job(const std::string& workspace_path, const std::vector<std::string>& staged_files,
-                     const RemoteOrigin& origin, const std::string& platform);
+// A job's staged files (the result workspace among them) as the imports they bring home, each under its hash. Throws
+// WorkspaceError naming the file, or std::runtime_error when the job brought nothing to import.
+std::vector<HomeBatch> job_homes(const std::vector<std::string>& staged_files, const RemoteOrigin& origin,
+                                 const std::string& platform);
+
+// A robot's job comes home: its imports stored in ONE transaction (store/home_batch.h's bring_home), in the open
+// workspace `ws` (the GUI) or the one at `workspace_path` (the CLI's --workspace; created when missing, and not left
+// behind when nothing could be stored). Throws as job_homes() does, or WorkspaceError (nothing stored).
+JobImport bring_job_home(Workspace& ws, const std::vector<std::string>& staged_files, const RemoteOrigin& origin,
+                         const std::string& platform);
+JobImport bring_job_home(const std::string& workspace_path, const std::vector<std::string>& staged_files,
+                         const RemoteOrigin& origin, const std::string& platform);
 
 }  // namespace bs::remote

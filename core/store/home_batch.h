@@ -26,5 +26,10 @@ std::int64_t bring_home(Workspace& ws, const HomeBatch& home, const CancelToken*
 // Several in ONE transaction (a robot job's imports): all of them or none. Returns the import ids in order.
 std::vector<std::int64_t> bring_home(Workspace& ws, const std::vector<HomeBatch>& homes,
                                      const CancelToken* cancel = nullptr);
+// The same into the workspace at `workspace_path` (the CLI's --workspace), created when missing. A workspace this call
+// created is not left behind when nothing could be stored (a duplicate, a full disk): the file, its WAL and its
+// shared-memory file are removed again.
+std::int64_t bring_home(const std::string& workspace_path, const HomeBatch& home);
+std::vector<std::int64_t> bring_home(const std::string& workspace_path, const std::vector<HomeBatch>& homes);
 
 }  // namespace bs

@@ -13,7 +13,8 @@
 
 namespace bs {
 
-// Everything one file contributed. Importers build it completely before anything touches the workspace, which
+// Everything one file contributed, one vector per record kind (each kind is described once, in
+// store/record_kinds.h). Importers build it completely before anything touches the workspace, which
 // then stores it in a single transaction: a file is imported whole or not at all.
 struct ImportBatch {
   std::string source_path;
@@ -27,10 +28,7 @@ struct ImportBatch {
   std::vector<headroom::HeadroomMeasurement> headroom;  // control-loop latency (probe, cyclictest, rttest, ...)
   std::vector<SustainRun> sustain_runs;                 // clocks, temperatures (and a rate) over time (#53)
   std::vector<std::string> warnings;                    // non-fatal, each naming file and place
-  bool empty() const {
-    return runs.empty() && result_sets.empty() && power_traces.empty() && frames.empty() && pipeline_runs.empty() &&
-           dnn_runs.empty() && headroom.empty() && sustain_runs.empty();
-  }
+  bool empty() const;                                   // no record of any kind (store/record_kinds.h)
 };
 
 }  // namespace bs

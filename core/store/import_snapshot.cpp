@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "store/record_kinds.h"
+
 namespace bs {
 
 ImportSnapshot snapshot_import(const Workspace& ws, std::int64_t import_id) {
@@ -18,21 +20,12 @@ ImportSnapshot snapshot_import(const Workspace& ws, std::int64_t import_id) {
   ImportBatch& b = out.batch;
   b.source_path = out.record.path;
   b.format = out.record.format;
-  for (const StoredRun& s : ws.runs())
-    if (s.import_id == import_id) b.runs.push_back(s.run);
-  for (const StoredResultSet& s : ws.result_sets())
-    if (s.import_id == import_id) b.result_sets.push_back(s.set);
-  for (const StoredPowerTrace& s : ws.power_traces())
-    if (s.import_id == import_id) b.power_traces.push_back(s.trace);
-  for (const StoredPipelineRun& s : ws.pipeline_runs())
-    if (s.import_id == import_id) b.pipeline_runs.push_back(s.run);
-  // Inference runs and headroom measurements too: without them, undoing a removal lost them.
-  for (const StoredDnnRun& s : ws.dnn_runs())
-    if (s.import_id == import_id) b.dnn_runs.push_back(s.run);
-  for (const StoredHeadroom& s : ws.headroom_measurements())
-    if (s.import_id == import_id) b.headroom.push_back(s.measurement);
-  for (const StoredSustainRun& s : ws.sustain_runs())
-    if (s.import_id == import_id) b.sustain_runs.push_back(s.run);
+  // Every kind's records of the import (frames below: their pixels and file need more than the record).
+  for_each_record_kind([&](const auto& kind) {
+    if (kind.id == RecordKindId::Frame) return;
+    for (auto& stored : (ws.*kind.read)())
+      if (stored.import_id == import_id) (b.*kind.in_batch).push_back(std::move(stored.*kind.item));
+  });
   for (const StoredFrame& s : ws.frames()) {
     if (s.import_id != import_id) continue;
     Frame f = s.frame;

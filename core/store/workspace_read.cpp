@@ -9,6 +9,7 @@
 #include <set>
 
 #include "store/power_samples.h"
+#include "store/record_kinds.h"
 #include "store/tables.h"
 #include "store/workspace_impl.h"
 
@@ -51,14 +52,9 @@ void Workspace::Impl::record(WorkspaceDamage d) const {
 
 void Workspace::Impl::scan(const Workspace& ws) {
   (void)ws.imports();
-  (void)ws.runs();  // reads the devices too
-  (void)ws.result_sets();
-  (void)ws.power_trace_summaries();
-  (void)ws.frames();
-  (void)ws.pipeline_runs();
-  (void)ws.dnn_runs();
-  (void)ws.headroom_measurements();
-  (void)ws.sustain_runs();
+  // Every kind as its listing reads it (runs read their devices too; a power log's summary: its samples are checked
+  // when they load).
+  for_each_record_kind([&](const auto& kind) { (void)(ws.*kind.list)(); });
 }
 
 std::vector<ImportRecord> Workspace::imports() const {

@@ -10,6 +10,7 @@
 
 #include "device_palette.h"
 #include "report/run_names.h"
+#include "store/record_kinds.h"
 
 namespace bs::ui {
 namespace {
@@ -23,23 +24,17 @@ constexpr int kSectionRole = Qt::UserRole + 6;  // set on the section headers ("
 constexpr int kColorRole = Qt::UserRole + 7;    // a device row's colour index
 constexpr int kPaletteSize = 15;                // device_palette.cpp's distinct colours
 
+// A record kind's section is named by its descriptor (store/record_kinds.h), so a new kind needs no title here.
 QString section_title(TreeItemRef::Kind kind) {
-  switch (kind) {
-    case TreeItemRef::Kind::PowerLog:
-      return WorkspaceTree::tr("Power logs");
-    case TreeItemRef::Kind::Frame:
-      return WorkspaceTree::tr("Frames");
-    case TreeItemRef::Kind::PipelineRun:
-      return WorkspaceTree::tr("Pipeline runs");
-    case TreeItemRef::Kind::ResultSet:
-      return WorkspaceTree::tr("Throughput results");
-    case TreeItemRef::Kind::Headroom:
-      return WorkspaceTree::tr("Headroom measurements");
-    case TreeItemRef::Kind::BatteryPreset:
-      return WorkspaceTree::tr("Battery presets");
-    default:
-      return {};
-  }
+  using K = TreeItemRef::Kind;
+  static const std::map<K, RecordKindId> records = {
+      {K::PowerLog, RecordKindId::PowerLog},        {K::Frame, RecordKindId::Frame},
+      {K::PipelineRun, RecordKindId::PipelineRun},  {K::ResultSet, RecordKindId::ResultSet},
+      {K::Headroom, RecordKindId::Headroom},        {K::InferenceRun, RecordKindId::InferenceRun},
+      {K::SustainedRun, RecordKindId::SustainedRun}};
+  if (kind == K::BatteryPreset) return WorkspaceTree::tr("Battery presets");
+  const auto it = records.find(kind);
+  return it == records.end() ? QString() : WorkspaceTree::tr(words_of(it->second).section);
 }
 
 QIcon swatch(const QColor& color) {

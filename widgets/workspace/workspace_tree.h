@@ -13,7 +13,20 @@ namespace bs::ui {
 
 // What a row of the tree stands for, as far as renaming and removing go.
 struct TreeItemRef {
-  enum class Kind { None, Platform, Device, Run, PowerLog, Frame, PipelineRun, ResultSet, Headroom, BatteryPreset };
+  enum class Kind {
+    None,
+    Platform,
+    Device,
+    Run,
+    PowerLog,
+    Frame,
+    PipelineRun,
+    ResultSet,
+    Headroom,
+    InferenceRun,
+    SustainedRun,
+    BatteryPreset
+  };
   Kind kind = Kind::None;
   qint64 id = 0;         // run, trace, frame, pipeline run, result set or headroom measurement id
   qint64 import_id = 0;  // the import that brought it (0: none, e.g. a preset or a platform)

@@ -189,7 +189,7 @@ int import_and_report(remote::RobotList& robots, const remote::SshTarget& target
   const remote::Robot* stored = robots.find(host);
   const std::string platform = o.platform ? *o.platform : stored && !stored->platform.empty() ? stored->platform : "";
   try {
-    const remote::JobImport imported = remote::import_job(*o.workspace, job.files, origin, platform);
+    const remote::JobImport imported = remote::bring_job_home(*o.workspace, job.files, origin, platform);
     for (const std::string& w : imported.warnings) err << "benchscope-cli: warning: " << w << '\n';
     const std::string named = platform.empty() ? "'" + origin.hostname +
                                                      "' (the robot's host name; --platform NAME "

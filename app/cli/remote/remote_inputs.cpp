@@ -4,24 +4,15 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
-#include <set>
 
 #include "commands/bench_dnn_grammar.h"
+#include "commands/pipeline_grammar.h"
 #include "model/raw_sidecar.h"
 
 namespace fs = std::filesystem;
 
 namespace bs::cli {
 namespace {
-
-// `pipeline`'s options that take a value (cmd_pipeline.cpp): a value is never a frame file.
-const std::set<std::string>& pipeline_valued_options() {
-  static const std::set<std::string> options = {
-      "--lens",           "--demosaic",     "--backend", "--detector",          "--frames",
-      "--policy",         "--out",          "--pattern", "--platform",          "--queue",
-      "--detect-workers", "--detect-scale", "--power",   "--power-interval-ms", "--sysfs-root"};
-  return options;
-}
 
 bool desk_file(const std::string& path) {
   std::error_code ec;
@@ -97,12 +88,6 @@ std::string carry_model(Carrier& carrier, const std::string& value) {
   return model + "," + config;
 }
 
-std::string carry_value(Carrier& carrier, const std::string& option, const std::string& value) {
-  if (option == "--lens" && value != "paper" && desk_file(value)) return carrier.carry(value);
-  if (option == "--detector") return carry_model(carrier, value);
-  return value;
-}
-
 }  // namespace
 
 CarriedCommand carry_desk_files(const std::vector<std::string>& command, const std::string& robot_inputs_dir) {
@@ -118,18 +103,15 @@ CarriedCommand carry_desk_files(const std::vector<std::string>& command, const s
     return out;
   }
   if (command.empty() || command[0] != "pipeline") return out;
-  for (std::size_t i = 1; i < words.size(); ++i) {
-    std::string& w = words[i];
-    if (w == "--") break;
-    if (const auto eq = w.find('='); w.starts_with("--") && eq != std::string::npos) {
-      w = w.substr(0, eq + 1) + carry_value(carrier, w.substr(0, eq), w.substr(eq + 1));
-    } else if (pipeline_valued_options().count(w) && i + 1 < words.size()) {
-      words[i + 1] = carry_value(carrier, w, words[i + 1]);
-      ++i;
-    } else if (!w.starts_with("--") && desk_file(w)) {
-      w = carrier.carry_frame(w);
-    }
-  }
+  // pipeline FRAME... --lens LENS --detector MODEL[,CONFIG]: found and written again by the command's grammar too.
+  commands::PipelineSettings settings = commands::pipeline_from_words({words.begin() + 1, words.end()});
+  for (std::string& frame : settings.frame_files)
+    if (desk_file(frame)) frame = carrier.carry_frame(frame);
+  if (settings.lens && *settings.lens != "paper" && desk_file(*settings.lens))
+    settings.lens = carrier.carry(*settings.lens);
+  settings.detector = carry_model(carrier, settings.detector);
+  // Written again only when a file goes with it: the words the user typed stay the record of what ran.
+  if (!carrier.files().empty()) out.command = commands::to_words(settings);
   out.files = carrier.files();
   return out;
 }

@@ -16,7 +16,7 @@
 #include "image_files/image_files.h"
 #include "store/workspace.h"
 #include "vision/frames/frame_image.h"
-#include "vision/frames/workspace_lens.h"
+#include "vision/workspace_lens.h"
 #include "vision/reproject/triptych.h"
 #include "workspace/inputs.h"
 
