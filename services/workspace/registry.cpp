@@ -117,7 +117,6 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
   return parse_as(*best, path, limits, cancel);
 }
 
-
 ImportBatch import_file_with_raw_geometry(const std::string& path, const std::optional<RawFrameOptions>& raw_geometry,
                                           const CancelToken& cancel, const std::string& geometry_source) {
   if (raw_geometry && raw_without_sidecar(path)) {
