@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstddef>
-#include <memory>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "common/import_error.h"
 #include "common/parse_options.h"
@@ -35,16 +33,8 @@ class Importer {
                             const CancelToken& cancel) const = 0;
 };
 
-// All importers BenchScope knows, in sniffing order.
-const std::vector<std::unique_ptr<Importer>>& all_importers();
-const Importer* find_importer(std::string_view id);
-
-// Reads the head of `path`, rejects empty / binary / UTF-16 input with a clear ImportError, picks the importer
-// with the highest sniff score (ties broken by usual_extension, then by order) and parses. UnknownFormat when
-// nothing scores above 0. Formats get the default ParseOptions.
-ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits = {});
-
-// Helpers shared by importers.
+// Helpers shared by importers. Which importer reads a file (every format, the sniffing, import_file) is the
+// registry, services/workspace/registry.h: it names every format folder, which importers/common must not (#52).
 std::string read_head(const std::string& path, std::size_t max_bytes = 64 * 1024);  // throws Io
 std::string read_whole_file(const std::string& path, std::size_t max_bytes);        // throws Io/TooLarge
 // Rejects empty, binary (NUL bytes) and UTF-16/32 content with the right category; strips nothing.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -167,17 +168,6 @@ static ImportBatch parse_raw_bayer_file(const std::string& path, const ParseOpti
 
 bool raw_without_sidecar(const std::string& path) {
   return path.size() > 4 && path.ends_with(".raw") && !find_raw_sidecar(path);
-}
-
-ImportBatch import_file_with_raw_geometry(const std::string& path, const std::optional<RawFrameOptions>& raw_geometry,
-                                          const CancelToken& cancel, const std::string& geometry_source) {
-  if (raw_geometry && raw_without_sidecar(path)) {
-    ImportBatch b = read_raw_frame(path, *raw_geometry, {}, cancel, geometry_source);
-    b.source_path = path;
-    b.format = "raw-bayer";
-    return b;
-  }
-  return import_file(path, cancel);
 }
 
 const FileFormat kRawBayerFileFormat{"raw-bayer",

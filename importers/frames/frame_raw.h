@@ -5,7 +5,6 @@
 // the file (capture.raw -> capture.json, or capture.raw.json), read by model/raw_sidecar.h with the rules and
 // schema there (resources/schema/benchscope-raw-v1.schema.json); this importer also requires its "pattern". For a
 // file without a sidecar the geometry comes from RawFrameOptions given by the caller (import --raw-geometry).
-#include <optional>
 #include <string>
 
 #include "common/format_importer.h"
@@ -34,11 +33,6 @@ ImportBatch read_raw_frame(const std::string& path, const RawFrameOptions& optio
 // "WxH[:PATTERN[:BITS[:le|be]]]", e.g. "1280x1024:BGGR:12:le"; PATTERN "grey" for no mosaic. Throws
 // std::invalid_argument with the reason.
 RawFrameOptions parse_raw_geometry(const std::string& text);
-
-// import_file(), except that a .raw file without a sidecar is read with `raw_geometry` when one is given (the CLI's
-// --raw-geometry, the GUI's geometry dialog); `geometry_source` names it in error messages.
-ImportBatch import_file_with_raw_geometry(const std::string& path, const std::optional<RawFrameOptions>& raw_geometry,
-                                          const CancelToken& cancel, const std::string& geometry_source);
 
 // True for a .raw file with no sidecar next to it: it can only be read with a geometry from the user.
 bool raw_without_sidecar(const std::string& path);

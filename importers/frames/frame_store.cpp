@@ -2,12 +2,27 @@
 #include "frames/frame_store.h"
 
 #include <filesystem>
+#include <initializer_list>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
+#include "frames/frame_codec.h"
+#include "frames/frame_pnm.h"
 #include "frames/frame_raw.h"
 
 namespace bs {
+namespace {
+
+// The formats a frame is read again from (raw-bayer aside, which needs the geometry recorded at import). Only
+// these formats produce frames, so the lookup stays in this folder, not in the registry of every format above it.
+const FileFormat* frame_file_format(std::string_view id) {
+  for (const FileFormat* format : {&kPnmFileFormat, &kPngFileFormat, &kTiffFileFormat})
+    if (format->id == id) return format;
+  return nullptr;
+}
+
+}  // namespace
 
 Frame load_frame(const Workspace& ws, const StoredFrame& stored, const CancelToken& cancel,
                  const ImportLimits& limits) {
@@ -40,11 +55,11 @@ Frame load_frame(const Workspace& ws, const StoredFrame& stored, const CancelTok
     o.big_endian = j.value("endianness", std::string("little")) == "big";
     batch = read_raw_frame(stored.path, o, limits, cancel, ws.path());
   } else {
-    const Importer* imp = find_importer(stored.frame.source_format);
-    if (!imp)
+    const FileFormat* format = frame_file_format(stored.frame.source_format);
+    if (!format)
       throw ImportError(ImportErrorCategory::Unsupported, at,
                         "frame format \"" + stored.frame.source_format + "\" is unknown to this build");
-    batch = imp->parse(stored.path, ParseOptions{}, limits, cancel);
+    batch = format->parse(stored.path, ParseOptions{}, limits, cancel);
   }
   if (batch.frames.size() != 1 || batch.frames[0].width != out.width || batch.frames[0].height != out.height ||
       batch.frames[0].channels != out.channels)

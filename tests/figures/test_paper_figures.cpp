@@ -21,6 +21,7 @@
 #include "../support/paper_sample.h"
 #include "device_palette.h"
 #include "paper_figures.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -15,6 +15,7 @@
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/importer.h"
 #include "frames/frame_raw.h"
+#include "workspace/registry.h"
 
 namespace bs::fuzz {
 namespace {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "common/importer.h"
+#include "workspace/registry.h"
 
 namespace bs::test {
 

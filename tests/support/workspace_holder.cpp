@@ -24,9 +24,9 @@
 #include <sstream>
 #include <string>
 
-#include "common/import_service.h"
 #include "process_locks.h"
 #include "store/workspace.h"
+#include "workspace/import_service.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <QProgressDialog>
 #include <QtConcurrent>
 
-#include "common/import_service.h"
+#include "workspace/import_service.h"
 
 namespace bs::ui {
 namespace {

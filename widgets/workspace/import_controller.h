@@ -43,7 +43,7 @@ using LogPlatformChooser =
 // Imports files and folders into a workspace file off the GUI thread, with a progress dialog and Cancel. The
 // worker opens its own connection to the workspace (SQLite in WAL mode allows a reader beside the writer), so the
 // GUI's connection is never used from two threads. What is imported, skipped and how is the import service's
-// (importers/common/import_service.h): each file is one transaction.
+// (services/workspace/import_service.h): each file is one transaction.
 class ImportController : public QObject {
   Q_OBJECT
  public:

@@ -14,7 +14,6 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/import_error.h"
-#include "common/importer.h"
 #include "image_files/image_files.h"
 #include "vision/frames/frame_image.h"
 #include "vision/lens/circle_detect.h"
@@ -25,6 +24,7 @@
 #include "vision/lens/tuner_state.h"
 #include "vision/lens_calibrate.h"
 #include "vision/reproject/triptych.h"
+#include "workspace/registry.h"
 
 namespace bs::cli {
 namespace {

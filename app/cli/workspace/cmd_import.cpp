@@ -6,10 +6,10 @@
 
 #include "common/args.h"
 #include "common/command.h"
-#include "common/import_service.h"
 #include "common/signals.h"
 #include "frames/frame_raw.h"
 #include "store/workspace.h"
+#include "workspace/import_service.h"
 
 namespace bs::cli {
 namespace {

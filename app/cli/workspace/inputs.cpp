@@ -9,13 +9,13 @@
 
 #include "analysis/peaks/foreign_sweeps.h"
 #include "common/import_error.h"
-#include "common/importer.h"
 #include "common/log_platform.h"
 #include "store/decision_store.h"
 #include "store/log_settings_store.h"
 #include "store/open_workspaces.h"
 #include "store/sustained_runs.h"
 #include "store/workspace.h"
+#include "workspace/registry.h"
 
 namespace bs::cli {
 

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "common/import_error.h"
-#include "common/import_service.h"
 #include "store/import_batch.h"
 #include "util/cancel.h"
+#include "workspace/import_service.h"
 
 namespace bs {
 class Workspace;
@@ -15,8 +15,8 @@ class Workspace;
 
 namespace bs::cli {
 
-// Folder expansion and the skip rule are the import service's (importers/common/import_service.h), so the data commands
-// read exactly the files `import` would store. These names stay for the commands that walk inputs themselves.
+// Folder expansion and the skip rule are the import service's (services/workspace/import_service.h), so the data
+// commands read exactly the files `import` would store. These names stay for the commands that walk inputs themselves.
 using InputFile = ImportCandidate;
 inline std::vector<InputFile> expand_inputs(const std::vector<std::string>& paths) {
   return expand_import_paths(paths);

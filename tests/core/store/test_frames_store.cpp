@@ -8,9 +8,9 @@
 
 #include <fstream>
 
-#include "common/importer.h"
 #include "frames/frame_store.h"
 #include "store/workspace.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include "../../support/bad_corpus.h"
 #include "../../support/public_data.h"
-#include "common/importer.h"
+#include "workspace/registry.h"
 
 namespace {
 

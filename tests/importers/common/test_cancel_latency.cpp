@@ -7,8 +7,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "common/importer.h"
 #include "store/workspace.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "common/importer.h"
 #include "frames/frame_raw.h"
+#include "workspace/registry.h"
 
 namespace {
 

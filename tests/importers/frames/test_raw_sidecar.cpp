@@ -13,6 +13,7 @@
 #include "frames/frame_raw.h"
 #include "model/raw_sidecar.h"
 #include "vision/frames/frame_file.h"
+#include "workspace/registry.h"
 
 namespace {
 

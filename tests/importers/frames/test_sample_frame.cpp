@@ -5,9 +5,9 @@
 
 #include <cstring>
 
-#include "common/importer.h"
 #include "vision/frames/frame_image.h"
 #include "vision/frames/synthetic.h"
+#include "workspace/registry.h"
 
 class TestSampleFrame : public QObject {
   Q_OBJECT

@@ -6,12 +6,12 @@
 
 #include <algorithm>
 
-#include "common/importer.h"
 #include "headroom/cyclictest_command.h"
 #include "headroom/cyclictest_json.h"
 #include "headroom/cyclictest_text.h"
 #include "headroom/cyclictest_threads.h"
 #include "headroom/imported_latency.h"
+#include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
 #include "headroom_test_files.h"

@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/importer.h"
 #include "headroom/imported_latency.h"
 #include "headroom/performance_test_csv.h"
 #include "headroom/performance_test_json.h"
+#include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
 #include "headroom_test_files.h"

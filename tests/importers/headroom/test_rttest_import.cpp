@@ -6,10 +6,10 @@
 
 #include <algorithm>
 
-#include "common/importer.h"
 #include "headroom/imported_latency.h"
 #include "headroom/rttest_log.h"
 #include "headroom/rttest_statistics.h"
+#include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
 #include "headroom_test_files.h"

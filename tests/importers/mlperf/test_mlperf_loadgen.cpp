@@ -8,9 +8,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "common/importer.h"
 #include "mlperf/loadgen_detail.h"
 #include "mlperf/mlperf_submission.h"
+#include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
 #include "../../support/public_data.h"

@@ -16,9 +16,9 @@
 
 #include "analysis/library/candidates.h"
 #include "analysis/library/library.h"
-#include "common/import_service.h"
-#include "common/importer.h"
 #include "mlperf/mlperf_submission.h"
+#include "workspace/import_service.h"
+#include "workspace/registry.h"
 
 namespace {
 namespace fs = std::filesystem;

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "analysis/power/power.h"
-#include "common/importer.h"
 #include "power/power_import.h"
+#include "workspace/registry.h"
 
 #include "../../support/public_data.h"
 

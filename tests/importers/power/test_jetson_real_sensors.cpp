@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "common/importer.h"
 #include "power/power_import.h"
+#include "workspace/registry.h"
 
 #include "../../support/public_data.h"
 

@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "common/importer.h"
 #include "power/jtop_csv.h"
 #include "power/nvidia_smi.h"
 #include "power/power_import.h"
 #include "power/tegrastats.h"
+#include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
 

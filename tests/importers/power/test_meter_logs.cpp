@@ -10,11 +10,11 @@
 
 #include "analysis/power/power.h"
 #include "analysis/power/power_stats.h"
-#include "common/importer.h"
 #include "power/nvidia_smi.h"
 #include "power/perf_stat.h"
 #include "power/power_import.h"
 #include "power/ptd_log.h"
+#include "workspace/registry.h"
 
 #include "../../support/public_data.h"
 

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "../../support/import_errors.h"
-#include "common/importer.h"
 #include "power/power_csv.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -7,9 +7,9 @@
 #include <QTest>
 
 #include "analysis/power/power_stats.h"
-#include "common/importer.h"
 #include "power/power_csv.h"
 #include "power/power_import.h"
+#include "workspace/registry.h"
 
 #include "../../support/public_data.h"
 

@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "analysis/power/phase_energy.h"
-#include "common/importer.h"
 #include "power/power_import.h"
 #include "power/power_recording.h"
 #include "sensors/recording_csv.h"
+#include "workspace/registry.h"
 
 using namespace bs;
 

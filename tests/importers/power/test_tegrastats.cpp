@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "common/importer.h"
 #include "power/tegrastats.h"
+#include "workspace/registry.h"
 
 class TestTegrastats : public QObject {
   Q_OBJECT

@@ -2,9 +2,9 @@
 // tegrastats from three Jetson generations, the interval option and the rules for broken logs.
 #include <QTest>
 
-#include "common/importer.h"
 #include "power/power_import.h"
 #include "power/tegrastats.h"
+#include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
 

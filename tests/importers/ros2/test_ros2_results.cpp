@@ -9,10 +9,10 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "common/importer.h"
 #include "ros2/robotperf_yaml.h"
 #include "ros2/ros2_benchmark_json.h"
 #include "ros2/yaml_subset.h"
+#include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
 

@@ -9,6 +9,7 @@
 #include "runs/pipeline_json.h"
 
 #include "../../support/import_errors.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include <filesystem>
 
 #include "../../support/headroom_samples.h"
-#include "common/importer.h"
 #include "platform/platform_view.h"
+#include "workspace/registry.h"
 
 using namespace bs::headroom;
 

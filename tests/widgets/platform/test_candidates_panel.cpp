@@ -11,9 +11,9 @@
 #include <QTableWidget>
 #include <QTest>
 
-#include "common/importer.h"
 #include "platform/candidates_panel.h"
 #include "platform/platform_view.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -12,9 +12,9 @@
 #include <filesystem>
 
 #include "analysis/platform/inference_table.h"
-#include "common/importer.h"
 #include "platform/inference_table.h"
 #include "platform/platform_view.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -14,7 +14,6 @@
 
 #include <cstring>
 
-#include "common/importer.h"
 #include "triptych_panels.h"
 #include "vision/frame_triptych.h"
 #include "vision/frames/frame_image.h"
@@ -23,6 +22,7 @@
 #include "vision/image_pane.h"
 #include "vision/lens/view_geometry.h"
 #include "workspace/import_controller.h"
+#include "workspace/registry.h"
 
 using namespace bs;
 

@@ -15,11 +15,11 @@
 #include <QTest>
 
 #include "analysis/platform/pipeline_table.h"
-#include "common/importer.h"
 #include "vision/pipeline/pipeline.h"
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "vision/reproject/cuda_preprocess.h"
+#include "workspace/registry.h"
 
 using bs::ui::PipelineMeasurePanel;
 using bs::ui::PipelineView;

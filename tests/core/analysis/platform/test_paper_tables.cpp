@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "analysis/platform/paper_tables.h"
-#include "common/importer.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <QTest>
 
 #include "analysis/platform/platform_comparison.h"
-#include "common/importer.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "analysis/power/power.h"
-#include "common/importer.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include "analysis/platform/platform_efficiency.h"
 #include "analysis/power/battery.h"
 #include "analysis/power/power_stats.h"
-#include "common/importer.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <QTest>
 
 #include "analysis/roofline/stage_roofline.h"
-#include "common/importer.h"
 #include "store/workspace.h"
+#include "workspace/registry.h"
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include "runs/clpeak_text.h"
 #include "runs/google_benchmark_json.h"
 #include "runs/run_json.h"
+#include "workspace/registry.h"
 
 namespace {
 const QString kBad = BENCHSCOPE_TEST_DATA_DIR "/importers/bad/";

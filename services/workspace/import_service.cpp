@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "common/import_service.h"
-
-#include "common/log_platform.h"
+#include "workspace/import_service.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 #include <memory>
 
+#include "common/log_platform.h"
 #include "mlperf/loose_files.h"
 #include "mlperf/mlperf_submission.h"
 #include "store/open_workspaces.h"
 #include "store/workspace.h"
+#include "workspace/registry.h"
 
 namespace bs {
 namespace fs = std::filesystem;

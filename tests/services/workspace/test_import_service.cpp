@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The import service (importers/common/import_service.h) that the CLI and the GUI share: folder order, skipped files
+// The import service (services/workspace/import_service.h) that the CLI and the GUI share: folder order, skipped files
 // and their reasons, duplicates by content, all-or-nothing batches, cancel and progress.
 #include <QDir>
 #include <QFile>
@@ -7,8 +7,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "common/import_service.h"
 #include "store/workspace.h"
+#include "workspace/import_service.h"
 
 namespace {
 
