@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <type_traits>
 
 #include "common/log_platform.h"
 #include "mlperf/loose_files.h"
 #include "mlperf/mlperf_submission.h"
 #include "store/open_workspaces.h"
+#include "store/record_kinds.h"
 #include "store/workspace.h"
 #include "workspace/registry.h"
 
@@ -86,28 +88,32 @@ std::vector<std::string> per_computer_report(const ImportResult& result) {
 }
 
 std::string describe_batch(const ImportBatch& b) {
-  std::string s = b.runs.empty() && (!b.frames.empty() || !b.headroom.empty())
-                      ? std::string()
-                      : std::to_string(b.runs.size()) + (b.runs.size() == 1 ? " run" : " runs");
-  const auto count = [](std::size_t n, const char* one, const char* many) {
-    return ", " + std::to_string(n) + (n == 1 ? one : many);
+  // Each kind in its descriptor's words and order (store/record_kinds.h); a frame and a headroom measurement say what
+  // each one is. "0 runs" only when the file held nothing that says more.
+  const auto frame_words = [](const Frame& f) {
+    return "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) + " " +
+           (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " + std::to_string(f.bit_depth) +
+           "-bit" + (f.synthetic ? " synthetic" : "") +
+           (f.storage == FrameStorage::Copy ? " (copied)" : " (by reference)");
   };
-  if (!b.result_sets.empty()) s += count(b.result_sets.size(), " result set", " result sets");
-  if (!b.power_traces.empty()) s += count(b.power_traces.size(), " power trace", " power traces");
-  for (const Frame& f : b.frames)
-    s += std::string(s.empty() ? "" : ", ") + "frame " + std::to_string(f.width) + "x" + std::to_string(f.height) +
-         " " + (f.pattern.empty() ? (f.channels == 3 ? "colour" : "grey") : f.pattern) + " " +
-         std::to_string(f.bit_depth) + "-bit" + (f.synthetic ? " synthetic" : "") +
-         (f.storage == FrameStorage::Copy ? " (copied)" : " (by reference)");
-  if (!b.pipeline_runs.empty())
-    s += ", " + std::to_string(b.pipeline_runs.size()) +
-         (b.pipeline_runs.size() == 1 ? " pipeline run" : " pipeline runs");
-  for (const headroom::HeadroomMeasurement& m : b.headroom) {
+  const auto headroom_words = [](const headroom::HeadroomMeasurement& m) {
     std::size_t threads = 0;
     for (const headroom::Phase& p : m.phases) threads = std::max(threads, p.threads.size());
-    s += std::string(s.empty() ? "" : ", ") + "control-loop latency: " + std::string(headroom::to_string(m.kind)) +
-         ", " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
-  }
+    return "control-loop latency: " + std::string(headroom::to_string(m.kind)) + ", " + std::to_string(threads) +
+           (threads == 1 ? " thread" : " threads");
+  };
+  std::vector<std::string> parts;
+  for_each_record_kind([&](const auto& kind) {
+    const auto& items = b.*kind.in_batch;
+    if constexpr (std::is_same_v<std::remove_cvref_t<decltype(items)>, std::vector<Frame>>)
+      for (const Frame& f : items) parts.push_back(frame_words(f));
+    else if constexpr (std::is_same_v<std::remove_cvref_t<decltype(items)>, std::vector<headroom::HeadroomMeasurement>>)
+      for (const auto& m : items) parts.push_back(headroom_words(m));
+    else if (!items.empty())
+      parts.push_back(std::to_string(items.size()) + " " + (items.size() == 1 ? kind.words.one : kind.words.many));
+  });
+  std::string s = parts.empty() ? "0 runs" : parts.front();
+  for (std::size_t i = 1; i < parts.size(); ++i) s += ", " + parts[i];
   return s + " (" + b.format + ")";
 }
 

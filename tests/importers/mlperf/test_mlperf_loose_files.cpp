@@ -209,7 +209,7 @@ class TestMlperfLooseFiles : public QObject {
       if (f.kind == bs::FileOutcome::Kind::NotData)
         QVERIFY2(f.reason.starts_with("read with its LoadGen summary"), (f.path + ": " + f.reason).c_str());
       if (f.kind == bs::FileOutcome::Kind::Imported)
-        QVERIFY2(f.summary.find("power trace") == std::string::npos, f.summary.c_str());  // no spl.txt on its own
+        QVERIFY2(f.summary.find("power log") == std::string::npos, f.summary.c_str());  // no spl.txt on its own
     }
     const bs::Library& lib = bs::bundled_library().library;
     const struct {
