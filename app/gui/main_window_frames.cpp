@@ -13,12 +13,12 @@
 #include "store/lens_store.h"
 #include "vision/frame_triptych.h"
 #include "vision/frames/frame_image.h"
-#include "vision/frames/workspace_lens.h"
 #include "vision/frames_view.h"
 #include "vision/lens_tab.h"
 #include "vision/raw_geometry_dialog.h"
 #include "vision/reproject/triptych.h"
 #include "vision/reprojection_tuner.h"
+#include "vision/workspace_lens.h"
 
 namespace bs::ui {
 

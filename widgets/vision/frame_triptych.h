@@ -17,9 +17,9 @@
 #include "model/frame.h"
 #include "util/cancel.h"
 #include "vision/demosaic/bayer.h"
-#include "vision/frames/workspace_lens.h"
 #include "vision/lens/lens.h"
 #include "vision/reproject/triptych.h"
+#include "vision/workspace_lens.h"
 
 class QCheckBox;
 class QComboBox;

@@ -9,7 +9,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "vision/frames/workspace_lens.h"
+#include "vision/workspace_lens.h"
 
 class QAction;
 class QLabel;

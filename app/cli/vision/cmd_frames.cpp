@@ -16,8 +16,8 @@
 #include "image_files/image_files.h"
 #include "store/workspace.h"
 #include "vision/frames/frame_image.h"
-#include "vision/frames/workspace_lens.h"
 #include "vision/reproject/triptych.h"
+#include "vision/workspace_lens.h"
 #include "workspace/inputs.h"
 
 namespace bs::cli {
