@@ -15,18 +15,19 @@ namespace {
 
 // Three intervals of the flops load with one clock and one temperature, as run_sustain returns them.
 SustainRun sustained_run(double last_rate) {
-  SustainRun r;
-  r.platform = "robot";
-  r.label = "flops for 3 s";
-  r.load = "flops";
-  r.rate_unit = "GFLOPS";
-  r.interval_s = 1;
-  r.t_s = {1.0, 2.0, 3.0};
-  r.rate = {10.5, 10.0, last_rate};
-  r.clocks = {{"cpu0", 3e9, {3e9, 2e9, 1.8e9}}};
-  r.temperatures = {{"thermal_zone0 x86_pkg_temp", 95.0, {60, 70, 97}}};
-  r.provenance = test::measured_on_robot();
-  return r;
+  return {.platform = "robot-nuc",
+          .label = "flops for 3 s",
+          .load = "flops",
+          .rate_unit = "GFLOPS",
+          .interval_s = 1,
+          .t_s = {1.0, 2.0, 3.0},
+          .rate = {10.5, 10.0, last_rate},
+          .clocks = {{"cpu0", 3e9, {3e9, 2e9, 1.8e9}}},
+          .temperatures = {{"thermal_zone0 x86_pkg_temp", 95.0, {60, 70, 97}}},
+          .power_w = {},
+          .power_sensor = {},
+          .not_exposed = {},
+          .provenance = test::measured_on_robot()};
 }
 
 }  // namespace
@@ -44,7 +45,7 @@ class TestSustainImport : public QObject {
     QCOMPARE(home.content_hash, content_hash(record_to_json(sustained_run(9.5)).dump()));
     QVERIFY(home.content_hash != sustain_import(sustained_run(9.0), std::nullopt, "Sustained tab").content_hash);
     QCOMPARE(home.batch.format, std::string(kSustainFormat));
-    QCOMPARE(home.batch.source_path, std::string("Sustained tab (robot, 2026-12-06T10:00:00Z)"));
+    QCOMPARE(home.batch.source_path, std::string("Sustained tab (robot-nuc, 2026-12-06T10:00:00Z)"));
     QCOMPARE(home.batch.sustain_runs.size(), std::size_t{1});
     QVERIFY(home.batch.power_traces.empty());
   }
