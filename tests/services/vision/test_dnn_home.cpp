@@ -13,20 +13,21 @@ namespace {
 
 // One network on one target as bench dnn measures it.
 DnnRun inference_run(const std::string& backend, double mean_s) {
-  DnnRun r;
-  r.platform = "robot-nuc";
-  r.device = backend == "cpu" ? "CPU (8 OpenCV threads)" : "Intel UHD Graphics 620";
-  r.backend = backend;
-  r.model = "mobilenet-ssd";
-  r.model_hash = "builtin:mobilenet-ssd:seed1";
-  r.family = "SSD";
-  r.architecture_only = true;
-  r.input_width = r.input_height = 300;
-  r.batch = 1;
-  r.flops = 2'514'700'000;
-  r.forward = {"inference", 20, mean_s, 0.002, mean_s - 0.004, mean_s + 0.006, mean_s, mean_s + 0.004};
-  r.provenance = test::measured_on_robot();
-  return r;
+  return {.platform = "robot-nuc",
+          .device = backend == "cpu" ? "CPU (8 OpenCV threads)" : "Intel UHD Graphics 620",
+          .backend = backend,
+          .model = "mobilenet-ssd",
+          .model_hash = "builtin:mobilenet-ssd:seed1",
+          .family = "SSD",
+          .architecture_only = true,
+          .input_width = 300,
+          .input_height = 300,
+          .flops = 2'514'700'000,
+          .forward = {"inference", 20, mean_s, 0.002, mean_s - 0.004, mean_s + 0.006, mean_s, mean_s + 0.004},
+          .device_peak_flops = {},
+          .energy_per_inference_j = {},
+          .mean_power_w = {},
+          .provenance = test::measured_on_robot()};
 }
 
 std::vector<DnnRun> bench(double cpu_mean_s) {

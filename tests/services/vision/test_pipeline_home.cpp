@@ -14,19 +14,17 @@ namespace {
 
 // A synthetic-capture run as measure_synthetic_pipeline returns it.
 PipelineRun measured_run(double detect_mean_s) {
-  PipelineRun r;
-  r.platform = "robot-nuc";
-  r.device = "CPU (8 threads)";
-  r.backend = "cpu";
-  r.demosaic = "fused";
-  r.detector = "hog";
-  r.frame_width = 1280;
-  r.frame_height = 1024;
-  r.throughput_fps = 7.25;
-  r.stages = {{"preprocess", 20, 0.0062, 0.001, 0.005, 0.009, 0.0062, 0.0081},
-              {"detect", 20, detect_mean_s, 0.014, 0.1, 0.19, 0.139, 0.18}};
-  r.provenance = test::measured_on_robot();
-  return r;
+  return {.platform = "robot-nuc",
+          .device = "CPU (8 threads)",
+          .backend = "cpu",
+          .demosaic = "fused",
+          .detector = "hog",
+          .frame_width = 1280,
+          .frame_height = 1024,
+          .stages = {{"preprocess", 20, 0.0062, 0.001, 0.005, 0.009, 0.0062, 0.0081},
+                     {"detect", 20, detect_mean_s, 0.014, 0.1, 0.19, 0.139, 0.18}},
+          .throughput_fps = 7.25,
+          .provenance = test::measured_on_robot()};
 }
 
 }  // namespace
