@@ -30,6 +30,7 @@
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
+#include "kernels/measured_set_home.h"
 #include "peaks/flops_plot.h"
 #include "peaks/peak_table.h"
 #include "peaks/roofline_view.h"
@@ -41,13 +42,12 @@
 #include "power/power_view.h"
 #include "remote/remote_run.h"
 #include "report/run_names.h"
-#include "runs/pipeline_json.h"
-#include "runs/run_json.h"
 #include "store/run_label_store.h"
 #include "sustain/sustain_import.h"
 #include "sustain/sustain_run_panel.h"
 #include "sustain/sustain_view.h"
 #include "vision/frames_view.h"
+#include "vision/pipeline_home.h"
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "workspace/import_controller.h"
@@ -120,20 +120,9 @@ MainWindow::MainWindow(QWidget* parent)
   tab(roofline_, tr("Roofline"), tr("Compute and memory ceilings per device, with the kernels placed on them"));
   tab(pipeline_, tr("Pipeline"), tr("Vision pipeline stage times per platform (demosaic + reprojection, detection)"));
   connect(pipeline_, &PipelineView::run_measured, this, [this](const PipelineRun& run) {
-    if (!workspace_) new_untitled_workspace();
-    try {
-      const std::string json = write_pipeline_json(run);
-      // With "Record power" on, the trace goes into the same import as the run.
-      ImportBatch batch;
-      batch.source_path = "Pipeline tab (" + run.platform + ", " + run.provenance.date + ")";
-      batch.format = "benchscope-pipeline-v1";
-      batch.pipeline_runs = {run};
-      if (auto trace = pipeline_->measure_panel()->take_power_trace()) batch.power_traces.push_back(std::move(*trace));
-      workspace_->add_import(batch, content_hash(json));
-    } catch (const WorkspaceError& e) {
-      QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
-    }
-    reload();
+    // With "Record power" on, the trace goes into the same import as the run.
+    store_home(pipeline_home(run, pipeline_->measure_panel()->take_power_trace(), "Pipeline tab"),
+               tr("Cannot store the run"));
   });
   // Whether the control loop keeps its deadlines while the vision runs: the probe idle and beside each load.
   headroom_ = new HeadroomView(this);
@@ -141,15 +130,8 @@ MainWindow::MainWindow(QWidget* parent)
       tr("Control-loop headroom: a periodic loop's wake-up latency and deadline misses, idle and beside the vision "
          "pipeline, the detector, the kernels or a command"));
   connect(headroom_->run_panel(), &HeadroomRunPanel::measured, this, [this](const headroom::RunOutput& out) {
-    if (!workspace_) new_untitled_workspace();
-    try {
-      const auto home = headroom::headroom_import(out.measurement, out.power, "Headroom tab");
-      workspace_->add_import(home.batch, home.content_hash);
-      work_since_open_ = true;
-    } catch (const WorkspaceError& e) {
-      QMessageBox::critical(this, tr("Cannot store the measurement"), QString::fromUtf8(e.what()));
-    }
-    reload();
+    store_home(headroom::headroom_import(out.measurement, out.power, "Headroom tab"),
+               tr("Cannot store the measurement"));
   });
   // Measured on a robot (issue #44): imported with the robot's provenance as the Kernel Runner's remote jobs are.
   connect(headroom_->run_panel(), &HeadroomRunPanel::remote_finished, this, &MainWindow::store_remote_run);
@@ -160,15 +142,7 @@ MainWindow::MainWindow(QWidget* parent)
       tr("Sustained performance: a load's rate, the clocks, temperatures and power on one time axis; stability and "
          "throttling"));
   connect(sustain_->run_panel(), &SustainRunPanel::measured, this, [this](const sustain::RunOutput& out) {
-    if (!workspace_) new_untitled_workspace();
-    try {
-      const sustain::SustainImport home = sustain::sustain_import(out.run, out.power, "Sustained tab");
-      workspace_->add_import(home.batch, home.content_hash);
-      work_since_open_ = true;
-    } catch (const WorkspaceError& e) {
-      QMessageBox::critical(this, tr("Cannot store the sustained run"), QString::fromUtf8(e.what()));
-    }
-    reload();
+    store_home(sustain::sustain_import(out.run, out.power, "Sustained tab"), tr("Cannot store the sustained run"));
   });
   connect(sustain_->run_panel(), &SustainRunPanel::robot_finished, this, &MainWindow::store_remote_run);
   tab(frames_, tr("Frames"), tr("Camera frames: raw mosaic, demosaiced and reprojected (the paper's Figure 3)"));
@@ -227,18 +201,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(runner_, &KernelRunner::finished, this, &MainWindow::store_measured_runs);
   connect(runner_, &KernelRunner::remote_finished, this, &MainWindow::store_remote_run);
   connect(runner_, &KernelRunner::ceilings_measured, this, [this](const ResultSet& set) {
-    if (!workspace_) new_untitled_workspace();
-    ImportBatch batch;
-    batch.source_path = "Kernel Runner: Measure ceilings";
-    batch.format = kCeilingSource;
-    batch.result_sets.push_back(set);
-    try {
-      workspace_->add_import(batch, content_hash(set.provenance.date + set.provenance.note));
-      work_since_open_ = true;
-    } catch (const WorkspaceError& e) {
-      QMessageBox::critical(this, tr("Cannot store the ceilings"), QString::fromUtf8(e.what()));
-    }
-    reload();
+    store_home(measured_set_home(set, "Kernel Runner: Measure ceilings"), tr("Cannot store the ceilings"));
     statusBar()->showMessage(tr("Stored the empirical ceilings of %1").arg(QString::fromStdString(set.device)), 10000);
   });
   connect(runner_, &KernelRunner::failed, this, [this](const QString& message) {
@@ -508,34 +471,6 @@ void MainWindow::show_live_run(const FlopsRun& run) {
     it = live_.insert(live_.end(), StoredRun{-1 - static_cast<qint64>(live_.size()), 0, 0, color, {}});
   it->run = run;
   refresh_views();
-}
-
-void MainWindow::store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled) {
-  live_.clear();
-  if (runs.empty()) {
-    refresh_views();
-    statusBar()->showMessage(tr("Kernel run cancelled before any point completed"), 10000);
-    return;
-  }
-  if (!workspace_) new_untitled_workspace();
-  ImportBatch batch;
-  batch.source_path = "Kernel Runner";
-  batch.format = "benchscope-run-v1";
-  batch.runs = runs;
-  if (auto trace = runner_->take_power_trace()) batch.power_traces.push_back(std::move(*trace));  // same import
-  try {
-    workspace_->add_import(batch, content_hash(write_run_json(runs)));
-    work_since_open_ = true;
-  } catch (const WorkspaceError& e) {
-    QMessageBox::critical(this, tr("Cannot store the run"), QString::fromUtf8(e.what()));
-  }
-  reload();
-  // The new run's peak row comes into view in the FLOPS tab's table, selected, wherever the table was scrolled.
-  const FlopsRun& first = runs.front();
-  peaks_->show_row(first.platform, first.device, first.backend, first.dims);
-  statusBar()->showMessage(tr("Stored %n measured run(s)%1", nullptr, static_cast<int>(runs.size()))
-                               .arg(cancelled ? tr(" (cancelled: partial)") : QString()),
-                           10000);
 }
 
 void MainWindow::save_as() {

@@ -16,6 +16,7 @@ class QUndoStack;
 #include "power/log_voltage_dialog.h"
 #include "power/shared_traces.h"
 #include "store/decision_store.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 #include "workspace/damage_banner.h"
 #include "workspace/import_controller.h"
@@ -162,7 +163,11 @@ class MainWindow : public QMainWindow {
   void save();
   void update_title();  // and the status bar's note on how edits are kept
   void show_live_run(const FlopsRun& run);
-  void store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled);
+  // What a panel measured here goes home (main_window_home.cpp): into the open workspace (an untitled one opened
+  // first if none is), then reloaded; a refusal (the same measurement stored already, a full disk) is shown in a
+  // box titled `failure_title`. Every measurement made here is stored through it (a robot's job: store_remote_run).
+  void store_home(const HomeBatch& home, const QString& failure_title);
+  void store_measured_runs(const std::vector<FlopsRun>& runs, bool cancelled);  // the Kernel Runner's sweep
   // A robot's job came home: its results imported with their provenance under `platform` (main_window_remote.cpp).
   void store_remote_run(RemoteRun* run, const QString& platform);
   void show_damage();     // the read-only banner, after every (re)load

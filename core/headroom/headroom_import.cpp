@@ -3,13 +3,14 @@
 
 #include "headroom/headroom_json.h"
 #include "store/workspace.h"
+#include "util/home_name.h"
 
 namespace bs::headroom {
 
-HeadroomImport headroom_import(const HeadroomMeasurement& m, const std::optional<PowerTrace>& power,
-                               const std::string& where) {
-  HeadroomImport out;
-  out.batch.source_path = where + " (" + m.platform + ", " + m.provenance.date + ")";
+HomeBatch headroom_import(const HeadroomMeasurement& m, const std::optional<PowerTrace>& power,
+                          const std::string& where) {
+  HomeBatch out;
+  out.batch.source_path = home_name(where, m.platform, m.provenance.date);
   out.batch.format = kHeadroomFormat;
   out.batch.headroom = {m};
   if (power) out.batch.power_traces.push_back(*power);

@@ -9,20 +9,16 @@
 
 #include "headroom/headroom_measurement.h"
 #include "model/power_trace.h"
-#include "store/import_batch.h"
+#include "store/home_batch.h"
 
 namespace bs::headroom {
 
 inline constexpr const char* kHeadroomFormat = "benchscope-headroom-v1";
 
-struct HeadroomImport {
-  ImportBatch batch;
-  std::string content_hash;  // of the measurement's record (headroom_json.h, without the derived summary)
-};
-
-// `where`: who measured it, for the import's name ("benchscope-cli headroom", "Headroom tab"). The power trace
+// `where`: who measured it, for the import's name ("benchscope-cli headroom", "Headroom tab"; util/home_name.h). The
+// content hash is of the measurement's record (headroom_json.h, without the derived summary). The power trace
 // recorded beside the run is stored (and removed) with it.
-HeadroomImport headroom_import(const HeadroomMeasurement& m, const std::optional<PowerTrace>& power,
-                               const std::string& where);
+HomeBatch headroom_import(const HeadroomMeasurement& m, const std::optional<PowerTrace>& power,
+                          const std::string& where);
 
 }  // namespace bs::headroom

@@ -3,12 +3,13 @@
 
 #include "store/workspace.h"
 #include "sustain/sustain_json.h"
+#include "util/home_name.h"
 
 namespace bs::sustain {
 
-SustainImport sustain_import(const SustainRun& run, const std::optional<PowerTrace>& power, const std::string& where) {
-  SustainImport out;
-  out.batch.source_path = where + " (" + run.platform + ", " + run.provenance.date + ")";
+HomeBatch sustain_import(const SustainRun& run, const std::optional<PowerTrace>& power, const std::string& where) {
+  HomeBatch out;
+  out.batch.source_path = home_name(where, run.platform, run.provenance.date);
   out.batch.format = kSustainFormat;
   out.batch.sustain_runs = {run};
   if (power) out.batch.power_traces.push_back(*power);

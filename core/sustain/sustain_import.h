@@ -8,19 +8,15 @@
 
 #include "model/power_trace.h"
 #include "model/sustain_run.h"
-#include "store/import_batch.h"
+#include "store/home_batch.h"
 
 namespace bs::sustain {
 
 inline constexpr const char* kSustainFormat = "benchscope-sustain-v1";
 
-struct SustainImport {
-  ImportBatch batch;
-  std::string content_hash;  // of the record's JSON (sustain_json.h)
-};
-
-// `where`: who measured it, for the import's name ("benchscope-cli sustain", "Sustained tab"). The power trace
-// recorded beside the run is stored (and removed) with it.
-SustainImport sustain_import(const SustainRun& run, const std::optional<PowerTrace>& power, const std::string& where);
+// `where`: who measured it, for the import's name ("benchscope-cli sustain", "Sustained tab"; util/home_name.h). The
+// content hash is of the record's JSON (sustain_json.h). The power trace recorded beside the run is stored (and
+// removed) with it.
+HomeBatch sustain_import(const SustainRun& run, const std::optional<PowerTrace>& power, const std::string& where);
 
 }  // namespace bs::sustain

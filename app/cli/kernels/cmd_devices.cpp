@@ -21,6 +21,8 @@
 #include "kernels/bench_ceilings.h"
 #include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/cpu_args.h"
+#include "kernels/measured_set_home.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -163,15 +165,13 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
     }
     // In a workspace the peak table, peaks and the roofline show each run's % of this device's ceiling.
     if (const auto ws_path = args.workspace) {
-      ImportBatch batch;
-      batch.source_path = "benchscope-cli devices --measure-ceilings";
-      batch.format = kernels::kCeilingSource;
-      batch.result_sets = {kernels::ceiling_result_set(*ceilings)};
-      for (const auto& [id, set] : device_ceilings) batch.result_sets.push_back(kernels::ceiling_result_set(set));
-      std::string key;
-      for (const ResultSet& set : batch.result_sets) key += set.provenance.date + set.provenance.note;
+      // One import per device, as the Kernel Runner stores each device it measures, all in one transaction.
+      const std::string where = "benchscope-cli devices --measure-ceilings";
+      std::vector<HomeBatch> homes = {measured_set_home(kernels::ceiling_result_set(*ceilings), where)};
+      for (const auto& [id, set] : device_ceilings)
+        homes.push_back(measured_set_home(kernels::ceiling_result_set(set), where));
       Workspace ws(*ws_path);
-      ws.add_import(batch, content_hash(key));
+      bring_home(ws, homes);
     }
   } else if (args.workspace) {
     throw UsageError("--workspace stores measured ceilings: use it with --measure-ceilings");

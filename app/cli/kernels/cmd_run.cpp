@@ -17,11 +17,13 @@
 #include "common/signals.h"
 #include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/cpu_args.h"
+#include "kernels/flops_home.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
 #include "power/power_args.h"
 #include "runs/run_json.h"
 #include "sensors/recording_csv.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -191,13 +193,8 @@ int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::
     }
   }
   if (const auto& ws_path = settings.workspace) {
-    ImportBatch batch;
-    batch.source_path = "benchscope-cli run flops";
-    batch.format = "benchscope-run-v1";
-    batch.runs = result.runs;
-    if (trace) batch.power_traces.push_back(*trace);  // the same import: stored, listed and removed with the run
     Workspace ws(*ws_path);
-    ws.add_import(batch, content_hash(write_run_json(result.runs)));
+    bring_home(ws, flops_home(result.runs, trace, "benchscope-cli run flops"));  // the trace in the same import
     if (!quiet) err << "benchscope-cli: stored " << result.runs.size() << " run(s) in " << *ws_path << '\n';
   }
   if (events) events->write("result", result_fields(result.runs, settings));

@@ -11,6 +11,8 @@
 #include "common/args.h"
 #include "common/signals.h"
 #include "kernels/ceilings/bandwidth.h"
+#include "kernels/measured_set_home.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 
 namespace bs::cli {
@@ -46,12 +48,8 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
   const Measurement& m = set.measurements.front();
   const Summary s = summarize(m.values);
   if (const auto ws_path = args.workspace) {
-    ImportBatch batch;
-    batch.source_path = "benchscope-cli run bandwidth";
-    batch.format = kernels::kBandwidthSource;
-    batch.result_sets = {set};
     Workspace ws(*ws_path);
-    ws.add_import(batch, content_hash(set.provenance.date + set.backend + set.device + std::to_string(s.mean)));
+    bring_home(ws, measured_set_home(set, "benchscope-cli run bandwidth"));
     if (!quiet) err << "benchscope-cli: stored in " << *ws_path << '\n';
   }
   if (args.json) {

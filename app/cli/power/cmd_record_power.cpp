@@ -16,7 +16,9 @@
 #include "common/events_option.h"
 #include "common/signals.h"
 #include "power/power_args.h"
+#include "power/recording_home.h"
 #include "sensors/recording_csv.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 
 extern char** environ;
@@ -81,12 +83,8 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
   PowerTrace trace = rec->finish(label);
   if (path) sensors::save_recording_csv(*path, trace);
   if (ws_path) {
-    ImportBatch batch;
-    batch.source_path = "benchscope-cli " + label;
-    batch.format = "benchscope-power-recording";
-    batch.power_traces.push_back(trace);
     Workspace ws(*ws_path);
-    ws.add_import(batch, content_hash(trace.provenance.date + "\n" + label + "\n" + trace.provenance.sensor));
+    bring_home(ws, recording_home(trace, "benchscope-cli record-power"));
   }
   if (cancel.cancelled())
     err << "benchscope-cli: interrupted; keeping the " << trace.time_s.size() << " samples recorded\n";

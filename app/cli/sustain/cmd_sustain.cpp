@@ -122,8 +122,7 @@ int run_sustain_with(const std::vector<std::string>& raw, std::ostream& out, std
   }
   if (const auto& ws_path = s.workspace) {
     Workspace ws(*ws_path);
-    const sustain::SustainImport home = sustain::sustain_import(run, result.power, "benchscope-cli sustain");
-    const std::int64_t id = ws.add_import(home.batch, home.content_hash);
+    const std::int64_t id = bring_home(ws, sustain::sustain_import(run, result.power, "benchscope-cli sustain"));
     (s.json ? err : out) << "stored the sustained run in " << *ws_path << " (import " << id << ")\n";
   }
   return result.cancelled ? 1 : 0;

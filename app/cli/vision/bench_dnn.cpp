@@ -27,9 +27,11 @@
 #include "kernels/backends/backend.h"
 #include "kernels/cpu/cpu_info.h"
 #include "power/power_args.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 #include "util/host_clock.h"
 #include "util/text.h"
+#include "vision/dnn_home.h"
 #include "vision/pipeline/detector.h"
 #include "vision/pipeline/dnn_architectures.h"
 #include "vision/pipeline/dnn_bench.h"
@@ -358,14 +360,7 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   text << "\nload average after: " << load_after << "\n";
   if (const auto& ws_path = settings.workspace) {
     Workspace ws(*ws_path);
-    ImportBatch b;
-    b.source_path = "benchscope-cli bench dnn (" + platform + ", " + stored.front().provenance.date + ")";
-    b.format = "benchscope-dnn-v1";
-    b.dnn_runs = stored;
-    if (trace) b.power_traces.push_back(*trace);
-    std::string key;
-    for (const DnnRun& r : stored) key += r.model_hash + r.backend + r.provenance.date + fixed(r.forward.mean_s, 9);
-    const std::int64_t id = ws.add_import(b, content_hash(key));
+    const std::int64_t id = bring_home(ws, dnn_home(stored, trace, "benchscope-cli bench dnn"));
     text << "stored " << stored.size() << " run" << (stored.size() == 1 ? "" : "s") << " in " << *ws_path << " (import "
          << id << ")\n";
   }

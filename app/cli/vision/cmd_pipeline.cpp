@@ -23,6 +23,7 @@
 #include "power/power_args.h"
 #include "runs/pipeline_json.h"
 #include "sensors/recording_csv.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 #include "util/host_clock.h"
 #include "vision/frames/frame_file.h"
@@ -32,6 +33,7 @@
 #include "vision/pipeline/pipeline_measure.h"
 #include "vision/pipeline/pipeline_record.h"
 #include "vision/pipeline/threads.h"
+#include "vision/pipeline_home.h"
 #include "vision/reproject/cuda_preprocess.h"
 #include "vision/reproject/opencl_preprocess.h"
 #include "vision/reproject/preprocess.h"
@@ -200,12 +202,7 @@ int finish_run(const commands::PipelineSettings& settings, const PipelineRun& ru
   if (const auto& ws_path = settings.workspace) {
     Workspace ws(*ws_path);
     // With --power the trace goes into the same import as the run (stored and removed together).
-    ImportBatch batch;
-    batch.source_path = "benchscope-cli pipeline (" + run.platform + ", " + run.provenance.date + ")";
-    batch.format = "benchscope-pipeline-v1";
-    batch.pipeline_runs = {run};
-    if (trace) batch.power_traces.push_back(*trace);
-    const std::int64_t id = ws.add_import(batch, content_hash(json_text));
+    const std::int64_t id = bring_home(ws, pipeline_home(run, trace, "benchscope-cli pipeline"));
     info << "stored the run in " << *ws_path << " (import " << id << ")\n";
   }
   return 0;

@@ -5,6 +5,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../../support/home_checks.h"
 #include "headroom/headroom_import.h"
 #include "headroom/headroom_json.h"
 #include "store/workspace.h"
@@ -49,22 +50,24 @@ class TestHeadroomImport : public QObject {
   }
 
   void the_power_trace_goes_home_with_it() {
-    PowerTrace trace;
-    trace.label = "RAPL package-0";
-    const auto home = headroom_import(measurement("robot"), trace, "Headroom tab");
+    const HomeBatch home =
+        headroom_import(measurement("robot"), test::recorded_beside("RAPL package-0"), "Headroom tab");
     QCOMPARE(home.batch.power_traces.size(), std::size_t{1});
     QCOMPARE(home.batch.power_traces[0].label, std::string("RAPL package-0"));
+    test::trace_goes_home_with_it(home,
+                                  [](const Workspace& ws) { return test::import_ids(ws.headroom_measurements()); });
   }
 
   void a_workspace_refuses_the_same_measurement_twice() {
     QTemporaryDir dir;
     Workspace ws(dir.filePath("h.bsw").toStdString());
     const HeadroomMeasurement m = measurement("robot");
-    const auto tab = headroom_import(m, std::nullopt, "Headroom tab");
-    ws.add_import(tab.batch, tab.content_hash);
-    const auto cli = headroom_import(m, std::nullopt, "benchscope-cli headroom");
-    QVERIFY_THROWS_EXCEPTION(WorkspaceError, ws.add_import(cli.batch, cli.content_hash));
+    bring_home(ws, headroom_import(m, std::nullopt, "Headroom tab"));
+    QVERIFY_THROWS_EXCEPTION(WorkspaceError,
+                             bring_home(ws, headroom_import(m, std::nullopt, "benchscope-cli headroom")));
     QCOMPARE(ws.headroom_measurements().size(), std::size_t{1});
+    test::same_measurement_is_one_import(headroom_import(m, std::nullopt, "Headroom tab"),
+                                         headroom_import(m, std::nullopt, "benchscope-cli headroom"));
   }
 };
 
