@@ -15,6 +15,7 @@
 #include "main_window.h"
 #include "store/battery_preset_store.h"
 #include "store/import_snapshot.h"
+#include "store/record_kinds.h"
 #include "store/run_label_store.h"
 #include "vision/lens/lens.h"
 #include "vision/lens_tab.h"
@@ -51,19 +52,11 @@ class WorkspaceCommand : public QUndoCommand {
   std::function<void(const QString&)> report_;
 };
 
+// What an import holds, in its record kinds' words (store/record_kinds.h): "2 runs, 1 power log".
 QString count_text(const ImportBatch& b) {
-  QStringList parts;
-  const auto add = [&](std::size_t n, const QString& one, const QString& many) {
-    if (n > 0) parts << (n == 1 ? one : many.arg(n));
-  };
-  add(b.runs.size(), MainWindow::tr("1 run"), MainWindow::tr("%1 runs"));
-  add(b.result_sets.size(), MainWindow::tr("1 result set"), MainWindow::tr("%1 result sets"));
-  add(b.power_traces.size(), MainWindow::tr("1 power log"), MainWindow::tr("%1 power logs"));
-  add(b.frames.size(), MainWindow::tr("1 frame"), MainWindow::tr("%1 frames"));
-  add(b.pipeline_runs.size(), MainWindow::tr("1 pipeline run"), MainWindow::tr("%1 pipeline runs"));
-  add(b.dnn_runs.size(), MainWindow::tr("1 inference run"), MainWindow::tr("%1 inference runs"));
-  add(b.headroom.size(), MainWindow::tr("1 headroom measurement"), MainWindow::tr("%1 headroom measurements"));
-  return parts.join(", ");
+  RecordCounts counts;
+  counts.add(b);
+  return counts.total() == 0 ? QString() : QString::fromStdString(counts.summary());
 }
 
 QString file_name(const std::string& path) {
