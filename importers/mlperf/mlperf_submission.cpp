@@ -12,6 +12,7 @@
 #include "mlperf/loadgen_detail.h"
 #include "mlperf/loose_files.h"
 #include "power/ptd_log.h"
+#include "util/text.h"
 
 namespace bs {
 namespace fs = std::filesystem;
@@ -254,10 +255,9 @@ std::string network_from_name(std::string_view path) {
                                                                                     {"dlrm", "dlrm"},
                                                                                     {"gptj", "gptj"},
                                                                                     {"mobilenet", "mobilenet"}};
-  std::string lower(path);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string path_lower = bs::lower(path);
   for (const auto& [k, v] : kNames)
-    if (lower.find(k) != std::string::npos) return std::string(v);
+    if (path_lower.find(k) != std::string::npos) return std::string(v);
   return {};
 }
 
