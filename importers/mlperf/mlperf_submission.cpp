@@ -20,11 +20,7 @@ namespace {
 
 constexpr double kNs = 1e-9;
 
-std::string fmt(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string fmt(double v) { return format_number("%.6g", v); }
 
 void add(ResultSet& set, const std::string& name, const std::string& metric, const std::string& unit, double v) {
   Measurement m;
