@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "commands/events_words.h"
+
 namespace bs::commands {
 
 std::vector<std::string> to_words(const RecordPowerSettings& s) {
@@ -45,8 +47,7 @@ RecordPowerSettings record_power_from_words(const std::vector<std::string>& word
   s.sensor = args.value("--sensor").value_or("auto");
   s.sysfs_root = args.value("--sysfs-root");
   s.quiet = args.has("--quiet");
-  s.events = args.value("--events");
-  if (s.events && *s.events != "jsonl") throw UsageError("--events takes jsonl (got '" + *s.events + "')");
+  s.events = read_events(args);
   return s;
 }
 

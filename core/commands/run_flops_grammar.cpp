@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "commands/events_words.h"
 #include "kernels/worker_spec.h"
 
 namespace bs::commands {
@@ -59,7 +60,7 @@ RunFlopsSettings run_flops_from_words(const std::vector<std::string>& words) {
   s.isa = args.value("--isa");
   s.out = args.value("--out");
   s.workspace = args.value("--workspace");
-  s.events = args.value("--events");
+  s.events = read_events(args);
   s.json = args.has("--json");
   s.quiet = args.has("--quiet");
   s.power = read_power(args);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands/sustain_grammar.h"
 
+#include "commands/events_words.h"
+
 namespace bs::commands {
 namespace {
 
@@ -71,8 +73,7 @@ SustainSettings sustain_from_words(const std::vector<std::string>& words) {
   s.power.sysfs_root = s.sysfs_root;
   s.workspace = args.value("--workspace");
   s.json = args.has("--json");
-  s.events = args.value("--events");
-  if (s.events && *s.events != "jsonl") throw UsageError("--events takes jsonl (got '" + *s.events + "')");
+  s.events = read_events(args);
   return s;
 }
 

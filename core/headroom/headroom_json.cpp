@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "model/json_fields.h"
 #include "model/provenance_json.h"
 
 namespace bs::headroom {
@@ -37,33 +38,20 @@ json percentile_json(const HistogramPercentile& p) {
 
 // --- reading ------------------------------------------------------------------------------------------------
 
-[[noreturn]] void fail(const std::string& where, const std::string& why) {
-  throw HeadroomJsonError(where + ": " + why);
-}
-
-const json& member(const json& obj, const char* key, const std::string& where) {
-  const auto it = obj.find(key);
-  if (it == obj.end()) fail(where, "'" + std::string(key) + "' is missing");
-  return *it;
-}
-
-std::string text(const json& obj, const char* key, const std::string& where) {
-  const json& v = member(obj, key, where);
-  if (!v.is_string()) fail(where + "." + key, "is not a string");
-  return v.get<std::string>();
-}
+using Fields = JsonFields<HeadroomJsonError>;
 
 std::int64_t integer(const json& v, const std::string& where, std::int64_t min, std::int64_t max) {
-  if (!v.is_number_integer()) fail(where, "'" + v.dump() + "' is not an integer");
+  if (!v.is_number_integer()) Fields::fail(where, "'" + v.dump() + "' is not an integer");
   if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(max))
-    fail(where, v.dump() + " is above " + std::to_string(max));
+    Fields::fail(where, v.dump() + " is above " + std::to_string(max));
   const auto x = v.get<std::int64_t>();
-  if (x < min || x > max) fail(where, v.dump() + " is outside " + std::to_string(min) + " .. " + std::to_string(max));
+  if (x < min || x > max)
+    Fields::fail(where, v.dump() + " is outside " + std::to_string(min) + " .. " + std::to_string(max));
   return x;
 }
 
 std::int64_t integer(const json& obj, const char* key, const std::string& where, std::int64_t min, std::int64_t max) {
-  return integer(member(obj, key, where), where + "." + key, min, max);
+  return integer(Fields::member(obj, key, where), where + "." + key, min, max);
 }
 
 std::optional<std::int64_t> optional_integer(const json& obj, const char* key, const std::string& where,
@@ -76,77 +64,72 @@ std::optional<std::int64_t> optional_integer(const json& obj, const char* key, c
 std::optional<double> optional_number(const json& obj, const char* key, const std::string& where, bool non_negative) {
   const auto it = obj.find(key);
   if (it == obj.end() || it->is_null()) return std::nullopt;
-  if (!it->is_number()) fail(where + "." + key, "'" + it->dump() + "' is not a number");
+  if (!it->is_number()) Fields::fail(where + "." + key, "'" + it->dump() + "' is not a number");
   const double v = it->get<double>();
-  if (!std::isfinite(v) || (non_negative && v < 0)) fail(where + "." + key, it->dump() + " is not allowed here");
+  if (!std::isfinite(v) || (non_negative && v < 0))
+    Fields::fail(where + "." + key, it->dump() + " is not allowed here");
   return v;
 }
 
 std::optional<bool> optional_flag(const json& obj, const char* key, const std::string& where) {
   const auto it = obj.find(key);
   if (it == obj.end() || it->is_null()) return std::nullopt;
-  if (!it->is_boolean()) fail(where + "." + key, "is not true, false or null");
+  if (!it->is_boolean()) Fields::fail(where + "." + key, "is not true, false or null");
   return it->get<bool>();
 }
 
-const json& array(const json& obj, const char* key, const std::string& where) {
-  const json& v = member(obj, key, where);
-  if (!v.is_array()) fail(where + "." + key, "is not an array");
-  return v;
-}
-
 LatencyHistogram histogram_from_json(const json& j, const std::string& where) {
-  if (!j.is_object()) fail(where, "is not an object");
+  if (!j.is_object()) Fields::fail(where, "is not an object");
   LatencyHistogram h;
   constexpr auto kMaxCount = std::numeric_limits<std::int64_t>::max();
   h.bin_ns = integer(j, "bin_ns", where, 1, kMaxNs);
   const auto n_bins = integer(j, "bins", where, 0, static_cast<std::int64_t>(kMaxHistogramBins));
-  if (n_bins > 0 && h.bin_ns > kMaxNs / n_bins) fail(where + ".bins", "limit beyond 2^62 ns");
+  if (n_bins > 0 && h.bin_ns > kMaxNs / n_bins) Fields::fail(where + ".bins", "limit beyond 2^62 ns");
   h.overflows = static_cast<std::uint64_t>(integer(j, "overflows", where, 0, kMaxCount));
   h.cycles = static_cast<std::uint64_t>(integer(j, "cycles", where, 0, kMaxCount));
   h.min_ns = optional_integer(j, "min_ns", where, 0, kMaxNs);
   h.max_ns = optional_integer(j, "max_ns", where, 0, kMaxNs);
-  const json& counts = array(j, "counts", where);
+  const json& counts = Fields::array(j, "counts", where);
   if (counts.size() > static_cast<std::size_t>(n_bins))
-    fail(where + ".counts", std::to_string(counts.size()) + " entries for " + std::to_string(n_bins) + " bins");
+    Fields::fail(where + ".counts", std::to_string(counts.size()) + " entries for " + std::to_string(n_bins) + " bins");
   h.bins.assign(static_cast<std::size_t>(n_bins), 0);
   std::uint64_t total = 0;
   for (std::size_t k = 0; k < counts.size(); ++k) {
     const std::string at = where + ".counts[" + std::to_string(k) + "]";
-    if (!counts[k].is_array() || counts[k].size() != 2) fail(at, "is not a [bin, count] pair");
+    if (!counts[k].is_array() || counts[k].size() != 2) Fields::fail(at, "is not a [bin, count] pair");
     const auto bin = static_cast<std::size_t>(integer(counts[k][0], at + "[0]", 0, n_bins - 1));
     const auto count = static_cast<std::uint64_t>(integer(counts[k][1], at + "[1]", 1, kMaxCount));
-    if (h.bins[bin] != 0) fail(at, "bin " + std::to_string(bin) + " given twice");
-    if (total > static_cast<std::uint64_t>(kMaxCount) - count) fail(at, "counts add up beyond 2^63");
+    if (h.bins[bin] != 0) Fields::fail(at, "bin " + std::to_string(bin) + " given twice");
+    if (total > static_cast<std::uint64_t>(kMaxCount) - count) Fields::fail(at, "counts add up beyond 2^63");
     total += count;
     h.bins[bin] = count;
   }
-  if (const std::string e = h.bookkeeping_error(); !e.empty()) fail(where, e);
+  if (const std::string e = h.bookkeeping_error(); !e.empty()) Fields::fail(where, e);
   return h;
 }
 
 ThreadLatency thread_from_json(const json& j, const std::string& where) {
-  if (!j.is_object()) fail(where, "is not an object");
+  if (!j.is_object()) Fields::fail(where, "is not an object");
   ThreadLatency t;
   t.index = static_cast<int>(integer(j, "index", where, 0, 1 << 20));
   if (auto cpu = optional_integer(j, "cpu", where, 0, 1 << 20)) t.cpu = static_cast<int>(*cpu);
-  t.policy = text(j, "policy", where);
+  t.policy = Fields::text(j, "policy", where);
   if (auto prio = optional_integer(j, "priority", where, 0, 99)) t.priority = static_cast<int>(*prio);
   t.memory_locked = optional_flag(j, "memory_locked", where);
   t.period_ns = integer(j, "period_ns", where, 0, kMaxNs);
   t.computation_ns = integer(j, "computation_ns", where, 0, kMaxNs);
   t.deadline_ns = integer(j, "deadline_ns", where, 0, kMaxNs);
-  t.histogram = histogram_from_json(member(j, "histogram", where), where + ".histogram");
+  t.histogram = histogram_from_json(Fields::member(j, "histogram", where), where + ".histogram");
   t.mean_ns = optional_number(j, "mean_ns", where, true);
   t.sd_ns = optional_number(j, "sd_ns", where, true);
   if (const auto it = j.find("misses"); it != j.end() && !it->is_null()) {
     const std::string at = where + ".misses";
-    if (!it->is_object()) fail(at, "is not an object");
+    if (!it->is_object()) Fields::fail(at, "is not an object");
     const auto cycles = static_cast<std::int64_t>(std::min<std::uint64_t>(t.histogram.cycles, kMaxNs));
     DeadlineMisses m;
     m.count = static_cast<std::uint64_t>(integer(*it, "count", at, 0, cycles));
     m.longest_run = static_cast<std::uint64_t>(integer(*it, "longest_run", at, 0, static_cast<std::int64_t>(m.count)));
-    if (m.count > 0 && m.longest_run == 0) fail(at, "misses without a run");
+    if (m.count > 0 && m.longest_run == 0) Fields::fail(at, "misses without a run");
     t.misses = m;
   }
   t.max_response_ns = optional_integer(j, "max_response_ns", where, 0, kMaxNs);
@@ -154,29 +137,29 @@ ThreadLatency thread_from_json(const json& j, const std::string& where) {
 }
 
 Phase phase_from_json(const json& j, const std::string& where) {
-  if (!j.is_object()) fail(where, "is not an object");
+  if (!j.is_object()) Fields::fail(where, "is not an object");
   Phase p;
-  p.name = text(j, "name", where);
-  const std::string load = text(j, "load", where);
+  p.name = Fields::text(j, "name", where);
+  const std::string load = Fields::text(j, "load", where);
   const auto kind = load_kind_from_id(load);
-  if (!kind) fail(where + ".load", "unknown load '" + load + "'");
+  if (!kind) Fields::fail(where + ".load", "unknown load '" + load + "'");
   p.load = *kind;
-  p.load_detail = text(j, "load_detail", where);
+  p.load_detail = Fields::text(j, "load_detail", where);
   p.target_rate = optional_number(j, "target_rate", where, true);
   p.achieved_rate = optional_number(j, "achieved_rate", where, true);
-  p.rate_unit = text(j, "rate_unit", where);
+  p.rate_unit = Fields::text(j, "rate_unit", where);
   const std::optional<double> duration = optional_number(j, "duration_s", where, true);
-  if (!duration) fail(where + ".duration_s", "is missing");
+  if (!duration) Fields::fail(where + ".duration_s", "is missing");
   p.duration_s = *duration;
   p.mean_power_w = optional_number(j, "mean_power_w", where, true);
-  p.power_sensor = text(j, "power_sensor", where);
+  p.power_sensor = Fields::text(j, "power_sensor", where);
   p.probe_cpu_s_per_s = optional_number(j, "probe_cpu_s_per_s", where, true);
-  const json& notes = array(j, "notes", where);
+  const json& notes = Fields::array(j, "notes", where);
   for (std::size_t k = 0; k < notes.size(); ++k) {
-    if (!notes[k].is_string()) fail(where + ".notes[" + std::to_string(k) + "]", "is not a string");
+    if (!notes[k].is_string()) Fields::fail(where + ".notes[" + std::to_string(k) + "]", "is not a string");
     p.notes.push_back(notes[k].get<std::string>());
   }
-  const json& threads = array(j, "threads", where);
+  const json& threads = Fields::array(j, "threads", where);
   for (std::size_t k = 0; k < threads.size(); ++k)
     p.threads.push_back(thread_from_json(threads[k], where + ".threads[" + std::to_string(k) + "]"));
   return p;
@@ -261,30 +244,30 @@ json to_json(const HeadroomMeasurement& m, bool with_summary) {
 
 HeadroomMeasurement measurement_from_json(const json& j) {
   const std::string where = "headroom";
-  if (!j.is_object()) fail(where, "is not an object");
+  if (!j.is_object()) Fields::fail(where, "is not an object");
   HeadroomMeasurement m;
-  m.platform = text(j, "platform", where);
-  const std::string kind = text(j, "kind", where);
+  m.platform = Fields::text(j, "platform", where);
+  const std::string kind = Fields::text(j, "kind", where);
   const auto k = latency_kind_from_id(kind);
-  if (!k) fail(where + ".kind", "unknown latency kind '" + kind + "' (known: wakeup, loop, message)");
+  if (!k) Fields::fail(where + ".kind", "unknown latency kind '" + kind + "' (known: wakeup, loop, message)");
   m.kind = *k;
-  m.tool = text(j, "tool", where);
-  m.command = text(j, "command", where);
-  const json& kernel = member(j, "kernel", where);
-  if (!kernel.is_object()) fail(where + ".kernel", "is not an object");
+  m.tool = Fields::text(j, "tool", where);
+  m.command = Fields::text(j, "command", where);
+  const json& kernel = Fields::member(j, "kernel", where);
+  if (!kernel.is_object()) Fields::fail(where + ".kernel", "is not an object");
   const std::string kw = where + ".kernel";
-  m.kernel.release = text(kernel, "release", kw);
-  m.kernel.version = text(kernel, "version", kw);
-  m.kernel.preemption = text(kernel, "preemption", kw);
-  m.kernel.isolcpus = text(kernel, "isolcpus", kw);
-  m.kernel.nohz_full = text(kernel, "nohz_full", kw);
-  m.kernel.governor = text(kernel, "governor", kw);
+  m.kernel.release = Fields::text(kernel, "release", kw);
+  m.kernel.version = Fields::text(kernel, "version", kw);
+  m.kernel.preemption = Fields::text(kernel, "preemption", kw);
+  m.kernel.isolcpus = Fields::text(kernel, "isolcpus", kw);
+  m.kernel.nohz_full = Fields::text(kernel, "nohz_full", kw);
+  m.kernel.governor = Fields::text(kernel, "governor", kw);
   m.kernel.preempt_rt = optional_flag(kernel, "preempt_rt", kw);
-  const json& phases = array(j, "phases", where);
+  const json& phases = Fields::array(j, "phases", where);
   for (std::size_t i = 0; i < phases.size(); ++i)
     m.phases.push_back(phase_from_json(phases[i], where + ".phases[" + std::to_string(i) + "]"));
   if (const auto it = j.find("provenance"); it != j.end()) {
-    if (!it->is_object()) fail(where + ".provenance", "is not an object");
+    if (!it->is_object()) Fields::fail(where + ".provenance", "is not an object");
     m.provenance = provenance_from_json(*it);
   }
   return m;

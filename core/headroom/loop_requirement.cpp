@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headroom/loop_requirement.h"
 
+#include "analysis/platform/requirement_text.h"
 #include "analysis/platform/requirement_verdicts.h"
 #include "util/text.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -34,11 +34,7 @@ double number_with_unit(const std::string& term, const std::string& text,
   bad(term, "'" + text + "' needs a unit (" + names + ")");
 }
 
-std::string us_text(double us) {
-  char b[32];
-  std::snprintf(b, sizeof b, us == std::floor(us) ? "%.0f" : "%.1f", us);
-  return b;
-}
+std::string us_text(double us) { return format_number(us == std::floor(us) ? "%.0f" : "%.1f", us); }
 
 struct Candidate {
   const HeadroomMeasurement* m = nullptr;
@@ -51,16 +47,7 @@ struct Candidate {
 LoopRequirement parse_loop_requirement(const std::string& text) {
   LoopRequirement r;
   r.text = text;
-  std::vector<std::string> terms;
-  std::string cur;
-  for (char c : text + ",") {
-    if (c == ',') {
-      if (!cur.empty()) terms.push_back(cur);
-      cur.clear();
-    } else if (c != ' ') {
-      cur += c;
-    }
-  }
+  const std::vector<std::string> terms = comma_terms(text);
   const std::vector<std::pair<std::string, double>> time_units = {{"ns", 1}, {"us", 1e3}, {"ms", 1e6}};
   for (const std::string& term : terms) {
     const std::string t = lower(term);
@@ -109,10 +96,7 @@ LoopRequirement parse_loop_requirement(const std::string& text) {
 }
 
 std::string describe(const LoopRequirement& r) {
-  char rate[32];
-  std::snprintf(rate, sizeof rate, r.rate_hz >= 1000 ? "%g kHz" : "%g Hz",
-                r.rate_hz >= 1000 ? r.rate_hz / 1000 : r.rate_hz);
-  std::string s = rate;
+  std::string s = r.rate_hz >= 1000 ? format_number("%g kHz", r.rate_hz / 1000) : format_number("%g Hz", r.rate_hz);
   const auto lim = [&](const char* name, const std::optional<std::int64_t>& v) {
     if (v) s += std::string(", ") + name + " <= " + us_text(static_cast<double>(*v) / 1000) + " us";
   };
@@ -121,27 +105,13 @@ std::string describe(const LoopRequirement& r) {
   lim("p99.9", r.p999_ns);
   lim("p99.99", r.p9999_ns);
   lim("max", r.max_ns);
-  if (r.max_miss_percent) {
-    char b[48];
-    std::snprintf(b, sizeof b, ", misses <= %g %%", *r.max_miss_percent);
-    s += b;
-  }
+  if (r.max_miss_percent) s += format_number(", misses <= %g %%", *r.max_miss_percent);
   if (r.max_consecutive_misses) s += ", max consecutive misses <= " + std::to_string(*r.max_consecutive_misses);
   s += r.load.empty() ? ", in every phase" : ", beside " + r.load;
   return s;
 }
 
-std::string_view to_string(LoopStatus s) {
-  switch (s) {
-    case LoopStatus::Pass:
-      return "passes";
-    case LoopStatus::Fail:
-      return "FAILS";
-    case LoopStatus::Unknown:
-      return "unknown";
-  }
-  return "unknown";
-}
+std::string_view to_string(LoopStatus s) { return requirement_status_text(s); }
 
 std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const HeadroomMeasurement> measurements,
                                        const std::vector<std::string>& platforms) {
@@ -263,14 +233,9 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
           const double ratio = k.required > 0 ? *k.actual / k.required : INFINITY;
           if (!worst || ratio > worst_ratio) worst = &k, worst_ratio = ratio;
         }
-      char b[200];
-      std::snprintf(b, sizeof b, "%s %g %s over the limit of %g %s", worst->name.c_str(), -worst->margin,
-                    worst->unit.c_str(), worst->required, worst->unit.c_str());
-      v.reason = b;
-      if (std::isfinite(worst_ratio)) {
-        std::snprintf(b, sizeof b, " (%.2fx)", worst_ratio);
-        v.reason += b;
-      }
+      v.reason = worst->name + " " + format_number("%g", -worst->margin) + " " + worst->unit + " over the limit of " +
+                 format_number("%g", worst->required) + " " + worst->unit;
+      if (std::isfinite(worst_ratio)) v.reason += format_number(" (%.2fx)", worst_ratio);
     } else if (unknown) {
       v.reason =
           "the measurement cannot answer every term (a percentile beyond its histogram, or misses without run "

@@ -3,26 +3,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "analysis/platform/inference_table.h"
 #include "analysis/stats/units.h"
 #include "headroom/headroom_table.h"
 #include "report/table_fit.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
 
-std::string fixed(double v, const char* fmt = "%.2f") {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, v);
-  return buf;
-}
-
-std::string percent(double fraction) { return fixed(100 * fraction, "%.1f") + " %"; }
+std::string percent(double fraction) { return fixed(100 * fraction, 1) + " %"; }
 
 std::string peak_detail(const PeakRow& p) {
-  std::string s = fixed(p.peak.flops / 1e9) + " GFLOPS on " + p.device + " (" + p.backend;
+  std::string s = fixed(p.peak.flops / 1e9, 2) + " GFLOPS on " + p.device + " (" + p.backend;
   if (p.dims > 0) s += ", D = " + std::to_string(p.dims);
   s += ", " + std::to_string(p.peak.workers) + " workers)";
   if (p.fraction_of_theoretical) s += "; " + percent(*p.fraction_of_theoretical) + " of the theoretical peak";
@@ -36,8 +30,8 @@ std::string peak_detail(const PeakRow& p) {
 std::string check_text(const ConstraintCheck& k) {
   if (!k.actual) return k.name + ": no data";
   const bool at_most = is_ceiling(k);
-  return k.name + ": " + fixed(*k.actual) + " " + k.unit + " against " + (at_most ? "at most " : "at least ") +
-         fixed(k.required) + " " + k.unit + " (" + fixed(std::abs(k.margin)) + " " + k.unit +
+  return k.name + ": " + fixed(*k.actual, 2) + " " + k.unit + " against " + (at_most ? "at most " : "at least ") +
+         fixed(k.required, 2) + " " + k.unit + " (" + fixed(std::abs(k.margin), 2) + " " + k.unit +
          (k.met ? " to spare)" : " short)");
 }
 

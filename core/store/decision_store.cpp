@@ -2,13 +2,13 @@
 #include "store/decision_store.h"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "headroom/loop_requirement.h"
 #include "store/sqlite_db.h"
 #include "sustain/sustain_requirement.h"
 #include "util/host_clock.h"
+#include "util/text.h"
 
 namespace bs {
 
@@ -22,11 +22,7 @@ namespace {
 
 bool positive(const std::optional<double>& v) { return !v || (std::isfinite(*v) && *v > 0); }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
+std::string number(double v) { return format_number("%.4g", v); }
 
 // A stored value the CHECKs would refuse (a file edited by hand) is refused when read, naming its column and value:
 // never taken as another number, never dropped as if it had not been set (the recommendation would change silently).

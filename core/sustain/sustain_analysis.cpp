@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "analysis/stats/units.h"
+#include "util/text.h"
 
 namespace bs::sustain {
 namespace {
@@ -21,11 +22,7 @@ std::string celsius(double c) {
   return b;
 }
 
-std::string percent(double p) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.0f %%", p);
-  return b;
-}
+std::string percent(double p) { return format_number("%.0f %%", p); }
 
 // The clock and temperature readings of interval i, with whether each is past its limit.
 struct IntervalState {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "model/json_fields.h"
 #include "model/provenance_json.h"
 
 namespace bs::sustain {
@@ -22,24 +23,13 @@ json series(const std::vector<double>& values) {
 
 json optional_number(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
-[[noreturn]] void fail(const std::string& where, const std::string& why) { throw SustainJsonError(where + ": " + why); }
-
-const json& member(const json& obj, const char* key, const std::string& where) {
-  const auto it = obj.find(key);
-  if (it == obj.end()) fail(where, "'" + std::string(key) + "' is missing");
-  return *it;
-}
-
-std::string text(const json& obj, const char* key, const std::string& where) {
-  const json& v = member(obj, key, where);
-  if (!v.is_string()) fail(where + "." + key, "is not a string");
-  return v.get<std::string>();
-}
+using Fields = JsonFields<SustainJsonError>;
 
 double number(const json& v, const std::string& where, double lo, double hi) {
-  if (!v.is_number()) fail(where, "'" + v.dump().substr(0, 40) + "' is not a number");
+  if (!v.is_number()) Fields::fail(where, "'" + v.dump().substr(0, 40) + "' is not a number");
   const double x = v.get<double>();
-  if (!(x >= lo && x <= hi)) fail(where, v.dump() + " is outside " + json(lo).dump() + " .. " + json(hi).dump());
+  if (!(x >= lo && x <= hi))
+    Fields::fail(where, v.dump() + " is outside " + json(lo).dump() + " .. " + json(hi).dump());
   return x;
 }
 
@@ -51,9 +41,9 @@ std::optional<double> optional_number(const json& obj, const char* key, const st
 }
 
 const json& array(const json& obj, const char* key, const std::string& where, std::size_t max) {
-  const json& v = member(obj, key, where);
-  if (!v.is_array()) fail(where + "." + key, "is not an array");
-  if (v.size() > max) fail(where + "." + key, std::to_string(v.size()) + " entries, more than " + std::to_string(max));
+  const json& v = Fields::array(obj, key, where);
+  if (v.size() > max)
+    Fields::fail(where + "." + key, std::to_string(v.size()) + " entries, more than " + std::to_string(max));
   return v;
 }
 
@@ -62,7 +52,7 @@ std::vector<double> values(const json& obj, const char* key, const std::string& 
                            double hi, bool may_be_empty) {
   const json& a = array(obj, key, where, kMaxIntervals);
   if (!(a.size() == n || (may_be_empty && a.empty())))
-    fail(where + "." + key, std::to_string(a.size()) + " values for " + std::to_string(n) + " intervals");
+    Fields::fail(where + "." + key, std::to_string(a.size()) + " values for " + std::to_string(n) + " intervals");
   std::vector<double> out;
   out.reserve(a.size());
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -74,7 +64,7 @@ std::vector<std::string> texts(const json& obj, const char* key, const std::stri
   const json& a = array(obj, key, where, kMaxSeries);
   std::vector<std::string> out;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!a[i].is_string()) fail(where + "." + key + "[" + std::to_string(i) + "]", "is not a string");
+    if (!a[i].is_string()) Fields::fail(where + "." + key + "[" + std::to_string(i) + "]", "is not a string");
     out.push_back(a[i].get<std::string>());
   }
   return out;
@@ -107,30 +97,30 @@ json record_to_json(const SustainRun& r) {
 
 SustainRun record_from_json(const json& j) {
   const std::string w = "sustain";
-  if (!j.is_object()) fail(w, "is not an object");
+  if (!j.is_object()) Fields::fail(w, "is not an object");
   SustainRun r;
-  r.platform = text(j, "platform", w);
-  r.label = text(j, "label", w);
-  r.load = text(j, "load", w);
-  r.rate_unit = text(j, "rate_unit", w);
-  r.interval_s = number(member(j, "interval_s", w), w + ".interval_s", 0, kMaxSeconds);
+  r.platform = Fields::text(j, "platform", w);
+  r.label = Fields::text(j, "label", w);
+  r.load = Fields::text(j, "load", w);
+  r.rate_unit = Fields::text(j, "rate_unit", w);
+  r.interval_s = number(Fields::member(j, "interval_s", w), w + ".interval_s", 0, kMaxSeconds);
   const json& times = array(j, "t_s", w, kMaxIntervals);
   const std::size_t n = times.size();
   r.t_s.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::string at = w + ".t_s[" + std::to_string(i) + "]";
-    if (times[i].is_null()) fail(at, "is null (an interval's end must be known)");
+    if (times[i].is_null()) Fields::fail(at, "is null (an interval's end must be known)");
     r.t_s.push_back(number(times[i], at, 0, kMaxSeconds));
-    if (i > 0 && !(r.t_s[i] > r.t_s[i - 1])) fail(at, "does not increase");
+    if (i > 0 && !(r.t_s[i] > r.t_s[i - 1])) Fields::fail(at, "does not increase");
   }
   r.rate = values(j, "rate", w, n, 0, kMaxRate, true);
-  if (!r.rate.empty() && r.rate_unit.empty()) fail(w + ".rate_unit", "is empty for a record with a rate");
+  if (!r.rate.empty() && r.rate_unit.empty()) Fields::fail(w + ".rate_unit", "is empty for a record with a rate");
   const json& clocks = array(j, "clocks", w, kMaxSeries);
   for (std::size_t k = 0; k < clocks.size(); ++k) {
     const std::string at = w + ".clocks[" + std::to_string(k) + "]";
-    if (!clocks[k].is_object()) fail(at, "is not an object");
+    if (!clocks[k].is_object()) Fields::fail(at, "is not an object");
     ClockSeries c;
-    c.name = text(clocks[k], "name", at);
+    c.name = Fields::text(clocks[k], "name", at);
     c.max_hz = optional_number(clocks[k], "max_hz", at, 0, kMaxHz);
     c.hz = values(clocks[k], "hz", at, n, 0, kMaxHz, false);
     r.clocks.push_back(std::move(c));
@@ -138,18 +128,18 @@ SustainRun record_from_json(const json& j) {
   const json& temps = array(j, "temperatures", w, kMaxSeries);
   for (std::size_t k = 0; k < temps.size(); ++k) {
     const std::string at = w + ".temperatures[" + std::to_string(k) + "]";
-    if (!temps[k].is_object()) fail(at, "is not an object");
+    if (!temps[k].is_object()) Fields::fail(at, "is not an object");
     TemperatureSeries t;
-    t.name = text(temps[k], "name", at);
+    t.name = Fields::text(temps[k], "name", at);
     t.trip_c = optional_number(temps[k], "trip_c", at, -273.15, 1000);
     t.celsius = values(temps[k], "celsius", at, n, -273.15, 1000, false);
     r.temperatures.push_back(std::move(t));
   }
   r.power_w = values(j, "power_w", w, n, 0, kMaxWatts, true);
-  r.power_sensor = text(j, "power_sensor", w);
+  r.power_sensor = Fields::text(j, "power_sensor", w);
   r.not_exposed = texts(j, "not_exposed", w);
-  const json& prov = member(j, "provenance", w);
-  if (!prov.is_object()) fail(w + ".provenance", "is not an object");
+  const json& prov = Fields::member(j, "provenance", w);
+  if (!prov.is_object()) Fields::fail(w + ".provenance", "is not an object");
   r.provenance = provenance_from_json(prov);
   return r;
 }

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sustain/sustain_requirement.h"
 
+#include "analysis/platform/requirement_text.h"
 #include "analysis/platform/requirement_verdicts.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -26,12 +26,6 @@ std::pair<double, std::string> number_then(const std::string& term, const std::s
   const double v = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || !std::isfinite(v) || !(v > 0)) bad(term, "'" + text + "' is not a number > 0");
   return {v, std::string(end)};
-}
-
-std::string format(const char* fmt, double v) {
-  char b[48];
-  std::snprintf(b, sizeof b, fmt, v);
-  return b;
 }
 
 std::string join(const std::vector<std::string>& parts) {
@@ -58,10 +52,10 @@ Judged judge(const SustainRequirement& r, const SustainRun& run) {
   if (r.min_minutes) {
     const double need = *r.min_minutes;
     j.checks.push_back({"run length", "min", need, minutes, !short_run, minutes - need});
-    j.margins.push_back("run " + format("%.1f", minutes) + " min " + (short_run ? "< " : ">= ") + format("%g", need) +
-                        " min");
+    j.margins.push_back("run " + format_number("%.1f", minutes) + " min " + (short_run ? "< " : ">= ") +
+                        format_number("%g", need) + " min");
     if (short_run)
-      j.unknowns.push_back("run lasted " + format("%.1f", minutes) + " min < " + format("%g", need) +
+      j.unknowns.push_back("run lasted " + format_number("%.1f", minutes) + " min < " + format_number("%g", need) +
                            " min required: cannot say");
   }
   if (r.min_stability_percent) {
@@ -72,9 +66,9 @@ Judged judge(const SustainRequirement& r, const SustainRun& run) {
       // Worst / best over a longer run can only be lower: a short run's failure is a failure.
       const double s = *a.stability_percent, margin = s - need;
       j.checks.push_back({"stability", "% of best", need, s, margin >= 0, margin});
-      const std::string text = "stability " + format("%.1f", s) + " % " + (margin >= 0 ? ">= " : "< ") +
-                               format("%g", need) + " %, " + format("%.1f", std::abs(margin)) + " points " +
-                               (margin >= 0 ? "to spare" : "short");
+      const std::string text = "stability " + format_number("%.1f", s) + " % " + (margin >= 0 ? ">= " : "< ") +
+                               format_number("%g", need) + " %, " + format_number("%.1f", std::abs(margin)) +
+                               " points " + (margin >= 0 ? "to spare" : "short");
       j.margins.push_back(text);
       if (margin < 0) j.fails.push_back(text);
     }
@@ -89,7 +83,7 @@ Judged judge(const SustainRequirement& r, const SustainRun& run) {
       // Throttling seen stays seen however long the run goes on.
       j.checks.push_back({"throttling", "s throttled", 0, t.throttled_s, !t.detected, -t.throttled_s});
       if (t.detected) {
-        std::string text = "throttled from " + format("%.1f", t.onset_s.value_or(0)) + " s";
+        std::string text = "throttled from " + format_number("%.1f", t.onset_s.value_or(0)) + " s";
         if (!t.what.empty()) text += " (" + t.what.front() + ")";
         j.margins.push_back(text);
         j.fails.push_back(text);
@@ -106,8 +100,9 @@ Judged judge(const SustainRequirement& r, const SustainRun& run) {
       const double s = a.sustained.mean, margin = s - need;
       const std::string unit = run.rate_unit;
       j.checks.push_back({"sustained rate", unit, need, s, margin >= 0, margin});
-      const std::string text = "sustained rate " + format("%.1f", s) + " " + unit + (margin >= 0 ? " >= " : " < ") +
-                               format("%g", need) + " " + unit + ", " + format("%.1f", std::abs(margin)) + " " + unit +
+      const std::string text = "sustained rate " + format_number("%.1f", s) + " " + unit +
+                               (margin >= 0 ? " >= " : " < ") + format_number("%g", need) + " " + unit + ", " +
+                               format_number("%.1f", std::abs(margin)) + " " + unit +
                                (margin >= 0 ? " to spare" : " short");
       j.margins.push_back(text);
       if (margin < 0) j.fails.push_back(text);
@@ -122,7 +117,7 @@ Judged judge(const SustainRequirement& r, const SustainRun& run) {
 std::string record_text(const SustainRun& run) {
   std::string s = run.label.empty() ? std::string("unnamed record") : run.label;
   if (!run.provenance.date.empty()) s += ", " + run.provenance.date;
-  s += ", " + format("%.1f", minutes_of(run)) + " min";
+  s += ", " + format_number("%.1f", minutes_of(run)) + " min";
   if (run.rate_unit.empty() || run.rate.empty()) s += ", no load rate";
   return s;
 }
@@ -132,16 +127,7 @@ std::string record_text(const SustainRun& run) {
 SustainRequirement parse_sustain_requirement(const std::string& text) {
   SustainRequirement r;
   r.text = text;
-  std::vector<std::string> terms;
-  std::string cur;
-  for (char c : text + ",") {
-    if (c == ',') {
-      if (!cur.empty()) terms.push_back(cur);
-      cur.clear();
-    } else if (c != ' ') {
-      cur += c;
-    }
-  }
+  const std::vector<std::string> terms = comma_terms(text);
   if (terms.empty()) bad(text, "no term to check");
   for (const std::string& term : terms) {
     const std::string t = lower(term);
@@ -185,26 +171,16 @@ SustainRequirement parse_sustain_requirement(const std::string& text) {
 
 std::string describe(const SustainRequirement& r) {
   std::vector<std::string> parts;
-  if (r.min_stability_percent) parts.push_back("stability >= " + format("%g", *r.min_stability_percent) + " %");
-  if (r.min_minutes) parts.push_back("at least " + format("%g", *r.min_minutes) + " min");
+  if (r.min_stability_percent) parts.push_back("stability >= " + format_number("%g", *r.min_stability_percent) + " %");
+  if (r.min_minutes) parts.push_back("at least " + format_number("%g", *r.min_minutes) + " min");
   if (r.no_throttle) parts.push_back("no throttling");
-  if (r.min_sustained_rate) parts.push_back("sustained rate >= " + format("%g", *r.min_sustained_rate));
+  if (r.min_sustained_rate) parts.push_back("sustained rate >= " + format_number("%g", *r.min_sustained_rate));
   std::string out;
   for (const std::string& p : parts) out += (out.empty() ? "" : ", ") + p;
   return out;
 }
 
-std::string_view to_string(SustainStatus s) {
-  switch (s) {
-    case SustainStatus::Pass:
-      return "passes";
-    case SustainStatus::Fail:
-      return "FAILS";
-    case SustainStatus::Unknown:
-      return "unknown";
-  }
-  return "unknown";
-}
+std::string_view to_string(SustainStatus s) { return requirement_status_text(s); }
 
 std::vector<SustainVerdict> evaluate_sustain(const SustainRequirement& r, std::span<const SustainRun> runs,
                                              const std::vector<std::string>& platforms) {

@@ -12,6 +12,7 @@
 #include "analysis/power/phase_energy.h"
 #include "sensors/recorder.h"
 #include "util/host_clock.h"
+#include "util/text.h"
 
 namespace bs::sustain {
 namespace {
@@ -39,11 +40,7 @@ bool sleep_until(Clock::time_point when, const CancelToken* cancel) {
   }
 }
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
+std::string number(double v) { return format_number("%g", v); }
 
 }  // namespace
 

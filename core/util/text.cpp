@@ -23,6 +23,21 @@ std::string lower(std::string_view s) {
   return out;
 }
 
+std::vector<std::string> comma_terms(std::string_view text) {
+  std::vector<std::string> terms;
+  std::string cur;
+  for (const char c : text) {
+    if (c == ',') {
+      if (!cur.empty()) terms.push_back(cur);
+      cur.clear();
+    } else if (c != ' ') {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) terms.push_back(cur);
+  return terms;
+}
+
 std::string format_number(const char* printf_format, double v) {
   char buf[64];
   const int n = std::snprintf(buf, sizeof buf, printf_format, v);

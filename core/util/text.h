@@ -5,6 +5,7 @@
 // std::tolower/std::isspace would then treat the bytes of UTF-8 text by that locale's rules.
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace bs {
 
@@ -12,6 +13,9 @@ namespace bs {
 std::string_view trim(std::string_view s);
 // A..Z to a..z; every other byte as it is (UTF-8 stays intact).
 std::string lower(std::string_view s);
+// "1kHz, p99.9 <= 200us,,load=idle" -> {"1kHz", "p99.9<=200us", "load=idle"}: a comma-separated list of terms (a
+// requirement, a list of loads) split at its commas, every space dropped (no term needs one), empty terms skipped.
+std::vector<std::string> comma_terms(std::string_view text);
 
 // One double through a printf format ("%.2f", "%.3g", "%+.1f %%"): the one number formatter of the tables, the
 // report and the CLI (issue #52: six copies, each with its own buffer size). Any length fits.

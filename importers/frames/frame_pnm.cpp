@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "frames/frame_common.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
@@ -65,10 +66,9 @@ class HeaderParser {
   }
 
   void comment(std::string_view text) {
-    std::string lower;
-    for (char c : text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string text_lower = bs::lower(text);
     for (std::string_view key : {"pattern:", "bayer:"}) {
-      const std::size_t at = lower.find(key);
+      const std::size_t at = text_lower.find(key);
       if (at == std::string::npos) continue;
       std::string value;
       for (std::size_t i = at + key.size(); i < text.size(); ++i)

@@ -7,6 +7,7 @@
 
 #include "headroom/command_load.h"
 #include "headroom/text_lines.h"
+#include "util/text.h"
 
 namespace bs::headroom_import {
 
@@ -49,8 +50,7 @@ bool names_cyclictest(std::string_view word) {
 
 std::string policy_name(std::string_view value) {
   // handlepolicy() compares prefixes case-insensitively and falls back to SCHED_OTHER.
-  std::string v;
-  for (char c : value) v.push_back(static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c));
+  const std::string v = lower(value);
   if (v.starts_with("fifo")) return "SCHED_FIFO";
   if (v.starts_with("rr")) return "SCHED_RR";
   if (v.starts_with("batch")) return "SCHED_BATCH";

@@ -12,6 +12,7 @@
 #include "mlperf/loadgen_detail.h"
 #include "mlperf/loose_files.h"
 #include "power/ptd_log.h"
+#include "util/text.h"
 
 namespace bs {
 namespace fs = std::filesystem;
@@ -19,11 +20,7 @@ namespace {
 
 constexpr double kNs = 1e-9;
 
-std::string fmt(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string fmt(double v) { return format_number("%.6g", v); }
 
 void add(ResultSet& set, const std::string& name, const std::string& metric, const std::string& unit, double v) {
   Measurement m;
@@ -254,10 +251,9 @@ std::string network_from_name(std::string_view path) {
                                                                                     {"dlrm", "dlrm"},
                                                                                     {"gptj", "gptj"},
                                                                                     {"mobilenet", "mobilenet"}};
-  std::string lower(path);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string path_lower = bs::lower(path);
   for (const auto& [k, v] : kNames)
-    if (lower.find(k) != std::string::npos) return std::string(v);
+    if (path_lower.find(k) != std::string::npos) return std::string(v);
   return {};
 }
 

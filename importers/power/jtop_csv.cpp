@@ -2,7 +2,6 @@
 #include "power/jtop_csv.h"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -15,6 +14,7 @@
 #include "power/log_sustain.h"
 #include "power/meter_log_text.h"
 #include "power/power_line_reader.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
@@ -407,11 +407,7 @@ static int sniff_jtop_csv(std::string_view head, std::string_view) {
 }
 
 static bool jtop_csv_extension(std::string_view path) {
-  if (path.size() < 4) return false;
-  std::string ext(path.substr(path.size() - 4));
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".csv";
+  return path.size() >= 4 && lower(path.substr(path.size() - 4)) == ".csv";
 }
 
 const FileFormat kJtopCsvFileFormat{"jtop-csv",

@@ -33,13 +33,6 @@ struct Column {
 bool space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 bool letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 
-// Spaces and stray quotes off both ends (header names).
-std::string_view trim_spaces(std::string_view s) {
-  while (!s.empty() && space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && space(s.back())) s.remove_suffix(1);
-  return s;
-}
-
 // Scale of a unit for a role; empty when the unit is not one of that quantity's.
 std::optional<double> unit_scale(Role role, std::string_view unit) {
   struct U {
@@ -337,7 +330,7 @@ class PowerCsvParser {
   // number never reaches the statistics) and the warning names it; as the only row it is read, and the warning says
   // to check it. Returns whether the line is to be left out.
   bool possibly_cut_last_line(std::string_view raw, std::size_t line_no) {
-    const std::string_view text = trim_spaces(raw);
+    const std::string_view text = trim(raw);
     if (columns_.empty() || text.empty() || text.front() == '#') return false;  // a comment carries no number
     const std::string shown(raw.substr(0, std::min<std::size_t>(raw.size(), 60)));
     const std::string where = file_ + ":" + std::to_string(line_no) + ": ";
@@ -414,7 +407,7 @@ class PowerCsvParser {
 };
 
 void PowerCsvParser::header_or_comment(std::string_view raw, std::size_t line_no) {
-  std::string_view l = trim_spaces(raw);
+  std::string_view l = trim(raw);
   if (l.empty()) return;
   const bool comment = l.front() == '#';
   if (comment) l.remove_prefix(1);
@@ -438,7 +431,7 @@ void PowerCsvParser::header_or_comment(std::string_view raw, std::size_t line_no
   // A '#' line is the header only when it names a time and a current/power column (Joulescope's "#time,current,
   // voltage,power"); prose such as "# logged at 10 Hz, time in s" stays a comment.
   if (comment && !(time && signal && cells.size() >= 2)) {
-    comments_.emplace_back(trim_spaces(l));
+    comments_.emplace_back(trim(l));
     return;
   }
   if (bad < cells.size())
@@ -566,11 +559,11 @@ std::string_view PowerCsvParser::cell_text(const char* p, const char* stop, cons
            index < columns_.size() ? columns_[index].name : std::string{},
            "text after the closing quote of a quoted cell (a quote inside a quoted cell is written twice: \"\")");
     end = r;
-    return trim_spaces(scratch_);
+    return trim(scratch_);
   }
   const void* hit = std::memchr(p, sep_, static_cast<std::size_t>(stop - p));
   end = hit ? static_cast<const char*>(hit) : stop;
-  return trim_spaces(std::string_view(p, static_cast<std::size_t>(end - p)));
+  return trim(std::string_view(p, static_cast<std::size_t>(end - p)));
 }
 
 // The first other time column's first cell as the absolute start time, when the main time column has none.
@@ -691,13 +684,12 @@ double PowerCsvParser::time_cell(const char* p, const char* stop, const char*& e
 // versions): read into the provenance's settings, not taken for rows. A line is such a footer line when it starts
 // with a letter, has no separator outside quotes and has an '='.
 bool PowerCsvParser::footer_line(std::string_view raw, std::size_t line_no) {
-  std::string_view l = trim_spaces(raw);
+  std::string_view l = trim(raw);
   if (l.size() >= 2 && l.front() == '"' && l.back() == '"') l = l.substr(1, l.size() - 2);
   if (l.empty() || !letter(l.front()) || l.find(sep_) != std::string_view::npos) return false;
   const auto eq = l.find('=');
   if (eq == std::string_view::npos) return false;
-  trace_.provenance.settings.emplace_back(std::string(trim_spaces(l.substr(0, eq))),
-                                          std::string(trim_spaces(l.substr(eq + 1))));
+  trace_.provenance.settings.emplace_back(std::string(trim(l.substr(0, eq))), std::string(trim(l.substr(eq + 1))));
   if (footer_lines_++ == 0) first_footer_line_ = line_no;
   return true;
 }
@@ -726,7 +718,7 @@ void PowerCsvParser::row(std::string_view raw, std::size_t line_no) {
       t = time_cell(p, stop, end, raw, line_no, start + 1);
       if (time_mode_ == TimeMode::Number && t < 0)
         fail(ImportErrorCategory::InvalidValue, line_no, start + 1, columns_[index].name,
-             "negative time " + std::string(trim_spaces(std::string_view(p, static_cast<std::size_t>(end - p)))));
+             "negative time " + std::string(trim(std::string_view(p, static_cast<std::size_t>(end - p)))));
     } else if (index < ncols && columns_[index].role != Role::Ignore) {
       double v = 0;
       // Fast path: a plain number that ends at the separator, parsed in place (from_chars also finds the end).
@@ -760,9 +752,9 @@ void PowerCsvParser::row(std::string_view raw, std::size_t line_no) {
         end = hit ? static_cast<const char*>(hit) : stop;
         cell = std::string_view(p, static_cast<std::size_t>(end - p));
       }
-      if (index == abs_col_ && first_row_) absolute_start(trim_spaces(cell), columns_[index].utc);
+      if (index == abs_col_ && first_row_) absolute_start(trim(cell), columns_[index].utc);
       // Cells beyond the header: a trailing separator (empty cells) is harmless, anything else is not.
-      if (index >= ncols && !trim_spaces(cell).empty())
+      if (index >= ncols && !trim(cell).empty())
         fail(ImportErrorCategory::Syntax, line_no, start + 1, {},
              "row has more cells than the header's " + std::to_string(ncols) + " (header on line " +
                  std::to_string(header_line_) + ")");
@@ -943,7 +935,7 @@ static int sniff_power_csv(std::string_view head, std::string_view) {
   for (int seen = 0; seen < 64; ++seen) {
     const auto line = lines.next();
     if (!line) return 0;
-    std::string_view l = trim_spaces(*line);
+    std::string_view l = trim(*line);
     if (l.empty()) continue;
     const bool comment = l.front() == '#';
     if (comment) l.remove_prefix(1);

@@ -2,11 +2,11 @@
 #include "ros2/ros2_benchmark_json.h"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
 #include "common/json_access.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
@@ -78,11 +78,7 @@ std::string ros_distro(std::string_view path) {
   return std::string(path.substr(from, to == std::string_view::npos ? std::string_view::npos : to - from));
 }
 
-std::string fmt(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", v);
-  return b;
-}
+std::string fmt(double v) { return format_number("%.1f", v); }
 
 // "  default_config_version: 0.30.0\n" inside the CONFIG text -> "0.30.0".
 std::string config_value(const std::string& config, const std::string& key) {

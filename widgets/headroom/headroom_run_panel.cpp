@@ -8,7 +8,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
@@ -42,12 +41,7 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
       loads_(new QLineEdit(this)),
       command_(new QLineEdit(this)),
       power_(new PowerSensorBox(this)),
-      target_(new RobotTarget(this)),
-      run_(new QPushButton(tr("Run"), this)),
-      cancel_(new QPushButton(tr("Cancel"), this)),
-      progress_(new QProgressBar(this)),
-      status_(new QLabel(this)),
-      controller_(new RunHereOrRobot(target_, this)) {
+      controls_(this, tr("Run")) {
   const QSettings s;
   rate_->setRange(headroom::kMinRateHz, headroom::kMaxRateHz);
   rate_->setDecimals(0);
@@ -89,23 +83,15 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
   command_->setToolTip(
       tr("An external program run as the last load (no shell), stopped with SIGINT at the end of "
          "its phase; stress-ng's bogo ops/s is its achieved rate"));
-  target_->setToolTip(
+  controls_.target->setToolTip(
       tr("Where the loop is measured: this computer, or a robot over SSH (its own CLI runs the probe and the "
          "loads there; the result comes home with the robot's name, architecture and the command run)"));
-  run_->setToolTip(tr("Measure the loop idle, then beside each load, on the computer chosen under \"Run on\""));
-  cancel_->setEnabled(false);
-  progress_->setRange(0, 100);
-  progress_->setMaximumWidth(160);
-  progress_->hide();
-  status_->setTextFormat(Qt::PlainText);
-  status_->setWordWrap(true);
+  controls_.run->setToolTip(
+      tr("Measure the loop idle, then beside each load, on the computer chosen under \"Run on\""));
 
   auto* layout = new QGridLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  auto* where = new QHBoxLayout;
-  where->addWidget(new QLabel(tr("Run on:"), this));
-  where->addWidget(target_, 1);
-  layout->addLayout(where, 0, 0);
+  layout->addLayout(controls_.where_row(), 0, 0);
   auto* first = new QHBoxLayout;
   for (QWidget* w : std::initializer_list<QWidget*>{rate_, seconds_, threads_, computation_, realtime_, priority_})
     first->addWidget(w);
@@ -120,23 +106,18 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
   second->addWidget(new QLabel(tr("Record power:"), this));
   second->addWidget(power_);
   layout->addLayout(second, 2, 0);
-  auto* third = new QHBoxLayout;
-  third->addWidget(run_);
-  third->addWidget(cancel_);
-  third->addWidget(progress_);
-  third->addWidget(status_, 1);
-  layout->addLayout(third, 3, 0);
+  layout->addLayout(controls_.actions_row(), 3, 0);
 
-  connect(run_, &QPushButton::clicked, this, &HeadroomRunPanel::start);
-  connect(cancel_, &QPushButton::clicked, this, &HeadroomRunPanel::cancel);
-  controller_->drive(run_, cancel_, progress_, status_);
-  connect(controller_, &RunHereOrRobot::failed, this, &HeadroomRunPanel::failed);
-  connect(controller_, &RunHereOrRobot::here_finished, this, &HeadroomRunPanel::here_finished);
-  connect(controller_, &RunHereOrRobot::robot_finished, this, &HeadroomRunPanel::remote_finished);
-  connect(controller_, &RunHereOrRobot::progress, this, [this](double fraction, const QString& step) {
-    progress_->setRange(0, 100);
-    progress_->setValue(static_cast<int>(fraction * 100));
-    if (!controller_->on_robot() && !step.isEmpty()) status_->setText(tr("Measuring: phase '%1'…").arg(step));
+  RunHereOrRobot* controller = controls_.controller;
+  connect(controls_.run, &QPushButton::clicked, this, &HeadroomRunPanel::start);
+  connect(controls_.cancel, &QPushButton::clicked, this, &HeadroomRunPanel::cancel);
+  connect(controller, &RunHereOrRobot::failed, this, &HeadroomRunPanel::failed);
+  connect(controller, &RunHereOrRobot::here_finished, this, &HeadroomRunPanel::here_finished);
+  connect(controller, &RunHereOrRobot::robot_finished, this, &HeadroomRunPanel::remote_finished);
+  connect(controller, &RunHereOrRobot::progress, this, [this](double fraction, const QString& step) {
+    controls_.show_progress(fraction);
+    if (!controls_.controller->on_robot() && !step.isEmpty())
+      controls_.status->setText(tr("Measuring: phase '%1'…").arg(step));
   });
   for (QDoubleSpinBox* b : {rate_, seconds_, computation_})
     connect(b, &QDoubleSpinBox::valueChanged, this, &HeadroomRunPanel::save_settings);
@@ -149,10 +130,11 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
 }
 
 HeadroomRunPanel::~HeadroomRunPanel() {
-  delete controller_;  // cancels and waits for a run here, or drops the robot's connection, before the panel goes
+  // Cancels and waits for a run here, or drops the robot's connection, before the panel goes.
+  delete controls_.controller;
 }
 
-bool HeadroomRunPanel::running() const { return controller_->running(); }
+bool HeadroomRunPanel::running() const { return controls_.controller->running(); }
 
 void HeadroomRunPanel::save_settings() const {
   QSettings s;
@@ -194,19 +176,18 @@ void HeadroomRunPanel::start() {
   std::shared_ptr<sensors::PowerRecorder> recorder;
   try {
     config = config_from_fields(command_words);
-    if (target_->is_robot()) {
+    if (controls_.target->is_robot()) {
       start_remote(std::move(config));
       return;
     }
     recorder = power_->start_recorder();  // null when "Record power" is off
   } catch (const std::exception& e) {
-    status_->setText(QString::fromUtf8(e.what()));
-    emit failed(status_->text());
+    emit failed(controls_.say(QString::fromUtf8(e.what())));
     return;
   }
   output_ = std::make_shared<std::optional<headroom::RunOutput>>();
-  controller_->start_here([config, specs = loads_->text().toStdString(), command_words, recorder,
-                           output = output_](const CancelToken& token) {
+  controls_.controller->start_here([config, specs = loads_->text().toStdString(), command_words, recorder,
+                                    output = output_](const CancelToken& token) {
     // Loads are built here, off the GUI thread: a detector network takes a moment to build.
     std::vector<std::unique_ptr<headroom::Load>> owned = headroom::make_loads(specs);
     if (!command_words.empty()) owned.push_back(std::make_unique<headroom::CommandLoad>(command_words));
@@ -214,31 +195,31 @@ void HeadroomRunPanel::start() {
     for (auto& l : owned) loads.push_back(l.get());
     *output = headroom::run_headroom(config, loads, recorder.get(), &token);
   });
-  status_->setText(tr("Starting…"));
+  controls_.status->setText(tr("Starting…"));
 }
 
 void HeadroomRunPanel::start_remote(headroom::RunConfig config) {
-  config.platform = target_->platform().toStdString();
+  config.platform = controls_.target->platform().toStdString();
   commands::HeadroomSettings settings;
   settings.config = config;
   settings.loads = loads_->text().trimmed().toStdString();
   settings.load_command = command_->text().trimmed().toStdString();
   if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
-  controller_->start_on_robot(commands::to_words(settings));
+  controls_.controller->start_on_robot(commands::to_words(settings));
 }
 
-void HeadroomRunPanel::cancel() { controller_->cancel(); }
+void HeadroomRunPanel::cancel() { controls_.controller->cancel(); }
 
 void HeadroomRunPanel::here_finished(bool cancelled) {
   const std::shared_ptr<std::optional<headroom::RunOutput>> output = std::move(output_);
   if (cancelled || !output || !*output) return;  // the controller said so in the status line
   const headroom::HeadroomMeasurement& m = (*output)->measurement;
-  status_->setText(tr("Measured %1 phase(s) on %2%3")
-                       .arg(m.phases.size())
-                       .arg(QString::fromStdString(m.platform))
-                       .arg(m.realtime() ? QString()
-                                         : tr(" — NON-REAL-TIME (normal thread): not comparable with "
-                                              "real-time results")));
+  controls_.status->setText(tr("Measured %1 phase(s) on %2%3")
+                                .arg(m.phases.size())
+                                .arg(QString::fromStdString(m.platform))
+                                .arg(m.realtime() ? QString()
+                                                  : tr(" — NON-REAL-TIME (normal thread): not comparable with "
+                                                       "real-time results")));
   emit measured(**output);
 }
 

@@ -13,13 +13,13 @@
 #include <optional>
 
 #include "headroom/headroom_run.h"
+#include "remote/run_controls.h"
 #include "util/cancel.h"
 
 class QCheckBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
-class QProgressBar;
 class QPushButton;
 class QSpinBox;
 
@@ -28,7 +28,6 @@ namespace bs::ui {
 class PowerSensorBox;
 class RemoteRun;
 class RobotTarget;
-class RunHereOrRobot;
 
 class HeadroomRunPanel : public QWidget {
   Q_OBJECT
@@ -44,10 +43,10 @@ class HeadroomRunPanel : public QWidget {
   QLineEdit* loads() const { return loads_; }
   QLineEdit* command() const { return command_; }
   PowerSensorBox* power_box() const { return power_; }
-  RobotTarget* target() const { return target_; }
-  QPushButton* run_button() const { return run_; }
-  QPushButton* cancel_button() const { return cancel_; }
-  QLabel* status() const { return status_; }
+  RobotTarget* target() const { return controls_.target; }
+  QPushButton* run_button() const { return controls_.run; }
+  QPushButton* cancel_button() const { return controls_.cancel; }
+  QLabel* status() const { return controls_.status; }
   bool running() const;
 
  public slots:
@@ -76,12 +75,7 @@ class HeadroomRunPanel : public QWidget {
   QLineEdit* loads_;
   QLineEdit* command_;
   PowerSensorBox* power_;
-  RobotTarget* target_;
-  QPushButton* run_;
-  QPushButton* cancel_;
-  QProgressBar* progress_;
-  QLabel* status_;
-  RunHereOrRobot* controller_;  // here or on the robot: starts, relays progress, cancels, says how it ended
+  RunControls controls_;  // where, Run, Cancel, progress, status, and the controller behind them
   // What the run here produced, written on its worker thread before it returns and read after here_finished.
   std::shared_ptr<std::optional<headroom::RunOutput>> output_;
 };

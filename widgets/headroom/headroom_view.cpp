@@ -16,6 +16,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include "common/table_shape.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_table.h"
 #include "headroom_figure.h"
@@ -168,12 +169,7 @@ void HeadroomView::show_current() {
   flags_->setVisible(!parts.isEmpty());
   source_->setText(source_of(s));
   const ExportTable t = headroom::headroom_table(*m, source_of(s).toStdString());
-  table_->clear();
-  table_->setColumnCount(static_cast<int>(t.header.size()));
-  table_->setRowCount(static_cast<int>(t.rows.size()));
-  QStringList header;
-  for (const std::string& h : t.header) header << QString::fromStdString(h);
-  table_->setHorizontalHeaderLabels(header);
+  shape_table(table_, t);
   for (std::size_t r = 0; r < t.rows.size(); ++r)
     for (std::size_t c = 0; c < t.rows[r].size(); ++c) {
       auto* item = new QTableWidgetItem(QString::fromStdString(t.rows[r][c]));

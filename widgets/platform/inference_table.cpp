@@ -10,6 +10,7 @@
 
 #include "analysis/platform/inference_table.h"
 #include "common/numeric_item.h"
+#include "common/table_shape.h"
 
 namespace bs::ui {
 namespace {
@@ -54,12 +55,7 @@ void InferenceTable::set_runs(std::vector<DnnRun> runs) {
   runs_ = std::move(runs);
   const ExportTable t = inference_table(runs_);
   table_->setSortingEnabled(false);
-  table_->clear();
-  table_->setColumnCount(static_cast<int>(t.header.size()));
-  table_->setRowCount(static_cast<int>(t.rows.size()));
-  QStringList header;
-  for (const std::string& h : t.header) header << QString::fromStdString(h);
-  table_->setHorizontalHeaderLabels(header);
+  shape_table(table_, t);
   const int columns = static_cast<int>(InferenceColumn::Count);
   // The best value per numeric column (only marked when there is something to compare).
   std::vector<double> best(static_cast<std::size_t>(columns), std::numeric_limits<double>::quiet_NaN());

@@ -34,12 +34,7 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
       seconds_(new QDoubleSpinBox(this)),
       interval_(new QDoubleSpinBox(this)),
       power_(new PowerSensorBox(this)),
-      target_(new RobotTarget(this)),
-      run_(new QPushButton(tr("Run"), this)),
-      cancel_(new QPushButton(tr("Cancel"), this)),
-      progress_(new QProgressBar(this)),
-      status_(new QLabel(this)),
-      controller_(new RunHereOrRobot(target_, this)) {
+      controls_(this, tr("Run")) {
   const QSettings s;
   const commands::SustainSettings defaults;
   load_->setText(s.value(key("load"), QString::fromStdString(defaults.load)).toString());
@@ -58,24 +53,15 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
   interval_->setSuffix(tr(" s"));
   interval_->setValue(s.value(key("interval"), defaults.interval_s).toDouble());
   interval_->setToolTip(tr("How often the rate, every clock and every temperature are taken"));
-  target_->setToolTip(
+  controls_.target->setToolTip(
       tr("Where the load runs: this computer, or a robot over SSH (its own CLI runs it there; the record comes "
          "home with the robot's name, architecture and the command run)"));
-  run_->setToolTip(tr("Run the load for the time given and record its rate, clocks, temperatures and power"));
-  cancel_->setEnabled(false);
-  cancel_->setToolTip(tr("Stop: the intervals completed so far are kept"));
-  progress_->setRange(0, 100);
-  progress_->setMaximumWidth(160);
-  progress_->hide();
-  status_->setTextFormat(Qt::PlainText);
-  status_->setWordWrap(true);
+  controls_.run->setToolTip(tr("Run the load for the time given and record its rate, clocks, temperatures and power"));
+  controls_.cancel->setToolTip(tr("Stop: the intervals completed so far are kept"));
 
   auto* layout = new QGridLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  auto* where = new QHBoxLayout;
-  where->addWidget(new QLabel(tr("Run on:"), this));
-  where->addWidget(target_, 1);
-  layout->addLayout(where, 0, 0);
+  layout->addLayout(controls_.where_row(), 0, 0);
   auto* settings = new QHBoxLayout;
   auto* load_label = new QLabel(tr("Load:"), this);
   load_label->setToolTip(load_->toolTip());
@@ -86,41 +72,35 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
   settings->addWidget(new QLabel(tr("Record power:"), this));
   settings->addWidget(power_, 1);
   layout->addLayout(settings, 1, 0);
-  auto* actions = new QHBoxLayout;
-  actions->addWidget(run_);
-  actions->addWidget(cancel_);
-  actions->addWidget(progress_);
-  actions->addWidget(status_, 1);
-  layout->addLayout(actions, 2, 0);
+  layout->addLayout(controls_.actions_row(), 2, 0);
 
-  connect(run_, &QPushButton::clicked, this, &SustainRunPanel::start);
-  connect(cancel_, &QPushButton::clicked, this, &SustainRunPanel::cancel);
+  RunHereOrRobot* controller = controls_.controller;
+  connect(controls_.run, &QPushButton::clicked, this, &SustainRunPanel::start);
+  connect(controls_.cancel, &QPushButton::clicked, this, &SustainRunPanel::cancel);
   connect(load_, &QLineEdit::editingFinished, this, &SustainRunPanel::save_settings);
   for (QDoubleSpinBox* b : {seconds_, interval_})
     connect(b, &QDoubleSpinBox::valueChanged, this, &SustainRunPanel::save_settings);
-  controller_->drive(run_, cancel_, progress_, status_);
-  connect(controller_, &RunHereOrRobot::busy_changed, this, [this](bool on) {
+  connect(controller, &RunHereOrRobot::busy_changed, this, [this](bool on) {
     if (!on) emit stopped();
   });
-  connect(controller_, &RunHereOrRobot::failed, this, &SustainRunPanel::failed);
-  connect(controller_, &RunHereOrRobot::here_finished, this, &SustainRunPanel::here_finished);
-  connect(controller_, &RunHereOrRobot::robot_finished, this, &SustainRunPanel::robot_finished);
+  connect(controller, &RunHereOrRobot::failed, this, &SustainRunPanel::failed);
+  connect(controller, &RunHereOrRobot::here_finished, this, &SustainRunPanel::here_finished);
+  connect(controller, &RunHereOrRobot::robot_finished, this, &SustainRunPanel::robot_finished);
   // A robot's intervals, streamed as `sustain --json` lines, drawn as they come like a run here.
-  connect(controller_, &RunHereOrRobot::robot_started, this, [this](RemoteRun* run) {
+  connect(controller, &RunHereOrRobot::robot_started, this, [this](RemoteRun* run) {
     connect(run, &RemoteRun::sustain_interval, this, [this](const SustainRun& so_far) {
       if (so_far.t_s.empty()) return;
-      progress_->setRange(0, 100);
-      progress_->setValue(static_cast<int>(100 * so_far.t_s.back() / seconds_->value()));
+      controls_.show_progress(so_far.t_s.back() / seconds_->value());
       emit live_interval(so_far);
     });
   });
 }
 
 SustainRunPanel::~SustainRunPanel() {
-  delete controller_;  // cancels and waits for a run here before this panel, which it reports to, is gone
+  delete controls_.controller;  // cancels and waits for a run here before this panel, which it reports to, is gone
 }
 
-bool SustainRunPanel::running() const { return controller_->running(); }
+bool SustainRunPanel::running() const { return controls_.controller->running(); }
 
 void SustainRunPanel::save_settings() const {
   QSettings s;
@@ -137,10 +117,10 @@ void SustainRunPanel::start() {
   settings.interval_s = interval_->value();
   try {
     (void)headroom::canonical_load_names(settings.load);  // a wrong load is said before anything starts
-    if (controller_->on_robot()) {
-      settings.platform = target_->platform().toStdString();
+    if (controls_.controller->on_robot()) {
+      settings.platform = controls_.target->platform().toStdString();
       if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
-      controller_->start_on_robot(commands::to_words(settings));
+      controls_.controller->start_on_robot(commands::to_words(settings));
       return;
     }
     std::shared_ptr<sensors::PowerRecorder> recorder = power_->start_recorder();  // null when off
@@ -160,13 +140,13 @@ void SustainRunPanel::start() {
           self.data(),
           [self, so_far, i, seconds] {
             if (!self) return;
-            self->progress_->setValue(static_cast<int>(100 * so_far.t_s[i] / seconds));
-            self->status_->setText(QString::fromStdString(sustain::interval_line(so_far, i)));
+            self->controls_.progress->setValue(static_cast<int>(100 * so_far.t_s[i] / seconds));
+            self->controls_.status->setText(QString::fromStdString(sustain::interval_line(so_far, i)));
             emit self->live_interval(so_far);
           },
           Qt::QueuedConnection);
     };
-    controller_->start_here(
+    controls_.controller->start_here(
         [config, spec = settings.load, recorder, output = output_, on_interval](const CancelToken& token) {
           // The load is built here, off the GUI thread: a detector network takes a moment to build.
           std::vector<std::unique_ptr<headroom::Load>> loads = headroom::make_loads(spec);
@@ -174,29 +154,28 @@ void SustainRunPanel::start() {
           const sustain::SysfsSampler sampler("/");
           *output = sustain::run_sustain(config, *loads.front(), sampler, recorder.get(), &token, on_interval);
         });
-    status_->setText(tr("Starting %1…").arg(load_->text()));
+    controls_.status->setText(tr("Starting %1…").arg(load_->text()));
   } catch (const std::exception& e) {
-    status_->setText(QString::fromUtf8(e.what()));
-    emit failed(status_->text());
+    emit failed(controls_.say(QString::fromUtf8(e.what())));
   }
 }
 
-void SustainRunPanel::cancel() { controller_->cancel(); }
+void SustainRunPanel::cancel() { controls_.controller->cancel(); }
 
 void SustainRunPanel::here_finished(bool cancelled) {
   // run_sustain returns what it completed when cancelled: those intervals are kept, and said to be all there is.
   if (!output_ || !*output_ || (*output_)->run.t_s.empty()) {
-    status_->setText(cancelled ? tr("Cancelled before the first interval; nothing stored")
-                               : tr("No interval completed; nothing stored"));
+    controls_.status->setText(cancelled ? tr("Cancelled before the first interval; nothing stored")
+                                        : tr("No interval completed; nothing stored"));
     output_.reset();
     return;
   }
   const sustain::RunOutput out = std::move(**output_);
   output_.reset();
-  status_->setText(tr("%1 %2 interval(s) of %3 on %4")
-                       .arg(out.cancelled ? tr("Cancelled after") : tr("Measured"))
-                       .arg(out.run.t_s.size())
-                       .arg(QString::fromStdString(out.run.load), QString::fromStdString(out.run.platform)));
+  controls_.status->setText(tr("%1 %2 interval(s) of %3 on %4")
+                                .arg(out.cancelled ? tr("Cancelled after") : tr("Measured"))
+                                .arg(out.run.t_s.size())
+                                .arg(QString::fromStdString(out.run.load), QString::fromStdString(out.run.platform)));
   emit measured(out);
 }
 

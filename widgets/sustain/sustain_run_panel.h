@@ -12,12 +12,12 @@
 #include <optional>
 
 #include "model/sustain_run.h"
+#include "remote/run_controls.h"
 #include "sustain/sustain_runner.h"
 
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
-class QProgressBar;
 class QPushButton;
 
 namespace bs::ui {
@@ -25,7 +25,6 @@ namespace bs::ui {
 class PowerSensorBox;
 class RemoteRun;
 class RobotTarget;
-class RunHereOrRobot;
 
 class SustainRunPanel : public QWidget {
   Q_OBJECT
@@ -36,10 +35,10 @@ class SustainRunPanel : public QWidget {
   QDoubleSpinBox* seconds() const { return seconds_; }
   QDoubleSpinBox* interval() const { return interval_; }
   PowerSensorBox* power_box() const { return power_; }
-  RobotTarget* target() const { return target_; }
-  QPushButton* run_button() const { return run_; }
-  QPushButton* cancel_button() const { return cancel_; }
-  QLabel* status() const { return status_; }
+  RobotTarget* target() const { return controls_.target; }
+  QPushButton* run_button() const { return controls_.run; }
+  QPushButton* cancel_button() const { return controls_.cancel; }
+  QLabel* status() const { return controls_.status; }
   bool running() const;
 
  public slots:
@@ -61,12 +60,7 @@ class SustainRunPanel : public QWidget {
   QDoubleSpinBox* seconds_;
   QDoubleSpinBox* interval_;
   PowerSensorBox* power_;
-  RobotTarget* target_;
-  QPushButton* run_;
-  QPushButton* cancel_;
-  QProgressBar* progress_;
-  QLabel* status_;
-  RunHereOrRobot* controller_;
+  RunControls controls_;  // where, Run, Cancel, progress, status, and the controller behind them
   // What the run here produced, written on its worker thread before it returns and read after here_finished.
   std::shared_ptr<std::optional<sustain::RunOutput>> output_;
 };

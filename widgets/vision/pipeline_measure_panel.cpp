@@ -46,13 +46,8 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
       scale_(new QDoubleSpinBox(this)),
       backend_(new QComboBox(this)),
       detector_(new QComboBox(this)),
-      measure_(new QPushButton(tr("Measure"), this)),
-      cancel_(new QPushButton(tr("Cancel"), this)),
-      progress_(new QProgressBar(this)),
-      status_(new QLabel(this)),
       power_(new PowerSensorBox(this)),
-      target_(new RobotTarget(this)),
-      controller_(new RunHereOrRobot(target_, this)) {
+      controls_(this, tr("Measure")) {
   const QSettings settings;
   frames_->setRange(1, 100000);
   frames_->setValue(settings.value(kFramesKey, 20).toInt());
@@ -80,7 +75,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   backend_->setToolTip(
       tr("Where demosaicing + reprojection run; detection (HOG) always runs on the CPU. OpenCL "
          "takes the first OpenCL device (GPU preferred; PoCL gives a CPU device)."));
-  target_->setToolTip(
+  controls_.target->setToolTip(
       tr("Where the pipeline is measured: this computer, or a robot over SSH (its own CLI renders the same "
          "synthetic capture and runs the pipeline there; the run comes home with the robot's name, architecture "
          "and the command run)"));
@@ -124,21 +119,10 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
     detector_->insertItem(i, QFileInfo(file).fileName(), file);
     detector_->setCurrentIndex(i);
   });
-  cancel_->setEnabled(false);
-  progress_->setRange(0, 100);
-  progress_->setTextVisible(true);
-  progress_->setMaximumWidth(160);
-  progress_->hide();
-  status_->setTextFormat(Qt::PlainText);
-  status_->setWordWrap(true);  // a long message wraps instead of widening the window
-
   // Where it runs on the first row; what to measure and the buttons in rows that wrap where the window is narrow,
   // each label with its field; what happened on a row of its own. Two fixed rows held the panel 928 px wide, and a
   // long word in the status (a robot's job id) wider still: with the Kernel Runner's dock beside it the window
   // needed more than a 1280 px screen (issue #50.5).
-  auto* where = new QHBoxLayout;
-  where->addWidget(new QLabel(tr("Run on:"), this));
-  where->addWidget(target_, 1);
   const auto labelled = [this](const QString& text, QWidget* field) {
     auto* pair = new QWidget(this);
     auto* row = new QHBoxLayout(pair);
@@ -157,20 +141,20 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   choices->addWidget(labelled(tr("Preprocessing on:"), backend_));
   choices->addWidget(labelled(tr("Detector:"), detector_));
   choices->addWidget(labelled(tr("Record power:"), power_));
-  choices->addWidget(measure_);
-  choices->addWidget(cancel_);
-  choices->addWidget(progress_);
-  status_->setMinimumWidth(200);  // a long word wraps within the row instead of widening the window
+  choices->addWidget(controls_.run);
+  choices->addWidget(controls_.cancel);
+  choices->addWidget(controls_.progress);
+  controls_.status->setMinimumWidth(200);  // a long word wraps within the row instead of widening the window
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  layout->addLayout(where);
+  layout->addLayout(controls_.where_row());
   layout->addLayout(choices);
-  layout->addWidget(status_);
+  layout->addWidget(controls_.status);
 
-  connect(measure_, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
-  connect(cancel_, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
-  controller_->drive(measure_, cancel_, progress_, status_);
-  connect(controller_, &RunHereOrRobot::failed, this, [this](const QString& message) {
+  RunHereOrRobot* controller = controls_.controller;
+  connect(controls_.run, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
+  connect(controls_.cancel, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
+  connect(controller, &RunHereOrRobot::failed, this, [this](const QString& message) {
     if (recorder_) {  // a run here that failed: its power recording ends with it, nothing of it kept
       recorder_->end_phase();
       (void)recorder_->finish("Pipeline tab (failed)");
@@ -178,21 +162,19 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
     }
     emit failed(message);
   });
-  connect(controller_, &RunHereOrRobot::here_finished, this, &PipelineMeasurePanel::here_finished);
-  connect(controller_, &RunHereOrRobot::robot_finished, this, &PipelineMeasurePanel::remote_finished);
-  connect(controller_, &RunHereOrRobot::progress, this, [this](double fraction, const QString&) {
-    progress_->setRange(0, 100);
-    progress_->setValue(static_cast<int>(fraction * 100));
-  });
+  connect(controller, &RunHereOrRobot::here_finished, this, &PipelineMeasurePanel::here_finished);
+  connect(controller, &RunHereOrRobot::robot_finished, this, &PipelineMeasurePanel::remote_finished);
+  connect(controller, &RunHereOrRobot::progress, this,
+          [this](double fraction, const QString&) { controls_.show_progress(fraction); });
   // The robot reports "captured k of N frames" as it goes: the bar follows it.
-  connect(controller_, &RunHereOrRobot::robot_text, this, [this](const QString& line) {
+  connect(controller, &RunHereOrRobot::robot_text, this, [this](const QString& line) {
     static const QRegularExpression captured(QStringLiteral("^captured (\\d+) of (\\d+) frames$"));
     if (const auto m = captured.match(line); m.hasMatch() && m.captured(2).toInt() > 0) {
-      progress_->setRange(0, 100);
-      progress_->setValue(m.captured(1).toInt() * 100 / m.captured(2).toInt());
+      controls_.progress->setRange(0, 100);
+      controls_.progress->setValue(m.captured(1).toInt() * 100 / m.captured(2).toInt());
     }
   });
-  connect(target_, &RobotTarget::changed, this, &PipelineMeasurePanel::target_changed);
+  connect(controls_.target, &RobotTarget::changed, this, &PipelineMeasurePanel::target_changed);
   for (QSpinBox* box : {frames_, workers_})
     connect(box, &QSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
   connect(scale_, &QDoubleSpinBox::valueChanged, this, &PipelineMeasurePanel::save_settings);
@@ -201,14 +183,16 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
 }
 
 PipelineMeasurePanel::~PipelineMeasurePanel() {
-  delete controller_;  // cancels and waits for a run here, or drops the robot's connection, before the panel goes
+  // Cancels and waits for a run here, or drops the robot's connection, before the panel goes.
+  delete controls_.controller;
 }
 
-bool PipelineMeasurePanel::running() const { return controller_->running(); }
+bool PipelineMeasurePanel::running() const { return controls_.controller->running(); }
 
 void PipelineMeasurePanel::target_changed() {
-  const bool robot = target_->is_robot();
-  measure_->setText(robot ? tr("Measure on %1").arg(target_->robot_name()) : tr("Measure on this machine"));
+  const RobotTarget* target = controls_.target;
+  const bool robot = target->is_robot();
+  controls_.run->setText(robot ? tr("Measure on %1").arg(target->robot_name()) : tr("Measure on this machine"));
   auto* model = qobject_cast<QStandardItemModel*>(backend_->model());
   // A backend the chosen computer cannot run stays visible, disabled, saying why: nobody wonders where it went.
   const auto set = [model](int row, const QString& why) {
@@ -219,14 +203,14 @@ void PipelineMeasurePanel::target_changed() {
     set(1, {});  // an OpenCL device is asked for at the run (PoCL gives one everywhere)
     const std::string why = vision::cuda_preprocessing_unavailable();
     set(2, why.empty() ? QString() : tr("Not available here: %1").arg(QString::fromStdString(why)));
-  } else if (const auto& check = target_->check(); check && check->ok) {
+  } else if (const auto& check = target->check(); check && check->ok) {
     // The robot's own backends, from its check: "opencl:0", "cuda:0".
     bool opencl = false, cuda = false;
     for (const remote::RobotBackend& b : check->info.backends) {
       opencl = opencl || b.id.starts_with("opencl");
       cuda = cuda || b.id.starts_with("cuda");
     }
-    const QString name = target_->robot_name();
+    const QString name = target->robot_name();
     set(1, opencl ? QString() : tr("%1 has no OpenCL device").arg(name));
     set(2, cuda ? QString() : tr("%1 has no CUDA GPU (or its BenchScope was built without CUDA)").arg(name));
   } else {
@@ -256,7 +240,7 @@ void PipelineMeasurePanel::start() {
   options.detector = detector_->currentData().toString().toStdString();
   options.tool =
       QStringLiteral("benchscope %1 (GUI, Pipeline tab)").arg(QCoreApplication::applicationVersion()).toStdString();
-  if (target_->is_robot()) {
+  if (controls_.target->is_robot()) {
     start_remote(options);
     return;
   }
@@ -264,37 +248,35 @@ void PipelineMeasurePanel::start() {
   try {
     recorder_ = power_->start_recorder();  // null when "Record power" is off
   } catch (const std::exception& e) {
-    status_->setText(tr("Record power: %1").arg(QString::fromUtf8(e.what())));
-    emit failed(status_->text());
+    emit failed(controls_.say(tr("Record power: %1").arg(QString::fromUtf8(e.what()))));
     return;
   }
   if (recorder_) recorder_->begin_phase("pipeline");
   output_ = std::make_shared<std::optional<PipelineRun>>();
-  controller_->start_here([options, output = output_](const CancelToken& token) {
+  controls_.controller->start_here([options, output = output_](const CancelToken& token) {
     *output = vision::measure_synthetic_pipeline(options, token,
                                                  [&token](double f, std::string_view step) { token.report(f, step); });
   });
-  status_->setText(tr("Measuring %1 frames (preprocessing on %4) with %2 detection worker(s) at scale %3…")
-                       .arg(options.frames)
-                       .arg(options.detection_workers)
-                       .arg(options.detect_scale)
-                       .arg(backend_->currentText()));
+  controls_.status->setText(tr("Measuring %1 frames (preprocessing on %4) with %2 detection worker(s) at scale %3…")
+                                .arg(options.frames)
+                                .arg(options.detection_workers)
+                                .arg(options.detect_scale)
+                                .arg(backend_->currentText()));
 }
 
 void PipelineMeasurePanel::start_remote(const vision::SyntheticPipelineOptions& options) {
   std::vector<std::string> args;
   try {
     args = commands::to_words(
-        commands::robot_pipeline_settings(options, target_->platform().toStdString(), !power_->off()));
+        commands::robot_pipeline_settings(options, controls_.target->platform().toStdString(), !power_->off()));
   } catch (const std::invalid_argument& e) {
-    status_->setText(tr("%1: %2").arg(target_->robot_name(), QString::fromUtf8(e.what())));
-    emit failed(status_->text());
+    emit failed(controls_.say(tr("%1: %2").arg(controls_.target->robot_name(), QString::fromUtf8(e.what()))));
     return;
   }
-  controller_->start_on_robot(args);
+  controls_.controller->start_on_robot(args);
 }
 
-void PipelineMeasurePanel::cancel() { controller_->cancel(); }
+void PipelineMeasurePanel::cancel() { controls_.controller->cancel(); }
 
 std::optional<PowerTrace> PipelineMeasurePanel::take_power_trace() {
   auto t = std::move(trace_);
@@ -314,7 +296,7 @@ void PipelineMeasurePanel::here_finished(bool cancelled) {
   }
   if (!measured) {
     // Cancelled: the pipeline returns nothing rather than throwing (the controller says nothing then).
-    if (!cancelled) status_->setText(tr("Cancelled; nothing stored."));
+    if (!cancelled) controls_.status->setText(tr("Cancelled; nothing stored."));
     return;
   }
   const PipelineRun& run = **outcome;
@@ -338,7 +320,7 @@ void PipelineMeasurePanel::here_finished(bool cancelled) {
     }
     trace_ = std::move(trace);
   }
-  status_->setText(
+  controls_.status->setText(
       (run.throughput_fps
            ? tr("Measured %1 fps on %2.").arg(*run.throughput_fps, 0, 'f', 2).arg(QString::fromStdString(run.platform))
            : tr("Measured on %1.").arg(QString::fromStdString(run.platform))) +

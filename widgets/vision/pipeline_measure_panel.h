@@ -7,13 +7,13 @@
 
 #include "model/pipeline_run.h"
 #include "model/power_trace.h"
+#include "remote/run_controls.h"
 #include "util/cancel.h"
 #include "vision/pipeline/pipeline_measure.h"
 
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
-class QProgressBar;
 class QPushButton;
 class QSpinBox;
 template <class T>
@@ -27,7 +27,6 @@ namespace bs::ui {
 
 class PowerSensorBox;
 class RemoteRun;
-class RunHereOrRobot;
 class RobotTarget;
 
 // "Measure": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
@@ -50,10 +49,10 @@ class PipelineMeasurePanel : public QWidget {
   QComboBox* backend() const { return backend_; }
   // The detection stage: "hog", "mobilenet-ssd", "yolo-n" (architecture timing) or a model file path.
   QComboBox* detector() const { return detector_; }
-  QPushButton* measure_button() const { return measure_; }
+  QPushButton* measure_button() const { return controls_.run; }
   PowerSensorBox* power_box() const { return power_; }
-  QLabel* status() const { return status_; }
-  RobotTarget* target() const { return target_; }
+  QLabel* status() const { return controls_.status; }
+  RobotTarget* target() const { return controls_.target; }
   // The trace recorded during the last measured run (taken once).
   std::optional<PowerTrace> take_power_trace();
   bool running() const;
@@ -80,13 +79,8 @@ class PipelineMeasurePanel : public QWidget {
   QDoubleSpinBox* scale_;
   QComboBox* backend_;
   QComboBox* detector_;
-  QPushButton* measure_;
-  QPushButton* cancel_;
-  QProgressBar* progress_;
-  QLabel* status_;
   PowerSensorBox* power_;
-  RobotTarget* target_;
-  RunHereOrRobot* controller_;  // here or on the robot: starts, relays progress, cancels, says how it ended
+  RunControls controls_;  // where, Measure, Cancel, progress, status, and the controller behind them
   std::shared_ptr<sensors::PowerRecorder> recorder_;
   std::optional<PowerTrace> trace_;
   // What the run here measured, written on its worker thread before it returns and read after here_finished.

@@ -10,17 +10,12 @@
 #include "analysis/peaks/flops.h"
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
+#include "common/bench_host.h"
 #include "common/signals.h"
 #include "util/host_clock.h"
 
 namespace bs::cli {
 namespace {
-
-double process_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 std::string spread(const std::vector<double>& v, double scale, const char* unit) {
   const Summary s = summarize(v);

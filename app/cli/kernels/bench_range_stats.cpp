@@ -18,6 +18,7 @@
 #include "analysis/power/power_stats.h"
 #include "analysis/stats/stats.h"
 #include "common/args.h"
+#include "common/bench_host.h"
 
 namespace bs::cli {
 namespace {
@@ -111,8 +112,7 @@ int bench_range_stats(const std::vector<std::string>& raw, std::ostream& out) {
   }
   if (worst > 1e-9)
     throw std::runtime_error("bench range-stats: index and rescan disagree (relative " + std::to_string(worst) + ")");
-  double load = 0;
-  std::ifstream("/proc/loadavg") >> load;
+  const double load = one_minute_load();
   const Summary so = summarize(ours), sr = summarize(ref), sp = summarize(pct);
   char line[600];
   std::snprintf(

@@ -19,6 +19,7 @@
 #include "analysis/stats/stats.h"
 #include "commands/bench_kernels_grammar.h"
 #include "common/args.h"
+#include "common/bench_host.h"
 #include "common/command.h"
 #include "common/signals.h"
 #include "headroom/bench_headroom.h"
@@ -39,19 +40,6 @@ namespace bs::cli {
 int bench_power_csv(const std::vector<std::string>& args, std::ostream& out);  // in cmd_power.cpp
 
 namespace {
-
-double process_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-std::string load_average() {
-  std::ifstream f("/proc/loadavg");
-  std::string one, five;
-  f >> one >> five;
-  return one.empty() ? "unknown" : one + " (1 min), " + five + " (5 min)";
-}
 
 // Per-core peak of a backend that runs on this CPU's cores (CPU SIMD, CPU scalar, an OpenCL CPU device); 0 for
 // GPUs, where the host's CPU time says nothing about the device.
@@ -153,7 +141,7 @@ void bench_and_cache_ceilings(const kernels::CpuInfo& cpu, const kernels::Backen
   } catch (const std::runtime_error& e) {
     out << "  ceilings not cached: " << e.what() << '\n';
   }
-  out << "load average after the ceilings: " << load_average() << '\n';
+  out << "load average after the ceilings: " << load_average_text() << '\n';
 }
 
 int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
@@ -163,7 +151,7 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
   // a small part of it: 16384 workers x 4 points for the throughput variants (~50 ms at 300 GFLOPS), 2048 for the
   // latency-bound paper variants (one dependent chain per worker, ~0.2 s at 10 GFLOPS).
   const std::optional<std::int64_t> w_override = settings.workers;
-  const std::string load_before = load_average();
+  const std::string load_before = load_average_text();
   kernels::CpuInfo cpu = cpu_from_isa(settings.isa);
   const auto backends = kernels::available_backends(cpu);
   const kernels::RotationParams params{4, 40000};
@@ -270,7 +258,7 @@ int bench_kernels(const std::vector<std::string>& raw, std::ostream& out) {
     out << line;
   }
   std::snprintf(line, sizeof line, "clock measured again at the end: %.3f GHz; load average after: %s\n",
-                clock_after / 1e9, load_average().c_str());
+                clock_after / 1e9, load_average_text().c_str());
   out << line;
   if (!settings.no_ceilings) bench_and_cache_ceilings(cpu, simd, runs, w_override.value_or(16384), out);
   if (settings.power.sensor != "none") bench_power_overhead(settings, simd, cpu, runs, out);

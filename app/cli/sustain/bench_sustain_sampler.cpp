@@ -8,12 +8,12 @@
 #include <time.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <ostream>
 
 #include "analysis/stats/stats.h"
 #include "common/args.h"
 #include "sustain/sysfs_sampler.h"
+#include "util/text.h"
 
 namespace bs::cli {
 namespace {
@@ -36,12 +36,6 @@ std::size_t read_plain(const std::vector<std::string>& files) {
     ::close(fd);
   }
   return bytes;
-}
-
-std::string fixed(double v, int d) {
-  char b[48];
-  std::snprintf(b, sizeof b, "%.*f", d, v);
-  return b;
 }
 
 }  // namespace

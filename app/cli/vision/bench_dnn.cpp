@@ -22,6 +22,7 @@
 #include "analysis/stats/stats.h"
 #include "commands/bench_dnn_grammar.h"
 #include "common/args.h"
+#include "common/bench_host.h"
 #include "common/signals.h"
 #include "common/text_table.h"
 #include "kernels/backends/backend.h"
@@ -40,19 +41,6 @@ namespace bs::cli {
 namespace {
 
 using namespace bs::vision;
-
-double process_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-std::string load_average_text() {
-  std::ifstream f("/proc/loadavg");
-  std::string one, five;
-  f >> one >> five;
-  return one.empty() ? "unknown" : one + " (1 min), " + five + " (5 min)";
-}
 
 // The network to time: built in code or read from files, with what the output and the views need to know.
 struct Network {

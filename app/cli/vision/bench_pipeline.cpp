@@ -14,6 +14,7 @@
 
 #include "analysis/stats/stats.h"
 #include "common/args.h"
+#include "common/bench_host.h"
 #include "common/signals.h"
 #include "power/power_args.h"
 #include "vision/pipeline/detector.h"
@@ -30,12 +31,6 @@ using namespace bs::vision;
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-double process_cpu_s() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 // The sequential side over all rounds.
 struct Sequential {
@@ -74,16 +69,16 @@ struct Concurrent {
 std::pair<PipelineResult, double> timed_pipeline(const FrameSource& source, const Preprocessor& preprocess,
                                                  const Detector& detector, const PipelineConfig& config,
                                                  const CancelToken& cancel) {
-  const double cpu0 = process_cpu_s();
+  const double cpu0 = process_cpu_seconds();
   PipelineResult r = run_pipeline(source, preprocess, detector, config, cancel);
-  return {std::move(r), process_cpu_s() - cpu0};
+  return {std::move(r), process_cpu_seconds() - cpu0};
 }
 
 // The stages one after another on this thread: the same preprocessor and detector the pipeline calls.
 Sequential run_sequential(const cv::Mat& raw, std::size_t frames, const Preprocessor& preprocess,
                           const Detector& detector, const CancelToken& cancel) {
   Sequential s;
-  const double cpu0 = process_cpu_s();
+  const double cpu0 = process_cpu_seconds();
   const auto start = Clock::now();
   for (std::size_t i = 0; i < frames && !cancel.cancelled(); ++i) {
     auto t0 = Clock::now();
@@ -94,7 +89,7 @@ Sequential run_sequential(const cv::Mat& raw, std::size_t frames, const Preproce
     s.detect_ms.push_back(ms_since(t0));
   }
   s.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
-  s.cpu_s = process_cpu_s() - cpu0;
+  s.cpu_s = process_cpu_seconds() - cpu0;
   return s;
 }
 
@@ -206,8 +201,7 @@ int bench_pipeline(const std::vector<std::string>& arguments, std::ostream& out)
     return 1;
   }
 
-  double load = -1;
-  std::ifstream("/proc/loadavg") >> load;
+  const double load = one_minute_load();
   char line[512];
   std::snprintf(line, sizeof line,
                 "synthetic capture: %dx%d BGGR 8-bit, paper lens (195 deg equidistant) -> %dx%d 150 deg view; fused "

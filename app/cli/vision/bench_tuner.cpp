@@ -17,18 +17,13 @@
 #include "analysis/power/power.h"
 #include "analysis/stats/stats.h"
 #include "common/args.h"
+#include "common/bench_host.h"
 #include "vision/lens/lens.h"
 #include "vision/pipeline/threads.h"
 #include "vision/reproject/fast_map.h"
 
 namespace bs::cli {
 namespace {
-
-double process_cpu_ms() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
-}
 
 struct Method {
   std::string name;
@@ -74,19 +69,18 @@ int bench_tuner(const std::vector<std::string>& arguments, std::ostream& out) {
       for (int i = 0; i < kWarmUp + count; ++i) {
         View v;
         v.yaw_deg = 0.1 * (++change % 200);  // every frame is a new parameter set
-        const double c0 = process_cpu_ms();
+        const double c0 = 1e3 * process_cpu_seconds();
         const auto t0 = std::chrono::steady_clock::now();
         m.work(v);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (i >= kWarmUp) {
           m.ms.push_back(ms);
-          m.cpu_ms.push_back(process_cpu_ms() - c0);
+          m.cpu_ms.push_back(1e3 * process_cpu_seconds() - c0);
         }
       }
     }
   char line[320];
-  double load = -1;
-  std::ifstream("/proc/loadavg") >> load;
+  const double load = one_minute_load();
   std::snprintf(line, sizeof line,
                 "parameter change -> new 1280x1024 BGR frame, 150 deg rectilinear view of the paper's 195 deg lens\n"
                 "%d OpenMP threads (map build), %d in OpenCV's pool (remap); n = %d changes per method in %d blocks of "

@@ -15,6 +15,7 @@
 #include "analysis/stats/stats.h"
 #include "commands/bench_vision_grammar.h"
 #include "common/args.h"
+#include "common/bench_host.h"
 #include "power/power_args.h"
 #include "vision/bench_demosaic.h"
 #include "vision/lens/lens.h"
@@ -107,8 +108,7 @@ int bench_vision(const std::vector<std::string>& arguments, std::ostream& out) {
     }
 
   char line[512];
-  double load = -1;
-  std::ifstream("/proc/loadavg") >> load;
+  const double load = one_minute_load();
   std::snprintf(line, sizeof line,
                 "1280x1024 BGGR 8-bit -> 1280x1024 BGR, 150 deg rectilinear from a 195 deg equidistant lens\n"
                 "threads: %d in OpenCV's pool (OpenCV, our demosaic and fused path), %d OpenMP (building tables); n = "

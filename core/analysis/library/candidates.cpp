@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <tuple>
 
@@ -13,12 +12,6 @@
 
 namespace bs {
 namespace {
-
-std::string fmt(double v, const char* f = "%.3g") {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 std::string join(const std::vector<std::string>& parts, const char* sep = "; ") {
   std::string s;
@@ -256,10 +249,11 @@ void check(Candidate& c, const Constraints& k, const CandidateInputs& in) {
 
 // "0.05 W under the 10 W budget, 21 % of 601 samples above it, AC wall power".
 std::string budget_text(const ConstraintCheck& x) {
-  std::string s = fmt(std::abs(x.margin), "%.3g") + " W " + (x.margin >= 0 ? "under" : "over") + " the " +
-                  fmt(x.required, "%.3g") + " W budget";
+  std::string s = format_number("%.3g", std::abs(x.margin)) + " W " + (x.margin >= 0 ? "under" : "over") + " the " +
+                  format_number("%.3g", x.required) + " W budget";
   if (x.share_above)
-    s += ", " + fmt(*x.share_above * 100, "%.3g") + " % of " + std::to_string(x.samples) + " samples above it";
+    s +=
+        ", " + format_number("%.3g", *x.share_above * 100) + " % of " + std::to_string(x.samples) + " samples above it";
   else
     s += ", samples not known";
   return s + ", " + x.power_kind + " power";
@@ -269,10 +263,11 @@ std::string budget_text(const ConstraintCheck& x) {
 // DC pack supplies, and the cell says so.
 std::string battery_cell(const Candidate& c) {
   if (!c.battery_runtime_h) return "–";
-  return fmt(*c.battery_runtime_h, "%.3g") + (c.power_kind == "AC wall" ? " (AC wall power taken as the load)" : "");
+  return format_number("%.3g", *c.battery_runtime_h) +
+         (c.power_kind == "AC wall" ? " (AC wall power taken as the load)" : "");
 }
 
-std::string ms(std::optional<double> s) { return s ? fmt(*s * 1e3, "%.4g") : "–"; }
+std::string ms(std::optional<double> s) { return s ? format_number("%.4g", *s * 1e3) : "–"; }
 
 }  // namespace
 
@@ -474,15 +469,16 @@ ExportTable candidates_table(std::span<const CandidateClass> classes, bool with_
           platform,
           origin_label(c.origin),
           ms(c.latency_s) + (c.latency_s ? " " + c.latency_statistic : ""),
-          c.throughput_per_s ? fmt(*c.throughput_per_s, "%.4g") : "–",
-          c.power_w ? fmt(*c.power_w, "%.3g") : "–",
-          c.energy_per_inference_j ? fmt(*c.energy_per_inference_j * 1e3, "%.4g") : "–",
+          c.throughput_per_s ? format_number("%.4g", *c.throughput_per_s) : "–",
+          c.power_w ? format_number("%.3g", *c.power_w) : "–",
+          c.energy_per_inference_j ? format_number("%.4g", *c.energy_per_inference_j * 1e3) : "–",
           battery_cell(c)};
       if (with_verdicts) {
         std::vector<std::string> failed, said;
         for (const ConstraintCheck& x : c.checks) {
           if (!x.met)
-            failed.push_back(x.name + (x.actual ? " (" + fmt(x.margin, "%+.3g") + " " + x.unit + ")" : " (no data)"));
+            failed.push_back(x.name +
+                             (x.actual ? " (" + format_number("%+.3g", x.margin) + " " + x.unit + ")" : " (no data)"));
           if (x.actual && !x.power_kind.empty()) said.push_back(budget_text(x));
         }
         std::string verdict = c.meets_all ? "yes" : "no: " + join(failed, ", ");
@@ -512,9 +508,9 @@ ExportTable peak_candidates_table(std::span<const PeakClass> classes) {
         platform += " [" + std::to_string(++flag_no) + "]";
         t.notes.push_back("[" + std::to_string(flag_no) + "] " + f.code + ": " + f.reason);
       }
-      t.rows.push_back({k.precision, platform, origin_label(c.origin), c.device, fmt(c.flops / 1e9, "%.4g"),
-                        c.power_w ? fmt(*c.power_w, "%.3g") : "–",
-                        c.flops_per_watt ? fmt(*c.flops_per_watt / 1e9, "%.3g") : "–", c.kernel, c.difference,
+      t.rows.push_back({k.precision, platform, origin_label(c.origin), c.device, format_number("%.4g", c.flops / 1e9),
+                        c.power_w ? format_number("%.3g", *c.power_w) : "–",
+                        c.flops_per_watt ? format_number("%.3g", *c.flops_per_watt / 1e9) : "–", c.kernel, c.difference,
                         c.source});
     }
   return t;

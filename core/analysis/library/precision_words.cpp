@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/library/precision_words.h"
 
-#include <cctype>
 #include <regex>
 #include <set>
+
+#include "util/text.h"
 
 namespace bs {
 namespace {
@@ -11,13 +12,7 @@ namespace {
 // scripts/build-library.py's DTYPE.
 const char* const kType = "(u?int[0-9]+|fp[0-9]+|bf16|float[0-9]+)";
 
-std::string lower_trimmed(std::string_view s) {
-  std::string out;
-  for (char c : s) out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
-  const auto first = out.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return {};
-  return out.substr(first, out.find_last_not_of(" \t\r\n") - first + 1);
-}
+std::string lower_trimmed(std::string_view s) { return lower(trim(s)); }
 
 std::optional<std::string> final_type(std::string_view text) {
   const std::string t = lower_trimmed(text);

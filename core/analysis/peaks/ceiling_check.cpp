@@ -1,18 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/peaks/ceiling_check.h"
 
-#include <cstdio>
-
 #include "analysis/stats/units.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
 
-std::string percent(double f) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f %%", 100.0 * f);
-  return buf;
-}
+std::string percent(double f) { return format_number("%.1f %%", 100.0 * f); }
 
 }  // namespace
 

@@ -1,22 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/platform/inference_table.h"
 
-#include <cstdio>
 #include <limits>
 
 #include "analysis/stats/units.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
 
 const char* const kDash = "\xE2\x80\x93";  // en dash: no data
 
-std::string num(double v, const char* fmt) {
-  if (!(v == v)) return kDash;  // NaN
-  char b[64];
-  std::snprintf(b, sizeof b, fmt, v);
-  return b;
-}
+std::string num(double v, const char* fmt) { return v == v ? format_number(fmt, v) : kDash; }  // NaN: no data
 
 }  // namespace
 

@@ -1,22 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "analysis/platform/platform_table.h"
 
-#include <cstdio>
-
 #include "analysis/peaks/flag_notes.h"
 #include "analysis/stats/units.h"
+#include "util/text.h"
 
 namespace bs {
 namespace {
 
 const char* const kDash = "\xE2\x80\x93";  // en dash: no data
 
-std::string num(std::optional<double> v, const char* fmt = "%.2f") {
-  if (!v) return kDash;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, *v);
-  return buf;
-}
+std::string num(std::optional<double> v, const char* fmt = "%.2f") { return v ? format_number(fmt, *v) : kDash; }
 
 std::string ms(const std::optional<Summary>& s) {
   if (!s) return kDash;

@@ -6,6 +6,7 @@
 
 #include "headroom/loads/kernel_load.h"
 #include "headroom/loads/vision_loads.h"
+#include "util/text.h"
 
 namespace bs::headroom {
 namespace {
@@ -49,20 +50,6 @@ Parsed parse(const std::string& token) {
   return p;
 }
 
-std::vector<std::string> tokens(const std::string& specs) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : specs + ",") {
-    if (c == ',') {
-      if (!cur.empty()) out.push_back(cur);
-      cur.clear();
-    } else if (c != ' ') {
-      cur += c;
-    }
-  }
-  return out;
-}
-
 std::unique_ptr<Load> make_one(const std::string& token, const LoadOptions& options) {
   const Parsed p = parse(token);
   if (p.kind == "pipeline") {
@@ -92,7 +79,7 @@ std::unique_ptr<Load> make_one(const std::string& token, const LoadOptions& opti
 
 std::vector<std::unique_ptr<Load>> make_loads(const std::string& specs, const LoadOptions& options) {
   std::vector<std::unique_ptr<Load>> loads;
-  for (const std::string& t : tokens(specs)) {
+  for (const std::string& t : comma_terms(specs)) {
     try {
       loads.push_back(make_one(t, options));
     } catch (const std::invalid_argument& e) {
@@ -116,7 +103,7 @@ std::string canonical_load_name(const std::string& token) {
 
 std::vector<std::string> canonical_load_names(const std::string& specs) {
   std::vector<std::string> names;
-  for (const std::string& t : tokens(specs)) names.push_back(canonical_load_name(t));
+  for (const std::string& t : comma_terms(specs)) names.push_back(canonical_load_name(t));
   return names;
 }
 

@@ -35,14 +35,7 @@ void mix(float* xs, float* ys, std::int64_t steps, float c, float s) {
 #pragma GCC unroll 16
   for (int k = 0; k < K; ++k)
     __builtin_memcpy(&x[k], xs + k * kLanes, sizeof(vf)), __builtin_memcpy(&y[k], ys + k * kLanes, sizeof(vf));
-  for (std::int64_t n = 0; n < steps; ++n) {
-#pragma GCC unroll 16
-    for (int k = 0; k < K; ++k) {
-      const vf t = vmul(vs, y[k]), u = vmul(vs, x[k]);
-      x[k] = vfms(vc, x[k], t);
-      y[k] = vfma(vc, y[k], u);
-    }
-  }
+  rotate_steps(x, y, steps, vc, vs);
 #pragma GCC unroll 16
   for (int k = 0; k < K; ++k)
     __builtin_memcpy(xs + k * kLanes, &x[k], sizeof(vf)), __builtin_memcpy(ys + k * kLanes, &y[k], sizeof(vf));

@@ -27,21 +27,14 @@ constexpr int kChains = BS_SIMD_CHAINS;
 int lanes() { return kLanes; }
 int chains() { return kChains; }
 
-// `steps` rotations of the K chains at px/py, held in registers throughout: two multiplies and two fused ops per
-// chain and step, t = s*y, u = s*x, x = c*x - t, y = c*y + u, each written in place (no register copies).
+// `steps` rotations of the K chains at px/py, held in registers throughout (rotate_steps, simd_ops_impl.h): two
+// multiplies and two fused ops per chain and step.
 template <int K>
 void rotate_block(vf* px, vf* py, std::int64_t steps, vf vc, vf vs) {
   vf x[K], y[K];
 #pragma GCC unroll 16
   for (int k = 0; k < K; ++k) x[k] = px[k], y[k] = py[k];
-  for (std::int64_t n = 0; n < steps; ++n) {
-#pragma GCC unroll 16
-    for (int k = 0; k < K; ++k) {
-      const vf t = vmul(vs, y[k]), u = vmul(vs, x[k]);
-      x[k] = vfms(vc, x[k], t);
-      y[k] = vfma(vc, y[k], u);
-    }
-  }
+  rotate_steps(x, y, steps, vc, vs);
 #pragma GCC unroll 16
   for (int k = 0; k < K; ++k) px[k] = x[k], py[k] = y[k];
 }

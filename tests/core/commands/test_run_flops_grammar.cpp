@@ -66,6 +66,8 @@ class TestRunFlopsGrammar : public QObject {
     QCOMPARE(refusal({"--variant", "fast"}), QStringLiteral("--variant must be paper or throughput"));
     QCOMPARE(refusal({"bandwidth"}), QStringLiteral("expected 'run flops'"));
     QCOMPARE(refusal({"--mib", "3"}), QStringLiteral("unknown option '--mib'"));
+    // Read like every grammar's --events (commands/events_words.h): a robot's job streams jsonl, nothing else.
+    QCOMPARE(refusal({"--events", "xml"}), QStringLiteral("--events takes jsonl (got 'xml')"));
   }
 };
 

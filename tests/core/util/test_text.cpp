@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The shared text helpers (util/text.h): ASCII white space off both ends, ASCII lower case, UTF-8 left intact
-// whatever the C library's locale says; numbers through a printf format, of any length, and with fixed decimals.
+// whatever the C library's locale says; comma-separated terms; numbers through a printf format, of any length, and with
+// fixed decimals.
 #include <clocale>
 
 #include <QTest>
@@ -25,6 +26,15 @@ class TestText : public QObject {
     std::setlocale(LC_ALL, "C.UTF-8");
     QCOMPARE(bs::lower("\xc3\x84RM"), std::string("\xc3\x84rm"));
     std::setlocale(LC_ALL, "C");
+  }
+
+  void splits_comma_terms() {
+    using Terms = std::vector<std::string>;
+    QCOMPARE(bs::comma_terms("1kHz, p99.9 <= 200us,,load=idle"), (Terms{"1kHz", "p99.9<=200us", "load=idle"}));
+    QCOMPARE(bs::comma_terms("pipeline@30fps"), (Terms{"pipeline@30fps"}));  // no comma: one term
+    QCOMPARE(bs::comma_terms(" , ,"), Terms{});
+    QCOMPARE(bs::comma_terms(""), Terms{});
+    QCOMPARE(bs::comma_terms("a,b "), (Terms{"a", "b"}));  // the last term needs no comma after it
   }
 
   void formats_numbers_of_any_length() {
