@@ -12,6 +12,7 @@ namespace bs::test {
 struct PaperSample {
   std::vector<FlopsRun> runs;
   std::vector<PowerTrace> traces;
+  std::vector<PipelineRun> pipelines;  // the paper's per-stage times (pipeline-*.json)
 };
 
 inline PaperSample load_paper_sample() {
@@ -28,6 +29,7 @@ inline PaperSample load_paper_sample() {
     auto b = import_file(f.string(), CancelToken{});
     s.runs.insert(s.runs.end(), b.runs.begin(), b.runs.end());
     s.traces.insert(s.traces.end(), b.power_traces.begin(), b.power_traces.end());
+    s.pipelines.insert(s.pipelines.end(), b.pipeline_runs.begin(), b.pipeline_runs.end());
   }
   return s;
 }

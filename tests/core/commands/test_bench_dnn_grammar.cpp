@@ -6,30 +6,17 @@
 #include "commands/bench_dnn_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::BenchDnnSettings;
 
-namespace {
-
-BenchDnnSettings round_trip(const BenchDnnSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.size() < 2 || words[0] != "bench" || words[1] != "dnn")
-    throw std::logic_error("the words do not start with the command");
-  return bs::commands::bench_dnn_from_words({words.begin() + 2, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::bench_dnn_from_words(words); });
-}
-
-}  // namespace
+const bs::test::Grammar<BenchDnnSettings> grammar{{"bench", "dnn"}, bs::commands::bench_dnn_from_words};
 
 class TestBenchDnnGrammar : public QObject {
   Q_OBJECT
  private slots:
   void words_come_back() {
-    QVERIFY(round_trip(BenchDnnSettings{}) == BenchDnnSettings{});
+    QVERIFY(grammar.round_trip(BenchDnnSettings{}) == BenchDnnSettings{});
     const auto words = bs::commands::to_words(BenchDnnSettings{});
     QCOMPARE(bs::test::word_after(words, "--runs"), std::string("20"));  // spelled out: a robot's default may differ
     QVERIFY(!bs::test::has_word(words, "--input"));                      // the network's own size
@@ -45,26 +32,29 @@ class TestBenchDnnGrammar : public QObject {
     all.json = true;
     all.power.sensor = "auto";
     all.power.interval_ms = 50;
-    QVERIFY(round_trip(all) == all);
+    QVERIFY(grammar.round_trip(all) == all);
     QCOMPARE(bs::test::word_after(bs::commands::to_words(all), "--input"), std::string("320x256"));
     BenchDnnSettings model;
     model.model = "net.onnx,net.cfg";
-    QVERIFY(round_trip(model) == model);
+    QVERIFY(grammar.round_trip(model) == model);
     QCOMPARE(bs::commands::bench_dnn_from_words({"--input", "64X96"}).input_height, 96);
   }
 
   void bad_words_are_refused_by_name() {
-    QCOMPARE(refusal({"--model", "a.onnx", "--arch", "yolo-n"}), QStringLiteral("give --model or --arch, not both"));
-    QCOMPARE(refusal({"--arch", "resnet"}), QStringLiteral("--arch must be mobilenet-ssd or yolo-n (got 'resnet')"));
-    QCOMPARE(refusal({"--runs", "0"}), QStringLiteral("--runs must be a whole number from 1 to 100,000"));
-    QCOMPARE(refusal({"--batch", "1.5"}), QStringLiteral("--batch must be a whole number from 1 to 256"));
-    QCOMPARE(refusal({"--input", "16x16"}),
+    QCOMPARE(grammar.refusal({"--model", "a.onnx", "--arch", "yolo-n"}),
+             QStringLiteral("give --model or --arch, not both"));
+    QCOMPARE(grammar.refusal({"--arch", "resnet"}),
+             QStringLiteral("--arch must be mobilenet-ssd or yolo-n (got 'resnet')"));
+    QCOMPARE(grammar.refusal({"--runs", "0"}), QStringLiteral("--runs must be a whole number from 1 to 100,000"));
+    QCOMPARE(grammar.refusal({"--batch", "1.5"}), QStringLiteral("--batch must be a whole number from 1 to 256"));
+    QCOMPARE(grammar.refusal({"--input", "16x16"}),
              QStringLiteral("--input must be WxH with sides of 32 to 4096 px, e.g. 640x640 (got '16x16')"));
-    QCOMPARE(refusal({"--input", "640x640px"}),
+    QCOMPARE(grammar.refusal({"--input", "640x640px"}),
              QStringLiteral("--input must be WxH with sides of 32 to 4096 px, e.g. 640x640 (got '640x640px')"));
-    QCOMPARE(refusal({"--backend", "tpu"}), QStringLiteral("--backend must be cpu, opencl, cuda or all (got 'tpu')"));
-    QCOMPARE(refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
-    QCOMPARE(refusal({"more"}), QStringLiteral("bench dnn takes no positional arguments (got 'more')"));
+    QCOMPARE(grammar.refusal({"--backend", "tpu"}),
+             QStringLiteral("--backend must be cpu, opencl, cuda or all (got 'tpu')"));
+    QCOMPARE(grammar.refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
+    QCOMPARE(grammar.refusal({"more"}), QStringLiteral("bench dnn takes no positional arguments (got 'more')"));
   }
 };
 

@@ -6,30 +6,17 @@
 #include "commands/bench_kernels_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::BenchKernelsSettings;
 
-namespace {
-
-BenchKernelsSettings round_trip(const BenchKernelsSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.size() < 2 || words[0] != "bench" || words[1] != "kernels")
-    throw std::logic_error("the words do not start with the command");
-  return bs::commands::bench_kernels_from_words({words.begin() + 2, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::bench_kernels_from_words(words); });
-}
-
-}  // namespace
+const bs::test::Grammar<BenchKernelsSettings> grammar{{"bench", "kernels"}, bs::commands::bench_kernels_from_words};
 
 class TestBenchKernelsGrammar : public QObject {
   Q_OBJECT
  private slots:
   void words_come_back() {
-    QVERIFY(round_trip(BenchKernelsSettings{}) == BenchKernelsSettings{});
+    QVERIFY(grammar.round_trip(BenchKernelsSettings{}) == BenchKernelsSettings{});
     QCOMPARE(bs::test::word_after(bs::commands::to_words(BenchKernelsSettings{}), "--runs"), std::string("7"));
     BenchKernelsSettings all;
     all.runs = 3;
@@ -39,23 +26,23 @@ class TestBenchKernelsGrammar : public QObject {
     all.power.sensor = "auto";
     all.power.interval_ms = 20;
     all.power.sysfs_root = "/tmp/fixture";
-    QVERIFY(round_trip(all) == all);
+    QVERIFY(grammar.round_trip(all) == all);
     BenchKernelsSettings bare;
     bare.no_ceilings = true;
-    QVERIFY(round_trip(bare) == bare);
+    QVERIFY(grammar.round_trip(bare) == bare);
   }
 
   void bad_words_are_refused_by_name() {
-    QCOMPARE(refusal({"--runs", "0"}), QStringLiteral("--runs must be between 1 and 1000"));
-    QCOMPARE(refusal({"--runs", "2.5"}), QStringLiteral("--runs must be between 1 and 1000"));
-    QCOMPARE(refusal({"--workers", "2e6"}), QStringLiteral("--workers must be between 1 and 1e6"));
-    QCOMPARE(refusal({"--no-ceilings", "--ceilings-only"}),
+    QCOMPARE(grammar.refusal({"--runs", "0"}), QStringLiteral("--runs must be between 1 and 1000"));
+    QCOMPARE(grammar.refusal({"--runs", "2.5"}), QStringLiteral("--runs must be between 1 and 1000"));
+    QCOMPARE(grammar.refusal({"--workers", "2e6"}), QStringLiteral("--workers must be between 1 and 1e6"));
+    QCOMPARE(grammar.refusal({"--no-ceilings", "--ceilings-only"}),
              QStringLiteral("--no-ceilings and --ceilings-only exclude each other"));
-    QCOMPARE(refusal({"--power-interval-ms", "20"}),
+    QCOMPARE(grammar.refusal({"--power-interval-ms", "20"}),
              QStringLiteral("--power-interval-ms and --sysfs-root need --power"));
-    QCOMPARE(refusal({"--runs", "x"}), QStringLiteral("--runs expects a number, got 'x'"));
-    QCOMPARE(refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
-    QCOMPARE(refusal({"more"}), QStringLiteral("bench kernels takes no positional argument ('more')"));
+    QCOMPARE(grammar.refusal({"--runs", "x"}), QStringLiteral("--runs expects a number, got 'x'"));
+    QCOMPARE(grammar.refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
+    QCOMPARE(grammar.refusal({"more"}), QStringLiteral("bench kernels takes no positional argument ('more')"));
   }
 };
 

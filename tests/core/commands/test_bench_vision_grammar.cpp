@@ -5,44 +5,31 @@
 
 #include "commands/bench_vision_grammar.h"
 
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::BenchVisionSettings;
 
-namespace {
-
-BenchVisionSettings round_trip(const BenchVisionSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.size() < 2 || words[0] != "bench" || words[1] != "vision")
-    throw std::logic_error("the words do not start with the command");
-  return bs::commands::bench_vision_from_words({words.begin() + 2, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::bench_vision_from_words(words); });
-}
-
-}  // namespace
+const bs::test::Grammar<BenchVisionSettings> grammar{{"bench", "vision"}, bs::commands::bench_vision_from_words};
 
 class TestBenchVisionGrammar : public QObject {
   Q_OBJECT
  private slots:
   void words_come_back() {
-    QVERIFY(round_trip(BenchVisionSettings{}) == BenchVisionSettings{});
+    QVERIFY(grammar.round_trip(BenchVisionSettings{}) == BenchVisionSettings{});
     BenchVisionSettings all;
     all.frames = 50;
     all.threads = 4;
     all.power.sensor = "auto";
     all.power.interval_ms = 20;
     all.power.sysfs_root = "/tmp/fixture";
-    QVERIFY(round_trip(all) == all);
+    QVERIFY(grammar.round_trip(all) == all);
   }
 
   void bad_words_are_refused_by_name() {
-    QCOMPARE(refusal({"--frames", "0"}), QStringLiteral("--frames must be between 1 and 100000"));
-    QCOMPARE(refusal({"--threads", "2000"}), QStringLiteral("--threads must be between 1 and 1024"));
-    QCOMPARE(refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
-    QCOMPARE(refusal({"more"}), QStringLiteral("bench vision takes no positional argument ('more')"));
+    QCOMPARE(grammar.refusal({"--frames", "0"}), QStringLiteral("--frames must be between 1 and 100000"));
+    QCOMPARE(grammar.refusal({"--threads", "2000"}), QStringLiteral("--threads must be between 1 and 1024"));
+    QCOMPARE(grammar.refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
+    QCOMPARE(grammar.refusal({"more"}), QStringLiteral("bench vision takes no positional argument ('more')"));
   }
 };
 

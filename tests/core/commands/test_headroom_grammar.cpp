@@ -7,19 +7,15 @@
 #include "commands/headroom_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::HeadroomSettings;
 using bs::test::has_word;
 using bs::test::word_after;
 
-namespace {
+const bs::test::Grammar<HeadroomSettings> grammar{{"headroom"}, bs::commands::headroom_from_words};
 
-HeadroomSettings round_trip(const HeadroomSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.front() != "headroom") throw std::logic_error("the words do not start with the command");
-  return bs::commands::headroom_from_words({words.begin() + 1, words.end()});
-}
+namespace {
 
 void compare(const HeadroomSettings& a, const HeadroomSettings& b) {
   const auto& p = a.config.probe;
@@ -45,16 +41,12 @@ void compare(const HeadroomSettings& a, const HeadroomSettings& b) {
   QCOMPARE(b.json, a.json);
 }
 
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::headroom_from_words(words); });
-}
-
 }  // namespace
 
 class TestHeadroomGrammar : public QObject {
   Q_OBJECT
  private slots:
-  void defaults_come_back() { compare(HeadroomSettings{}, round_trip(HeadroomSettings{})); }
+  void defaults_come_back() { compare(HeadroomSettings{}, grammar.round_trip(HeadroomSettings{})); }
 
   void every_option_comes_back() {
     HeadroomSettings s;
@@ -76,7 +68,7 @@ class TestHeadroomGrammar : public QObject {
     s.power = {"ina3221:0", 20, "/tmp/fixture root"};
     s.workspace = "results.bsw";
     s.json = true;
-    compare(s, round_trip(s));
+    compare(s, grammar.round_trip(s));
   }
 
   void a_normal_thread_sends_no_priority() {
@@ -85,7 +77,7 @@ class TestHeadroomGrammar : public QObject {
     const auto words = bs::commands::to_words(s);
     QVERIFY(has_word(words, "--no-rt"));
     QVERIFY(!has_word(words, "--priority"));  // asked of SCHED_FIFO only
-    compare(s, round_trip(s));
+    compare(s, grammar.round_trip(s));
   }
 
   void every_setting_is_spelled_out() {
@@ -111,16 +103,18 @@ class TestHeadroomGrammar : public QObject {
   }
 
   void bad_words_are_refused_naming_the_option() {
-    QCOMPARE(refusal({"--rate", "20000"}), QStringLiteral("--rate must be from 50 to 10000 Hz"));
-    QCOMPARE(refusal({"--threads", "1.5"}), QStringLiteral("--threads must be a whole number from 1 to 64"));
-    QCOMPARE(refusal({"--seconds", "ten"}), QStringLiteral("--seconds expects a number, got 'ten'"));
-    QCOMPARE(refusal({"--cpu", "1,,2"}), QStringLiteral("--cpu takes CPU numbers separated by commas (got '1,,2')"));
-    QCOMPARE(refusal({"--no-idle"}), QStringLiteral("--no-idle needs at least one --load or --load-command"));
-    QCOMPARE(refusal({"--sysfs-root", "/x"}), QStringLiteral("--power-interval-ms and --sysfs-root need --power"));
-    QCOMPARE(refusal({"--power", "auto", "--power-interval-ms", "0"}),
+    QCOMPARE(grammar.refusal({"--rate", "20000"}), QStringLiteral("--rate must be from 50 to 10000 Hz"));
+    QCOMPARE(grammar.refusal({"--threads", "1.5"}), QStringLiteral("--threads must be a whole number from 1 to 64"));
+    QCOMPARE(grammar.refusal({"--seconds", "ten"}), QStringLiteral("--seconds expects a number, got 'ten'"));
+    QCOMPARE(grammar.refusal({"--cpu", "1,,2"}),
+             QStringLiteral("--cpu takes CPU numbers separated by commas (got '1,,2')"));
+    QCOMPARE(grammar.refusal({"--no-idle"}), QStringLiteral("--no-idle needs at least one --load or --load-command"));
+    QCOMPARE(grammar.refusal({"--sysfs-root", "/x"}),
+             QStringLiteral("--power-interval-ms and --sysfs-root need --power"));
+    QCOMPARE(grammar.refusal({"--power", "auto", "--power-interval-ms", "0"}),
              QStringLiteral("the sample interval must be 1..60000 ms"));
-    QCOMPARE(refusal({"--frames", "3"}), QStringLiteral("unknown option '--frames'"));
-    QCOMPARE(refusal({"--load"}), QStringLiteral("--load needs a value"));
+    QCOMPARE(grammar.refusal({"--frames", "3"}), QStringLiteral("unknown option '--frames'"));
+    QCOMPARE(grammar.refusal({"--load"}), QStringLiteral("--load needs a value"));
   }
 };
 

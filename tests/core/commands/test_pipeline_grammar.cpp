@@ -7,23 +7,15 @@
 #include "commands/pipeline_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::PipelineSettings;
 using bs::test::has_word;
 using bs::test::word_after;
 
+const bs::test::Grammar<PipelineSettings> grammar{{"pipeline"}, bs::commands::pipeline_from_words};
+
 namespace {
-
-PipelineSettings round_trip(const PipelineSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.front() != "pipeline") throw std::logic_error("the words do not start with the command");
-  return bs::commands::pipeline_from_words({words.begin() + 1, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::pipeline_from_words(words); });
-}
 
 PipelineSettings from_files() {
   PipelineSettings s;
@@ -40,8 +32,8 @@ class TestPipelineGrammar : public QObject {
   void defaults_come_back() {
     PipelineSettings s;
     s.synthetic = true;
-    QVERIFY(round_trip(s) == s);
-    QVERIFY(round_trip(from_files()) == from_files());
+    QVERIFY(grammar.round_trip(s) == s);
+    QVERIFY(grammar.round_trip(from_files()) == from_files());
   }
 
   void every_option_comes_back() {
@@ -62,7 +54,7 @@ class TestPipelineGrammar : public QObject {
     s.workspace = "w.bsw";
     s.json = true;
     s.power = {"auto", 50, "/fixture"};
-    QVERIFY(round_trip(s) == s);
+    QVERIFY(grammar.round_trip(s) == s);
   }
 
   void the_tab_spells_out_every_setting() {
@@ -82,7 +74,7 @@ class TestPipelineGrammar : public QObject {
     QCOMPARE(word_after(a, "--detector"), std::string("yolo-n"));
     QCOMPARE(word_after(a, "--platform"), std::string("Robot 7"));
     QCOMPARE(word_after(a, "--power"), std::string("auto"));
-    QVERIFY(round_trip(s) == s);
+    QVERIFY(grammar.round_trip(s) == s);
     const auto plain = bs::commands::to_words(bs::commands::robot_pipeline_settings({}, "", false));
     QVERIFY(!has_word(plain, "--platform") && !has_word(plain, "--power"));
   }
@@ -99,25 +91,25 @@ class TestPipelineGrammar : public QObject {
   }
 
   void bad_words_are_refused_naming_the_option() {
-    QCOMPARE(refusal({"--synthetic", "--queue", "3"}),
+    QCOMPARE(grammar.refusal({"--synthetic", "--queue", "3"}),
              QStringLiteral("--synthetic runs as the Pipeline tab does (fused demosaic, block policy, queues of 2, "
                             "BGGR, no figures): leave out --queue"));
-    QCOMPARE(refusal({"--synthetic", "--frames", "0"}),
+    QCOMPARE(grammar.refusal({"--synthetic", "--frames", "0"}),
              QStringLiteral("--frames must be a whole number from 1 to 1,000,000"));
-    QCOMPARE(refusal({"--synthetic", "--backend", "tpu"}),
+    QCOMPARE(grammar.refusal({"--synthetic", "--backend", "tpu"}),
              QStringLiteral("--backend must be cpu, opencl or cuda (got 'tpu')"));
-    QCOMPARE(refusal({"--synthetic", "--detect-scale", "1.5"}).left(45),
+    QCOMPARE(grammar.refusal({"--synthetic", "--detect-scale", "1.5"}).left(45),
              QStringLiteral("--detect-scale must be greater than 0 and at "));
-    QCOMPARE(refusal({"--synthetic", "--detect-workers", "0"}),
+    QCOMPARE(grammar.refusal({"--synthetic", "--detect-workers", "0"}),
              QStringLiteral("--detect-workers must be a whole number from 1 to 256 (got '0')"));
-    QCOMPARE(refusal({"f.png"}),
+    QCOMPARE(grammar.refusal({"f.png"}),
              QStringLiteral("--lens LENS.json is required (or --lens paper for the paper's camera)"));
-    QCOMPARE(refusal({"f.png", "--lens", "paper", "--demosaic", "ahd"}),
+    QCOMPARE(grammar.refusal({"f.png", "--lens", "paper", "--demosaic", "ahd"}),
              QStringLiteral("--demosaic must be fused, bilinear, mhc or opencv (got 'ahd')"));
-    QCOMPARE(refusal({"f.png", "--lens", "paper", "--backend", "cuda", "--demosaic", "mhc"}),
+    QCOMPARE(grammar.refusal({"f.png", "--lens", "paper", "--backend", "cuda", "--demosaic", "mhc"}),
              QStringLiteral("--backend cuda demosaics bilinearly: use --demosaic bilinear (got 'mhc')"));
-    QCOMPARE(refusal({"f.png", "--lens", "paper", "--pattern", "XYZW"}).left(10), QStringLiteral("--pattern:"));
-    QCOMPARE(refusal({"--synthetic", "--seconds", "3"}), QStringLiteral("unknown option '--seconds'"));
+    QCOMPARE(grammar.refusal({"f.png", "--lens", "paper", "--pattern", "XYZW"}).left(10), QStringLiteral("--pattern:"));
+    QCOMPARE(grammar.refusal({"--synthetic", "--seconds", "3"}), QStringLiteral("unknown option '--seconds'"));
   }
 };
 

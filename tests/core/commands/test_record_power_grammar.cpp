@@ -6,23 +6,11 @@
 #include "commands/record_power_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::RecordPowerSettings;
 
-namespace {
-
-RecordPowerSettings round_trip(const RecordPowerSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.empty() || words[0] != "record-power") throw std::logic_error("the words do not start with the command");
-  return bs::commands::record_power_from_words({words.begin() + 1, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::record_power_from_words(words); });
-}
-
-}  // namespace
+const bs::test::Grammar<RecordPowerSettings> grammar{{"record-power"}, bs::commands::record_power_from_words};
 
 class TestRecordPowerGrammar : public QObject {
   Q_OBJECT
@@ -31,7 +19,7 @@ class TestRecordPowerGrammar : public QObject {
     RecordPowerSettings timed;
     timed.out = "trace.csv";
     timed.seconds = 2.5;
-    QVERIFY(round_trip(timed) == timed);
+    QVERIFY(grammar.round_trip(timed) == timed);
     const auto words = bs::commands::to_words(timed);
     QCOMPARE(bs::test::word_after(words, "--interval-ms"), std::string("100"));  // a robot's default may differ
     QCOMPARE(bs::test::word_after(words, "--sensor"), std::string("auto"));
@@ -44,7 +32,7 @@ class TestRecordPowerGrammar : public QObject {
     all.command = {"sh", "-c", "sleep 1", "--quiet", "--"};  // the command's words, options and "--" too
     all.quiet = true;
     all.events = "jsonl";
-    QVERIFY(round_trip(all) == all);
+    QVERIFY(grammar.round_trip(all) == all);
   }
 
   void the_command_after_dashes_is_untouched() {
@@ -55,19 +43,19 @@ class TestRecordPowerGrammar : public QObject {
   }
 
   void bad_words_are_refused_by_name() {
-    QCOMPARE(refusal({"--seconds", "1"}), QStringLiteral("--out FILE.csv or --workspace W.bsw is required"));
-    QCOMPARE(refusal({"--out", "x.csv"}), QStringLiteral("give either --seconds S or -- COMMAND ARGS..."));
-    QCOMPARE(refusal({"--out", "x.csv", "--seconds", "1", "--", "sleep"}),
+    QCOMPARE(grammar.refusal({"--seconds", "1"}), QStringLiteral("--out FILE.csv or --workspace W.bsw is required"));
+    QCOMPARE(grammar.refusal({"--out", "x.csv"}), QStringLiteral("give either --seconds S or -- COMMAND ARGS..."));
+    QCOMPARE(grammar.refusal({"--out", "x.csv", "--seconds", "1", "--", "sleep"}),
              QStringLiteral("give either --seconds S or -- COMMAND ARGS..."));
-    QCOMPARE(refusal({"--out", "x.csv", "--seconds", "0"}), QStringLiteral("--seconds must be > 0"));
-    QCOMPARE(refusal({"--out", "x.csv", "--seconds", "700000"}), QStringLiteral("--seconds must be > 0"));
-    QCOMPARE(refusal({"--out", "x.csv", "--seconds", "1", "--interval-ms", "60001"}),
+    QCOMPARE(grammar.refusal({"--out", "x.csv", "--seconds", "0"}), QStringLiteral("--seconds must be > 0"));
+    QCOMPARE(grammar.refusal({"--out", "x.csv", "--seconds", "700000"}), QStringLiteral("--seconds must be > 0"));
+    QCOMPARE(grammar.refusal({"--out", "x.csv", "--seconds", "1", "--interval-ms", "60001"}),
              QStringLiteral("the sample interval must be 1..60000 ms"));
-    QCOMPARE(refusal({"--out", "x.csv", "--seconds", "1", "--events", "xml"}),
+    QCOMPARE(grammar.refusal({"--out", "x.csv", "--seconds", "1", "--events", "xml"}),
              QStringLiteral("--events takes jsonl (got 'xml')"));
-    QCOMPARE(refusal({"--out", "x.csv", "sleep"}),
+    QCOMPARE(grammar.refusal({"--out", "x.csv", "sleep"}),
              QStringLiteral("unexpected argument 'sleep' (a command goes after --)"));
-    QCOMPARE(refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
+    QCOMPARE(grammar.refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
   }
 };
 

@@ -6,30 +6,17 @@
 #include "commands/run_bandwidth_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::RunBandwidthSettings;
 
-namespace {
-
-RunBandwidthSettings round_trip(const RunBandwidthSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.size() < 2 || words[0] != "run" || words[1] != "bandwidth")
-    throw std::logic_error("the words do not start with the command");
-  return bs::commands::run_bandwidth_from_words({words.begin() + 2, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::run_bandwidth_from_words(words); });
-}
-
-}  // namespace
+const bs::test::Grammar<RunBandwidthSettings> grammar{{"run", "bandwidth"}, bs::commands::run_bandwidth_from_words};
 
 class TestRunBandwidthGrammar : public QObject {
   Q_OBJECT
  private slots:
   void words_come_back() {
-    QVERIFY(round_trip(RunBandwidthSettings{}) == RunBandwidthSettings{});
+    QVERIFY(grammar.round_trip(RunBandwidthSettings{}) == RunBandwidthSettings{});
     const auto words = bs::commands::to_words(RunBandwidthSettings{});
     QCOMPARE(bs::test::word_after(words, "--mib"), std::string("128"));  // spelled out: a robot's default may differ
     QCOMPARE(bs::test::word_after(words, "--repeats"), std::string("10"));
@@ -40,15 +27,17 @@ class TestRunBandwidthGrammar : public QObject {
     all.repeats = 3;
     all.workspace = "lab.bsw";
     all.json = all.quiet = true;
-    QVERIFY(round_trip(all) == all);
+    QVERIFY(grammar.round_trip(all) == all);
   }
 
   void bad_words_are_refused_by_name() {
-    QCOMPARE(refusal({"--mib", "0"}), QStringLiteral("--mib must be a whole number of MiB per array, 1 to 16384"));
-    QCOMPARE(refusal({"--mib", "1.5"}), QStringLiteral("--mib must be a whole number of MiB per array, 1 to 16384"));
-    QCOMPARE(refusal({"--repeats", "1001"}), QStringLiteral("--repeats must be between 1 and 1000"));
-    QCOMPARE(refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
-    QCOMPARE(refusal({"extra"}), QStringLiteral("run bandwidth takes no positional argument ('extra')"));
+    QCOMPARE(grammar.refusal({"--mib", "0"}),
+             QStringLiteral("--mib must be a whole number of MiB per array, 1 to 16384"));
+    QCOMPARE(grammar.refusal({"--mib", "1.5"}),
+             QStringLiteral("--mib must be a whole number of MiB per array, 1 to 16384"));
+    QCOMPARE(grammar.refusal({"--repeats", "1001"}), QStringLiteral("--repeats must be between 1 and 1000"));
+    QCOMPARE(grammar.refusal({"--bogus"}), QStringLiteral("unknown option '--bogus'"));
+    QCOMPARE(grammar.refusal({"extra"}), QStringLiteral("run bandwidth takes no positional argument ('extra')"));
   }
 };
 

@@ -6,29 +6,17 @@
 #include "commands/run_flops_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::RunFlopsSettings;
 using bs::test::word_after;
 
-namespace {
-
-RunFlopsSettings round_trip(const RunFlopsSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.at(0) != "run" || words.at(1) != "flops") throw std::logic_error("the words do not name the command");
-  return bs::commands::run_flops_from_words({words.begin() + 2, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::run_flops_from_words(words); });
-}
-
-}  // namespace
+const bs::test::Grammar<RunFlopsSettings> grammar{{"run", "flops"}, bs::commands::run_flops_from_words};
 
 class TestRunFlopsGrammar : public QObject {
   Q_OBJECT
  private slots:
-  void defaults_come_back() { QVERIFY(round_trip(RunFlopsSettings{}) == RunFlopsSettings{}); }
+  void defaults_come_back() { QVERIFY(grammar.round_trip(RunFlopsSettings{}) == RunFlopsSettings{}); }
 
   void every_option_comes_back() {
     RunFlopsSettings s;
@@ -47,7 +35,7 @@ class TestRunFlopsGrammar : public QObject {
     s.json = true;
     s.quiet = true;
     s.power = {"auto", 10, "/fixture"};
-    QVERIFY(round_trip(s) == s);
+    QVERIFY(grammar.round_trip(s) == s);
   }
 
   void the_sweep_is_spelled_out() {
@@ -59,15 +47,15 @@ class TestRunFlopsGrammar : public QObject {
   }
 
   void bad_words_are_refused_naming_the_option() {
-    QVERIFY(refusal({"--workers", "4:1"}).startsWith(QStringLiteral("--workers/--points: ")));
-    QVERIFY(refusal({"--points", "0"}).startsWith(QStringLiteral("--workers/--points: ")));
-    QCOMPARE(refusal({"--iterations", "0.5"}), QStringLiteral("--iterations must be a whole number >= 1"));
-    QCOMPARE(refusal({"--repeats", "1001"}), QStringLiteral("--repeats must be between 1 and 1000"));
-    QCOMPARE(refusal({"--variant", "fast"}), QStringLiteral("--variant must be paper or throughput"));
-    QCOMPARE(refusal({"bandwidth"}), QStringLiteral("expected 'run flops'"));
-    QCOMPARE(refusal({"--mib", "3"}), QStringLiteral("unknown option '--mib'"));
+    QVERIFY(grammar.refusal({"--workers", "4:1"}).startsWith(QStringLiteral("--workers/--points: ")));
+    QVERIFY(grammar.refusal({"--points", "0"}).startsWith(QStringLiteral("--workers/--points: ")));
+    QCOMPARE(grammar.refusal({"--iterations", "0.5"}), QStringLiteral("--iterations must be a whole number >= 1"));
+    QCOMPARE(grammar.refusal({"--repeats", "1001"}), QStringLiteral("--repeats must be between 1 and 1000"));
+    QCOMPARE(grammar.refusal({"--variant", "fast"}), QStringLiteral("--variant must be paper or throughput"));
+    QCOMPARE(grammar.refusal({"bandwidth"}), QStringLiteral("expected 'run flops'"));
+    QCOMPARE(grammar.refusal({"--mib", "3"}), QStringLiteral("unknown option '--mib'"));
     // Read like every grammar's --events (commands/events_words.h): a robot's job streams jsonl, nothing else.
-    QCOMPARE(refusal({"--events", "xml"}), QStringLiteral("--events takes jsonl (got 'xml')"));
+    QCOMPARE(grammar.refusal({"--events", "xml"}), QStringLiteral("--events takes jsonl (got 'xml')"));
   }
 };
 

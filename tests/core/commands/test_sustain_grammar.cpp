@@ -10,31 +10,19 @@
 #include "commands/sustain_grammar.h"
 
 #include "../../support/command_words.h"
-#include "../../support/refusal.h"
+#include "../../support/grammar_under_test.h"
 
 using bs::commands::SustainSettings;
 using bs::test::has_word;
 using bs::test::word_after;
 
-namespace {
-
-SustainSettings round_trip(const SustainSettings& s) {
-  const std::vector<std::string> words = bs::commands::to_words(s);
-  if (words.front() != "sustain") throw std::logic_error("the words do not start with the command");
-  return bs::commands::sustain_from_words({words.begin() + 1, words.end()});
-}
-
-QString refusal(const std::vector<std::string>& words) {
-  return bs::test::refusal([&] { bs::commands::sustain_from_words(words); });
-}
-
-}  // namespace
+const bs::test::Grammar<SustainSettings> grammar{{"sustain"}, bs::commands::sustain_from_words};
 
 class TestSustainGrammar : public QObject {
   Q_OBJECT
  private slots:
   void defaults_come_back() {
-    QVERIFY(round_trip(SustainSettings{}) == SustainSettings{});
+    QVERIFY(grammar.round_trip(SustainSettings{}) == SustainSettings{});
     const auto words = bs::commands::to_words(SustainSettings{});
     // Spelled out for a robot whose defaults may differ.
     QCOMPARE(word_after(words, "--seconds"), std::string("600"));
@@ -57,7 +45,7 @@ class TestSustainGrammar : public QObject {
     s.power = {"ina3221:0", 20, "/tmp/fixture root"};
     s.workspace = "results.bsw";
     s.json = true;
-    QVERIFY(round_trip(s) == s);
+    QVERIFY(grammar.round_trip(s) == s);
     // The root is written once, for the sampler and the sensors alike.
     const auto words = bs::commands::to_words(s);
     QCOMPARE(std::count(words.begin(), words.end(), std::string("--sysfs-root")), 1L);
@@ -67,21 +55,21 @@ class TestSustainGrammar : public QObject {
     const SustainSettings s = bs::commands::sustain_from_words({"--sysfs-root", "/tmp/x"});
     QCOMPARE(s.sysfs_root, std::optional<std::string>("/tmp/x"));
     QCOMPARE(s.power.sensor, std::string("none"));
-    QVERIFY(round_trip(s) == s);
+    QVERIFY(grammar.round_trip(s) == s);
   }
 
   void bad_words_are_refused_naming_the_option() {
-    QVERIFY(refusal({"--load", "gpu"}).contains("--load must be flops"));
-    QVERIFY(refusal({"--load", "flops,dnn"}).contains("--load takes one load"));
-    QVERIFY(refusal({"--seconds", "0"}).contains("--seconds must be from 0.1"));
-    QVERIFY(refusal({"--seconds", "ten"}).contains("--seconds"));
-    QVERIFY(refusal({"--interval", "0.001"}).contains("--interval must be from 0.05"));
-    QVERIFY(refusal({"--seconds", "10", "--interval", "20"}).contains("--interval must not be longer"));
-    QVERIFY(refusal({"--stable-percent", "101"}).contains("--stable-percent must be from 1 to 100"));
-    QVERIFY(refusal({"--throttle-threshold", "80"}).contains("--throttle-threshold must be from 0.01 to 1"));
-    QVERIFY(refusal({"--power-interval-ms", "50"}).contains("need --power"));
-    QVERIFY(refusal({"extra"}).contains("no positional argument"));
-    QVERIFY(refusal({"--bogus"}).contains("unknown option '--bogus'"));
+    QVERIFY(grammar.refusal({"--load", "gpu"}).contains("--load must be flops"));
+    QVERIFY(grammar.refusal({"--load", "flops,dnn"}).contains("--load takes one load"));
+    QVERIFY(grammar.refusal({"--seconds", "0"}).contains("--seconds must be from 0.1"));
+    QVERIFY(grammar.refusal({"--seconds", "ten"}).contains("--seconds"));
+    QVERIFY(grammar.refusal({"--interval", "0.001"}).contains("--interval must be from 0.05"));
+    QVERIFY(grammar.refusal({"--seconds", "10", "--interval", "20"}).contains("--interval must not be longer"));
+    QVERIFY(grammar.refusal({"--stable-percent", "101"}).contains("--stable-percent must be from 1 to 100"));
+    QVERIFY(grammar.refusal({"--throttle-threshold", "80"}).contains("--throttle-threshold must be from 0.01 to 1"));
+    QVERIFY(grammar.refusal({"--power-interval-ms", "50"}).contains("need --power"));
+    QVERIFY(grammar.refusal({"extra"}).contains("no positional argument"));
+    QVERIFY(grammar.refusal({"--bogus"}).contains("unknown option '--bogus'"));
   }
 
   void remote_checks_the_words_through_it() {

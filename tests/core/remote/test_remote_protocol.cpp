@@ -15,6 +15,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "../../support/run_on.h"
 #include "remote/base64.h"
 #include "remote/events.h"
 #include "remote/job_agent.h"
@@ -94,11 +95,7 @@ class TestRemoteProtocol : public QObject {
   }
 
   void points_build_the_live_runs() {
-    bs::FlopsRun run;
-    run.platform = "robot";
-    run.device = "cpu";
-    run.device_kind = bs::DeviceKind::Cpu;
-    run.backend = "CPU scalar";
+    auto run = bs::test::run_on<bs::FlopsRun>("robot", "cpu", bs::DeviceKind::Cpu, "CPU scalar");
     run.variant = "throughput";
     run.iterations = 1000;
     run.dims = 2;

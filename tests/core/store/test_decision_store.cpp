@@ -12,6 +12,7 @@
 #include "store/workspace.h"
 #include "workspace_test_support.h"
 
+using bs::test::old_workspace;
 using bs::test::RawDb;
 
 namespace {
@@ -328,12 +329,9 @@ class TestDecisionStore : public QObject {
   void a_version_8_file_gains_both_versions_tables() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("v8.bsw").toStdString();
-    { bs::Workspace ws(path); }
-    {
-      RawDb old(path, false);
-      QVERIFY(old.exec(
-          "DROP TABLE chosen_logs; DROP TABLE decision; DROP TABLE headroom_measurements; PRAGMA user_version = 8;"));
-    }
+    QVERIFY(old_workspace(
+        path,
+        "DROP TABLE chosen_logs; DROP TABLE decision; DROP TABLE headroom_measurements; PRAGMA user_version = 8;"));
     bs::Workspace ws(path);
     QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);
     QCOMPARE(RawDb(path).scalar("PRAGMA user_version"), std::to_string(bs::Workspace::kSchemaVersion));

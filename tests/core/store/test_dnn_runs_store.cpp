@@ -4,6 +4,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../../support/run_on.h"
 #include "store/workspace.h"
 #include "workspace_test_support.h"
 
@@ -12,10 +13,7 @@ using namespace bs::test;
 namespace {
 
 bs::DnnRun architecture_run() {
-  bs::DnnRun r;
-  r.platform = "robot";
-  r.device = "CPU (2 OpenCV threads)";
-  r.backend = "cpu";
+  auto r = bs::test::run_on<bs::DnnRun>("robot", "CPU (2 OpenCV threads)", "cpu");
   r.model = "mobilenet-ssd";
   r.model_hash = "builtin:mobilenet-ssd:seed1";
   r.family = "SSD";
@@ -96,11 +94,7 @@ class TestDnnRunsStore : public QObject {
   void version_5_workspace_gains_the_table() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("v5.bsw").toStdString();
-    { bs::Workspace ws(path); }
-    {
-      RawDb old(path, false);
-      QVERIFY(old.exec("DROP TABLE dnn_runs; PRAGMA user_version = 5;"));
-    }
+    QVERIFY(old_workspace(path, "DROP TABLE dnn_runs; PRAGMA user_version = 5;"));
     bs::Workspace ws(path);
     QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);
     bs::ImportBatch batch;

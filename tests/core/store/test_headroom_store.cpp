@@ -139,11 +139,7 @@ class TestHeadroomStore : public QObject {
   void version_8_workspace_gains_the_table() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("v8.bsw").toStdString();
-    { bs::Workspace ws(path); }
-    {
-      RawDb old(path, false);
-      QVERIFY(old.exec("DROP TABLE headroom_measurements; PRAGMA user_version = 8;"));
-    }
+    QVERIFY(old_workspace(path, "DROP TABLE headroom_measurements; PRAGMA user_version = 8;"));
     bs::Workspace ws(path);
     QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);  // through 9 to the current version
     ws.add_import(batch_of(sample_measurement()), "h");

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "../../support/headroom_samples.h"
+#include "../../support/run_on.h"
 #include "headroom/headroom_json.h"
 #include "store/import_snapshot.h"
 #include "workspace_test_support.h"
@@ -77,10 +78,7 @@ class TestImportSnapshot : public QObject {
     ImportBatch batch;
     batch.source_path = "robot job";
     batch.format = "benchscope-headroom-v1";
-    DnnRun dnn;
-    dnn.platform = "robot";
-    dnn.device = "CPU";
-    dnn.backend = "cpu";
+    auto dnn = bs::test::run_on<bs::DnnRun>("robot", "CPU", "cpu");
     dnn.model = "mobilenet-ssd";
     dnn.input_width = dnn.input_height = 300;
     dnn.batch = 1;

@@ -4,6 +4,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../../support/run_on.h"
 #include "store/workspace.h"
 #include "workspace_test_support.h"
 
@@ -12,10 +13,7 @@ using namespace bs::test;
 namespace {
 
 bs::PipelineRun measured_run() {
-  bs::PipelineRun r;
-  r.platform = "robot";
-  r.device = "CPU (2 threads)";
-  r.backend = "cpu";
+  auto r = bs::test::run_on<bs::PipelineRun>("robot", "CPU (2 threads)", "cpu");
   r.demosaic = "mhc";
   r.detector = "hog";
   r.frame_width = 1280;
@@ -32,10 +30,7 @@ bs::PipelineRun measured_run() {
 }
 
 bs::PipelineRun reconstructed_run() {
-  bs::PipelineRun r;
-  r.platform = "Jetson TX2";
-  r.device = "Jetson GPU";
-  r.backend = "cuda";
+  auto r = bs::test::run_on<bs::PipelineRun>("Jetson TX2", "Jetson GPU", "cuda");
   r.stages = {{"preprocess", 500, 0.00648, 0.00243, {}, {}, {}, {}}, {"detect", 500, 0.57, 1.10, {}, {}, {}, {}}};
   r.provenance.origin = bs::DataOrigin::Reconstructed;
   r.provenance.note = "reconstructed from the paper's reported figures";
@@ -124,12 +119,8 @@ class TestPipelineRunsStore : public QObject {
   void version_2_workspace_gains_pipeline_tables() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("v2.bsw").toStdString();
-    { bs::Workspace ws(path); }
-    {
-      // What a version-2 BenchScope left: no pipeline tables, user_version 2.
-      RawDb old(path, false);
-      QVERIFY(old.exec("DROP TABLE pipeline_stages; DROP TABLE pipeline_runs; PRAGMA user_version = 2;"));
-    }
+    // What a version-2 BenchScope left: no pipeline tables, user_version 2.
+    QVERIFY(old_workspace(path, "DROP TABLE pipeline_stages; DROP TABLE pipeline_runs; PRAGMA user_version = 2;"));
     bs::Workspace ws(path);
     QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);
     QCOMPARE(RawDb(path).scalar("PRAGMA user_version"), std::to_string(bs::Workspace::kSchemaVersion));

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "../../support/sustained_flops.h"
 #include "store/workspace.h"
 #include "sustain/sustain_json.h"
 #include "workspace_test_support.h"
@@ -18,12 +19,7 @@ using namespace bs;
 namespace {
 
 SustainRun sample_run() {
-  SustainRun r;
-  r.platform = "robot";
-  r.label = "flops for 3 s";
-  r.load = "flops";
-  r.rate_unit = "GFLOPS";
-  r.interval_s = 1;
+  auto r = bs::test::sustained_flops_run("robot", "flops for 3 s");
   r.t_s = {1.0, 2.0, 3.0};
   r.rate = {10.5, std::numeric_limits<double>::quiet_NaN(), 9.5};
   r.clocks = {{"cpu0", 3e9, {3e9, 2e9, 1.8e9}}};
@@ -98,11 +94,7 @@ class TestSustainStore : public QObject {
   void version_10_workspace_gains_the_table() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("v10.bsw").toStdString();
-    { Workspace ws(path); }
-    {
-      RawDb old(path, false);
-      QVERIFY(old.exec("DROP TABLE sustain_runs; PRAGMA user_version = 10;"));
-    }
+    QVERIFY(old_workspace(path, "DROP TABLE sustain_runs; PRAGMA user_version = 10;"));
     Workspace ws(path);
     QCOMPARE(ws.schema_version(), Workspace::kSchemaVersion);
     ws.add_import(batch_of(sample_run()), "s");

@@ -164,6 +164,14 @@ class RawDb {
   sqlite3* db_ = nullptr;
 };
 
+// A workspace at `path` as an older BenchScope left it: written by this version, then `downgrade` (SQL that drops
+// what the older one did not have and sets its user_version) run behind the Workspace class's back. Whether the SQL
+// ran.
+inline bool old_workspace(const std::string& path, const std::string& downgrade) {
+  { bs::Workspace ws(path); }
+  return RawDb(path, false).exec(downgrade);
+}
+
 inline const std::vector<std::string>& workspace_tables() {
   static const std::vector<std::string> tables = {"meta",         "imports",      "devices",
                                                   "runs",         "run_samples",  "result_sets",

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "../../support/sustained_flops.h"
 #include "sustain/sustain_json.h"
 
 using namespace bs;
@@ -18,12 +19,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 SustainRun sample_run() {
-  SustainRun r;
-  r.platform = "NUC";
-  r.label = "flops for 3 s";
-  r.load = "flops";
-  r.rate_unit = "GFLOPS";
-  r.interval_s = 1;
+  auto r = bs::test::sustained_flops_run("NUC", "flops for 3 s");
   r.t_s = {1.0, 2.001, 3.0};
   r.rate = {10.5, kNaN, 9.5};
   r.clocks = {{"cpu0", 3e9, {3e9, 2e9, kNaN}}, {"devfreq gpu", std::nullopt, {1e9, 1e9, 1e9}}};

@@ -5,6 +5,7 @@
 // and how the verdicts change the recommendation.
 #include <QTest>
 
+#include "../../support/sustained_flops.h"
 #include "sustain/sustain_requirement.h"
 
 using namespace bs;
@@ -14,12 +15,7 @@ namespace {
 
 // A record of `platform` with one interval of `step_s` seconds per rate.
 SustainRun record(const std::string& platform, const std::vector<double>& rates, double step_s = 60) {
-  SustainRun r;
-  r.platform = platform;
-  r.label = platform + " flops";
-  r.load = "flops";
-  r.rate_unit = "GFLOPS";
-  r.interval_s = step_s;
+  auto r = bs::test::sustained_flops_run(platform, platform + " flops", step_s);
   r.rate = rates;
   for (std::size_t i = 0; i < rates.size(); ++i) r.t_s.push_back(static_cast<double>(i + 1) * step_s);
   return r;

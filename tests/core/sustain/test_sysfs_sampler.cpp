@@ -10,8 +10,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../../support/text_lines.h"
 #include "sustain/sysfs_sampler.h"
 
+using bs::test::any_line_contains;
 using namespace bs::sustain;
 namespace fs = std::filesystem;
 
@@ -22,8 +24,10 @@ void put(const fs::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
-// A machine with two CPUs (3.0 GHz maximum), a GPU devfreq node, one thermal zone and one hwmon sensor.
-void write_tree(const fs::path& root) {
+// A machine with two CPUs (3.0 GHz maximum), a GPU devfreq node, one thermal zone and one hwmon sensor, its sysfs
+// under `dir`: the root to sample.
+fs::path machine_in(const QTemporaryDir& dir) {
+  const fs::path root = dir.path().toStdString();
   for (int c = 0; c < 2; ++c) {
     const fs::path cpu = root / "sys/devices/system/cpu" / ("cpu" + std::to_string(c)) / "cpufreq";
     put(cpu / "scaling_cur_freq", "3000000\n");
@@ -47,12 +51,7 @@ void write_tree(const fs::path& root) {
   put(hw / "temp1_input", "62000\n");
   put(hw / "temp1_label", "Package id 0\n");
   put(hw / "temp2_input", "58000\n");  // no label: named by its attribute
-}
-
-bool mentions(const std::vector<std::string>& lines, const std::string& what) {
-  for (const std::string& l : lines)
-    if (l.find(what) != std::string::npos) return true;
-  return false;
+  return root;
 }
 
 }  // namespace
@@ -62,8 +61,7 @@ class TestSysfsSampler : public QObject {
  private slots:
   void finds_every_source_with_its_limit() {
     QTemporaryDir dir;
-    const fs::path root = dir.path().toStdString();
-    write_tree(root);
+    const fs::path root = machine_in(dir);
     const SysfsSampler s(root);
     QCOMPARE(s.clocks().size(), std::size_t{3});
     QCOMPARE(s.clocks()[0].name, std::string("cpu0"));
@@ -87,8 +85,7 @@ class TestSysfsSampler : public QObject {
 
   void reads_values_anew_each_sample() {
     QTemporaryDir dir;
-    const fs::path root = dir.path().toStdString();
-    write_tree(root);
+    const fs::path root = machine_in(dir);
     const SysfsSampler s(root);
     put(root / "sys/devices/system/cpu/cpu1/cpufreq/scaling_cur_freq", "1800000\n");
     put(root / "sys/class/thermal/thermal_zone0/temp", "97000\n");
@@ -99,8 +96,7 @@ class TestSysfsSampler : public QObject {
 
   void bad_values_are_nan_with_a_warning() {
     QTemporaryDir dir;
-    const fs::path root = dir.path().toStdString();
-    write_tree(root);
+    const fs::path root = machine_in(dir);
     const SysfsSampler s(root);
     put(root / "sys/devices/system/cpu/cpu0/cpufreq/scaling_cur_freq", "garbage\n");
     put(root / "sys/devices/system/cpu/cpu1/cpufreq/scaling_cur_freq", "999999999999999999999999999\n");
@@ -115,25 +111,26 @@ class TestSysfsSampler : public QObject {
     QVERIFY(std::isnan(a.temperature_c[1]));
     QCOMPARE(a.temperature_c[2], 58.0);
     QCOMPARE(a.warnings.size(), std::size_t{5});
-    QVERIFY(mentions(a.warnings, "cpu0: /sys/devices/system/cpu/cpu0/cpufreq/scaling_cur_freq: 'garbage' is not"));
-    QVERIFY(mentions(a.warnings, "cpu1: /sys/devices/system/cpu/cpu1/cpufreq/scaling_cur_freq: '9999"));
-    QVERIFY(mentions(a.warnings, "cur_freq: empty (NaN this interval)"));
-    QVERIFY(mentions(a.warnings, "900000000 is not a plausible temperature"));
-    QVERIFY(mentions(a.warnings, "temp1_input: No such file"));
+    QVERIFY(
+        any_line_contains(a.warnings, "cpu0: /sys/devices/system/cpu/cpu0/cpufreq/scaling_cur_freq: 'garbage' is not"));
+    QVERIFY(any_line_contains(a.warnings, "cpu1: /sys/devices/system/cpu/cpu1/cpufreq/scaling_cur_freq: '9999"));
+    QVERIFY(any_line_contains(a.warnings, "cur_freq: empty (NaN this interval)"));
+    QVERIFY(any_line_contains(a.warnings, "900000000 is not a plausible temperature"));
+    QVERIFY(any_line_contains(a.warnings, "temp1_input: No such file"));
   }
 
   void bad_limits_are_left_out_with_a_warning() {
     QTemporaryDir dir;
-    const fs::path root = dir.path().toStdString();
-    write_tree(root);
+    const fs::path root = machine_in(dir);
     put(root / "sys/devices/system/cpu/cpu0/cpufreq/cpuinfo_max_freq", "-5\n");
     put(root / "sys/class/thermal/thermal_zone0/trip_point_2_temp", "hot\n");
     const SysfsSampler s(root);
     QVERIFY(!s.clocks()[0].max_hz);
     QCOMPARE(*s.temperatures()[0].trip_c, 105.0);  // the passive trip was junk: the critical one remains
     QCOMPARE(s.discovery_warnings().size(), std::size_t{2});
-    QVERIFY(mentions(s.discovery_warnings(), "cpu0: /sys/devices/system/cpu/cpu0/cpufreq/cpuinfo_max_freq: -5"));
-    QVERIFY(mentions(s.discovery_warnings(), "trip point left out"));
+    QVERIFY(
+        any_line_contains(s.discovery_warnings(), "cpu0: /sys/devices/system/cpu/cpu0/cpufreq/cpuinfo_max_freq: -5"));
+    QVERIFY(any_line_contains(s.discovery_warnings(), "trip point left out"));
   }
 
   void what_is_missing_is_said() {
@@ -142,10 +139,10 @@ class TestSysfsSampler : public QObject {
     QVERIFY(s.clocks().empty());
     QVERIFY(s.temperatures().empty());
     QCOMPARE(s.not_exposed().size(), std::size_t{4});
-    QVERIFY(mentions(s.not_exposed(), "no cpufreq under /sys/devices/system/cpu: no CPU clock"));
-    QVERIFY(mentions(s.not_exposed(), "no devfreq device"));
-    QVERIFY(mentions(s.not_exposed(), "no thermal zone under /sys/class/thermal"));
-    QVERIFY(mentions(s.not_exposed(), "no hwmon temperature"));
+    QVERIFY(any_line_contains(s.not_exposed(), "no cpufreq under /sys/devices/system/cpu: no CPU clock"));
+    QVERIFY(any_line_contains(s.not_exposed(), "no devfreq device"));
+    QVERIFY(any_line_contains(s.not_exposed(), "no thermal zone under /sys/class/thermal"));
+    QVERIFY(any_line_contains(s.not_exposed(), "no hwmon temperature"));
     const SysfsSample a = s.sample();
     QVERIFY(a.clock_hz.empty() && a.temperature_c.empty() && a.warnings.empty());
   }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../../support/text_lines.h"
 #include "common/format_importer.h"
 #include "headroom/thread_latency.h"
 
@@ -26,16 +27,11 @@ inline const headroom::ThreadLatency& only_thread(const ImportBatch& b, std::siz
   return b.headroom.at(0).phases.at(0).threads.at(index);
 }
 
-inline bool has_warning(const ImportBatch& b, const std::string& text) {
-  return std::any_of(b.warnings.begin(), b.warnings.end(),
-                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
-}
+inline bool has_warning(const ImportBatch& b, const std::string& text) { return any_line_contains(b.warnings, text); }
 
 // A note of the first measurement's first phase containing `text`.
 inline bool has_note(const ImportBatch& b, const std::string& text) {
-  const auto& notes = b.headroom.at(0).phases.at(0).notes;
-  return std::any_of(notes.begin(), notes.end(),
-                     [&](const std::string& n) { return n.find(text) != std::string::npos; });
+  return any_line_contains(b.headroom.at(0).phases.at(0).notes, text);
 }
 
 // The first measurement's provenance setting `key`, "" when absent.

@@ -18,25 +18,11 @@
 
 using bs::headroom::LatencyKind;
 using bs::headroom::summarize;
-using bs::test::has_note;
-using bs::test::has_warning;
-using bs::test::kHeadroomFixtures;
-using bs::test::kHeadroomReal;
-using bs::test::only_thread;
-using bs::test::parse_with;
-using bs::test::setting;
+// The headroom importers' test helpers (headroom_test_files.h, import_errors.h).
+using namespace bs::test;
 
-namespace {
-
-bs::ImportError text_error(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::kCyclictestTextFileFormat.parse_text(text, "c.hist"); });
-}
-
-bs::ImportError json_error(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::kCyclictestJsonFileFormat.parse_text(text, "c.json"); });
-}
-
-}  // namespace
+const auto text_error = import_errors_of(bs::kCyclictestTextFileFormat, "c.hist");
+const auto json_error = import_errors_of(bs::kCyclictestJsonFileFormat, "c.json");
 
 class TestCyclictestImport : public QObject {
   Q_OBJECT

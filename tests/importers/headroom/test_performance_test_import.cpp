@@ -17,13 +17,8 @@
 #include "headroom_test_files.h"
 
 using bs::headroom::LatencyKind;
-using bs::test::has_note;
-using bs::test::has_warning;
-using bs::test::kHeadroomFixtures;
-using bs::test::kHeadroomReal;
-using bs::test::only_thread;
-using bs::test::parse_with;
-using bs::test::setting;
+// The headroom importers' test helpers (headroom_test_files.h, import_errors.h).
+using namespace bs::test;
 
 namespace {
 
@@ -122,14 +117,14 @@ class TestPerformanceTestImport : public QObject {
 
   void mixed_rows_are_refused_naming_the_row() {
     const bs::CancelToken cancel;
-    auto e = bs::test::import_error_of([&] {
+    auto e = import_error_of([&] {
       return bs::kPerformanceTestCsvFileFormat.parse(BENCHSCOPE_TEST_DATA_DIR "/bad/headroom-perftest-mixed.csv", {},
                                                      {}, cancel);
     });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{10});  // the fourth row, the first running total
     QVERIFY(std::string(e.what()).find("mixed per-interval and cumulative rows") != std::string::npos);
-    e = bs::test::import_error_of([&] {
+    e = import_error_of([&] {
       return bs::kPerformanceTestJsonFileFormat.parse(BENCHSCOPE_TEST_DATA_DIR "/bad/headroom-perftest-mixed.json", {},
                                                       {}, cancel);
     });
@@ -164,17 +159,17 @@ class TestPerformanceTestImport : public QObject {
     const std::string head =
         "---EXPERIMENT-START---\nT_experiment,T_loop,received,sent,latency_min (ms),latency_max "
         "(ms),latency_mean (ms),latency_variance (ms)\n";
-    auto e = bs::test::import_error_of([&] {
+    auto e = import_error_of([&] {
       return bs::kPerformanceTestCsvFileFormat.parse_text(head + "1.0,1.0,10,10,0.03,x,0.04,1e-09\n", "p.csv");
     });
     QCOMPARE(e.location().line, std::size_t{3});
     QCOMPARE(e.location().field, std::string("latency_max"));
-    e = bs::test::import_error_of([&] {
+    e = import_error_of([&] {
       return bs::kPerformanceTestCsvFileFormat.parse_text(head + "1.0,1.0,10,10,0.06,0.05,0.04,1e-09\n", "p.csv");
     });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{3});
-    e = bs::test::import_error_of([&] {
+    e = import_error_of([&] {
       return bs::kPerformanceTestCsvFileFormat.parse_text("---EXPERIMENT-START---\nT_experiment,T_loop\n", "p.csv");
     });
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);

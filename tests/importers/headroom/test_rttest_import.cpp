@@ -16,19 +16,12 @@
 
 using bs::headroom::LatencyKind;
 using bs::headroom::summarize;
-using bs::test::has_note;
-using bs::test::has_warning;
-using bs::test::kHeadroomFixtures;
-using bs::test::kHeadroomReal;
-using bs::test::only_thread;
-using bs::test::parse_with;
-using bs::test::setting;
+// The headroom importers' test helpers (headroom_test_files.h, import_errors.h).
+using namespace bs::test;
 
 namespace {
 
-bs::ImportError log_error(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::kRttestLogFileFormat.parse_text(text, "r.txt"); });
-}
+const auto log_error = import_errors_of(bs::kRttestLogFileFormat, "r.txt");
 
 const std::string kHeader = "iteration timestamp latency minor_pagefaults major_pagefaults\n";
 
@@ -158,11 +151,11 @@ class TestRttestImport : public QObject {
   }
 
   void statistics_errors() {
-    auto e = bs::test::import_error_of([] {
+    auto e = import_error_of([] {
       return bs::kRttestStatisticsFileFormat.parse_text("Min latency: 10\nMax latency: 5\nMean latency: 7\n", "s.txt");
     });
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
-    e = bs::test::import_error_of(
+    e = import_error_of(
         [] { return bs::kRttestStatisticsFileFormat.parse_text("Min latency: 10\nMax latency: 2x\n", "s.txt"); });
     QCOMPARE(e.category(), bs::ImportErrorCategory::Syntax);
     QCOMPARE(e.location().line, std::size_t{2});

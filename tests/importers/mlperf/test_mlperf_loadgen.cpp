@@ -12,8 +12,15 @@
 #include "mlperf/mlperf_submission.h"
 #include "workspace/registry.h"
 
+#include "../../support/file_text.h"
 #include "../../support/import_errors.h"
+#include "../../support/near.h"
 #include "../../support/public_data.h"
+#include "../../support/result_set_lookup.h"
+
+using bs::test::file_text;
+using bs::test::near;
+using bs::test::setting;
 
 namespace {
 const std::string kData = bs::test::public_data("tests/data/importers/mlperf/");
@@ -21,24 +28,12 @@ const std::string kOrin =
     kData + "v3.0-nvidia-orin-maxq/results/Orin_TRT_MaxQ/resnet50/SingleStream/performance/run_1/";
 const std::string kXavier = kData + "v0.5-nvidia-xavier/results/Xavier/ssd-small/MultiStream/performance/run_1/";
 
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 const bs::Measurement& find(const bs::ResultSet& s, const std::string& metric) {
   for (const auto& m : s.measurements)
     if (m.metric == metric) return m;
   throw std::runtime_error("no measurement " + metric);
 }
 
-std::string setting(const bs::ResultSet& s, const std::string& key) {
-  for (const auto& [k, v] : s.provenance.settings)
-    if (k == key) return v;
-  return "(absent)";
-}
-
-bool near(double a, double b, double rel = 1e-9) { return std::abs(a - b) <= rel * std::max(std::abs(a), std::abs(b)); }
 }  // namespace
 
 class TestMlperfLoadgen : public QObject {
@@ -120,7 +115,7 @@ class TestMlperfLoadgen : public QObject {
 
   void a_folder_walk_imports_results_and_passes_over_the_rest() {
     const bs::FormatImporter imp(bs::kMlperfLoadgenFileFormat);
-    const std::string head = read(kOrin + "mlperf_log_summary.txt");
+    const std::string head = file_text(kOrin + "mlperf_log_summary.txt");
     QCOMPARE(imp.sniff(head, kOrin + "mlperf_log_summary.txt"), 95);
     QCOMPARE(imp.sniff(head, "/x/performance/ranging/mlperf_log_summary.txt"), 0);
     QCOMPARE(imp.sniff(head, "/x/compliance/r/TEST01/performance/run_1/mlperf_log_summary.txt"), 0);
@@ -128,11 +123,12 @@ class TestMlperfLoadgen : public QObject {
     accuracy.replace(accuracy.find("PerformanceOnly"), 15, "AccuracyOnly");
     QCOMPARE(imp.sniff(accuracy, "/x/accuracy/mlperf_log_summary.txt"), 0);
     // The detail log is not a format of its own: in a folder it is skipped, beside its summary.
-    QCOMPARE(imp.sniff(read(kOrin + "mlperf_log_detail.txt").substr(0, 65536), kOrin + "mlperf_log_detail.txt"), 0);
+    QCOMPARE(imp.sniff(file_text(kOrin + "mlperf_log_detail.txt").substr(0, 65536), kOrin + "mlperf_log_detail.txt"),
+             0);
   }
 
   void a_summary_alone_imports_without_companions() {
-    const std::string text = read(kOrin + "mlperf_log_summary.txt");
+    const std::string text = file_text(kOrin + "mlperf_log_summary.txt");
     const bs::ImportBatch b = bs::parse_mlperf_summary(text, "own-run/mlperf_log_summary.txt");
     const bs::ResultSet& s = b.result_sets.at(0);
     // #46: the SUT name (line 4, "LWIS_Server") is the harness's, never the computer: not stated, and said so.
@@ -145,7 +141,7 @@ class TestMlperfLoadgen : public QObject {
   }
 
   void an_invalid_result_imports_with_a_warning() {
-    std::string text = read(kOrin + "mlperf_log_summary.txt");
+    std::string text = file_text(kOrin + "mlperf_log_summary.txt");
     text.replace(text.find("Result is : VALID"), 17, "Result is : INVALID");
     const bs::ImportBatch b = bs::parse_mlperf_summary(text, "s.txt");
     QCOMPARE(setting(b.result_sets.at(0), "result validity"), std::string("INVALID"));
@@ -155,7 +151,7 @@ class TestMlperfLoadgen : public QObject {
   }
 
   void broken_companions_are_rejected_with_their_place() {
-    const std::string text = read(kOrin + "mlperf_log_summary.txt");
+    const std::string text = file_text(kOrin + "mlperf_log_summary.txt");
     bs::MlperfCompanions with;
     with.detail_text = ":::MLLOG {\"key\": \"power_begin\", \"value\": \"02-24-2023 06:22";  // truncated line
     with.detail_file = "detail.txt";
@@ -185,9 +181,9 @@ class TestMlperfLoadgen : public QObject {
         ":::MLLOG {\"key\": \"power_begin\", \"value\": \"02-25-2023 06:22:00.638\"}\n"
         ":::MLLOG {\"key\": \"power_end\", \"value\": \"02-25-2023 06:32:00.640\"}\n";
     with.detail_file = "detail.txt";
-    with.spl_text = read(kOrin + "spl.txt");
+    with.spl_text = file_text(kOrin + "spl.txt");
     with.spl_file = "spl.txt";
-    const bs::ImportBatch b = bs::parse_mlperf_summary(read(kOrin + "mlperf_log_summary.txt"), "s.txt", with);
+    const bs::ImportBatch b = bs::parse_mlperf_summary(file_text(kOrin + "mlperf_log_summary.txt"), "s.txt", with);
     QVERIFY(std::any_of(b.warnings.begin(), b.warnings.end(),
                         [](const std::string& w) { return w.find("no power sample inside") != std::string::npos; }));
     for (const auto& m : b.result_sets.at(0).measurements) QVERIFY(m.metric != "energy per query");

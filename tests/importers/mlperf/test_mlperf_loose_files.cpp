@@ -14,11 +14,14 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../../support/result_set_lookup.h"
 #include "analysis/library/candidates.h"
 #include "analysis/library/library.h"
 #include "mlperf/mlperf_submission.h"
 #include "workspace/import_service.h"
 #include "workspace/registry.h"
+
+using bs::test::setting;
 
 namespace {
 namespace fs = std::filesystem;
@@ -59,12 +62,6 @@ const bs::Measurement* metric(const bs::ResultSet& s, const std::string& m) {
   for (const auto& x : s.measurements)
     if (x.metric == m) return &x;
   return nullptr;
-}
-
-std::string setting(const bs::ResultSet& s, const std::string& key) {
-  for (const auto& [k, v] : s.provenance.settings)
-    if (k == key) return v;
-  return "(absent)";
 }
 
 }  // namespace

@@ -10,7 +10,11 @@
 #include "power/power_import.h"
 #include "workspace/registry.h"
 
+#include "../../support/find_item.h"
 #include "../../support/public_data.h"
+#include "../../support/text_lines.h"
+
+using bs::test::any_line_contains;
 
 namespace {
 
@@ -23,21 +27,13 @@ bs::ImportBatch load(const std::string& name) {
 }
 
 const bs::PowerChannel& channel(const bs::PowerTrace& t, const std::string& name) {
-  for (const auto& c : t.channels)
-    if (c.name == name) return c;
-  throw std::runtime_error("no channel " + name);
+  return bs::test::item_of(t.channels, &bs::PowerChannel::name, name, "channel " + name);
 }
 
 double mean(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x;
   return s / static_cast<double>(v.size());
-}
-
-bool has_warning(const bs::ImportBatch& b, const std::string& text) {
-  for (const auto& w : b.warnings)
-    if (w.find(text) != std::string::npos) return true;
-  return false;
 }
 
 }  // namespace
@@ -60,7 +56,7 @@ class TestJetsonRealLogs : public QObject {
     // Not POM_5V_IN + POM_5V_GPU + POM_5V_CPU (5143 + 2949 + 179 = 8271 mW): GPU and CPU are parts of the input.
     QCOMPARE(channel(t, "POM_5V_GPU").values[28], 2.949);
     QCOMPARE(t.time_s[28], 28.0);  // no timestamps: line n at (n - 1) s, tegrastats' default interval
-    QVERIFY(has_warning(b, "no timestamps in the log: times assume one line every 1 s"));
+    QVERIFY(any_line_contains(b.warnings, "no timestamps in the log: times assume one line every 1 s"));
     QCOMPARE(t.provenance.measurement, bs::MeasurementKind::OnBoardSensor);
     QCOMPARE(t.provenance.sensor, std::string("INA3221 (tegrastats)"));
   }
@@ -100,7 +96,7 @@ class TestJetsonRealLogs : public QObject {
     // GPU 0 + CPU 311 + SOC 932 + CV 0 + VDDRQ 621 + SYS5V 1482 = 3346 mW. Before: the GPU rail alone (0 W here).
     QCOMPARE(bs::power_series(t).at(0), 3.346);
     QCOMPARE(t.channels.size(), std::size_t{7});
-    QVERIFY(has_warning(b, "no board input rail"));
+    QVERIFY(any_line_contains(b.warnings, "no board input rail"));
     QVERIFY(t.provenance.note.find("lower bound") != std::string::npos);
   }
   void agx_orin_total_is_the_sum_of_its_rails() {
@@ -134,7 +130,7 @@ class TestJetsonRealLogs : public QObject {
     QCOMPARE(thor.total_channel, std::string("VIN"));
     QCOMPARE(bs::power_series(thor).at(0), 26.686);
     QCOMPARE(thor.channels.size(), std::size_t{4});
-    QVERIFY(!has_warning(b, "no board input rail"));
+    QVERIFY(!any_line_contains(b.warnings, "no board input rail"));
   }
   void jtop_orin_nano_total_is_power_tot() {
     const auto b = load("jtop-orin-nano-jetson-stats-4.csv");

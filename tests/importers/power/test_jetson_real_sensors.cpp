@@ -9,7 +9,11 @@
 #include "power/power_import.h"
 #include "workspace/registry.h"
 
+#include "../../support/find_item.h"
 #include "../../support/public_data.h"
+#include "../../support/text_lines.h"
+
+using bs::test::any_line_contains;
 
 namespace {
 
@@ -24,33 +28,20 @@ bs::SustainRun sustain(const std::string& name) {
 }
 
 const bs::ClockSeries* clock(const bs::SustainRun& r, const std::string& name) {
-  for (const auto& c : r.clocks)
-    if (c.name == name) return &c;
-  return nullptr;
+  return bs::test::find_item(r.clocks, &bs::ClockSeries::name, name);
 }
 
 const bs::TemperatureSeries* temperature(const bs::SustainRun& r, const std::string& name) {
-  for (const auto& t : r.temperatures)
-    if (t.name == name) return &t;
-  return nullptr;
+  return bs::test::find_item(r.temperatures, &bs::TemperatureSeries::name, name);
 }
 
 double hz(const bs::SustainRun& r, const std::string& name, std::size_t sample) {
-  const auto* c = clock(r, name);
-  if (!c) throw std::runtime_error("no clock " + name);
-  return c->hz.at(sample);
+  return bs::test::item_of(r.clocks, &bs::ClockSeries::name, name, "clock " + name).hz.at(sample);
 }
 
 double celsius(const bs::SustainRun& r, const std::string& name, std::size_t sample) {
-  const auto* t = temperature(r, name);
-  if (!t) throw std::runtime_error("no temperature " + name);
-  return t->celsius.at(sample);
-}
-
-bool says(const std::vector<std::string>& lines, const std::string& text) {
-  for (const auto& l : lines)
-    if (l.find(text) != std::string::npos) return true;
-  return false;
+  return bs::test::item_of(r.temperatures, &bs::TemperatureSeries::name, name, "temperature " + name)
+      .celsius.at(sample);
 }
 
 }  // namespace
@@ -91,7 +82,7 @@ class TestJetsonRealSensors : public QObject {
     QCOMPARE(celsius(r, "Tdiode", 9), 31.25);
     QCOMPARE(celsius(r, "thermal", 9), 34.0);
     QCOMPARE(r.temperatures.size(), std::size_t{8});  // BCPU MCPU GPU PLL AO Tboard Tdiode thermal, not PMIC
-    QVERIFY(says(r.not_exposed, "no GPU clock"));
+    QVERIFY(any_line_contains(r.not_exposed, "no GPU clock"));
   }
   void agx_orin_jetpack6_line_3_per_gpc_clock_and_offline_cores() {
     // 07-21-2025 16:33:44 ... CPU [9%@960,66%@960,1%@960,0%@960,3%@729,9%@729,7%@729,2%@729,off,off,off,off]
@@ -120,7 +111,7 @@ class TestJetsonRealSensors : public QObject {
     QCOMPARE(celsius(r, "soc0", 0), 49.406);  // the current value, not the maximum 49.5
     QCOMPARE(celsius(r, "gpu", 0), 47.125);
     QCOMPARE(hz(r, "cpu8", 0), 1113e6);
-    QVERIFY(says(r.not_exposed, "GR3D_FREQ as a load only"));
+    QVERIFY(any_line_contains(r.not_exposed, "GR3D_FREQ as a load only"));
     // Thor: CPU [12%@972,10%@972,off,33%@1890] cpu@39.812C tj@39.906C soc012@38.812C
     r = sustain("tegrastats-thor-jetpack7.log");
     QCOMPARE(hz(r, "cpu3", 0), 1890e6);
@@ -161,7 +152,7 @@ class TestJetsonRealSensors : public QObject {
     QCOMPARE(celsius(r, "soc2", 0), 43.5);
     QVERIFY(!temperature(r, "cv0"));  // -256 throughout: no sensor, left out
     QVERIFY(r.clocks.empty());
-    QVERIFY(says(r.not_exposed, "no CPU or GPU clock"));
+    QVERIFY(any_line_contains(r.not_exposed, "no CPU or GPU clock"));
     QCOMPARE(r.power_w.at(0), 3.852);  // Power TOT 3852 mW
     // jetson-stats 3.0: APE 150 (MHz, copied from tegrastats), Temp CPU 46.0, Temp Tdiode 49.25.
     r = sustain("jtop-agx-xavier-jetson-stats-3.csv");
@@ -176,7 +167,7 @@ class TestJetsonRealSensors : public QObject {
     const auto r = sustain("nvidia-smi-fletcher-gtx1650.csv");
     QCOMPARE(celsius(r, "GPU", 11), 50.0);
     QVERIFY(r.clocks.empty());
-    QVERIFY(says(r.not_exposed, "no SM clock"));
+    QVERIFY(any_line_contains(r.not_exposed, "no SM clock"));
     QCOMPARE(r.power_w.at(9), 19.89);
     QCOMPARE(r.provenance.gpu_model, std::string("NVIDIA GeForce GTX 1650"));
     // Power only: no record (it would say nothing the trace does not).

@@ -12,6 +12,7 @@
 #include "power/tegrastats.h"
 #include "workspace/registry.h"
 
+#include "../../support/find_item.h"
 #include "../../support/import_errors.h"
 
 namespace {
@@ -19,21 +20,15 @@ namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/power/";
 
 const bs::ClockSeries& clock(const bs::SustainRun& r, const std::string& name) {
-  for (const auto& c : r.clocks)
-    if (c.name == name) return c;
-  throw std::runtime_error("no clock " + name);
+  return bs::test::item_of(r.clocks, &bs::ClockSeries::name, name, "clock " + name);
 }
 
 const bs::TemperatureSeries& temperature(const bs::SustainRun& r, const std::string& name) {
-  for (const auto& t : r.temperatures)
-    if (t.name == name) return t;
-  throw std::runtime_error("no temperature " + name);
+  return bs::test::item_of(r.temperatures, &bs::TemperatureSeries::name, name, "temperature " + name);
 }
 
 bool has_clock(const bs::SustainRun& r, const std::string& name) {
-  for (const auto& c : r.clocks)
-    if (c.name == name) return true;
-  return false;
+  return bs::test::find_item(r.clocks, &bs::ClockSeries::name, name) != nullptr;
 }
 
 std::size_t warnings_with(const bs::ImportBatch& b, const std::string& text) {

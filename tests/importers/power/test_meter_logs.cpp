@@ -16,6 +16,7 @@
 #include "power/ptd_log.h"
 #include "workspace/registry.h"
 
+#include "../../support/find_item.h"
 #include "../../support/public_data.h"
 
 namespace {
@@ -35,9 +36,7 @@ bs::ImportError error_of(Parse parse) {
 bool near(double a, double b, double tol = 1e-9) { return std::abs(a - b) <= tol; }
 
 const bs::PowerChannel& channel(const bs::PowerTrace& t, const std::string& name) {
-  for (const auto& c : t.channels)
-    if (c.name == name) return c;
-  throw std::runtime_error("no channel " + name);
+  return bs::test::item_of(t.channels, &bs::PowerChannel::name, name, "channel " + name);
 }
 
 }  // namespace

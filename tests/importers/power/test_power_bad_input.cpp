@@ -10,13 +10,7 @@
 #include "power/power_csv.h"
 #include "workspace/registry.h"
 
-namespace {
-
-bs::ImportError parse_error(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::kPowerCsvFileFormat.parse_text(text, "log.csv"); });
-}
-
-}  // namespace
+const auto parse_error = bs::test::import_errors_of(bs::kPowerCsvFileFormat, "log.csv");
 
 class TestPowerBadInput : public QObject {
   Q_OBJECT

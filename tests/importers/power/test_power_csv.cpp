@@ -4,7 +4,11 @@
 
 #include "power/power_csv.h"
 
+#include "../../support/find_item.h"
 #include "../../support/import_errors.h"
+#include "../../support/text_lines.h"
+
+using bs::test::any_line_contains;
 
 namespace {
 
@@ -14,26 +18,14 @@ bs::PowerTrace parse(const std::string& text) {
 }
 
 const bs::PowerChannel* channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
-  for (const auto& c : t.channels)
-    if (c.quantity == q) return &c;
-  return nullptr;
+  return bs::test::find_item(t.channels, &bs::PowerChannel::quantity, q);
 }
 
 const bs::PowerChannel* named(const bs::PowerTrace& t, const std::string& name) {
-  for (const auto& c : t.channels)
-    if (c.name == name) return &c;
-  return nullptr;
+  return bs::test::find_item(t.channels, &bs::PowerChannel::name, name);
 }
 
-bool warned(const bs::ImportBatch& b, const std::string& text) {
-  for (const auto& w : b.warnings)
-    if (w.find(text) != std::string::npos) return true;
-  return false;
-}
-
-bs::ImportError error_of(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::kPowerCsvFileFormat.parse_text(text, "log.csv"); });
-}
+const auto error_of = bs::test::import_errors_of(bs::kPowerCsvFileFormat, "log.csv");
 
 }  // namespace
 
@@ -162,7 +154,7 @@ class TestPowerCsv : public QObject {
     // Equal times: kept, and a warning says where (a sample of zero width adds nothing to the energy).
     const auto b = bs::kPowerCsvFileFormat.parse_text("time_s,power_W\n0,1\n1,1\n1,2\n1,3\n2,1\n", "log.csv");
     QCOMPARE(b.power_traces[0].time_s.size(), std::size_t{5});
-    QVERIFY(warned(b, "log.csv:4: 2 rows repeat the previous row's time"));
+    QVERIFY(any_line_contains(b.warnings, "log.csv:4: 2 rows repeat the previous row's time"));
     // Decreasing date-times: an error naming the line.
     const auto e = error_of("timestamp,power_W\n2026-11-22T10:00:01,1\n2026-11-22T10:00:03,1\n2026-11-22T10:00:02,1\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
@@ -183,13 +175,13 @@ class TestPowerCsv : public QObject {
     t = b.power_traces[0];
     QCOMPARE(t.channels.size(), std::size_t{3});
     QCOMPARE(t.total_channel, std::string("total_watts"));
-    QVERIFY(warned(b, "statistics use 'total_watts' (named as the total)"));
+    QVERIFY(any_line_contains(b.warnings, "statistics use 'total_watts' (named as the total)"));
     // Several power columns and no total: none named, and a warning says which one the statistics use.
     b = bs::kPowerCsvFileFormat.parse_text("time_s,GPU0 Power (W),GPU1 Power (W)\n0,100,120\n1,110,130\n", "gpus.csv");
     QVERIFY(b.power_traces[0].total_channel.empty());
-    QVERIFY(warned(b,
-                   "2 power columns ('GPU0 Power (W)', 'GPU1 Power (W)') and none named total/sum/package: "
-                   "statistics use 'GPU0 Power (W)' (the first)"));
+    QVERIFY(any_line_contains(b.warnings,
+                              "2 power columns ('GPU0 Power (W)', 'GPU1 Power (W)') and none named total/sum/package: "
+                              "statistics use 'GPU0 Power (W)' (the first)"));
     // jtop-style "Power TOT" as a whole word; "summary" is not a sum.
     QCOMPARE(parse("time_s,Power CPU,Power TOT\n0,1,5\n").total_channel, std::string("Power TOT"));
     // nvidia-smi-like columns: the power limit is a setting, not a sample; an empty cell is a missing sample.
@@ -201,13 +193,14 @@ class TestPowerCsv : public QObject {
     QVERIFY(std::isnan(named(t, "power.draw [W]")->values[1]));
     QVERIFY(std::isnan(named(t, "current_A")->values[0]));
     QCOMPARE(named(t, "current_A")->values[2], 4.1);
-    QVERIFY(warned(b, "smi.csv:3: 'power.draw [W]': 1 of 3 cells empty or N/A, kept as missing samples"));
-    QVERIFY(warned(b, "'power.limit [W]' (3)"));
+    QVERIFY(any_line_contains(b.warnings,
+                              "smi.csv:3: 'power.draw [W]': 1 of 3 cells empty or N/A, kept as missing samples"));
+    QVERIFY(any_line_contains(b.warnings, "'power.limit [W]' (3)"));
     // N/A as nvidia-smi writes it is missing too; a column that is empty throughout is dropped.
     b = bs::kPowerCsvFileFormat.parse_text("time_s,CPU Power (W),GPU Power (W)\n0,,[N/A]\n1,,200\n", "perf.csv");
     QCOMPARE(b.power_traces[0].channels.size(), std::size_t{1});
     QCOMPARE(b.power_traces[0].channels[0].name, std::string("GPU Power (W)"));
-    QVERIFY(warned(b, "columns with no value in any row, not kept: 'CPU Power (W)'"));
+    QVERIFY(any_line_contains(b.warnings, "columns with no value in any row, not kept: 'CPU Power (W)'"));
   }
   void provenance_of_meters() {
     // Joulescope's '#' header: an external meter, named.

@@ -11,6 +11,7 @@
 #include "power/power_import.h"
 #include "workspace/registry.h"
 
+#include "../../support/find_item.h"
 #include "../../support/public_data.h"
 
 namespace {
@@ -25,15 +26,11 @@ bs::ImportBatch import_real(const std::string& name) {
 }
 
 const bs::PowerChannel& channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
-  for (const auto& c : t.channels)
-    if (c.quantity == q) return c;
-  throw std::runtime_error("no such channel");
+  return bs::test::item_of(t.channels, &bs::PowerChannel::quantity, q, "such channel");
 }
 
 bool has_channel(const bs::PowerTrace& t, bs::PowerQuantity q) {
-  for (const auto& c : t.channels)
-    if (c.quantity == q) return true;
-  return false;
+  return bs::test::find_item(t.channels, &bs::PowerChannel::quantity, q) != nullptr;
 }
 
 }  // namespace

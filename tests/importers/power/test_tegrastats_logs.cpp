@@ -12,9 +12,7 @@ namespace {
 
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/power/";
 
-bs::ImportError error_of(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::kTegrastatsFileFormat.parse_text(text, "t.log"); });
-}
+const auto error_of = bs::test::import_errors_of(bs::kTegrastatsFileFormat, "t.log");
 
 }  // namespace
 

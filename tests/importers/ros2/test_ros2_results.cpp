@@ -15,6 +15,11 @@
 #include "workspace/registry.h"
 
 #include "../../support/import_errors.h"
+#include "../../support/result_set_lookup.h"
+#include "../../support/text_lines.h"
+
+using bs::test::any_line_contains;
+using bs::test::setting;
 
 namespace {
 const std::string kRos2 = BENCHSCOPE_PUBLIC_DATA_DIR "/new/ros2/";
@@ -25,16 +30,6 @@ const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, con
   return nullptr;
 }
 
-std::string setting(const bs::ResultSet& s, const std::string& key) {
-  for (const auto& [k, v] : s.provenance.settings)
-    if (k == key) return v;
-  return "(absent)";
-}
-
-bool any_warning(const bs::ImportBatch& b, const std::string& part) {
-  return std::any_of(b.warnings.begin(), b.warnings.end(),
-                     [&](const std::string& w) { return w.find(part) != std::string::npos; });
-}
 }  // namespace
 
 class TestRos2Results : public QObject {
@@ -73,7 +68,7 @@ class TestRos2Results : public QObject {
     QVERIFY(find(s, at10, "frame rate (received frames / received duration, one run)"));
     QVERIFY(find(s, "image_proc::RectifyNode Benchmark at 60.0fps (one run at a fixed rate)", "frame rate"));
     QVERIFY(find(s, peak, "CPU use baseline, measured during the run"));
-    QVERIFY(any_warning(b, "does not name the computer"));
+    QVERIFY(any_line_contains(b.warnings, "does not name the computer"));
   }
 
   // Issue #51: the same node on one board in two releases (2025-10 and 2026-02, both ROS 2 Jazzy) are two releases,
@@ -95,7 +90,7 @@ class TestRos2Results : public QObject {
     QVERIFY(find(sa, peak, "GPU use, mean"));
     QVERIFY(find(sb, peak, "CPU use, mean"));
     QVERIFY(!find(sb, peak, "GPU use, mean"));  // the CPU node's 2026 file keeps no device use
-    QVERIFY(!any_warning(ba, "ROS 2 distribution is not in the file"));
+    QVERIFY(!any_line_contains(ba.warnings, "ROS 2 distribution is not in the file"));
   }
 
   // DGX Spark's GPU RectifyNode reaches 2495.99 fps against the harness's publisher_upper_frequency 2500: the peak
@@ -105,7 +100,7 @@ class TestRos2Results : public QObject {
     if (!std::filesystem::exists(f)) QSKIP("needs BENCHSCOPE_PUBLIC_DATA_DIR/new/ros2 (the shared public data)");
     const bs::ImportBatch b = bs::import_file(f, bs::CancelToken{});
     QVERIFY(setting(b.result_sets.at(0), "flag").starts_with("peak at the publisher ceiling"));
-    QVERIFY(any_warning(b, "at the harness's publisher ceiling (publisher_upper_frequency 2500.0)"));
+    QVERIFY(any_line_contains(b.warnings, "at the harness's publisher ceiling (publisher_upper_frequency 2500.0)"));
     const bs::ImportBatch thor =
         bs::import_file(kRos2 + "isaacbench_gpu_rectify_agx_thor_2026-02.json", bs::CancelToken{});  // 1549.97 fps
     QCOMPARE(setting(thor.result_sets.at(0), "flag"), std::string("(absent)"));
@@ -123,9 +118,9 @@ class TestRos2Results : public QObject {
     const bs::ImportBatch b = bs::kRobotperfYamlFileFormat.parse_text(yaml, "b.yaml", {}, {}, bs::CancelToken{});
     QCOMPARE(b.result_sets.size(), std::size_t{1});
     QCOMPARE(setting(b.result_sets[0], "hardware alias"), std::string("also spelled 'NVIDIA AGX Orin Developer Kit'"));
-    QVERIFY(any_warning(b,
-                        "b.yaml:9: value: 8.96831017167883e-44 W of power on NVIDIA AGX Orin Dev. Kit is "
-                        "impossible (below 0.01 W"));
+    QVERIFY(any_line_contains(b.warnings,
+                              "b.yaml:9: value: 8.96831017167883e-44 W of power on NVIDIA AGX Orin Dev. Kit is "
+                              "impossible (below 0.01 W"));
     QVERIFY(b.result_sets[0].measurements.at(0).name.find("[grey-box]") != std::string::npos);
     QVERIFY(b.result_sets[0].measurements.at(1).name.find("[black-box]") != std::string::npos);
   }
@@ -151,12 +146,12 @@ class TestRos2Results : public QObject {
     // Lines 88, 120, 153, 186, 219: "throughput" 10.0 on every machine is the controller's configured update rate.
     QVERIFY(orin.measurements.at(2).metric.starts_with("update rate as configured (the same 10/s on every machine"));
     QCOMPARE(orin.measurements.at(2).values.at(0), 10.0);
-    QVERIFY(any_warning(b, "the rate the loop was configured to run at, not a throughput"));
+    QVERIFY(any_line_contains(b.warnings, "the rate the loop was configured to run at, not a throughput"));
     QVERIFY(lat.name.find("[grey-box]") != std::string::npos);  // the result's type is kept
     // The double-quoted note with \u270B and a line joined by '\' was read whole (no error), and the free-text
     // workstation names and the two date formats are flagged with their lines.
-    QVERIFY(any_warning(b, "hardware 'Intel i7-12700H' is free text"));
-    QVERIFY(any_warning(b, "dates in two formats"));
+    QVERIFY(any_line_contains(b.warnings, "hardware 'Intel i7-12700H' is free text"));
+    QVERIFY(any_line_contains(b.warnings, "dates in two formats"));
     QCOMPARE(setting(orin, "release"), std::string("not stated in the file"));
   }
 
@@ -188,7 +183,7 @@ class TestRos2Results : public QObject {
       }
     QVERIFY(max_latency);
     QVERIFY(unstated);  // "lost messages 0.00 %" alone gives no statistic
-    QVERIFY(!any_warning(b, "configured to run at"));
+    QVERIFY(!any_line_contains(b.warnings, "configured to run at"));
   }
 
   void robotperf_statistic_is_the_notes_number_equal_to_the_value() {
@@ -212,7 +207,7 @@ class TestRos2Results : public QObject {
         "id: c1\nname: x\nresults:\n- result:\n    hardware: NVIDIA AGX Orin Dev. Kit\n    metric: power\n"
         "    metric_unit: W\n    value: 0.0\n    timestampt: '2023-07-21 17:24:12'\n";
     const bs::ImportBatch b = bs::kRobotperfYamlFileFormat.parse_text(yaml, "b.yaml");
-    QVERIFY(any_warning(b, "b.yaml:8: value: 0.0 W of power on NVIDIA AGX Orin Dev. Kit is impossible"));
+    QVERIFY(any_line_contains(b.warnings, "b.yaml:8: value: 0.0 W of power on NVIDIA AGX Orin Dev. Kit is impossible"));
   }
 
   void yaml_subset_reads_what_robotperf_writes_and_refuses_the_rest() {

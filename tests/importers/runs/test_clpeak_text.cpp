@@ -11,8 +11,15 @@
 
 #include "runs/clpeak_text.h"
 
+#include "../../support/file_text.h"
 #include "../../support/import_errors.h"
+#include "../../support/near.h"
 #include "../../support/public_data.h"
+#include "../../support/result_set_lookup.h"
+
+using bs::test::file_text;
+using bs::test::find_measurement;
+using bs::test::near;
 
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";  // the project's own fixtures
@@ -29,25 +36,9 @@ bs::ImportBatch parse_real(const std::string& name) {
   return bs::kClpeakTextFileFormat.parse(kReal + name, {}, {}, cancel);
 }
 
-const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, const std::string& metric) {
-  for (const auto& m : s.measurements)
-    if (m.name == name && m.metric == metric) return &m;
-  return nullptr;
-}
+std::string read_real(const std::string& name) { return file_text(kReal + name); }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string read_real(const std::string& name) { return read_text(kReal + name); }
-
-bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
-
-bs::ImportError error_of(const std::string& text) {
-  return bs::test::import_error_of([&] { return bs::kClpeakTextFileFormat.parse_text(text, "c.txt"); });
-}
+const auto error_of = bs::test::import_errors_of(bs::kClpeakTextFileFormat, "c.txt");
 }  // namespace
 
 class TestClpeakText : public QObject {
@@ -76,15 +67,15 @@ class TestClpeakText : public QObject {
     }
     QCOMPARE(sp, 5);
     QCOMPARE(best, 11461.23e9);
-    QCOMPARE(find(gpu, "kernel launch latency", "kernel launch latency")->unit, std::string("s"));
-    QVERIFY(near(find(gpu, "kernel launch latency", "kernel launch latency")->values[0], 5.32e-6));
-    QVERIFY(near(find(gpu, "memcpy from mapped ptr", "transfer bandwidth")->values[0], 10.35e9));
-    QCOMPARE(find(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));
-    QCOMPARE(find(gpu, "int16", "integer compute")->unit, std::string("1/s"));
-    QVERIFY(near(find(gpu, "int16", "integer compute")->values[0], 3757.27e9));
-    QVERIFY(near(find(gpu, "double", "double-precision compute")->values[0], 357.79e9));
-    QVERIFY(!find(gpu, "half", "half-precision compute"));            // "No half precision support! Skipped"
-    QCOMPARE(batch.result_sets[1].device_kind, bs::DeviceKind::Cpu);  // PoCL pthread device
+    QCOMPARE(find_measurement(gpu, "kernel launch latency", "kernel launch latency")->unit, std::string("s"));
+    QVERIFY(near(find_measurement(gpu, "kernel launch latency", "kernel launch latency")->values[0], 5.32e-6));
+    QVERIFY(near(find_measurement(gpu, "memcpy from mapped ptr", "transfer bandwidth")->values[0], 10.35e9));
+    QCOMPARE(find_measurement(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));
+    QCOMPARE(find_measurement(gpu, "int16", "integer compute")->unit, std::string("1/s"));
+    QVERIFY(near(find_measurement(gpu, "int16", "integer compute")->values[0], 3757.27e9));
+    QVERIFY(near(find_measurement(gpu, "double", "double-precision compute")->values[0], 357.79e9));
+    QVERIFY(!find_measurement(gpu, "half", "half-precision compute"));  // "No half precision support! Skipped"
+    QCOMPARE(batch.result_sets[1].device_kind, bs::DeviceKind::Cpu);    // PoCL pthread device
     QCOMPARE(batch.result_sets[1].platform, std::string("Portable Computing Language"));
     QVERIFY(batch.warnings.empty());
   }
@@ -97,12 +88,12 @@ class TestClpeakText : public QObject {
     QCOMPARE(gpu.platform, std::string("Intel(R) OpenCL HD Graphics"));
     QCOMPARE(gpu.device, std::string("Intel(R) Iris(R) Plus Graphics 650 [0x5927]"));
     QCOMPARE(gpu.device_kind, bs::DeviceKind::Gpu);
-    QVERIFY(near(find(gpu, "half2", "half-precision compute")->values[0], 1634.17e9));
-    QVERIFY(near(find(gpu, "double", "double-precision compute")->values[0], 203.47e9));
-    QVERIFY(!find(gpu, "double2", "double-precision compute"));  // clEnqueueNDRangeKernel (-5)
-    QVERIFY(!find(gpu, "int2", "double-precision compute"));     // the section ended at the failure
-    QVERIFY(near(find(gpu, "int", "integer compute fast 24bit")->values[0], 269.02e9));
-    QVERIFY(near(find(gpu, "kernel launch latency", "kernel launch latency")->values[0], 27.81e-6));
+    QVERIFY(near(find_measurement(gpu, "half2", "half-precision compute")->values[0], 1634.17e9));
+    QVERIFY(near(find_measurement(gpu, "double", "double-precision compute")->values[0], 203.47e9));
+    QVERIFY(!find_measurement(gpu, "double2", "double-precision compute"));  // clEnqueueNDRangeKernel (-5)
+    QVERIFY(!find_measurement(gpu, "int2", "double-precision compute"));     // the section ended at the failure
+    QVERIFY(near(find_measurement(gpu, "int", "integer compute fast 24bit")->values[0], 269.02e9));
+    QVERIFY(near(find_measurement(gpu, "kernel launch latency", "kernel launch latency")->values[0], 27.81e-6));
     QVERIFY(gpu.provenance.note.find("Driver version: 21.49.21786 (Linux x64)") != std::string::npos);
     for (const auto& m : gpu.measurements) QVERIFY2(m.name.find('\r') == std::string::npos, m.name.c_str());
     QCOMPARE(batch.warnings.size(), std::size_t{3});  // failed test, build log, device left out
@@ -118,16 +109,17 @@ class TestClpeakText : public QObject {
     QCOMPARE(gpu.platform, std::string("NVIDIA CUDA"));
     QCOMPARE(gpu.device, std::string("NVIDIA GeForce GTX 1080 Ti"));
     QCOMPARE(gpu.backend, std::string("OpenCL"));
-    QVERIFY(near(find(gpu, "float4", "single-precision compute")->values[0], 11455.09e9));  // "(was ...)" ignored
-    QVERIFY(!find(gpu, "half", "half-precision compute"));                                  // [unsupported]
-    QCOMPARE(find(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));     // (GB/s)
-    QVERIFY(near(find(gpu, "launch", "kernel launch latency")->values[0], 5.41e-6));        // (µs)
+    QVERIFY(near(find_measurement(gpu, "float4", "single-precision compute")->values[0],
+                 11455.09e9));                                          // "(was ...)" ignored
+    QVERIFY(!find_measurement(gpu, "half", "half-precision compute"));  // [unsupported]
+    QCOMPARE(find_measurement(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));  // (GB/s)
+    QVERIFY(near(find_measurement(gpu, "launch", "kernel launch latency")->values[0], 5.41e-6));     // (µs)
     const bs::ResultSet& cpu = batch.result_sets[1];
     QCOMPARE(cpu.backend, std::string("CPU"));
     QCOMPARE(cpu.platform, std::string("CPU"));
     QCOMPARE(cpu.device_kind, bs::DeviceKind::Cpu);
     QCOMPARE(cpu.provenance.cpu_model, cpu.device);
-    QVERIFY(near(find(cpu, "fma", "single-precision compute [AVX-512]")->values[0], 1104.37e9));
+    QVERIFY(near(find_measurement(cpu, "fma", "single-precision compute [AVX-512]")->values[0], 1104.37e9));
     QVERIFY(batch.warnings.empty());
   }
 
@@ -202,13 +194,13 @@ class TestClpeakText : public QObject {
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& gpu = batch.result_sets[0];
     QCOMPARE(gpu.device_kind, bs::DeviceKind::Gpu);
-    QVERIFY(near(find(gpu, "float", "single-precision compute")->values[0], 436.49e9));
-    QVERIFY(near(find(gpu, "half", "half-precision compute")->values[0], 738.24e9));
-    QVERIFY(near(find(gpu, "double", "double-precision compute")->values[0], 109.50e9));
-    QVERIFY(near(find(gpu, "int8", "integer compute")->values[0], 145.92e9));
-    QCOMPARE(find(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));
-    QVERIFY(near(find(gpu, "enqueueMapBuffer(for read)", "transfer bandwidth")->values[0], 681739.50e9));
-    QVERIFY(near(find(gpu, "kernel launch latency", "kernel launch latency")->values[0], 34.59e-6));
+    QVERIFY(near(find_measurement(gpu, "float", "single-precision compute")->values[0], 436.49e9));
+    QVERIFY(near(find_measurement(gpu, "half", "half-precision compute")->values[0], 738.24e9));
+    QVERIFY(near(find_measurement(gpu, "double", "double-precision compute")->values[0], 109.50e9));
+    QVERIFY(near(find_measurement(gpu, "int8", "integer compute")->values[0], 145.92e9));
+    QCOMPARE(find_measurement(gpu, "float4", "global memory bandwidth")->unit, std::string("B/s"));
+    QVERIFY(near(find_measurement(gpu, "enqueueMapBuffer(for read)", "transfer bandwidth")->values[0], 681739.50e9));
+    QVERIFY(near(find_measurement(gpu, "kernel launch latency", "kernel launch latency")->values[0], 34.59e-6));
     QCOMPARE(gpu.measurements.size(), std::size_t{5 * 5 + 6 + 1});  // 5 sections x 5 widths, 6 transfers, latency
     QVERIFY(batch.warnings.empty());
   }
@@ -221,10 +213,10 @@ class TestClpeakText : public QObject {
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
     const bs::ResultSet& gpu = batch.result_sets[0];
     QCOMPARE(gpu.platform, std::string("Intel(R) OpenCL"));
-    QVERIFY(near(find(gpu, "float8", "single-precision compute")->values[0], 375.94e9));
-    QVERIFY(!find(gpu, "enqueueMapBuffer(for read)", "transfer bandwidth"));
-    QVERIFY(near(find(gpu, "memcpy from mapped ptr", "transfer bandwidth")->values[0], 2.87e9));
-    QVERIFY(near(find(gpu, "kernel launch latency", "kernel launch latency")->values[0], 166.24e-6));
+    QVERIFY(near(find_measurement(gpu, "float8", "single-precision compute")->values[0], 375.94e9));
+    QVERIFY(!find_measurement(gpu, "enqueueMapBuffer(for read)", "transfer bandwidth"));
+    QVERIFY(near(find_measurement(gpu, "memcpy from mapped ptr", "transfer bandwidth")->values[0], 2.87e9));
+    QVERIFY(near(find_measurement(gpu, "kernel launch latency", "kernel launch latency")->values[0], 166.24e-6));
     QCOMPARE(batch.warnings.size(), std::size_t{2});
     QVERIFY2(batch.warnings[0].starts_with(kReal + "hd4600-crlf-inf.log:27: enqueueMapBuffer(for read): 'inf'"),
              batch.warnings[0].c_str());
@@ -240,16 +232,17 @@ class TestClpeakText : public QObject {
     const auto batch = parse_real("pocl-power9-v100-negative-latency.log");
     QCOMPARE(batch.result_sets.size(), std::size_t{5});
     QCOMPARE(batch.result_sets[0].device_kind, bs::DeviceKind::Cpu);  // pthread-POWER9
-    QVERIFY(near(find(batch.result_sets[0], "float16", "single-precision compute")->values[0], 910.81e9));
-    QVERIFY(near(find(batch.result_sets[0], "kernel launch latency", "kernel launch latency")->values[0], 76.72e-6));
+    QVERIFY(near(find_measurement(batch.result_sets[0], "float16", "single-precision compute")->values[0], 910.81e9));
+    QVERIFY(near(find_measurement(batch.result_sets[0], "kernel launch latency", "kernel launch latency")->values[0],
+                 76.72e-6));
     const double v100[] = {15600.19e9, 15653.73e9, 15619.53e9, 15610.50e9};
     const char* at[] = {"float2", "float2", "float", "float2"};
     for (std::size_t i = 0; i < 4; ++i) {
       const bs::ResultSet& gpu = batch.result_sets[i + 1];
       QCOMPARE(gpu.device, std::string("Tesla V100-SXM2-16GB"));
       QCOMPARE(gpu.device_kind, bs::DeviceKind::Gpu);
-      QVERIFY(near(find(gpu, at[i], "single-precision compute")->values[0], v100[i]));
-      QVERIFY(!find(gpu, "kernel launch latency", "kernel launch latency"));
+      QVERIFY(near(find_measurement(gpu, at[i], "single-precision compute")->values[0], v100[i]));
+      QVERIFY(!find_measurement(gpu, "kernel launch latency", "kernel launch latency"));
     }
     QCOMPARE(batch.warnings.size(), std::size_t{4});
     QVERIFY(batch.warnings[0].starts_with(kReal + "pocl-power9-v100-negative-latency.log:108: kernel launch latency"));
@@ -271,8 +264,8 @@ class TestClpeakText : public QObject {
     QCOMPARE(cpu.backend, std::string("OpenCL"));
     QCOMPARE(cpu.device, std::string("AMD FX(tm)-8350 Eight-Core Processor"));
     QCOMPARE(cpu.device_kind, bs::DeviceKind::Cpu);
-    QVERIFY(near(find(cpu, "float16", "single-precision compute")->values[0], 95.10e9));
-    QVERIFY(near(find(cpu, "double8", "double-precision compute")->values[0], 50.76e9));
+    QVERIFY(near(find_measurement(cpu, "float16", "single-precision compute")->values[0], 95.10e9));
+    QVERIFY(near(find_measurement(cpu, "double8", "double-precision compute")->values[0], 50.76e9));
     QVERIFY(batch.warnings.empty());
   }
 
@@ -285,9 +278,9 @@ class TestClpeakText : public QObject {
     const bs::ResultSet& cpu = batch.result_sets[0];
     QCOMPARE(cpu.platform, std::string("Portable Computing Language"));
     QCOMPARE(cpu.device_kind, bs::DeviceKind::Cpu);
-    QVERIFY(near(find(cpu, "float4", "single-precision compute")->values[0], 8.44e9));
-    QVERIFY(near(find(cpu, "double2", "double-precision compute")->values[0], 6.22e9));
-    QVERIFY(!find(cpu, "double8", "double-precision compute"));
+    QVERIFY(near(find_measurement(cpu, "float4", "single-precision compute")->values[0], 8.44e9));
+    QVERIFY(near(find_measurement(cpu, "double2", "double-precision compute")->values[0], 6.22e9));
+    QVERIFY(!find_measurement(cpu, "double8", "double-precision compute"));
     QCOMPARE(batch.warnings.size(), std::size_t{1});
     QVERIFY2(batch.warnings[0].starts_with(kReal + "pocl-i7-2620m-segfault-prompt.txt:27: double8: expected a number"),
              batch.warnings[0].c_str());
@@ -299,8 +292,8 @@ class TestClpeakText : public QObject {
     // 41.61 / 45.24 / 45.09 / 44.94 / 44.78 -> 45.24 GFLOPS (float2).
     const auto batch = parse_real("beignet-ivybridge-latency-error.log");
     QCOMPARE(batch.result_sets.size(), std::size_t{1});
-    QVERIFY(near(find(batch.result_sets[0], "float2", "single-precision compute")->values[0], 45.24e9));
-    QVERIFY(!find(batch.result_sets[0], "kernel launch latency", "kernel launch latency"));
+    QVERIFY(near(find_measurement(batch.result_sets[0], "float2", "single-precision compute")->values[0], 45.24e9));
+    QVERIFY(!find_measurement(batch.result_sets[0], "kernel launch latency", "kernel launch latency"));
     QCOMPARE(batch.warnings.size(), std::size_t{1});
     QVERIFY(batch.warnings[0].find("clGetEventProfileInfo(-7)") != std::string::npos);
   }
@@ -326,13 +319,13 @@ class TestClpeakText : public QObject {
     const auto nano = parse_real("pocl-jetson-nano-note.txt");
     QCOMPARE(nano.result_sets.size(), std::size_t{1});
     QCOMPARE(nano.result_sets[0].device, std::string("NVIDIA Tegra X1"));
-    QVERIFY(near(find(nano.result_sets[0], "float4", "single-precision compute")->values[0], 230.95e9));
+    QVERIFY(near(find_measurement(nano.result_sets[0], "float4", "single-precision compute")->values[0], 230.95e9));
     QVERIFY(nano.warnings.empty());
     // Xeon Phi 7120 under Intel OpenCL, then two platforms that list no device. Single precision
     // 2130.58 / 2262.12 / 2255.07 / 2247.39 / 2213.89 -> 2262.12 GFLOPS (float2).
     const auto phi = parse_real("xeon-phi-empty-platforms.log");
     QCOMPARE(phi.result_sets.size(), std::size_t{1});
-    QVERIFY(near(find(phi.result_sets[0], "float2", "single-precision compute")->values[0], 2262.12e9));
+    QVERIFY(near(find_measurement(phi.result_sets[0], "float2", "single-precision compute")->values[0], 2262.12e9));
   }
 
   void clpeak2_vulkan_backend_banner_and_tflops() {
@@ -347,14 +340,14 @@ class TestClpeakText : public QObject {
     QCOMPARE(gpu.device, std::string("AMD Radeon RX 9070 XT (RADV GFX1201)"));
     QCOMPARE(gpu.device_kind, bs::DeviceKind::Gpu);
     QVERIFY(gpu.provenance.note.find("VRAM: 16304 MB") != std::string::npos);
-    QVERIFY(near(find(gpu, "float2", "single-precision compute")->values[0], 43973.95e9));
-    QVERIFY(near(find(gpu, "half4", "half-precision compute fp16xfp16+fp16")->values[0], 54536.66e9));
-    const auto* fp8 = find(gpu, "coopmat_fp8_e4m3", "cooperative-matrix fp8(e4m3)xfp8(e4m3)+fp32 16x16x16");
+    QVERIFY(near(find_measurement(gpu, "float2", "single-precision compute")->values[0], 43973.95e9));
+    QVERIFY(near(find_measurement(gpu, "half4", "half-precision compute fp16xfp16+fp16")->values[0], 54536.66e9));
+    const auto* fp8 = find_measurement(gpu, "coopmat_fp8_e4m3", "cooperative-matrix fp8(e4m3)xfp8(e4m3)+fp32 16x16x16");
     QVERIFY(fp8);
     QCOMPARE(fp8->unit, std::string("FLOP/s"));
     QVERIFY(near(fp8->values[0], 386.00e12));
-    QVERIFY(near(find(gpu, "int", "integer compute int32")->values[0], 5306.11e9));  // GOPS
-    QCOMPARE(find(gpu, "int", "integer compute int32")->unit, std::string("1/s"));
+    QVERIFY(near(find_measurement(gpu, "int", "integer compute int32")->values[0], 5306.11e9));  // GOPS
+    QCOMPARE(find_measurement(gpu, "int", "integer compute int32")->unit, std::string("1/s"));
     QCOMPARE(gpu.measurements.size(), std::size_t{3 * 5 + 4 + 1});
     QVERIFY(batch.warnings.empty());
     QVERIFY(bs::FormatImporter(bs::kClpeakTextFileFormat).sniff(read_real("vulkan-rx9070xt-clpeak2.txt"), "x.txt") >=
@@ -371,9 +364,9 @@ class TestClpeakText : public QObject {
     QCOMPARE(gpu.platform, std::string("AMD Accelerated Parallel Processing"));
     QCOMPARE(gpu.device, std::string("gfx1201"));
     QCOMPARE(gpu.device_kind, bs::DeviceKind::Gpu);
-    QVERIFY(near(find(gpu, "float16", "single-precision compute")->values[0], 26556.29e9));
-    QVERIFY(near(find(gpu, "int4", "integer compute")->values[0], 5508.20e9));
-    QVERIFY(near(find(gpu, "int2", "integer compute fast 24bit")->values[0], 23896.53e9));
+    QVERIFY(near(find_measurement(gpu, "float16", "single-precision compute")->values[0], 26556.29e9));
+    QVERIFY(near(find_measurement(gpu, "int4", "integer compute")->values[0], 5508.20e9));
+    QVERIFY(near(find_measurement(gpu, "int2", "integer compute fast 24bit")->values[0], 23896.53e9));
     QVERIFY(batch.warnings.empty());
   }
 
@@ -386,11 +379,11 @@ class TestClpeakText : public QObject {
     QCOMPARE(cpu.backend, std::string("CPU"));
     QCOMPARE(cpu.device_kind, bs::DeviceKind::Cpu);
     QCOMPARE(cpu.device, std::string("Virtual CPU @ 2.95GHz"));
-    const auto* sse2 = find(cpu, "fdiv fp32 ST", "divide and square-root throughput [SSE2]");
+    const auto* sse2 = find_measurement(cpu, "fdiv fp32 ST", "divide and square-root throughput [SSE2]");
     QVERIFY(sse2);
     QCOMPARE(sse2->unit, std::string("FLOP/s"));
     QVERIFY(near(sse2->values[0], 8.48e9));
-    QVERIFY(near(find(cpu, "fdiv fp32 MT", "divide and square-root throughput [AVX2]")->values[0], 92.8e9));
+    QVERIFY(near(find_measurement(cpu, "fdiv fp32 MT", "divide and square-root throughput [AVX2]")->values[0], 92.8e9));
     QCOMPARE(cpu.measurements.size(), std::size_t{16});
     QVERIFY(batch.warnings.empty());
   }
@@ -400,7 +393,7 @@ class TestClpeakText : public QObject {
     // (the shared folder's tests/data/bad/, described in tests/data/importers/clpeak/SOURCES there).
     BENCHSCOPE_REQUIRE_PUBLIC_DATA("tests/data/bad");
     const bs::ImportError rpi =
-        error_of(read_text(bs::test::public_data("tests/data/bad/clpeak-rpi5-queue-error.txt")));
+        error_of(file_text(bs::test::public_data("tests/data/bad/clpeak-rpi5-queue-error.txt")));
     QCOMPARE(rpi.category(), bs::ImportErrorCategory::MissingField);
     QCOMPARE(rpi.location().line, std::size_t{3});
   }

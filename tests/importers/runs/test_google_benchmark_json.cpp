@@ -12,30 +12,24 @@
 #include "analysis/peaks/foreign_sweeps.h"
 #include "runs/google_benchmark_json.h"
 
+#include "../../support/file_text.h"
+#include "../../support/near.h"
 #include "../../support/public_data.h"
+#include "../../support/result_set_lookup.h"
+
+using bs::test::file_text;
+using bs::test::find_measurement;
+using bs::test::near;
+using bs::test::setting;
 
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/google-benchmark/";
 const std::string kRealFolder = "tests/data/importers/google-benchmark";
 
-const bs::Measurement* find(const bs::ResultSet& s, const std::string& name, const std::string& metric) {
-  for (const auto& m : s.measurements)
-    if (m.name == name && m.metric == metric) return &m;
-  return nullptr;
-}
-
 double aggregate(const bs::Measurement& m, const std::string& name) {
   for (const auto& [key, value] : m.reported_aggregates)
     if (key == name) return value;
   return -1;
-}
-
-bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
-
-std::string setting(const bs::Provenance& p, const std::string& key) {
-  for (const auto& [k, v] : p.settings)
-    if (k == key) return v;
-  return "(absent)";
 }
 
 // The ImportError of parsing `text`, or a failure when it was accepted.
@@ -53,13 +47,6 @@ std::string with_rows(const std::vector<std::string>& rows) {
   std::string out = "{\"context\": {\"host_name\": \"h\"},\n\"benchmarks\": [";
   for (std::size_t i = 0; i < rows.size(); ++i) out += (i ? ",\n{" : "\n{") + rows[i] + "}";
   return out + "]}";
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
 }
 
 bs::ImportBatch parse_file(const std::string& name) {
@@ -97,7 +84,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QCOMPARE(s.provenance.origin, bs::DataOrigin::Measured);
     QCOMPARE(s.provenance.host, std::string("robot-nuc"));
     QCOMPARE(s.provenance.date, std::string("2026-11-21T14:02:11+00:00"));
-    const auto* real = find(s, "BM_Rotate/4096", "real_time");
+    const auto* real = find_measurement(s, "BM_Rotate/4096", "real_time");
     QVERIFY(real);
     QCOMPARE(real->unit, std::string("s"));
     QCOMPARE(real->values.size(), std::size_t{3});  // one per repetition
@@ -109,19 +96,19 @@ class TestGoogleBenchmarkJson : public QObject {
     QVERIFY(near(aggregate(*real, "mean"), 13.341e-3));
     QVERIFY(near(aggregate(*real, "stddev"), 8.7e-5));
     QVERIFY(near(aggregate(*real, "cv"), 6.5e-3));  // a ratio, not scaled
-    const auto* cpu = find(s, "BM_Rotate/4096", "cpu_time");
+    const auto* cpu = find_measurement(s, "BM_Rotate/4096", "cpu_time");
     QVERIFY(cpu && near(cpu->values[1], 13.296e-3));
-    const auto* flops = find(s, "BM_Rotate/4096", "FLOPS");
+    const auto* flops = find_measurement(s, "BM_Rotate/4096", "FLOPS");
     QVERIFY(flops);
     QCOMPARE(flops->unit, std::string("FLOP/s"));
     QCOMPARE(flops->values, (std::vector<double>{2.9612e10, 2.9565e10, 2.9255e10}));
-    QCOMPARE(find(s, "BM_Rotate/4096", "items_per_second")->unit, std::string("1/s"));
-    const auto* copy = find(s, "BM_Copy/1048576", "bytes_per_second");
+    QCOMPARE(find_measurement(s, "BM_Rotate/4096", "items_per_second")->unit, std::string("1/s"));
+    const auto* copy = find_measurement(s, "BM_Copy/1048576", "bytes_per_second");
     QVERIFY(copy);
     QCOMPARE(copy->unit, std::string("B/s"));
-    QVERIFY(near(find(s, "BM_Copy/1048576", "real_time")->values[0], 206.4e-6));  // us -> s
-    QVERIFY(!find(s, "BM_Rotate/4096", "iterations"));                            // bookkeeping, not a counter
-    QVERIFY(!find(s, "BM_Broken", "real_time"));
+    QVERIFY(near(find_measurement(s, "BM_Copy/1048576", "real_time")->values[0], 206.4e-6));  // us -> s
+    QVERIFY(!find_measurement(s, "BM_Rotate/4096", "iterations"));  // bookkeeping, not a counter
+    QVERIFY(!find_measurement(s, "BM_Broken", "real_time"));
     QCOMPARE(batch.warnings.size(), std::size_t{1});
     QVERIFY(batch.warnings[0].find("OpenCL device not found") != std::string::npos);
     QVERIFY(batch.warnings[0].starts_with(kData + "rotation-repetitions.json:"));
@@ -136,22 +123,22 @@ class TestGoogleBenchmarkJson : public QObject {
     QCOMPARE(s.provenance.tool, std::string("google-benchmark v1.8.3"));
     QVERIFY(s.provenance.note.find("scaling was on") != std::string::npos);
     const std::string run = "BM_RotateNeon/16384/threads:4";
-    const auto* real = find(s, run, "real_time");
+    const auto* real = find_measurement(s, run, "real_time");
     QVERIFY(real);
     QVERIFY(real->values.empty());  // --benchmark_report_aggregates_only: no repetitions, only aggregates
     QVERIFY(near(aggregate(*real, "mean"), 4.83125e-3));
     QVERIFY(near(aggregate(*real, "median"), 4.829e-3));
     QVERIFY(near(aggregate(*real, "cv"), 2.5873221216041399e-03));
-    const auto* gflops = find(s, run, "GFLOPS");
+    const auto* gflops = find_measurement(s, run, "GFLOPS");
     QVERIFY(gflops);
     QCOMPARE(gflops->unit, std::string("FLOP/s"));
     QVERIFY(near(aggregate(*gflops, "mean"), 8.1401e9));  // GFLOPS -> FLOP/s
     QVERIFY(near(aggregate(*gflops, "cv"), 2.5798208866475845e-03));
     // Infinity / NaN counters are left out with a warning naming the line; the times of that row stay.
-    QVERIFY(find(s, "BM_Idle", "real_time"));
-    QVERIFY(!find(s, "BM_Idle", "bytes_per_second"));
-    QVERIFY(!find(s, "BM_Idle", "items_per_second"));
-    QVERIFY(!find(s, "BM_NeedsGpu", "real_time"));
+    QVERIFY(find_measurement(s, "BM_Idle", "real_time"));
+    QVERIFY(!find_measurement(s, "BM_Idle", "bytes_per_second"));
+    QVERIFY(!find_measurement(s, "BM_Idle", "items_per_second"));
+    QVERIFY(!find_measurement(s, "BM_NeedsGpu", "real_time"));
     QCOMPARE(batch.warnings.size(), std::size_t{3});
     QVERIFY(batch.warnings[0].find(":106:") != std::string::npos);  // "bytes_per_second": Infinity
     QVERIFY(batch.warnings[0].find("/benchmarks/4/bytes_per_second") != std::string::npos);
@@ -165,13 +152,13 @@ class TestGoogleBenchmarkJson : public QObject {
     const bs::ResultSet& s = batch.result_sets[0];
     QCOMPARE(s.platform, std::string("h"));
     QCOMPARE(s.device, std::string("CPU"));  // no num_cpus / mhz_per_cpu
-    QCOMPARE(find(s, "BM", "flop_count")->unit, std::string(""));
-    QCOMPARE(find(s, "BM", "MFLOP/s")->unit, std::string("FLOP/s"));
-    QCOMPARE(find(s, "BM", "MFLOP/s")->values[0], 3e6);
-    QCOMPARE(find(s, "BM", "flops_per_second")->values[0], 7.0);
-    QCOMPARE(find(s, "BM", "TFLOPS")->values[0], 2e12);
-    QCOMPARE(find(s, "BM", "cache_misses")->unit, std::string(""));
-    QCOMPARE(find(s, "BM", "real_time")->values[0], 2e-9);
+    QCOMPARE(find_measurement(s, "BM", "flop_count")->unit, std::string(""));
+    QCOMPARE(find_measurement(s, "BM", "MFLOP/s")->unit, std::string("FLOP/s"));
+    QCOMPARE(find_measurement(s, "BM", "MFLOP/s")->values[0], 3e6);
+    QCOMPARE(find_measurement(s, "BM", "flops_per_second")->values[0], 7.0);
+    QCOMPARE(find_measurement(s, "BM", "TFLOPS")->values[0], 2e12);
+    QCOMPARE(find_measurement(s, "BM", "cache_misses")->unit, std::string(""));
+    QCOMPARE(find_measurement(s, "BM", "real_time")->values[0], 2e-9);
   }
 
   void bad_time_unit_names_the_field() {
@@ -230,7 +217,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QCOMPARE(setting(s.provenance, "executable"), std::string("bin\\spla-measure.exe"));
     QCOMPARE(setting(s.provenance, "workers from"), std::string("threads"));
     const std::string run = "Burkhardt/Amazon0302.txt/iterations:1";
-    const auto* real = find(s, run, "real_time");
+    const auto* real = find_measurement(s, run, "real_time");
     QVERIFY(real);
     QCOMPARE(real->values.size(), std::size_t{30});
     QVERIFY(near(real->values[0], 31080.099999599042e-6));
@@ -243,7 +230,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QVERIFY(near(summary->sd, 23701.523609235577e-6));
     QVERIFY(near(summary->min, 17028.600000230654e-6));  // repetition 2
     QVERIFY(near(summary->max, 117996.89999952534e-6));  // repetition 6
-    QVERIFY(find(s, run, "triangles"));                  // a user counter without a unit
+    QVERIFY(find_measurement(s, run, "triangles"));      // a user counter without a unit
     QVERIFY(batch.warnings.empty());
     QVERIFY(bs::foreign_sweeps(s).empty());  // no FLOP/s counter: nothing for the FLOPS view
   }
@@ -262,7 +249,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QCOMPARE(setting(s.provenance, "load_avg"), std::string("24.8516 12.5483 7.1123"));
     // num_sharing 0 on this Mac: no "(x0)".
     QCOMPARE(setting(s.provenance, "caches"), std::string("L1 Data 64 KiB, L1 Instruction 128 KiB, L2 Unified 4 MiB"));
-    const auto* items = find(s, "BM_AllocationThroughput/64/threads:32", "items_per_second");
+    const auto* items = find_measurement(s, "BM_AllocationThroughput/64/threads:32", "items_per_second");
     QVERIFY(items);
     QCOMPARE(items->unit, std::string("1/s"));
     QCOMPARE(items->values, std::vector<double>{1.0817681500412426e+06});
@@ -276,7 +263,8 @@ class TestGoogleBenchmarkJson : public QObject {
     const bs::ResultSet& s = batch.result_sets.at(0);
     QCOMPARE(s.platform, std::string("liuly-PC-2024"));
     QCOMPARE(s.measurements.size(), std::size_t{36});  // 12 benchmarks x (real_time, cpu_time, bytes)
-    QVERIFY(near(find(s, "BM_ConcurrentParseText/threads:20", "real_time")->values.at(0), 3.5429222517930748e-06));
+    QVERIFY(near(find_measurement(s, "BM_ConcurrentParseText/threads:20", "real_time")->values.at(0),
+                 3.5429222517930748e-06));
     QVERIFY(s.provenance.note.find("scaling was on") != std::string::npos);
     QVERIFY(batch.warnings.empty());
   }
@@ -338,7 +326,7 @@ class TestGoogleBenchmarkJson : public QObject {
     const auto peak = bs::find_peak(runs[0]);
     QVERIFY(peak && near(peak->flops, 15.2e9) && peak->workers == 4 && peak->at_peak.n == 1);
     // The caller's option wins over the file; argument 1 does not exist, so nothing is swept (with a warning).
-    const std::string text = read_text(kData + "rotation-argument-sweep.json");
+    const std::string text = file_text(kData + "rotation-argument-sweep.json");
     bs::ParseOptions options;
     options.workers_argument = 1;
     const auto other = bs::parse_google_benchmark_json(text, "a.json", options);
@@ -436,11 +424,11 @@ class TestGoogleBenchmarkJson : public QObject {
         "\"benchmarks\":[{\"name\":\"BM/threads:2\",\"threads\":2,\"real_time\":1,\"cpu_time\":1,"
         "\"items_per_second\":3e9}]}";
     auto batch = bs::parse_google_benchmark_json("{\"context\":{\"benchscope_item\":\"flop\"}," + rows, "i.json");
-    QCOMPARE(find(batch.result_sets[0], "BM/threads:2", "items_per_second")->unit, std::string("FLOP/s"));
+    QCOMPARE(find_measurement(batch.result_sets[0], "BM/threads:2", "items_per_second")->unit, std::string("FLOP/s"));
     const auto runs = bs::foreign_sweeps(batch.result_sets[0]);
     QVERIFY(runs.size() == 1 && runs[0].samples.at(0).workers == 2 && runs[0].variant == "BM (items_per_second)");
     batch = bs::parse_google_benchmark_json("{\"context\":{}," + rows, "i.json");
-    QCOMPARE(find(batch.result_sets[0], "BM/threads:2", "items_per_second")->unit, std::string("1/s"));
+    QCOMPARE(find_measurement(batch.result_sets[0], "BM/threads:2", "items_per_second")->unit, std::string("1/s"));
     QVERIFY(bs::foreign_sweeps(batch.result_sets[0]).empty());
     QCOMPARE(error_of("{\"context\":{\"benchscope_item\":\"byte\"}," + rows).location().field,
              std::string("/context/benchscope_item"));
@@ -475,8 +463,8 @@ class TestGoogleBenchmarkJson : public QObject {
                    "\"name\":\"BM_X_stddev\"," + r + "2,\"FLOPS\":1.4142"}),
         "o.json");
     const bs::ResultSet& s = batch.result_sets.at(0);
-    QVERIFY(!find(s, "BM_X_mean", "FLOPS"));
-    const auto* flops = find(s, "BM_X", "FLOPS");
+    QVERIFY(!find_measurement(s, "BM_X_mean", "FLOPS"));
+    const auto* flops = find_measurement(s, "BM_X", "FLOPS");
     QVERIFY(flops && flops->values.size() == 2);
     QCOMPARE(aggregate(*flops, "mean"), 5.0);
     QCOMPARE(aggregate(*flops, "repetitions"), -1.0);  // not stated before 1.5: n is the repetition rows read
@@ -499,7 +487,7 @@ class TestGoogleBenchmarkJson : public QObject {
     QCOMPARE(s.provenance.date, std::string("08/16/16 02:47:06"));
     QCOMPARE(s.provenance.tool, std::string("google-benchmark"));
     QCOMPARE(s.measurements.size(), std::size_t{16});  // 8 benchmarks x (real_time, cpu_time), no "_mean" ones
-    const auto* real = find(s, "BM_TC1Acceleration/1000/1.95313k/10", "real_time");
+    const auto* real = find_measurement(s, "BM_TC1Acceleration/1000/1.95313k/10", "real_time");
     QVERIFY(real);
     QCOMPARE(real->values.size(), std::size_t{3});
     QVERIFY(near(aggregate(*real, "mean"), 40140894e-9));

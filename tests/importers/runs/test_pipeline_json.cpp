@@ -9,6 +9,7 @@
 #include "runs/pipeline_json.h"
 
 #include "../../support/import_errors.h"
+#include "../../support/run_on.h"
 #include "workspace/registry.h"
 
 namespace {
@@ -58,10 +59,7 @@ class TestPipelineJson : public QObject {
   }
 
   void write_then_read_is_exact() {
-    bs::PipelineRun r;
-    r.platform = "robot";
-    r.device = "CPU (2 threads)";
-    r.backend = "cpu";
+    auto r = bs::test::run_on<bs::PipelineRun>("robot", "CPU (2 threads)", "cpu");
     r.demosaic = "fused";
     r.detector = "hog";
     r.frame_width = 640;

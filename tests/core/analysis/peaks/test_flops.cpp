@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
+#include "../../../support/run_on.h"
 #include "analysis/peaks/flops.h"
 
 namespace {
 bs::FlopsRun run_with(std::vector<bs::WorkerSample> samples, int dims = 4, std::int64_t n = 40000) {
-  bs::FlopsRun r;
-  r.platform = "P";
-  r.device = "D";
-  r.backend = "B";
+  auto r = bs::test::run_on<bs::FlopsRun>("P", "D", "B");
   r.dims = dims;
   r.iterations = n;
   r.samples = std::move(samples);

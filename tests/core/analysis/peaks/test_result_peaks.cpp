@@ -10,7 +10,11 @@
 #include "model/measure_class.h"
 #include "runs/clpeak_text.h"
 
+#include "../../../support/near.h"
 #include "../../../support/public_data.h"
+#include "../../../support/run_on.h"
+
+using bs::test::near;
 
 namespace {
 
@@ -21,8 +25,6 @@ std::vector<bs::ResultSet> sets_of(const std::string& fixture) {
       .parse(bs::test::public_data(std::string(kRealFolder) + "/" + fixture), {}, {}, bs::CancelToken{})
       .result_sets;
 }
-
-bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
 
 bs::MeasureClass cls(const char* metric, const char* name, const char* unit) {
   return bs::classify_measurement(metric, name, unit);
@@ -131,11 +133,7 @@ class TestResultPeaks : public QObject {
     // UHD 620: transfer "enqueueMapBuffer(for read) : 681739.50" GB/s must not become the memory ceiling; global
     // memory bandwidth peaks at float4 29.73 GB/s.
     const auto sets = sets_of("uhd620-neo.log");
-    bs::FlopsRun run;
-    run.platform = sets[0].platform;
-    run.device = sets[0].device;
-    run.device_kind = bs::DeviceKind::Gpu;
-    run.backend = "OpenCL";
+    auto run = bs::test::run_on<bs::FlopsRun>(sets[0].platform, sets[0].device, bs::DeviceKind::Gpu, "OpenCL");
     run.samples = {{1024, {0.001}}};
     const auto ceilings = bs::roofline_ceilings(std::span<const bs::FlopsRun>(&run, 1), sets);
     QCOMPARE(ceilings.size(), std::size_t{1});

@@ -6,16 +6,14 @@
 
 #include <cmath>
 
+#include "../../../support/run_on.h"
 #include "analysis/platform/inference_table.h"
 #include "report/platform_report.h"
 
 namespace {
 
 bs::DnnRun run() {
-  bs::DnnRun r;
-  r.platform = "robot";
-  r.device = "CPU (4 OpenCV threads)";
-  r.backend = "cpu";
+  auto r = bs::test::run_on<bs::DnnRun>("robot", "CPU (4 OpenCV threads)", "cpu");
   r.model = "yolo-n";
   r.family = "YOLOv8";
   r.architecture_only = true;

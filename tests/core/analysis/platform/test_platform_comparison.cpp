@@ -2,34 +2,15 @@
 // Platform comparison and recommendation on the paper's sample data (its numbers and its conclusion), and energy
 // per frame against analytic values.
 #include <cmath>
-#include <filesystem>
 
 #include <QTest>
 
+#include "../../../support/paper_sample.h"
+#include "../../../support/run_on.h"
 #include "analysis/platform/platform_comparison.h"
 #include "workspace/registry.h"
 
 namespace {
-
-struct Paper {
-  std::vector<bs::FlopsRun> runs;
-  std::vector<bs::PowerTrace> traces;
-  std::vector<bs::PipelineRun> pipelines;
-};
-
-Paper load_paper() {
-  Paper p;
-  for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
-    const auto ext = e.path().extension();
-    if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
-    if (e.path().parent_path().filename() == "frames") continue;  // the sample capture's sidecar is not data
-    auto batch = bs::import_file(e.path().string(), bs::CancelToken{});
-    for (auto& r : batch.runs) p.runs.push_back(std::move(r));
-    for (auto& t : batch.power_traces) p.traces.push_back(std::move(t));
-    for (auto& r : batch.pipeline_runs) p.pipelines.push_back(std::move(r));
-  }
-  return p;
-}
 
 const bs::PlatformRow& row(const std::vector<bs::PlatformRow>& rows, const std::string& name) {
   for (const auto& r : rows)
@@ -73,7 +54,7 @@ class TestPlatformComparison : public QObject {
   Q_OBJECT
  private slots:
   void paper_numbers() {
-    const Paper p = load_paper();
+    const auto p = bs::test::load_paper_sample();
     const auto rows = bs::compare_platforms(p.runs, p.traces, {});
     const auto& nuc = row(rows, "NUC");
     const auto& jetson = row(rows, "Jetson TX2");
@@ -92,7 +73,7 @@ class TestPlatformComparison : public QObject {
   }
 
   void the_papers_recommendation() {
-    const Paper p = load_paper();
+    const auto p = bs::test::load_paper_sample();
     const auto rows = bs::compare_platforms(p.runs, p.traces, {});
     const auto pick = [&](const bs::Constraints& c) {
       std::string chosen;
@@ -188,10 +169,7 @@ class TestPlatformComparison : public QObject {
       ch.values.push_back(12.5);
     }
     t.channels.push_back(ch);
-    bs::PipelineRun run;
-    run.platform = "robot";
-    run.device = "CPU";
-    run.backend = "cpu";
+    auto run = bs::test::run_on<bs::PipelineRun>("robot", "CPU", "cpu");
     run.stages = {{"preprocess", 40, 0.008, 0.001, {}, {}, {}, {}}, {"detect", 40, 0.152, 0.02, 0.1, 0.2, {}, {}}};
     const auto timings = bs::pipeline_timings(std::vector<bs::PipelineRun>{run});
     QCOMPARE(timings.size(), std::size_t{1});
@@ -216,7 +194,7 @@ class TestPlatformComparison : public QObject {
   }
 
   void paper_pipeline_timings_and_energy_per_frame() {
-    const Paper p = load_paper();
+    const auto p = bs::test::load_paper_sample();
     QCOMPARE(p.pipelines.size(), std::size_t{2});
     const auto rows = bs::compare_platforms(p.runs, p.traces, bs::pipeline_timings(p.pipelines));
     const auto& nuc = row(rows, "NUC");
@@ -267,7 +245,7 @@ class TestPlatformComparison : public QObject {
   }
 
   void the_mission_changes_the_recommendation() {
-    const Paper p = load_paper();
+    const auto p = bs::test::load_paper_sample();
     bs::ComparisonOptions o;
     o.mission = "idle:60:0";  // no servo load: the paper's constant-power minutes
     auto rows = bs::compare_platforms(p.runs, p.traces, {}, o);

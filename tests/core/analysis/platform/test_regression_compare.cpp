@@ -5,6 +5,7 @@
 
 #include <QTest>
 
+#include "../../../support/run_on.h"
 #include "analysis/peaks/flops.h"
 #include "analysis/platform/regression_compare.h"
 
@@ -14,10 +15,7 @@ namespace {
 bs::FlopsRun make_run(double slowdown, int reps, double noise_sd, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, noise_sd);
-  bs::FlopsRun r;
-  r.platform = "NUC";
-  r.device = "NUC GPU";
-  r.backend = "OpenCL";
+  auto r = bs::test::run_on<bs::FlopsRun>("NUC", "NUC GPU", "OpenCL");
   r.dims = 4;
   r.iterations = 40000;
   for (std::int64_t w : {256, 512, 1024}) {

@@ -72,9 +72,7 @@ class TestPowerPaper : public QObject {
 
   // Each platform's best run, whatever its device, paired with its log: the rows the CLI and the GUI show.
   void platform_efficiency_picks_the_best_run() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    bs::test::load_paper_sample(runs, traces);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     std::sort(traces.begin(), traces.end(), [](const auto& a, const auto& b) { return a.platform > b.platform; });
     const bs::EfficiencyComparison table = bs::compare_efficiency(runs, traces);
     const auto& rows = table.rows;
@@ -105,9 +103,7 @@ class TestPowerPaper : public QObject {
   // Issue #50.5: a tegrastats log (the module's input rail in mW, no supply current) gives its platform the
   // mean-power figures and says why the paper's is missing; a log of a platform without runs is named with why.
   void a_log_of_power_only_gives_the_mean_power_figures() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    bs::test::load_paper_sample(runs, traces);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     std::vector<bs::PowerTrace> logs;
     for (const char* file : {"tegrastats-tx2-jetpack4.log", "tegrastats-orin-jetpack6.log"})
       for (bs::PowerTrace& t :

@@ -2,6 +2,7 @@
 // Roofline arithmetic: the roof, the ridge, placement of kernels, and ceilings gathered from runs and results.
 #include <QTest>
 
+#include "../../../support/run_on.h"
 #include "analysis/roofline/roofline.h"
 
 class TestRoofline : public QObject {
@@ -36,10 +37,7 @@ class TestRoofline : public QObject {
     QVERIFY(std::fabs(r.fraction - 350.0 / 400.0) < 1e-12);
   }
   void ceilings_from_runs_and_results() {
-    bs::FlopsRun run;
-    run.platform = "vm";
-    run.device = "CPU";
-    run.backend = "CPU SIMD";
+    auto run = bs::test::run_on<bs::FlopsRun>("vm", "CPU", "CPU SIMD");
     run.dims = 4;
     run.iterations = 1000;
     run.samples = {{1, {1e-3}}};

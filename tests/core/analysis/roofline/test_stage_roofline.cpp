@@ -7,6 +7,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../../../support/run_on.h"
 #include "analysis/roofline/stage_roofline.h"
 #include "store/workspace.h"
 #include "workspace/registry.h"
@@ -19,10 +20,7 @@ bool close(double a, double b, double rel = 1e-12) {
 
 bs::PipelineRun run_of(const std::string& platform, const std::string& device, const std::string& backend,
                        const std::string& demosaic, int w, int h, double mean_s, double sd_s) {
-  bs::PipelineRun r;
-  r.platform = platform;
-  r.device = device;
-  r.backend = backend;
+  auto r = bs::test::run_on<bs::PipelineRun>(platform, device, backend);
   r.demosaic = demosaic;
   r.frame_width = w;
   r.frame_height = h;

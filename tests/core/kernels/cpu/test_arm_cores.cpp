@@ -13,9 +13,11 @@
 #include "analysis/peaks/device_table.h"
 #include "kernels/cpu/arm_cores.h"
 
+#include "../../../support/near.h"
 #include "../../../support/public_data.h"
 
 namespace fs = std::filesystem;
+using bs::test::near;
 using namespace bs::kernels;
 
 namespace {
@@ -28,8 +30,6 @@ ArmCpu board(const char* name, const fs::path& sysfs_root = "/nonexistent") {
   if (!cpu) qFatal("%s: not described as ARM", name);
   return *cpu;
 }
-
-bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
 
 }  // namespace
 

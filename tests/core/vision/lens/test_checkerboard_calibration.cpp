@@ -56,6 +56,17 @@ CheckerboardRender render_settings() {
   return how;
 }
 
+// Seven views of the board through `lens`: straight ahead, and swung out 45 degrees each way and diagonally.
+std::vector<CalibrationImage> seven_views(const Lens& lens) {
+  const CheckerboardRender how = render_settings();
+  std::vector<CalibrationImage> images;
+  int n = 0;
+  for (const char* p : {"0,0,0,300,0,0", "0,0,45,300,300,0", "0,0,-45,300,-300,0", "0,-45,0,300,0,300",
+                        "0,45,0,300,0,-300", "20,-30,35,300,200,170", "-20,30,-35,300,-200,-170"})
+    images.push_back({"view " + std::to_string(++n), "", render_checkerboard(lens, parse_pose(p), how)});
+  return images;
+}
+
 }  // namespace
 
 class TestCheckerboardCalibration : public QObject {
@@ -281,12 +292,7 @@ class TestCheckerboardCalibration : public QObject {
     Lens lens = Lens::paper();  // 195 degree equidistant
     lens.cx = 641.2;
     lens.cy = 510.4;
-    CheckerboardRender how = render_settings();
-    std::vector<CalibrationImage> images;
-    int n = 0;
-    for (const char* p : {"0,0,0,300,0,0", "0,0,45,300,300,0", "0,0,-45,300,-300,0", "0,-45,0,300,0,300",
-                          "0,45,0,300,0,-300", "20,-30,35,300,200,170", "-20,30,-35,300,-200,-170"})
-      images.push_back({"view " + std::to_string(++n), "", render_checkerboard(lens, parse_pose(p), how)});
+    const std::vector<CalibrationImage> images = seven_views(lens);
     const auto result = calibrate_checkerboard(images, board(), CalibrationModel::Equidistant, lens);
     qInfo("equidistant: r_pp %.8g (truth %.8g), centre (%.3f, %.3f), RMS %.3f px", result.lens.r_pp, lens.r_pp,
           result.lens.cx, result.lens.cy, result.rms_px);
@@ -309,12 +315,7 @@ class TestCheckerboardCalibration : public QObject {
     // 195-degree circle lies far outside the rim the images show, and the result says so with both radii.
     Lens optics = Lens::paper();
     optics.fov_deg = 174;
-    CheckerboardRender how = render_settings();
-    std::vector<CalibrationImage> images;
-    int n = 0;
-    for (const char* p : {"0,0,0,300,0,0", "0,0,45,300,300,0", "0,0,-45,300,-300,0", "0,-45,0,300,0,300",
-                          "0,45,0,300,0,-300", "20,-30,35,300,200,170", "-20,30,-35,300,-200,-170"})
-      images.push_back({"view " + std::to_string(++n), "", render_checkerboard(optics, parse_pose(p), how)});
+    const std::vector<CalibrationImage> images = seven_views(optics);
     const auto result = calibrate_checkerboard(images, board(), CalibrationModel::Equidistant, Lens::paper());
     QVERIFY(result.rim);
     QVERIFY(result.rim->disagrees);

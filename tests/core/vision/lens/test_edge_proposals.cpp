@@ -153,10 +153,7 @@ class TestEdgeProposals : public QObject {
  private slots:
   void proposals_on_the_room() {
     const Lens truth = bs::test::room_truth_lens();
-    RoomOptions room;
-    room.seed = 5;
-    room.vignetting = 0.3;
-    room.noise = 0.005;
+    const RoomOptions room{.vignetting = 0.3, .noise = 0.005, .seed = 5};
     const cv::Mat img = room_with_curves(truth, room);
     const Lens start = bs::test::circle_fit_start(truth, 5.0, -4.0);
     const auto props = propose_lines(img, start);

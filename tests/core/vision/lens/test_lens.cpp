@@ -2,6 +2,7 @@
 #include <QTest>
 #include <cmath>
 
+#include "../small_paper_lens.h"
 #include "vision/lens/lens.h"
 
 using namespace bs::vision;
@@ -78,13 +79,8 @@ class TestLens : public QObject {
     QVERIFY(!l.radius(1.0).has_value());  // 57 degrees > 50: outside the image circle
   }
   void map_and_mask() {
-    Lens lens = Lens::paper();
-    lens.width = 320;
-    lens.height = 256;
-    lens.r_pp = 195 * kPi / 180 / 320;
-    View view;
-    view.width = 160;
-    view.height = 128;
+    const Lens lens = bs::test::small_paper_lens(320, 256);
+    const View view{.width = 160, .height = 128};
     const cv::Mat map = build_reprojection_map(lens, view);
     QCOMPARE(map.type(), CV_32FC2);
     const auto s = source_of(lens, view, 37, 91);

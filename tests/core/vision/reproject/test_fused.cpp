@@ -2,6 +2,7 @@
 #include <QTest>
 #include <cmath>
 
+#include "../small_paper_lens.h"
 #include "vision/lens/lens.h"
 #include "vision/reproject/fused.h"
 
@@ -34,18 +35,10 @@ class TestFused : public QObject {
   Q_OBJECT
  private slots:
   void equals_demosaic_then_reproject_within_one_level() {
-    constexpr double kPi = 3.14159265358979323846;
-    Lens lens = Lens::paper();
-    lens.width = 320;
-    lens.height = 256;
-    lens.r_pp = 195 * kPi / 180 / 320;
+    const Lens lens = bs::test::small_paper_lens(320, 256);
     for (BayerPattern p : {BayerPattern::BGGR, BayerPattern::RGGB, BayerPattern::GRBG, BayerPattern::GBRG})
       for (double yaw : {0.0, 80.0}) {  // 80 degrees: the view reaches the mosaic's edge (reflected border path)
-        View view;
-        view.width = 200;
-        view.height = 160;
-        view.yaw_deg = yaw;
-        const cv::Mat map = build_reprojection_map(lens, view);
+        const cv::Mat map = build_reprojection_map(lens, View{.width = 200, .height = 160, .yaw_deg = yaw});
         const cv::Mat raw = mosaic(textured(320, 256), p);
         // The same maths at 16-bit precision, rounded once at the end: an 8-bit reference would round twice
         // (after demosaicing and inside remap) and differ by 2 at a few pixels for that reason alone.
@@ -64,17 +57,11 @@ class TestFused : public QObject {
   void vector_kernel_equals_scalar_kernel_bit_for_bit() {
     // Both kernels compute the same integers; the vector one (when this CPU has it) must not differ anywhere,
     // including row tails (width 203 is not a multiple of 16), pixels with no source and reflected borders.
-    constexpr double kPi = 3.14159265358979323846;
-    Lens lens = Lens::paper();
-    lens.width = 322;
-    lens.height = 250;
-    lens.r_pp = 195 * kPi / 180 / 322;
+    const Lens lens = bs::test::small_paper_lens(322, 250);
     std::size_t tiled = 0, gathered = 0;
     for (BayerPattern p : {BayerPattern::BGGR, BayerPattern::RGGB, BayerPattern::GRBG, BayerPattern::GBRG})
       for (double yaw : {0.0, 60.0, 100.0}) {
-        View view;
-        view.width = 203;
-        view.height = 77;
+        View view{.width = 203, .height = 77};
         // 170 degrees over 203 pixels steps several mosaic pixels per output pixel: blocks too wide for a tile.
         view.fov_deg = yaw == 0.0 ? 170 : 120;
         view.yaw_deg = yaw;

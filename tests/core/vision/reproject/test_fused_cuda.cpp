@@ -4,6 +4,7 @@
 // one the path must refuse with a reason instead of failing later.
 #include <QTest>
 
+#include "../small_paper_lens.h"
 #include "vision/lens/lens.h"
 #include "vision/reproject/cuda_preprocess.h"
 #include "vision/reproject/fused.h"
@@ -13,15 +14,9 @@ using namespace bs::vision;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-Lens small_lens() {
-  Lens lens = Lens::paper();
-  lens.width = 320;
-  lens.height = 256;
-  lens.r_pp = 195 * kPi / 180 / 320;
-  return lens;
-}
+// What these tests look at: 200x160 pixels of a 320x256 sensor, turned `yaw_deg` to the side.
+Lens small_lens() { return bs::test::small_paper_lens(320, 256); }
+View side_view(double yaw_deg = 60) { return View{.width = 200, .height = 160, .yaw_deg = yaw_deg}; }
 
 // A mosaic with structure at every scale (not a smooth ramp, where errors cancel).
 cv::Mat noisy_mosaic(cv::Size size, unsigned seed) {
@@ -48,11 +43,7 @@ class TestFusedCuda : public QObject {
     const Lens lens = small_lens();
     for (BayerPattern p : kPatterns)
       for (double yaw : {0.0, 80.0}) {  // 80 degrees: the view reaches the mosaic's edge (reflected borders)
-        View view;
-        view.width = 200;
-        view.height = 160;
-        view.yaw_deg = yaw;
-        const cv::Mat map = build_reprojection_map(lens, view);
+        const cv::Mat map = build_reprojection_map(lens, side_view(yaw));
         const cv::Mat raw = noisy_mosaic({320, 256}, 7);
         for (auto kernel : {FusedTable::Kernel::Scalar, FusedTable::Kernel::Auto}) {
           cv::Mat table;
@@ -96,10 +87,7 @@ class TestFusedCuda : public QObject {
 
   void gpu_kernel_equals_cpu_or_refuses_with_reason() {
     const Lens lens = small_lens();
-    View view;
-    view.width = 200;
-    view.height = 160;
-    view.yaw_deg = 60;
+    const View view = side_view();
     const std::string why = cuda_preprocessing_unavailable();
     if (!why.empty()) {
       // No GPU (or no nvcc): building the preprocessor must fail at once, saying why, not at the first frame.
@@ -125,10 +113,7 @@ class TestFusedCuda : public QObject {
   // kernel's device time is positive; without a GPU they refuse at construction with the same reason.
   void gpu_steps_equal_cpu_or_refuse_with_reason() {
     const Lens lens = small_lens();
-    View view;
-    view.width = 200;
-    view.height = 160;
-    view.yaw_deg = 60;
+    const View view = side_view();
     const std::string why = cuda_preprocessing_unavailable();
     if (!why.empty()) {
       try {

@@ -19,10 +19,7 @@ class TestOpenClPreprocess : public QObject {
       lens.r_pp *= 4;  // quarter size, same field of view
       lens.width = 320;
       lens.height = 256;
-      View view;
-      view.width = 400;
-      view.height = 300;
-      view.yaw_deg = 10;
+      const View view{.width = 400, .height = 300, .yaw_deg = 10};
       const cv::Mat raw = mosaic(render_fisheye(lens, 8), pattern);
       Preprocessor gpu;
       OpenClPreprocessorInfo info;
