@@ -104,8 +104,7 @@ int run_headroom_cmd(const std::vector<std::string>& raw, std::ostream& out, std
   else
     print_headroom(out, m, "this run");
   if (const auto& ws_path = settings.workspace) {
-    Workspace ws(*ws_path);
-    const std::int64_t id = bring_home(ws, headroom_import(m, result.power, "benchscope-cli headroom"));
+    const std::int64_t id = bring_home(*ws_path, headroom_import(m, result.power, "benchscope-cli headroom"));
     info << "stored the measurement in " << *ws_path << " (import " << id << ")\n";
   }
   return 0;

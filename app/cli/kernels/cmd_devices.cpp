@@ -170,8 +170,7 @@ int run_devices(const std::vector<std::string>& raw, std::ostream& out) {
       std::vector<HomeBatch> homes = {measured_set_home(kernels::ceiling_result_set(*ceilings), where)};
       for (const auto& [id, set] : device_ceilings)
         homes.push_back(measured_set_home(kernels::ceiling_result_set(set), where));
-      Workspace ws(*ws_path);
-      bring_home(ws, homes);
+      bring_home(*ws_path, homes);
     }
   } else if (args.workspace) {
     throw UsageError("--workspace stores measured ceilings: use it with --measure-ceilings");

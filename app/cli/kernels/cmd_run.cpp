@@ -193,8 +193,7 @@ int run_flops_with(const std::vector<std::string>& raw, std::ostream& out, std::
     }
   }
   if (const auto& ws_path = settings.workspace) {
-    Workspace ws(*ws_path);
-    bring_home(ws, flops_home(result.runs, trace, "benchscope-cli run flops"));  // the trace in the same import
+    bring_home(*ws_path, flops_home(result.runs, trace, "benchscope-cli run flops"));  // the trace in the same import
     if (!quiet) err << "benchscope-cli: stored " << result.runs.size() << " run(s) in " << *ws_path << '\n';
   }
   if (events) events->write("result", result_fields(result.runs, settings));

@@ -48,8 +48,7 @@ int run_bandwidth(const std::vector<std::string>& raw, std::ostream& out, std::o
   const Measurement& m = set.measurements.front();
   const Summary s = summarize(m.values);
   if (const auto ws_path = args.workspace) {
-    Workspace ws(*ws_path);
-    bring_home(ws, measured_set_home(set, "benchscope-cli run bandwidth"));
+    bring_home(*ws_path, measured_set_home(set, "benchscope-cli run bandwidth"));
     if (!quiet) err << "benchscope-cli: stored in " << *ws_path << '\n';
   }
   if (args.json) {

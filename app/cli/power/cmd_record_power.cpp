@@ -83,8 +83,7 @@ int record_power(const std::vector<std::string>& raw, std::ostream& out, std::os
   PowerTrace trace = rec->finish(label);
   if (path) sensors::save_recording_csv(*path, trace);
   if (ws_path) {
-    Workspace ws(*ws_path);
-    bring_home(ws, recording_home(trace, "benchscope-cli record-power"));
+    bring_home(*ws_path, recording_home(trace, "benchscope-cli record-power"));
   }
   if (cancel.cancelled())
     err << "benchscope-cli: interrupted; keeping the " << trace.time_s.size() << " samples recorded\n";

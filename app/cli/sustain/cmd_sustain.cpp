@@ -121,8 +121,7 @@ int run_sustain_with(const std::vector<std::string>& raw, std::ostream& out, std
     for (const std::string& n : result.load_notes) out << "  load: " << n << "\n";
   }
   if (const auto& ws_path = s.workspace) {
-    Workspace ws(*ws_path);
-    const std::int64_t id = bring_home(ws, sustain::sustain_import(run, result.power, "benchscope-cli sustain"));
+    const std::int64_t id = bring_home(*ws_path, sustain::sustain_import(run, result.power, "benchscope-cli sustain"));
     (s.json ? err : out) << "stored the sustained run in " << *ws_path << " (import " << id << ")\n";
   }
   return result.cancelled ? 1 : 0;

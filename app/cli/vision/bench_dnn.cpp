@@ -347,8 +347,7 @@ int bench_dnn(const std::vector<std::string>& raw, std::ostream& out, std::ostre
   const std::string load_after = load_average_text();
   text << "\nload average after: " << load_after << "\n";
   if (const auto& ws_path = settings.workspace) {
-    Workspace ws(*ws_path);
-    const std::int64_t id = bring_home(ws, dnn_home(stored, trace, "benchscope-cli bench dnn"));
+    const std::int64_t id = bring_home(*ws_path, dnn_home(stored, trace, "benchscope-cli bench dnn"));
     text << "stored " << stored.size() << " run" << (stored.size() == 1 ? "" : "s") << " in " << *ws_path << " (import "
          << id << ")\n";
   }

@@ -200,9 +200,8 @@ int finish_run(const commands::PipelineSettings& settings, const PipelineRun& ru
   if (trace) print_pipeline_energy(info, *trace, run, result.processed);
   if (figures) figures(info);
   if (const auto& ws_path = settings.workspace) {
-    Workspace ws(*ws_path);
     // With --power the trace goes into the same import as the run (stored and removed together).
-    const std::int64_t id = bring_home(ws, pipeline_home(run, trace, "benchscope-cli pipeline"));
+    const std::int64_t id = bring_home(*ws_path, pipeline_home(run, trace, "benchscope-cli pipeline"));
     info << "stored the run in " << *ws_path << " (import " << id << ")\n";
   }
   return 0;
