@@ -256,4 +256,15 @@ void RobotList::save() const {
   }
 }
 
+RobotRun robot_run_started(const std::string& job_id, const std::vector<std::string>& command) {
+  std::string line;
+  for (const std::string& w : command) line += (line.empty() ? "" : " ") + w;
+  return {utc_timestamp(), job_id, line, {}};
+}
+
+std::string robot_run_outcome(const std::string& job_status, const std::string& what) {
+  const bool partial = job_status == "cancelled" || job_status == "interrupted";
+  return partial ? job_status + ", " + what : what;
+}
+
 }  // namespace bs::remote

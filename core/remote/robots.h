@@ -37,6 +37,13 @@ struct Robot {
 
 inline constexpr std::size_t kMaxRobotRuns = 50;
 
+// A job's entry in the robots list, worded once for the GUI and the CLI (#52): the command as its whole line
+// ("run flops --workers 1,2,4", as `remote` was given it), started now; the outcome is set when the job ends.
+RobotRun robot_run_started(const std::string& job_id, const std::vector<std::string>& command);
+// What became of a job's results: `what` ("imported 3 runs into lab.bsw", "nothing to import"), after the job's
+// status when it ended early ("cancelled, imported ...", "interrupted, nothing to import"): its results are partial.
+std::string robot_run_outcome(const std::string& job_status, const std::string& what);
+
 // The Host names of an SSH config file (and the files it Includes), without patterns (*, ?, !) and in file
 // order; a missing file gives none.
 std::vector<std::string> ssh_config_hosts(const std::string& config_path);

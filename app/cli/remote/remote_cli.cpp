@@ -137,10 +137,10 @@ int import_and_report(remote::RobotList& robots, const remote::SshTarget& target
                       const std::string& verb, std::ostream& out, std::ostream& err,
                       const std::string& desk_files = {}) {
   const std::string host = target.destination;
-  const std::string what = join(command);
-  remote::RobotRun record{utc_timestamp(), job.id, what, {}};
+  remote::RobotRun record = remote::robot_run_started(job.id, command);
+  const std::string& what = record.command;
   const auto remember = [&](const std::string& outcome) {
-    record.outcome = outcome;
+    record.outcome = remote::robot_run_outcome(job.status, outcome);
     try {
       robots.record_run(host, record);
     } catch (const std::exception& e) {
@@ -174,14 +174,14 @@ int import_and_report(remote::RobotList& robots, const remote::SshTarget& target
       err << host << ": " << what << " completed nothing to import" << kept << '\n';
     else
       err << host << ": " << what << " leaves no results to import (it prints its figures only" << kept << ")\n";
-    remember(std::string(partial ? job.status + ", " : "") + "nothing to import");
+    remember("nothing to import");
     return partial ? 1 : 0;
   }
   if (!o.workspace) {
     err << host << ": results kept on the robot as job " << job.id
         << " (give --workspace W.bsw to import them; `benchscope-cli remote " << host << " fetch " << job.id
         << " --workspace W.bsw` later)\n";
-    remember(std::string(partial ? job.status + ", " : "") + "not imported");
+    remember("not imported");
     return partial ? 1 : 0;
   }
   remote::RemoteOrigin origin = remote::origin_of(target, job, info, command);
@@ -198,8 +198,7 @@ int import_and_report(remote::RobotList& robots, const remote::SshTarget& target
     out << verb << " " << imported.summary() << " from " << host << " (" << origin.hostname << ", " << origin.arch
         << ", BenchScope " << origin.cli_version << ", job " << job.id << ") into " << *o.workspace << " as platform "
         << named << '\n';
-    remember(std::string(partial ? job.status + ", " : "") + "imported " + imported.summary() + " into " +
-             *o.workspace);
+    remember("imported " + imported.summary() + " into " + *o.workspace);
   } catch (const std::exception& e) {
     err << "benchscope-cli: error: " << host << ": the results came home but were not imported: " << e.what()
         << "; the workspace is unchanged (`benchscope-cli remote " << host << " fetch " << job.id << "` tries again)\n";
@@ -355,7 +354,9 @@ int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const
     printer.close_progress();
     err << "benchscope-cli: error: " << e.what() << '\n';
     try {
-      robots.record_run(target.destination, {utc_timestamp(), id, join(command), std::string("failed: ") + e.what()});
+      remote::RobotRun record = remote::robot_run_started(id, command);
+      record.outcome = std::string("failed: ") + e.what();
+      robots.record_run(target.destination, record);
     } catch (const std::exception&) {  // the list is a convenience; the error above is what matters
     }
     return 1;

@@ -284,6 +284,21 @@ class TestRemoteProtocol : public QObject {
     QVERIFY_THROWS_EXCEPTION(std::runtime_error, RobotList{file});
   }
 
+  // The robots list words a job the same from the GUI and the CLI (#52): the whole command line, and an outcome
+  // that says when the job ended early (its results are partial).
+  void robots_list_words_a_job_once() {
+    const RobotRun r = robot_run_started("j7", {"headroom", "--seconds", "2", "--load", "flops"});
+    QCOMPARE(r.job_id, std::string("j7"));
+    QCOMPARE(r.command, std::string("headroom --seconds 2 --load flops"));
+    QCOMPARE(r.date.size(), std::string("2026-11-30T10:00:00Z").size());
+    QVERIFY(r.outcome.empty());
+    QCOMPARE(robot_run_outcome("done", "imported 1 run into a.bsw"), std::string("imported 1 run into a.bsw"));
+    QCOMPARE(robot_run_outcome("cancelled", "imported 1 run into a.bsw"),
+             std::string("cancelled, imported 1 run into a.bsw"));
+    QCOMPARE(robot_run_outcome("interrupted", "nothing to import"), std::string("interrupted, nothing to import"));
+    QCOMPARE(robot_run_outcome("failed", "failed: no such load"), std::string("failed: no such load"));
+  }
+
   // The agent forwards the measurement's events, wraps stray text as messages, records the job and sends its
   // result files; fetch sends them again.
   void agent_runs_a_job() {
