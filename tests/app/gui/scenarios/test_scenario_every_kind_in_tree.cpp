@@ -87,7 +87,8 @@ class TestScenarioEveryKindInTree : public QObject {
     QTemporaryDir dir;
     const QString ws = bs::test::paper_workspace(dir);
     QVERIFY(!ws.isEmpty());
-    bs::bring_home(ws.toStdString(), bs::sustain::sustain_import(two_second_run(), std::nullopt, "benchscope-cli sustain"));
+    bs::bring_home(ws.toStdString(),
+                   bs::sustain::sustain_import(two_second_run(), std::nullopt, "benchscope-cli sustain"));
     bs::bring_home(ws.toStdString(), bs::dnn_home({one_inference_run()}, std::nullopt, "benchscope-cli bench dnn"));
 
     bs::ui::MainWindow w;
