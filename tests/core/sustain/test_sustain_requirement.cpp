@@ -5,6 +5,7 @@
 // and how the verdicts change the recommendation.
 #include <QTest>
 
+#include "../../support/core_platform_verdicts.h"
 #include "../../support/sustained_flops.h"
 #include "sustain/sustain_requirement.h"
 
@@ -185,15 +186,9 @@ class TestSustainRequirement : public QObject {
   }
 
   void recommendation_counts_the_requirement() {
-    std::vector<PlatformVerdict> verdicts(3);
-    verdicts[0].platform = "nuc";  // most compute, fails
-    verdicts[0].ranked_flops = 5e12;
-    verdicts[1].platform = "robot";
-    verdicts[1].ranked_flops = 1e12;
-    verdicts[2].platform = "jetson";  // no record: unknown, never passing
-    verdicts[2].ranked_flops = 3e12;
-    for (auto& v : verdicts) v.meets_all = true;
-    verdicts[0].recommended = true;
+    // nuc: most compute, fails; jetson: no record, unknown, never passing.
+    std::vector<PlatformVerdict> verdicts =
+        bs::test::verdicts_meeting_all({{"nuc", 5e12}, {"robot", 1e12}, {"jetson", 3e12}});
     const std::vector<SustainRun> runs = {record("nuc", steady(25, 100, 3, 91.2)), record("robot", steady(25, 100))};
     const auto s =
         evaluate_sustain(parse_sustain_requirement("stability>=97%,minutes>=20"), runs, {"nuc", "robot", "jetson"});
