@@ -4,9 +4,9 @@
 // for a wake-up-only measurement), and how it changes the recommendation.
 #include <QTest>
 
-#include "../../support/core_invalid_argument.h"
 #include "../../support/core_platform_verdicts.h"
 #include "../../support/headroom_samples.h"
+#include "../../support/refusal.h"
 #include "headroom/loop_requirement.h"
 
 using namespace bs::headroom;
@@ -44,7 +44,7 @@ class TestLoopRequirement : public QObject {
 
   void rejects_what_it_cannot_read() {
     const auto error = [](const std::string& text) {
-      return bs::test::invalid_argument_of([&] { parse_loop_requirement(text); });
+      return bs::test::refusal<std::invalid_argument>([&] { parse_loop_requirement(text); });
     };
     QVERIFY(error("p99<=200us").contains("no loop rate"));
     QVERIFY(error("1kHz").contains("no limit to check"));

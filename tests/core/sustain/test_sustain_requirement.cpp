@@ -5,8 +5,8 @@
 // and how the verdicts change the recommendation.
 #include <QTest>
 
-#include "../../support/core_invalid_argument.h"
 #include "../../support/core_platform_verdicts.h"
+#include "../../support/refusal.h"
 #include "../../support/sustained_flops.h"
 #include "sustain/sustain_requirement.h"
 
@@ -44,7 +44,7 @@ const SustainVerdict& verdict_of(const std::vector<SustainVerdict>& v, const std
 }
 
 QString error_of(const std::string& text) {
-  return bs::test::invalid_argument_of([&] { parse_sustain_requirement(text); });
+  return bs::test::refusal<std::invalid_argument>([&] { parse_sustain_requirement(text); });
 }
 
 }  // namespace

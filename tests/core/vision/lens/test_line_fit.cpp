@@ -2,8 +2,8 @@
 #include <QTest>
 #include <cmath>
 
-#include "../../../support/core_invalid_argument.h"
 #include "../../../support/core_ray_projection.h"
+#include "../../../support/refusal.h"
 #include "../../../support/room_lens.h"
 #include "vision/frames/synthetic_room.h"
 #include "vision/lens/fisheye_opencv.h"
@@ -245,7 +245,8 @@ class TestLineFit : public QObject {
     QCOMPARE(back[1][2], lines[1][2]);
     nlohmann::json bad = j;
     bad["lines"][1][2] = {1.0};
-    const QString refusal = bs::test::invalid_argument_of([&] { lines_from_json(bad); });  // a one-coordinate point
+    const QString refusal =
+        bs::test::refusal<std::invalid_argument>([&] { lines_from_json(bad); });  // a one-coordinate point
     QVERIFY2(refusal.contains("/lines/1/2"), qPrintable(refusal));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, lines_from_json(nlohmann::json{{"format", "other"}}));
   }

@@ -3,7 +3,7 @@
 #include <QTest>
 #include <fstream>
 
-#include "../../../support/core_invalid_argument.h"
+#include "../../../support/refusal.h"
 #include "vision/lens/tuner_state.h"
 
 using namespace bs::vision;
@@ -118,7 +118,7 @@ class TestTunerState : public QObject {
     QVERIFY(plain.masks.empty());
     nlohmann::json bad = tuner_to_json(p);
     bad["masks"][1][2] = {1};
-    const QString refusal = bs::test::invalid_argument_of([&] { tuner_from_json(bad); });
+    const QString refusal = bs::test::refusal<std::invalid_argument>([&] { tuner_from_json(bad); });
     QVERIFY2(refusal.contains("/masks/1/2"), qPrintable(refusal));
   }
   void mask_image_fills_the_polygons() {
