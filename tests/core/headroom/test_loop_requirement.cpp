@@ -4,7 +4,9 @@
 // for a wake-up-only measurement), and how it changes the recommendation.
 #include <QTest>
 
+#include "../../support/core_platform_verdicts.h"
 #include "../../support/headroom_samples.h"
+#include "../../support/refusal.h"
 #include "headroom/loop_requirement.h"
 
 using namespace bs::headroom;
@@ -42,12 +44,7 @@ class TestLoopRequirement : public QObject {
 
   void rejects_what_it_cannot_read() {
     const auto error = [](const std::string& text) {
-      try {
-        parse_loop_requirement(text);
-      } catch (const std::invalid_argument& e) {
-        return QString(e.what());
-      }
-      return QString();
+      return bs::test::refusal<std::invalid_argument>([&] { parse_loop_requirement(text); });
     };
     QVERIFY(error("p99<=200us").contains("no loop rate"));
     QVERIFY(error("1kHz").contains("no limit to check"));
@@ -148,15 +145,9 @@ class TestLoopRequirement : public QObject {
   }
 
   void recommendation_counts_the_loop() {
-    std::vector<bs::PlatformVerdict> verdicts(3);
-    verdicts[0].platform = "nuc";  // most compute, fails the loop
-    verdicts[0].ranked_flops = 5e12;
-    verdicts[1].platform = "robot";
-    verdicts[1].ranked_flops = 1e12;
-    verdicts[2].platform = "jetson";  // no measurement: unknown, never passing
-    verdicts[2].ranked_flops = 3e12;
-    for (auto& v : verdicts) v.meets_all = true;
-    verdicts[0].recommended = true;
+    // nuc: most compute, fails the loop; jetson: no measurement, unknown, never passing.
+    std::vector<bs::PlatformVerdict> verdicts =
+        bs::test::verdicts_meeting_all({{"nuc", 5e12}, {"robot", 1e12}, {"jetson", 3e12}});
     const std::vector<HeadroomMeasurement> ms = {loop("robot", "pipeline@30fps", 20, 1, 900),
                                                  loop("nuc", "pipeline@30fps", 30, 3, 1500)};
     const auto loop_v =

@@ -50,6 +50,22 @@ bool alive(long long pid) {
   return paren == std::string::npos || paren + 2 >= text.size() || text[paren + 2] != 'Z';
 }
 
+// What the agent sent for a job, event by event, and its exit status.
+struct AgentRun {
+  int status;
+  std::vector<Event> events;
+};
+
+// Runs `job` in-process as the robot's agent; then closes both ends of the pipe its stdin came from (`in`), as the
+// desk does when the job has ended.
+AgentRun run_agent(const AgentJob& job, const int (&in)[2]) {
+  std::ostringstream out, err;
+  const int status = run_job_agent(job, out, err);
+  ::close(in[1]);
+  ::close(in[0]);
+  return {status, events_of(out.str())};
+}
+
 nlohmann::json record_of(const QString& jobs, const std::string& id) {
   std::ifstream in(jobs.toStdString() + "/" + id + "/job.json");
   return nlohmann::json::parse(in, nullptr, false);
@@ -318,11 +334,9 @@ class TestRemoteProtocol : public QObject {
                 << std::flush;
       return 0;
     };
-    std::ostringstream out, err;
-    QCOMPARE(run_job_agent(job, out, err), 0);
-    ::close(in[1]);
-    ::close(in[0]);
-    const std::vector<Event> list = events_of(out.str());
+    const AgentRun run = run_agent(job, in);
+    QCOMPARE(run.status, 0);
+    const std::vector<Event>& list = run.events;
     QCOMPARE(list.front().type, std::string("job"));
     QCOMPARE(list.front().body["id"].get<std::string>(), std::string("job-1"));
     QVERIFY(find(list, "progress"));
@@ -369,11 +383,9 @@ class TestRemoteProtocol : public QObject {
       for (;;) pause();  // until a signal ends it: SIGINT's default action
       return 0;
     };
-    std::ostringstream out, err;
-    QCOMPARE(run_job_agent(job, out, err), 0);
-    ::close(in[1]);
-    ::close(in[0]);
-    const std::vector<Event> list = events_of(out.str());
+    const AgentRun run = run_agent(job, in);
+    QCOMPARE(run.status, 0);
+    const std::vector<Event>& list = run.events;
     QCOMPARE(list.back().body["status"].get<std::string>(), std::string("cancelled"));
     QCOMPARE(list.back().body["exit_status"].get<int>(), 128 + SIGINT);
     QVERIFY(find(list, "error"));  // it ended without its own end event: the agent says so

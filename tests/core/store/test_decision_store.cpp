@@ -39,11 +39,10 @@ void fill(bs::Workspace& ws) {
 
 // A workspace's one headroom measurement (#45, schema 9): a robot's loop at 1 kHz beside the pipeline.
 bs::ImportBatch headroom_batch() {
-  bs::ImportBatch b;
-  b.source_path = "headroom";
-  b.format = "benchscope-headroom-v1";
-  b.headroom = {bs::test::loop_measurement("robot", {{"pipeline@30fps", bs::test::loop_thread(1000, 50)}})};
-  return b;
+  return bs::test::batch_holding(
+      &bs::ImportBatch::headroom,
+      {bs::test::loop_measurement("robot", {{"pipeline@30fps", bs::test::loop_thread(1000, 50)}})}, "headroom",
+      "benchscope-headroom-v1");
 }
 
 }  // namespace

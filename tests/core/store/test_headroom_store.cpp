@@ -58,11 +58,7 @@ HeadroomMeasurement sample_measurement() {
 }
 
 bs::ImportBatch batch_of(const HeadroomMeasurement& m) {
-  bs::ImportBatch b;
-  b.source_path = "headroom";
-  b.format = "benchscope-headroom-v1";
-  b.headroom = {m};
-  return b;
+  return batch_holding(&bs::ImportBatch::headroom, {m}, "headroom", "benchscope-headroom-v1");
 }
 
 }  // namespace

@@ -31,14 +31,7 @@ class TestImportSnapshot : public QObject {
     trace.supply_voltage_v = 16.0;
     trace.phases = {{"kernel", 0.5, 1.5}};
     batch.power_traces.push_back(trace);
-    Frame frame;
-    frame.label = "cap";
-    frame.width = 4;
-    frame.height = 2;
-    frame.pattern = "RGGB";
-    frame.storage = FrameStorage::Copy;
-    frame.pixels = {1, 2, 3, 4, 5, 6, 7, 8};
-    frame.source_format = "raw-bayer";
+    const Frame frame = copied_frame("cap", 4, 2);
     batch.frames.push_back(frame);
     const std::int64_t id = ws.add_import(batch, "hash-1");
     const auto runs_before = ws.runs();

@@ -66,11 +66,7 @@ bool same_summary(const bs::TraceSummary& a, const bs::TraceSummary& b) {
 }
 
 bs::ImportBatch batch_of(bs::PowerTrace t) {
-  bs::ImportBatch b;
-  b.format = "power-csv";
-  b.source_path = "long.csv";
-  b.power_traces.push_back(std::move(t));
-  return b;
+  return bs::test::batch_holding(&bs::ImportBatch::power_traces, {std::move(t)}, "long.csv", "power-csv");
 }
 
 }  // namespace

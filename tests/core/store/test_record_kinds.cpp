@@ -37,15 +37,7 @@ ImportBatch one_of_each_kind() {
   trace.time_s = {0, 1, 2};
   trace.channels = {{"power", PowerQuantity::Power, {10, 11, 12}}};
   b.power_traces.push_back(trace);
-  Frame frame;
-  frame.label = "cap";
-  frame.width = 2;
-  frame.height = 2;
-  frame.pattern = "RGGB";
-  frame.storage = FrameStorage::Copy;
-  frame.pixels = {1, 2, 3, 4};
-  frame.source_format = "raw-bayer";
-  b.frames.push_back(frame);
+  b.frames.push_back(copied_frame("cap", 2, 2));
   PipelineRun pipe;
   pipe.platform = "NUC";
   pipe.device = "NUC CPU";

@@ -31,11 +31,7 @@ SustainRun sample_run() {
 }
 
 ImportBatch batch_of(const SustainRun& r) {
-  ImportBatch b;
-  b.source_path = "benchscope-cli sustain";
-  b.format = "benchscope-sustain-v1";
-  b.sustain_runs = {r};
-  return b;
+  return batch_holding(&ImportBatch::sustain_runs, {r}, "benchscope-cli sustain", "benchscope-sustain-v1");
 }
 
 }  // namespace

@@ -14,6 +14,19 @@
 
 using namespace bs::test;
 
+namespace {
+
+// A Google Benchmark output of the NUC's CPU as its importer gives it: the result sets these tests store.
+bs::ResultSet nuc_cpu_set(const bs::Provenance& provenance = {}) {
+  return {"NUC", "i7-7567U", bs::DeviceKind::Cpu, "CPU", "google-benchmark-json", {}, provenance};
+}
+
+bs::ImportBatch bench_json_of(std::vector<bs::ResultSet> sets) {
+  return batch_holding(&bs::ImportBatch::result_sets, std::move(sets), "bench.json", "google-benchmark-json");
+}
+
+}  // namespace
+
 class TestWorkspace : public QObject {
   Q_OBJECT
  private slots:
@@ -111,13 +124,7 @@ class TestWorkspace : public QObject {
   void result_sets_round_trip_with_non_finite_values() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("w.bsw").toStdString();
-    bs::ImportBatch batch;
-    batch.source_path = "bench.json";
-    batch.format = "google-benchmark-json";
-    batch.runs.push_back(make_run("i7-7567U", "CPU SIMD (AVX2)", 4, 2, 2));
-    batch.runs.back().device_kind = bs::DeviceKind::Cpu;  // the same CPU device as the result set below
-    bs::ResultSet cpu{"NUC", "i7-7567U",           bs::DeviceKind::Cpu, "CPU", "google-benchmark-json",
-                      {},    full_provenance("gb")};
+    bs::ResultSet cpu = nuc_cpu_set(full_provenance("gb"));
     cpu.measurements.push_back({"BM_Rotate/4096",
                                 "real_time",
                                 "s",
@@ -132,7 +139,9 @@ class TestWorkspace : public QObject {
     cpu.measurements.push_back({"BM_Empty", "cpu_time", "s", {}, {}});
     bs::ResultSet gpu{"NVIDIA CUDA", "GTX 1080 Ti", bs::DeviceKind::Gpu, "OpenCL", "clpeak-text", {}, {}};
     gpu.measurements.push_back({"float4", "single-precision compute", "FLOP/s", {1.1e13, 1.2e13}, {}});
-    batch.result_sets = {cpu, gpu};
+    bs::ImportBatch batch = bench_json_of({cpu, gpu});
+    batch.runs.push_back(make_run("i7-7567U", "CPU SIMD (AVX2)", 4, 2, 2));
+    batch.runs.back().device_kind = bs::DeviceKind::Cpu;  // the same CPU device as the result set
     {
       bs::Workspace ws(path);
       ws.add_import(batch, "h");
@@ -155,14 +164,10 @@ class TestWorkspace : public QObject {
   void infinite_measurement_is_damage() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("w.bsw").toStdString();
-    bs::ImportBatch batch;
-    batch.source_path = "bench.json";
-    batch.format = "google-benchmark-json";
-    bs::ResultSet cpu{"NUC", "i7-7567U", bs::DeviceKind::Cpu, "CPU", "google-benchmark-json", {}, {}};
+    bs::ResultSet cpu = nuc_cpu_set();
     cpu.measurements.push_back(
         {"BM_Rotate/4096", "items_per_second", "1/s", {1.0, std::numeric_limits<double>::infinity()}, {}});
-    batch.result_sets = {cpu};
-    bs::Workspace(path).add_import(batch, "h");
+    bs::Workspace(path).add_import(bench_json_of({cpu}), "h");
     const bs::Workspace ws(path);
     QVERIFY(ws.result_sets().empty());
     QCOMPARE(ws.damage().size(), std::size_t{1});

@@ -31,26 +31,13 @@ bs::PowerTrace voltage_log() {
   return t;
 }
 
-bs::Frame frame(const std::string& label) {
-  bs::Frame f;
-  f.label = label;
-  f.width = 4;
-  f.height = 2;
-  f.pattern = "BGGR";
-  f.source_format = "raw-bayer";
-  f.read_options = "{}";
-  f.storage = bs::FrameStorage::Copy;
-  f.pixels.assign(8, 7);
-  return f;
-}
-
 // Two logs and two frames in one import.
 void fill(bs::Workspace& ws) {
   bs::ImportBatch b;
   b.source_path = "in.csv";
   b.format = "power-csv";
   b.power_traces = {current_log("otii"), voltage_log()};
-  b.frames = {frame("a"), frame("b")};
+  b.frames = {bs::test::copied_frame("a", 4, 2, "BGGR"), bs::test::copied_frame("b", 4, 2, "BGGR")};
   ws.add_import(b, "hash-1");
 }
 

@@ -111,12 +111,35 @@ inline FlopsRun make_run(const std::string& device, const std::string& backend, 
   return r;
 }
 
-inline ImportBatch batch_of(std::vector<FlopsRun> runs, const std::string& path = "in.json") {
+// A small 8-bit Bayer frame, as the raw importer gives it, whose pixels (1, 2, 3, ...) the workspace keeps
+// (FrameStorage::Copy): the frame the store tests put beside their other records.
+inline Frame copied_frame(const std::string& label, int width, int height, const std::string& pattern = "RGGB") {
+  Frame f;
+  f.label = label;
+  f.width = width;
+  f.height = height;
+  f.pattern = pattern;
+  f.source_format = "raw-bayer";
+  f.read_options = "{}";
+  f.storage = FrameStorage::Copy;
+  for (int i = 0; i < width * height; ++i) f.pixels.push_back(static_cast<std::uint8_t>(i + 1));
+  return f;
+}
+
+// A batch of one kind's records (`kind`: &ImportBatch::runs, &ImportBatch::headroom, ...) as its importer hands it
+// to the store: read from `source` in `format`, the two things an import row keeps of where it came from.
+template <class Row>
+ImportBatch batch_holding(std::vector<Row> ImportBatch::*kind, std::vector<Row> rows, const std::string& source,
+                          const std::string& format) {
   ImportBatch b;
-  b.source_path = path;
-  b.format = "benchscope-run-v1";
-  b.runs = std::move(runs);
+  b.source_path = source;
+  b.format = format;
+  b.*kind = std::move(rows);
   return b;
+}
+
+inline ImportBatch batch_of(std::vector<FlopsRun> runs, const std::string& path = "in.json") {
+  return batch_holding(&ImportBatch::runs, std::move(runs), path, "benchscope-run-v1");
 }
 
 inline QByteArray file_bytes(const QString& path) {

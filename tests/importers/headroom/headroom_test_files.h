@@ -8,20 +8,19 @@
 #include <algorithm>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "../../support/importer_parse.h"
 #include "../../support/text_lines.h"
 #include "common/format_importer.h"
 #include "headroom/thread_latency.h"
+#include "workspace/registry.h"
 
 namespace bs::test {
 
 inline const std::string kHeadroomFixtures = BENCHSCOPE_TEST_DATA_DIR "/headroom/";
 inline const std::string kHeadroomReal = BENCHSCOPE_PUBLIC_DATA_DIR "/new/headroom/";
-
-inline ImportBatch parse_with(const FileFormat& format, const std::string& path) {
-  const CancelToken cancel;
-  return format.parse(path, {}, {}, cancel);
-}
 
 inline const headroom::ThreadLatency& only_thread(const ImportBatch& b, std::size_t index = 0) {
   return b.headroom.at(0).phases.at(0).threads.at(index);
@@ -39,6 +38,14 @@ inline std::string setting(const ImportBatch& b, const std::string& key) {
   for (const auto& [k, v] : b.headroom.at(0).provenance.settings)
     if (k == key) return v;
   return {};
+}
+
+// Each file of `folder` (a name and the format id it must get) is sniffed as that format when imported, as the
+// import dialog would open it: a test lists its files, the one loop checks them.
+inline void each_is_sniffed_as(const std::string& folder,
+                               const std::vector<std::pair<std::string, std::string>>& name_and_format) {
+  const CancelToken cancel;
+  for (const auto& [name, id] : name_and_format) QCOMPARE(import_file(folder + name, cancel).format, id);
 }
 
 }  // namespace bs::test

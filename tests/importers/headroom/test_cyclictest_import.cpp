@@ -400,19 +400,17 @@ class TestCyclictestImport : public QObject {
   }
 
   void each_file_is_sniffed_as_its_format() {
-    const std::pair<std::string, std::string> files[] = {{"cyclictest-2.6-H20-2thr-overflows.txt", "cyclictest-text"},
-                                                         {"cyclictest-2.8-H50-1thr.hist", "cyclictest-text"},
-                                                         {"cyclictest-footer-only.txt", "cyclictest-text"},
-                                                         {"cyclictest-histogram-then-footer.txt", "cyclictest-text"},
-                                                         {"cyclictest-terminal-script.txt", "cyclictest-text"},
-                                                         {"cyclictest-nsecs-cat-v.txt", "cyclictest-text"},
-                                                         {"cyclictest-status-and-histogram.txt", "cyclictest-text"},
-                                                         {"cyclictest-2.7-nsecs.json", "cyclictest-json"},
-                                                         {"cyclictest-2.8-overflows.json", "cyclictest-json"},
-                                                         {"cyclictest-cmdline-quote.json", "cyclictest-json"},
-                                                         {"cyclictest-thread-never-ran.json", "cyclictest-json"}};
-    const bs::CancelToken cancel;
-    for (const auto& [name, id] : files) QCOMPARE(bs::import_file(kHeadroomFixtures + name, cancel).format, id);
+    each_is_sniffed_as(kHeadroomFixtures, {{"cyclictest-2.6-H20-2thr-overflows.txt", "cyclictest-text"},
+                                           {"cyclictest-2.8-H50-1thr.hist", "cyclictest-text"},
+                                           {"cyclictest-footer-only.txt", "cyclictest-text"},
+                                           {"cyclictest-histogram-then-footer.txt", "cyclictest-text"},
+                                           {"cyclictest-terminal-script.txt", "cyclictest-text"},
+                                           {"cyclictest-nsecs-cat-v.txt", "cyclictest-text"},
+                                           {"cyclictest-status-and-histogram.txt", "cyclictest-text"},
+                                           {"cyclictest-2.7-nsecs.json", "cyclictest-json"},
+                                           {"cyclictest-2.8-overflows.json", "cyclictest-json"},
+                                           {"cyclictest-cmdline-quote.json", "cyclictest-json"},
+                                           {"cyclictest-thread-never-ran.json", "cyclictest-json"}});
   }
 };
 

@@ -176,24 +176,15 @@ class TestPerformanceTestImport : public QObject {
   }
 
   void each_file_is_sniffed_as_its_format() {
-    const bs::CancelToken cancel;
-    QCOMPARE(bs::import_file(kHeadroomFixtures + "perftest-running-totals.csv", cancel).format,
-             std::string("performance-test-csv"));
-    QCOMPARE(bs::import_file(kHeadroomFixtures + "perftest-2x-per-interval.csv", cancel).format,
-             std::string("performance-test-csv"));
-    if (std::filesystem::exists(kHeadroomReal + "perftest_csv_x86_zbook_cyclonedds_Array1k_1000Hz.log")) {
-      QCOMPARE(bs::import_file(kHeadroomReal + "perftest_csv_x86_zbook_cyclonedds_Array1k_1000Hz.log", cancel).format,
-               std::string("performance-test-csv"));
-      QCOMPARE(
-          bs::import_file(kHeadroomReal + "perftest_rpi4rt_idle_ste_intra_Array1k_100Hz_prio90.json", cancel).format,
-          std::string("performance-test-json"));
-      QCOMPARE(bs::import_file(kHeadroomReal + "cyclictest_2.8_x86_6thr.json", cancel).format,
-               std::string("cyclictest-json"));
-      QCOMPARE(bs::import_file(kHeadroomReal + "cyclictest_2.8_x86_6thr_h400.hist", cancel).format,
-               std::string("cyclictest-text"));
-      QCOMPARE(bs::import_file(kHeadroomReal + "cyclictest_old_4thr_h400_q.txt", cancel).format,
-               std::string("cyclictest-text"));
-    }
+    each_is_sniffed_as(kHeadroomFixtures, {{"perftest-running-totals.csv", "performance-test-csv"},
+                                           {"perftest-2x-per-interval.csv", "performance-test-csv"}});
+    if (std::filesystem::exists(kHeadroomReal + "perftest_csv_x86_zbook_cyclonedds_Array1k_1000Hz.log"))
+      each_is_sniffed_as(kHeadroomReal,
+                         {{"perftest_csv_x86_zbook_cyclonedds_Array1k_1000Hz.log", "performance-test-csv"},
+                          {"perftest_rpi4rt_idle_ste_intra_Array1k_100Hz_prio90.json", "performance-test-json"},
+                          {"cyclictest_2.8_x86_6thr.json", "cyclictest-json"},
+                          {"cyclictest_2.8_x86_6thr_h400.hist", "cyclictest-text"},
+                          {"cyclictest_old_4thr_h400_q.txt", "cyclictest-text"}});
   }
 };
 

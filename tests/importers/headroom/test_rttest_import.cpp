@@ -162,17 +162,11 @@ class TestRttestImport : public QObject {
   }
 
   void each_file_is_sniffed_as_its_format() {
-    const bs::CancelToken cancel;
-    QCOMPARE(bs::import_file(kHeadroomFixtures + "rttest-pendulum-stdout.txt", cancel).format,
-             std::string("rttest-statistics"));
-    QCOMPARE(bs::import_file(kHeadroomFixtures + "rttest-jitter-variant.txt", cancel).format,
-             std::string("rttest-statistics"));
-    if (std::filesystem::exists(kHeadroomReal + "rttest_pendulum_rpi4rt_idle.txt")) {
-      QCOMPARE(bs::import_file(kHeadroomReal + "rttest_pendulum_rpi4rt_idle.txt", cancel).format,
-               std::string("rttest-log"));
-      QCOMPARE(bs::import_file(kHeadroomReal + "rttest_pendulum_rpi4rt_idle_statistics.txt", cancel).format,
-               std::string("rttest-statistics"));
-    }
+    each_is_sniffed_as(kHeadroomFixtures, {{"rttest-pendulum-stdout.txt", "rttest-statistics"},
+                                           {"rttest-jitter-variant.txt", "rttest-statistics"}});
+    if (std::filesystem::exists(kHeadroomReal + "rttest_pendulum_rpi4rt_idle.txt"))
+      each_is_sniffed_as(kHeadroomReal, {{"rttest_pendulum_rpi4rt_idle.txt", "rttest-log"},
+                                         {"rttest_pendulum_rpi4rt_idle_statistics.txt", "rttest-statistics"}});
   }
 };
 

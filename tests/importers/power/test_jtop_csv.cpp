@@ -8,6 +8,8 @@
 #include "power/jtop_csv.h"
 #include "power/power_csv.h"
 
+#include "../../support/import_errors.h"
+
 namespace {
 
 // As examples/jtop_logger.py writes it (csv.DictWriter: "\r\n", the uptime quoted for its comma).
@@ -21,14 +23,7 @@ std::string row(const std::string& time, const std::string& uptime, int in, int 
          "," + std::to_string(soc) + "," + std::to_string(tot) + "," + clocks + "," + nvp + "\r\n";
 }
 
-bs::ImportError error_of(const std::string& text) {
-  try {
-    bs::kJtopCsvFileFormat.parse_text(text, "j.csv");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
-}
+const auto error_of = bs::test::import_errors_of(bs::kJtopCsvFileFormat, "j.csv");
 
 }  // namespace
 

@@ -17,21 +17,17 @@
 #include "workspace/registry.h"
 
 #include "../../support/find_item.h"
+#include "../../support/import_errors.h"
 #include "../../support/public_data.h"
 
 namespace {
 
 const std::string kReal = bs::test::public_data("tests/data/power/real/");
 
-template <class Parse>
-bs::ImportError error_of(Parse parse) {
-  try {
-    parse();
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  return bs::ImportError(bs::ImportErrorCategory::Io, {}, "no error");
-}
+// What each log format refuses a text with (the file name only labels the error).
+const auto smi_error_of = bs::test::import_errors_of(bs::kNvidiaSmiFileFormat, "x.csv");
+const auto perf_error_of = bs::test::import_errors_of(bs::kPerfStatFileFormat, "x.csv");
+const auto ptd_error_of = bs::test::import_errors_of(bs::kPtdLogFileFormat, "x.txt");
 
 bool near(double a, double b, double tol = 1e-9) { return std::abs(a - b) <= tol; }
 
@@ -149,35 +145,27 @@ class TestMeterLogs : public QObject {
     QCOMPARE(b.power_traces.at(0).provenance.gpu_model, std::string("NVIDIA GeForce GTX 1650"));
     // Two columns in W (power.draw and power.limit?) or none (nounits): the error says to keep the header.
     for (const char* text : {"2024/10/13 03:33:31.779, 19.46 W, 75.00 W\n", "2024/10/13 03:33:31.779, 0, 19.46\n"}) {
-      const auto e = error_of([&] { bs::kNvidiaSmiFileFormat.parse_text(text, "nh.csv"); });
+      const auto e = smi_error_of(text);
       QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
       QVERIFY2(e.reason().find("keep the header") != std::string::npos, e.what());
     }
   }
   void nvidia_smi_broken_logs() {
     // No timestamp: the -l interval is not in the file.
-    auto e = error_of([] { bs::kNvidiaSmiFileFormat.parse_text("power.draw [W]\n20.0 W\n", "x.csv"); });
+    auto e = smi_error_of("power.draw [W]\n20.0 W\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
     QVERIFY(e.reason().find("timestamp") != std::string::npos);
-    e = error_of([] {
-      bs::kNvidiaSmiFileFormat.parse_text(
-          "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 20 W\n"
-          "2024/01/01 00:00:00.000, 20 W\n2024/01/01 00:00:02.000, 20 W\n",
-          "x.csv");
-    });
+    e = smi_error_of(
+        "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, 20 W\n"
+        "2024/01/01 00:00:00.000, 20 W\n2024/01/01 00:00:02.000, 20 W\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{3});
-    e = error_of([] {
-      bs::kNvidiaSmiFileFormat.parse_text(
-          "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, lots W\n"
-          "2024/01/01 00:00:02.000, 20 W\n",
-          "x.csv");
-    });
+    e = smi_error_of(
+        "timestamp, power.draw [W]\n2024/01/01 00:00:01.000, lots W\n"
+        "2024/01/01 00:00:02.000, 20 W\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().field, std::string("power.draw"));
-    e = error_of([] {
-      bs::kNvidiaSmiFileFormat.parse_text("timestamp, power.draw [kW]\n2024/01/01 00:00:01.000, 1\n", "x.csv");
-    });
+    e = smi_error_of("timestamp, power.draw [kW]\n2024/01/01 00:00:01.000, 1\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::Unsupported);
     // A cut-off last line and a repeated header are skipped with warnings.
     const auto b = bs::kNvidiaSmiFileFormat.parse_text(
@@ -297,8 +285,7 @@ class TestMeterLogs : public QObject {
   }
   void perf_broken_outputs() {
     // -x without -I: energy but no elapsed time.
-    auto e = error_of(
-        [] { bs::kPerfStatFileFormat.parse_text("893.33,Joules,power/energy-pkg/,20005559241,100.00,,\n", "x.csv"); });
+    auto e = perf_error_of("893.33,Joules,power/energy-pkg/,20005559241,100.00,,\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
     QVERIFY(e.reason().find("-I") != std::string::npos);
     // ... unless duration_time was counted: 893.33 J over 20.0 s.
@@ -307,25 +294,16 @@ class TestMeterLogs : public QObject {
         "20000000000,ns,duration_time,20000000000,100.00,,\n",
         "d.csv");
     QVERIFY(near(d.power_traces.at(0).channels.at(0).values[0], 893.33 / 20.0));
-    e = error_of([] {
-      bs::kPerfStatFileFormat.parse_text(
-          " Performance counter stats for 'sleep 1':\n 1,990,524 cycles\n"
-          " 1.0 seconds time elapsed\n",
-          "x.txt");
-    });
+    e = perf_error_of(
+        " Performance counter stats for 'sleep 1':\n 1,990,524 cycles\n"
+        " 1.0 seconds time elapsed\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::MissingField);
-    e = error_of([] {
-      bs::kPerfStatFileFormat.parse_text(
-          "1.0,abc,Joules,power/energy-pkg/,1,100\n2.0,1,Joules,power/energy-pkg/,1,100\n", "x.csv");
-    });
+    e = perf_error_of("1.0,abc,Joules,power/energy-pkg/,1,100\n2.0,1,Joules,power/energy-pkg/,1,100\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{1});
-    e = error_of([] {
-      bs::kPerfStatFileFormat.parse_text(
-          "2.0,1,Joules,power/energy-pkg/,1,100\n1.0,1,Joules,power/energy-pkg/,1,100\n"
-          "3.0,1,Joules,power/energy-pkg/,1,100\n",
-          "x.csv");
-    });
+    e = perf_error_of(
+        "2.0,1,Joules,power/energy-pkg/,1,100\n1.0,1,Joules,power/energy-pkg/,1,100\n"
+        "3.0,1,Joules,power/energy-pkg/,1,100\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{2});
   }
@@ -398,21 +376,15 @@ class TestMeterLogs : public QObject {
         "Time,28-12-2020 15:21:15.686,Watts,23.08,Volts,228.44,Amps,0.20732,PF,0.4874,Mark,x\n",
         "dm.txt");
     QCOMPARE(b.power_traces.at(0).start_time, std::string("2020-12-28T15:21:14.682"));
-    auto e = error_of([] {
-      bs::kPtdLogFileFormat.parse_text(
-          "Time,12-23-2020 10:21:52.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
-          "Time,12-23-2020 10:21:51.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
-          "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n",
-          "x.txt");
-    });
+    auto e = ptd_error_of(
+        "Time,12-23-2020 10:21:52.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
+        "Time,12-23-2020 10:21:51.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n"
+        "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().line, std::size_t{2});
-    e = error_of([] {
-      bs::kPtdLogFileFormat.parse_text(
-          "Time,12-23-2020 10:21:52.000,Watts,x,Volts,1,Amps,1,PF,1,Mark,a\n"
-          "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n",
-          "x.txt");
-    });
+    e = ptd_error_of(
+        "Time,12-23-2020 10:21:52.000,Watts,x,Volts,1,Amps,1,PF,1,Mark,a\n"
+        "Time,12-23-2020 10:21:53.000,Watts,1,Volts,1,Amps,1,PF,1,Mark,a\n");
     QCOMPARE(e.category(), bs::ImportErrorCategory::InvalidValue);
     QCOMPARE(e.location().field, std::string("Watts"));
   }

@@ -6,6 +6,7 @@
 
 #include "../../support/find_item.h"
 #include "../../support/import_errors.h"
+#include "../../support/importer_parse.h"
 #include "../../support/text_lines.h"
 
 using bs::test::any_line_contains;
@@ -33,9 +34,8 @@ class TestPowerCsv : public QObject {
   Q_OBJECT
  private slots:
   void paper_sample_log() {
-    const bs::CancelToken cancel;
-    const auto batch = bs::kPowerCsvFileFormat.parse(
-        BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/nuc-current.csv", {}, {}, cancel);
+    const auto batch = bs::test::parse_with(bs::kPowerCsvFileFormat,
+                                            BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018/power/nuc-current.csv");
     const bs::PowerTrace& t = batch.power_traces.at(0);
     QCOMPARE(t.platform, std::string("NUC"));
     QCOMPARE(*t.supply_voltage_v, 16.0);

@@ -13,6 +13,7 @@
 
 #include "../../support/file_text.h"
 #include "../../support/import_errors.h"
+#include "../../support/importer_parse.h"
 #include "../../support/near.h"
 #include "../../support/public_data.h"
 #include "../../support/result_set_lookup.h"
@@ -20,21 +21,16 @@
 using bs::test::file_text;
 using bs::test::find_measurement;
 using bs::test::near;
+using bs::test::parse_with;
 
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/clpeak/";  // the project's own fixtures
 constexpr const char* kRealFolder = "tests/data/importers/clpeak";        // real outputs (third-party)
 const std::string kReal = bs::test::public_data("tests/data/importers/clpeak/");
 
-bs::ImportBatch parse_file(const std::string& name) {
-  const bs::CancelToken cancel;
-  return bs::kClpeakTextFileFormat.parse(kData + name, {}, {}, cancel);
-}
+bs::ImportBatch parse_file(const std::string& name) { return parse_with(bs::kClpeakTextFileFormat, kData + name); }
 
-bs::ImportBatch parse_real(const std::string& name) {
-  const bs::CancelToken cancel;
-  return bs::kClpeakTextFileFormat.parse(kReal + name, {}, {}, cancel);
-}
+bs::ImportBatch parse_real(const std::string& name) { return parse_with(bs::kClpeakTextFileFormat, kReal + name); }
 
 std::string read_real(const std::string& name) { return file_text(kReal + name); }
 

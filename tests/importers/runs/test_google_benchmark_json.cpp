@@ -13,6 +13,8 @@
 #include "runs/google_benchmark_json.h"
 
 #include "../../support/file_text.h"
+#include "../../support/import_errors.h"
+#include "../../support/importer_parse.h"
 #include "../../support/near.h"
 #include "../../support/public_data.h"
 #include "../../support/result_set_lookup.h"
@@ -20,6 +22,7 @@
 using bs::test::file_text;
 using bs::test::find_measurement;
 using bs::test::near;
+using bs::test::parse_with;
 using bs::test::setting;
 
 namespace {
@@ -34,12 +37,7 @@ double aggregate(const bs::Measurement& m, const std::string& name) {
 
 // The ImportError of parsing `text`, or a failure when it was accepted.
 bs::ImportError error_of(const std::string& text) {
-  try {
-    bs::parse_google_benchmark_json(text, "e.json");
-  } catch (const bs::ImportError& e) {
-    return e;
-  }
-  throw std::runtime_error("accepted: " + text);
+  return bs::test::import_error_of([&] { return bs::parse_google_benchmark_json(text, "e.json"); });
 }
 
 // One document with the given rows, each row's text given without braces.
@@ -50,14 +48,12 @@ std::string with_rows(const std::vector<std::string>& rows) {
 }
 
 bs::ImportBatch parse_file(const std::string& name) {
-  const bs::CancelToken cancel;
-  return bs::kGoogleBenchmarkJsonFileFormat.parse(kData + name, {}, {}, cancel);
+  return parse_with(bs::kGoogleBenchmarkJsonFileFormat, kData + name);
 }
 
 // A real output: a third-party file of tests/data/importers/google-benchmark/ in the shared folder (SOURCES there).
 bs::ImportBatch parse_real(const std::string& name) {
-  const bs::CancelToken cancel;
-  return bs::kGoogleBenchmarkJsonFileFormat.parse(bs::test::public_data(kRealFolder + ("/" + name)), {}, {}, cancel);
+  return parse_with(bs::kGoogleBenchmarkJsonFileFormat, bs::test::public_data(kRealFolder + ("/" + name)));
 }
 
 // A one-row document with the given counters, for unit inference.

@@ -18,6 +18,7 @@
 #include "runs/run_json.h"
 
 #include "../../support/import_errors.h"
+#include "../../support/importer_parse.h"
 
 namespace {
 const std::string kData = BENCHSCOPE_TEST_DATA_DIR "/importers/";
@@ -53,8 +54,7 @@ std::string read_text(const std::string& path) {
 }
 
 bs::ImportBatch load_fixture() {
-  const bs::CancelToken cancel;
-  return bs::kRunJsonFileFormat.parse(kData + "run-json/two-runs.json", {}, {}, cancel);
+  return bs::test::parse_with(bs::kRunJsonFileFormat, kData + "run-json/two-runs.json");
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -334,8 +334,7 @@ class TestRunJson : public QObject {
     bs::save_run_json(path, batch.runs);
     bs::save_run_json(path, batch.runs);                                         // replaces an existing file
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"out.json"});  // no temporary left behind
-    const bs::CancelToken cancel;
-    expect_same_runs(batch.runs, bs::kRunJsonFileFormat.parse(path, {}, {}, cancel).runs);
+    expect_same_runs(batch.runs, bs::test::parse_with(bs::kRunJsonFileFormat, path).runs);
     QVERIFY_THROWS_EXCEPTION(std::runtime_error,
                              bs::save_run_json(dir.filePath("no-such-dir/out.json").toStdString(), batch.runs));
   }

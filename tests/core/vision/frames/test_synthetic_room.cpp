@@ -4,23 +4,14 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "../../../support/core_ray_projection.h"
 #include "vision/frames/synthetic_room.h"
-#include "vision/lens/fisheye_opencv.h"
 
 using namespace bs::vision;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// Where a camera-frame ray lands in the fisheye image (the forward lens model), nullopt outside FOV or image.
-std::optional<cv::Point2d> project(const Lens& lens, const cv::Vec3d& v) {
-  // BenchScope's ray space (x forward, y right, z up) in OpenCV's camera frame (x right, y down, z forward).
-  const auto p = project_camera_point(lens, cv::Vec3d(v[1], -v[2], v[0]));
-  if (!p || (v[1] == 0 && v[2] == 0)) return std::nullopt;
-  if (p->x < 1 || p->y < 1 || p->x > lens.width - 2 || p->y > lens.height - 2) return std::nullopt;
-  return p;
-}
 
 }  // namespace
 
@@ -91,7 +82,7 @@ class TestSyntheticRoom : public QObject {
     for (const auto& seg : room_grid_lines(room_yaw(o.seed)))
       for (int i = 1; i < 40; ++i) {
         const double t = i / 40.0;
-        const auto p = project(lens, seg.a * (1 - t) + seg.b * t);
+        const auto p = bs::test::project_ray(lens, seg.a * (1 - t) + seg.b * t, 1);
         if (!p) continue;
         ++total;
         on_line += gray.at<std::uint8_t>(cvRound(p->y), cvRound(p->x)) < 40;  // lines reflect 6 %, walls 60 %+

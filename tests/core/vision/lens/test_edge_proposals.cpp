@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "../../../support/core_ray_projection.h"
 #include "../../../support/room_lens.h"
 #include "vision/frames/synthetic_room.h"
 #include "vision/lens/edge_proposals.h"
@@ -23,14 +24,6 @@ constexpr double kPi = 3.14159265358979323846;
 // Straightness under the true lens below which a proposal counts as a line of the world: the straight ones measure
 // 0.02 to 0.11 px here, two stripes meeting at a room's corner 0.25 px and more.
 constexpr double kStraightPx = 0.2;
-
-std::optional<cv::Point2d> project(const Lens& lens, const cv::Vec3d& v) {
-  // BenchScope's ray space (x forward, y right, z up) in OpenCV's camera frame (x right, y down, z forward).
-  const auto p = project_camera_point(lens, cv::Vec3d(v[1], -v[2], v[0]));
-  if (!p || (v[1] == 0 && v[2] == 0)) return std::nullopt;
-  if (p->x < 0 || p->y < 0 || p->x > lens.width - 1 || p->y > lens.height - 1) return std::nullopt;
-  return p;
-}
 
 double polyline_distance(const PickedLine& line, const cv::Point2d& q) {
   double best = 1e300;
@@ -75,7 +68,7 @@ std::vector<TruthLine> visible_grid_lines(const Lens& lens, std::uint64_t seed, 
     TruthLine t;
     for (int i = 0; i <= 2000; ++i) {
       const cv::Vec3d p = seg.a + (seg.b - seg.a) * (i / 2000.0);
-      const auto q = project(lens, p);
+      const auto q = bs::test::project_ray(lens, p);
       if (!q || cv::norm(*q - lens.centre()) > rim - margin) continue;
       const cv::Vec3d c = room_colour(p, yaw);
       if (std::abs(c[0] - 0.06) > 1e-9 || std::abs(c[2] - 0.06) > 1e-9) continue;  // hidden by an object
@@ -254,7 +247,7 @@ class TestEdgeProposals : public QObject {
     for (const auto& seg : room_grid_lines(room_yaw(5))) {  // the longest in view
       PickedLine l;
       for (int i = 0; i <= 400; ++i) {
-        const auto p = project(truth, seg.a + (seg.b - seg.a) * (i / 400.0));
+        const auto p = bs::test::project_ray(truth, seg.a + (seg.b - seg.a) * (i / 400.0));
         if (!p || cv::norm(*p - truth.centre()) > 560) continue;
         if (!l.empty() && cv::norm(*p - l.back()) < 4) continue;
         l.emplace_back(p->x + rng.gaussian(0.1), p->y + rng.gaussian(0.1));

@@ -2,6 +2,8 @@
 #include <QTest>
 #include <cmath>
 
+#include "../../../support/core_ray_projection.h"
+#include "../../../support/refusal.h"
 #include "../../../support/room_lens.h"
 #include "vision/frames/synthetic_room.h"
 #include "vision/lens/fisheye_opencv.h"
@@ -12,15 +14,6 @@ using namespace bs::vision;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// Forward model: where a camera-frame ray lands in the fisheye image; nullopt beyond the FOV or off the sensor.
-std::optional<cv::Point2d> project(const Lens& lens, const cv::Vec3d& v) {
-  // BenchScope's ray space (x forward, y right, z up) in OpenCV's camera frame (x right, y down, z forward).
-  const auto p = project_camera_point(lens, cv::Vec3d(v[1], -v[2], v[0]));
-  if (!p || (v[1] == 0 && v[2] == 0)) return std::nullopt;
-  if (p->x < 0 || p->y < 0 || p->x > lens.width - 1 || p->y > lens.height - 1) return std::nullopt;
-  return p;
-}
 
 // The room's grid lines through `lens`, as the user would pick them: runs of >= 6 visible points per 3D segment,
 // every 12th point of a dense sampling, with Gaussian click noise.
@@ -35,7 +28,7 @@ std::vector<PickedLine> picked_room_lines(const Lens& lens, std::uint64_t seed, 
     };
     for (int i = 1; i < 48; ++i) {
       const double t = i / 48.0;
-      const auto p = project(lens, seg.a * (1 - t) + seg.b * t);
+      const auto p = bs::test::project_ray(lens, seg.a * (1 - t) + seg.b * t);
       if (!p) {
         flush();
         continue;
@@ -93,7 +86,7 @@ class TestLineFit : public QObject {
       for (double th : {0.1, 0.6, 1.0, 1.4}) {
         if (th > l.fov_deg * kPi / 360) continue;
         const cv::Vec3d v(std::cos(th), std::sin(th) * std::cos(0.7), std::sin(th) * std::sin(0.7));
-        const auto p = project(l, v);
+        const auto p = bs::test::project_ray(l, v);
         if (!p) continue;
         const auto back = pixel_to_ray(l, *p);
         QVERIFY(back.has_value());
@@ -252,12 +245,9 @@ class TestLineFit : public QObject {
     QCOMPARE(back[1][2], lines[1][2]);
     nlohmann::json bad = j;
     bad["lines"][1][2] = {1.0};
-    try {
-      lines_from_json(bad);
-      QFAIL("accepted a point with one coordinate");
-    } catch (const std::invalid_argument& e) {
-      QVERIFY2(std::string(e.what()).find("/lines/1/2") != std::string::npos, e.what());
-    }
+    const QString refusal =
+        bs::test::refusal<std::invalid_argument>([&] { lines_from_json(bad); });  // a one-coordinate point
+    QVERIFY2(refusal.contains("/lines/1/2"), qPrintable(refusal));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, lines_from_json(nlohmann::json{{"format", "other"}}));
   }
 };

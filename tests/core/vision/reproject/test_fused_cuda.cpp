@@ -4,6 +4,7 @@
 // one the path must refuse with a reason instead of failing later.
 #include <QTest>
 
+#include "../../../support/refusal.h"
 #include "../small_paper_lens.h"
 #include "vision/lens/lens.h"
 #include "vision/reproject/cuda_preprocess.h"
@@ -91,12 +92,8 @@ class TestFusedCuda : public QObject {
     const std::string why = cuda_preprocessing_unavailable();
     if (!why.empty()) {
       // No GPU (or no nvcc): building the preprocessor must fail at once, saying why, not at the first frame.
-      try {
-        make_cuda_preprocessor(lens, view, BayerPattern::BGGR);
-        QFAIL("make_cuda_preprocessor succeeded although the CUDA path says it cannot run");
-      } catch (const std::runtime_error& e) {
-        QVERIFY2(std::string(e.what()).find(why) != std::string::npos, e.what());
-      }
+      const QString refusal = bs::test::refusal([&] { make_cuda_preprocessor(lens, view, BayerPattern::BGGR); });
+      QVERIFY2(refusal.contains(QString::fromStdString(why)), qPrintable(refusal));
       QSKIP(qPrintable(QString("kernel not run here: %1").arg(QString::fromStdString(why))));
     }
     CudaPreprocessorInfo info;
@@ -116,12 +113,8 @@ class TestFusedCuda : public QObject {
     const View view = side_view();
     const std::string why = cuda_preprocessing_unavailable();
     if (!why.empty()) {
-      try {
-        CudaFusedSteps steps(lens, view, BayerPattern::RGGB);
-        QFAIL("CudaFusedSteps was built although the CUDA path says it cannot run");
-      } catch (const std::runtime_error& e) {
-        QVERIFY2(std::string(e.what()).find(why) != std::string::npos, e.what());
-      }
+      const QString refusal = bs::test::refusal([&] { CudaFusedSteps steps(lens, view, BayerPattern::RGGB); });
+      QVERIFY2(refusal.contains(QString::fromStdString(why)), qPrintable(refusal));
       QSKIP(qPrintable(QString("kernel not run here: %1").arg(QString::fromStdString(why))));
     }
     CudaFusedSteps steps(lens, view, BayerPattern::RGGB);
