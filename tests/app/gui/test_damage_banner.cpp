@@ -13,6 +13,7 @@
 #include <QToolBar>
 
 #include "../../support/bad_workspaces.h"
+#include "../../support/test_settings.h"
 #include "main_window.h"
 #include "workspace/damage_banner.h"
 
@@ -38,8 +39,7 @@ class TestDamageBanner : public QObject {
 
  private slots:
   void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_damage_banner");
+    bs::test::use_test_settings("test_damage_banner");
     base_ = dir_.filePath("paper.bsw");
     {
       bs::ui::MainWindow w;  // closed at the end of the scope, so the file is complete without its WAL

@@ -19,6 +19,7 @@
 #include <QTest>
 #include <QTimer>
 
+#include "../../support/test_settings.h"
 #include "export_figure_dialog.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
@@ -29,11 +30,7 @@
 class TestHeadroomTab : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_headroom_tab");
-    QSettings().clear();
-  }
+  void initTestCase() { bs::test::use_fresh_test_settings("test_headroom_tab"); }
 
   void run_store_show_export_cancel() {
     QTemporaryDir dir;

@@ -22,6 +22,7 @@
 #include <set>
 
 #include <QTableWidget>
+#include "../../support/test_settings.h"
 #include "export_figure_dialog.h"
 #include "main_window.h"
 #include "overlay_geometry.h"
@@ -36,10 +37,7 @@
 class TestMainWindow : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_main_window");
-  }
+  void initTestCase() { bs::test::use_test_settings("test_main_window"); }
 
   void opens_sample_data_and_plots_every_run() {
     QTemporaryDir dir;

@@ -13,6 +13,7 @@
 #include <QUndoStack>
 #include <cmath>
 
+#include "../../support/test_settings.h"
 #include "main_window.h"
 #include "platform/platform_view.h"
 #include "power/battery_view.h"
@@ -60,10 +61,7 @@ QString banner(const MainWindow& w) { return w.frames_view()->triptych()->banner
 class TestMainWindowKeeps : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_main_window_keeps");
-  }
+  void initTestCase() { bs::test::use_test_settings("test_main_window_keeps"); }
 
   void lens_survives_save_and_reopen() {
     QTemporaryDir dir;

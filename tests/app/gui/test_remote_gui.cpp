@@ -30,6 +30,7 @@
 #include "../../support/cli_harness.h"
 #include "../../support/scenario_window.h"
 #include "../../support/ssh_robot.h"
+#include "../../support/test_settings.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
@@ -103,10 +104,7 @@ std::string setting(const bs::Provenance& p, const std::string& key) {
 class TestRemoteGui : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_remote_gui");
-  }
+  void initTestCase() { bs::test::use_test_settings("test_remote_gui"); }
 
   void sweep_on_a_robot_is_plotted_live_and_imported() {
     QTemporaryDir dir;
