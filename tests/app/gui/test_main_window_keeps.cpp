@@ -316,6 +316,8 @@ class TestMainWindowKeeps : public QObject {
     for (int i = 0; i < tabs->count(); ++i) {
       tabs->setCurrentIndex(i);
       QCoreApplication::processEvents();
+      // The window's minimum (docks + the tab page in front) must leave it resizable to 1280 px; the widest
+      // children say which part is too wide.
       QString widest;
       for (QWidget* c : tabs->widget(i)->findChildren<QWidget*>())
         if (c->isVisibleTo(tabs->widget(i)) && c->minimumSizeHint().width() > 700)
@@ -325,6 +327,7 @@ class TestMainWindowKeeps : public QObject {
                                                                    .arg(w.minimumSizeHint().width())
                                                                    .arg(tabs->widget(i)->minimumSizeHint().width())
                                                                    .arg(widest)));
+      QVERIFY2(w.width() <= 1280, qPrintable(tabs->tabText(i)));
     }
   }
 };
