@@ -31,6 +31,7 @@
 #include "../../support/scenario_window.h"
 #include "../../support/ssh_robot.h"
 #include "../../support/test_settings.h"
+#include "../remote_provenance.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
@@ -46,6 +47,8 @@
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "workspace/workspace_tree.h"
+
+using bs::test::setting;
 
 namespace {
 
@@ -93,10 +96,12 @@ void choose_robot(bs::ui::RobotTarget* target) {
   QVERIFY2(target->check()->ok, target->check()->problem.c_str());
 }
 
-std::string setting(const bs::Provenance& p, const std::string& key) {
-  for (const auto& [k, v] : p.settings)
-    if (k == key) return v;
-  return {};
+// The robot chosen on a tab's own "Run on" (each run panel has one): the tab showing `view` clicked as a person
+// does, the robots list read again from the file and the SSH config, the robot chosen and checked (choose_robot).
+void choose_robot_on_tab(bs::ui::MainWindow& w, QWidget* view, bs::ui::RobotTarget* target) {
+  bs::test::click_tab(w, bs::test::tab_of(w, view));
+  target->reload();
+  choose_robot(target);
 }
 
 }  // namespace
@@ -190,11 +195,9 @@ class TestRemoteGui : public QObject {
     bs::ui::MainWindow w;
     open_at_1280x800(w, dir.filePath("headroom.bsw"));
     if (QTest::currentTestFailed()) return;
-    bs::test::click_tab(w, bs::test::tab_of(w, w.headroom_view()));
     bs::ui::HeadroomRunPanel* panel = w.headroom_view()->run_panel();
     bs::ui::RobotTarget* target = panel->target();
-    target->reload();
-    choose_robot(target);
+    choose_robot_on_tab(w, w.headroom_view(), target);
     if (QTest::currentTestFailed()) return;
     // A short measurement: 500 Hz, 0.3 s per phase, idle then the FLOPS kernel with one worker, no real-time.
     panel->rate()->setValue(500);
@@ -272,11 +275,9 @@ class TestRemoteGui : public QObject {
     bs::ui::MainWindow w;
     open_at_1280x800(w, dir.filePath("pipeline.bsw"));
     if (QTest::currentTestFailed()) return;
-    bs::test::click_tab(w, bs::test::tab_of(w, w.pipeline_view()));
     bs::ui::PipelineMeasurePanel* panel = w.pipeline_view()->measure_panel();
     bs::ui::RobotTarget* target = panel->target();
-    target->reload();
-    choose_robot(target);
+    choose_robot_on_tab(w, w.pipeline_view(), target);
     if (QTest::currentTestFailed()) return;
     QVERIFY(panel->measure_button()->text() == "Measure on robot");
     panel->frames()->setValue(6);
@@ -339,11 +340,9 @@ class TestRemoteGui : public QObject {
     bs::ui::MainWindow w;
     open_at_1280x800(w, dir.filePath("sustain.bsw"));
     if (QTest::currentTestFailed()) return;
-    bs::test::click_tab(w, bs::test::tab_of(w, w.sustain_view()));
     bs::ui::SustainRunPanel* panel = w.sustain_view()->run_panel();
     bs::ui::RobotTarget* target = panel->target();
-    target->reload();
-    choose_robot(target);
+    choose_robot_on_tab(w, w.sustain_view(), target);
     if (QTest::currentTestFailed()) return;
     panel->load()->setText("flops:1");
     panel->seconds()->setValue(3);
