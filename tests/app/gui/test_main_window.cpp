@@ -22,6 +22,7 @@
 #include <set>
 
 #include <QTableWidget>
+#include "../../support/file_bytes.h"
 #include "../../support/test_settings.h"
 #include "export_figure_dialog.h"
 #include "main_window.h"
@@ -249,10 +250,8 @@ class TestMainWindow : public QObject {
 
   void background_import_reports_per_file() {
     QTemporaryDir dir;
-    QFile bad(dir.filePath("bad.json"));
-    QVERIFY(bad.open(QIODevice::WriteOnly));
-    bad.write("{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": [");
-    bad.close();
+    QVERIFY(
+        bs::test::write_file(dir.filePath("bad.json"), "{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": ["));
     QWidget parent;
     bs::ui::ImportController controller(&parent);
     QSignalSpy done(&controller, &bs::ui::ImportController::finished);
@@ -406,10 +405,7 @@ class TestMainWindow : public QObject {
 
   void bad_workspace_gives_an_error_not_a_crash() {
     QTemporaryDir dir;
-    QFile f(dir.filePath("not.bsw"));
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write("plain text");
-    f.close();
+    QVERIFY(bs::test::write_file(dir.filePath("not.bsw"), "plain text"));
     bs::ui::MainWindow w;
     QTimer::singleShot(0, [] {
       for (QWidget* top : QApplication::topLevelWidgets())

@@ -13,6 +13,7 @@
 #include <QUndoStack>
 #include <cmath>
 
+#include "../../support/file_bytes.h"
 #include "../../support/test_settings.h"
 #include "main_window.h"
 #include "platform/platform_view.h"
@@ -179,11 +180,7 @@ class TestMainWindowKeeps : public QObject {
   void current_only_log_gains_power_from_a_typed_voltage() {
     QTemporaryDir dir;
     const QString csv = dir.filePath("otii.csv");
-    {
-      QFile f(csv);
-      QVERIFY(f.open(QIODevice::WriteOnly));
-      f.write("time_s,current_A\n0,0.50\n0.1,0.60\n0.2,0.70\n0.3,0.60\n0.4,0.50\n");
-    }
+    QVERIFY(bs::test::write_file(csv, "time_s,current_A\n0,0.50\n0.1,0.60\n0.2,0.70\n0.3,0.60\n0.4,0.50\n"));
     const QString ws = dir.filePath("power.bsw");
     std::int64_t id = 0;
     {
@@ -236,14 +233,8 @@ class TestMainWindowKeeps : public QObject {
   void voltage_borrowed_from_another_log() {
     QTemporaryDir dir;
     const QString current = dir.filePath("clamp.csv"), supply = dir.filePath("supply.csv");
-    {
-      QFile f(current);
-      QVERIFY(f.open(QIODevice::WriteOnly));
-      f.write("# platform: NUC\ntime_s,current_A\n0,1.0\n1,2.0\n2,1.0\n");
-      QFile g(supply);
-      QVERIFY(g.open(QIODevice::WriteOnly));
-      g.write("# platform: NUC\ntime_s,voltage_V,current_A\n0,12.0,0.1\n2,12.0,0.1\n");
-    }
+    QVERIFY(bs::test::write_file(current, "# platform: NUC\ntime_s,current_A\n0,1.0\n1,2.0\n2,1.0\n"));
+    QVERIFY(bs::test::write_file(supply, "# platform: NUC\ntime_s,voltage_V,current_A\n0,12.0,0.1\n2,12.0,0.1\n"));
     MainWindow w;
     QVERIFY(w.open_workspace(dir.filePath("b.bsw")));
     w.import_paths_now({current, supply});
