@@ -34,4 +34,10 @@ inline PaperSample load_paper_sample() {
   return s;
 }
 
+inline void load_paper_sample(std::vector<FlopsRun>& runs, std::vector<PowerTrace>& traces) {
+  PaperSample s = load_paper_sample();
+  runs = std::move(s.runs);
+  traces = std::move(s.traces);
+}
+
 }  // namespace bs::test

@@ -104,17 +104,6 @@ inline QStringList words_past(const PdfPage& page, double right_pt) {
   return out;
 }
 
-// What a reader sees wrong on a figure's page: words printed over each other and words past its right edge, each
-// said as a problem with `prefix` first (which figure it is, or nothing).
-inline QStringList layout_problems(const PdfPage& page, const QString& prefix = {}) {
-  QStringList out;
-  for (const QString& p : overprinted_words(page))
-    out << prefix + QStringLiteral("words print over each other: %1").arg(p);
-  for (const QString& p : words_past(page, page.size.width()))
-    out << prefix + QStringLiteral("a word runs past the figure's edge: %1").arg(p);
-  return out;
-}
-
 // Page `page` (1-based) rendered at `dpi` as an image (pdftoppm), for pixel checks and for looking at it.
 inline QImage pdf_page_image(const QString& pdf, int page, int dpi, const QString& png_stem) {
   run_tool("pdftoppm", {"-f", QString::number(page), "-l", QString::number(page), "-r", QString::number(dpi), "-png",

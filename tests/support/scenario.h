@@ -74,20 +74,6 @@ inline bool wait_until(const std::function<bool()>& done, int polls = 1500) {
   return done();
 }
 
-// Picks the item below the current one of a combo box as a person does: a click opens its list, Down and Return
-// pick. The keys go to the open list itself (it has the keyboard while open): key() would first try to make it the
-// active window, which a popup never becomes, and under load the list could close meanwhile. Empty when the list
-// opened and stayed open until the pick; else what went wrong.
-inline QString pick_next_in_list(QComboBox* choice) {
-  click(choice);
-  if (!wait_until([] { return QApplication::activePopupWidget() != nullptr; }, 100)) return "the list did not open";
-  const QPointer<QWidget> list = QApplication::activePopupWidget();
-  QTest::keyClick(list->windowHandle(), Qt::Key_Down);
-  if (!list || !list->isVisible()) return "the list closed before the person picked";
-  QTest::keyClick(list->windowHandle(), Qt::Key_Return);
-  return {};
-}
-
 // The button of `dialog` whose text (without '&') is `text`, or of the standard kind `which`.
 inline QAbstractButton* button(QWidget* dialog, const QString& text) {
   for (QAbstractButton* b : dialog->findChildren<QAbstractButton*>())

@@ -4,6 +4,7 @@
 // and "Remove damaged items…" after its confirmation removes them and makes the workspace writable again.
 #include <QApplication>
 #include <QCoreApplication>
+#include <QFile>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTemporaryDir>
@@ -12,10 +13,17 @@
 #include <QToolBar>
 
 #include "../../support/bad_workspaces.h"
-#include "../../support/file_bytes.h"
-#include "../../support/test_settings.h"
 #include "main_window.h"
 #include "workspace/damage_banner.h"
+
+namespace {
+
+QByteArray bytes_of(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+}  // namespace
 
 class TestDamageBanner : public QObject {
   Q_OBJECT
@@ -30,7 +38,8 @@ class TestDamageBanner : public QObject {
 
  private slots:
   void initTestCase() {
-    bs::test::use_test_settings("test_damage_banner");
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_damage_banner");
     base_ = dir_.filePath("paper.bsw");
     {
       bs::ui::MainWindow w;  // closed at the end of the scope, so the file is complete without its WAL
@@ -65,7 +74,7 @@ class TestDamageBanner : public QObject {
     QFETCH(QString, item);
     const QString path = QString::fromStdString(make(name.toStdString()));
     QVERIFY(!path.isEmpty());
-    const QByteArray before = bs::test::bytes_of(path);
+    const QByteArray before = bytes_of(path);
     {
       bs::ui::MainWindow w;
       QVERIFY(w.open_workspace(path));
@@ -84,7 +93,7 @@ class TestDamageBanner : public QObject {
       }
       QVERIFY(refused);
     }
-    QVERIFY2(bs::test::bytes_of(path) == before, "opening a damaged workspace in the GUI wrote to it");
+    QVERIFY2(bytes_of(path) == before, "opening a damaged workspace in the GUI wrote to it");
   }
 
   void remove_button_asks_then_removes() {

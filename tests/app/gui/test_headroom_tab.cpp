@@ -19,7 +19,6 @@
 #include <QTest>
 #include <QTimer>
 
-#include "../../support/test_settings.h"
 #include "export_figure_dialog.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
@@ -30,7 +29,11 @@
 class TestHeadroomTab : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() { bs::test::use_fresh_test_settings("test_headroom_tab"); }
+  void initTestCase() {
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_headroom_tab");
+    QSettings().clear();
+  }
 
   void run_store_show_export_cancel() {
     QTemporaryDir dir;

@@ -22,8 +22,6 @@
 #include <set>
 
 #include <QTableWidget>
-#include "../../support/file_bytes.h"
-#include "../../support/test_settings.h"
 #include "export_figure_dialog.h"
 #include "main_window.h"
 #include "overlay_geometry.h"
@@ -38,7 +36,10 @@
 class TestMainWindow : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() { bs::test::use_test_settings("test_main_window"); }
+  void initTestCase() {
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_main_window");
+  }
 
   void opens_sample_data_and_plots_every_run() {
     QTemporaryDir dir;
@@ -140,6 +141,25 @@ class TestMainWindow : public QObject {
     // Zooming into the first 10 s changes the statistics to that range.
     view->plot()->xAxis->setRange(0, 10);
     QVERIFY(view->table()->item(0, 1)->text() != "1,200");
+  }
+
+  void every_tab_fits_a_1280x800_window() {
+    QTemporaryDir dir;
+    bs::ui::MainWindow w;
+    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
+    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
+    w.resize(1280, 800);
+    w.show();
+    auto* tabs = qobject_cast<QTabWidget*>(w.centralWidget());
+    QVERIFY(tabs);
+    for (int i = 0; i < tabs->count(); ++i) {
+      tabs->setCurrentIndex(i);
+      QCoreApplication::processEvents();
+      // The window's minimum (docks + the tab page in front) must leave it resizable to 1280 px.
+      QVERIFY2(w.minimumSizeHint().width() <= 1280,
+               qPrintable(QString("%1: window needs %2 px").arg(tabs->tabText(i)).arg(w.minimumSizeHint().width())));
+      QVERIFY2(w.width() <= 1280, qPrintable(tabs->tabText(i)));
+    }
   }
 
   void tree_lists_every_kind_and_edits_are_undoable() {
@@ -250,8 +270,10 @@ class TestMainWindow : public QObject {
 
   void background_import_reports_per_file() {
     QTemporaryDir dir;
-    QVERIFY(
-        bs::test::write_file(dir.filePath("bad.json"), "{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": ["));
+    QFile bad(dir.filePath("bad.json"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("{\"format\": \"benchscope-run\", \"version\": 1, \"runs\": [");
+    bad.close();
     QWidget parent;
     bs::ui::ImportController controller(&parent);
     QSignalSpy done(&controller, &bs::ui::ImportController::finished);
@@ -405,7 +427,10 @@ class TestMainWindow : public QObject {
 
   void bad_workspace_gives_an_error_not_a_crash() {
     QTemporaryDir dir;
-    QVERIFY(bs::test::write_file(dir.filePath("not.bsw"), "plain text"));
+    QFile f(dir.filePath("not.bsw"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("plain text");
+    f.close();
     bs::ui::MainWindow w;
     QTimer::singleShot(0, [] {
       for (QWidget* top : QApplication::topLevelWidgets())

@@ -30,8 +30,6 @@
 #include "../../support/cli_harness.h"
 #include "../../support/scenario_window.h"
 #include "../../support/ssh_robot.h"
-#include "../../support/test_settings.h"
-#include "../remote_provenance.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_view.h"
 #include "kernels/kernel_runner.h"
@@ -47,8 +45,6 @@
 #include "vision/pipeline_measure_panel.h"
 #include "vision/pipeline_view.h"
 #include "workspace/workspace_tree.h"
-
-using bs::test::setting;
 
 namespace {
 
@@ -96,12 +92,10 @@ void choose_robot(bs::ui::RobotTarget* target) {
   QVERIFY2(target->check()->ok, target->check()->problem.c_str());
 }
 
-// The robot chosen on a tab's own "Run on" (each run panel has one): the tab showing `view` clicked as a person
-// does, the robots list read again from the file and the SSH config, the robot chosen and checked (choose_robot).
-void choose_robot_on_tab(bs::ui::MainWindow& w, QWidget* view, bs::ui::RobotTarget* target) {
-  bs::test::click_tab(w, bs::test::tab_of(w, view));
-  target->reload();
-  choose_robot(target);
+std::string setting(const bs::Provenance& p, const std::string& key) {
+  for (const auto& [k, v] : p.settings)
+    if (k == key) return v;
+  return {};
 }
 
 }  // namespace
@@ -109,7 +103,10 @@ void choose_robot_on_tab(bs::ui::MainWindow& w, QWidget* view, bs::ui::RobotTarg
 class TestRemoteGui : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() { bs::test::use_test_settings("test_remote_gui"); }
+  void initTestCase() {
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_remote_gui");
+  }
 
   void sweep_on_a_robot_is_plotted_live_and_imported() {
     QTemporaryDir dir;
@@ -195,9 +192,11 @@ class TestRemoteGui : public QObject {
     bs::ui::MainWindow w;
     open_at_1280x800(w, dir.filePath("headroom.bsw"));
     if (QTest::currentTestFailed()) return;
+    bs::test::click_tab(w, bs::test::tab_of(w, w.headroom_view()));
     bs::ui::HeadroomRunPanel* panel = w.headroom_view()->run_panel();
     bs::ui::RobotTarget* target = panel->target();
-    choose_robot_on_tab(w, w.headroom_view(), target);
+    target->reload();
+    choose_robot(target);
     if (QTest::currentTestFailed()) return;
     // A short measurement: 500 Hz, 0.3 s per phase, idle then the FLOPS kernel with one worker, no real-time.
     panel->rate()->setValue(500);
@@ -275,9 +274,11 @@ class TestRemoteGui : public QObject {
     bs::ui::MainWindow w;
     open_at_1280x800(w, dir.filePath("pipeline.bsw"));
     if (QTest::currentTestFailed()) return;
+    bs::test::click_tab(w, bs::test::tab_of(w, w.pipeline_view()));
     bs::ui::PipelineMeasurePanel* panel = w.pipeline_view()->measure_panel();
     bs::ui::RobotTarget* target = panel->target();
-    choose_robot_on_tab(w, w.pipeline_view(), target);
+    target->reload();
+    choose_robot(target);
     if (QTest::currentTestFailed()) return;
     QVERIFY(panel->measure_button()->text() == "Measure on robot");
     panel->frames()->setValue(6);
@@ -340,9 +341,11 @@ class TestRemoteGui : public QObject {
     bs::ui::MainWindow w;
     open_at_1280x800(w, dir.filePath("sustain.bsw"));
     if (QTest::currentTestFailed()) return;
+    bs::test::click_tab(w, bs::test::tab_of(w, w.sustain_view()));
     bs::ui::SustainRunPanel* panel = w.sustain_view()->run_panel();
     bs::ui::RobotTarget* target = panel->target();
-    choose_robot_on_tab(w, w.sustain_view(), target);
+    target->reload();
+    choose_robot(target);
     if (QTest::currentTestFailed()) return;
     panel->load()->setText("flops:1");
     panel->seconds()->setValue(3);

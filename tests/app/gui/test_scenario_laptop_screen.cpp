@@ -27,7 +27,6 @@
 #include "power/power_sensor_box.h"
 #include "vision/pipeline_view.h"
 
-#include "../../support/test_settings.h"
 #include "vision/pipeline_measure_panel.h"
 
 namespace {
@@ -84,7 +83,8 @@ class TestScenarioLaptopScreen : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    bs::test::use_test_settings("test_scenario_laptop_screen");
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_scenario_laptop_screen");
     QCOMPARE(QGuiApplication::primaryScreen()->geometry(), QRect(0, 0, kScreenW, kScreenH));
   }
   void init() { QSettings().clear(); }  // each function starts as a fresh machine: no remembered layout

@@ -10,11 +10,20 @@
 #include <QTest>
 
 #include "../../support/cli_harness.h"
-#include "platforms_answer.h"
 
-using bs::test::kPaper;
-using bs::test::recommended;
+namespace {
+
 using bs::test::run_cli;
+
+const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
+
+QString recommended(const QByteArray& json) {
+  for (const auto v : QJsonDocument::fromJson(json).object()["platforms"].toArray())
+    if (v.toObject()["recommended"].toBool()) return v.toObject()["platform"].toString();
+  return {};
+}
+
+}  // namespace
 
 class TestCliSustained : public QObject {
   Q_OBJECT

@@ -10,7 +10,6 @@
 
 #include <csignal>
 
-#include "../../support/file_bytes.h"
 #include "../../support/sysfs_fixture.h"
 
 namespace {
@@ -36,6 +35,11 @@ Result cli(const QStringList& args) {
   p.waitForFinished(120000);
   return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
           p.readAllStandardError()};
+}
+
+QByteArray bytes_of(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 // A Jetson Nano's INA3221 (JetPack 4 layout) drawing a constant 3.96 W on its input rail.
@@ -90,7 +94,7 @@ class TestCliSensors : public QObject {
     QCOMPARE(r.code, 0);
     // Constant 3.96 W: the whole recording's mean power is exactly that.
     QVERIFY2(r.out.contains("mean 3.960 W"), r.out.constData());
-    const QByteArray text = bs::test::bytes_of(csv);
+    const QByteArray text = bytes_of(csv);
     QVERIFY(text.startsWith("# benchscope power recording v1\n"));
     QVERIFY(text.contains("# kind: ina3221"));
     QVERIFY(text.contains("# total_channel: POM_5V_IN"));
@@ -110,7 +114,7 @@ class TestCliSensors : public QObject {
     const Result r = cli({"record-power", "--sysfs-root", dir.path(), "--out", csv, "--interval-ms", "20", "--", "sh",
                           "-c", "sleep 0.2; exit 3"});
     QCOMPARE(r.code, 3);
-    QVERIFY(bs::test::bytes_of(csv).contains("# phase: sh = 0."));
+    QVERIFY(bytes_of(csv).contains("# phase: sh = 0."));
     QCOMPARE(cli({"record-power", "--sysfs-root", dir.path(), "--out", csv, "--", "/no/such/program"}).code, 127);
     QCOMPARE(cli({"record-power", "--sysfs-root", dir.path(), "--out", csv}).code,
              2);  // neither --seconds nor a command
@@ -133,7 +137,7 @@ class TestCliSensors : public QObject {
     ::kill(static_cast<pid_t>(p.processId()), SIGINT);
     QVERIFY(p.waitForFinished(10000));
     QCOMPARE(p.exitCode(), 130);
-    const QByteArray text = bs::test::bytes_of(csv);
+    const QByteArray text = bytes_of(csv);
     QVERIFY(text.count('\n') > 12);  // ~25 samples in 0.5 s (fewer on a loaded machine), plus 10 comment lines
   }
 
@@ -169,7 +173,7 @@ class TestCliSensors : public QObject {
     QVERIFY(r.out.contains("warm-up D=4") && r.out.contains("point W=128 D=4"));
     // Mean power of every phase is the fixture's constant 3.96 W.
     QVERIFY(r.out.contains("3.960"));
-    const QByteArray csv = bs::test::bytes_of(dir.filePath("run.power.csv"));
+    const QByteArray csv = bytes_of(dir.filePath("run.power.csv"));
     QVERIFY(csv.contains("# phase: point W=64 D=4 = "));
     QVERIFY(csv.contains("# measurement: on-board sensor"));
   }

@@ -19,12 +19,10 @@
 #include "../../support/cli_harness.h"
 #include "../../support/ssh_robot.h"
 #include "../../support/sysfs_fixture.h"
-#include "../remote_provenance.h"
 #include "remote/robot_check.h"
 #include "store/workspace.h"
 
 using bs::test::kCli;
-using bs::test::setting;
 
 namespace {
 
@@ -167,14 +165,19 @@ class TestCliRemote : public QObject {
     QCOMPARE(run.platform, std::string("Robot 7"));
     QCOMPARE(run.samples.size(), std::size_t{3});
     QVERIFY(run.samples[0].seconds.size() >= 2);
-    QCOMPARE(setting(run.provenance, "remote host"), std::string("robot"));
-    QCOMPARE(setting(run.provenance, "remote BenchScope"), std::string(BENCHSCOPE_VERSION));
-    QCOMPARE(setting(run.provenance, "remote job"), std::string("sweep-1"));
-    QVERIFY(!setting(run.provenance, "remote architecture").empty());
-    if (!kRobotArch.isEmpty()) QCOMPARE(setting(run.provenance, "remote architecture"), kRobotArch.toStdString());
-    QVERIFY(setting(run.provenance, "remote command").find("run flops --backend cpu-scalar") != std::string::npos);
-    QVERIFY(setting(run.provenance, "remote devices").find("CPU scalar") != std::string::npos);
-    QVERIFY(setting(run.provenance, "remote devices").find("VDD_IN") != std::string::npos);
+    const auto setting = [&](const std::string& key) {
+      for (const auto& [k, v] : run.provenance.settings)
+        if (k == key) return v;
+      return std::string();
+    };
+    QCOMPARE(setting("remote host"), std::string("robot"));
+    QCOMPARE(setting("remote BenchScope"), std::string(BENCHSCOPE_VERSION));
+    QCOMPARE(setting("remote job"), std::string("sweep-1"));
+    QVERIFY(!setting("remote architecture").empty());
+    if (!kRobotArch.isEmpty()) QCOMPARE(setting("remote architecture"), kRobotArch.toStdString());
+    QVERIFY(setting("remote command").find("run flops --backend cpu-scalar") != std::string::npos);
+    QVERIFY(setting("remote devices").find("CPU scalar") != std::string::npos);
+    QVERIFY(setting("remote devices").find("VDD_IN") != std::string::npos);
     const auto traces = w.power_traces();
     QCOMPARE(traces.size(), std::size_t{1});
     QCOMPARE(traces[0].trace.platform, std::string("Robot 7"));
@@ -211,7 +214,9 @@ class TestCliRemote : public QObject {
     const bs::PowerTrace& t = traces[0].trace;
     QVERIFY(t.time_s.size() >= 10);
     QVERIFY(t.provenance.sensor.find("VDD_IN") != std::string::npos);
-    QCOMPARE(setting(t.provenance, "remote host"), std::string("robot"));
+    bool remote = false;
+    for (const auto& [k, v] : t.provenance.settings) remote |= k == "remote host" && v == "robot";
+    QVERIFY(remote);
     for (const bs::PowerChannel& c : t.channels)
       if (c.name == t.total_channel)
         for (double v : c.values) QCOMPARE(v, 6.0);  // 12 V x 0.5 A
@@ -358,9 +363,13 @@ class TestCliRemote : public QObject {
     QCOMPARE(m.platform, std::string("Robot loop"));
     QCOMPARE(m.phases.size(), std::size_t{2});
     QVERIFY(!m.realtime());  // --no-rt: a normal thread, and the measurement says so
-    QCOMPARE(setting(m.provenance, "remote host"), std::string("robot"));
-    const std::string command = setting(m.provenance, "remote command"),
-                      arch = setting(m.provenance, "remote architecture");
+    std::string host, command, arch;
+    for (const auto& [k, v] : m.provenance.settings) {
+      if (k == "remote host") host = v;
+      if (k == "remote command") command = v;
+      if (k == "remote architecture") arch = v;
+    }
+    QCOMPARE(host, std::string("robot"));
     QVERIFY2(command.find("headroom --rate 500") != std::string::npos, command.c_str());
     QVERIFY(!arch.empty());
     if (!kRobotArch.isEmpty()) QCOMPARE(arch, kRobotArch.toStdString());
@@ -386,9 +395,13 @@ class TestCliRemote : public QObject {
     QVERIFY(run.stage(bs::pipeline_stage::kPreprocess));
     QCOMPARE(run.stage(bs::pipeline_stage::kPreprocess)->n, std::size_t{3});
     QVERIFY2(run.provenance.note.find("synthetic paper capture") != std::string::npos, run.provenance.note.c_str());
-    QCOMPARE(setting(run.provenance, "remote host"), std::string("robot"));
-    const std::string command = setting(run.provenance, "remote command"),
-                      arch = setting(run.provenance, "remote architecture");
+    std::string host, command, arch;
+    for (const auto& [k, v] : run.provenance.settings) {
+      if (k == "remote host") host = v;
+      if (k == "remote command") command = v;
+      if (k == "remote architecture") arch = v;
+    }
+    QCOMPARE(host, std::string("robot"));
     QVERIFY2(command.find("pipeline --synthetic --frames 3") != std::string::npos, command.c_str());
     if (!kRobotArch.isEmpty()) QCOMPARE(arch, kRobotArch.toStdString());
     verify_nothing_running("pipeline-1");
@@ -417,8 +430,11 @@ class TestCliRemote : public QObject {
     const auto stored = w.pipeline_runs();
     QCOMPARE(stored.size(), std::size_t{1});
     QCOMPARE(stored[0].run.frame_width, 320);
-    const std::string command = setting(stored[0].run.provenance, "remote command");
-    const std::string carried = setting(stored[0].run.provenance, "remote inputs from the desk");
+    std::string command, carried;
+    for (const auto& [k, v] : stored[0].run.provenance.settings) {
+      if (k == "remote command") command = v;
+      if (k == "remote inputs from the desk") carried = v;
+    }
     QVERIFY2(command.find("/carried-1/inputs/1/capture.raw") != std::string::npos, command.c_str());
     QVERIFY2(carried.find((frames + "/capture.raw -> 1/capture.raw").toStdString()) != std::string::npos,
              carried.c_str());

@@ -9,7 +9,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "../../support/test_settings.h"
 #include "kernels/backends/backend_opencl.h"
 #include "kernels/kernel_runner.h"
 #include "main_window.h"
@@ -19,7 +18,10 @@
 class TestKernelRunner : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() { bs::test::use_test_settings("test_kernel_runner"); }
+  void initTestCase() {
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_kernel_runner");
+  }
 
   void sweep_fills_the_plot_and_lands_in_the_workspace() {
     QTemporaryDir dir;

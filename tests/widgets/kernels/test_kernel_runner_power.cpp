@@ -19,7 +19,6 @@
 
 #include "../../support/cli_harness.h"
 #include "../../support/sysfs_fixture.h"
-#include "../../support/test_settings.h"
 #include "analysis/power/phase_energy.h"
 #include "analysis/power/sweep_energy.h"
 #include "kernels/kernel_runner.h"
@@ -64,7 +63,8 @@ class TestKernelRunnerPower : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    bs::test::use_test_settings("test_kernel_runner");
+    QCoreApplication::setOrganizationName("BenchScopeTest");
+    QCoreApplication::setApplicationName("test_kernel_runner");
     qputenv("BENCHSCOPE_NVML_LIBRARY", "none");  // the fixture's sensors only, whatever GPU this machine has
   }
 

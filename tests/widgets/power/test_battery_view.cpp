@@ -32,7 +32,12 @@ const bs::PlatformBattery& row(const bs::ui::BatteryView& view, const std::strin
   throw std::runtime_error("no row for " + platform);
 }
 
-std::vector<bs::PowerTrace> paper_traces() { return bs::test::load_paper_sample().traces; }
+std::vector<bs::PowerTrace> paper_traces() {
+  std::vector<bs::FlopsRun> runs;
+  std::vector<bs::PowerTrace> traces;
+  bs::test::load_paper_sample(runs, traces);
+  return traces;
+}
 
 }  // namespace
 

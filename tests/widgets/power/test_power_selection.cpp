@@ -23,7 +23,6 @@
 
 #include "../../support/cli_harness.h"
 #include "../../support/paper_sample.h"
-#include "../../support/table_cells.h"
 #include "analysis/power/range_table.h"
 #include "power/power_cursors.h"
 #include "power/power_overlay.h"
@@ -31,8 +30,6 @@
 #include "power/power_view.h"
 #include "store/battery_preset_store.h"
 #include "store/log_settings_store.h"
-
-using bs::test::column;
 
 namespace {
 
@@ -53,6 +50,12 @@ std::vector<std::string> row_cells(const QTableWidget* t, int row) {
   std::vector<std::string> out;
   for (int c = 0; c < t->columnCount(); ++c) out.push_back(t->item(row, c)->text().toStdString());
   return out;
+}
+
+int column(const QTableWidget* t, const QString& header) {
+  for (int c = 0; c < t->columnCount(); ++c)
+    if (t->horizontalHeaderItem(c)->text() == header) return c;
+  return -1;
 }
 
 double cell_number(const QTableWidget* t, int row, const QString& header) {
@@ -350,7 +353,9 @@ class TestPowerSelection : public QObject {
 
   void screenshots_of_the_paper_platforms() {
     if (qEnvironmentVariable("BENCHSCOPE_SCREENSHOT_DIR").isEmpty()) QSKIP("BENCHSCOPE_SCREENSHOT_DIR not set");
-    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    bs::test::load_paper_sample(runs, traces);
     bs::ui::PowerView view;
     view.resize(1600, 1000);
     view.set_data(stored(traces), bs::peak_table(runs), {});

@@ -33,7 +33,9 @@ class TestPowerView : public QObject {
   Q_OBJECT
  private slots:
   void figure_4_current_over_time() {
-    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
+    std::vector<bs::FlopsRun> runs;
+    std::vector<bs::PowerTrace> traces;
+    bs::test::load_paper_sample(runs, traces);
     bs::ui::PowerView view;
     view.resize(1200, 700);
     view.set_data(stored(traces), bs::peak_table(runs), {});
