@@ -3,25 +3,20 @@
 // report and the GUI's Reproduce paper figures render it: the newest measurement drawn with every phase, the older
 // one left out and said why, the figure skipped (and said so) without a measurement.
 #include <qcustomplot.h>
-#include <QFile>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../support/file_bytes.h"
 #include "../support/headroom_samples.h"
 #include "headroom_figure.h"
 #include "paper_figures.h"
+#include "rendered_figures.h"
 
 using namespace bs::headroom;
 
 namespace {
-
-QByteArray read(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 HeadroomMeasurement measured(const std::string& date, int max_us) {
   return bs::test::loop_measurement("robot",
@@ -36,9 +31,7 @@ class TestHeadroomFigure : public QObject {
   Q_OBJECT
  private slots:
   void paper_template_draws_the_newest_and_skips_without() {
-    std::vector<bs::FigureTemplate> headroom;
-    for (const auto& t : bs::load_figure_templates(bs::ui::paper_template_path().toStdString()))
-      if (t.kind == "headroom") headroom.push_back(t);
+    const auto headroom = bs::test::paper_figures_of_kind("headroom");
     QCOMPARE(headroom.size(), std::size_t{1});
     QVERIFY(headroom[0].optional);
     bs::ui::FigureOptions o;
@@ -48,12 +41,11 @@ class TestHeadroomFigure : public QObject {
     QTemporaryDir dir;
     const auto out = bs::ui::render_figures(headroom, d, dir.path(), o, bs::CancelToken{});
     QVERIFY(out.files.contains(dir.filePath("headroom.svg")) && out.files.contains(dir.filePath("headroom.png")));
-    const QByteArray svg = read(dir.filePath("headroom.svg"));
+    const QByteArray svg = bs::test::bytes_of(dir.filePath("headroom.svg"));
     for (const char* want : {"pipeline@30fps, max 345", "deadline 1000", "Cycles (log scale)"})
       QVERIFY2(svg.contains(want), want);
     QVERIFY(!svg.contains("max 900"));  // the older measurement is not drawn
-    const QJsonObject f =
-        QJsonDocument::fromJson(read(dir.filePath("figures.json"))).object()["files"].toArray()[0].toObject();
+    const QJsonObject f = bs::test::figures_manifest(dir)["files"].toArray()[0].toObject();
     QCOMPARE(f["figure"].toString(), QString("headroom"));
     QCOMPARE(f["sources"].toArray()[0].toObject()["date"].toString(), QString("2026-11-28T10:00:00Z"));
     QCOMPARE(f["left_out"].toArray().size(), 1);

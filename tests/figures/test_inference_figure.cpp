@@ -4,15 +4,15 @@
 // and its SD, batch included), the architecture-timing runs hatched and named as such, the files written through
 // render_figures with their sources, and the figure skipped (and said so) when the data has no inference run.
 #include <qcustomplot.h>
-#include <QFile>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../support/file_bytes.h"
 #include "inference_figure.h"
 #include "paper_figures.h"
+#include "rendered_figures.h"
 
 namespace {
 
@@ -53,11 +53,6 @@ bs::FigureTemplate inference_template(std::vector<std::string> platforms = {}) {
   t.y_scale = 1e-3;
   t.platforms = std::move(platforms);
   return t;
-}
-
-QByteArray read(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 }  // namespace
@@ -152,10 +147,7 @@ class TestInferenceFigure : public QObject {
 
   // Through the paper template, as `benchscope-cli figures` and the GUI's Reproduce paper figures render it.
   void paper_template_draws_it_when_there_are_runs_and_skips_it_otherwise() {
-    const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
-    std::vector<bs::FigureTemplate> inference;
-    for (const auto& t : templates)
-      if (t.kind == "inference") inference.push_back(t);
+    auto inference = bs::test::paper_figures_of_kind("inference");
     QCOMPARE(inference.size(), std::size_t{1});
     QVERIFY(inference[0].optional);
     bs::ui::FigureOptions o;
@@ -165,11 +157,10 @@ class TestInferenceFigure : public QObject {
     QTemporaryDir dir;
     const auto out = bs::ui::render_figures(inference, d, dir.path(), o, bs::CancelToken{});
     QVERIFY(out.files.contains(dir.filePath("inference.svg")) && out.files.contains(dir.filePath("inference.png")));
-    const QByteArray svg = read(dir.filePath("inference.svg"));
+    const QByteArray svg = bs::test::bytes_of(dir.filePath("inference.svg"));
     for (const char* want : {"Time per image (ms)", "architecture timing: no detections", "yolo-n 640x640"})
       QVERIFY2(svg.contains(want), want);
-    const QJsonObject doc = QJsonDocument::fromJson(read(dir.filePath("figures.json"))).object();
-    const QJsonObject f = doc["files"].toArray()[0].toObject();
+    const QJsonObject f = bs::test::figures_manifest(dir)["files"].toArray()[0].toObject();
     QCOMPARE(f["figure"].toString(), QString("inference"));
     QCOMPARE(f["sources"].toArray().size(), 4);
     QCOMPARE(f["left_out"].toArray().size(), 1);
@@ -181,8 +172,8 @@ class TestInferenceFigure : public QObject {
     for (const QString& file : skipped.files) QVERIFY2(!file.contains("inference."), qPrintable(file));
     QVERIFY2(skipped.contents.join('\n').contains("inference: not drawn (optional figure): no bench dnn runs"),
              qPrintable(skipped.contents.join('\n')));
-    const QJsonObject sdoc = QJsonDocument::fromJson(read(none.filePath("figures.json"))).object();
-    QCOMPARE(sdoc["skipped"].toArray()[0].toObject()["figure"].toString(), QString("inference"));
+    QCOMPARE(bs::test::figures_manifest(none)["skipped"].toArray()[0].toObject()["figure"].toString(),
+             QString("inference"));
     // Not optional (a user's template): the missing data is an error that names the figure.
     inference[0].optional = false;
     QTemporaryDir err;

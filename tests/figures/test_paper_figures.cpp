@@ -8,7 +8,6 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -18,19 +17,16 @@
 #include <qcustomplot.h>
 #include <set>
 
+#include "../support/file_bytes.h"
 #include "../support/paper_sample.h"
 #include "device_palette.h"
 #include "paper_figures.h"
+#include "rendered_figures.h"
 #include "workspace/registry.h"
 
 namespace {
 
 constexpr double kPtPerMm = 72.0 / 25.4;
-
-QByteArray read(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 // The first page's MediaBox [x0 y0 x1 y1] in points, and the number of page objects.
 struct PdfInfo {
@@ -85,7 +81,7 @@ class TestPaperFigures : public QObject {
   QStringList files_;
 
   double listed_height_mm(const QString& id) {
-    const QJsonObject doc = QJsonDocument::fromJson(read(dir_.filePath("figures.json"))).object();
+    const QJsonObject doc = bs::test::figures_manifest(dir_);
     for (const auto& v : doc["files"].toArray())
       if (v.toObject()["file"].toString() == id + ".pdf") return v.toObject()["height_mm"].toDouble();
     return -1;
@@ -118,7 +114,7 @@ class TestPaperFigures : public QObject {
 
   void pdf_pages_at_lncs_width_with_embedded_fonts() {
     for (const char* id : {"fig1a", "fig1b", "fig2a", "fig2b", "fig3", "fig4"}) {
-      const QByteArray pdf = read(dir_.filePath(QString(id) + ".pdf"));
+      const QByteArray pdf = bs::test::bytes_of(dir_.filePath(QString(id) + ".pdf"));
       QVERIFY(pdf.startsWith("%PDF-"));
       const PdfInfo info = pdf_info(pdf);
       QCOMPARE(info.pages, 1);
@@ -133,7 +129,7 @@ class TestPaperFigures : public QObject {
   void svg_parses_and_keeps_labels_as_text() {
     const auto expect = [this](const char* id, const QStringList& needles) {
       bool ok = false;
-      const QString text = svg_text(read(dir_.filePath(QString(id) + ".svg")), ok);
+      const QString text = svg_text(bs::test::bytes_of(dir_.filePath(QString(id) + ".svg")), ok);
       QVERIFY2(ok, id);
       for (const QString& n : needles) QVERIFY2(text.contains(n), qPrintable(QString("%1 lacks '%2'").arg(id, n)));
     };
@@ -159,18 +155,18 @@ class TestPaperFigures : public QObject {
 
   void fig1b_shows_only_the_two_robot_gpus() {
     bool ok = false;
-    const QString text = svg_text(read(dir_.filePath("fig1b.svg")), ok);
+    const QString text = svg_text(bs::test::bytes_of(dir_.filePath("fig1b.svg")), ok);
     QVERIFY(!text.contains("GTX"));
     QVERIFY(!text.contains("HD 630") && !text.contains("HD630"));
   }
 
   void tables_hold_the_published_numbers() {
-    const QString t1 = QString::fromUtf8(read(dir_.filePath("table1.tex")));
+    const QString t1 = QString::fromUtf8(bs::test::bytes_of(dir_.filePath("table1.tex")));
     QVERIFY(t1.contains("\\toprule") && t1.contains("\\bottomrule"));
     for (const char* n : {"9.14", "9.34", "5.25", "2.40", "0.49"}) QVERIFY2(t1.contains(n), n);
-    const QString t2 = QString::fromUtf8(read(dir_.filePath("table2.tex")));
+    const QString t2 = QString::fromUtf8(bs::test::bytes_of(dir_.filePath("table2.tex")));
     for (const char* n : {"49.68", "29.33", "15.54", "4.69"}) QVERIFY2(t2.contains(n), n);
-    const QString platforms = QString::fromUtf8(read(dir_.filePath("platforms.csv")));
+    const QString platforms = QString::fromUtf8(bs::test::bytes_of(dir_.filePath("platforms.csv")));
     for (const char* n : {"40.52", "9.48", "104.64", "41.26", "84.36", "360.48"}) QVERIFY2(platforms.contains(n), n);
   }
 
@@ -200,7 +196,7 @@ class TestPaperFigures : public QObject {
       const QString contents = result.contents.join('\n');
       QVERIFY(contents.contains("RobotPC (not one of the figure's platforms"));
       QCOMPARE(contents.contains("AMD EPYC"), choice == bs::ui::FigureDataChoice::All);
-      const QJsonObject doc = QJsonDocument::fromJson(read(out.filePath("figures.json"))).object();
+      const QJsonObject doc = bs::test::figures_manifest(out);
       QCOMPARE(doc["data"].toString().startsWith("paper data only"), choice == bs::ui::FigureDataChoice::PaperOnly);
       bool fig4_left_out = false;
       for (const auto& v : doc["files"].toArray())
@@ -212,7 +208,7 @@ class TestPaperFigures : public QObject {
   }
 
   void figure_list_names_files_and_provenance() {
-    const QJsonObject doc = QJsonDocument::fromJson(read(dir_.filePath("figures.json"))).object();
+    const QJsonObject doc = bs::test::figures_manifest(dir_);
     QCOMPARE(doc["format"].toString(), QString("benchscope-figure-list"));
     const QJsonArray files = doc["files"].toArray();
     QCOMPARE(files.size(), 6 * 3 + 6);
@@ -245,7 +241,7 @@ class TestPaperFigures : public QObject {
     const auto templates = bs::parse_figure_templates(
         R"({"format":"benchscope-figures","version":1,"figures":[{"id":"fig3","kind":"triptych"}]})", "t.json");
     bs::ui::render_figures(templates, d, dir.path(), o, bs::CancelToken{});
-    const QJsonObject doc = QJsonDocument::fromJson(read(dir.filePath("figures.json"))).object();
+    const QJsonObject doc = bs::test::figures_manifest(dir);
     const QJsonObject source = doc["files"].toArray()[0].toObject()["sources"].toArray()[0].toObject();
     QVERIFY2(source["file"].toString().endsWith("paper-capture.raw"), qPrintable(source["file"].toString()));
     QCOMPARE(source["origin"].toString(), QString("synthetic"));  // the sample capture is labelled synthetic

@@ -4,13 +4,13 @@
 // and value in whole words; every figure's caption is on the page of its image (pdfimages -list); a few pages, not
 // twenty. The HTML embeds everything. Nothing is left behind when cancelled.
 #include <QDir>
-#include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../support/file_bytes.h"
 #include "../support/paper_sample.h"
 #include "analysis/library/library.h"
 #include "report/platform_report.h"
@@ -24,11 +24,6 @@ bs::ui::FigureData paper_data() {
   d.runs = sample.runs;
   d.traces = sample.traces;
   return d;
-}
-
-QByteArray read(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 QString run(const QString& program, const QStringList& args) {
@@ -85,7 +80,7 @@ class TestReport : public QObject {
     const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
     const QStringList files = bs::ui::write_report(request, templates, paper_data(), {}, bs::CancelToken{});
     QCOMPARE(files, (QStringList{request.html_path, request.pdf_path}));
-    const QString html = QString::fromUtf8(read(request.html_path));
+    const QString html = QString::fromUtf8(bs::test::bytes_of(request.html_path));
     QVERIFY(html.startsWith("<!DOCTYPE html>"));
     for (const char* s :
          {"<h3>NUC</h3>", "<h3>Jetson TX2</h3>", "40.52", "9.48", "104.64", "41.26", "84.36", "360.48", "reconstructed",
@@ -102,7 +97,7 @@ class TestReport : public QObject {
     const auto templates = bs::load_figure_templates(bs::ui::paper_template_path().toStdString());
     bs::ui::write_report(request, templates, paper_data(), {}, bs::CancelToken{});
     const QString pdf = request.pdf_path;
-    QVERIFY(read(pdf).startsWith("%PDF-"));
+    QVERIFY(bs::test::bytes_of(pdf).startsWith("%PDF-"));
     const int pages = page_count(pdf);
     QVERIFY2(pages >= 3 && pages <= 8, qPrintable(QString::number(pages)));  // was 19 to 23
 

@@ -8,6 +8,8 @@
 #include <QString>
 #include <QStringList>
 
+#include "file_bytes.h"  // bytes_of, for the files a command wrote
+
 namespace bs::test {
 
 inline const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
@@ -43,11 +45,6 @@ inline int run_cli(const QStringList& args, QByteArray* out = nullptr, QByteArra
   if (out) *out = std::move(r.out);
   if (err) *err = std::move(r.err);
   return r.code;
-}
-
-inline QByteArray bytes_of(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 }  // namespace bs::test

@@ -10,11 +10,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include <filesystem>
-
 #include "../../support/headroom_samples.h"
+#include "../../support/paper_sample.h"
 #include "platform/platform_view.h"
-#include "workspace/registry.h"
 
 using namespace bs::headroom;
 
@@ -31,17 +29,7 @@ class TestPlatformLoop : public QObject {
   Q_OBJECT
  private slots:
   void loop_requirement_decides() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    for (const auto& e :
-         std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
-      const auto ext = e.path().extension();
-      if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
-      if (e.path().parent_path().filename() == "frames") continue;
-      auto b = bs::import_file(e.path().string(), bs::CancelToken{});
-      runs.insert(runs.end(), b.runs.begin(), b.runs.end());
-      traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());
-    }
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::PlatformView view;
     view.set_data(runs, traces);
     QCOMPARE(view.recommendation(), QString("NUC"));

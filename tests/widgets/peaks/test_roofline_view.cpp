@@ -3,16 +3,14 @@
 #include <qcustomplot.h>
 #include <QTest>
 
+#include "../../support/run_on.h"
 #include "peaks/roofline_view.h"
 
 class TestRooflineView : public QObject {
   Q_OBJECT
  private slots:
   void roofs_and_markers() {
-    bs::FlopsRun cpu;
-    cpu.platform = "vm";
-    cpu.device = "CPU";
-    cpu.backend = "CPU SIMD";
+    auto cpu = bs::test::run_on<bs::FlopsRun>("vm", "CPU", "CPU SIMD");
     cpu.dims = 4;
     cpu.iterations = 40000;
     cpu.samples = {{64, {0.01}}, {128, {0.015}}};
@@ -38,21 +36,14 @@ class TestRooflineView : public QObject {
   }
 
   void preprocessing_stages_placed() {
-    bs::FlopsRun gpu;
-    gpu.platform = "robot";
-    gpu.device = "GPU";
-    gpu.device_kind = bs::DeviceKind::Gpu;
-    gpu.backend = "OpenCL";
+    auto gpu = bs::test::run_on<bs::FlopsRun>("robot", "GPU", bs::DeviceKind::Gpu, "OpenCL");
     gpu.dims = 4;
     gpu.iterations = 40000;
     gpu.samples = {{1024, {0.01}}};
     gpu.theoretical_peak_flops = 1e12;
     bs::ResultSet bw{"robot", "GPU", bs::DeviceKind::Gpu, "OpenCL", "benchscope-bandwidth", {}, {}};
     bw.measurements.push_back({"stream-triad/128MiB", "bandwidth", "B/s", {20e9}, {}});
-    bs::PipelineRun run;
-    run.platform = "robot";
-    run.device = "GPU (OpenCL) preprocessing, CPU detection";
-    run.backend = "opencl";
+    auto run = bs::test::run_on<bs::PipelineRun>("robot", "GPU (OpenCL) preprocessing, CPU detection", "opencl");
     run.demosaic = "bilinear";
     run.frame_width = 1280;
     run.frame_height = 1024;

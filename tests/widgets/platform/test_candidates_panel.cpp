@@ -3,45 +3,24 @@
 // its origin with its marker, published rows are set apart, like is compared with like (class column), the figure
 // has a legend entry per origin, an unknown computer is said in the note, and the
 // chosen computers' ROS 2 graph benchmarks are a table of their own (#46).
-#include <filesystem>
-
 #include <qcustomplot.h>
 #include <QLabel>
 #include <QLineEdit>
 #include <QTableWidget>
 #include <QTest>
 
+#include "../../support/paper_sample.h"
+#include "../../support/table_cells.h"
 #include "platform/candidates_panel.h"
 #include "platform/platform_view.h"
-#include "workspace/registry.h"
 
-namespace {
-
-int column(const QTableWidget* t, const QString& header) {
-  for (int c = 0; c < t->columnCount(); ++c)
-    if (t->horizontalHeaderItem(c)->text() == header) return c;
-  return -1;
-}
-
-}  // namespace
+using bs::test::column;
 
 class TestCandidatesPanel : public QObject {
   Q_OBJECT
  private slots:
   void paper_with_orin_and_pi5() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    std::vector<bs::PipelineRun> pipelines;
-    for (const auto& e :
-         std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
-      const auto ext = e.path().extension();
-      if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
-      if (e.path().parent_path().filename() == "frames") continue;
-      auto b = bs::import_file(e.path().string(), bs::CancelToken{});
-      runs.insert(runs.end(), b.runs.begin(), b.runs.end());
-      traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());
-      pipelines.insert(pipelines.end(), b.pipeline_runs.begin(), b.pipeline_runs.end());
-    }
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::PlatformView view;
     view.resize(1500, 900);
     view.set_data(runs, traces, pipelines);

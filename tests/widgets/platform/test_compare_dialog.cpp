@@ -5,15 +5,13 @@
 #include <QTableWidget>
 #include <QTest>
 
+#include "../../support/run_on.h"
 #include "platform/compare_dialog.h"
 
 namespace {
 
 bs::FlopsRun run(double scale) {
-  bs::FlopsRun r;
-  r.platform = "robot";
-  r.device = "GPU";
-  r.backend = "OpenCL";
+  auto r = bs::test::run_on<bs::FlopsRun>("robot", "GPU", "OpenCL");
   r.dims = 4;
   r.iterations = 40000;
   for (int w : {1024, 2048}) {

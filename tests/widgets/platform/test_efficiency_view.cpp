@@ -7,32 +7,18 @@
 
 #include "../../support/figure_checks.h"
 #include "../../support/paper_sample.h"
+#include "../../support/table_cells.h"
 #include "chart_marks.h"
 #include "platform/efficiency_view.h"
 
-namespace {
-
-int column(const QTableWidget* t, const QString& header_start) {
-  for (int c = 0; c < t->columnCount(); ++c)
-    if (t->horizontalHeaderItem(c)->text().startsWith(header_start)) return c;
-  return -1;
-}
-
-int row_of(const QTableWidget* t, const QString& platform) {
-  for (int r = 0; r < t->rowCount(); ++r)
-    if (t->item(r, 0)->text() == platform) return r;
-  return -1;
-}
-
-}  // namespace
+using bs::test::column_starting;
+using bs::test::row_of;
 
 class TestEfficiencyView : public QObject {
   Q_OBJECT
  private slots:
   void paper_sample() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    bs::test::load_paper_sample(runs, traces);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::EfficiencyView view;
     view.resize(1400, 800);
     view.set_data(runs, traces);
@@ -48,9 +34,10 @@ class TestEfficiencyView : public QObject {
       QCOMPARE(t->item(r, 1)->text(), QString("No efficiency figure: no power log of this platform"));
       QCOMPARE(t->columnSpan(r, 1), t->columnCount() - 1);
     }
-    const int paper = column(t, "GFLOPS/W paper"), power = column(t, "Mean power (W)"),
-              peak = column(t, "Peak (GFLOPS)"), from = column(t, "Peak from"), supply = column(t, "Supply (V)"),
-              at_mean = column(t, "GFLOPS/W\npeak / mean"), energy = column(t, "Energy (J/GFLOP)");
+    const int paper = column_starting(t, "GFLOPS/W paper"), power = column_starting(t, "Mean power (W)"),
+              peak = column_starting(t, "Peak (GFLOPS)"), from = column_starting(t, "Peak from"),
+              supply = column_starting(t, "Supply (V)"), at_mean = column_starting(t, "GFLOPS/W\npeak / mean"),
+              energy = column_starting(t, "Energy (J/GFLOP)");
     QVERIFY(paper > 0 && power > 0 && peak > 0 && from > 0 && supply > 0 && at_mean > 0 && energy > 0);
     // The NUC's peak (5.25 TFLOPS, 5.9x its GPU's vendor peak) is flagged, and so is every ratio made from it.
     QCOMPARE(t->item(nuc, paper)->text(), QString("⚠ 104.64"));
@@ -107,9 +94,7 @@ class TestEfficiencyView : public QObject {
 
   // Without logs no figure, and every platform says so in its row.
   void no_logs_no_figures() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    bs::test::load_paper_sample(runs, traces);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::EfficiencyView view;
     view.set_data(runs, {});
     QCOMPARE(view.rows().size(), std::size_t{0});

@@ -9,49 +9,22 @@
 #include <QTableWidget>
 #include <QTest>
 
-#include <filesystem>
-
+#include "../../support/paper_sample.h"
+#include "../../support/run_on.h"
+#include "../../support/table_cells.h"
 #include "analysis/platform/inference_table.h"
 #include "platform/inference_table.h"
 #include "platform/platform_view.h"
 #include "workspace/registry.h"
 
-namespace {
-
-void load_paper(std::vector<bs::FlopsRun>& runs, std::vector<bs::PowerTrace>& traces,
-                std::vector<bs::PipelineRun>* pipelines = nullptr) {
-  for (const auto& e : std::filesystem::recursive_directory_iterator(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018")) {
-    const auto ext = e.path().extension();
-    if (!e.is_regular_file() || (ext != ".json" && ext != ".csv")) continue;
-    if (e.path().parent_path().filename() == "frames") continue;  // the sample capture's sidecar is not data
-    auto b = bs::import_file(e.path().string(), bs::CancelToken{});
-    runs.insert(runs.end(), b.runs.begin(), b.runs.end());
-    traces.insert(traces.end(), b.power_traces.begin(), b.power_traces.end());
-    if (pipelines) pipelines->insert(pipelines->end(), b.pipeline_runs.begin(), b.pipeline_runs.end());
-  }
-}
-
-int column(const QTableWidget* t, const QString& header) {
-  for (int c = 0; c < t->columnCount(); ++c)
-    if (t->horizontalHeaderItem(c)->text() == header) return c;
-  return -1;
-}
-
-int row_of(const QTableWidget* t, const QString& platform) {
-  for (int r = 0; r < t->rowCount(); ++r)
-    if (t->item(r, 0)->text() == platform) return r;
-  return -1;
-}
-
-}  // namespace
+using bs::test::column;
+using bs::test::row_of;
 
 class TestPlatformView : public QObject {
   Q_OBJECT
  private slots:
   void paper_sample() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    load_paper(runs, traces);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::PlatformView view;
     view.resize(1500, 500);
     view.set_data(runs, traces);
@@ -108,10 +81,7 @@ class TestPlatformView : public QObject {
   }
 
   void mission_and_frames_per_wh() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    std::vector<bs::PipelineRun> pipelines;
-    load_paper(runs, traces, &pipelines);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::PlatformView view;
     view.resize(1500, 500);
     view.set_data(runs, traces, pipelines);
@@ -151,9 +121,7 @@ class TestPlatformView : public QObject {
 
   // Issue #23.2: the Platforms tab uses the Battery tab's setup (its edits included) unless the user picks another.
   void uses_the_battery_tabs_setup() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    load_paper(runs, traces);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::PlatformView view;
     view.set_data(runs, traces);
     QTableWidget* t = view.table();
@@ -187,9 +155,7 @@ class TestPlatformView : public QObject {
   // Issue #23.3: the verdict sits next to the platform's name, the name column stays in view while the numbers
   // scroll, failing rows are dimmed with the reason in a tooltip, GPU peaks in TFLOPS as everywhere else.
   void verdict_first_failing_rows_dimmed_name_frozen() {
-    std::vector<bs::FlopsRun> runs;
-    std::vector<bs::PowerTrace> traces;
-    load_paper(runs, traces);
+    auto [runs, traces, pipelines] = bs::test::load_paper_sample();
     bs::ui::PlatformView view;
     view.resize(900, 500);
     view.set_data(runs, traces);
@@ -223,10 +189,7 @@ class TestPlatformView : public QObject {
     view.resize(1600, 900);
     view.show();
     QVERIFY(!view.inference_table()->isVisible());
-    bs::DnnRun a;
-    a.platform = "robot";
-    a.device = "CPU (2 OpenCV threads)";
-    a.backend = "cpu";
+    auto a = bs::test::run_on<bs::DnnRun>("robot", "CPU (2 OpenCV threads)", "cpu");
     a.model = "mobilenet-ssd";
     a.family = "SSD";
     a.architecture_only = true;

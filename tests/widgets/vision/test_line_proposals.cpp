@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "../../support/room_lens.h"
+#include "tuner_preview.h"
 #include "vision/frames/synthetic_room.h"
 #include "vision/lens/line_fit.h"
 #include "vision/lens_tab.h"
@@ -18,16 +19,12 @@
 #include "vision/reprojection_tuner.h"
 
 using namespace bs;
+using bs::test::wait_for_preview;
 using bs::ui::ReprojectionTuner;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-void wait_for_preview(ReprojectionTuner& t) {
-  QTRY_VERIFY_WITH_TIMEOUT(t.shown_generation() == t.requested_generation() && !t.output_pane()->image().isNull(),
-                           30000);
-}
 
 }  // namespace
 
@@ -36,10 +33,7 @@ class TestLineProposals : public QObject {
  private slots:
   void propose_delete_undo_and_fit() {
     const vision::Lens truth = bs::test::room_truth_lens();
-    vision::RoomOptions room;
-    room.seed = 5;
-    room.vignetting = 0.3;
-    room.noise = 0.005;
+    const vision::RoomOptions room{.vignetting = 0.3, .noise = 0.005, .seed = 5};
     ui::LensTab tab;
     tab.resize(1500, 1120);  // tall enough for the whole line panel in the screenshot
     tab.show();

@@ -7,12 +7,14 @@
 #include <cmath>
 
 #include "../../support/room_lens.h"
+#include "tuner_preview.h"
 #include "vision/frames/synthetic_room.h"
 #include "vision/lens/line_fit.h"
 #include "vision/preview_pane.h"
 #include "vision/reprojection_tuner.h"
 
 using namespace bs;
+using bs::test::wait_for_preview;
 using bs::ui::ReprojectionTuner;
 
 namespace {
@@ -64,11 +66,6 @@ bool small_png(const QPixmap& shot, const QString& path) {
   return img.scaledToWidth(img.width() * 4 / 5, Qt::SmoothTransformation).save(path);
 }
 
-void wait_for_preview(ReprojectionTuner& t) {
-  QTRY_VERIFY_WITH_TIMEOUT(t.shown_generation() == t.requested_generation() && !t.output_pane()->image().isNull(),
-                           30000);
-}
-
 }  // namespace
 
 class TestLineRefinement : public QObject {
@@ -76,9 +73,7 @@ class TestLineRefinement : public QObject {
  private slots:
   void fit_straightens_the_picked_lines_as_one_undo_step() {
     const vision::Lens truth = bs::test::room_truth_lens();
-    vision::RoomOptions room;
-    room.seed = 5;
-    room.vignetting = 0.3;
+    const vision::RoomOptions room{.vignetting = 0.3, .seed = 5};
     ReprojectionTuner t;
     t.resize(1500, 980);
     t.show();
@@ -126,9 +121,7 @@ class TestLineRefinement : public QObject {
   void circle_then_lines_land_on_the_truth() {
     // The recommended order: Detect circle (centre and rim), then the line fit for the shape of r(theta).
     const vision::Lens truth = bs::test::room_truth_lens();
-    vision::RoomOptions room;
-    room.seed = 9;
-    room.noise = 0.01;
+    const vision::RoomOptions room{.noise = 0.01, .seed = 9};
     ReprojectionTuner t;
     t.set_fisheye(vision::render_room_fisheye(truth, room));
     vision::TunerParams start = t.params();

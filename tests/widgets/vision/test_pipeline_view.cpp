@@ -14,6 +14,8 @@
 #include <QTableWidget>
 #include <QTest>
 
+#include "../../support/run_on.h"
+#include "../../support/test_settings.h"
 #include "analysis/platform/pipeline_table.h"
 #include "vision/pipeline/pipeline.h"
 #include "vision/pipeline_measure_panel.h"
@@ -44,9 +46,7 @@ class TestPipelineView : public QObject {
  private slots:
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);  // QSettings in a test location, not the user's
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_pipeline_view");
-    QSettings().clear();
+    bs::test::use_fresh_test_settings("test_pipeline_view");
   }
 
   void paper_table() {
@@ -77,10 +77,7 @@ class TestPipelineView : public QObject {
 
   void measured_run_beside_the_paper() {
     auto runs = paper_runs();
-    bs::PipelineRun m;
-    m.platform = "this host";
-    m.device = "CPU (2 threads)";
-    m.backend = "cpu";
+    auto m = bs::test::run_on<bs::PipelineRun>("this host", "CPU (2 threads)", "cpu");
     m.throughput_fps = 4.25;
     m.stages = {{"preprocess", 50, 0.0042, 0.0005, 0.0035, 0.007, 0.0041, 0.0051},
                 {"detect", 50, 0.21, 0.03, 0.15, 0.3, 0.2, 0.26},

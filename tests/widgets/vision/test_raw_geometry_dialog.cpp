@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "../../support/test_settings.h"
 #include "store/workspace.h"
 #include "vision/raw_geometry_dialog.h"
 #include "workspace/import_controller.h"
@@ -16,11 +17,7 @@
 class TestRawGeometryDialog : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_raw_geometry_dialog");
-    QSettings().clear();
-  }
+  void initTestCase() { bs::test::use_fresh_test_settings("test_raw_geometry_dialog"); }
 
   void checks_size_remembers_and_imports() {
     QTemporaryDir dir;

@@ -6,11 +6,13 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "tuner_preview.h"
 #include "vision/frames/synthetic.h"
 #include "vision/preview_pane.h"
 #include "vision/reprojection_tuner.h"
 
 using namespace bs;
+using bs::test::wait_for_preview;
 using bs::ui::ReprojectionTuner;
 
 namespace {
@@ -28,11 +30,6 @@ cv::Mat small_fisheye(vision::Lens* lens_out = nullptr) {
   return vision::render_fisheye(lens);
 }
 
-void wait_for_preview(ReprojectionTuner& t) {
-  QTRY_VERIFY_WITH_TIMEOUT(t.shown_generation() == t.requested_generation() && !t.output_pane()->image().isNull(),
-                           20000);
-}
-
 }  // namespace
 
 class TestReprojectionTuner : public QObject {
@@ -46,7 +43,7 @@ class TestReprojectionTuner : public QObject {
     vision::TunerParams start = t.params();
     start.view = vision::View{320, 256, 120, 0, 0, 0};
     t.set_params(start);
-    wait_for_preview(t);
+    wait_for_preview(t, 20000);
     QCOMPARE(t.output_pane()->image().size(), QSize(320, 256));
     QSignalSpy changed(&t, &ReprojectionTuner::lens_changed);
     QVERIFY(!t.undo_action()->isEnabled());
@@ -57,7 +54,7 @@ class TestReprojectionTuner : public QObject {
     QCOMPARE(t.params().view.yaw_deg, 25.0);
     QCOMPARE(changed.count(), 25);
     QCOMPARE(changed.last().at(1).value<vision::View>().yaw_deg, 25.0);
-    wait_for_preview(t);  // newest request wins: the shown preview is the last one
+    wait_for_preview(t, 20000);  // newest request wins: the shown preview is the last one
     QVERIFY(t.undo_action()->isEnabled());
     t.undo_action()->trigger();
     QCOMPARE(t.params().view.yaw_deg, 0.0);
@@ -112,12 +109,12 @@ class TestReprojectionTuner : public QObject {
     t.set_mask_editing(false);
     QCOMPARE(t.params().masks.size(), std::size_t{1});
     QCOMPARE(t.params().masks[0].size(), std::size_t{4});
-    wait_for_preview(t);
+    wait_for_preview(t, 20000);
     const QImage masked = t.output_pane()->image();
     QCOMPARE(masked.pixelColor(160, 128), QColor(64, 64, 64));  // the centre is under the mask
     t.undo_action()->trigger();
     QVERIFY(t.params().masks.empty());
-    wait_for_preview(t);
+    wait_for_preview(t, 20000);
     QVERIFY(t.output_pane()->image().pixelColor(160, 128) != QColor(64, 64, 64));
     // Line tool: the residual text reports RMS and max in pixels.
     t.add_line_point({10, 10});
