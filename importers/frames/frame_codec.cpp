@@ -83,8 +83,7 @@ static bool png_extension(std::string_view path) { return frames::ends_with_ci(p
 static ImportBatch parse_png_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
                                   const CancelToken& cancel) {
   const std::uint64_t size = frames::file_size(path);
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");
+  std::ifstream f = frames::open_binary(path);
   char magic[8];
   if (!read_at(f, 0, magic, 8) || std::string_view(magic, 8) != kPngMagic)
     fail(ImportErrorCategory::UnknownFormat, path, 0, "no PNG signature");
@@ -183,8 +182,7 @@ static bool tiff_extension(std::string_view path) {
 static ImportBatch parse_tiff_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
                                    const CancelToken& cancel) {
   const std::uint64_t size = frames::file_size(path);
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");
+  std::ifstream f = frames::open_binary(path);
   char magic[4];
   if (!read_at(f, 0, magic, 4)) fail(ImportErrorCategory::Syntax, path, 0, "file is shorter than a TIFF header");
   const bool big = magic[0] == 'M';

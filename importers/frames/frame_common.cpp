@@ -45,6 +45,12 @@ std::uint64_t file_size(const std::string& path) {
   return size;
 }
 
+std::ifstream open_binary(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");
+  return f;
+}
+
 std::string stem_of(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 bool ends_with_ci(std::string_view text, std::string_view suffix) {

@@ -3,6 +3,7 @@
 // Checks and helpers shared by the frame importers (raw Bayer, PGM/PPM, PNG/TIFF). Every size a file claims is
 // checked against ImportLimits and against the file's real size before a single pixel buffer is allocated.
 #include <cstdint>
+#include <fstream>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,10 @@ std::string check_pattern(const std::string& file, const std::string& field, std
 
 // Size of `path` from the file system (never from the file's own claims); throws Io.
 std::uint64_t file_size(const std::string& path);
+
+// `path` opened for reading bytes; throws Io naming it when it cannot be opened. The frame readers open their file
+// after checking its size, and report a file that cannot be opened alike.
+std::ifstream open_binary(const std::string& path);
 
 // The file's stem ("capture" for /a/capture.raw): the frame's default label.
 std::string stem_of(const std::string& path);

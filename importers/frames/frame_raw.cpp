@@ -78,8 +78,7 @@ ImportBatch read_raw_frame(const std::string& path, const RawFrameOptions& o, co
   cancel.throw_if_cancelled();
   frame.pixels.resize(static_cast<std::size_t>(expected));  // == the real file size, checked above
   {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw ImportError(ImportErrorCategory::Io, {path, 0, 0, {}}, "cannot open for reading");
+    std::ifstream f = frames::open_binary(path);
     f.read(reinterpret_cast<char*>(frame.pixels.data()), static_cast<std::streamsize>(expected));
     if (static_cast<std::uint64_t>(f.gcount()) != expected)
       throw ImportError(ImportErrorCategory::Syntax, {path, 0, 0, "offset " + std::to_string(f.gcount())},

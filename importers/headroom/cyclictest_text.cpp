@@ -413,10 +413,7 @@ static ImportBatch parse_cyclictest_text(const std::string& text, const std::str
                                          const ParseOptions& /*options*/, const ImportLimits& limits,
                                          const CancelToken& cancel) {
   CyclictestTextParser parser(file, limits);
-  headroom_import::LineCursor cursor(text, cancel);
-  TextLine line;
-  while (cursor.next(&line)) parser.line(line);
-  return parser.finish();
+  return headroom_import::parse_lines(parser, text, cancel);
 }
 
 static int sniff_cyclictest_text(std::string_view head, std::string_view) {

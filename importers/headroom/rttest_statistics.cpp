@@ -184,10 +184,7 @@ static ImportBatch parse_rttest_statistics(const std::string& text, const std::s
                                            const ParseOptions& /*options*/, const ImportLimits& /*limits*/,
                                            const CancelToken& cancel) {
   StatisticsParser parser(file);
-  headroom_import::LineCursor cursor(text, cancel);
-  TextLine line;
-  while (cursor.next(&line)) parser.line(line);
-  return parser.finish();
+  return headroom_import::parse_lines(parser, text, cancel);
 }
 
 static int sniff_rttest_statistics(std::string_view head, std::string_view) {

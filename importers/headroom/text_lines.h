@@ -34,6 +34,16 @@ class LineCursor {
   std::size_t number_ = 0;
 };
 
+// Feeds every line of `text` to parser.line(line) and returns parser.finish(): the whole parse of the formats read
+// by a line-at-a-time parser object (cyclictest text, rttest statistics).
+template <class Parser>
+auto parse_lines(Parser& parser, std::string_view text, const CancelToken& cancel) {
+  LineCursor cursor(text, cancel);
+  TextLine line;
+  while (cursor.next(&line)) parser.line(line);
+  return parser.finish();
+}
+
 // `line` without terminal control sequences: ESC [ ... final byte (cursor moves, colours, erase), ESC ] ... BEL
 // (window titles), other two-byte ESC sequences, the same written in caret notation by `cat -v` ("^[[4A"), and
 // what a carriage return inside the line overwrote (only the text after the last '\r' was left on screen).

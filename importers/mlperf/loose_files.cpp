@@ -90,16 +90,23 @@ std::string role_name(Role r) {
   return r == Role::Detail ? "detail log" : r == Role::Spl ? "power log (spl)" : "measurements JSON";
 }
 
+// The JSON files in `folder` and in its `sub` folder whose head says they are a `kind` ("system description",
+// "measurements description"): a submission keeps them beside the summary or in systems/ and measurements/.
+std::vector<fs::path> descriptions_in(const fs::path& folder, const char* sub, std::string_view kind) {
+  std::vector<fs::path> found;
+  for (const fs::path& dir : {folder, folder / sub}) {
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+      if (it->path().extension() == ".json" && description_kind(head_of(it->path())) == kind)
+        found.push_back(it->path());
+  }
+  return found;
+}
+
 // The one system description for a summary: the only one beside it (or in systems/), or among several the one whose
 // name ("Orin_TRT_MaxQ.system.json" -> "Orin_TRT_MaxQ") the summary's name contains, the longest such.
 void pair_system(const fs::path& folder, const std::string& summary_name, LooseFiles& out) {
-  std::vector<fs::path> found;
-  for (const fs::path& dir : {folder, folder / "systems"}) {
-    std::error_code ec;
-    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
-      if (it->path().extension() == ".json" && description_kind(head_of(it->path())) == "system description")
-        found.push_back(it->path());
-  }
+  std::vector<fs::path> found = descriptions_in(folder, "systems", "system description");
   std::sort(found.begin(), found.end());
   const auto system_of = [](const fs::path& p) {
     std::string s = p.stem().string();
@@ -184,13 +191,7 @@ LooseFiles loose_files_of(const fs::path& summary, const ImportLimits& /*limits*
   // 3. A measurements JSON names no network ("Orin_TRT_MaxQ_SingleStream.json" for every one): without the prefix it
   // is the summary's only when the two are alone in the folder.
   if (out.measurements.empty()) {
-    std::vector<fs::path> all;
-    for (const fs::path& dir2 : {dir, dir / "measurements"}) {
-      std::error_code ec;
-      for (auto it = fs::directory_iterator(dir2, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
-        if (it->path().extension() == ".json" && description_kind(head_of(it->path())) == "measurements description")
-          all.push_back(it->path());
-    }
+    const std::vector<fs::path> all = descriptions_in(dir, "measurements", "measurements description");
     if (all.size() == 1 && folder.summaries.size() == 1) {
       out.measurements = all.front().string();
     } else if (!all.empty() && out.measurements_note.empty()) {

@@ -36,20 +36,8 @@ bool split_row(std::string_view line, std::vector<Cell>& out) {
     Cell cell;
     cell.column = i + 1;
     if (i < line.size() && line[i] == '"') {
-      ++i;
-      while (true) {
-        if (i >= line.size()) return false;
-        if (line[i] == '"') {
-          if (i + 1 < line.size() && line[i + 1] == '"') {
-            cell.text += '"';
-            i += 2;
-            continue;
-          }
-          ++i;
-          break;
-        }
-        cell.text += line[i++];
-      }
+      i = meter::read_quoted(line, i, cell.text);
+      if (i == std::string_view::npos) return false;
       // Text after the closing quote up to the separator belongs to the cell, as Python reads it.
       while (i < line.size() && line[i] != ',') cell.text += line[i++];
     } else {
@@ -354,14 +342,10 @@ ImportBatch JtopParser::finish() {
   // The log names no board model (only the family, by its format): the platform is what the user gives, else the
   // import asks or guesses (issue #43.3: a TX2's and an Orin's logs must not become one platform "Jetson").
   trace_.platform = options_.platform;
-  trace_.label = file_.substr(file_.find_last_of('/') == std::string::npos ? 0 : file_.find_last_of('/') + 1);
+  trace_.label = meter::file_name(file_);
+  meter::stamp_log_provenance(trace_, file_, old_format_ ? "jetson-stats (jtop) before 4.2" : "jetson-stats (jtop)",
+                              MeasurementKind::OnBoardSensor, "INA3221 (jetson-stats)");
   Provenance& p = trace_.provenance;
-  p.origin = DataOrigin::Measured;
-  p.tool = old_format_ ? "jetson-stats (jtop) before 4.2" : "jetson-stats (jtop)";
-  p.source_file = file_;
-  p.date = trace_.start_time;
-  p.measurement = MeasurementKind::OnBoardSensor;
-  p.sensor = "INA3221 (jetson-stats)";
   p.note = "board total = " + trace_.total_channel +
            " as jetson-stats computes it (the input rail VDD_IN / POM_5V_IN where the board has one, else the sum of "
            "the rails); the rails are its parts and are never added to it";

@@ -52,9 +52,57 @@ inline bool number(std::string_view s, double& v) {
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
 }
 
+// A quoted CSV cell (RFC 4180): `open` is the index of its opening quote in `line`. Appends the text up to the
+// closing quote to `out`, a doubled quote ("") as one quote character, and returns the index just after the
+// closing quote; npos when the quote is not closed on this line (then the rest of the line is appended). The CSV
+// readers (power-csv, jtop) share it so that they unquote alike; each decides what an open quote means.
+inline std::size_t read_quoted(std::string_view line, std::size_t open, std::string& out) {
+  std::size_t i = open + 1;
+  for (;;) {
+    const std::size_t quote = line.find('"', i);
+    if (quote == std::string_view::npos) {
+      out.append(line.substr(i));
+      return std::string_view::npos;
+    }
+    out.append(line.substr(i, quote - i));
+    if (quote + 1 < line.size() && line[quote + 1] == '"') {
+      out += '"';
+      i = quote + 2;
+      continue;
+    }
+    return quote + 1;
+  }
+}
+
+// The first `most` lines of a sniffed head, copied (the reader reuses its buffer): the sniffers look at a few lines
+// each, and this is their common loop.
+inline std::vector<std::string> head_lines(std::string_view head, std::size_t most) {
+  PowerLineReader lines(head, {});
+  std::vector<std::string> out;
+  while (out.size() < most) {
+    const auto line = lines.next();
+    if (!line) break;
+    out.emplace_back(*line);
+  }
+  return out;
+}
+
 inline std::string file_name(const std::string& path) {
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// What every meter log says of its trace: measured, by `tool` (the program that wrote the log), read from `file`,
+// dated by the trace's start, a `kind` of measurement by `sensor`. Each format adds its own note and settings.
+inline void stamp_log_provenance(PowerTrace& trace, const std::string& file, std::string tool, MeasurementKind kind,
+                                 std::string sensor) {
+  Provenance& p = trace.provenance;
+  p.origin = DataOrigin::Measured;
+  p.tool = std::move(tool);
+  p.source_file = file;
+  p.date = trace.start_time;
+  p.measurement = kind;
+  p.sensor = std::move(sensor);
 }
 
 // Feeds every non-blank line to parser.line(text, number, last) and returns parser.finish(). The pending line is
@@ -66,9 +114,11 @@ class LineParserBase {
  public:
   static constexpr std::size_t kListedWarnings = 10;
 
- protected:
+  // Public so that the parsers inherit it (`using LineParserBase::LineParserBase`) for parse_log to call.
   LineParserBase(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
       : file_(file), options_(options), limits_(limits) {}
+
+ protected:
   [[noreturn]] void fail(ImportErrorCategory cat, std::size_t line_no, std::string field,
                          const std::string& why) const {
     throw ImportError(cat, {file_, line_no, 0, std::move(field)}, why);

@@ -130,8 +130,7 @@ struct Gpu {
 
 class NvidiaSmiParser : meter::LineParserBase {
  public:
-  NvidiaSmiParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : LineParserBase(file, options, limits) {}
+  using LineParserBase::LineParserBase;
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
 
@@ -450,14 +449,9 @@ ImportBatch NvidiaSmiParser::finish() {
     // The total first as well: readers that take the first power channel (as before total_channel) agree.
     std::stable_partition(t.channels.begin(), t.channels.end(),
                           [&](const PowerChannel& c) { return c.name == t.total_channel; });
+    meter::stamp_log_provenance(t, file_, "nvidia-smi", MeasurementKind::OnBoardSensor, "NVML (nvidia-smi)");
     auto& p = t.provenance;
-    p.origin = DataOrigin::Measured;
-    p.tool = "nvidia-smi";
-    p.source_file = file_;
-    p.date = t.start_time;
     p.gpu_model = g.name;
-    p.measurement = MeasurementKind::OnBoardSensor;
-    p.sensor = "NVML (nvidia-smi)";
     if (!g.key.empty() && gpus_.size() > 1) p.note = "GPU " + g.key;
     if (auto run = sustain_run(g)) batch_.sustain_runs.push_back(std::move(*run));
     batch_.power_traces.push_back(std::move(t));

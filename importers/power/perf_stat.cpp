@@ -43,13 +43,15 @@ bool plain_number(std::string_view s) {
   return meter::number(s, v);
 }
 
+// Digits only, at least one.
+bool all_digits(std::string_view d) {
+  return !d.empty() && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // An interval time: digits, one decimal mark ('.' or a locale's ','), digits ("1.001078602", "1,001078602").
 bool interval_time(std::string_view s) {
   const auto mark = s.find_first_of(".,");
-  const auto digits = [](std::string_view d) {
-    return !d.empty() && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
-  };
-  return mark != std::string_view::npos && digits(s.substr(0, mark)) && digits(s.substr(mark + 1));
+  return mark != std::string_view::npos && all_digits(s.substr(0, mark)) && all_digits(s.substr(mark + 1));
 }
 
 // The prefix before the value: an interval time (a number first), then aggregation ids ("S0", "S0-D0-C1",
@@ -66,56 +68,60 @@ void read_prefix(const std::vector<std::string_view>& prefix, Record& r) {
   if (!id.empty()) r.channel = id + " " + r.channel;
 }
 
+// The index of the first field naming an event read here (a RAPL domain, or duration_time); 0 when none. Both
+// output forms write the value and its unit in the two fields before the event, so the search starts at the third.
+std::size_t event_field(const std::vector<std::string_view>& f) {
+  for (std::size_t k = 2; k < f.size(); ++k)
+    if (!rapl_domain(f[k]).empty() || f[k] == "duration_time") return k;
+  return 0;
+}
+
+// The record of the event at f[k]: its channel, and its unit from the field before; the caller reads the value.
+Record event_record(const std::vector<std::string_view>& f, std::size_t k) {
+  const std::string_view domain = rapl_domain(f[k]);
+  Record r;
+  r.channel = domain.empty() ? "duration_time" : std::string(domain);
+  r.unit = f[k - 1];
+  return r;
+}
+
 // "-x," output: [time,][aggregation,]value,unit,event,run time,percent,...
 std::optional<Record> csv_record(std::string_view line, std::vector<std::string_view>& f) {
   if (line.find(',') == std::string_view::npos) return std::nullopt;
   meter::split(line, ',', f);
-  for (std::size_t k = 2; k < f.size(); ++k) {
-    const std::string_view domain = rapl_domain(f[k]);
-    if (domain.empty() && f[k] != "duration_time") continue;
-    Record r;
-    r.channel = domain.empty() ? "duration_time" : std::string(domain);
-    r.unit = f[k - 1];
-    if (!not_counted(f[k - 2])) r.value = std::string(f[k - 2]);
-    read_prefix({f.begin(), f.begin() + static_cast<std::ptrdiff_t>(k - 2)}, r);
-    return r;
-  }
-  return std::nullopt;
+  const std::size_t k = event_field(f);
+  if (k == 0) return std::nullopt;
+  Record r = event_record(f, k);
+  if (!not_counted(f[k - 2])) r.value = std::string(f[k - 2]);
+  read_prefix({f.begin(), f.begin() + static_cast<std::ptrdiff_t>(k - 2)}, r);
+  return r;
 }
 
 // Human-readable: [time] [aggregation count] value unit event [# ...] [(100.00%)]
 std::optional<Record> human_record(std::string_view line, std::vector<std::string_view>& t) {
   meter::tokens(line, t);
-  for (std::size_t k = 2; k < t.size(); ++k) {
-    const std::string_view domain = rapl_domain(t[k]);
-    if (domain.empty() && t[k] != "duration_time") continue;
-    Record r;
-    r.channel = domain.empty() ? "duration_time" : std::string(domain);
-    r.unit = t[k - 1];
-    std::size_t value_at = k - 2;
-    if ((t[k - 2] == "counted>" || t[k - 2] == "supported>") && k >= 3 && t[k - 3] == "<not") {
-      value_at = k - 3;
-    } else {
-      r.value = std::string(t[k - 2]);
-      // A locale that groups thousands with a space splits "5 005,68" in two tokens: put the groups back together
-      // (only where no aggregation id precedes them, so the "1" of "S0 1 3.73" stays a CPU count).
-      const auto digits = [](std::string_view d) {
-        return !d.empty() && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
-      };
-      const std::size_t first = !t.empty() && interval_time(t[0]) && value_at > 0 ? 1 : 0;
-      bool ids = false;
-      for (std::size_t i = first; i < value_at; ++i) ids = ids || !digits(t[i]);
-      while (!ids && value_at > first && t[value_at - 1].size() <= 3 && digits(t[value_at - 1]) &&
-             r.value.size() >= 3 && digits(std::string_view(r.value).substr(0, 3)) &&
-             (r.value.size() == 3 || r.value[3] == ',' || r.value[3] == '.')) {
-        r.value = std::string(t[value_at - 1]) + r.value;
-        --value_at;
-      }
+  const std::size_t k = event_field(t);
+  if (k == 0) return std::nullopt;
+  Record r = event_record(t, k);
+  std::size_t value_at = k - 2;
+  if ((t[k - 2] == "counted>" || t[k - 2] == "supported>") && k >= 3 && t[k - 3] == "<not") {
+    value_at = k - 3;
+  } else {
+    r.value = std::string(t[k - 2]);
+    // A locale that groups thousands with a space splits "5 005,68" in two tokens: put the groups back together
+    // (only where no aggregation id precedes them, so the "1" of "S0 1 3.73" stays a CPU count).
+    const std::size_t first = !t.empty() && interval_time(t[0]) && value_at > 0 ? 1 : 0;
+    bool ids = false;
+    for (std::size_t i = first; i < value_at; ++i) ids = ids || !all_digits(t[i]);
+    while (!ids && value_at > first && t[value_at - 1].size() <= 3 && all_digits(t[value_at - 1]) &&
+           r.value.size() >= 3 && all_digits(std::string_view(r.value).substr(0, 3)) &&
+           (r.value.size() == 3 || r.value[3] == ',' || r.value[3] == '.')) {
+      r.value = std::string(t[value_at - 1]) + r.value;
+      --value_at;
     }
-    read_prefix({t.begin(), t.begin() + static_cast<std::ptrdiff_t>(value_at)}, r);
-    return r;
   }
-  return std::nullopt;
+  read_prefix({t.begin(), t.begin() + static_cast<std::ptrdiff_t>(value_at)}, r);
+  return r;
 }
 
 // perf prints numbers with the locale's grouping: "2,306.32" (C), "1.373,00" or "5 005,68" (decimal comma).
@@ -158,8 +164,7 @@ struct Channel {
 
 class PerfStatParser : meter::LineParserBase {
  public:
-  PerfStatParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : LineParserBase(file, options, limits) {}
+  using LineParserBase::LineParserBase;
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
 
@@ -351,13 +356,8 @@ ImportBatch PerfStatParser::finish() {
     std::stable_partition(t.channels.begin(), t.channels.end(),
                           [&](const PowerChannel& c) { return c.name == t.total_channel; });
     if (start_epoch_) t.start_time = format_iso8601(*start_epoch_);
+    meter::stamp_log_provenance(t, file_, "perf stat", MeasurementKind::OnBoardSensor, "RAPL (perf stat)");
     auto& p = t.provenance;
-    p.origin = DataOrigin::Measured;
-    p.tool = "perf stat";
-    p.source_file = file_;
-    p.date = t.start_time;
-    p.measurement = MeasurementKind::OnBoardSensor;
-    p.sensor = "RAPL (perf stat)";
     if (!runs_.empty()) p.settings.emplace_back("runs", runs_);
     p.settings.emplace_back(kSamplesPerReadingSetting, "2");  // each reading is an interval's start and end
     p.note = interval_mode_ && *interval_mode_ ? "mean power of each perf stat -I interval (energy / interval length)"
@@ -373,13 +373,10 @@ ImportBatch PerfStatParser::finish() {
 }  // namespace
 
 static int sniff_perf_stat(std::string_view head, std::string_view) {
-  PowerLineReader lines(head, {});
   std::vector<std::string_view> scratch;
   int score = 0;
-  for (int seen = 0; seen < 256; ++seen) {
-    const auto line = lines.next();
-    if (!line) break;
-    const std::string_view l = trim(*line);
+  for (const std::string& line : meter::head_lines(head, 256)) {
+    const std::string_view l = trim(line);
     std::optional<Record> r = csv_record(l, scratch);
     if (!r) r = human_record(l, scratch);
     if (r && r->channel != "duration_time") return 95;

@@ -15,6 +15,7 @@
 #endif
 
 #include "analysis/power/power_time.h"
+#include "power/meter_log_text.h"
 #include "power/power_line_reader.h"
 #include "util/text.h"
 
@@ -224,19 +225,7 @@ std::vector<HeaderCell> split_cells(std::string_view line, char sep) {
     std::size_t k = i;
     while (k < line.size() && line[k] == ' ') ++k;
     if (k < line.size() && line[k] == '"') {
-      ++k;
-      while (k < line.size()) {
-        if (line[k] == '"') {
-          if (k + 1 < line.size() && line[k + 1] == '"') {
-            cell.text += '"';
-            k += 2;
-            continue;
-          }
-          ++k;
-          break;
-        }
-        cell.text += line[k++];
-      }
+      k = std::min(meter::read_quoted(line, k, cell.text), line.size());
       while (k < line.size() && line[k] != sep) ++k;  // text after the closing quote: dropped
     } else {
       const auto end = line.find(sep, i);
@@ -537,22 +526,11 @@ std::string_view PowerCsvParser::cell_text(const char* p, const char* stop, cons
   while (q < stop && *q != sep_ && space(*q)) ++q;
   if (q < stop && *q == '"') {
     scratch_.clear();
-    const char* r = q + 1;
-    for (;;) {
-      const void* hit = std::memchr(r, '"', static_cast<std::size_t>(stop - r));
-      if (!hit)
-        fail(ImportErrorCategory::Syntax, line_no, col, index < columns_.size() ? columns_[index].name : std::string{},
-             "quoted cell not closed on this line (a line break inside quotes is not supported in a log)");
-      const char* quote = static_cast<const char*>(hit);
-      scratch_.append(r, quote);
-      if (quote + 1 < stop && quote[1] == '"') {  // a doubled quote is one quote character
-        scratch_ += '"';
-        r = quote + 2;
-        continue;
-      }
-      r = quote + 1;
-      break;
-    }
+    const std::size_t after = meter::read_quoted(std::string_view(q, static_cast<std::size_t>(stop - q)), 0, scratch_);
+    if (after == std::string_view::npos)
+      fail(ImportErrorCategory::Syntax, line_no, col, index < columns_.size() ? columns_[index].name : std::string{},
+           "quoted cell not closed on this line (a line break inside quotes is not supported in a log)");
+    const char* r = q + after;
     while (r < stop && *r != sep_ && space(*r)) ++r;
     if (r < stop && *r != sep_)
       fail(ImportErrorCategory::Syntax, line_no, static_cast<std::size_t>(col + (r - p)),
@@ -931,11 +909,8 @@ bool usual(std::string_view path) {
 }  // namespace
 
 static int sniff_power_csv(std::string_view head, std::string_view) {
-  PowerLineReader lines(head, {});
-  for (int seen = 0; seen < 64; ++seen) {
-    const auto line = lines.next();
-    if (!line) return 0;
-    std::string_view l = trim(*line);
+  for (const std::string& line : meter::head_lines(head, 64)) {
+    std::string_view l = trim(line);
     if (l.empty()) continue;
     const bool comment = l.front() == '#';
     if (comment) l.remove_prefix(1);

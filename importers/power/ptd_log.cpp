@@ -48,8 +48,7 @@ struct Slot {
 
 class PtdParser : meter::LineParserBase {
  public:
-  PtdParser(const std::string& file, const ParseOptions& options, const ImportLimits& limits)
-      : LineParserBase(file, options, limits) {}
+  using LineParserBase::LineParserBase;
   void line(std::string_view raw, std::size_t line_no, bool last);
   ImportBatch finish();
 
@@ -212,13 +211,8 @@ ImportBatch PtdParser::finish() {
   trace_.platform = options_.platform;
   trace_.label = meter::file_name(file_);
   trace_.total_channel = "power";
-  auto& p = trace_.provenance;
-  p.origin = DataOrigin::Measured;
-  p.tool = "SPEC PTDaemon";
-  p.source_file = file_;
-  p.date = trace_.start_time;
-  p.measurement = MeasurementKind::ExternalMeter;
-  p.sensor = "SPEC PTDaemon power analyzer: AC wall power of the whole system at the mains plug";
+  meter::stamp_log_provenance(trace_, file_, "SPEC PTDaemon", MeasurementKind::ExternalMeter,
+                              "SPEC PTDaemon power analyzer: AC wall power of the whole system at the mains plug");
   // Alone, a PTDaemon log has no power window: MLPerf's mean is over LoadGen's power_begin..power_end only.
   batch_.warnings.push_back(file_ +
                             ": read on its own, without LoadGen's power window (mlperf_log_detail.txt's "
@@ -231,11 +225,8 @@ ImportBatch PtdParser::finish() {
 }  // namespace
 
 static int sniff_ptd_log(std::string_view head, std::string_view) {
-  PowerLineReader lines(head, {});
-  for (int seen = 0; seen < 16; ++seen) {
-    const auto line = lines.next();
-    if (!line) break;
-    const std::string_view l = trim(*line);
+  for (const std::string& line : meter::head_lines(head, 16)) {
+    const std::string_view l = trim(line);
     if (l.starts_with("Time,") && l.find(",Watts,") != std::string_view::npos) return 95;
   }
   return 0;

@@ -225,15 +225,11 @@ ImportBatch TegrastatsParser::finish() {
   // The log names no board model (only the family, by its format): the platform is what the user gives, else the
   // import asks or guesses (issue #43.3: a TX2's and an Orin's logs must not become one platform "Jetson").
   trace_.platform = options_.platform;
-  trace_.label = file_.substr(file_.find_last_of('/') == std::string::npos ? 0 : file_.find_last_of('/') + 1);
-  trace_.provenance.origin = DataOrigin::Measured;
-  trace_.provenance.tool = "tegrastats";
-  trace_.provenance.source_file = file_;
-  trace_.provenance.date = trace_.start_time;
-  trace_.provenance.measurement = MeasurementKind::OnBoardSensor;
+  trace_.label = meter::file_name(file_);
   // AGX Thor's VIN comes from a separate board monitor; every other rail tegrastats prints is an INA3221 channel.
-  trace_.provenance.sensor =
-      trace_.total_channel == "VIN" ? "on-board power monitors (tegrastats)" : "INA3221 (tegrastats)";
+  meter::stamp_log_provenance(
+      trace_, file_, "tegrastats", MeasurementKind::OnBoardSensor,
+      trace_.total_channel == "VIN" ? "on-board power monitors (tegrastats)" : "INA3221 (tegrastats)");
   trace_.provenance.note = how;
   if (!*timestamped_) {
     char seconds[32];
@@ -252,13 +248,10 @@ ImportBatch TegrastatsParser::finish() {
 }  // namespace
 
 static int sniff_tegrastats(std::string_view head, std::string_view) {
-  PowerLineReader lines(head, {});
   std::vector<std::string_view> tok;
   int score = 0;
-  for (int seen = 0; seen < 16; ++seen) {
-    const auto line = lines.next();
-    if (!line) break;
-    meter::tokens(*line, tok);
+  for (const std::string& line : meter::head_lines(head, 16)) {
+    meter::tokens(line, tok);
     const bool ram = std::find(tok.begin(), tok.end(), "RAM") != tok.end();
     for (std::size_t i = 0; ram && i + 1 < tok.size(); ++i)
       if (rail_name(tok[i]) && rail_value(tok[i + 1]).reading == Reading::Ok && tok[i] != "RAM" && tok[i] != "SWAP" &&

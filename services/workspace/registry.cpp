@@ -78,15 +78,13 @@ const Importer* find_importer(std::string_view id) {
   return nullptr;
 }
 
-ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits) {
-  std::string head = read_head(path);
-  // Content decides; the usual extension only breaks a tie (score * 2 + 1 can never beat a higher score).
+// The binary (or the text) importer whose sniff claims `head` most strongly; null when none claims it. Content
+// decides; the usual extension only breaks a tie (score * 2 + 1 can never beat a higher score).
+static const Importer* best_sniffed(bool binary, std::string_view head, const std::string& path) {
   const Importer* best = nullptr;
   int best_score = 0;
-  // Binary formats (frames) first, on the raw head: their magic bytes (or a .raw sidecar) would fail the text
-  // checks below. A file no binary importer claims goes on to the text formats.
   for (const auto& imp : all_importers()) {
-    if (!imp->binary()) continue;
+    if (imp->binary() != binary) continue;
     const int content = imp->sniff(head, path);
     if (content <= 0) continue;
     const int score = content * 2 + (imp->usual_extension(path) ? 1 : 0);
@@ -95,19 +93,16 @@ ImportBatch import_file(const std::string& path, const CancelToken& cancel, cons
       best = imp.get();
     }
   }
-  if (best) return parse_as(*best, path, limits, cancel);
+  return best;
+}
+
+ImportBatch import_file(const std::string& path, const CancelToken& cancel, const ImportLimits& limits) {
+  std::string head = read_head(path);
+  // Binary formats (frames) first, on the raw head: their magic bytes (or a .raw sidecar) would fail the text
+  // checks below. A file no binary importer claims goes on to the text formats.
+  if (const Importer* binary = best_sniffed(true, head, path)) return parse_as(*binary, path, limits, cancel);
   check_text(head, path);
-  const std::string_view view = strip_utf8_bom(head);
-  for (const auto& imp : all_importers()) {
-    if (imp->binary()) continue;
-    const int content = imp->sniff(view, path);
-    if (content <= 0) continue;
-    const int score = content * 2 + (imp->usual_extension(path) ? 1 : 0);
-    if (score > best_score) {
-      best_score = score;
-      best = imp.get();
-    }
-  }
+  const Importer* best = best_sniffed(false, strip_utf8_bom(head), path);
   if (!best) {
     std::string tried;
     for (const auto& imp : all_importers()) tried += (tried.empty() ? "" : ", ") + std::string(imp->description());

@@ -22,6 +22,7 @@
 #include "common/bench_host.h"
 #include "common/command.h"
 #include "common/signals.h"
+#include "common/subcommand.h"
 #include "headroom/bench_headroom.h"
 #include "kernels/bench_ceilings.h"
 #include "kernels/bench_range_stats.h"
@@ -361,20 +362,18 @@ const CommandRegistrar registrar({
         "  OpenCV thread per call on both sides, plus the sequential baseline with OpenCV's default threading.\n" +
         std::string(kBenchDnnHelp) + kBenchHeadroomHelp + kBenchSustainSamplerHelp,
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
-      if (!args.empty() && args[0] == "kernels") return bench_kernels(rest, out);
-      if (!args.empty() && args[0] == "vision") return bench_vision(rest, out);
-      if (!args.empty() && args[0] == "pipeline") return bench_pipeline(rest, out);
-      if (!args.empty() && args[0] == "tuner") return bench_tuner(rest, out);
-      if (!args.empty() && args[0] == "power-csv") return bench_power_csv(rest, out);
-      if (!args.empty() && args[0] == "decimate") return bench_decimate(rest, out);
-      if (!args.empty() && args[0] == "range-stats") return bench_range_stats(rest, out);
-      if (!args.empty() && args[0] == "dnn") return bench_dnn(rest, out, err);
-      if (!args.empty() && args[0] == "headroom") return bench_headroom(rest, out, err);
-      if (!args.empty() && args[0] == "sustain-sampler") return bench_sustain_sampler(rest, out);
-      throw UsageError(
-          "expected 'bench kernels', 'bench vision', 'bench pipeline', 'bench tuner', 'bench power-csv', "
-          "'bench decimate', 'bench range-stats', 'bench dnn', 'bench headroom' or 'bench sustain-sampler'");
+      return run_subcommand("bench",
+                            {{"kernels", out_only<bench_kernels>},
+                             {"vision", out_only<bench_vision>},
+                             {"pipeline", out_only<bench_pipeline>},
+                             {"tuner", out_only<bench_tuner>},
+                             {"power-csv", out_only<bench_power_csv>},
+                             {"decimate", out_only<bench_decimate>},
+                             {"range-stats", out_only<bench_range_stats>},
+                             {"dnn", bench_dnn},
+                             {"headroom", bench_headroom},
+                             {"sustain-sampler", out_only<bench_sustain_sampler>}},
+                            args, out, err);
     },
 });
 

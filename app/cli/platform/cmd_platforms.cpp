@@ -151,22 +151,11 @@ int run_platforms(const std::vector<std::string>& raw, std::ostream& out) {
   const auto rows = compare_platforms(data.runs, data.power_traces, pipelines, options);
   if (rows.empty()) throw std::runtime_error("no FLOPS runs or power logs to compare");
   auto verdicts = recommend(rows, c);
-  // A control-loop requirement adds its checks to each platform's verdict (no measurement: unknown, never passing).
-  std::vector<headroom::LoopVerdict> loop;
-  if (platform_args.loop) {
-    std::vector<std::string> names;
-    for (const PlatformRow& r : rows) names.push_back(r.platform);
-    loop = headroom::evaluate_loop(*platform_args.loop, data.headroom, names);
-    headroom::apply_loop(verdicts, loop);
-  }
-  // A sustained requirement likewise (no sustained run that answers it: unknown, never passing).
-  std::vector<sustain::SustainVerdict> sustained;
-  if (platform_args.sustained) {
-    std::vector<std::string> names;
-    for (const PlatformRow& r : rows) names.push_back(r.platform);
-    sustained = sustain::evaluate_sustain(*platform_args.sustained, data.sustain_runs, names);
-    sustain::apply_sustain(verdicts, sustained);
-  }
+  // A control-loop requirement adds its checks to each platform's verdict (no measurement: unknown, never passing);
+  // a sustained requirement likewise (no sustained run that answers it: unknown, never passing).
+  const auto [loop, sustained] = judge_requirements(platform_args, rows, data);
+  if (platform_args.loop) headroom::apply_loop(verdicts, loop);
+  if (platform_args.sustained) sustain::apply_sustain(verdicts, sustained);
   const ExportTable table = platform_table(
       rows, constrained ? std::span<const PlatformVerdict>(verdicts) : std::span<const PlatformVerdict>());
   if (const auto p = args.value("--latex")) write_file(*p, to_latex(table));

@@ -63,20 +63,9 @@ int run_report(const std::vector<std::string>& raw, std::ostream& out, std::ostr
     const auto rows = compare_platforms(fd.runs, fd.traces, fd.pipelines, platform.options);
     CandidateInputs in = library_candidate_inputs(rows, data, *spec);
     // No class picks what the control loop's verdict rejects (the report's verdicts judge it the same way).
-    std::vector<headroom::LoopVerdict> loop;
-    if (platform.loop) {
-      std::vector<std::string> names;
-      for (const PlatformRow& r : rows) names.push_back(r.platform);
-      loop = headroom::evaluate_loop(*platform.loop, data.headroom, names);
-      in.loop = &loop;
-    }
-    std::vector<sustain::SustainVerdict> sustained;
-    if (platform.sustained) {
-      std::vector<std::string> names;
-      for (const PlatformRow& r : rows) names.push_back(r.platform);
-      sustained = sustain::evaluate_sustain(*platform.sustained, data.sustain_runs, names);
-      in.sustained = &sustained;
-    }
+    const RequirementVerdicts judged = judge_requirements(platform, rows, data);
+    if (platform.loop) in.loop = &judged.loop;
+    if (platform.sustained) in.sustained = &judged.sustained;
     classes = rank_candidates(in, platform.constraints, platform.options);
     peaks = peak_candidates(in);
   }

@@ -159,4 +159,14 @@ std::size_t use_log(std::vector<PowerTrace>& traces, const std::string& spec) {
   return first;
 }
 
+RequirementVerdicts judge_requirements(const PlatformArgs& p, const std::vector<PlatformRow>& rows,
+                                       const LoadedData& data) {
+  std::vector<std::string> names;
+  for (const PlatformRow& r : rows) names.push_back(r.platform);
+  RequirementVerdicts v;
+  if (p.loop) v.loop = headroom::evaluate_loop(*p.loop, data.headroom, names);
+  if (p.sustained) v.sustained = sustain::evaluate_sustain(*p.sustained, data.sustain_runs, names);
+  return v;
+}
+
 }  // namespace bs::cli

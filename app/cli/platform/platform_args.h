@@ -14,6 +14,8 @@
 
 namespace bs::cli {
 
+struct LoadedData;
+
 // --budget W, --min-fps FPS, --min-runtime MIN, --battery PRESET, --extra-load W, --supply-volts V,
 // --mission SPEC (name:seconds:watts,... in parallel with each computer, as `battery --mission`),
 // --require-loop SPEC (a control-loop requirement, headroom/loop_requirement.h), --require-sustained SPEC (a
@@ -47,6 +49,15 @@ StoredDecision decision_to_store(const PlatformArgs& p);
 // use a platform's first log). Throws UsageError naming the platform's logs when there is no such log. Returns the
 // log's index after the move.
 std::size_t use_log(std::vector<PowerTrace>& traces, const std::string& spec);
+
+// The compared platforms (one per row) judged against --require-loop and --require-sustained; a vector is empty
+// when its requirement is not given. `platforms` and `report` judge the same rows alike through it.
+struct RequirementVerdicts {
+  std::vector<headroom::LoopVerdict> loop;
+  std::vector<sustain::SustainVerdict> sustained;
+};
+RequirementVerdicts judge_requirements(const PlatformArgs& p, const std::vector<PlatformRow>& rows,
+                                       const LoadedData& data);
 
 // Throws UsageError for an unknown battery preset, naming the known ones, or a malformed mission. `--no-stored`
 // (a flag of the commands that read the stored decision) ignores what the workspace stored.

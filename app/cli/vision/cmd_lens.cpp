@@ -14,6 +14,7 @@
 #include "common/args.h"
 #include "common/command.h"
 #include "common/import_error.h"
+#include "common/subcommand.h"
 #include "image_files/image_files.h"
 #include "vision/frames/frame_image.h"
 #include "vision/lens/circle_detect.h"
@@ -313,17 +314,15 @@ const CommandRegistrar registrar({
     "  obtained; export-lut: writes the view's lookup table (docs/lut-format.md); line: RMS and max distance in\n"
     "  pixels of clicked points from their best-fit straight line.",
     [](const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-      const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
-      if (!args.empty() && args[0] == "circle") return lens_circle(rest, out);
-      if (!args.empty() && args[0] == "calibrate") return lens_calibrate(rest, out, err);
-      if (!args.empty() && args[0] == "export-lut") return lens_export_lut(rest, out);
-      if (!args.empty() && args[0] == "line") return lens_line(rest, out);
-      if (!args.empty() && args[0] == "refine-lines") return lens_refine_lines(rest, out);
-      if (!args.empty() && args[0] == "propose-lines") return lens_propose_lines(rest, out);
-      if (!args.empty() && args[0] == "show") return lens_show(rest, out);
-      throw UsageError(
-          "expected 'lens circle', 'lens calibrate', 'lens refine-lines', 'lens propose-lines', 'lens show', 'lens "
-          "export-lut' or 'lens line'");
+      return run_subcommand("lens",
+                            {{"circle", out_only<lens_circle>},
+                             {"calibrate", lens_calibrate},
+                             {"refine-lines", out_only<lens_refine_lines>},
+                             {"propose-lines", out_only<lens_propose_lines>},
+                             {"show", out_only<lens_show>},
+                             {"export-lut", out_only<lens_export_lut>},
+                             {"line", out_only<lens_line>}},
+                            args, out, err);
     },
 });
 

@@ -302,7 +302,8 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
     return 1;
   }
 
-  PipelineRun run = to_pipeline_run(result);
+  // How the lens was obtained travels with the timings (the Pipeline view's Lens column).
+  PipelineRun run = measured_pipeline_run(result, lens);
   run.platform = settings.platform.value_or(bs::host_name());
   run.device = backend == "opencl" ? cl_info.device + " (OpenCL) preprocessing, CPU detection"
                : backend == "cuda" ? cuda_info.device + " (CUDA) preprocessing, CPU detection"
@@ -315,13 +316,6 @@ int run_pipeline_cmd(const std::vector<std::string>& raw, std::ostream& out, std
                  : architecture_from_string(detector_name)
                      ? architecture_detector_name(*architecture_from_string(detector_name))
                      : std::filesystem::path(detector_name.substr(0, detector_name.find(','))).filename().string();
-  run.frame_width = lens.width;
-  run.frame_height = lens.height;
-  // How the lens was obtained travels with the timings (the Pipeline view's Lens column).
-  run.provenance.settings.emplace_back("lens calibration", describe(lens.calibration));
-  run.provenance.origin = DataOrigin::Measured;
-  run.provenance.host = bs::host_name();
-  run.provenance.date = bs::utc_timestamp();
   run.provenance.tool = std::string("benchscope-cli ") + BENCHSCOPE_VERSION;
   run.provenance.compiler = BENCHSCOPE_COMPILER;
   run.provenance.note =

@@ -2,6 +2,7 @@
 #define CL_TARGET_OPENCL_VERSION 120
 #include "kernels/backends/backend_opencl.h"
 #include "kernels/ceilings/ceilings_opencl.h"
+#include "kernels/opencl_device_value.h"
 #include "kernels/step_chunker.h"
 
 #include <CL/cl.h>
@@ -60,13 +61,6 @@ std::string device_string(cl_device_id d, cl_device_info what) {
   clGetDeviceInfo(d, what, size, s.data(), nullptr);
   while (!s.empty() && s.back() == '\0') s.pop_back();
   return s;
-}
-
-template <class T>
-T device_value(cl_device_id d, cl_device_info what) {
-  T v{};
-  clGetDeviceInfo(d, what, sizeof v, &v, nullptr);
-  return v;
 }
 
 // A device with its context, queue and one built program per VEC width, shared by the Backend's closures.

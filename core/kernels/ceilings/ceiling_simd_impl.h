@@ -41,33 +41,16 @@ void mix(float* xs, float* ys, std::int64_t steps, float c, float s) {
     __builtin_memcpy(xs + k * kLanes, &x[k], sizeof(vf)), __builtin_memcpy(ys + k * kLanes, &y[k], sizeof(vf));
 }
 
+// mix<K> for the K of `Ks` that equals `chains`; false when none does. The chain counts are compile-time (the
+// chains live in registers), so each one the caller may ask for is instantiated here, listed once.
+template <int... Ks>
+bool mix_for(int chains, float* xs, float* ys, std::int64_t steps, float c, float s) {
+  return ((chains == Ks && (mix<Ks>(xs, ys, steps, c, s), true)) || ...);
+}
+
 // K chains: one of 2, 4, 5, 6, 8, 10, 12 (false otherwise). xs/ys hold K * lanes() floats each.
 bool rotation_mix(int chains, float* xs, float* ys, std::int64_t steps, float c, float s) {
-  switch (chains) {
-    case 2:
-      mix<2>(xs, ys, steps, c, s);
-      return true;
-    case 4:
-      mix<4>(xs, ys, steps, c, s);
-      return true;
-    case 5:
-      mix<5>(xs, ys, steps, c, s);
-      return true;
-    case 6:
-      mix<6>(xs, ys, steps, c, s);
-      return true;
-    case 8:
-      mix<8>(xs, ys, steps, c, s);
-      return true;
-    case 10:
-      mix<10>(xs, ys, steps, c, s);
-      return true;
-    case 12:
-      mix<12>(xs, ys, steps, c, s);
-      return true;
-    default:
-      return false;
-  }
+  return mix_for<2, 4, 5, 6, 8, 10, 12>(chains, xs, ys, steps, c, s);
 }
 
 // Plain FMA throughput: acc = acc * a + b on fma_chains() independent accumulators (acc holds that many vectors).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #define CL_TARGET_OPENCL_VERSION 120
 #include "kernels/ceilings/ceilings_opencl.h"
+#include "kernels/opencl_device_value.h"
 
 #include <CL/cl.h>
 
@@ -88,13 +89,6 @@ void check(cl_int err, const char* what) {
     throw std::runtime_error(std::string("OpenCL ceilings: ") + what + " failed (error " + std::to_string(err) + ")");
 }
 
-template <class T>
-T info(cl_device_id d, cl_device_info what) {
-  T v{};
-  clGetDeviceInfo(d, what, sizeof v, &v, nullptr);
-  return v;
-}
-
 struct Mem {
   cl_mem m = nullptr;
   Mem() = default;
@@ -115,7 +109,7 @@ class OpenClCeilings final : public DeviceCeilingKernels {
     check(err, "clCreateCommandQueue");
     program_ = clCreateProgramWithSource(context_, 1, &kSource, nullptr, &err);
     check(err, "clCreateProgramWithSource");
-    const auto type = info<cl_device_type>(id_, CL_DEVICE_TYPE);
+    const auto type = device_value<cl_device_type>(id_, CL_DEVICE_TYPE);
     width_ = (type & CL_DEVICE_TYPE_CPU) ? 16 : 1;
     const std::string options = "-cl-mad-enable -DW=" + std::to_string(width_);
     if (const cl_int built = clBuildProgram(program_, 1, &id_, options.c_str(), nullptr, nullptr);
@@ -131,7 +125,7 @@ class OpenClCeilings final : public DeviceCeilingKernels {
     copy_ = kernel("copy4");
     // Work-items: enough to fill a GPU (2048 per compute unit, as many as an NVIDIA SM holds), far fewer on a CPU
     // device, where each work-group runs on one core.
-    units_ = static_cast<int>(info<cl_uint>(id_, CL_DEVICE_MAX_COMPUTE_UNITS));
+    units_ = static_cast<int>(device_value<cl_uint>(id_, CL_DEVICE_MAX_COMPUTE_UNITS));
     items_ = static_cast<std::size_t>(std::max(units_, 1)) * ((type & CL_DEVICE_TYPE_GPU) ? 2048 : 256);
     const cl_float c = static_cast<float>(std::cos(2.0)), s = static_cast<float>(std::sin(2.0));
     c_ = c, s_ = s;
@@ -141,8 +135,9 @@ class OpenClCeilings final : public DeviceCeilingKernels {
     // Copy buffers: the spec's size, else 256 MiB on a GPU and 64 MiB elsewhere, within the largest allocation and
     // an eighth of the device's memory (a Jetson or an integrated GPU shares it with the CPU).
     std::size_t bytes = (spec.device_copy_mib ? spec.device_copy_mib : (type & CL_DEVICE_TYPE_GPU) ? 256 : 64) << 20;
-    bytes = std::min<std::size_t>(bytes, info<cl_ulong>(id_, CL_DEVICE_MAX_MEM_ALLOC_SIZE));
-    if (!spec.device_copy_mib) bytes = std::min<std::size_t>(bytes, info<cl_ulong>(id_, CL_DEVICE_GLOBAL_MEM_SIZE) / 8);
+    bytes = std::min<std::size_t>(bytes, device_value<cl_ulong>(id_, CL_DEVICE_MAX_MEM_ALLOC_SIZE));
+    if (!spec.device_copy_mib)
+      bytes = std::min<std::size_t>(bytes, device_value<cl_ulong>(id_, CL_DEVICE_GLOBAL_MEM_SIZE) / 8);
     copy_floats4_ = std::max<std::size_t>(bytes / 16, 1024);
     std::vector<float> pattern(copy_floats4_ * 4);
     for (std::size_t i = 0; i < pattern.size(); ++i) pattern[i] = static_cast<float>(i % 65521) + 0.25f;

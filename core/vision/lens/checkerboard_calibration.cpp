@@ -17,6 +17,7 @@
 #include "util/text.h"
 #include "vision/lens/circle_detect.h"
 #include "vision/lens/fisheye_opencv.h"
+#include "vision/lens/stretch_8bit.h"
 
 namespace bs::vision {
 namespace {
@@ -32,12 +33,7 @@ cv::Mat grey8(const cv::Mat& image) {
     cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
   else if (image.channels() == 4)
     cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
-  if (grey.depth() == CV_8U) return grey;
-  double max = 0;
-  cv::minMaxLoc(grey, nullptr, &max);
-  cv::Mat out;
-  grey.convertTo(out, CV_8U, max > 0 ? 255.0 / max : 1.0);
-  return out;
+  return stretch_to_8bit(grey);
 }
 
 // The view cv::fisheye's CALIB_CHECK_COND names ("... Ill-conditioned matrix for input array N"), or -1.

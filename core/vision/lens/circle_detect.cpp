@@ -8,6 +8,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "vision/lens/stretch_8bit.h"
+
 namespace bs::vision {
 namespace {
 
@@ -74,16 +76,6 @@ double percentile(std::vector<double> v, double q) {
   const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
   return v[k];
-}
-
-// Gray, 8-bit: the coarse stage's threshold works on it.
-cv::Mat gray8_of(const cv::Mat& gray) {
-  if (gray.depth() == CV_8U) return gray;
-  double mx = 0;
-  cv::minMaxLoc(gray, nullptr, &mx);
-  cv::Mat g;
-  gray.convertTo(g, CV_8U, mx > 0 ? 255.0 / mx : 1.0);
-  return g;
 }
 
 // Stage 1: threshold, largest region, its outer contour off the image border, circle fit with outliers dropped.
@@ -271,7 +263,7 @@ std::optional<ImageCircle> detect_image_circle(const cv::Mat& image, double min_
   else
     return std::nullopt;
   if (gray.depth() != CV_8U && gray.depth() != CV_16U) return std::nullopt;
-  const auto coarse = coarse_circle(gray8_of(gray), min_level);
+  const auto coarse = coarse_circle(stretch_to_8bit(gray), min_level);  // its threshold takes 8-bit
   if (!coarse) return std::nullopt;
   // 0..1 by the brightest pixel, so 8-bit, 16-bit and 10/12 bits in 16 behave alike; a light blur (sigma 1 px)
   // keeps noise from firing the lit/dark tests and leaves a blurred step's half-way point where it was.

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "vision/lens/points_json.h"
+
 namespace bs::vision {
 namespace {
 
@@ -379,21 +381,8 @@ std::vector<PickedLine> lines_from_json(const nlohmann::json& j) {
   if (!j.contains("lines") || !j["lines"].is_array()) throw std::invalid_argument("/lines: expected an array");
   std::vector<PickedLine> out;
   const auto& arr = j["lines"];
-  for (std::size_t i = 0; i < arr.size(); ++i) {
-    const std::string at = "/lines/" + std::to_string(i);
-    if (!arr[i].is_array()) throw std::invalid_argument(at + ": expected an array of [x, y] points");
-    PickedLine line;
-    for (std::size_t k = 0; k < arr[i].size(); ++k) {
-      const auto& p = arr[i][k];
-      if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
-        throw std::invalid_argument(at + "/" + std::to_string(k) + ": expected [x, y] numbers");
-      const double x = p[0].get<double>(), y = p[1].get<double>();
-      if (!std::isfinite(x) || !std::isfinite(y))
-        throw std::invalid_argument(at + "/" + std::to_string(k) + ": coordinates must be finite");
-      line.emplace_back(x, y);
-    }
-    out.push_back(std::move(line));
-  }
+  for (std::size_t i = 0; i < arr.size(); ++i)
+    out.push_back(points_from_json<double>(arr[i], "/lines/" + std::to_string(i), /*finite=*/true));
   return out;
 }
 

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "vision/lens/points_json.h"
+
 namespace bs::vision {
 namespace {
 
@@ -61,18 +63,8 @@ TunerParams tuner_from_json(const nlohmann::json& j) {
   if (j.contains("masks")) {  // optional: a plain lens file has none
     const auto& masks = j["masks"];
     if (!masks.is_array()) throw std::invalid_argument("/masks: expected an array of polygons");
-    for (std::size_t i = 0; i < masks.size(); ++i) {
-      const std::string at = "/masks/" + std::to_string(i);
-      if (!masks[i].is_array()) throw std::invalid_argument(at + ": expected an array of [x, y] points");
-      MaskPolygon poly;
-      for (std::size_t k = 0; k < masks[i].size(); ++k) {
-        const auto& q = masks[i][k];
-        if (!q.is_array() || q.size() != 2 || !q[0].is_number() || !q[1].is_number())
-          throw std::invalid_argument(at + "/" + std::to_string(k) + ": expected [x, y] numbers");
-        poly.emplace_back(q[0].get<float>(), q[1].get<float>());
-      }
-      p.masks.push_back(std::move(poly));
-    }
+    for (std::size_t i = 0; i < masks.size(); ++i)
+      p.masks.push_back(points_from_json<float>(masks[i], "/masks/" + std::to_string(i), /*finite=*/false));
   }
   return p;
 }

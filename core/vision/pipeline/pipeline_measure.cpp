@@ -73,7 +73,7 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   if (result_out) *result_out = result;
   if (result.cancelled) return std::nullopt;
 
-  PipelineRun run = to_pipeline_run(result);
+  PipelineRun run = measured_pipeline_run(result, lens);
   run.platform = bs::host_name();
   run.device = preprocess_device;
   if (detector)
@@ -83,12 +83,6 @@ std::optional<PipelineRun> measure_synthetic_pipeline(const SyntheticPipelineOpt
   // The OpenCL path demosaics the whole frame, then reprojects; the CPU and CUDA paths are fused.
   run.demosaic = o.backend == "opencl" ? "bilinear" : "fused";
   run.detector = detector_name;
-  run.frame_width = lens.width;
-  run.frame_height = lens.height;
-  run.provenance.settings.emplace_back("lens calibration", describe(lens.calibration));
-  run.provenance.origin = DataOrigin::Measured;
-  run.provenance.host = bs::host_name();
-  run.provenance.date = bs::utc_timestamp();
   run.provenance.tool = o.tool;
   char scale[32];
   std::snprintf(scale, sizeof scale, "%g", o.detect_scale);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/pipeline/pipeline_record.h"
 
+#include "util/host_clock.h"
+
 namespace bs::vision {
 
 PipelineRun to_pipeline_run(const PipelineResult& result) {
@@ -15,6 +17,17 @@ PipelineRun to_pipeline_run(const PipelineResult& result) {
                           t.p50 * s, t.p95 * s});
   }
   if (result.throughput_fps > 0) run.throughput_fps = result.throughput_fps;
+  return run;
+}
+
+PipelineRun measured_pipeline_run(const PipelineResult& result, const Lens& lens) {
+  PipelineRun run = to_pipeline_run(result);
+  run.frame_width = lens.width;
+  run.frame_height = lens.height;
+  run.provenance.settings.emplace_back("lens calibration", describe(lens.calibration));
+  run.provenance.origin = DataOrigin::Measured;
+  run.provenance.host = bs::host_name();
+  run.provenance.date = bs::utc_timestamp();
   return run;
 }
 
