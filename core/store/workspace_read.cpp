@@ -138,6 +138,18 @@ bool attach_device(const Workspace::Impl& w, const std::map<std::int64_t, Device
   return true;
 }
 
+// The rows of `table` that belong to the items read before it (a run's samples, a set's measurements, a trace's
+// channels and phases, a pipeline run's stages): `each(k, row)` for a row whose item is at place k of the result
+// (`index`: item id -> place). The rows of a damaged item, or of none (an orphan, which check names), are passed
+// over.
+template <class Child, class Each>
+void read_child_rows(const Workspace::Impl& w, const store::Table<Child>& table, const char* order,
+                     const std::map<std::int64_t, std::size_t>& index, Each each) {
+  store::read_rows(w.conn(), table, w.limits, order, [&](Row<Child>&& r) {
+    if (const auto it = index.find(r.keys[0]); it != index.end()) each(it->second, std::move(r));
+  });
+}
+
 // The rows of a kind measured on a device (runs, result sets) in id order, each with its device's fields and colour;
 // `index` gets each kept row's place, for the rows that belong to it (samples, measurements), read after. A row whose
 // device is missing or that breaks the import rules is recorded as damaged (named by `item`) and left out.
@@ -168,19 +180,17 @@ std::vector<StoredRun> Workspace::runs() const {
   // Timings kept per run so far: counted as they come (summing the run's lists for every row was quadratic in its
   // worker counts, and most of a CLI command's time under ASan).
   std::vector<std::size_t> timings(out.size(), 0);
-  store::read_rows(w.conn(), store::run_samples_table(), w.limits, "ORDER BY run_id, workers, repetition",
-                   [&](Row<store::RunSampleRow>&& r) {
-                     const auto it = index.find(r.keys[0]);
-                     if (it == index.end()) return;  // a damaged run's samples, or an orphan (check names it)
-                     if (r.flaw) return damaged(it->second, *r.flaw);
-                     auto& list = out[it->second].run.samples;
-                     if (timings[it->second]++ >= w.limits.max_samples)
-                       return damaged(it->second, store::flaw(ImportErrorCategory::TooLarge,
-                                                              "run_samples: more than " +
-                                                                  std::to_string(w.limits.max_samples) + " timings"));
-                     if (list.empty() || list.back().workers != r.value.workers) list.push_back({r.value.workers, {}});
-                     list.back().seconds.push_back(r.value.seconds);
-                   });
+  read_child_rows(
+      w, store::run_samples_table(), "ORDER BY run_id, workers, repetition", index,
+      [&](std::size_t k, Row<store::RunSampleRow>&& r) {
+        if (r.flaw) return damaged(k, *r.flaw);
+        auto& list = out[k].run.samples;
+        if (timings[k]++ >= w.limits.max_samples)
+          return damaged(k, store::flaw(ImportErrorCategory::TooLarge,
+                                        "run_samples: more than " + std::to_string(w.limits.max_samples) + " timings"));
+        if (list.empty() || list.back().workers != r.value.workers) list.push_back({r.value.workers, {}});
+        list.back().seconds.push_back(r.value.seconds);
+      });
   std::erase_if(out, [&](const StoredRun& s) { return w.is_damaged("runs", s.id); });
   // Ordered as the views list them: by device colour, backend, dims, then id (bytewise, like SQLite's BINARY).
   std::stable_sort(out.begin(), out.end(), [](const StoredRun& a, const StoredRun& b) {
@@ -195,11 +205,9 @@ std::vector<StoredResultSet> Workspace::result_sets() const {
   std::map<std::int64_t, std::size_t> index;
   std::vector<StoredResultSet> out =
       read_device_rows<StoredResultSet>(w, device_map(*this), store::result_sets_table(), set_item, index);
-  store::read_rows(
-      w.conn(), store::measurements_table(), w.limits, "ORDER BY result_set_id, id", [&](Row<Measurement>&& r) {
-        const auto it = index.find(r.keys[0]);
-        if (it == index.end()) return;
-        StoredResultSet& s = out[it->second];
+  read_child_rows(
+      w, store::measurements_table(), "ORDER BY result_set_id, id", index, [&](std::size_t k, Row<Measurement>&& r) {
+        StoredResultSet& s = out[k];
         if (r.flaw)
           return w.record({set_item(s.id, s.set), "result_sets", s.id, r.flaw->category,
                            "measurement #" + std::to_string(r.id) + labelled(r.value.name) + ": " + where(*r.flaw)});
@@ -274,17 +282,14 @@ std::vector<StoredPowerTrace> Workspace::power_trace_summaries() const {
     index[r.id] = out.size();
     out.push_back(std::move(r.value));
   });
-  store::read_rows(
-      w.conn(), store::power_channels_table(), w.limits, "ORDER BY trace_id, id", [&](Row<ChannelSummary>&& r) {
-        const auto it = index.find(r.keys[0]);
-        if (it == index.end()) return;
-        StoredPowerTrace& s = out[it->second];
+  read_child_rows(
+      w, store::power_channels_table(), "ORDER BY trace_id, id", index, [&](std::size_t k, Row<ChannelSummary>&& r) {
+        StoredPowerTrace& s = out[k];
         if (r.flaw)
-          return damaged(it->second,
-                         "channel #" + std::to_string(r.id) + labelled(r.value.name) + ": " + where(*r.flaw),
+          return damaged(k, "channel #" + std::to_string(r.id) + labelled(r.value.name) + ": " + where(*r.flaw),
                          r.flaw->category);
         if (r.value.stats.summary.n > s.summary.samples)
-          return damaged(it->second,
+          return damaged(k,
                          "channel" + labelled(r.value.name) + ": its summary counts " +
                              std::to_string(r.value.stats.summary.n) + " samples of " +
                              std::to_string(s.summary.samples),
@@ -293,14 +298,12 @@ std::vector<StoredPowerTrace> Workspace::power_trace_summaries() const {
         s.trace.channels.push_back({r.value.name, r.value.quantity, {}});
         s.summary.channels.push_back(std::move(r.value));
       });
-  store::read_rows(
-      w.conn(), store::power_phases_table(), w.limits, "ORDER BY trace_id, start_s, id", [&](Row<TracePhase>&& r) {
-        const auto it = index.find(r.keys[0]);
-        if (it == index.end()) return;
-        if (r.flaw)
-          return damaged(it->second, "phase #" + std::to_string(r.id) + ": " + where(*r.flaw), r.flaw->category);
-        out[it->second].trace.phases.push_back(std::move(r.value));
-      });
+  read_child_rows(w, store::power_phases_table(), "ORDER BY trace_id, start_s, id", index,
+                  [&](std::size_t k, Row<TracePhase>&& r) {
+                    if (r.flaw)
+                      return damaged(k, "phase #" + std::to_string(r.id) + ": " + where(*r.flaw), r.flaw->category);
+                    out[k].trace.phases.push_back(std::move(r.value));
+                  });
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (w.is_damaged("power_traces", out[k].id)) continue;
     if (const auto f = chunk_flaw(w.conn(), out[k].id, out[k].summary.samples, channel_ids[out[k].id]))
@@ -419,18 +422,16 @@ std::vector<StoredPipelineRun> Workspace::pipeline_runs() const {
   std::map<std::int64_t, std::size_t> index;
   for (std::size_t k = 0; k < out.size(); ++k) index[out[k].id] = k;
   // Stages in pipeline order (preprocess, detect, end-to-end, then any other), not alphabetically.
-  store::read_rows(w.conn(), store::pipeline_stages_table(), w.limits,
-                   "ORDER BY run_id, CASE stage WHEN 'preprocess' THEN 0 WHEN 'detect' THEN 1 "
-                   "WHEN 'end-to-end' THEN 2 ELSE 3 END, stage",
-                   [&](Row<StageStats>&& r) {
-                     const auto it = index.find(r.keys[0]);
-                     if (it == index.end()) return;
-                     StoredPipelineRun& p = out[it->second];
-                     if (r.flaw)
-                       return w.record({pipeline_item(p.id, p.run), "pipeline_runs", p.id, r.flaw->category,
-                                        "stage" + labelled(r.value.stage) + ": " + where(*r.flaw)});
-                     p.run.stages.push_back(std::move(r.value));
-                   });
+  read_child_rows(w, store::pipeline_stages_table(),
+                  "ORDER BY run_id, CASE stage WHEN 'preprocess' THEN 0 WHEN 'detect' THEN 1 "
+                  "WHEN 'end-to-end' THEN 2 ELSE 3 END, stage",
+                  index, [&](std::size_t k, Row<StageStats>&& r) {
+                    StoredPipelineRun& p = out[k];
+                    if (r.flaw)
+                      return w.record({pipeline_item(p.id, p.run), "pipeline_runs", p.id, r.flaw->category,
+                                       "stage" + labelled(r.value.stage) + ": " + where(*r.flaw)});
+                    p.run.stages.push_back(std::move(r.value));
+                  });
   std::erase_if(out, [&](const StoredPipelineRun& s) { return w.is_damaged("pipeline_runs", s.id); });
   return out;
 }
