@@ -140,10 +140,7 @@ Phase phase_from_json(const json& j, const std::string& where) {
   if (!j.is_object()) Fields::fail(where, "is not an object");
   Phase p;
   p.name = Fields::text(j, "name", where);
-  const std::string load = Fields::text(j, "load", where);
-  const auto kind = load_kind_from_id(load);
-  if (!kind) Fields::fail(where + ".load", "unknown load '" + load + "'");
-  p.load = *kind;
+  p.load = Fields::word(j, "load", where, load_kind_from_id, "load");
   p.load_detail = Fields::text(j, "load_detail", where);
   p.target_rate = optional_number(j, "target_rate", where, true);
   p.achieved_rate = optional_number(j, "achieved_rate", where, true);
@@ -247,10 +244,7 @@ HeadroomMeasurement measurement_from_json(const json& j) {
   if (!j.is_object()) Fields::fail(where, "is not an object");
   HeadroomMeasurement m;
   m.platform = Fields::text(j, "platform", where);
-  const std::string kind = Fields::text(j, "kind", where);
-  const auto k = latency_kind_from_id(kind);
-  if (!k) Fields::fail(where + ".kind", "unknown latency kind '" + kind + "' (known: wakeup, loop, message)");
-  m.kind = *k;
+  m.kind = Fields::word(j, "kind", where, latency_kind_from_id, "latency kind", " (known: wakeup, loop, message)");
   m.tool = Fields::text(j, "tool", where);
   m.command = Fields::text(j, "command", where);
   const json& kernel = Fields::member(j, "kernel", where);

@@ -5,62 +5,35 @@
 #include <cmath>
 #include <cstdio>
 
+#include "util/enum_words.h"
+
 namespace bs::headroom {
 
-std::string_view to_string(LatencyKind kind) {
-  switch (kind) {
-    case LatencyKind::SystemWakeup:
-      return "system wake-up latency";
-    case LatencyKind::ApplicationLoop:
-      return "application loop";
-    case LatencyKind::MessageLatency:
-      return "message latency";
-  }
-  return "unknown";
-}
+namespace {
 
-std::string_view to_id(LatencyKind kind) {
-  switch (kind) {
-    case LatencyKind::SystemWakeup:
-      return "wakeup";
-    case LatencyKind::ApplicationLoop:
-      return "loop";
-    case LatencyKind::MessageLatency:
-      return "message";
-  }
-  return "unknown";
-}
+// The words the views name each kind by, and the ids files, the workspace and the CLI store (read back by the same
+// lines).
+constexpr EnumWord<LatencyKind> kLatencyKindNames[] = {{LatencyKind::SystemWakeup, "system wake-up latency"},
+                                                       {LatencyKind::ApplicationLoop, "application loop"},
+                                                       {LatencyKind::MessageLatency, "message latency"}};
+constexpr EnumWord<LatencyKind> kLatencyKindIds[] = {{LatencyKind::SystemWakeup, "wakeup"},
+                                                     {LatencyKind::ApplicationLoop, "loop"},
+                                                     {LatencyKind::MessageLatency, "message"}};
+constexpr EnumWord<LoadKind> kLoadKindIds[] = {{LoadKind::Idle, "idle"},       {LoadKind::Pipeline, "pipeline"},
+                                               {LoadKind::Detector, "dnn"},    {LoadKind::Kernels, "flops"},
+                                               {LoadKind::Command, "command"}, {LoadKind::Unknown, "unknown"}};
 
-std::optional<LatencyKind> latency_kind_from_id(std::string_view id) {
-  for (LatencyKind k : {LatencyKind::SystemWakeup, LatencyKind::ApplicationLoop, LatencyKind::MessageLatency})
-    if (to_id(k) == id) return k;
-  return std::nullopt;
-}
+}  // namespace
 
-std::string_view to_id(LoadKind kind) {
-  switch (kind) {
-    case LoadKind::Idle:
-      return "idle";
-    case LoadKind::Pipeline:
-      return "pipeline";
-    case LoadKind::Detector:
-      return "dnn";
-    case LoadKind::Kernels:
-      return "flops";
-    case LoadKind::Command:
-      return "command";
-    case LoadKind::Unknown:
-      return "unknown";
-  }
-  return "unknown";
-}
+std::string_view to_string(LatencyKind kind) { return word_of(kLatencyKindNames, kind, "unknown"); }
 
-std::optional<LoadKind> load_kind_from_id(std::string_view id) {
-  for (LoadKind k : {LoadKind::Idle, LoadKind::Pipeline, LoadKind::Detector, LoadKind::Kernels, LoadKind::Command,
-                     LoadKind::Unknown})
-    if (to_id(k) == id) return k;
-  return std::nullopt;
-}
+std::string_view to_id(LatencyKind kind) { return word_of(kLatencyKindIds, kind, "unknown"); }
+
+std::optional<LatencyKind> latency_kind_from_id(std::string_view id) { return parse_word(kLatencyKindIds, id); }
+
+std::string_view to_id(LoadKind kind) { return word_of(kLoadKindIds, kind, "unknown"); }
+
+std::optional<LoadKind> load_kind_from_id(std::string_view id) { return parse_word(kLoadKindIds, id); }
 
 const Phase* HeadroomMeasurement::phase(std::string_view name) const {
   for (const Phase& p : phases)

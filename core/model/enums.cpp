@@ -1,67 +1,41 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/flops_run.h"
 #include "model/provenance.h"
+#include "util/enum_words.h"
 
 namespace bs {
+namespace {
 
-std::string_view to_string(DataOrigin origin) {
-  switch (origin) {
-    case DataOrigin::Measured:
-      return "measured";
-    case DataOrigin::Reconstructed:
-      return "reconstructed";
-    case DataOrigin::Published:
-      return "published";
-    case DataOrigin::Unknown:
-      break;
-  }
-  return "unknown";
-}
+// The words files and the workspace store; a word no line names reads as the unknown value.
+constexpr EnumWord<DataOrigin> kDataOriginWords[] = {{DataOrigin::Measured, "measured"},
+                                                     {DataOrigin::Reconstructed, "reconstructed"},
+                                                     {DataOrigin::Published, "published"},
+                                                     {DataOrigin::Unknown, "unknown"}};
+constexpr EnumWord<MeasurementKind> kMeasurementKindWords[] = {{MeasurementKind::ExternalMeter, "external meter"},
+                                                               {MeasurementKind::OnBoardSensor, "on-board sensor"},
+                                                               {MeasurementKind::SoftwareEstimate, "software estimate"},
+                                                               {MeasurementKind::Unknown, "unknown"}};
+constexpr EnumWord<DeviceKind> kDeviceKindWords[] = {
+    {DeviceKind::Cpu, "cpu"}, {DeviceKind::Gpu, "gpu"}, {DeviceKind::Other, "other"}};
+
+}  // namespace
+
+std::string_view to_string(DataOrigin origin) { return word_of(kDataOriginWords, origin, "unknown"); }
 
 DataOrigin data_origin_from_string(std::string_view text) {
-  if (text == "measured") return DataOrigin::Measured;
-  if (text == "reconstructed") return DataOrigin::Reconstructed;
-  if (text == "published") return DataOrigin::Published;
-  return DataOrigin::Unknown;
+  return parse_word(kDataOriginWords, text).value_or(DataOrigin::Unknown);
 }
 
-std::string_view to_string(MeasurementKind kind) {
-  switch (kind) {
-    case MeasurementKind::ExternalMeter:
-      return "external meter";
-    case MeasurementKind::OnBoardSensor:
-      return "on-board sensor";
-    case MeasurementKind::SoftwareEstimate:
-      return "software estimate";
-    case MeasurementKind::Unknown:
-      break;
-  }
-  return "unknown";
-}
+std::string_view to_string(MeasurementKind kind) { return word_of(kMeasurementKindWords, kind, "unknown"); }
 
 MeasurementKind measurement_kind_from_string(std::string_view text) {
-  if (text == "external meter") return MeasurementKind::ExternalMeter;
-  if (text == "on-board sensor") return MeasurementKind::OnBoardSensor;
-  if (text == "software estimate") return MeasurementKind::SoftwareEstimate;
-  return MeasurementKind::Unknown;
+  return parse_word(kMeasurementKindWords, text).value_or(MeasurementKind::Unknown);
 }
 
-std::string_view to_string(DeviceKind kind) {
-  switch (kind) {
-    case DeviceKind::Cpu:
-      return "cpu";
-    case DeviceKind::Gpu:
-      return "gpu";
-    case DeviceKind::Other:
-      break;
-  }
-  return "other";
-}
+std::string_view to_string(DeviceKind kind) { return word_of(kDeviceKindWords, kind, "other"); }
 
 DeviceKind device_kind_from_string(std::string_view text) {
-  if (text == "cpu") return DeviceKind::Cpu;
-  if (text == "gpu") return DeviceKind::Gpu;
-  return DeviceKind::Other;
+  return parse_word(kDeviceKindWords, text).value_or(DeviceKind::Other);
 }
 
 }  // namespace bs

@@ -1,36 +1,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/error_category.h"
 
-namespace bs {
+#include "util/enum_words.h"
 
-std::string_view to_string(ImportErrorCategory category) {
-  switch (category) {
-    case ImportErrorCategory::Io:
-      return "io";
-    case ImportErrorCategory::Empty:
-      return "empty";
-    case ImportErrorCategory::Binary:
-      return "binary";
-    case ImportErrorCategory::Encoding:
-      return "encoding";
-    case ImportErrorCategory::UnknownFormat:
-      return "unknown-format";
-    case ImportErrorCategory::Syntax:
-      return "syntax";
-    case ImportErrorCategory::MissingField:
-      return "missing-field";
-    case ImportErrorCategory::WrongType:
-      return "wrong-type";
-    case ImportErrorCategory::InvalidValue:
-      return "invalid-value";
-    case ImportErrorCategory::TooLarge:
-      return "too-large";
-    case ImportErrorCategory::TooDeep:
-      return "too-deep";
-    case ImportErrorCategory::Unsupported:
-      return "unsupported";
-  }
-  return "unknown";
-}
+namespace bs {
+namespace {
+
+// The words messages and the bad-input corpus (tests/data/bad) name each category by.
+constexpr EnumWord<ImportErrorCategory> kCategoryWords[] = {{ImportErrorCategory::Io, "io"},
+                                                            {ImportErrorCategory::Empty, "empty"},
+                                                            {ImportErrorCategory::Binary, "binary"},
+                                                            {ImportErrorCategory::Encoding, "encoding"},
+                                                            {ImportErrorCategory::UnknownFormat, "unknown-format"},
+                                                            {ImportErrorCategory::Syntax, "syntax"},
+                                                            {ImportErrorCategory::MissingField, "missing-field"},
+                                                            {ImportErrorCategory::WrongType, "wrong-type"},
+                                                            {ImportErrorCategory::InvalidValue, "invalid-value"},
+                                                            {ImportErrorCategory::TooLarge, "too-large"},
+                                                            {ImportErrorCategory::TooDeep, "too-deep"},
+                                                            {ImportErrorCategory::Unsupported, "unsupported"}};
+
+}  // namespace
+
+std::string_view to_string(ImportErrorCategory category) { return word_of(kCategoryWords, category, "unknown"); }
 
 }  // namespace bs

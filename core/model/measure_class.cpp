@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/measure_class.h"
+#include "util/enum_words.h"
 #include "util/text.h"
 
 #include <array>
@@ -123,94 +124,52 @@ MeasureClass classify_measurement(std::string_view metric_text, std::string_view
   return c;
 }
 
-std::string_view to_string(Precision p) {
-  switch (p) {
-    case Precision::Unknown:
-      return "unknown";
-    case Precision::FP64:
-      return "fp64";
-    case Precision::FP32:
-      return "fp32";
-    case Precision::TF32:
-      return "tf32";
-    case Precision::FP16:
-      return "fp16";
-    case Precision::BF16:
-      return "bf16";
-    case Precision::MixedFP16FP32:
-      return "mixed";
-    case Precision::FP8:
-      return "fp8";
-    case Precision::FP4:
-      return "fp4";
-    case Precision::INT64:
-      return "int64";
-    case Precision::INT32:
-      return "int32";
-    case Precision::INT24:
-      return "int24";
-    case Precision::INT16:
-      return "int16";
-    case Precision::INT8:
-      return "int8";
-    case Precision::INT4:
-      return "int4";
-  }
-  return "unknown";
-}
+namespace {
 
-std::string_view precision_label(Precision p) {
-  switch (p) {
-    case Precision::Unknown:
-      return "unstated";
-    case Precision::FP64:
-      return "FP64 (double)";
-    case Precision::FP32:
-      return "FP32 (single)";
-    case Precision::FP16:
-      return "FP16 (half)";
-    case Precision::MixedFP16FP32:
-      return "FP16 x FP16 + FP32 (mixed)";
-    default:
-      break;
-  }
-  static const std::array<std::string_view, 15> kUpper{"",    "",      "",      "TF32",  "",      "BF16", "",    "FP8",
-                                                       "FP4", "INT64", "INT32", "INT24", "INT16", "INT8", "INT4"};
-  return kUpper[static_cast<std::size_t>(p)];
-}
+// The words files, the CLI and the views name a precision by. The aliases come after the canonical word: word_of
+// gives a value's first word, parse_word reads all of them.
+constexpr EnumWord<Precision> kPrecisionWords[] = {
+    {Precision::Unknown, "unknown"},     {Precision::FP64, "fp64"},   {Precision::FP32, "fp32"},
+    {Precision::TF32, "tf32"},           {Precision::FP16, "fp16"},   {Precision::BF16, "bf16"},
+    {Precision::MixedFP16FP32, "mixed"}, {Precision::FP8, "fp8"},     {Precision::FP4, "fp4"},
+    {Precision::INT64, "int64"},         {Precision::INT32, "int32"}, {Precision::INT24, "int24"},
+    {Precision::INT16, "int16"},         {Precision::INT8, "int8"},   {Precision::INT4, "int4"},
+    {Precision::FP32, "single"},         {Precision::FP64, "double"}, {Precision::FP16, "half"}};
+// The labels of tables and charts.
+constexpr EnumWord<Precision> kPrecisionLabels[] = {{Precision::Unknown, "unstated"},
+                                                    {Precision::FP64, "FP64 (double)"},
+                                                    {Precision::FP32, "FP32 (single)"},
+                                                    {Precision::TF32, "TF32"},
+                                                    {Precision::FP16, "FP16 (half)"},
+                                                    {Precision::BF16, "BF16"},
+                                                    {Precision::MixedFP16FP32, "FP16 x FP16 + FP32 (mixed)"},
+                                                    {Precision::FP8, "FP8"},
+                                                    {Precision::FP4, "FP4"},
+                                                    {Precision::INT64, "INT64"},
+                                                    {Precision::INT32, "INT32"},
+                                                    {Precision::INT24, "INT24"},
+                                                    {Precision::INT16, "INT16"},
+                                                    {Precision::INT8, "INT8"},
+                                                    {Precision::INT4, "INT4"}};
+constexpr EnumWord<MeasureKind> kMeasureKindWords[] = {{MeasureKind::VectorCompute, "vector-compute"},
+                                                       {MeasureKind::MatrixCompute, "matrix-compute"},
+                                                       {MeasureKind::OtherCompute, "other-compute"},
+                                                       {MeasureKind::MemoryBandwidth, "memory-bandwidth"},
+                                                       {MeasureKind::OnChipBandwidth, "on-chip-bandwidth"},
+                                                       {MeasureKind::TransferBandwidth, "transfer-bandwidth"},
+                                                       {MeasureKind::Latency, "latency"},
+                                                       {MeasureKind::Other, "other"}};
 
-std::string_view to_string(MeasureKind k) {
-  switch (k) {
-    case MeasureKind::VectorCompute:
-      return "vector-compute";
-    case MeasureKind::MatrixCompute:
-      return "matrix-compute";
-    case MeasureKind::OtherCompute:
-      return "other-compute";
-    case MeasureKind::MemoryBandwidth:
-      return "memory-bandwidth";
-    case MeasureKind::OnChipBandwidth:
-      return "on-chip-bandwidth";
-    case MeasureKind::TransferBandwidth:
-      return "transfer-bandwidth";
-    case MeasureKind::Latency:
-      return "latency";
-    case MeasureKind::Other:
-      return "other";
-  }
-  return "other";
-}
+}  // namespace
+
+std::string_view to_string(Precision p) { return word_of(kPrecisionWords, p, "unknown"); }
+
+std::string_view precision_label(Precision p) { return word_of(kPrecisionLabels, p, ""); }
+
+std::string_view to_string(MeasureKind k) { return word_of(kMeasureKindWords, k, "other"); }
 
 std::optional<Precision> precision_from_string(std::string_view text) {
-  const std::string t = lower(text);
-  if (t == "single") return Precision::FP32;
-  if (t == "double") return Precision::FP64;
-  if (t == "half") return Precision::FP16;
-  for (int i = 0; i <= static_cast<int>(Precision::INT4); ++i) {
-    const auto p = static_cast<Precision>(i);
-    if (t == to_string(p)) return p;
-  }
-  return std::nullopt;
+  return parse_word(kPrecisionWords, lower(text));
 }
 
 bool is_compute(MeasureKind k) {

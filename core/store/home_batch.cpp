@@ -2,10 +2,21 @@
 #include "store/home_batch.h"
 
 #include <filesystem>
+#include <utility>
 
 #include "store/workspace.h"
 
 namespace bs {
+
+HomeBatch measured_home(std::string name, std::string format, const std::optional<PowerTrace>& power,
+                        std::string_view key) {
+  HomeBatch out;
+  out.batch.source_path = std::move(name);
+  out.batch.format = std::move(format);
+  if (power) out.batch.power_traces.push_back(*power);
+  out.content_hash = content_hash(key);
+  return out;
+}
 
 std::int64_t bring_home(Workspace& ws, const HomeBatch& home, const CancelToken* cancel) {
   return ws.add_import(home.batch, home.content_hash, cancel);

@@ -5,7 +5,9 @@
 // headroom_import, ...), so the GUI and the CLI store the same measurement the same way and a workspace recognises it
 // as the same import whichever of them stored it.
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "store/import_batch.h"
@@ -19,6 +21,12 @@ struct HomeBatch {
   ImportBatch batch;
   std::string content_hash;  // what makes it the same measurement: the same hash is not stored twice
 };
+
+// What every builder of one in-process measurement's home starts from (it then adds the record to its kind's vector):
+// the import named `name` (util/home_name.h: who measured it, on which computer, when) in `format`, the power log
+// recorded beside the measurement, if any, and the content hash of `key`, the record's serialised form.
+HomeBatch measured_home(std::string name, std::string format, const std::optional<PowerTrace>& power,
+                        std::string_view key);
 
 // Stores `home` as one import (one transaction) and returns its id. Throws WorkspaceError: Constraint naming the
 // earlier import when the hash is stored already; nothing is stored on any error or cancellation.

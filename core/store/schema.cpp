@@ -154,14 +154,8 @@ void migrate_3_to_4(const sqlite::Db& db) {
 // Version 4 -> 5: a power trace names its total channel (the board's input rail, jtop's "Power TOT"), and keeps its
 // named phases (PTDaemon marks, detected level changes, a run's markers, selections the user saved).
 void migrate_4_to_5(const sqlite::Db& db) {
-  // Idempotent like the CREATE ... IF NOT EXISTS steps: a workspace whose user_version was set back (tests do) may
-  // have the column already.
-  bool has_total = false;
-  {
-    sqlite::Statement cols(db, "SELECT 1 FROM pragma_table_info('power_traces') WHERE name = 'total_channel'");
-    has_total = cols.step();
-  }
-  if (!has_total) db.exec("ALTER TABLE power_traces ADD COLUMN total_channel TEXT NOT NULL DEFAULT ''");
+  if (!has_column(db, "power_traces", "total_channel"))
+    db.exec("ALTER TABLE power_traces ADD COLUMN total_channel TEXT NOT NULL DEFAULT ''");
   db.exec(R"sql(
     CREATE TABLE IF NOT EXISTS power_phases(
       id INTEGER PRIMARY KEY,
@@ -171,12 +165,6 @@ void migrate_4_to_5(const sqlite::Db& db) {
       end_s REAL NOT NULL CHECK(end_s >= start_s));
     CREATE INDEX IF NOT EXISTS power_phases_by_trace ON power_phases(trace_id);
   )sql");
-}
-
-bool has_column(const sqlite::Db& db, const char* table, const char* column) {
-  sqlite::Statement cols(db, (std::string("SELECT 1 FROM pragma_table_info('") + table + "') WHERE name = ?").c_str());
-  cols.bind(1, std::string_view(column));
-  return cols.step();
 }
 
 // Version 5 -> 6: samples in chunks and a summary cached with each trace (store/power_samples.h), so a workspace
@@ -308,6 +296,12 @@ static_assert(std::size(kMigrations) == static_cast<std::size_t>(Workspace::kSch
               "one migration per schema version");
 
 }  // namespace
+
+bool has_column(const sqlite::Db& db, const char* table, const char* column) {
+  sqlite::Statement cols(db, (std::string("SELECT 1 FROM pragma_table_info('") + table + "') WHERE name = ?").c_str());
+  cols.bind(1, std::string_view(column));
+  return cols.step();
+}
 
 void migrate(const sqlite::Db& db, int from_version) {
   for (int v = from_version; v < Workspace::kSchemaVersion; ++v) {

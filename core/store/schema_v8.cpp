@@ -1,19 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "store/schema_v8.h"
 
+#include "store/schema.h"
+
 #include <nlohmann/json.hpp>
-#include <string>
 
 namespace bs::store {
-namespace {
-
-bool column_exists(const sqlite::Db& db, const char* table, const char* column) {
-  sqlite::Statement st(db, (std::string("SELECT 1 FROM pragma_table_info('") + table + "') WHERE name = ?").c_str());
-  st.bind(1, std::string_view(column));
-  return st.step();
-}
-
-}  // namespace
 
 void migrate_lenses_and_log_settings(const sqlite::Db& db) {
   // A lens belongs to one frame (frame_id, camera '') or to every frame of a camera (frame_id NULL, camera named);
@@ -31,12 +23,12 @@ void migrate_lenses_and_log_settings(const sqlite::Db& db) {
     CREATE UNIQUE INDEX IF NOT EXISTS lenses_by_frame ON lenses(frame_id) WHERE frame_id IS NOT NULL;
     CREATE UNIQUE INDEX IF NOT EXISTS lenses_by_camera ON lenses(camera) WHERE frame_id IS NULL;
   )sql");
-  if (!column_exists(db, "power_traces", "voltage_trace_id"))
+  if (!has_column(db, "power_traces", "voltage_trace_id"))
     // No REFERENCES: the reader joins on it, so a source log removed later simply stops lending its voltage.
     db.exec("ALTER TABLE power_traces ADD COLUMN voltage_trace_id INTEGER");
-  if (!column_exists(db, "power_traces", "voltage_channel"))
+  if (!has_column(db, "power_traces", "voltage_channel"))
     db.exec("ALTER TABLE power_traces ADD COLUMN voltage_channel TEXT NOT NULL DEFAULT ''");
-  if (!column_exists(db, "power_phases", "origin"))
+  if (!has_column(db, "power_phases", "origin"))
     db.exec("ALTER TABLE power_phases ADD COLUMN origin TEXT NOT NULL DEFAULT 'log' CHECK(origin IN ('log', 'user'))");
 }
 

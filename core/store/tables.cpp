@@ -212,6 +212,26 @@ void add_stage_columns(std::vector<Column<T>>& cols, Get stage, Bound mean_bound
   cols.push_back(optional_real<T>("p95_s", field(&StageStats::p95_s), Bound::NonNegative));
 }
 
+// The "data" column of a record kept whole as one JSON document beside a few columns (headroom measurements,
+// sustained runs). The document is read through the same checks as any untrusted file (`from` throws `Error` on
+// what it refuses); the columns read before it must agree with it (`disagreement` names what differs, else
+// nullptr), except the platform, which the column alone holds (rename_platform updates it, not the document).
+template <class T, class Error, class To, class From, class Disagreement>
+Column<T> record_document(To to, From from, Disagreement disagreement) {
+  return json<T>("data", BS_SELF, to,
+                 [from, disagreement](const nlohmann::json& j, T& r, const ImportLimits&) -> Check {
+                   try {
+                     T read = from(j);
+                     if (const char* differs = disagreement(read, r)) return flaw(C::InvalidValue, differs);
+                     read.platform = r.platform;
+                     r = std::move(read);
+                     return std::nullopt;
+                   } catch (const Error& e) {
+                     return flaw(C::InvalidValue, e.what());
+                   }
+                 });
+}
+
 const std::vector<std::pair<DeviceKind, const char*>> kDeviceKinds = {
     {DeviceKind::Cpu, "cpu"}, {DeviceKind::Gpu, "gpu"}, {DeviceKind::Other, "other"}};
 
@@ -510,19 +530,11 @@ const Table<headroom::HeadroomMeasurement>& headroom_table() {
                                                                        {LatencyKind::ApplicationLoop, "loop"},
                                                                        {LatencyKind::MessageLatency, "message"}}),
        text<T>("tool", BS_FIELD(tool)),
-       json<T>(
-           "data", BS_SELF, [](const T& m) { return headroom::to_json(m); },
-           [](const nlohmann::json& j, T& m, const ImportLimits&) -> Check {
-             try {
-               T read = headroom::measurement_from_json(j);
-               if (read.kind != m.kind || read.tool != m.tool)
-                 return flaw(C::InvalidValue, "kind/tool columns disagree with the document");
-               read.platform = m.platform;
-               m = std::move(read);
-               return std::nullopt;
-             } catch (const headroom::HeadroomJsonError& e) {
-               return flaw(C::InvalidValue, e.what());
-             }
+       record_document<T, headroom::HeadroomJsonError>(
+           [](const T& m) { return headroom::to_json(m); }, &headroom::measurement_from_json,
+           [](const T& read, const T& m) {
+             return read.kind != m.kind || read.tool != m.tool ? "kind/tool columns disagree with the document"
+                                                               : nullptr;
            })},
       {}};
   return t;
@@ -538,20 +550,12 @@ const Table<SustainRun>& sustain_table() {
       true,
       {"import_id"},
       {text<T>("platform", BS_FIELD(platform)), text<T>("label", BS_FIELD(label)), text<T>("load", BS_FIELD(load)),
-       json<T>(
-           "data", BS_SELF, [](const T& r) { return sustain::record_to_json(r); },
-           [](const nlohmann::json& j, T& r, const ImportLimits&) -> Check {
-             try {
-               T read = sustain::record_from_json(j);
-               if (read.label != r.label || read.load != r.load)
-                 return flaw(C::InvalidValue, "label/load columns disagree with the document");
-               read.platform = r.platform;
-               r = std::move(read);
-               return std::nullopt;
-             } catch (const sustain::SustainJsonError& e) {
-               return flaw(C::InvalidValue, e.what());
-             }
-           })},
+       record_document<T, sustain::SustainJsonError>(&sustain::record_to_json, &sustain::record_from_json,
+                                                     [](const T& read, const T& r) {
+                                                       return read.label != r.label || read.load != r.load
+                                                                  ? "label/load columns disagree with the document"
+                                                                  : nullptr;
+                                                     })},
       {}};
   return t;
 }

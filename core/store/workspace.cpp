@@ -222,28 +222,25 @@ void require_name(const std::string& what, const std::string& name) {
   if (name.find_first_not_of(" \t") == std::string::npos)
     throw WorkspaceError(WorkspaceError::Kind::Constraint, what + ": the new name is empty");
 }
+
+// Renames one row of a kind the workspace tree lets the user name (a power log, a frame) through `update_sql`, which
+// binds the label, then the id. Constraint for an empty name or an id no row has.
+void rename_row(const Workspace::Impl& w, const std::string& what, const char* update_sql, std::int64_t id,
+                const std::string& label) {
+  w.require_writable();
+  require_name(what, label);
+  Statement(w.conn(), update_sql).bind(1, std::string_view(label)).bind(2, id).run();
+  if (sqlite3_changes(w.conn().get()) == 0)
+    throw WorkspaceError(WorkspaceError::Kind::Constraint, w.path + ": no " + what + " #" + std::to_string(id));
+}
 }  // namespace
 
 void Workspace::rename_power_trace(std::int64_t trace_id, const std::string& label) {
-  impl_->require_writable();
-  require_name("power log", label);
-  Statement(impl_->conn(), "UPDATE power_traces SET label = ? WHERE id = ?")
-      .bind(1, std::string_view(label))
-      .bind(2, trace_id)
-      .run();
-  if (sqlite3_changes(impl_->conn().get()) == 0)
-    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no power log #" + std::to_string(trace_id));
+  rename_row(*impl_, "power log", "UPDATE power_traces SET label = ? WHERE id = ?", trace_id, label);
 }
 
 void Workspace::rename_frame(std::int64_t frame_id, const std::string& label) {
-  impl_->require_writable();
-  require_name("frame", label);
-  Statement(impl_->conn(), "UPDATE frames SET label = ? WHERE id = ?")
-      .bind(1, std::string_view(label))
-      .bind(2, frame_id)
-      .run();
-  if (sqlite3_changes(impl_->conn().get()) == 0)
-    throw WorkspaceError(WorkspaceError::Kind::Constraint, impl_->path + ": no frame #" + std::to_string(frame_id));
+  rename_row(*impl_, "frame", "UPDATE frames SET label = ? WHERE id = ?", frame_id, label);
 }
 
 void Workspace::rename_platform(const std::string& from, const std::string& to) {

@@ -49,25 +49,28 @@ struct DeviceRecord {
   int color_index = 0;
 };
 
-struct StoredRun {
+// What every stored record's row adds to the record: the row's id and the import that brought it (removing that
+// import removes the row). Each kind's Stored struct below is this plus its record, under the record's own name.
+struct StoredRow {
   std::int64_t id = 0;
   std::int64_t import_id = 0;
+};
+
+// A record measured on a device: the device's row and colour come with it.
+struct StoredDeviceRow : StoredRow {
   std::int64_t device_id = 0;
   int color_index = 0;
+};
+
+struct StoredRun : StoredDeviceRow {
   FlopsRun run;
 };
 
-struct StoredResultSet {
-  std::int64_t id = 0;
-  std::int64_t import_id = 0;
-  std::int64_t device_id = 0;
-  int color_index = 0;
+struct StoredResultSet : StoredDeviceRow {
   ResultSet set;
 };
 
-struct StoredPowerTrace {
-  std::int64_t id = 0;
-  std::int64_t import_id = 0;
+struct StoredPowerTrace : StoredRow {
   PowerTrace trace;            // from power_trace_summaries(): everything but time_s and the channels' values
   TraceSummary summary;        // cached at import: sample count, duration, whole-log statistics, overview per channel
   bool samples_loaded = true;  // false from power_trace_summaries() until load_power_samples()
@@ -75,35 +78,25 @@ struct StoredPowerTrace {
 
 // A frame's record; frame.pixels is filled only by frame_pixels() (copies) or by re-reading the file
 // (references, importers/frames/frame_store.h).
-struct StoredFrame {
-  std::int64_t id = 0;
-  std::int64_t import_id = 0;
+struct StoredFrame : StoredRow {
   std::string path;          // absolute path of the file at import time
   std::string content_hash;  // of that file; a referenced file must still hash the same
   Frame frame;
 };
 
-struct StoredPipelineRun {
-  std::int64_t id = 0;
-  std::int64_t import_id = 0;
+struct StoredPipelineRun : StoredRow {
   PipelineRun run;
 };
 
-struct StoredDnnRun {
-  std::int64_t id = 0;
-  std::int64_t import_id = 0;
+struct StoredDnnRun : StoredRow {
   DnnRun run;
 };
 
-struct StoredHeadroom {
-  std::int64_t id = 0;
-  std::int64_t import_id = 0;
+struct StoredHeadroom : StoredRow {
   headroom::HeadroomMeasurement measurement;
 };
 
-struct StoredSustainRun {
-  std::int64_t id = 0;
-  std::int64_t import_id = 0;
+struct StoredSustainRun : StoredRow {
   SustainRun run;
 };
 
@@ -213,11 +206,6 @@ class Workspace {
   std::vector<StoredDnnRun> dnn_runs() const;                 // ordered by platform, model, input, backend, id
   std::vector<StoredHeadroom> headroom_measurements() const;  // ordered by platform, then id
   std::vector<StoredSustainRun> sustain_runs() const;         // ordered by platform, then id
-
-  // Stores runs produced in-process (benchscope-cli pipeline) as one import named `label`, identified by
-  // `content_hash` (of their serialised form) like a file; returns the import id.
-  std::int64_t add_pipeline_runs(const std::vector<PipelineRun>& runs, const std::string& label,
-                                 const std::string& content_hash);
 
   // Small named settings kept in the workspace file itself (the meta table, under a "setting/" prefix that keeps
   // them apart from the schema's own keys), e.g. user-edited battery presets: they travel with the data.

@@ -25,6 +25,12 @@ std::string where(const Flaw& f) { return f.column.empty() ? f.reason : f.column
 
 std::string labelled(const std::string& s) { return s.empty() ? std::string() : " '" + s + "'"; }
 
+std::string import_item(std::int64_t id, const ImportRecord& i) {
+  return "import #" + std::to_string(id) + labelled(i.path);
+}
+std::string device_item(std::int64_t id, const DeviceRecord& d) {
+  return "device #" + std::to_string(id) + " (" + d.platform + " / " + d.device + ")";
+}
 std::string run_item(std::int64_t id, const FlopsRun& r) {
   return "run #" + std::to_string(id) + " (" + r.platform + " / " + r.device + ", " + r.backend + " " + r.kernel + ")";
 }
@@ -36,6 +42,45 @@ std::string trace_item(std::int64_t id, const PowerTrace& t) {
 }
 std::string pipeline_item(std::int64_t id, const PipelineRun& p) {
   return "pipeline run #" + std::to_string(id) + " (" + p.platform + ", " + p.backend + ")";
+}
+std::string dnn_item(std::int64_t id, const DnnRun& d) {
+  return "dnn run #" + std::to_string(id) + " (" + d.platform + ", " + d.model + ")";
+}
+std::string headroom_item(std::int64_t id, const headroom::HeadroomMeasurement& m) {
+  return "headroom measurement #" + std::to_string(id) + " (" + m.platform + ", " + m.tool + ")";
+}
+std::string sustain_item(std::int64_t id, const SustainRun& r) {
+  return "sustained run #" + std::to_string(id) + " (" + r.platform + ", " + r.label + ")";
+}
+
+// The rows of a table whose rows are records by themselves (imports, devices) in `order`, each with its id; a row
+// that breaks the import rules is recorded as damaged (named by `item`) and left out.
+template <class Record>
+std::vector<Record> read_records(const Workspace::Impl& w, const store::Table<Record>& table, const char* order,
+                                 std::string (*item)(std::int64_t, const Record&)) {
+  std::vector<Record> out;
+  store::read_rows(w.conn(), table, w.limits, order, [&](Row<Record>&& r) {
+    r.value.id = r.id;
+    if (r.flaw)
+      w.record({item(r.id, r.value), table.name, r.id, r.flaw->category, where(*r.flaw)});
+    else
+      out.push_back(std::move(r.value));
+  });
+  return out;
+}
+
+// The rows of a record kind an import brought (pipeline, inference and sustained runs, headroom measurements) in
+// `order`, each as its Stored row; a row that breaks the import rules is recorded as damaged (named by `item`) and
+// left out.
+template <class Stored, class Item>
+std::vector<Stored> read_import_rows(const Workspace::Impl& w, const store::Table<Item>& table, const char* order,
+                                     std::string (*item)(std::int64_t, const Item&)) {
+  std::vector<Stored> out;
+  store::read_rows(w.conn(), table, w.limits, order, [&](Row<Item>&& r) {
+    if (r.flaw) return w.record({item(r.id, r.value), table.name, r.id, r.flaw->category, where(*r.flaw)});
+    out.push_back({r.id, r.keys[0], std::move(r.value)});
+  });
+  return out;
 }
 
 }  // namespace
@@ -58,31 +103,11 @@ void Workspace::Impl::scan(const Workspace& ws) {
 }
 
 std::vector<ImportRecord> Workspace::imports() const {
-  const Impl& w = *impl_;
-  std::vector<ImportRecord> out;
-  store::read_rows(w.conn(), store::imports_table(), w.limits, "ORDER BY id", [&](Row<ImportRecord>&& r) {
-    r.value.id = r.id;
-    if (r.flaw)
-      w.record({"import #" + std::to_string(r.id) + labelled(r.value.path), "imports", r.id, r.flaw->category,
-                where(*r.flaw)});
-    else
-      out.push_back(std::move(r.value));
-  });
-  return out;
+  return read_records(*impl_, store::imports_table(), "ORDER BY id", import_item);
 }
 
 std::vector<DeviceRecord> Workspace::devices() const {
-  const Impl& w = *impl_;
-  std::vector<DeviceRecord> out;
-  store::read_rows(w.conn(), store::devices_table(), w.limits, "ORDER BY color_index, id", [&](Row<DeviceRecord>&& r) {
-    r.value.id = r.id;
-    if (r.flaw)
-      w.record({"device #" + std::to_string(r.id) + " (" + r.value.platform + " / " + r.value.device + ")", "devices",
-                r.id, r.flaw->category, where(*r.flaw)});
-    else
-      out.push_back(std::move(r.value));
-  });
-  return out;
+  return read_records(*impl_, store::devices_table(), "ORDER BY color_index, id", device_item);
 }
 
 namespace {
@@ -113,40 +138,59 @@ bool attach_device(const Workspace::Impl& w, const std::map<std::int64_t, Device
   return true;
 }
 
+// The rows of `table` that belong to the items read before it (a run's samples, a set's measurements, a trace's
+// channels and phases, a pipeline run's stages): `each(k, row)` for a row whose item is at place k of the result
+// (`index`: item id -> place). The rows of a damaged item, or of none (an orphan, which check names), are passed
+// over.
+template <class Child, class Each>
+void read_child_rows(const Workspace::Impl& w, const store::Table<Child>& table, const char* order,
+                     const std::map<std::int64_t, std::size_t>& index, Each each) {
+  store::read_rows(w.conn(), table, w.limits, order, [&](Row<Child>&& r) {
+    if (const auto it = index.find(r.keys[0]); it != index.end()) each(it->second, std::move(r));
+  });
+}
+
+// The rows of a kind measured on a device (runs, result sets) in id order, each with its device's fields and colour;
+// `index` gets each kept row's place, for the rows that belong to it (samples, measurements), read after. A row whose
+// device is missing or that breaks the import rules is recorded as damaged (named by `item`) and left out.
+template <class Stored, class Item>
+std::vector<Stored> read_device_rows(const Workspace::Impl& w, const std::map<std::int64_t, DeviceRecord>& devices,
+                                     const store::Table<Item>& table, std::string (*item)(std::int64_t, const Item&),
+                                     std::map<std::int64_t, std::size_t>& index) {
+  std::vector<Stored> out;
+  store::read_rows(w.conn(), table, w.limits, "ORDER BY id", [&](Row<Item>&& r) {
+    if (!attach_device(w, devices, r.keys[1], r.value, table.name, r.id, table.noun)) return;
+    if (r.flaw) return w.record({item(r.id, r.value), table.name, r.id, r.flaw->category, where(*r.flaw)});
+    if (w.is_damaged(table.name, r.id)) return;
+    index[r.id] = out.size();
+    out.push_back({r.id, r.keys[0], r.keys[1], devices.at(r.keys[1]).color_index, std::move(r.value)});
+  });
+  return out;
+}
+
 }  // namespace
 
 std::vector<StoredRun> Workspace::runs() const {
   const Impl& w = *impl_;
-  const auto devices = device_map(*this);
-  std::vector<StoredRun> out;
   std::map<std::int64_t, std::size_t> index;
-  store::read_rows(w.conn(), store::runs_table(), w.limits, "ORDER BY id", [&](Row<FlopsRun>&& r) {
-    if (!attach_device(w, devices, r.keys[1], r.value, "runs", r.id, "run")) return;
-    if (r.flaw) return w.record({run_item(r.id, r.value), "runs", r.id, r.flaw->category, where(*r.flaw)});
-    if (w.is_damaged("runs", r.id)) return;
-    index[r.id] = out.size();
-    const int color = devices.at(r.keys[1]).color_index;
-    out.push_back({r.id, r.keys[0], r.keys[1], color, std::move(r.value)});
-  });
+  std::vector<StoredRun> out = read_device_rows<StoredRun>(w, device_map(*this), store::runs_table(), run_item, index);
   const auto damaged = [&](std::size_t k, const Flaw& f) {
     w.record({run_item(out[k].id, out[k].run), "runs", out[k].id, f.category, where(f)});
   };
   // Timings kept per run so far: counted as they come (summing the run's lists for every row was quadratic in its
   // worker counts, and most of a CLI command's time under ASan).
   std::vector<std::size_t> timings(out.size(), 0);
-  store::read_rows(w.conn(), store::run_samples_table(), w.limits, "ORDER BY run_id, workers, repetition",
-                   [&](Row<store::RunSampleRow>&& r) {
-                     const auto it = index.find(r.keys[0]);
-                     if (it == index.end()) return;  // a damaged run's samples, or an orphan (check names it)
-                     if (r.flaw) return damaged(it->second, *r.flaw);
-                     auto& list = out[it->second].run.samples;
-                     if (timings[it->second]++ >= w.limits.max_samples)
-                       return damaged(it->second, store::flaw(ImportErrorCategory::TooLarge,
-                                                              "run_samples: more than " +
-                                                                  std::to_string(w.limits.max_samples) + " timings"));
-                     if (list.empty() || list.back().workers != r.value.workers) list.push_back({r.value.workers, {}});
-                     list.back().seconds.push_back(r.value.seconds);
-                   });
+  read_child_rows(
+      w, store::run_samples_table(), "ORDER BY run_id, workers, repetition", index,
+      [&](std::size_t k, Row<store::RunSampleRow>&& r) {
+        if (r.flaw) return damaged(k, *r.flaw);
+        auto& list = out[k].run.samples;
+        if (timings[k]++ >= w.limits.max_samples)
+          return damaged(k, store::flaw(ImportErrorCategory::TooLarge,
+                                        "run_samples: more than " + std::to_string(w.limits.max_samples) + " timings"));
+        if (list.empty() || list.back().workers != r.value.workers) list.push_back({r.value.workers, {}});
+        list.back().seconds.push_back(r.value.seconds);
+      });
   std::erase_if(out, [&](const StoredRun& s) { return w.is_damaged("runs", s.id); });
   // Ordered as the views list them: by device colour, backend, dims, then id (bytewise, like SQLite's BINARY).
   std::stable_sort(out.begin(), out.end(), [](const StoredRun& a, const StoredRun& b) {
@@ -158,22 +202,12 @@ std::vector<StoredRun> Workspace::runs() const {
 
 std::vector<StoredResultSet> Workspace::result_sets() const {
   const Impl& w = *impl_;
-  const auto devices = device_map(*this);
-  std::vector<StoredResultSet> out;
   std::map<std::int64_t, std::size_t> index;
-  store::read_rows(w.conn(), store::result_sets_table(), w.limits, "ORDER BY id", [&](Row<ResultSet>&& r) {
-    if (!attach_device(w, devices, r.keys[1], r.value, "result_sets", r.id, "result set")) return;
-    if (r.flaw) return w.record({set_item(r.id, r.value), "result_sets", r.id, r.flaw->category, where(*r.flaw)});
-    if (w.is_damaged("result_sets", r.id)) return;
-    index[r.id] = out.size();
-    const int color = devices.at(r.keys[1]).color_index;
-    out.push_back({r.id, r.keys[0], r.keys[1], color, std::move(r.value)});
-  });
-  store::read_rows(
-      w.conn(), store::measurements_table(), w.limits, "ORDER BY result_set_id, id", [&](Row<Measurement>&& r) {
-        const auto it = index.find(r.keys[0]);
-        if (it == index.end()) return;
-        StoredResultSet& s = out[it->second];
+  std::vector<StoredResultSet> out =
+      read_device_rows<StoredResultSet>(w, device_map(*this), store::result_sets_table(), set_item, index);
+  read_child_rows(
+      w, store::measurements_table(), "ORDER BY result_set_id, id", index, [&](std::size_t k, Row<Measurement>&& r) {
+        StoredResultSet& s = out[k];
         if (r.flaw)
           return w.record({set_item(s.id, s.set), "result_sets", s.id, r.flaw->category,
                            "measurement #" + std::to_string(r.id) + labelled(r.value.name) + ": " + where(*r.flaw)});
@@ -248,17 +282,14 @@ std::vector<StoredPowerTrace> Workspace::power_trace_summaries() const {
     index[r.id] = out.size();
     out.push_back(std::move(r.value));
   });
-  store::read_rows(
-      w.conn(), store::power_channels_table(), w.limits, "ORDER BY trace_id, id", [&](Row<ChannelSummary>&& r) {
-        const auto it = index.find(r.keys[0]);
-        if (it == index.end()) return;
-        StoredPowerTrace& s = out[it->second];
+  read_child_rows(
+      w, store::power_channels_table(), "ORDER BY trace_id, id", index, [&](std::size_t k, Row<ChannelSummary>&& r) {
+        StoredPowerTrace& s = out[k];
         if (r.flaw)
-          return damaged(it->second,
-                         "channel #" + std::to_string(r.id) + labelled(r.value.name) + ": " + where(*r.flaw),
+          return damaged(k, "channel #" + std::to_string(r.id) + labelled(r.value.name) + ": " + where(*r.flaw),
                          r.flaw->category);
         if (r.value.stats.summary.n > s.summary.samples)
-          return damaged(it->second,
+          return damaged(k,
                          "channel" + labelled(r.value.name) + ": its summary counts " +
                              std::to_string(r.value.stats.summary.n) + " samples of " +
                              std::to_string(s.summary.samples),
@@ -267,14 +298,12 @@ std::vector<StoredPowerTrace> Workspace::power_trace_summaries() const {
         s.trace.channels.push_back({r.value.name, r.value.quantity, {}});
         s.summary.channels.push_back(std::move(r.value));
       });
-  store::read_rows(
-      w.conn(), store::power_phases_table(), w.limits, "ORDER BY trace_id, start_s, id", [&](Row<TracePhase>&& r) {
-        const auto it = index.find(r.keys[0]);
-        if (it == index.end()) return;
-        if (r.flaw)
-          return damaged(it->second, "phase #" + std::to_string(r.id) + ": " + where(*r.flaw), r.flaw->category);
-        out[it->second].trace.phases.push_back(std::move(r.value));
-      });
+  read_child_rows(w, store::power_phases_table(), "ORDER BY trace_id, start_s, id", index,
+                  [&](std::size_t k, Row<TracePhase>&& r) {
+                    if (r.flaw)
+                      return damaged(k, "phase #" + std::to_string(r.id) + ": " + where(*r.flaw), r.flaw->category);
+                    out[k].trace.phases.push_back(std::move(r.value));
+                  });
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (w.is_damaged("power_traces", out[k].id)) continue;
     if (const auto f = chunk_flaw(w.conn(), out[k].id, out[k].summary.samples, channel_ids[out[k].id]))
@@ -388,71 +417,38 @@ std::vector<std::uint8_t> Workspace::frame_pixels(std::int64_t frame_id) const {
 
 std::vector<StoredPipelineRun> Workspace::pipeline_runs() const {
   const Impl& w = *impl_;
-  std::vector<StoredPipelineRun> out;
+  std::vector<StoredPipelineRun> out =
+      read_import_rows<StoredPipelineRun>(w, store::pipeline_runs_table(), "ORDER BY platform, id", pipeline_item);
   std::map<std::int64_t, std::size_t> index;
-  store::read_rows(
-      w.conn(), store::pipeline_runs_table(), w.limits, "ORDER BY platform, id", [&](Row<PipelineRun>&& r) {
-        if (r.flaw)
-          return w.record({pipeline_item(r.id, r.value), "pipeline_runs", r.id, r.flaw->category, where(*r.flaw)});
-        index[r.id] = out.size();
-        out.push_back({r.id, r.keys[0], std::move(r.value)});
-      });
+  for (std::size_t k = 0; k < out.size(); ++k) index[out[k].id] = k;
   // Stages in pipeline order (preprocess, detect, end-to-end, then any other), not alphabetically.
-  store::read_rows(w.conn(), store::pipeline_stages_table(), w.limits,
-                   "ORDER BY run_id, CASE stage WHEN 'preprocess' THEN 0 WHEN 'detect' THEN 1 "
-                   "WHEN 'end-to-end' THEN 2 ELSE 3 END, stage",
-                   [&](Row<StageStats>&& r) {
-                     const auto it = index.find(r.keys[0]);
-                     if (it == index.end()) return;
-                     StoredPipelineRun& p = out[it->second];
-                     if (r.flaw)
-                       return w.record({pipeline_item(p.id, p.run), "pipeline_runs", p.id, r.flaw->category,
-                                        "stage" + labelled(r.value.stage) + ": " + where(*r.flaw)});
-                     p.run.stages.push_back(std::move(r.value));
-                   });
+  read_child_rows(w, store::pipeline_stages_table(),
+                  "ORDER BY run_id, CASE stage WHEN 'preprocess' THEN 0 WHEN 'detect' THEN 1 "
+                  "WHEN 'end-to-end' THEN 2 ELSE 3 END, stage",
+                  index, [&](std::size_t k, Row<StageStats>&& r) {
+                    StoredPipelineRun& p = out[k];
+                    if (r.flaw)
+                      return w.record({pipeline_item(p.id, p.run), "pipeline_runs", p.id, r.flaw->category,
+                                       "stage" + labelled(r.value.stage) + ": " + where(*r.flaw)});
+                    p.run.stages.push_back(std::move(r.value));
+                  });
   std::erase_if(out, [&](const StoredPipelineRun& s) { return w.is_damaged("pipeline_runs", s.id); });
   return out;
 }
 
 std::vector<StoredDnnRun> Workspace::dnn_runs() const {
-  const Impl& w = *impl_;
-  std::vector<StoredDnnRun> out;
-  store::read_rows(
-      w.conn(), store::dnn_runs_table(), w.limits, "ORDER BY platform, model, input_width, input_height, backend, id",
-      [&](Row<DnnRun>&& r) {
-        if (r.flaw)
-          return w.record({"dnn run #" + std::to_string(r.id) + " (" + r.value.platform + ", " + r.value.model + ")",
-                           "dnn_runs", r.id, r.flaw->category, where(*r.flaw)});
-        r.value.forward.stage = "inference";
-        out.push_back({r.id, r.keys[0], std::move(r.value)});
-      });
+  std::vector<StoredDnnRun> out = read_import_rows<StoredDnnRun>(
+      *impl_, store::dnn_runs_table(), "ORDER BY platform, model, input_width, input_height, backend, id", dnn_item);
+  for (StoredDnnRun& d : out) d.run.forward.stage = "inference";
   return out;
 }
 
 std::vector<StoredHeadroom> Workspace::headroom_measurements() const {
-  const Impl& w = *impl_;
-  std::vector<StoredHeadroom> out;
-  store::read_rows(w.conn(), store::headroom_table(), w.limits, "ORDER BY platform, id",
-                   [&](Row<headroom::HeadroomMeasurement>&& r) {
-                     if (r.flaw)
-                       return w.record({"headroom measurement #" + std::to_string(r.id) + " (" + r.value.platform +
-                                            ", " + r.value.tool + ")",
-                                        "headroom_measurements", r.id, r.flaw->category, where(*r.flaw)});
-                     out.push_back({r.id, r.keys[0], std::move(r.value)});
-                   });
-  return out;
+  return read_import_rows<StoredHeadroom>(*impl_, store::headroom_table(), "ORDER BY platform, id", headroom_item);
 }
 
 std::vector<StoredSustainRun> Workspace::sustain_runs() const {
-  const Impl& w = *impl_;
-  std::vector<StoredSustainRun> out;
-  store::read_rows(w.conn(), store::sustain_table(), w.limits, "ORDER BY platform, id", [&](Row<SustainRun>&& r) {
-    if (r.flaw)
-      return w.record({"sustained run #" + std::to_string(r.id) + " (" + r.value.platform + ", " + r.value.label + ")",
-                       "sustain_runs", r.id, r.flaw->category, where(*r.flaw)});
-    out.push_back({r.id, r.keys[0], std::move(r.value)});
-  });
-  return out;
+  return read_import_rows<StoredSustainRun>(*impl_, store::sustain_table(), "ORDER BY platform, id", sustain_item);
 }
 
 }  // namespace bs

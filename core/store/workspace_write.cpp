@@ -64,13 +64,4 @@ std::vector<std::int64_t> Workspace::add_imports(const std::vector<HashedBatch>&
   return ids;
 }
 
-std::int64_t Workspace::add_pipeline_runs(const std::vector<PipelineRun>& runs, const std::string& label,
-                                          const std::string& hash) {
-  ImportBatch batch;
-  batch.source_path = label;
-  batch.format = "benchscope-pipeline-v1";
-  batch.pipeline_runs = runs;
-  return add_import(batch, hash);
-}
-
 }  // namespace bs

@@ -72,6 +72,18 @@ std::vector<std::string> texts(const json& obj, const char* key, const std::stri
 
 constexpr double kMaxSeconds = 1e9, kMaxRate = 1e18, kMaxHz = 1e12, kMaxWatts = 1e6;
 
+// Calls each(series, at) for every object of the array obj[key] (the clocks, the temperatures: at most kMaxSeries),
+// `at` naming it in messages ("sustain.clocks[2]").
+template <class Each>
+void each_series(const json& obj, const char* key, const std::string& where, Each each) {
+  const json& a = array(obj, key, where, kMaxSeries);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const std::string at = where + "." + key + "[" + std::to_string(k) + "]";
+    if (!a[k].is_object()) Fields::fail(at, "is not an object");
+    each(a[k], at);
+  }
+}
+
 }  // namespace
 
 json record_to_json(const SustainRun& r) {
@@ -115,26 +127,20 @@ SustainRun record_from_json(const json& j) {
   }
   r.rate = values(j, "rate", w, n, 0, kMaxRate, true);
   if (!r.rate.empty() && r.rate_unit.empty()) Fields::fail(w + ".rate_unit", "is empty for a record with a rate");
-  const json& clocks = array(j, "clocks", w, kMaxSeries);
-  for (std::size_t k = 0; k < clocks.size(); ++k) {
-    const std::string at = w + ".clocks[" + std::to_string(k) + "]";
-    if (!clocks[k].is_object()) Fields::fail(at, "is not an object");
+  each_series(j, "clocks", w, [&](const json& s, const std::string& at) {
     ClockSeries c;
-    c.name = Fields::text(clocks[k], "name", at);
-    c.max_hz = optional_number(clocks[k], "max_hz", at, 0, kMaxHz);
-    c.hz = values(clocks[k], "hz", at, n, 0, kMaxHz, false);
+    c.name = Fields::text(s, "name", at);
+    c.max_hz = optional_number(s, "max_hz", at, 0, kMaxHz);
+    c.hz = values(s, "hz", at, n, 0, kMaxHz, false);
     r.clocks.push_back(std::move(c));
-  }
-  const json& temps = array(j, "temperatures", w, kMaxSeries);
-  for (std::size_t k = 0; k < temps.size(); ++k) {
-    const std::string at = w + ".temperatures[" + std::to_string(k) + "]";
-    if (!temps[k].is_object()) Fields::fail(at, "is not an object");
+  });
+  each_series(j, "temperatures", w, [&](const json& s, const std::string& at) {
     TemperatureSeries t;
-    t.name = Fields::text(temps[k], "name", at);
-    t.trip_c = optional_number(temps[k], "trip_c", at, -273.15, 1000);
-    t.celsius = values(temps[k], "celsius", at, n, -273.15, 1000, false);
+    t.name = Fields::text(s, "name", at);
+    t.trip_c = optional_number(s, "trip_c", at, -273.15, 1000);
+    t.celsius = values(s, "celsius", at, n, -273.15, 1000, false);
     r.temperatures.push_back(std::move(t));
-  }
+  });
   r.power_w = values(j, "power_w", w, n, 0, kMaxWatts, true);
   r.power_sensor = Fields::text(j, "power_sensor", w);
   r.not_exposed = texts(j, "not_exposed", w);

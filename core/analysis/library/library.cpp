@@ -263,15 +263,8 @@ Library load_library(const std::filesystem::path& path) {
 }
 
 const BundledLibrary& bundled_library() {
-  static const BundledLibrary lib = [] {
-    BundledLibrary b;
-    try {
-      b.library = load_library(find_resource("library/library.json"));
-    } catch (const std::exception& e) {
-      b.error = e.what();
-    }
-    return b;
-  }();
+  static const BundledLibrary lib =
+      load_bundled(&BundledLibrary::library, [] { return load_library(find_resource("library/library.json")); });
   return lib;
 }
 

@@ -97,50 +97,48 @@ std::vector<const DeviceSpec*> best_matches(const DeviceTable& table, std::strin
 }  // namespace
 
 DeviceTable parse_device_table(std::string_view json_text, const std::string& origin) {
-  const json devices = resource_table_entries(json_text, origin, "benchscope-device-specs", "devices");
   DeviceTable table;
   table.path = origin;
-  for (std::size_t i = 0; i < devices.size(); ++i) {
-    const json& e = devices[i];
-    const std::string where = "devices[" + std::to_string(i) + "]";
-    if (!e.is_object()) fail(origin, where, "not an object");
-    DeviceSpec s;
-    s.id = resource_table_string(e, "id", origin, where);
-    s.name = resource_table_string(e, "name", origin, where);
-    const std::string kind = resource_table_string(e, "kind", origin, where);
-    if (kind != "cpu" && kind != "gpu") fail(origin, where + ".kind", "must be \"cpu\" or \"gpu\"");
-    s.kind = device_kind_from_string(kind);
-    if (const auto a = e.find("aliases"); a != e.end()) {
-      if (!a->is_array()) fail(origin, where + ".aliases", "not an array");
-      for (const json& alias : *a) {
-        if (!alias.is_string() || alias.get<std::string>().empty())
-          fail(origin, where + ".aliases", "an alias is not a non-empty string");
-        s.aliases.push_back(alias.get<std::string>());
-      }
-    }
-    const auto peak = optional_positive(e, "fp32_peak_flops", origin, where);
-    if (!peak) fail(origin, where + ".fp32_peak_flops", "missing");
-    s.fp32_peak_flops = *peak;
-    s.derivation = resource_table_string(e, "derivation", origin, where);
-    s.memory_bandwidth_bytes_per_s = optional_positive(e, "memory_bandwidth_bytes_per_s", origin, where);
-    s.tdp_w = optional_positive(e, "tdp_w", origin, where);
-    const auto src = e.find("source");
-    if (src == e.end() || !src->is_object()) fail(origin, where + ".source", "missing: every entry names its source");
-    s.source_title = resource_table_string(*src, "title", origin, where + ".source");
-    s.source_url = src->value("url", "");
-    s.source_more_urls = resource_table_strings(*src, "more", origin, where + ".source");
-    s.note = e.value("note", "");
-    s.peak_terms = peak_terms(e, origin, where);
-    s.peak_exempt = e.value("peak_exempt", "");
-    s.unverified = resource_table_strings(e, "unverified", origin, where);
-    for (const std::string& field : s.unverified)
-      if (std::none_of(std::begin(kVerifiableFields), std::end(kVerifiableFields),
-                       [&](const char* f) { return field == f; }))
-        fail(origin, where + ".unverified", "unknown field " + field);
-    for (const DeviceSpec& other : table.devices)
-      if (other.id == s.id) fail(origin, where + ".id", "duplicate id " + s.id);
-    table.devices.push_back(std::move(s));
-  }
+  for_each_resource_entry(
+      json_text, origin, "benchscope-device-specs", "devices", [&](const json& e, const std::string& where) {
+        DeviceSpec s;
+        s.id = resource_table_string(e, "id", origin, where);
+        s.name = resource_table_string(e, "name", origin, where);
+        const std::string kind = resource_table_string(e, "kind", origin, where);
+        if (kind != "cpu" && kind != "gpu") fail(origin, where + ".kind", "must be \"cpu\" or \"gpu\"");
+        s.kind = device_kind_from_string(kind);
+        if (const auto a = e.find("aliases"); a != e.end()) {
+          if (!a->is_array()) fail(origin, where + ".aliases", "not an array");
+          for (const json& alias : *a) {
+            if (!alias.is_string() || alias.get<std::string>().empty())
+              fail(origin, where + ".aliases", "an alias is not a non-empty string");
+            s.aliases.push_back(alias.get<std::string>());
+          }
+        }
+        const auto peak = optional_positive(e, "fp32_peak_flops", origin, where);
+        if (!peak) fail(origin, where + ".fp32_peak_flops", "missing");
+        s.fp32_peak_flops = *peak;
+        s.derivation = resource_table_string(e, "derivation", origin, where);
+        s.memory_bandwidth_bytes_per_s = optional_positive(e, "memory_bandwidth_bytes_per_s", origin, where);
+        s.tdp_w = optional_positive(e, "tdp_w", origin, where);
+        const auto src = e.find("source");
+        if (src == e.end() || !src->is_object())
+          fail(origin, where + ".source", "missing: every entry names its source");
+        s.source_title = resource_table_string(*src, "title", origin, where + ".source");
+        s.source_url = src->value("url", "");
+        s.source_more_urls = resource_table_strings(*src, "more", origin, where + ".source");
+        s.note = e.value("note", "");
+        s.peak_terms = peak_terms(e, origin, where);
+        s.peak_exempt = e.value("peak_exempt", "");
+        s.unverified = resource_table_strings(e, "unverified", origin, where);
+        for (const std::string& field : s.unverified)
+          if (std::none_of(std::begin(kVerifiableFields), std::end(kVerifiableFields),
+                           [&](const char* f) { return field == f; }))
+            fail(origin, where + ".unverified", "unknown field " + field);
+        for (const DeviceSpec& other : table.devices)
+          if (other.id == s.id) fail(origin, where + ".id", "duplicate id " + s.id);
+        table.devices.push_back(std::move(s));
+      });
   return table;
 }
 
@@ -164,15 +162,8 @@ DeviceTable load_device_table(const std::filesystem::path& path) {
 }
 
 const BundledDeviceTable& bundled_device_table() {
-  static const BundledDeviceTable bundled = [] {
-    BundledDeviceTable b;
-    try {
-      b.table = load_device_table(find_resource("devices/devices.json"));
-    } catch (const std::exception& e) {
-      b.error = e.what();
-    }
-    return b;
-  }();
+  static const BundledDeviceTable bundled =
+      load_bundled(&BundledDeviceTable::table, [] { return load_device_table(find_resource("devices/devices.json")); });
   return bundled;
 }
 

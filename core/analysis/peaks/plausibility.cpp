@@ -9,6 +9,7 @@
 #include "analysis/power/power.h"
 #include "analysis/power/power_stats.h"
 #include "analysis/stats/units.h"
+#include "util/enum_words.h"
 
 namespace bs {
 namespace {
@@ -38,15 +39,9 @@ std::string spec_text(const DeviceSpec& spec) {
 }
 
 std::string_view quantity_noun(PowerQuantity q) {
-  switch (q) {
-    case PowerQuantity::Current:
-      return "current";
-    case PowerQuantity::Voltage:
-      return "voltage";
-    case PowerQuantity::Power:
-      return "power";
-  }
-  return "value";
+  constexpr EnumWord<PowerQuantity> kNouns[] = {
+      {PowerQuantity::Current, "current"}, {PowerQuantity::Voltage, "voltage"}, {PowerQuantity::Power, "power"}};
+  return word_of(kNouns, q, "value");
 }
 
 double magnitude_limit(PowerQuantity q) {

@@ -8,6 +8,7 @@
 
 #include "analysis/peaks/flops.h"
 #include "analysis/peaks/foreign_sweeps.h"
+#include "util/enum_words.h"
 
 namespace bs {
 namespace {
@@ -138,23 +139,12 @@ void compare_sets(std::span<const ResultSet> sa, std::span<const ResultSet> sb, 
 }  // namespace
 
 std::string_view to_string(CompareVerdict v) {
-  switch (v) {
-    case CompareVerdict::Unchanged:
-      return "unchanged";
-    case CompareVerdict::Regression:
-      return "regression";
-    case CompareVerdict::Improvement:
-      return "improvement";
-    case CompareVerdict::NotSignificant:
-      return "not significant";
-    case CompareVerdict::Changed:
-      return "changed";
-    case CompareVerdict::OnlyInA:
-      return "only in A";
-    case CompareVerdict::OnlyInB:
-      return "only in B";
-  }
-  return "?";
+  constexpr EnumWord<CompareVerdict> kWords[] = {
+      {CompareVerdict::Unchanged, "unchanged"},     {CompareVerdict::Regression, "regression"},
+      {CompareVerdict::Improvement, "improvement"}, {CompareVerdict::NotSignificant, "not significant"},
+      {CompareVerdict::Changed, "changed"},         {CompareVerdict::OnlyInA, "only in A"},
+      {CompareVerdict::OnlyInB, "only in B"}};
+  return word_of(kWords, v, "?");
 }
 
 std::optional<bool> higher_is_better_for_unit(std::string_view unit) {

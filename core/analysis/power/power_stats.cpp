@@ -3,6 +3,7 @@
 
 #include "analysis/power/power.h"
 #include "analysis/stats/order_stats.h"
+#include "util/enum_words.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,29 +31,16 @@ SignalStats signal_stats(std::span<const double> values) {
 }
 
 std::string_view to_string(PowerSource source) {
-  switch (source) {
-    case PowerSource::Channel:
-      return "power channel";
-    case PowerSource::CurrentTimesVoltage:
-      return "current x voltage channel";
-    case PowerSource::CurrentTimesSupply:
-      return "current x supply voltage";
-    case PowerSource::Unknown:
-      break;
-  }
-  return "unknown (current only, no supply voltage)";
+  constexpr EnumWord<PowerSource> kWords[] = {{PowerSource::Channel, "power channel"},
+                                              {PowerSource::CurrentTimesVoltage, "current x voltage channel"},
+                                              {PowerSource::CurrentTimesSupply, "current x supply voltage"}};
+  return word_of(kWords, source, "unknown (current only, no supply voltage)");
 }
 
 std::string_view unit_of(PowerQuantity quantity) {
-  switch (quantity) {
-    case PowerQuantity::Current:
-      return "A";
-    case PowerQuantity::Voltage:
-      return "V";
-    case PowerQuantity::Power:
-      return "W";
-  }
-  return "";
+  constexpr EnumWord<PowerQuantity> kUnits[] = {
+      {PowerQuantity::Current, "A"}, {PowerQuantity::Voltage, "V"}, {PowerQuantity::Power, "W"}};
+  return word_of(kUnits, quantity, "");
 }
 
 PowerSeries derive_power(const PowerTrace& trace, std::optional<double> supply_v) {

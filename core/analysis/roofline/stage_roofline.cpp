@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "util/enum_words.h"
+
 namespace bs {
 namespace {
 
@@ -29,17 +31,11 @@ constexpr double kFusedLutBytes = 8;
 }  // namespace
 
 std::string stage_kernel_name(StageKernel k) {
-  switch (k) {
-    case StageKernel::DemosaicBilinear:
-      return "demosaic (bilinear)";
-    case StageKernel::DemosaicMhc:
-      return "demosaic (Malvar-He-Cutler)";
-    case StageKernel::Reprojection:
-      return "reprojection (bilinear, fixed-point LUT)";
-    case StageKernel::Fused:
-      return "fused demosaic + reprojection";
-  }
-  return "?";
+  constexpr EnumWord<StageKernel> kNames[] = {{StageKernel::DemosaicBilinear, "demosaic (bilinear)"},
+                                              {StageKernel::DemosaicMhc, "demosaic (Malvar-He-Cutler)"},
+                                              {StageKernel::Reprojection, "reprojection (bilinear, fixed-point LUT)"},
+                                              {StageKernel::Fused, "fused demosaic + reprojection"}};
+  return std::string(word_of(kNames, k, "?"));
 }
 
 KernelCost kernel_cost(StageKernel k) {

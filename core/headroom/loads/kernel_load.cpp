@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/peaks/flops.h"
+#include "headroom/loads/worker_thread.h"
 #include "kernels/backends/backend.h"
 #include "kernels/cpu/cpu_info.h"
 #include "kernels/rotation/rotation.h"
@@ -64,12 +65,8 @@ void KernelLoad::start() {
 
 LoadReport KernelLoad::stop() {
   stop_ = true;
-  if (thread_.joinable()) thread_.join();
+  if (auto failed = join_worker(thread_, error_, "kernel")) return *failed;
   LoadReport r;
-  if (!error_.empty()) {
-    r.notes.push_back("kernel failed: " + error_);
-    return r;
-  }
   if (seconds_ > 0) r.achieved_rate = flops_ / seconds_ / 1e9;
   r.notes.push_back(std::to_string(points_) + " kernel points");
   return r;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "headroom/loads/worker_thread.h"
 #include "vision/lens/lens.h"
 #include "vision/pipeline/dnn_architectures.h"
 #include "vision/pipeline/pipeline_measure.h"
@@ -91,12 +92,8 @@ void PipelineLoad::start() {
 
 LoadReport PipelineLoad::stop() {
   cancel_.cancel();
-  if (thread_.joinable()) thread_.join();
+  if (auto failed = join_worker(thread_, error_, "pipeline")) return *failed;
   LoadReport r;
-  if (!error_.empty()) {
-    r.notes.push_back("pipeline failed: " + error_);
-    return r;
-  }
   // Frames through the whole pipeline per second over the run (settling included: the queues are full by then).
   r.achieved_rate = result_.throughput_fps;
   char text[200];
@@ -165,12 +162,8 @@ void DetectorLoad::start() {
 
 LoadReport DetectorLoad::stop() {
   stop_ = true;
-  if (thread_.joinable()) thread_.join();
+  if (auto failed = join_worker(thread_, error_, "detector")) return *failed;
   LoadReport r;
-  if (!error_.empty()) {
-    r.notes.push_back("detector failed: " + error_);
-    return r;
-  }
   if (seconds_ > 0) r.achieved_rate = static_cast<double>(inferences_.load()) / seconds_;
   r.notes.push_back(std::to_string(inferences_.load()) + " inferences");
   return r;

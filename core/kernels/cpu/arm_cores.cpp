@@ -91,34 +91,31 @@ bool unit_names_core(const std::string& unit, const std::string& core) {
 }  // namespace
 
 ArmCoreTable parse_arm_core_table(std::string_view json_text, const std::string& origin) {
-  const json cores = resource_table_entries(json_text, origin, "benchscope-cpu-cores", "cores");
   ArmCoreTable table;
   table.path = origin;
-  for (std::size_t i = 0; i < cores.size(); ++i) {
-    const json& e = cores[i];
-    const std::string where = "cores[" + std::to_string(i) + "]";
-    if (!e.is_object()) fail(origin, where, "not an object");
-    ArmCoreType c;
-    c.implementer = table_hex(e, "implementer", 0xff, origin, where);
-    c.part = table_hex(e, "part", 0xfff, origin, where);
-    c.name = resource_table_string(e, "name", origin, where);
-    c.vendor = e.value("vendor", "");
-    c.fp32_lanes = table_count(e, "fp32_lanes", origin, where);
-    c.fma_units = table_count(e, "fma_units", origin, where);
-    const auto src = e.find("source");
-    if (src == e.end() || !src->is_object() || !src->contains("title") || !(*src)["title"].is_string())
-      fail(origin, where + ".source", "missing: every core names its source (title, url)");
-    c.source_title = (*src)["title"].get<std::string>();
-    c.source_url = src->value("url", "");
-    c.source_more_urls = resource_table_strings(*src, "more", origin, where + ".source");
-    c.unverified = resource_table_strings(e, "unverified", origin, where);
-    for (const std::string& f : c.unverified)
-      if (f != "fp32_lanes" && f != "fma_units") fail(origin, where + ".unverified", "unknown field " + f);
-    c.note = e.value("note", "");
-    if (find_arm_core(table, c.implementer, c.part))
-      fail(origin, where, "duplicate core " + hex(c.implementer, 2) + "/" + hex(c.part, 3));
-    table.cores.push_back(std::move(c));
-  }
+  for_each_resource_entry(
+      json_text, origin, "benchscope-cpu-cores", "cores", [&](const json& e, const std::string& where) {
+        ArmCoreType c;
+        c.implementer = table_hex(e, "implementer", 0xff, origin, where);
+        c.part = table_hex(e, "part", 0xfff, origin, where);
+        c.name = resource_table_string(e, "name", origin, where);
+        c.vendor = e.value("vendor", "");
+        c.fp32_lanes = table_count(e, "fp32_lanes", origin, where);
+        c.fma_units = table_count(e, "fma_units", origin, where);
+        const auto src = e.find("source");
+        if (src == e.end() || !src->is_object() || !src->contains("title") || !(*src)["title"].is_string())
+          fail(origin, where + ".source", "missing: every core names its source (title, url)");
+        c.source_title = (*src)["title"].get<std::string>();
+        c.source_url = src->value("url", "");
+        c.source_more_urls = resource_table_strings(*src, "more", origin, where + ".source");
+        c.unverified = resource_table_strings(e, "unverified", origin, where);
+        for (const std::string& f : c.unverified)
+          if (f != "fp32_lanes" && f != "fma_units") fail(origin, where + ".unverified", "unknown field " + f);
+        c.note = e.value("note", "");
+        if (find_arm_core(table, c.implementer, c.part))
+          fail(origin, where, "duplicate core " + hex(c.implementer, 2) + "/" + hex(c.part, 3));
+        table.cores.push_back(std::move(c));
+      });
   return table;
 }
 

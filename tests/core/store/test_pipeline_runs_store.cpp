@@ -5,6 +5,7 @@
 #include <QTest>
 
 #include "../../support/run_on.h"
+#include "store/home_batch.h"
 #include "store/workspace.h"
 #include "workspace_test_support.h"
 
@@ -37,6 +38,18 @@ bs::PipelineRun reconstructed_run() {
   return r;
 }
 
+// Runs measured in-process on their way home as one import named `label`, the way benchscope-cli pipeline stores
+// them (bring_home), under `hash`.
+std::int64_t store_measured(bs::Workspace& ws, const std::vector<bs::PipelineRun>& runs, const std::string& label,
+                            const std::string& hash) {
+  bs::HomeBatch home;
+  home.batch.source_path = label;
+  home.batch.format = "benchscope-pipeline-v1";
+  home.batch.pipeline_runs = runs;
+  home.content_hash = hash;
+  return bs::bring_home(ws, home);
+}
+
 bool same_stage(const bs::StageStats& a, const bs::StageStats& b) {
   return a.stage == b.stage && a.n == b.n && same_bits(a.mean_s, b.mean_s) && same_bits(a.sd_s, b.sd_s) &&
          same_bits(a.min_s, b.min_s) && same_bits(a.max_s, b.max_s) && same_bits(a.p50_s, b.p50_s) &&
@@ -59,7 +72,7 @@ class TestPipelineRunsStore : public QObject {
       batch.source_path = "pipeline-jetson.json";
       batch.pipeline_runs = {b};
       ws.add_import(batch, "h-b");
-      ws.add_pipeline_runs({a}, "benchscope-cli pipeline", "h-a");
+      store_measured(ws, {a}, "benchscope-cli pipeline", "h-a");
     }
     const bs::Workspace ws(path);
     const auto runs = ws.pipeline_runs();
@@ -97,8 +110,8 @@ class TestPipelineRunsStore : public QObject {
   void same_content_twice_is_refused_and_removal_cascades() {
     QTemporaryDir dir;
     bs::Workspace ws(dir.filePath("w.bsw").toStdString());
-    const auto id = ws.add_pipeline_runs({measured_run()}, "first", "same-hash");
-    QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, ws.add_pipeline_runs({measured_run()}, "again", "same-hash"));
+    const auto id = store_measured(ws, {measured_run()}, "first", "same-hash");
+    QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, store_measured(ws, {measured_run()}, "again", "same-hash"));
     QCOMPARE(ws.pipeline_runs().size(), std::size_t{1});
     ws.remove_import(id);
     QVERIFY(ws.pipeline_runs().empty());
@@ -111,7 +124,7 @@ class TestPipelineRunsStore : public QObject {
     bs::Workspace ws(dir.filePath("w.bsw").toStdString());
     bs::PipelineRun bad = measured_run();
     bad.stages[1].n = 0;  // the schema's CHECK(n > 0)
-    QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, ws.add_pipeline_runs({measured_run(), bad}, "bad", "h"));
+    QVERIFY_THROWS_EXCEPTION(bs::WorkspaceError, store_measured(ws, {measured_run(), bad}, "bad", "h"));
     QVERIFY(ws.pipeline_runs().empty());  // the good run of the same import is not kept either
     QVERIFY(ws.imports().empty());
   }
@@ -124,7 +137,7 @@ class TestPipelineRunsStore : public QObject {
     bs::Workspace ws(path);
     QCOMPARE(ws.schema_version(), bs::Workspace::kSchemaVersion);
     QCOMPARE(RawDb(path).scalar("PRAGMA user_version"), std::to_string(bs::Workspace::kSchemaVersion));
-    ws.add_pipeline_runs({reconstructed_run()}, "paper", "h");
+    store_measured(ws, {reconstructed_run()}, "paper", "h");
     QCOMPARE(ws.pipeline_runs().size(), std::size_t{1});
     QCOMPARE(ws.integrity_check(), std::string("ok"));
   }
