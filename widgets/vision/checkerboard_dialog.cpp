@@ -9,13 +9,14 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent>
+
+#include "common/file_command.h"
 
 namespace bs::ui {
 namespace {
@@ -138,13 +139,8 @@ CheckerboardDialog::CheckerboardDialog(const vision::TunerParams& base, QWidget*
     if (result_) emit apply_requested(result_->lens);
   });
   connect(save_, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)"));
-    if (path.isEmpty()) return;
-    try {
-      save(path);
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Save lens"), QString::fromStdString(e.what()));
-    }
+    run_file_command(this, {FileCommand::Save, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)")},
+                     [this](const QString& path) { save(path); });
   });
   connect(close, &QPushButton::clicked, this, &QDialog::reject);
   connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &CheckerboardDialog::run_finished);
