@@ -16,6 +16,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include "common/reading_label.h"
 #include "common/record_chooser.h"
 #include "common/table_shape.h"
 #include "headroom/headroom_run_panel.h"
@@ -50,7 +51,7 @@ HeadroomView::HeadroomView(QWidget* parent)
       deadline_(new QSpinBox(this)),
       show_deadline_(new QCheckBox(tr("Deadline"), this)),
       flags_(new QLabel(this)),
-      source_(new QLabel(this)),
+      source_(reading_label(this)),
       empty_(new QLabel(this)),
       plot_(new QCustomPlot(this)),
       table_(new QTableWidget(this)) {
@@ -61,8 +62,6 @@ HeadroomView::HeadroomView(QWidget* parent)
   show_deadline_->setChecked(true);
   flags_->setWordWrap(true);
   flags_->setTextFormat(Qt::RichText);
-  source_->setWordWrap(true);
-  source_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   empty_->setWordWrap(true);
   empty_->setText(
       tr("No headroom measurement yet. Run one above, on this machine or a robot (the probe idle and beside the "

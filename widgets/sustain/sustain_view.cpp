@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
+#include "common/reading_label.h"
 #include "common/record_chooser.h"
 #include "sustain/sustain_run_panel.h"
 #include "sustain/sustain_text.h"
@@ -50,8 +51,8 @@ SustainView::SustainView(QWidget* parent)
       chooser_(new QComboBox(this)),
       stable_(new QDoubleSpinBox(this)),
       threshold_(new QDoubleSpinBox(this)),
-      summary_(new QLabel(this)),
-      source_(new QLabel(this)),
+      summary_(reading_label(this)),
+      source_(reading_label(this)),
       empty_(new QLabel(this)),
       plot_(new QCustomPlot(this)) {
   const QSettings s;
@@ -74,10 +75,6 @@ SustainView::SustainView(QWidget* parent)
       tr("A clock below this share of its maximum counts as throttled (NVIDIA nvbench's --throttle-threshold, 80 % "
          "by default); a thermal zone at or above its trip point does too"));
   summary_->setTextFormat(Qt::RichText);
-  summary_->setWordWrap(true);
-  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  source_->setWordWrap(true);
-  source_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   empty_->setWordWrap(true);
   empty_->setText(
       tr("No sustained record yet. Run one above, on this computer or a robot (a load for minutes, with every clock "

@@ -17,6 +17,7 @@
 #include <QtConcurrent>
 
 #include "common/file_command.h"
+#include "common/reading_label.h"
 
 namespace bs::ui {
 namespace {
@@ -97,9 +98,7 @@ CheckerboardDialog::CheckerboardDialog(const vision::TunerParams& base, QWidget*
   table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 8);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setWordWrap(false);
-  summary_ = new QLabel(tr("Add photos of the board from many angles, filling the whole field of view."));
-  summary_->setWordWrap(true);
-  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  summary_ = reading_label(nullptr, tr("Add photos of the board from many angles, filling the whole field of view."));
 
   apply_ = new QPushButton(tr("Apply"));
   apply_->setToolTip(tr("Use the calibrated lens in the Lens tab (one undo step there)"));
