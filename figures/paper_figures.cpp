@@ -43,22 +43,9 @@ PageSize page(const FigureOptions& o) {
   return {pt.width(), pt.height(), o.width_mm, pt.height() * 25.4 / 72.0};
 }
 
-QFont figure_font(const FigureOptions& o) {
-  QFont f("DejaVu Sans");
-  f.setPointSizeF(o.font_pt);
-  return f;
-}
-
 void style_axes(QCustomPlot& plot, const FigureTemplate& t, const FigureOptions& o) {
-  const QFont f = figure_font(o);
-  QFont small = f;
-  small.setPointSizeF(o.font_pt * 0.9);
   for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
-    axis->setLabelFont(f);
-    axis->setTickLabelFont(small);
-    axis->setBasePen(QPen(Qt::black, o.line_width_pt * 0.6));
-    axis->setTickPen(QPen(Qt::black, o.line_width_pt * 0.6));
-    axis->setSubTickPen(QPen(Qt::black, o.line_width_pt * 0.4));
+    style_figure_axis(axis, o);
     axis->grid()->setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0.4, Qt::DotLine));
   }
   plot.xAxis->setLabel(QString::fromStdString(t.x_label));
@@ -74,7 +61,7 @@ void style_axes(QCustomPlot& plot, const FigureTemplate& t, const FigureOptions&
     plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
   }
   // The legend goes below the axes, in columns, so it can never cover data at any size (layout_figure).
-  plot.legend->setFont(small);
+  plot.legend->setFont(figure_font(o, 0.9));
   plot.legend->setVisible(true);
 }
 
@@ -294,6 +281,20 @@ void write_text(const QString& path, const std::string& text, QStringList& files
 }
 
 }  // namespace
+
+QFont figure_font(const FigureOptions& o, double scale) {
+  QFont f("DejaVu Sans");
+  f.setPointSizeF(o.font_pt * scale);
+  return f;
+}
+
+void style_figure_axis(QCPAxis* axis, const FigureOptions& o) {
+  axis->setLabelFont(figure_font(o));
+  axis->setTickLabelFont(figure_font(o, 0.9));
+  axis->setBasePen(QPen(Qt::black, o.line_width_pt * 0.6));
+  axis->setTickPen(QPen(Qt::black, o.line_width_pt * 0.6));
+  axis->setSubTickPen(QPen(Qt::black, o.line_width_pt * 0.4));
+}
 
 FigureData select_figure_data(FigureData d, FigureDataChoice choice) {
   if (choice == FigureDataChoice::All) return d;

@@ -3,6 +3,7 @@
 // Renders a figure template set (resources/figures/paper-2018.json) from a workspace's data into PDF, SVG and PNG
 // files at journal sizes, plus the paper's Tables 1 and 2 (LaTeX, CSV) and figures.json listing every file with
 // its data sources and their provenance. Needs a QApplication (QT_QPA_PLATFORM=offscreen works).
+#include <QFont>
 #include <QJsonArray>
 #include <QString>
 #include <QStringList>
@@ -23,6 +24,7 @@
 #include "report/figure_template.h"
 #include "util/cancel.h"
 
+class QCPAxis;
 class QCustomPlot;
 
 namespace bs::ui {
@@ -85,5 +87,13 @@ PlotFigure figure_plot(QCustomPlot& plot, const FigureTemplate& t, const FigureD
 
 // The bundled template of the paper's figures.
 QString paper_template_path();
+
+// The figures' font (DejaVu Sans) at `scale` times the options' size: tick and bar labels take 0.9 of it.
+QFont figure_font(const FigureOptions& o, double scale = 1.0);
+
+// An axis in the figures' look: its label in the figure font, tick labels at 0.9 of it, black axis line and ticks
+// as thick as the options say (sub-ticks thinner). The paper's figures and the report's comparison chart share it, so
+// that the report's chart sits beside them alike; the grid stays each figure's.
+void style_figure_axis(QCPAxis* axis, const FigureOptions& o);
 
 }  // namespace bs::ui

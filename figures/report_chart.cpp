@@ -45,10 +45,7 @@ std::string comparison_chart(QCustomPlot& plot, const std::vector<PlatformRow>& 
                              const std::vector<PlatformVerdict>& verdicts, const std::map<std::string, int>& colors,
                              const FigureOptions& o) {
   const ExportTable table = platform_table(rows, verdicts);
-  QFont font("DejaVu Sans");
-  font.setPointSizeF(o.font_pt);
-  QFont small = font;
-  small.setPointSizeF(o.font_pt * 0.9);
+  const QFont small = figure_font(o, 0.9);
   QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
   std::string sources;
   double lo = 1e300, hi = 0;
@@ -105,13 +102,7 @@ std::string comparison_chart(QCustomPlot& plot, const std::vector<PlatformRow>& 
   // Bars on a log axis start at the decade below the smallest; a decade above the largest leaves room for labels.
   plot.yAxis->setRange(std::pow(10, std::floor(std::log10(lo)) - 0.3), hi * 40);
   plot.yAxis->setLabel("Peak (GFLOPS)");
-  for (QCPAxis* a : {plot.xAxis, plot.yAxis}) {
-    a->setLabelFont(font);
-    a->setTickLabelFont(small);
-    a->setBasePen(QPen(Qt::black, o.line_width_pt * 0.6));
-    a->setTickPen(QPen(Qt::black, o.line_width_pt * 0.6));
-    a->setSubTickPen(QPen(Qt::black, o.line_width_pt * 0.4));
-  }
+  for (QCPAxis* a : {plot.xAxis, plot.yAxis}) style_figure_axis(a, o);
   plot.yAxis->grid()->setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0.4, Qt::DotLine));
   plot.legend->setVisible(false);
   // Room on the right for the last bar's label and platform name, which are centred on it.

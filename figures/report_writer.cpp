@@ -390,6 +390,11 @@ void print_pdf(const QString& path, const std::string& html, const std::vector<R
     throw std::runtime_error(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
 }
 
+// The report's constraints line lists each constraint in force, comma-separated.
+void add_constraint(std::string& constraints, const std::string& constraint) {
+  constraints += (constraints.empty() ? "" : ", ") + constraint;
+}
+
 }  // namespace
 
 QStringList write_report(const ReportRequest& request, const std::vector<FigureTemplate>& templates,
@@ -408,23 +413,20 @@ QStringList write_report(const ReportRequest& request, const std::vector<FigureT
   in.constraints = describe_constraints(request.constraints);
   in.inference_runs = data.inference_runs;
   in.headroom = data.headroom;
+  // The requirements judge the platforms compared (and any other that has a record).
+  std::vector<std::string> names;
+  for (const PlatformRow& r : in.rows) names.push_back(r.platform);
   if (request.loop) {
-    std::vector<std::string> names;
-    for (const PlatformRow& r : in.rows) names.push_back(r.platform);
     in.loop = request.loop;
     in.loop_verdicts = headroom::evaluate_loop(*request.loop, data.headroom, names);
     headroom::apply_loop(in.verdicts, in.loop_verdicts);
-    in.constraints +=
-        (in.constraints.empty() ? "" : ", ") + std::string("control loop ") + headroom::describe(*request.loop);
+    add_constraint(in.constraints, "control loop " + headroom::describe(*request.loop));
   }
   if (request.sustained) {
-    std::vector<std::string> names;
-    for (const PlatformRow& r : in.rows) names.push_back(r.platform);
     in.sustained = request.sustained;
     in.sustained_verdicts = sustain::evaluate_sustain(*request.sustained, data.sustain_runs, names);
     sustain::apply_sustain(in.verdicts, in.sustained_verdicts);
-    in.constraints +=
-        (in.constraints.empty() ? "" : ", ") + std::string("sustained ") + sustain::describe(*request.sustained);
+    add_constraint(in.constraints, "sustained " + sustain::describe(*request.sustained));
   }
   in.candidates = request.candidates;
   in.chosen_log_platforms = request.chosen_log_platforms;

@@ -137,6 +137,9 @@ class MainWindow : public QMainWindow {
   void rename_item(const TreeItemRef& item);
   void remove_item(const TreeItemRef& item);
   void set_device_color(const TreeItemRef& device, int color_index);
+  // An edit's first run, before push_edit records it: what it throws is reported (report_edit_error) and it returns
+  // false, so that a failed edit leaves no step to undo.
+  bool try_edit(const std::function<void()>& redo);
   // One step of Edit > Undo; `refresh` brings the views up to date after it (default: reload()).
   void push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo,
                  std::function<void()> refresh = {});

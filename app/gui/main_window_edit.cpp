@@ -235,12 +235,7 @@ void MainWindow::rename_item(const TreeItemRef& item) {
     redo = [apply, to] { apply(to); };
     undo = [apply, from] { apply(from); };
   }
-  try {
-    redo();
-  } catch (const std::exception& e) {
-    report_edit_error(QString::fromUtf8(e.what()));
-    return;
-  }
+  if (!try_edit(redo)) return;
   push_edit(run ? tr("label run “%1”").arg(name) : tr("rename “%1” to “%2”").arg(item.name, name), std::move(redo),
             std::move(undo));
 }
@@ -253,12 +248,7 @@ void MainWindow::remove_item(const TreeItemRef& item) {
     if (!setup || !setup->from_workspace) return;
     std::function<void()> redo = [ws, name = setup->pack.name] { remove_battery_setup(*ws, name); };
     std::function<void()> undo = [ws, s = *setup] { save_battery_setup(*ws, s); };
-    try {
-      redo();
-    } catch (const std::exception& e) {
-      report_edit_error(QString::fromUtf8(e.what()));
-      return;
-    }
+    if (!try_edit(redo)) return;
     push_edit(tr("remove preset “%1”").arg(item.name), std::move(redo), std::move(undo));
     return;
   }
@@ -270,14 +260,19 @@ void MainWindow::remove_item(const TreeItemRef& item) {
     ws->remove_import(*import_id);
   };
   std::function<void()> undo = [ws, import_id, snapshot] { *import_id = restore_import(*ws, *snapshot); };
-  try {
-    redo();
-  } catch (const std::exception& e) {
-    report_edit_error(QString::fromUtf8(e.what()));
-    return;
-  }
+  if (!try_edit(redo)) return;
   push_edit(tr("remove import “%1” (%2)").arg(file_name(snapshot->record.path), count_text(snapshot->batch)),
             std::move(redo), std::move(undo));
+}
+
+bool MainWindow::try_edit(const std::function<void()>& redo) {
+  try {
+    redo();
+    return true;
+  } catch (const std::exception& e) {
+    report_edit_error(QString::fromUtf8(e.what()));
+    return false;
+  }
 }
 
 void MainWindow::push_edit(const QString& text, std::function<void()> redo, std::function<void()> undo,
@@ -306,12 +301,7 @@ void MainWindow::set_device_color(const TreeItemRef& device, int color_index) {
   std::function<void()> undo = [ws, platform, name, old = device.color_index] {
     ws->set_device_color(platform, name, old);
   };
-  try {
-    redo();
-  } catch (const std::exception& e) {
-    report_edit_error(QString::fromUtf8(e.what()));
-    return;
-  }
+  if (!try_edit(redo)) return;
   push_edit(tr("colour of %1").arg(device.name), std::move(redo), std::move(undo));
 }
 

@@ -83,12 +83,7 @@ void MainWindow::save_tuned_lens(bool for_camera) {
     else
       remove_lens(*ws, lens.frame_id, lens.camera);
   };
-  try {
-    redo();
-  } catch (const std::exception& e) {
-    report_edit_error(QString::fromUtf8(e.what()));
-    return;
-  }
+  if (!try_edit(redo)) return;
   lens_->mark_saved(for_camera ? vision::ResolvedLens::Source::SavedForCamera
                                : vision::ResolvedLens::Source::SavedForFrame);
   const QString what = for_camera ? tr("save lens for camera %1").arg(QString::fromStdString(lens.camera))
@@ -100,17 +95,20 @@ bool MainWindow::has_unsaved_changes() const { return (lens_ && lens_->has_unsav
 
 bool MainWindow::settle_unsaved_changes() {
   if (!has_unsaved_changes()) return true;
+  // Save, Discard or Cancel, asked by a box (or by the test's prompt when one is set), for either thing unsaved.
+  const auto ask = [this](const QString& title, const QString& text) {
+    return unsaved_prompt_ ? unsaved_prompt_(text)
+                           : QMessageBox::question(this, title, text,
+                                                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                                   QMessageBox::Save);
+  };
   if (untitled_work_at_risk()) {
     // An untitled workspace lives in a temporary folder that goes with it: what the user imported, measured or
     // edited there is lost unless saved under a name now.
     const QString text =
         tr("The untitled workspace holds your imports, runs or edits and is deleted when it closes. "
            "Save it as a workspace file?");
-    const int answer =
-        unsaved_prompt_
-            ? unsaved_prompt_(text)
-            : QMessageBox::question(this, tr("Unsaved workspace"), text,
-                                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    const int answer = ask(tr("Unsaved workspace"), text);
     if (answer == QMessageBox::Cancel) return false;
     if (answer == QMessageBox::Save) {
       if (lens_ && lens_->has_unsaved_lens()) save_tuned_lens(false);  // into the workspace before it is copied
@@ -122,11 +120,7 @@ bool MainWindow::settle_unsaved_changes() {
   }
   const QString text = tr("The lens tuned for frame “%1” is not saved in the workspace. Save it for this frame?")
                            .arg(lens_->frame_label());
-  const int answer =
-      unsaved_prompt_
-          ? unsaved_prompt_(text)
-          : QMessageBox::question(this, tr("Unsaved lens"), text,
-                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  const int answer = ask(tr("Unsaved lens"), text);
   if (answer == QMessageBox::Cancel) return false;
   if (answer == QMessageBox::Save) save_tuned_lens(false);
   return true;

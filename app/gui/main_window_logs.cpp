@@ -19,6 +19,15 @@ const StoredPowerTrace* find_trace(const std::vector<StoredPowerTrace>& traces, 
   return nullptr;
 }
 
+// The summary (no samples) of the log with this id that an edit starts from; nullopt without a workspace or such a
+// log.
+std::optional<StoredPowerTrace> log_summary(Workspace* ws, std::int64_t id) {
+  if (!ws) return std::nullopt;
+  const std::vector<StoredPowerTrace> traces = ws->power_trace_summaries();
+  const StoredPowerTrace* t = find_trace(traces, id);
+  return t ? std::optional<StoredPowerTrace>(*t) : std::nullopt;
+}
+
 }  // namespace
 
 QStringList MainWindow::known_platforms() const {
@@ -52,10 +61,8 @@ QString MainWindow::choose_log_platform(const QString& log, const QString& path,
 }
 
 void MainWindow::set_log_platform(std::int64_t trace_id, const QString& platform) {
-  if (!workspace_) return;
   Workspace* ws = workspace_.get();
-  const auto traces = ws->power_trace_summaries();
-  const StoredPowerTrace* t = find_trace(traces, trace_id);
+  const std::optional<StoredPowerTrace> t = log_summary(ws, trace_id);
   if (!t) return;
   const std::string before = t->trace.platform, after = platform.trimmed().toStdString(), label = t->trace.label;
   if (before == after) return;
@@ -63,21 +70,14 @@ void MainWindow::set_log_platform(std::int64_t trace_id, const QString& platform
   std::function<void()> undo = [ws, trace_id, before] {
     if (!before.empty()) set_trace_platform(*ws, trace_id, before);
   };
-  try {
-    redo();
-  } catch (const std::exception& e) {
-    report_edit_error(QString::fromUtf8(e.what()));
-    return;
-  }
+  if (!try_edit(redo)) return;
   push_edit(tr("platform of “%1” to “%2”").arg(QString::fromStdString(label), platform.trimmed()), std::move(redo),
             std::move(undo));
 }
 
 void MainWindow::set_log_voltage(std::int64_t trace_id, const LogVoltageChoice& choice) {
-  if (!workspace_) return;
   Workspace* ws = workspace_.get();
-  const auto traces = ws->power_trace_summaries();
-  const StoredPowerTrace* t = find_trace(traces, trace_id);
+  const std::optional<StoredPowerTrace> t = log_summary(ws, trace_id);
   if (!t) return;
   const LogVoltageChoice before{t->trace.supply_voltage_v, trace_voltage_source(*ws, trace_id)};
   const auto apply = [ws, trace_id](const LogVoltageChoice& c) {
@@ -86,12 +86,7 @@ void MainWindow::set_log_voltage(std::int64_t trace_id, const LogVoltageChoice& 
   };
   std::function<void()> redo = [apply, choice] { apply(choice); };
   std::function<void()> undo = [apply, before] { apply(before); };
-  try {
-    redo();
-  } catch (const std::exception& e) {
-    report_edit_error(QString::fromUtf8(e.what()));
-    return;
-  }
+  if (!try_edit(redo)) return;
   const QString what = choice.source     ? tr("a borrowed voltage channel")
                        : choice.supply_v ? tr("%1 V").arg(*choice.supply_v)
                                          : tr("no supply voltage");
@@ -122,9 +117,7 @@ void MainWindow::ask_log_voltage(const TreeItemRef& log) {
 }
 
 void MainWindow::ask_log_platform(const TreeItemRef& log) {
-  if (!workspace_) return;
-  const auto traces = workspace_->power_trace_summaries();
-  const StoredPowerTrace* t = find_trace(traces, log.id);
+  const std::optional<StoredPowerTrace> t = log_summary(workspace_.get(), log.id);
   if (!t) return;
   const QString current = QString::fromStdString(t->trace.platform);
   QStringList items{current};

@@ -12,10 +12,12 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "common/reading_label.h"
+
 namespace bs::ui {
 
 ReportDialog::ReportDialog(const QString& default_path, const QStringList& decision, QWidget* parent)
-    : QDialog(parent), path_(new QLineEdit(default_path, this)), decision_(new QLabel(this)) {
+    : QDialog(parent), path_(new QLineEdit(default_path, this)), decision_(reading_label(this)) {
   setWindowTitle(tr("Export report"));
   path_->setObjectName(QStringLiteral("reportPath"));
   path_->setToolTip(tr("A .pdf file (A4, printed) or a .html file (one self-contained page with the figures)"));
@@ -35,8 +37,6 @@ ReportDialog::ReportDialog(const QString& default_path, const QStringList& decis
 
   decision_->setObjectName(QStringLiteral("reportDecision"));
   decision_->setTextFormat(Qt::RichText);
-  decision_->setWordWrap(true);
-  decision_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   decision_->setText(decision.join("<br>"));
   auto* box = new QGroupBox(tr("Page 1 states this decision (set in the Platforms tab, kept in the workspace)"), this);
   auto* box_layout = new QVBoxLayout(box);

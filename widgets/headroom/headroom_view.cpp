@@ -16,6 +16,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include "common/reading_label.h"
+#include "common/record_chooser.h"
 #include "common/table_shape.h"
 #include "headroom/headroom_run_panel.h"
 #include "headroom/headroom_table.h"
@@ -49,21 +51,17 @@ HeadroomView::HeadroomView(QWidget* parent)
       deadline_(new QSpinBox(this)),
       show_deadline_(new QCheckBox(tr("Deadline"), this)),
       flags_(new QLabel(this)),
-      source_(new QLabel(this)),
+      source_(reading_label(this)),
       empty_(new QLabel(this)),
       plot_(new QCustomPlot(this)),
       table_(new QTableWidget(this)) {
-  chooser_->setToolTip(tr("The headroom measurement shown: platform, tool, what it measured, when"));
-  chooser_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  chooser_->setMinimumContentsLength(28);
+  shape_record_chooser(chooser_, tr("The headroom measurement shown: platform, tool, what it measured, when"));
   deadline_->setRange(1, 10'000'000);
   deadline_->setSuffix(tr(" µs"));
   deadline_->setToolTip(tr("The vertical line: cycles whose wake-up latency lies beyond it are counted per curve"));
   show_deadline_->setChecked(true);
   flags_->setWordWrap(true);
   flags_->setTextFormat(Qt::RichText);
-  source_->setWordWrap(true);
-  source_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   empty_->setWordWrap(true);
   empty_->setText(
       tr("No headroom measurement yet. Run one above, on this machine or a robot (the probe idle and beside the "
@@ -114,22 +112,8 @@ const headroom::HeadroomMeasurement* HeadroomView::current() const {
 }
 
 void HeadroomView::set_measurements(std::vector<StoredHeadroom> measurements) {
-  const int i = chooser_->currentIndex();
-  const std::int64_t shown =
-      i >= 0 && i < static_cast<int>(measurements_.size()) ? measurements_[static_cast<std::size_t>(i)].id : -1;
   measurements_ = std::move(measurements);
-  {
-    const QSignalBlocker block(chooser_);
-    chooser_->clear();
-    for (const StoredHeadroom& s : measurements_) chooser_->addItem(describe(s), QVariant::fromValue<qint64>(s.id));
-    const int again = chooser_->findData(QVariant::fromValue<qint64>(shown));
-    // A new measurement (an id above every one shown before) comes to the front; otherwise the one shown stays.
-    std::int64_t newest = -1;
-    for (const StoredHeadroom& s : measurements_) newest = std::max(newest, s.id);
-    const bool arrived = newest > newest_seen_;
-    newest_seen_ = std::max(newest_seen_, newest);
-    chooser_->setCurrentIndex(again >= 0 && !arrived ? again : chooser_->findData(QVariant::fromValue<qint64>(newest)));
-  }
+  refill_record_chooser(chooser_, measurements_, describe, newest_seen_);
   show_current();
 }
 

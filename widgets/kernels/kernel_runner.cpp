@@ -26,6 +26,7 @@
 #include "analysis/stats/stats.h"
 #include "analysis/stats/units.h"
 #include "commands/run_flops_grammar.h"
+#include "common/reading_label.h"
 #include "kernels/ceilings/ceiling_cache.h"
 #include "kernels/sweep.h"
 #include "kernels/worker_spec.h"
@@ -49,9 +50,9 @@ KernelRunner::KernelRunner(QWidget* parent)
       dims_(new QLineEdit("1,2,4", this)),
       iterations_(new QSpinBox(this)),
       repeats_(new QSpinBox(this)),
-      details_(new QLabel(this)),
+      details_(reading_label(this)),
       input_error_(new QLabel(this)),
-      ceilings_(new QLabel(this)),
+      ceilings_(reading_label(this)),
       measure_ceilings_(new QPushButton(tr("Measure ceilings"), this)),
       run_(new QPushButton(tr("Run"), this)),
       stop_(new QPushButton(tr("Cancel"), this)),
@@ -61,7 +62,7 @@ KernelRunner::KernelRunner(QWidget* parent)
       target_(new RobotTarget(this)),
       robot_power_(new QCheckBox(tr("On the robot (auto)"), this)),
       several_(new QPushButton(tr("Several robots…"), this)),
-      remote_log_(new QLabel(this)),
+      remote_log_(reading_label(this)),
       controller_(new RunHereOrRobot(target_, this)) {
   qRegisterMetaType<bs::FlopsRun>();
   qRegisterMetaType<std::vector<bs::FlopsRun>>();
@@ -79,15 +80,11 @@ KernelRunner::KernelRunner(QWidget* parent)
   variant_->addItem(tr("throughput (fills the vector units)"), "throughput");
   variant_->addItem(tr("paper (one task per worker)"), "paper");
   variant_->setToolTip(tr("Which kernel variant; views label curves with it"));
-  details_->setWordWrap(true);
-  ceilings_->setWordWrap(true);
-  ceilings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   ceilings_->setObjectName("ceilingsLabel");
   measure_ceilings_->setToolTip(
       tr("Measure this CPU's empirical ceilings now (~5 s): the rotation kernel's instruction "
          "mix and plain FMA with enough independent chains, and the memory bandwidth. Stored "
          "per host and in the workspace (peak table, roofline)"));
-  details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   stop_->setEnabled(false);
   run_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
   run_->setToolTip(tr("Start the sweep (Ctrl+R); every output is checked against the closed form"));
@@ -133,8 +130,6 @@ KernelRunner::KernelRunner(QWidget* parent)
       tr("Run this sweep on several robots, one after another; each robot's results appear as "
          "they arrive"));
   remote_log_->setObjectName("remoteLog");
-  remote_log_->setWordWrap(true);
-  remote_log_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   remote_log_->hide();
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(run_);

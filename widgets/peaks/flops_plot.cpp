@@ -34,6 +34,17 @@ QString series_name(const FlopsRun& r) {
   return name;
 }
 
+// Both axes switch between a log and a linear scale alike; each scale brings its own ticker (x counts workers, so it
+// has the count tickers; y has QCustomPlot's).
+template <class LogTicker, class LinearTicker>
+void set_scale(QCPAxis* axis, bool log) {
+  axis->setScaleType(log ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
+  if (log)
+    axis->setTicker(QSharedPointer<LogTicker>::create());
+  else
+    axis->setTicker(QSharedPointer<LinearTicker>::create());
+}
+
 }  // namespace
 
 FlopsPlot::FlopsPlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)) {
@@ -94,21 +105,13 @@ bool FlopsPlot::log_y() const { return plot_->yAxis->scaleType() == QCPAxis::stL
 
 void FlopsPlot::set_log_x(bool on) {
   log_x_box_->setChecked(on);
-  plot_->xAxis->setScaleType(on ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
-  if (on)
-    plot_->xAxis->setTicker(QSharedPointer<CountTickerLog>::create());
-  else
-    plot_->xAxis->setTicker(QSharedPointer<CountTicker>::create());
+  set_scale<CountTickerLog, CountTicker>(plot_->xAxis, on);
   reset_view();
 }
 
 void FlopsPlot::set_log_y(bool on) {
   log_y_box_->setChecked(on);
-  plot_->yAxis->setScaleType(on ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
-  if (on)
-    plot_->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>::create());
-  else
-    plot_->yAxis->setTicker(QSharedPointer<QCPAxisTicker>::create());
+  set_scale<QCPAxisTickerLog, QCPAxisTicker>(plot_->yAxis, on);
   reset_view();
 }
 

@@ -98,6 +98,52 @@ QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, const 
   return s;
 }
 
+// The control loop's and the sustained requirement's texts are judged alike: `judge` parses the field's text,
+// judges the platforms and returns the summary's line; a text that does not parse turns the field red, and the line
+// (`ignored`, its %1 the reason) says the requirement is left out.
+template <class Judge>
+QString judge_requirement(QLineEdit* field, const QString& ignored, Judge judge) {
+  try {
+    QString line = judge(field->text().toStdString());
+    field->setStyleSheet(QString());
+    return line;
+  } catch (const std::invalid_argument& e) {
+    field->setStyleSheet(QStringLiteral("color:#b00020"));
+    return ignored.arg(QString::fromUtf8(e.what()).toHtmlEscaped());
+  }
+}
+
+// A requirement's text as it is in force: parsed when its box is ticked, nullopt when the box is not or the text
+// does not parse (the summary says why). The control loop's and the sustained requirement's alike.
+template <class Parse>
+auto requirement_in_force(const QCheckBox* use, const QLineEdit* field, Parse parse)
+    -> std::optional<decltype(parse(std::string()))> {
+  if (!use->isChecked()) return std::nullopt;
+  try {
+    return parse(field->text().toStdString());
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+// A requirement's text set from outside (a decision read back), its box ticked when there is one, without the
+// signals of a user's edit.
+void show_requirement(QCheckBox* use, QLineEdit* field, const QString& text) {
+  const QSignalBlocker b1(field), b2(use);
+  field->setText(text);
+  use->setChecked(!text.isEmpty());
+}
+
+// One platform's verdict in the summary's requirement line: its name, the status in bold, and why when there is a
+// reason.
+QString verdict_text(const std::string& platform, std::string_view status, const std::string& why) {
+  QString part =
+      QStringLiteral("%1 <b>%2</b>")
+          .arg(QString::fromStdString(platform).toHtmlEscaped(), QString::fromStdString(std::string(status)));
+  if (!why.empty()) part += QStringLiteral(" (%1)").arg(QString::fromStdString(why).toHtmlEscaped());
+  return part;
+}
+
 }  // namespace
 
 PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
@@ -221,7 +267,7 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
 
   // A value counts when it is entered (Enter, leaving the field, an arrow step), not at every key typed: each is one
   // step of Edit > Undo, and the workspace keeps it.
-  for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_}) {
+  for (QCheckBox* c : {use_budget_, use_fps_, use_runtime_, use_loop_, use_sustained_}) {
     connect(c, &QCheckBox::toggled, this, &PlatformView::recompute);
     connect(c, &QCheckBox::clicked, this, &PlatformView::user_changed);
   }
@@ -246,16 +292,10 @@ PlatformView::PlatformView(QWidget* parent) : QWidget(parent) {
   });
   connect(mission_, &QComboBox::activated, this, &PlatformView::recompute);
   connect(mission_, &QComboBox::activated, this, &PlatformView::user_changed);
-  connect(use_loop_, &QCheckBox::toggled, this, &PlatformView::recompute);
-  connect(use_loop_, &QCheckBox::clicked, this, &PlatformView::user_changed);
-  connect(loop_, &QLineEdit::editingFinished, this, &PlatformView::recompute);
-  connect(loop_, &QLineEdit::editingFinished, this, &PlatformView::user_changed);
-  connect(use_sustained_, &QCheckBox::toggled, this, &PlatformView::recompute);
-  connect(use_sustained_, &QCheckBox::clicked, this, &PlatformView::user_changed);
-  connect(sustained_, &QLineEdit::editingFinished, this, &PlatformView::recompute);
-  connect(sustained_, &QLineEdit::editingFinished, this, &PlatformView::user_changed);
-  connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::recompute);
-  connect(mission_->lineEdit(), &QLineEdit::editingFinished, this, &PlatformView::user_changed);
+  for (QLineEdit* e : {loop_, sustained_, mission_->lineEdit()}) {
+    connect(e, &QLineEdit::editingFinished, this, &PlatformView::recompute);
+    connect(e, &QLineEdit::editingFinished, this, &PlatformView::user_changed);
+  }
   connect(candidates_, &CandidatesPanel::selection_edited, this, &PlatformView::user_changed);
   connect(export_tex, &QPushButton::clicked, this, [this] { export_table(true); });
   connect(export_csv, &QPushButton::clicked, this, [this] { export_table(false); });
@@ -507,63 +547,42 @@ void PlatformView::recompute() {
   loop_verdicts_.clear();
   // The loop's verdicts, when a requirement is in force, judge the candidates too: no pick the verdict rejects.
   std::optional<std::vector<headroom::LoopVerdict>> candidate_loop;
+  std::vector<std::string> names;
+  for (const PlatformRow& row : rows_) names.push_back(row.platform);
   QString loop_text;
-  if (use_loop_->isChecked()) {
-    try {
-      const headroom::LoopRequirement r = headroom::parse_loop_requirement(loop_->text().toStdString());
-      std::vector<std::string> names;
-      for (const PlatformRow& row : rows_) names.push_back(row.platform);
-      loop_verdicts_ = headroom::evaluate_loop(r, headroom_, names);
-      headroom::apply_loop(verdicts_, loop_verdicts_);
-      candidate_loop = loop_verdicts_;
-      QStringList parts;
-      for (const headroom::LoopVerdict& v : loop_verdicts_) {
-        QString part = QStringLiteral("%1 <b>%2</b>")
-                           .arg(QString::fromStdString(v.platform).toHtmlEscaped(),
-                                QString::fromStdString(std::string(headroom::to_string(v.status))));
-        if (!v.reason.empty()) part += QStringLiteral(" (%1)").arg(QString::fromStdString(v.reason).toHtmlEscaped());
-        if (!v.measurement.empty() && !v.realtime) part += tr(" ⚠ non-real-time measurement");
-        parts << part;
-      }
-      loop_text = tr("<br>Control loop %1: %2.")
-                      .arg(QString::fromStdString(headroom::describe(r)).toHtmlEscaped(), parts.join("; "));
-      loop_->setStyleSheet(QString());
-    } catch (const std::invalid_argument& e) {
-      loop_text = tr("<br><span style='color:#b00020'>Control loop ignored: %1</span>")
-                      .arg(QString::fromUtf8(e.what()).toHtmlEscaped());
-      loop_->setStyleSheet(QStringLiteral("color:#b00020"));
-    }
-  }
+  if (use_loop_->isChecked())
+    loop_text = judge_requirement(
+        loop_, tr("<br><span style='color:#b00020'>Control loop ignored: %1</span>"), [&](const std::string& text) {
+          const headroom::LoopRequirement r = headroom::parse_loop_requirement(text);
+          loop_verdicts_ = headroom::evaluate_loop(r, headroom_, names);
+          headroom::apply_loop(verdicts_, loop_verdicts_);
+          candidate_loop = loop_verdicts_;
+          QStringList parts;
+          for (const headroom::LoopVerdict& v : loop_verdicts_)
+            parts << verdict_text(v.platform, headroom::to_string(v.status), v.reason) +
+                         (!v.measurement.empty() && !v.realtime ? tr(" ⚠ non-real-time measurement") : QString());
+          return tr("<br>Control loop %1: %2.")
+              .arg(QString::fromStdString(headroom::describe(r)).toHtmlEscaped(), parts.join("; "));
+        });
   // The sustained requirement's checks join them the same way: no sustained record is unknown, never passing.
   sustained_verdicts_.clear();
   std::optional<std::vector<sustain::SustainVerdict>> candidate_sustained;
   QString sustained_text;
-  if (use_sustained_->isChecked()) {
-    try {
-      const sustain::SustainRequirement r = sustain::parse_sustain_requirement(sustained_->text().toStdString());
-      std::vector<std::string> names;
-      for (const PlatformRow& row : rows_) names.push_back(row.platform);
-      sustained_verdicts_ = sustain::evaluate_sustain(r, sustained_runs_, names);
-      sustain::apply_sustain(verdicts_, sustained_verdicts_);
-      candidate_sustained = sustained_verdicts_;
-      QStringList parts;
-      for (const sustain::SustainVerdict& v : sustained_verdicts_) {
-        QString part = QStringLiteral("%1 <b>%2</b>")
-                           .arg(QString::fromStdString(v.platform).toHtmlEscaped(),
-                                QString::fromStdString(std::string(sustain::to_string(v.status))));
-        const std::string why = v.status == sustain::SustainStatus::Pass ? v.margin : v.reason;
-        if (!why.empty()) part += QStringLiteral(" (%1)").arg(QString::fromStdString(why).toHtmlEscaped());
-        parts << part;
-      }
-      sustained_text = tr("<br>Sustained %1: %2.")
-                           .arg(QString::fromStdString(sustain::describe(r)).toHtmlEscaped(), parts.join("; "));
-      sustained_->setStyleSheet(QString());
-    } catch (const std::invalid_argument& e) {
-      sustained_text = tr("<br><span style='color:#b00020'>Sustained requirement ignored: %1</span>")
-                           .arg(QString::fromUtf8(e.what()).toHtmlEscaped());
-      sustained_->setStyleSheet(QStringLiteral("color:#b00020"));
-    }
-  }
+  if (use_sustained_->isChecked())
+    sustained_text =
+        judge_requirement(sustained_, tr("<br><span style='color:#b00020'>Sustained requirement ignored: %1</span>"),
+                          [&](const std::string& text) {
+                            const sustain::SustainRequirement r = sustain::parse_sustain_requirement(text);
+                            sustained_verdicts_ = sustain::evaluate_sustain(r, sustained_runs_, names);
+                            sustain::apply_sustain(verdicts_, sustained_verdicts_);
+                            candidate_sustained = sustained_verdicts_;
+                            QStringList parts;
+                            for (const sustain::SustainVerdict& v : sustained_verdicts_)
+                              parts << verdict_text(v.platform, sustain::to_string(v.status),
+                                                    v.status == sustain::SustainStatus::Pass ? v.margin : v.reason);
+                            return tr("<br>Sustained %1: %2.")
+                                .arg(QString::fromStdString(sustain::describe(r)).toHtmlEscaped(), parts.join("; "));
+                          });
   loop_text += sustained_text;
   fill_table();
   candidates_->set_own(rows_, pipeline_runs_, dnn_runs_, result_sets_, constraints(), o, std::move(candidate_loop),
@@ -634,12 +653,7 @@ bool PlatformView::constrained() const {
 }
 
 std::optional<sustain::SustainRequirement> PlatformView::sustained_requirement() const {
-  if (!use_sustained_->isChecked()) return std::nullopt;
-  try {
-    return sustain::parse_sustain_requirement(sustained_->text().toStdString());
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;
-  }
+  return requirement_in_force(use_sustained_, sustained_, sustain::parse_sustain_requirement);
 }
 
 void PlatformView::set_sustained(std::vector<SustainRun> runs) {
@@ -648,21 +662,12 @@ void PlatformView::set_sustained(std::vector<SustainRun> runs) {
 }
 
 void PlatformView::set_sustained_requirement(const QString& text) {
-  {
-    const QSignalBlocker b1(sustained_), b2(use_sustained_);
-    sustained_->setText(text);
-    use_sustained_->setChecked(!text.isEmpty());
-  }
+  show_requirement(use_sustained_, sustained_, text);
   recompute();
 }
 
 std::optional<headroom::LoopRequirement> PlatformView::loop_requirement() const {
-  if (!use_loop_->isChecked()) return std::nullopt;
-  try {
-    return headroom::parse_loop_requirement(loop_->text().toStdString());
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;
-  }
+  return requirement_in_force(use_loop_, loop_, headroom::parse_loop_requirement);
 }
 
 void PlatformView::set_headroom(std::vector<headroom::HeadroomMeasurement> measurements) {
@@ -671,11 +676,7 @@ void PlatformView::set_headroom(std::vector<headroom::HeadroomMeasurement> measu
 }
 
 void PlatformView::set_loop_requirement(const QString& text) {
-  {
-    const QSignalBlocker b1(loop_), b2(use_loop_);
-    loop_->setText(text);
-    use_loop_->setChecked(!text.isEmpty());
-  }
+  show_requirement(use_loop_, loop_, text);
   recompute();
 }
 

@@ -11,6 +11,8 @@
 #include <QPushButton>
 #include <QtConcurrent>
 
+#include "common/reading_label.h"
+
 namespace bs::ui {
 namespace {
 const QString kAddRobot = QStringLiteral("__add__");
@@ -19,7 +21,7 @@ const QString kAddRobot = QStringLiteral("__add__");
 RobotTarget::RobotTarget(QWidget* parent)
     : QWidget(parent),
       box_(new QComboBox(this)),
-      status_(new QLabel(this)),
+      status_(reading_label(this)),
       check_button_(new QPushButton(tr("Check"), this)),
       platform_(new QLineEdit(this)),
       robot_row_(new QWidget(this)) {
@@ -30,8 +32,6 @@ RobotTarget::RobotTarget(QWidget* parent)
   box_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   box_->setMinimumContentsLength(16);
   status_->setObjectName("robotStatus");
-  status_->setWordWrap(true);
-  status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   check_button_->setToolTip(tr("Contact the robot again: architecture, BenchScope there, backends, power sensors"));
   platform_->setObjectName("robotPlatform");
   platform_->setToolTip(tr("The platform the robot's results are stored under (its host name unless renamed)"));

@@ -10,6 +10,8 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
+#include "common/reading_label.h"
+#include "common/record_chooser.h"
 #include "sustain/sustain_run_panel.h"
 #include "sustain/sustain_text.h"
 #include "sustain_figure.h"
@@ -49,15 +51,13 @@ SustainView::SustainView(QWidget* parent)
       chooser_(new QComboBox(this)),
       stable_(new QDoubleSpinBox(this)),
       threshold_(new QDoubleSpinBox(this)),
-      summary_(new QLabel(this)),
-      source_(new QLabel(this)),
+      summary_(reading_label(this)),
+      source_(reading_label(this)),
       empty_(new QLabel(this)),
       plot_(new QCustomPlot(this)) {
   const QSettings s;
   const sustain::AnalysisOptions defaults;
-  chooser_->setToolTip(tr("The sustained record shown: platform, load (or the log it came from), when"));
-  chooser_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  chooser_->setMinimumContentsLength(28);
+  shape_record_chooser(chooser_, tr("The sustained record shown: platform, load (or the log it came from), when"));
   stable_->setRange(50, 100);
   stable_->setDecimals(1);
   stable_->setPrefix(tr("stable ≥ "));
@@ -75,10 +75,6 @@ SustainView::SustainView(QWidget* parent)
       tr("A clock below this share of its maximum counts as throttled (NVIDIA nvbench's --throttle-threshold, 80 % "
          "by default); a thermal zone at or above its trip point does too"));
   summary_->setTextFormat(Qt::RichText);
-  summary_->setWordWrap(true);
-  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  source_->setWordWrap(true);
-  source_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   empty_->setWordWrap(true);
   empty_->setText(
       tr("No sustained record yet. Run one above, on this computer or a robot (a load for minutes, with every clock "
@@ -135,21 +131,8 @@ sustain::SustainAnalysis SustainView::current_analysis() const {
 }
 
 void SustainView::set_records(std::vector<StoredSustainRun> records) {
-  const int i = chooser_->currentIndex();
-  const std::int64_t shown =
-      i >= 0 && i < static_cast<int>(records_.size()) ? records_[static_cast<std::size_t>(i)].id : -1;
   records_ = std::move(records);
-  {
-    const QSignalBlocker block(chooser_);
-    chooser_->clear();
-    for (const StoredSustainRun& s : records_) chooser_->addItem(describe(s), QVariant::fromValue<qint64>(s.id));
-    std::int64_t newest = -1;
-    for (const StoredSustainRun& s : records_) newest = std::max(newest, s.id);
-    const bool arrived = newest > newest_seen_;
-    newest_seen_ = std::max(newest_seen_, newest);
-    const int again = chooser_->findData(QVariant::fromValue<qint64>(shown));
-    chooser_->setCurrentIndex(again >= 0 && !arrived ? again : chooser_->findData(QVariant::fromValue<qint64>(newest)));
-  }
+  refill_record_chooser(chooser_, records_, describe, newest_seen_);
   if (!live_) show_current();
 }
 

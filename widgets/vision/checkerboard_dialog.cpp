@@ -9,13 +9,15 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent>
+
+#include "common/file_command.h"
+#include "common/reading_label.h"
 
 namespace bs::ui {
 namespace {
@@ -96,9 +98,7 @@ CheckerboardDialog::CheckerboardDialog(const vision::TunerParams& base, QWidget*
   table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 8);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setWordWrap(false);
-  summary_ = new QLabel(tr("Add photos of the board from many angles, filling the whole field of view."));
-  summary_->setWordWrap(true);
-  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  summary_ = reading_label(nullptr, tr("Add photos of the board from many angles, filling the whole field of view."));
 
   apply_ = new QPushButton(tr("Apply"));
   apply_->setToolTip(tr("Use the calibrated lens in the Lens tab (one undo step there)"));
@@ -138,13 +138,8 @@ CheckerboardDialog::CheckerboardDialog(const vision::TunerParams& base, QWidget*
     if (result_) emit apply_requested(result_->lens);
   });
   connect(save_, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)"));
-    if (path.isEmpty()) return;
-    try {
-      save(path);
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Save lens"), QString::fromStdString(e.what()));
-    }
+    run_file_command(this, {FileCommand::Save, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)")},
+                     [this](const QString& path) { save(path); });
   });
   connect(close, &QPushButton::clicked, this, &QDialog::reject);
   connect(watcher_, &QFutureWatcher<Outcome>::finished, this, &CheckerboardDialog::run_finished);

@@ -15,6 +15,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
+#include "common/reading_label.h"
 #include "vision/frames/frame_image.h"
 #include "vision/image_pane.h"
 #include "vision/lens/view_geometry.h"
@@ -78,7 +79,7 @@ FrameTriptych::FrameTriptych(QWidget* parent)
       full_range_(new QPushButton(tr("Full range"), this)),
       overlay_box_(new QCheckBox(tr("Outlines"), this)),
       banner_(new QLabel(this)),
-      inspector_(new QLabel(this)),
+      inspector_(reading_label(this)),
       watcher_(new QFutureWatcher<std::shared_ptr<Job>>(this)) {
   auto* controls = new QHBoxLayout;
   controls->addWidget(new QLabel(tr("Demosaic:"), this));
@@ -122,8 +123,6 @@ FrameTriptych::FrameTriptych(QWidget* parent)
     });
   }
   banner_->setWordWrap(true);
-  inspector_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  inspector_->setWordWrap(true);  // a long readout wraps instead of widening the window
   inspector_->setText(tr("Move the cursor over an image to inspect its pixels."));
   QFont mono = inspector_->font();
   mono.setStyleHint(QFont::Monospace);

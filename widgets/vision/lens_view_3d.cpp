@@ -40,6 +40,17 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kRings = 72, kSectors = 144;  // sphere patch resolution: 1.4 degrees per ring at 195 degrees
 
+// The overlays (the output camera's frustum, its image plane, the lens axis) are drawn in one flat colour, unlit, so
+// that they read the same from every side; the caller then gives each its line width or opacity.
+vtkProperty* show_unlit(vtkPolyData* data, vtkPolyDataMapper* mapper, vtkActor* actor, double r, double g, double b) {
+  mapper->SetInputData(data);
+  actor->SetMapper(mapper);
+  vtkProperty* look = actor->GetProperty();
+  look->SetColor(r, g, b);
+  look->LightingOff();
+  return look;
+}
+
 }  // namespace
 
 void set_vtk_default_surface_format() {
@@ -128,16 +139,8 @@ LensView3D::LensView3D(QWidget* parent) : QOpenGLWidget(parent), d_(std::make_un
   d_->patch_actor->GetProperty()->SetAmbient(1.0);  // show the frame's own colours, unshaded
   d_->patch_actor->GetProperty()->SetDiffuse(0.0);
   d_->patch_actor->GetProperty()->BackfaceCullingOff();
-  d_->frustum_mapper->SetInputData(d_->frustum);
-  d_->frustum_actor->SetMapper(d_->frustum_mapper);
-  d_->frustum_actor->GetProperty()->SetColor(1.0, 0.85, 0.1);
-  d_->frustum_actor->GetProperty()->SetLineWidth(2.0);
-  d_->frustum_actor->GetProperty()->LightingOff();
-  d_->plane_mapper->SetInputData(d_->plane);
-  d_->plane_actor->SetMapper(d_->plane_mapper);
-  d_->plane_actor->GetProperty()->SetColor(1.0, 0.85, 0.1);
-  d_->plane_actor->GetProperty()->SetOpacity(0.12);
-  d_->plane_actor->GetProperty()->LightingOff();
+  show_unlit(d_->frustum, d_->frustum_mapper, d_->frustum_actor, 1.0, 0.85, 0.1)->SetLineWidth(2.0);
+  show_unlit(d_->plane, d_->plane_mapper, d_->plane_actor, 1.0, 0.85, 0.1)->SetOpacity(0.12);
   d_->renderer->AddActor(d_->patch_actor);
   d_->renderer->AddActor(d_->frustum_actor);
   d_->renderer->AddActor(d_->plane_actor);
@@ -151,11 +154,7 @@ LensView3D::LensView3D(QWidget* parent) : QOpenGLWidget(parent), d_(std::make_un
     al->InsertNextCell(2, seg);
     d_->lens_axis->SetPoints(ap);
     d_->lens_axis->SetLines(al);
-    d_->lens_axis_mapper->SetInputData(d_->lens_axis);
-    d_->lens_axis_actor->SetMapper(d_->lens_axis_mapper);
-    d_->lens_axis_actor->GetProperty()->SetColor(0.75, 0.75, 0.75);
-    d_->lens_axis_actor->GetProperty()->SetLineWidth(2.0);
-    d_->lens_axis_actor->GetProperty()->LightingOff();
+    show_unlit(d_->lens_axis, d_->lens_axis_mapper, d_->lens_axis_actor, 0.75, 0.75, 0.75)->SetLineWidth(2.0);
     d_->renderer->AddActor(d_->lens_axis_actor);
   }
   d_->caption->GetTextProperty()->SetFontSize(14);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vision/reprojection_tuner.h"
 
+#include "common/file_command.h"
 #include "common/wrapping_tool_bar.h"
 #include "vision/lens/lens_limits.h"
 
@@ -10,7 +11,6 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QGuiApplication>
@@ -18,7 +18,6 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QListWidget>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSlider>
@@ -29,6 +28,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent>
 #include <cmath>
+#include <type_traits>
 
 #include <opencv2/imgproc.hpp>
 
@@ -119,38 +119,22 @@ void ReprojectionTuner::build_ui() {
   bar->addSeparator();
   bar->addAction(tr("Load lens…"), this,
                  [this] {
-                   const QString path =
-                       QFileDialog::getOpenFileName(this, tr("Load lens"), {}, tr("Lens JSON (*.json)"));
-                   if (path.isEmpty()) return;
-                   try {
-                     load_json(path);
-                   } catch (const std::exception& e) {
-                     QMessageBox::warning(this, tr("Load lens"), QString::fromStdString(e.what()));
-                   }
+                   run_file_command(this, {FileCommand::Open, tr("Load lens"), {}, tr("Lens JSON (*.json)")},
+                                    [this](const QString& path) { load_json(path); });
                  })
       ->setToolTip(tr("Load a BenchScope lens JSON (lens, view and masks)"));
   bar->addAction(tr("Save lens…"), this,
                  [this] {
-                   const QString path =
-                       QFileDialog::getSaveFileName(this, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)"));
-                   if (path.isEmpty()) return;
-                   try {
-                     save_json(path);
-                   } catch (const std::exception& e) {
-                     QMessageBox::warning(this, tr("Save lens"), QString::fromStdString(e.what()));
-                   }
+                   run_file_command(this, {FileCommand::Save, tr("Save lens"), "lens.json", tr("Lens JSON (*.json)")},
+                                    [this](const QString& path) { save_json(path); });
                  })
       ->setToolTip(tr("Save lens, view and masks as JSON"));
   bar->addAction(tr("Export LUT…"), this,
                  [this] {
-                   const QString path = QFileDialog::getSaveFileName(this, tr("Export lookup table"), "view.bslut",
-                                                                     tr("BenchScope LUT (*.bslut)"));
-                   if (path.isEmpty()) return;
-                   try {
-                     export_lut(path);
-                   } catch (const std::exception& e) {
-                     QMessageBox::warning(this, tr("Export LUT"), QString::fromStdString(e.what()));
-                   }
+                   run_file_command(this,
+                                    {FileCommand::Save, tr("Export lookup table"), "view.bslut",
+                                     tr("BenchScope LUT (*.bslut)"), tr("Export LUT")},
+                                    [this](const QString& path) { export_lut(path); });
                  })
       ->setToolTip(tr("Write the exact lookup table (float32 source x, y per output pixel; docs/lut-format.md)"));
   bar->addSeparator();
@@ -247,6 +231,13 @@ QWidget* ReprojectionTuner::build_controls() {
 
   auto* lens_box = new QGroupBox(tr("Lens"));
   auto* lf = new QFormLayout(lens_box);
+  // Each value a field takes is one change of the parameters, named after the field (a run of them is one undo step);
+  // none while the fields are being set from the parameters (syncing_).
+  const auto edits = [this](auto* field, const std::string& name, auto set) {
+    connect(field, &std::remove_pointer_t<decltype(field)>::valueChanged, this, [this, name, set](auto v) {
+      if (!syncing_) change(name, [set, v](vision::TunerParams& p) { set(p, v); });
+    });
+  };
   model_ = new QComboBox;
   for (int i = 0; i < 6; ++i)
     model_->addItem(QString::fromUtf8(vision::to_string(static_cast<vision::LensType>(i)).data()));
@@ -273,29 +264,21 @@ QWidget* ReprojectionTuner::build_controls() {
     k_[i] =
         spin(-10, 10, 6, 0.001, {},
              tr("Kannala-Brandt k%1 (dimensionless): θ_d = θ(1 + k1θ² + k2θ⁴ + k3θ⁶ + k4θ⁸), θ in radians").arg(i + 1));
-    connect(k_[i], &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
-      if (!syncing_)
-        change("k" + std::to_string(i + 1), [i, v](auto& p) { p.lens.k[static_cast<std::size_t>(i)] = v; });
-    });
+    edits(k_[i], "k" + std::to_string(i + 1),
+          [i](vision::TunerParams& p, double v) { p.lens.k[static_cast<std::size_t>(i)] = v; });
     lf->addRow(tr("k%1").arg(i + 1), k_[i]);
   }
   cx_ = spin(-1, 100000, 2, 0.5, tr(" px"), tr("Principal point x in source pixels (-1: image centre)"));
   cx_->setSpecialValueText(tr("centre"));
   cy_ = spin(-1, 100000, 2, 0.5, tr(" px"), tr("Principal point y in source pixels, rows down (-1: image centre)"));
   cy_->setSpecialValueText(tr("centre"));
-  connect(cx_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-    if (!syncing_) change("cx", [v](auto& p) { p.lens.cx = v; });
-  });
-  connect(cy_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-    if (!syncing_) change("cy", [v](auto& p) { p.lens.cy = v; });
-  });
+  edits(cx_, "cx", [](vision::TunerParams& p, double v) { p.lens.cx = v; });
+  edits(cy_, "cy", [](vision::TunerParams& p, double v) { p.lens.cy = v; });
   lf->addRow(tr("cx"), cx_);
   lf->addRow(tr("cy"), cy_);
   lens_fov_ = spin(1, 360, 1, 0.5, tr(" °"),
                    tr("Lens field of view in degrees: rays beyond FOV/2 off the axis are outside the image circle"));
-  connect(lens_fov_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-    if (!syncing_) change("lens_fov", [v](auto& p) { p.lens.fov_deg = v; });
-  });
+  edits(lens_fov_, "lens_fov", [](vision::TunerParams& p, double v) { p.lens.fov_deg = v; });
   lf->addRow(tr("Lens FOV"), lens_fov_);
   lay->addWidget(lens_box);
 
@@ -303,9 +286,7 @@ QWidget* ReprojectionTuner::build_controls() {
   auto* vf = new QFormLayout(view_box);
   out_fov_ =
       spin(1, 179, 1, 1, tr(" °"), tr("Output field of view in degrees across the image diagonal (paper: 150°)"));
-  connect(out_fov_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-    if (!syncing_) change("out_fov", [v](auto& p) { p.view.fov_deg = v; });
-  });
+  edits(out_fov_, "out_fov", [](vision::TunerParams& p, double v) { p.view.fov_deg = v; });
   vf->addRow(tr("FOV"), out_fov_);
   out_w_ = new QSpinBox;
   out_h_ = new QSpinBox;
@@ -316,12 +297,8 @@ QWidget* ReprojectionTuner::build_controls() {
   }
   out_w_->setToolTip(tr("Output width in pixels"));
   out_h_->setToolTip(tr("Output height in pixels"));
-  connect(out_w_, &QSpinBox::valueChanged, this, [this](int v) {
-    if (!syncing_) change("out_w", [v](auto& p) { p.view.width = v; });
-  });
-  connect(out_h_, &QSpinBox::valueChanged, this, [this](int v) {
-    if (!syncing_) change("out_h", [v](auto& p) { p.view.height = v; });
-  });
+  edits(out_w_, "out_w", [](vision::TunerParams& p, int v) { p.view.width = v; });
+  edits(out_h_, "out_h", [](vision::TunerParams& p, int v) { p.view.height = v; });
   vf->addRow(tr("Width"), out_w_);
   vf->addRow(tr("Height"), out_h_);
   const auto angle_row = [&](const QString& name, const char* field, double vision::View::*member, QSlider*& slider,
@@ -334,14 +311,9 @@ QWidget* ReprojectionTuner::build_controls() {
     slider->setPageStep(100);
     slider->setToolTip(tip);
     box = spin(-180, 180, 1, 0.5, tr(" °"), tip);
-    const std::string f = field;
-    connect(slider, &QSlider::valueChanged, this, [this, member, f](int v) {
-      if (!syncing_) change(f, [member, v](auto& p) { p.view.*member = v / 10.0; });
-    });
+    edits(slider, field, [member](vision::TunerParams& p, int v) { p.view.*member = v / 10.0; });
     connect(slider, &QSlider::sliderReleased, this, [this] { state_.end_merge(); });
-    connect(box, &QDoubleSpinBox::valueChanged, this, [this, member, f](double v) {
-      if (!syncing_) change(f, [member, v](auto& p) { p.view.*member = v; });
-    });
+    edits(box, field, [member](vision::TunerParams& p, double v) { p.view.*member = v; });
     connect(box, &QDoubleSpinBox::editingFinished, this, [this] { state_.end_merge(); });
     // The value on its own row and the slider under it across both columns: the slider keeps its length without
     // widening the panel (the Lens tab then fits a 1280 px window beside the workspace dock).
@@ -359,17 +331,27 @@ QWidget* ReprojectionTuner::build_controls() {
 
   auto* tools = new QGroupBox(tr("Masks and checks"));
   auto* tl = new QVBoxLayout(tools);
+  // The tools' buttons: a mode that takes clicks on a preview (Add mask, Measure line) toggles; the rest act once.
+  const auto mode_button = [](const QString& text, const QString& tip) {
+    auto* b = new QToolButton;
+    b->setText(text);
+    b->setCheckable(true);
+    b->setToolTip(tip);
+    return b;
+  };
+  const auto button = [this](const QString& text, const QString& tip, auto on_click) {
+    auto* b = new QPushButton(text);
+    b->setToolTip(tip);
+    connect(b, &QPushButton::clicked, this, on_click);
+    return b;
+  };
   auto* mask_row = new QHBoxLayout;
-  mask_button_ = new QToolButton;
-  mask_button_->setText(tr("Add mask"));
-  mask_button_->setCheckable(true);
-  mask_button_->setToolTip(
-      tr("Click points around an occluder (e.g. the robot's nose) on the fisheye preview; "
-         "double-click or press again to close the polygon. Masked source pixels are blanked."));
+  mask_button_ = mode_button(tr("Add mask"),
+                             tr("Click points around an occluder (e.g. the robot's nose) on the fisheye preview; "
+                                "double-click or press again to close the polygon. Masked source pixels are blanked."));
   connect(mask_button_, &QToolButton::toggled, this, [this](bool on) { set_mask_editing(on); });
-  auto* clear_masks_button = new QPushButton(tr("Clear masks"));
-  clear_masks_button->setToolTip(tr("Remove every mask polygon (undoable)"));
-  connect(clear_masks_button, &QPushButton::clicked, this, [this] { clear_masks(); });
+  auto* clear_masks_button =
+      button(tr("Clear masks"), tr("Remove every mask polygon (undoable)"), [this] { clear_masks(); });
   mask_row->addWidget(mask_button_);
   mask_row->addWidget(clear_masks_button);
   tl->addLayout(mask_row);
@@ -381,18 +363,12 @@ QWidget* ReprojectionTuner::build_controls() {
   circle_row->addRow(tr("Circle spans"), circle_fov_);
   tl->addLayout(circle_row);
   auto* line_row = new QHBoxLayout;
-  line_button_ = new QToolButton;
-  line_button_->setText(tr("Measure line"));
-  line_button_->setCheckable(true);
-  line_button_->setToolTip(
-      tr("Click 3 or more points along a line that is straight in the world, on the "
-         "reprojected preview: with the right lens they lie on a straight line"));
-  auto* next_line = new QPushButton(tr("New line"));
-  next_line->setToolTip(tr("Start another line: the next clicks belong to it"));
-  connect(next_line, &QPushButton::clicked, this, [this] { new_line(); });
-  auto* clear_line = new QPushButton(tr("Clear points"));
-  clear_line->setToolTip(tr("Remove every picked line"));
-  connect(clear_line, &QPushButton::clicked, this, [this] { clear_line_points(); });
+  line_button_ =
+      mode_button(tr("Measure line"), tr("Click 3 or more points along a line that is straight in the world, on the "
+                                         "reprojected preview: with the right lens they lie on a straight line"));
+  auto* next_line =
+      button(tr("New line"), tr("Start another line: the next clicks belong to it"), [this] { new_line(); });
+  auto* clear_line = button(tr("Clear points"), tr("Remove every picked line"), [this] { clear_line_points(); });
   line_row->addWidget(line_button_);
   line_row->addWidget(next_line);
   line_row->addWidget(clear_line);
@@ -402,18 +378,18 @@ QWidget* ReprojectionTuner::build_controls() {
   line_label_->setToolTip(tr("RMS and largest perpendicular distance in output pixels from the best-fit line"));
   tl->addWidget(line_label_);
   auto* propose_row = new QHBoxLayout;
-  propose_button_ = new QPushButton(tr("Propose lines"));
+  propose_button_ =
+      button(tr("Propose lines"),
+             tr("Find long edges in the fisheye frame that are straight in the world under the current lens (a little "
+                "bend allowed, for a lens not yet right) and add them as lines to fit; edit them like picked lines. "
+                "One undo step (Ctrl+Shift+P)"),
+             [this] { propose_lines(); });
   propose_button_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
-  propose_button_->setToolTip(
-      tr("Find long edges in the fisheye frame that are straight in the world under the current lens (a little "
-         "bend allowed, for a lens not yet right) and add them as lines to fit; edit them like picked lines. "
-         "One undo step (Ctrl+Shift+P)"));
-  connect(propose_button_, &QPushButton::clicked, this, [this] { propose_lines(); });
-  delete_line_button_ = new QPushButton(tr("Delete line"));
-  delete_line_button_->setToolTip(
-      tr("Remove the selected line (pick it in the list, or click near it on a preview); one undo step (Del)"));
+  delete_line_button_ =
+      button(tr("Delete line"),
+             tr("Remove the selected line (pick it in the list, or click near it on a preview); one undo step (Del)"),
+             [this] { delete_selected_line(); });
   delete_line_button_->setEnabled(false);
-  connect(delete_line_button_, &QPushButton::clicked, this, [this] { delete_selected_line(); });
   // Del only while the focus is in the tuner: the workspace tree beside it takes Del for its own removals.
   auto* delete_key = new QAction(this);
   delete_key->setShortcut(QKeySequence::Delete);
@@ -433,41 +409,32 @@ QWidget* ReprojectionTuner::build_controls() {
   });
   tl->addWidget(lines_list_);
   auto* fit_row = new QHBoxLayout;
-  auto* fit_button = new QPushButton(tr("Fit lens to lines"));
-  fit_button->setToolTip(
-      tr("Least-squares fit of r_pp, principal point and k1..k4 (Kannala-Brandt) that makes the "
-         "picked lines straight, keeping the image circle's rim; one undo step (Ctrl+Z)"));
-  connect(fit_button, &QPushButton::clicked, this, [this] {
-    try {
-      fit_lens_to_lines();
-    } catch (const std::exception& e) {
-      line_fit_text_ = tr("Line fit: %1").arg(QString::fromStdString(e.what()));
-      line_fit_label_->setText(line_fit_text_);
-    }
-  });
-  auto* save_lines = new QPushButton(tr("Save lines…"));
-  save_lines->setToolTip(tr("Write the picked lines (source pixels) for benchscope-cli lens refine-lines"));
-  connect(save_lines, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save lines"), "lines.json", tr("Lines JSON (*.json)"));
-    if (path.isEmpty()) return;
-    try {
-      vision::save_lines_json(state_.lines(), state_.params().lens.width, state_.params().lens.height,
-                              path.toStdString());
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Save lines"), QString::fromStdString(e.what()));
-    }
-  });
-  auto* load_lines = new QPushButton(tr("Load lines…"));
-  load_lines->setToolTip(tr("Read picked lines from a benchscope-lines JSON file (e.g. synth-frame --scene room)"));
-  connect(load_lines, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load lines"), {}, tr("Lines JSON (*.json)"));
-    if (path.isEmpty()) return;
-    try {
-      set_picked_lines(vision::load_lines_json(path.toStdString()));
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Load lines"), QString::fromStdString(e.what()));
-    }
-  });
+  auto* fit_button = button(tr("Fit lens to lines"),
+                            tr("Least-squares fit of r_pp, principal point and k1..k4 (Kannala-Brandt) that makes the "
+                               "picked lines straight, keeping the image circle's rim; one undo step (Ctrl+Z)"),
+                            [this] {
+                              try {
+                                fit_lens_to_lines();
+                              } catch (const std::exception& e) {
+                                line_fit_text_ = tr("Line fit: %1").arg(QString::fromStdString(e.what()));
+                                line_fit_label_->setText(line_fit_text_);
+                              }
+                            });
+  auto* save_lines = button(
+      tr("Save lines…"), tr("Write the picked lines (source pixels) for benchscope-cli lens refine-lines"), [this] {
+        run_file_command(this, {FileCommand::Save, tr("Save lines"), "lines.json", tr("Lines JSON (*.json)")},
+                         [this](const QString& path) {
+                           vision::save_lines_json(state_.lines(), state_.params().lens.width,
+                                                   state_.params().lens.height, path.toStdString());
+                         });
+      });
+  auto* load_lines =
+      button(tr("Load lines…"),
+             tr("Read picked lines from a benchscope-lines JSON file (e.g. synth-frame --scene room)"), [this] {
+               run_file_command(
+                   this, {FileCommand::Open, tr("Load lines"), {}, tr("Lines JSON (*.json)")},
+                   [this](const QString& path) { set_picked_lines(vision::load_lines_json(path.toStdString())); });
+             });
   fit_centre_ = new QCheckBox(tr("centre"));
   fit_centre_->setChecked(true);
   fit_centre_->setToolTip(

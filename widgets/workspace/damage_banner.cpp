@@ -5,15 +5,16 @@
 #include <QLabel>
 #include <QPushButton>
 
+#include "common/reading_label.h"
+
 namespace bs::ui {
 
-DamageBanner::DamageBanner(QWidget* parent) : QFrame(parent), label_(new QLabel(this)), remove_(new QPushButton(this)) {
+DamageBanner::DamageBanner(QWidget* parent)
+    : QFrame(parent), label_(reading_label(this)), remove_(new QPushButton(this)) {
   setObjectName(QStringLiteral("damageBanner"));
   setFrameShape(QFrame::StyledPanel);
   // A warning colour that reads on light and dark themes alike (text stays the palette's).
   setStyleSheet(QStringLiteral("#damageBanner { background: rgba(230, 160, 0, 60); border: 1px solid #c08000; }"));
-  label_->setWordWrap(true);
-  label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   remove_->setText(tr("Remove damaged items…"));
   remove_->setToolTip(
       tr("Delete the damaged items listed here (after a confirmation); the workspace becomes "
