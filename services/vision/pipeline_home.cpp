@@ -8,12 +8,9 @@
 namespace bs {
 
 HomeBatch pipeline_home(const PipelineRun& run, const std::optional<PowerTrace>& power, const std::string& where) {
-  HomeBatch out;
-  out.batch.source_path = home_name(where, run.platform, run.provenance.date);
-  out.batch.format = std::string(kPipelineJsonFormat);
+  HomeBatch out = measured_home(home_name(where, run.platform, run.provenance.date), std::string(kPipelineJsonFormat),
+                                power, write_pipeline_json(run));
   out.batch.pipeline_runs = {run};
-  if (power) out.batch.power_traces.push_back(*power);
-  out.content_hash = content_hash(write_pipeline_json(run));
   return out;
 }
 

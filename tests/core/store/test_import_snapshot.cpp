@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "../../support/headroom_samples.h"
-#include "../../support/run_on.h"
+#include "../../support/sample_records.h"
 #include "headroom/headroom_json.h"
 #include "store/import_snapshot.h"
 #include "workspace_test_support.h"
@@ -71,13 +71,7 @@ class TestImportSnapshot : public QObject {
     ImportBatch batch;
     batch.source_path = "robot job";
     batch.format = "benchscope-headroom-v1";
-    auto dnn = bs::test::run_on<bs::DnnRun>("robot", "CPU", "cpu");
-    dnn.model = "mobilenet-ssd";
-    dnn.input_width = dnn.input_height = 300;
-    dnn.batch = 1;
-    dnn.forward = {"inference", 5, 0.02, 0.001, 0.019, 0.022, 0.02, 0.021};
-    dnn.provenance.origin = DataOrigin::Measured;
-    batch.dnn_runs.push_back(dnn);
+    batch.dnn_runs.push_back(bs::test::sample_inference_run("robot"));
     batch.headroom.push_back(
         loop_measurement("robot", {{"idle", loop_thread(500, 40)}, {"pipeline@30fps", loop_thread(500, 60, {1500})}}));
     const std::int64_t id = ws.add_import(batch, "hash-h");

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "../../support/headroom_samples.h"
+#include "../../support/sample_records.h"
 #include "remote/job_import.h"
 #include "store/import_snapshot.h"
 #include "store/record_kinds.h"
@@ -44,24 +45,9 @@ ImportBatch one_of_each_kind() {
   pipe.backend = "cpu";
   pipe.stages = {{"preprocess", 3, 0.01, 0.001, 0.009, 0.012, 0.01, 0.011}};
   b.pipeline_runs.push_back(pipe);
-  DnnRun dnn;
-  dnn.platform = "NUC";
-  dnn.device = "CPU";
-  dnn.backend = "cpu";
-  dnn.model = "mobilenet-ssd";
-  dnn.input_width = dnn.input_height = 300;
-  dnn.forward = {"inference", 5, 0.02, 0.001, 0.019, 0.022, 0.02, 0.021};
-  b.dnn_runs.push_back(dnn);
+  b.dnn_runs.push_back(sample_inference_run("NUC"));
   b.headroom.push_back(loop_measurement("NUC", {{"idle", loop_thread(200, 40)}}));
-  SustainRun sustained;
-  sustained.platform = "NUC";
-  sustained.label = "flops for 2 s";
-  sustained.load = "flops";
-  sustained.rate_unit = "GFLOPS";
-  sustained.interval_s = 1;
-  sustained.t_s = {1, 2};
-  sustained.rate = {10, 9};
-  b.sustain_runs.push_back(sustained);
+  b.sustain_runs.push_back(sample_sustained_run("NUC"));
   return b;
 }
 

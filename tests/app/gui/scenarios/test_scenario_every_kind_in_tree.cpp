@@ -13,6 +13,7 @@
 #include <QTest>
 #include <QTreeView>
 
+#include "../../../support/sample_records.h"
 #include "../../../support/scenario_window.h"
 #include "platform/inference_table.h"
 #include "store/home_batch.h"
@@ -24,35 +25,6 @@
 namespace {
 
 using Kind = bs::ui::TreeItemRef::Kind;
-
-bs::SustainRun two_second_run() {
-  bs::SustainRun r;
-  r.platform = "NUC";
-  r.label = "flops for 2 s";
-  r.load = "flops";
-  r.rate_unit = "GFLOPS";
-  r.interval_s = 1;
-  r.t_s = {1, 2};
-  r.rate = {50, 49};
-  r.provenance.origin = bs::DataOrigin::Measured;
-  r.provenance.tool = "benchscope-cli sustain";
-  r.provenance.date = "2026-12-07T06:00:00Z";
-  return r;
-}
-
-bs::DnnRun one_inference_run() {
-  bs::DnnRun d;
-  d.platform = "NUC";
-  d.device = "NUC CPU";
-  d.backend = "cpu";
-  d.model = "mobilenet-ssd";
-  d.input_width = d.input_height = 300;
-  d.forward = {"inference", 5, 0.02, 0.001, 0.019, 0.022, 0.02, 0.021};
-  d.provenance.origin = bs::DataOrigin::Measured;
-  d.provenance.tool = "benchscope-cli bench dnn";
-  d.provenance.date = "2026-12-07T06:00:00Z";
-  return d;
-}
 
 // The tree's section of `kind` (a top-level row titled "Sustained runs (1)" ...), or null when it has none.
 QStandardItem* section_of(bs::ui::WorkspaceTree& tree, Kind kind) {
@@ -87,9 +59,10 @@ class TestScenarioEveryKindInTree : public QObject {
     QTemporaryDir dir;
     const QString ws = bs::test::paper_workspace(dir);
     QVERIFY(!ws.isEmpty());
-    bs::bring_home(ws.toStdString(),
-                   bs::sustain::sustain_import(two_second_run(), std::nullopt, "benchscope-cli sustain"));
-    bs::bring_home(ws.toStdString(), bs::dnn_home({one_inference_run()}, std::nullopt, "benchscope-cli bench dnn"));
+    bs::bring_home(ws.toStdString(), bs::sustain::sustain_import(bs::test::sample_sustained_run("NUC", 50, 49),
+                                                                 std::nullopt, "benchscope-cli sustain"));
+    bs::bring_home(ws.toStdString(), bs::dnn_home({bs::test::sample_inference_run("NUC", "NUC CPU")}, std::nullopt,
+                                                  "benchscope-cli bench dnn"));
 
     bs::ui::MainWindow w;
     QVERIFY(w.open_workspace(ws));
