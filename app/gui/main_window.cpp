@@ -305,7 +305,7 @@ void MainWindow::reload() {
     std::int64_t id = kFirstForeignSweepId;
     for (const StoredResultSet& s : workspace_->result_sets())
       for (FlopsRun& run : foreign_sweeps(s.set))
-        runs_.push_back(StoredRun{id--, s.import_id, s.device_id, s.color_index, std::move(run)});
+        runs_.push_back(StoredRun{{{id--, s.import_id}, s.device_id, s.color_index}, std::move(run)});
   }
   run_labels_ = workspace_ ? run_labels(*workspace_, runs_) : std::map<std::int64_t, std::string>{};
   tree_->set_runs(runs_, run_labels_);
@@ -468,7 +468,7 @@ void MainWindow::show_live_run(const FlopsRun& run) {
       if (d.platform == run.platform && d.device == run.device) color = d.color_index;
   auto it = std::find_if(live_.begin(), live_.end(), [&](const StoredRun& s) { return s.run.dims == run.dims; });
   if (it == live_.end())
-    it = live_.insert(live_.end(), StoredRun{-1 - static_cast<qint64>(live_.size()), 0, 0, color, {}});
+    it = live_.insert(live_.end(), StoredRun{{{-1 - static_cast<qint64>(live_.size()), 0}, 0, color}, {}});
   it->run = run;
   refresh_views();
 }

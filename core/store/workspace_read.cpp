@@ -78,7 +78,8 @@ std::vector<Stored> read_import_rows(const Workspace::Impl& w, const store::Tabl
   std::vector<Stored> out;
   store::read_rows(w.conn(), table, w.limits, order, [&](Row<Item>&& r) {
     if (r.flaw) return w.record({item(r.id, r.value), table.name, r.id, r.flaw->category, where(*r.flaw)});
-    out.push_back({r.id, r.keys[0], std::move(r.value)});
+    // Each base in its own braces: clang's -Wmissing-braces (the sanitizer build, -Werror) refuses the flat form.
+    out.push_back({{r.id, r.keys[0]}, std::move(r.value)});
   });
   return out;
 }
@@ -163,7 +164,7 @@ std::vector<Stored> read_device_rows(const Workspace::Impl& w, const std::map<st
     if (r.flaw) return w.record({item(r.id, r.value), table.name, r.id, r.flaw->category, where(*r.flaw)});
     if (w.is_damaged(table.name, r.id)) return;
     index[r.id] = out.size();
-    out.push_back({r.id, r.keys[0], r.keys[1], devices.at(r.keys[1]).color_index, std::move(r.value)});
+    out.push_back({{{r.id, r.keys[0]}, r.keys[1], devices.at(r.keys[1]).color_index}, std::move(r.value)});
   });
   return out;
 }
