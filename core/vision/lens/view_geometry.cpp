@@ -36,10 +36,10 @@ std::optional<cv::Point2d> output_of(const Lens& lens, const View& view, double 
   return cv::Point2d(x, y);
 }
 
-std::optional<ImageCircle> image_circle(const Lens& lens) {
+std::optional<LensCircle> image_circle(const Lens& lens) {
   const auto r = lens.radius(rad(lens.fov_deg) / 2);
   if (!r) return std::nullopt;
-  return ImageCircle{lens.centre(), *r};
+  return LensCircle{lens.centre(), *r};
 }
 
 std::vector<cv::Point2d> view_outline(const Lens& lens, const View& view, int per_edge) {

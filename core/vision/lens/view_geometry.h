@@ -17,12 +17,14 @@ namespace bs::vision {
 // source_of(output_of(p)) == p up to the numerical inversion of the lens model (~1e-9 px).
 std::optional<cv::Point2d> output_of(const Lens& lens, const View& view, double fx, double fy);
 
-// The image circle: centre and radius (pixels) of the lens's field of view, fov_deg / 2 off the axis.
-struct ImageCircle {
+// The image circle the lens model predicts: centre and radius (pixels) of its field of view, fov_deg / 2 off the
+// axis. Named apart from circle_detect.h's ImageCircle (the circle found in a frame): two structs of one name in
+// one namespace are one type to the linker (an ODR violation UBSan caught as a garbage bool).
+struct LensCircle {
   cv::Point2d centre;
   double radius = 0;
 };
-std::optional<ImageCircle> image_circle(const Lens& lens);
+std::optional<LensCircle> image_circle(const Lens& lens);
 
 // The border of the output image mapped into the fisheye image: a closed polyline, `per_edge` points per edge,
 // leaving out border points that have no source (outside the lens's field of view).
