@@ -2,12 +2,15 @@
 // The main of a subject room's test program (tests/CMakeLists.txt): `tests_core_store test_workspace [Qt Test
 // arguments]` runs the test registered as "test_workspace" (tests/support/test_registration.h), with argv[0] set to
 // the test's name so that its application name, and so its QSettings file, is its own as when every test was a
-// program of its own (two tests of one program may run at the same time under ctest -j).
+// program of its own (two tests of one program may run at the same time under ctest -j). Every test's settings
+// belong to the organisation "BenchScopeTest", set here once: never a person's BenchScope settings.
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <QCoreApplication>
 
 #include "test_registration.h"
 
@@ -45,5 +48,6 @@ int main(int argc, char** argv) {
   std::vector<char*> args{self.data()};
   for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
   args.push_back(nullptr);
+  QCoreApplication::setOrganizationName(QStringLiteral("BenchScopeTest"));
   return found->second(static_cast<int>(args.size()) - 1, args.data());
 }

@@ -38,8 +38,6 @@ class TestDamageBanner : public QObject {
 
  private slots:
   void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_damage_banner");
     base_ = dir_.filePath("paper.bsw");
     {
       bs::ui::MainWindow w;  // closed at the end of the scope, so the file is complete without its WAL

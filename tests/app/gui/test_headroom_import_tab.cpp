@@ -42,11 +42,7 @@ int column_of(const QTableWidget* t, const QString& header) {
 class TestHeadroomImportTab : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_headroom_import_tab");
-    QSettings().clear();
-  }
+  void initTestCase() { QSettings().clear(); }  // each run starts as a fresh machine: nothing remembered
 
   void dropped_files_appear_in_the_headroom_tab() {
     QTemporaryDir dir;

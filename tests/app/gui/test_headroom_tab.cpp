@@ -29,11 +29,7 @@
 class TestHeadroomTab : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_headroom_tab");
-    QSettings().clear();
-  }
+  void initTestCase() { QSettings().clear(); }  // each run starts as a fresh machine: nothing remembered
 
   void run_store_show_export_cancel() {
     QTemporaryDir dir;

@@ -36,11 +36,6 @@
 class TestMainWindow : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_main_window");
-  }
-
   void opens_sample_data_and_plots_every_run() {
     QTemporaryDir dir;
     const QString ws = dir.filePath("paper.bsw");

@@ -60,11 +60,6 @@ QString banner(const MainWindow& w) { return w.frames_view()->triptych()->banner
 class TestMainWindowKeeps : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_main_window_keeps");
-  }
-
   void lens_survives_save_and_reopen() {
     QTemporaryDir dir;
     QVERIFY(write_second_capture(dir.path()));

@@ -103,11 +103,6 @@ std::string setting(const bs::Provenance& p, const std::string& key) {
 class TestRemoteGui : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_remote_gui");
-  }
-
   void sweep_on_a_robot_is_plotted_live_and_imported() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;

@@ -37,8 +37,6 @@ class TestScenarioExports : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_scenario_exports");
     QSettings().clear();  // the export dialog's remembered choices from an earlier run
     if (QStandardPaths::findExecutable("pdftotext").isEmpty())
       QSKIP("pdftotext (poppler-utils) is needed to read the exported figures back");

@@ -47,8 +47,6 @@ class TestScenarioHeadroomExport : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_scenario_headroom_export");
     QSettings().clear();  // the export dialog's remembered choices from an earlier run
     if (QStandardPaths::findExecutable("pdftotext").isEmpty())
       QSKIP("pdftotext (poppler-utils) is needed to read the exported figure back");

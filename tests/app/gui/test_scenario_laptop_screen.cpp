@@ -83,8 +83,6 @@ class TestScenarioLaptopScreen : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_scenario_laptop_screen");
     QCOMPARE(QGuiApplication::primaryScreen()->geometry(), QRect(0, 0, kScreenW, kScreenH));
   }
   void init() { QSettings().clear(); }  // each function starts as a fresh machine: no remembered layout

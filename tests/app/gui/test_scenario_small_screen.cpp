@@ -151,8 +151,6 @@ class TestScenarioSmallScreen : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_scenario_small_screen");
     QSettings().clear();
     QCOMPARE(QGuiApplication::primaryScreen()->geometry(), QRect(0, 0, kScreenW, kScreenH));
   }

@@ -18,11 +18,6 @@
 class TestKernelRunner : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_kernel_runner");
-  }
-
   void sweep_fills_the_plot_and_lands_in_the_workspace() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;

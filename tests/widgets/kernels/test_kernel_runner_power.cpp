@@ -63,8 +63,6 @@ class TestKernelRunnerPower : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QCoreApplication::setOrganizationName("BenchScopeTest");
-    QCoreApplication::setApplicationName("test_kernel_runner");
     qputenv("BENCHSCOPE_NVML_LIBRARY", "none");  // the fixture's sensors only, whatever GPU this machine has
   }
 

@@ -15,7 +15,6 @@
 #include <QTest>
 
 #include "../../support/run_on.h"
-#include "../../support/test_settings.h"
 #include "analysis/platform/pipeline_table.h"
 #include "vision/pipeline/pipeline.h"
 #include "vision/pipeline_measure_panel.h"
@@ -46,7 +45,7 @@ class TestPipelineView : public QObject {
  private slots:
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);  // QSettings in a test location, not the user's
-    bs::test::use_fresh_test_settings("test_pipeline_view");
+    QSettings().clear();  // each run starts as a fresh machine: nothing remembered
   }
 
   void paper_table() {

@@ -9,7 +9,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "../../support/test_settings.h"
 #include "store/workspace.h"
 #include "vision/raw_geometry_dialog.h"
 #include "workspace/import_controller.h"
@@ -17,7 +16,7 @@
 class TestRawGeometryDialog : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() { bs::test::use_fresh_test_settings("test_raw_geometry_dialog"); }
+  void initTestCase() { QSettings().clear(); }  // each run starts as a fresh machine: nothing remembered
 
   void checks_size_remembers_and_imports() {
     QTemporaryDir dir;
