@@ -104,6 +104,16 @@ inline QStringList words_past(const PdfPage& page, double right_pt) {
   return out;
 }
 
+// What a person would see wrong in an exported figure's page: words printed over each other and words cut at the
+// figure's edge, each said in a sentence.
+inline QStringList figure_layout_problems(const PdfPage& page) {
+  QStringList out;
+  for (const QString& p : overprinted_words(page)) out << QStringLiteral("words print over each other: %1").arg(p);
+  for (const QString& p : words_past(page, page.size.width()))
+    out << QStringLiteral("a word runs past the figure's edge: %1").arg(p);
+  return out;
+}
+
 // Page `page` (1-based) rendered at `dpi` as an image (pdftoppm), for pixel checks and for looking at it.
 inline QImage pdf_page_image(const QString& pdf, int page, int dpi, const QString& png_stem) {
   run_tool("pdftoppm", {"-f", QString::number(page), "-l", QString::number(page), "-r", QString::number(dpi), "-png",

@@ -74,6 +74,20 @@ inline bool wait_until(const std::function<bool()>& done, int polls = 1500) {
   return done();
 }
 
+// Clicks a combo box open and picks the entry below the current one with the keyboard, as a person does. The keys go
+// to the open list itself (it has the keyboard while open): key() would first try to make it the active window,
+// which a popup never becomes, and under load the list could close meanwhile. Returns an empty string, or what went
+// wrong.
+inline QString pick_next_entry(QComboBox* box) {
+  click(box);
+  if (!wait_until([] { return QApplication::activePopupWidget() != nullptr; }, 100)) return "the list did not open";
+  const QPointer<QWidget> list = QApplication::activePopupWidget();
+  QTest::keyClick(list->windowHandle(), Qt::Key_Down);
+  if (!list || !list->isVisible()) return "the list closed before the person picked";
+  QTest::keyClick(list->windowHandle(), Qt::Key_Return);
+  return {};
+}
+
 // The button of `dialog` whose text (without '&') is `text`, or of the standard kind `which`.
 inline QAbstractButton* button(QWidget* dialog, const QString& text) {
   for (QAbstractButton* b : dialog->findChildren<QAbstractButton*>())

@@ -16,8 +16,7 @@ namespace {
 using Result = bs::test::CliResult;
 using bs::test::bytes_of;
 using bs::test::cli;
-
-const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
+using bs::test::kPaper;
 
 // Finds the peak row for (device, backend, dims); fails the test when absent.
 QJsonObject row(const QJsonArray& rows, const QString& device, const QString& backend, int dims) {

@@ -138,25 +138,6 @@ class TestMainWindow : public QObject {
     QVERIFY(view->table()->item(0, 1)->text() != "1,200");
   }
 
-  void every_tab_fits_a_1280x800_window() {
-    QTemporaryDir dir;
-    bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(dir.filePath("w.bsw")));
-    w.import_paths_now({BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018"});
-    w.resize(1280, 800);
-    w.show();
-    auto* tabs = qobject_cast<QTabWidget*>(w.centralWidget());
-    QVERIFY(tabs);
-    for (int i = 0; i < tabs->count(); ++i) {
-      tabs->setCurrentIndex(i);
-      QCoreApplication::processEvents();
-      // The window's minimum (docks + the tab page in front) must leave it resizable to 1280 px.
-      QVERIFY2(w.minimumSizeHint().width() <= 1280,
-               qPrintable(QString("%1: window needs %2 px").arg(tabs->tabText(i)).arg(w.minimumSizeHint().width())));
-      QVERIFY2(w.width() <= 1280, qPrintable(tabs->tabText(i)));
-    }
-  }
-
   void tree_lists_every_kind_and_edits_are_undoable() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;

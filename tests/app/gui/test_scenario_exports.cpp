@@ -99,10 +99,8 @@ class TestScenarioExports : public QObject {
         if (!text.contains(peak)) problems << QStringLiteral("%1: the peak '%2' is not in the figure").arg(tab, peak);
       const auto pages = bs::test::pdf_words(stem + ".pdf");
       QCOMPARE(pages.size(), std::size_t{1});
-      for (const QString& p : bs::test::overprinted_words(pages.front()))
-        problems << QStringLiteral("%1: words print over each other: %2").arg(tab, p);
-      for (const QString& p : bs::test::words_past(pages.front(), pages.front().size.width()))
-        problems << QStringLiteral("%1: a word runs past the figure's edge: %2").arg(tab, p);
+      for (const QString& p : bs::test::figure_layout_problems(pages.front()))
+        problems << tab + QStringLiteral(": ") + p;
       if (tabs->currentWidget() == w.power_view() || tabs->currentWidget()->isAncestorOf(w.power_view())) {
         if (const double upper = w.power_view()->plot()->xAxis->range().upper; upper > 130)
           problems << QStringLiteral("Power: the view's time axis runs to %1 s for the 120 s current logs").arg(upper);

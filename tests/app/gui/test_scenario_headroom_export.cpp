@@ -93,10 +93,7 @@ class TestScenarioHeadroomExport : public QObject {
     if (!in_pdf(title_text)) problems << QStringLiteral("the title '%1' is not whole in the figure").arg(title_text);
     const auto pages = bs::test::pdf_words(stem + ".pdf");
     QCOMPARE(pages.size(), std::size_t{1});
-    for (const QString& p : bs::test::overprinted_words(pages.front()))
-      problems << QStringLiteral("words print over each other: %1").arg(p);
-    for (const QString& p : bs::test::words_past(pages.front(), pages.front().size.width()))
-      problems << QStringLiteral("a word runs past the figure's edge: %1").arg(p);
+    problems << bs::test::figure_layout_problems(pages.front());
 
     // The export's own layout at the same width: the legend under the axes (off the data), the label inside them.
     bs::ui::ExportFigureDialog options(bs::ui::ExportFigureDialog::Target::FileStem, stem);

@@ -21,8 +21,7 @@
 namespace {
 
 using bs::test::cli;
-
-const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
+using bs::test::kPaper;
 
 // cycles == sum of the sparse [bin, count] pairs + overflows, for one thread of the --json document.
 bool books_hold(const QJsonObject& thread) {

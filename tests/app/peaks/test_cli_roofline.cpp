@@ -8,13 +8,7 @@
 
 #include "../../support/cli_harness.h"
 
-namespace {
-
-using bs::test::run_cli;
-
-const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
-
-}  // namespace
+using namespace bs::test;  // the CLI harness (run_cli, kPaper) and the readers of its output
 
 class TestCliRoofline : public QObject {
   Q_OBJECT

@@ -13,8 +13,7 @@
 namespace {
 
 using bs::test::cli;
-
-const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
+using bs::test::kPaper;
 
 // The id of the run listed on the line that holds `device` and `backend` with D = `dims` ("" when none).
 QString run_id(const QByteArray& listing, const QString& device, const QString& backend, int dims) {

@@ -10,20 +10,9 @@
 #include <QTest>
 
 #include "../../support/cli_harness.h"
+#include "../../support/platforms_json.h"
 
-namespace {
-
-using bs::test::run_cli;
-
-const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
-
-QString recommended(const QByteArray& json) {
-  for (const auto v : QJsonDocument::fromJson(json).object()["platforms"].toArray())
-    if (v.toObject()["recommended"].toBool()) return v.toObject()["platform"].toString();
-  return {};
-}
-
-}  // namespace
+using namespace bs::test;  // the CLI harness (run_cli, kPaper) and the readers of its output
 
 class TestCliSustained : public QObject {
   Q_OBJECT

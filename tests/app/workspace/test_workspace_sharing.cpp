@@ -27,9 +27,10 @@
 
 namespace {
 
+using bs::test::kPaper;
+
 const QString kHolder = BENCHSCOPE_BINARY_DIR "/tests/app/workspace_holder";
 const QString kTemplate = BENCHSCOPE_SOURCE_DIR "/tests/data/importers/run-json/two-runs.json";
-const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
 // Each round starts two processes; under ASan that is ~5 s a round on a 2-core machine, and 20 rounds already kill
 // the holder after every number of edits the draw can give (1-14).
 constexpr int kRounds = 20;

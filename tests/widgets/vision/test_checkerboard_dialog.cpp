@@ -12,6 +12,7 @@
 #include <QToolBar>
 #include <cmath>
 
+#include "../../support/checkerboard_lens.h"
 #include "image_files/image_files.h"
 #include "vision/checkerboard_dialog.h"
 #include "vision/frames/synthetic_checkerboard.h"
@@ -22,19 +23,8 @@ using namespace bs;
 
 namespace {
 
-// A 190 degree Kannala-Brandt lens on a 640x512 sensor.
-vision::Lens truth_lens() {
-  vision::Lens l;
-  l.type = vision::LensType::KannalaBrandt;
-  l.width = 640;
-  l.height = 512;
-  l.r_pp = 1.0 / 180;
-  l.k = {0.02, -0.004, 0.0005, 0};
-  l.cx = 322.4;
-  l.cy = 254.1;
-  l.fov_deg = 190;
-  return l;
-}
+// The lens on a 640x512 sensor.
+vision::Lens truth_lens() { return bs::test::checkerboard_truth_lens(640, 512, 322.4, 254.1); }
 
 // Writes nine views of a 10x7 board (30 mm squares) and a blank frame; returns their paths.
 QStringList write_views(const QTemporaryDir& dir) {

@@ -75,12 +75,8 @@ class TestScenarioEfficiencyPlatforms : public QObject {
     auto* choice = bs::test::field<QComboBox>(tab, "Power log of Jetson TX2:");
     QVERIFY2(choice, "the Efficiency tab offers no choice of the Jetson TX2's two logs");
     QCOMPARE(choice->currentText(), QString("jetson-current.csv"));
-    bs::test::click(choice);
-    QVERIFY(bs::test::wait_until([] { return QApplication::activePopupWidget() != nullptr; }, 100));
-    const QPointer<QWidget> list = QApplication::activePopupWidget();
-    QTest::keyClick(list->windowHandle(), Qt::Key_Down);
-    QVERIFY2(list && list->isVisible(), "the list closed before the person picked");
-    QTest::keyClick(list->windowHandle(), Qt::Key_Return);
+    const QString picked = bs::test::pick_next_entry(choice);
+    QVERIFY2(picked.isEmpty(), qPrintable(picked));
     QVERIFY(bs::test::wait_until(
         [&] {
           auto* c = bs::test::field<QComboBox>(bs::test::window_tabs(w)->currentWidget(), "Power log of Jetson TX2:");

@@ -174,10 +174,7 @@ class TestScenarioSustained : public QObject {
       if (!text.contains(s.simplified())) problems << QStringLiteral("'%1' is not in the figure").arg(s);
     const auto pages = bs::test::pdf_words(stem + ".pdf");
     QCOMPARE(pages.size(), std::size_t{1});
-    for (const QString& p : bs::test::overprinted_words(pages.front()))
-      problems << QStringLiteral("words print over each other: %1").arg(p);
-    for (const QString& p : bs::test::words_past(pages.front(), pages.front().size.width()))
-      problems << QStringLiteral("a word runs past the figure's edge: %1").arg(p);
+    problems << bs::test::figure_layout_problems(pages.front());
     for (const QString& p : problems) qWarning("%s", qPrintable(p));
     QVERIFY2(problems.isEmpty(), qPrintable(problems.value(0)));
   }

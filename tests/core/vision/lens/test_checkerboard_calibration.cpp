@@ -10,6 +10,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "../../../support/checkerboard_lens.h"
 #include "vision/frames/synthetic_checkerboard.h"
 #include "vision/lens/checkerboard_calibration.h"
 #include "vision/lens/fisheye_opencv.h"
@@ -20,19 +21,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A 190 degree Kannala-Brandt lens on a 1280x1024 sensor, its principal point off the centre.
-Lens truth_lens() {
-  Lens l;
-  l.type = LensType::KannalaBrandt;
-  l.width = 1280;
-  l.height = 1024;
-  l.r_pp = 1.0 / 360;
-  l.k = {0.02, -0.004, 0.0005, 0};
-  l.cx = 645.3;
-  l.cy = 508.7;
-  l.fov_deg = 190;
-  return l;
-}
+// The lens on a 1280x1024 sensor, its principal point off the centre.
+Lens truth_lens() { return bs::test::checkerboard_truth_lens(1280, 1024, 645.3, 508.7); }
 
 // Thirteen views: straight ahead, tilted, rolled, and swung out to 45-70 degrees off the axis in every direction.
 std::vector<BoardPose> truth_poses() {
