@@ -74,6 +74,14 @@ inline bool wait_until(const std::function<bool()>& done, int polls = 1500) {
   return done();
 }
 
+// A scenario step done by a helper that returns "" when it worked, else what went wrong in the person's words
+// (open_paper_window, export_report, pick_next_entry): the test fails with those words.
+#define BS_STEP(step)                                                 \
+  do {                                                                \
+    const QString bs_step_problem = (step);                           \
+    QVERIFY2(bs_step_problem.isEmpty(), qPrintable(bs_step_problem)); \
+  } while (false)
+
 // Clicks a combo box open and picks the entry below the current one with the keyboard, as a person does. The keys go
 // to the open list itself (it has the keyboard while open): key() would first try to make it the active window,
 // which a popup never becomes, and under load the list could close meanwhile. Returns an empty string, or what went

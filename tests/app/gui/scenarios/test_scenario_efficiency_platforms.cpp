@@ -65,8 +65,7 @@ class TestScenarioEfficiencyPlatforms : public QObject {
   void every_platform_has_a_row_in_the_efficiency_tab() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
-    const QString opened = bs::test::open_paper_window(w, dir);
-    QVERIFY2(opened.isEmpty(), qPrintable(opened));
+    BS_STEP(bs::test::open_paper_window(w, dir));
     QVERIFY(import_log(w, "tegrastats-tx2-jetpack4.log", "Jetson TX2"));
     QVERIFY(import_log(w, "tegrastats-orin-jetpack6.log", "Jetson AGX Orin"));
 
@@ -75,8 +74,7 @@ class TestScenarioEfficiencyPlatforms : public QObject {
     auto* choice = bs::test::field<QComboBox>(tab, "Power log of Jetson TX2:");
     QVERIFY2(choice, "the Efficiency tab offers no choice of the Jetson TX2's two logs");
     QCOMPARE(choice->currentText(), QString("jetson-current.csv"));
-    const QString picked = bs::test::pick_next_entry(choice);
-    QVERIFY2(picked.isEmpty(), qPrintable(picked));
+    BS_STEP(bs::test::pick_next_entry(choice));
     QVERIFY(bs::test::wait_until(
         [&] {
           auto* c = bs::test::field<QComboBox>(bs::test::window_tabs(w)->currentWidget(), "Power log of Jetson TX2:");

@@ -42,8 +42,7 @@ class TestScenarioImportQuestion : public QObject {
   void importing_logs_with_ctrl_i_asks_each_platform_over_the_progress() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
-    const QString opened = bs::test::open_paper_window(w, dir);
-    QVERIFY2(opened.isEmpty(), qPrintable(opened));
+    BS_STEP(bs::test::open_paper_window(w, dir));
     // The person's own logs, in one folder: a meter CSV, a current-only CSV and one cut off mid-number.
     const QStringList names{"meter-no-platform.csv", "current-only.csv", "meter-cut-last-line.csv"};
     ModalAnswerer person;
@@ -71,8 +70,7 @@ class TestScenarioImportQuestion : public QObject {
   void importing_latency_files_asks_each_platform_over_the_progress() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
-    const QString opened = bs::test::open_paper_window(w, dir);
-    QVERIFY2(opened.isEmpty(), qPrintable(opened));
+    BS_STEP(bs::test::open_paper_window(w, dir));
     const QString folder = QStringLiteral(BENCHSCOPE_TEST_DATA_DIR "/headroom");
     const QStringList names{"cyclictest-2.6-H20-2thr-overflows.txt", "rttest-log-1khz-misses.txt"};
     ModalAnswerer person;

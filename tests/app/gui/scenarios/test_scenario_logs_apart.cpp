@@ -75,8 +75,7 @@ class TestScenarioLogsApart : public QObject {
   void a_phase_drawn_on_one_log_stays_on_it() {
     QTemporaryDir dir;
     bs::ui::MainWindow w;
-    const QString opened = bs::test::open_paper_window(w, dir);
-    QVERIFY2(opened.isEmpty(), qPrintable(opened));
+    BS_STEP(bs::test::open_paper_window(w, dir));
     bs::test::open_tab(w, "Power");
     bs::ui::PowerView* power = w.power_view();
     QCustomPlot* plot = power->plot();
@@ -117,11 +116,9 @@ class TestScenarioLogsApart : public QObject {
 
   void a_platforms_two_logs_are_told_apart_and_chosen() {
     QTemporaryDir dir;
-    const QString ws = bs::test::paper_workspace(dir);
-    QVERIFY(!ws.isEmpty());
     bs::ui::MainWindow w;
-    QVERIFY(w.open_workspace(ws));
-    QVERIFY(bs::test::show_at(w));
+    BS_STEP(bs::test::open_paper_window(w, dir));
+    const QString ws = QString::fromStdString(w.workspace()->path());  // opened again at the end
     {
       ModalAnswerer person;
       person.expect("Import files (file dialog)", ModalAnswerer::titled("Import files"),
@@ -152,8 +149,7 @@ class TestScenarioLogsApart : public QObject {
       return -1;
     }();
     QVERIFY(before >= 0);
-    const QString picked = bs::test::pick_next_entry(choice);  // the person picks the second session
-    QVERIFY2(picked.isEmpty(), qPrintable(picked));
+    BS_STEP(bs::test::pick_next_entry(choice));  // the person picks the second session
     QVERIFY(bs::test::wait_until(
         [&] {
           auto* c = bs::test::field<QComboBox>(bs::test::window_tabs(w)->currentWidget(), "Power log of NUC:");
