@@ -40,7 +40,6 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
       realtime_(new QCheckBox(tr("Real-time (SCHED_FIFO)"), this)),
       loads_(new QLineEdit(this)),
       command_(new QLineEdit(this)),
-      power_(new PowerSensorBox(this)),
       controls_(this, tr("Run")) {
   const QSettings s;
   rate_->setRange(headroom::kMinRateHz, headroom::kMaxRateHz);
@@ -104,13 +103,12 @@ HeadroomRunPanel::HeadroomRunPanel(QWidget* parent)
   second->addWidget(loads_, 2);
   second->addWidget(command_, 2);
   second->addWidget(new QLabel(tr("Record power:"), this));
-  second->addWidget(power_);
+  second->addWidget(controls_.power);
   layout->addLayout(second, 2, 0);
   layout->addLayout(controls_.actions_row(), 3, 0);
 
   RunHereOrRobot* controller = controls_.controller;
   connect(controls_.run, &QPushButton::clicked, this, &HeadroomRunPanel::start);
-  connect(controls_.cancel, &QPushButton::clicked, this, &HeadroomRunPanel::cancel);
   connect(controller, &RunHereOrRobot::failed, this, &HeadroomRunPanel::failed);
   connect(controller, &RunHereOrRobot::here_finished, this, &HeadroomRunPanel::here_finished);
   connect(controller, &RunHereOrRobot::robot_finished, this, &HeadroomRunPanel::remote_finished);
@@ -133,8 +131,6 @@ HeadroomRunPanel::~HeadroomRunPanel() {
   // Cancels and waits for a run here, or drops the robot's connection, before the panel goes.
   delete controls_.controller;
 }
-
-bool HeadroomRunPanel::running() const { return controls_.controller->running(); }
 
 void HeadroomRunPanel::save_settings() const {
   QSettings s;
@@ -170,7 +166,7 @@ headroom::RunConfig HeadroomRunPanel::config_from_fields(std::vector<std::string
 }
 
 void HeadroomRunPanel::start() {
-  if (running()) return;
+  if (controls_.running()) return;
   headroom::RunConfig config;
   std::vector<std::string> command_words;
   std::shared_ptr<sensors::PowerRecorder> recorder;
@@ -180,7 +176,7 @@ void HeadroomRunPanel::start() {
       start_remote(std::move(config));
       return;
     }
-    recorder = power_->start_recorder();  // null when "Record power" is off
+    recorder = controls_.power->start_recorder();  // null when "Record power" is off
   } catch (const std::exception& e) {
     emit failed(controls_.say(QString::fromUtf8(e.what())));
     return;
@@ -204,11 +200,9 @@ void HeadroomRunPanel::start_remote(headroom::RunConfig config) {
   settings.config = config;
   settings.loads = loads_->text().trimmed().toStdString();
   settings.load_command = command_->text().trimmed().toStdString();
-  if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
+  if (!controls_.power->off()) settings.power.sensor = "auto";  // the robot's own sensors
   controls_.controller->start_on_robot(commands::to_words(settings));
 }
-
-void HeadroomRunPanel::cancel() { controls_.controller->cancel(); }
 
 void HeadroomRunPanel::here_finished(bool cancelled) {
   const std::shared_ptr<std::optional<headroom::RunOutput>> output = std::move(output_);

@@ -25,10 +25,6 @@ class QSpinBox;
 
 namespace bs::ui {
 
-class PowerSensorBox;
-class RemoteRun;
-class RobotTarget;
-
 class HeadroomRunPanel : public QWidget {
   Q_OBJECT
  public:
@@ -42,16 +38,11 @@ class HeadroomRunPanel : public QWidget {
   QCheckBox* realtime() const { return realtime_; }
   QLineEdit* loads() const { return loads_; }
   QLineEdit* command() const { return command_; }
-  PowerSensorBox* power_box() const { return power_; }
-  RobotTarget* target() const { return controls_.target; }
-  QPushButton* run_button() const { return controls_.run; }
-  QPushButton* cancel_button() const { return controls_.cancel; }
-  QLabel* status() const { return controls_.status; }
-  bool running() const;
+  // Where, Run, Cancel, the progress bar and the status line, as every run panel has them.
+  const RunControls& controls() const { return controls_; }
 
  public slots:
   void start();
-  void cancel();
 
  signals:
   void measured(const bs::headroom::RunOutput& output);
@@ -74,7 +65,6 @@ class HeadroomRunPanel : public QWidget {
   QCheckBox* realtime_;
   QLineEdit* loads_;
   QLineEdit* command_;
-  PowerSensorBox* power_;
   RunControls controls_;  // where, Run, Cancel, progress, status, and the controller behind them
   // What the run here produced, written on its worker thread before it returns and read after here_finished.
   std::shared_ptr<std::optional<headroom::RunOutput>> output_;

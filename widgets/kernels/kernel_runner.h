@@ -11,6 +11,7 @@
 #include "kernels/ceilings/ceilings.h"
 #include "kernels/sweep.h"
 #include "model/power_trace.h"
+#include "remote/run_panel_fwd.h"
 
 class QCheckBox;
 class QComboBox;
@@ -22,16 +23,6 @@ class QPushButton;
 class QProgressBar;
 class QLabel;
 class QTableWidget;
-
-namespace bs::sensors {
-class PowerRecorder;
-}
-namespace bs::ui {
-class PowerSensorBox;
-class RemoteRun;
-class RobotTarget;
-class RunHereOrRobot;
-}  // namespace bs::ui
 
 namespace bs::ui {
 

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+// The Platforms tab: every platform compared (peaks, power, efficiency, pipeline, battery), the person's constraints
+// and requirements judged, the recommendation, with the inference table and the library's candidates below.
 #include <QStringList>
 #include <QWidget>
 #include <vector>

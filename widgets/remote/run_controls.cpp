@@ -6,6 +6,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 
+#include "power/power_sensor_box.h"
 #include "remote/robot_target.h"
 #include "remote/run_here_or_robot.h"
 
@@ -13,6 +14,7 @@ namespace bs::ui {
 
 RunControls::RunControls(QWidget* owner, const QString& run_text)
     : panel(owner),
+      power(new PowerSensorBox(owner)),
       target(new RobotTarget(owner)),
       run(new QPushButton(run_text, owner)),
       cancel(new QPushButton(QObject::tr("Cancel"), owner)),
@@ -26,7 +28,11 @@ RunControls::RunControls(QWidget* owner, const QString& run_text)
   status->setTextFormat(Qt::PlainText);
   status->setWordWrap(true);  // a long message wraps instead of widening the window
   controller->drive(run, cancel, progress, status);
+  // Cancel stops the run wherever it runs: here (the worker's token) or on the robot (the job).
+  QObject::connect(cancel, &QPushButton::clicked, controller, &RunHereOrRobot::cancel);
 }
+
+bool RunControls::running() const { return controller->running(); }
 
 QHBoxLayout* RunControls::where_row() const {
   auto* where = new QHBoxLayout;

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The controls a "run here or on a robot" panel shows (Headroom, Sustained, Pipeline): "Run on:" with the robot
-// target, the Run and Cancel buttons, a progress bar, a status line, and the controller behind them
+// The controls a "run here or on a robot" panel shows (Headroom, Sustained, Pipeline): "Record power", "Run on:" with
+// the robot target, the Run and Cancel buttons, a progress bar, a status line, and the controller behind them
 // (RunHereOrRobot), which drives them. Made, set up and laid out once here, so that the panels look and behave
 // alike; what to run, and what to say when it ends, stays each panel's.
 #include <QString>
+
+#include "remote/run_panel_fwd.h"
 
 class QHBoxLayout;
 class QLabel;
@@ -13,9 +15,6 @@ class QPushButton;
 class QWidget;
 
 namespace bs::ui {
-
-class RobotTarget;
-class RunHereOrRobot;
 
 struct RunControls {
   // The controls as children of `panel`, created in this order (the focus chain follows it); `run_text` is the Run
@@ -30,8 +29,11 @@ struct RunControls {
   void show_progress(double fraction) const;
   // `message` in the status line, returned for the panel's `failed` signal.
   QString say(const QString& message) const;
+  // Whether a run started here or on a robot is still going (Cancel stops it: connected here).
+  bool running() const;
 
   QWidget* const panel;
+  PowerSensorBox* const power;  // "Record power": off, or the sensor sampled while it runs (the panel places it)
   RobotTarget* const target;
   QPushButton* const run;
   QPushButton* const cancel;

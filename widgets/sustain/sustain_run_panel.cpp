@@ -33,7 +33,6 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
       load_(new QLineEdit(this)),
       seconds_(new QDoubleSpinBox(this)),
       interval_(new QDoubleSpinBox(this)),
-      power_(new PowerSensorBox(this)),
       controls_(this, tr("Run")) {
   const QSettings s;
   const commands::SustainSettings defaults;
@@ -70,13 +69,12 @@ SustainRunPanel::SustainRunPanel(QWidget* parent)
   settings->addWidget(seconds_);
   settings->addWidget(interval_);
   settings->addWidget(new QLabel(tr("Record power:"), this));
-  settings->addWidget(power_, 1);
+  settings->addWidget(controls_.power, 1);
   layout->addLayout(settings, 1, 0);
   layout->addLayout(controls_.actions_row(), 2, 0);
 
   RunHereOrRobot* controller = controls_.controller;
   connect(controls_.run, &QPushButton::clicked, this, &SustainRunPanel::start);
-  connect(controls_.cancel, &QPushButton::clicked, this, &SustainRunPanel::cancel);
   connect(load_, &QLineEdit::editingFinished, this, &SustainRunPanel::save_settings);
   for (QDoubleSpinBox* b : {seconds_, interval_})
     connect(b, &QDoubleSpinBox::valueChanged, this, &SustainRunPanel::save_settings);
@@ -100,8 +98,6 @@ SustainRunPanel::~SustainRunPanel() {
   delete controls_.controller;  // cancels and waits for a run here before this panel, which it reports to, is gone
 }
 
-bool SustainRunPanel::running() const { return controls_.controller->running(); }
-
 void SustainRunPanel::save_settings() const {
   QSettings s;
   s.setValue(key("load"), load_->text());
@@ -110,7 +106,7 @@ void SustainRunPanel::save_settings() const {
 }
 
 void SustainRunPanel::start() {
-  if (running()) return;
+  if (controls_.running()) return;
   commands::SustainSettings settings;
   settings.load = load_->text().trimmed().toStdString();
   settings.seconds = seconds_->value();
@@ -119,11 +115,11 @@ void SustainRunPanel::start() {
     (void)headroom::canonical_load_names(settings.load);  // a wrong load is said before anything starts
     if (controls_.controller->on_robot()) {
       settings.platform = controls_.target->platform().toStdString();
-      if (!power_->off()) settings.power.sensor = "auto";  // the robot's own sensors
+      if (!controls_.power->off()) settings.power.sensor = "auto";  // the robot's own sensors
       controls_.controller->start_on_robot(commands::to_words(settings));
       return;
     }
-    std::shared_ptr<sensors::PowerRecorder> recorder = power_->start_recorder();  // null when off
+    std::shared_ptr<sensors::PowerRecorder> recorder = controls_.power->start_recorder();  // null when off
     sustain::RunConfig config;
     config.seconds = settings.seconds;
     config.interval_s = settings.interval_s;
@@ -159,8 +155,6 @@ void SustainRunPanel::start() {
     emit failed(controls_.say(QString::fromUtf8(e.what())));
   }
 }
-
-void SustainRunPanel::cancel() { controls_.controller->cancel(); }
 
 void SustainRunPanel::here_finished(bool cancelled) {
   // run_sustain returns what it completed when cancelled: those intervals are kept, and said to be all there is.

@@ -22,10 +22,6 @@ class QPushButton;
 
 namespace bs::ui {
 
-class PowerSensorBox;
-class RemoteRun;
-class RobotTarget;
-
 class SustainRunPanel : public QWidget {
   Q_OBJECT
  public:
@@ -34,16 +30,11 @@ class SustainRunPanel : public QWidget {
   QLineEdit* load() const { return load_; }
   QDoubleSpinBox* seconds() const { return seconds_; }
   QDoubleSpinBox* interval() const { return interval_; }
-  PowerSensorBox* power_box() const { return power_; }
-  RobotTarget* target() const { return controls_.target; }
-  QPushButton* run_button() const { return controls_.run; }
-  QPushButton* cancel_button() const { return controls_.cancel; }
-  QLabel* status() const { return controls_.status; }
-  bool running() const;
+  // Where, Run, Cancel, the progress bar and the status line, as every run panel has them.
+  const RunControls& controls() const { return controls_; }
 
  public slots:
   void start();
-  void cancel();
 
  signals:
   void live_interval(const bs::SustainRun& so_far);     // after each interval, here or on a robot: the live plot
@@ -59,7 +50,6 @@ class SustainRunPanel : public QWidget {
   QLineEdit* load_;
   QDoubleSpinBox* seconds_;
   QDoubleSpinBox* interval_;
-  PowerSensorBox* power_;
   RunControls controls_;  // where, Run, Cancel, progress, status, and the controller behind them
   // What the run here produced, written on its worker thread before it returns and read after here_finished.
   std::shared_ptr<std::optional<sustain::RunOutput>> output_;

@@ -46,7 +46,6 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
       scale_(new QDoubleSpinBox(this)),
       backend_(new QComboBox(this)),
       detector_(new QComboBox(this)),
-      power_(new PowerSensorBox(this)),
       controls_(this, tr("Measure")) {
   const QSettings settings;
   frames_->setRange(1, 100000);
@@ -140,7 +139,7 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
   choices->addWidget(labelled(tr("Detection scale:"), scale_));
   choices->addWidget(labelled(tr("Preprocessing on:"), backend_));
   choices->addWidget(labelled(tr("Detector:"), detector_));
-  choices->addWidget(labelled(tr("Record power:"), power_));
+  choices->addWidget(labelled(tr("Record power:"), controls_.power));
   choices->addWidget(controls_.run);
   choices->addWidget(controls_.cancel);
   choices->addWidget(controls_.progress);
@@ -153,7 +152,6 @@ PipelineMeasurePanel::PipelineMeasurePanel(QWidget* parent)
 
   RunHereOrRobot* controller = controls_.controller;
   connect(controls_.run, &QPushButton::clicked, this, &PipelineMeasurePanel::start);
-  connect(controls_.cancel, &QPushButton::clicked, this, &PipelineMeasurePanel::cancel);
   connect(controller, &RunHereOrRobot::failed, this, [this](const QString& message) {
     if (recorder_) {  // a run here that failed: its power recording ends with it, nothing of it kept
       recorder_->end_phase();
@@ -186,8 +184,6 @@ PipelineMeasurePanel::~PipelineMeasurePanel() {
   // Cancels and waits for a run here, or drops the robot's connection, before the panel goes.
   delete controls_.controller;
 }
-
-bool PipelineMeasurePanel::running() const { return controls_.controller->running(); }
 
 void PipelineMeasurePanel::target_changed() {
   const RobotTarget* target = controls_.target;
@@ -231,7 +227,7 @@ void PipelineMeasurePanel::save_settings() const {
 }
 
 void PipelineMeasurePanel::start() {
-  if (running()) return;
+  if (controls_.running()) return;
   vision::SyntheticPipelineOptions options;
   options.frames = static_cast<std::size_t>(frames_->value());
   options.detection_workers = static_cast<std::size_t>(workers_->value());
@@ -246,7 +242,7 @@ void PipelineMeasurePanel::start() {
   }
   trace_.reset();
   try {
-    recorder_ = power_->start_recorder();  // null when "Record power" is off
+    recorder_ = controls_.power->start_recorder();  // null when "Record power" is off
   } catch (const std::exception& e) {
     emit failed(controls_.say(tr("Record power: %1").arg(QString::fromUtf8(e.what()))));
     return;
@@ -267,16 +263,14 @@ void PipelineMeasurePanel::start() {
 void PipelineMeasurePanel::start_remote(const vision::SyntheticPipelineOptions& options) {
   std::vector<std::string> args;
   try {
-    args = commands::to_words(
-        commands::robot_pipeline_settings(options, controls_.target->platform().toStdString(), !power_->off()));
+    args = commands::to_words(commands::robot_pipeline_settings(options, controls_.target->platform().toStdString(),
+                                                                !controls_.power->off()));
   } catch (const std::invalid_argument& e) {
     emit failed(controls_.say(tr("%1: %2").arg(controls_.target->robot_name(), QString::fromUtf8(e.what()))));
     return;
   }
   controls_.controller->start_on_robot(args);
 }
-
-void PipelineMeasurePanel::cancel() { controls_.controller->cancel(); }
 
 std::optional<PowerTrace> PipelineMeasurePanel::take_power_trace() {
   auto t = std::move(trace_);

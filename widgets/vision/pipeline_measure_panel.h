@@ -19,15 +19,7 @@ class QSpinBox;
 template <class T>
 class QFutureWatcher;
 
-namespace bs::sensors {
-class PowerRecorder;
-}
-
 namespace bs::ui {
-
-class PowerSensorBox;
-class RemoteRun;
-class RobotTarget;
 
 // "Measure": runs the concurrent vision pipeline on the synthetic capture of the paper's camera
 // (core: vision::measure_synthetic_pipeline) off the GUI thread, with progress and cancel, and hands the finished
@@ -49,17 +41,13 @@ class PipelineMeasurePanel : public QWidget {
   QComboBox* backend() const { return backend_; }
   // The detection stage: "hog", "mobilenet-ssd", "yolo-n" (architecture timing) or a model file path.
   QComboBox* detector() const { return detector_; }
-  QPushButton* measure_button() const { return controls_.run; }
-  PowerSensorBox* power_box() const { return power_; }
-  QLabel* status() const { return controls_.status; }
-  RobotTarget* target() const { return controls_.target; }
+  // Where, Run, Cancel, the progress bar and the status line, as every run panel has them.
+  const RunControls& controls() const { return controls_; }
   // The trace recorded during the last measured run (taken once).
   std::optional<PowerTrace> take_power_trace();
-  bool running() const;
 
  public slots:
   void start();
-  void cancel();
 
  signals:
   void run_measured(const bs::PipelineRun& run);
@@ -79,7 +67,6 @@ class PipelineMeasurePanel : public QWidget {
   QDoubleSpinBox* scale_;
   QComboBox* backend_;
   QComboBox* detector_;
-  PowerSensorBox* power_;
   RunControls controls_;  // where, Measure, Cancel, progress, status, and the controller behind them
   std::shared_ptr<sensors::PowerRecorder> recorder_;
   std::optional<PowerTrace> trace_;

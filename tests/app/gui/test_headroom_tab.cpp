@@ -46,12 +46,12 @@ class TestHeadroomTab : public QObject {
     panel->realtime()->setChecked(false);
     panel->loads()->clear();
     panel->command()->clear();
-    panel->power_box()->choose("");
-    QTest::mouseClick(panel->run_button(), Qt::LeftButton);
-    QVERIFY(panel->running());
+    panel->controls().power->choose("");
+    QTest::mouseClick(panel->controls().run, Qt::LeftButton);
+    QVERIFY(panel->controls().running());
     // Waits for the work (Run comes back when the result has been handed over); asserts nothing about its time.
-    QTRY_VERIFY_WITH_TIMEOUT(panel->run_button()->isEnabled(), 120000);
-    QVERIFY2(panel->status()->text().contains("NON-REAL-TIME"), qPrintable(panel->status()->text()));
+    QTRY_VERIFY_WITH_TIMEOUT(panel->controls().run->isEnabled(), 120000);
+    QVERIFY2(panel->controls().status->text().contains("NON-REAL-TIME"), qPrintable(panel->controls().status->text()));
     QCOMPARE(w.workspace()->headroom_measurements().size(), std::size_t{1});
     QCOMPARE(view->chooser()->count(), 1);
     QCOMPARE(view->plot()->graphCount(), 1);
@@ -93,11 +93,11 @@ class TestHeadroomTab : public QObject {
 
     // A long run, cancelled once it measures: nothing more is stored.
     panel->seconds()->setValue(3600);
-    QTest::mouseClick(panel->run_button(), Qt::LeftButton);
-    QTRY_VERIFY_WITH_TIMEOUT(panel->status()->text().startsWith("Measuring"), 60000);
-    QTest::mouseClick(panel->cancel_button(), Qt::LeftButton);
-    QTRY_VERIFY_WITH_TIMEOUT(panel->run_button()->isEnabled(), 60000);
-    QCOMPARE(panel->status()->text(), QString("Cancelled; nothing stored"));
+    QTest::mouseClick(panel->controls().run, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(panel->controls().status->text().startsWith("Measuring"), 60000);
+    QTest::mouseClick(panel->controls().cancel, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(panel->controls().run->isEnabled(), 60000);
+    QCOMPARE(panel->controls().status->text(), QString("Cancelled; nothing stored"));
     QCOMPARE(w.workspace()->headroom_measurements().size(), std::size_t{1});
   }
 };

@@ -189,7 +189,7 @@ class TestRemoteGui : public QObject {
     if (QTest::currentTestFailed()) return;
     bs::test::click_tab(w, bs::test::tab_of(w, w.headroom_view()));
     bs::ui::HeadroomRunPanel* panel = w.headroom_view()->run_panel();
-    bs::ui::RobotTarget* target = panel->target();
+    bs::ui::RobotTarget* target = panel->controls().target;
     target->reload();
     choose_robot(target);
     if (QTest::currentTestFailed()) return;
@@ -204,13 +204,13 @@ class TestRemoteGui : public QObject {
     qRegisterMetaType<bs::ui::RemoteRun*>();
     QSignalSpy done(panel, &bs::ui::HeadroomRunPanel::remote_finished);
     QSignalSpy failed(panel, &bs::ui::HeadroomRunPanel::failed);
-    QVERIFY(panel->run_button()->isEnabled());
-    QTest::mouseClick(panel->run_button(), Qt::LeftButton);
-    QVERIFY(panel->running());
-    QVERIFY(panel->cancel_button()->isEnabled());
+    QVERIFY(panel->controls().run->isEnabled());
+    QTest::mouseClick(panel->controls().run, Qt::LeftButton);
+    QVERIFY(panel->controls().running());
+    QVERIFY(panel->controls().cancel->isEnabled());
     bool phase_shown = false;
     for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) {
-      if (!phase_shown && panel->status()->text().contains("headroom phase")) {
+      if (!phase_shown && panel->controls().status->text().contains("headroom phase")) {
         phase_shown = true;
         screenshots(w, "headroom-robot-running");
       }
@@ -219,7 +219,7 @@ class TestRemoteGui : public QObject {
     QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
     QCOMPARE(done.count(), 1);
     QVERIFY(phase_shown);
-    QVERIFY(!panel->running());
+    QVERIFY(!panel->controls().running());
     const auto stored = w.workspace()->headroom_measurements();
     QCOMPARE(stored.size(), std::size_t{1});
     const auto& m = stored[0].measurement;
@@ -230,7 +230,7 @@ class TestRemoteGui : public QObject {
     const std::string command = setting(m.provenance, "remote command");
     QVERIFY2(command.find("headroom ") != std::string::npos && command.find(" --rate 500") != std::string::npos,
              command.c_str());
-    QVERIFY(panel->status()->text().startsWith("Measured on robot"));
+    QVERIFY(panel->controls().status->text().startsWith("Measured on robot"));
     // The workspace tree lists it, and removing it there is undone by Ctrl+Z with nothing lost.
     bs::ui::WorkspaceTree* tree = w.tree();
     QCOMPARE(tree->item_count(bs::ui::TreeItemRef::Kind::Headroom), 1);
@@ -272,11 +272,11 @@ class TestRemoteGui : public QObject {
     if (QTest::currentTestFailed()) return;
     bs::test::click_tab(w, bs::test::tab_of(w, w.pipeline_view()));
     bs::ui::PipelineMeasurePanel* panel = w.pipeline_view()->measure_panel();
-    bs::ui::RobotTarget* target = panel->target();
+    bs::ui::RobotTarget* target = panel->controls().target;
     target->reload();
     choose_robot(target);
     if (QTest::currentTestFailed()) return;
-    QVERIFY(panel->measure_button()->text() == "Measure on robot");
+    QVERIFY(panel->controls().run->text() == "Measure on robot");
     panel->frames()->setValue(6);
     panel->workers()->setValue(1);
     panel->detector()->setCurrentIndex(panel->detector()->findData(QStringLiteral("hog")));
@@ -285,8 +285,8 @@ class TestRemoteGui : public QObject {
     qRegisterMetaType<bs::ui::RemoteRun*>();
     QSignalSpy done(panel, &bs::ui::PipelineMeasurePanel::remote_finished);
     QSignalSpy failed(panel, &bs::ui::PipelineMeasurePanel::failed);
-    QTest::mouseClick(panel->measure_button(), Qt::LeftButton);
-    QVERIFY(panel->running());
+    QTest::mouseClick(panel->controls().run, Qt::LeftButton);
+    QVERIFY(panel->controls().running());
     auto* bar = panel->findChild<QProgressBar*>();
     QVERIFY(bar);
     int most = 0;
@@ -302,7 +302,7 @@ class TestRemoteGui : public QObject {
     QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
     QCOMPARE(done.count(), 1);
     QVERIFY2(most > 0, "the progress bar never followed the robot");
-    QVERIFY(!panel->running());
+    QVERIFY(!panel->controls().running());
     const auto stored = w.workspace()->pipeline_runs();
     QCOMPARE(stored.size(), std::size_t{1});
     const bs::PipelineRun& run = stored[0].run;
@@ -311,7 +311,7 @@ class TestRemoteGui : public QObject {
     QCOMPARE(setting(run.provenance, "remote host"), std::string("robot"));
     QVERIFY2(setting(run.provenance, "remote command").find("pipeline --synthetic --frames 6") != std::string::npos,
              setting(run.provenance, "remote command").c_str());
-    QVERIFY(panel->status()->text().startsWith("Measured on robot"));
+    QVERIFY(panel->controls().status->text().startsWith("Measured on robot"));
     // The table shows it under its platform.
     bool listed = false;
     QTableWidget* table = w.pipeline_view()->table();
@@ -339,7 +339,7 @@ class TestRemoteGui : public QObject {
     if (QTest::currentTestFailed()) return;
     bs::test::click_tab(w, bs::test::tab_of(w, w.sustain_view()));
     bs::ui::SustainRunPanel* panel = w.sustain_view()->run_panel();
-    bs::ui::RobotTarget* target = panel->target();
+    bs::ui::RobotTarget* target = panel->controls().target;
     target->reload();
     choose_robot(target);
     if (QTest::currentTestFailed()) return;
@@ -353,12 +353,12 @@ class TestRemoteGui : public QObject {
     QSignalSpy done(panel, &bs::ui::SustainRunPanel::robot_finished);
     QSignalSpy failed(panel, &bs::ui::SustainRunPanel::failed);
     QSignalSpy live(panel, &bs::ui::SustainRunPanel::live_interval);
-    QTest::mouseClick(panel->run_button(), Qt::LeftButton);
-    QVERIFY(panel->running());
+    QTest::mouseClick(panel->controls().run, Qt::LeftButton);
+    QVERIFY(panel->controls().running());
     for (int i = 0; i < 6000 && done.isEmpty() && failed.isEmpty(); ++i) QTest::qWait(20);
     QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
     QCOMPARE(done.count(), 1);
-    for (int i = 0; i < 100 && panel->running(); ++i) QTest::qWait(20);
+    for (int i = 0; i < 100 && panel->controls().running(); ++i) QTest::qWait(20);
     const auto stored = w.workspace()->sustain_runs();
     QCOMPARE(stored.size(), std::size_t{1});
     const bs::SustainRun& r = stored[0].run;

@@ -82,9 +82,7 @@ QStringList rows_out_of_view(const QTableWidget* table) {
 class TestScenarioLaptopScreen : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QCOMPARE(QGuiApplication::primaryScreen()->geometry(), QRect(0, 0, kScreenW, kScreenH));
-  }
+  void initTestCase() { QCOMPARE(QGuiApplication::primaryScreen()->geometry(), QRect(0, 0, kScreenW, kScreenH)); }
   void init() { QSettings().clear(); }  // each function starts as a fresh machine: no remembered layout
 
   void first_start_and_reset_layout_fit_the_screen() {
@@ -175,13 +173,13 @@ class TestScenarioLaptopScreen : public QObject {
     bs::test::key(panel->frames(), Qt::Key_Return);
     bs::test::retype(panel->workers(), "1");
     bs::test::key(panel->workers(), Qt::Key_Return);
-    panel->power_box()->choose("");
+    panel->controls().power->choose("");
     QCOMPARE(panel->frames()->value(), 100000);
-    bs::test::click(panel->measure_button());
+    bs::test::click(panel->controls().run);
     auto* progress = panel->findChild<QProgressBar*>();
     QVERIFY(progress);
-    QVERIFY2(bs::test::wait_until([&] { return panel->running() && progress->isVisible(); }, 500),
-             qPrintable(panel->status()->text()));
+    QVERIFY2(bs::test::wait_until([&] { return panel->controls().running() && progress->isVisible(); }, 500),
+             qPrintable(panel->controls().status->text()));
     bs::test::screenshot(&w, "pipeline-measuring-1280x800");
     QStringList wide;
     QTabWidget* tabs = bs::test::window_tabs(w);
@@ -194,7 +192,7 @@ class TestScenarioLaptopScreen : public QObject {
     // The measurement cancelled: nothing is left running when the window closes.
     bs::test::click_tab(w, bs::test::tab_of(w, w.pipeline_view()));
     bs::test::click(bs::test::widget_with_text<QPushButton>(panel, "Cancel"));
-    QVERIFY(bs::test::wait_until([&] { return !panel->running(); }, 3000));
+    QVERIFY(bs::test::wait_until([&] { return !panel->controls().running(); }, 3000));
     QVERIFY2(wide.isEmpty(), qPrintable(QStringLiteral("the window's minimum width leaves less than %1 px of the "
                                                        "%2 px screen: %3")
                                             .arg(kWidthMargin)

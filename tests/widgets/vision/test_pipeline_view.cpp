@@ -45,7 +45,7 @@ class TestPipelineView : public QObject {
  private slots:
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);  // QSettings in a test location, not the user's
-    QSettings().clear();  // each run starts as a fresh machine: nothing remembered
+    QSettings().clear();                       // each run starts as a fresh machine: nothing remembered
   }
 
   void paper_table() {
@@ -145,9 +145,9 @@ class TestPipelineView : public QObject {
     p->scale()->setValue(0.25);
     QSignalSpy measured(&v, &PipelineView::run_measured);
     QSignalSpy failed(p, &PipelineMeasurePanel::failed);
-    p->measure_button()->click();
-    QVERIFY(p->running() || measured.count() == 1);
-    QVERIFY(!p->measure_button()->isEnabled() || measured.count() == 1);
+    p->controls().run->click();
+    QVERIFY(p->controls().running() || measured.count() == 1);
+    QVERIFY(!p->controls().run->isEnabled() || measured.count() == 1);
     QVERIFY2(measured.wait(120000) || measured.count() == 1,
              failed.isEmpty() ? "no run" : qPrintable(failed[0][0].toString()));
     const auto run = measured[0][0].value<bs::PipelineRun>();
@@ -159,7 +159,7 @@ class TestPipelineView : public QObject {
     QVERIFY2(run.provenance.note.find("2 detection workers, detect scale 0.25") != std::string::npos,
              run.provenance.note.c_str());
     QCOMPARE(run.frame_width, 1280);
-    QVERIFY(p->measure_button()->isEnabled());
+    QVERIFY(p->controls().run->isEnabled());
   }
 
   void measure_panel_backends() {
@@ -180,7 +180,7 @@ class TestPipelineView : public QObject {
     QSignalSpy measured(&p, &PipelineMeasurePanel::run_measured);
     QSignalSpy failed(&p, &PipelineMeasurePanel::failed);
     p.start();
-    QTRY_VERIFY_WITH_TIMEOUT(!p.running(), 120000);
+    QTRY_VERIFY_WITH_TIMEOUT(!p.controls().running(), 120000);
     QCoreApplication::processEvents();
     QVERIFY2(measured.count() == 1, failed.isEmpty() ? "no run" : qPrintable(failed[0][0].toString()));
     const auto run = measured[0][0].value<bs::PipelineRun>();
@@ -200,11 +200,12 @@ class TestPipelineView : public QObject {
     p.scale()->setValue(0.25);
     QSignalSpy measured(&p, &PipelineMeasurePanel::run_measured);
     p.start();
-    p.cancel();
-    QTRY_VERIFY_WITH_TIMEOUT(!p.running(), 120000);
+    QVERIFY(p.controls().cancel->isEnabled());
+    p.controls().cancel->click();  // Cancel as a person presses it
+    QTRY_VERIFY_WITH_TIMEOUT(!p.controls().running(), 120000);
     QCoreApplication::processEvents();
     QCOMPARE(measured.count(), 0);
-    QVERIFY(p.measure_button()->isEnabled());
+    QVERIFY(p.controls().run->isEnabled());
   }
 
   void empty_workspace_says_how_to_get_data() {
