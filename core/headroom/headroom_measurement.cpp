@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "util/enum_words.h"
+#include "util/text.h"
 
 namespace bs::headroom {
 
@@ -16,12 +17,15 @@ namespace {
 constexpr EnumWord<LatencyKind> kLatencyKindNames[] = {{LatencyKind::SystemWakeup, "system wake-up latency"},
                                                        {LatencyKind::ApplicationLoop, "application loop"},
                                                        {LatencyKind::MessageLatency, "message latency"}};
+static_assert(names_every_value(kLatencyKindNames, LatencyKind::MessageLatency));
 constexpr EnumWord<LatencyKind> kLatencyKindIds[] = {{LatencyKind::SystemWakeup, "wakeup"},
                                                      {LatencyKind::ApplicationLoop, "loop"},
                                                      {LatencyKind::MessageLatency, "message"}};
+static_assert(names_every_value(kLatencyKindIds, LatencyKind::MessageLatency));
 constexpr EnumWord<LoadKind> kLoadKindIds[] = {{LoadKind::Idle, "idle"},       {LoadKind::Pipeline, "pipeline"},
                                                {LoadKind::Detector, "dnn"},    {LoadKind::Kernels, "flops"},
                                                {LoadKind::Command, "command"}, {LoadKind::Unknown, "unknown"}};
+static_assert(names_every_value(kLoadKindIds, LoadKind::Unknown));
 
 }  // namespace
 
@@ -102,9 +106,7 @@ std::vector<std::string> flags(const HeadroomMeasurement& m) {
       if (!t.misses && t.deadline_ns > 0) histogram_misses = true;
     }
   if (!policies.empty()) {
-    std::string list;
-    for (const std::string& p : policies) list += (list.empty() ? "" : ", ") + p;
-    out.push_back("non-real-time (" + list + "): not comparable with real-time results");
+    out.push_back("non-real-time (" + join(policies, ", ") + "): not comparable with real-time results");
   }
   if (m.kernel.preempt_rt == false) out.push_back("kernel not PREEMPT_RT (" + m.kernel.preemption + ")");
   if (unlocked) out.push_back("memory not locked");

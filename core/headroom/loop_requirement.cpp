@@ -111,8 +111,6 @@ std::string describe(const LoopRequirement& r) {
   return s;
 }
 
-std::string_view to_string(LoopStatus s) { return requirement_status_text(s); }
-
 std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const HeadroomMeasurement> measurements,
                                        const std::vector<std::string>& platforms) {
   std::vector<LoopVerdict> out;
@@ -218,10 +216,10 @@ std::vector<LoopVerdict> evaluate_loop(const LoopRequirement& r, std::span<const
       }
     const bool failed =
         std::any_of(v.checks.begin(), v.checks.end(), [](const ConstraintCheck& k) { return k.actual && !k.met; });
-    v.status = !not_applied.empty() ? LoopStatus::Unknown
-               : failed             ? LoopStatus::Fail
-               : unknown            ? LoopStatus::Unknown
-                                    : LoopStatus::Pass;
+    v.status = !not_applied.empty() ? RequirementStatus::Unknown
+               : failed             ? RequirementStatus::Fail
+               : unknown            ? RequirementStatus::Unknown
+                                    : RequirementStatus::Pass;
     if (!not_applied.empty()) {
       v.reason = not_applied;
     } else if (failed) {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "analysis/platform/platform_comparison.h"
+#include "analysis/platform/requirement_text.h"
 #include "headroom/headroom_measurement.h"
 
 namespace bs::headroom {
@@ -38,12 +39,9 @@ LoopRequirement parse_loop_requirement(const std::string& text);
 // "1 kHz, p99.9 <= 200 us, max consecutive misses <= 1, beside pipeline@30fps"
 std::string describe(const LoopRequirement& r);
 
-enum class LoopStatus { Pass, Fail, Unknown };
-std::string_view to_string(LoopStatus s);  // "passes", "FAILS", "unknown"
-
 struct LoopVerdict {
   std::string platform;
-  LoopStatus status = LoopStatus::Unknown;
+  RequirementStatus status = RequirementStatus::Unknown;
   std::vector<ConstraintCheck> checks;  // one per term, "p99.9 (pipeline@30fps)" in us; actual empty when unknown
   std::string reason;                   // for unknown: why; for fail: the worst term and by how much
   std::string measurement;              // which measurement judged it: tool, date, phase, thread

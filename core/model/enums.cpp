@@ -11,12 +11,15 @@ constexpr EnumWord<DataOrigin> kDataOriginWords[] = {{DataOrigin::Measured, "mea
                                                      {DataOrigin::Reconstructed, "reconstructed"},
                                                      {DataOrigin::Published, "published"},
                                                      {DataOrigin::Unknown, "unknown"}};
+static_assert(names_every_value(kDataOriginWords, DataOrigin::Published));
 constexpr EnumWord<MeasurementKind> kMeasurementKindWords[] = {{MeasurementKind::ExternalMeter, "external meter"},
                                                                {MeasurementKind::OnBoardSensor, "on-board sensor"},
                                                                {MeasurementKind::SoftwareEstimate, "software estimate"},
                                                                {MeasurementKind::Unknown, "unknown"}};
+static_assert(names_every_value(kMeasurementKindWords, MeasurementKind::SoftwareEstimate));
 constexpr EnumWord<DeviceKind> kDeviceKindWords[] = {
     {DeviceKind::Cpu, "cpu"}, {DeviceKind::Gpu, "gpu"}, {DeviceKind::Other, "other"}};
+static_assert(names_every_value(kDeviceKindWords, DeviceKind::Gpu));
 
 }  // namespace
 

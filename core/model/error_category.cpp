@@ -19,6 +19,7 @@ constexpr EnumWord<ImportErrorCategory> kCategoryWords[] = {{ImportErrorCategory
                                                             {ImportErrorCategory::TooLarge, "too-large"},
                                                             {ImportErrorCategory::TooDeep, "too-deep"},
                                                             {ImportErrorCategory::Unsupported, "unsupported"}};
+static_assert(names_every_value(kCategoryWords, ImportErrorCategory::Unsupported));
 
 }  // namespace
 

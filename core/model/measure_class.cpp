@@ -135,6 +135,7 @@ constexpr EnumWord<Precision> kPrecisionWords[] = {
     {Precision::INT64, "int64"},         {Precision::INT32, "int32"}, {Precision::INT24, "int24"},
     {Precision::INT16, "int16"},         {Precision::INT8, "int8"},   {Precision::INT4, "int4"},
     {Precision::FP32, "single"},         {Precision::FP64, "double"}, {Precision::FP16, "half"}};
+static_assert(names_every_value(kPrecisionWords, Precision::INT4));
 // The labels of tables and charts.
 constexpr EnumWord<Precision> kPrecisionLabels[] = {{Precision::Unknown, "unstated"},
                                                     {Precision::FP64, "FP64 (double)"},
@@ -151,6 +152,7 @@ constexpr EnumWord<Precision> kPrecisionLabels[] = {{Precision::Unknown, "unstat
                                                     {Precision::INT16, "INT16"},
                                                     {Precision::INT8, "INT8"},
                                                     {Precision::INT4, "INT4"}};
+static_assert(names_every_value(kPrecisionLabels, Precision::INT4));
 constexpr EnumWord<MeasureKind> kMeasureKindWords[] = {{MeasureKind::VectorCompute, "vector-compute"},
                                                        {MeasureKind::MatrixCompute, "matrix-compute"},
                                                        {MeasureKind::OtherCompute, "other-compute"},
@@ -159,6 +161,7 @@ constexpr EnumWord<MeasureKind> kMeasureKindWords[] = {{MeasureKind::VectorCompu
                                                        {MeasureKind::TransferBandwidth, "transfer-bandwidth"},
                                                        {MeasureKind::Latency, "latency"},
                                                        {MeasureKind::Other, "other"}};
+static_assert(names_every_value(kMeasureKindWords, MeasureKind::Other));
 
 }  // namespace
 

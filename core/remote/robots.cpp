@@ -257,9 +257,7 @@ void RobotList::save() const {
 }
 
 RobotRun robot_run_started(const std::string& job_id, const std::vector<std::string>& command) {
-  std::string line;
-  for (const std::string& w : command) line += (line.empty() ? "" : " ") + w;
-  return {utc_timestamp(), job_id, line, {}};
+  return {utc_timestamp(), job_id, join(command, " "), {}};
 }
 
 std::string robot_run_outcome(const std::string& job_status, const std::string& what) {

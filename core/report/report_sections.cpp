@@ -149,7 +149,7 @@ void headroom_section(const ReportInput& in, ReportBuilder& b) {
     t.header = {{"Platform", "Verdict", "Why / measurement"}};
     t.numeric_right = false;
     for (const headroom::LoopVerdict& v : in.loop_verdicts)
-      t.rows.push_back({v.platform, std::string(headroom::to_string(v.status)),
+      t.rows.push_back({v.platform, std::string(to_string(v.status)),
                         v.reason + (v.reason.empty() || v.measurement.empty() ? "" : "; ") + v.measurement});
     b.table(t);
   }
@@ -183,8 +183,8 @@ void sustained_section(const ReportInput& in, ReportBuilder& b) {
   t.header = {{"Platform", "Verdict", "Margin / why", "Run judged"}};
   t.numeric_right = false;
   for (const sustain::SustainVerdict& v : in.sustained_verdicts)
-    t.rows.push_back({v.platform, std::string(sustain::to_string(v.status)),
-                      v.status == sustain::SustainStatus::Pass ? v.margin : v.reason, v.record});
+    t.rows.push_back({v.platform, std::string(to_string(v.status)),
+                      v.status == RequirementStatus::Pass ? v.margin : v.reason, v.record});
   b.table(t);
 }
 

@@ -73,8 +73,7 @@ Throttle find_throttle(const SustainRun& run, double threshold) {
   for (const ClockSeries& c : run.clocks) clocks += c.max_hz && *c.max_hz > 0 && read_once(c.hz);
   for (const TemperatureSeries& z : run.temperatures) zones += z.trip_c && read_once(z.celsius);
   if (clocks + zones == 0) {
-    std::string why;
-    for (const std::string& n : run.not_exposed) why += (why.empty() ? "" : "; ") + n;
+    std::string why = join(run.not_exposed, "; ");
     if (!run.clocks.empty() || !run.temperatures.empty())
       why += std::string(why.empty() ? "" : "; ") + "no clock with a stated maximum and no zone with a trip point read";
     t.unknown_reason = "unknown: " + (why.empty() ? std::string("no clock and no thermal zone") : why) +

@@ -28,17 +28,11 @@ std::pair<double, std::string> number_then(const std::string& term, const std::s
   return {v, std::string(end)};
 }
 
-std::string join(const std::vector<std::string>& parts) {
-  std::string out;
-  for (const std::string& p : parts) out += (out.empty() ? "" : "; ") + p;
-  return out;
-}
-
 double minutes_of(const SustainRun& run) { return run.t_s.empty() ? 0.0 : run.t_s.back() / 60; }
 
 // One record judged against the requirement, before the record for the platform is chosen.
 struct Judged {
-  SustainStatus status = SustainStatus::Unknown;
+  RequirementStatus status = RequirementStatus::Unknown;
   std::vector<ConstraintCheck> checks;
   std::vector<std::string> margins, fails, unknowns;
 };
@@ -108,9 +102,9 @@ Judged judge(const SustainRequirement& r, const SustainRun& run) {
       if (margin < 0) j.fails.push_back(text);
     }
   }
-  j.status = !j.fails.empty()      ? SustainStatus::Fail
-             : !j.unknowns.empty() ? SustainStatus::Unknown
-                                   : SustainStatus::Pass;
+  j.status = !j.fails.empty()      ? RequirementStatus::Fail
+             : !j.unknowns.empty() ? RequirementStatus::Unknown
+                                   : RequirementStatus::Pass;
   return j;
 }
 
@@ -175,12 +169,8 @@ std::string describe(const SustainRequirement& r) {
   if (r.min_minutes) parts.push_back("at least " + format_number("%g", *r.min_minutes) + " min");
   if (r.no_throttle) parts.push_back("no throttling");
   if (r.min_sustained_rate) parts.push_back("sustained rate >= " + format_number("%g", *r.min_sustained_rate));
-  std::string out;
-  for (const std::string& p : parts) out += (out.empty() ? "" : ", ") + p;
-  return out;
+  return join(parts, ", ");
 }
-
-std::string_view to_string(SustainStatus s) { return requirement_status_text(s); }
 
 std::vector<SustainVerdict> evaluate_sustain(const SustainRequirement& r, std::span<const SustainRun> runs,
                                              const std::vector<std::string>& platforms) {
@@ -196,7 +186,7 @@ std::vector<SustainVerdict> evaluate_sustain(const SustainRequirement& r, std::s
       if (run.platform != platform) continue;
       if (!newest || run.provenance.date >= newest->provenance.date) newest = &run;
       Judged j = judge(r, run);
-      if (j.status == SustainStatus::Unknown) continue;
+      if (j.status == RequirementStatus::Unknown) continue;
       if (!chosen || minutes_of(run) > minutes_of(*chosen)) {
         chosen = &run;
         judged = std::move(j);
@@ -213,10 +203,10 @@ std::vector<SustainVerdict> evaluate_sustain(const SustainRequirement& r, std::s
     }
     v.status = judged->status;
     v.checks = std::move(judged->checks);
-    v.margin = join(judged->margins);
-    v.reason = v.status == SustainStatus::Fail      ? join(judged->fails)
-               : v.status == SustainStatus::Unknown ? join(judged->unknowns)
-                                                    : std::string();
+    v.margin = join(judged->margins, "; ");
+    v.reason = v.status == RequirementStatus::Fail      ? join(judged->fails, "; ")
+               : v.status == RequirementStatus::Unknown ? join(judged->unknowns, "; ")
+                                                        : std::string();
     v.record = record_text(*chosen);
     out.push_back(std::move(v));
   }

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "analysis/platform/platform_comparison.h"
+#include "analysis/platform/requirement_text.h"
 #include "model/sustain_run.h"
 
 namespace bs::sustain {
@@ -42,12 +43,9 @@ SustainRequirement parse_sustain_requirement(const std::string& text);
 // "stability >= 97 %, at least 20 min, no throttling, sustained rate >= 50"
 std::string describe(const SustainRequirement& r);
 
-enum class SustainStatus { Pass, Fail, Unknown };
-std::string_view to_string(SustainStatus s);  // "passes", "FAILS", "unknown"
-
 struct SustainVerdict {
   std::string platform;
-  SustainStatus status = SustainStatus::Unknown;
+  RequirementStatus status = RequirementStatus::Unknown;
   // One per term that has a value ("stability" in "% of best", "run length" in min, "throttling" in "s throttled",
   // "sustained rate" in the record's unit); a term the record cannot answer has none.
   std::vector<ConstraintCheck> checks;

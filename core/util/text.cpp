@@ -23,6 +23,29 @@ std::string lower(std::string_view s) {
   return out;
 }
 
+bool ends_with_ci(std::string_view text, std::string_view suffix) {
+  return suffix.size() <= text.size() && lower(text.substr(text.size() - suffix.size())) == lower(suffix);
+}
+
+bool ends_with_any_ci(std::string_view text, std::string_view endings) {
+  while (!endings.empty()) {
+    const std::size_t space = endings.find(' ');
+    const std::string_view ending = endings.substr(0, space);
+    if (!ending.empty() && ends_with_ci(text, ending)) return true;
+    endings = space == std::string_view::npos ? std::string_view() : endings.substr(space + 1);
+  }
+  return false;
+}
+
+std::string join(const std::vector<std::string>& parts, std::string_view separator) {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (i > 0) out += separator;
+    out += parts[i];
+  }
+  return out;
+}
+
 std::vector<std::string> comma_terms(std::string_view text) {
   std::vector<std::string> terms;
   std::string cur;

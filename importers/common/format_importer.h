@@ -12,6 +12,7 @@
 
 #include "common/importer.h"
 #include "common/text_file.h"
+#include "util/text.h"
 
 namespace bs {
 
@@ -23,8 +24,10 @@ struct FileFormat {
   int (*sniff)(std::string_view head, std::string_view path) = nullptr;
   ImportBatch (*parse)(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                        const CancelToken& cancel) = nullptr;
-  TextParser text_parser = nullptr;                          // none: a binary format, or one read only from its files
-  bool (*usual_extension)(std::string_view path) = nullptr;  // none: no extension breaks a tie in its favour
+  TextParser text_parser = nullptr;  // none: a binary format, or one read only from its files
+  // The file name endings, space-separated and matched in any case (".tif .tiff"), that break a tie of sniff scores
+  // in this format's favour; "" none.
+  std::string_view usual_endings = "";
   bool binary = false;
 
   // The format's parser over text in memory (tests, fuzzing); `file` names it in errors. Only for a format with a
@@ -41,9 +44,7 @@ class FormatImporter : public Importer {
   std::string_view id() const final { return format_.id; }
   std::string_view description() const final { return format_.description; }
   int sniff(std::string_view head, std::string_view path) const final { return format_.sniff(head, path); }
-  bool usual_extension(std::string_view path) const final {
-    return format_.usual_extension != nullptr && format_.usual_extension(path);
-  }
+  bool usual_extension(std::string_view path) const final { return ends_with_any_ci(path, format_.usual_endings); }
   bool binary() const final { return format_.binary; }
   ImportBatch parse(const std::string& path, const ParseOptions& options, const ImportLimits& limits,
                     const CancelToken& cancel) const final {

@@ -78,8 +78,6 @@ cv::Mat decode(const std::string& path, std::string_view what) {
 
 static int sniff_png(std::string_view head, std::string_view) { return head.starts_with(kPngMagic) ? 100 : 0; }
 
-static bool png_extension(std::string_view path) { return frames::ends_with_ci(path, ".png"); }
-
 static ImportBatch parse_png_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
                                   const CancelToken& cancel) {
   const std::uint64_t size = frames::file_size(path);
@@ -175,10 +173,6 @@ static int sniff_tiff(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool tiff_extension(std::string_view path) {
-  return frames::ends_with_ci(path, ".tif") || frames::ends_with_ci(path, ".tiff");
-}
-
 static ImportBatch parse_tiff_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
                                    const CancelToken& cancel) {
   const std::uint64_t size = frames::file_size(path);
@@ -244,8 +238,8 @@ static ImportBatch parse_tiff_file(const std::string& path, const ParseOptions& 
   return batch;
 }
 
-const FileFormat kPngFileFormat{"png", "PNG image", sniff_png, parse_png_file, nullptr, png_extension, true};
+const FileFormat kPngFileFormat{"png", "PNG image", sniff_png, parse_png_file, nullptr, ".png", true};
 
-const FileFormat kTiffFileFormat{"tiff", "TIFF image", sniff_tiff, parse_tiff_file, nullptr, tiff_extension, true};
+const FileFormat kTiffFileFormat{"tiff", "TIFF image", sniff_tiff, parse_tiff_file, nullptr, ".tif .tiff", true};
 
 }  // namespace bs

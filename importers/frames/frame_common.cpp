@@ -53,15 +53,6 @@ std::ifstream open_binary(const std::string& path) {
 
 std::string stem_of(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
-bool ends_with_ci(std::string_view text, std::string_view suffix) {
-  if (suffix.size() > text.size()) return false;
-  for (std::size_t i = 0; i < suffix.size(); ++i)
-    if (std::tolower(static_cast<unsigned char>(text[text.size() - suffix.size() + i])) !=
-        std::tolower(static_cast<unsigned char>(suffix[i])))
-      return false;
-  return true;
-}
-
 void check_sample_range(const std::string& file, const Frame& frame, std::uint64_t data_offset) {
   if (frame.bit_depth == 8 || frame.bit_depth == 16) return;  // every stored value is valid
   const unsigned max = (1u << frame.bit_depth) - 1u;

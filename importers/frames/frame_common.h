@@ -31,9 +31,6 @@ std::ifstream open_binary(const std::string& path);
 // The file's stem ("capture" for /a/capture.raw): the frame's default label.
 std::string stem_of(const std::string& path);
 
-// Case-insensitive suffix test ("x.PNG" ends with ".png").
-bool ends_with_ci(std::string_view text, std::string_view suffix);
-
 // Rejects samples above the largest value `bit_depth` bits can hold (a wrong bit depth or byte order shows up
 // this way), naming the first offender's byte offset, row and column.
 void check_sample_range(const std::string& file, const Frame& frame, std::uint64_t data_offset);

@@ -126,10 +126,6 @@ static int sniff_pnm(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool pnm_extension(std::string_view path) {
-  return frames::ends_with_ci(path, ".pgm") || frames::ends_with_ci(path, ".ppm") || frames::ends_with_ci(path, ".pnm");
-}
-
 static ImportBatch parse_pnm_file(const std::string& path, const ParseOptions& /*options*/, const ImportLimits& limits,
                                   const CancelToken& cancel) {
   const std::string head = read_head(path, kMaxHeaderBytes);
@@ -199,6 +195,6 @@ static ImportBatch parse_pnm_file(const std::string& path, const ParseOptions& /
 }
 
 const FileFormat kPnmFileFormat{
-    "pnm", "PGM/PPM image (binary P5/P6)", sniff_pnm, parse_pnm_file, nullptr, pnm_extension, true};
+    "pnm", "PGM/PPM image (binary P5/P6)", sniff_pnm, parse_pnm_file, nullptr, ".pgm .ppm .pnm", true};
 
 }  // namespace bs

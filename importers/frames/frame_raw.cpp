@@ -136,11 +136,9 @@ RawFrameOptions parse_raw_geometry(const std::string& text) {
 static int sniff_raw_bayer(std::string_view, std::string_view path) {
   // Raw samples have no magic bytes: the extension and the sidecar beside the file decide. A .raw without a
   // sidecar is still claimed, so the user hears that the sidecar is missing rather than "binary file".
-  if (!frames::ends_with_ci(path, ".raw")) return 0;
+  if (!ends_with_ci(path, ".raw")) return 0;
   return find_raw_sidecar(std::string(path)) ? 100 : 50;
 }
-
-static bool raw_bayer_extension(std::string_view path) { return frames::ends_with_ci(path, ".raw"); }
 
 static ImportBatch parse_raw_bayer_file(const std::string& path, const ParseOptions& /*options*/,
                                         const ImportLimits& limits, const CancelToken& cancel) {
@@ -169,12 +167,7 @@ bool raw_without_sidecar(const std::string& path) {
   return path.size() > 4 && path.ends_with(".raw") && !find_raw_sidecar(path);
 }
 
-const FileFormat kRawBayerFileFormat{"raw-bayer",
-                                     "raw Bayer frame (.raw + JSON sidecar)",
-                                     sniff_raw_bayer,
-                                     parse_raw_bayer_file,
-                                     nullptr,
-                                     raw_bayer_extension,
-                                     true};
+const FileFormat kRawBayerFileFormat{
+    "raw-bayer", "raw Bayer frame (.raw + JSON sidecar)", sniff_raw_bayer, parse_raw_bayer_file, nullptr, ".raw", true};
 
 }  // namespace bs

@@ -330,10 +330,8 @@ static int sniff_cyclictest_json(std::string_view head, std::string_view) {
   return has("cyclictest") ? 95 : 40;
 }
 
-static bool cyclictest_json_extension(std::string_view path) { return path.ends_with(".json"); }
-
 const FileFormat kCyclictestJsonFileFormat{"cyclictest-json",     "cyclictest --json (rt-tests)",
                                            sniff_cyclictest_json, parse_text_file_with<parse_cyclictest_json>,
-                                           parse_cyclictest_json, cyclictest_json_extension};
+                                           parse_cyclictest_json, ".json"};
 
 }  // namespace bs

@@ -426,12 +426,8 @@ static int sniff_cyclictest_text(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool cyclictest_text_extension(std::string_view path) {
-  return path.ends_with(".hist") || path.ends_with(".txt") || path.ends_with(".log");
-}
-
 const FileFormat kCyclictestTextFileFormat{"cyclictest-text",     "cyclictest histogram or terminal output (rt-tests)",
                                            sniff_cyclictest_text, parse_text_file_with<parse_cyclictest_text>,
-                                           parse_cyclictest_text, cyclictest_text_extension};
+                                           parse_cyclictest_text, ".hist .txt .log"};
 
 }  // namespace bs

@@ -238,13 +238,9 @@ static int sniff_performance_test_csv(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool performance_test_csv_extension(std::string_view path) {
-  return path.ends_with(".csv") || path.ends_with(".log") || path.ends_with(".txt");
-}
-
 const FileFormat kPerformanceTestCsvFileFormat{
     "performance-test-csv",     "Apex.AI performance_test CSV log",
     sniff_performance_test_csv, parse_text_file_with<parse_performance_test_csv>,
-    parse_performance_test_csv, performance_test_csv_extension};
+    parse_performance_test_csv, ".csv .log .txt"};
 
 }  // namespace bs

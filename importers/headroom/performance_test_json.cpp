@@ -87,11 +87,9 @@ static int sniff_performance_test_json(std::string_view head, std::string_view) 
   return 0;
 }
 
-static bool performance_test_json_extension(std::string_view path) { return path.ends_with(".json"); }
-
 const FileFormat kPerformanceTestJsonFileFormat{
     "performance-test-json",     "Apex.AI performance_test JSON log",
     sniff_performance_test_json, parse_text_file_with<parse_performance_test_json>,
-    parse_performance_test_json, performance_test_json_extension};
+    parse_performance_test_json, ".json"};
 
 }  // namespace bs

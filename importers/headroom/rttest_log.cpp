@@ -166,12 +166,8 @@ static int sniff_rttest_log(std::string_view head, std::string_view) {
   return is_header(head.substr(start)) ? 95 : 0;
 }
 
-static bool rttest_log_extension(std::string_view path) {
-  return path.ends_with(".txt") || path.ends_with(".log") || path.ends_with(".csv");
-}
-
 const FileFormat kRttestLogFileFormat{"rttest-log",     "ROS 2 rttest per-iteration log (pendulum_demo -f)",
                                       sniff_rttest_log, parse_text_file_with<parse_rttest_log>,
-                                      parse_rttest_log, rttest_log_extension};
+                                      parse_rttest_log, ".txt .log .csv"};
 
 }  // namespace bs

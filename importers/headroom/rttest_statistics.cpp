@@ -194,13 +194,9 @@ static int sniff_rttest_statistics(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool rttest_statistics_extension(std::string_view path) {
-  return path.ends_with(".txt") || path.ends_with(".log");
-}
-
 const FileFormat kRttestStatisticsFileFormat{
     "rttest-statistics",     "ROS 2 rttest statistics (analyze.py summary or rttest's final block)",
     sniff_rttest_statistics, parse_text_file_with<parse_rttest_statistics>,
-    parse_rttest_statistics, rttest_statistics_extension};
+    parse_rttest_statistics, ".txt .log"};
 
 }  // namespace bs

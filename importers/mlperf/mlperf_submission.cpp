@@ -449,8 +449,6 @@ static int sniff_mlperf_submission(std::string_view head, std::string_view path)
   return 95;
 }
 
-static bool mlperf_submission_extension(std::string_view path) { return path.ends_with("mlperf_log_summary.txt"); }
-
 static ImportBatch parse_mlperf_submission_file(const std::string& path, const ParseOptions& /*options*/,
                                                 const ImportLimits& limits, const CancelToken& cancel) {
   const std::string text(strip_utf8_bom(read_whole_file(path, limits.max_json_bytes)));
@@ -462,6 +460,6 @@ const FileFormat kMlperfLoadgenFileFormat{"mlperf-loadgen",
                                           sniff_mlperf_submission,
                                           parse_mlperf_submission_file,
                                           nullptr,
-                                          mlperf_submission_extension};
+                                          "mlperf_log_summary.txt"};
 
 }  // namespace bs

@@ -390,15 +390,11 @@ static int sniff_jtop_csv(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool jtop_csv_extension(std::string_view path) {
-  return path.size() >= 4 && lower(path.substr(path.size() - 4)) == ".csv";
-}
-
 const FileFormat kJtopCsvFileFormat{"jtop-csv",
                                     "jetson-stats (jtop) CSV log (Jetson power)",
                                     sniff_jtop_csv,
                                     meter::parse_log_file<JtopParser>,
                                     meter::parse_log_text<JtopParser>,
-                                    jtop_csv_extension};
+                                    ".csv"};
 
 }  // namespace bs

@@ -899,13 +899,6 @@ ImportBatch PowerCsvParser::finish(std::size_t last_line) {
   return std::move(batch_);
 }
 
-bool usual(std::string_view path) {
-  const auto dot = path.rfind('.');
-  if (dot == std::string_view::npos) return false;
-  const std::string ext = lower(path.substr(dot + 1));
-  return ext == "csv" || ext == "tsv" || ext == "txt";
-}
-
 }  // namespace
 
 static int sniff_power_csv(std::string_view head, std::string_view) {
@@ -930,8 +923,6 @@ static int sniff_power_csv(std::string_view head, std::string_view) {
   }
   return 0;
 }
-
-static bool power_csv_extension(std::string_view path) { return usual(path); }
 
 namespace {
 
@@ -978,6 +969,6 @@ static ImportBatch parse_power_csv(const std::string& text, const std::string& f
 
 const FileFormat kPowerCsvFileFormat{"power-csv",     "current/power log (CSV: generic, Joulescope, Otii, INA219)",
                                      sniff_power_csv, parse_power_csv_file,
-                                     parse_power_csv, power_csv_extension};
+                                     parse_power_csv, ".csv .tsv .txt"};
 
 }  // namespace bs

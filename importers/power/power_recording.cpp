@@ -123,8 +123,6 @@ static int sniff_power_recording(std::string_view head, std::string_view) {
   return head.starts_with(sensors::kRecordingMagic) ? 95 : 0;
 }
 
-static bool power_recording_extension(std::string_view path) { return path.ends_with(".csv"); }
-
 // The settings come from the comment block, never from the options: the power-CSV parser gets the defaults.
 static ImportBatch parse_power_recording_file(const std::string& path, const ParseOptions& /*options*/,
                                               const ImportLimits& limits, const CancelToken& cancel) {
@@ -144,6 +142,6 @@ static ImportBatch parse_power_recording(const std::string& text, const std::str
 const FileFormat kPowerRecordingFileFormat{
     "benchscope-power-recording", "BenchScope on-board sensor power recording (CSV)",
     sniff_power_recording,        parse_power_recording_file,
-    parse_power_recording,        power_recording_extension};
+    parse_power_recording,        ".csv"};
 
 }  // namespace bs

@@ -239,12 +239,10 @@ int sniff_robotperf(std::string_view head, std::string_view) {
              : 0;
 }
 
-bool yaml_extension(std::string_view path) { return path.ends_with(".yaml") || path.ends_with(".yml"); }
-
 }  // namespace
 
 const FileFormat kRobotperfYamlFileFormat{"robotperf-yaml", "RobotPerf benchmark.yaml results",
                                           sniff_robotperf,  parse_text_file_with<parse_robotperf>,
-                                          parse_robotperf,  yaml_extension};
+                                          parse_robotperf,  ".yaml .yml"};
 
 }  // namespace bs

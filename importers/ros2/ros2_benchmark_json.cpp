@@ -192,12 +192,10 @@ int sniff_ros2_benchmark(std::string_view head, std::string_view) {
   return head.find("\"BasicPerformanceMetrics.") != std::string_view::npos ? 96 : 0;
 }
 
-bool json_extension(std::string_view path) { return path.ends_with(".json"); }
-
 }  // namespace
 
 const FileFormat kRos2BenchmarkJsonFileFormat{"ros2-benchmark-json", "NVIDIA ros2_benchmark result JSON",
                                               sniff_ros2_benchmark,  parse_text_file_with<parse_ros2_benchmark>,
-                                              parse_ros2_benchmark,  json_extension};
+                                              parse_ros2_benchmark,  ".json"};
 
 }  // namespace bs

@@ -375,8 +375,6 @@ static int sniff_clpeak_text(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool clpeak_text_extension(std::string_view path) { return path.ends_with(".txt") || path.ends_with(".log"); }
-
 static ImportBatch parse_clpeak_text(const std::string& text_in, const std::string& file,
                                      const ParseOptions& /*options*/, const ImportLimits& /*limits*/,
                                      const CancelToken& cancel) {
@@ -395,6 +393,6 @@ static ImportBatch parse_clpeak_text(const std::string& text_in, const std::stri
 
 const FileFormat kClpeakTextFileFormat{"clpeak-text",     "clpeak text output",
                                        sniff_clpeak_text, parse_text_file_with<parse_clpeak_text>,
-                                       parse_clpeak_text, clpeak_text_extension};
+                                       parse_clpeak_text, ".txt .log"};
 
 }  // namespace bs

@@ -297,8 +297,6 @@ static int sniff_google_benchmark_json(std::string_view head, std::string_view) 
   return 0;
 }
 
-static bool google_benchmark_json_extension(std::string_view path) { return path.ends_with(".json"); }
-
 ImportBatch parse_google_benchmark_json(const std::string& original, const std::string& file,
                                         const ParseOptions& options, const ImportLimits& limits,
                                         const CancelToken& cancel) {
@@ -474,6 +472,6 @@ ImportBatch parse_google_benchmark_json(const std::string& original, const std::
 const FileFormat kGoogleBenchmarkJsonFileFormat{
     "google-benchmark-json",     "Google Benchmark JSON",
     sniff_google_benchmark_json, parse_text_file_with<parse_google_benchmark_json>,
-    parse_google_benchmark_json, google_benchmark_json_extension};
+    parse_google_benchmark_json, ".json"};
 
 }  // namespace bs

@@ -141,10 +141,8 @@ ImportBatch parse_pipeline_json(const std::string& text, const std::string& file
   return batch;
 }
 
-static bool pipeline_json_extension(std::string_view path) { return path.ends_with(".json"); }
-
 const FileFormat kPipelineJsonFileFormat{kPipelineJsonFormat, "BenchScope pipeline timing JSON v1",
                                          sniff_pipeline_json, parse_text_file_with<parse_pipeline_json>,
-                                         parse_pipeline_json, pipeline_json_extension};
+                                         parse_pipeline_json, ".json"};
 
 }  // namespace bs

@@ -139,8 +139,6 @@ static int sniff_run_json(std::string_view head, std::string_view) {
   return 0;
 }
 
-static bool run_json_extension(std::string_view path) { return path.ends_with(".json"); }
-
 ImportBatch parse_run_json(const std::string& text, const std::string& file, const ParseOptions& /*options*/,
                            const ImportLimits& limits, const CancelToken& cancel) {
   const json doc = json_access::parse(text, file, limits, &cancel);
@@ -172,6 +170,6 @@ ImportBatch parse_run_json(const std::string& text, const std::string& file, con
 
 const FileFormat kRunJsonFileFormat{"benchscope-run-v1", "BenchScope run JSON v1",
                                     sniff_run_json,      parse_text_file_with<parse_run_json>,
-                                    parse_run_json,      run_json_extension};
+                                    parse_run_json,      ".json"};
 
 }  // namespace bs

@@ -559,7 +559,7 @@ void PlatformView::recompute() {
           candidate_loop = loop_verdicts_;
           QStringList parts;
           for (const headroom::LoopVerdict& v : loop_verdicts_)
-            parts << verdict_text(v.platform, headroom::to_string(v.status), v.reason) +
+            parts << verdict_text(v.platform, to_string(v.status), v.reason) +
                          (!v.measurement.empty() && !v.realtime ? tr(" ⚠ non-real-time measurement") : QString());
           return tr("<br>Control loop %1: %2.")
               .arg(QString::fromStdString(headroom::describe(r)).toHtmlEscaped(), parts.join("; "));
@@ -578,8 +578,8 @@ void PlatformView::recompute() {
                             candidate_sustained = sustained_verdicts_;
                             QStringList parts;
                             for (const sustain::SustainVerdict& v : sustained_verdicts_)
-                              parts << verdict_text(v.platform, sustain::to_string(v.status),
-                                                    v.status == sustain::SustainStatus::Pass ? v.margin : v.reason);
+                              parts << verdict_text(v.platform, to_string(v.status),
+                                                    v.status == RequirementStatus::Pass ? v.margin : v.reason);
                             return tr("<br>Sustained %1: %2.")
                                 .arg(QString::fromStdString(sustain::describe(r)).toHtmlEscaped(), parts.join("; "));
                           });

@@ -77,7 +77,7 @@ nlohmann::json loop_json(const headroom::LoopRequirement& r, const std::vector<h
   nlohmann::json list = nlohmann::json::array();
   for (const headroom::LoopVerdict& v : loop) {
     list.push_back({{"platform", v.platform},
-                    {"status", std::string(headroom::to_string(v.status))},
+                    {"status", std::string(to_string(v.status))},
                     {"reason", v.reason},
                     {"measurement", v.measurement},
                     {"realtime", v.realtime},
@@ -94,16 +94,15 @@ void print_loop(std::ostream& out, const headroom::LoopRequirement& r, const std
   header.push_back("measurement / reason");
   TextTable t(header);
   for (const headroom::LoopVerdict& v : loop) {
-    std::vector<std::string> row{v.platform, std::string(headroom::to_string(v.status))};
+    std::vector<std::string> row{v.platform, std::string(to_string(v.status))};
     for (std::size_t i = 0; i + 3 < header.size(); ++i) {
       const ConstraintCheck* k = i < v.checks.size() ? &v.checks[i] : nullptr;
       row.push_back(!k || !k->actual ? "–"
                                      : format_number("%g", *k->actual) + " " + k->unit + " (" +
                                            format_number("%+g", -k->margin) + ")");
     }
-    row.push_back(v.status == headroom::LoopStatus::Pass
-                      ? v.measurement
-                      : v.reason + (v.measurement.empty() ? "" : "; " + v.measurement));
+    row.push_back(v.status == RequirementStatus::Pass ? v.measurement
+                                                      : v.reason + (v.measurement.empty() ? "" : "; " + v.measurement));
     t.add(row);
   }
   t.print(out);

@@ -9,6 +9,7 @@
 #include "store/battery_preset_store.h"
 #include "store/decision_inputs.h"
 #include "store/decision_store.h"
+#include "util/text.h"
 #include "workspace/inputs.h"
 
 namespace bs::cli {
@@ -120,7 +121,7 @@ PlatformArgs parse_platform_args(const ParsedArgs& args) {
   p.library = in.candidates;
   p.chosen_log_platforms = in.chosen_log_platforms;
   p.battery_choice = args.value("--battery").value_or(in.battery_choice);
-  for (const std::string& t : taken) p.stored += (p.stored.empty() ? "" : "; ") + t;
+  p.stored = join(taken, "; ");
   return p;
 }
 

@@ -19,7 +19,7 @@ nlohmann::json sustained_json(const sustain::SustainRequirement& r, const std::v
                         {"met", k.met},
                         {"margin", k.margin}});
     list.push_back({{"platform", s.platform},
-                    {"status", std::string(sustain::to_string(s.status))},
+                    {"status", std::string(to_string(s.status))},
                     {"margin", s.margin},
                     {"reason", s.reason},
                     {"record", s.record},
@@ -33,8 +33,8 @@ void print_sustained(std::ostream& out, const sustain::SustainRequirement& r,
   out << "\nsustained: " << sustain::describe(r) << "\n";
   TextTable t({"platform", "verdict", "margin / reason", "record"});
   for (const sustain::SustainVerdict& s : v)
-    t.add({s.platform, std::string(sustain::to_string(s.status)),
-           s.status == sustain::SustainStatus::Pass ? s.margin : s.reason, s.record.empty() ? "–" : s.record});
+    t.add({s.platform, std::string(to_string(s.status)), s.status == RequirementStatus::Pass ? s.margin : s.reason,
+           s.record.empty() ? "–" : s.record});
   t.print(out);
   out << "(a platform without a sustained run that answers every term is unknown, never passing; an imported log\n"
          " without a load rate judges throttling only)\n";

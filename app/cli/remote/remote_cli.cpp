@@ -20,6 +20,7 @@
 #include "remote/remote_inputs.h"
 #include "store/workspace.h"
 #include "util/host_clock.h"
+#include "util/text.h"
 
 namespace fs = std::filesystem;
 
@@ -58,12 +59,6 @@ std::string option_value(const std::vector<std::string>& words, const std::strin
     if (words[i].starts_with(option + "=")) return words[i].substr(option.size() + 1);
   }
   return {};
-}
-
-std::string join(const std::vector<std::string>& words) {
-  std::string s;
-  for (const std::string& w : words) s += (s.empty() ? "" : " ") + w;
-  return s;
 }
 
 // Prints the robot's events as they come: progress on one line redrawn in place, each point, the result.
@@ -346,7 +341,7 @@ int run_remote(remote::RobotList& robots, const remote::SshTarget& target, const
   handlers.on_event = [&](const remote::Event& e) { printer.on_event(e); };
   handlers.on_remote_stderr = [&](const std::string& line) { printer.on_stderr(line); };
   const remote::JobControl control{&interrupt_token(), nullptr};
-  if (!o.quiet) err << target.destination << ": job " << id << ": " << join(command) << '\n';
+  if (!o.quiet) err << target.destination << ": job " << id << ": " << join(command, " ") << '\n';
   remote::RemoteJob job;
   try {
     job = remote::run_remote_job(target, id, carried.command, staging.path(), handlers, control);
@@ -391,7 +386,7 @@ int fetch_remote(remote::RobotList& robots, const remote::SshTarget& target, con
   if (const auto c = job.record.find("command"); c != job.record.end() && c->is_array())
     for (const auto& w : *c)
       if (w.is_string()) command.push_back(w.get<std::string>());
-  err << target.destination << ": job " << job.id << " (" << join(command) << ", started "
+  err << target.destination << ": job " << job.id << " (" << join(command, " ") << ", started "
       << job.record.value("started", "") << "): " << job.status << '\n';
   return import_and_report(robots, target, job, check.info, command, o, "fetched", out, err);
 }

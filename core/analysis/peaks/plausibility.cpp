@@ -41,6 +41,7 @@ std::string spec_text(const DeviceSpec& spec) {
 std::string_view quantity_noun(PowerQuantity q) {
   constexpr EnumWord<PowerQuantity> kNouns[] = {
       {PowerQuantity::Current, "current"}, {PowerQuantity::Voltage, "voltage"}, {PowerQuantity::Power, "power"}};
+  static_assert(names_every_value(kNouns, PowerQuantity::Power));
   return word_of(kNouns, q, "value");
 }
 

@@ -144,6 +144,7 @@ std::string_view to_string(CompareVerdict v) {
       {CompareVerdict::Improvement, "improvement"}, {CompareVerdict::NotSignificant, "not significant"},
       {CompareVerdict::Changed, "changed"},         {CompareVerdict::OnlyInA, "only in A"},
       {CompareVerdict::OnlyInB, "only in B"}};
+  static_assert(names_every_value(kWords, CompareVerdict::OnlyInB));
   return word_of(kWords, v, "?");
 }
 

@@ -1,17 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// How a verdict of every requirement judged per platform reads (the control loop, headroom/loop_requirement.h;
-// sustained performance, sustain/sustain_requirement.h). Their texts split into terms with util/text.h's
-// comma_terms.
+// A verdict of every requirement judged per platform (the control loop, headroom/loop_requirement.h; sustained
+// performance, sustain/sustain_requirement.h): its status, and how it reads. Their texts split into terms with
+// util/text.h's comma_terms.
 #include <string_view>
 
 namespace bs {
 
-// "passes", "FAILS", "unknown": a verdict's status (an enum with Pass, Fail and Unknown) as the tables and the
-// decision say it; the failure in capitals so that it stands out among passes.
-template <class Status>
-std::string_view requirement_status_text(Status s) {
-  return s == Status::Pass ? "passes" : s == Status::Fail ? "FAILS" : "unknown";
+// Whether a platform meets a requirement; unknown when its records cannot tell (none measured, or a term the record
+// does not answer).
+enum class RequirementStatus { Pass, Fail, Unknown };
+
+// "passes", "FAILS", "unknown", as the tables and the decision say it: the failure in capitals so that it stands out
+// among passes.
+inline std::string_view to_string(RequirementStatus s) {
+  return s == RequirementStatus::Pass ? "passes" : s == RequirementStatus::Fail ? "FAILS" : "unknown";
 }
 
 }  // namespace bs

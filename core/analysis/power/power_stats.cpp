@@ -33,13 +33,16 @@ SignalStats signal_stats(std::span<const double> values) {
 std::string_view to_string(PowerSource source) {
   constexpr EnumWord<PowerSource> kWords[] = {{PowerSource::Channel, "power channel"},
                                               {PowerSource::CurrentTimesVoltage, "current x voltage channel"},
-                                              {PowerSource::CurrentTimesSupply, "current x supply voltage"}};
+                                              {PowerSource::CurrentTimesSupply, "current x supply voltage"},
+                                              {PowerSource::Unknown, "unknown (current only, no supply voltage)"}};
+  static_assert(names_every_value(kWords, PowerSource::Unknown));
   return word_of(kWords, source, "unknown (current only, no supply voltage)");
 }
 
 std::string_view unit_of(PowerQuantity quantity) {
   constexpr EnumWord<PowerQuantity> kUnits[] = {
       {PowerQuantity::Current, "A"}, {PowerQuantity::Voltage, "V"}, {PowerQuantity::Power, "W"}};
+  static_assert(names_every_value(kUnits, PowerQuantity::Power));
   return word_of(kUnits, quantity, "");
 }
 

@@ -35,6 +35,7 @@ std::string stage_kernel_name(StageKernel k) {
                                               {StageKernel::DemosaicMhc, "demosaic (Malvar-He-Cutler)"},
                                               {StageKernel::Reprojection, "reprojection (bilinear, fixed-point LUT)"},
                                               {StageKernel::Fused, "fused demosaic + reprojection"}};
+  static_assert(names_every_value(kNames, StageKernel::Fused));
   return std::string(word_of(kNames, k, "?"));
 }
 

@@ -10,6 +10,7 @@
 #include "headroom/loop_requirement.h"
 
 using namespace bs::headroom;
+using bs::RequirementStatus;
 
 namespace {
 
@@ -67,18 +68,18 @@ class TestLoopRequirement : public QObject {
     const std::vector<LoopVerdict> v = evaluate_loop(r, ms, {"jetson", "robot", "nuc"});
     QCOMPARE(v.size(), std::size_t{4});
     QCOMPARE(QString::fromStdString(v[0].platform), QString("robot"));
-    QCOMPARE(v[0].status, LoopStatus::Pass);
+    QCOMPARE(v[0].status, RequirementStatus::Pass);
     QCOMPARE(*v[0].checks[0].actual, 20.0);
     QCOMPARE(v[0].checks[0].margin, 180.0);
     QCOMPARE(QString::fromStdString(v[1].platform), QString("nuc"));
-    QCOMPARE(v[1].status, LoopStatus::Fail);
+    QCOMPARE(v[1].status, RequirementStatus::Fail);
     QCOMPARE(*v[1].checks[0].actual, 1500.0);
     QCOMPARE(*v[1].checks[1].actual, 3.0);
     // The worse term by factor: p99.9 is 7.5x its limit, the run 3x: the reason names p99.9.
     QCOMPARE(QString::fromStdString(v[1].reason),
              QString("p99.9 (pipeline@30fps) 1300 us over the limit of 200 us (7.50x)"));
-    QCOMPARE(v[2].status, LoopStatus::Unknown);
-    QCOMPARE(v[3].status, LoopStatus::Unknown);
+    QCOMPARE(v[2].status, RequirementStatus::Unknown);
+    QCOMPARE(v[3].status, RequirementStatus::Unknown);
     const auto reason_of = [&](const char* platform) {
       for (const LoopVerdict& x : v)
         if (x.platform == platform) return QString::fromStdString(x.reason);
@@ -98,7 +99,7 @@ class TestLoopRequirement : public QObject {
     for (Phase& p : m.phases) p.threads[0].misses.reset();  // a histogram-only source
     const std::vector<LoopVerdict> v =
         evaluate_loop(parse_loop_requirement("1kHz,p99<=100us,max-consecutive-misses<=1"), std::vector{m}, {});
-    QCOMPARE(v[0].status, LoopStatus::Unknown);
+    QCOMPARE(v[0].status, RequirementStatus::Unknown);
     QVERIFY(*v[0].checks[0].actual <= 100);  // the percentile is known and passes; the run term is not
     QVERIFY(!v[0].checks[1].actual);
   }
@@ -118,16 +119,16 @@ class TestLoopRequirement : public QObject {
     const LoopRequirement r = parse_loop_requirement("1kHz,p99.9<=200us,load=pipeline@30fps");
     const std::vector<HeadroomMeasurement> short_pass = {with_rate(loop("robot", "pipeline@30fps", 20, 1, 900), 9.29)};
     const std::vector<LoopVerdict> v = evaluate_loop(r, short_pass, {"robot"});
-    QCOMPARE(v[0].status, LoopStatus::Unknown);
+    QCOMPARE(v[0].status, RequirementStatus::Unknown);
     QCOMPARE(QString::fromStdString(v[0].reason),
              QString("load not applied: pipeline@30fps ran at 9.29 of 30 fps (31 %)"));
     QCOMPARE(*v[0].checks[0].actual, 20.0);  // the numbers stay, to be seen
     // A failing loop beside a short load is not a fail either: it was not measured beside the load asked for.
     const std::vector<HeadroomMeasurement> short_fail = {with_rate(loop("nuc", "pipeline@30fps", 30, 3, 1500), 20)};
-    QCOMPARE(evaluate_loop(r, short_fail, {"nuc"})[0].status, LoopStatus::Unknown);
+    QCOMPARE(evaluate_loop(r, short_fail, {"nuc"})[0].status, RequirementStatus::Unknown);
     // 29 of 30 fps is within 5 %: judged.
     const std::vector<HeadroomMeasurement> close = {with_rate(loop("robot", "pipeline@30fps", 20, 1, 900), 29)};
-    QCOMPARE(evaluate_loop(r, close, {"robot"})[0].status, LoopStatus::Pass);
+    QCOMPARE(evaluate_loop(r, close, {"robot"})[0].status, RequirementStatus::Pass);
     // The measurement's flags say it first; the table's cell says it too.
     const std::vector<std::string> f = flags(short_pass[0]);
     QVERIFY(!f.empty());

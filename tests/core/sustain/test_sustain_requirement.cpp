@@ -87,18 +87,18 @@ class TestSustainRequirement : public QObject {
     const std::vector<SustainVerdict> v = evaluate_sustain(r, runs, {"orin", "nuc"});
     QCOMPARE(v.size(), std::size_t{4});
     QCOMPARE(QString::fromStdString(v[0].platform), QString("nuc"));
-    QCOMPARE(v[0].status, SustainStatus::Pass);
+    QCOMPARE(v[0].status, RequirementStatus::Pass);
     QCOMPARE(QString::fromStdString(v[0].margin),
              QString("run 25.0 min >= 20 min; stability 99.0 % >= 97 %, 2.0 points to spare"));
     QCOMPARE(QString::fromStdString(v[0].record), QString("nuc flops, 25.0 min"));
     QCOMPARE(QString::fromStdString(v[1].platform), QString("jetson"));
-    QCOMPARE(v[1].status, SustainStatus::Fail);
+    QCOMPARE(v[1].status, RequirementStatus::Fail);
     QCOMPARE(QString::fromStdString(v[1].reason), QString("stability 91.2 % < 97 %, 5.8 points short"));
     QCOMPARE(QString::fromStdString(v[1].checks[1].name), QString("stability"));
     QCOMPARE(*v[1].checks[1].actual, 91.2);
     QVERIFY(qAbs(v[1].checks[1].margin + 5.8) < 1e-9);
-    QCOMPARE(v[2].status, SustainStatus::Unknown);
-    QCOMPARE(v[3].status, SustainStatus::Unknown);
+    QCOMPARE(v[2].status, RequirementStatus::Unknown);
+    QCOMPARE(v[3].status, RequirementStatus::Unknown);
     QCOMPARE(QString::fromStdString(verdict_of(v, "pi").reason),
              QString("run lasted 5.0 min < 20 min required: cannot say"));
     QCOMPARE(QString::fromStdString(verdict_of(v, "orin").reason), QString("no sustained run of this platform"));
@@ -109,7 +109,7 @@ class TestSustainRequirement : public QObject {
     const std::vector<SustainRun> runs = {record("pi", steady(5, 100, 2, 80))};
     const std::vector<SustainVerdict> v =
         evaluate_sustain(parse_sustain_requirement("stability>=97%,minutes>=20"), runs, {});
-    QCOMPARE(v[0].status, SustainStatus::Fail);
+    QCOMPARE(v[0].status, RequirementStatus::Fail);
     QCOMPARE(QString::fromStdString(v[0].reason), QString("stability 80.0 % < 97 %, 17.0 points short"));
   }
 
@@ -123,13 +123,13 @@ class TestSustainRequirement : public QObject {
     blind.not_exposed = {"no cpufreq under /sys/devices/system/cpu: no CPU clock"};
     const std::vector<SustainRun> runs = {hot, cool, blind};
     const std::vector<SustainVerdict> v = evaluate_sustain(r, runs, {});
-    QCOMPARE(verdict_of(v, "robot").status, SustainStatus::Pass);
+    QCOMPARE(verdict_of(v, "robot").status, RequirementStatus::Pass);
     const SustainVerdict& nuc = verdict_of(v, "nuc");
-    QCOMPARE(nuc.status, SustainStatus::Fail);
+    QCOMPARE(nuc.status, RequirementStatus::Fail);
     QVERIFY2(QString::fromStdString(nuc.reason).startsWith("throttled from 10.0 s (cpu0 at 1.8"), nuc.reason.c_str());
     QCOMPARE(*nuc.checks[0].actual, 10.0);  // 10 s of 20 throttled
     const SustainVerdict& pi = verdict_of(v, "pi");
-    QCOMPARE(pi.status, SustainStatus::Unknown);
+    QCOMPARE(pi.status, RequirementStatus::Unknown);
     QVERIFY2(QString::fromStdString(pi.reason).startsWith("throttling unknown: no cpufreq under"), pi.reason.c_str());
   }
 
@@ -142,14 +142,14 @@ class TestSustainRequirement : public QObject {
     log.t_s = {1, 2, 3, 4};
     add_clock(log, 4, 3e9);
     const std::vector<SustainRun> runs = {log};
-    QCOMPARE(evaluate_sustain(parse_sustain_requirement("throttle=none"), runs, {})[0].status, SustainStatus::Pass);
+    QCOMPARE(evaluate_sustain(parse_sustain_requirement("throttle=none"), runs, {})[0].status, RequirementStatus::Pass);
     const SustainVerdict s = evaluate_sustain(parse_sustain_requirement("stability>=97%,throttle=none"), runs, {})[0];
-    QCOMPARE(s.status, SustainStatus::Unknown);
+    QCOMPARE(s.status, RequirementStatus::Unknown);
     QCOMPARE(QString::fromStdString(s.reason),
              QString("no load rate in the record (an imported log): stability cannot be judged"));
     QVERIFY(QString::fromStdString(s.record).endsWith("no load rate"));
     const SustainVerdict t = evaluate_sustain(parse_sustain_requirement("sustained>=10"), runs, {})[0];
-    QCOMPARE(t.status, SustainStatus::Unknown);
+    QCOMPARE(t.status, RequirementStatus::Unknown);
   }
 
   void the_sustained_rate_against_its_floor() {
@@ -158,9 +158,9 @@ class TestSustainRequirement : public QObject {
     for (std::size_t i = 20; i < 30; ++i) rates[i] = 80;
     const std::vector<SustainRun> runs = {record("nuc", rates)};
     const SustainVerdict v = evaluate_sustain(parse_sustain_requirement("sustained>=90"), runs, {})[0];
-    QCOMPARE(v.status, SustainStatus::Fail);
+    QCOMPARE(v.status, RequirementStatus::Fail);
     QCOMPARE(QString::fromStdString(v.reason), QString("sustained rate 80.0 GFLOPS < 90 GFLOPS, 10.0 GFLOPS short"));
-    QCOMPARE(evaluate_sustain(parse_sustain_requirement("sustained>=75"), runs, {})[0].status, SustainStatus::Pass);
+    QCOMPARE(evaluate_sustain(parse_sustain_requirement("sustained>=75"), runs, {})[0].status, RequirementStatus::Pass);
   }
 
   // The longest record that answers every term judges; when none does, the newest says why.
@@ -173,10 +173,10 @@ class TestSustainRequirement : public QObject {
     short_new.provenance.date = "2026-02-01";
     const std::vector<SustainRun> runs = {long_old, short_new};
     const SustainVerdict a = evaluate_sustain(parse_sustain_requirement("minutes>=20,stability>=97%"), runs, {})[0];
-    QCOMPARE(a.status, SustainStatus::Pass);
+    QCOMPARE(a.status, RequirementStatus::Pass);
     QCOMPARE(QString::fromStdString(a.record), QString("long, 2026-01-01, 30.0 min"));
     const SustainVerdict b = evaluate_sustain(parse_sustain_requirement("minutes>=40,stability>=97%"), runs, {})[0];
-    QCOMPARE(b.status, SustainStatus::Unknown);
+    QCOMPARE(b.status, RequirementStatus::Unknown);
     QCOMPARE(QString::fromStdString(b.record), QString("short, 2026-02-01, 10.0 min"));
     QCOMPARE(QString::fromStdString(b.reason), QString("run lasted 10.0 min < 40 min required: cannot say"));
   }

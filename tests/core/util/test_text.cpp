@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The shared text helpers (util/text.h): ASCII white space off both ends, ASCII lower case, UTF-8 left intact
 // whatever the C library's locale says; comma-separated terms; numbers through a printf format, of any length, and with
-// fixed decimals.
+// fixed decimals; parts joined; endings in any case; and the enumeration word tables' completeness check.
 #include <clocale>
 
 #include <QTest>
 
+#include "util/enum_words.h"
 #include "util/text.h"
 
 class TestText : public QObject {
@@ -46,6 +47,36 @@ class TestText : public QObject {
     QCOMPARE(bs::fixed(2.5, 0), std::string("2"));  // round half to even, as printf
     QCOMPARE(bs::fixed(-0.125, 2), std::string("-0.12"));
     QCOMPARE(bs::fixed(3, 3), std::string("3.000"));
+  }
+
+  void joins_parts() {
+    QCOMPARE(bs::join({"a", "b", "c"}, ", "), std::string("a, b, c"));
+    QCOMPARE(bs::join({"benchscope-cli", "sustain", "--load", "flops"}, " "),
+             std::string("benchscope-cli sustain --load flops"));
+    QCOMPARE(bs::join({}, "; "), std::string());
+    QCOMPARE(bs::join({"", "x"}, "; "), std::string("; x"));  // empty parts count: the caller drops them
+  }
+
+  void endings_in_any_case() {
+    QVERIFY(bs::ends_with_ci("/data/Capture.PNG", ".png"));
+    QVERIFY(!bs::ends_with_ci("png", ".png"));
+    QVERIFY(bs::ends_with_any_ci("run.TIFF", ".tif .tiff"));
+    QVERIFY(bs::ends_with_any_ci("a/mlperf_log_summary.txt", "mlperf_log_summary.txt"));
+    QVERIFY(!bs::ends_with_any_ci("results.json", ".txt .log"));
+    QVERIFY(!bs::ends_with_any_ci("results.json", ""));
+    QVERIFY(!bs::ends_with_any_ci("", ".json"));
+  }
+
+  void word_tables_name_every_value() {
+    enum class Colour { Red, Green, Blue };
+    constexpr bs::EnumWord<Colour> kAll[] = {{Colour::Red, "red"}, {Colour::Green, "green"}, {Colour::Blue, "blue"}};
+    constexpr bs::EnumWord<Colour> kAliases[] = {
+        {Colour::Blue, "blue"}, {Colour::Red, "red"}, {Colour::Green, "green"}, {Colour::Red, "rouge"}};
+    constexpr bs::EnumWord<Colour> kNoGreen[] = {{Colour::Red, "red"}, {Colour::Blue, "blue"}};
+    static_assert(bs::names_every_value(kAll, Colour::Blue));
+    QVERIFY(bs::names_every_value(kAliases, Colour::Blue));   // any order, a value named twice
+    QVERIFY(!bs::names_every_value(kNoGreen, Colour::Blue));  // a value added without its line
+    QCOMPARE(std::string(bs::word_of(kNoGreen, Colour::Green, "?")), std::string("?"));
   }
 };
 

@@ -145,8 +145,8 @@ class TestScenarioSustained : public QObject {
     QVERIFY(verdicts.size() >= 2);
     const bs::sustain::SustainVerdict& v = verdicts.front();
     QCOMPARE(v.platform, std::string("NUC"));
-    QCOMPARE(v.status, bs::sustain::SustainStatus::Fail);
-    for (std::size_t i = 1; i < verdicts.size(); ++i) QCOMPARE(verdicts[i].status, bs::sustain::SustainStatus::Unknown);
+    QCOMPARE(v.status, bs::RequirementStatus::Fail);
+    for (std::size_t i = 1; i < verdicts.size(); ++i) QCOMPARE(verdicts[i].status, bs::RequirementStatus::Unknown);
     QVERIFY2(platforms->summary_text().contains("Sustained"), "the summary does not name the requirement");
     QVERIFY2(v.margin.find("60.0 %") != std::string::npos, v.margin.c_str());
     const bs::test::CliResult cli = bs::test::cli({"platforms", ws, "--require-sustained", "stability>=97%", "--json"});
@@ -191,9 +191,9 @@ class TestScenarioSustained : public QObject {
     panel->seconds()->setValue(3);
     panel->interval()->setValue(0.5);
     QSignalSpy stopped(panel, &bs::ui::SustainRunPanel::stopped);
-    QTest::mouseClick(panel->run_button(), Qt::LeftButton);
-    QVERIFY(panel->running());
-    QVERIFY(panel->cancel_button()->isEnabled());
+    QTest::mouseClick(panel->controls().run, Qt::LeftButton);
+    QVERIFY(panel->controls().running());
+    QVERIFY(panel->controls().cancel->isEnabled());
     bool live = false;
     // Until the panel has said how the run ended (the worker's end reaches the window a moment after it returns).
     for (int i = 0; i < 3000 && stopped.isEmpty(); ++i) {
@@ -208,7 +208,8 @@ class TestScenarioSustained : public QObject {
     QVERIFY2(!stopped.isEmpty(), "the 3 s run did not end");
     QTest::qWait(50);  // the measured run is stored right after the panel stops
     QVERIFY2(live, "the intervals were not drawn as they came");
-    QVERIFY2(panel->status()->text().startsWith("Measured 6 interval(s)"), qPrintable(panel->status()->text()));
+    QVERIFY2(panel->controls().status->text().startsWith("Measured 6 interval(s)"),
+             qPrintable(panel->controls().status->text()));
     const auto stored = w.workspace()->sustain_runs();
     QCOMPARE(stored.size(), std::size_t{1});
     QCOMPARE(stored[0].run.rate.size(), std::size_t{6});
