@@ -7,14 +7,16 @@
 #                     library's alone: with GCC 12 a precompiled <string> loses its system-header status, and -O2's
 #                     known false -Warray-bounds inside std::string then fails -Werror builds (seen in core/store).
 #   BENCHSCOPE_UNITY  unity builds of the libraries (CMake's batches of sources compiled as one translation unit)
-# docs/guide.md ("Build time") has the measured effect of each.
 #   BENCHSCOPE_MEASURED_FLAGS  compile flags for the code BenchScope times (its kernels, the vision pipeline and
 #                     detector, the headroom loads), after the configuration's own. scripts/dev and the cross test
 #                     compile everything else at -O1 (a fifth less compile time than -O2, measured on the GCC tree's
 #                     sources) and this at -O2: what is measured is compiled as before; parsers, the store, the
 #                     analysis and the GUI are not timed, and the headroom probe's clock reads and sleeps are the same
 #                     instructions at either level. Empty (a plain CMake configure, the packages): no change.
+# docs/guide.md ("Build time") and docs/build-time.md have the measured effect of each.
 option(BENCHSCOPE_PCH "Precompile the heavy headers of each library" ON)
+option(BENCHSCOPE_UNITY "Compile each library's sources in batches (unity build; off: see below)" OFF)
+set(BENCHSCOPE_UNITY_BATCH 8 CACHE STRING "Sources per unity batch")
 set(BENCHSCOPE_MEASURED_FLAGS "" CACHE STRING "Flags for the measured code (kernels, vision, headroom loads), e.g. -O2")
 
 # benchscope_measured(<target>): the target is code BenchScope times; BENCHSCOPE_MEASURED_FLAGS apply to it.
@@ -24,8 +26,6 @@ function(benchscope_measured target)
     target_compile_options(${target} PRIVATE "$<$<COMPILE_LANGUAGE:C,CXX>:${flags}>")
   endif()
 endfunction()
-option(BENCHSCOPE_UNITY "Compile each library's sources in batches (unity build; off: see below)" OFF)
-set(BENCHSCOPE_UNITY_BATCH 8 CACHE STRING "Sources per unity batch")
 
 # GCC 12 forgets, for headers it reads from a precompiled header, that they are system headers, and then reports -O2's
 # known false -Warray-bounds and -Wstringop-overflow inside libstdc++'s std::string (char_traits.h: "forming offset

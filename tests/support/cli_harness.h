@@ -9,12 +9,11 @@
 #include <QStringList>
 
 #include "file_bytes.h"  // bytes_of, for the files a command wrote
+#include "paper_dir.h"   // kPaper, what most commands are tried on
 
 namespace bs::test {
 
 inline const QString kCli = BENCHSCOPE_BINARY_DIR "/app/cli/benchscope-cli";
-// The paper's sample data (Biddulph et al. 2018), what most commands are tried on.
-inline const QString kPaper = BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018";
 
 struct CliResult {
   int code = -1;  // exit code; -1 when it crashed, -2 when it ran past the time limit

@@ -27,6 +27,7 @@
 
 #include "export_figure_dialog.h"
 #include "main_window.h"
+#include "paper_dir.h"
 #include "platform/candidates_panel.h"
 #include "platform/platform_view.h"
 #include "plot_export.h"
@@ -219,7 +220,6 @@ inline bool export_current_tab(ui::MainWindow& w, const QString& stem, const QSt
   return *answered;
 }
 
-inline const QString kPaperData = QStringLiteral(BENCHSCOPE_SOURCE_DIR "/sample_data/paper-2018");
 inline const QString kScenarioData = QStringLiteral(BENCHSCOPE_TEST_DATA_DIR "/scenarios");
 inline const QString kPublicPower = QStringLiteral(BENCHSCOPE_PUBLIC_DATA_DIR "/tests/data/power/real");
 
@@ -249,7 +249,7 @@ inline QString paper_workspace(QTemporaryDir& dir, const QString& name = QString
   const QString path = dir.filePath(name);
   bs::ui::MainWindow w;
   if (!w.open_workspace(path)) return {};
-  w.import_paths_now({kPaperData});
+  w.import_paths_now({kPaper});
   return path;
 }
 

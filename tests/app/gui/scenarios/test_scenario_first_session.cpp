@@ -53,7 +53,7 @@ class TestScenarioFirstSession : public QObject {
     QTemporaryDir dir;
     // 1. The window as `benchscope sample_data/paper-2018` opens it: an untitled workspace holding the paper's data.
     bs::ui::MainWindow w;
-    w.import_paths_now({bs::test::kPaperData});
+    w.import_paths_now({bs::test::kPaper});
     QVERIFY(bs::test::show_at(w));
     QCOMPARE(w.tree()->run_count(), 13);
     QCOMPARE(w.flops_plot()->series_count(), 13);
